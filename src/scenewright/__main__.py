@@ -1,0 +1,3 @@
+from scenewright.cli import run
+
+run()

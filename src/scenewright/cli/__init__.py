@@ -1,0 +1,56 @@
+"""Command line: ``scenewright generate|solve|edit|undo|redo|history|render|evaluate|bench``.
+
+Each command lives in the module named for what it drives; importing them registers them on
+:data:`scenewright.cli.app.app`. Library errors become one readable line and an exit code:
+2 for bad input, 1 for a backend failure, 3 for an infeasible layout.
+"""
+
+from __future__ import annotations
+
+import logging
+import sys
+
+from rich.console import Console
+
+from scenewright.cli import backends, edit, evaluate, generate, parse, render, solve  # noqa: F401
+from scenewright.cli.app import app
+from scenewright.errors import BackendError, InfeasibleLayout, InputError, ScenewrightError
+
+EXIT_BAD_INPUT = 2
+EXIT_BACKEND = 1
+EXIT_INFEASIBLE = 3
+
+
+def main(argv: list[str] | None = None) -> int:
+    logging.basicConfig(level=logging.WARNING, format="%(levelname)s %(name)s: %(message)s")
+    err = Console(stderr=True)
+    try:
+        app(args=argv, standalone_mode=False)
+    except InputError as exc:
+        err.print(f"[red]error:[/red] {exc}", highlight=False)
+        return EXIT_BAD_INPUT
+    except InfeasibleLayout as exc:
+        err.print(f"[yellow]layout incomplete:[/yellow] {exc}", highlight=False)
+        return EXIT_INFEASIBLE
+    except BackendError as exc:
+        err.print(f"[red]backend error:[/red] {exc}", highlight=False)
+        return EXIT_BACKEND
+    except ScenewrightError as exc:
+        err.print(f"[red]error:[/red] {exc}", highlight=False)
+        return EXIT_BACKEND
+    except SystemExit as exc:  # typer.Exit inside commands
+        return int(exc.code or 0)
+    except Exception as exc:  # click usage errors arrive here with standalone_mode=False
+        import click
+
+        if isinstance(exc, click.exceptions.ClickException):
+            exc.show()
+            return EXIT_BAD_INPUT
+        if isinstance(exc, click.exceptions.Abort):
+            return 130
+        raise
+    return 0
+
+
+def run() -> None:
+    sys.exit(main())

@@ -1,0 +1,1 @@
+"""Placeholder: filled by the generate work (see the issue)."""

@@ -1,0 +1,1 @@
+"""Placeholder: filled by the render work (see the issue)."""

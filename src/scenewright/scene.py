@@ -1,0 +1,264 @@
+"""The scene document: one versioned pydantic model, saved atomically as ``scene.json``.
+
+Every stage reads a :class:`Scene`, adds what it produces and writes it back, so a run that
+stops half way resumes from what is on disk. The document holds plain data only (no
+backend objects, no meshes): paths to images and assets are relative to the scene folder.
+
+Frames (DESIGN.md §3): +X right, +Y backward, +Z up, metres, degrees. ``position`` is the
+centre of the object's bounding box (the paper's convention, which is what a model writes);
+``size`` is the axis-aligned extent at yaw 0; at yaw 0 an object's front faces −Y.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from datetime import datetime, timezone
+from pathlib import Path
+from typing import Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
+
+from scenewright.errors import InputError
+from scenewright.files import write_atomic
+
+SCHEMA_VERSION = 1
+
+#: The ten relations of the paper (Table 3) and the type each belongs to. Their geometry is
+#: defined once, in :mod:`scenewright.layout.relations`.
+RELATION_TYPES: dict[str, str] = {
+    "left of": "relative",
+    "right of": "relative",
+    "in front of": "relative",
+    "behind": "relative",
+    "side of": "relative",
+    "near": "distance",
+    "far": "distance",
+    "on": "vertical",
+    "above": "vertical",
+    "face to": "rotation",
+}
+Relation = Literal[
+    "left of", "right of", "in front of", "behind", "side of", "near", "far", "on", "above", "face to"
+]
+RelationType = Literal["relative", "distance", "vertical", "rotation"]
+
+#: Styles every backend understands; free text is accepted and mapped by each backend.
+STYLES = ("realistic", "cartoon", "low-poly", "cyberpunk", "steampunk", "anime")
+DEFAULT_STYLE = "realistic"
+
+_ID = re.compile(r"^[A-Za-z0-9_\-.]+$")
+
+
+class _Model(BaseModel):
+    model_config = ConfigDict(extra="forbid", validate_assignment=True)
+
+
+class Vec3(_Model):
+    x: float = 0.0
+    y: float = 0.0
+    z: float = 0.0
+
+    def tuple(self) -> tuple[float, float, float]:
+        return (self.x, self.y, self.z)
+
+    @classmethod
+    def of(cls, values) -> Vec3:
+        x, y, z = (float(v) for v in values)
+        return cls(x=x, y=y, z=z)
+
+
+class SceneObject(_Model):
+    """One object of the scene; the fields of the paper's object JSON plus provenance."""
+
+    id: str
+    name: str
+    category: str | None = None
+    position: Vec3 = Field(default_factory=Vec3)
+    rotation: Vec3 = Field(default_factory=Vec3)
+    size: Vec3
+    visual_description: str = ""
+    asset: str | None = None
+    image: str | None = None
+
+    @field_validator("id")
+    @classmethod
+    def _id_is_a_name(cls, v: str) -> str:
+        if not _ID.match(v):
+            raise ValueError(f"id {v!r} must use only letters, digits, '_', '-' and '.'")
+        return v
+
+    @field_validator("size")
+    @classmethod
+    def _size_is_positive(cls, v: Vec3) -> Vec3:
+        if min(v.x, v.y, v.z) <= 0:
+            raise ValueError(f"every size must be > 0 metres, got {v.tuple()}")
+        return v
+
+    @property
+    def yaw(self) -> float:
+        return self.rotation.z
+
+
+class Constraint(_Model):
+    """⟨type, relation, source, target⟩: ``source`` is the object being placed."""
+
+    type: RelationType | None = None
+    relation: Relation
+    source: str
+    target: str
+
+    @field_validator("relation", mode="before")
+    @classmethod
+    def _normalise_relation(cls, v: Any) -> Any:
+        if isinstance(v, str):
+            v = " ".join(v.strip().lower().replace("_", " ").split())
+            if v not in RELATION_TYPES:
+                raise ValueError(f"unknown relation {v!r}; valid relations: {', '.join(RELATION_TYPES)}")
+        return v
+
+    @model_validator(mode="after")
+    def _type_follows_relation(self) -> Constraint:
+        # Models often mislabel the type (the paper's own example types "on" as relative);
+        # the relation decides.
+        expected = RELATION_TYPES[self.relation]
+        if self.type != expected:
+            object.__setattr__(self, "type", expected)
+        return self
+
+    def key(self) -> tuple[str, str, str]:
+        return (self.relation, self.source, self.target)
+
+    def __str__(self) -> str:
+        return f"{self.source} {self.relation} {self.target}"
+
+
+class RemovedObject(_Model):
+    """An object dropped from the scene (quality control, an edit), kept on record."""
+
+    id: str
+    name: str
+    reason: str
+
+
+class Ground(_Model):
+    kind: str = "grass"
+    texture: str | None = None
+    description: str = ""
+
+
+class DroppedConstraint(_Model):
+    constraint: dict[str, Any]
+    reason: str
+
+
+class UnplacedObject(_Model):
+    id: str
+    failed: list[Constraint] = Field(default_factory=list)
+    reason: str
+    nearest_miss: str | None = None
+
+
+class LayoutReport(_Model):
+    """What the solver did: the feedback the vision-language model revises constraints from."""
+
+    placed: list[str] = Field(default_factory=list)
+    unplaced: list[UnplacedObject] = Field(default_factory=list)
+    dropped: list[DroppedConstraint] = Field(default_factory=list)
+    nodes: int = 0
+    seconds: float = 0.0
+    solver: bool = True
+
+    @property
+    def complete(self) -> bool:
+        return not self.unplaced
+
+
+class Event(_Model):
+    """One provenance record: which stage did what, when, with which backend."""
+
+    stage: str
+    message: str
+    data: dict[str, Any] = Field(default_factory=dict)
+    time: str = Field(default_factory=lambda: datetime.now(timezone.utc).isoformat(timespec="seconds"))
+
+
+class Scene(_Model):
+    schema_version: int = SCHEMA_VERSION
+    text: str
+    style: str = DEFAULT_STYLE
+    seed: int = 0
+    objects: list[SceneObject] = Field(default_factory=list)
+    constraints: list[Constraint] = Field(default_factory=list)
+    removed: list[RemovedObject] = Field(default_factory=list)
+    ground: Ground = Field(default_factory=Ground)
+    #: Optional footprint (width along x, depth along y), centred at the origin.
+    bounds: tuple[float, float] | None = None
+    backends: dict[str, str] = Field(default_factory=dict)
+    layout: LayoutReport | None = None
+    #: Names of the stages whose output is complete, in order; drives resume.
+    done: list[str] = Field(default_factory=list)
+    provenance: list[Event] = Field(default_factory=list)
+
+    @field_validator("schema_version")
+    @classmethod
+    def _known_version(cls, v: int) -> int:
+        if v > SCHEMA_VERSION:
+            raise ValueError(
+                f"scene.json has schema_version {v}, newer than this scenewright understands "
+                f"({SCHEMA_VERSION}); upgrade scenewright"
+            )
+        return v
+
+    @model_validator(mode="after")
+    def _ids_unique(self) -> Scene:
+        seen: set[str] = set()
+        for obj in self.objects:
+            if obj.id in seen:
+                raise ValueError(f"object id {obj.id!r} is used twice")
+            seen.add(obj.id)
+        return self
+
+    def get(self, object_id: str) -> SceneObject:
+        for obj in self.objects:
+            if obj.id == object_id:
+                return obj
+        known = ", ".join(o.id for o in self.objects) or "none"
+        raise InputError(f"no object with id {object_id!r}; objects are: {known}")
+
+    def record(self, stage: str, message: str, **data: Any) -> None:
+        self.provenance.append(Event(stage=stage, message=message, data=data))
+
+    def to_json(self) -> str:
+        return self.model_dump_json(indent=2) + "\n"
+
+    def save(self, path: str | Path) -> Path:
+        return write_atomic(path, self.to_json())
+
+    @classmethod
+    def load(cls, path: str | Path) -> Scene:
+        path = Path(path)
+        try:
+            raw = path.read_text(encoding="utf-8")
+        except FileNotFoundError:
+            raise InputError(f"{path}: no such file") from None
+        try:
+            data = json.loads(raw)
+        except json.JSONDecodeError as exc:
+            raise InputError(f"{path}: not valid JSON ({exc.msg} at line {exc.lineno})") from None
+        try:
+            return cls.model_validate(data)
+        except ValidationError as exc:
+            raise InputError(f"{path}: {describe_validation_error(exc)}") from None
+
+
+def describe_validation_error(exc: ValidationError, limit: int = 5) -> str:
+    """A one-line summary naming each bad field by its path, for users and for model retries."""
+    parts = []
+    for err in exc.errors()[:limit]:
+        where = ".".join(str(p) for p in err["loc"]) or "(top level)"
+        parts.append(f"{where}: {err['msg']}")
+    more = len(exc.errors()) - limit
+    if more > 0:
+        parts.append(f"... and {more} more")
+    return "; ".join(parts)
