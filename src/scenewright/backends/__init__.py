@@ -22,7 +22,7 @@ from scenewright.scene import Constraint, SceneObject, Vec3
 
 if TYPE_CHECKING:
     from scenewright.editing.plan import EditPlan
-    from scenewright.scene import Scene
+    from scenewright.scene import LayoutReport, Scene
     from scenewright.settings import Settings
 
 
@@ -48,10 +48,10 @@ class VisionLanguageModel(Protocol):
         text: str,
         objects: Sequence[SceneObject],
         constraints: Sequence[Constraint],
-        feedback: str,
+        report: LayoutReport,
         reference: bytes | None,
     ) -> list[Constraint]:
-        """New constraints after the solver reported ``feedback`` on the last ones."""
+        """New constraints after the solver's ``report`` on the last ones (the paper's feedback loop)."""
 
     def plan_edit(self, scene: Scene, instruction: str) -> EditPlan:
         """What an instruction asks: operation, focus object, new constraints, new object."""
