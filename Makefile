@@ -3,9 +3,9 @@ PY      ?= python3.11
 VENV    := .venv
 BIN     := $(VENV)/bin
 STAMP   := $(VENV)/.installed
-EXTRAS  ?= test,remote
+EXTRAS  ?= test,remote,render
 
-.PHONY: install install-render tools demo test bench clean
+.PHONY: install install-render install-clip tools demo test bench clean
 
 $(BIN)/python:
 	@command -v $(PY) >/dev/null 2>&1 || { echo "scenewright needs Python 3.11 ($(PY) not found); set PY=/path/to/python3.11"; exit 1; }
@@ -18,15 +18,34 @@ $(STAMP): $(BIN)/python pyproject.toml
 
 install: $(STAMP)
 
+# Optional extras named by MissingExtra messages (render is already part of the default EXTRAS).
+install-render install-clip: install-%: $(STAMP)
+	$(BIN)/pip install -q -e ".[$*]"
+
+# Node tools the tests use (the Khronos glTF validator), pinned by tools/package-lock.json.
+TOOLS_STAMP := tools/node_modules/.installed
+$(TOOLS_STAMP): tools/package.json tools/package-lock.json
+	@command -v npm >/dev/null 2>&1 || { echo "the glTF validator needs Node.js >= 18 with npm (https://nodejs.org)"; exit 1; }
+	cd tools && npm ci --no-audit --no-fund --loglevel=error
+	@touch $(TOOLS_STAMP)
+
+tools: $(TOOLS_STAMP)
+
 demo: install
 	$(BIN)/scenewright generate --example --out demo-scene
+	@echo "Open demo-scene/scene.glb in Blender (File > Import > glTF 2.0), Godot 4 or Unreal 5."
 
-test: install
+test: install tools
 	$(BIN)/python -m pytest -n 2 -q
 
 bench: install
 	@mkdir -p bench-results
 	$(BIN)/scenewright bench layout --sizes 15,50,100 --seeds 20 --json | tee bench-results/layout.json
+	$(BIN)/scenewright bench pipeline --json | tee bench-results/pipeline.json
+	$(BIN)/scenewright bench analysis --objects 15 --latency 1 --concurrency 4 --json | tee bench-results/analysis.json
+	$(BIN)/scenewright bench eval --out bench-results/eval | tee bench-results/eval.json
+	$(BIN)/scenewright bench assets --assets 16 --servers 4 --delay 2 --json | tee bench-results/assets.json
+	$(BIN)/scenewright bench edits --json | tee bench-results/edits.json
 
 clean:
 	rm -rf $(VENV) demo-scene bench-results

@@ -7,8 +7,12 @@ variable name, a base URL, a cache folder) comes through :class:`Settings`.
 from __future__ import annotations
 
 import os
+import tomllib
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
+
+from scenewright.errors import InputError
 
 
 def default_cache_dir() -> Path:
@@ -36,3 +40,93 @@ class Settings:
     time_limit: float = 10.0
     cache_dir: Path | None = field(default_factory=default_cache_dir)
     extra: dict[str, object] = field(default_factory=dict)
+
+
+# How each key of a config file or a flag is read; a converter's ValueError says what fits.
+def _text(value: object) -> str:
+    if not isinstance(value, str) or not value.strip():
+        raise ValueError("a non-empty string")
+    return value.strip()
+
+
+def _optional_text(value: object) -> str | None:
+    if value is None or value == "":
+        return None
+    return _text(value)
+
+
+def _count(minimum: int):
+    def convert(value: object) -> int:
+        if isinstance(value, bool) or not isinstance(value, int) or value < minimum:
+            raise ValueError(f"an integer >= {minimum}")
+        return value
+
+    return convert
+
+
+def _positive(value: object) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not value > 0:
+        raise ValueError("a number > 0")
+    return float(value)
+
+
+def _cache_dir(value: object) -> Path | None:
+    """A folder, or an empty string for no cache."""
+    if value is None or value == "":
+        return None
+    if not isinstance(value, (str, Path)):
+        raise ValueError('a folder path (or "" for no cache)')
+    return Path(value).expanduser()
+
+
+def _table(value: object) -> dict[str, object]:
+    if not isinstance(value, dict):
+        raise ValueError("a table")
+    return dict(value)
+
+
+KEYS = {
+    "vlm": _text,
+    "images": _text,
+    "meshes": _text,
+    "base_url": _optional_text,
+    "api_key_env": _text,
+    "reasoning_effort": _optional_text,
+    "timeout": _positive,
+    "max_retries": _count(0),
+    "image_concurrency": _count(1),
+    "mesh_concurrency": _count(1),
+    "feedback_rounds": _count(0),
+    "time_limit": _positive,
+    "cache_dir": _cache_dir,
+    "extra": _table,
+}
+
+
+def apply(settings: Settings, values: Mapping[str, object], source: str) -> Settings:
+    """Set ``values`` on ``settings``, each checked; errors name ``source``, the key and what fits."""
+    unknown = sorted(set(values) - set(KEYS))
+    if unknown:
+        raise InputError(f"{source}: unknown keys {', '.join(unknown)}; valid keys: {', '.join(KEYS)}")
+    for key, value in values.items():
+        try:
+            setattr(settings, key, KEYS[key](value))
+        except ValueError as exc:
+            raise InputError(f"{source}: {key} must be {exc}, got {value!r}") from None
+    return settings
+
+
+#: Read from the working folder when no ``--config`` is given.
+DEFAULT_CONFIG = "scenewright.toml"
+
+
+def load_config(path: str | os.PathLike) -> dict[str, object]:
+    """The keys of a TOML config file (unchecked; :func:`apply` checks them)."""
+    path = Path(path)
+    try:
+        with path.open("rb") as fh:
+            return tomllib.load(fh)
+    except FileNotFoundError:
+        raise InputError(f"config file {path} does not exist") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"config file {path} is not valid TOML: {exc}") from None

@@ -12,7 +12,7 @@ import sys
 
 from rich.console import Console
 
-from scenewright.cli import backends, edit, evaluate, generate, parse, render, solve  # noqa: F401
+from scenewright.cli import assets, backends, edit, evaluate, generate, parse, remote, render, solve  # noqa: F401
 from scenewright.cli.app import app
 from scenewright.errors import BackendError, InfeasibleLayout, InputError, ScenewrightError
 

@@ -1,1 +1,122 @@
-"""Placeholder: filled by the edit work (see the issue)."""
+"""``scenewright edit|undo|redo|history`` and ``bench edits``: language edits of a scene folder."""
+
+from __future__ import annotations
+
+import json
+import statistics
+from pathlib import Path
+from typing import Annotated
+
+import typer
+from rich.console import Console
+from rich.table import Table
+
+from scenewright.cli.app import app, bench_app
+from scenewright.cli.options import (
+    ApiKeyEnvOption,
+    BaseUrlOption,
+    ConfigOption,
+    ImagesOption,
+    MeshesOption,
+    ReasoningEffortOption,
+    TimeoutOption,
+    VlmOption,
+    build_settings,
+)
+from scenewright.folder import SceneFolder
+
+FolderArgument = Annotated[Path, typer.Argument(help="The scene folder (holds scene.json).")]
+
+
+@app.command("edit")
+def edit_command(
+    folder: FolderArgument,
+    instruction: Annotated[str, typer.Argument(help="What to change, e.g. 'move the lamp next to the sofa'.")],
+    vlm: VlmOption = None,
+    images: ImagesOption = None,
+    meshes: MeshesOption = None,
+    base_url: BaseUrlOption = None,
+    config: ConfigOption = None,
+    api_key_env: ApiKeyEnvOption = None,
+    reasoning_effort: ReasoningEffortOption = None,
+    timeout: TimeoutOption = None,
+) -> None:
+    """Apply one edit (move, add, delete, replace/restyle); the previous version goes to history/."""
+    from scenewright.backends import Backends
+    from scenewright.editing import apply_edit, entries
+
+    scene_folder = SceneFolder(folder)
+    scene = scene_folder.load()
+    settings = build_settings(vlm=vlm, images=images, meshes=meshes, base_url=base_url, config=config,
+                              api_key_env=api_key_env, reasoning_effort=reasoning_effort, timeout=timeout)
+    apply_edit(scene, scene_folder, instruction, backends=Backends.from_settings(settings), settings=settings)
+    last = [e for e in entries(scene_folder) if e.active][-1]
+    console = Console()
+    console.print(f"[bold green]edit {last.number}[/bold green]: {last.operation} {last.focus}")
+    for change in last.changes:
+        console.print(f"  {change}")
+    console.print(f"  wrote {scene_folder.document} and {scene_folder.glb}; undo with `scenewright undo {folder}`")
+
+
+@app.command("undo")
+def undo_command(folder: FolderArgument) -> None:
+    """Restore the scene as it was before the last edit (scene.json byte for byte, and scene.glb)."""
+    from scenewright.editing import undo
+
+    _, entry = undo(SceneFolder(folder))
+    Console().print(f"undid edit {entry.number}: {entry.instruction!r}; redo with `scenewright redo {folder}`")
+
+
+@app.command("redo")
+def redo_command(folder: FolderArgument) -> None:
+    """Re-apply the edit undone last, exactly as it came out."""
+    from scenewright.editing import redo
+
+    _, entry = redo(SceneFolder(folder))
+    Console().print(f"redid edit {entry.number}: {entry.instruction!r}")
+
+
+@app.command("history")
+def history_command(folder: FolderArgument) -> None:
+    """List the edits of a scene folder, oldest first; undone ones are marked."""
+    from scenewright.editing import entries
+
+    found = entries(SceneFolder(folder))
+    console = Console()
+    if not found:
+        console.print(f"no edits yet in {folder}")
+        return
+    table = Table("#", "time", "operation", "focus", "instruction", "state")
+    for e in found:
+        table.add_row(str(e.number), e.time, e.operation, e.focus, e.instruction,
+                      "in effect" if e.active else "[dim]undone[/dim]")
+    console.print(table)
+
+
+@bench_app.command("edits")
+def bench_edits(
+    cases: Annotated[
+        Path, typer.Option("--cases", help="Folder of annotated edit instructions (*.json).")
+    ] = Path("benchmarks/edits"),
+    objects: Annotated[int, typer.Option("--objects", help="Objects in the latency scene.")] = 30,
+    moves: Annotated[int, typer.Option("--moves", help="Move edits timed on the latency scene.")] = 20,
+    json_output: Annotated[bool, typer.Option("--json", help="Print JSON (the only output format).")] = True,
+) -> None:
+    """Offline planner accuracy on annotated instructions, and move-edit latency, as JSON.
+
+    ``move_resolve_median_s`` is the solver's time per move; ``move_edit_median_s`` the whole
+    edit short of writing files (parse, meshes, solve); ``move_edit_first_s`` the first edit of
+    the session, which also parses every asset."""
+    from scenewright.editing.bench import latency, score_cases
+
+    scores = score_cases(cases)
+    solve_seconds, edit_seconds = latency(objects, moves)
+    result = {
+        **scores,
+        "latency_objects": objects,
+        "latency_moves": len(solve_seconds),
+        "move_resolve_median_s": round(statistics.median(solve_seconds), 4),
+        "move_edit_median_s": round(statistics.median(edit_seconds), 4),
+        "move_edit_first_s": round(edit_seconds[0], 4),
+    }
+    typer.echo(json.dumps(result))

@@ -1,1 +1,101 @@
-"""Placeholder: filled by the evaluate work (see the issue)."""
+"""``scenewright evaluate DIR...``: the paper's metrics on scene folders; ``bench eval``: full vs w/o solver."""
+
+from __future__ import annotations
+
+import json
+import tempfile
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from scenewright.cli.app import app, bench_app
+from scenewright.cli.options import ApiKeyEnvOption, BaseUrlOption, ConfigOption, VlmOption, build_settings
+
+
+def _clip(weights: Path | None):
+    from scenewright.evaluation.perceptual import ClipScorer
+
+    return ClipScorer(weights) if weights is not None else None
+
+
+@app.command("evaluate")
+def evaluate_command(
+    directories: Annotated[list[Path], typer.Argument(help="Scene folders to score.")],
+    out: Annotated[Path, typer.Option("--out", help="Folder for report.json, table.md and chart.png.")],
+    ablation: Annotated[
+        bool, typer.Option("--ablation", help="Also score each scene laid out without the solver (initial poses).")
+    ] = False,
+    clip_weights: Annotated[
+        Path | None, typer.Option("--clip-weights", help="Local open_clip ViT-B/32 checkpoint for the CLIP score.")
+    ] = None,
+    judge: Annotated[
+        bool, typer.Option("--judge", help="Ask the vision-language backend for Pos., Rot. and SA on the renders.")
+    ] = False,
+    group: Annotated[str, typer.Option("--group", help="Name of this set of scenes in the table.")] = "scenes",
+    vlm: VlmOption = None,
+    base_url: BaseUrlOption = None,
+    api_key_env: ApiKeyEnvOption = None,
+    config: ConfigOption = None,
+) -> None:
+    """Collisions (CF, CN), unsupported and out-of-bounds objects, constraints held, CLIP, judge scores."""
+    from scenewright.backends import create_backend
+    from scenewright.evaluation import evaluate
+    from scenewright.evaluation.report import write_report
+
+    settings = build_settings(vlm=vlm, base_url=base_url, config=config, api_key_env=api_key_env)
+    model = create_backend("vlm", settings.vlm, settings) if (ablation or judge) else None
+    results = evaluate(
+        directories,
+        group=group,
+        ablation_vlm=model if ablation else None,
+        clip=_clip(clip_weights),
+        judge_vlm=model if judge else None,
+    )
+    paths = write_report(results, out, paper=False)
+    typer.echo(paths["table"].read_text(encoding="utf-8"))
+    typer.echo(f"wrote {', '.join(str(p) for p in paths.values())}", err=True)
+
+
+#: Prompt domains → the paper's group names, so the table sits next to its figures.
+PAPER_GROUPS = {"indoor": "indoor", "outdoor": "open-domain"}
+
+
+@bench_app.command("eval")
+def bench_eval(
+    out: Annotated[Path, typer.Option("--out", help="Folder for table.md, report.json and chart.png.")] = Path(
+        "bench-results/eval"
+    ),
+    prompts: Annotated[
+        Path | None, typer.Option("--prompts", help="Folder of benchmark prompts (default: benchmarks/prompts).")
+    ] = None,
+    limit: Annotated[int | None, typer.Option("--limit", help="Use only the first N prompts of each domain.")] = None,
+) -> None:
+    """Generate the shipped prompts offline and score them, full pipeline vs without the solver."""
+    from scenewright.analysis.bench import load_prompts
+    from scenewright.backends import Backends
+    from scenewright.evaluation import evaluate
+    from scenewright.evaluation.report import write_report
+    from scenewright.pipeline import generate
+
+    entries = load_prompts(prompts)
+    if limit is not None:
+        by_domain: dict[str, list] = {}
+        for entry in entries:
+            by_domain.setdefault(entry.domain, []).append(entry)
+        entries = [e for group in by_domain.values() for e in group[:limit]]
+    settings = build_settings()
+    settings.cache_dir = None
+    backends = Backends.from_settings(settings)
+    results = []
+    with tempfile.TemporaryDirectory(prefix="scenewright-eval-") as tmp:
+        for entry in entries:
+            folder = Path(tmp) / entry.id
+            generate(entry.text, folder, backends=backends, settings=settings, style=entry.style, render=False)
+            group = PAPER_GROUPS.get(entry.domain, entry.domain)
+            results += evaluate([folder], group=group, ablation_vlm=backends.vlm)
+    for r in results:  # the temporary folders are gone; name scenes by their prompt
+        r.scene = Path(r.scene).name
+    paths = write_report(results, out)
+    summary = json.loads(paths["json"].read_text(encoding="utf-8"))["summary"]
+    typer.echo(json.dumps({"prompts": len(entries), "out": str(out), "summary": summary}))

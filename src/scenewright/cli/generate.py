@@ -1,1 +1,203 @@
-"""Placeholder: filled by the generate work (see the issue)."""
+"""``scenewright generate``: text → scene folder, with progress; ``bench pipeline``: its speed."""
+
+from __future__ import annotations
+
+import json
+import statistics
+import tempfile
+import time
+from importlib import resources
+from pathlib import Path
+from typing import Annotated
+
+import typer
+from rich.console import Console
+from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+
+from scenewright.cli.app import app, bench_app
+from scenewright.cli.options import (
+    ApiKeyEnvOption,
+    BaseUrlOption,
+    ConfigOption,
+    FeedbackRoundsOption,
+    ImageConcurrencyOption,
+    ImagesOption,
+    MeshesOption,
+    ReasoningEffortOption,
+    TimeoutOption,
+    VlmOption,
+    build_settings,
+)
+from scenewright.errors import InfeasibleLayout, InputError
+from scenewright.folder import SceneFolder
+from scenewright.scene import STYLES, Scene
+
+#: The bundled text ``--example`` generates (``make demo``).
+EXAMPLE = "living_room.txt"
+#: Scenes with at least this many objects are reported apart by ``bench pipeline``.
+LARGE_SCENE = 12
+
+
+def _example_text() -> str:
+    return (resources.files("scenewright") / "data" / "examples" / EXAMPLE).read_text(encoding="utf-8")
+
+
+class _StageProgress:
+    """One spinner line per pipeline stage, its latest message beside it."""
+
+    def __init__(self, progress: Progress):
+        self.progress = progress
+        self.tasks: dict[str, int] = {}
+
+    def __call__(self, stage: str, message: str) -> None:
+        if stage not in self.tasks:
+            self.tasks[stage] = self.progress.add_task(stage, total=1, note="")
+        task = self.tasks[stage]
+        if message == "done":
+            self.progress.update(task, completed=1, note="[green]done[/green]")
+        else:
+            self.progress.update(task, note=message)
+
+
+def _summary(console: Console, folder: SceneFolder, scene: Scene) -> None:
+    console.print(f"[bold green]Scene written to {folder.root.resolve()}[/bold green]")
+    console.print(f"  scene.glb    {folder.glb}  (open it in Blender, Godot or Unreal)")
+    counts = f"{len(scene.objects)} objects, {len(scene.constraints)} constraints"
+    console.print(f"  scene.json   {folder.document}  ({counts})")
+    console.print(f"  assets/      {folder.assets}  (one GLB per object)")
+    console.print(f"  images/      {folder.images}")
+    renders = sorted(folder.renders.glob("*.png")) if folder.renders.is_dir() else []
+    if renders:
+        console.print(f"  renders/     {folder.renders}  ({len(renders)} previews)")
+    for removed in scene.removed:
+        console.print(f"  [dim]removed {removed.id}: {removed.reason}[/dim]")
+
+
+@app.command("generate")
+def generate_command(
+    text: Annotated[
+        str | None, typer.Argument(help="The scene description (25-300 words work best).")
+    ] = None,
+    out: Annotated[Path | None, typer.Option("--out", "-o", help="Folder to write the scene into.")] = None,
+    style: Annotated[
+        str | None,
+        typer.Option(
+            "--style", help=f"Visual style ({', '.join(STYLES)}); default: named in the text, else realistic."
+        ),
+    ] = None,
+    seed: Annotated[int, typer.Option("--seed", help="Seed of the layout search and procedural looks.")] = 0,
+    no_render: Annotated[bool, typer.Option("--no-render", help="Skip the Blender preview renders.")] = False,
+    resume_dir: Annotated[
+        Path | None, typer.Option("--resume", help="Finish an interrupted scene folder instead of a new one.")
+    ] = None,
+    example: Annotated[bool, typer.Option("--example", help="Generate the bundled example text.")] = False,
+    vlm: VlmOption = None,
+    images: ImagesOption = None,
+    meshes: MeshesOption = None,
+    base_url: BaseUrlOption = None,
+    config: ConfigOption = None,
+    api_key_env: ApiKeyEnvOption = None,
+    reasoning_effort: ReasoningEffortOption = None,
+    timeout: TimeoutOption = None,
+    image_concurrency: ImageConcurrencyOption = None,
+    feedback_rounds: FeedbackRoundsOption = None,
+) -> None:
+    """Turn TEXT into a scene folder: scene.json, one asset per object, scene.glb, previews."""
+    from scenewright.backends import Backends
+    from scenewright.pipeline import generate, resume
+
+    sources = (("TEXT", text is not None), ("--example", example), ("--resume", resume_dir is not None))
+    given = [name for name, present in sources if present]
+    if len(given) != 1:
+        raise InputError(
+            f"give exactly one of TEXT, --example or --resume DIR (got {', '.join(given) or 'none'})"
+        )
+    if resume_dir is not None and out is not None:
+        raise InputError("--resume takes the scene folder itself; drop --out")
+    if resume_dir is None and out is None:
+        raise InputError("--out DIR is required: the folder to write the scene into")
+    settings = build_settings(
+        vlm=vlm,
+        images=images,
+        meshes=meshes,
+        base_url=base_url,
+        config=config,
+        api_key_env=api_key_env,
+        reasoning_effort=reasoning_effort,
+        timeout=timeout,
+        image_concurrency=image_concurrency,
+        feedback_rounds=feedback_rounds,
+    )
+    backends = Backends.from_settings(settings)
+    console = Console(stderr=True)
+    with Progress(
+        SpinnerColumn(),
+        TextColumn("[bold]{task.description:<8}"),
+        TextColumn("{task.fields[note]}"),
+        TimeElapsedColumn(),
+        console=console,
+        transient=False,
+    ) as bar:
+        report = _StageProgress(bar)
+        if resume_dir is not None:
+            folder = SceneFolder(resume_dir)
+            scene = resume(
+                folder, backends=backends, settings=settings, render=not no_render, progress=report
+            )
+        else:
+            folder = SceneFolder(out)
+            scene = generate(
+                _example_text() if example else text,
+                folder,
+                backends=backends,
+                settings=settings,
+                style=style,
+                seed=seed,
+                render=not no_render,
+                progress=report,
+            )
+    _summary(Console(), folder, scene)
+    if scene.layout is not None and scene.layout.unplaced:
+        lines = "; ".join(f"{u.id} ({u.reason})" for u in scene.layout.unplaced)
+        raise InfeasibleLayout(
+            f"{len(scene.layout.unplaced)} objects could not be placed and stay at their initial "
+            f"positions: {lines}. The scene is written; move them with `scenewright edit`."
+        )
+
+
+@bench_app.command("pipeline")
+def bench_pipeline(
+    prompts: Annotated[
+        Path | None, typer.Option("--prompts", help="Folder of prompt files (default: benchmarks/prompts).")
+    ] = None,
+    limit: Annotated[int | None, typer.Option("--limit", help="Use only the first N prompts.")] = None,
+    json_output: Annotated[bool, typer.Option("--json", help="Print JSON (the only output format).")] = True,
+) -> None:
+    """Seconds of `generate --no-render` (offline backends, no cache) per shipped prompt, as JSON."""
+    from scenewright.analysis.bench import load_prompts
+    from scenewright.backends import Backends
+    from scenewright.pipeline import generate
+
+    texts = [prompt.text for prompt in load_prompts(prompts)][:limit]
+    settings = build_settings()
+    settings.cache_dir = None
+    backends = Backends.from_settings(settings)
+    runs = []
+    with tempfile.TemporaryDirectory(prefix="scenewright-bench-") as tmp:
+        for index, text in enumerate(texts):
+            start = time.perf_counter()
+            scene = generate(text, Path(tmp) / str(index), backends=backends, settings=settings, render=False)
+            runs.append((time.perf_counter() - start, len(scene.objects), scene.layout.complete))
+    seconds = [s for s, _, _ in runs]
+    large = [s for s, n, _ in runs if n >= LARGE_SCENE]
+    result = {
+        "prompts": len(runs),
+        "median_seconds": round(statistics.median(seconds), 3),
+        "max_seconds": round(max(seconds), 3),
+        "median_objects": statistics.median(n for _, n, _ in runs),
+        "max_objects": max(n for _, n, _ in runs),
+        f"median_seconds_{LARGE_SCENE}plus_objects": round(statistics.median(large), 3) if large else None,
+        f"scenes_{LARGE_SCENE}plus_objects": len(large),
+        "complete_layouts": sum(complete for _, _, complete in runs),
+    }
+    typer.echo(json.dumps(result))

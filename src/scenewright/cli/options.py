@@ -1,4 +1,9 @@
-"""Backend options shared by every command that runs models (generate, edit, evaluate)."""
+"""Backend options shared by every command that runs models (generate, edit, evaluate).
+
+Settings come from three layers, the later winning: the defaults, a TOML config file
+(``--config FILE``, else ``scenewright.toml`` in the working folder when there is one) with
+the keys of :class:`~scenewright.settings.Settings`, then the flags given.
+"""
 
 from __future__ import annotations
 
@@ -7,7 +12,7 @@ from typing import Annotated
 
 import typer
 
-from scenewright.settings import Settings
+from scenewright.settings import DEFAULT_CONFIG, Settings, apply, load_config
 
 VlmOption = Annotated[str | None, typer.Option("--vlm", help="Vision-language backend: offline | openai:MODEL.")]
 ImagesOption = Annotated[str | None, typer.Option("--images", help="Image backend: offline | openai:MODEL.")]
@@ -16,7 +21,26 @@ MeshesOption = Annotated[
     typer.Option("--meshes", help="Mesh backend: procedural | hunyuan3d:URL[,URL...] | library:FOLDER."),
 ]
 BaseUrlOption = Annotated[str | None, typer.Option("--base-url", help="OpenAI-compatible server URL.")]
-ConfigOption = Annotated[Path | None, typer.Option("--config", help="TOML file with the same keys.")]
+ConfigOption = Annotated[
+    Path | None,
+    typer.Option("--config", help=f"TOML file with the same keys (default: ./{DEFAULT_CONFIG} when present)."),
+]
+ApiKeyEnvOption = Annotated[
+    str | None,
+    typer.Option("--api-key-env", help="Environment variable holding the API key (default OPENAI_API_KEY)."),
+]
+ReasoningEffortOption = Annotated[
+    str | None,
+    typer.Option("--reasoning-effort", help="Reasoning effort for models that take one: low | medium | high."),
+]
+TimeoutOption = Annotated[float | None, typer.Option("--timeout", help="Seconds before a model request is retried.")]
+ImageConcurrencyOption = Annotated[
+    int | None, typer.Option("--image-concurrency", help="Image requests in flight at once (default 4).")
+]
+FeedbackRoundsOption = Annotated[
+    int | None,
+    typer.Option("--feedback-rounds", help="Constraint revisions after an incomplete layout (default 3)."),
+]
 
 
 def build_settings(
@@ -25,10 +49,14 @@ def build_settings(
     meshes: str | None = None,
     base_url: str | None = None,
     config: Path | None = None,
+    **flags: object,
 ) -> Settings:
-    """Defaults, then the config file, then flags: the later wins."""
+    """Defaults, then the config file, then flags: the later wins. ``flags`` are further
+    Settings keys (``api_key_env=...``); a flag left at ``None`` was not given."""
     settings = Settings()
-    for key, value in (("vlm", vlm), ("images", images), ("meshes", meshes), ("base_url", base_url)):
-        if value is not None:
-            setattr(settings, key, value)
-    return settings
+    if config is None and Path(DEFAULT_CONFIG).is_file():
+        config = Path(DEFAULT_CONFIG)
+    if config is not None:
+        apply(settings, load_config(config), str(config))
+    given = {"vlm": vlm, "images": images, "meshes": meshes, "base_url": base_url, **flags}
+    return apply(settings, {k: v for k, v in given.items() if v is not None}, "command line")

@@ -1,1 +1,53 @@
-"""Placeholder: filled by the render work (see the issue)."""
+"""``scenewright render DIR``: Blender previews of a scene folder."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from scenewright.cli.app import app
+from scenewright.errors import InputError
+from scenewright.folder import SceneFolder
+
+
+def parse_resolution(text: str) -> tuple[int, int]:
+    try:
+        width, height = (int(part) for part in text.lower().split("x"))
+    except ValueError:
+        raise InputError(f"--resolution {text!r}: write it as WIDTHxHEIGHT, e.g. 1280x720") from None
+    return width, height
+
+
+@app.command("render")
+def render_command(
+    directory: Annotated[Path, typer.Argument(help="Scene folder (holds scene.json and scene.glb).")],
+    views: Annotated[
+        str, typer.Option("--views", help="best: render the view showing most objects; all: the three views.")
+    ] = "best",
+    draft: Annotated[bool, typer.Option("--draft", help="Tiny, noisy and fast: for checks, not for looking at.")] = False,
+    resolution: Annotated[str, typer.Option("--resolution", help="WIDTHxHEIGHT in pixels.")] = "1280x720",
+    samples: Annotated[int | None, typer.Option("--samples", help="Cycles samples per pixel (denoised).")] = None,
+    transparent: Annotated[bool, typer.Option("--transparent", help="Transparent background instead of the sky.")] = False,
+) -> None:
+    """Render previews with Blender (Cycles on the CPU) into DIR/renders/."""
+    from scenewright.render import DEFAULT_SAMPLES, render, render_info
+
+    if views not in ("best", "all"):
+        raise InputError(f"--views {views!r}: choose best or all")
+    folder = SceneFolder(directory)
+    scene = folder.load()
+    paths = render(
+        scene,
+        folder,
+        keep_all=views == "all",
+        resolution=parse_resolution(resolution),
+        samples=samples if samples is not None else DEFAULT_SAMPLES,
+        draft=draft,
+        transparent=transparent,
+    )
+    info = render_info(folder) or {}
+    for path in paths:
+        typer.echo(str(path))
+    typer.echo(f"best view: {info.get('best')}; {info.get('total_seconds')} s in Blender", err=True)

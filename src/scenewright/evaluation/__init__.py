@@ -1,1 +1,134 @@
-"""Placeholder: see the issue that builds this package."""
+"""Scoring scenes the way the paper does (§4, Table 1) so every change can be compared.
+
+Per scene: physical plausibility (collisions at mesh level, out of bounds, unsupported
+objects), spatial consistency (constraints that hold, by relation), perceptual quality (CLIP
+on the render, with user-supplied weights) and the vision-language judge (Pos., Rot., SA,
+PSA). :mod:`scenewright.evaluation.report` aggregates them into the paper's table.
+"""
+
+from __future__ import annotations
+
+import logging
+from collections.abc import Mapping, Sequence
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+import trimesh
+
+from scenewright.backends import VisionLanguageModel
+from scenewright.evaluation.judge import judge, psa
+from scenewright.evaluation.perceptual import ClipScorer
+from scenewright.evaluation.physical import physical
+from scenewright.evaluation.spatial import spatial
+from scenewright.folder import SceneFolder
+from scenewright.scene import Scene
+
+log = logging.getLogger(__name__)
+
+FULL = "full"
+ABLATED = "w/o solver"
+
+
+@dataclass
+class SceneMetrics:
+    scene: str
+    group: str
+    method: str
+    objects: int
+    collisions: list[tuple[str, str]]
+    out_of_bounds: list[str]
+    floating: list[str]
+    sunken: list[str]
+    #: relation → [satisfied, total]
+    constraints: dict[str, list[int]]
+    violated: list[str]
+    clip: float | None = None
+    #: pos, rot, sa (1–100) when the judge could score the render
+    judge: dict[str, float] = field(default_factory=dict)
+    psa: float | None = None
+    #: metric → why it could not be computed
+    unavailable: dict[str, str] = field(default_factory=dict)
+
+    @property
+    def collision_free(self) -> bool:
+        return not self.collisions
+
+    def to_dict(self) -> dict:
+        return asdict(self) | {"collision_free": self.collision_free}
+
+
+def evaluate_scene(
+    scene: Scene,
+    *,
+    name: str,
+    group: str = "scenes",
+    method: str = FULL,
+    meshes: Mapping[str, trimesh.Trimesh] | None = None,
+    image: Path | None = None,
+    clip: ClipScorer | None = None,
+    vlm: VisionLanguageModel | None = None,
+) -> SceneMetrics:
+    """Every metric for one scene; render-based ones only when ``image`` (its render) is given."""
+    phys, spat = physical(scene, meshes), spatial(scene)
+    metrics = SceneMetrics(
+        scene=name,
+        group=group,
+        method=method,
+        objects=len(scene.objects),
+        collisions=[tuple(p) for p in phys.collisions],
+        out_of_bounds=phys.out_of_bounds,
+        floating=phys.floating,
+        sunken=phys.sunken,
+        constraints=spat.by_relation,
+        violated=spat.violated,
+    )
+    wanted = [m for m, asked in (("clip", clip), ("judge", vlm)) if asked is not None]
+    if image is None:
+        for metric in wanted:
+            metrics.unavailable[metric] = "no render of this layout (run `scenewright render DIR`)"
+        return metrics
+    if clip is not None:
+        metrics.clip = clip.score(scene.text, image)
+    if vlm is not None:
+        verdict = judge(scene.text, image.read_bytes(), vlm)
+        if verdict.unavailable:
+            metrics.unavailable["judge"] = verdict.unavailable
+        else:
+            metrics.judge = verdict.scores
+            metrics.psa = psa(metrics.collision_free, verdict.scores["sa"])
+    return metrics
+
+
+def evaluate(
+    folders: Sequence[SceneFolder | str | Path],
+    *,
+    group: str = "scenes",
+    ablation_vlm: VisionLanguageModel | None = None,
+    clip: ClipScorer | None = None,
+    judge_vlm: VisionLanguageModel | None = None,
+) -> list[SceneMetrics]:
+    """Metrics of each scene folder; with ``ablation_vlm`` also its layout without the solver.
+
+    The ablated layout is not rendered, so its CLIP and judge scores are reported unavailable.
+    """
+    from scenewright.assets import load_meshes
+    from scenewright.evaluation.ablation import initial_objects, without_solver
+    from scenewright.render import as_folder, best_render
+
+    results = []
+    for item in folders:
+        folder = as_folder(item)
+        scene = folder.load()
+        meshes = load_meshes(scene, folder)
+        name = str(folder.root)
+        results.append(
+            evaluate_scene(
+                scene, name=name, group=group, meshes=meshes, image=best_render(folder), clip=clip, vlm=judge_vlm
+            )
+        )
+        if ablation_vlm is not None:
+            ablated = without_solver(scene, initial_objects(scene, folder, ablation_vlm), meshes)
+            results.append(
+                evaluate_scene(ablated, name=name, group=group, method=ABLATED, meshes=meshes, clip=clip, vlm=judge_vlm)
+            )
+    return results

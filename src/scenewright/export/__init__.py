@@ -1,1 +1,5 @@
-"""Placeholder: see the issue that builds this package."""
+"""Export: the assembled ``scene.glb`` that Blender, Unreal and Godot open as it is."""
+
+from scenewright.export.glb import assemble, node_matrix
+
+__all__ = ["assemble", "node_matrix"]

@@ -1,0 +1,163 @@
+"""The object catalogue: what the offline backends know about each kind of thing.
+
+One record per category (``data/catalogue.json``): the words that name it, its typical size
+(x width, y depth, z height in metres, at yaw 0 with the front toward −Y), how it rests
+(``ground``, on a ``surface``, or ``hanging`` above something), the procedural generator
+that builds it (``shape``, one name of :data:`SHAPE_NAMES`), indoor/outdoor tags, and
+whether other things are usually put on it (``support``: tables, desks, counters).
+
+Sizes stay within 0.1–5 m except where the thing itself is larger: buildings, houses,
+towers, trees, vehicles, cranes and the like keep their real size, because a 5 m bus or
+lighthouse would look wrong next to a 0.9 m chair. Flat things (rugs, mats) are thinner
+than 0.1 m on purpose.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+
+#: The procedural generators' names (the brief's SHAPES vocabulary); ``generic`` is the fallback.
+SHAPE_NAMES = (
+    "table", "round_table", "coffee_table", "desk", "chair", "armchair", "office_chair", "stool",
+    "sofa", "bench", "bed", "bookshelf", "cabinet", "wardrobe", "nightstand", "counter",
+    "table_lamp", "floor_lamp", "pendant_lamp", "rug", "tv", "monitor", "laptop", "potted_plant",
+    "vase", "bathtub", "toilet", "sink", "stove", "fridge", "piano", "clock", "mirror",
+    "picture_frame", "trash_can", "crate", "barrel", "books", "bottle", "cup", "bowl", "tree",
+    "pine_tree", "palm_tree", "bush", "flower_bed", "rock", "fountain", "statue", "lamp_post",
+    "sign", "fence", "arch", "bollard", "hydrant", "car", "truck", "bus", "bicycle", "boat",
+    "building", "house", "kiosk", "market_stall", "tent", "umbrella", "swing", "slide",
+    "treadmill", "whiteboard", "robot", "crystal", "tower", "well", "cart", "pillar", "generic",
+)  # fmt: skip
+RESTS = ("ground", "surface", "hanging")
+
+_WORD = re.compile(r"[a-z0-9]+(?:['’][a-z]+)?")
+#: Plurals that the suffix rules below would get wrong.
+_IRREGULAR = {"cacti": "cactus", "mice": "mouse", "geese": "goose", "people": "person", "children": "child"}
+_KEEP_S = ("ss", "us", "is", "ous", "ics")
+
+
+@dataclass(frozen=True)
+class Category:
+    name: str
+    synonyms: tuple[str, ...]
+    size: tuple[float, float, float]
+    rests: str
+    shape: str
+    tags: tuple[str, ...]
+    support: bool = False
+
+    @property
+    def indoor(self) -> bool:
+        return "indoor" in self.tags
+
+    @property
+    def outdoor(self) -> bool:
+        return "outdoor" in self.tags
+
+    @property
+    def label(self) -> str:
+        """The category as words, for names and descriptions."""
+        return self.name.replace("_", " ")
+
+    @property
+    def phrases(self) -> tuple[str, ...]:
+        return (self.label, *self.synonyms)
+
+
+def words(text: str) -> list[str]:
+    """Lowercase word tokens; hyphens and punctuation split words (``four-poster`` → two)."""
+    return _WORD.findall(text.lower().replace("’", "'"))
+
+
+def singular(word: str) -> str:
+    """The singular of an English plural noun, by the common suffix rules."""
+    if word in _IRREGULAR:
+        return _IRREGULAR[word]
+    if len(word) <= 3 or not word.endswith("s") or word.endswith(_KEEP_S):
+        return word
+    if word.endswith("ies"):
+        return word[:-3] + "y"
+    if word.endswith("ves") and word not in ("eaves",):
+        return word[:-3] + "f"
+    if word.endswith(("ches", "shes", "xes", "sses", "zes")):
+        return word[:-2]
+    return word[:-1]
+
+
+def _key(phrase: str) -> tuple[str, ...]:
+    return tuple(words(phrase))
+
+
+def _validate(entry: dict, seen: set[str]) -> Category:
+    name = entry["name"]
+    if name in seen:
+        raise ValueError(f"catalogue: category {name!r} appears twice")
+    if entry["shape"] not in SHAPE_NAMES:
+        raise ValueError(f"catalogue: {name!r} has unknown shape {entry['shape']!r}; shapes: {', '.join(SHAPE_NAMES)}")
+    if entry["rests"] not in RESTS:
+        raise ValueError(f"catalogue: {name!r} rests {entry['rests']!r}; choose one of {', '.join(RESTS)}")
+    size = tuple(float(v) for v in entry["size"])
+    if len(size) != 3 or min(size) <= 0:
+        raise ValueError(f"catalogue: {name!r} needs three positive sizes, got {entry['size']}")
+    return Category(
+        name=name,
+        synonyms=tuple(entry.get("synonyms", ())),
+        size=size,  # type: ignore[arg-type]
+        rests=entry["rests"],
+        shape=entry["shape"],
+        tags=tuple(entry.get("tags", ())),
+        support=bool(entry.get("support", False)),
+    )
+
+
+@lru_cache(maxsize=1)
+def load_catalogue() -> dict[str, Category]:
+    """Category name → :class:`Category`, read once from the package data."""
+    raw = json.loads(resources.files("scenewright.data").joinpath("catalogue.json").read_text(encoding="utf-8"))
+    seen: set[str] = set()
+    result: dict[str, Category] = {}
+    for entry in raw["categories"]:
+        category = _validate(entry, seen)
+        seen.add(category.name)
+        result[category.name] = category
+    return result
+
+
+@lru_cache(maxsize=1)
+def phrase_index() -> dict[tuple[str, ...], str]:
+    """Word tuple → category name, for every name and synonym; the first category to claim a
+    phrase keeps it."""
+    index: dict[tuple[str, ...], str] = {}
+    for category in load_catalogue().values():
+        for phrase in category.phrases:
+            index.setdefault(_key(phrase), category.name)
+    return index
+
+
+def match_phrase(tokens: tuple[str, ...]) -> str | None:
+    """The category a word tuple names, trying the last word in its singular form too."""
+    index = phrase_index()
+    if tokens in index:
+        return index[tokens]
+    if not tokens:
+        return None
+    single = (*tokens[:-1], singular(tokens[-1]))
+    if single in index:
+        return index[single]
+    if len(tokens) >= 3 and tokens[1] == "of":  # "suits of armour", "chests of drawers"
+        return index.get((singular(tokens[0]), *tokens[1:]))
+    return None
+
+
+def lookup(word_or_phrase: str) -> Category | None:
+    """The category a word or phrase names (``"couches"`` → sofa), or ``None``."""
+    catalogue = load_catalogue()
+    text = word_or_phrase.strip().lower().replace(" ", "_")
+    if text in catalogue:
+        return catalogue[text]
+    name = match_phrase(_key(word_or_phrase))
+    return catalogue[name] if name else None

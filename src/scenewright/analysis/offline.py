@@ -1,0 +1,137 @@
+"""The offline vision-language backend: the catalogue parser answering the model's questions.
+
+No network, no weights: objects, sizes and first poses come from :func:`parse_scene` and
+:func:`initial_objects`, constraints from the relations the parse read, and the feedback loop
+relaxes what the solver could not satisfy. Edits are planned by the rule-based edit parser;
+judging renders needs a real vision model and says so.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING
+
+from scenewright.analysis.arrange import initial_objects
+from scenewright.analysis.parser import ParsedScene, parse_scene
+from scenewright.errors import BackendError, InputError
+from scenewright.scene import Constraint, LayoutReport, SceneObject
+
+if TYPE_CHECKING:
+    from scenewright.editing.plan import EditPlan
+    from scenewright.scene import Scene
+    from scenewright.settings import Settings
+
+#: One relaxation step per failed relation: a side becomes "near", the rest are dropped.
+_RELAX: dict[str, str | None] = {
+    "left of": "near", "right of": "near", "in front of": "near", "behind": "near", "side of": "near",
+    "near": None, "far": None, "face to": None, "above": None, "on": None,
+}  # fmt: skip
+#: Which relation gives way first when the report names no failed relation.
+_PRIORITY = ("far", "face to", "near", "side of", "left of", "right of", "in front of", "behind", "above", "on")
+
+NO_OBJECT = "no object recognised in the text; name things like 'a sofa', 'two trees', 'a lamp on the desk'"
+
+
+class OfflineVLM:
+    """Rule-based scene analysis over the object catalogue."""
+
+    name = "offline"
+
+    def __init__(self) -> None:
+        self._parses: dict[str, ParsedScene] = {}
+
+    @classmethod
+    def from_spec(cls, argument: str, settings: Settings) -> OfflineVLM:
+        if argument:
+            raise InputError(f"the offline vision-language backend takes no argument, got {argument!r}; use --vlm offline")
+        return cls()
+
+    def parse(self, text: str) -> ParsedScene:
+        """The parse of ``text``, read once per text."""
+        key = " ".join(text.split())
+        if not key:
+            raise InputError("the scene text is empty; describe the scene, e.g. 'a sofa facing a TV on a stand'")
+        if key not in self._parses:
+            self._parses[key] = parse_scene(key)
+        return self._parses[key]
+
+    def describe_objects(self, text: str, style: str, reference: bytes | None) -> list[SceneObject]:
+        parsed = self.parse(text)
+        if not parsed.objects:
+            raise InputError(NO_OBJECT)
+        return initial_objects(parsed)
+
+    def write_constraints(
+        self, text: str, objects: Sequence[SceneObject], reference: bytes | None
+    ) -> list[Constraint]:
+        parsed = self.parse(text)
+        ids = _match_ids(parsed, objects)
+        out: list[Constraint] = []
+        for r in parsed.relations:
+            if r.source in ids and r.target in ids:
+                out.append(Constraint(relation=r.relation, source=ids[r.source], target=ids[r.target]))
+        return out
+
+    def find_redundant(self, objects: Sequence[SceneObject], images: Mapping[str, bytes]) -> dict[str, str]:
+        # The parse lists each thing once, and there are no pictures to compare offline.
+        return {}
+
+    def revise_constraints(
+        self,
+        text: str,
+        objects: Sequence[SceneObject],
+        constraints: Sequence[Constraint],
+        report: LayoutReport,
+        reference: bytes | None,
+    ) -> list[Constraint]:
+        return relax_constraints(constraints, report)
+
+    def plan_edit(self, scene: Scene, instruction: str) -> EditPlan:
+        from scenewright.editing.parser import plan_edit_offline
+
+        return plan_edit_offline(scene, instruction)
+
+    def judge(self, text: str, image: bytes, criterion: str) -> float:
+        raise BackendError("judging renders needs a remote vision-language model: --vlm openai:MODEL")
+
+
+def relax_constraints(constraints: Sequence[Constraint], report: LayoutReport) -> list[Constraint]:
+    """The constraints with every failed relation of each unplaced object relaxed one step
+    (a side → near, anything else dropped); where the report names no failed relation (the
+    object collided everywhere), its lowest-priority relation is dropped instead."""
+    out = list(constraints)
+    for unplaced in report.unplaced:
+        failed = {c.key() for c in unplaced.failed}
+        if not failed:
+            own = [c for c in out if c.source == unplaced.id]
+            if own:
+                failed = {min(own, key=lambda c: _PRIORITY.index(c.relation)).key()}
+        revised: list[Constraint] = []
+        for c in out:
+            if c.key() not in failed:
+                revised.append(c)
+                continue
+            relaxed = _RELAX[c.relation]
+            if relaxed is not None:
+                revised.append(Constraint(relation=relaxed, source=c.source, target=c.target))
+        out = revised
+    unique: dict[tuple[str, str, str], Constraint] = {}
+    for c in out:
+        unique.setdefault(c.key(), c)
+    return list(unique.values())
+
+
+def _match_ids(parsed: ParsedScene, objects: Sequence[SceneObject]) -> dict[str, str]:
+    """Parse id → scene id: the same id where the scene kept it, else the next unused object of
+    the same category (objects another backend described, or renamed)."""
+    scene_ids = {o.id for o in objects}
+    mapping = {o.id: o.id for o in parsed.objects if o.id in scene_ids}
+    used = set(mapping.values())
+    for p in parsed.objects:
+        if p.id in mapping:
+            continue
+        match = next((o.id for o in objects if o.category == p.category and o.id not in used), None)
+        if match is not None:
+            mapping[p.id] = match
+            used.add(match)
+    return mapping

@@ -1,0 +1,1264 @@
+"""Rule-based reading of a scene description: objects, counts, looks, sizes, relations, style.
+
+The offline vision-language backend answers from this parse. It reads descriptions written
+the way people write them (the paper's 50–300-word inputs): noun phrases are matched against
+the catalogue (longest phrase first, plurals folded), counts come from the words before them,
+and relation phrases connect the clause's subject (the thing placed) to the noun phrase after
+the phrase. Decisions worth knowing:
+
+- ``beside`` / ``next to`` / ``alongside`` → ``side of``; ``near`` / ``close to`` / ``by`` →
+  ``near``; ``opposite`` / ``across from`` → ``in front of`` + ``face to``; ``flanked by`` and
+  ``on either side of`` → one flanker ``left of`` and one ``right of``; ``around`` /
+  ``surrounding`` / ``surrounded by`` → the surrounding objects shared among the target's
+  sides (long sides first for a long table), each facing it; ``between A and B`` → ``near``
+  both; ``at a distance of N m`` → ``near`` when N ≤ 2, ``far`` when N > 8.
+- ``over`` means ``above`` only after a hanging verb (hang, hover, float...); ``X under Y``
+  puts Y ``on`` X when X is flat (a rug under a table), else X ``near`` Y.
+- Vague counts: a pair / a couple / both → 2; a few / several / some / a bare plural → 3;
+  many / lots of → 5; ``each with a lamp`` gives one lamp per object of the group.
+- Stated sizes (``2 meters wide``, ``a 3 m tall statue``) set that dimension; the others
+  scale by the same factor so the object keeps its proportions.
+- Things that rest on a surface but have no stated support get an inferred ``on`` to the
+  most fitting support in the scene (a lamp → nightstand, desk, side table, table...); hanging
+  things without a stated target get an inferred ``above`` the nearest-mentioned large
+  object. Both are marked ``inferred`` (the parse benchmark scores stated relations only).
+"""
+
+from __future__ import annotations
+
+import logging
+import re
+from collections import Counter
+from dataclasses import dataclass, field, replace
+from functools import lru_cache
+
+from scenewright.analysis.catalogue import Category, load_catalogue, match_phrase, singular
+from scenewright.scene import DEFAULT_STYLE, Constraint
+
+log = logging.getLogger(__name__)
+
+#: Ground kinds the procedural ground textures understand.
+GROUND_KINDS = (
+    "wood floor", "tiles", "carpet", "concrete", "marble", "grass", "gravel", "cobblestone",
+    "sand", "dirt", "snow", "metal deck", "stone", "rubber",
+)  # fmt: skip
+
+
+@dataclass(frozen=True)
+class ParsedObject:
+    id: str
+    category: str
+    name: str
+    description: str
+    size: tuple[float, float, float]
+    #: Index of the noun phrase it came from (objects of one phrase share it).
+    group: int
+
+
+@dataclass(frozen=True)
+class ParsedRelation:
+    source: str
+    relation: str
+    target: str
+    #: Added by a default rule rather than read from the text.
+    inferred: bool = False
+
+    def constraint(self) -> Constraint:
+        return Constraint(relation=self.relation, source=self.source, target=self.target)
+
+
+@dataclass
+class ParsedScene:
+    text: str
+    objects: list[ParsedObject]
+    relations: list[ParsedRelation]
+    style: str
+    ground: str
+    indoor: bool
+
+    def constraints(self) -> list[Constraint]:
+        return [r.constraint() for r in self.relations]
+
+
+# --------------------------------------------------------------------------- tokens
+
+_TOKEN = re.compile(r"\d+(?:\.\d+)?|[A-Za-z]+(?:['’][A-Za-z]+)?|[.,;:!?()\"]|[-–—]")
+
+
+@dataclass
+class _Tok:
+    text: str  # lowercase
+    orig: str
+    joined: bool  # hyphen-joined to the previous word ("three-tiered")
+
+
+def _tokenise(text: str) -> list[_Tok]:
+    toks: list[_Tok] = []
+    hyphen = False
+    prev_end = -1
+    for m in _TOKEN.finditer(text):
+        s = m.group(0)
+        if s in "-–" and m.start() == prev_end:
+            hyphen = True
+            prev_end = m.end()
+            continue
+        if s in "—–-":
+            s = ","
+        joined = hyphen and m.start() == prev_end
+        hyphen = False
+        prev_end = m.end()
+        toks.append(_Tok(s.lower().replace("’", "'"), s, joined))
+    return toks
+
+
+_NUMBERS = {
+    "one": 1, "single": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7,
+    "eight": 8, "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "dozen": 12, "twenty": 20,
+}  # fmt: skip
+_VAGUE = {"few": 3, "several": 3, "some": 3, "various": 3, "many": 5, "numerous": 5, "multiple": 3, "both": 2}
+#: Nouns that count or arrange what follows "of" ("a row of lamps", "stacks of crates").
+_QUANTITY = {
+    "pair": 2, "couple": 2, "row": 3, "rows": 5, "line": 3, "set": 3, "group": 3, "cluster": 3,
+    "stack": 3, "stacks": 4, "pile": 3, "piles": 4, "bunch": 3, "handful": 3, "collection": 3,
+    "coils": 3, "coil": 1, "ring": 4, "circle": 4, "lot": 5, "lots": 5, "plenty": 5, "dozens": 12,
+    "series": 3, "trio": 3, "cluster": 3, "clusters": 5, "grove": 4, "patch": 1,
+}  # fmt: skip
+_DETERMINERS = {"a", "an", "the", "this", "that", "these", "those", "its", "their", "his", "her", "our", "my",
+                "your", "another", "each", "every", "any", "other", "one", "all"}  # fmt: skip
+_DEFINITE = {"the", "this", "that", "these", "those", "its", "their", "his", "her", "our", "my", "your"}
+_PRONOUNS = {"it", "them", "itself", "themselves", "one"}
+#: Words that end a noun phrase when reading backwards for adjectives.
+_STOP = (
+    set(_NUMBERS) | set(_VAGUE) | _DETERMINERS | _PRONOUNS
+    | {
+        "and", "or", "but", "with", "of", "in", "on", "at", "to", "from", "by", "for", "into", "onto",
+        "near", "beside", "behind", "above", "under", "below", "over", "between", "around", "is",
+        "are", "was", "were", "be", "has", "have", "had", "there", "here", "while", "where", "which",
+        "who", "that", "as", "than", "stands", "stand", "sits", "sit", "lies", "lie", "rests", "rest",
+        "hangs", "hang", "grows", "grow", "placed", "sits", "next", "across", "opposite", "facing",
+        "faces", "face", "toward", "towards", "against", "along", "inside", "outside", "up", "down",
+        "out", "off", "through", "like", "full", "filled", "covered", "packed", "made", "also", "just",
+        "very", "too", "so", "then", "it's", "each", "every", "lots", "plenty", "atop", "upon",
+        "beneath", "underneath", "near", "close", "far", "away", "front", "back",
+        "side", "sides", "middle", "centre", "center", "corner", "edge", "end", "top", "bottom",
+    }
+)  # fmt: skip
+_UNITS = {
+    "m": 1.0, "meter": 1.0, "meters": 1.0, "metre": 1.0, "metres": 1.0, "cm": 0.01,
+    "centimeter": 0.01, "centimeters": 0.01, "centimetre": 0.01, "centimetres": 0.01, "mm": 0.001,
+    "ft": 0.3048, "foot": 0.3048, "feet": 0.3048, "inch": 0.0254, "inches": 0.0254,
+}  # fmt: skip
+_DIMENSIONS = {"wide": "x", "width": "x", "across": "x", "long": "long", "length": "long", "deep": "y",
+               "depth": "y", "tall": "z", "high": "z", "height": "z", "diameter": "d"}  # fmt: skip
+#: Containers and depictions: what follows their "of" is content or subject, not an object.
+_CONTENT_HEADS = {"vase", "bowl", "basket", "plate", "bottle", "cup", "pot", "crate", "cart", "statue",
+                  "picture_frame", "planter", "sign", "billboard", "shop_shelf", "bookshelf", "flask",
+                  "barrel", "shipping_container", "flower_bed", "cauldron", "sandbox"}  # fmt: skip
+_CONTENT_MARKERS = {("full", "of"), ("filled", "with"), ("packed", "with"), ("overflowing", "with"),
+                    ("covered", "in"), ("covered", "with"), ("stacked", "with"), ("heaped", "with"),
+                    ("stocked", "with"), ("lined", "with"), ("piled", "with"), ("overflow", "with")}  # fmt: skip
+_HANG_VERBS = {"hang", "hangs", "hanging", "hung", "hover", "hovers", "hovering", "float", "floats",
+               "floating", "suspended", "dangle", "dangles", "dangling", "fly", "flies", "flying",
+               "soar", "soars", "soaring", "glow", "glows", "drift", "drifts", "mounted", "swing",
+               "swings", "is", "are"}  # fmt: skip
+
+# --------------------------------------------------------------------------- relation phrases
+
+_REL_PHRASES: dict[str, list[str]] = {
+    "left of": ["to the left of", "on the left of", "left of", "to the left side of", "on the left side of",
+                "at the left of", "on the left hand side of", "to the left hand side of"],
+    "right of": ["to the right of", "on the right of", "right of", "to the right side of", "on the right side of",
+                 "at the right of", "on the right hand side of", "to the right hand side of"],
+    "left": ["to the left", "on the left", "to its left", "on its left"],
+    "right": ["to the right", "on the right", "to its right", "on its right"],
+    "in front of": ["in front of", "at the front of", "in the front of", "just in front of", "right in front of",
+                    "to the front of"],
+    "behind": ["behind", "at the back of", "in back of", "to the back of", "at the rear of", "to the rear of",
+               "in the back of", "just behind", "right behind", "directly behind"],
+    "side of": ["beside", "next to", "alongside", "along side", "by the side of", "at the side of", "to the side of",
+                "adjacent to", "right next to", "just beside", "side by side with"],
+    "near": ["near", "near to", "close to", "close by", "nearby", "by", "not far from", "a short distance from",
+             "a few steps from", "within reach of", "tied to", "against", "leaning against", "leans against",
+             "lean against", "next door to", "a short walk from", "in the vicinity of", "shade", "shades",
+             "shading", "border", "borders", "bordering"],
+    "far": ["far from", "far away from", "a long way from", "far off from", "distant from", "away from",
+            "well away from", "far away"],
+    "on": ["on", "on top of", "atop", "upon", "onto", "on to", "resting on", "on the top of"],
+    "above": ["above", "high above", "up above", "directly above", "right above", "just above", "overhead"],
+    "over": ["over", "hanging over", "hangs over", "directly over"],
+    "face to": ["facing", "face", "faces", "faced", "facing toward", "facing towards", "turned toward",
+                "turned towards", "turned to face", "looking at", "looks at", "look at", "looking toward",
+                "looking towards", "looks toward", "looks towards", "pointing at", "points at", "pointed at",
+                "pointing toward", "pointing towards", "points toward", "points towards", "oriented toward",
+                "oriented towards", "aimed at", "watching", "watches", "overlooking", "overlooks",
+                "overlook", "gazing at", "gazes at", "looking out at"],
+    "opposite": ["opposite", "opposite to", "opposite of", "across from", "across the room from",
+                 "across the table from", "across the street from", "on the opposite side of",
+                 "on the other side of", "directly opposite", "straight across from"],
+    "no relation": ["from across", "in the middle of", "in the centre of", "in the center of", "across"],
+    "flank": ["flank", "flanks", "flanking", "on either side of", "on each side of", "on both sides of",
+              "either side of", "each side of", "to either side of", "on the left and right of",
+              "to the left and right of", "left and right of", "on the left and right sides of",
+              "on opposite sides of"],
+    "flank elliptic": ["on either side", "on each side", "on both sides", "to either side"],
+    "flanked by": ["flanked by", "framed by", "bracketed by"],
+    "around": ["around", "surround", "surrounds", "surrounding", "encircle", "encircles", "encircling",
+               "circling", "all around", "arranged around", "gathered around", "clustered around",
+               "scattered around", "dotted around", "ringing", "round about", "enclose", "encloses",
+               "enclosing"],
+    "surrounded by": ["surrounded by", "ringed by", "encircled by", "circled by", "ringed with", "surrounded with",
+                      "encircled with"],
+    "near by": ["shaded by", "guarded by", "watched over by", "bordered by", "lit by", "accompanied by",
+                "joined by", "overlooked by", "lined by", "lined with"],
+    "on by": ["crossed by", "spanned by", "topped by", "crowned by"],
+    "under": ["under", "beneath", "underneath", "below", "right under", "just below"],
+    "between": ["between", "in between"],
+}  # fmt: skip
+
+
+@lru_cache(maxsize=1)
+def _phrase_table() -> dict[tuple[str, ...], str]:
+    table: dict[tuple[str, ...], str] = {}
+    for kind, phrases in _REL_PHRASES.items():
+        for phrase in phrases:
+            table[tuple(phrase.split())] = kind
+    return table
+
+
+@lru_cache(maxsize=1)
+def relation_phrases() -> dict[str, tuple[str, ...]]:
+    """Phrase → the relations it asks of one object placed against one target (the edit
+    planner's vocabulary). Kinds that need a group or no target (flank, around, under, a bare
+    "to the left") are left out; "opposite" is in front of and facing, "over" is above."""
+    from scenewright.scene import RELATION_TYPES
+
+    single = {"over": ("above",), "opposite": ("in front of", "face to"), "between": ("near",)}
+    table: dict[str, tuple[str, ...]] = {}
+    for kind, phrases in _REL_PHRASES.items():
+        relations = (kind,) if kind in RELATION_TYPES else single.get(kind)
+        for phrase in phrases if relations else ():
+            table[phrase] = relations
+    return table
+
+
+_MAX_REL = 6
+#: Phrase kinds that name relations of one object to one target, and the relations they mean.
+_SINGLE_TARGET = {
+    "left of": ("left of",), "right of": ("right of",), "in front of": ("in front of",), "behind": ("behind",),
+    "side of": ("side of",), "near": ("near",), "far": ("far",), "on": ("on",), "above": ("above",),
+    "over": ("above",), "face to": ("face to",), "opposite": ("in front of", "face to"), "between": ("near",),
+}  # fmt: skip
+
+
+def relation_phrases() -> dict[str, tuple[str, ...]]:
+    """Phrase → the relations it means, for phrases that place one object relative to one
+    target ("beside" → side of, "across from" → in front of + face to). Editing reads
+    instructions with the same vocabulary."""
+    return {
+        phrase: _SINGLE_TARGET[kind]
+        for kind, phrases in _REL_PHRASES.items()
+        if kind in _SINGLE_TARGET
+        for phrase in phrases
+    }
+
+# --------------------------------------------------------------------------- style & ground
+
+_STYLE_WORDS = [
+    ("low-poly", ("low poly", "lowpoly", "low-poly", "polygonal", "flat shaded")),
+    ("cartoon", ("cartoon", "cartoonish", "cartoony", "toon", "pixar", "claymation")),
+    ("anime", ("anime", "ghibli", "cel shaded", "cel-shaded")),
+    ("cyberpunk", ("cyberpunk", "neon noir", "neon-noir", "blade runner")),
+    ("steampunk", ("steampunk", "clockwork")),
+    ("realistic", ("realistic", "photorealistic", "photo realistic", "photo-realistic", "lifelike")),
+]
+
+
+def detect_style(text: str, default: str = DEFAULT_STYLE) -> str:
+    """The style the text names ("cartoon-style", "Cyberpunk.", "anime"), else ``default``.
+
+    A word followed by "style" wins over a word used in passing; otherwise the first named."""
+    low = " " + " ".join(re.findall(r"[a-z]+", text.lower())) + " "
+    best: tuple[int, int, str] | None = None
+    for style, words in _STYLE_WORDS:
+        for w in words:
+            w = " " + " ".join(re.findall(r"[a-z]+", w)) + " "
+            pos = low.find(w)
+            if pos < 0:
+                continue
+            styled = low[pos + len(w) : pos + len(w) + 6].startswith(("style", "styled", "look", "aesthetic"))
+            rank = (0 if styled else 1, pos, style)
+            if best is None or rank < best:
+                best = rank
+    return best[2] if best else default
+
+
+_GROUND_WORDS = [
+    ("metal deck", ("metal deck", "metal floor", "steel deck", "landing pad", "spaceport", "space station",
+                    "spaceship deck", "metal grating", "starship", "platform deck", "metal plating")),
+    ("cobblestone", ("cobblestone", "cobblestones", "cobbled", "cobble")),
+    ("gravel", ("gravel",)),
+    ("snow", ("snow", "snowy", "snow covered", "frozen", "icy", "winter")),
+    ("sand", ("sand", "sandy", "beach", "desert", "dunes", "dune", "oasis")),
+    ("rubber", ("rubber ground", "rubber floor", "rubber mat", "rubber flooring", "gym floor")),
+    ("marble", ("marble floor", "marble floors", "marble tiles", "marble flooring")),
+    ("tiles", ("tile", "tiles", "tiled", "bathroom", "kitchen", "laboratory", "lab", "spa")),
+    ("carpet", ("carpeted", "wall to wall carpet", "carpet floor", "bedroom", "nursery", "office", "conference")),
+    ("concrete", ("concrete", "asphalt", "pavement", "sidewalk", "street", "parking", "city", "station",
+                  "platform", "warehouse", "garage", "industrial", "dock", "harbour", "harbor", "pier")),
+    ("wood floor", ("wooden floor", "wood floor", "hardwood", "parquet", "floorboards", "wooden deck",
+                    "plank", "room", "house", "cabin", "studio", "apartment", "cafe", "café", "bistro",
+                    "restaurant", "shop", "store", "boutique", "hall")),
+    ("stone", ("stone floor", "flagstone", "flagstones", "paved", "plaza", "courtyard", "castle", "temple")),
+    ("dirt", ("dirt", "mud", "muddy", "soil", "farm", "dusty", "village", "campsite", "orchard", "trail")),
+    ("grass", ("grass", "grassy", "lawn", "meadow", "park", "garden", "field", "backyard", "yard", "forest")),
+]
+
+
+def detect_ground(text: str, indoor: bool) -> str:
+    """A ground kind from :data:`GROUND_KINDS`: an explicit floor word, else the place's word,
+    else wood floor indoors and grass outdoors."""
+    low = " " + " ".join(re.findall(r"[a-zé]+", text.lower())) + " "
+    best: tuple[int, int, str] | None = None
+    for rank, (kind, words) in enumerate(_GROUND_WORDS):
+        for w in words:
+            pos = low.find(" " + w + " ")
+            if pos >= 0:
+                # Material words ("cobblestones", "tiles") outrank place words ("kitchen", "park").
+                explicit = 0 if rank < 7 or " " in w or w in ("tile", "tiles", "tiled", "concrete", "grass") else 1
+                key = (explicit, rank, kind)
+                if best is None or key < best:
+                    best = key
+    if best is not None:
+        return best[2]
+    return "wood floor" if indoor else "grass"
+
+
+# --------------------------------------------------------------------------- noun phrases
+
+
+@dataclass
+class _Mention:
+    category: str
+    phrase: str
+    start: int
+    end: int  # exclusive
+    count: int
+    counted: bool  # the count was stated (a number, "a", "a pair of")
+    definite: bool
+    each: bool = False  # "each X" / "every X"
+    adjectives: list[str] = field(default_factory=list)
+    group: int = -1
+    content: bool = False  # inside a container or a depiction: not an object
+    alias: bool = False  # "the island" after "a kitchen island": only a reference
+
+
+@dataclass
+class _Group:
+    index: int
+    category: str
+    count: int
+    name: str
+    description: str
+    size: tuple[float, float, float]
+    ids: list[str] = field(default_factory=list)
+
+
+def _max_phrase_len() -> int:
+    from scenewright.analysis.catalogue import phrase_index
+
+    return max(len(k) for k in phrase_index())
+
+
+#: Places named after what they hold ("a throne hall", "a book shop").
+_VENUES = {"room", "hall", "shop", "store", "garden", "yard", "market", "park", "studio", "gallery", "lab",
+           "area", "aisle", "section", "station", "court", "museum", "cafe", "café", "bar", "square",
+           "street", "farm", "factory", "workshop", "showroom", "district", "festival", "fair", "lot",
+           "lounge", "parlour", "parlor", "emporium", "boutique", "depot", "dealership", "nursery"}  # fmt: skip
+#: Nouns that often qualify the next word ("a stone path", "a pine forest", "a canvas awning").
+_MODIFIER_NOUNS = {"glass", "stone", "rock", "crystal", "box", "plant", "flower", "book", "rope", "candle",
+                   "cat", "dog", "fruit", "bird", "horse", "tree", "sign", "toy", "table", "cactus", "mushroom",
+                   "hay", "lamp", "pool", "tower", "pine", "oak", "maple", "birch", "cherry", "palm", "cedar",
+                   "canvas", "chalkboard", "blackboard", "bench", "chair", "gem", "orb", "barrel", "wine",
+                   "bottle", "cup", "coffee", "bus", "car", "boat", "robot", "fence", "kiosk", "computer"}  # fmt: skip
+
+
+def _find_mentions(toks: list[_Tok]) -> list[_Mention]:
+    """Longest-first catalogue matches, with a noun followed by another noun read as a modifier
+    ("glass table", "stone path")."""
+    n = len(toks)
+    longest = _max_phrase_len()
+    raw: list[tuple[int, int, str]] = []
+    i = 0
+    while i < n:
+        found = None
+        for length in range(min(longest, n - i), 0, -1):
+            words = tuple(t.text for t in toks[i : i + length])
+            if any(not w[0].isalpha() for w in words):
+                continue
+            cat = match_phrase(words)
+            if cat:
+                found = (i, i + length, cat)
+                break
+        if found:
+            raw.append(found)
+            i = found[1]
+        else:
+            i += 1
+    mentions: list[_Mention] = []
+    for k, (s, e, cat) in enumerate(raw):
+        nxt = raw[k + 1] if k + 1 < len(raw) else None
+        if nxt and nxt[0] == e:
+            continue  # modifier of the next noun ("glass table", "tree house")
+        words = [t.text for t in toks[s:e]]
+        follow = toks[e].text if e < n else ""
+        if follow in _VENUES or (follow and singular(follow) in _VENUES and len(words) == 1):
+            continue  # "a throne hall", "a flower shop": the place, not the thing
+        if len(words) == 1 and words[0] in _MODIFIER_NOUNS and follow[:1].isalpha() and follow not in _STOP:
+            if not _is_verb(follow) and not follow.endswith(("ed", "ing")):
+                continue  # "a stone path", "a glass roof": an adjective here
+        mentions.append(_Mention(cat, " ".join(t.orig for t in toks[s:e]), s, e, 1, False, False))
+    return _alias_mentions(toks, mentions)
+
+
+def _alias_mentions(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention]:
+    """"the island" after "a kitchen island", "the pumps" after "two fuel pumps": a definite
+    head noun of an earlier phrase refers back to it."""
+    heads: dict[str, str] = {}
+    compounds: dict[str, str] = {}  # "campfire" answers to "the fire"
+    taken = {k for m in mentions for k in range(m.start, m.end)}
+    extra: list[_Mention] = []
+    ordered = sorted(mentions, key=lambda m: m.start)
+    nxt = 0
+    for i, t in enumerate(toks):
+        while nxt < len(ordered) and ordered[nxt].end <= i:
+            m = ordered[nxt]
+            words = m.phrase.lower().split()
+            if len(words) > 1:
+                heads.setdefault(singular(words[-1]), m.category)
+            else:
+                compounds.setdefault(singular(words[0]), m.category)
+            nxt += 1
+        word = singular(t.text)
+        if word not in heads:
+            heads.update({word: c for w, c in compounds.items() if len(word) >= 4 and w.endswith(word)})
+        if i in taken or not t.text[0].isalpha() or word not in heads:
+            continue
+        j = i - 1
+        while j >= 0 and i - j <= 3 and toks[j].text not in _DEFINITE and toks[j].text not in _STOP:
+            j -= 1
+        if j >= 0 and toks[j].text in _DEFINITE | {"each", "every"}:
+            m = _Mention(heads[word], t.orig, i, i + 1, 1, False, True, alias=True)
+            extra.append(m)
+    return sorted(mentions + extra, key=lambda m: m.start)
+
+
+def _is_plural(toks: list[_Tok], m: _Mention) -> bool:
+    last = toks[m.end - 1].text
+    return singular(last) != last or last in ("people", "cacti", "shelves", "benches", "glasses")
+
+
+def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
+    """Fill count, definiteness and adjectives from the words before the noun."""
+    plural = _is_plural(toks, m)
+    j = m.start - 1
+    adjectives: list[str] = []
+    count: int | None = None
+    counted = False
+    while j >= prev_end and j >= 0 and m.start - j <= 7:
+        t = toks[j]
+        w = t.text
+        if w in _NUMBERS and not toks[j + 1].joined:
+            count, counted = _NUMBERS[w], True
+            if j > 0 and toks[j - 1].text in ("a",) and w == "dozen":
+                pass
+            break
+        if w.replace(".", "").isdigit():
+            if j + 1 < len(toks) and (toks[j + 1].joined or toks[j + 1].text in _UNITS):
+                adjectives.insert(0, t.orig)
+                j -= 1
+                continue
+            count, counted = int(float(w)), True
+            break
+        if w in _VAGUE:
+            count = _VAGUE[w]
+            counted = w == "both"
+            if w == "few" and j > 0 and toks[j - 1].text == "a":
+                j -= 1
+            break
+        if w == "of" and j > 0 and toks[j - 1].text in _QUANTITY:
+            q = toks[j - 1].text
+            small = load_catalogue()[m.category].rests == "surface"
+            count = 1 if q in ("stack", "pile") and small else _QUANTITY[q]
+            counted = q in ("pair", "couple", "dozen")
+            k = j - 2
+            if k >= 0 and toks[k].text in _NUMBERS:  # "two pairs of", "three stacks of"
+                count, counted = count * _NUMBERS[toks[k].text], True
+            elif k >= 0 and toks[k].text == "of" and k > 0 and toks[k - 1].text in _QUANTITY:
+                count = _QUANTITY[toks[k - 1].text]  # "a lot of"
+            elif q in ("row", "line", "stack", "pile", "set", "group", "cluster", "ring", "circle") and k >= 0 and toks[
+                k
+            ].text not in ("a", "an", "one"):
+                count = max(count, 4)
+            break
+        if w in ("a", "an", "another"):
+            count, counted = 1, True
+            break
+        if w in ("each", "every"):
+            m.each = True
+            count, counted = 1, True
+            break
+        if w in _DEFINITE:
+            m.definite = True
+            break
+        if w in _STOP or not w[0].isalnum():
+            break
+        adjectives.insert(0, t.orig)
+        j -= 1
+    if count is None:
+        count = 3 if plural else 1
+    if m.category == "books" and not counted:
+        count = 1
+    if plural and count == 1 and counted and not m.each and toks[max(m.start - 1, 0)].text not in ("a", "an"):
+        count = 2
+    m.count, m.counted, m.adjectives = count, counted, adjectives
+
+
+# --------------------------------------------------------------------------- sizes
+
+_NUM_WORD = {**{k: float(v) for k, v in _NUMBERS.items() if k not in ("single", "dozen")}, "half": 0.5}
+
+
+def _read_sizes(toks: list[_Tok]) -> list[tuple[int, int, str, float]]:
+    """(start, end, dimension, metres) for each "N unit dimension" phrase."""
+    out = []
+    for i, t in enumerate(toks):
+        value = None
+        if t.text.replace(".", "", 1).isdigit():
+            value = float(t.text)
+        elif t.text in _NUM_WORD:
+            value = _NUM_WORD[t.text]
+        if value is None or i + 2 >= len(toks) + 1:
+            continue
+        j = i + 1
+        if j < len(toks) and toks[j].text in _UNITS:
+            unit = _UNITS[toks[j].text]
+            j += 1
+            if j < len(toks) and toks[j].text in ("in", "of") and j + 1 < len(toks) and toks[j + 1].text in _DIMENSIONS:
+                j += 1
+            if j < len(toks) and toks[j].text in _DIMENSIONS:
+                out.append((i, j + 1, _DIMENSIONS[toks[j].text], value * unit))
+    return out
+
+
+def _apply_sizes(base: tuple[float, float, float], dims: list[tuple[str, float]]) -> tuple[float, float, float]:
+    x, y, z = base
+    stated: dict[str, float] = {}
+    for dim, value in dims:
+        if dim == "long":
+            dim = "y" if y > x else "x"
+        if dim == "d":
+            stated["x"] = stated["y"] = value
+        else:
+            stated[dim] = value
+    first_dim = next(iter(stated))
+    scale = stated[first_dim] / {"x": x, "y": y, "z": z}[first_dim]
+    result = {"x": x * scale, "y": y * scale, "z": z * scale}
+    result.update(stated)
+    return (round(result["x"], 4), round(result["y"], 4), round(result["z"], 4))
+
+
+# --------------------------------------------------------------------------- the parse
+
+
+@dataclass
+class _Rel:
+    kind: str
+    start: int
+    end: int
+
+
+def _find_relations(toks: list[_Tok], taken: set[int]) -> list[_Rel]:
+    table = _phrase_table()
+    rels: list[_Rel] = []
+    i = 0
+    while i < len(toks):
+        if i in taken:
+            i += 1
+            continue
+        hit = None
+        for length in range(min(_MAX_REL, len(toks) - i), 0, -1):
+            if any(k in taken for k in range(i, i + length)):
+                continue
+            key = tuple(t.text for t in toks[i : i + length])
+            if key in table:
+                hit = _Rel(table[key], i, i + length)
+                break
+        if hit:
+            rels.append(hit)
+            i = hit.end
+        else:
+            i += 1
+    return rels
+
+
+_CLAUSE_BREAK = {",", ";", ":", "(", ")", '"'}
+_CLAUSE_WORDS = {"while", "whereas", "where", "whilst", "although", "though"}
+_SENTENCE_END = {".", "!", "?"}
+
+
+def _split(toks: list[_Tok]) -> list[list[tuple[int, int]]]:
+    """Sentences as lists of clauses, each a (start, end) token span."""
+    sentences: list[list[tuple[int, int]]] = []
+    clauses: list[tuple[int, int]] = []
+    start = 0
+    for i, t in enumerate(toks + [_Tok(".", ".", False)]):
+        if t.text in _SENTENCE_END or t.text in _CLAUSE_BREAK or t.text in _CLAUSE_WORDS:
+            if i > start:
+                clauses.append((start, i))
+            start = i + 1
+            if t.text in _SENTENCE_END and clauses:
+                sentences.append(clauses)
+                clauses = []
+    return sentences
+
+
+_FINITE = {"is", "are", "was", "were", "has", "have", "had", "stand", "sit", "lie", "rest", "hang", "grow",
+           "lean", "wait", "glow", "run", "line", "rise", "stay", "remain", "tower", "loom", "float", "hover"}  # fmt: skip
+_ADVERBS = {"just", "right", "directly", "all", "both", "neatly", "slightly", "also", "then", "only", "far", "well"}
+_HOLD = {"holds", "hold", "holding", "carries", "carry", "carrying", "supports", "support", "supporting",
+         "bears", "bearing", "displays", "displaying"}  # fmt: skip
+_HOLD_PAIRS = {("loaded", "with"), ("topped", "with"), ("set", "with"), ("laid", "with"), ("decorated", "with")}
+_ORDINALS = {"first": 0, "second": 1, "third": 2, "last": -1, "left": 0, "right": -1, "other": -1, "nearest": 0}
+
+
+def _is_verb(word: str) -> bool:
+    """A finite verb, roughly: what closes a noun phrase's "with" part ("with a mirror is placed")."""
+    return word in _FINITE or (len(word) > 3 and word.endswith("s") and not word.endswith(("ss", "us", "is")))
+
+
+@dataclass
+class _Clause:
+    """What one clause has built so far."""
+
+    first: bool
+    main: list[int] = field(default_factory=list)
+    head: list[int] | None = None  # what a "with" part hangs from
+    wsub: list[int] = field(default_factory=list)
+    hold: bool = False
+    wsub_related: set[int] = field(default_factory=set)
+    last_target: list[int] = field(default_factory=list)
+    last_target_end: int = -1
+    expect_new: bool = False
+    groups: list[int] = field(default_factory=list)
+    main_groups: list[int] = field(default_factory=list)
+    fronted: list[tuple[str, list[int]]] = field(default_factory=list)
+    rels: list[tuple[str, list[int]]] = field(default_factory=list)
+    produced: bool = False
+
+
+class _Reader:
+    """One pass over the text that builds groups of objects and relations between them."""
+
+    def __init__(self, text: str):
+        self.text = text
+        self.toks = _tokenise(text)
+        self.catalogue = load_catalogue()
+        self.groups: list[_Group] = []
+        #: (kind, source group, target group, source instance, target instance)
+        self.relations: list[tuple[str, int, int, int | None, int | None]] = []
+        self.pair_each: set[tuple[int, int]] = set()
+        self.history: list[int] = []  # groups in the order earlier clauses mentioned them
+        self.instance: dict[int, int | None] = {}  # mention start → instance it names
+        self._target_start = -1
+
+    # ---- groups
+
+    def _new_group(self, m: _Mention, sizes: list[tuple[str, float]]) -> int:
+        if m.category == "table" and {a.lower() for a in m.adjectives} & {"round", "circular"}:
+            m.category = "round_table"
+        cat: Category = self.catalogue[m.category]
+        name = m.phrase.lower()
+        if _is_plural(self.toks, m):
+            words = name.split()
+            name = " ".join([singular(words[0]), *words[1:]]) if "of" in words[1:2] else singular(name)
+        description = " ".join([*(a.lower() for a in m.adjectives), name]).strip()
+        size = _apply_sizes(cat.size, sizes) if sizes else cat.size
+        g = _Group(len(self.groups), m.category, max(1, m.count), name, description, size)
+        self.groups.append(g)
+        return g.index
+
+    def _resolve(self, m: _Mention, sizes: list[tuple[str, float]]) -> int:
+        """A definite mention of something already present refers to it (by category, else by
+        its head noun: "the island" → the kitchen island); anything else is new."""
+        if m.group >= 0:
+            return m.group
+        if (m.definite or m.each) and not sizes:
+            head = singular(self.toks[m.end - 1].text)
+            found = next((g.index for g in reversed(self.groups) if g.category == m.category), None)
+            if found is None:
+                found = next(
+                    (g.index for g in reversed(self.groups) if g.name.split()[-1].endswith(head)), None
+                )
+            if found is not None:
+                m.group = found
+                if not _is_plural(self.toks, m) and self.groups[found].count > 1:
+                    adj = [a.lower() for a in m.adjectives]
+                    self.instance[m.start] = next((_ORDINALS[a] for a in adj if a in _ORDINALS), 0)
+                return found
+        if m.alias:
+            return -1
+        m.group = self._new_group(m, sizes)
+        return m.group
+
+    # ---- the parse
+
+    def read(self) -> None:
+        toks = self.toks
+        mentions = _find_mentions(toks)
+        prev_end = 0
+        for m in mentions:
+            _read_count(toks, m, prev_end)
+            prev_end = m.end
+        self._mark_contents(mentions)
+        self.size_of: dict[int, list[tuple[str, float]]] = {}
+        for s, e, dim, value in _read_sizes(toks):
+            owner = self._size_owner(mentions, s, e)
+            if owner is not None:
+                self.size_of.setdefault(owner, []).append((dim, value))
+        taken = {k for m in mentions for k in range(m.start, m.end)}
+        self.rel_at = {r.start: r for r in _find_relations(toks, taken)}
+        self.by_start = {m.start: m for m in mentions if not m.content}
+        prev_subject: list[int] = []
+        for sentence in _split(toks):
+            pending: list[tuple[str, list[int]]] = []
+            last_rels: list[tuple[str, list[int]]] = []
+            for ci, (cs, ce) in enumerate(self._merge_lists(sentence)):
+                c = _Clause(first=ci == 0)
+                self._clause(c, cs, ce, prev_subject)
+                if c.fronted:
+                    srcs = c.main_groups
+                    targets_all = {t for _, ts in c.fronted for t in ts}
+                    srcs = [g for g in srcs if g not in targets_all]
+                    if srcs:
+                        for kind, targets in c.fronted:
+                            for t in targets:
+                                self._relate(kind, srcs, t)
+                        c.rels = list(c.fronted)
+                    else:
+                        pending = list(c.fronted)
+                elif pending and c.main_groups:
+                    for kind, targets in pending:
+                        for t in targets:
+                            self._relate(kind, c.main_groups[:1], t)
+                    pending = []
+                elif not c.produced and c.groups and last_rels and self._is_list(cs, ce, strict=True):
+                    # "On the desk there is a lamp, a laptop and a mug": the list shares the relation
+                    for kind, targets in last_rels:
+                        for t in targets:
+                            self._relate(kind, c.groups, t)
+                    c.rels = last_rels
+                last_rels = c.rels or last_rels
+                if c.main_groups:
+                    prev_subject = c.main_groups[:1] if not c.main else c.main
+                self.history.extend(c.groups)
+
+    def _size_owner(self, mentions: list[_Mention], s: int, e: int) -> int | None:
+        after = [m for m in mentions if m.start >= e and m.start - e <= 4]
+        if after:
+            return after[0].start
+        before = [m for m in mentions if m.end <= s and s - m.end <= 8]
+        return before[-1].start if before else None
+
+    def _mark_contents(self, mentions: list[_Mention]) -> None:
+        """Nouns after "full of", or after "of" following a container or a depiction ("a vase of
+        tulips", "a statue of a horse"), are contents, not objects of the scene."""
+        toks = self.toks
+        chain = False
+        for k, m in enumerate(mentions):
+            prev = mentions[k - 1] if k else None
+            j = m.start - 1
+            while j >= 0 and (toks[j].text in _DETERMINERS or toks[j].text in _NUMBERS or (
+                toks[j].text not in _STOP and toks[j].text[0].isalnum())) and m.start - j < 5:  # fmt: skip
+                j -= 1
+            if j < 1 or prev is None:
+                chain = False
+                continue
+            gap = [t.text for t in toks[prev.end : j + 1]]
+            w = toks[j].text
+            content = False
+            if (toks[j - 1].text, w) in _CONTENT_MARKERS and j - prev.end <= 2:
+                content = True
+            elif w == "of" and prev.end == j and prev.category in _CONTENT_HEADS and not m.definite:
+                content = True
+            elif w == "in" and prev.end == j and m.category in ("pot", "planter", "vase") and self.catalogue[
+                prev.category
+            ].shape in ("potted_plant", "bush", "flower_bed"):
+                content = True
+            elif chain and prev.content and all(g in ("and", ",", "or") for g in gap):
+                content = True
+            m.content = content
+            chain = content
+
+    def _merge_lists(self, clauses: list[tuple[int, int]]) -> list[tuple[int, int]]:
+        """Join a clause that only lists objects to the next one when that one places them
+        ("with a laptop, a mug and a lamp on it")."""
+        out: list[tuple[int, int]] = []
+        for cs, ce in clauses:
+            if out and self._is_list(*out[-1]) and any(k in self.rel_at for k in range(cs, ce)):
+                if not any(k in self.rel_at for k in range(out[-1][0], out[-1][1])):
+                    ps, _ = out[-1]
+                    out[-1] = (ps, ce)
+                    continue
+            out.append((cs, ce))
+        return out
+
+    def _is_list(self, cs: int, ce: int, strict: bool = False) -> bool:
+        """Only noun phrases joined by "and": no relation phrase, no verb."""
+        if any(k in self.rel_at for k in range(cs, ce)):
+            return False
+        mentions = [m for k, m in self.by_start.items() if cs <= k < ce]
+        if not mentions or max(m.end for m in mentions) != ce:
+            return False
+        if not strict:
+            return True
+        allowed: set[int] = set()
+        for m in mentions:
+            allowed.update(range(m.start - len(m.adjectives) - 2, m.end))
+        for k in range(cs, ce):
+            w = self.toks[k].text
+            if k in allowed or w in ("and", "or", "with") or w in _DETERMINERS or w in _NUMBERS:
+                continue
+            return False
+        return True
+
+    def _target_at(self, pos: int, ce: int) -> tuple[list[int] | str | None, int]:
+        """The noun phrase (or pronoun) right after a relation phrase, and where it ends."""
+        toks = self.toks
+        j = pos
+        while j < ce and j - pos < 6:
+            if j in self.by_start:
+                m = self.by_start[j]
+                self._target_start = m.start
+                g = self._resolve(m, self.size_of.get(m.start, []))
+                return ([g] if g >= 0 else None), m.end
+            w = toks[j].text
+            if w in ("it", "them", "itself", "themselves", "him", "her"):
+                return w, j + 1
+            if w in ("each", "one") and j + 1 < ce and toks[j + 1].text in ("other", "another"):
+                return "each other", j + 2
+            if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or (
+                w not in _STOP and w[0].isalnum() and not _is_verb(w)
+            ):
+                j += 1
+                continue
+            break
+        return None, pos
+
+    def _pronoun(self, word: str, c: _Clause, srcs: list[int]) -> list[int]:
+        """The group "it" / "them" names: the latest earlier mention of the right number."""
+        plural = word in ("them", "themselves")
+        for g in [*reversed(self.history), *reversed(c.groups)]:
+            if g in srcs:
+                continue
+            if (self.groups[g].count > 1) == plural:
+                return [g]
+        return []
+
+    def _clause(self, c: _Clause, cs: int, ce: int, prev_subject: list[int]) -> None:
+        toks = self.toks
+        k = cs
+        while k < ce and toks[k].text in ("and", "or", "but", "then", "also", "so", "there", "is", "are"):
+            k += 1
+        j = k
+        while j < ce and (toks[j].text in _DETERMINERS or toks[j].text in _ADVERBS):
+            j += 1
+        starts_with_rel = j in self.rel_at
+        if j < ce and toks[j].text in ("each", "with", "holding", "carrying"):
+            c.head = None
+        each_group: int | None = None
+        last_event_end = cs
+        while k < ce:
+            w = toks[k].text
+            nxt = toks[k + 1].text if k + 1 < ce else ""
+            if w == "each" and nxt in ("with", "have", "has", "holding", "holds", "carrying", "bearing"):
+                plural = [g for g in [*self.history, *c.groups] if self.groups[g].count > 1]
+                if plural:
+                    each_group = plural[-1]
+                k += 1
+                continue
+            if w == "with" or w in _HOLD or (w, nxt) in _HOLD_PAIRS or w in ("has", "have"):
+                c.head = [each_group] if each_group is not None else (c.main or list(prev_subject))
+                c.wsub, c.expect_new = [], False
+                c.hold = w in _HOLD or (w, nxt) in _HOLD_PAIRS
+                k += 2 if (w, nxt) in _HOLD_PAIRS else 1
+                last_event_end = k
+                continue
+            if k in self.by_start:
+                m = self.by_start[k]
+                g = self._resolve(m, self.size_of.get(m.start, []))
+                k = m.end
+                if g < 0:
+                    continue
+                if each_group is not None and c.head is not None and not m.definite and g != each_group:
+                    self.groups[g].count = max(1, m.count) * self.groups[each_group].count
+                    self.pair_each.add((g, each_group))
+                c.groups.append(g)
+                if c.head is not None:
+                    closed = any(_is_verb(t.text) for t in toks[last_event_end:m.start])
+                    c.wsub = [g] if (c.expect_new or closed) else [*c.wsub, g]
+                else:
+                    c.main_groups.append(g)
+                    c.main = [g] if c.expect_new else [*c.main, g]
+                c.expect_new = False
+                last_event_end = m.end
+                continue
+            if k in self.rel_at:
+                k = self._relation(c, self.rel_at[k], ce, prev_subject, starts_with_rel, last_event_end)
+                last_event_end = k
+                continue
+            k += 1
+        self._close_with(c)
+
+    def _close_with(self, c: _Clause) -> None:
+        """"A desk with a lamp", "a cart loaded with barrels": small things with no place of
+        their own stand on what they came with."""
+        if c.head is None:
+            return
+        for g in c.wsub:
+            if g in c.wsub_related:
+                continue
+            for h in c.head:
+                if h == g:
+                    continue
+                rests = self.catalogue[self.groups[g].category].rests
+                if c.hold or (rests == "surface" and self.catalogue[self.groups[h].category].support):
+                    self._relate("on", [g], h)
+                    c.produced = True
+
+    def _relation(self, c: _Clause, rel: _Rel, ce: int, prev_subject, starts_with_rel, last_event_end) -> int:
+        toks = self.toks
+        kind = rel.kind
+        target, end = self._target_at(rel.end, ce)
+        between = [t.text for t in toks[last_event_end : rel.start]]
+        # sources: the noun the phrase follows when nothing but adverbs lies between
+        srcs: list[int]
+        if c.last_target and c.last_target_end == last_event_end and all(b in _ADVERBS for b in between) and kind not in (
+            "face to", "flank", "around", "no relation"
+        ):  # fmt: skip
+            srcs = list(c.last_target)
+        elif c.head is not None:
+            closed = any(_is_verb(b) for b in between)
+            if c.wsub and not closed and not c.expect_new:
+                srcs = list(c.wsub)
+                c.wsub_related.update(srcs)
+            else:
+                self._close_with(c)
+                srcs = list(c.head)
+                c.head, c.wsub = None, []
+        else:
+            srcs = list(c.main)
+        if kind == "no relation":
+            return end
+        if isinstance(target, str) and target != "each other":
+            targets: list[int] | str = self._pronoun(target, c, srcs) if c.head is None else list(c.head)
+            if c.head is not None and srcs == c.head:
+                targets = self._pronoun(target, c, srcs)
+        elif target is None and kind in ("left", "right", "flank elliptic"):
+            targets = list(c.last_target) or [g for g in self.history[-1:] if g not in srcs]
+        elif target is None:
+            targets = []
+        else:
+            targets = target
+        if kind == "between" and isinstance(targets, list) and targets:
+            if end < ce and toks[end].text == "and":
+                second, end2 = self._target_at(end + 1, ce)
+                if isinstance(second, list):
+                    targets, end = targets + second, end2
+            kind = "near"
+        if isinstance(targets, list) and targets:
+            for t in targets:
+                if t in c.groups:
+                    continue
+                c.groups.append(t)
+        if kind in ("flanked by", "surrounded by", "near by", "on by"):
+            head = srcs or list(prev_subject)
+            if isinstance(targets, list) and head:
+                active = {"flanked by": "flank", "surrounded by": "around", "near by": "near", "on by": "on"}[kind]
+                for t in targets:
+                    for h in head:
+                        self._relate(active, [t], h)
+                c.produced = True
+                c.rels.append((kind, targets))
+            c.last_target, c.last_target_end, c.expect_new = [], -1, False
+            return end
+        if not srcs:
+            if starts_with_rel and c.first and not c.produced and isinstance(targets, list) and targets:
+                c.fronted.append((kind, targets))
+                return end
+            if not c.first:
+                srcs = list(prev_subject)
+        if not srcs or not targets:
+            return end
+        hang = any(t.text in _HANG_VERBS for t in toks[max(0, rel.start - 3) : rel.start])
+        if targets == "each other":
+            for s in srcs:
+                self.relations.append(("face to" if kind == "face to" else "near", s, s, None, None))
+            c.produced = True
+            return end
+        assert isinstance(targets, list)
+        instance = self.instance.get(self._target_start) if isinstance(target, list) else None
+        tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
+        if tm is not None and tm.each:  # "a candle on every table": one per table
+            for src in srcs:
+                if self.groups[src].count == 1 and src in c.groups:
+                    self.groups[src].count = self.groups[targets[0]].count
+                    self.pair_each.add((src, targets[0]))
+        for t in targets:
+            self._relate(kind, srcs, t, hang, instance)
+        c.produced = True
+        c.rels = [(kind, targets)]
+        if isinstance(target, list):
+            c.last_target, c.last_target_end = targets, end
+        else:
+            c.last_target, c.last_target_end = [], -1
+        c.expect_new = True
+        return end
+
+    def _relate(self, kind: str, srcs: list[int], target: int, hang: bool = False, instance=None) -> None:
+        for s in srcs:
+            resolved = self._kind(kind, s, target, hang)
+            if s == target or resolved == "no relation":
+                continue
+            self.relations.append((resolved, s, target, None, instance))
+
+    def _kind(self, kind: str, s: int, t: int, hang: bool = False) -> str:
+        src = self.catalogue[self.groups[s].category]
+        if kind == "over":
+            return "above" if hang or src.rests == "hanging" else "no relation"
+        if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not hang:
+            return "near"  # a tree "above" a pond cannot float: read it as near
+        if kind == "under":
+            tgt = self.catalogue[self.groups[t].category]
+            return "under flat" if self.groups[s].size[2] < 0.1 and tgt.size[2] < 1.5 else "near"
+        return {"left": "left of", "right": "right of", "flank elliptic": "flank"}.get(kind, kind)
+
+
+# --------------------------------------------------------------------------- to objects
+
+
+def _ids(groups: list[_Group]) -> None:
+    counters: Counter[str] = Counter()
+    for g in groups:
+        for _ in range(g.count):
+            counters[g.category] += 1
+            g.ids.append(f"{g.category}_{counters[g.category]}")
+
+
+_SIDES_SQUARE = ("left of", "right of", "in front of", "behind")
+
+
+def _around_sides(n: int, src: _Group, tgt: _Group) -> list[str]:
+    """Which side of the target each of ``n`` surrounding objects takes: long sides first."""
+    tx, ty, _ = tgt.size
+    width = max(src.size[0], 0.3) + 0.15
+    if tx >= 1.4 * ty:
+        first, short = ["in front of", "behind"], ["left of", "right of"]
+        long_cap, short_cap = max(1, int(tx // width)), max(1, int(ty // width))
+    elif ty >= 1.4 * tx:
+        first, short = ["left of", "right of"], ["in front of", "behind"]
+        long_cap, short_cap = max(1, int(ty // width)), max(1, int(tx // width))
+    else:
+        first, short = ["left of", "right of"], ["in front of", "behind"]
+        long_cap = short_cap = max(1, int(max(tx, ty) // width))
+    # every side once (four chairs take four sides), then the long sides fill up first
+    order = first + short + first * (long_cap - 1) + short * (short_cap - 1)
+    if n < 4:
+        order = first + short
+    return [order[i % len(order)] for i in range(n)]
+
+
+def _instance_pairs(src: _Group, tgt: _Group, paired: bool) -> list[tuple[str, str]]:
+    n, m = len(src.ids), len(tgt.ids)
+    if paired or (n == m and n > 1):
+        return [(src.ids[i], tgt.ids[i % m]) for i in range(n)]
+    return [(s, tgt.ids[i % m]) for i, s in enumerate(src.ids)]
+
+
+def _expand(reader: _Reader) -> list[ParsedRelation]:
+    out: list[ParsedRelation] = []
+    groups = reader.groups
+    for kind, s, t, _, instance in reader.relations:
+        src, tgt = groups[s], groups[t]
+        paired = (s, t) in reader.pair_each or (t, s) in reader.pair_each
+        if s == t:  # "facing each other": the later ones face the first
+            if kind == "face to" and len(src.ids) > 1:
+                out += [ParsedRelation(i, "face to", src.ids[0]) for i in src.ids[1:]]
+            continue
+        if instance is not None:
+            tgt = replace(tgt, ids=[tgt.ids[instance]])
+        pairs = _instance_pairs(src, tgt, paired)
+        if kind == "opposite":
+            for a, b in pairs:
+                out += [ParsedRelation(a, "in front of", b), ParsedRelation(a, "face to", b)]
+        elif kind == "flank":
+            for i, (a, _) in enumerate(pairs):
+                out.append(ParsedRelation(a, ("left of", "right of")[i % 2], tgt.ids[(i // 2) % len(tgt.ids)]))
+        elif kind == "around":
+            sides = _around_sides(len(src.ids), src, tgt)
+            for i, a in enumerate(src.ids):
+                b = tgt.ids[i % len(tgt.ids)]
+                out += [ParsedRelation(a, sides[i], b), ParsedRelation(a, "face to", b)]
+        elif kind == "under flat":
+            for a, b in pairs:
+                out.append(ParsedRelation(b, "on", a))
+        elif kind in ("left of", "right of", "in front of", "behind", "side of", "near", "far", "on", "above", "face to"):
+            out += [ParsedRelation(a, kind, b) for a, b in pairs]
+    return out
+
+
+def _acyclic(relations: list[ParsedRelation], ids: list[str]) -> list[ParsedRelation]:
+    """Drop duplicates and any relation that would close a cycle (later and inferred ones go
+    first), then order them so that an object is placed before it serves as a target."""
+    seen: set[tuple[str, str, str]] = set()
+    kept: list[ParsedRelation] = []
+    edges: dict[str, set[str]] = {i: set() for i in ids}  # source → targets
+
+    def reaches(a: str, b: str) -> bool:
+        stack, visited = [a], set()
+        while stack:
+            x = stack.pop()
+            if x == b:
+                return True
+            if x in visited:
+                continue
+            visited.add(x)
+            stack.extend(edges.get(x, ()))
+        return False
+
+    for r in sorted(relations, key=lambda r: r.inferred):
+        key = (r.source, r.relation, r.target)
+        if key in seen or r.source == r.target or r.source not in edges or r.target not in edges:
+            continue
+        if reaches(r.target, r.source):
+            log.debug("dropping %s %s %s: it would close a cycle", r.source, r.relation, r.target)
+            continue
+        # one vertical support per object
+        if r.relation in ("on", "above") and any(
+            k.source == r.source and k.relation in ("on", "above") for k in kept
+        ):
+            continue
+        seen.add(key)
+        kept.append(r)
+        edges[r.source].add(r.target)
+    depth: dict[str, int] = {}
+
+    def level(x: str) -> int:
+        if x not in depth:
+            depth[x] = 0
+            depth[x] = 1 + max((level(t) for t in edges[x]), default=-1)
+        return depth[x]
+
+    order = {i: n for n, i in enumerate(ids)}
+    return sorted(kept, key=lambda r: (level(r.source), order[r.source]))
+
+
+_SUPPORT_PREFERENCE = {
+    "table_lamp": ("nightstand", "desk", "side_table", "dresser", "vanity", "table", "coffee_table", "cabinet"),
+    "alarm_clock": ("nightstand", "dresser", "desk", "side_table"),
+    "tv": ("tv_stand", "cabinet", "dresser", "counter", "desk", "table"),
+    "monitor": ("desk", "school_desk", "table", "counter", "control_panel", "lab_bench"),
+    "laptop": ("desk", "school_desk", "table", "coffee_table", "counter", "round_table"),
+    "keyboard": ("desk", "school_desk", "table"),
+    "printer": ("desk", "cabinet", "filing_cabinet", "table"),
+    "microwave": ("counter", "cabinet", "table"),
+    "coffee_machine": ("counter", "side_table", "table", "cabinet"),
+    "toaster": ("counter", "table"),
+    "cash_register": ("counter", "display_case", "table"),
+    "flask": ("lab_bench", "table", "desk", "counter"),
+    "microscope": ("lab_bench", "desk", "table"),
+    "projector": ("table", "desk", "side_table"),
+    "radio": ("cabinet", "side_table", "dresser", "desk", "table"),
+    "aquarium": ("cabinet", "dresser", "side_table", "counter", "table"),
+    "magic_orb": ("pedestal", "altar", "table", "round_table", "desk"),
+}
+
+
+def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation], catalogue) -> list[ParsedRelation]:
+    """Surface things with no stated support go on the best support present; hanging things
+    with no stated target hang above the nearest-mentioned large object."""
+    placed_vertically = {r.source for r in relations if r.relation in ("on", "above")}
+    load: Counter[str] = Counter(r.target for r in relations if r.relation == "on")
+    extra: list[ParsedRelation] = []
+    supports = [o for o in objects if catalogue[o.category].support]
+    for obj in objects:
+        cat = catalogue[obj.category]
+        if obj.id in placed_vertically:
+            continue
+        if cat.rests == "surface":
+            prefs = _SUPPORT_PREFERENCE.get(obj.category, ())
+            fitting = [
+                s for s in supports
+                if s.id != obj.id and s.size[0] >= obj.size[0] * 0.9 and s.size[1] >= obj.size[1] * 0.9
+            ]  # fmt: skip
+            if not fitting:
+                continue
+
+            def score(s: ParsedObject, prefs=prefs, obj=obj) -> tuple:
+                rank = prefs.index(s.category) if s.category in prefs else len(prefs)
+                return (rank, load[s.id], abs(s.group - obj.group))
+
+            best = min(fitting, key=score)
+            load[best.id] += 1
+            extra.append(ParsedRelation(obj.id, "on", best.id, inferred=True))
+        elif cat.rests == "hanging":
+            hosts = [o for o in objects if o.id != obj.id and catalogue[o.category].rests == "ground" and o.size[2] < 2.5]
+            if hosts:
+                best = min(hosts, key=lambda o: (abs(o.group - obj.group), -o.size[0] * o.size[1]))
+                extra.append(ParsedRelation(obj.id, "above", best.id, inferred=True))
+    return extra
+
+
+def _is_indoor(categories: list[str], text: str, catalogue) -> bool:
+    low = text.lower()
+    votes = 0
+    for name in categories:
+        tags = catalogue[name].tags
+        votes += ("indoor" in tags) - ("outdoor" in tags)
+    for word in ("room", "kitchen", "bedroom", "bathroom", "office", "classroom", "lab", "apartment", "studio",
+                 "café", "cafe", "shop", "store", "boutique", "gallery", "hall", "interior", "indoors"):
+        if re.search(rf"\b{word}\b", low):
+            votes += 2
+    for word in ("street", "park", "garden", "square", "market", "beach", "forest", "yard", "outdoor", "harbour",
+                 "harbor", "village", "desert", "planet", "courtyard", "playground", "campsite", "field"):
+        if re.search(rf"\b{word}\b", low):
+            votes -= 2
+    return votes > 0
+
+
+def parse_scene(text: str) -> ParsedScene:
+    """Read a description into objects (with ids, sizes, descriptions), relations, style and
+    ground kind. Deterministic: the same text always gives the same parse."""
+    return _parse_cached(" ".join(text.split()))
+
+
+@lru_cache(maxsize=64)
+def _parse_cached(text: str) -> ParsedScene:
+    reader = _Reader(text)
+    reader.read()
+    _ids(reader.groups)
+    catalogue = reader.catalogue
+    objects = [
+        ParsedObject(i, g.category, g.name, g.description, g.size, g.index) for g in reader.groups for i in g.ids
+    ]
+    stated = _acyclic(_expand(reader), [o.id for o in objects])
+    inferred = _infer_support(objects, stated, catalogue)
+    relations = _acyclic(stated + inferred, [o.id for o in objects])
+    indoor = _is_indoor([o.category for o in objects], text, catalogue)
+    return ParsedScene(
+        text=text,
+        objects=objects,
+        relations=relations,
+        style=detect_style(text),
+        ground=detect_ground(text, indoor),
+        indoor=indoor,
+    )

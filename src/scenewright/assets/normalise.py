@@ -1,0 +1,145 @@
+"""Bring any backend's GLB to the stored asset convention.
+
+Image-to-3D models, asset libraries and the procedural generator all hand back meshes at
+arbitrary scale and offset. The rest of scenewright relies on one convention (DESIGN.md §3):
+glTF axes (+Y up, front +Z), footprint centred at the origin, bottom at y = 0, height equal
+to the object's requested height. Like the paper, the rescale is uniform and uses the
+height only, so a generated sofa keeps its proportions and the document learns its real
+width and depth from the mesh.
+"""
+
+from __future__ import annotations
+
+import io
+import logging
+import struct
+
+import numpy as np
+import trimesh
+
+from scenewright.errors import BackendError, MissingExtra
+from scenewright.scene import Vec3
+
+log = logging.getLogger(__name__)
+
+#: A footprint side never written smaller than this (a flat picture still needs a positive size).
+MIN_SIDE = 0.001
+
+
+def check_glb(data: bytes) -> str | None:
+    """Why ``data`` is not a complete binary glTF 2.0 file, or ``None`` when it is one.
+
+    Servers answer 200 with an HTML error page or a truncated body often enough that the
+    header is worth checking before anything is stored.
+    """
+    if len(data) < 12:
+        return f"{len(data)} bytes, too short for a GLB"
+    magic, version, length = struct.unpack("<4sII", data[:12])
+    if magic != b"glTF":
+        return f"data starts with {data[:4]!r}, not the glTF magic"
+    if version != 2:
+        return f"glTF container version {version}, expected 2"
+    if length != len(data):
+        return f"header declares {length} bytes but {len(data)} arrived (truncated?)"
+    return None
+
+
+def parse_glb(data: bytes) -> trimesh.Scene:
+    """The triangle meshes of a GLB as a scene; ``ValueError`` saying why when there are none."""
+    problem = check_glb(data)
+    if problem:
+        raise ValueError(problem)
+    try:
+        scene = trimesh.load(io.BytesIO(data), file_type="glb", force="scene", process=False)
+    except Exception as exc:  # trimesh raises many kinds on malformed files
+        raise ValueError(f"unreadable GLB ({type(exc).__name__}: {exc})") from None
+    others = [name for name, geom in scene.geometry.items() if not isinstance(geom, trimesh.Trimesh)]
+    if others:
+        # Point clouds and paths carry no surface; keeping them would skew the bounds.
+        scene.delete_geometry(others)
+    meshes = [geom for geom in scene.geometry.values() if len(geom.faces)]
+    if not meshes:
+        raise ValueError("the GLB holds no triangles")
+    if not all(np.isfinite(geom.vertices).all() for geom in meshes):
+        raise ValueError("the GLB has non-finite vertex coordinates")
+    return scene
+
+
+def normalise(
+    glb: bytes, size: Vec3, *, name: str, backend: str, max_faces: int | None = None
+) -> tuple[trimesh.Scene, Vec3]:
+    """The asset in glTF convention, sitting on y = 0, centred, ``size.z`` tall; and its new size.
+
+    The returned size keeps the requested height and carries the mesh's own width (x) and
+    depth (y, scene frame) after the uniform rescale. ``max_faces`` reduces heavy meshes.
+    """
+    try:
+        scene = parse_glb(glb)
+    except ValueError as exc:
+        raise BackendError(f"the {backend} mesh for {name!r} is invalid: {exc}") from None
+    if max_faces is not None:
+        reduce_faces(scene, max_faces)  # first: decimation moves the extremes a little
+    lo, hi = scene.bounds
+    height = float(hi[1] - lo[1])
+    if not height > 1e-9 * max(1.0, float(np.max(hi - lo))):
+        raise BackendError(
+            f"the {backend} mesh for {name!r} is flat (no height along glTF +Y), "
+            "so it cannot be scaled to the object's height"
+        )
+    scale = size.z / height
+    centre = np.array([(lo[0] + hi[0]) / 2.0, lo[1], (lo[2] + hi[2]) / 2.0])
+    transform = np.diag([scale, scale, scale, 1.0])
+    transform[:3, 3] = -centre * scale
+    scene = baked(scene, transform)
+    ext = scene.extents
+    new_size = Vec3(x=max(round(float(ext[0]), 6), MIN_SIDE), y=max(round(float(ext[2]), 6), MIN_SIDE), z=size.z)
+    log.debug("normalised %s from %s: scale %.4g, size %s", name, backend, scale, new_size.tuple())
+    return scene, new_size
+
+
+def baked(scene: trimesh.Scene, transform: np.ndarray) -> trimesh.Scene:
+    """One node per mesh with ``transform`` applied to the vertices themselves.
+
+    Scene-graph transforms are not used because trimesh snaps a node matrix that is close
+    to the identity to exactly the identity, which loses a rescale by 0.99999.
+    """
+    out = trimesh.Scene()
+    for node in scene.graph.nodes_geometry:
+        matrix, name = scene.graph[node]
+        # The cache holds the file's own normals; without it smooth ones would be guessed.
+        mesh = scene.geometry[name].copy(include_cache=True)
+        mesh.apply_transform(transform @ matrix)
+        out.add_geometry(mesh, geom_name=name)
+    return out
+
+
+def reduce_faces(scene: trimesh.Scene, max_faces: int) -> None:
+    """Simplify the scene's meshes in place to about ``max_faces`` triangles in total.
+
+    Quadric decimation drops UV maps, so each simplified mesh keeps its look as vertex
+    colours sampled from the nearest original vertex (texture or material colour).
+    """
+    total = sum(len(g.faces) for g in scene.geometry.values())
+    if total <= max_faces:
+        return
+    try:
+        import fast_simplification  # noqa: F401  (trimesh's decimation engine)
+    except ImportError:
+        raise MissingExtra("face-count reduction (max_faces)", "simplify", "fast-simplification") from None
+    from scipy.spatial import cKDTree
+
+    for key, geom in list(scene.geometry.items()):
+        target = max(4, int(len(geom.faces) * max_faces / total))
+        if len(geom.faces) <= target:
+            continue
+        visual = geom.visual.to_color() if hasattr(geom.visual, "to_color") else geom.visual
+        colours = visual.vertex_colors
+        reduced = geom.simplify_quadric_decimation(face_count=target)
+        _, nearest = cKDTree(geom.vertices).query(reduced.vertices)
+        reduced.visual = trimesh.visual.ColorVisuals(reduced, vertex_colors=np.asarray(colours)[nearest])
+        scene.geometry[key] = reduced
+    log.debug("reduced %d faces to %d", total, sum(len(g.faces) for g in scene.geometry.values()))
+
+
+def to_glb(scene: trimesh.Scene) -> bytes:
+    return scene.export(file_type="glb")

@@ -1,0 +1,454 @@
+"""The vision-language model behind any OpenAI-compatible chat API (OpenAI, vLLM, Ollama...).
+
+Each task sends its prompt (:mod:`scenewright.backends.prompts`), the images it needs and the
+JSON schema of its answer, then treats the answer as untrusted input. What the schema cannot
+guarantee is repaired here and kept on record: ids are made valid and unique, sizes clamped,
+background "objects" dropped; constraints with unknown relations or ids, duplicates, self
+references and cycles dropped. After each call :attr:`OpenAIChatVLM.last_repairs` holds one
+provenance :class:`~scenewright.scene.Event` per repair, for the stage to add to the scene.
+
+Sizes are clamped to [0.1, 5] m, the paper's range, widened to any length the text itself
+states ("a 12 m tall tower", "a 5 cm coin"), so a model's slip cannot make a 40 m chair while
+a stated size is kept.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import re
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING, Annotated, Any, Literal
+
+from pydantic import BaseModel, ConfigDict, WithJsonSchema
+
+from scenewright.backends import prompts
+from scenewright.backends.structured import ChatClient, InvalidAnswer, json_text, user_message
+from scenewright.errors import InputError
+from scenewright.scene import RELATION_TYPES, Constraint, Event, SceneObject, Vec3
+
+if TYPE_CHECKING:
+    from scenewright.editing.plan import EditPlan
+    from scenewright.scene import LayoutReport, Scene
+    from scenewright.settings import Settings
+
+log = logging.getLogger(__name__)
+
+DEFAULT_MODEL = "o3"
+SIZE_RANGE = (0.1, 5.0)
+
+#: Names whose head word is scenery, not an object (the paper keeps these out of the list).
+BACKGROUND_WORDS = frozenset(
+    "wall walls floor floors ceiling ceilings ground grass lawn sky skies road roads street "
+    "terrain landscape curtain curtains window windows background horizon water sea ocean river".split()
+)
+
+#: relation → the relation that says the same with source and target swapped.
+INVERSE = {
+    "left of": "right of",
+    "right of": "left of",
+    "in front of": "behind",
+    "behind": "in front of",
+    "side of": "side of",
+    "near": "near",
+    "far": "far",
+}
+
+
+class _Answer(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+
+# The schema lists the ten relations, so servers with strict decoding can only emit those;
+# validation accepts any string so that one bad relation drops one constraint, not the answer.
+RelationName = Annotated[str, WithJsonSchema({"type": "string", "enum": list(RELATION_TYPES)})]
+
+
+class ProposedConstraint(_Answer):
+    relation: RelationName
+    source: str
+    target: str
+
+
+class ConstraintsAnswer(_Answer):
+    constraints: list[ProposedConstraint]
+
+
+class ProposedObject(_Answer):
+    id: str
+    name: str
+    position: Vec3
+    rotation: Vec3
+    size: Vec3
+    visual_description: str
+
+
+class ObjectsAnswer(_Answer):
+    objects: list[ProposedObject]
+
+
+class RedundantImage(_Answer):
+    id: str
+    reason: str
+
+
+class RedundantAnswer(_Answer):
+    redundant: list[RedundantImage]
+
+
+class ProposedNewObject(_Answer):
+    name: str
+    category: str | None
+    visual_description: str
+    size: Vec3 | None
+
+
+class EditAnswer(_Answer):
+    operation: Literal["move", "add", "delete", "replace"]
+    focus: str
+    constraints: list[ProposedConstraint]
+    new_object: ProposedNewObject | None
+    yaw: float | None
+
+
+_LENGTH = re.compile(
+    r"(\d+(?:\.\d+)?)\s*-?\s*(cm|centimet(?:er|re)s?|m|met(?:er|re)s?)\b(?!\s*/)", re.IGNORECASE
+)
+
+
+def size_range(text: str) -> tuple[float, float]:
+    """[0.1, 5] m, widened to include every length the text states."""
+    low, high = SIZE_RANGE
+    for number, unit in _LENGTH.findall(text):
+        metres = float(number) / (100.0 if unit.lower().startswith("c") else 1.0)
+        if metres > 0:
+            low, high = min(low, metres), max(high, metres)
+    return low, high
+
+
+def snake_id(raw: str) -> str:
+    return re.sub(r"[^a-z0-9]+", "_", raw.lower()).strip("_")
+
+
+_SCORE = re.compile(r"score\W{0,4}(\d+(?:\.\d+)?)", re.IGNORECASE)
+_OUT_OF = re.compile(r"(\d+(?:\.\d+)?)\s*(?:/|out of)\s*100\b", re.IGNORECASE)
+_NUMBER = re.compile(r"(?<![\d.])(\d+(?:\.\d+)?)(?![\d.])")
+
+
+def parse_score(reply: str) -> float:
+    """The final 1–100 score in a free-text verdict: the last "Score: N", else the last
+    "N/100", else the last number in range."""
+    for pattern in (_SCORE, _OUT_OF):
+        found = pattern.findall(reply)
+        if found:
+            value = float(found[-1])
+            break
+    else:
+        numbers = [float(n) for n in _NUMBER.findall(reply) if 1 <= float(n) <= 100]
+        if not numbers:
+            raise InvalidAnswer('the verdict has no score; end with a line "Score: N" with N from 1 to 100')
+        value = numbers[-1]
+    if not 1 <= value <= 100:
+        raise InvalidAnswer(f"the score {value:g} is outside 1..100")
+    return value
+
+
+class OpenAIChatVLM:
+    """The VisionLanguageModel protocol over chat completions with JSON-schema answers."""
+
+    name = "openai"
+
+    def __init__(self, model: str, settings: Settings, client: Any = None):
+        self.model = model
+        self.chat = ChatClient(model, settings, client)
+        #: Provenance events for what the last call repaired or dropped in the model's answer.
+        self.last_repairs: list[Event] = []
+
+    @classmethod
+    def from_spec(cls, argument: str, settings: Settings) -> OpenAIChatVLM:
+        return cls(argument or DEFAULT_MODEL, settings)
+
+    # --- repairs -------------------------------------------------------------------------
+
+    def _repaired(self, task: str, message: str, **data: Any) -> None:
+        log.info("%s: %s", task, message)
+        self.last_repairs.append(Event(stage=f"vlm.{task}", message=message, data={"model": self.model, **data}))
+
+    def _begin(self) -> None:
+        self.last_repairs = []
+
+    # --- scene analysis ------------------------------------------------------------------
+
+    def detect_style(self, text: str) -> str:
+        """The style the text names, by the offline parser's rules: no call is worth paying for this."""
+        from scenewright.analysis.parser import detect_style
+
+        return detect_style(text)
+
+    def describe_objects(self, text: str, style: str, reference: bytes | None) -> list[SceneObject]:
+        self._begin()
+        low, high = size_range(text)
+        messages = [
+            {"role": "system", "content": prompts.OBJECTS_SYSTEM},
+            user_message(prompts.describe_objects(text, style, low, high), [reference] if reference else []),
+        ]
+
+        def check(answer: ObjectsAnswer) -> list[SceneObject]:
+            # Each check starts the record afresh: only the accepted answer's repairs count.
+            self._begin()
+            objects = self._objects_from(answer.objects, low, high)
+            if not objects:
+                raise InvalidAnswer("the list has no usable object; list the objects the description names")
+            return objects
+
+        return self.chat.ask("scene_objects", messages, ObjectsAnswer, check)
+
+    def _objects_from(self, proposed: Sequence[ProposedObject], low: float, high: float) -> list[SceneObject]:
+        from scenewright.analysis.catalogue import lookup
+
+        objects: list[SceneObject] = []
+        taken: set[str] = set()
+        for item in proposed:
+            name = " ".join(item.name.split())
+            words = snake_id(name).split("_")
+            if not name or not words[0]:
+                self._repaired("scene_objects", f"dropped an object without a name (id {item.id!r})")
+                continue
+            if words[-1] in BACKGROUND_WORDS:
+                self._repaired("scene_objects", f"dropped background element {name!r}", id=item.id)
+                continue
+            object_id = snake_id(item.id) or snake_id(name)
+            base, n = object_id, 1
+            while object_id in taken:
+                n += 1
+                object_id = f"{base}_{n}"
+            if object_id != item.id:
+                self._repaired("scene_objects", f"renamed id {item.id!r} to {object_id!r}", id=object_id)
+            taken.add(object_id)
+            size = self._clamped("scene_objects", object_id, item.size, low, high)
+            position = Vec3.of(v if math.isfinite(v) else 0.0 for v in item.position.tuple())
+            yaw = item.rotation.z if math.isfinite(item.rotation.z) else 0.0
+            if item.rotation.x or item.rotation.y:
+                self._repaired("scene_objects", f"{object_id}: kept the yaw only; objects stand upright", id=object_id)
+            category = lookup(name)
+            objects.append(
+                SceneObject(
+                    id=object_id,
+                    name=name,
+                    category=category.name if category else None,
+                    position=position,
+                    rotation=Vec3(z=yaw % 360.0),
+                    size=size,
+                    visual_description=item.visual_description.strip(),
+                )
+            )
+        return objects
+
+    def _clamped(self, task: str, object_id: str, size: Vec3, low: float, high: float) -> Vec3:
+        values = [v if math.isfinite(v) else low for v in size.tuple()]
+        clamped = Vec3.of(min(max(v, low), high) for v in values)
+        if clamped.tuple() != size.tuple():
+            self._repaired(
+                task,
+                f"{object_id}: size {size.tuple()} clamped to [{low:g}, {high:g}] m",
+                id=object_id,
+                size=list(clamped.tuple()),
+            )
+        return clamped
+
+    def find_redundant(self, objects: Sequence[SceneObject], images: Mapping[str, bytes]) -> dict[str, str]:
+        self._begin()
+        shown = [obj for obj in objects if obj.id in images]
+        if len(shown) < 2:
+            return {}
+        labelled = [(f"Picture of {obj.id}:", images[obj.id]) for obj in shown]
+        messages = [
+            {"role": "system", "content": prompts.REDUNDANT_SYSTEM},
+            user_message(prompts.find_redundant(_objects_text(shown)), labelled),
+        ]
+
+        def check(answer: RedundantAnswer) -> dict[str, str]:
+            self._begin()
+            known = {obj.id for obj in shown}
+            result: dict[str, str] = {}
+            for item in answer.redundant:
+                if item.id not in known:
+                    self._repaired("redundant_images", f"ignored unknown id {item.id!r}", id=item.id)
+                    continue
+                result[item.id] = item.reason.strip() or "already part of another object's image"
+            return result
+
+        return self.chat.ask("redundant_images", messages, RedundantAnswer, check)
+
+    # --- layout ---------------------------------------------------------------------------
+
+    def write_constraints(
+        self, text: str, objects: Sequence[SceneObject], reference: bytes | None
+    ) -> list[Constraint]:
+        self._begin()
+        messages = [
+            {"role": "system", "content": prompts.CONSTRAINTS_SYSTEM},
+            user_message(prompts.write_constraints(text, _objects_text(objects)), [reference] if reference else []),
+        ]
+        return self._ask_constraints("spatial_constraints", messages, objects)
+
+    def revise_constraints(
+        self,
+        text: str,
+        objects: Sequence[SceneObject],
+        constraints: Sequence[Constraint],
+        report: LayoutReport,
+        reference: bytes | None,
+    ) -> list[Constraint]:
+        from scenewright.layout import feedback_text
+
+        self._begin()
+        last = json_text([c.model_dump(exclude={"type"}) for c in constraints])
+        prompt = prompts.revise_constraints(text, _objects_text(objects), last, feedback_text(report, objects))
+        messages = [
+            {"role": "system", "content": prompts.CONSTRAINTS_SYSTEM},
+            user_message(prompt, [reference] if reference else []),
+        ]
+        return self._ask_constraints("revised_constraints", messages, objects)
+
+    def _ask_constraints(self, task: str, messages: list, objects: Sequence[SceneObject]) -> list[Constraint]:
+        def check(answer: ConstraintsAnswer) -> list[Constraint]:
+            self._begin()
+            return self._cleaned(task, self._matched(answer.constraints, objects), objects)
+
+        return self.chat.ask(task, messages, ConstraintsAnswer, check)
+
+    @staticmethod
+    def _matched(proposed: Sequence[ProposedConstraint], objects: Sequence[SceneObject]) -> list[dict[str, str]]:
+        """Constraints as plain dicts with ids matched leniently ("Chair 1" is chair_1)."""
+        by_snake = {snake_id(o.id): o.id for o in objects}
+        return [
+            {
+                "relation": item.relation,
+                "source": by_snake.get(snake_id(item.source), item.source),
+                "target": by_snake.get(snake_id(item.target), item.target),
+            }
+            for item in proposed
+        ]
+
+    def _cleaned(self, task: str, raw: Sequence[dict[str, str]], objects: Sequence[SceneObject]) -> list[Constraint]:
+        """The layout engine's cleaning drops unknown relations and ids, self references,
+        duplicates and cycles; each drop is recorded."""
+        from scenewright.layout import clean_constraints
+
+        kept, dropped = clean_constraints(objects, raw)
+        for item in dropped:
+            self._repaired(task, f"dropped a constraint: {item.reason}", constraint=item.constraint)
+        return kept
+
+    # --- editing --------------------------------------------------------------------------
+
+    def plan_edit(self, scene: Scene, instruction: str) -> EditPlan:
+        from scenewright.editing.plan import EditPlan, NewObject
+
+        self._begin()
+        objects_text = "\n".join(
+            f"- {o.id}: {o.name}, at ({o.position.x:.2f}, {o.position.y:.2f}, {o.position.z:.2f}), "
+            f"yaw {o.yaw:g}, size {_size_text(o)}" + (f", {o.visual_description}" if o.visual_description else "")
+            for o in scene.objects
+        )
+        messages = [
+            {"role": "system", "content": prompts.EDIT_SYSTEM},
+            user_message(prompts.plan_edit(objects_text, instruction)),
+        ]
+        known = {o.id for o in scene.objects}
+        by_snake = {snake_id(i): i for i in known}
+
+        def check(answer: EditAnswer) -> EditPlan:
+            self._begin()
+            focus = answer.focus if answer.focus in known else by_snake.get(snake_id(answer.focus))
+            if answer.operation == "add":
+                focus = self._new_id(answer.focus, known)
+            elif focus is None:
+                raise InvalidAnswer(
+                    f"focus {answer.focus!r} is not an object of the scene; "
+                    f"for {answer.operation!r} choose one of: {', '.join(sorted(known))}"
+                )
+            if answer.operation in ("add", "replace") and answer.new_object is None:
+                raise InvalidAnswer(f"operation {answer.operation!r} needs new_object")
+            if answer.operation == "delete":
+                return EditPlan(operation="delete", focus=focus)
+            proposed = answer.constraints
+            if focus != answer.focus:  # a new object's id was changed: its constraints follow
+                proposed = [c.model_copy(update={"source": focus}) if c.source == answer.focus else c for c in proposed]
+            constraints = self._focus_constraints(proposed, focus, scene.objects)
+            new = answer.new_object
+            yaw = answer.yaw if answer.yaw is not None and math.isfinite(answer.yaw) else None
+            return EditPlan(
+                operation=answer.operation,
+                focus=focus,
+                constraints=constraints,
+                new_object=NewObject(
+                    name=new.name.strip(),
+                    category=new.category,
+                    visual_description=new.visual_description.strip(),
+                    size=self._clamped("edit_plan", focus, new.size, *size_range(instruction)) if new.size else None,
+                )
+                if new is not None and answer.operation != "move"
+                else None,
+                yaw=yaw % 360.0 if yaw is not None else None,
+            )
+
+        return self.chat.ask("edit_plan", messages, EditAnswer, check)
+
+    def _new_id(self, proposed: str, known: set[str]) -> str:
+        base = snake_id(proposed) or "object"
+        new_id, n = base, 1
+        while new_id in known:
+            n += 1
+            new_id = f"{base}_{n}"
+        if new_id != proposed:
+            self._repaired("edit_plan", f"new object id {proposed!r} became {new_id!r}", id=new_id)
+        return new_id
+
+    def _focus_constraints(
+        self, proposed: Sequence[ProposedConstraint], focus: str, objects: Sequence[SceneObject]
+    ) -> list[Constraint]:
+        """The focus as the only source: constraints written the other way round are turned
+        when their relation has an inverse, dropped otherwise; then cleaned as any others."""
+        if all(o.id != focus for o in objects):  # an added object: let the cleaning know its id
+            objects = [*objects, SceneObject(id=focus, name=focus, size=Vec3(x=1, y=1, z=1))]
+        focused = []
+        for item in self._matched(proposed, objects):
+            if item["source"] != focus and item["target"] == focus:
+                try:
+                    relation = Constraint.model_validate(item).relation
+                except ValueError:
+                    relation = None
+                if relation in INVERSE:
+                    turned = {"relation": INVERSE[relation], "source": focus, "target": item["source"]}
+                    self._repaired("edit_plan", f"turned {item} into {turned}", constraint=turned)
+                    item = turned
+            if item["source"] == focus:
+                focused.append(item)
+            else:
+                self._repaired("edit_plan", f"dropped {item}: its source is not the focus {focus!r}", constraint=item)
+        return self._cleaned("edit_plan", focused, objects)
+
+    # --- judging --------------------------------------------------------------------------
+
+    def judge(self, text: str, image: bytes, criterion: str) -> float:
+        if criterion not in prompts.CRITERIA:
+            raise InputError(f"unknown judging criterion {criterion!r}; choose one of: {', '.join(prompts.CRITERIA)}")
+        self._begin()
+        messages = [
+            {"role": "system", "content": prompts.JUDGE_SYSTEM},
+            user_message(prompts.judge(text, criterion), [image]),
+        ]
+        return self.chat.ask_text(f"judge_{criterion}", messages, parse_score)
+
+
+def _size_text(obj: SceneObject) -> str:
+    return "x".join(f"{v:.2f}" for v in obj.size.tuple()) + " m"
+
+
+def _objects_text(objects: Sequence[SceneObject]) -> str:
+    return "\n".join(
+        f"- {o.id}: {o.name}, {_size_text(o)}" + (f", {o.visual_description}" if o.visual_description else "")
+        for o in objects
+    )

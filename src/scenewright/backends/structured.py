@@ -1,0 +1,269 @@
+"""The shared client for OpenAI-compatible servers: structured answers, retries, a reply cache.
+
+A model's reply is untrusted input. Every answer is parsed and validated here; an answer that
+is not valid JSON, does not match the schema, is refused, or fails a task's own checks goes
+back to the model with the error appended to the conversation, a bounded number of times,
+before the task fails with a :class:`BackendError` that names it and the last error.
+Transport faults (429, 5xx, timeouts, dropped connections) are the SDK's job: it retries them
+with exponential backoff, honouring ``Retry-After``, ``settings.max_retries`` times.
+
+Accepted replies are cached by a hash of the request, so a resumed or repeated run never asks
+the same question twice.
+"""
+
+from __future__ import annotations
+
+import base64
+import copy
+import json
+import logging
+import os
+import re
+import threading
+from collections.abc import Callable, Sequence
+from typing import Any, TypeVar
+
+from pydantic import BaseModel, ValidationError
+
+from scenewright.cache import RequestCache, request_key
+from scenewright.errors import BackendError, MissingExtra
+from scenewright.scene import describe_validation_error
+from scenewright.settings import Settings
+
+log = logging.getLogger(__name__)
+
+T = TypeVar("T")
+Message = dict[str, Any]
+
+#: Local servers (vLLM, Ollama, llama.cpp) accept any key; the SDK insists on one.
+_PLACEHOLDER_KEY = "not-needed"
+
+
+class InvalidAnswer(ValueError):
+    """A reply the model must redo; the message is what the model is told."""
+
+
+def openai_client(settings: Settings):
+    """An SDK client for ``settings``: base URL, key from the named variable, timeout, retries."""
+    try:
+        import openai
+    except ImportError as exc:
+        raise MissingExtra("the openai backends", "remote", "openai") from exc
+    key = os.environ.get(settings.api_key_env)
+    if not key:
+        if settings.base_url is None:
+            raise BackendError(
+                f"the openai backends need an API key: set the environment variable "
+                f"{settings.api_key_env} (or choose another with --api-key-env), "
+                "or point --base-url at a local OpenAI-compatible server"
+            )
+        key = _PLACEHOLDER_KEY
+    return openai.OpenAI(
+        api_key=key, base_url=settings.base_url, timeout=settings.timeout, max_retries=settings.max_retries
+    )
+
+
+def transport_error(task: str, exc: Exception) -> BackendError:
+    """The SDK's failure, after its own retries, as one line naming the task."""
+    import openai
+
+    if isinstance(exc, openai.APITimeoutError):
+        what = "timed out (raise --timeout or check the server)"
+    elif isinstance(exc, openai.APIConnectionError):
+        what = f"could not reach the server ({exc})"
+    elif isinstance(exc, openai.APIStatusError):
+        detail = exc.body.get("message") if isinstance(exc.body, dict) else None
+        what = f"server answered HTTP {exc.status_code}: {_short(detail or exc.message)}"
+    else:
+        what = str(exc)
+    return BackendError(f"{task}: {what}")
+
+
+def sdk_errors() -> tuple[type[Exception], ...]:
+    import openai
+
+    return (openai.APIError,)
+
+
+def image_mime(data: bytes) -> str:
+    if data.startswith(b"\x89PNG"):
+        return "image/png"
+    if data.startswith(b"\xff\xd8"):
+        return "image/jpeg"
+    if data[:4] == b"RIFF" and data[8:12] == b"WEBP":
+        return "image/webp"
+    if data[:6] in (b"GIF87a", b"GIF89a"):
+        return "image/gif"
+    raise BackendError(f"cannot send an image that is not PNG, JPEG, WebP or GIF (starts {data[:8]!r})")
+
+
+def image_part(data: bytes) -> dict[str, Any]:
+    """A chat content part carrying an image inline as a data URL."""
+    url = f"data:{image_mime(data)};base64,{base64.b64encode(data).decode('ascii')}"
+    return {"type": "image_url", "image_url": {"url": url}}
+
+
+def user_message(text: str, images: Sequence[bytes | tuple[str, bytes]] = ()) -> Message:
+    """A user turn: the text, then each image (optionally preceded by its own caption)."""
+    parts: list[dict[str, Any]] = [{"type": "text", "text": text}]
+    for image in images:
+        if isinstance(image, tuple):
+            caption, data = image
+            parts.append({"type": "text", "text": caption})
+            image = data
+        parts.append(image_part(image))
+    return {"role": "user", "content": parts}
+
+
+def strict_schema(model: type[BaseModel]) -> dict[str, Any]:
+    """The model's JSON schema in the subset strict structured output accepts.
+
+    Strict mode wants every property listed as required, ``additionalProperties: false`` on
+    every object, and no ``default``; optional fields stay optional by being nullable, which
+    pydantic already writes as ``anyOf [..., null]``.
+    """
+    schema = copy.deepcopy(model.model_json_schema())
+
+    def visit(node: Any) -> None:
+        if isinstance(node, dict):
+            node.pop("default", None)
+            if node.get("type") == "object" and "properties" in node:
+                node["required"] = list(node["properties"])
+                node["additionalProperties"] = False
+            for value in node.values():
+                visit(value)
+        elif isinstance(node, list):
+            for value in node:
+                visit(value)
+
+    visit(schema)
+    return schema
+
+
+_FENCE = re.compile(r"^\s*```[a-zA-Z]*\s*\n(.*?)\n?```\s*$", re.S)
+
+
+def parse_json(content: str, answer: type[BaseModel]) -> Any:
+    """Validate a reply against ``answer``; servers without strict mode may fence their JSON."""
+    fenced = _FENCE.match(content)
+    if fenced:
+        content = fenced.group(1)
+    try:
+        return answer.model_validate_json(content)
+    except ValidationError as exc:
+        if any(err["type"] == "json_invalid" for err in exc.errors()):
+            raise InvalidAnswer(f"the reply is not valid JSON ({_short(str(exc.errors()[0]['msg']))})") from None
+        raise InvalidAnswer(f"the reply does not match the schema: {describe_validation_error(exc)}") from None
+
+
+def _short(text: str, limit: int = 300) -> str:
+    text = " ".join(str(text).split())
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+class RemoteModel:
+    """One model on an OpenAI-compatible server: its settings, a cache for its answers, and an
+    SDK client made on first use (so choosing a backend needs neither the SDK nor a key yet)."""
+
+    def __init__(self, model: str, settings: Settings, client: Any = None):
+        self.model = model
+        self.settings = settings
+        self.cache = RequestCache(settings.cache_dir)
+        self._client = client
+        self._lock = threading.Lock()  # image workers may ask for the client at the same time
+
+    @property
+    def client(self):
+        with self._lock:
+            if self._client is None:
+                self._client = openai_client(self.settings)
+            return self._client
+
+
+class ChatClient(RemoteModel):
+    """Asks one OpenAI-compatible chat model for validated answers."""
+
+    def ask(
+        self,
+        task: str,
+        messages: list[Message],
+        answer: type[BaseModel],
+        check: Callable[[Any], T] = lambda parsed: parsed,
+    ) -> T:
+        """A structured answer: JSON that validates as ``answer`` and passes ``check``.
+
+        ``check`` turns the validated answer into the task's result and raises
+        :class:`InvalidAnswer` for what the schema cannot express (an unknown focus object).
+        """
+        response_format = {
+            "type": "json_schema",
+            "json_schema": {"name": task, "schema": strict_schema(answer), "strict": True},
+        }
+        return self._converse(task, messages, response_format, lambda content: check(parse_json(content, answer)))
+
+    def ask_text(self, task: str, messages: list[Message], parse: Callable[[str], T]) -> T:
+        """A free-text answer that ``parse`` accepts (raising :class:`InvalidAnswer` otherwise)."""
+        return self._converse(task, messages, None, parse)
+
+    def _converse(
+        self,
+        task: str,
+        messages: list[Message],
+        response_format: dict[str, Any] | None,
+        parse: Callable[[str], T],
+    ) -> T:
+        request: dict[str, Any] = {"model": self.model, "messages": list(messages)}
+        if response_format is not None:
+            request["response_format"] = response_format
+        if self.settings.reasoning_effort:
+            request["reasoning_effort"] = self.settings.reasoning_effort
+        key = request_key("openai-chat", self.settings.base_url, request)
+        cached = self.cache.get("chat", key)
+        if cached is not None:
+            try:
+                return parse(cached.decode("utf-8"))
+            except InvalidAnswer:
+                log.info("%s: cached reply no longer validates; asking again", task)
+
+        attempts = self.settings.max_retries + 1
+        error = "no attempt made"
+        for attempt in range(1, attempts + 1):
+            try:
+                completion = self.client.chat.completions.create(**request)
+            except sdk_errors() as exc:
+                raise transport_error(f"{task} ({self.model})", exc) from exc
+            if not completion.choices:
+                error = "the reply has no choices"
+                content = ""
+            else:
+                message = completion.choices[0].message
+                content = message.content or ""
+                try:
+                    if message.refusal:
+                        raise InvalidAnswer(f"the model refused: {_short(message.refusal)}")
+                    if not content.strip():
+                        raise InvalidAnswer("the reply is empty")
+                    result = parse(content)
+                except InvalidAnswer as exc:
+                    error = str(exc)
+                else:
+                    self.cache.put("chat", key, content.encode("utf-8"))
+                    return result
+            log.warning("%s: invalid answer (attempt %d of %d): %s", task, attempt, attempts, error)
+            request["messages"] = [
+                *request["messages"],
+                {"role": "assistant", "content": content or "(no answer)"},
+                {
+                    "role": "user",
+                    "content": f"That answer cannot be used: {error}. Answer the same request again, "
+                    "following every instruction and the required format exactly.",
+                },
+            ]
+        raise BackendError(
+            f"{task} ({self.model}): no valid answer after {attempts} attempts; last error: {error}"
+        )
+
+
+def json_text(value: Any) -> str:
+    """Compact, readable JSON for prompts."""
+    return json.dumps(value, indent=1, ensure_ascii=False)

@@ -1,0 +1,82 @@
+"""``scenewright bench assets``: how well the asset stage spreads jobs over several mesh servers."""
+
+from __future__ import annotations
+
+import json
+import tempfile
+import time
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from scenewright.cli.app import bench_app
+
+
+def _box_glb() -> bytes:
+    import trimesh
+
+    return trimesh.Scene(trimesh.creation.box(extents=(0.8, 1.0, 0.6))).export(file_type="glb")
+
+
+def _png(index: int) -> bytes:
+    import io
+
+    from PIL import Image
+
+    buffer = io.BytesIO()
+    Image.new("RGBA", (16, 16), (index * 13 % 256, 80, 160, 255)).save(buffer, format="PNG")
+    return buffer.getvalue()
+
+
+@bench_app.command("assets")
+def bench_assets(
+    assets: Annotated[int, typer.Option("--assets", help="Objects to build.")] = 16,
+    servers: Annotated[int, typer.Option("--servers", help="Local stand-in Hunyuan3D servers.")] = 4,
+    delay: Annotated[float, typer.Option("--delay", help="Seconds each server takes per asset.")] = 2.0,
+    poll: Annotated[float, typer.Option("--poll", help="Seconds between status polls.")] = 0.1,
+    json_output: Annotated[bool, typer.Option("--json", help="Print JSON (the only output format).")] = True,
+) -> None:
+    """Wall time of the asset stage over local servers (one job each at a time) against the ideal."""
+    from scenewright.assets import generate_assets
+    from scenewright.backends.hunyuan3d import Hunyuan3D
+    from scenewright.backends.hunyuan3d_standin import StandInServer
+    from scenewright.cache import RequestCache
+    from scenewright.folder import SceneFolder
+    from scenewright.scene import Scene, SceneObject, Vec3
+
+    glb = _box_glb()
+    started = [StandInServer(model=lambda image: glb, delay=delay).start() for _ in range(servers)]
+    try:
+        backend = Hunyuan3D([s.url for s in started], concurrency=1, poll_interval=poll)
+        with tempfile.TemporaryDirectory(prefix="scenewright-bench-assets-") as tmp:
+            folder = SceneFolder(Path(tmp))
+            objects = []
+            for index in range(assets):
+                oid = f"crate_{index + 1}"
+                (folder.object_images).mkdir(parents=True, exist_ok=True)
+                folder.object_image(oid).write_bytes(_png(index))
+                objects.append(
+                    SceneObject(id=oid, name="crate", size=Vec3(x=1, y=1, z=1), image=folder.relative(folder.object_image(oid)))
+                )
+            scene = Scene(text="a yard full of crates", objects=objects)
+            start = time.perf_counter()
+            generate_assets(scene, folder, backend, RequestCache(None))
+            wall = time.perf_counter() - start
+        backend.close()
+    finally:
+        for server in started:
+            server.stop()
+    ideal = -(-assets // servers) * delay
+    result = {
+        "assets": assets,
+        "servers": servers,
+        "seconds_per_asset": delay,
+        "poll_seconds": poll,
+        "ideal_seconds": round(ideal, 3),
+        "wall_seconds": round(wall, 3),
+        "ratio_to_ideal": round(wall / ideal, 3),
+        "target_ratio": 1.25,
+        "jobs_per_server": [s.counts["send"] for s in started],
+    }
+    typer.echo(json.dumps(result))

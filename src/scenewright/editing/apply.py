@@ -1,0 +1,439 @@
+"""Apply one edit (paper §3.4): move, add, delete, replace — and nothing else changes.
+
+The planner (a vision-language model, or the offline parser) names one focus object and its
+new constraints. Layout edits re-solve only the focus with every other object fixed, as the
+paper's solver does; objects resting ``on`` the focus ride along by the same rigid motion.
+Asset edits regenerate the focus's mesh (through an object image where the image backend
+draws one) and keep its place unless the new size no longer fits.
+
+Everything is computed on a copy of the document; new asset files get content-addressed
+names, so until the final commit (:func:`scenewright.editing.history.commit`) no file the
+scene uses is touched. A failed edit leaves the folder exactly as it was.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import logging
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import trimesh
+
+from scenewright.analysis.catalogue import lookup
+from scenewright.assets import asset_mesh, generate_assets, load_meshes
+from scenewright.backends import Backends
+from scenewright.cache import RequestCache
+from scenewright.editing.history import commit
+from scenewright.editing.parser import fresh_id
+from scenewright.editing.plan import EditPlan
+from scenewright.errors import InfeasibleLayout, InputError
+from scenewright.folder import SceneFolder
+from scenewright.geometry import yaw_towards
+from scenewright.layout import check, colliding_pairs, feedback_text, solve
+from scenewright.scene import Constraint, RemovedObject, Scene, SceneObject, Vec3
+from scenewright.settings import Settings
+
+log = logging.getLogger(__name__)
+
+STAGE = "edit"
+
+
+@dataclass
+class _Edit:
+    """What an edit produced, before anything is written."""
+
+    scene: Scene
+    plan: EditPlan
+    changes: list[str] = field(default_factory=list)
+    #: relative path → bytes of new files (assets, object images), named by their content.
+    files: dict[str, bytes] = field(default_factory=dict)
+    seconds_solving: float = 0.0
+
+
+def apply_edit(scene: Scene, folder: SceneFolder, instruction: str, *, backends: Backends, settings: Settings) -> Scene:
+    """Carry out ``instruction`` on the scene in ``folder``; save it, its history and ``scene.glb``."""
+    if not folder.is_scene():
+        folder.load()  # raises the "not a scene folder" error, naming the folder
+    if not instruction.strip():
+        raise InputError(
+            "the instruction is empty; say what to change, e.g. 'move the lamp next to the sofa'"
+        )
+    plan = backends.vlm.plan_edit(scene, instruction)
+    edit = run_plan(scene, folder, plan, backends=backends, settings=settings)
+    edit.scene.record(STAGE, f"{plan.operation} {plan.focus}: {instruction.strip()}",
+                      backend=backends.vlm.name, changes=edit.changes)
+    commit(folder, edit.scene, edit.files, instruction=instruction.strip(), operation=plan.operation,
+           focus=plan.focus, changes=edit.changes)
+    return edit.scene
+
+
+def run_plan(scene: Scene, folder: SceneFolder, plan: EditPlan, *, backends: Backends, settings: Settings) -> _Edit:
+    """The edited document (a copy) and its new files; writes nothing."""
+    plan = validate_plan(scene, plan)
+    edit = _Edit(scene=scene.model_copy(deep=True), plan=plan)
+    if plan.operation == "delete":
+        _delete(edit)
+    elif plan.operation == "move":
+        _move(edit, folder, settings)
+    elif plan.operation == "replace":
+        _replace(edit, folder, backends, settings)
+    else:
+        _add(edit, folder, backends, settings)
+    return edit
+
+
+def validate_plan(scene: Scene, plan: EditPlan) -> EditPlan:
+    """Check a planner's answer like any model answer: one focus, the only source, never a target."""
+    ids = {o.id for o in scene.objects}
+    known = ", ".join(f"{o.id} ({o.name})" for o in scene.objects) or "none"
+    if plan.operation == "add":
+        if plan.new_object is None:
+            raise InputError(f"an 'add' edit needs the new object's name; got none for {plan.focus!r}")
+        if plan.focus in ids:  # a model reusing an id: give the new object a fresh one
+            fresh = fresh_id(scene, plan.new_object.category or plan.focus.rsplit("_", 1)[0])
+            plan = plan.model_copy(update={
+                "focus": fresh,
+                "constraints": [c.model_copy(update={"source": fresh}) if c.source == plan.focus else c
+                                for c in plan.constraints],
+            })
+    elif plan.focus not in ids:
+        raise InputError(f"the edit names object {plan.focus!r}, which the scene does not have; objects: {known}")
+    if plan.operation == "replace" and plan.new_object is None:
+        raise InputError(f"a 'replace' edit of {plan.focus} needs the new object's description")
+    for c in plan.constraints:
+        if c.source != plan.focus:
+            raise InputError(f"constraint '{c}' has source {c.source!r}; an edit may only place its focus {plan.focus!r}")
+        if c.target == plan.focus:
+            raise InputError(f"constraint '{c}' uses the focus {plan.focus!r} as its target; it must be the source only")
+        if c.target not in ids:
+            raise InputError(f"constraint '{c}' names {c.target!r}, which the scene does not have; objects: {known}")
+    if plan.operation == "move" and not plan.constraints and plan.yaw is None:
+        raise InputError(f"the edit moves {plan.focus} but says neither where to nor which way to turn it")
+    if plan.operation == "delete" and plan.constraints:
+        raise InputError(f"a 'delete' edit takes no constraints; got {', '.join(map(str, plan.constraints))}")
+    return plan
+
+
+# --- shared pieces ---------------------------------------------------------------------------
+
+
+def riders(scene: Scene, object_id: str) -> list[str]:
+    """Ids resting ``on`` the object, and on those, and so on (the things that move with it)."""
+    out: list[str] = []
+    frontier = [object_id]
+    while frontier:
+        current = frontier.pop()
+        for c in scene.constraints:
+            if c.relation == "on" and c.target == current and c.source not in out and c.source != object_id:
+                out.append(c.source)
+                frontier.append(c.source)
+    return out
+
+
+def _carry(scene: Scene, ids: list[str], before: SceneObject, after: SceneObject) -> None:
+    """Move ``ids`` by the rigid motion that took ``before`` to ``after`` (turn about +Z, then shift)."""
+    turn = after.yaw - before.yaw
+    a = np.radians(turn)
+    rot = np.array([[np.cos(a), -np.sin(a)], [np.sin(a), np.cos(a)]])
+    old_xy = np.array([before.position.x, before.position.y])
+    new_xy = np.array([after.position.x, after.position.y])
+    dz = (after.position.z + after.size.z / 2) - (before.position.z + before.size.z / 2)  # its top's rise
+    for oid in ids:
+        obj = scene.get(oid)
+        xy = rot @ (np.array([obj.position.x, obj.position.y]) - old_xy) + new_xy
+        obj.position = Vec3(x=float(xy[0]), y=float(xy[1]), z=obj.position.z + dz)
+        obj.rotation = Vec3(x=obj.rotation.x, y=obj.rotation.y, z=(obj.yaw + turn + 180.0) % 360.0 - 180.0)
+
+
+#: Parsed assets by (path, mtime, size): a session editing one scene again and again parses each
+#: asset once, and the solver's per-mesh collision structures (cached per mesh object) survive
+#: between edits too. Asset files are never rewritten in place, so a key never goes stale.
+_MESHES: dict[tuple[str, int, int], trimesh.Trimesh] = {}
+_MESHES_KEPT = 512
+
+
+def _meshes(scene: Scene, folder: SceneFolder, staged: dict[str, trimesh.Trimesh]) -> dict[str, trimesh.Trimesh]:
+    """The stored meshes of every object, with the ones built by this edit in their place."""
+    found: dict[str, trimesh.Trimesh] = {}
+    keys: dict[str, tuple[str, int, int]] = {}
+    for obj in scene.objects:
+        if obj.id in staged or obj.asset is None:
+            continue
+        path = folder.resolve(obj.asset)
+        stat = path.stat() if path.is_file() else None
+        if stat is not None:
+            keys[obj.id] = (str(path.resolve()), stat.st_mtime_ns, stat.st_size)
+            if keys[obj.id] in _MESHES:
+                found[obj.id] = _MESHES[keys[obj.id]]
+    missing = [o for o in scene.objects if o.id not in staged and o.id not in found]
+    loaded = load_meshes(scene.model_copy(update={"objects": missing}), folder)
+    if len(_MESHES) + len(loaded) > _MESHES_KEPT:
+        _MESHES.clear()
+    _MESHES.update({keys[oid]: mesh for oid, mesh in loaded.items() if oid in keys})
+    return {**found, **loaded, **staged}
+
+
+def _place(
+    edit: _Edit,
+    ids: list[str],
+    constraints: list[Constraint],
+    meshes: dict[str, trimesh.Trimesh],
+    settings: Settings,
+    *,
+    leave_out: list[str] = (),
+) -> None:
+    """Solve ``ids`` under ``constraints`` with every other object fixed; raise when they do not fit.
+
+    Objects in ``leave_out`` (those riding on the focus) are out of the world while it is solved.
+    """
+    objects = [o for o in edit.scene.objects if o.id not in leave_out]
+    placing = set(ids)
+    result = solve(
+        objects,
+        constraints,
+        meshes=meshes,
+        bounds=edit.scene.bounds,
+        fixed=[o.id for o in objects if o.id not in placing],
+        time_limit=settings.time_limit,
+        seed=edit.scene.seed,
+    )
+    edit.seconds_solving += result.report.seconds
+    unplaced = [u for u in result.report.unplaced if u.id in placing]
+    if unplaced:
+        raise InfeasibleLayout(
+            f"cannot place {', '.join(u.id for u in unplaced)} as asked; the scene is unchanged.\n"
+            + feedback_text(result.report, objects)
+        )
+    solved = {o.id: o for o in result.objects}
+    for oid in ids:
+        obj = edit.scene.get(oid)
+        obj.position, obj.rotation = solved[oid].position, solved[oid].rotation
+
+
+def _anchor(scene: Scene, obj: SceneObject, constraints: list[Constraint]) -> None:
+    """Start ``obj``'s search at its first target, since the solver tries candidates nearest the
+    start first: "next to the sofa" then ends up beside the sofa, not just anywhere to its side.
+    ``far`` keeps the current start, to stay as close to where the object was as it allows."""
+    target = next((c.target for c in constraints if c.relation not in ("far", "face to")), None)
+    if target is not None:
+        p = scene.get(target).position
+        obj.position = Vec3(x=p.x, y=p.y, z=obj.position.z)
+
+
+def _collisions(scene: Scene, ids: list[str], meshes: dict[str, trimesh.Trimesh]) -> list[tuple[str, str]]:
+    moved = set(ids)
+    return [p for p in colliding_pairs(scene.objects, meshes, scene.constraints) if moved & set(p)]
+
+
+def _prune(edit: _Edit, moved: list[str]) -> None:
+    """Drop constraints on moved objects that no longer hold (the objects they relate to stayed put)."""
+    scene, kept = edit.scene, []
+    moved_set = set(moved)
+    for c in scene.constraints:
+        if (c.source in moved_set or c.target in moved_set) and not check(c.relation, scene.get(c.source), scene.get(c.target)):
+            edit.changes.append(f"dropped '{c}': it no longer holds after the edit")
+            continue
+        kept.append(c)
+    scene.constraints = kept
+
+
+def _stage_asset(edit: _Edit, obj: SceneObject, folder: SceneFolder, backends: Backends, settings: Settings) -> trimesh.Trimesh:
+    """Build ``obj``'s asset in a scratch folder and stage it under a content-addressed name.
+
+    Sets ``obj.asset``, ``obj.image`` and the size the mesh came out at; returns the mesh.
+    """
+    scene = edit.scene
+    reference = folder.reference_image.read_bytes() if folder.reference_image.is_file() else None
+    with tempfile.TemporaryDirectory(prefix="scenewright-edit-") as tmp:
+        scratch = SceneFolder(Path(tmp))
+        single = Scene(text=scene.text, style=scene.style, seed=scene.seed,
+                       objects=[obj.model_copy(update={"asset": None, "image": None})])
+        image = backends.images.object_images(single.objects, scene.style, reference).get(obj.id)
+        if image is not None:
+            path = scratch.object_image(obj.id)
+            path.parent.mkdir(parents=True, exist_ok=True)
+            path.write_bytes(image)
+            single.objects[0].image = scratch.relative(path)
+        generate_assets(single, scratch, backends.meshes, RequestCache(settings.cache_dir))
+        built = single.objects[0]
+        glb = scratch.resolve(built.asset).read_bytes()
+    digest = hashlib.sha256(glb).hexdigest()[:12]
+    asset = folder.relative(folder.assets / f"{obj.id}-{digest}.glb")
+    edit.files[asset] = glb
+    obj.asset = asset
+    obj.image = None
+    if image is not None:
+        picture = folder.relative(folder.object_images / f"{obj.id}-{hashlib.sha256(image).hexdigest()[:12]}.png")
+        edit.files[picture] = image
+        obj.image = picture
+    bottom = obj.position.z - obj.size.z / 2
+    obj.size = built.size
+    obj.position = Vec3(x=obj.position.x, y=obj.position.y, z=bottom + built.size.z / 2)
+    return asset_mesh(glb)
+
+
+# --- the four operations ---------------------------------------------------------------------
+
+
+def _delete(edit: _Edit) -> None:
+    scene, focus = edit.scene, edit.scene.get(edit.plan.focus)
+    gone = [focus.id]
+    for oid in riders(scene, focus.id):
+        supports = {c.target for c in scene.constraints if c.source == oid and c.relation == "on"}
+        if supports <= set(gone):  # it rested only on removed things
+            gone.append(oid)
+    for oid in gone:
+        obj = scene.get(oid)
+        reason = "deleted by an edit" if oid == focus.id else f"rested on {focus.id}, which was deleted"
+        scene.removed.append(RemovedObject(id=oid, name=obj.name, reason=reason))
+        edit.changes.append(f"removed {oid} ({obj.name})" + ("" if oid == focus.id else f": it rested on {focus.id}"))
+    dropped = [c for c in scene.constraints if c.source in gone or c.target in gone]
+    edit.changes += [f"dropped '{c}'" for c in dropped]
+    scene.objects = [o for o in scene.objects if o.id not in gone]
+    scene.constraints = [c for c in scene.constraints if c not in dropped]
+
+
+def _renew_constraints(edit: _Edit, focus: str) -> tuple[list[Constraint], list[Constraint], list[Constraint]]:
+    """Put the plan's constraints in place of the focus's old ones of the same kind.
+
+    A new place replaces where it was asked to be, a new facing (or a turn) what it faced;
+    the rest of what it was asked still holds. Returns the plan's facing and placing
+    constraints and all the focus's constraints now.
+    """
+    scene, plan = edit.scene, edit.plan
+    turning = [c for c in plan.constraints if c.relation == "face to"]
+    placing = [c for c in plan.constraints if c.relation != "face to"]
+    kept = []
+    for c in scene.constraints:
+        if c.source == focus:
+            facing = c.relation == "face to"
+            if (facing and (turning or plan.yaw is not None)) or (not facing and placing):
+                edit.changes.append(f"replaced '{c}'")
+                continue
+        kept.append(c)
+    scene.constraints = kept + list(plan.constraints)
+    edit.changes += [f"added '{c}'" for c in plan.constraints]
+    return turning, placing, [c for c in scene.constraints if c.source == focus]
+
+
+def _move(edit: _Edit, folder: SceneFolder, settings: Settings) -> None:
+    scene, plan = edit.scene, edit.plan
+    focus = scene.get(plan.focus)
+    before = focus.model_copy(deep=True)
+    carried = riders(scene, focus.id)
+    poses = {oid: (scene.get(oid).position, scene.get(oid).rotation) for oid in carried}
+    if set(carried) & {c.target for c in plan.constraints}:
+        raise InputError(
+            f"{', '.join(sorted(set(carried) & {c.target for c in plan.constraints}))} rests on {focus.id}, "
+            f"so {focus.id} cannot be placed against it; move that first"
+        )
+    turning, placing, mine = _renew_constraints(edit, focus.id)
+    meshes = _meshes(scene, folder, {})
+    if plan.yaw is not None:
+        focus.rotation = Vec3(x=focus.rotation.x, y=focus.rotation.y, z=plan.yaw)
+    if not placing and turning:  # turn in place towards the target when nothing is in the way
+        target = scene.get(turning[-1].target)
+        focus.rotation = Vec3(x=focus.rotation.x, y=focus.rotation.y,
+                              z=yaw_towards(focus.position.tuple(), target.position.tuple()))
+    in_place = not placing and all(check(c.relation, focus, scene.get(c.target)) for c in mine)
+    if in_place:
+        _carry(scene, carried, before, focus)
+        if _collisions(scene, [focus.id, *carried], meshes):
+            if plan.yaw is not None and not turning:
+                pairs = ", ".join(" and ".join(p) for p in _collisions(scene, [focus.id, *carried], meshes))
+                raise InfeasibleLayout(f"turning {focus.id} in place makes {pairs} collide; move it first")
+            in_place = False
+            for oid in carried:  # back to where they were, to follow the solved focus instead
+                scene.get(oid).position, scene.get(oid).rotation = poses[oid]
+    if not in_place:
+        _anchor(scene, focus, placing)
+        _place(edit, [focus.id], mine, meshes, settings, leave_out=carried)
+        _carry(scene, carried, before, focus)
+        hits = _collisions(scene, carried, meshes)
+        if hits:
+            raise InfeasibleLayout(
+                f"{focus.id} fits at its new place but what rests on it does not: "
+                + ", ".join(" and ".join(p) for p in hits) + " would collide; the scene is unchanged"
+            )
+    p = focus.position
+    edit.changes.append(f"{focus.id} now at ({p.x:.2f}, {p.y:.2f}, {p.z:.2f}), yaw {focus.yaw:.0f}°"
+                        + (f", carrying {', '.join(carried)}" if carried else ""))
+    _prune(edit, [focus.id, *carried])
+
+
+def _replace(edit: _Edit, folder: SceneFolder, backends: Backends, settings: Settings) -> None:
+    scene, plan = edit.scene, edit.plan
+    focus = scene.get(plan.focus)
+    new = plan.new_object
+    assert new is not None
+    before = focus.model_copy(deep=True)
+    category = lookup(new.category) if new.category else None
+    changed_kind = new.category is not None and new.category != focus.category
+    focus.name = new.name
+    focus.category = category.name if category else (new.category or focus.category)
+    focus.visual_description = new.visual_description or new.name
+    if new.size is not None:
+        focus.size = new.size
+    elif changed_kind and category is not None:
+        focus.size = Vec3.of(category.size)
+    mesh = _stage_asset(edit, focus, folder, backends, settings)
+    z = focus.size
+    edit.changes.append(f"{focus.id} is now {focus.name!r} ({focus.visual_description}), "
+                        f"{z.x:.2f} × {z.y:.2f} × {z.z:.2f} m")
+    meshes = _meshes(scene, folder, {focus.id: mesh})
+    carried = riders(scene, focus.id)
+    _, placing, mine = _renew_constraints(edit, focus.id)
+    if plan.yaw is not None:
+        focus.rotation = Vec3(x=focus.rotation.x, y=focus.rotation.y, z=plan.yaw)
+    _carry(scene, carried, before, focus)
+    fits = not _collisions(scene, [focus.id], meshes) and all(check(c.relation, focus, scene.get(c.target)) for c in mine)
+    if not fits:
+        edit.changes.append(f"re-placed {focus.id}: " + ("as asked" if placing else "it no longer fitted where it was"))
+        placed_from = focus.model_copy(deep=True)
+        _anchor(scene, focus, placing)
+        _place(edit, [focus.id], mine, meshes, settings, leave_out=carried)
+        _carry(scene, carried, placed_from, focus)
+    unsettled = [oid for oid in carried if not all(
+        check(c.relation, scene.get(c.source), scene.get(c.target)) for c in scene.constraints if c.source == oid
+    ) or _collisions(scene, [oid], meshes)]
+    if unsettled:
+        _place(edit, unsettled, [c for c in scene.constraints if c.source in unsettled], meshes, settings)
+        edit.changes.append(f"re-placed {', '.join(unsettled)} on the new {focus.name}")
+    _prune(edit, [focus.id, *carried])
+
+
+def _add(edit: _Edit, folder: SceneFolder, backends: Backends, settings: Settings) -> None:
+    scene, plan = edit.scene, edit.plan
+    new = plan.new_object
+    assert new is not None
+    category = lookup(new.category) if new.category else lookup(new.name)
+    if new.size is not None:
+        size = new.size
+    elif category is not None:
+        size = Vec3.of(category.size)
+    else:
+        raise InputError(
+            f"how big is the new {new.name!r}? it is not in the catalogue; give its size in the instruction "
+            "(e.g. '1 metre wide') or a catalogue object"
+        )
+    obj = SceneObject(
+        id=plan.focus,
+        name=new.name,
+        category=category.name if category else new.category,
+        size=size,
+        visual_description=new.visual_description or new.name,
+        position=Vec3(z=size.z / 2),
+        rotation=Vec3(z=plan.yaw or 0.0),
+    )
+    _anchor(scene, obj, list(plan.constraints))
+    scene.objects.append(obj)
+    mesh = _stage_asset(edit, obj, folder, backends, settings)
+    scene.constraints = scene.constraints + list(plan.constraints)
+    meshes = _meshes(scene, folder, {obj.id: mesh})
+    _place(edit, [obj.id], list(plan.constraints), meshes, settings)
+    p = obj.position
+    edit.changes.append(f"added {obj.id} ({obj.name}) at ({p.x:.2f}, {p.y:.2f}, {p.z:.2f})")
+    edit.changes += [f"added '{c}'" for c in plan.constraints]

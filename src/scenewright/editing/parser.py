@@ -1,0 +1,453 @@
+"""The offline edit planner: imperative instructions → :class:`EditPlan`, by rules.
+
+It reads one instruction as *verb, focus, placement clauses* ("move the lamp next to the
+sofa, facing the bed"), resolves every object reference against the scene (ids, names,
+categories and their synonyms, colour or material words, ordinals and side words such as
+"the second chair" or "the left chair") and refuses to guess: an ambiguous reference asks
+which object is meant, naming the candidates, and an unknown one names what the scene has.
+Placement phrases come from the text parser's vocabulary
+(:func:`scenewright.analysis.parser.relation_phrases`), so generation and editing read
+"beside" or "on top of" the same way.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from scenewright.analysis.catalogue import Category, load_catalogue, lookup, singular, words
+from scenewright.analysis.parser import relation_phrases
+from scenewright.editing.plan import EditPlan, NewObject
+from scenewright.errors import InputError
+from scenewright.scene import Constraint, Scene, SceneObject, Vec3
+
+_POLITE = ("please", "can you", "could you", "would you", "i want you to", "i'd like you to",
+           "i would like you to", "let's", "lets", "now", "then", "also", "and")  # fmt: skip
+_DELETE = ("get rid of", "take away", "take out", "clear away", "remove", "delete", "erase",
+           "eliminate", "discard", "drop")  # fmt: skip
+_ADD = ("add", "insert", "create", "include", "introduce")
+_PLACE = ("put", "place", "set", "position", "stand", "hang", "mount", "lay", "lean", "park", "stick")
+_MOVE = ("move", "shift", "push", "pull", "slide", "bring", "relocate", "drag", "carry", "reposition")
+_TURN = ("turn", "rotate", "spin", "swivel", "orient", "face")
+_REPLACE = ("replace", "swap", "exchange", "substitute", "change", "make", "paint", "colour",
+            "color", "recolour", "recolor", "restyle", "convert", "transform", "upgrade", "redo")  # fmt: skip
+#: Words that introduce a new object rather than name an existing one.
+_INDEFINITE = ("a", "an", "another", "one more", "a new", "an extra", "one", "some", "a second", "an additional")
+_DETERMINERS = {"the", "this", "that", "my", "our", "its", "their", "your"}
+_ORDINALS = {
+    "first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6, "seventh": 7,
+    "eighth": 8, "ninth": 9, "tenth": 10, "1st": 1, "2nd": 2, "3rd": 3, "4th": 4, "5th": 5,
+    "6th": 6, "7th": 7, "8th": 8, "9th": 9, "10th": 10,
+}  # fmt: skip
+#: Side words → (axis, pick the largest?): "left" is the smallest x in the scene frame.
+_SIDES = {
+    "left": (0, False), "leftmost": (0, False), "right": (0, True), "rightmost": (0, True),
+    "front": (1, False), "frontmost": (1, False), "nearest": (1, False), "back": (1, True),
+    "rear": (1, True), "backmost": (1, True), "farthest": (1, True), "far": (1, True),
+    "lower": (2, False), "bottom": (2, False), "upper": (2, True), "top": (2, True),
+}  # fmt: skip
+_SIZES = {"biggest": True, "largest": True, "smallest": False, "tallest": True}
+_SCALES = {
+    "bigger": (1.5, 1.5, 1.5), "larger": (1.5, 1.5, 1.5), "smaller": (0.67, 0.67, 0.67),
+    "taller": (1.0, 1.0, 1.5), "shorter": (1.0, 1.0, 0.67), "wider": (1.5, 1.0, 1.0),
+    "narrower": (0.67, 1.0, 1.0), "longer": (1.5, 1.0, 1.0), "huge": (2.0, 2.0, 2.0),
+    "tiny": (0.5, 0.5, 0.5),
+}  # fmt: skip
+#: Where a clause ends and the next begins: the target of one relation stops at these.
+_CLAUSE = re.compile(r"\s*(?:,|;|\band then\b|\bthen\b|\band\b|\bso that\b|\bwhile\b|\bwith it\b)\s*")
+_PRONOUNS = {"it", "itself", "them", "him", "her"}
+
+
+@dataclass(frozen=True)
+class _Phrase:
+    """A relation phrase found in the text: where, and which relations it stands for."""
+
+    start: int
+    end: int
+    relations: tuple[str, ...]
+
+
+def _normalise(instruction: str) -> str:
+    text = instruction.strip().lower().replace("’", "'")
+    text = re.sub(r"[\"“”!?.]+", " ", text)
+    text = re.sub(r"(?<=\w)'s\b", "", text)  # "the sofa's colour" → "the sofa colour"
+    text = re.sub(r"\s*([,;])\s*", r" \1 ", text)
+    return " ".join(text.split())
+
+
+def _strip_lead(text: str) -> str:
+    changed = True
+    while changed:
+        changed = False
+        for word in _POLITE:
+            if text == word or text.startswith(word + " "):
+                text = text[len(word):].lstrip(" ,")
+                changed = True
+    return text
+
+
+def _starts(text: str, words_: Sequence[str]) -> str | None:
+    for word in sorted(words_, key=len, reverse=True):
+        if text == word or text.startswith(word + " "):
+            return word
+    return None
+
+
+def _find_phrases(text: str) -> list[_Phrase]:
+    """Every relation phrase in ``text``, longest match first, never overlapping."""
+    found: list[_Phrase] = []
+    taken: list[tuple[int, int]] = []
+    for phrase, relations in sorted(relation_phrases().items(), key=lambda kv: -len(kv[0])):
+        for m in re.finditer(rf"(?<![\w]){re.escape(phrase)}(?![\w])", text):
+            if any(m.start() < e and s < m.end() for s, e in taken):
+                continue
+            taken.append((m.start(), m.end()))
+            found.append(_Phrase(m.start(), m.end(), tuple(relations)))
+    return sorted(found, key=lambda p: p.start)
+
+
+# --- object references -----------------------------------------------------------------------
+
+
+def _tokens(obj: SceneObject) -> set[str]:
+    """Every word the object answers to: id, name, category and the category's synonyms."""
+    out = {singular(w) for w in words(obj.name)} | set(words(obj.id.replace("_", " ")))
+    category = load_catalogue().get(obj.category or "")
+    if category is not None:
+        for phrase in category.phrases:
+            out |= {singular(w) for w in words(phrase)}
+    return out
+
+
+def _describe(objects: Sequence[SceneObject]) -> str:
+    return ", ".join(f"{o.id} ({o.name})" for o in objects)
+
+
+def _category_of(tokens: list[str]) -> tuple[Category | None, int]:
+    """The catalogue category the phrase's noun names, and where that noun starts.
+
+    The longest run of trailing words wins ("coffee table" over "table"); failing that, the
+    longest run anywhere, so "lamp with a shade" still finds the lamp.
+    """
+    for start in range(len(tokens)):
+        category = lookup(" ".join(tokens[start:]))
+        if category is not None:
+            return category, start
+    for length in range(len(tokens), 0, -1):
+        for start in range(len(tokens) - length + 1):
+            category = lookup(" ".join(tokens[start:start + length]))
+            if category is not None:
+                return category, start
+    return None, len(tokens)
+
+
+def resolve(scene: Scene, phrase: str, *, role: str = "object") -> SceneObject:
+    """The one scene object ``phrase`` names, or an InputError that says what to write instead."""
+    phrase = text = phrase.strip()
+    raw = text.replace(" ", "_")
+    for obj in scene.objects:  # an exact id, "chair_2" or "chair 2"
+        if obj.id.lower() in (text, raw):
+            return obj
+    tokens = [t for t in words(text) if t not in _DETERMINERS and t not in ("one", "object", "thing")]
+    if not tokens:
+        raise InputError(f"which {role}? name one of: {_describe(scene.objects)}")
+    ordinal = next((_ORDINALS[t] for t in tokens if t in _ORDINALS), None)
+    last = "last" in tokens
+    side = next((_SIDES[t] for t in tokens if t in _SIDES), None)
+    middle = any(t in ("middle", "centre", "center", "central") for t in tokens)
+    extreme = next((_SIZES[t] for t in tokens if t in _SIZES), None)
+    number = next((int(t) for t in tokens if t.isdigit()), None)
+    skip = set(_ORDINALS) | set(_SIDES) | set(_SIZES) | {"last", "middle", "centre", "center", "central", "side", "number", "no"}
+    nouns = [t for t in tokens if t not in skip and not t.isdigit()]
+    if not nouns:
+        raise InputError(f"which {role} is {phrase!r}? the scene has: {_describe(scene.objects)}")
+    category, head = _category_of(nouns)
+    if category is not None:
+        candidates = [o for o in scene.objects if o.category == category.name]
+        modifiers = nouns[:head]
+    else:
+        candidates = []
+        modifiers = nouns[:-1]
+    if not candidates:  # a name the catalogue does not know ("the torii gate", "the robot")
+        every, last = {singular(t) for t in nouns}, {singular(nouns[-1])}
+        candidates = [o for o in scene.objects if every <= _tokens(o)] or [
+            o for o in scene.objects if last <= _tokens(o)
+        ]
+    if not candidates:
+        raise InputError(
+            f"there is no {' '.join(nouns)} in the scene; it has: {_describe(scene.objects)}"
+        )
+    if modifiers:  # colour, material and name words narrow the choice when some object has them
+        def has_all(o: SceneObject) -> bool:
+            text_words = {singular(w) for w in words(f"{o.name} {o.visual_description}")} | _tokens(o)
+            return all(singular(m) in text_words for m in modifiers)
+
+        narrowed = [o for o in candidates if has_all(o)]
+        candidates = narrowed or candidates
+    if number is not None:
+        numbered = [o for o in candidates if o.id.rsplit("_", 1)[-1] == str(number)]
+        if not numbered:
+            raise InputError(f"there is no {nouns[-1]} number {number}; there are: {_describe(candidates)}")
+        candidates = numbered
+    if len(candidates) > 1 and (ordinal is not None or last):
+        ordered = sorted(candidates, key=_id_index)
+        index = len(ordered) if last else ordinal
+        if index > len(ordered):
+            raise InputError(
+                f"there are only {len(ordered)} {nouns[-1]}s, so no number {index}: {_describe(ordered)}"
+            )
+        candidates = [ordered[index - 1]]
+    if len(candidates) > 1 and side is not None:
+        axis, largest = side
+        key = lambda o: o.position.tuple()[axis]  # noqa: E731
+        candidates = [max(candidates, key=key) if largest else min(candidates, key=key)]
+    if len(candidates) > 1 and middle:
+        ordered = sorted(candidates, key=lambda o: o.position.x)
+        candidates = [ordered[(len(ordered) - 1) // 2]] if len(ordered) % 2 else candidates
+    if len(candidates) > 1 and extreme is not None:
+        volume = lambda o: o.size.x * o.size.y * o.size.z  # noqa: E731
+        candidates = [max(candidates, key=volume) if extreme else min(candidates, key=volume)]
+    if len(candidates) > 1:
+        raise InputError(
+            f"{phrase!r} is ambiguous: which one? the scene has {len(candidates)}: {_describe(candidates)}; "
+            f"say it by id (e.g. {candidates[0].id!r}) or as 'the left/right/second ...'"
+        )
+    return candidates[0]
+
+
+def _id_index(obj: SceneObject) -> tuple[int, str]:
+    tail = obj.id.rsplit("_", 1)[-1]
+    return (int(tail) if tail.isdigit() else 0, obj.id)
+
+
+def fresh_id(scene: Scene, category: str) -> str:
+    """The first unused ``<category>_<n>``; ids of removed objects stay taken, so undo never clashes."""
+    used = {o.id for o in scene.objects} | {r.id for r in scene.removed}
+    index = 1
+    while f"{category}_{index}" in used:
+        index += 1
+    return f"{category}_{index}"
+
+
+# --- placement clauses -----------------------------------------------------------------------
+
+
+def _constraints(scene: Scene, focus: SceneObject | None, focus_id: str, text: str) -> list[Constraint]:
+    """The constraints a placement text asks for, with the focus as the only source."""
+    phrases = _find_phrases(text)
+    out: list[Constraint] = []
+    for index, found in enumerate(phrases):
+        stop = phrases[index + 1].start if index + 1 < len(phrases) else len(text)
+        target_text = _CLAUSE.split(text[found.end:stop], maxsplit=1)[0].strip()
+        # "between the sofa and the lamp": both are targets
+        targets = [target_text]
+        if "between" in text[found.start:found.end]:
+            targets = [t for t in re.split(r"\band\b|,", text[found.end:stop]) if t.strip()]
+        for phrase in targets:
+            phrase = phrase.strip()
+            if not phrase or phrase in _PRONOUNS or not words(phrase):
+                raise InputError(
+                    f"{text[found.start:found.end]!r} of what? name the object, e.g. "
+                    f"'{text[found.start:found.end]} the {scene.objects[0].name if scene.objects else 'table'}'"
+                )
+            target = resolve(scene, phrase, role="target")
+            if focus is not None and target.id == focus.id:
+                raise InputError(f"{focus.id} cannot be placed relative to itself; name another object")
+            for relation in found.relations:
+                c = Constraint(relation=relation, source=focus_id, target=target.id)
+                if c.key() not in {k.key() for k in out}:
+                    out.append(c)
+    return out
+
+
+def _split_target(rest: str, separators: Sequence[str]) -> tuple[str, str] | None:
+    for sep in separators:
+        m = re.search(rf"(?<![\w]){re.escape(sep)}(?![\w])", rest)
+        if m:
+            return rest[: m.start()].strip(), rest[m.end():].strip()
+    return None
+
+
+def _new_object(scene: Scene, phrase: str, *, base: SceneObject | None = None) -> NewObject:
+    """What a noun phrase describes: a new category when it names one, else a restyle of ``base``."""
+    tokens = [t for t in words(phrase) if t not in _DETERMINERS]
+    while tokens and " ".join(tokens[:2]) in _INDEFINITE or (tokens and tokens[0] in _INDEFINITE):
+        tokens = tokens[2:] if " ".join(tokens[:2]) in _INDEFINITE else tokens[1:]
+    if not tokens:
+        raise InputError(f"what should {phrase!r} be? describe the object, e.g. 'a red armchair'")
+    category, head = _category_of(tokens)
+    description = " ".join(tokens)
+    if base is not None and (category is None or category.name == base.category):
+        # A restyle: the same kind of object with a new look (and maybe a new size).
+        scale = next((_SCALES[t] for t in tokens if t in _SCALES), None)
+        size = Vec3.of(a * b for a, b in zip(base.size.tuple(), scale)) if scale else None
+        look = [t for t in tokens if t not in _SCALES]
+        if category is not None:  # "a red persian rug": the phrase names the object itself
+            return NewObject(name=" ".join(look[head:]) or base.name, category=base.category,
+                             visual_description=" ".join(look), size=size)
+        known = load_catalogue().get(base.category or "")
+        label = known.label if known else ""
+        noun = label if label and label in " ".join(words(base.name)) else base.name
+        description = f"{' '.join(look)} {noun}".strip()
+        return NewObject(name=base.name, category=base.category, visual_description=description, size=size)
+    if category is None:
+        raise InputError(
+            f"I do not know what {description!r} is; the offline planner knows catalogue objects "
+            f"(e.g. {', '.join(list(load_catalogue())[:8])}, ...); use a model backend (--vlm openai:MODEL) for others"
+        )
+    noun_end = head + 1
+    while noun_end < len(tokens) and lookup(" ".join(tokens[head:noun_end + 1])) == category:
+        noun_end += 1
+    name = " ".join(tokens[head:noun_end]) if noun_end > head else category.label
+    return NewObject(name=singular(name) if " " not in name else name, category=category.name,
+                     visual_description=description, size=Vec3.of(category.size))
+
+
+def _count_check(phrase: str) -> None:
+    first = words(phrase)[:1]
+    if first and (first[0] in ("two", "three", "four", "five", "six", "several", "some") or first[0].isdigit()):
+        raise InputError(f"one object per edit: add them one at a time (e.g. 'add a {singular(words(phrase)[-1])} ...')")
+
+
+def plan_edit_offline(scene: Scene, instruction: str) -> EditPlan:
+    """The edit an imperative instruction asks for, resolved against ``scene``."""
+    text = _strip_lead(_normalise(instruction))
+    if not text:
+        raise InputError(
+            "the instruction is empty; say what to change, e.g. 'move the lamp next to the sofa' "
+            "or 'remove the rug'"
+        )
+    if not scene.objects and not text.startswith(_ADD):
+        raise InputError("the scene has no objects; the only edit possible is to add one, e.g. 'add a sofa'")
+
+    verb = _starts(text, _DELETE)
+    if verb:
+        focus = resolve(scene, _CLAUSE.split(text[len(verb):], maxsplit=1)[0], role="object to remove")
+        return EditPlan(operation="delete", focus=focus.id)
+
+    verb = _starts(text, _ADD) or _starts(text, _PLACE)
+    if verb:
+        rest = text[len(verb):].strip()
+        if verb in _ADD or _starts(rest, _INDEFINITE) or rest.split(" ", 1)[0].isdigit():
+            return _plan_add(scene, rest)
+        return _plan_move(scene, rest)
+
+    verb = _starts(text, _MOVE)
+    if verb:
+        return _plan_move(scene, text[len(verb):].strip())
+
+    verb = _starts(text, _TURN)
+    if verb:
+        rest = text[len(verb):].strip()
+        if verb != "face" and _split_target(rest, ("into",)) is not None:  # "turn the rug into ..."
+            return _plan_replace(scene, verb, rest)
+        if verb == "face" or (not _find_phrases(rest) and re.search(r"\btowards?\b", rest)):
+            focus_text, target_text = _split_face(rest)  # "turn the chair towards the window"
+            rest = f"{focus_text} to face {target_text}"
+        return _plan_move(scene, rest, turning=True)
+
+    verb = _starts(text, _REPLACE)
+    if verb:
+        rest = text[len(verb):].strip()
+        if verb == "make" and re.search(r"\bface\b|\bfacing\b", rest):
+            return _plan_move(scene, rest, turning=True)
+        return _plan_replace(scene, verb, rest)
+
+    known = ", ".join(("move/put/place", "turn/rotate", "remove/delete", "add", "replace/swap/change/make/paint"))
+    raise InputError(
+        f"I cannot tell what {instruction.strip()!r} asks; start with one of: {known} "
+        "(e.g. 'move the lamp next to the sofa')"
+    )
+
+
+def _split_face(rest: str) -> tuple[str, str]:
+    found = _split_target(rest, ("towards", "toward", "to"))
+    if found is None:
+        raise InputError(f"face towards what? e.g. 'face the chair towards the table' (got {rest!r})")
+    return found
+
+
+def _plan_add(scene: Scene, rest: str) -> EditPlan:
+    _count_check(rest)
+    phrases = _find_phrases(rest)
+    noun = rest[: phrases[0].start].strip() if phrases else _CLAUSE.split(rest, maxsplit=1)[0]
+    new = _new_object(scene, noun)
+    focus_id = fresh_id(scene, new.category or "object")
+    placement = rest[phrases[0].start:] if phrases else ""
+    return EditPlan(
+        operation="add", focus=focus_id, new_object=new, constraints=_constraints(scene, None, focus_id, placement)
+    )
+
+
+_TURN_AROUND = re.compile(r"\b(?:around|round|about)\b|\b(?:by\s+)?(-?\d+(?:\.\d+)?)\s*(?:degrees?|deg|°)")
+
+
+def _plan_move(scene: Scene, rest: str, *, turning: bool = False) -> EditPlan:
+    turn = _TURN_AROUND.search(rest) if turning else None
+    if turn is not None:  # "by 90 degrees" is a turn, not a place ("by" also means "near")
+        rest = f"{rest[:turn.start()]} {rest[turn.end():]}".strip()
+    phrases = _find_phrases(rest)
+    reference = rest[: phrases[0].start] if phrases else rest
+    reference = _CLAUSE.split(reference, maxsplit=1)[0]
+    reference = re.sub(r"\b(?:so it|so that it|to|over|back|away|up|down|clockwise|counterclockwise|"
+                       r"anticlockwise|left|right)\s*$", "", reference.strip())
+    focus = resolve(scene, reference, role="object to move")
+    constraints = _constraints(scene, focus, focus.id, rest[phrases[0].start:]) if phrases else []
+    yaw = None
+    if turn is not None and not any(c.relation == "face to" for c in constraints):
+        degrees = float(turn.group(1)) if turn.group(1) else 180.0
+        if "counterclockwise" in rest or "anticlockwise" in rest or "left" in rest.split():
+            degrees = abs(degrees)
+        elif "clockwise" in rest or "right" in rest.split():
+            degrees = -abs(degrees)
+        yaw = (focus.yaw + degrees + 180.0) % 360.0 - 180.0
+    if not constraints and yaw is None:
+        hint = "turn it to face what" if turning else "where to"
+        raise InputError(
+            f"{hint}? say where {focus.id} goes relative to another object, e.g. "
+            f"'move {focus.name} next to the {next((o.name for o in scene.objects if o.id != focus.id), 'table')}'"
+        )
+    return EditPlan(operation="move", focus=focus.id, constraints=constraints, yaw=yaw)
+
+
+def _plan_replace(scene: Scene, verb: str, rest: str) -> EditPlan:
+    """replace X with Y, swap X for Y, substitute Y for X, change/turn X into Y, make/paint X Y."""
+    if verb == "substitute":
+        parts = _split_target(rest, ("for",))
+        if parts is None:
+            raise InputError("substitute what for what? e.g. 'substitute a lantern for the lamp'")
+        new_text, old_text = parts
+    else:
+        parts = _split_target(rest, ("with", "for", "by", "into", "to be", "to look like", "to", "as"))
+        if parts is not None:
+            old_text, new_text = parts
+            old_text = re.sub(r"^(?:the )?(?:colou?r|style|look|material|finish) of ", "", old_text)
+            old_text = re.sub(r"\s(?:colou?r|style|look|material|finish)$", "", old_text)
+        else:  # "make the sofa red", "paint the fence white": the object then its new look
+            old_text, new_text = _split_look(scene, rest)
+    focus = resolve(scene, _CLAUSE.split(old_text, maxsplit=1)[0], role="object to change")
+    return EditPlan(operation="replace", focus=focus.id, new_object=_new_object(scene, new_text, base=focus))
+
+
+def _split_look(scene: Scene, rest: str) -> tuple[str, str]:
+    """Split "the big sofa bright red" into the reference and the new look: the shortest
+    prefix that names exactly one object, grown by the words that still name it."""
+    tokens = rest.split()
+    first_error: InputError | None = None
+    for end in range(1, len(tokens)):
+        prefix = " ".join(tokens[:end])
+        try:
+            obj = resolve(scene, prefix)
+        except InputError as exc:
+            if first_error is None and _category_of(words(prefix))[0] is not None:
+                first_error = exc
+            continue
+        own = _tokens(obj)
+        while end < len(tokens) - 1 and singular(tokens[end]) in own:
+            end += 1
+        return " ".join(tokens[:end]), " ".join(tokens[end:])
+    raise first_error or InputError(
+        f"change {rest!r} how? e.g. 'make the sofa red', 'replace the lamp with a lantern'; "
+        f"the scene has: {_describe(scene.objects)}"
+    )

@@ -1,0 +1,130 @@
+"""The paper's authoring rules applied to a constraint list before solving.
+
+Models write constraints that repeat themselves, point at themselves, name objects that do
+not exist, use relations outside Table 3, or contradict the acyclic rule. None of that is a
+crash: each bad entry is dropped and reported (:class:`~scenewright.scene.DroppedConstraint`)
+so the report can go back to the model. Cycles are broken deterministically: constraints are
+admitted by relation priority (vertical first, then relative, then the rest) and then input
+order, and one that would close a cycle is dropped.
+"""
+
+from __future__ import annotations
+
+import heapq
+import logging
+from typing import Any, Callable, Iterable, Mapping, Sequence
+
+from pydantic import ValidationError
+
+from scenewright.layout.relations import PRIORITY
+from scenewright.scene import Constraint, DroppedConstraint, SceneObject, describe_validation_error
+
+log = logging.getLogger(__name__)
+
+
+def _as_dict(c: Constraint | Mapping[str, Any]) -> dict[str, Any]:
+    return c.model_dump() if isinstance(c, Constraint) else dict(c)
+
+
+def clean_constraints(
+    objects: Sequence[SceneObject], constraints: Iterable[Constraint | Mapping[str, Any]]
+) -> tuple[list[Constraint], list[DroppedConstraint]]:
+    """Valid, unique, acyclic constraints in input order, and every dropped one with why."""
+    ids = {o.id for o in objects}
+    kept: list[Constraint] = []
+    dropped: list[DroppedConstraint] = []
+    seen: set[tuple[str, str, str]] = set()
+
+    def drop(raw, reason: str) -> None:
+        dropped.append(DroppedConstraint(constraint=_as_dict(raw) if isinstance(raw, (Constraint, Mapping)) else {"value": repr(raw)}, reason=reason))
+        log.warning("constraint dropped: %s", reason)
+
+    for raw in constraints:
+        if isinstance(raw, Constraint):
+            c = raw
+        elif isinstance(raw, Mapping):
+            try:
+                c = Constraint.model_validate(dict(raw))
+            except ValidationError as exc:
+                drop(raw, f"invalid constraint: {describe_validation_error(exc)}")
+                continue
+        else:
+            drop(raw, f"a constraint must be an object with relation, source and target, got {raw!r}")
+            continue
+        unknown = [x for x in (c.source, c.target) if x not in ids]
+        if unknown:
+            drop(c, f"'{c}' names unknown object {', '.join(map(repr, unknown))}; objects are: {', '.join(sorted(ids))}")
+        elif c.source == c.target:
+            drop(c, f"'{c}' relates an object to itself")
+        elif c.key() in seen:
+            drop(c, f"'{c}' is a duplicate")
+        else:
+            seen.add(c.key())
+            kept.append(c)
+    acyclic, cyclic = _break_cycles(kept)
+    for c, path in cyclic:
+        drop(c, f"'{c}' would make a cycle ({' -> '.join(path)}); constraints must be acyclic")
+    return acyclic, dropped
+
+
+def _break_cycles(constraints: list[Constraint]) -> tuple[list[Constraint], list[tuple[Constraint, list[str]]]]:
+    """Admit constraints by (priority, input order); drop one whose target depends on its source."""
+    # Edge target -> source: the target is placed first.
+    after: dict[str, set[str]] = {}
+    admitted: set[int] = set()
+    cyclic: list[tuple[Constraint, list[str]]] = []
+    ranked = sorted(range(len(constraints)), key=lambda i: (PRIORITY[constraints[i].relation], i))
+    for i in ranked:
+        c = constraints[i]
+        path = _path(after, c.source, c.target)
+        if path is not None:
+            cyclic.append((c, [c.target] + path))
+            continue
+        after.setdefault(c.target, set()).add(c.source)
+        admitted.add(i)
+    return [c for i, c in enumerate(constraints) if i in admitted], cyclic
+
+
+def _path(after: dict[str, set[str]], start: str, goal: str) -> list[str] | None:
+    """A path start -> ... -> goal along the placement edges, if one exists."""
+    stack = [(start, [start])]
+    seen = {start}
+    while stack:
+        node, path = stack.pop()
+        if node == goal:
+            return path
+        for nxt in sorted(after.get(node, ())):
+            if nxt not in seen:
+                seen.add(nxt)
+                stack.append((nxt, path + [nxt]))
+    return None
+
+
+def topological_order(
+    ids: Sequence[str], constraints: Sequence[Constraint], key: Callable[[str], Any] | None = None
+) -> list[str]:
+    """Every target before its sources; among ready objects, smallest ``key`` first.
+
+    ``constraints`` must be acyclic (as :func:`clean_constraints` returns them); constraints
+    naming ids outside ``ids`` are ignored.
+    """
+    index = {x: i for i, x in enumerate(ids)}
+    rank = key or index.__getitem__
+    indegree = {x: 0 for x in ids}
+    after: dict[str, list[str]] = {x: [] for x in ids}
+    for c in constraints:
+        if c.source in index and c.target in index:
+            after[c.target].append(c.source)
+            indegree[c.source] += 1
+    ready = [(rank(x), index[x], x) for x in ids if indegree[x] == 0]
+    heapq.heapify(ready)
+    order = []
+    while ready:
+        _, _, x = heapq.heappop(ready)
+        order.append(x)
+        for s in after[x]:
+            indegree[s] -= 1
+            if indegree[s] == 0:
+                heapq.heappush(ready, (rank(s), index[s], s))
+    assert len(order) == len(ids), "topological_order needs acyclic constraints"
+    return order

@@ -1,0 +1,204 @@
+"""Layout problems with planted solutions, for the benchmark and the property tests.
+
+A problem is made by building a valid layout first: random furniture placed collision-free
+in a square region sized for the count (tables with legs as real meshes, cones, boxes),
+small objects stacked ``on`` tables and on each other, chairs turned to ``face to`` a table,
+lamps hung ``above`` something. The constraints are relations that hold in that layout, each
+from a later object to an earlier one (so they are acyclic), and the initial poses handed to
+the solver are the planted ones perturbed. Every problem is therefore satisfiable.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import trimesh
+
+from scenewright.geometry import yaw_towards
+from scenewright.layout.relations import check, half_extents
+from scenewright.scene import Constraint, SceneObject, Vec3
+
+#: Relations tried when deriving optional constraints, in the order they are considered.
+_OPTIONAL = ("near", "left of", "right of", "in front of", "behind", "side of", "far")
+#: Clearance kept between planted objects so the planted layout never merely touches.
+_CLEARANCE = 0.02
+
+
+@dataclass
+class Problem:
+    objects: list[SceneObject]  # initial (perturbed) poses
+    constraints: list[Constraint]
+    bounds: tuple[float, float]
+    meshes: dict[str, trimesh.Trimesh]
+    solution: list[SceneObject]  # the planted layout
+
+
+def table_mesh(size: Vec3, top: float = 0.05, leg: float = 0.06) -> trimesh.Trimesh:
+    """A table in the scene-frame asset frame: a top slab on four corner legs."""
+    x, y, z = size.tuple()
+    parts = [trimesh.creation.box((x, y, top), trimesh.transformations.translation_matrix((0, 0, z - top / 2)))]
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            at = (sx * (x - leg) / 2, sy * (y - leg) / 2, (z - top) / 2)
+            parts.append(trimesh.creation.box((leg, leg, z - top), trimesh.transformations.translation_matrix(at)))
+    return trimesh.util.concatenate(parts)
+
+
+def cone_mesh(size: Vec3) -> trimesh.Trimesh:
+    """A cone standing on z = 0 that fills the size box's footprint."""
+    return trimesh.creation.cone(radius=min(size.x, size.y) / 2, height=size.z, sections=24)
+
+
+class _Planter:
+    def __init__(self, n: int, rng: np.random.Generator, with_meshes: bool):
+        self.rng = rng
+        self.side = float(np.sqrt(n * 3.5) + 2.0)
+        self.half = self.side / 2.0
+        self.objects: list[SceneObject] = []
+        self.meshes: dict[str, trimesh.Trimesh] = {}
+        self.required: list[Constraint] = []
+        self.tables: list[int] = []
+        self.supports: list[int] = []  # objects with a flat top small things can go on
+        self.with_meshes = with_meshes
+
+    def _free(self, obj: SceneObject, support: str | None = None) -> bool:
+        """Whether ``obj`` fits inside the region, clear of every planted object."""
+        lo, hi = _box(obj)
+        if np.any(lo[:2] < -self.half) or np.any(hi[:2] > self.half):
+            return False
+        for other in self.objects:
+            if other.id == support:
+                continue
+            olo, ohi = _box(other)
+            if np.all(np.minimum(hi, ohi) - np.maximum(lo, olo) > -_CLEARANCE):
+                return False
+        return True
+
+    def _add(self, obj: SceneObject, mesh: trimesh.Trimesh | None = None) -> int:
+        self.objects.append(obj)
+        if mesh is not None and self.with_meshes:
+            self.meshes[obj.id] = mesh
+        return len(self.objects) - 1
+
+    def _ground(self, oid: str, size: Vec3, yaw: float, tries: int = 60, near: SceneObject | None = None):
+        for _ in range(tries):
+            if near is None:
+                xy = self.rng.uniform(-self.half, self.half, 2)
+            else:
+                xy = np.array(near.position.tuple()[:2]) + self.rng.normal(0, 1.2, 2)
+            y = yaw if near is None else yaw_towards(xy, near.position.tuple()[:2])
+            obj = SceneObject(id=oid, name=oid.rsplit("_", 1)[0], size=size, rotation=Vec3(z=y),
+                              position=Vec3(x=xy[0], y=xy[1], z=size.z / 2))
+            if self._free(obj):
+                return obj
+        return None
+
+    def table(self, k: int) -> None:
+        r = self.rng
+        size = Vec3(x=r.uniform(0.8, 2.0), y=r.uniform(0.6, 1.2), z=r.uniform(0.45, 0.9))
+        obj = self._ground(f"table_{k}", size, float(r.choice([0.0, 90.0])))
+        if obj is not None:
+            i = self._add(obj, table_mesh(size))
+            self.tables.append(i)
+            self.supports.append(i)
+
+    def furniture(self, k: int) -> None:
+        r = self.rng
+        size = Vec3(x=r.uniform(0.3, 1.6), y=r.uniform(0.3, 1.2), z=r.uniform(0.3, 1.8))
+        yaw = float(r.choice([0.0, 90.0, 180.0, 270.0])) if r.random() < 0.7 else float(r.uniform(-180, 180))
+        cone = r.random() < 0.25
+        if cone:
+            size = Vec3(x=size.x, y=size.x, z=size.z)
+        obj = self._ground(f"cabinet_{k}", size, yaw)
+        if obj is not None:
+            i = self._add(obj, cone_mesh(size) if cone else None)
+            if not cone and size.z < 1.0:
+                self.supports.append(i)
+
+    def chair(self, k: int) -> None:
+        if not self.tables:
+            return self.furniture(k)
+        target = self.objects[int(self.rng.choice(self.tables))]
+        obj = self._ground(f"chair_{k}", Vec3(x=0.5, y=0.5, z=0.9), 0.0, near=target)
+        if obj is not None:
+            self._add(obj)
+            self.required.append(Constraint(relation="face to", source=obj.id, target=target.id))
+
+    def small(self, k: int) -> None:
+        r = self.rng
+        size = Vec3(x=r.uniform(0.1, 0.4), y=r.uniform(0.1, 0.4), z=r.uniform(0.05, 0.35))
+        if not self.supports:
+            return self.furniture(k)
+        base = self.objects[int(r.choice(self.supports))]
+        blo, bhi = _box(base)
+        half = half_extents(size, Vec3())
+        if np.any(bhi[:2] - blo[:2] < 2 * half[:2]):
+            return
+        for _ in range(20):
+            xy = r.uniform(blo[:2] + half[:2], bhi[:2] - half[:2])
+            obj = SceneObject(id=f"item_{k}", name="item", size=size,
+                              position=Vec3(x=xy[0], y=xy[1], z=bhi[2] + size.z / 2))
+            if self._free(obj, support=base.id):
+                i = self._add(obj)
+                self.required.append(Constraint(relation="on", source=obj.id, target=base.id))
+                if r.random() < 0.5:
+                    self.supports.append(i)  # stacked chains
+                return
+
+    def lamp(self, k: int) -> None:
+        r = self.rng
+        grounded = [o for o in self.objects if o.position.z == o.size.z / 2]
+        if not grounded:
+            return self.furniture(k)
+        base = grounded[int(r.integers(len(grounded)))]
+        size = Vec3(x=0.4, y=0.4, z=0.3)
+        blo, bhi = _box(base)
+        for _ in range(10):
+            xy = r.uniform(blo[:2], bhi[:2])
+            obj = SceneObject(id=f"lamp_{k}", name="lamp", size=size,
+                              position=Vec3(x=xy[0], y=xy[1], z=bhi[2] + 2.0 + r.uniform(0.05, 0.5) + size.z / 2))
+            if self._free(obj):
+                self._add(obj)
+                self.required.append(Constraint(relation="above", source=obj.id, target=base.id))
+                return
+
+
+def _box(obj: SceneObject) -> tuple[np.ndarray, np.ndarray]:
+    half = half_extents(obj.size, obj.rotation)
+    centre = np.array(obj.position.tuple())
+    return centre - half, centre + half
+
+
+def planted_problem(n: int, seed: int = 0, *, with_meshes: bool = True, jitter: float = 0.4) -> Problem:
+    """A satisfiable problem of about ``n`` objects (placement may leave out a few)."""
+    rng = np.random.default_rng(seed)
+    p = _Planter(n, rng, with_meshes)
+    kinds = {"table": 0.18, "furniture": 0.37, "chair": 0.15, "small": 0.25, "lamp": 0.05}
+    names, weights = list(kinds), np.array(list(kinds.values()))
+    for k in range(n):
+        getattr(p, str(rng.choice(names, p=weights / weights.sum())))(k)
+    constraints = list(p.required)
+    used = {c.key() for c in constraints}
+    for s, src in enumerate(p.objects):
+        for _ in range(int(rng.integers(0, 3))):
+            if s == 0:
+                break
+            tgt = p.objects[int(rng.integers(0, s))]
+            true = [r for r in _OPTIONAL if check(r, src, tgt)]
+            if true:
+                relation = true[0] if rng.random() < 0.5 else str(rng.choice(true))
+                c = Constraint(relation=relation, source=src.id, target=tgt.id)
+                if c.key() not in used:
+                    used.add(c.key())
+                    constraints.append(c)
+    initial = []
+    for obj in p.objects:
+        xy = np.clip(np.array(obj.position.tuple()[:2]) + rng.normal(0, jitter, 2), -p.half, p.half)
+        yaw = obj.yaw + (rng.normal(0, 20) if obj.id.startswith("chair") else 0.0)
+        initial.append(obj.model_copy(update={
+            "position": Vec3(x=xy[0], y=xy[1], z=obj.position.z + rng.normal(0, 0.05)),
+            "rotation": Vec3(z=yaw),
+        }))
+    return Problem(initial, constraints, (p.side, p.side), p.meshes, p.objects)
+

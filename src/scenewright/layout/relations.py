@@ -1,0 +1,305 @@
+"""The ten spatial relations of the paper (Table 3, DESIGN.md §4), each defined once.
+
+Every relation has three parts, all here: ``holds`` (the check), ``violation`` (how far from
+holding: metres, or degrees for ``face to``; 0 when it holds) and ``propose`` (candidate
+source positions for the solver). They work on :class:`Boxes` — world bounding boxes with
+numpy broadcasting — so the solver tests hundreds of candidates against one target in one
+call, while :func:`check` and :func:`violation` give the same answer for two scene objects.
+
+Decisions where the table leaves room:
+
+- Relative relations (left of, right of, in front of, behind, side of) compare world boxes
+  along one axis only, with the 0.1 m buffer: ``left of`` holds when the source's max x is
+  at most the target's min x − 0.1 (a gap of exactly 0.1 m holds).
+- ``near``/``far`` use the horizontal (xy) gap between the two boxes; overlapping boxes have
+  gap 0. ``near`` holds at gap ≤ 2 m, ``far`` at gap > 8 m.
+- ``on``: the source's bottom is within 2 mm of the target's top (either side) and their
+  footprints overlap with positive area.
+- ``above``: the gap from the source's *bottom* to the target's *top* is at least 2 m, and
+  the footprints overlap.
+- ``face to``: the source's front (−Y at yaw 0, :func:`geometry.front_direction`) is within
+  ±10° of the direction from the source's centre to the target's centre, in plan. A source
+  whose centre coincides with the target's in plan faces nothing.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+from typing import Callable
+
+import numpy as np
+
+from scenewright.geometry import front_direction, rotation_matrix, world_box
+from scenewright.scene import RELATION_TYPES, SceneObject, Vec3
+
+BUFFER = 0.1  # m, relative relations
+NEAR = 2.0  # m, horizontal gap
+FAR = 8.0  # m, horizontal gap
+ON_GAP = 0.002  # m, clearance for "on"
+ABOVE = 2.0  # m, bottom of source to top of target
+FACE_DEGREES = 10.0
+#: Slack for floating-point round-off only, so that limits hold exactly at the limit.
+EPS = 1e-9
+
+
+@dataclass(frozen=True)
+class Boxes:
+    """World boxes (``lo``/``hi`` corners, shape (..., 3)) and yaws (degrees, shape (...))."""
+
+    lo: np.ndarray
+    hi: np.ndarray
+    yaw: np.ndarray
+
+    @property
+    def centre(self) -> np.ndarray:
+        return (self.lo + self.hi) / 2.0
+
+    @classmethod
+    def at(cls, centre: np.ndarray, half: np.ndarray, yaw) -> Boxes:
+        centre = np.asarray(centre, dtype=float)
+        return cls(centre - half, centre + half, np.asarray(yaw, dtype=float))
+
+    @classmethod
+    def of(cls, obj: SceneObject) -> Boxes:
+        lo, hi = world_box(obj)
+        return cls(lo, hi, np.asarray(obj.yaw, dtype=float))
+
+
+def half_extents(size: Vec3, rotation: Vec3, yaws=None) -> np.ndarray:
+    """Half extents of the world box of a ``size`` box at ``rotation`` (or at each yaw)."""
+    half = np.array(size.tuple()) / 2.0
+    if yaws is None:
+        return np.abs(rotation_matrix(rotation)) @ half
+    return rotated_half(half, tilt_matrix(rotation), yaws)
+
+
+def tilt_matrix(rotation: Vec3) -> np.ndarray:
+    """The rotation without its yaw: what stays fixed while the solver turns an object."""
+    return rotation_matrix(Vec3(x=rotation.x, y=rotation.y, z=0.0))
+
+
+def rotated_half(half: np.ndarray, tilt: np.ndarray, yaws) -> np.ndarray:
+    """World half extents of a centred box (``half``) turned by ``tilt`` then each yaw."""
+    a = np.radians(np.asarray(yaws, dtype=float))[..., None]
+    c, s = np.cos(a), np.sin(a)
+    # Rows of Rz(yaw) @ tilt, for every yaw at once.
+    row_x = np.abs(c * tilt[0] - s * tilt[1]) @ half
+    row_y = np.abs(s * tilt[0] + c * tilt[1]) @ half
+    row_z = np.broadcast_to(np.abs(tilt[2]) @ half, row_x.shape)
+    return np.stack([row_x, row_y, row_z], axis=-1)
+
+
+# --- shared measures ---------------------------------------------------------------------
+
+def _plan_gap(a: Boxes, b: Boxes) -> np.ndarray:
+    """Horizontal distance between two boxes' footprints (0 when they overlap)."""
+    dx = np.maximum(0.0, np.maximum(a.lo[..., 0] - b.hi[..., 0], b.lo[..., 0] - a.hi[..., 0]))
+    dy = np.maximum(0.0, np.maximum(a.lo[..., 1] - b.hi[..., 1], b.lo[..., 1] - a.hi[..., 1]))
+    return np.hypot(dx, dy)
+
+
+def _footprint_overlap(a: Boxes, b: Boxes) -> np.ndarray:
+    ox = np.minimum(a.hi[..., 0], b.hi[..., 0]) - np.maximum(a.lo[..., 0], b.lo[..., 0])
+    oy = np.minimum(a.hi[..., 1], b.hi[..., 1]) - np.maximum(a.lo[..., 1], b.lo[..., 1])
+    return (ox > EPS) & (oy > EPS)
+
+
+def _footprint_miss(a: Boxes, b: Boxes) -> np.ndarray:
+    """How far the footprints are from overlapping (the plan gap; 0 when they overlap)."""
+    return np.where(_footprint_overlap(a, b), 0.0, np.maximum(_plan_gap(a, b), EPS))
+
+
+def _angle_off(src: Boxes, tgt: Boxes) -> np.ndarray:
+    """Degrees between the source's front and the direction to the target's centre."""
+    d = tgt.centre[..., :2] - src.centre[..., :2]
+    front = np.moveaxis(front_direction(src.yaw), 0, -1)
+    norm = np.linalg.norm(d, axis=-1)
+    cos = np.sum(front * d, axis=-1) / np.where(norm > EPS, norm, 1.0)
+    return np.where(norm > EPS, np.degrees(np.arccos(np.clip(cos, -1.0, 1.0))), 180.0)
+
+
+# --- checks and violations -----------------------------------------------------------------
+
+def _left_miss(s, t):
+    return np.maximum(0.0, s.hi[..., 0] - (t.lo[..., 0] - BUFFER))
+
+
+def _right_miss(s, t):
+    return np.maximum(0.0, (t.hi[..., 0] + BUFFER) - s.lo[..., 0])
+
+
+def _front_miss(s, t):
+    return np.maximum(0.0, s.hi[..., 1] - (t.lo[..., 1] - BUFFER))
+
+
+def _behind_miss(s, t):
+    return np.maximum(0.0, (t.hi[..., 1] + BUFFER) - s.lo[..., 1])
+
+
+def _on_miss(s, t):
+    dz = np.maximum(0.0, np.abs(s.lo[..., 2] - t.hi[..., 2]) - ON_GAP)
+    return dz + _footprint_miss(s, t)
+
+
+def _above_miss(s, t):
+    return np.maximum(0.0, ABOVE - (s.lo[..., 2] - t.hi[..., 2])) + _footprint_miss(s, t)
+
+
+_VIOLATION: dict[str, Callable[[Boxes, Boxes], np.ndarray]] = {
+    "left of": _left_miss,
+    "right of": _right_miss,
+    "in front of": _front_miss,
+    "behind": _behind_miss,
+    "side of": lambda s, t: np.minimum(_left_miss(s, t), _right_miss(s, t)),
+    "near": lambda s, t: np.maximum(0.0, _plan_gap(s, t) - NEAR),
+    "far": lambda s, t: np.maximum(0.0, FAR - _plan_gap(s, t)),
+    "on": _on_miss,
+    "above": _above_miss,
+    "face to": lambda s, t: np.maximum(0.0, _angle_off(s, t) - FACE_DEGREES),
+}
+
+
+def holds(relation: str, src: Boxes, tgt: Boxes) -> np.ndarray:
+    """Whether ``relation`` holds for every (broadcast) source/target box pair."""
+    if relation == "far":  # strict: the gap must exceed 8 m
+        return _plan_gap(src, tgt) > FAR
+    if relation in ("on", "above"):
+        return (_VIOLATION[relation](src, tgt) <= EPS) & _footprint_overlap(src, tgt)
+    return _VIOLATION[relation](src, tgt) <= EPS
+
+
+def violations(relation: str, src: Boxes, tgt: Boxes) -> np.ndarray:
+    if relation == "far":
+        return np.where(holds("far", src, tgt), 0.0, np.maximum(FAR - _plan_gap(src, tgt), EPS))
+    return np.where(holds(relation, src, tgt), 0.0, np.maximum(_VIOLATION[relation](src, tgt), EPS))
+
+
+def _known(relation: str) -> str:
+    if relation not in RELATION_TYPES:
+        raise ValueError(f"unknown relation {relation!r}; valid relations: {', '.join(RELATION_TYPES)}")
+    return relation
+
+
+def check(relation: str, source: SceneObject, target: SceneObject) -> bool:
+    """Whether ``source`` stands in ``relation`` to ``target`` (the one definition, Table 3)."""
+    return bool(holds(_known(relation), Boxes.of(source), Boxes.of(target)))
+
+
+def violation(relation: str, source: SceneObject, target: SceneObject) -> float:
+    """How far the pair is from the relation: metres (degrees for ``face to``); 0 if it holds."""
+    return float(violations(_known(relation), Boxes.of(source), Boxes.of(target)))
+
+
+# --- candidate generation ------------------------------------------------------------------
+
+#: Solver priority: the first relation of an object in this order generates its candidates.
+PRIORITY: dict[str, int] = {
+    "on": 0, "above": 0,
+    "left of": 1, "right of": 1, "in front of": 1, "behind": 1, "side of": 1,
+    "near": 2, "far": 2, "face to": 2,
+}
+
+
+@lru_cache(maxsize=32)
+def sunflower(n: int, spacing: float) -> np.ndarray:
+    """``n`` offsets spreading evenly outward from (0, 0), nearest first (Vogel's spiral)."""
+    k = np.arange(n, dtype=float)
+    r = spacing * np.sqrt(k)
+    theta = k * np.pi * (3.0 - np.sqrt(5.0))
+    out = np.stack([r * np.cos(theta), r * np.sin(theta)], axis=-1)
+    out.flags.writeable = False
+    return out
+
+
+def _region(relation: str, half: np.ndarray, t: Boxes | None) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Axis-aligned rectangles (lo, hi) of source centres (x, y) where the relation can hold.
+
+    Unbounded sides are ±inf. ``near`` and ``far`` get the rectangle that contains (near)
+    or is contained by (far) their rounded region; the exact checks filter afterwards.
+    """
+    inf = np.inf
+    if relation == "face to" or t is None:  # any position can face the target
+        return [(np.array([-inf, -inf]), np.array([inf, inf]))]
+    tlo, thi = t.lo[:2], t.hi[:2]
+    hx, hy = half[0], half[1]
+    if relation == "left of":
+        return [(np.array([-inf, -inf]), np.array([tlo[0] - BUFFER - hx, inf]))]
+    if relation == "right of":
+        return [(np.array([thi[0] + BUFFER + hx, -inf]), np.array([inf, inf]))]
+    if relation == "in front of":
+        return [(np.array([-inf, -inf]), np.array([inf, tlo[1] - BUFFER - hy]))]
+    if relation == "behind":
+        return [(np.array([-inf, thi[1] + BUFFER + hy]), np.array([inf, inf]))]
+    if relation == "side of":
+        return _region("left of", half, t) + _region("right of", half, t)
+    if relation in ("on", "above"):
+        # Fully supported when it fits; else centred over the target's top.
+        inner_lo, inner_hi = tlo + half[:2], thi - half[:2]
+        mid = (tlo + thi) / 2.0
+        lo = np.where(inner_lo <= inner_hi, inner_lo, mid)
+        hi = np.where(inner_lo <= inner_hi, inner_hi, mid)
+        return [(lo, hi)]
+    if relation == "near":
+        return [(tlo - half[:2] - NEAR, thi + half[:2] + NEAR)]
+    if relation == "far":
+        m = FAR + 1e-3
+        return [
+            (np.array([-inf, -inf]), np.array([tlo[0] - hx - m, inf])),
+            (np.array([thi[0] + hx + m, -inf]), np.array([inf, inf])),
+            (np.array([-inf, -inf]), np.array([inf, tlo[1] - hy - m])),
+            (np.array([-inf, thi[1] + hy + m]), np.array([inf, inf])),
+        ]
+    raise ValueError(f"unknown relation {relation!r}")
+
+
+def propose(
+    relation: str,
+    half: np.ndarray,
+    target: Boxes | None,
+    anchor: np.ndarray,
+    rng: np.random.Generator,
+    n: int = 160,
+    spacing: float = 0.12,
+) -> np.ndarray:
+    """Candidate source centres (x, y) for ``relation``, nearest to ``anchor`` first.
+
+    ``half`` is the source's world half extents at its intended yaw; without a ``target``
+    every position is feasible (an unconstrained object). Candidates are a spiral
+    around the anchor's projection onto each feasible rectangle, plus uniform samples of the
+    rectangle where it is bounded; every point lies inside the rectangle.
+    """
+    anchor = np.asarray(anchor, dtype=float)[:2]
+    out = []
+    for lo, hi in _region(relation, half, target):
+        base = np.clip(anchor, lo, hi)
+        jitter = rng.uniform(0.0, 2 * np.pi)
+        c, s = np.cos(jitter), np.sin(jitter)
+        spiral = sunflower(n, spacing) @ np.array([[c, -s], [s, c]])
+        pts = np.clip(base + spiral, lo, hi)
+        if np.all(np.isfinite(hi - lo)):
+            pts = np.concatenate([pts, rng.uniform(lo, hi, size=(n // 2, 2))])
+        out.append(pts)
+    pts = np.concatenate(out)
+    order = np.argsort(np.linalg.norm(pts - anchor, axis=1), kind="stable")
+    return pts[order]
+
+
+def source_heights(relation: str, half_z: float, target: Boxes, initial_z: float) -> np.ndarray | None:
+    """Centre heights a vertical relation allows its source, preferred first (None: not vertical).
+
+    ``on`` has one; ``above`` starts at the initial height or the lowest allowed one, and
+    offers a few higher levels so two hanging objects can share a footprint.
+    """
+    top = float(target.hi[2])
+    if relation == "on":
+        return np.array([top + half_z])
+    if relation == "above":
+        return max(initial_z, top + ABOVE + half_z) + np.array([0.0, 0.3, 0.7, 1.2])
+    return None
+
+
+def describe(relation: str, miss: float) -> str:
+    unit = "°" if relation == "face to" else " m"
+    return f"misses by {miss:.2f}{unit}"
+

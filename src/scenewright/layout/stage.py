@@ -1,0 +1,88 @@
+"""Scene generation (paper §3.3): constraints from the model, the solver, and the feedback loop.
+
+When the solver cannot place every object, its report (which object, which constraints,
+the nearest miss) goes back to the vision-language model, which revises the constraints;
+the layout is solved again, for a bounded number of rounds. The most complete layout of all
+rounds wins, so a revision that makes things worse costs nothing.
+"""
+
+from __future__ import annotations
+
+import logging
+from collections.abc import Mapping
+
+import trimesh
+
+from scenewright.backends import VisionLanguageModel
+from scenewright.folder import SceneFolder
+from scenewright.layout import LayoutResult, solve
+from scenewright.scene import Scene
+
+log = logging.getLogger(__name__)
+
+STAGE = "layout"
+
+
+def _score(result: LayoutResult) -> tuple[int, int]:
+    """More objects placed is better; among equals, more of the model's constraints kept."""
+    return (len(result.report.placed), len(result.constraints))
+
+
+def _record_round(scene: Scene, number: int, result: LayoutResult) -> None:
+    report = result.report
+    unplaced = {u.id: u.reason for u in report.unplaced}
+    scene.record(
+        STAGE,
+        f"round {number}: placed {len(report.placed)} of {len(report.placed) + len(unplaced)} objects",
+        round=number,
+        constraints=[str(c) for c in result.constraints],
+        dropped=len(report.dropped),
+        unplaced=unplaced,
+        nodes=report.nodes,
+        seconds=round(report.seconds, 3),
+    )
+
+
+def arrange(
+    scene: Scene,
+    folder: SceneFolder,
+    vlm: VisionLanguageModel,
+    meshes: Mapping[str, trimesh.Trimesh],
+    *,
+    rounds: int = 3,
+    time_limit: float = 10.0,
+) -> Scene:
+    """Solve the layout of ``scene``'s objects, revising constraints up to ``rounds`` times."""
+    reference = folder.reference_image.read_bytes() if folder.reference_image.is_file() else None
+    constraints = list(scene.constraints)
+    if not constraints:
+        constraints = vlm.write_constraints(scene.text, scene.objects, reference)
+        scene.provenance += getattr(vlm, "last_repairs", [])  # what a remote model's answer needed repaired
+        scene.record(STAGE, f"wrote {len(constraints)} constraints", backend=vlm.name)
+    best: LayoutResult | None = None
+    for number in range(rounds + 1):
+        result = solve(
+            scene.objects,
+            constraints,
+            meshes=meshes,
+            bounds=scene.bounds,
+            time_limit=time_limit,
+            seed=scene.seed,
+        )
+        _record_round(scene, number, result)
+        if best is None or _score(result) > _score(best):
+            best = result
+        if result.report.complete or number == rounds:
+            break
+        log.info("round %d left %d unplaced; asking for new constraints", number, len(result.report.unplaced))
+        constraints = vlm.revise_constraints(
+            scene.text, scene.objects, result.constraints, result.report, reference
+        )
+        scene.provenance += getattr(vlm, "last_repairs", [])
+    assert best is not None
+    solved = {obj.id: obj for obj in best.objects}
+    scene.objects = [solved[obj.id] for obj in scene.objects]
+    scene.constraints = list(best.constraints)
+    scene.layout = best.report
+    folder.save(scene)
+    return scene

@@ -1,0 +1,194 @@
+"""Text → scene folder: analysis, assets, layout, export, render, resumable stage by stage.
+
+Each stage adds its output to the document and the folder, then its name goes into
+``scene.done``; a re-run skips every stage that is done and whose output is still on disk.
+When a stage has to run again, every later stage runs again too, since it was built on the
+old output.
+"""
+
+from __future__ import annotations
+
+import logging
+import shutil
+from collections.abc import Callable
+from pathlib import Path
+
+from scenewright.analysis.stage import analyze
+from scenewright.assets import generate_assets, load_meshes
+from scenewright.assets.stage import needs_asset
+from scenewright.backends import Backends
+from scenewright.cache import RequestCache
+from scenewright.errors import InputError, MissingExtra
+from scenewright.export import assemble
+from scenewright.folder import SceneFolder
+from scenewright.layout.stage import arrange
+from scenewright.scene import Scene
+from scenewright.settings import Settings
+
+log = logging.getLogger(__name__)
+
+STAGES = ("analyze", "assets", "layout", "export", "render")
+
+#: Called with (stage, message) as the run goes; the CLI turns it into a progress display.
+Progress = Callable[[str, str], None]
+
+
+def _as_folder(folder: SceneFolder | str | Path) -> SceneFolder:
+    return folder if isinstance(folder, SceneFolder) else SceneFolder(Path(folder))
+
+
+def _output_present(stage: str, scene: Scene, folder: SceneFolder) -> bool:
+    """Whether what ``stage`` produced is still there (a user may have deleted files)."""
+    if stage == "analyze":
+        return bool(scene.objects) and folder.ground_image.is_file()
+    if stage == "assets":
+        return not any(needs_asset(obj, folder) for obj in scene.objects)
+    if stage == "layout":
+        return scene.layout is not None
+    if stage == "export":
+        return folder.glb.is_file()
+    return folder.renders.is_dir() and any(folder.renders.glob("*.png"))
+
+
+def _pending(scene: Scene, folder: SceneFolder) -> list[str]:
+    """Stages to run: from the first one not done (or whose output is gone) to the end."""
+    for index, stage in enumerate(STAGES):
+        if stage not in scene.done or not _output_present(stage, scene, folder):
+            return list(STAGES[index:])
+    return []
+
+
+def _render(scene: Scene, folder: SceneFolder) -> bool:
+    from scenewright.render import render
+
+    try:
+        render(scene, folder, draft=False)
+    except MissingExtra as exc:
+        log.warning("no preview renders: %s", exc)
+        return False
+    return True
+
+
+def run_stages(
+    scene: Scene,
+    folder: SceneFolder,
+    *,
+    backends: Backends,
+    settings: Settings,
+    render: bool = True,
+    progress: Progress | None = None,
+) -> Scene:
+    """Run every stage of ``scene`` that is not done yet; save the document after each."""
+    cache = RequestCache(settings.cache_dir)
+    scene.backends = backends.names()
+    pending = _pending(scene, folder)
+    scene.done = [s for s in scene.done if s not in pending]
+    for stage in pending:
+        if stage == "render" and not render:
+            break
+        note: Callable[[str], None] = (lambda m, s=stage: progress(s, m)) if progress else (lambda m: None)
+        note("started")
+        if stage == "analyze":
+            analyze(scene, folder, backends.vlm, backends.images, cache, note)
+        elif stage == "assets":
+            generate_assets(scene, folder, backends.meshes, cache, note)
+        elif stage == "layout":
+            arrange(
+                scene,
+                folder,
+                backends.vlm,
+                load_meshes(scene, folder),
+                rounds=settings.feedback_rounds,
+                time_limit=settings.time_limit,
+            )
+        elif stage == "export":
+            path = assemble(scene, folder)
+            scene.record(stage, f"wrote {folder.relative(path)}")
+        elif not _render(scene, folder):
+            break
+        scene.done.append(stage)
+        folder.save(scene)
+        note("done")
+    return scene
+
+
+def _new_scene(text: str, style: str | None, seed: int) -> Scene:
+    """A scene with the style (the flag, else the one the text names, else the default) and the
+    ground kind read from the text by the offline parser, whichever backends run the stages."""
+    from scenewright.analysis.parser import parse_scene
+
+    parsed = parse_scene(text)
+    chosen = style.strip().lower() if style and style.strip() else parsed.style
+    scene = Scene(text=text, style=chosen, seed=seed)
+    scene.ground.kind = parsed.ground
+    return scene
+
+
+def generate(
+    text: str,
+    folder: SceneFolder | str | Path,
+    *,
+    backends: Backends,
+    settings: Settings,
+    style: str | None = None,
+    seed: int = 0,
+    render: bool = True,
+    progress: Progress | None = None,
+) -> Scene:
+    """Make the scene ``text`` describes in ``folder``; resume it when the folder holds it already."""
+    folder = _as_folder(folder)
+    text = text.strip()
+    if not text:
+        raise InputError(
+            "the text is empty; describe the scene, e.g. 'a cosy reading corner with an armchair'"
+        )
+    existed = folder.root.exists()
+    folder.create()
+    fresh = not folder.is_scene()
+    if not fresh:
+        scene = folder.load()
+        if scene.text != text or scene.seed != seed or (style and scene.style != style.strip().lower()):
+            raise InputError(
+                f"{folder.root} already holds another scene ({scene.text[:60]!r}, style {scene.style}, "
+                f"seed {scene.seed}); resume it with `scenewright generate --resume {folder.root}` "
+                "or choose a new --out"
+            )
+        log.info("resuming %s (done: %s)", folder.root, ", ".join(scene.done) or "nothing")
+    else:
+        scene = _new_scene(text, style, seed)
+        scene.record("generate", "new scene", style=scene.style, seed=seed, backends=backends.names())
+        folder.save(scene)
+    try:
+        return run_stages(
+            scene, folder, backends=backends, settings=settings, render=render, progress=progress
+        )
+    except InputError:
+        if fresh and not scene.objects:
+            _discard(folder, existed)
+        raise
+
+
+def _discard(folder: SceneFolder, existed: bool) -> None:
+    """Remove a scene that never got an object, so the folder is as the user left it (empty)."""
+    if not existed:
+        shutil.rmtree(folder.root, ignore_errors=True)
+        return
+    for child in folder.root.iterdir():
+        if child.is_dir():
+            shutil.rmtree(child, ignore_errors=True)
+        else:
+            child.unlink(missing_ok=True)
+
+
+def resume(
+    folder: SceneFolder | str | Path,
+    *,
+    backends: Backends,
+    settings: Settings,
+    render: bool = True,
+    progress: Progress | None = None,
+) -> Scene:
+    """Finish an interrupted scene: run only the stages it has not completed."""
+    folder = _as_folder(folder)
+    scene = folder.load()
+    return run_stages(scene, folder, backends=backends, settings=settings, render=render, progress=progress)

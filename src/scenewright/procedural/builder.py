@@ -1,0 +1,169 @@
+"""The object under construction: parts by role, then one fitted, styled, PBR glTF scene.
+
+Generators draw in the scene frame inside the requested box — footprint centred on the
+origin, bottom at z = 0, front toward −Y — with sizes taken from the box, so proportions
+follow whatever size the layout asked for. :meth:`Model.finish` then fits the result to
+the box exactly (bevels and chunky cartoon legs may poke out a little), shades it per
+style, converts it to glTF (+Y up, front +Z) and gives each role its PBR material.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+
+import numpy as np
+import trimesh
+from trimesh.visual.material import PBRMaterial
+
+from scenewright.geometry import SCENE_TO_GLTF
+from scenewright.procedural import parts as P
+from scenewright.procedural.style import NEON_ROLES, NEONS, Style, Surface
+
+
+class Model:
+    """Parts of one object grouped by role; ``main`` is the role the description recolours."""
+
+    def __init__(self, size, style: Style, rng: np.random.Generator, main: str = "wood", text: str = ""):
+        self.sx, self.sy, self.sz = (float(v) for v in size)
+        #: The object's name and description, lower case: generators pick variants from it
+        #: (a torii among arches, a sailboat among boats).
+        self.text = text.lower()
+        self.style = style
+        self.rng = rng
+        self.main = main
+        self.parts: dict[str, list[P.Part]] = defaultdict(list)
+        self.neon = NEONS[int(rng.integers(len(NEONS)))]
+
+    # Proportions -------------------------------------------------------------------------
+    def thick(self, metres: float, limit: float | None = None) -> float:
+        """A frame or leg thickness in this style, capped at ``limit`` (default: a quarter
+        of the smaller footprint side) so chunky styles never swallow the object."""
+        cap = limit if limit is not None else 0.25 * min(self.sx, self.sy)
+        return min(self.style.thick(metres), cap)
+
+    def segments(self, fraction: float = 1.0, minimum: int = 5) -> int:
+        return max(minimum, int(round(self.style.segments * fraction)))
+
+    def vary(self, low: float, high: float) -> float:
+        return float(self.rng.uniform(low, high))
+
+    # Drawing -----------------------------------------------------------------------------
+    def add(self, role: str, part: P.Part) -> None:
+        self.parts[role].append(part)
+
+    def box(self, role: str, lo, hi, rounded: float | None = None) -> None:
+        """Axis-aligned box by corners; edges rounded per style unless ``rounded`` is given."""
+        radius = self.style.rounding(lo, hi) if rounded is None else rounded * (self.style.bevel > 0)
+        self.add(role, P.box(lo, hi, radius))
+
+    def cbox(self, role: str, centre, size, rounded: float | None = None) -> None:
+        c, h = np.asarray(centre, float), np.asarray(size, float) / 2
+        self.box(role, c - h, c + h, rounded)
+
+    def cylinder(self, role: str, p0, p1, r0: float, r1: float | None = None, fraction: float = 1.0) -> None:
+        self.add(role, P.frustum(p0, p1, r0, r0 if r1 is None else r1, self.segments(fraction)))
+
+    def post(self, role: str, x: float, y: float, z0: float, z1: float, r: float, fraction: float = 0.6) -> None:
+        """A vertical round post (legs, poles, trunks)."""
+        self.cylinder(role, (x, y, z0), (x, y, z1), r, r, fraction)
+
+    def legs(self, role: str, inset: float, z0: float, z1: float, r: float, square: bool = False,
+             half_x: float | None = None, half_y: float | None = None) -> None:
+        """Four legs at the corners of the footprint (or of a ``half_x`` × ``half_y`` rectangle)."""
+        hx = (self.sx / 2 if half_x is None else half_x) - inset - r
+        hy = (self.sy / 2 if half_y is None else half_y) - inset - r
+        for x in (-hx, hx):
+            for y in (-hy, hy):
+                if square:
+                    self.box(role, (x - r, y - r, z0), (x + r, y + r, z1))
+                else:
+                    self.post(role, x, y, z0, z1, r)
+
+    def has(self, *words: str) -> bool:
+        return any(w in self.text for w in words)
+
+    def lathe(self, role: str, profile, centre=(0.0, 0.0, 0.0), scale=(1.0, 1.0), fraction: float = 1.0) -> None:
+        part = P.lathe(profile, self.segments(fraction))
+        self.add(role, P.transform(part, P.affine(np.diag([scale[0], scale[1], 1.0]), centre)))
+
+    def ball(self, role: str, centre, radii, fraction: float = 1.0) -> None:
+        self.add(role, P.sphere(centre, radii, self.segments(fraction)))
+
+    def torus(self, role: str, centre, major: float, minor: float, axis: str = "z", arc: float = 2 * np.pi,
+              fraction: float = 1.0) -> None:
+        """A ring or arc about ``axis``; an x-axis arc starts at +Y and turns over +Z,
+        a y-axis arc starts at +X and turns over +Z (arches, handles, wheels)."""
+        part = P.torus(major, minor, self.segments(fraction), self.segments(0.5, 4), arc)
+        linear = {
+            "z": np.eye(3),
+            "x": np.array([[0, 0, 1], [1, 0, 0], [0, 1, 0]], float),
+            "y": np.array([[1, 0, 0], [0, 0, 1], [0, 1, 0]], float),
+        }[axis]
+        self.add(role, P.transform(part, P.affine(linear, centre)))
+
+    def extrude(self, role: str, outline, axis: str, start: float, end: float) -> None:
+        """Extrude a counter-clockwise outline: along x the outline is (y, z), along y it is
+        (x, z), along z it is (x, y)."""
+        part = P.prism(outline, end - start)
+        linear = {
+            "z": np.eye(3),
+            "x": np.array([[0, 0, 1], [1, 0, 0], [0, 1, 0]], float),
+            "y": np.array([[1, 0, 0], [0, 0, -1], [0, 1, 0]], float),
+        }[axis]
+        offset = np.zeros(3)
+        offset["xyz".index(axis)] = end if axis == "y" else start
+        self.add(role, P.transform(part, P.affine(linear, offset)))
+
+    def beam(self, role: str, p0, p1, width: float, height: float | None = None) -> None:
+        self.add(role, P.beam(p0, p1, width, height))
+
+    # Output ------------------------------------------------------------------------------
+    def finish(self, override: Surface | None = None) -> trimesh.Scene:
+        """Fit to the box, shade, convert to glTF and attach one PBR material per role."""
+        if not self.parts:
+            raise ValueError("a generator drew nothing")
+        roles = list(self.parts)
+        merged = {role: P.merge(self.parts[role]) for role in roles}
+        points = np.concatenate([m.vertices for m in merged.values()])
+        lo, hi = points.min(axis=0), points.max(axis=0)
+        target = np.array([self.sx, self.sy, self.sz])
+        scale = target / np.maximum(hi - lo, 1e-9)
+        offset = np.array([-(lo[0] + hi[0]) / 2, -(lo[1] + hi[1]) / 2, -lo[2]]) * scale
+        place = P.affine(np.diag(scale), offset)
+        fit = SCENE_TO_GLTF @ place
+        if self.style.neon and not NEON_ROLES.intersection(roles):
+            merged["trim"] = P.transform(self._trim(), np.linalg.inv(place))
+            roles.append("trim")
+        scene = trimesh.Scene()
+        for role in roles:
+            part = P.drop_degenerate(P.transform(merged[role], fit))
+            if self.style.flat:
+                part = P.flatten(part)
+            surface = self.style.surface(role, self.neon)
+            if role == self.main and override is not None:
+                surface = self.style.restyle(override, "described", self.neon)
+            mesh = trimesh.Trimesh(part.vertices, part.faces, vertex_normals=part.normals, process=False)
+            mesh.visual = trimesh.visual.TextureVisuals(material=_material(role, surface))
+            scene.add_geometry(mesh, geom_name=role, node_name=role)
+        return scene
+
+    def _trim(self) -> P.Part:
+        """A neon strip around the base, for cyberpunk objects with no glowing part of their own
+        (drawn in the fitted frame, where the box is exact)."""
+        t = 0.03 * min(self.sx, self.sy, self.sz)
+        x, y, h = self.sx / 2, self.sy / 2, min(0.04 * self.sz, 0.05)
+        sides = (((-x, -y, 0), (x, -y + t, h)), ((-x, y - t, 0), (x, y, h)),
+                 ((-x, -y, 0), (-x + t, y, h)), ((x - t, -y, 0), (x, y, h)))
+        return P.merge([P.box(lo, hi) for lo, hi in sides])
+
+
+def _material(role: str, s: Surface) -> PBRMaterial:
+    return PBRMaterial(
+        name=role,
+        baseColorFactor=[*s.color, s.alpha],
+        metallicFactor=s.metallic,
+        roughnessFactor=s.roughness,
+        emissiveFactor=list(s.emissive),
+        alphaMode="BLEND" if s.alpha < 1 else "OPAQUE",
+        doubleSided=s.alpha < 1,
+    )

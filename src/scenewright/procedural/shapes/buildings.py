@@ -1,0 +1,165 @@
+"""Buildings and booths, boards, and the generic fallback."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from scenewright.procedural.builder import Model
+
+
+def _windows(m: Model, x0, x1, z0, z1, y: float, facing: int, floors: int, along: str = "x") -> None:
+    """A grid of glass panes with sills on one wall (``along`` the wall's axis)."""
+    width = x1 - x0
+    cols = max(1, int(width / 2.2))
+    fh = (z1 - z0) / floors
+    cw = width / cols
+    for f in range(floors):
+        for c in range(cols):
+            a, b = x0 + (c + 0.25) * cw, x0 + (c + 0.75) * cw
+            lo, hi = z0 + f * fh + 0.3 * fh, z0 + f * fh + 0.85 * fh
+            d0, d1 = sorted((y, y + facing * 0.04))
+            s0, s1 = sorted((y, y + facing * 0.08))
+            if along == "x":
+                m.box("glass", (a, d0, lo), (b, d1, hi), rounded=0.0)
+                m.box("concrete", (a - 0.05, s0, lo - 0.06), (b + 0.05, s1, lo), rounded=0.0)
+            else:
+                m.box("glass", (d0, a, lo), (d1, b, hi), rounded=0.0)
+                m.box("concrete", (s0, a - 0.05, lo - 0.06), (s1, b + 0.05, lo), rounded=0.0)
+
+
+def building(m: Model) -> None:
+    m.main = "wall"
+    parapet = min(1.0, 0.05 * m.sz)
+    top = m.sz - parapet
+    m.box("wall", (-m.sx / 2 + 0.08, -m.sy / 2 + 0.08, 0), (m.sx / 2 - 0.08, m.sy / 2 - 0.08, top))
+    m.box("concrete", (-m.sx / 2, -m.sy / 2, top), (m.sx / 2, m.sy / 2, m.sz))
+    floors = max(1, int(round(top / 3.2)))
+    fh = top / floors
+    for f in range(1, floors):
+        m.box("concrete", (-m.sx / 2 + 0.04, -m.sy / 2 + 0.04, f * fh - 0.12), (m.sx / 2 - 0.04, m.sy / 2 - 0.04, f * fh))
+    inset = 0.08
+    _windows(m, -m.sx / 2 + 0.5, m.sx / 2 - 0.5, fh, top, -m.sy / 2 + inset, -1, max(1, floors - 1))
+    _windows(m, -m.sx / 2 + 0.5, m.sx / 2 - 0.5, 0, top, m.sy / 2 - inset, 1, floors)
+    _windows(m, -m.sy / 2 + 0.5, m.sy / 2 - 0.5, 0, top, -m.sx / 2 + inset, -1, floors, along="y")
+    _windows(m, -m.sy / 2 + 0.5, m.sy / 2 - 0.5, 0, top, m.sx / 2 - inset, 1, floors, along="y")
+    door = min(1.8, 0.3 * m.sx)
+    m.box("glass", (-door / 2, -m.sy / 2 + 0.02, 0), (door / 2, -m.sy / 2 + inset, min(2.5, 0.8 * fh)), rounded=0.0)
+    m.box("accent", (-m.sx / 2 + 0.3, -m.sy / 2, min(2.7, 0.85 * fh)), (m.sx / 2 - 0.3, -m.sy / 2 + inset, min(3.0, 0.95 * fh)))
+
+
+def house(m: Model) -> None:
+    m.main = "wall"
+    eave = 0.55 * m.sz
+    over = 0.06 * min(m.sx, m.sy)
+    m.box("wall", (-m.sx / 2 + over, -m.sy / 2 + over, 0), (m.sx / 2 - over, m.sy / 2 - over, eave))
+    m.extrude("wall", [(-m.sy / 2 + over, eave), (m.sy / 2 - over, eave), (0, m.sz - 0.05 * m.sz)], "x",
+              -m.sx / 2 + over, m.sx / 2 - over)
+    t = 0.04 * m.sz
+    for s in (-1, 1):
+        outline = [(s * m.sy / 2, eave - 0.08 * m.sz), (s * m.sy / 2, eave - 0.08 * m.sz + t), (0, m.sz), (0, m.sz - t)]
+        m.extrude("roof", outline, "x", -m.sx / 2, m.sx / 2)
+    door_w = min(1.0, 0.2 * m.sx)
+    m.box("dark_wood", (-door_w / 2, -m.sy / 2 + over - 0.04, 0), (door_w / 2, -m.sy / 2 + over, min(2.1, 0.8 * eave)), rounded=0.0)
+    m.ball("brass", (door_w * 0.35, -m.sy / 2 + over - 0.05, min(1.0, 0.4 * eave)), (0.04, 0.03, 0.04), fraction=0.4)
+    for x in (-0.3 * m.sx, 0.3 * m.sx):
+        w = min(1.2, 0.18 * m.sx)
+        m.box("glass", (x - w / 2, -m.sy / 2 + over - 0.03, 0.4 * eave), (x + w / 2, -m.sy / 2 + over, 0.8 * eave), rounded=0.0)
+        m.box("dark_wood", (x - w / 2 - 0.05, -m.sy / 2 + over - 0.06, 0.38 * eave), (x + w / 2 + 0.05, -m.sy / 2 + over, 0.4 * eave))
+    for y in (-0.2 * m.sy, 0.2 * m.sy):
+        w = min(1.2, 0.18 * m.sy)
+        for s in (-1, 1):
+            x0, x1 = sorted((s * (m.sx / 2 - over), s * (m.sx / 2 - over + 0.03)))
+            m.box("glass", (x0, y - w / 2, 0.4 * eave), (x1, y + w / 2, 0.8 * eave), rounded=0.0)
+    cx = 0.25 * m.sx
+    m.box("brick", (cx - 0.06 * m.sx, 0.1 * m.sy, 0.6 * m.sz), (cx + 0.06 * m.sx, 0.2 * m.sy, 0.97 * m.sz))
+
+
+def kiosk(m: Model) -> None:
+    m.main = "paint"
+    roof = 0.85 * m.sz
+    m.box("paint", (-m.sx / 2 + 0.1, -m.sy / 2 + 0.15, 0), (m.sx / 2 - 0.1, m.sy / 2 - 0.1, roof))
+    m.box("dark_plastic", (-0.35 * m.sx, -m.sy / 2 + 0.13, 0.45 * m.sz), (0.35 * m.sx, -m.sy / 2 + 0.15, 0.8 * m.sz), rounded=0.0)
+    m.box("wood", (-0.38 * m.sx, -m.sy / 2 + 0.02, 0.43 * m.sz), (0.38 * m.sx, -m.sy / 2 + 0.16, 0.46 * m.sz))
+    m.box("roof", (-m.sx / 2, -m.sy / 2, roof), (m.sx / 2, m.sy / 2, roof + 0.05 * m.sz))
+    m.box("accent", (-m.sx / 2 + 0.05, -m.sy / 2, roof + 0.05 * m.sz), (m.sx / 2 - 0.05, -m.sy / 2 + 0.1, m.sz))
+    m.box("light", (-0.3 * m.sx, -m.sy / 2 - 0.005, roof + 0.07 * m.sz), (0.3 * m.sx, -m.sy / 2, m.sz - 0.02 * m.sz), rounded=0.0)
+
+
+def market_stall(m: Model) -> None:
+    m.main = "canvas"
+    post = m.thick(0.05, 0.05 * m.sx)
+    counter = 0.4 * m.sz
+    front_top, back_top = 0.82 * m.sz, m.sz
+    m.box("wood", (-m.sx / 2 + post, -m.sy / 2 + 0.12 * m.sy, 0), (m.sx / 2 - post, -m.sy / 2 + 0.45 * m.sy, counter))
+    for x in (-m.sx / 2 + post / 2, m.sx / 2 - post / 2):
+        m.box("wood", (x - post / 2, -m.sy / 2 + 0.1 * m.sy, 0), (x + post / 2, -m.sy / 2 + 0.1 * m.sy + post, front_top))
+        m.box("wood", (x - post / 2, m.sy / 2 - post, 0), (x + post / 2, m.sy / 2, back_top))
+    stripes = max(4, int(m.sx / 0.35))
+    w = m.sx / stripes
+    for i in range(stripes):
+        role = "canvas" if i % 2 == 0 else "canvas_alt"
+        x0 = -m.sx / 2 + i * w
+        m.extrude(role, [(-m.sy / 2, front_top - 0.06 * m.sz), (-m.sy / 2, front_top), (m.sy / 2, back_top), (m.sy / 2, back_top - 0.03)],
+                  "x", x0, x0 + w)
+    goods = max(3, int(m.sx / 0.3))
+    for i in range(goods):
+        x = -m.sx / 2 + post + (i + 0.5) * (m.sx - 2 * post) / goods
+        s = 0.08 * min(m.sx, 1.5)
+        role = ("flower", "flower_alt", "leaf")[i % 3]
+        for j in range(3):
+            m.ball(role, (x + (j - 1) * s * 0.9, -m.sy / 2 + 0.28 * m.sy + (j % 2) * s * 0.5, counter + s * 0.8), (s * 0.5,) * 3,
+                   fraction=0.4)
+
+
+def tower(m: Model) -> None:
+    m.main = "stone"
+    r = 0.5
+    body_top = 0.78 * m.sz
+    m.lathe("stone", [(r, 0), (0.88 * r, body_top)], scale=(m.sx, m.sy))
+    m.lathe("stone", [(0.92 * r, body_top), (0.98 * r, body_top + 0.03 * m.sz), (0.98 * r, body_top + 0.06 * m.sz)],
+            scale=(m.sx, m.sy))
+    merlons = 8
+    for k in range(merlons):
+        a = 2 * np.pi * (k + 0.5) / merlons
+        c = (np.cos(a) * 0.43 * m.sx, np.sin(a) * 0.43 * m.sy, body_top + 0.08 * m.sz)
+        m.cbox("stone", c, (0.1 * m.sx, 0.1 * m.sy, 0.04 * m.sz))
+    m.lathe("roof", [(0.38, body_top + 0.04 * m.sz), (0.0, m.sz)], scale=(m.sx, m.sy))
+    for z in (0.3, 0.5, 0.7):
+        m.box("dark_plastic", (-0.04 * m.sx, -0.47 * m.sy, z * m.sz), (0.04 * m.sx, -0.4 * m.sy, z * m.sz + 0.07 * m.sz), rounded=0.0)
+    m.box("dark_wood", (-0.12 * m.sx, -0.5 * m.sy, 0), (0.12 * m.sx, -0.4 * m.sy, 0.12 * m.sz), rounded=0.0)
+
+
+def whiteboard(m: Model) -> None:
+    m.main = "ceramic"
+    standing = m.sz > 1.3 and m.sy > 0.2
+    z0 = 0.45 * m.sz if standing else 0.0
+    y = -0.02 if standing else -m.sy / 2
+    d = 0.03
+    m.box("metal", (-m.sx / 2, y, z0), (m.sx / 2, y + d, m.sz))
+    m.box("ceramic", (-m.sx / 2 + 0.03, y - 0.003, z0 + 0.03), (m.sx / 2 - 0.03, y, m.sz - 0.03), rounded=0.0)
+    m.box("metal", (-0.4 * m.sx, y - 0.06, z0 + 0.01), (0.4 * m.sx, y, z0 + 0.03))
+    for i, role in enumerate(("book_a", "book_b", "dark_plastic")):
+        m.cylinder(role, (-0.3 * m.sx + i * 0.05, y - 0.03, z0 + 0.04), (-0.3 * m.sx + i * 0.05 + 0.11, y - 0.03, z0 + 0.04), 0.008,
+                   fraction=0.3)
+    if standing:
+        for s in (-1, 1):
+            x = s * (m.sx / 2 - 0.03)
+            m.box("metal", (x - 0.02, y + d, 0.05), (x + 0.02, y + d + 0.03, m.sz))
+            m.box("metal", (x - 0.03, -m.sy / 2, 0.03), (x + 0.03, m.sy / 2, 0.07))
+            for yy in (-m.sy / 2 + 0.03, m.sy / 2 - 0.03):
+                m.ball("rubber", (x, yy, 0.03), (0.03, 0.03, 0.03), fraction=0.4)
+
+
+def generic(m: Model) -> None:
+    m.main = "plastic"
+    base = 0.08 * m.sz
+    m.box("dark_plastic", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, base))
+    m.box("plastic", (-0.46 * m.sx, -0.46 * m.sy, base), (0.46 * m.sx, 0.46 * m.sy, m.sz),
+          rounded=max(0.06 * min(m.sx, m.sy, m.sz), 0.01))
+    m.box("accent", (-0.3 * m.sx, -0.47 * m.sy, 0.6 * m.sz), (0.3 * m.sx, -0.46 * m.sy, 0.7 * m.sz), rounded=0.0)
+
+
+SHAPES = {
+    "building": building, "house": house, "kiosk": kiosk, "market_stall": market_stall, "tower": tower,
+    "whiteboard": whiteboard, "generic": generic,
+}

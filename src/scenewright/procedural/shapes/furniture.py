@@ -1,0 +1,367 @@
+"""Furniture: tables, seats, beds, storage, kitchen and bathroom pieces."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from scenewright.procedural.builder import Model
+
+
+def table(m: Model) -> None:
+    t = m.thick(0.04, 0.2 * m.sz)
+    leg = m.thick(0.03)
+    m.box("wood", (-m.sx / 2, -m.sy / 2, m.sz - t), (m.sx / 2, m.sy / 2, m.sz))
+    apron = min(0.1, 0.15 * m.sz)
+    inset = 0.04 * min(m.sx, m.sy)
+    m.box("wood", (-m.sx / 2 + inset, -m.sy / 2 + inset, m.sz - t - apron), (m.sx / 2 - inset, m.sy / 2 - inset, m.sz - t))
+    m.legs("wood", inset, 0, m.sz - t, leg, square=not m.has("round leg"))
+
+
+def round_table(m: Model) -> None:
+    t = m.thick(0.04, 0.2 * m.sz)
+    m.lathe("wood", [(0.5, m.sz - t), (0.5, m.sz)], scale=(m.sx, m.sy))
+    r = m.thick(0.05, 0.12 * min(m.sx, m.sy))
+    m.post("wood", 0, 0, 0, m.sz - t, r)
+    m.lathe("dark_wood", [(min(m.sx, m.sy) * 0.3, 0), (min(m.sx, m.sy) * 0.3, 0.03), (r, 0.06)])
+
+
+def coffee_table(m: Model) -> None:
+    t = m.thick(0.035, 0.25 * m.sz)
+    m.box("wood", (-m.sx / 2, -m.sy / 2, m.sz - t), (m.sx / 2, m.sy / 2, m.sz))
+    inset = 0.05 * min(m.sx, m.sy)
+    shelf = 0.25 * m.sz
+    m.box("dark_wood", (-m.sx / 2 + inset, -m.sy / 2 + inset, shelf), (m.sx / 2 - inset, m.sy / 2 - inset, shelf + t * 0.7))
+    m.legs("wood", inset * 0.5, 0, m.sz - t, m.thick(0.025), square=True)
+
+
+def desk(m: Model) -> None:
+    t = m.thick(0.035, 0.15 * m.sz)
+    top = m.sz - t
+    m.box("wood", (-m.sx / 2, -m.sy / 2, top), (m.sx / 2, m.sy / 2, m.sz))
+    ped = 0.32 * m.sx
+    x0 = m.sx / 2 - ped
+    m.box("wood", (x0, -m.sy / 2 + 0.02, 0), (m.sx / 2 - 0.01, m.sy / 2 - 0.02, top))
+    drawers = 3
+    h = top / drawers
+    for i in range(drawers):
+        z0 = i * h + 0.01
+        m.box("dark_wood", (x0 + 0.015, -m.sy / 2, z0 + 0.01), (m.sx / 2 - 0.025, -m.sy / 2 + 0.02, z0 + h - 0.02))
+        m.box("metal", (x0 + ped * 0.35, -m.sy / 2 - 0.015, z0 + h * 0.5), (x0 + ped * 0.6, -m.sy / 2, z0 + h * 0.5 + 0.015))
+    leg = m.thick(0.025)
+    for y in (-m.sy / 2 + 0.04, m.sy / 2 - 0.04):
+        m.box("wood", (-m.sx / 2 + 0.02, y - leg, 0), (-m.sx / 2 + 0.02 + 2 * leg, y + leg, top))
+    m.box("wood", (-m.sx / 2 + 0.03, m.sy / 2 - 0.05, top * 0.35), (x0, m.sy / 2 - 0.03, top))
+
+
+def _chair_frame(m: Model, seat_z: float, seat_t: float, back_role: str = "wood") -> None:
+    leg = m.thick(0.022, 0.12 * min(m.sx, m.sy))
+    m.legs("wood", 0.02 * m.sx, 0, seat_z, leg, square=True)
+    hx = m.sx / 2 - 0.02 * m.sx - leg
+    yb = m.sy / 2 - leg
+    for x in (-hx, hx):
+        m.box("wood", (x - leg, yb - leg, seat_z), (x + leg, yb + leg, m.sz))
+    m.box(back_role, (-hx, yb - leg * 0.8, seat_z + 0.45 * (m.sz - seat_z)), (hx, yb + leg * 0.8, m.sz - 0.02 * m.sz))
+    m.box("wood", (-hx, yb - leg * 0.6, seat_z + 0.15 * (m.sz - seat_z)), (hx, yb + leg * 0.6, seat_z + 0.25 * (m.sz - seat_z)))
+
+
+def chair(m: Model) -> None:
+    seat_z = min(0.46, 0.5 * m.sz)
+    t = m.thick(0.04, 0.1 * m.sz)
+    m.box("wood", (-m.sx / 2, -m.sy / 2, seat_z - t), (m.sx / 2, m.sy / 2, seat_z))
+    m.box("cushion", (-m.sx / 2 + 0.03, -m.sy / 2 + 0.02, seat_z), (m.sx / 2 - 0.03, m.sy / 2 - 0.08, seat_z + t * 0.8))
+    _chair_frame(m, seat_z, t)
+
+
+def armchair(m: Model) -> None:
+    m.main = "fabric"
+    leg_h = 0.1 * m.sz
+    arm = m.thick(0.15, 0.22 * m.sx)
+    seat_z = 0.45 * m.sz
+    back_t = 0.22 * m.sy
+    m.box("fabric", (-m.sx / 2, -m.sy / 2, leg_h), (m.sx / 2, m.sy / 2, seat_z - 0.1 * m.sz))
+    m.box("cushion", (-m.sx / 2 + arm, -m.sy / 2, seat_z - 0.1 * m.sz), (m.sx / 2 - arm, m.sy / 2 - back_t, seat_z))
+    m.box("fabric", (-m.sx / 2, m.sy / 2 - back_t, leg_h), (m.sx / 2, m.sy / 2, m.sz))
+    for s in (-1, 1):
+        x0, x1 = sorted((s * m.sx / 2, s * (m.sx / 2 - arm)))
+        m.box("fabric", (x0, -m.sy / 2, leg_h), (x1, m.sy / 2 - back_t * 0.5, 0.68 * m.sz))
+    m.legs("dark_wood", 0.04, 0, leg_h + 0.01, m.thick(0.025))
+
+
+def office_chair(m: Model) -> None:
+    m.main = "fabric"
+    r = min(m.sx, m.sy) / 2
+    caster = 0.05 * m.sz
+    for k in range(5):
+        a = 2 * np.pi * k / 5 - np.pi / 2
+        end = np.array([np.cos(a) * (r - caster), np.sin(a) * (r - caster), caster * 1.6])
+        m.beam("dark_plastic", (0, 0, caster * 1.9), end, m.thick(0.04, 0.2 * r), m.thick(0.03, 0.2 * r))
+        m.ball("rubber", (end[0], end[1], caster), (caster, caster, caster), fraction=0.5)
+    seat_z = 0.47 * m.sz
+    m.post("chrome", 0, 0, caster * 1.5, seat_z - 0.05, m.thick(0.025, 0.1 * r))
+    m.box("dark_plastic", (-0.4 * m.sx, -0.4 * m.sy, seat_z - 0.05), (0.4 * m.sx, 0.35 * m.sy, seat_z - 0.02))
+    m.box("fabric", (-0.45 * m.sx, -0.45 * m.sy, seat_z - 0.02), (0.45 * m.sx, 0.38 * m.sy, seat_z + 0.06))
+    back_y = 0.42 * m.sy
+    m.beam("dark_plastic", (0, 0.3 * m.sy, seat_z), (0, back_y, seat_z + 0.15 * m.sz), 0.06, 0.03)
+    m.box("fabric", (-0.4 * m.sx, back_y - 0.04, seat_z + 0.12 * m.sz), (0.4 * m.sx, m.sy / 2, m.sz))
+    for s in (-1, 1):
+        x = s * 0.44 * m.sx
+        m.box("dark_plastic", (x - 0.02, -0.1 * m.sy, seat_z + 0.05), (x + 0.02, 0.0, seat_z + 0.2))
+        m.box("dark_plastic", (x - 0.03, -0.3 * m.sy, seat_z + 0.2), (x + 0.03, 0.15 * m.sy, seat_z + 0.23))
+
+
+def stool(m: Model) -> None:
+    t = m.thick(0.04, 0.15 * m.sz)
+    m.lathe("wood", [(0.5, m.sz - t), (0.5, m.sz - 0.3 * t), (0.45, m.sz)], scale=(m.sx, m.sy))
+    leg = m.thick(0.02, 0.08 * min(m.sx, m.sy))
+    for k in range(4):
+        a = np.pi / 4 + k * np.pi / 2
+        top = np.array([np.cos(a) * 0.3 * m.sx, np.sin(a) * 0.3 * m.sy, m.sz - t])
+        foot = np.array([np.cos(a) * (0.5 * m.sx - leg), np.sin(a) * (0.5 * m.sy - leg), 0])
+        m.cylinder("wood", foot, top, leg, leg, fraction=0.5)
+    ring = 0.33 * m.sz
+    m.torus("metal", (0, 0, ring), 0.39 * min(m.sx, m.sy), leg * 0.6, fraction=1.0)
+
+
+def sofa(m: Model) -> None:
+    m.main = "fabric"
+    leg_h = 0.08 * m.sz
+    arm = m.thick(0.18, 0.15 * m.sx)
+    back_t = 0.22 * m.sy
+    base_top = 0.4 * m.sz
+    m.box("fabric", (-m.sx / 2, -m.sy / 2, leg_h), (m.sx / 2, m.sy / 2, base_top))
+    m.box("fabric", (-m.sx / 2, m.sy / 2 - back_t, base_top), (m.sx / 2, m.sy / 2, m.sz))
+    for s in (-1, 1):
+        x0, x1 = sorted((s * m.sx / 2, s * (m.sx / 2 - arm)))
+        m.box("fabric", (x0, -m.sy / 2, base_top), (x1, m.sy / 2 - back_t, 0.65 * m.sz))
+    inner = m.sx - 2 * arm
+    count = max(1, min(4, int(round(inner / 0.7))))
+    w = inner / count
+    for i in range(count):
+        x0 = -m.sx / 2 + arm + i * w
+        m.box("cushion", (x0 + 0.01, -m.sy / 2 + 0.02, base_top), (x0 + w - 0.01, m.sy / 2 - back_t, base_top + 0.13 * m.sz))
+        m.box("cushion", (x0 + 0.02, m.sy / 2 - back_t - 0.14 * m.sy, base_top + 0.13 * m.sz),
+              (x0 + w - 0.02, m.sy / 2 - back_t, 0.92 * m.sz))
+    m.legs("dark_wood", 0.05, 0, leg_h + 0.01, m.thick(0.025))
+
+
+def bench(m: Model) -> None:
+    outdoor = m.sy > 0.5 or m.has("park", "garden", "outdoor")
+    seat_z = min(0.45, 0.5 * m.sz) if outdoor and m.sz > 0.6 else m.sz
+    depth = m.sy * (0.7 if outdoor and m.sz > 0.6 else 1.0)
+    slats = 4
+    gap = 0.015
+    w = (depth - gap * (slats - 1)) / slats
+    t = m.thick(0.035, 0.2 * seat_z)
+    for i in range(slats):
+        y0 = -m.sy / 2 + i * (w + gap)
+        m.box("wood", (-m.sx / 2, y0, seat_z - t), (m.sx / 2, y0 + w, seat_z))
+    frame = m.thick(0.05, 0.15 * m.sx)
+    for x in (-m.sx / 2 + 0.1 * m.sx, m.sx / 2 - 0.1 * m.sx - frame):
+        m.box("dark_metal", (x, -m.sy / 2 + 0.02, 0), (x + frame, -m.sy / 2 + 0.02 + frame, seat_z - t))
+        m.box("dark_metal", (x, depth - m.sy / 2 - frame - 0.02, 0), (x + frame, depth - m.sy / 2 - 0.02, seat_z - t))
+        m.box("dark_metal", (x, -m.sy / 2 + 0.02, seat_z - t - frame), (x + frame, depth - m.sy / 2 - 0.02, seat_z - t))
+        if seat_z < m.sz:
+            m.beam("dark_metal", (x + frame / 2, depth - m.sy / 2 - 0.05, seat_z - t), (x + frame / 2, m.sy / 2 - frame / 2, m.sz),
+                   frame, frame)
+    if seat_z < m.sz:
+        for k in range(3):
+            z0 = seat_z + 0.1 + k * (m.sz - seat_z - 0.1) / 3
+            frac = (z0 - seat_z) / (m.sz - seat_z)
+            y = depth - m.sy / 2 + frac * (m.sy - depth) - 0.01
+            m.box("wood", (-m.sx / 2, y - 0.02, z0), (m.sx / 2, y + 0.02, z0 + (m.sz - seat_z) / 3 - 0.03))
+
+
+def bed(m: Model) -> None:
+    m.main = "fabric"
+    frame_top = 0.3 * m.sz
+    head_t = 0.06 * m.sy
+    m.box("wood", (-m.sx / 2, -m.sy / 2, 0.05 * m.sz), (m.sx / 2, m.sy / 2 - head_t, frame_top))
+    m.legs("wood", 0.0, 0, 0.06 * m.sz, m.thick(0.04))
+    m.box("wood", (-m.sx / 2, m.sy / 2 - head_t, 0), (m.sx / 2, m.sy / 2, m.sz))
+    m.box("wood", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, -m.sy / 2 + head_t * 0.7, 0.42 * m.sz))
+    mattress_top = 0.52 * m.sz
+    m.box("canvas_alt", (-m.sx / 2 + 0.03, -m.sy / 2 + head_t, frame_top), (m.sx / 2 - 0.03, m.sy / 2 - head_t, mattress_top))
+    m.box("fabric", (-m.sx / 2 + 0.01, -m.sy / 2 + head_t * 0.8, mattress_top - 0.12 * m.sz),
+          (m.sx / 2 - 0.01, m.sy / 2 - head_t - 0.3 * m.sy, mattress_top + 0.03 * m.sz))
+    pillows = 2 if m.sx > 1.2 else 1
+    pw = (m.sx - 0.2) / pillows
+    for i in range(pillows):
+        x0 = -m.sx / 2 + 0.1 + i * pw
+        m.box("cushion", (x0 + 0.03, m.sy / 2 - head_t - 0.28 * m.sy, mattress_top),
+              (x0 + pw - 0.03, m.sy / 2 - head_t - 0.03, mattress_top + 0.1 * m.sz))
+
+
+def _books_row(m: Model, x0: float, x1: float, y0: float, y1: float, z: float, height: float) -> None:
+    x = x0
+    roles = ("book_a", "book_b", "book_c", "paper")
+    while x < x1 - 0.02:
+        w = min(m.vary(0.02, 0.05), x1 - x)
+        h = height * m.vary(0.65, 0.95)
+        m.box(roles[int(m.rng.integers(4))], (x, y0 + m.vary(0, 0.03) * (y1 - y0), z), (x + w - 0.003, y1, z + h), rounded=0.0)
+        x += w + (m.vary(0.05, 0.15) if m.rng.random() < 0.08 else 0.0)
+
+
+def bookshelf(m: Model) -> None:
+    side = m.thick(0.025, 0.1 * m.sx)
+    m.box("wood", (-m.sx / 2, -m.sy / 2, 0), (-m.sx / 2 + side, m.sy / 2, m.sz))
+    m.box("wood", (m.sx / 2 - side, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, m.sz))
+    m.box("dark_wood", (-m.sx / 2 + side, m.sy / 2 - 0.015, 0), (m.sx / 2 - side, m.sy / 2, m.sz))
+    shelves = max(2, int(round(m.sz / 0.38)))
+    pitch = (m.sz - side) / shelves
+    for i in range(shelves + 1):
+        z = i * pitch
+        m.box("wood", (-m.sx / 2 + side, -m.sy / 2, z), (m.sx / 2 - side, m.sy / 2 - 0.015, z + side))
+        if i < shelves:
+            _books_row(m, -m.sx / 2 + side, m.sx / 2 - side, -m.sy / 2 + 0.03, m.sy / 2 - 0.02, z + side,
+                       pitch - side - 0.02)
+
+
+def _doors(m: Model, x0, x1, z0, z1, count: int, y: float, knob_role: str = "metal") -> None:
+    w = (x1 - x0) / count
+    for i in range(count):
+        a, b = x0 + i * w + 0.004, x0 + (i + 1) * w - 0.004
+        m.box("wood", (a, y - 0.018, z0), (b, y, z1))
+        hx = b - 0.05 if i % 2 == 0 else a + 0.05
+        if count == 1:
+            hx = b - 0.05
+        m.box(knob_role, (hx - 0.01, y - 0.04, z0 + 0.45 * (z1 - z0)), (hx + 0.01, y - 0.018, z0 + 0.45 * (z1 - z0) + min(0.15, 0.3 * (z1 - z0))))
+
+
+def cabinet(m: Model) -> None:
+    plinth = 0.06 * m.sz
+    m.box("dark_wood", (-m.sx / 2 + 0.03, -m.sy / 2 + 0.03, 0), (m.sx / 2 - 0.03, m.sy / 2, plinth))
+    m.box("wood", (-m.sx / 2, -m.sy / 2 + 0.02, plinth), (m.sx / 2, m.sy / 2, m.sz - 0.03))
+    m.box("wood", (-m.sx / 2, -m.sy / 2, m.sz - 0.03), (m.sx / 2, m.sy / 2, m.sz))
+    _doors(m, -m.sx / 2 + 0.02, m.sx / 2 - 0.02, plinth + 0.02, m.sz - 0.05, 2 if m.sx > 0.6 else 1, -m.sy / 2 + 0.02)
+
+
+def wardrobe(m: Model) -> None:
+    m.box("wood", (-m.sx / 2 + 0.01, -m.sy / 2 + 0.03, 0.05), (m.sx / 2 - 0.01, m.sy / 2, m.sz - 0.06))
+    m.box("dark_wood", (-m.sx / 2 + 0.03, -m.sy / 2 + 0.05, 0), (m.sx / 2 - 0.03, m.sy / 2 - 0.02, 0.05))
+    m.box("dark_wood", (-m.sx / 2, -m.sy / 2, m.sz - 0.06), (m.sx / 2, m.sy / 2, m.sz))
+    _doors(m, -m.sx / 2 + 0.02, m.sx / 2 - 0.02, 0.08, m.sz - 0.09, 3 if m.sx > 1.5 else 2, -m.sy / 2 + 0.03)
+
+
+def nightstand(m: Model) -> None:
+    leg_h = 0.12 * m.sz
+    m.legs("wood", 0.01, 0, leg_h, m.thick(0.018), square=True)
+    m.box("wood", (-m.sx / 2, -m.sy / 2 + 0.02, leg_h), (m.sx / 2, m.sy / 2, m.sz))
+    h = (m.sz - leg_h - 0.04) / 2
+    for i in range(2):
+        z0 = leg_h + 0.02 + i * h
+        m.box("dark_wood", (-m.sx / 2 + 0.02, -m.sy / 2, z0 + 0.01), (m.sx / 2 - 0.02, -m.sy / 2 + 0.02, z0 + h - 0.01))
+        m.ball("brass", (0, -m.sy / 2 - 0.005, z0 + h / 2), (0.015, 0.015, 0.015), fraction=0.4)
+
+
+def counter(m: Model) -> None:
+    top_t = m.thick(0.04, 0.08 * m.sz)
+    m.box("dark_wood", (-m.sx / 2 + 0.02, -m.sy / 2 + 0.08, 0), (m.sx / 2 - 0.02, m.sy / 2, 0.1))
+    m.box("wood", (-m.sx / 2 + 0.02, -m.sy / 2 + 0.04, 0.1), (m.sx / 2 - 0.02, m.sy / 2, m.sz - top_t))
+    m.box("marble", (-m.sx / 2, -m.sy / 2, m.sz - top_t), (m.sx / 2, m.sy / 2, m.sz))
+    _doors(m, -m.sx / 2 + 0.03, m.sx / 2 - 0.03, 0.12, m.sz - top_t - 0.02, max(1, int(round(m.sx / 0.5))), -m.sy / 2 + 0.04)
+
+
+def bathtub(m: Model) -> None:
+    m.main = "ceramic"
+    wall = m.thick(0.07, 0.2 * min(m.sx, m.sy))
+    feet = m.has("claw", "vintage", "victorian") or m.style.name == "steampunk"
+    z0 = 0.12 * m.sz if feet else 0.0
+    m.box("ceramic", (-m.sx / 2, -m.sy / 2, z0), (m.sx / 2, m.sy / 2, z0 + 0.12 * m.sz))
+    for lo, hi in (((-m.sx / 2, -m.sy / 2), (-m.sx / 2 + wall, m.sy / 2)), ((m.sx / 2 - wall, -m.sy / 2), (m.sx / 2, m.sy / 2)),
+                   ((-m.sx / 2, -m.sy / 2), (m.sx / 2, -m.sy / 2 + wall)), ((-m.sx / 2, m.sy / 2 - wall), (m.sx / 2, m.sy / 2))):
+        m.box("ceramic", (*lo, z0), (*hi, m.sz))
+    m.box("water", (-m.sx / 2 + wall, -m.sy / 2 + wall, z0 + 0.12 * m.sz), (m.sx / 2 - wall, m.sy / 2 - wall, 0.7 * m.sz), rounded=0.0)
+    if feet:
+        m.legs("brass", 0.08, 0, z0 + 0.02, m.thick(0.04))
+    m.post("chrome", 0, m.sy / 2 - wall / 2, m.sz, m.sz + 0.01, 0.02)
+    m.beam("chrome", (0, m.sy / 2 - wall / 2, m.sz - 0.005), (0, m.sy / 2 - wall - 0.08, m.sz - 0.005), 0.03, 0.03)
+
+
+def toilet(m: Model) -> None:
+    m.main = "ceramic"
+    tank_d = 0.25 * m.sy
+    seat_z = 0.55 * m.sz
+    bowl_y = -m.sy / 2 + 0.38 * (m.sy - tank_d)
+    r = min(m.sx / 2, 0.38 * (m.sy - tank_d))
+    h = seat_z - 0.03
+    m.lathe("ceramic", [(0.55, 0), (0.5, 0.3 * h), (0.75, 0.85 * h), (1.0, h)], centre=(0, bowl_y, 0), scale=(r * 0.95, r * 1.1))
+    m.torus("plastic", (0, bowl_y, seat_z - 0.02), r * 0.8, 0.025)
+    m.box("ceramic", (-0.45 * m.sx, -m.sy / 2 + (m.sy - tank_d) * 0.75, 0), (0.45 * m.sx, m.sy / 2 - tank_d * 0.6, seat_z))
+    m.box("ceramic", (-m.sx / 2, m.sy / 2 - tank_d, seat_z), (m.sx / 2, m.sy / 2, m.sz - 0.03))
+    m.box("ceramic", (-m.sx / 2 - 0.005, m.sy / 2 - tank_d - 0.01, m.sz - 0.03), (m.sx / 2 + 0.005, m.sy / 2, m.sz))
+    m.box("chrome", (0.25 * m.sx, m.sy / 2 - tank_d - 0.02, m.sz - 0.1), (0.38 * m.sx, m.sy / 2 - tank_d, m.sz - 0.08))
+
+
+def sink(m: Model) -> None:
+    m.main = "ceramic"
+    basin_h = min(0.2, 0.3 * m.sz)
+    top = m.sz - 0.12 * m.sz if m.sz > 0.5 else m.sz - 0.25 * m.sz
+    if m.sz > 0.5:
+        m.box("wood", (-m.sx / 2 + 0.02, -m.sy / 2 + 0.03, 0), (m.sx / 2 - 0.02, m.sy / 2, top - basin_h))
+        _doors(m, -m.sx / 2 + 0.03, m.sx / 2 - 0.03, 0.05, top - basin_h - 0.03, 2, -m.sy / 2 + 0.03)
+    m.box("ceramic", (-m.sx / 2, -m.sy / 2, top - basin_h), (m.sx / 2, m.sy / 2, top))
+    m.lathe("water", [(0.5, top), (0.45, top + 0.002)], centre=(0, -0.05 * m.sy, 0), scale=(0.7 * m.sx, 0.6 * m.sy))
+    fy = m.sy / 2 - 0.08 * m.sy
+    m.post("chrome", 0, fy, top, m.sz, 0.02)
+    m.beam("chrome", (0, fy, m.sz - 0.02), (0, fy - 0.25 * m.sy, m.sz - 0.02), 0.025)
+    for x in (-0.12, 0.12):
+        m.post("chrome", x * m.sx, fy, top, top + 0.05, 0.02)
+
+
+def stove(m: Model) -> None:
+    m.main = "metal"
+    back = min(0.15, 0.15 * m.sz)
+    top = m.sz - back
+    m.box("metal", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, top))
+    m.box("metal", (-m.sx / 2, m.sy / 2 - 0.06, top), (m.sx / 2, m.sy / 2, m.sz))
+    m.box("dark_plastic", (-m.sx / 2 + 0.02, -m.sy / 2 + 0.02, top), (m.sx / 2 - 0.02, m.sy / 2 - 0.07, top + 0.01), rounded=0.0)
+    for ix in (-1, 1):
+        for iy in (-1, 1):
+            c = (ix * m.sx / 4, iy * (m.sy - 0.1) / 4 - 0.03, top + 0.012)
+            m.torus("dark_metal", c, 0.07 * min(m.sx, m.sy) + 0.02, 0.01)
+    m.box("glass", (-m.sx / 2 + 0.08, -m.sy / 2 - 0.01, 0.15 * top), (m.sx / 2 - 0.08, -m.sy / 2, 0.65 * top), rounded=0.0)
+    m.beam("chrome", (-m.sx / 2 + 0.1, -m.sy / 2 - 0.04, 0.72 * top), (m.sx / 2 - 0.1, -m.sy / 2 - 0.04, 0.72 * top), 0.02)
+    for i in range(4):
+        x = -m.sx / 2 + (i + 0.5) * m.sx / 4
+        m.cylinder("dark_plastic", (x, -m.sy / 2, 0.87 * top), (x, -m.sy / 2 - 0.03, 0.87 * top), 0.022, fraction=0.5)
+    m.box("screen", (-0.15 * m.sx, m.sy / 2 - 0.065, top + 0.04), (0.15 * m.sx, m.sy / 2 - 0.06, m.sz - 0.03), rounded=0.0)
+
+
+def fridge(m: Model) -> None:
+    m.main = "metal"
+    m.box("metal", (-m.sx / 2, -m.sy / 2 + 0.04, 0), (m.sx / 2, m.sy / 2, m.sz))
+    split = 0.68 * m.sz
+    m.box("metal", (-m.sx / 2 + 0.005, -m.sy / 2 + 0.01, 0.05), (m.sx / 2 - 0.005, -m.sy / 2 + 0.045, split - 0.01))
+    m.box("metal", (-m.sx / 2 + 0.005, -m.sy / 2 + 0.01, split + 0.01), (m.sx / 2 - 0.005, -m.sy / 2 + 0.045, m.sz - 0.02))
+    x = m.sx / 2 - 0.08
+    m.beam("chrome", (x, -m.sy / 2 + 0.02, split - 0.45 * split), (x, -m.sy / 2 + 0.02, split - 0.1), 0.025, 0.04)
+    m.beam("chrome", (x, -m.sy / 2 + 0.02, split + 0.05), (x, -m.sy / 2 + 0.02, split + 0.22 * (m.sz - split) + 0.1), 0.025, 0.04)
+    m.box("dark_plastic", (-m.sx / 2 + 0.03, -m.sy / 2 + 0.05, 0), (m.sx / 2 - 0.03, m.sy / 2, 0.05))
+
+
+def piano(m: Model) -> None:
+    m.main = "lacquer"
+    key_y = -m.sy / 2 + 0.3 * m.sy
+    key_z = 0.55 * m.sz
+    m.box("lacquer", (-m.sx / 2, key_y, 0.05 * m.sz), (m.sx / 2, m.sy / 2, m.sz))
+    m.box("lacquer", (-m.sx / 2, -m.sy / 2, key_z - 0.04), (-m.sx / 2 + 0.05, key_y, key_z + 0.08))
+    m.box("lacquer", (m.sx / 2 - 0.05, -m.sy / 2, key_z - 0.04), (m.sx / 2, key_y, key_z + 0.08))
+    m.box("lacquer", (-m.sx / 2 + 0.05, -m.sy / 2 + 0.02, key_z - 0.05), (m.sx / 2 - 0.05, key_y, key_z - 0.01))
+    m.box("ceramic", (-m.sx / 2 + 0.05, -m.sy / 2 + 0.02, key_z - 0.01), (m.sx / 2 - 0.05, key_y, key_z + 0.015), rounded=0.0)
+    octave = (m.sx - 0.1) / 7
+    for o in range(7):
+        for k in (0.1, 0.25, 0.52, 0.66, 0.8):
+            x = -m.sx / 2 + 0.05 + (o + k) * octave
+            m.box("lacquer", (x, -m.sy / 2 + 0.1 * m.sy, key_z + 0.015), (x + 0.08 * octave, key_y, key_z + 0.03), rounded=0.0)
+    for x in (-m.sx / 2 + 0.06, m.sx / 2 - 0.1):
+        m.box("lacquer", (x, -m.sy / 2 + 0.02, 0), (x + 0.04, -m.sy / 2 + 0.08, key_z - 0.05))
+    m.box("brass", (-0.1 * m.sx, key_y - 0.1, 0.04 * m.sz), (0.1 * m.sx, key_y - 0.02, 0.07 * m.sz))
+    m.box("lacquer", (-m.sx / 2, key_y - 0.02, 0), (m.sx / 2, m.sy / 2, 0.05 * m.sz))
+
+
+SHAPES = {
+    "table": table, "round_table": round_table, "coffee_table": coffee_table, "desk": desk, "chair": chair,
+    "armchair": armchair, "office_chair": office_chair, "stool": stool, "sofa": sofa, "bench": bench, "bed": bed,
+    "bookshelf": bookshelf, "cabinet": cabinet, "wardrobe": wardrobe, "nightstand": nightstand, "counter": counter,
+    "bathtub": bathtub, "toilet": toilet, "sink": sink, "stove": stove, "fridge": fridge, "piano": piano,
+}

@@ -1,0 +1,360 @@
+"""Plants, rocks, water features, street furniture, play equipment and monuments."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from scenewright.procedural import parts as P
+from scenewright.procedural.builder import Model
+
+
+def tree(m: Model) -> None:
+    m.main = "leaf"
+    trunk_top = m.vary(0.35, 0.45) * m.sz
+    r = m.thick(0.06 * min(m.sx, m.sy), 0.12 * min(m.sx, m.sy))
+    m.lathe("bark", [(1.6 * r, 0), (r, 0.1 * m.sz), (0.8 * r, trunk_top + 0.15 * m.sz)])
+    canopy_h = m.sz - trunk_top
+    blobs = int(m.rng.integers(4, 7))
+    m.ball("leaf", (0, 0, trunk_top + 0.55 * canopy_h), (0.4 * m.sx, 0.4 * m.sy, 0.45 * canopy_h))
+    for _ in range(blobs):
+        a = m.vary(0, 2 * np.pi)
+        d = m.vary(0.15, 0.3)
+        s = m.vary(0.18, 0.26)
+        z = trunk_top + m.vary(0.3, 0.65) * canopy_h
+        m.ball("leaf", (np.cos(a) * d * m.sx, np.sin(a) * d * m.sy, z), (s * m.sx, s * m.sy, s * 1.2 * canopy_h), fraction=0.7)
+
+
+def pine_tree(m: Model) -> None:
+    m.main = "pine_leaf"
+    r = min(m.sx, m.sy) / 2
+    trunk = 0.18 * m.sz
+    m.post("bark", 0, 0, 0, trunk + 0.1 * m.sz, m.thick(0.08 * r, 0.2 * r))
+    tiers = 4 if m.sz > 3 else 3
+    span = m.sz - trunk
+    for i in range(tiers):
+        h = span * (0.45 - 0.06 * i)
+        z0 = trunk + span * i / (tiers + 0.6)
+        rr = r * (1.0 - 0.2 * i)
+        m.lathe("pine_leaf", [(rr, z0), (0, min(m.sz, z0 + h))], scale=(m.sx / (2 * r), m.sy / (2 * r)))
+    m.lathe("pine_leaf", [(0.3 * r, m.sz - 0.2 * span), (0, m.sz)])
+
+
+def palm_tree(m: Model) -> None:
+    m.main = "leaf"
+    top = 0.85 * m.sz
+    lean = m.vary(0.05, 0.15) * min(m.sx, m.sy)
+    r = m.thick(0.05 * min(m.sx, m.sy) + 0.05, 0.08 * min(m.sx, m.sy))
+    steps = 8
+    prev = np.array([0.0, 0.0, 0.0])
+    for i in range(1, steps + 1):
+        t = i / steps
+        cur = np.array([lean * t * t, 0.0, top * t])
+        m.cylinder("bark", prev, cur, r * (1.25 - 0.4 * (i - 1) / steps), r * (1.25 - 0.4 * i / steps), fraction=0.5)
+        prev = cur
+    crown = prev
+    fronds = int(m.rng.integers(7, 10))
+    for k in range(fronds):
+        a = 2 * np.pi * k / fronds + m.vary(-0.15, 0.15)
+        reach = np.array([np.cos(a) * m.sx / 2, np.sin(a) * m.sy / 2])
+        mid = crown + np.array([reach[0] * 0.5, reach[1] * 0.5, 0.12 * m.sz])
+        tip = np.array([reach[0], reach[1], crown[2] - m.vary(0.1, 0.3) * m.sz])
+        for a0, a1 in ((crown, mid), (mid, tip)):
+            centre = (a0 + a1) / 2
+            d = a1 - a0
+            length = float(np.linalg.norm(d))
+            leaf = P.sphere((0, 0, 0), (0.12 * length + 0.1, 0.02 * length + 0.01, length / 2), m.segments(0.5))
+            m.add("leaf", P.transform(leaf, P.affine(P.align_z(d), centre) @ P.affine(_spin(a), (0, 0, 0))))
+    for k in range(3):
+        a = 2 * np.pi * k / 3
+        m.ball("bark", crown + np.array([np.cos(a) * r, np.sin(a) * r, -0.02 * m.sz]), (0.8 * r, 0.8 * r, 0.8 * r), fraction=0.5)
+
+
+def _spin(a: float) -> np.ndarray:
+    c, s = np.cos(a), np.sin(a)
+    return np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+
+
+def bush(m: Model) -> None:
+    m.main = "leaf"
+    flowers = m.has("flower", "rose", "hydrangea", "blossom")
+    m.ball("leaf", (0, 0, 0.45 * m.sz), (0.4 * m.sx, 0.4 * m.sy, 0.45 * m.sz))
+    for _ in range(int(m.rng.integers(4, 7))):
+        a = m.vary(0, 2 * np.pi)
+        s = m.vary(0.2, 0.3)
+        c = (np.cos(a) * 0.25 * m.sx, np.sin(a) * 0.25 * m.sy, m.vary(0.3, 0.5) * m.sz)
+        m.ball("leaf", c, (s * m.sx, s * m.sy, min(c[2], 0.4 * m.sz)), fraction=0.7)
+        if flowers:
+            m.ball("flower", (c[0] * 1.5, c[1] * 1.5, c[2] + 0.1 * m.sz), (0.05 * m.sx,) * 2 + (0.05 * m.sz,), fraction=0.4)
+
+
+def flower_bed(m: Model) -> None:
+    m.main = "flower"
+    edge = m.thick(0.08, 0.15 * min(m.sx, m.sy))
+    wall_h = 0.35 * m.sz
+    for lo, hi in (((-m.sx / 2, -m.sy / 2), (m.sx / 2, -m.sy / 2 + edge)), ((-m.sx / 2, m.sy / 2 - edge), (m.sx / 2, m.sy / 2)),
+                   ((-m.sx / 2, -m.sy / 2 + edge), (-m.sx / 2 + edge, m.sy / 2 - edge)),
+                   ((m.sx / 2 - edge, -m.sy / 2 + edge), (m.sx / 2, m.sy / 2 - edge))):
+        m.box("stone", (*lo, 0), (*hi, wall_h))
+    m.box("soil", (-m.sx / 2 + edge, -m.sy / 2 + edge, 0), (m.sx / 2 - edge, m.sy / 2 - edge, wall_h * 0.8), rounded=0.0)
+    nx = max(2, int((m.sx - 2 * edge) / 0.25))
+    ny = max(1, int((m.sy - 2 * edge) / 0.25))
+    fx = (m.sx - 2 * edge) / nx
+    fy = (m.sy - 2 * edge) / ny
+    for i in range(nx):
+        for j in range(ny):
+            x = -m.sx / 2 + edge + (i + 0.5) * fx + m.vary(-0.2, 0.2) * fx
+            y = -m.sy / 2 + edge + (j + 0.5) * fy + m.vary(-0.2, 0.2) * fy
+            top = m.sz * m.vary(0.75, 1.0)
+            s = 0.3 * min(fx, fy)
+            m.post("leaf", x, y, wall_h * 0.7, top - s, 0.01, fraction=0.25)
+            m.ball("flower" if (i + j) % 2 else "flower_alt", (x, y, top - s), (s, s, s), fraction=0.4)
+            m.ball("leaf", (x, y, wall_h * 0.9), (0.45 * fx, 0.45 * fy, 0.15 * m.sz), fraction=0.4)
+
+
+def rock(m: Model) -> None:
+    m.main = "stone"
+    part = P.sphere((0, 0, 0), (1, 1, 1), max(6, m.segments(0.45)))
+    d = part.vertices
+    waves = m.rng.normal(size=(5, 3))
+    phase = m.rng.uniform(0, 2 * np.pi, 5)
+    bump = 1 + 0.18 * np.sin(d @ waves.T * 2 + phase).sum(axis=1) / 2.2
+    verts = d * bump[:, None]
+    verts[:, 2] = np.maximum(verts[:, 2], -0.35)
+    m.add("stone", P.flatten(P.Part(verts, part.faces, part.normals)))
+
+
+def fountain(m: Model) -> None:
+    m.main = "stone"
+    r = 0.5
+    wall = 0.25 * m.sz
+    m.lathe("stone", [(r, 0), (r, wall), (r * 0.9, wall), (r * 0.9, 0.06 * m.sz), (0, 0.06 * m.sz)], scale=(m.sx, m.sy))
+    m.lathe("water", [(r * 0.9, 0.05 * m.sz), (r * 0.9, wall * 0.8)], scale=(m.sx, m.sy))
+    pr = 0.06 * min(m.sx, m.sy)
+    m.lathe("stone", [(pr * 1.6, 0.05 * m.sz), (pr, 0.15 * m.sz), (pr, 0.55 * m.sz), (pr * 1.2, 0.6 * m.sz)])
+    m.lathe("stone", [(0.1, 0.58 * m.sz), (0.3, 0.68 * m.sz), (0.28, 0.7 * m.sz)], scale=(m.sx, m.sy))
+    m.lathe("water", [(0.27, 0.69 * m.sz), (0.27, 0.7 * m.sz)], scale=(m.sx, m.sy))
+    m.lathe("stone", [(pr * 0.8, 0.68 * m.sz), (pr * 0.6, 0.85 * m.sz), (pr, 0.88 * m.sz), (pr * 0.3, 0.93 * m.sz)])
+    m.lathe("water", [(pr * 0.5, 0.9 * m.sz), (pr * 0.35, m.sz)], fraction=0.5)
+
+
+def statue(m: Model) -> None:
+    m.main = "stone"
+    plinth = 0.25 * m.sz
+    m.box("stone", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, plinth * 0.85))
+    m.box("stone", (-0.45 * m.sx, -0.45 * m.sy, plinth * 0.85), (0.45 * m.sx, 0.45 * m.sy, plinth))
+    h = m.sz - plinth
+    w = min(0.35 * m.sx, 0.25 * h)
+    role = "brass" if m.has("bronze", "brass", "golden") else "marble"
+    for s in (-1, 1):
+        m.cylinder(role, (s * 0.35 * w, 0, plinth), (s * 0.3 * w, 0, plinth + 0.47 * h), 0.16 * w, 0.2 * w, fraction=0.6)
+    m.lathe(role, [(0.4 * w, plinth + 0.45 * h), (0.55 * w, plinth + 0.6 * h), (0.62 * w, plinth + 0.8 * h),
+                   (0.25 * w, plinth + 0.84 * h)], scale=(1, 0.6))
+    m.ball(role, (0, 0, plinth + 0.91 * h), (0.2 * w, 0.22 * w, 0.09 * h))
+    m.cylinder(role, (0.6 * w, 0, plinth + 0.8 * h), (0.8 * w, -0.1 * w, plinth + 0.5 * h), 0.1 * w, fraction=0.5)
+    m.cylinder(role, (-0.6 * w, 0, plinth + 0.8 * h), (-0.9 * w, -0.1 * w, plinth + h), 0.1 * w, fraction=0.5)
+
+
+def lamp_post(m: Model) -> None:
+    m.main = "dark_metal"
+    r = min(m.sx, m.sy) / 2
+    m.lathe("dark_metal", [(0.6 * r, 0), (0.6 * r, 0.05 * m.sz), (0.25 * r, 0.12 * m.sz)])
+    m.post("dark_metal", 0, 0, 0.1 * m.sz, 0.86 * m.sz, m.thick(0.1 * r, 0.2 * r))
+    lz = 0.86 * m.sz
+    lh = 0.1 * m.sz
+    m.lathe("dark_metal", [(0.25 * r, lz - 0.01), (0.4 * r, lz)], fraction=0.5)
+    m.lathe("light", [(0.35 * r, lz), (0.5 * r, lz + lh)], fraction=0.5)
+    m.lathe("dark_metal", [(0.75 * r, lz + lh), (0.1 * r, m.sz - 0.02 * m.sz), (0.05 * r, m.sz)], fraction=0.5)
+    for s in (-1, 1):
+        m.beam("dark_metal", (0, 0, 0.72 * m.sz), (s * r * 0.9, 0, 0.8 * m.sz), 0.05 * r)
+        m.ball("light", (s * r * 0.9, 0, 0.79 * m.sz), (0.1 * r, 0.1 * r, 0.1 * r), fraction=0.4)
+
+
+def sign(m: Model) -> None:
+    m.main = "paint"
+    board_z = 0.55 * m.sz
+    post = m.thick(0.05, 0.12 * m.sx)
+    m.box("canvas_alt", (-m.sx / 2, -0.3 * m.sy, board_z), (m.sx / 2, 0.2 * m.sy, m.sz))
+    m.box("paint", (-m.sx / 2 + 0.04 * m.sx, -0.3 * m.sy - 0.005, board_z + 0.6 * (m.sz - board_z)),
+          (m.sx / 2 - 0.04 * m.sx, -0.3 * m.sy, board_z + 0.8 * (m.sz - board_z)), rounded=0.0)
+    m.box("accent", (-m.sx / 2 + 0.1 * m.sx, -0.3 * m.sy - 0.005, board_z + 0.2 * (m.sz - board_z)),
+          (m.sx / 2 - 0.3 * m.sx, -0.3 * m.sy, board_z + 0.4 * (m.sz - board_z)), rounded=0.0)
+    for x in (-0.35 * m.sx, 0.35 * m.sx):
+        m.box("dark_metal", (x - post / 2, 0.2 * m.sy, 0), (x + post / 2, 0.2 * m.sy + post, m.sz - 0.02))
+    m.box("concrete", (-m.sx / 2, -m.sy / 2, 0), (-0.2 * m.sx, m.sy / 2, 0.03), rounded=0.0)
+    m.box("concrete", (0.2 * m.sx, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, 0.03), rounded=0.0)
+
+
+def fence(m: Model) -> None:
+    post = m.thick(0.08, 0.4 * m.sy)
+    count = max(2, int(round(m.sx / 1.5)) + 1)
+    xs = np.linspace(-m.sx / 2 + post / 2, m.sx / 2 - post / 2, count)
+    for x in xs:
+        m.box("wood", (x - post / 2, -post / 2, 0), (x + post / 2, post / 2, m.sz))
+    for z in (0.3 * m.sz, 0.75 * m.sz):
+        m.box("wood", (-m.sx / 2, -m.sy / 2, z), (m.sx / 2, -m.sy / 2 + 0.35 * m.sy, z + 0.06 * m.sz))
+    picket = 0.08
+    n = int(m.sx / (picket * 1.8))
+    for i in range(n):
+        x = -m.sx / 2 + (i + 0.5) * m.sx / n
+        m.extrude("wood", [(x - picket / 2, 0.05 * m.sz), (x + picket / 2, 0.05 * m.sz), (x + picket / 2, 0.9 * m.sz),
+                           (x, 0.95 * m.sz), (x - picket / 2, 0.9 * m.sz)], "y", m.sy / 2 - 0.35 * m.sy, m.sy / 2)
+
+
+def arch(m: Model) -> None:
+    if m.has("torii", "shrine", "japanese"):
+        _torii(m)
+        return
+    m.main = "stone"
+    pillar = m.thick(0.15 * m.sx, 0.3 * m.sx)
+    span = m.sx - 2 * pillar
+    r = span / 2 + pillar / 2
+    spring = max(0.1 * m.sz, m.sz - r - pillar / 2)
+    for s in (-1, 1):
+        x0, x1 = sorted((s * m.sx / 2, s * (m.sx / 2 - pillar)))
+        m.box("stone", (x0, -m.sy / 2, 0), (x1, m.sy / 2, spring))
+    ring = P.torus(r, pillar / 2, m.segments(1.0), 8, np.pi)
+    ring = P.transform(ring, P.affine(np.diag([1.0, 1.0, m.sy / pillar]), (0, 0, 0)))
+    m.add("stone", P.transform(ring, P.affine(np.array([[1, 0, 0], [0, 0, 1], [0, 1, 0]], float), (0, 0, spring))))
+    m.box("stone", (-0.06 * m.sx, -m.sy / 2 - 0.01, m.sz - pillar * 0.6), (0.06 * m.sx, m.sy / 2 + 0.01, m.sz))
+
+
+def _torii(m: Model) -> None:
+    m.main = "paint"
+    r = m.thick(0.05 * m.sx, 0.1 * m.sx)
+    for s in (-1, 1):
+        m.post("paint", s * 0.36 * m.sx, 0, 0.06 * m.sz, 0.88 * m.sz, r)
+        m.lathe("dark_metal", [(1.3 * r, 0), (1.3 * r, 0.06 * m.sz)], centre=(s * 0.36 * m.sx, 0, 0))
+    m.box("paint", (-0.45 * m.sx, -0.5 * r, 0.7 * m.sz), (0.45 * m.sx, 0.5 * r, 0.76 * m.sz))
+    m.extrude("lacquer", [(-m.sx / 2, 0.93 * m.sz), (-0.4 * m.sx, 0.88 * m.sz), (0.4 * m.sx, 0.88 * m.sz),
+                          (m.sx / 2, 0.93 * m.sz), (m.sx / 2, m.sz), (-m.sx / 2, m.sz)], "y", -m.sy / 2, m.sy / 2)
+    m.box("paint", (-0.47 * m.sx, -0.4 * m.sy, 0.84 * m.sz), (0.47 * m.sx, 0.4 * m.sy, 0.89 * m.sz))
+
+
+def bollard(m: Model) -> None:
+    m.main = "dark_metal"
+    r = min(m.sx, m.sy) / 2
+    m.lathe("dark_metal", [(r, 0), (r, 0.05 * m.sz), (0.8 * r, 0.08 * m.sz), (0.8 * r, 0.88 * m.sz), (0.6 * r, 0.96 * m.sz),
+                           (0, m.sz)])
+    m.lathe("accent", [(0.82 * r, 0.75 * m.sz), (0.82 * r, 0.82 * m.sz)])
+
+
+def hydrant(m: Model) -> None:
+    m.main = "paint"
+    r = min(m.sx, m.sy) / 2
+    m.lathe("paint", [(0.7 * r, 0), (0.7 * r, 0.06 * m.sz), (0.5 * r, 0.08 * m.sz), (0.5 * r, 0.75 * m.sz),
+                      (0.6 * r, 0.78 * m.sz), (0.45 * r, 0.92 * m.sz), (0.1 * r, m.sz)])
+    z = 0.55 * m.sz
+    m.cylinder("paint", (-m.sx / 2, 0, z), (m.sx / 2, 0, z), 0.2 * r, fraction=0.5)
+    m.cylinder("metal", (0, 0, z), (0, -m.sy / 2, z), 0.28 * r, fraction=0.5)
+    m.cylinder("metal", (-m.sx / 2, 0, z), (-m.sx / 2 + 0.04, 0, z), 0.24 * r, fraction=0.5)
+    m.cylinder("metal", (m.sx / 2 - 0.04, 0, z), (m.sx / 2, 0, z), 0.24 * r, fraction=0.5)
+
+
+def well(m: Model) -> None:
+    m.main = "stone"
+    r = 0.5
+    wall = 0.35 * m.sz
+    m.lathe("stone", [(r * 0.82, 0), (r, 0), (r, wall), (r * 0.8, wall), (r * 0.8, 0.02)], scale=(0.8 * m.sx, 0.8 * m.sy))
+    m.lathe("water", [(r * 0.8, 0.01), (r * 0.8, wall * 0.5)], scale=(0.8 * m.sx, 0.8 * m.sy))
+    post = m.thick(0.07, 0.08 * m.sx)
+    roof_z = 0.75 * m.sz
+    for s in (-1, 1):
+        m.box("wood", (s * 0.42 * m.sx - post / 2, -post / 2, 0), (s * 0.42 * m.sx + post / 2, post / 2, roof_z))
+    m.cylinder("wood", (-0.42 * m.sx, 0, 0.6 * m.sz), (0.45 * m.sx, 0, 0.6 * m.sz), 0.04 * m.sz, fraction=0.5)
+    m.post("dark_metal", 0, 0, 0.35 * m.sz, 0.6 * m.sz, 0.006, fraction=0.3)
+    m.lathe("wood", [(0.06 * m.sx, 0.3 * m.sz), (0.07 * m.sx, 0.4 * m.sz)])
+    m.extrude("roof", [(-m.sy / 2, roof_z), (m.sy / 2, roof_z), (0, m.sz)], "x", -m.sx / 2, m.sx / 2)
+
+
+def pillar(m: Model) -> None:
+    m.main = "marble"
+    base = 0.08 * m.sz
+    m.box("marble", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, base))
+    m.box("marble", (-m.sx / 2, -m.sy / 2, m.sz - base), (m.sx / 2, m.sy / 2, m.sz))
+    r = 0.4 * min(m.sx, m.sy)
+    m.lathe("marble", [(1.1 * r, base), (r, base + 0.03 * m.sz), (0.88 * r, m.sz - base - 0.05 * m.sz),
+                       (1.1 * r, m.sz - base)])
+
+
+def crystal(m: Model) -> None:
+    m.main = "crystal"
+    r = min(m.sx, m.sy) / 2
+    m.ball("stone", (0, 0, 0.05 * m.sz), (0.8 * r, 0.8 * r, 0.12 * m.sz), fraction=0.4)
+    count = int(m.rng.integers(3, 6))
+    for k in range(count):
+        h = m.sz * (1.0 if k == 0 else m.vary(0.35, 0.7))
+        cr = r * (0.35 if k == 0 else m.vary(0.15, 0.25))
+        a = 2 * np.pi * k / count
+        tilt = 0.0 if k == 0 else m.vary(0.3, 0.6)
+        base = np.array([np.cos(a) * 0.35 * r, np.sin(a) * 0.35 * r, 0.0]) * (k > 0)
+        d = np.array([np.cos(a) * np.sin(tilt), np.sin(a) * np.sin(tilt), np.cos(tilt)])
+        part = P.lathe([(cr, 0), (cr, 0.78 * h), (0, h)], 6)
+        m.add("crystal", P.flatten(P.transform(part, P.affine(P.align_z(d), base))))
+
+
+def umbrella(m: Model) -> None:
+    m.main = "canvas"
+    r = 0.5
+    m.lathe("dark_metal", [(0.15 * min(m.sx, m.sy), 0), (0.15 * min(m.sx, m.sy), 0.03 * m.sz), (0.02, 0.05 * m.sz)])
+    m.post("dark_metal", 0, 0, 0.03 * m.sz, 0.97 * m.sz, m.thick(0.02, 0.04 * min(m.sx, m.sy)), fraction=0.4)
+    canopy = P.lathe([(r, 0.78 * m.sz), (0.3 * r, 0.9 * m.sz), (0.0, 0.95 * m.sz)], max(6, m.segments(0.67)))
+    m.add("canvas", P.transform(canopy, P.affine(np.diag([m.sx, m.sy, 1.0]), (0, 0, 0))))
+    m.lathe("canvas_alt", [(r * 1.0, 0.76 * m.sz), (r * 1.0, 0.78 * m.sz)], scale=(m.sx, m.sy), fraction=0.67)
+    m.ball("dark_metal", (0, 0, 0.97 * m.sz), (0.02, 0.02, 0.03 * m.sz), fraction=0.4)
+
+
+def swing(m: Model) -> None:
+    m.main = "paint"
+    leg = m.thick(0.06, 0.1 * m.sy)
+    top = m.sz - leg
+    for s in (-1, 1):
+        x = s * (m.sx / 2 - leg)
+        for ys in (-1, 1):
+            m.cylinder("paint", (x, ys * (m.sy / 2 - leg), 0), (x, 0, top), leg, fraction=0.5)
+    m.cylinder("paint", (-m.sx / 2, 0, top), (m.sx / 2, 0, top), leg, fraction=0.5)
+    seats = 2 if m.sx > 1.8 else 1
+    for i in range(seats):
+        cx = -m.sx / 2 + m.sx * (i + 1) / (seats + 1)
+        seat_z = 0.4 if m.sz > 1.2 else 0.2 * m.sz
+        for dx in (-0.2, 0.2):
+            m.post("chrome", cx + dx, 0, seat_z, top, 0.008, fraction=0.25)
+        m.box("rubber", (cx - 0.24, -0.1, seat_z - 0.03), (cx + 0.24, 0.1, seat_z))
+
+
+def slide(m: Model) -> None:
+    m.main = "paint"
+    deck = 0.6 * m.sz
+    back = m.sy / 2 - 0.25 * m.sy
+    w = 0.4 * m.sx
+    for x in (-w, w):
+        m.beam("metal", (x, m.sy / 2 - 0.02, 0), (x, back, deck + 0.35 * (m.sz - deck)), 0.04)
+    for k in range(1, 6):
+        z = deck * k / 6
+        y = m.sy / 2 - 0.02 - (m.sy / 2 - 0.02 - back) * z / (deck + 0.35 * (m.sz - deck))
+        m.cylinder("metal", (-w, y, z), (w, y, z), 0.015, fraction=0.3)
+    m.box("accent", (-m.sx / 2, back - 0.25 * m.sy, deck - 0.05), (m.sx / 2, back, deck))
+    for x in (-m.sx / 2, m.sx / 2 - 0.05):
+        m.box("metal", (x, back - 0.25 * m.sy, 0), (x + 0.05, back - 0.2 * m.sy, deck))
+        m.box("metal", (x, back - 0.25 * m.sy, deck), (x + 0.05, back, m.sz))
+    start = back - 0.25 * m.sy
+    chute = [(start, deck), (start, deck + 0.12), (-m.sy / 2, 0.12), (-m.sy / 2, 0.0), (-m.sy / 2 + 0.2, 0.0)]
+    m.extrude("paint", chute, "x", -0.3 * m.sx, 0.3 * m.sx)
+    for x in (-0.3 * m.sx, 0.3 * m.sx - 0.04):
+        m.extrude("paint", [(start, deck), (start, deck + 0.25), (-m.sy / 2, 0.3), (-m.sy / 2, 0.05)], "x", x, x + 0.04)
+
+
+def tent(m: Model) -> None:
+    m.main = "canvas"
+    m.extrude("canvas", [(-m.sx / 2, 0), (m.sx / 2, 0), (0, m.sz)], "y", -m.sy / 2 + 0.02, m.sy / 2)
+    m.extrude("dark_plastic", [(-0.2 * m.sx, 0), (0.2 * m.sx, 0), (0, 0.7 * m.sz)], "y", -m.sy / 2, -m.sy / 2 + 0.03)
+    m.post("dark_metal", 0, -m.sy / 2 + 0.01, 0, m.sz * 1.0, 0.015, fraction=0.3)
+    for s in (-1, 1):
+        m.cylinder("canvas_alt", (0, s * (m.sy / 2 - 0.02), m.sz), (s * 0.05 * m.sx, s * m.sy / 2, 0), 0.006, fraction=0.25)
+
+
+SHAPES = {
+    "tree": tree, "pine_tree": pine_tree, "palm_tree": palm_tree, "bush": bush, "flower_bed": flower_bed, "rock": rock,
+    "fountain": fountain, "statue": statue, "lamp_post": lamp_post, "sign": sign, "fence": fence, "arch": arch,
+    "bollard": bollard, "hydrant": hydrant, "well": well, "pillar": pillar, "crystal": crystal, "umbrella": umbrella,
+    "swing": swing, "slide": slide, "tent": tent,
+}

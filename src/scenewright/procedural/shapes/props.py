@@ -1,0 +1,287 @@
+"""Lamps, screens, small props and containers."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from scenewright.procedural.builder import Model
+
+
+def table_lamp(m: Model) -> None:
+    m.main = "ceramic"
+    r = min(m.sx, m.sy) / 2
+    shade_h = 0.42 * m.sz
+    m.lathe("ceramic", [(0.6 * r, 0), (0.62 * r, 0.04 * m.sz), (0.45 * r, 0.3 * m.sz), (0.12 * r, 0.45 * m.sz)])
+    m.post("brass", 0, 0, 0.45 * m.sz, m.sz - shade_h * 0.6, m.thick(0.008, 0.05 * r), fraction=0.4)
+    m.ball("light", (0, 0, m.sz - shade_h * 0.55), (0.18 * r, 0.18 * r, 0.25 * r), fraction=0.5)
+    m.lathe("shade", [(r, m.sz - shade_h), (0.6 * r, m.sz)])
+
+
+def floor_lamp(m: Model) -> None:
+    m.main = "metal"
+    r = min(m.sx, m.sy) / 2
+    shade_h = 0.22 * m.sz
+    m.lathe("metal", [(0.7 * r, 0), (0.7 * r, 0.015 * m.sz), (0.1 * r, 0.03 * m.sz)])
+    m.post("metal", 0, 0, 0.02 * m.sz, m.sz - shade_h * 0.5, m.thick(0.012, 0.1 * r), fraction=0.4)
+    m.ball("light", (0, 0, m.sz - shade_h * 0.6), (0.15 * r, 0.15 * r, 0.2 * r), fraction=0.5)
+    m.lathe("shade", [(r, m.sz - shade_h), (0.65 * r, m.sz)])
+
+
+def pendant_lamp(m: Model) -> None:
+    m.main = "metal"
+    r = min(m.sx, m.sy) / 2
+    shade_h = min(0.45 * m.sz, 1.2 * r)
+    m.lathe("metal", [(0.25 * r, m.sz - 0.02 * m.sz), (0.25 * r, m.sz)])
+    m.post("dark_plastic", 0, 0, shade_h * 0.9, m.sz, 0.006, fraction=0.3)
+    m.lathe("metal", [(r, 0), (0.9 * r, 0.3 * shade_h), (0.5 * r, 0.75 * shade_h), (0.12 * r, shade_h)])
+    m.ball("light", (0, 0, 0.12 * shade_h), (0.3 * r, 0.3 * r, 0.3 * r), fraction=0.6)
+
+
+def rug(m: Model) -> None:
+    m.main = "fabric"
+    border = 0.06 * min(m.sx, m.sy)
+    if m.has("round", "circular", "oval"):
+        m.lathe("cushion", [(0.5, 0), (0.5, 0.6 * m.sz)], scale=(m.sx, m.sy))
+        m.lathe("fabric", [(0.5, 0), (0.5, m.sz)], scale=(m.sx - 2 * border, m.sy - 2 * border))
+        return
+    m.box("cushion", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, 0.6 * m.sz), rounded=0.0)
+    m.box("fabric", (-m.sx / 2 + border, -m.sy / 2 + border, 0), (m.sx / 2 - border, m.sy / 2 - border, m.sz), rounded=0.0)
+    m.box("accent", (-m.sx / 4, -m.sy / 4, 0), (m.sx / 4, m.sy / 4, m.sz * 1.0), rounded=0.0)
+
+
+def _screen_panel(m: Model, z0: float, z1: float, depth: float) -> None:
+    y = -m.sy / 2
+    m.box("dark_plastic", (-m.sx / 2, y, z0), (m.sx / 2, y + depth, z1))
+    bezel = 0.03 * min(m.sx, z1 - z0)
+    m.box("screen", (-m.sx / 2 + bezel, y - 0.003, z0 + bezel), (m.sx / 2 - bezel, y, z1 - bezel), rounded=0.0)
+
+
+def tv(m: Model) -> None:
+    m.main = "dark_plastic"
+    stand = 0.14 * m.sz
+    _screen_panel(m, stand, m.sz, min(0.06, 0.5 * m.sy))
+    m.box("dark_plastic", (-0.04 * m.sx, -m.sy / 2 + 0.01, 0.02), (0.04 * m.sx, -m.sy / 2 + 0.05, stand + 0.05))
+    m.box("dark_plastic", (-0.25 * m.sx, -m.sy / 2, 0), (0.25 * m.sx, m.sy / 2, 0.02))
+
+
+def monitor(m: Model) -> None:
+    m.main = "dark_plastic"
+    neck = 0.28 * m.sz
+    _screen_panel(m, neck, m.sz, min(0.03, 0.3 * m.sy))
+    m.box("dark_plastic", (-0.03 * m.sx, -m.sy / 2 + 0.02, 0.01), (0.03 * m.sx, -m.sy / 2 + 0.05, neck + 0.05))
+    m.box("metal", (-0.2 * m.sx, -m.sy / 2, 0), (0.2 * m.sx, m.sy / 2, 0.015))
+
+
+def laptop(m: Model) -> None:
+    m.main = "metal"
+    base = 0.1 * m.sz
+    m.box("metal", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2 - 0.05 * m.sy, base))
+    m.box("dark_plastic", (-0.42 * m.sx, -m.sy / 2 + 0.4 * m.sy, base), (0.42 * m.sx, m.sy / 2 - 0.1 * m.sy, base + 0.003), rounded=0.0)
+    m.box("dark_plastic", (-0.15 * m.sx, -m.sy / 2 + 0.07 * m.sy, base), (0.15 * m.sx, -m.sy / 2 + 0.32 * m.sy, base + 0.002), rounded=0.0)
+    t = 0.06 * m.sz
+    hinge = m.sy / 2 - 0.05 * m.sy
+    outline = [(hinge, base), (hinge + t, base), (m.sy / 2, m.sz), (m.sy / 2 - t, m.sz)]
+    m.extrude("metal", outline, "x", -m.sx / 2, m.sx / 2)
+    inner = [(hinge - 0.002, base + 0.05 * m.sz), (m.sy / 2 - t - 0.002, m.sz - 0.05 * m.sz),
+             (m.sy / 2 - t + 0.002, m.sz - 0.05 * m.sz), (hinge + 0.002, base + 0.05 * m.sz)]
+    m.extrude("screen", inner, "x", -0.44 * m.sx, 0.44 * m.sx)
+
+
+def vase(m: Model) -> None:
+    m.main = "ceramic"
+    r = min(m.sx, m.sy) / 2
+    flowers = m.has("flower", "rose", "tulip", "bouquet")
+    h = m.sz * (0.65 if flowers else 1.0)
+    belly = m.vary(0.35, 0.55)
+    m.lathe("ceramic", [(0.55 * r, 0), (0.95 * r, belly * h), (0.4 * r, 0.85 * h), (0.5 * r, h), (0.4 * r, h * 0.98)],
+            scale=(1, 1))
+    if flowers:
+        for k in range(5):
+            a = 2 * np.pi * k / 5
+            tip = (np.cos(a) * 0.6 * r, np.sin(a) * 0.6 * r, m.sz - 0.15 * r)
+            m.cylinder("leaf", (0, 0, h * 0.9), tip, 0.01, fraction=0.3)
+            m.ball("flower" if k % 2 else "flower_alt", tip, (0.22 * r, 0.22 * r, 0.15 * r), fraction=0.5)
+
+
+def potted_plant(m: Model) -> None:
+    m.main = "ceramic"
+    r = min(m.sx, m.sy) / 2
+    pot_h = min(0.35 * m.sz, 1.6 * r)
+    m.lathe("ceramic", [(0.6 * r, 0), (0.75 * r, pot_h * 0.92), (0.8 * r, pot_h * 0.92), (0.8 * r, pot_h)])
+    m.lathe("soil", [(0.7 * r, pot_h - 0.02), (0.7 * r, pot_h + 0.005)])
+    top = m.sz - pot_h
+    if m.sz > 3 * min(m.sx, m.sy):
+        m.post("bark", 0, 0, pot_h, pot_h + 0.5 * top, m.thick(0.015, 0.1 * r), fraction=0.4)
+        blobs = 5
+        for k in range(blobs):
+            z = pot_h + top * (0.45 + 0.45 * k / (blobs - 1))
+            a = m.vary(0, 2 * np.pi)
+            off = m.vary(0.1, 0.3) * r
+            rr = r * (0.75 - 0.35 * k / blobs)
+            m.ball("leaf", (np.cos(a) * off, np.sin(a) * off, z), (rr, rr, top * 0.16), fraction=0.6)
+        return
+    leaves = int(m.rng.integers(6, 10))
+    for k in range(leaves):
+        a = 2 * np.pi * k / leaves + m.vary(-0.2, 0.2)
+        lean = m.vary(0.3, 0.7)
+        tip = np.array([np.cos(a) * r * lean, np.sin(a) * r * lean, pot_h + top * m.vary(0.75, 1.0)])
+        mid = (np.array([0, 0, pot_h]) + tip) / 2
+        length = float(np.linalg.norm(tip - np.array([0, 0, pot_h])))
+        m.ball("leaf", mid, (0.22 * r, 0.22 * r, 0.5 * length), fraction=0.5)
+    m.ball("leaf", (0, 0, pot_h + 0.3 * top), (0.55 * r, 0.55 * r, 0.35 * top), fraction=0.6)
+
+
+def clock(m: Model) -> None:
+    if m.sz > 1.2:
+        m.main = "dark_wood"
+        m.box("dark_wood", (-m.sx / 2 + 0.04, -m.sy / 2 + 0.03, 0.05 * m.sz), (m.sx / 2 - 0.04, m.sy / 2, 0.75 * m.sz))
+        m.box("dark_wood", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, 0.06 * m.sz))
+        m.box("dark_wood", (-m.sx / 2, -m.sy / 2, 0.75 * m.sz), (m.sx / 2, m.sy / 2, m.sz))
+        m.box("glass", (-0.25 * m.sx, -m.sy / 2 + 0.02, 0.3 * m.sz), (0.25 * m.sx, -m.sy / 2 + 0.03, 0.65 * m.sz), rounded=0.0)
+        m.post("brass", 0, -m.sy / 2 + 0.06, 0.35 * m.sz, 0.6 * m.sz, 0.006)
+        m.cylinder("brass", (0, -m.sy / 2 + 0.05, 0.36 * m.sz), (0, -m.sy / 2 + 0.04, 0.36 * m.sz), 0.12 * m.sx)
+        cz, r = 0.875 * m.sz, min(0.4 * m.sx, 0.11 * m.sz)
+        face_y = -m.sy / 2
+    else:
+        m.main = "wood"
+        r = min(m.sx, m.sz) / 2
+        cz = m.sz / 2
+        face_y = -m.sy / 2 + 0.3 * m.sy
+        m.torus("wood", (0, face_y + 0.3 * m.sy, cz), r * 0.92, r * 0.08, axis="y")
+        m.cylinder("wood", (0, m.sy / 2, cz), (0, face_y + 0.3 * m.sy, cz), r * 0.9)
+    m.cylinder("ceramic", (0, face_y + 0.02, cz), (0, face_y - 0.002, cz), r * 0.85)
+    for k in range(12):
+        a = 2 * np.pi * k / 12
+        p = (np.sin(a) * r * 0.72, face_y - 0.004, cz + np.cos(a) * r * 0.72)
+        m.cbox("dark_metal", p, (0.04 * r, 0.004, 0.04 * r), rounded=0.0)
+    m.beam("dark_metal", (0, face_y - 0.006, cz), (0.35 * r, face_y - 0.006, cz + 0.3 * r), 0.04 * r, 0.004)
+    m.beam("dark_metal", (0, face_y - 0.008, cz), (-0.1 * r, face_y - 0.008, cz + 0.65 * r), 0.03 * r, 0.004)
+
+
+def mirror(m: Model) -> None:
+    m.main = "wood"
+    f = m.thick(0.04, 0.12 * min(m.sx, m.sz))
+    y0, y1 = -m.sy / 2, m.sy / 2
+    if abs(m.sx - m.sz) < 0.1 * max(m.sx, m.sz):
+        r = min(m.sx, m.sz) / 2
+        m.torus("wood", (0, 0, r), r - f / 2, f / 2, axis="y")
+        m.cylinder("mirror", (0, y1, r), (0, 0, r), r - f / 2)
+        return
+    stand = m.sz > 1.4 and m.sy > 0.15
+    if stand:
+        y0 = -0.15 * m.sy
+        m.beam("wood", (-m.sx / 2 + f / 2, m.sy / 2, 0), (-m.sx / 2 + f / 2, 0, m.sz * 0.6), f / 2)
+        m.beam("wood", (m.sx / 2 - f / 2, m.sy / 2, 0), (m.sx / 2 - f / 2, 0, m.sz * 0.6), f / 2)
+        y1 = -0.15 * m.sy + 0.04
+    m.box("wood", (-m.sx / 2, y0, 0), (-m.sx / 2 + f, y1, m.sz))
+    m.box("wood", (m.sx / 2 - f, y0, 0), (m.sx / 2, y1, m.sz))
+    m.box("wood", (-m.sx / 2 + f, y0, 0), (m.sx / 2 - f, y1, f))
+    m.box("wood", (-m.sx / 2 + f, y0, m.sz - f), (m.sx / 2 - f, y1, m.sz))
+    m.box("mirror", (-m.sx / 2 + f, y0 + 0.005, f), (m.sx / 2 - f, y1, m.sz - f), rounded=0.0)
+
+
+def picture_frame(m: Model) -> None:
+    m.main = "wood"
+    f = m.thick(0.035, 0.12 * min(m.sx, m.sz))
+    y0, y1 = -m.sy / 2, m.sy / 2
+    m.box("wood", (-m.sx / 2, y0, 0), (-m.sx / 2 + f, y1, m.sz))
+    m.box("wood", (m.sx / 2 - f, y0, 0), (m.sx / 2, y1, m.sz))
+    m.box("wood", (-m.sx / 2 + f, y0, 0), (m.sx / 2 - f, y1, f))
+    m.box("wood", (-m.sx / 2 + f, y0, m.sz - f), (m.sx / 2 - f, y1, m.sz))
+    yc = y0 + 0.4 * (y1 - y0)
+    m.box("canvas_alt", (-m.sx / 2 + f, yc, f), (m.sx / 2 - f, y1, m.sz - f), rounded=0.0)
+    for role in ("book_b", "book_c", "flower_alt"):
+        cx, cz = m.vary(-0.25, 0.25) * m.sx, m.vary(0.3, 0.7) * m.sz
+        w, h = m.vary(0.1, 0.3) * m.sx, m.vary(0.1, 0.3) * m.sz
+        m.box(role, (cx - w / 2, yc - 0.002, cz - h / 2), (cx + w / 2, yc, cz + h / 2), rounded=0.0)
+
+
+def trash_can(m: Model) -> None:
+    m.main = "metal"
+    r = min(m.sx, m.sy) / 2
+    m.lathe("metal", [(0.82 * r, 0), (0.95 * r, 0.88 * m.sz)], scale=(m.sx / (2 * r), m.sy / (2 * r)))
+    m.torus("dark_metal", (0, 0, 0.88 * m.sz), 0.95 * r, 0.04 * r)
+    m.lathe("dark_metal", [(r, 0.88 * m.sz), (r, 0.9 * m.sz), (0.6 * r, 0.97 * m.sz), (0.15 * r, m.sz)])
+
+
+def crate(m: Model) -> None:
+    b = m.thick(0.06, 0.15 * min(m.sx, m.sy, m.sz))
+    m.box("wood", (-m.sx / 2 + b * 0.3, -m.sy / 2 + b * 0.3, b * 0.3), (m.sx / 2 - b * 0.3, m.sy / 2 - b * 0.3, m.sz - b * 0.3))
+    hx, hy, hz = m.sx / 2, m.sy / 2, m.sz
+    for x in (-hx, hx - b):
+        for y in (-hy, hy - b):
+            m.box("dark_wood", (x, y, 0), (x + b, y + b, hz))
+    for z in (0, hz - b):
+        for y in (-hy, hy - b):
+            m.box("dark_wood", (-hx + b, y, z), (hx - b, y + b, z + b))
+        for x in (-hx, hx - b):
+            m.box("dark_wood", (x, -hy + b, z), (x + b, hy - b, z + b))
+    m.beam("dark_wood", (-hx + b, -hy - 0.001, b), (hx - b, -hy - 0.001, hz - b), b * 0.8, 0.02)
+
+
+def barrel(m: Model) -> None:
+    r = min(m.sx, m.sy) / 2
+    prof = [(0.85 * r, 0), (0.97 * r, 0.25 * m.sz), (r, 0.5 * m.sz), (0.97 * r, 0.75 * m.sz), (0.85 * r, m.sz)]
+    m.lathe("wood", prof, scale=(m.sx / (2 * r), m.sy / (2 * r)))
+    for z, rr in ((0.1, 0.9), (0.3, 0.985), (0.7, 0.985), (0.9, 0.9)):
+        m.torus("dark_metal", (0, 0, z * m.sz), rr * r, 0.025 * r)
+    m.lathe("dark_wood", [(0.8 * r, m.sz - 0.02), (0.8 * r, m.sz - 0.005)])
+
+
+def books(m: Model) -> None:
+    m.main = "book_a"
+    roles = ("book_a", "book_b", "book_c")
+    if m.sz < max(m.sx, m.sy) * 0.6:
+        z = 0.0
+        while z < m.sz - 0.005:
+            h = min(m.vary(0.025, 0.05), m.sz - z)
+            dx, dy = m.vary(-0.05, 0.05) * m.sx, m.vary(-0.05, 0.05) * m.sy
+            lo = (-0.45 * m.sx + dx, -0.45 * m.sy + dy, z)
+            hi = (0.45 * m.sx + dx, 0.45 * m.sy + dy, z + h)
+            m.box(roles[int(m.rng.integers(3))], lo, hi, rounded=0.0)
+            m.box("paper", (lo[0] + 0.005, lo[1] - 0.001, z + 0.003), (hi[0] - 0.005, hi[1] - 0.01, z + h - 0.003), rounded=0.0)
+            z += h
+        return
+    x = -m.sx / 2
+    while x < m.sx / 2 - 0.01:
+        w = min(m.vary(0.025, 0.06), m.sx / 2 - x)
+        m.box(roles[int(m.rng.integers(3))], (x, -m.sy / 2, 0), (x + w - 0.002, m.sy / 2, m.sz * m.vary(0.75, 1.0)), rounded=0.0)
+        x += w
+
+
+def bottle(m: Model) -> None:
+    m.main = "glass"
+    r = min(m.sx, m.sy) / 2
+    m.lathe("glass", [(0.95 * r, 0), (r, 0.55 * m.sz), (0.35 * r, 0.75 * m.sz), (0.3 * r, 0.92 * m.sz)])
+    m.lathe("paper", [(1.01 * r, 0.2 * m.sz), (1.02 * r, 0.45 * m.sz)])
+    m.lathe("accent", [(0.33 * r, 0.9 * m.sz), (0.33 * r, m.sz)])
+
+
+def cup(m: Model) -> None:
+    m.main = "ceramic"
+    r = min(m.sy, m.sx * 0.7) / 2
+    m.lathe("ceramic", [(0.85 * r, 0), (r, m.sz), (0.9 * r, m.sz), (0.8 * r, 0.1 * m.sz)], centre=(-(m.sx / 2 - r), 0, 0))
+    hr = (m.sx - 2 * r) / 2 + 0.15 * r
+    m.torus("ceramic", (m.sx / 2 - hr - 0.12 * r, 0, 0.5 * m.sz), hr, 0.12 * r, axis="y")
+    m.lathe("soil", [(0.85 * r, 0.8 * m.sz), (0.85 * r, 0.82 * m.sz)], centre=(-(m.sx / 2 - r), 0, 0))
+
+
+def bowl(m: Model) -> None:
+    m.main = "ceramic"
+    r = 0.5
+    h = m.sz * (0.6 if m.has("fruit") else 1.0)
+    m.lathe("ceramic", [(0, 0), (0.3 * r, 0), (0.85 * r, 0.6 * h), (r, h), (0.93 * r, h), (0.3 * r, 0.12 * h), (0, 0.12 * h)],
+            scale=(m.sx, m.sy))
+    if m.has("fruit"):
+        for k in range(5):
+            a = 2 * np.pi * k / 5
+            s = 0.18 * min(m.sx, m.sy)
+            m.ball("flower" if k % 2 else "flower_alt", (np.cos(a) * 0.2 * m.sx, np.sin(a) * 0.2 * m.sy, h * 0.6), (s, s, s))
+
+
+SHAPES = {
+    "table_lamp": table_lamp, "floor_lamp": floor_lamp, "pendant_lamp": pendant_lamp, "rug": rug, "tv": tv,
+    "monitor": monitor, "laptop": laptop, "vase": vase, "potted_plant": potted_plant, "clock": clock,
+    "mirror": mirror, "picture_frame": picture_frame, "trash_can": trash_can, "crate": crate, "barrel": barrel,
+    "books": books, "bottle": bottle, "cup": cup, "bowl": bowl,
+}

@@ -1,0 +1,185 @@
+"""Vehicles: their length runs along y, the front toward −Y."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from scenewright.procedural import parts as P
+from scenewright.procedural.builder import Model
+
+
+def _wheel(m: Model, x: float, y: float, r: float, width: float, outward: int) -> None:
+    """A tyre on the x axis with its hub on the outer face."""
+    x0, x1 = sorted((x, x - outward * width))
+    m.cylinder("rubber", (x0, y, r), (x1, y, r), r, fraction=0.8)
+    face = max(x0, x1) if outward > 0 else min(x0, x1)
+    m.cylinder("metal", (face, y, r), (face + outward * 0.01, y, r), 0.55 * r, fraction=0.6)
+
+
+def car(m: Model) -> None:
+    m.main = "paint"
+    wr = min(0.2 * m.sz, 0.11 * m.sy)
+    body_lo, body_hi = 0.35 * wr, 0.55 * m.sz
+    L = m.sy / 2
+    side = [(-L, body_lo + 0.1 * m.sz), (-L + 0.04 * m.sy, body_lo), (L - 0.04 * m.sy, body_lo), (L, body_lo + 0.1 * m.sz),
+            (L, body_hi - 0.05 * m.sz), (L - 0.05 * m.sy, body_hi), (-L + 0.08 * m.sy, body_hi), (-L, body_hi - 0.1 * m.sz)]
+    tw = 0.03 * m.sx
+    m.extrude("paint", side, "x", -m.sx / 2 + tw, m.sx / 2 - tw)
+    cabin = [(-L + 0.3 * m.sy, body_hi), (L - 0.12 * m.sy, body_hi), (L - 0.2 * m.sy, m.sz), (-L + 0.45 * m.sy, m.sz)]
+    m.extrude("glass", cabin, "x", -m.sx / 2 + 0.08 * m.sx, m.sx / 2 - 0.08 * m.sx)
+    roof = [(-L + 0.44 * m.sy, m.sz - 0.04 * m.sz), (L - 0.21 * m.sy, m.sz - 0.04 * m.sz), (L - 0.2 * m.sy, m.sz),
+            (-L + 0.45 * m.sy, m.sz)]
+    m.extrude("paint", roof, "x", -m.sx / 2 + 0.08 * m.sx, m.sx / 2 - 0.08 * m.sx)
+    for y in (-L + 0.2 * m.sy, L - 0.2 * m.sy):
+        for s in (-1, 1):
+            _wheel(m, s * m.sx / 2, y, wr, 0.13 * m.sx, s)
+    for s in (-1, 1):
+        m.box("light", (s * 0.38 * m.sx - 0.08 * m.sx, -L - 0.005, body_hi - 0.15 * m.sz),
+              (s * 0.38 * m.sx + 0.08 * m.sx, -L + 0.01, body_hi - 0.08 * m.sz), rounded=0.0)
+        m.box("accent", (s * 0.38 * m.sx - 0.08 * m.sx, L - 0.01, body_hi - 0.14 * m.sz),
+              (s * 0.38 * m.sx + 0.08 * m.sx, L + 0.005, body_hi - 0.08 * m.sz), rounded=0.0)
+    m.box("dark_plastic", (-0.45 * m.sx, -L - 0.01, body_lo + 0.02), (0.45 * m.sx, -L + 0.02, body_lo + 0.08 * m.sz))
+
+
+def truck(m: Model) -> None:
+    m.main = "paint"
+    wr = min(0.17 * m.sz, 0.07 * m.sy)
+    chassis = 1.2 * wr
+    L = m.sy / 2
+    cab_len = 0.28 * m.sy
+    m.box("dark_metal", (-0.4 * m.sx, -L + 0.05 * m.sy, 0.5 * wr), (0.4 * m.sx, L - 0.02 * m.sy, chassis))
+    m.box("paint", (-m.sx / 2 + 0.1 * m.sx * 0.3, -L, chassis), (m.sx / 2 - 0.03 * m.sx, -L + cab_len, 0.75 * m.sz))
+    m.extrude("glass", [(-L + 0.01, 0.5 * m.sz), (-L + cab_len * 0.9, 0.5 * m.sz), (-L + cab_len * 0.9, 0.72 * m.sz),
+                        (-L + 0.01, 0.72 * m.sz)], "x", -m.sx / 2 + 0.05 * m.sx, m.sx / 2 - 0.05 * m.sx)
+    m.box("canvas_alt", (-m.sx / 2 + 0.02 * m.sx, -L + cab_len + 0.04 * m.sy, chassis), (m.sx / 2 - 0.02 * m.sx, L, m.sz))
+    for y in (-L + 0.14 * m.sy, L - 0.32 * m.sy, L - 0.15 * m.sy):
+        for s in (-1, 1):
+            _wheel(m, s * m.sx / 2, y, wr, 0.12 * m.sx, s)
+    for s in (-1, 1):
+        m.box("light", (s * 0.38 * m.sx - 0.06 * m.sx, -L - 0.01, chassis + 0.05), (s * 0.38 * m.sx + 0.06 * m.sx, -L, chassis + 0.15),
+              rounded=0.0)
+
+
+def bus(m: Model) -> None:
+    m.main = "paint"
+    wr = min(0.16 * m.sz, 0.05 * m.sy)
+    L = m.sy / 2
+    m.box("paint", (-m.sx / 2 + 0.02, -L, 0.6 * wr), (m.sx / 2 - 0.02, L, m.sz))
+    win_lo, win_hi = 0.5 * m.sz, 0.85 * m.sz
+    m.box("glass", (-m.sx / 2 + 0.01, -L + 0.15 * m.sy, win_lo), (m.sx / 2 - 0.01, L - 0.05 * m.sy, win_hi), rounded=0.0)
+    m.box("glass", (-m.sx / 2 + 0.1, -L - 0.01, 0.35 * m.sz), (m.sx / 2 - 0.1, -L + 0.02, 0.9 * m.sz), rounded=0.0)
+    m.box("dark_plastic", (-m.sx / 2 + 0.005, -L + 0.04 * m.sy, 0.1 * m.sz), (-m.sx / 2 + 0.03, -L + 0.1 * m.sy, 0.8 * m.sz),
+          rounded=0.0)
+    for y in (-L + 0.15 * m.sy, L - 0.2 * m.sy):
+        for s in (-1, 1):
+            _wheel(m, s * m.sx / 2, y, wr, 0.1 * m.sx, s)
+    for s in (-1, 1):
+        m.box("light", (s * 0.4 * m.sx - 0.05 * m.sx, -L - 0.01, 0.15 * m.sz), (s * 0.4 * m.sx + 0.05 * m.sx, -L, 0.22 * m.sz),
+              rounded=0.0)
+    m.box("screen", (-0.3 * m.sx, -L - 0.015, 0.9 * m.sz), (0.3 * m.sx, -L, 0.97 * m.sz), rounded=0.0)
+
+
+def bicycle(m: Model) -> None:
+    m.main = "paint"
+    r = min(0.32 * m.sy, 0.36 * m.sz)
+    tube = m.thick(0.018, 0.2 * m.sx)
+    yf, yr = -m.sy / 2 + r, m.sy / 2 - r
+    for y in (yf, yr):
+        m.torus("rubber", (0, y, r), r - 0.02, 0.02, axis="x")
+        for k in range(6):
+            a = np.pi * k / 6
+            m.beam("chrome", (0, y - np.cos(a) * (r - 0.03), r - np.sin(a) * (r - 0.03)),
+                   (0, y + np.cos(a) * (r - 0.03), r + np.sin(a) * (r - 0.03)), 0.004)
+    crank = np.array([0, 0.05 * m.sy, r])
+    seat = np.array([0, yr - 0.1 * m.sy, 0.85 * m.sz])
+    head = np.array([0, yf + 0.12 * m.sy, 0.82 * m.sz])
+    for a, b in ((crank, seat), (crank, head), (seat, head), (crank, (0, yr, r)), (seat, (0, yr, r)),
+                 (head, (0, yf, r))):
+        m.beam("paint", a, b, tube)
+    m.box("leather", seat + (-0.06, -0.1, 0), seat + (0.06, 0.08, 0.05))
+    m.beam("chrome", head, head + (0, -0.03, 0.13 * m.sz), tube)
+    m.cylinder("dark_plastic", head + (-m.sx / 2, -0.03, 0.14 * m.sz), head + (m.sx / 2, -0.03, 0.14 * m.sz), 0.015,
+               fraction=0.4)
+    m.cylinder("dark_metal", crank + (-0.04, 0, 0), crank + (0.04, 0, 0), 0.08, fraction=0.6)
+
+
+def boat(m: Model) -> None:
+    m.main = "paint"
+    sail = m.has("sail", "yacht") or m.sz > 1.5 * m.sx
+    hull_h = (0.3 if sail else 0.55) * m.sz
+    L = m.sy / 2
+    deck = [(0, -L), (0.3 * m.sx, -0.55 * L), (0.5 * m.sx, -0.05 * L), (0.47 * m.sx, L), (-0.47 * m.sx, L),
+            (-0.5 * m.sx, -0.05 * L), (-0.3 * m.sx, -0.55 * L)]
+    hull = P.prism(deck, hull_h)
+    bottom = hull.vertices[:, 2] < 1e-9
+    hull.vertices[bottom, 0] *= 0.3
+    hull.vertices[bottom, 1] = hull.vertices[bottom, 1] * 0.85 + 0.05 * L
+    m.add("paint", P.flatten(hull))
+    planks = P.prism([(x * 0.94, y * 0.96) for x, y in deck], 0.02 * m.sz + 0.01)
+    m.add("wood", P.flatten(P.transform(planks, P.affine(np.eye(3), (0, 0, hull_h - 0.01)))))
+    m.box("canvas_alt", (-0.5 * m.sx - 0.005, -0.05 * L, 0.92 * hull_h), (0.5 * m.sx + 0.005, L, hull_h), rounded=0.0)
+    if sail:
+        m.post("wood", 0, -0.1 * L, hull_h, m.sz, 0.02 * m.sx + 0.01, fraction=0.4)
+        m.extrude("canvas_alt", [(-0.08 * L, hull_h + 0.1 * m.sz), (0.8 * L, hull_h + 0.1 * m.sz), (-0.08 * L, 0.97 * m.sz)],
+                  "x", -0.005, 0.005)
+    else:
+        m.box("wall", (-0.32 * m.sx, -0.1 * L, hull_h), (0.32 * m.sx, 0.6 * L, 0.85 * m.sz))
+        m.box("glass", (-0.33 * m.sx, -0.11 * L, 0.65 * m.sz), (0.33 * m.sx, 0.55 * L, 0.78 * m.sz), rounded=0.0)
+        m.box("paint", (-0.35 * m.sx, -0.15 * L, 0.85 * m.sz), (0.35 * m.sx, 0.65 * L, m.sz))
+
+
+def cart(m: Model) -> None:
+    wr = 0.35 * m.sz
+    bed_z = 0.5 * m.sz
+    m.box("wood", (-0.35 * m.sx, -0.1 * m.sy, bed_z), (0.35 * m.sx, m.sy / 2, bed_z + 0.06))
+    for x in (-0.35 * m.sx, 0.35 * m.sx - 0.04):
+        m.box("wood", (x, -0.1 * m.sy, bed_z), (x + 0.04, m.sy / 2, m.sz))
+    m.box("wood", (-0.35 * m.sx, m.sy / 2 - 0.04, bed_z), (0.35 * m.sx, m.sy / 2, m.sz))
+    m.box("wood", (-0.35 * m.sx, -0.1 * m.sy, bed_z), (0.35 * m.sx, -0.1 * m.sy + 0.04, m.sz * 0.9))
+    for s in (-1, 1):
+        x = s * (m.sx / 2 - 0.03)
+        m.torus("dark_wood", (x, 0.2 * m.sy, wr), wr - 0.03, 0.03, axis="x")
+        for k in range(4):
+            a = np.pi * k / 4
+            m.beam("dark_wood", (x, 0.2 * m.sy - np.cos(a) * wr, wr - np.sin(a) * wr),
+                   (x, 0.2 * m.sy + np.cos(a) * wr, wr + np.sin(a) * wr), 0.025)
+        m.beam("wood", (s * 0.3 * m.sx, -0.1 * m.sy, bed_z + 0.03), (s * 0.25 * m.sx, -m.sy / 2, bed_z - 0.05), 0.05)
+    m.cylinder("dark_metal", (-m.sx / 2, 0.2 * m.sy, wr), (m.sx / 2, 0.2 * m.sy, wr), 0.025, fraction=0.4)
+    m.post("wood", 0, -0.05 * m.sy, 0, bed_z, 0.03)
+
+
+def robot(m: Model) -> None:
+    m.main = "metal"
+    leg_h = 0.35 * m.sz
+    body_top = 0.75 * m.sz
+    for s in (-1, 1):
+        m.box("dark_metal", (s * 0.18 * m.sx - 0.08 * m.sx, -0.1 * m.sy, 0.05 * m.sz), (s * 0.18 * m.sx + 0.08 * m.sx, 0.1 * m.sy, leg_h))
+        m.box("dark_metal", (s * 0.18 * m.sx - 0.1 * m.sx, -m.sy / 2, 0), (s * 0.18 * m.sx + 0.1 * m.sx, 0.25 * m.sy, 0.06 * m.sz))
+        m.cylinder("metal", (s * 0.33 * m.sx, 0, body_top - 0.05 * m.sz), (s * 0.44 * m.sx, -0.1 * m.sy, 0.4 * m.sz), 0.05 * m.sx,
+                   fraction=0.5)
+        m.ball("dark_metal", (s * 0.44 * m.sx, -0.1 * m.sy, 0.38 * m.sz), (0.06 * m.sx, 0.06 * m.sx, 0.06 * m.sx), fraction=0.5)
+    m.box("metal", (-0.32 * m.sx, -0.3 * m.sy, leg_h), (0.32 * m.sx, 0.3 * m.sy, body_top))
+    m.box("screen", (-0.18 * m.sx, -0.3 * m.sy - 0.01, 0.5 * m.sz), (0.18 * m.sx, -0.3 * m.sy, 0.65 * m.sz), rounded=0.0)
+    m.box("metal", (-0.2 * m.sx, -0.25 * m.sy, body_top + 0.02 * m.sz), (0.2 * m.sx, 0.25 * m.sy, 0.92 * m.sz))
+    for s in (-1, 1):
+        m.ball("light", (s * 0.08 * m.sx, -0.25 * m.sy, 0.85 * m.sz), (0.04 * m.sx, 0.02 * m.sy, 0.04 * m.sx), fraction=0.5)
+    m.post("dark_metal", 0, 0, 0.92 * m.sz, m.sz - 0.02 * m.sz, 0.01)
+    m.ball("accent", (0, 0, m.sz - 0.02 * m.sz), (0.02 * m.sz,) * 3, fraction=0.4)
+
+
+def treadmill(m: Model) -> None:
+    m.main = "dark_plastic"
+    deck = 0.15 * m.sz
+    m.box("dark_plastic", (-m.sx / 2, -0.2 * m.sy, 0), (m.sx / 2, m.sy / 2, deck))
+    m.box("rubber", (-0.4 * m.sx, -0.18 * m.sy, deck), (0.4 * m.sx, m.sy / 2 - 0.02, deck + 0.01), rounded=0.0)
+    for s in (-1, 1):
+        m.beam("metal", (s * 0.45 * m.sx, -0.15 * m.sy, deck), (s * 0.45 * m.sx, -0.4 * m.sy, 0.8 * m.sz), 0.05)
+        m.beam("metal", (s * 0.45 * m.sx, -0.35 * m.sy, 0.75 * m.sz), (s * 0.45 * m.sx, 0.05 * m.sy, 0.75 * m.sz), 0.04)
+    m.box("dark_plastic", (-0.4 * m.sx, -m.sy / 2, 0.78 * m.sz), (0.4 * m.sx, -0.35 * m.sy, m.sz))
+    m.box("screen", (-0.25 * m.sx, -0.35 * m.sy, 0.82 * m.sz), (0.25 * m.sx, -0.34 * m.sy, 0.95 * m.sz), rounded=0.0)
+
+
+SHAPES = {
+    "car": car, "truck": truck, "bus": bus, "bicycle": bicycle, "boat": boat, "cart": cart, "robot": robot,
+    "treadmill": treadmill,
+}

@@ -1,0 +1,212 @@
+"""Art styles: how a style changes palette, surface, emission, bevels, proportions, facets.
+
+A generator names the *role* of each part (wood, fabric, metal, leaf, light...) and its
+proportions through :meth:`Style.thick`; the style decides what those become. That keeps
+"cartoon" or "cyberpunk" a property of the whole scene rather than of sixty generators.
+"""
+
+from __future__ import annotations
+
+import colorsys
+import logging
+from dataclasses import dataclass, field
+
+from scenewright.scene import DEFAULT_STYLE, STYLES
+
+log = logging.getLogger(__name__)
+
+
+@dataclass(frozen=True)
+class Surface:
+    """A PBR surface: linear-ish RGB in 0..1, metallic, roughness, emissive RGB, opacity."""
+
+    color: tuple[float, float, float]
+    metallic: float = 0.0
+    roughness: float = 0.7
+    emissive: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    alpha: float = 1.0
+
+
+#: The realistic look of every role a generator may use.
+ROLES: dict[str, Surface] = {
+    "wood": Surface((0.55, 0.38, 0.22), 0.0, 0.6),
+    "dark_wood": Surface((0.3, 0.19, 0.11), 0.0, 0.55),
+    "fabric": Surface((0.55, 0.57, 0.6), 0.0, 0.95),
+    "cushion": Surface((0.78, 0.74, 0.66), 0.0, 0.95),
+    "leather": Surface((0.36, 0.2, 0.12), 0.0, 0.5),
+    "metal": Surface((0.62, 0.63, 0.65), 1.0, 0.35),
+    "dark_metal": Surface((0.18, 0.19, 0.2), 0.9, 0.45),
+    "chrome": Surface((0.9, 0.9, 0.92), 1.0, 0.1),
+    "brass": Surface((0.78, 0.6, 0.28), 1.0, 0.3),
+    "glass": Surface((0.82, 0.9, 0.95), 0.0, 0.05, alpha=0.35),
+    "plastic": Surface((0.9, 0.9, 0.88), 0.0, 0.45),
+    "dark_plastic": Surface((0.08, 0.08, 0.09), 0.0, 0.4),
+    "ceramic": Surface((0.94, 0.94, 0.92), 0.0, 0.2),
+    "stone": Surface((0.56, 0.55, 0.52), 0.0, 0.9),
+    "marble": Surface((0.9, 0.89, 0.86), 0.0, 0.2),
+    "concrete": Surface((0.62, 0.61, 0.58), 0.0, 0.95),
+    "brick": Surface((0.6, 0.28, 0.2), 0.0, 0.9),
+    "wall": Surface((0.88, 0.84, 0.76), 0.0, 0.9),
+    "roof": Surface((0.5, 0.2, 0.15), 0.0, 0.8),
+    "paint": Surface((0.6, 0.08, 0.08), 0.3, 0.3),
+    "rubber": Surface((0.06, 0.06, 0.06), 0.0, 0.9),
+    "bark": Surface((0.33, 0.23, 0.15), 0.0, 0.95),
+    "leaf": Surface((0.22, 0.45, 0.18), 0.0, 0.8),
+    "pine_leaf": Surface((0.12, 0.3, 0.16), 0.0, 0.85),
+    "flower": Surface((0.85, 0.25, 0.35), 0.0, 0.7),
+    "soil": Surface((0.28, 0.2, 0.14), 0.0, 1.0),
+    "water": Surface((0.25, 0.5, 0.65), 0.0, 0.05, alpha=0.75),
+    "paper": Surface((0.92, 0.9, 0.84), 0.0, 0.9),
+    "canvas": Surface((0.85, 0.2, 0.18), 0.0, 0.9),
+    "canvas_alt": Surface((0.95, 0.93, 0.88), 0.0, 0.9),
+    "gold": Surface((1.0, 0.77, 0.34), 1.0, 0.2),
+    "crystal": Surface((0.55, 0.75, 0.95), 0.0, 0.1, (0.05, 0.1, 0.2), 0.8),
+    "shade": Surface((0.95, 0.9, 0.78), 0.0, 0.9, (0.35, 0.3, 0.2)),
+    "lacquer": Surface((0.03, 0.03, 0.03), 0.0, 0.12),
+    "mirror": Surface((0.9, 0.92, 0.94), 1.0, 0.02),
+    "flower_alt": Surface((0.95, 0.8, 0.2), 0.0, 0.7),
+    "light": Surface((1.0, 0.93, 0.78), 0.0, 0.5, (1.0, 0.85, 0.6)),
+    "screen": Surface((0.03, 0.04, 0.06), 0.0, 0.15, (0.05, 0.08, 0.12)),
+    "accent": Surface((0.8, 0.15, 0.15), 0.0, 0.5),
+    "book_a": Surface((0.55, 0.12, 0.12), 0.0, 0.8),
+    "book_b": Surface((0.15, 0.25, 0.5), 0.0, 0.8),
+    "book_c": Surface((0.2, 0.42, 0.25), 0.0, 0.8),
+}
+
+#: Roles that carry neon in a cyberpunk scene.
+NEON_ROLES = {"light", "shade", "screen", "accent", "crystal", "glass", "water", "flower", "flower_alt", "trim"}
+NEONS = ((0.0, 0.95, 1.0), (1.0, 0.1, 0.75), (0.6, 0.2, 1.0), (0.2, 1.0, 0.5))
+_STEAMPUNK = {
+    "wood": Surface((0.32, 0.18, 0.09), 0.0, 0.5),
+    "metal": Surface((0.78, 0.58, 0.3), 1.0, 0.35),
+    "chrome": Surface((0.72, 0.45, 0.3), 1.0, 0.3),
+    "dark_metal": Surface((0.25, 0.2, 0.16), 0.9, 0.5),
+    "plastic": Surface((0.5, 0.35, 0.2), 0.6, 0.4),
+    "fabric": Surface((0.42, 0.14, 0.1), 0.0, 0.9),
+    "cushion": Surface((0.45, 0.15, 0.1), 0.0, 0.9),
+    "paint": Surface((0.18, 0.28, 0.2), 0.5, 0.4),
+    "accent": Surface((0.72, 0.45, 0.3), 1.0, 0.3),
+    "trim": Surface((0.78, 0.6, 0.28), 1.0, 0.3),
+}
+
+#: Cartoon and anime artists repaint neutral materials: toy-like primaries for cartoon,
+#: soft pastel hues for anime (which the pastel shift then lightens further).
+_CARTOON = {
+    "fabric": Surface((0.2, 0.5, 0.95), 0.0, 0.6), "cushion": Surface((1.0, 0.82, 0.35), 0.0, 0.6),
+    "wood": Surface((0.85, 0.5, 0.2), 0.0, 0.55), "dark_wood": Surface((0.6, 0.32, 0.15), 0.0, 0.55),
+    "metal": Surface((0.72, 0.76, 0.85), 0.3, 0.4), "wall": Surface((1.0, 0.9, 0.65), 0.0, 0.6),
+    "roof": Surface((0.95, 0.22, 0.18), 0.0, 0.6), "leaf": Surface((0.3, 0.8, 0.2), 0.0, 0.6),
+    "pine_leaf": Surface((0.1, 0.62, 0.3), 0.0, 0.6), "stone": Surface((0.62, 0.65, 0.75), 0.0, 0.7),
+    "plastic": Surface((0.98, 0.96, 0.9), 0.0, 0.5), "paint": Surface((0.98, 0.15, 0.15), 0.0, 0.4),
+    "bark": Surface((0.6, 0.36, 0.18), 0.0, 0.7), "ceramic": Surface((0.98, 0.98, 1.0), 0.0, 0.3),
+}
+_ANIME = {
+    "fabric": Surface((0.62, 0.58, 0.9), 0.0, 0.8), "cushion": Surface((1.0, 0.75, 0.8), 0.0, 0.8),
+    "wood": Surface((0.85, 0.65, 0.45), 0.0, 0.8), "wall": Surface((0.98, 0.95, 0.9), 0.0, 0.8),
+    "roof": Surface((0.3, 0.45, 0.85), 0.0, 0.7), "leaf": Surface((0.35, 0.78, 0.4), 0.0, 0.8),
+    "pine_leaf": Surface((0.2, 0.6, 0.45), 0.0, 0.8), "paint": Surface((0.95, 0.45, 0.55), 0.0, 0.6),
+    "stone": Surface((0.75, 0.75, 0.82), 0.0, 0.8), "canvas": Surface((0.5, 0.7, 0.95), 0.0, 0.8),
+}
+
+
+def _hsv(color, saturation: float = 1.0, value: float = 1.0, toward_white: float = 0.0):
+    h, s, v = colorsys.rgb_to_hsv(*color)
+    r, g, b = colorsys.hsv_to_rgb(h, min(1.0, s * saturation), min(1.0, v * value))
+    w = toward_white
+    return (r + (1 - r) * w, g + (1 - g) * w, b + (1 - b) * w)
+
+
+@dataclass(frozen=True)
+class Style:
+    name: str
+    #: Segments around round parts; low-poly keeps them few.
+    segments: int
+    #: Edge rounding as a fraction of a part's smallest side, and its cap in metres.
+    bevel: float
+    bevel_max: float
+    #: Thickness multiplier for legs, frames, rails: cartoon is chunky.
+    chunk: float
+    #: Flat shading: one normal per face.
+    flat: bool
+    saturation: float = 1.0
+    value: float = 1.0
+    pastel: float = 0.0
+    roughness: float | None = None
+    metallic_scale: float = 1.0
+    neon: bool = False
+    overrides: dict[str, Surface] = field(default_factory=dict)
+
+    def thick(self, metres: float) -> float:
+        return metres * self.chunk
+
+    def rounding(self, lo, hi) -> float:
+        smallest = min(abs(h - lo_) for lo_, h in zip(lo, hi))
+        return min(self.bevel * smallest, self.bevel_max)
+
+    def surface(self, role: str, neon_color=NEONS[0]) -> Surface:
+        """The look of a role in this style."""
+        base = self.overrides.get(role) or ROLES.get(role) or ROLES["accent" if role == "trim" else "plastic"]
+        return self.restyle(base, role, neon_color)
+
+    def restyle(self, base: Surface, role: str, neon_color=NEONS[0]) -> Surface:
+        """Apply this style's palette shift to a surface (also to colours the text asked for)."""
+        color = _hsv(base.color, self.saturation, self.value, self.pastel)
+        metallic = base.metallic * self.metallic_scale
+        roughness = base.roughness if self.roughness is None else self.roughness
+        emissive = base.emissive
+        if self.neon and role in NEON_ROLES:
+            color = tuple(0.2 * c for c in neon_color)
+            emissive = neon_color
+            roughness = 0.3
+        elif self.neon:
+            metallic = max(metallic, 0.5)
+            roughness = min(roughness, 0.45)
+        elif self.pastel and any(emissive):
+            emissive = _hsv(emissive, toward_white=self.pastel)
+        return Surface(tuple(float(c) for c in color), float(metallic), float(roughness), emissive, base.alpha)
+
+
+STYLE_TABLE: dict[str, Style] = {
+    "realistic": Style("realistic", segments=24, bevel=0.08, bevel_max=0.012, chunk=1.0, flat=False),
+    "cartoon": Style(
+        "cartoon", segments=18, bevel=0.3, bevel_max=0.25, chunk=1.45, flat=False,
+        saturation=1.4, value=1.1, roughness=0.55, metallic_scale=0.3, overrides=_CARTOON,
+    ),
+    "low-poly": Style(
+        "low-poly", segments=6, bevel=0.0, bevel_max=0.0, chunk=1.15, flat=True,
+        saturation=1.2, value=1.05, roughness=0.9, metallic_scale=0.0,
+    ),
+    "cyberpunk": Style(
+        "cyberpunk", segments=16, bevel=0.04, bevel_max=0.01, chunk=1.0, flat=False,
+        saturation=0.5, value=0.35, neon=True,
+    ),
+    "steampunk": Style(
+        "steampunk", segments=20, bevel=0.1, bevel_max=0.02, chunk=1.15, flat=False,
+        saturation=0.9, value=0.9, overrides=_STEAMPUNK,
+    ),
+    "anime": Style(
+        "anime", segments=20, bevel=0.2, bevel_max=0.08, chunk=1.1, flat=False,
+        saturation=0.85, value=1.1, pastel=0.35, roughness=0.8, metallic_scale=0.2, overrides=_ANIME,
+    ),
+}
+assert set(STYLE_TABLE) == set(STYLES)
+
+_ALIASES = {
+    "lowpoly": "low-poly", "low poly": "low-poly", "polygonal": "low-poly", "faceted": "low-poly",
+    "cartoonish": "cartoon", "toon": "cartoon", "cartoony": "cartoon", "pixar": "cartoon",
+    "photorealistic": "realistic", "realism": "realistic", "photoreal": "realistic", "real": "realistic",
+    "cyber": "cyberpunk", "neon": "cyberpunk", "cyber-punk": "cyberpunk", "synthwave": "cyberpunk",
+    "steam": "steampunk", "steam-punk": "steampunk", "victorian": "steampunk",
+    "manga": "anime", "ghibli": "anime", "kawaii": "anime",
+}
+
+
+def resolve_style(text: str | None) -> Style:
+    """The style a free-text name means; unknown names fall back to realistic with a note."""
+    key = " ".join((text or DEFAULT_STYLE).strip().lower().replace("_", " ").split())
+    key = key.removesuffix(" style").removesuffix("-style")
+    for candidate in (key, key.replace(" ", "-"), _ALIASES.get(key), _ALIASES.get(key.replace("-", " "))):
+        if candidate in STYLE_TABLE:
+            return STYLE_TABLE[candidate]
+    log.warning("unknown style %r: using realistic (known: %s)", text, ", ".join(STYLE_TABLE))
+    return STYLE_TABLE[DEFAULT_STYLE]

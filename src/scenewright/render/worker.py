@@ -1,0 +1,296 @@
+"""The Blender side of rendering: the only module that imports ``bpy``.
+
+Run as ``python -m scenewright.render.worker job.json``; it reads the job, renders, and
+writes the result JSON the job names. Running it in its own process means a Blender crash
+(or Blender's global state) never reaches the pipeline.
+
+Per view it first renders a one-sample object-index pass — every object's material replaced
+by an emission of its ``pass_index`` (index = R + 256·G, exact because the view transform is
+Raw and dithering is off) — counts the pixels of each object, then renders the chosen views
+with Cycles, denoised.
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+import math
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import bpy
+import numpy as np
+from mathutils import Matrix
+from PIL import Image
+
+from scenewright.files import write_atomic
+from scenewright.render.views import LENS_MM, SENSOR_MM, best_view, camera_matrix, visibility
+
+log = logging.getLogger(__name__)
+
+#: style → (world colour, world strength, sun colour, sun strength, sun elevation, sun angle,
+#: view transform). Styles not listed light like "realistic".
+LIGHTING = {
+    "realistic": ((0.50, 0.68, 0.95), 0.6, (1.0, 0.96, 0.9), 3.0, 50.0, 2.0, "AgX"),
+    "cartoon": ((0.92, 0.94, 1.0), 1.3, (1.0, 1.0, 0.97), 2.2, 60.0, 15.0, "Standard"),
+    "anime": ((0.90, 0.94, 1.0), 1.3, (1.0, 0.98, 0.95), 2.2, 60.0, 15.0, "Standard"),
+    "low-poly": ((0.85, 0.92, 1.0), 1.1, (1.0, 0.97, 0.9), 2.6, 55.0, 8.0, "Standard"),
+    "cyberpunk": ((0.012, 0.01, 0.035), 1.0, (0.45, 0.55, 1.0), 0.25, 35.0, 5.0, "AgX"),
+    "steampunk": ((0.45, 0.32, 0.2), 0.6, (1.0, 0.74, 0.48), 3.2, 28.0, 4.0, "AgX"),
+}
+#: Plain ground colours by kind, for scenes without a ground texture.
+GROUND_COLOURS = {"grass": (0.18, 0.32, 0.1), "sand": (0.76, 0.66, 0.46), "water": (0.1, 0.25, 0.4)}
+#: Metres one repeat of the ground texture covers.
+TILE_METRES = 2.0
+
+
+def _clear() -> None:
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+
+
+def _object_id(obj, ids: set[str]) -> str | None:
+    """The scene id of the node an imported object belongs to (itself or an ancestor)."""
+    while obj is not None:
+        if obj.name in ids:
+            return obj.name
+        obj = obj.parent
+    return None
+
+
+def _is_ground(obj) -> bool:
+    while obj is not None:
+        if obj.name.lower().startswith("ground"):
+            return True
+        obj = obj.parent
+    return False
+
+
+def import_scene(glb: str, ids: list[str]) -> dict[str, list]:
+    """Import the GLB, drop its ground node (the worker lays its own), index each object's meshes."""
+    bpy.ops.import_scene.gltf(filepath=glb)
+    known = set(ids)
+    parts: dict[str, list] = {object_id: [] for object_id in ids}
+    for obj in list(bpy.context.scene.objects):
+        object_id = _object_id(obj, known)
+        if object_id is None and _is_ground(obj):
+            bpy.data.objects.remove(obj, do_unlink=True)
+            continue
+        obj.pass_index = ids.index(object_id) + 1 if object_id else 0
+        if object_id and obj.type == "MESH":
+            parts[object_id].append(obj)
+    return parts
+
+
+def _material(name: str):
+    mat = bpy.data.materials.new(name)
+    mat.use_nodes = True
+    return mat, mat.node_tree.nodes, mat.node_tree.links
+
+
+def add_ground(low, high, texture: str | None, kind: str) -> None:
+    """A square ground, several scene sizes wide so the horizon stays far, texture tiled by metres."""
+    cx, cy = (low[0] + high[0]) / 2.0, (low[1] + high[1]) / 2.0
+    half = max(high[0] - low[0], high[1] - low[1], 4.0) * 4.0
+    verts = [(cx - half, cy - half, 0.0), (cx + half, cy - half, 0.0), (cx + half, cy + half, 0.0), (cx - half, cy + half, 0.0)]
+    mesh = bpy.data.meshes.new("ground")
+    mesh.from_pydata(verts, [], [(0, 1, 2, 3)])
+    uv = mesh.uv_layers.new(name="UVMap")
+    for loop in mesh.loops:
+        x, y, _ = verts[loop.vertex_index]
+        uv.data[loop.index].uv = (x / TILE_METRES, y / TILE_METRES)
+    ground = bpy.data.objects.new("ground", mesh)
+    bpy.context.scene.collection.objects.link(ground)
+    ground.pass_index = 0
+    mat, nodes, links = _material("ground")
+    bsdf = nodes["Principled BSDF"]
+    bsdf.inputs["Roughness"].default_value = 0.85
+    if texture and Path(texture).is_file():
+        tex = nodes.new("ShaderNodeTexImage")
+        tex.image = bpy.data.images.load(texture)
+        tex.extension = "REPEAT"
+        links.new(tex.outputs["Color"], bsdf.inputs["Base Color"])
+    else:
+        colour = GROUND_COLOURS.get(kind, (0.45, 0.43, 0.4))
+        bsdf.inputs["Base Color"].default_value = (*colour, 1.0)
+    mesh.materials.append(mat)
+
+
+def add_lighting(style: str, low, high) -> str:
+    """World and lamps for the style; returns the view transform the style looks right in."""
+    world_colour, world_strength, sun_colour, sun_strength, elevation, angle, transform = LIGHTING.get(
+        style, LIGHTING["realistic"]
+    )
+    scene = bpy.context.scene
+    world = bpy.data.worlds.new("world")
+    world.use_nodes = True
+    background = world.node_tree.nodes["Background"]
+    background.inputs["Color"].default_value = (*world_colour, 1.0)
+    background.inputs["Strength"].default_value = world_strength
+    scene.world = world
+
+    sun = bpy.data.objects.new("sun", bpy.data.lights.new("sun", type="SUN"))
+    sun.data.energy = sun_strength
+    sun.data.color = sun_colour
+    sun.data.angle = math.radians(angle)
+    # From the front-left, so the fronts the cameras look at are lit.
+    sun.rotation_euler = (math.radians(90.0 - elevation), 0.0, math.radians(-35.0))
+    scene.collection.objects.link(sun)
+
+    if style == "cyberpunk":
+        # Neon accents: magenta and cyan lamps at opposite corners, bright enough at the centre.
+        reach = max(float(np.linalg.norm(np.subtract(high, low))) / 2.0, 2.0)
+        for name, colour, corner in (
+            ("neon_magenta", (1.0, 0.1, 0.7), (low[0], low[1])),
+            ("neon_cyan", (0.1, 0.8, 1.0), (high[0], low[1])),
+        ):
+            lamp = bpy.data.objects.new(name, bpy.data.lights.new(name, type="POINT"))
+            lamp.data.color = colour
+            lamp.data.energy = 4.0 * math.pi * reach**2 * 1.2
+            lamp.data.shadow_soft_size = 0.5
+            lamp.location = (corner[0], corner[1], max(high[2], 1.0) + 1.0)
+            scene.collection.objects.link(lamp)
+    return transform
+
+
+def add_camera(aspect: float):
+    camera = bpy.data.objects.new("camera", bpy.data.cameras.new("camera"))
+    camera.data.lens = LENS_MM
+    camera.data.sensor_width = SENSOR_MM
+    camera.data.sensor_fit = "AUTO"
+    camera.data.clip_start = 0.05
+    camera.data.clip_end = 10000.0
+    bpy.context.scene.collection.objects.link(camera)
+    bpy.context.scene.camera = camera
+    return camera
+
+
+def index_material():
+    """Emission of (pass_index mod 256, pass_index // 256, 0) / 255: the object-index pass."""
+    mat, nodes, links = _material("object_index")
+    for node in list(nodes):
+        nodes.remove(node)
+
+    def math(operation: str, value, constant: float | None = None):
+        node = nodes.new("ShaderNodeMath")
+        node.operation = operation
+        links.new(value, node.inputs[0])
+        if constant is not None:
+            node.inputs[1].default_value = constant
+        return node.outputs[0]
+
+    index = nodes.new("ShaderNodeObjectInfo").outputs["Object Index"]
+    combine = nodes.new("ShaderNodeCombineColor")
+    links.new(math("DIVIDE", math("FLOORED_MODULO", index, 256.0), 255.0), combine.inputs["Red"])
+    links.new(math("DIVIDE", math("FLOOR", math("DIVIDE", index, 256.0)), 255.0), combine.inputs["Green"])
+    emission = nodes.new("ShaderNodeEmission")
+    emission.inputs["Strength"].default_value = 1.0
+    links.new(combine.outputs["Color"], emission.inputs["Color"])
+    links.new(emission.outputs["Emission"], nodes.new("ShaderNodeOutputMaterial").inputs["Surface"])
+    return mat
+
+
+def configure(job: dict) -> None:
+    scene = bpy.context.scene
+    scene.render.engine = "CYCLES"
+    scene.cycles.device = "CPU"
+    scene.render.resolution_x, scene.render.resolution_y = job["resolution"]
+    scene.render.resolution_percentage = 100
+    scene.render.image_settings.file_format = "PNG"
+    scene.render.image_settings.color_mode = "RGBA"
+    scene.render.image_settings.color_depth = "8"
+
+
+def render_index(path: Path, override) -> None:
+    scene = bpy.context.scene
+    layer = scene.view_layers[0]
+    saved = (scene.view_settings.view_transform, scene.view_settings.look, scene.render.film_transparent)
+    layer.material_override = override
+    scene.cycles.samples = 1
+    scene.cycles.use_denoising = False
+    scene.cycles.use_adaptive_sampling = False
+    scene.cycles.max_bounces = 0
+    scene.render.dither_intensity = 0.0
+    scene.render.film_transparent = True
+    scene.view_settings.view_transform = "Raw"
+    scene.view_settings.look = "None"
+    scene.render.filepath = str(path)
+    bpy.ops.render.render(write_still=True)
+    layer.material_override = None
+    scene.view_settings.view_transform, scene.view_settings.look, scene.render.film_transparent = saved
+
+
+def render_beauty(path: Path, job: dict, transform: str) -> None:
+    scene = bpy.context.scene
+    scene.cycles.samples = job["samples"]
+    scene.cycles.use_adaptive_sampling = True
+    scene.cycles.max_bounces = 6
+    scene.cycles.use_denoising = job["denoise"]
+    if job["denoise"]:
+        scene.cycles.denoiser = "OPENIMAGEDENOISE"
+    scene.render.dither_intensity = 1.0
+    scene.render.film_transparent = job["transparent"]
+    scene.view_settings.view_transform = transform
+    # AgX alone flattens saturated asset colours; its punchy look keeps them.
+    scene.view_settings.look = "AgX - Punchy" if transform == "AgX" else "None"
+    scene.render.filepath = str(path)
+    bpy.ops.render.render(write_still=True)
+
+
+def run(job: dict) -> dict:
+    started = time.perf_counter()
+    _clear()
+    configure(job)
+    ids: list[str] = job["ids"]
+    low, high = job["bounds"]
+    parts = import_scene(job["glb"], ids)
+    missing = [object_id for object_id, meshes in parts.items() if not meshes]
+    add_ground(low, high, job.get("ground_texture"), job.get("ground_kind", ""))
+    transform = add_lighting(job["style"], low, high)
+    width, height = job["resolution"]
+    camera = add_camera(width / height)
+    override = index_material()
+    out = Path(job["out_dir"])
+    out.mkdir(parents=True, exist_ok=True)
+    visible: dict[str, dict[str, int]] = {}
+    with tempfile.TemporaryDirectory(prefix="scenewright-index-") as tmp:
+        for view in job["views"]:
+            camera.matrix_world = Matrix(camera_matrix(view, low, high, width / height).tolist())
+            index_png = Path(tmp) / f"{view}.png"
+            render_index(index_png, override)
+            visible[view] = visibility(np.asarray(Image.open(index_png).convert("RGBA")), ids)
+    best = best_view(visible)
+    chosen = list(job["views"]) if job["keep_all"] else [best]
+    chosen.sort(key=lambda v: v != best)
+    images, seconds = {}, {}
+    for view in chosen:
+        camera.matrix_world = Matrix(camera_matrix(view, low, high, width / height).tolist())
+        t0 = time.perf_counter()
+        path = out / f"{view}.png"
+        render_beauty(path, job, transform)
+        images[view], seconds[view] = str(path), round(time.perf_counter() - t0, 3)
+    return {
+        "best": best,
+        "images": images,
+        "visible": visible,
+        "missing": missing,
+        "render_seconds": seconds,
+        "total_seconds": round(time.perf_counter() - started, 3),
+        "blender": bpy.app.version_string,
+        "denoiser": "OPENIMAGEDENOISE" if job["denoise"] else None,
+    }
+
+
+def main(argv: list[str]) -> int:
+    if len(argv) != 1:
+        sys.stderr.write("usage: python -m scenewright.render.worker JOB.json\n")
+        return 2
+    job = json.loads(Path(argv[0]).read_text(encoding="utf-8"))
+    result = run(job)
+    write_atomic(job["result"], json.dumps(result, indent=2))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

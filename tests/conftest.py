@@ -1,0 +1,23 @@
+"""Fixtures shared by test modules."""
+
+from __future__ import annotations
+
+import pytest
+
+from scenewright.backends.fake_openai import FakeOpenAI
+from scenewright.settings import Settings
+
+
+@pytest.fixture
+def openai_server():
+    """A scripted OpenAI-compatible server on 127.0.0.1 (see scenewright.backends.fake_openai)."""
+    with FakeOpenAI() as server:
+        yield server
+
+
+@pytest.fixture
+def remote_settings(openai_server, tmp_path):
+    """Settings for the OpenAI backends against ``openai_server``, with a private cache."""
+    return Settings(
+        base_url=openai_server.url, cache_dir=tmp_path / "cache", max_retries=2, timeout=5.0, image_concurrency=3
+    )

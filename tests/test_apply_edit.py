@@ -1,0 +1,210 @@
+"""apply_edit on a real scene folder: only the focus (and what rests on it) changes, the new
+constraints hold, nothing collides, and a failed edit leaves every file as it was."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from editing_scenes import folder, template  # noqa: F401  (fixtures)
+from editing_scenes import BoxMeshes, NoImages, PictureImages, RulePlanner, snapshot
+from scenewright.assets import load_meshes
+from scenewright.backends import Backends
+from scenewright.editing import EditPlan, apply_edit, validate_plan
+from scenewright.errors import InfeasibleLayout, InputError
+from scenewright.layout import check, colliding_pairs
+from scenewright.scene import Constraint
+from scenewright.settings import Settings
+
+
+@pytest.fixture
+def backends():
+    return Backends(vlm=RulePlanner(), images=NoImages(), meshes=BoxMeshes())
+
+
+SETTINGS = Settings(cache_dir=None, time_limit=5.0)
+
+
+def edit(folder, instruction, backends):
+    return apply_edit(folder.load(), folder, instruction, backends=backends, settings=SETTINGS)
+
+
+def pose(obj):
+    return np.array([*obj.position.tuple(), obj.rotation.z])
+
+
+def assert_others_unmoved(before, after, moved):
+    for obj in after.objects:
+        if obj.id not in moved:
+            assert np.allclose(pose(obj), pose(before.get(obj.id)), atol=1e-3), obj.id
+
+
+def assert_sound(folder, scene):
+    assert colliding_pairs(scene.objects, load_meshes(scene, folder), scene.constraints) == []
+    for c in scene.constraints:
+        assert check(c.relation, scene.get(c.source), scene.get(c.target)), str(c)
+    assert folder.load() == scene  # what apply_edit returned is what it saved
+
+
+def test_move_re_solves_only_the_focus_and_carries_what_rests_on_it(folder, backends):
+    before = folder.load()
+    after = edit(folder, "move the coffee table to the right of the floor lamp", backends)
+    assert check("right of", after.get("coffee_table_1"), after.get("floor_lamp_1"))
+    assert not any(c.source == "coffee_table_1" and c.relation == "in front of" for c in after.constraints)
+    assert_others_unmoved(before, after, {"coffee_table_1", "vase_1"})
+    # the vase rode along: same offset, still resting on the table
+    offset = lambda s: pose(s.get("vase_1"))[:2] - pose(s.get("coffee_table_1"))[:2]  # noqa: E731
+    assert np.allclose(offset(after), offset(before), atol=1e-6)
+    assert check("on", after.get("vase_1"), after.get("coffee_table_1"))
+    assert_sound(folder, after)
+
+
+def test_turn_to_face_keeps_the_place(folder, backends):
+    before = folder.load()
+    after = edit(folder, "turn the armchair to face the bookshelf", backends)
+    armchair = after.get("armchair_1")
+    assert check("face to", armchair, after.get("bookshelf_1"))
+    assert np.allclose(pose(armchair)[:3], pose(before.get("armchair_1"))[:3])
+    assert_others_unmoved(before, after, {"armchair_1"})
+    assert_sound(folder, after)
+
+
+def test_delete_removes_what_rests_only_on_it_and_says_so(folder, backends):
+    after = edit(folder, "remove the coffee table", backends)
+    ids = {o.id for o in after.objects}
+    assert "coffee_table_1" not in ids and "vase_1" not in ids
+    assert {r.id for r in after.removed} == {"coffee_table_1", "vase_1"}
+    assert "coffee_table_1" in next(r.reason for r in after.removed if r.id == "vase_1")
+    assert all({c.source, c.target}.isdisjoint({"coffee_table_1", "vase_1"}) for c in after.constraints)
+    assert b"coffee_table_1" not in folder.glb.read_bytes()
+    assert_sound(folder, after)
+
+
+def test_replace_regenerates_the_asset_in_place(folder, backends):
+    before = folder.load()
+    old_asset = before.get("sofa_1").asset
+    after = edit(folder, "paint the sofa blue", backends)
+    sofa = after.get("sofa_1")
+    assert "blue" in sofa.visual_description
+    assert sofa.asset != old_asset and folder.resolve(sofa.asset).is_file()
+    assert folder.resolve(old_asset).is_file()  # kept for undo
+    assert backends.meshes.requests[-1].description == sofa.visual_description
+    assert np.allclose(pose(sofa), pose(before.get("sofa_1")))
+    assert_others_unmoved(before, after, {"sofa_1"})
+    assert_sound(folder, after)
+
+
+def test_replace_with_a_larger_thing_re_places_it_when_it_no_longer_fits(folder, backends):
+    before = folder.load()
+    after = edit(folder, "replace the floor lamp with a wardrobe", backends)
+    wardrobe = after.get("floor_lamp_1")
+    assert wardrobe.category == "wardrobe" and wardrobe.size.x > 1.0
+    assert check("right of", wardrobe, after.get("sofa_1"))
+    assert_others_unmoved(before, after, {"floor_lamp_1"})
+    assert_sound(folder, after)
+
+
+def test_replace_draws_a_new_object_image_where_the_image_backend_can(folder):
+    backends = Backends(vlm=RulePlanner(), images=PictureImages(), meshes=BoxMeshes())
+    after = edit(folder, "swap the floor lamp for a lantern", backends)
+    lantern = after.get("floor_lamp_1")
+    assert lantern.image is not None and folder.resolve(lantern.image).is_file()
+    assert backends.meshes.requests[-1].image == folder.resolve(lantern.image).read_bytes()
+
+
+def test_replace_lifts_what_rests_on_it_with_its_new_height(folder, backends):
+    after = edit(folder, "make the coffee table taller", backends)
+    table, vase = after.get("coffee_table_1"), after.get("vase_1")
+    assert table.size.z > 0.6
+    assert check("on", vase, table)
+    assert_sound(folder, after)
+
+
+def test_add_places_a_new_object_with_its_constraints(folder, backends):
+    before = folder.load()
+    after = edit(folder, "add a red armchair next to the sofa", backends)
+    new = after.get("armchair_2")
+    assert new.category == "armchair" and "red" in new.visual_description
+    assert folder.resolve(new.asset).is_file()
+    assert check("side of", new, after.get("sofa_1"))
+    assert_others_unmoved(before, after, {"armchair_2"})
+    assert_sound(folder, after)
+
+
+def test_impossible_placement_reports_why_and_changes_nothing(folder, backends):
+    scene = folder.load()
+    scene.bounds = (12.0, 6.0)
+    folder.save(scene)
+    files = snapshot(folder.root)
+    with pytest.raises(InfeasibleLayout, match="bookshelf_1"):
+        edit(folder, "move the bookshelf far from the sofa", backends)
+    assert snapshot(folder.root) == files
+
+
+@pytest.mark.parametrize(
+    "instruction",
+    ["move the chair next to the sofa", "move the piano next to the sofa", "", "add a flux capacitor"],
+)
+def test_refused_edits_leave_every_file_as_it_was(folder, backends, instruction):
+    files = snapshot(folder.root)
+    with pytest.raises(InputError):
+        edit(folder, instruction, backends)
+    assert snapshot(folder.root) == files
+
+
+def test_plans_are_validated_like_model_answers(folder):
+    scene = folder.load()
+    bad = [
+        EditPlan(operation="move", focus="piano_1"),
+        EditPlan(operation="move", focus="sofa_1",
+                 constraints=[Constraint(relation="near", source="bookshelf_1", target="sofa_1")]),
+        EditPlan(operation="move", focus="sofa_1",
+                 constraints=[Constraint(relation="near", source="sofa_1", target="sofa_1")]),
+        EditPlan(operation="move", focus="sofa_1",
+                 constraints=[Constraint(relation="near", source="sofa_1", target="piano_1")]),
+        EditPlan(operation="replace", focus="sofa_1"),
+        EditPlan(operation="move", focus="sofa_1"),  # neither where to nor a turn
+    ]
+    for plan in bad:
+        with pytest.raises(InputError):
+            validate_plan(scene, plan)
+    reused = validate_plan(scene, EditPlan(
+        operation="add", focus="sofa_1", new_object={"name": "sofa", "category": "sofa"},
+        constraints=[Constraint(relation="near", source="sofa_1", target="bookshelf_1")],
+    ))
+    assert reused.focus == "sofa_2" and reused.constraints[0].source == "sofa_2"
+
+
+class ScriptedPlanner:
+    """Stands in for a model backend: answers one fixed structured plan."""
+
+    name = "scripted"
+
+    def __init__(self, plan):
+        self.plan = plan
+
+    def plan_edit(self, scene, instruction):
+        return self.plan
+
+
+def test_a_model_plan_that_replaces_and_re_places_is_carried_out(folder):
+    plan = EditPlan(
+        operation="replace", focus="floor_lamp_1",
+        new_object={"name": "brass lantern", "category": "lantern", "visual_description": "a brass lantern"},
+        constraints=[Constraint(relation="on", source="floor_lamp_1", target="table_1")],
+    )
+    backends = Backends(vlm=ScriptedPlanner(plan), images=NoImages(), meshes=BoxMeshes())
+    before = folder.load()
+    after = edit(folder, "put a brass lantern on the dining table instead of the floor lamp", backends)
+    lantern = after.get("floor_lamp_1")
+    assert lantern.name == "brass lantern" and check("on", lantern, after.get("table_1"))
+    assert not any(c.source == "floor_lamp_1" and c.relation == "right of" for c in after.constraints)
+    assert_others_unmoved(before, after, {"floor_lamp_1"})
+    assert_sound(folder, after)
+
+
+def test_an_object_cannot_be_placed_on_what_rests_on_it(folder, backends):
+    files = snapshot(folder.root)
+    with pytest.raises(InputError, match="vase_1 rests on coffee_table_1"):
+        edit(folder, "put the coffee table on the vase", backends)
+    assert snapshot(folder.root) == files

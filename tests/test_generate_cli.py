@@ -1,0 +1,196 @@
+"""`scenewright generate` end to end, offline: the right objects, relations honoured or reported,
+no collisions, a valid GLB; bad input refused with a clear message and nothing overwritten."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+from importlib import resources
+from pathlib import Path
+
+import pytest
+
+from gltf_validator import assert_valid
+from scenewright.assets import load_meshes
+from scenewright.cli import main
+from scenewright.folder import SceneFolder
+from scenewright.layout import check, colliding_pairs
+
+
+def _example(name: str) -> str:
+    return (resources.files("scenewright") / "data" / "examples" / f"{name}.txt").read_text(encoding="utf-8")
+
+
+#: (text, categories that must be in the scene with their least count); indoor first, then open domain.
+CASES = {
+    "living_room": (
+        _example("living_room"),
+        {"sofa": 1, "coffee_table": 1, "tv": 1, "tv_stand": 1, "armchair": 2, "bookshelf": 1, "floor_lamp": 1,
+         "side_table": 1, "table_lamp": 1, "vase": 1, "potted_plant": 1, "piano": 1, "stool": 1},
+    ),
+    "bedroom": (
+        "An anime-style bedroom. A double bed with white sheets stands in the middle. Two small "
+        "nightstands are on either side of the bed, each with a table lamp on it. A tall wardrobe "
+        "is to the left of the bed and a desk with a laptop on it is to the right of the bed, with "
+        "an office chair in front of the desk.",
+        {"bed": 1, "nightstand": 2, "table_lamp": 2, "wardrobe": 1, "desk": 1, "laptop": 1, "office_chair": 1},
+    ),
+    "market_square": (
+        _example("market_square"),
+        {"fountain": 1, "market_stall": 3, "cart": 1, "barrel": 2, "crate": 1, "bench": 1, "lamp_post": 1,
+         "tree": 1, "well": 1},
+    ),
+    "harbour": (
+        "A low-poly fishing harbour on sand. A small red lighthouse stands far from a wooden boat. "
+        "Three wooden crates are stacked next to the boat, a coil of rope lies beside the crates, and "
+        "a rusty anchor leans in front of the boat. Two barrels are to the right of the crates.",
+        {"lighthouse": 1, "boat": 1, "crate": 3, "rope_coil": 1, "anchor": 1, "barrel": 2},
+    ),
+}
+
+
+def _err(capsys) -> str:
+    """What went to stderr, with rich's line wrapping undone."""
+    return " ".join(capsys.readouterr().err.split())
+
+
+def _files(root: Path) -> dict[str, str]:
+    return {
+        str(p.relative_to(root)): hashlib.sha256(p.read_bytes()).hexdigest() for p in root.rglob("*") if p.is_file()
+    }
+
+
+@pytest.fixture(autouse=True)
+def _no_cache(tmp_path, monkeypatch):
+    """Keep every run's cache inside the test's folder."""
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+
+
+@pytest.mark.node
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_generate_end_to_end(case, tmp_path):
+    text, expected = CASES[case]
+    out = tmp_path / case
+    assert main(["generate", text, "--out", str(out), "--no-render"]) == 0
+
+    folder = SceneFolder(out)
+    scene = folder.load()
+    counts: dict[str, int] = {}
+    for obj in scene.objects:
+        counts[obj.category] = counts.get(obj.category, 0) + 1
+    missing = {c: n for c, n in expected.items() if counts.get(c, 0) < n}
+    assert not missing, f"missing {missing}; got {counts}"
+
+    unplaced = {u.id for u in scene.layout.unplaced}
+    assert not unplaced, scene.layout.unplaced
+    failed = [str(c) for c in scene.constraints
+              if not check(c.relation, scene.get(c.source), scene.get(c.target))]
+    assert not failed
+    assert colliding_pairs(scene.objects, load_meshes(scene, folder), scene.constraints) == []
+
+    report = assert_valid(folder.glb)
+    assert report["info"]["totalVertexCount"] > 0
+
+
+def test_example_prints_where_the_files_are(tmp_path, capsys):
+    out = tmp_path / "demo"
+    assert main(["generate", "--example", "--out", str(out), "--no-render"]) == 0
+    printed = capsys.readouterr().out
+    assert str(out.resolve()) in printed and "scene.glb" in printed
+    assert SceneFolder(out).load().text == _example("living_room").strip()
+
+
+def test_resume_rebuilds_only_what_is_missing(tmp_path):
+    out = tmp_path / "s"
+    assert main(["generate", CASES["bedroom"][0], "--out", str(out), "--no-render"]) == 0
+    folder = SceneFolder(out)
+    assets_before = {p.name: p.stat().st_mtime_ns for p in folder.assets.iterdir()}
+    folder.glb.unlink()
+    assert main(["generate", "--resume", str(out), "--no-render"]) == 0
+    assert folder.glb.is_file()
+    assert {p.name: p.stat().st_mtime_ns for p in folder.assets.iterdir()} == assets_before
+
+
+@pytest.mark.parametrize("text", ["", "   \n "])
+def test_empty_text_is_refused(text, tmp_path, capsys):
+    out = tmp_path / "never"
+    assert main(["generate", text, "--out", str(out)]) == 2
+    assert "text is empty" in _err(capsys)
+    assert not out.exists()
+
+
+def test_text_without_objects_is_refused_and_leaves_nothing(tmp_path, capsys):
+    out = tmp_path / "none"
+    code = main(["generate", "The weather is lovely and everyone feels happy today.", "--out", str(out)])
+    assert code == 2
+    assert "no object" in _err(capsys)
+    assert not out.exists()
+
+
+def test_non_scene_folder_is_refused_untouched(tmp_path, capsys):
+    out = tmp_path / "mine"
+    out.mkdir()
+    (out / "notes.txt").write_text("my notes")
+    (out / "sub").mkdir()
+    (out / "sub" / "data.bin").write_bytes(b"\x00\x01")
+    before = _files(out)
+    assert main(["generate", CASES["bedroom"][0], "--out", str(out)]) == 2
+    assert "holds no scene.json" in _err(capsys)
+    assert _files(out) == before
+
+
+def test_other_scene_in_folder_is_refused_untouched(tmp_path, capsys):
+    out = tmp_path / "s"
+    assert main(["generate", "A desk with a laptop on it.", "--out", str(out), "--no-render"]) == 0
+    before = _files(out)
+    assert main(["generate", "A bed with a nightstand beside it.", "--out", str(out)]) == 2
+    assert "already holds another scene" in _err(capsys)
+    assert _files(out) == before
+
+
+def test_out_under_a_file_is_refused(tmp_path, capsys):
+    blocker = tmp_path / "file"
+    blocker.write_text("x")
+    assert main(["generate", "A desk.", "--out", str(blocker / "scene")]) == 2
+    assert "cannot create" in _err(capsys)
+
+
+@pytest.mark.skipif(os.geteuid() == 0, reason="root writes into read-only folders")
+def test_read_only_out_is_refused(tmp_path, capsys):
+    locked = tmp_path / "locked"
+    locked.mkdir()
+    locked.chmod(0o500)
+    try:
+        assert main(["generate", "A desk.", "--out", str(locked / "scene")]) == 2
+        assert "cannot create" in _err(capsys)
+    finally:
+        locked.chmod(0o700)
+
+
+@pytest.mark.parametrize(
+    "argv, message",
+    [
+        (["generate", "--out", "x"], "exactly one of TEXT, --example or --resume"),
+        (["generate", "A desk.", "--example", "--out", "x"], "exactly one of"),
+        (["generate", "A desk."], "--out DIR is required"),
+        (["generate", "--resume", "x", "--out", "y"], "drop --out"),
+    ],
+)
+def test_argument_mistakes_are_explained(argv, message, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert main(argv) == 2
+    assert message in _err(capsys)
+
+
+def test_resume_of_a_non_scene_is_refused(tmp_path, capsys):
+    assert main(["generate", "--resume", str(tmp_path)]) == 2
+    assert "not a scene folder" in _err(capsys)
+
+
+def test_bench_pipeline_prints_one_json_object(tmp_path, capsys):
+    prompts = Path(__file__).resolve().parents[1] / "benchmarks" / "prompts"
+    assert main(["bench", "pipeline", "--prompts", str(prompts), "--limit", "2", "--json"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert result["prompts"] == 2
+    assert result["median_seconds"] > 0

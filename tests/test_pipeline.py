@@ -1,0 +1,307 @@
+"""The pipeline and its stages: resumable, recorded, with the feedback loop and quality control."""
+
+from __future__ import annotations
+
+import io
+import json
+from collections import Counter
+from importlib import resources
+
+import pytest
+from PIL import Image
+
+from scenewright.analysis.stage import analyze
+from scenewright.backends import Backends
+from scenewright.cache import RequestCache
+from scenewright.errors import BackendError, InputError, MissingExtra
+from scenewright.folder import SceneFolder
+from scenewright.layout.stage import arrange
+from scenewright.pipeline import generate, resume
+from scenewright.scene import DEFAULT_STYLE, Constraint, Scene, SceneObject, Vec3
+from scenewright.settings import Settings
+
+TEXT = (
+    "A small study: a wooden desk with a laptop on it, an office chair in front of the desk "
+    "facing it, and a tall bookshelf to the left of the desk."
+)
+
+
+class Counting:
+    """Wraps a backend and counts the calls (and mesh requests) it receives."""
+
+    def __init__(self, inner, fail_after: int | None = None):
+        self.inner = inner
+        self.name = inner.name
+        self.calls: Counter[str] = Counter()
+        self.fail_after = fail_after
+
+    def __getattr__(self, attr):
+        target = getattr(self.inner, attr)
+        if not callable(target):
+            return target
+
+        def call(*args, **kwargs):
+            self.calls[attr] += 1
+            if attr == "generate":
+                self.calls["requests"] += len(args[0])
+                if self.fail_after is not None and self.calls["requests"] > self.fail_after:
+                    raise BackendError("mesh server went away (simulated)")
+            return target(*args, **kwargs)
+
+        return call
+
+
+def _settings() -> Settings:
+    return Settings(cache_dir=None)
+
+
+def _counting(settings: Settings, fail_after: int | None = None) -> Backends:
+    real = Backends.from_settings(settings)
+    return Backends(vlm=Counting(real.vlm), images=Counting(real.images), meshes=Counting(real.meshes, fail_after))
+
+
+def _png(colour=(200, 100, 50, 255)) -> bytes:
+    buf = io.BytesIO()
+    Image.new("RGBA", (16, 16), colour).save(buf, "PNG")
+    return buf.getvalue()
+
+
+def test_generate_writes_a_complete_scene_folder(tmp_path):
+    folder = SceneFolder(tmp_path / "study")
+    scene = generate(TEXT, folder, backends=Backends.from_settings(_settings()), settings=_settings(), render=False)
+    assert scene.done == ["analyze", "assets", "layout", "export"]
+    assert folder.glb.is_file() and folder.ground_image.is_file()
+    assert {o.category for o in scene.objects} >= {"desk", "laptop", "office_chair", "bookshelf"}
+    stored = json.loads(folder.document.read_text())
+    for obj in stored["objects"]:
+        assert {"id", "name", "category", "position", "rotation", "size", "visual_description", "asset"} <= set(obj)
+        assert (folder.root / obj["asset"]).is_file()
+    assert stored["constraints"] and stored["layout"]["placed"]
+    assert {e["stage"] for e in stored["provenance"]} >= {"generate", "analyze", "layout", "export"}
+    assert scene.backends == {"vlm": "offline", "images": "offline", "meshes": "procedural"}
+
+
+def test_rerun_of_a_finished_scene_calls_no_backend(tmp_path):
+    settings = _settings()
+    generate(TEXT, tmp_path / "s", backends=Backends.from_settings(settings), settings=settings, render=False)
+    backends = _counting(settings)
+    generate(TEXT, tmp_path / "s", backends=backends, settings=settings, render=False)
+    assert not (backends.vlm.calls + backends.images.calls + backends.meshes.calls)
+
+
+def test_deleted_glb_is_rebuilt_by_export_alone(tmp_path):
+    settings = _settings()
+    folder = SceneFolder(tmp_path / "s")
+    first = generate(TEXT, folder, backends=Backends.from_settings(settings), settings=settings, render=False)
+    folder.glb.unlink()
+    backends = _counting(settings)
+    scene = resume(folder, backends=backends, settings=settings, render=False)
+    assert folder.glb.is_file()
+    assert not (backends.vlm.calls + backends.images.calls + backends.meshes.calls)
+    assert [o.position for o in scene.objects] == [o.position for o in first.objects]
+
+
+def test_interrupted_asset_stage_resumes_with_only_the_missing_assets(tmp_path):
+    settings = _settings()
+    folder = SceneFolder(tmp_path / "s")
+    with pytest.raises(BackendError, match="simulated"):
+        generate(TEXT, folder, backends=_counting(settings, fail_after=2), settings=settings, render=False)
+    interrupted = folder.load()
+    assert interrupted.done == ["analyze"]
+    built = [o.id for o in interrupted.objects if o.asset and folder.resolve(o.asset).is_file()]
+    assert 0 < len(built) < len(interrupted.objects)
+
+    backends = _counting(settings)
+    scene = resume(folder, backends=backends, settings=settings, render=False)
+    assert scene.done == ["analyze", "assets", "layout", "export"]
+    assert backends.vlm.calls["describe_objects"] == 0
+    assert backends.images.calls["ground_texture"] == 0
+    assert backends.meshes.calls["requests"] == len(scene.objects) - len(built)
+
+
+def test_cache_answers_a_fresh_run_of_the_same_text(tmp_path):
+    settings = Settings(cache_dir=tmp_path / "cache")
+    generate(TEXT, tmp_path / "a", backends=Backends.from_settings(settings), settings=settings, render=False)
+    backends = _counting(settings)
+    generate(TEXT, tmp_path / "b", backends=backends, settings=settings, render=False)
+    assert backends.vlm.calls["describe_objects"] == 0
+    assert backends.images.calls["ground_texture"] == 0
+
+
+def test_style_from_flag_then_text_then_default(tmp_path):
+    backends, settings = Backends.from_settings(_settings()), _settings()
+    cartoon = "A cartoon-style playground: a red slide next to a blue swing."
+    assert generate(cartoon, tmp_path / "a", backends=backends, settings=settings, style="Steampunk", render=False).style == "steampunk"
+    assert generate(cartoon, tmp_path / "b", backends=backends, settings=settings, render=False).style == "cartoon"
+    plain = "A playground: a red slide next to a blue swing."
+    assert generate(plain, tmp_path / "c", backends=backends, settings=settings, render=False).style == DEFAULT_STYLE
+
+
+def test_ground_kind_follows_the_text(tmp_path):
+    backends, settings = Backends.from_settings(_settings()), _settings()
+    scene = generate(
+        "A park on green grass: an oak tree with a bench in front of it.",
+        tmp_path / "p", backends=backends, settings=settings, render=False,
+    )
+    assert scene.ground.kind == "grass"
+    assert scene.ground.texture == "images/ground.png"
+
+
+def test_folder_holding_another_scene_is_refused_untouched(tmp_path):
+    settings = _settings()
+    folder = SceneFolder(tmp_path / "s")
+    generate(TEXT, folder, backends=Backends.from_settings(settings), settings=settings, render=False)
+    before = folder.document.read_bytes()
+    with pytest.raises(InputError, match="already holds another scene"):
+        generate("A kitchen with a fridge.", folder, backends=Backends.from_settings(settings), settings=settings)
+    assert folder.document.read_bytes() == before
+
+
+def test_missing_render_extra_is_a_warning(tmp_path, monkeypatch, caplog):
+    import scenewright.render
+
+    def no_blender(scene, folder, **kwargs):
+        raise MissingExtra("rendering", "render", "bpy")
+
+    monkeypatch.setattr(scenewright.render, "render", no_blender)
+    settings = _settings()
+    scene = generate(TEXT, tmp_path / "s", backends=Backends.from_settings(settings), settings=settings, render=True)
+    assert scene.done == ["analyze", "assets", "layout", "export"]
+    assert "no preview renders" in caplog.text
+
+    def fake_render(scene, folder, **kwargs):
+        folder.renders.mkdir(exist_ok=True)
+        (folder.renders / "front.png").write_bytes(_png())
+        return [folder.renders / "front.png"]
+
+    monkeypatch.setattr(scenewright.render, "render", fake_render)
+    scene = resume(tmp_path / "s", backends=_counting(settings), settings=settings, render=True)
+    assert scene.done[-1] == "render"
+
+
+# --- analysis stage, with a stand-in image backend that draws object images ---------------------
+
+
+class DrawingImages:
+    """An image backend that draws a reference and one image per object (as remote ones do)."""
+
+    name = "drawing"
+
+    def reference_image(self, text, style):
+        return _png((1, 2, 3, 255))
+
+    def object_images(self, objects, style, reference, progress=None):
+        return {o.id: _png() for o in objects}
+
+    def ground_texture(self, text, style, kind, reference):
+        return _png((90, 140, 60, 255))
+
+
+class RedundantVLM:
+    """Says the faucet is already part of the bathtub's image, as in the paper's example."""
+
+    name = "stand-in"
+
+    def __init__(self):
+        self.seen_images: dict[str, bytes] = {}
+
+    def describe_objects(self, text, style, reference):
+        assert reference is not None
+        return [
+            SceneObject(id="bathtub_1", name="bathtub", size=Vec3(x=1.7, y=0.8, z=0.6)),
+            SceneObject(id="faucet_1", name="faucet", size=Vec3(x=0.1, y=0.2, z=0.3)),
+        ]
+
+    def find_redundant(self, objects, images):
+        self.seen_images = dict(images)
+        return {"faucet_1": "already part of the bathtub's image"}
+
+
+def test_analyze_saves_images_and_records_removed_objects(tmp_path):
+    folder = SceneFolder(tmp_path / "bath")
+    folder.create()
+    scene = Scene(text="A bathtub with a faucet.")
+    vlm = RedundantVLM()
+    analyze(scene, folder, vlm, DrawingImages(), RequestCache(None))
+    assert folder.reference_image.is_file() and folder.ground_image.is_file()
+    assert set(vlm.seen_images) == {"bathtub_1", "faucet_1"}
+    assert [o.id for o in scene.objects] == ["bathtub_1"]
+    assert scene.objects[0].image == "images/objects/bathtub_1.png"
+    assert folder.object_image("faucet_1").is_file()
+    assert [(r.id, r.reason) for r in scene.removed] == [("faucet_1", "already part of the bathtub's image")]
+    assert Scene.load(folder.document).removed == scene.removed
+
+    # A second pass finds every output in place and asks nothing again.
+    vlm.find_redundant = lambda *a: pytest.fail("quality control ran twice")
+    again = analyze(scene, folder, vlm, DrawingImages(), RequestCache(None))
+    assert len(again.removed) == 1
+
+
+def test_analyze_refuses_a_text_without_objects(tmp_path):
+    class Nothing(RedundantVLM):
+        def describe_objects(self, text, style, reference):
+            return []
+
+    folder = SceneFolder(tmp_path / "x")
+    folder.create()
+    with pytest.raises(InputError, match="no object"):
+        analyze(Scene(text="blue sky"), folder, Nothing(), DrawingImages(), RequestCache(None))
+
+
+# --- layout stage: the feedback loop -------------------------------------------------------------
+
+
+class FeedbackVLM:
+    """First asks for the impossible (a sofa far from a table inside a 6 m room), then relents."""
+
+    name = "stand-in"
+
+    def __init__(self, give_up: bool):
+        self.give_up = give_up
+        self.reports = []
+
+    def write_constraints(self, text, objects, reference):
+        return [Constraint(relation="far", source="sofa_1", target="table_1")]
+
+    def revise_constraints(self, text, objects, constraints, report, reference):
+        self.reports.append(report)
+        if self.give_up:
+            return list(constraints)
+        return [Constraint(relation="near", source="sofa_1", target="table_1")]
+
+
+def _room(tmp_path) -> tuple[Scene, SceneFolder]:
+    folder = SceneFolder(tmp_path / "room")
+    folder.create()
+    scene = Scene(
+        text="a sofa far from a table",
+        bounds=(6.0, 6.0),
+        objects=[
+            SceneObject(id="table_1", name="table", size=Vec3(x=1.2, y=0.8, z=0.75), position=Vec3(z=0.375)),
+            SceneObject(id="sofa_1", name="sofa", size=Vec3(x=2.0, y=0.9, z=0.8), position=Vec3(x=2.0, z=0.4)),
+        ],
+    )
+    return scene, folder
+
+
+def test_feedback_loop_revises_until_the_layout_is_complete(tmp_path):
+    from scenewright.layout import check
+
+    scene, folder = _room(tmp_path)
+    vlm = FeedbackVLM(give_up=False)
+    arrange(scene, folder, vlm, {}, rounds=3, time_limit=2.0)
+    assert len(vlm.reports) == 1 and [u.id for u in vlm.reports[0].unplaced] == ["sofa_1"]
+    assert scene.layout.complete
+    assert [str(c) for c in scene.constraints] == ["sofa_1 near table_1"]
+    assert check("near", scene.get("sofa_1"), scene.get("table_1"))
+    rounds = [e.data["round"] for e in scene.provenance if e.stage == "layout" and "round" in e.data]
+    assert rounds == [0, 1]
+
+
+def test_feedback_loop_is_bounded_and_keeps_the_best_round(tmp_path):
+    scene, folder = _room(tmp_path)
+    vlm = FeedbackVLM(give_up=True)
+    arrange(scene, folder, vlm, {}, rounds=2, time_limit=1.0)
+    assert len(vlm.reports) == 2
+    assert not scene.layout.complete and scene.layout.unplaced[0].id == "sofa_1"
+    assert Scene.load(folder.document).layout == scene.layout

@@ -1,0 +1,236 @@
+"""Procedural meshes: every shape fills its box as valid PBR glTF, styles and words show."""
+
+from __future__ import annotations
+
+import io
+import json
+import logging
+import struct
+
+import numpy as np
+import pytest
+import trimesh
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from scenewright.backends import MeshRequest, create_backend
+from scenewright.errors import InputError
+from scenewright.geometry import GLTF_TO_SCENE
+from scenewright.procedural import SHAPES
+from scenewright.procedural.material import described_surface, find_colour, find_material
+from scenewright.procedural.meshes import ProceduralMeshes, build_glb, build_model, choose_shape, keyword_shape
+from scenewright.procedural.style import ROLES, STYLE_TABLE, resolve_style
+from scenewright.scene import STYLES, Vec3
+from scenewright.settings import Settings
+
+VOCABULARY = """table round_table coffee_table desk chair armchair office_chair stool sofa bench bed
+bookshelf cabinet wardrobe nightstand counter table_lamp floor_lamp pendant_lamp rug tv monitor laptop
+potted_plant vase bathtub toilet sink stove fridge piano clock mirror picture_frame trash_can crate barrel
+books bottle cup bowl tree pine_tree palm_tree bush flower_bed rock fountain statue lamp_post sign fence
+arch bollard hydrant car truck bus bicycle boat building house kiosk market_stall tent umbrella swing slide
+treadmill whiteboard robot crystal tower well cart pillar generic""".split()
+
+#: Typical sizes (x width, y depth, z height) so each shape is tested at a plausible box.
+SIZES = {
+    "car": (1.8, 4.5, 1.5), "truck": (2.5, 7.0, 3.2), "bus": (2.5, 11.0, 3.2), "bicycle": (0.6, 1.7, 1.0),
+    "boat": (2.0, 5.0, 1.5), "building": (12.0, 10.0, 20.0), "house": (8.0, 7.0, 6.0), "tree": (3.0, 3.0, 5.0),
+    "pine_tree": (2.0, 2.0, 5.0), "palm_tree": (3.0, 3.0, 6.0), "fence": (4.0, 0.1, 1.1), "rug": (2.0, 1.4, 0.02),
+    "tower": (4.0, 4.0, 12.0), "lamp_post": (0.6, 0.6, 4.0), "sofa": (2.1, 0.9, 0.85), "bed": (1.6, 2.1, 1.0),
+    "clock": (0.4, 0.08, 0.4), "picture_frame": (0.8, 0.04, 0.6), "bottle": (0.08, 0.08, 0.3), "cup": (0.12, 0.09, 0.1),
+}
+
+
+def glb_json(glb: bytes) -> dict:
+    length = struct.unpack("<I", glb[12:16])[0]
+    return json.loads(glb[20 : 20 + length])
+
+
+def load(glb: bytes) -> trimesh.Scene:
+    return trimesh.load(io.BytesIO(glb), file_type="glb")
+
+
+def scene_frame(scene: trimesh.Scene) -> dict[str, trimesh.Trimesh]:
+    """Each role's geometry in the scene frame (+Z up, front −Y)."""
+    return {name: g.copy().apply_transform(GLTF_TO_SCENE) for name, g in scene.geometry.items()}
+
+
+def assert_fills(glb: bytes, size) -> None:
+    lo, hi = load(glb).bounds
+    expected = np.array([size[0], size[2], size[1]])
+    np.testing.assert_allclose(hi - lo, expected, rtol=0.02)
+    assert abs(lo[1]) < 1e-6
+    np.testing.assert_allclose([(lo[0] + hi[0]) / 2, (lo[2] + hi[2]) / 2], 0, atol=1e-6 + 0.01 * max(size))
+
+
+def test_vocabulary_is_covered():
+    assert set(SHAPES) == set(VOCABULARY)
+    assert len(SHAPES) - 1 >= 60
+
+
+@pytest.mark.parametrize("shape", VOCABULARY)
+def test_every_shape_is_valid_pbr_gltf_filling_its_box(shape):
+    size = SIZES.get(shape, (0.8, 0.6, 0.9))
+    glb = build_glb(shape, size, "realistic", seed=7)
+    assert_fills(glb, size)
+    tree = glb_json(glb)
+    assert tree["materials"] and all("pbrMetallicRoughness" in m for m in tree["materials"])
+    assert all("NORMAL" in p["attributes"] for mesh in tree["meshes"] for p in mesh["primitives"])
+    faces = sum(len(g.faces) for g in load(glb).geometry.values())
+    assert 12 <= faces <= 6000
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    shape=st.sampled_from(VOCABULARY),
+    size=st.tuples(*[st.floats(0.05, 12.0)] * 3),
+    style=st.sampled_from(STYLES),
+    seed=st.integers(0, 2**32),
+)
+def test_any_size_and_style_fills_the_box(shape, size, style, seed):
+    assert_fills(build_glb(shape, size, style, seed), size)
+
+
+def base_colours(scene: trimesh.Scene) -> dict[str, np.ndarray]:
+    return {n: np.asarray(g.visual.material.baseColorFactor[:3], float) / 255 for n, g in scene.geometry.items()}
+
+
+def test_styles_change_materials_visibly():
+    looks = {}
+    for style in STYLES:
+        scene = build_model("sofa", (2.0, 0.9, 0.85), style, seed=1)
+        looks[style] = tuple(np.round(base_colours(scene)["fabric"], 2))
+    assert len(set(looks.values())) == len(STYLES)
+
+
+def emissive(scene: trimesh.Scene) -> bool:
+    return any(np.any(np.asarray(g.visual.material.emissiveFactor) > 0.1) for g in scene.geometry.values())
+
+
+def test_cyberpunk_glows_and_realistic_does_not():
+    assert emissive(build_model("sofa", (2.0, 0.9, 0.85), "cyberpunk", seed=1))
+    assert not emissive(build_model("sofa", (2.0, 0.9, 0.85), "realistic", seed=1))
+
+
+def test_low_poly_is_flat_shaded_with_few_segments():
+    flat = build_model("barrel", (0.6, 0.6, 0.9), "low-poly", seed=1).geometry["wood"]
+    smooth = build_model("barrel", (0.6, 0.6, 0.9), "realistic", seed=1).geometry["wood"]
+    assert len(flat.vertices) == 3 * len(flat.faces)
+    assert len(flat.faces) < len(smooth.faces) / 2
+
+
+def test_steampunk_metal_is_brass_and_cartoon_is_rounder():
+    steam = build_model("floor_lamp", (0.4, 0.4, 1.6), "steampunk", seed=1).geometry["metal"].visual.material
+    r, g, b = np.asarray(steam.baseColorFactor[:3], float)
+    assert r > g > b and steam.metallicFactor == 1.0
+    cartoon = build_model("crate", (0.6, 0.6, 0.6), "cartoon", seed=1).geometry["wood"]
+    realistic = build_model("crate", (0.6, 0.6, 0.6), "realistic", seed=1).geometry["wood"]
+    assert cartoon.volume < 0.97 * realistic.volume  # bigger bevels shave the corners
+
+
+def test_unknown_style_falls_back_to_realistic_with_a_note(caplog):
+    with caplog.at_level(logging.WARNING):
+        assert resolve_style("baroque-glitch").name == "realistic"
+    assert "baroque-glitch" in caplog.text
+    assert resolve_style("Low Poly").name == "low-poly"
+    assert resolve_style("cartoon-style").name == "cartoon"
+
+
+@pytest.mark.parametrize(
+    ("description", "check"),
+    [
+        ("a red sofa", lambda c: c[0] > 0.5 and c[0] > 2 * c[1] and c[0] > 2 * c[2]),
+        ("dark blue velvet upholstery", lambda c: c[2] > c[0] and c[2] > c[1] and max(c) < 0.5),
+        ("a pastel pink couch", lambda c: c[0] > c[1] and min(c) > 0.5),
+        ("a green sofa", lambda c: c[1] > c[0] and c[1] > c[2]),
+    ],
+)
+def test_colour_words_recolour_the_main_part(description, check):
+    colour = base_colours(build_model("sofa", (2.0, 0.9, 0.85), "realistic", seed=1, description=description))["fabric"]
+    assert check(colour), colour
+
+
+def test_material_words_set_the_surface():
+    chrome = build_model("table", (1.2, 0.8, 0.75), "realistic", 1, "a polished chrome table").geometry["wood"]
+    assert chrome.visual.material.metallicFactor == 1.0 and chrome.visual.material.roughnessFactor < 0.1
+    glass = build_model("table", (1.2, 0.8, 0.75), "realistic", 1, "a glass table").geometry["wood"]
+    assert glass.visual.material.alphaMode == "BLEND"
+    walnut = base_colours(build_model("table", (1.2, 0.8, 0.75), "realistic", 1, "walnut"))["wood"]
+    oak = base_colours(build_model("table", (1.2, 0.8, 0.75), "realistic", 1, "oak"))["wood"]
+    assert walnut.sum() < oak.sum()
+
+
+def test_material_parsing():
+    assert find_colour("A Dark Blue chair") == pytest.approx(tuple(0.45 * c for c in (0.12, 0.3, 0.75)))
+    assert find_colour("sky blue walls")[2] > 0.9
+    assert find_colour("a wooden chair") is None
+    assert find_material("a wooden chair").color == find_material("wood").color
+    assert described_surface("a plain chair", ROLES["wood"]) is None
+    assert described_surface("red leather", ROLES["fabric"]).roughness == find_material("leather").roughness
+
+
+def test_generation_is_deterministic_and_varies_by_seed():
+    assert build_glb("tree", (3, 3, 5), "realistic", 5) == build_glb("tree", (3, 3, 5), "realistic", 5)
+    assert build_glb("tree", (3, 3, 5), "realistic", 5) != build_glb("tree", (3, 3, 5), "realistic", 6)
+
+
+def occupied(meshes, lo, hi) -> bool:
+    """Whether any of the meshes' surface lies inside the box [lo, hi] (scene frame), by sampling."""
+    points = np.concatenate([trimesh.sample.sample_surface(m, 5000, seed=0)[0] for m in meshes])
+    return bool(np.any(np.all((points >= lo) & (points <= hi), axis=1)))
+
+
+def test_silhouettes_read_as_their_objects():
+    chair = list(scene_frame(build_model("chair", (0.5, 0.5, 0.9), "realistic", 1)).values())
+    assert occupied(chair, (-0.25, 0.1, 0.7), (0.25, 0.25, 0.9)), "a chair has a back above the seat, behind"
+    assert not occupied(chair, (-0.2, -0.25, 0.6), (0.2, 0.0, 0.9)), "and nothing above the front of its seat"
+    table = list(scene_frame(build_model("table", (1.6, 0.9, 0.75), "realistic", 1)).values())
+    assert occupied(table, (0.6, 0.3, 0.3), (0.8, 0.45, 0.4)), "a table has legs at its corners"
+    assert not occupied(table, (-0.5, -0.2, 0.05), (0.5, 0.2, 0.5)), "and open space under its top"
+    car = scene_frame(build_model("car", (1.8, 4.5, 1.5), "realistic", 1))
+    wheels = car["rubber"].vertices
+    assert wheels[:, 2].max() < 0.5 * 1.5 and np.ptp(wheels[:, 1]) > 2.5 and np.ptp(wheels[:, 0]) > 1.6
+    assert car["glass"].vertices[:, 2].min() > 0.6
+    tree = scene_frame(build_model("tree", (3, 3, 5), "realistic", 1))
+    assert tree["leaf"].vertices[:, 2].mean() > tree["bark"].vertices[:, 2].mean() + 1.5
+    bed = scene_frame(build_model("bed", (1.6, 2.1, 1.0), "realistic", 1))
+    tall = bed["wood"].vertices[bed["wood"].vertices[:, 2] > 0.9]
+    assert tall[:, 1].min() > 0.9, "the headboard is at the back"
+    lamp = build_model("table_lamp", (0.35, 0.35, 0.6), "realistic", 1)
+    assert emissive(lamp)
+
+
+@pytest.mark.parametrize(
+    ("name", "category", "shape"),
+    [
+        ("oak dining table", None, "table"), ("table lamp", None, "table_lamp"), ("street lamp", None, "lamp_post"),
+        ("two red couches", None, "sofa"), ("coffee table", None, "coffee_table"), ("thingamajig", None, "generic"),
+        ("my seat", "office_chair", "office_chair"), ("fir", None, "pine_tree"), ("bookshelves", None, "bookshelf"),
+    ],
+)
+def test_shape_choice(name, category, shape):
+    assert choose_shape(name, category) == shape
+
+
+def test_keyword_shape_prefers_the_head_noun():
+    assert keyword_shape("lamp on a table") == "table"
+    assert keyword_shape("wooden crate") == "crate"
+    assert keyword_shape("zzz") is None
+
+
+def test_backend_generates_every_request():
+    backend = create_backend("meshes", "procedural", Settings())
+    assert isinstance(backend, ProceduralMeshes) and backend.name == "procedural"
+    requests = [
+        MeshRequest(id="sofa_1", name="sofa", category="sofa", description="a blue sofa", style="anime", size=Vec3(x=2, y=0.9, z=0.8)),
+        MeshRequest(id="thing_1", name="thing", category=None, description="", style="weird", size=Vec3(x=1, y=1, z=1)),
+    ]
+    seen: list[str] = []
+    result = backend.generate(requests, progress=seen.append)
+    assert set(result) == {"sofa_1", "thing_1"} and len(seen) == 2
+    assert_fills(result["sofa_1"], (2, 0.9, 0.8))
+    with pytest.raises(InputError, match="no argument"):
+        ProceduralMeshes.from_spec("x", Settings())
+
+
+def test_style_table_matches_the_scene_styles():
+    assert set(STYLE_TABLE) == set(STYLES)
