@@ -46,6 +46,8 @@ bench: install
 	$(BIN)/scenewright bench eval --out bench-results/eval | tee bench-results/eval.json
 	$(BIN)/scenewright bench assets --assets 16 --servers 4 --delay 2 --json | tee bench-results/assets.json
 	$(BIN)/scenewright bench edits --json | tee bench-results/edits.json
+	$(BIN)/scenewright bench parse --json | tee bench-results/parse.json
+	$(BIN)/python benchmarks/procedural.py | tee bench-results/procedural.json
 
 clean:
 	rm -rf $(VENV) demo-scene bench-results

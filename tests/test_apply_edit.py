@@ -208,3 +208,19 @@ def test_an_object_cannot_be_placed_on_what_rests_on_it(folder, backends):
     with pytest.raises(InputError, match="vase_1 rests on coffee_table_1"):
         edit(folder, "put the coffee table on the vase", backends)
     assert snapshot(folder.root) == files
+
+
+def test_turning_in_place_into_a_neighbour_is_refused(folder, backends):
+    files = snapshot(folder.root)
+    with pytest.raises(InfeasibleLayout, match="chair_3"):
+        edit(folder, "rotate the dining table by 90 degrees", backends)
+    assert snapshot(folder.root) == files
+
+
+def test_turning_in_place_turns_what_rests_on_it_too(folder, backends):
+    before = folder.load()
+    after = edit(folder, "rotate the coffee table by 90 degrees", backends)
+    assert after.get("coffee_table_1").yaw == pytest.approx(90.0)
+    assert after.get("vase_1").yaw == pytest.approx(90.0)
+    assert np.allclose(pose(after.get("coffee_table_1"))[:3], pose(before.get("coffee_table_1"))[:3])
+    assert_sound(folder, after)

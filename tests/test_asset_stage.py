@@ -13,7 +13,6 @@ import pytest
 
 from hunyuan_server import box_glb, png, servers
 from scenewright.assets import generate_assets, load_meshes
-from scenewright.backends import MeshRequest
 from scenewright.backends.hunyuan3d import Hunyuan3D
 from scenewright.cache import RequestCache
 from scenewright.errors import BackendError, InputError

@@ -36,6 +36,8 @@ def relations(plan):
          [("face to", "bookshelf_1"), ("in front of", "sofa_1")]),
         ("move chair 4 far from the sofa", "move", "chair_4", [("far", "sofa_1")]),
         ("move the armchair adjacent to the couch", "move", "armchair_1", [("side of", "sofa_1")]),
+        ("could you move the sofa a bit closer to the bookshelf?", "move", "sofa_1", [("near", "bookshelf_1")]),
+        ("move the vase over to the dining table", "move", "vase_1", [("near", "table_1")]),
         ("put the vase opposite the sofa", "move", "vase_1", [("face to", "sofa_1"), ("in front of", "sofa_1")]),
         ("Remove the coffee table", "delete", "coffee_table_1", []),
         ("get rid of the last chair", "delete", "chair_4", []),

@@ -27,7 +27,7 @@ CASES = {
     "living_room": (
         _example("living_room"),
         {"sofa": 1, "coffee_table": 1, "tv": 1, "tv_stand": 1, "armchair": 2, "bookshelf": 1, "floor_lamp": 1,
-         "side_table": 1, "table_lamp": 1, "vase": 1, "potted_plant": 1, "piano": 1, "stool": 1},
+         "side_table": 1, "table_lamp": 1, "vase": 1, "rug": 1, "potted_plant": 1, "piano": 1, "stool": 1},
     ),
     "bedroom": (
         "An anime-style bedroom. A double bed with white sheets stands in the middle. Two small "
@@ -40,6 +40,11 @@ CASES = {
         _example("market_square"),
         {"fountain": 1, "market_stall": 3, "cart": 1, "barrel": 2, "crate": 1, "bench": 1, "lamp_post": 1,
          "tree": 1, "well": 1},
+    ),
+    "cyberpunk_alley": (
+        _example("cyberpunk_alley"),
+        {"food_truck": 1, "vending_machine": 1, "stool": 2, "crate": 2, "drone": 1, "sign": 1, "trash_can": 1,
+         "motorcycle": 1, "pylon": 1},
     ),
     "harbour": (
         "A low-poly fishing harbour on sand. A small red lighthouse stands far from a wooden boat. "

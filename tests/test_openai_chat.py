@@ -1,4 +1,4 @@
-"""The OpenAI-compatible vision-language backend against a local openai_server: what it sends, how it
+"""The OpenAI-compatible vision-language backend against a local server: what it sends, how it
 treats untrusted answers, and how it survives transport faults."""
 
 from __future__ import annotations
@@ -7,9 +7,10 @@ import base64
 import json
 
 import pytest
-from scenewright.backends.fake_openai import CHAT, chat_reply, error_reply, object_item, png
 
-from scenewright.backends.openai_chat import OpenAIChatVLM, parse_score, size_range
+from scenewright.backends import create_backend
+from scenewright.backends.fake_openai import CHAT, chat_reply, error_reply, object_item, png
+from scenewright.backends.openai_chat import EditAnswer, OpenAIChatVLM, parse_score, size_range
 from scenewright.backends.structured import InvalidAnswer, strict_schema
 from scenewright.errors import BackendError, InputError
 from scenewright.scene import Constraint, LayoutReport, Scene, SceneObject, UnplacedObject, Vec3
@@ -47,8 +48,6 @@ def test_objects_request_carries_strict_schema_and_reference_image(openai_server
 
 
 def test_strict_schema_has_no_defaults_and_closes_every_object():
-    from scenewright.backends.openai_chat import EditAnswer
-
     text = json.dumps(strict_schema(EditAnswer))
     assert '"default"' not in text
     schema = strict_schema(EditAnswer)
@@ -289,7 +288,9 @@ def test_an_unknown_focus_is_asked_again_with_the_choices(openai_server, remote_
     assert "'armchair_3' is not an object" in retry and "chair_1, lamp_1, table_1" in retry
 
 
-def test_an_added_object_gets_a_fresh_id_and_clamped_size(openai_server, remote_settings):
+def test_an_added_object_is_planned_with_a_clamped_size(openai_server, remote_settings):
+    from scenewright.editing.apply import validate_plan
+
     size = {"x": 9, "y": 0.4, "z": 1}
     new = {"name": "plant", "category": "potted_plant", "visual_description": "a fern", "size": size}
     openai_server.script(
@@ -297,17 +298,27 @@ def test_an_added_object_gets_a_fresh_id_and_clamped_size(openai_server, remote_
         _edit(operation="add", focus="plant"),
         _edit(
             operation="add",
-            focus="chair_1",
+            focus="Chair 1",
             new_object=new,
             constraints=[{"relation": "left of", "source": "chair_1", "target": "table_1"}],
         ),
     )
     plan = OpenAIChatVLM("test-model", remote_settings).plan_edit(_scene(), "add a plant left of the table")
     assert "needs new_object" in openai_server.seen(CHAT)[1].json["messages"][-1]["content"]
-    assert plan.operation == "add" and plan.focus == "chair_1_2"
-    assert plan.new_object.size.tuple() == (5.0, 0.4, 1.0)
-    # the model reused an existing id for the new object; its constraints follow the new id
-    assert [str(c) for c in plan.constraints] == ["chair_1_2 left of table_1"]
+    assert plan.operation == "add" and plan.new_object.size.tuple() == (5.0, 0.4, 1.0)
+    assert [str(c) for c in plan.constraints] == ["chair_1 left of table_1"]
+    # the model reused an existing id for the new object: the editing stage gives it a fresh one
+    checked = validate_plan(_scene(), plan)
+    assert checked.focus == "potted_plant_1"
+    assert [str(c) for c in checked.constraints] == ["potted_plant_1 left of table_1"]
+
+
+def test_a_move_going_nowhere_is_asked_again(openai_server, remote_settings):
+    nowhere = [{"relation": "near", "source": "chair_1", "target": "ghost"}]
+    openai_server.script(CHAT, _edit(constraints=nowhere), _edit(yaw=-90.0))
+    plan = OpenAIChatVLM("test-model", remote_settings).plan_edit(_scene(), "turn the chair to the right")
+    assert plan.operation == "move" and plan.yaw == 270.0 and plan.constraints == []
+    assert "needs constraints saying where to, or a yaw" in openai_server.seen(CHAT)[1].json["messages"][-1]["content"]
 
 
 @pytest.mark.parametrize(
@@ -351,8 +362,8 @@ def test_reasoning_effort_is_sent_when_configured(openai_server, remote_settings
 def test_without_key_or_base_url_the_error_names_the_variable(monkeypatch, tmp_path):
     monkeypatch.delenv("MY_KEY", raising=False)
     settings = Settings(api_key_env="MY_KEY", cache_dir=tmp_path)
-    with pytest.raises(BackendError, match="MY_KEY"):
-        OpenAIChatVLM("o3", settings).judge("a room", png(), "semantic")
+    with pytest.raises(BackendError, match="set the environment variable MY_KEY"):
+        create_backend("vlm", "openai:o3", settings)
 
 
 def test_the_key_comes_from_the_named_variable(openai_server, remote_settings, monkeypatch):

@@ -1,4 +1,4 @@
-"""The OpenAI Images backend against a local openai_server: generate vs edit, transparency, the
+"""The OpenAI Images backend against a local server: generate vs edit, transparency, the
 reference image sent along, concurrency, progress, and the per-request cache."""
 
 from __future__ import annotations
@@ -38,7 +38,8 @@ def test_object_images_are_edits_of_the_reference_asking_for_transparency(openai
     seen = []
     images = OpenAIImages("test-image", remote_settings).object_images(_objects(5), "cartoon", reference, seen.append)
     assert list(images) == [f"crate_{i}" for i in range(1, 6)]
-    assert sorted(seen) == sorted(images)
+    assert sorted(note.split(":")[0] for note in seen) == sorted(images)
+    assert "image 5 of 5" in seen[-1]
     requests = openai_server.seen(EDIT)
     assert len(requests) == 5 and openai_server.seen(GENERATE) == []
     for request in requests:
@@ -138,5 +139,14 @@ def test_objects_described_alike_share_one_drawing(openai_server, remote_setting
     backend = OpenAIImages("test-image", remote_settings)
     images = backend.object_images([*pair, *_objects(1)], "realistic", png(), seen.append)
     assert set(images) == {"chair_1", "chair_2", "crate_1"} and images["chair_1"] == images["chair_2"]
-    assert sorted(seen) == ["chair_1", "chair_2", "crate_1"]
+    assert sorted(note.split(":")[0] for note in seen) == ["chair_1", "chair_2", "crate_1"]
     assert len(openai_server.seen(EDIT)) == 2
+
+
+def test_an_opaque_object_image_is_kept_with_a_warning(openai_server, remote_settings, caplog):
+    opaque = io.BytesIO()
+    Image.new("RGB", (4, 4), (9, 9, 9)).save(opaque, format="PNG")
+    openai_server.script(EDIT, image_reply(opaque.getvalue()))
+    images = OpenAIImages("test-image", remote_settings).object_images(_objects(1), "realistic", png())
+    assert images["crate_1"] == opaque.getvalue()
+    assert "image of crate_1 has no transparency" in caplog.text

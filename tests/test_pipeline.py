@@ -177,6 +177,7 @@ def test_missing_render_extra_is_a_warning(tmp_path, monkeypatch, caplog):
     monkeypatch.setattr(scenewright.render, "render", fake_render)
     scene = resume(tmp_path / "s", backends=_counting(settings), settings=settings, render=True)
     assert scene.done[-1] == "render"
+    assert scene.provenance[-1].data["files"] == ["front.png"]
 
 
 # --- analysis stage, with a stand-in image backend that draws object images ---------------------

@@ -5,7 +5,10 @@ from __future__ import annotations
 import io
 import json
 import logging
+import shutil
 import struct
+import subprocess
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -234,3 +237,43 @@ def test_backend_generates_every_request():
 
 def test_style_table_matches_the_scene_styles():
     assert set(STYLE_TABLE) == set(STYLES)
+
+
+VALIDATOR = Path(__file__).resolve().parents[1] / "tools" / "validate-gltf.mjs"
+
+
+@pytest.mark.node
+@pytest.mark.skipif(
+    shutil.which("node") is None or not (VALIDATOR.parent / "node_modules" / "gltf-validator").exists(),
+    reason="needs `make tools` (the Khronos glTF validator)",
+)
+@pytest.mark.parametrize(
+    ("shape", "style"),
+    [("rock", "realistic"), ("crystal", "cartoon"), ("sofa", "low-poly"), ("car", "cyberpunk"),
+     ("palm_tree", "steampunk"), ("fountain", "anime"), ("bottle", "realistic")],
+)
+def test_khronos_validator_finds_no_errors(tmp_path, shape, style):
+    path = tmp_path / f"{shape}.glb"
+    path.write_bytes(build_glb(shape, SIZES.get(shape, (0.8, 0.6, 0.9)), style, seed=2))
+    run = subprocess.run(["node", str(VALIDATOR), str(path)], capture_output=True, text=True, timeout=60)
+    report = json.loads(run.stdout)
+    assert report["issues"]["numErrors"] == 0, report["issues"]["messages"][:5]
+
+
+@pytest.mark.parametrize(
+    ("shape", "name", "role"),
+    [
+        ("generic", "dog", "fur"), ("generic", "spaceship", "glass"), ("tower", "lighthouse", "light"),
+        ("rock", "campfire", "flame"), ("barrel", "log", "bark"), ("crate", "treasure chest", "gold"),
+        ("lamp_post", "traffic light", "flower_alt"), ("statue", "snowman", "ceramic"),
+    ],
+)
+def test_names_pick_variants_within_a_shape(shape, name, role):
+    variant = build_model(shape, (1.0, 1.0, 1.5), "realistic", 1, name=name)
+    plain = build_model(shape, (1.0, 1.0, 1.5), "realistic", 1, name=shape)
+    assert role in variant.geometry and set(variant.geometry) != set(plain.geometry)
+
+
+def test_a_description_alone_does_not_change_what_an_object_is():
+    described = build_model("rock", (1.0, 1.0, 0.6), "realistic", 1, description="a rock beside the campfire", name="rock")
+    assert "flame" not in described.geometry

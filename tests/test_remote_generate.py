@@ -158,6 +158,52 @@ def test_a_killed_run_resumes_without_repeating_finished_calls(server, workdir):
 def test_a_refusing_model_fails_generate_with_a_clear_message(server, workdir, capsys):
     server.responders[CHAT] = lambda request: chat_reply(None, refusal="I can't help with that.")
     assert main(["generate", TEXT, "--out", "scene", *_flags(server)]) == 1
-    err = capsys.readouterr().err
+    err = " ".join(capsys.readouterr().err.split())  # rich wraps long lines
     assert "scene_objects (test-model)" in err and "the model refused" in err
     assert len(server.seen(CHAT)) == 2  # one retry (max_retries = 1 in scenewright.toml)
+
+
+def test_a_missing_key_stops_the_run_before_it_starts(workdir, capsys):
+    assert main(["generate", TEXT, "--out", "scene", "--vlm", "openai:o3", "--api-key-env", "NO_SUCH_KEY"]) == 1
+    assert "set the environment variable NO_SUCH_KEY" in " ".join(capsys.readouterr().err.split())
+    assert not (workdir / "scene").exists()
+
+
+def test_unplaced_objects_go_back_to_the_model_for_revised_constraints(server, workdir):
+    contradictory = {
+        "constraints": [
+            {"relation": "on", "source": "vase_1", "target": "table_1"},
+            {"relation": "left of", "source": "chair_1", "target": "table_1"},
+            {"relation": "right of", "source": "chair_1", "target": "table_1"},
+        ]
+    }
+    revised = {"constraints": contradictory["constraints"][:2]}
+    replies = {**ANSWERS, "spatial_constraints": contradictory, "revised_constraints": revised}
+    server.responders[CHAT] = lambda request: chat_reply(replies[request.schema_name])
+    assert main(["generate", TEXT, "--out", "scene", *_flags(server), "--feedback-rounds", "2"]) == 0
+
+    (revision,) = [r for r in server.seen(CHAT) if r.schema_name == "revised_constraints"]
+    last, report = revision.text.split("report:")
+    assert '"right of"' in last.split("given these constraints:")[1]
+    assert "chair_1" in report
+    scene = SceneFolder(workdir / "scene").load()
+    assert scene.layout is not None and scene.layout.complete
+    assert {str(c) for c in scene.constraints} == {"vase_1 on table_1", "chair_1 left of table_1"}
+    rounds = [e for e in scene.provenance if e.stage == "layout" and "round" in e.data]
+    assert [e.data["round"] for e in rounds] == [0, 1]
+
+
+def test_an_edit_through_the_openai_backend(server, workdir):
+    assert main(["generate", TEXT, "--out", "scene", *_flags(server)]) == 0
+    backwards = {"relation": "behind", "source": "table_1", "target": "chair_1"}  # the model wrote it the other way
+    plan = {"operation": "move", "focus": "chair_1", "constraints": [backwards], "new_object": None, "yaw": None}
+    server.responders[CHAT] = lambda request: chat_reply(plan)
+    flags = ["--vlm", "openai:test-model", "--images", "openai:test-image", "--base-url", server.url]
+    assert main(["edit", "scene", "put the first chair in front of the table", *flags]) == 0
+
+    (request,) = [r for r in server.seen(CHAT) if r.schema_name == "edit_plan"]
+    assert "put the first chair in front of the table" in request.text and "chair_1: left chair" in request.text
+    scene = SceneFolder(workdir / "scene").load()
+    by_id = {o.id: o for o in scene.objects}
+    assert check("in front of", by_id["chair_1"], by_id["table_1"])
+    assert any(e.stage == "vlm.edit_plan" and e.message.startswith("turned") for e in scene.provenance)

@@ -58,15 +58,22 @@ def _pending(scene: Scene, folder: SceneFolder) -> list[str]:
     return []
 
 
-def _render(scene: Scene, folder: SceneFolder) -> bool:
+def _render(scene: Scene, folder: SceneFolder, note: Callable[[str], None]) -> bool:
+    """Preview renders when Blender is installed; without it the scene is complete all the same."""
     from scenewright.render import render
 
     try:
-        render(scene, folder, draft=False)
+        paths = render(scene, folder, draft=False)
     except MissingExtra as exc:
         log.warning("no preview renders: %s", exc)
+        note("skipped: Blender (the render extra) is not installed")
         return False
+    scene.record("render", f"rendered {len(paths)} previews", files=[Path(p).name for p in paths])
     return True
+
+
+def _stage_note(progress: Progress | None, stage: str) -> Callable[[str], None]:
+    return (lambda message: progress(stage, message)) if progress else (lambda message: None)
 
 
 def run_stages(
@@ -86,7 +93,7 @@ def run_stages(
     for stage in pending:
         if stage == "render" and not render:
             break
-        note: Callable[[str], None] = (lambda m, s=stage: progress(s, m)) if progress else (lambda m: None)
+        note = _stage_note(progress, stage)
         note("started")
         if stage == "analyze":
             analyze(scene, folder, backends.vlm, backends.images, cache, note)
@@ -104,7 +111,7 @@ def run_stages(
         elif stage == "export":
             path = assemble(scene, folder)
             scene.record(stage, f"wrote {folder.relative(path)}")
-        elif not _render(scene, folder):
+        elif not _render(scene, folder, note):
             break
         scene.done.append(stage)
         folder.save(scene)

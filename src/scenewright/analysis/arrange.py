@@ -16,7 +16,7 @@ from collections import Counter, defaultdict
 
 from scenewright.analysis.catalogue import load_catalogue
 from scenewright.analysis.parser import ParsedObject, ParsedRelation, ParsedScene
-from scenewright.geometry import yaw_towards
+from scenewright.geometry import front_direction, yaw_towards
 from scenewright.scene import SceneObject, Vec3
 
 #: Which relation decides where an object goes, strongest first.
@@ -31,7 +31,7 @@ ABOVE = 2.05
 
 
 class _Placed:
-    __slots__ = ("x", "y", "z", "yaw", "w", "d", "h")
+    __slots__ = ("d", "h", "w", "x", "y", "yaw", "z")
 
     def __init__(self, x: float, y: float, z: float, yaw: float, size: tuple[float, float, float]):
         self.x, self.y, self.z, self.yaw = x, y, z, yaw
@@ -86,6 +86,10 @@ def initial_objects(parsed: ParsedScene) -> list[SceneObject]:
     placed: dict[str, _Placed] = {}
     side_use: Counter[tuple[str, str]] = Counter()
     flat = {o.id for o in parsed.objects if o.size[2] < 0.1}
+    faced_by: dict[str, list[str]] = defaultdict(list)
+    for r in parsed.relations:
+        if r.relation == "face to":
+            faced_by[r.target].append(r.source)
     main = _main_object(parsed)
     placed[main.id] = _Placed(0.0, 0.0, main.size[2] / 2, 0.0, main.size)
 
@@ -96,7 +100,16 @@ def initial_objects(parsed: ParsedScene) -> list[SceneObject]:
         if anchor is not None and anchor.target not in placed and anchor.target not in trail:
             place(by_id[anchor.target], trail | {obj.id})
         if anchor is None or anchor.target not in placed:
-            placed[obj.id] = _free_spot(obj, placed)
+            facer = next((f for f in faced_by[obj.id] if f in placed), None)
+            if facer is None:
+                placed[obj.id] = _free_spot(obj, placed)
+                return
+            # what something faces goes where that thing looks (its front, −Y at yaw 0)
+            f = placed[facer]
+            fx, fy = (float(v) for v in front_direction(f.yaw))
+            reach = (f.d + max(obj.size[0], obj.size[1])) / 2 + 1.5
+            p = _Placed(f.x + fx * reach, f.y + fy * reach, obj.size[2] / 2, _normal(f.yaw + 180.0), obj.size)
+            placed[obj.id] = _push(p, (fx, fy), placed)
             return
         t = placed[anchor.target]
         facing = _facing(obj, outgoing[obj.id], anchor)

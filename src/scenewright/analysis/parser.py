@@ -10,8 +10,19 @@ the phrase. Decisions worth knowing:
   ``near``; ``opposite`` / ``across from`` → ``in front of`` + ``face to``; ``flanked by`` and
   ``on either side of`` → one flanker ``left of`` and one ``right of``; ``around`` /
   ``surrounding`` / ``surrounded by`` → the surrounding objects shared among the target's
-  sides (long sides first for a long table), each facing it; ``between A and B`` → ``near``
-  both; ``at a distance of N m`` → ``near`` when N ≤ 2, ``far`` when N > 8.
+  sides (every side once, then the long sides of a long table), each facing it; one thing
+  "around" another is ``near`` it; ``between A and B`` → ``near`` both; ``at a distance of
+  N m`` → ``near`` when N ≤ 2, ``far`` when N > 8.
+- A phrase right after another's target places that target ("a globe on a side table to the
+  right of the desk": the side table is right of the desk). ``with``/``holding`` parts hang
+  from their head: "a sink with a mirror above it", "a cart loaded with barrels" (on it), "a
+  desk with a lamp" (a surface thing with a support → on it). "It"/"them" name the latest
+  earlier mention of the right number. A phrase opening a sentence ("Behind the gate, a
+  pond...") places the subject that follows.
+- "the island" after "a kitchen island" refers back to it; "a vase of tulips", "a bowl full
+  of apples" and "a statue of a horse" hold contents, not objects; "a stone path", "a pine
+  forest", "a throne hall" name no object; "a potted palm" is a potted plant, "a round
+  table" a round table.
 - ``over`` means ``above`` only after a hanging verb (hang, hover, float...); ``X under Y``
   puts Y ``on`` X when X is flat (a rug under a table), else X ``near`` Y.
 - Vague counts: a pair / a couple / both → 2; a few / several / some / a bare plural → 3;
@@ -32,7 +43,13 @@ from collections import Counter
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
-from scenewright.analysis.catalogue import Category, load_catalogue, match_phrase, singular
+from scenewright.analysis.catalogue import (
+    Category,
+    load_catalogue,
+    match_phrase,
+    phrase_index,
+    singular,
+)
 from scenewright.scene import DEFAULT_STYLE, Constraint
 
 log = logging.getLogger(__name__)
@@ -40,7 +57,7 @@ log = logging.getLogger(__name__)
 #: Ground kinds the procedural ground textures understand.
 GROUND_KINDS = (
     "wood floor", "tiles", "carpet", "concrete", "marble", "grass", "gravel", "cobblestone",
-    "sand", "dirt", "snow", "metal deck", "stone", "rubber",
+    "sand", "dirt", "snow", "metal deck", "stone", "rubber", "asphalt",
 )  # fmt: skip
 
 
@@ -121,7 +138,7 @@ _QUANTITY = {
     "pair": 2, "couple": 2, "row": 3, "rows": 5, "line": 3, "set": 3, "group": 3, "cluster": 3,
     "stack": 3, "stacks": 4, "pile": 3, "piles": 4, "bunch": 3, "handful": 3, "collection": 3,
     "coils": 3, "coil": 1, "ring": 4, "circle": 4, "lot": 5, "lots": 5, "plenty": 5, "dozens": 12,
-    "series": 3, "trio": 3, "cluster": 3, "clusters": 5, "grove": 4, "patch": 1,
+    "series": 3, "trio": 3, "clusters": 5, "grove": 4, "patch": 1,
 }  # fmt: skip
 _DETERMINERS = {"a", "an", "the", "this", "that", "these", "those", "its", "their", "his", "her", "our", "my",
                 "your", "another", "each", "every", "any", "other", "one", "all"}  # fmt: skip
@@ -135,11 +152,11 @@ _STOP = (
         "near", "beside", "behind", "above", "under", "below", "over", "between", "around", "is",
         "are", "was", "were", "be", "has", "have", "had", "there", "here", "while", "where", "which",
         "who", "that", "as", "than", "stands", "stand", "sits", "sit", "lies", "lie", "rests", "rest",
-        "hangs", "hang", "grows", "grow", "placed", "sits", "next", "across", "opposite", "facing",
+        "hangs", "hang", "grows", "grow", "placed", "next", "across", "opposite", "facing",
         "faces", "face", "toward", "towards", "against", "along", "inside", "outside", "up", "down",
         "out", "off", "through", "like", "full", "filled", "covered", "packed", "made", "also", "just",
         "very", "too", "so", "then", "it's", "each", "every", "lots", "plenty", "atop", "upon",
-        "beneath", "underneath", "near", "close", "far", "away", "front", "back",
+        "beneath", "underneath", "close", "far", "away", "front", "back",
         "side", "sides", "middle", "centre", "center", "corner", "edge", "end", "top", "bottom",
     }
 )  # fmt: skip
@@ -160,7 +177,7 @@ _CONTENT_MARKERS = {("full", "of"), ("filled", "with"), ("packed", "with"), ("ov
 _HANG_VERBS = {"hang", "hangs", "hanging", "hung", "hover", "hovers", "hovering", "float", "floats",
                "floating", "suspended", "dangle", "dangles", "dangling", "fly", "flies", "flying",
                "soar", "soars", "soaring", "glow", "glows", "drift", "drifts", "mounted", "swing",
-               "swings", "is", "are"}  # fmt: skip
+               "swings"}  # fmt: skip
 
 # --------------------------------------------------------------------------- relation phrases
 
@@ -169,8 +186,11 @@ _REL_PHRASES: dict[str, list[str]] = {
                 "at the left of", "on the left hand side of", "to the left hand side of"],
     "right of": ["to the right of", "on the right of", "right of", "to the right side of", "on the right side of",
                  "at the right of", "on the right hand side of", "to the right hand side of"],
-    "left": ["to the left", "on the left", "to its left", "on its left"],
-    "right": ["to the right", "on the right", "to its right", "on its right"],
+    "left": ["to the left", "on the left"],
+    "right": ["to the right", "on the right"],
+    "its left": ["to its left", "on its left", "at its left"],
+    "its right": ["to its right", "on its right", "at its right"],
+    "on top": ["on top", "on the top"],
     "in front of": ["in front of", "at the front of", "in the front of", "just in front of", "right in front of",
                     "to the front of"],
     "behind": ["behind", "at the back of", "in back of", "to the back of", "at the rear of", "to the rear of",
@@ -225,23 +245,8 @@ def _phrase_table() -> dict[tuple[str, ...], str]:
     return table
 
 
-@lru_cache(maxsize=1)
-def relation_phrases() -> dict[str, tuple[str, ...]]:
-    """Phrase → the relations it asks of one object placed against one target (the edit
-    planner's vocabulary). Kinds that need a group or no target (flank, around, under, a bare
-    "to the left") are left out; "opposite" is in front of and facing, "over" is above."""
-    from scenewright.scene import RELATION_TYPES
-
-    single = {"over": ("above",), "opposite": ("in front of", "face to"), "between": ("near",)}
-    table: dict[str, tuple[str, ...]] = {}
-    for kind, phrases in _REL_PHRASES.items():
-        relations = (kind,) if kind in RELATION_TYPES else single.get(kind)
-        for phrase in phrases if relations else ():
-            table[phrase] = relations
-    return table
-
-
 _MAX_REL = 6
+_PLANT_SHAPES = ("tree", "pine_tree", "palm_tree", "bush", "flower_bed")
 #: Phrase kinds that name relations of one object to one target, and the relations they mean.
 _SINGLE_TARGET = {
     "left of": ("left of",), "right of": ("right of",), "in front of": ("in front of",), "behind": ("behind",),
@@ -299,17 +304,19 @@ _GROUND_WORDS = [
     ("gravel", ("gravel",)),
     ("snow", ("snow", "snowy", "snow covered", "frozen", "icy", "winter")),
     ("sand", ("sand", "sandy", "beach", "desert", "dunes", "dune", "oasis")),
-    ("rubber", ("rubber ground", "rubber floor", "rubber mat", "rubber flooring", "gym floor")),
+    ("rubber", ("rubber ground", "rubber floor", "rubber mat", "rubber flooring", "gym floor", "playground", "gym")),
     ("marble", ("marble floor", "marble floors", "marble tiles", "marble flooring")),
     ("tiles", ("tile", "tiles", "tiled", "bathroom", "kitchen", "laboratory", "lab", "spa")),
     ("carpet", ("carpeted", "wall to wall carpet", "carpet floor", "bedroom", "nursery", "office", "conference")),
-    ("concrete", ("concrete", "asphalt", "pavement", "sidewalk", "street", "parking", "city", "station",
-                  "platform", "warehouse", "garage", "industrial", "dock", "harbour", "harbor", "pier")),
+    ("asphalt", ("asphalt", "tarmac", "road", "street", "parking", "highway", "city", "gas station")),
+    ("concrete", ("concrete", "pavement", "sidewalk", "station", "platform", "warehouse", "garage", "industrial",
+                  "dock", "harbour", "harbor", "pier")),
     ("wood floor", ("wooden floor", "wood floor", "hardwood", "parquet", "floorboards", "wooden deck",
                     "plank", "room", "house", "cabin", "studio", "apartment", "cafe", "café", "bistro",
                     "restaurant", "shop", "store", "boutique", "hall")),
     ("stone", ("stone floor", "flagstone", "flagstones", "paved", "plaza", "courtyard", "castle", "temple")),
-    ("dirt", ("dirt", "mud", "muddy", "soil", "farm", "dusty", "village", "campsite", "orchard", "trail")),
+    ("dirt", ("dirt", "mud", "muddy", "soil", "farm", "dusty", "village", "campsite", "orchard", "trail",
+              "planet", "rocky", "crater", "martian", "wasteland")),
     ("grass", ("grass", "grassy", "lawn", "meadow", "park", "garden", "field", "backyard", "yard", "forest")),
 ]
 
@@ -324,7 +331,7 @@ def detect_ground(text: str, indoor: bool) -> str:
             pos = low.find(" " + w + " ")
             if pos >= 0:
                 # Material words ("cobblestones", "tiles") outrank place words ("kitchen", "park").
-                explicit = 0 if rank < 7 or " " in w or w in ("tile", "tiles", "tiled", "concrete", "grass") else 1
+                explicit = 0 if rank < 7 or " " in w or w in ("tile", "tiles", "tiled", "concrete", "asphalt", "grass") else 1
                 key = (explicit, rank, kind)
                 if best is None or key < best:
                     best = key
@@ -363,9 +370,8 @@ class _Group:
     ids: list[str] = field(default_factory=list)
 
 
+@lru_cache(maxsize=1)
 def _max_phrase_len() -> int:
-    from scenewright.analysis.catalogue import phrase_index
-
     return max(len(k) for k in phrase_index())
 
 
@@ -413,9 +419,9 @@ def _find_mentions(toks: list[_Tok]) -> list[_Mention]:
         follow = toks[e].text if e < n else ""
         if follow in _VENUES or (follow and singular(follow) in _VENUES and len(words) == 1):
             continue  # "a throne hall", "a flower shop": the place, not the thing
-        if len(words) == 1 and words[0] in _MODIFIER_NOUNS and follow[:1].isalpha() and follow not in _STOP:
-            if not _is_verb(follow) and not follow.endswith(("ed", "ing")):
-                continue  # "a stone path", "a glass roof": an adjective here
+        qualifies = follow[:1].isalpha() and follow not in _STOP and not _is_verb(follow)
+        if len(words) == 1 and words[0] in _MODIFIER_NOUNS and qualifies and not follow.endswith(("ed", "ing")):
+            continue  # "a stone path", "a glass roof": an adjective here
         mentions.append(_Mention(cat, " ".join(t.orig for t in toks[s:e]), s, e, 1, False, False))
     return _alias_mentions(toks, mentions)
 
@@ -439,8 +445,10 @@ def _alias_mentions(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention
                 compounds.setdefault(singular(words[0]), m.category)
             nxt += 1
         word = singular(t.text)
-        if word not in heads:
-            heads.update({word: c for w, c in compounds.items() if len(word) >= 4 and w.endswith(word)})
+        if word not in heads and len(word) >= 4:
+            compound = next((c for w, c in compounds.items() if w.endswith(word)), None)
+            if compound is not None:
+                heads[word] = compound
         if i in taken or not t.text[0].isalpha() or word not in heads:
             continue
         j = i - 1
@@ -469,12 +477,14 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         w = t.text
         if w in _NUMBERS and not toks[j + 1].joined:
             count, counted = _NUMBERS[w], True
-            if j > 0 and toks[j - 1].text in ("a",) and w == "dozen":
-                pass
             break
+        if toks[j + 1].joined and adjectives:  # "three-tiered", "red-and-white": one adjective
+            adjectives[0] = f"{t.orig}-{adjectives[0]}"
+            j -= 1
+            continue
         if w.replace(".", "").isdigit():
             if j + 1 < len(toks) and (toks[j + 1].joined or toks[j + 1].text in _UNITS):
-                adjectives.insert(0, t.orig)
+                adjectives.insert(0, t.orig)  # "27-inch", "4 m tall": a size, not a count
                 j -= 1
                 continue
             count, counted = int(float(w)), True
@@ -553,9 +563,10 @@ def _read_sizes(toks: list[_Tok]) -> list[tuple[int, int, str, float]]:
 def _apply_sizes(base: tuple[float, float, float], dims: list[tuple[str, float]]) -> tuple[float, float, float]:
     x, y, z = base
     stated: dict[str, float] = {}
+    named = {d for d, _ in dims}
     for dim, value in dims:
-        if dim == "long":
-            dim = "y" if y > x else "x"
+        if dim == "long":  # the longer side, unless the width or depth is named too
+            dim = "y" if "x" in named else "x" if "y" in named else "y" if y > x else "x"
         if dim == "d":
             stated["x"] = stated["y"] = value
         else:
@@ -575,6 +586,35 @@ class _Rel:
     kind: str
     start: int
     end: int
+    #: The target is the last one named ("..., at a distance of 12 m").
+    elliptic: bool = False
+
+
+#: At most this far apart is "near", beyond the other "far" (the relations' own thresholds).
+NEAR_LIMIT = 2.0
+FAR_LIMIT = 8.0
+
+
+def _distance_at(toks: list[_Tok], i: int) -> _Rel | None:
+    """"at a distance of N m (from X)", "N metres (away) from X" → near / far / nothing."""
+    j = i
+    if [t.text for t in toks[i : i + 4]] == ["at", "a", "distance", "of"]:
+        j = i + 4
+    elif i > 0 and toks[i - 1].text in ("about", "some", "roughly", "around", "only", "just", "of"):
+        return None
+    value = toks[j].text if j < len(toks) else ""
+    number = float(value) if value.replace(".", "", 1).isdigit() else _NUM_WORD.get(value)
+    if number is None or j + 1 >= len(toks) or toks[j + 1].text not in _UNITS:
+        return None
+    metres = number * _UNITS[toks[j + 1].text]
+    k = j + 2
+    if k < len(toks) and toks[k].text == "away":
+        k += 1
+    has_from = k < len(toks) and toks[k].text == "from"
+    if not has_from and j == i:
+        return None  # "2 m" alone is a size or a count, not a distance
+    kind = "near" if metres <= NEAR_LIMIT else "far" if metres > FAR_LIMIT else "no relation"
+    return _Rel(kind, i, k + 1 if has_from else k, elliptic=not has_from)
 
 
 def _find_relations(toks: list[_Tok], taken: set[int]) -> list[_Rel]:
@@ -585,9 +625,9 @@ def _find_relations(toks: list[_Tok], taken: set[int]) -> list[_Rel]:
         if i in taken:
             i += 1
             continue
-        hit = None
+        hit = _distance_at(toks, i)
         for length in range(min(_MAX_REL, len(toks) - i), 0, -1):
-            if any(k in taken for k in range(i, i + length)):
+            if hit or any(k in taken for k in range(i, i + length)):
                 continue
             key = tuple(t.text for t in toks[i : i + length])
             if key in table:
@@ -664,8 +704,8 @@ class _Reader:
         self.toks = _tokenise(text)
         self.catalogue = load_catalogue()
         self.groups: list[_Group] = []
-        #: (kind, source group, target group, source instance, target instance)
-        self.relations: list[tuple[str, int, int, int | None, int | None]] = []
+        #: (kind, source group, target group, target instance when one of the group is meant)
+        self.relations: list[tuple[str, int, int, int | None]] = []
         self.pair_each: set[tuple[int, int]] = set()
         self.history: list[int] = []  # groups in the order earlier clauses mentioned them
         self.instance: dict[int, int | None] = {}  # mention start → instance it names
@@ -674,8 +714,11 @@ class _Reader:
     # ---- groups
 
     def _new_group(self, m: _Mention, sizes: list[tuple[str, float]]) -> int:
-        if m.category == "table" and {a.lower() for a in m.adjectives} & {"round", "circular"}:
+        adjectives = {a.lower() for a in m.adjectives}
+        if m.category == "table" and adjectives & {"round", "circular"}:
             m.category = "round_table"
+        if adjectives & {"potted", "pot"} and self.catalogue[m.category].shape in _PLANT_SHAPES:
+            m.category = "potted_plant"  # "a potted palm" is a house plant, not a 6 m tree
         cat: Category = self.catalogue[m.category]
         name = m.phrase.lower()
         if _is_plural(self.toks, m):
@@ -784,31 +827,30 @@ class _Reader:
                 chain = False
                 continue
             gap = [t.text for t in toks[prev.end : j + 1]]
-            w = toks[j].text
-            content = False
-            if (toks[j - 1].text, w) in _CONTENT_MARKERS and j - prev.end <= 2:
-                content = True
-            elif w == "of" and prev.end == j and prev.category in _CONTENT_HEADS and not m.definite:
-                content = True
-            elif w == "in" and prev.end == j and m.category in ("pot", "planter", "vase") and self.catalogue[
-                prev.category
-            ].shape in ("potted_plant", "bush", "flower_bed"):
-                content = True
-            elif chain and prev.content and all(g in ("and", ",", "or") for g in gap):
-                content = True
+            content = self._is_content(m, prev, j) or (
+                chain and prev.content and not (m.counted or m.definite) and all(g in ("and", ",", "or") for g in gap)
+            )
             m.content = content
             chain = content
+
+    def _is_content(self, m: _Mention, prev: _Mention, j: int) -> bool:
+        w = self.toks[j].text
+        if (self.toks[j - 1].text, w) in _CONTENT_MARKERS and j - prev.end <= 2:
+            return True  # "a bowl full of apples"
+        if w == "of" and prev.end == j and prev.category in _CONTENT_HEADS and not m.definite:
+            return True  # "a vase of tulips", "a statue of a horse"
+        plant = self.catalogue[prev.category].shape in ("potted_plant", "bush", "flower_bed")
+        return w == "in" and prev.end == j and m.category in ("pot", "planter", "vase") and plant
 
     def _merge_lists(self, clauses: list[tuple[int, int]]) -> list[tuple[int, int]]:
         """Join a clause that only lists objects to the next one when that one places them
         ("with a laptop, a mug and a lamp on it")."""
         out: list[tuple[int, int]] = []
         for cs, ce in clauses:
-            if out and self._is_list(*out[-1]) and any(k in self.rel_at for k in range(cs, ce)):
-                if not any(k in self.rel_at for k in range(out[-1][0], out[-1][1])):
-                    ps, _ = out[-1]
-                    out[-1] = (ps, ce)
-                    continue
+            places = any(k in self.rel_at for k in range(cs, ce))
+            if places and out and self._is_list(*out[-1]):  # a list has no relation phrase of its own
+                out[-1] = (out[-1][0], ce)
+                continue
             out.append((cs, ce))
         return out
 
@@ -857,12 +899,12 @@ class _Reader:
     def _pronoun(self, word: str, c: _Clause, srcs: list[int]) -> list[int]:
         """The group "it" / "them" names: the latest earlier mention of the right number."""
         plural = word in ("them", "themselves")
-        for g in [*reversed(self.history), *reversed(c.groups)]:
-            if g in srcs:
-                continue
+        recent = [g for g in [*reversed(self.history), *reversed(c.groups)] if g not in srcs]
+        for g in recent:
             if (self.groups[g].count > 1) == plural:
                 return [g]
-        return []
+        # "them" after two single things ("an armchair ... a bookcase ..., between them")
+        return list(dict.fromkeys(recent))[:2] if plural else []
 
     def _clause(self, c: _Clause, cs: int, ce: int, prev_subject: list[int]) -> None:
         toks = self.toks
@@ -873,8 +915,6 @@ class _Reader:
         while j < ce and (toks[j].text in _DETERMINERS or toks[j].text in _ADVERBS):
             j += 1
         starts_with_rel = j in self.rel_at
-        if j < ce and toks[j].text in ("each", "with", "holding", "carrying"):
-            c.head = None
         each_group: int | None = None
         last_event_end = cs
         while k < ce:
@@ -959,11 +999,17 @@ class _Reader:
             srcs = list(c.main)
         if kind == "no relation":
             return end
+        if kind in ("its left", "its right") and target is None:
+            kind, target = ("left of" if kind == "its left" else "right of"), "it"
+        if kind == "on top" and target is None:
+            kind = "on"
+            target = "it" if c.head is not None else None
+            rel = replace(rel, elliptic=True)
         if isinstance(target, str) and target != "each other":
             targets: list[int] | str = self._pronoun(target, c, srcs) if c.head is None else list(c.head)
             if c.head is not None and srcs == c.head:
                 targets = self._pronoun(target, c, srcs)
-        elif target is None and kind in ("left", "right", "flank elliptic"):
+        elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
             targets = list(c.last_target) or [g for g in self.history[-1:] if g not in srcs]
         elif target is None:
             targets = []
@@ -1002,7 +1048,7 @@ class _Reader:
         hang = any(t.text in _HANG_VERBS for t in toks[max(0, rel.start - 3) : rel.start])
         if targets == "each other":
             for s in srcs:
-                self.relations.append(("face to" if kind == "face to" else "near", s, s, None, None))
+                self.relations.append(("face to" if kind == "face to" else "near", s, s, None))
             c.produced = True
             return end
         assert isinstance(targets, list)
@@ -1029,7 +1075,7 @@ class _Reader:
             resolved = self._kind(kind, s, target, hang)
             if s == target or resolved == "no relation":
                 continue
-            self.relations.append((resolved, s, target, None, instance))
+            self.relations.append((resolved, s, target, instance))
 
     def _kind(self, kind: str, s: int, t: int, hang: bool = False) -> str:
         src = self.catalogue[self.groups[s].category]
@@ -1054,7 +1100,6 @@ def _ids(groups: list[_Group]) -> None:
             g.ids.append(f"{g.category}_{counters[g.category]}")
 
 
-_SIDES_SQUARE = ("left of", "right of", "in front of", "behind")
 
 
 def _around_sides(n: int, src: _Group, tgt: _Group) -> list[str]:
@@ -1087,7 +1132,7 @@ def _instance_pairs(src: _Group, tgt: _Group, paired: bool) -> list[tuple[str, s
 def _expand(reader: _Reader) -> list[ParsedRelation]:
     out: list[ParsedRelation] = []
     groups = reader.groups
-    for kind, s, t, _, instance in reader.relations:
+    for kind, s, t, instance in reader.relations:
         src, tgt = groups[s], groups[t]
         paired = (s, t) in reader.pair_each or (t, s) in reader.pair_each
         if s == t:  # "facing each other": the later ones face the first
@@ -1103,6 +1148,8 @@ def _expand(reader: _Reader) -> list[ParsedRelation]:
         elif kind == "flank":
             for i, (a, _) in enumerate(pairs):
                 out.append(ParsedRelation(a, ("left of", "right of")[i % 2], tgt.ids[(i // 2) % len(tgt.ids)]))
+        elif kind == "around" and len(src.ids) == 1:  # one round ottoman "surrounds" a palm: it is near
+            out += [ParsedRelation(src.ids[0], "near", b) for b in tgt.ids[:1]]
         elif kind == "around":
             sides = _around_sides(len(src.ids), src, tgt)
             for i, a in enumerate(src.ids):
@@ -1211,9 +1258,13 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
             load[best.id] += 1
             extra.append(ParsedRelation(obj.id, "on", best.id, inferred=True))
         elif cat.rests == "hanging":
-            hosts = [o for o in objects if o.id != obj.id and catalogue[o.category].rests == "ground" and o.size[2] < 2.5]
+            hosts = [
+                o for o in objects
+                if o.id != obj.id and catalogue[o.category].rests == "ground" and 0.3 < o.size[2] < 2.5
+            ]  # fmt: skip
             if hosts:
-                best = min(hosts, key=lambda o: (abs(o.group - obj.group), -o.size[0] * o.size[1]))
+                # the nearest mention, the one before on a tie ("a dresser with a mirror")
+                best = min(hosts, key=lambda o: (abs(o.group - obj.group), o.group > obj.group, -o.size[0] * o.size[1]))
                 extra.append(ParsedRelation(obj.id, "above", best.id, inferred=True))
     return extra
 

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import trimesh
 
+from scenewright.assets.normalise import parse_glb
 from scenewright.errors import InputError
 from scenewright.folder import SceneFolder
 from scenewright.geometry import GLTF_TO_SCENE
-from scenewright.assets.normalise import parse_glb
 from scenewright.scene import Scene
 
 

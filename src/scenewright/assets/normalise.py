@@ -92,7 +92,7 @@ def normalise(
     transform[:3, 3] = -centre * scale
     scene = baked(scene, transform)
     ext = scene.extents
-    new_size = Vec3(x=max(round(float(ext[0]), 6), MIN_SIDE), y=max(round(float(ext[2]), 6), MIN_SIDE), z=size.z)
+    new_size = Vec3(x=max(float(ext[0]), MIN_SIDE), y=max(float(ext[2]), MIN_SIDE), z=size.z)
     log.debug("normalised %s from %s: scale %.4g, size %s", name, backend, scale, new_size.tuple())
     return scene, new_size
 

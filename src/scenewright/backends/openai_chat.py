@@ -179,12 +179,6 @@ class OpenAIChatVLM:
 
     # --- scene analysis ------------------------------------------------------------------
 
-    def detect_style(self, text: str) -> str:
-        """The style the text names, by the offline parser's rules: no call is worth paying for this."""
-        from scenewright.analysis.parser import detect_style
-
-        return detect_style(text)
-
     def describe_objects(self, text: str, style: str, reference: bytes | None) -> list[SceneObject]:
         self._begin()
         low, high = size_range(text)
@@ -363,7 +357,8 @@ class OpenAIChatVLM:
             self._begin()
             focus = answer.focus if answer.focus in known else by_snake.get(snake_id(answer.focus))
             if answer.operation == "add":
-                focus = self._new_id(answer.focus, known)
+                # An id the scene already uses is replaced by editing.validate_plan, constraints and all.
+                focus = snake_id(answer.focus) or "object"
             elif focus is None:
                 raise InvalidAnswer(
                     f"focus {answer.focus!r} is not an object of the scene; "
@@ -373,10 +368,9 @@ class OpenAIChatVLM:
                 raise InvalidAnswer(f"operation {answer.operation!r} needs new_object")
             if answer.operation == "delete":
                 return EditPlan(operation="delete", focus=focus)
-            proposed = answer.constraints
-            if focus != answer.focus:  # a new object's id was changed: its constraints follow
-                proposed = [c.model_copy(update={"source": focus}) if c.source == answer.focus else c for c in proposed]
-            constraints = self._focus_constraints(proposed, focus, scene.objects)
+            constraints = self._focus_constraints(answer.constraints, focus, scene.objects)
+            if answer.operation == "move" and not constraints and answer.yaw is None:
+                raise InvalidAnswer(f"a move of {focus} needs constraints saying where to, or a yaw")
             new = answer.new_object
             yaw = answer.yaw if answer.yaw is not None and math.isfinite(answer.yaw) else None
             return EditPlan(
@@ -395,16 +389,6 @@ class OpenAIChatVLM:
             )
 
         return self.chat.ask("edit_plan", messages, EditAnswer, check)
-
-    def _new_id(self, proposed: str, known: set[str]) -> str:
-        base = snake_id(proposed) or "object"
-        new_id, n = base, 1
-        while new_id in known:
-            n += 1
-            new_id = f"{base}_{n}"
-        if new_id != proposed:
-            self._repaired("edit_plan", f"new object id {proposed!r} became {new_id!r}", id=new_id)
-        return new_id
 
     def _focus_constraints(
         self, proposed: Sequence[ProposedConstraint], focus: str, objects: Sequence[SceneObject]

@@ -57,7 +57,10 @@ class OpenAIImages(RemoteModel):
 
         def draw(prompt: str) -> bytes:
             ids = ", ".join(i for i, p in prompts_by_id.items() if p == prompt)
-            return self._draw(f"image of {ids}", prompt, reference, size=SQUARE, background="transparent")
+            data = self._draw(f"image of {ids}", prompt, reference, size=SQUARE, background="transparent")
+            if not _has_alpha(data):
+                log.warning("the image of %s has no transparency; its background reaches the mesh backend", ids)
+            return data
 
         drawn: dict[str, bytes] = {}
         failures: list[str] = []
@@ -72,7 +75,7 @@ class OpenAIImages(RemoteModel):
                     failures.append(str(exc))
                 if progress is not None:
                     for object_id in (i for i, p in prompts_by_id.items() if p == prompt):
-                        progress(object_id)
+                        progress(f"{object_id}: image {len(drawn) + len(failures)} of {len(unique)}")
         if failures:
             raise BackendError(
                 f"{len(failures)} of {len(unique)} object images failed (the others are cached): "
@@ -142,3 +145,10 @@ def _as_png(what: str, data: bytes) -> bytes:
             return out.getvalue()
     except (UnidentifiedImageError, OSError) as exc:
         raise BackendError(f"{what}: the server's answer is not an image ({exc})") from None
+
+
+def _has_alpha(png: bytes) -> bool:
+    from PIL import Image
+
+    with Image.open(io.BytesIO(png)) as image:
+        return image.mode in ("RGBA", "LA", "PA") or "transparency" in image.info

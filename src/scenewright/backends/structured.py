@@ -19,7 +19,6 @@ import json
 import logging
 import os
 import re
-import threading
 from collections.abc import Callable, Sequence
 from typing import Any, TypeVar
 
@@ -162,22 +161,14 @@ def _short(text: str, limit: int = 300) -> str:
 
 
 class RemoteModel:
-    """One model on an OpenAI-compatible server: its settings, a cache for its answers, and an
-    SDK client made on first use (so choosing a backend needs neither the SDK nor a key yet)."""
+    """One model on an OpenAI-compatible server: its settings, a cache for its answers and the
+    SDK client, made when the backend is (so a missing key stops a run before it starts)."""
 
     def __init__(self, model: str, settings: Settings, client: Any = None):
         self.model = model
         self.settings = settings
         self.cache = RequestCache(settings.cache_dir)
-        self._client = client
-        self._lock = threading.Lock()  # image workers may ask for the client at the same time
-
-    @property
-    def client(self):
-        with self._lock:
-            if self._client is None:
-                self._client = openai_client(self.settings)
-            return self._client
+        self.client = client if client is not None else openai_client(settings)
 
 
 class ChatClient(RemoteModel):

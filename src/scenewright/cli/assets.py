@@ -51,14 +51,13 @@ def bench_assets(
         backend = Hunyuan3D([s.url for s in started], concurrency=1, poll_interval=poll)
         with tempfile.TemporaryDirectory(prefix="scenewright-bench-assets-") as tmp:
             folder = SceneFolder(Path(tmp))
+            folder.object_images.mkdir(parents=True)
             objects = []
             for index in range(assets):
-                oid = f"crate_{index + 1}"
-                (folder.object_images).mkdir(parents=True, exist_ok=True)
-                folder.object_image(oid).write_bytes(_png(index))
-                objects.append(
-                    SceneObject(id=oid, name="crate", size=Vec3(x=1, y=1, z=1), image=folder.relative(folder.object_image(oid)))
-                )
+                image = folder.object_image(f"crate_{index + 1}")
+                image.write_bytes(_png(index))
+                objects.append(SceneObject(id=image.stem, name="crate", size=Vec3(x=1, y=1, z=1),
+                                           image=folder.relative(image)))
             scene = Scene(text="a yard full of crates", objects=objects)
             start = time.perf_counter()
             generate_assets(scene, folder, backend, RequestCache(None))

@@ -55,12 +55,14 @@ class _StageProgress:
         task = self.tasks[stage]
         if message == "done":
             self.progress.update(task, completed=1, note="[green]done[/green]")
+        elif message.startswith("skipped"):
+            self.progress.update(task, completed=1, note=f"[yellow]{message}[/yellow]")
         else:
             self.progress.update(task, note=message)
 
 
 def _summary(console: Console, folder: SceneFolder, scene: Scene) -> None:
-    console.print(f"[bold green]Scene written to {folder.root.resolve()}[/bold green]")
+    console.print(f"[bold green]Scene written to {folder.root}[/bold green]")
     console.print(f"  scene.glb    {folder.glb}  (open it in Blender, Godot or Unreal)")
     counts = f"{len(scene.objects)} objects, {len(scene.constraints)} constraints"
     console.print(f"  scene.json   {folder.document}  ({counts})")
@@ -68,7 +70,8 @@ def _summary(console: Console, folder: SceneFolder, scene: Scene) -> None:
     console.print(f"  images/      {folder.images}")
     renders = sorted(folder.renders.glob("*.png")) if folder.renders.is_dir() else []
     if renders:
-        console.print(f"  renders/     {folder.renders}  ({len(renders)} previews)")
+        plural = "s" if len(renders) != 1 else ""
+        console.print(f"  renders/     {folder.renders}  ({len(renders)} preview{plural})")
     for removed in scene.removed:
         console.print(f"  [dim]removed {removed.id}: {removed.reason}[/dim]")
 
@@ -140,12 +143,12 @@ def generate_command(
     ) as bar:
         report = _StageProgress(bar)
         if resume_dir is not None:
-            folder = SceneFolder(resume_dir)
+            folder = SceneFolder(resume_dir.absolute())
             scene = resume(
                 folder, backends=backends, settings=settings, render=not no_render, progress=report
             )
         else:
-            folder = SceneFolder(out)
+            folder = SceneFolder(out.absolute())
             scene = generate(
                 _example_text() if example else text,
                 folder,
@@ -178,26 +181,33 @@ def bench_pipeline(
     from scenewright.backends import Backends
     from scenewright.pipeline import generate
 
-    texts = [prompt.text for prompt in load_prompts(prompts)][:limit]
+    chosen = load_prompts(prompts)[:limit]
     settings = build_settings()
     settings.cache_dir = None
     backends = Backends.from_settings(settings)
     runs = []
     with tempfile.TemporaryDirectory(prefix="scenewright-bench-") as tmp:
-        for index, text in enumerate(texts):
+        for prompt in chosen:
             start = time.perf_counter()
-            scene = generate(text, Path(tmp) / str(index), backends=backends, settings=settings, render=False)
-            runs.append((time.perf_counter() - start, len(scene.objects), scene.layout.complete))
-    seconds = [s for s, _, _ in runs]
-    large = [s for s, n, _ in runs if n >= LARGE_SCENE]
+            scene = generate(prompt.text, Path(tmp) / prompt.id, backends=backends, settings=settings, render=False)
+            runs.append(
+                {
+                    "id": prompt.id,
+                    "seconds": round(time.perf_counter() - start, 3),
+                    "objects": len(scene.objects),
+                    "complete": scene.layout.complete,
+                }
+            )
+    seconds = [r["seconds"] for r in runs]
+    large = [r["seconds"] for r in runs if r["objects"] >= LARGE_SCENE]
     result = {
         "prompts": len(runs),
-        "median_seconds": round(statistics.median(seconds), 3),
-        "max_seconds": round(max(seconds), 3),
-        "median_objects": statistics.median(n for _, n, _ in runs),
-        "max_objects": max(n for _, n, _ in runs),
-        f"median_seconds_{LARGE_SCENE}plus_objects": round(statistics.median(large), 3) if large else None,
+        "median_seconds": statistics.median(seconds),
+        "max_seconds": max(seconds),
+        "median_objects": statistics.median(r["objects"] for r in runs),
+        f"median_seconds_{LARGE_SCENE}plus_objects": statistics.median(large) if large else None,
         f"scenes_{LARGE_SCENE}plus_objects": len(large),
-        "complete_layouts": sum(complete for _, _, complete in runs),
+        "complete_layouts": sum(r["complete"] for r in runs),
+        "slowest": sorted(runs, key=lambda r: -r["seconds"])[:3],
     }
     typer.echo(json.dumps(result))

@@ -22,12 +22,11 @@ from pathlib import Path
 import numpy as np
 import trimesh
 
-from scenewright.analysis.catalogue import lookup
 from scenewright.assets import asset_mesh, generate_assets, load_meshes
 from scenewright.backends import Backends
 from scenewright.cache import RequestCache
 from scenewright.editing.history import commit
-from scenewright.editing.parser import fresh_id
+from scenewright.editing.parser import category_in, fresh_id
 from scenewright.editing.plan import EditPlan
 from scenewright.errors import InfeasibleLayout, InputError
 from scenewright.folder import SceneFolder
@@ -63,6 +62,7 @@ def apply_edit(scene: Scene, folder: SceneFolder, instruction: str, *, backends:
         )
     plan = backends.vlm.plan_edit(scene, instruction)
     edit = run_plan(scene, folder, plan, backends=backends, settings=settings)
+    edit.scene.provenance += getattr(backends.vlm, "last_repairs", [])  # what a remote model's answer needed
     edit.scene.record(STAGE, f"{plan.operation} {plan.focus}: {instruction.strip()}",
                       backend=backends.vlm.name, changes=edit.changes)
     commit(folder, edit.scene, edit.files, instruction=instruction.strip(), operation=plan.operation,
@@ -341,9 +341,10 @@ def _move(edit: _Edit, folder: SceneFolder, settings: Settings) -> None:
     in_place = not placing and all(check(c.relation, focus, scene.get(c.target)) for c in mine)
     if in_place:
         _carry(scene, carried, before, focus)
-        if _collisions(scene, [focus.id, *carried], meshes):
+        hits = _collisions(scene, [focus.id, *carried], meshes)
+        if hits:
             if plan.yaw is not None and not turning:
-                pairs = ", ".join(" and ".join(p) for p in _collisions(scene, [focus.id, *carried], meshes))
+                pairs = ", ".join(" and ".join(p) for p in hits)
                 raise InfeasibleLayout(f"turning {focus.id} in place makes {pairs} collide; move it first")
             in_place = False
             for oid in carried:  # back to where they were, to follow the solved focus instead
@@ -370,8 +371,8 @@ def _replace(edit: _Edit, folder: SceneFolder, backends: Backends, settings: Set
     new = plan.new_object
     assert new is not None
     before = focus.model_copy(deep=True)
-    category = lookup(new.category) if new.category else None
-    changed_kind = new.category is not None and new.category != focus.category
+    category = category_in(new.category, new.name)
+    changed_kind = category is not None and category.name != focus.category
     focus.name = new.name
     focus.category = category.name if category else (new.category or focus.category)
     focus.visual_description = new.visual_description or new.name
@@ -409,7 +410,7 @@ def _add(edit: _Edit, folder: SceneFolder, backends: Backends, settings: Setting
     scene, plan = edit.scene, edit.plan
     new = plan.new_object
     assert new is not None
-    category = lookup(new.category) if new.category else lookup(new.name)
+    category = category_in(new.category, new.name)
     if new.size is not None:
         size = new.size
     elif category is not None:

@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import lru_cache
 
 from scenewright.analysis.catalogue import Category, load_catalogue, lookup, singular, words
 from scenewright.analysis.parser import relation_phrases
@@ -94,16 +95,32 @@ def _starts(text: str, words_: Sequence[str]) -> str | None:
     return None
 
 
+#: Comparatives only an edit uses ("move it closer to the sofa"), on top of the text parser's phrases.
+_EDIT_PHRASES = {
+    "closer to": ("near",), "nearer to": ("near",), "nearer": ("near",), "up to": ("near",),
+    "further from": ("far",), "farther from": ("far",), "further away from": ("far",),
+    "farther away from": ("far",), "over to": ("near",), "over by": ("near",), "across to": ("near",),
+}  # fmt: skip
+_FILLERS = re.compile(r"\b(?:a bit|a little|a little bit|slightly|somewhat|just|over|instead)\b")
+
+
+@lru_cache(maxsize=1)
+def _vocabulary() -> list[tuple[re.Pattern[str], tuple[str, ...]]]:
+    """The relation phrases as whole-word patterns, longest first."""
+    ordered = sorted({**relation_phrases(), **_EDIT_PHRASES}.items(), key=lambda kv: -len(kv[0]))
+    return [(re.compile(rf"(?<![\w]){re.escape(phrase)}(?![\w])"), tuple(rels)) for phrase, rels in ordered]
+
+
 def _find_phrases(text: str) -> list[_Phrase]:
     """Every relation phrase in ``text``, longest match first, never overlapping."""
     found: list[_Phrase] = []
     taken: list[tuple[int, int]] = []
-    for phrase, relations in sorted(relation_phrases().items(), key=lambda kv: -len(kv[0])):
-        for m in re.finditer(rf"(?<![\w]){re.escape(phrase)}(?![\w])", text):
+    for pattern, relations in _vocabulary():
+        for m in pattern.finditer(text):
             if any(m.start() < e and s < m.end() for s, e in taken):
                 continue
             taken.append((m.start(), m.end()))
-            found.append(_Phrase(m.start(), m.end(), tuple(relations)))
+            found.append(_Phrase(m.start(), m.end(), relations))
     return sorted(found, key=lambda p: p.start)
 
 
@@ -140,6 +157,17 @@ def _category_of(tokens: list[str]) -> tuple[Category | None, int]:
             if category is not None:
                 return category, start
     return None, len(tokens)
+
+
+def category_in(*texts: str | None) -> Category | None:
+    """The catalogue category the first of ``texts`` that names one names ("brass lantern",
+    "torii_gate" → none, "stone gate arch" → arch); for plans a model wrote in its own words."""
+    for text in texts:
+        if text:
+            category, _ = _category_of(words(text.replace("_", " ")))
+            if category is not None:
+                return category
+    return None
 
 
 def resolve(scene: Scene, phrase: str, *, role: str = "object") -> SceneObject:
@@ -389,7 +417,7 @@ def _plan_move(scene: Scene, rest: str, *, turning: bool = False) -> EditPlan:
         rest = f"{rest[:turn.start()]} {rest[turn.end():]}".strip()
     phrases = _find_phrases(rest)
     reference = rest[: phrases[0].start] if phrases else rest
-    reference = _CLAUSE.split(reference, maxsplit=1)[0]
+    reference = _FILLERS.sub(" ", _CLAUSE.split(reference, maxsplit=1)[0])
     reference = re.sub(r"\b(?:so it|so that it|to|over|back|away|up|down|clockwise|counterclockwise|"
                        r"anticlockwise|left|right)\s*$", "", reference.strip())
     focus = resolve(scene, reference, role="object to move")

@@ -26,6 +26,9 @@ from scenewright.scene import Scene, SceneObject
 log = logging.getLogger(__name__)
 
 GROUND_NODE = "ground"
+#: glTF bufferView targets: vertex attributes and triangle indices.
+ARRAY_BUFFER = 34962
+ELEMENT_ARRAY_BUFFER = 34963
 
 
 def node_matrix(obj: SceneObject) -> np.ndarray:
@@ -67,6 +70,17 @@ def _add_object(target: trimesh.Scene, obj: SceneObject, path: Path) -> None:
         )
 
 
+def _mark_buffer_targets(tree: dict) -> None:
+    """Say which buffer views hold vertices and which indices, as engines prefer to be told."""
+    for mesh in tree.get("meshes", []):
+        for primitive in mesh["primitives"]:
+            for accessor in primitive["attributes"].values():
+                tree["bufferViews"][tree["accessors"][accessor]["bufferView"]]["target"] = ARRAY_BUFFER
+            if "indices" in primitive:
+                view = tree["accessors"][primitive["indices"]]["bufferView"]
+                tree["bufferViews"][view]["target"] = ELEMENT_ARRAY_BUFFER
+
+
 def _describe_nodes(scene: Scene):
     """A glTF tree hook that names the generator and tags each object node with its record."""
     extras = {obj.id: {"name": obj.name, "category": obj.category} for obj in scene.objects}
@@ -76,6 +90,7 @@ def _describe_nodes(scene: Scene):
         for node in tree.get("nodes", []):
             if node.get("name") in extras:
                 node["extras"] = extras[node["name"]]
+        _mark_buffer_targets(tree)
 
     return postprocess
 

@@ -25,7 +25,7 @@ from scenewright.layout.relations import rotated_half, tilt_matrix
 from scenewright.scene import Constraint, SceneObject, Vec3
 
 #: Overlap (m) below which two boxes are touching, not colliding.
-TOUCH = 1e-4
+TOUCH = 1e-6
 
 _BVH: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 

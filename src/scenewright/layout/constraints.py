@@ -36,7 +36,8 @@ def clean_constraints(
     seen: set[tuple[str, str, str]] = set()
 
     def drop(raw, reason: str) -> None:
-        dropped.append(DroppedConstraint(constraint=_as_dict(raw) if isinstance(raw, (Constraint, Mapping)) else {"value": repr(raw)}, reason=reason))
+        entry = _as_dict(raw) if isinstance(raw, (Constraint, Mapping)) else {"value": repr(raw)}
+        dropped.append(DroppedConstraint(constraint=entry, reason=reason))
         log.warning("constraint dropped: %s", reason)
 
     for raw in constraints:
@@ -53,7 +54,8 @@ def clean_constraints(
             continue
         unknown = [x for x in (c.source, c.target) if x not in ids]
         if unknown:
-            drop(c, f"'{c}' names unknown object {', '.join(map(repr, unknown))}; objects are: {', '.join(sorted(ids))}")
+            names = ", ".join(map(repr, unknown))
+            drop(c, f"'{c}' names unknown object {names}; objects are: {', '.join(sorted(ids))}")
         elif c.source == c.target:
             drop(c, f"'{c}' relates an object to itself")
         elif c.key() in seen:
@@ -63,7 +65,8 @@ def clean_constraints(
             kept.append(c)
     acyclic, cyclic = _break_cycles(kept)
     for c, path in cyclic:
-        drop(c, f"'{c}' would make a cycle ({' -> '.join(path)}); constraints must be acyclic")
+        drop(c, f"'{c}' would make a cycle ({' -> '.join(path)}, each placed relative to the next); "
+             "constraints must be acyclic")
     return acyclic, dropped
 
 
@@ -78,7 +81,7 @@ def _break_cycles(constraints: list[Constraint]) -> tuple[list[Constraint], list
         c = constraints[i]
         path = _path(after, c.source, c.target)
         if path is not None:
-            cyclic.append((c, [c.target] + path))
+            cyclic.append((c, [c.source] + path[::-1]))
             continue
         after.setdefault(c.target, set()).add(c.source)
         admitted.add(i)

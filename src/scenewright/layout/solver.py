@@ -33,7 +33,7 @@ import numpy as np
 import trimesh
 
 from scenewright.errors import InputError
-from scenewright.geometry import yaw_towards
+from scenewright.geometry import world_box, yaw_towards
 from scenewright.layout import relations as rel
 from scenewright.layout.collision import CollisionWorld, colliding_pairs, resting_pairs
 from scenewright.layout.constraints import clean_constraints, topological_order
@@ -135,6 +135,16 @@ class _Search:
         for i in self.fixed:
             self.put(i, self.pos[i], self.yaw[i])
 
+    def ancestors(self, ids: set[int]) -> set[int]:
+        """``ids`` and every object they depend on, through their constraints' targets."""
+        out, stack = set(), list(ids)
+        while stack:
+            i = stack.pop()
+            if i not in out:
+                out.add(i)
+                stack.extend(t for _, t in self.items[i].own)
+        return out
+
     # --- state ---------------------------------------------------------------------------
 
     def put(self, i: int, centre: np.ndarray, yaw: float) -> None:
@@ -154,7 +164,11 @@ class _Search:
 
     # --- candidates ----------------------------------------------------------------------
 
-    def candidates(self, item: _Item, wide: bool = False, collide: bool = True) -> _Node | _Failure:
+    def candidates(self, item: _Item, wide: bool = False, probe: bool = False) -> _Node | _Failure:
+        """The object's candidate poses that meet its constraints and the bounds, nearest first.
+
+        A ``probe`` only asks whether there are any: no broad phase, no explanation.
+        """
         obj = item.obj
         missing = [c for c, t in item.own if not self.placed[t]]
         if missing:
@@ -175,6 +189,9 @@ class _Search:
                 rel.propose(relation, half0, target, anchor, self.rng, n=140, spacing=0.45),
             ]
         xy = np.concatenate(parts)
+        if self.bounds is not None and np.all(self.bounds >= half0[:2]):
+            # Pull outside points onto the bounds' edge: tight rooms need their walls and corners.
+            xy = np.clip(xy, -self.bounds + half0[:2], self.bounds - half0[:2])
         xy = xy[np.argsort(np.linalg.norm(xy - anchor[:2], axis=1), kind="stable")]
         key = np.round(xy, 4) @ np.array([1.0, 1j])
         _, first = np.unique(key, return_index=True)
@@ -202,9 +219,9 @@ class _Search:
         inside = self.inside(boxes)
         good = ok & inside
         if not good.any():
-            return self.explain(item, boxes, sat, ok, inside)
+            return _Failure("no candidate", []) if probe else self.explain(item, boxes, sat, ok, inside)
         centres, yaws = centres[good], yaws[good]
-        if not collide:
+        if probe:
             return _Node(item, centres, yaws, centres, centres, np.zeros(0, dtype=int))
         lo, hi = self.world.boxes(item.index, centres, yaws)
         return _Node(item, centres, yaws, lo, hi, self.world.neighbours(item.index))
@@ -220,6 +237,8 @@ class _Search:
         """Why no candidate satisfied the constraints and bounds, and the nearest miss."""
         pairs = [(c, self.box(t), None) for c, t in item.own] + [(c, None, self.box(s)) for c, s in item.reverse]
         never = [c for (c, _, _), s in zip(pairs, sat) if not s.any()]
+        # A constraint that fails here may only fail among the primary's candidates: ask its own.
+        never = [c for c in never if not self.alone(item, c)]
         if never:
             reason = "no candidate position satisfies " + "; ".join(f"'{c}'" for c in never)
             failed = never
@@ -242,6 +261,14 @@ class _Search:
             detail.append(f"outside the bounds by {self.outside_by(boxes)[k]:.2f} m")
         nearest = f"at ({p[0]:.2f}, {p[1]:.2f}, {p[2]:.2f}): " + ("; ".join(detail) or "all constraints hold")
         return _Failure(reason, failed, nearest)
+
+    def alone(self, item: _Item, constraint: Constraint) -> bool:
+        """Whether ``constraint`` on its own has a candidate inside the bounds."""
+        own = [(c, t) for c, t in item.own if c is constraint]
+        if not own:
+            return False  # a fixed object's constraint on this one: no generator of its own
+        made = self.candidates(replace(item, own=own, reverse=[]), probe=True)
+        return not isinstance(made, _Failure)
 
     def outside_by(self, boxes: Boxes) -> np.ndarray:
         over = np.maximum(boxes.hi[:, :2] - self.bounds, 0.0) + np.maximum(-self.bounds - boxes.lo[:, :2], 0.0)
@@ -268,22 +295,24 @@ class _Search:
         return None
 
     def forward_check(self, i: int, node: _Node) -> str:
-        """Whether every object whose last target is ``i`` can still meet its constraints.
+        """Whether every object that depends on ``i`` can still meet its constraints.
 
-        Run with ``i`` placed. Returns ``"ok"``; ``"reject"`` when a dependent would have no
-        candidate at this pose of ``i`` (its other targets join ``i``'s conflict set); or
-        ``"hopeless"`` when that dependent has none even ignoring ``i``, so no pose of ``i``
-        can help and only moving its other targets can.
+        Run with ``i`` placed; each unplaced dependent is probed with its constraints on
+        the objects placed so far. Returns ``"ok"``; ``"reject"`` when a dependent would have
+        no candidate at this pose of ``i`` (its other targets join ``i``'s conflict set); or
+        ``"hopeless"`` when it has none even ignoring ``i``, so no pose of ``i`` can help and
+        only moving its other targets can.
         """
         for s in self.dependents[i]:
             item = self.items[s]
-            if self.placed[s] or not all(self.placed[t] for _, t in item.own):
+            known = [(c, t) for c, t in item.own if self.placed[t]]
+            if self.placed[s] or (len(known) < 2 and self.bounds is None):
                 continue
-            if not isinstance(self.candidates(item, collide=False), _Failure):
+            if not isinstance(self.candidates(replace(item, own=known), probe=True), _Failure):
                 continue
-            node.conflict.update(t for _, t in item.own if t != i)
-            rest = replace(item, own=[(c, t) for c, t in item.own if t != i])
-            if isinstance(self.candidates(rest, collide=False), _Failure):
+            node.conflict.update(t for _, t in known if t != i)
+            rest = replace(item, own=[(c, t) for c, t in known if t != i])
+            if isinstance(self.candidates(rest, probe=True), _Failure):
                 log.debug("%s cannot help %s: its other targets must move", self.objects[i].id, self.objects[s].id)
                 return "hopeless"
             node.forward_rejects += 1
@@ -358,29 +387,36 @@ def solve(
         else:
             o = o.model_copy(deep=True)
         solved.append(o)
-    log.info("layout: %d placed, %d unplaced, %d nodes, %.3fs", len(report.placed), len(report.unplaced), report.nodes, report.seconds)
+    log.info(
+        "layout: %d placed, %d unplaced, %d nodes, %.3fs",
+        len(report.placed), len(report.unplaced), report.nodes, report.seconds,
+    )
     return LayoutResult(solved, cleaned, report)
 
 
 def _restarts(objects, constraints, meshes, bounds, fixed, seed, start, time_limit, node_limit):
     """Run the search up to :data:`RESTARTS` times until one places everything; keep the best.
 
-    Every run but the last has a node budget proportional to the object count; later runs
-    scatter the starting anchors more, so a search that went wrong early starts elsewhere.
+    Every run but the last has a node budget proportional to the object count. A rerun puts
+    the objects that gave trouble (left unplaced, or forced backjumps) and everything they
+    depend on first — the "squeaky wheel": placed while the scene is still empty, they fit
+    — and scatters the other starting anchors a little more each time.
     """
     best = None
     used = 0
     deadline = start + time_limit
+    trouble: set[int] = set()
     for attempt in range(RESTARTS):
-        search = _Search(objects, constraints, meshes, bounds, fixed, seed + attempt, spread=0.3 * attempt)
+        search = _Search(objects, constraints, meshes, bounds, fixed, seed + attempt, spread=0.15 * attempt)
         budget = None if node_limit is None else node_limit - used
         stop = deadline
         if attempt < RESTARTS - 1:
-            share = 8 * len(objects) + 50
+            share = 4 * len(objects) + 50
             budget = share if budget is None else min(budget, share)
             now = time.perf_counter()
             stop = now + (deadline - now) / (RESTARTS - attempt)
-        report = _dfs(search, stop, budget)
+        report, troubled = _dfs(search, stop, budget, first=search.ancestors(trouble))
+        trouble |= troubled
         used += report.nodes
         if best is None or len(report.placed) > len(best[1].placed):
             best = (search, report)
@@ -392,11 +428,18 @@ def _restarts(objects, constraints, meshes, bounds, fixed, seed, start, time_lim
     return best
 
 
-def _dfs(search: _Search, deadline: float, node_limit: int | None) -> LayoutReport:
+def _dfs(
+    search: _Search, deadline: float, node_limit: int | None, first: set[int] = frozenset()
+) -> tuple[LayoutReport, set[int]]:
+    """One depth-first search; also returns the objects that gave trouble.
+
+    Objects in ``first`` are placed before the rest (as far as the order allows); among the
+    others, larger footprints go first.
+    """
     free = [o.id for i, o in enumerate(search.objects) if i not in search.fixed]
-    area = {o.id: -o.size.x * o.size.y for o in search.objects}
+    rank = {o.id: (i not in first, -o.size.x * o.size.y) for i, o in enumerate(search.objects)}
     own = [c for item in search.items.values() for c, _ in item.own]
-    order = [search.index[x] for x in topological_order(free, own, key=area.get)]
+    order = [search.index[x] for x in topological_order(free, own, key=rank.get)]
     nodes: list[_Node | None] = [None] * len(order)
     failures: dict[int, _Failure] = {}
     depth_of: dict[int, int] = {}
@@ -445,7 +488,8 @@ def _dfs(search: _Search, deadline: float, node_limit: int | None) -> LayoutRepo
             if k is not None:
                 place(i, node.centres[k], float(node.yaws[k]))
                 continue
-            conflict, failure = node.conflict, None
+            # Its targets, and theirs, shaped its candidates, so they share the blame.
+            conflict, failure = node.conflict | search.ancestors({i}) - {i}, None
         culprits = {j for j in conflict if j in depth_of and search.placed[j]}
         if limited or not culprits or jumps[i] >= MAX_JUMPS:
             if fallback is not None:  # the dependents will report their own failure
@@ -456,7 +500,9 @@ def _dfs(search: _Search, deadline: float, node_limit: int | None) -> LayoutRepo
             continue
         # Backjump to the latest culprit; everything after it is undone and re-placed.
         jumps[i] += 1
-        back = max(depth_of[j] for j in culprits)
+        # The latest culprit first; if this object keeps failing, escalate to earlier ones.
+        depths = sorted((depth_of[j] for j in culprits), reverse=True)
+        back = depths[min((jumps[i] - 1) // 2, len(depths) - 1)]
         j = order[back]
         log.debug("%s has no position; back to %s", search.objects[i].id, search.objects[j].id)
         for d in range(depth - 1, back - 1, -1):
@@ -472,7 +518,9 @@ def _dfs(search: _Search, deadline: float, node_limit: int | None) -> LayoutRepo
         target = nodes[back]
         assert target is not None, "a placed object has its node"
         target.conflict |= culprits - {j}
-        target.avoid.append((search.pos[j][:2].copy(), max(0.15, float(max(half[0], half[1])))))
+        # Move the culprit clear of where it was, farther each time this object fails.
+        reach = max(0.15, float(max(half[0], half[1]))) * jumps[i]
+        target.avoid.append((search.pos[j][:2].copy(), reach))
         depth = back
     count += _repair(search, order, failures)
     placed = [o.id for i, o in enumerate(search.objects) if search.placed[i]]
@@ -480,7 +528,8 @@ def _dfs(search: _Search, deadline: float, node_limit: int | None) -> LayoutRepo
         UnplacedObject(id=search.objects[i].id, failed=f.failed, reason=f.reason, nearest_miss=f.nearest)
         for i, f in sorted(failures.items(), key=lambda kv: order.index(kv[0]))
     ]
-    return LayoutReport(placed=placed, unplaced=unplaced, nodes=count, solver=True)
+    troubled = set(failures) | {i for i, n in jumps.items() if n}
+    return LayoutReport(placed=placed, unplaced=unplaced, nodes=count, solver=True), troubled
 
 
 def _repair(search: _Search, order: list[int], failures: dict[int, _Failure]) -> int:
@@ -507,16 +556,17 @@ def _audit(search: _Search, objects, constraints, meshes) -> LayoutReport:
     for a, b in colliding_pairs(objects, meshes, constraints):
         collisions.setdefault(a, []).append(b)
         collisions.setdefault(b, []).append(a)
-    boxes = {o.id: Boxes.of(o) for o in objects}
+    by_id = {o.id: o for o in objects}
     placed, unplaced = [], []
     for o in objects:
-        failed = [c for c in constraints if c.source == o.id and not rel.holds(c.relation, boxes[o.id], boxes[c.target])]
+        failed = [c for c in constraints if c.source == o.id and not rel.check(c.relation, o, by_id[c.target])]
         problems = []
         if failed:
             problems.append("initial pose violates " + "; ".join(f"'{c}'" for c in failed))
         if o.id in collisions:
             problems.append(f"initial pose collides with {', '.join(collisions[o.id])}")
-        if search.bounds is not None and search.outside_by(Boxes(boxes[o.id].lo[None], boxes[o.id].hi[None], boxes[o.id].yaw))[0] > rel.EPS:
+        lo, hi = world_box(o)
+        if search.bounds is not None and not search.inside(Boxes(lo[None], hi[None], np.array([o.yaw])))[0]:
             problems.append("initial pose leaves the bounds")
         if problems:
             unplaced.append(UnplacedObject(id=o.id, failed=failed, reason="; ".join(problems)))

@@ -9,6 +9,7 @@ style, converts it to glTF (+Y up, front +Z) and gives each role its PBR materia
 
 from __future__ import annotations
 
+import re
 from collections import defaultdict
 
 import numpy as np
@@ -23,11 +24,14 @@ from scenewright.procedural.style import NEON_ROLES, NEONS, Style, Surface
 class Model:
     """Parts of one object grouped by role; ``main`` is the role the description recolours."""
 
-    def __init__(self, size, style: Style, rng: np.random.Generator, main: str = "wood", text: str = ""):
+    def __init__(
+        self, size, style: Style, rng: np.random.Generator, main: str = "wood", name: str = "", description: str = ""
+    ):
         self.sx, self.sy, self.sz = (float(v) for v in size)
-        #: The object's name and description, lower case: generators pick variants from it
-        #: (a torii among arches, a sailboat among boats).
-        self.text = text.lower()
+        #: What the object is (name and category) and how it is described, lower case:
+        #: generators pick variants from them (a lighthouse among towers, a round rug).
+        self.name = name.lower().replace("_", " ")
+        self.text = f"{self.name} {description.lower()}"
         self.style = style
         self.rng = rng
         self.main = main
@@ -80,7 +84,12 @@ class Model:
                     self.post(role, x, y, z0, z1, r)
 
     def has(self, *words: str) -> bool:
-        return any(w in self.text for w in words)
+        """Whether the name or description uses one of the words (an attribute: round, claw-foot)."""
+        return _mentions(self.text, words)
+
+    def named(self, *words: str) -> bool:
+        """Whether the object *is* one of these (its name or category), not merely described with it."""
+        return _mentions(self.name, words)
 
     def lathe(self, role: str, profile, centre=(0.0, 0.0, 0.0), scale=(1.0, 1.0), fraction: float = 1.0) -> None:
         part = P.lathe(profile, self.segments(fraction))
@@ -155,6 +164,10 @@ class Model:
         sides = (((-x, -y, 0), (x, -y + t, h)), ((-x, y - t, 0), (x, y, h)),
                  ((-x, -y, 0), (-x + t, y, h)), ((x - t, -y, 0), (x, y, h)))
         return P.merge([P.box(lo, hi) for lo, hi in sides])
+
+
+def _mentions(text: str, words) -> bool:
+    return any(re.search(rf"\b{re.escape(w)}(?:e?s)?\b", text) for w in words)
 
 
 def _material(role: str, s: Surface) -> PBRMaterial:

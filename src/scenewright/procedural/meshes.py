@@ -97,11 +97,13 @@ def seed_of(text: str) -> int:
 def build_model(
     shape: str, size, style: str, seed: int, description: str = "", name: str = ""
 ) -> trimesh.Scene:
-    """The styled object as a glTF-convention scene: one node and PBR material per part role."""
+    """The styled object as a glTF-convention scene: one node and PBR material per part role.
+    ``name`` (the object's name and category) picks variants within a shape: a lighthouse
+    among towers, a dog for the generic shape."""
     if shape not in SHAPES:
         raise InputError(f"unknown shape {shape!r}; shapes are: {', '.join(sorted(SHAPES))}")
     resolved = resolve_style(style)
-    model = Model(size, resolved, np.random.default_rng(seed), text=f"{name} {description}")
+    model = Model(size, resolved, np.random.default_rng(seed), name=name, description=description)
     SHAPES[shape](model)
     base = resolved.overrides.get(model.main) or ROLES.get(model.main) or ROLES["plastic"]
     return model.finish(described_surface(f"{name} {description}", base))
@@ -131,8 +133,9 @@ class ProceduralMeshes:
         for request in requests:
             shape = choose_shape(request.name, request.category)
             try:
+                name = f"{request.name} {request.category or ''}".strip()
                 results[request.id] = build_glb(
-                    shape, request.size.tuple(), request.style, seed_of(request.id), request.description, request.name
+                    shape, request.size.tuple(), request.style, seed_of(request.id), request.description, name
                 )
             except (ValueError, np.linalg.LinAlgError) as exc:
                 failures.append(f"{request.id} ({shape}): {exc}")

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 from scipy.spatial import ConvexHull
@@ -57,7 +58,10 @@ def drop_degenerate(part: Part) -> Part:
     corners = part.vertices[part.faces]
     area2 = np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1)
     keep = area2 > 1e-12 * max(1.0, float(np.ptp(part.vertices, axis=0).max()) ** 2)
-    return part if keep.all() else Part(part.vertices, part.faces[keep], part.normals)
+    if keep.all():
+        return part
+    used, faces = np.unique(part.faces[keep], return_inverse=True)
+    return Part(part.vertices[used], faces.reshape(-1, 3), part.normals[used])
 
 
 def merge(parts: Sequence[Part]) -> Part:
@@ -137,26 +141,34 @@ def _hull(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return used, faces.reshape(-1, 3)
 
 
+@lru_cache(maxsize=4)
+def _rounded_template(detail: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Corner signs, unit normals and faces of a rounded box. A rounded box is a box swept by
+    a sphere, and every such sweep has the same faces whatever its sides, so the hull is
+    computed once."""
+    octant = _octant_directions(detail)
+    signs, normals = [], []
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            for sz in (-1, 1):
+                sign = np.array([sx, sy, sz], float)
+                signs.append(np.tile(sign, (len(octant), 1)))
+                normals.append(octant * sign)
+    signs, normals = np.concatenate(signs), np.concatenate(normals)
+    used, faces = _hull(signs + 0.5 * normals)
+    return signs[used], normals[used], faces
+
+
 def box(lo, hi, radius: float = 0.0, detail: int = 2) -> Part:
     """An axis-aligned box from its corners; ``radius`` rounds edges and corners."""
     lo, hi = np.asarray(lo, float), np.asarray(hi, float)
     radius = min(radius, 0.45 * float(np.min(hi - lo)))
     if radius <= 1e-4:
         return _plain_box(lo, hi)
-    inner_lo, inner_hi = lo + radius, hi - radius
-    octant = _octant_directions(detail)
-    points, normals = [], []
-    for sx in (-1, 1):
-        for sy in (-1, 1):
-            for sz in (-1, 1):
-                sign = np.array([sx, sy, sz], float)
-                corner = np.where(sign > 0, inner_hi, inner_lo)
-                dirs = octant * sign
-                points.append(corner + radius * dirs)
-                normals.append(dirs)
-    points, normals = np.concatenate(points), np.concatenate(normals)
-    used, faces = _hull(points)
-    return Part(points[used], faces, normals[used])
+    signs, normals, faces = _rounded_template(detail)
+    inner_half = (hi - lo) / 2 - radius
+    vertices = (lo + hi) / 2 + signs * inner_half + radius * normals
+    return Part(vertices, faces, normals)
 
 
 def lathe(profile: Sequence[tuple[float, float]], sections: int, crease_degrees: float = 40.0) -> Part:

@@ -34,6 +34,7 @@ ROLES: dict[str, Surface] = {
     "fabric": Surface((0.55, 0.57, 0.6), 0.0, 0.95),
     "cushion": Surface((0.78, 0.74, 0.66), 0.0, 0.95),
     "leather": Surface((0.36, 0.2, 0.12), 0.0, 0.5),
+    "fur": Surface((0.6, 0.42, 0.26), 0.0, 0.95),
     "metal": Surface((0.62, 0.63, 0.65), 1.0, 0.35),
     "dark_metal": Surface((0.18, 0.19, 0.2), 0.9, 0.45),
     "chrome": Surface((0.9, 0.9, 0.92), 1.0, 0.1),
@@ -65,6 +66,7 @@ ROLES: dict[str, Surface] = {
     "lacquer": Surface((0.03, 0.03, 0.03), 0.0, 0.12),
     "mirror": Surface((0.9, 0.92, 0.94), 1.0, 0.02),
     "flower_alt": Surface((0.95, 0.8, 0.2), 0.0, 0.7),
+    "flame": Surface((1.0, 0.55, 0.15), 0.0, 0.6, (1.0, 0.45, 0.08)),
     "light": Surface((1.0, 0.93, 0.78), 0.0, 0.5, (1.0, 0.85, 0.6)),
     "screen": Surface((0.03, 0.04, 0.06), 0.0, 0.15, (0.05, 0.08, 0.12)),
     "accent": Surface((0.8, 0.15, 0.15), 0.0, 0.5),
@@ -74,7 +76,7 @@ ROLES: dict[str, Surface] = {
 }
 
 #: Roles that carry neon in a cyberpunk scene.
-NEON_ROLES = {"light", "shade", "screen", "accent", "crystal", "glass", "water", "flower", "flower_alt", "trim"}
+NEON_ROLES = {"light", "flame", "shade", "screen", "accent", "crystal", "glass", "water", "flower", "flower_alt", "trim"}
 NEONS = ((0.0, 0.95, 1.0), (1.0, 0.1, 0.75), (0.6, 0.2, 1.0), (0.2, 1.0, 0.5))
 _STEAMPUNK = {
     "wood": Surface((0.32, 0.18, 0.09), 0.0, 0.5),

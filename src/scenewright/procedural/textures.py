@@ -36,6 +36,7 @@ KIND_WORDS: dict[str, tuple[str, ...]] = {
     "water": ("water", "sea", "ocean", "lake", "pond", "river", "pool"),
     "marble": ("marble", "palace", "lobby", "museum", "temple"),
     "asphalt": ("asphalt", "road", "street", "tarmac", "parking", "highway", "city"),
+    "rubber": ("rubber", "playground", "gym", "running track"),
 }
 KINDS = tuple(KIND_WORDS)
 _WORD_RE = {kind: re.compile(r"\b(%s)s?\b" % "|".join(map(re.escape, words))) for kind, words in KIND_WORDS.items()}
@@ -63,14 +64,23 @@ def noise(rng: np.random.Generator, n: int, beta: float = 2.0, stretch=(1.0, 1.0
     f = np.sqrt(fx**2 + fy**2)
     f[0, 0] = 1.0
     field = np.real(np.fft.ifft2(np.fft.fft2(white) / f ** (beta / 2)))
-    field -= field.min()
-    return field / max(field.max(), 1e-9)
+    field = (field - field.mean()) / max(field.std(), 1e-9)
+    return np.clip(0.5 + field / 6, 0, 1)
 
 
-def cells(rng: np.random.Generator, n: int, count: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def cells(
+    rng: np.random.Generator, n: int, count: int, jitter: float | None = None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Voronoi cells on a torus: distance to the nearest and second site (in cell units) and
-    the nearest site's index, per pixel."""
-    sites = rng.random((count, 2))
+    the nearest site's index, per pixel. With ``jitter`` the sites are a jittered grid, so
+    cells come out of even size (cobbles) rather than random (gravel)."""
+    if jitter is None:
+        sites = rng.random((count, 2))
+    else:
+        k = int(round(np.sqrt(count)))
+        count = k * k
+        g = (np.stack(np.meshgrid(np.arange(k), np.arange(k)), axis=-1).reshape(-1, 2) + 0.5) / k
+        sites = (g + rng.uniform(-jitter, jitter, (count, 2)) / k) % 1.0
     tree = cKDTree(sites, boxsize=1.0)
     g = (np.arange(n) + 0.5) / n
     gy, gx = np.meshgrid(g, g, indexing="ij")
@@ -119,15 +129,18 @@ def _tiles(rng, n):
 
 
 def _grass(rng, n):
-    blades = noise(rng, n, 0.8, stretch=(1.0, 0.25))
+    blades = noise(rng, n, 0.6, stretch=(1.0, 0.3))
     patches = noise(rng, n, 3.0)
-    img = _mix(patches, (0.18, 0.38, 0.1), (0.36, 0.58, 0.18))
-    return img * (0.7 + 0.5 * blades[..., None])
+    img = _mix(patches, (0.16, 0.34, 0.08), (0.4, 0.6, 0.18))
+    img *= (0.55 + 0.8 * blades[..., None])
+    dry = noise(rng, n, 2.5) > 0.75
+    img[dry] = img[dry] * 0.6 + np.array([0.45, 0.42, 0.2]) * 0.4
+    return img
 
 
-def _stones(rng, n, count, mortar, light, dark, gap_width):
-    f1, f2, idx = cells(rng, n, count)
-    tone = rng.random(count)[idx]
+def _stones(rng, n, count, mortar, light, dark, gap_width, jitter=None):
+    f1, f2, idx = cells(rng, n, count, jitter)
+    tone = rng.random(idx.max() + 1)[idx]
     img = _mix(tone, dark, light)
     img *= (1.1 - 0.5 * np.clip(f1, 0, 1))[..., None]
     img *= (0.9 + 0.2 * noise(rng, n, 1.5))[..., None]
@@ -141,7 +154,7 @@ def _gravel(rng, n):
 
 
 def _cobblestone(rng, n):
-    return _stones(rng, n, 90, (0.3, 0.28, 0.26), (0.66, 0.63, 0.58), (0.4, 0.38, 0.36), 0.1)
+    return _stones(rng, n, 100, (0.3, 0.28, 0.26), (0.66, 0.63, 0.58), (0.4, 0.38, 0.36), 0.07, jitter=0.35)
 
 
 def _sand(rng, n):
@@ -203,9 +216,9 @@ def _water(rng, n):
 
 def _marble(rng, n):
     y, x = _grid(n)
-    turbulence = noise(rng, n, 2.2)
-    veins = np.abs(np.sin(2 * np.pi * (2 * x + y + 1.8 * turbulence)))
-    vein = np.clip(1 - veins * 6, 0, 1)
+    turbulence = noise(rng, n, 3.5)
+    veins = np.abs(np.sin(2 * np.pi * (2 * x + y + 1.5 * turbulence)))
+    vein = np.clip(1 - veins * 3, 0, 1) ** 2
     img = _mix(0.85 + 0.15 * noise(rng, n, 2.5), (0.7, 0.7, 0.7), (0.95, 0.94, 0.92))
     return img * (1 - 0.45 * vein[..., None])
 
@@ -216,10 +229,19 @@ def _asphalt(rng, n):
     return _mix(0.5 * speckle + 0.5 * wear, (0.13, 0.13, 0.14), (0.33, 0.33, 0.34))
 
 
+def _rubber(rng, n):
+    """Poured rubber of playgrounds and gyms: a base colour flecked with coloured granules."""
+    f1, _, idx = cells(rng, n, 4000)
+    palette = np.array([(0.55, 0.12, 0.1), (0.15, 0.4, 0.18), (0.15, 0.2, 0.45), (0.1, 0.1, 0.1)])
+    weights = (0.8, 0.08, 0.05, 0.07)
+    img = palette[rng.choice(len(palette), 4000, p=weights)][idx]
+    return img * (0.85 + 0.3 * (1 - np.clip(f1, 0, 1)))[..., None]
+
+
 _KINDS: dict[str, Callable[[np.random.Generator, int], np.ndarray]] = {
     "wood_floor": _wood_floor, "tiles": _tiles, "grass": _grass, "gravel": _gravel, "cobblestone": _cobblestone,
     "sand": _sand, "metal_deck": _metal_deck, "carpet": _carpet, "concrete": _concrete, "dirt": _dirt,
-    "snow": _snow, "water": _water, "marble": _marble, "asphalt": _asphalt,
+    "snow": _snow, "water": _water, "marble": _marble, "asphalt": _asphalt, "rubber": _rubber,
 }
 assert set(_KINDS) == set(KINDS)
 

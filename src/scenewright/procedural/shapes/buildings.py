@@ -1,9 +1,10 @@
-"""Buildings and booths, boards, and the generic fallback."""
+"""Buildings, booths and boards."""
 
 from __future__ import annotations
 
 import numpy as np
 
+from scenewright.procedural import parts as P
 from scenewright.procedural.builder import Model
 
 
@@ -111,7 +112,61 @@ def market_stall(m: Model) -> None:
                    fraction=0.4)
 
 
+def _lighthouse(m: Model) -> None:
+    m.main = "wall"
+    top = 0.72 * m.sz
+    bands = 4
+    for k in range(bands):
+        z0, z1 = top * k / bands, top * (k + 1) / bands
+        r0, r1 = 0.45 - 0.12 * k / bands, 0.45 - 0.12 * (k + 1) / bands
+        m.lathe("wall" if k % 2 == 0 else "paint", [(r0, z0), (r1, z1)], scale=(m.sx, m.sy))
+    m.lathe("dark_metal", [(0.42, top), (0.42, top + 0.03 * m.sz)], scale=(m.sx, m.sy))
+    m.lathe("light", [(0.25, top + 0.03 * m.sz), (0.25, 0.88 * m.sz)], scale=(m.sx, m.sy))
+    m.lathe("paint", [(0.3, 0.88 * m.sz), (0.0, m.sz)], scale=(m.sx, m.sy))
+
+
+def _windmill(m: Model) -> None:
+    m.main = "wall"
+    body = 0.7 * m.sz
+    r = 0.3 * min(m.sx, m.sy * 2)
+    m.lathe("wall", [(r, 0), (0.7 * r, body)], centre=(0, 0.1 * m.sy, 0))
+    m.lathe("roof", [(0.8 * r, body), (0.0, body + 0.15 * m.sz)], centre=(0, 0.1 * m.sy, 0))
+    hub = np.array([0, -m.sy / 2 + 0.05 * m.sy, body])
+    m.cylinder("dark_wood", hub, hub + (0, 0.5 * m.sy, 0), 0.05 * r, fraction=0.4)
+    arm = min(m.sx / 2, m.sz - body, body - 0.05 * m.sz)
+    for k in range(4):
+        a = np.pi / 4 + k * np.pi / 2
+        tip = hub + (np.cos(a) * arm, 0, np.sin(a) * arm)
+        m.beam("wood", hub, tip, 0.04 * arm, 0.02 * arm)
+        mid = hub + (np.cos(a) * arm * 0.6, 0, np.sin(a) * arm * 0.6)
+        m.beam("canvas_alt", mid, tip, 0.25 * arm, 0.01 * arm)
+
+
+def _rocket(m: Model) -> None:
+    m.main = "paint"
+    r = 0.3 * min(m.sx, m.sy)
+    m.lathe("canvas_alt", [(0.8 * r, 0.06 * m.sz), (r, 0.15 * m.sz), (r, 0.7 * m.sz), (0.6 * r, 0.88 * m.sz), (0.0, m.sz)])
+    m.lathe("paint", [(1.01 * r, 0.6 * m.sz), (1.01 * r, 0.7 * m.sz)])
+    m.lathe("dark_metal", [(0.5 * r, 0), (0.8 * r, 0.06 * m.sz)])
+    m.cylinder("glass", (0, -0.95 * r, 0.5 * m.sz), (0, -1.02 * r, 0.5 * m.sz), 0.3 * r, fraction=0.5)
+    for k in range(4):
+        a = 2 * np.pi * k / 4 + np.pi / 4
+        d = np.array([np.cos(a), np.sin(a)])
+        outline = [(0.8 * r, 0.05 * m.sz), (m.sx / 2 * 0.98 / max(abs(d[0]), abs(d[1]), 0.7), 0.0), (r, 0.3 * m.sz)]
+        fin = P.prism(outline, 0.04 * r)
+        linear = np.array([[d[0], -d[1], 0], [d[1], d[0], 0], [0, 0, 1]]) @ np.array([[1, 0, 0], [0, 0, 1], [0, 1, 0]], float)
+        m.add("paint", P.transform(fin, P.affine(linear, (0, 0, 0))))
+
 def tower(m: Model) -> None:
+    if m.named("lighthouse"):
+        _lighthouse(m)
+        return
+    if m.named("windmill"):
+        _windmill(m)
+        return
+    if m.named("rocket"):
+        _rocket(m)
+        return
     m.main = "stone"
     r = 0.5
     body_top = 0.78 * m.sz
@@ -150,16 +205,7 @@ def whiteboard(m: Model) -> None:
                 m.ball("rubber", (x, yy, 0.03), (0.03, 0.03, 0.03), fraction=0.4)
 
 
-def generic(m: Model) -> None:
-    m.main = "plastic"
-    base = 0.08 * m.sz
-    m.box("dark_plastic", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, base))
-    m.box("plastic", (-0.46 * m.sx, -0.46 * m.sy, base), (0.46 * m.sx, 0.46 * m.sy, m.sz),
-          rounded=max(0.06 * min(m.sx, m.sy, m.sz), 0.01))
-    m.box("accent", (-0.3 * m.sx, -0.47 * m.sy, 0.6 * m.sz), (0.3 * m.sx, -0.46 * m.sy, 0.7 * m.sz), rounded=0.0)
-
-
 SHAPES = {
     "building": building, "house": house, "kiosk": kiosk, "market_stall": market_stall, "tower": tower,
-    "whiteboard": whiteboard, "generic": generic,
+    "whiteboard": whiteboard,
 }

@@ -74,7 +74,21 @@ def _spin(a: float) -> np.ndarray:
     return np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
 
 
+def _cactus(m: Model) -> None:
+    m.main = "leaf"
+    r = 0.16 * min(m.sx, m.sy) + 0.02
+    m.cylinder("leaf", (0, 0, 0), (0, 0, m.sz - r), r, fraction=0.6)
+    m.ball("leaf", (0, 0, m.sz - r), (r, r, r), fraction=0.6)
+    for s, z0, top in ((-1, 0.35, 0.75), (1, 0.5, 0.85)):
+        x = s * (m.sx / 2 - 0.7 * r)
+        m.cylinder("leaf", (0, 0, z0 * m.sz), (x, 0, z0 * m.sz), 0.7 * r, fraction=0.5)
+        m.cylinder("leaf", (x, 0, z0 * m.sz), (x, 0, top * m.sz), 0.7 * r, fraction=0.5)
+        m.ball("leaf", (x, 0, top * m.sz), (0.7 * r,) * 3, fraction=0.5)
+
 def bush(m: Model) -> None:
+    if m.named("cactus", "saguaro"):
+        _cactus(m)
+        return
     m.main = "leaf"
     flowers = m.has("flower", "rose", "hydrangea", "blossom")
     m.ball("leaf", (0, 0, 0.45 * m.sz), (0.4 * m.sx, 0.4 * m.sy, 0.45 * m.sz))
@@ -111,7 +125,23 @@ def flower_bed(m: Model) -> None:
             m.ball("leaf", (x, y, wall_h * 0.9), (0.45 * fx, 0.45 * fy, 0.15 * m.sz), fraction=0.4)
 
 
+def _campfire(m: Model) -> None:
+    m.main = "stone"
+    stones = 9
+    for k in range(stones):
+        a = 2 * np.pi * k / stones
+        s = 0.1 * min(m.sx, m.sy)
+        m.ball("stone", (np.cos(a) * (0.5 * m.sx - s), np.sin(a) * (0.5 * m.sy - s), s * 0.6), (s, s, s * 0.8), fraction=0.4)
+    for k in range(4):
+        a = np.pi * k / 4 + 0.3
+        d = np.array([np.cos(a), np.sin(a)]) * 0.32 * min(m.sx, m.sy)
+        m.cylinder("bark", (d[0], d[1], 0.05 * m.sz), (-d[0], -d[1], 0.2 * m.sz), 0.05 * min(m.sx, m.sy), fraction=0.5)
+    m.lathe("flame", [(0.2 * min(m.sx, m.sy), 0.1 * m.sz), (0.1 * min(m.sx, m.sy), 0.5 * m.sz), (0.0, m.sz)], fraction=0.5)
+
 def rock(m: Model) -> None:
+    if m.named("campfire", "bonfire", "fire pit"):
+        _campfire(m)
+        return
     m.main = "stone"
     part = P.sphere((0, 0, 0), (1, 1, 1), max(6, m.segments(0.45)))
     d = part.vertices
@@ -137,7 +167,24 @@ def fountain(m: Model) -> None:
     m.lathe("water", [(pr * 0.5, 0.9 * m.sz), (pr * 0.35, m.sz)], fraction=0.5)
 
 
+def _snowman(m: Model) -> None:
+    m.main = "ceramic"
+    r = min(m.sx, m.sy) / 2
+    z = 0.0
+    for frac in (0.42, 0.33, 0.25):
+        h = frac * m.sz
+        m.ball("ceramic", (0, 0, z + h / 2), (r * frac / 0.42, r * frac / 0.42, h / 2 * 1.05))
+        z += h * 0.92
+    head = z - 0.25 * m.sz * 0.92 / 2
+    m.cylinder("accent", (0, -0.2 * r, head), (0, -r, head - 0.02 * m.sz), 0.06 * r, 0.0, fraction=0.4)
+    for s in (-1, 1):
+        m.ball("dark_plastic", (s * 0.15 * r, -0.5 * r, head + 0.04 * m.sz), (0.05 * r,) * 3, fraction=0.4)
+        m.cylinder("bark", (s * 0.45 * r, 0, 0.58 * m.sz), (s * r, 0, 0.75 * m.sz), 0.03 * r, fraction=0.3)
+
 def statue(m: Model) -> None:
+    if m.named("snowman"):
+        _snowman(m)
+        return
     m.main = "stone"
     plinth = 0.25 * m.sz
     m.box("stone", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, plinth * 0.85))
@@ -154,7 +201,31 @@ def statue(m: Model) -> None:
     m.cylinder(role, (-0.6 * w, 0, plinth + 0.8 * h), (-0.9 * w, -0.1 * w, plinth + h), 0.1 * w, fraction=0.5)
 
 
+def _traffic_light(m: Model) -> None:
+    m.main = "dark_metal"
+    r = min(m.sx, m.sy) / 2
+    m.post("dark_metal", 0, 0, 0, 0.7 * m.sz, 0.12 * r)
+    m.box("dark_metal", (-0.5 * r, -0.5 * r, 0.7 * m.sz), (0.5 * r, 0.4 * r, m.sz))
+    for k, role in enumerate(("accent", "flower_alt", "leaf")):
+        z = m.sz - (k + 0.5) * 0.3 * m.sz / 3
+        m.cylinder(role, (0, -0.5 * r, z), (0, -0.52 * r, z), 0.3 * r, fraction=0.5)
+        m.box("dark_metal", (-0.35 * r, -r, z + 0.3 * r), (0.35 * r, -0.5 * r, z + 0.35 * r))
+
+
+def _flagpole(m: Model) -> None:
+    m.main = "canvas"
+    m.lathe("concrete", [(0.15 * m.sx, 0), (0.15 * m.sx, 0.02 * m.sz)])
+    m.post("metal", -m.sx / 2 + 0.03 * m.sx, 0, 0, m.sz, 0.02 * m.sx + 0.01)
+    m.ball("gold", (-m.sx / 2 + 0.03 * m.sx, 0, m.sz - 0.01 * m.sz), (0.03 * m.sx,) * 3, fraction=0.4)
+    m.box("canvas", (-m.sx / 2 + 0.05 * m.sx, -0.01, 0.72 * m.sz), (m.sx / 2, 0.01, 0.97 * m.sz))
+
 def lamp_post(m: Model) -> None:
+    if m.named("traffic light", "traffic signal"):
+        _traffic_light(m)
+        return
+    if m.named("flagpole", "flag"):
+        _flagpole(m)
+        return
     m.main = "dark_metal"
     r = min(m.sx, m.sy) / 2
     m.lathe("dark_metal", [(0.6 * r, 0), (0.6 * r, 0.05 * m.sz), (0.25 * r, 0.12 * m.sz)])
@@ -169,7 +240,17 @@ def lamp_post(m: Model) -> None:
         m.ball("light", (s * r * 0.9, 0, 0.79 * m.sz), (0.1 * r, 0.1 * r, 0.1 * r), fraction=0.4)
 
 
+def _tombstone(m: Model) -> None:
+    m.main = "stone"
+    r = m.sx / 2
+    m.box("stone", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, m.sz - r))
+    m.cylinder("stone", (0, -m.sy / 2, m.sz - r), (0, m.sy / 2, m.sz - r), r)
+    m.box("dark_plastic", (-0.25 * m.sx, -m.sy / 2 - 0.003, 0.5 * m.sz), (0.25 * m.sx, -m.sy / 2, 0.55 * m.sz), rounded=0.0)
+
 def sign(m: Model) -> None:
+    if m.named("tombstone", "gravestone", "headstone"):
+        _tombstone(m)
+        return
     m.main = "paint"
     board_z = 0.55 * m.sz
     post = m.thick(0.05, 0.12 * m.sx)
@@ -292,7 +373,19 @@ def crystal(m: Model) -> None:
         m.add("crystal", P.flatten(P.transform(part, P.affine(P.align_z(d), base))))
 
 
+def _mushroom(m: Model) -> None:
+    m.main = "paint"
+    m.lathe("canvas_alt", [(0.16 * m.sx, 0), (0.12 * m.sx, 0.4 * m.sz), (0.14 * m.sx, 0.65 * m.sz)])
+    m.lathe("paint", [(0.5, 0.55 * m.sz), (0.48, 0.7 * m.sz), (0.35, 0.88 * m.sz), (0.0, m.sz)], scale=(m.sx, m.sy))
+    for k in range(7):
+        a = 2 * np.pi * k / 7
+        m.ball("canvas_alt", (np.cos(a) * 0.3 * m.sx, np.sin(a) * 0.3 * m.sy, 0.84 * m.sz), (0.05 * m.sx, 0.05 * m.sy, 0.04 * m.sz),
+               fraction=0.4)
+
 def umbrella(m: Model) -> None:
+    if m.named("mushroom", "toadstool"):
+        _mushroom(m)
+        return
     m.main = "canvas"
     r = 0.5
     m.lathe("dark_metal", [(0.15 * min(m.sx, m.sy), 0), (0.15 * min(m.sx, m.sy), 0.03 * m.sz), (0.02, 0.05 * m.sz)])
@@ -343,7 +436,21 @@ def slide(m: Model) -> None:
         m.extrude("paint", [(start, deck), (start, deck + 0.25), (-m.sy / 2, 0.3), (-m.sy / 2, 0.05)], "x", x, x + 0.04)
 
 
+def _gazebo(m: Model) -> None:
+    m.main = "wood"
+    eave = 0.62 * m.sz
+    post = m.thick(0.1, 0.06 * m.sx)
+    for k in range(6):
+        a = 2 * np.pi * k / 6
+        m.post("wood", np.cos(a) * 0.44 * m.sx, np.sin(a) * 0.44 * m.sy, 0.1, eave, post, fraction=0.5)
+    m.lathe("wood", [(0.48, 0), (0.48, 0.1)], scale=(m.sx, m.sy), fraction=0.25)
+    m.lathe("roof", [(0.5, eave), (0.5, eave + 0.04 * m.sz), (0.0, m.sz)], scale=(m.sx, m.sy), fraction=0.25)
+    m.lathe("wood", [(0.46, 0.42 * eave), (0.46, 0.45 * eave)], scale=(m.sx, m.sy), fraction=0.25)
+
 def tent(m: Model) -> None:
+    if m.named("gazebo", "pavilion", "pergola"):
+        _gazebo(m)
+        return
     m.main = "canvas"
     m.extrude("canvas", [(-m.sx / 2, 0), (m.sx / 2, 0), (0, m.sz)], "y", -m.sy / 2 + 0.02, m.sy / 2)
     m.extrude("dark_plastic", [(-0.2 * m.sx, 0), (0.2 * m.sx, 0), (0, 0.7 * m.sz)], "y", -m.sy / 2, -m.sy / 2 + 0.03)

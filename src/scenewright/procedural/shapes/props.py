@@ -27,7 +27,17 @@ def floor_lamp(m: Model) -> None:
     m.lathe("shade", [(r, m.sz - shade_h), (0.65 * r, m.sz)])
 
 
+
+
 def pendant_lamp(m: Model) -> None:
+    if m.named("ceiling fan", "fan"):
+        m.main = "wood"
+        m.post("metal", 0, 0, 0.3 * m.sz, m.sz, 0.02, fraction=0.4)
+        m.lathe("metal", [(0.08 * m.sx, 0), (0.1 * m.sx, 0.3 * m.sz), (0.04 * m.sx, 0.45 * m.sz)])
+        for k in range(4):
+            a = np.pi / 4 + k * np.pi / 2
+            m.beam("wood", (0, 0, 0.3 * m.sz), (np.cos(a) * m.sx / 2, np.sin(a) * m.sy / 2, 0.3 * m.sz), 0.12 * m.sx, 0.02)
+        return
     m.main = "metal"
     r = min(m.sx, m.sy) / 2
     shade_h = min(0.45 * m.sz, 1.2 * r)
@@ -87,7 +97,16 @@ def laptop(m: Model) -> None:
     m.extrude("screen", inner, "x", -0.44 * m.sx, 0.44 * m.sx)
 
 
+
+
 def vase(m: Model) -> None:
+    if m.named("globe"):
+        r = min(m.sx, m.sy, 0.8 * m.sz) / 2
+        m.main = "water"
+        m.lathe("dark_wood", [(0.7 * r, 0), (0.7 * r, 0.05 * m.sz), (0.1 * r, 0.12 * m.sz), (0.08 * r, m.sz - 2 * r)])
+        m.ball("water", (0, 0, m.sz - r), (r, r, r))
+        m.torus("brass", (0, 0, m.sz - r), 1.05 * r, 0.03 * r, axis="x")
+        return
     m.main = "ceramic"
     r = min(m.sx, m.sy) / 2
     flowers = m.has("flower", "rose", "tulip", "bouquet")
@@ -204,7 +223,19 @@ def trash_can(m: Model) -> None:
     m.lathe("dark_metal", [(r, 0.88 * m.sz), (r, 0.9 * m.sz), (0.6 * r, 0.97 * m.sz), (0.15 * r, m.sz)])
 
 
+def _chest(m: Model) -> None:
+    lid = 0.35 * m.sz
+    m.box("wood", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, m.sz - lid))
+    m.cylinder("wood", (-m.sx / 2, 0, m.sz - lid), (m.sx / 2, 0, m.sz - lid), m.sy / 2)
+    for x in (-0.4 * m.sx, 0.4 * m.sx):
+        m.box("brass", (x - 0.03 * m.sx, -m.sy / 2 - 0.005, 0), (x + 0.03 * m.sx, m.sy / 2 + 0.005, m.sz - lid))
+        m.torus("brass", (x, 0, m.sz - lid), m.sy / 2, 0.015 * m.sz, axis="x", arc=np.pi)
+    m.box("gold", (-0.06 * m.sx, -m.sy / 2 - 0.02, m.sz - lid - 0.12 * m.sz), (0.06 * m.sx, -m.sy / 2, m.sz - lid + 0.02 * m.sz))
+
 def crate(m: Model) -> None:
+    if m.named("chest", "treasure"):
+        _chest(m)
+        return
     b = m.thick(0.06, 0.15 * min(m.sx, m.sy, m.sz))
     m.box("wood", (-m.sx / 2 + b * 0.3, -m.sy / 2 + b * 0.3, b * 0.3), (m.sx / 2 - b * 0.3, m.sy / 2 - b * 0.3, m.sz - b * 0.3))
     hx, hy, hz = m.sx / 2, m.sy / 2, m.sz
@@ -219,7 +250,15 @@ def crate(m: Model) -> None:
     m.beam("dark_wood", (-hx + b, -hy - 0.001, b), (hx - b, -hy - 0.001, hz - b), b * 0.8, 0.02)
 
 
+
+
 def barrel(m: Model) -> None:
+    if m.named("log", "trunk"):
+        r = min(m.sy, m.sz) / 2
+        m.cylinder("bark", (-m.sx / 2, 0, r), (m.sx / 2, 0, r), r, fraction=0.6)
+        for s in (-1, 1):
+            m.cylinder("wood", (s * m.sx / 2, 0, r), (s * (m.sx / 2 + 0.005), 0, r), 0.85 * r, fraction=0.6)
+        return
     r = min(m.sx, m.sy) / 2
     prof = [(0.85 * r, 0), (0.97 * r, 0.25 * m.sz), (r, 0.5 * m.sz), (0.97 * r, 0.75 * m.sz), (0.85 * r, m.sz)]
     m.lathe("wood", prof, scale=(m.sx / (2 * r), m.sy / (2 * r)))
@@ -249,7 +288,16 @@ def books(m: Model) -> None:
         x += w
 
 
+
+
 def bottle(m: Model) -> None:
+    if m.named("candle"):
+        m.main = "paper"
+        r = min(m.sx, m.sy) / 2
+        m.lathe("brass", [(r, 0), (r, 0.04 * m.sz), (0.5 * r, 0.08 * m.sz)])
+        m.lathe("paper", [(0.45 * r, 0.06 * m.sz), (0.45 * r, 0.85 * m.sz)])
+        m.ball("flame", (0, 0, 0.93 * m.sz), (0.15 * r, 0.15 * r, 0.07 * m.sz), fraction=0.4)
+        return
     m.main = "glass"
     r = min(m.sx, m.sy) / 2
     m.lathe("glass", [(0.95 * r, 0), (r, 0.55 * m.sz), (0.35 * r, 0.75 * m.sz), (0.3 * r, 0.92 * m.sz)])

@@ -1,0 +1,125 @@
+import pytest
+
+from scenewright.analysis.catalogue import (
+    RESTS,
+    SHAPE_NAMES,
+    _validate,
+    load_catalogue,
+    lookup,
+    phrase_index,
+    singular,
+    words,
+)
+
+#: Categories allowed past 5 m because the real thing is that big (catalogue module docstring).
+LARGE = {"barn", "building", "bus", "crane", "flagpole", "food_truck", "greenhouse", "house", "lighthouse",
+         "palm_tree", "pine_tree", "rocket", "shipping_container", "spaceship", "tower", "tree", "truck",
+         "windmill"}  # fmt: skip
+
+
+def test_catalogue_is_large_and_well_formed():
+    catalogue = load_catalogue()
+    assert len(catalogue) >= 150
+    for name, category in catalogue.items():
+        assert category.name == name
+        assert category.shape in SHAPE_NAMES, name
+        assert category.rests in RESTS, name
+        assert all(v > 0 for v in category.size), name
+        assert set(category.tags) <= {"indoor", "outdoor"} and category.tags, name
+        assert category.synonyms, f"{name} has no synonyms"
+
+
+def test_sizes_are_plausible():
+    for category in load_catalogue().values():
+        biggest = max(category.size)
+        assert biggest >= 0.1, category.name
+        if category.name not in LARGE:
+            assert biggest <= 5.0, category.name
+
+
+@pytest.mark.parametrize(
+    "tag, names",
+    [
+        ("indoor", ("sofa", "armchair", "coffee_table", "tv", "rug", "floor_lamp", "bookshelf")),  # living
+        ("indoor", ("bed", "nightstand", "wardrobe", "dresser")),  # bedroom
+        ("indoor", ("fridge", "stove", "counter", "sink", "microwave")),  # kitchen
+        ("indoor", ("bathtub", "toilet", "shower", "mirror")),  # bath
+        ("indoor", ("desk", "office_chair", "monitor", "laptop", "filing_cabinet")),  # office
+        ("indoor", ("school_desk", "whiteboard", "lectern", "locker")),  # classroom
+        ("indoor", ("treadmill", "exercise_bike", "weight_bench", "yoga_mat")),  # gym
+        ("indoor", ("lab_bench", "microscope", "flask", "fume_hood")),  # lab
+        ("indoor", ("shop_shelf", "cash_register", "display_case", "mannequin")),  # shop
+        ("indoor", ("statue", "pedestal", "display_case", "rope_barrier")),  # museum
+        ("indoor", ("round_table", "chair", "menu_board", "wine_rack", "booth")),  # restaurant
+        ("outdoor", ("bench", "lamp_post", "fire_hydrant", "bollard", "mailbox", "bus_stop", "traffic_light")),
+        ("outdoor", ("car", "truck", "bus", "bicycle", "boat")),  # vehicles
+        ("outdoor", ("tree", "pine_tree", "palm_tree", "bush", "flower_bed", "rock")),  # plants
+        ("outdoor", ("market_stall", "crate", "barrel", "umbrella")),  # market
+        ("outdoor", ("swing", "slide", "seesaw", "sandbox")),  # playground
+        ("outdoor", ("fountain", "pond", "picnic_table", "gazebo")),  # park
+        ("outdoor", ("lighthouse", "anchor", "buoy", "shipping_container")),  # dock
+        ("outdoor", ("crystal", "cauldron", "robot", "portal", "hologram", "spaceship")),  # fantasy & sci-fi
+        ("outdoor", ("house", "building", "kiosk", "tower")),  # buildings & kiosks
+    ],
+)
+def test_every_kind_of_scene_is_covered(tag, names):
+    catalogue = load_catalogue()
+    for name in names:
+        assert name in catalogue and tag in catalogue[name].tags, name
+
+
+@pytest.mark.parametrize(
+    "phrase, name",
+    [
+        ("couch", "sofa"),
+        ("Couches", "sofa"),
+        ("bookshelves", "bookshelf"),
+        ("street lamps", "lamp_post"),
+        ("boxes", "crate"),
+        ("benches", "bench"),
+        ("cacti", "cactus"),
+        ("suits of armour", "suit_of_armor"),
+        ("bedside table", "nightstand"),
+        ("coffee_table", "coffee_table"),
+        ("  Palm Trees ", "palm_tree"),
+    ],
+)
+def test_lookup_finds_synonyms_and_plurals(phrase, name):
+    category = lookup(phrase)
+    assert category is not None and category.name == name
+
+
+@pytest.mark.parametrize("phrase", ["", "xylophone", "the", "happiness"])
+def test_lookup_unknown_is_none(phrase):
+    assert lookup(phrase) is None
+
+
+def test_every_phrase_names_one_category():
+    owners: dict[tuple[str, ...], set[str]] = {}
+    for category in load_catalogue().values():
+        for phrase in category.phrases:
+            owners.setdefault(tuple(words(phrase)), set()).add(category.name)
+    shared = {k: v for k, v in owners.items() if len(v) > 1}
+    assert not shared
+    assert set(phrase_index()) == set(owners)
+
+
+@pytest.mark.parametrize(
+    "plural, single",
+    [("chairs", "chair"), ("benches", "bench"), ("shelves", "shelf"), ("berries", "berry"), ("glass", "glass"),
+     ("bus", "bus"), ("boxes", "box"), ("cacti", "cactus"), ("tv", "tv")],
+)  # fmt: skip
+def test_singular(plural, single):
+    assert singular(plural) == single
+
+
+def test_validation_names_the_bad_field():
+    entry = {"name": "thing", "synonyms": [], "size": [1, 1, 1], "rests": "ground", "shape": "blob", "tags": []}
+    with pytest.raises(ValueError, match="unknown shape 'blob'"):
+        _validate(entry, set())
+    with pytest.raises(ValueError, match="rests 'floating'"):
+        _validate({**entry, "shape": "generic", "rests": "floating"}, set())
+    with pytest.raises(ValueError, match="three positive sizes"):
+        _validate({**entry, "shape": "generic", "size": [1, 0, 1]}, set())
+    with pytest.raises(ValueError, match="appears twice"):
+        _validate({**entry, "shape": "generic"}, {"thing"})

@@ -1,0 +1,88 @@
+import numpy as np
+import trimesh
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from scenewright.layout import colliding_pairs, solve
+from scenewright.layout.bench import independent_collisions
+from scenewright.layout.collision import _bvh
+from scenewright.layout.problems import cone_mesh, table_mesh
+from scenewright.scene import Constraint, SceneObject, Vec3
+
+
+def box(oid, x=0.0, y=0.0, z=None, size=(1.0, 1.0, 1.0), yaw=0.0):
+    s = Vec3.of(size)
+    return SceneObject(id=oid, name=oid, size=s, position=Vec3(x=x, y=y, z=s.z / 2 if z is None else z),
+                       rotation=Vec3(z=yaw))
+
+
+def test_boxes_overlap_touch_or_separate():
+    assert colliding_pairs([box("a"), box("b", x=0.9)]) == [("a", "b")]
+    assert colliding_pairs([box("a"), box("b", x=1.0)]) == []  # touching is not colliding
+    assert colliding_pairs([box("a"), box("b", x=1.2)]) == []
+
+
+def test_rotated_boxes_collide_as_oriented_boxes():
+    # Their world boxes overlap, but the diamond's corner stays clear of the cube.
+    a, b = box("a"), box("b", x=1.25, yaw=45)
+    assert colliding_pairs([a, b]) == []
+    assert colliding_pairs([a, box("b", x=1.15, yaw=45)]) == [("a", "b")]
+
+
+def test_resting_on_pair_is_exempt_but_only_for_that_pair():
+    table = box("table", size=(1.2, 0.8, 0.75))
+    cup = box("cup", size=(0.1, 0.1, 0.1), z=0.75 + 0.05 - 0.001)  # sunk 1 mm
+    on = [Constraint(relation="on", source="cup", target="table")]
+    assert colliding_pairs([table, cup]) == [("cup", "table")]
+    assert colliding_pairs([table, cup], constraints=on) == []
+    vase = box("vase", size=(0.1, 0.1, 0.1), x=0.05, z=0.8)
+    assert colliding_pairs([table, cup, vase], constraints=on) == [("cup", "vase")]
+
+
+def test_stool_under_a_table_collides_only_at_box_level():
+    table = box("table", size=(1.4, 0.9, 0.75))
+    stool = box("stool", size=(0.4, 0.4, 0.45))
+    meshes = {"table": table_mesh(table.size)}
+    assert colliding_pairs([table, stool]) == [("stool", "table")]
+    assert colliding_pairs([table, stool], meshes) == []
+    assert independent_collisions([table, stool], meshes, []) == []
+    # Moved onto a leg, the meshes do intersect.
+    assert colliding_pairs([table, box("stool", x=0.6, y=0.35, size=(0.4, 0.4, 0.45))], meshes) == [("stool", "table")]
+
+
+def test_cones_whose_boxes_overlap_need_not_touch():
+    a, b = box("a", size=(1, 1, 1)), box("b", x=0.95, y=0.95, size=(1, 1, 1))
+    meshes = {"a": cone_mesh(a.size), "b": cone_mesh(b.size)}
+    assert colliding_pairs([a, b]) == [("a", "b")]
+    assert colliding_pairs([a, b], meshes) == []
+
+
+def test_solver_uses_mesh_collision():
+    table = box("table", size=(1.4, 0.9, 0.75))
+    stool = box("stool", size=(0.4, 0.4, 0.45))
+    with_meshes = solve([table, stool], [], meshes={"table": table_mesh(table.size)}, fixed=["table"])
+    assert with_meshes.objects[1].position == stool.position  # it fits where it is
+    boxes_only = solve([table, stool], [], fixed=["table"])
+    assert boxes_only.report.complete and boxes_only.objects[1].position != stool.position
+    assert colliding_pairs(boxes_only.objects) == []
+
+
+def test_bvh_built_once_per_mesh():
+    mesh = trimesh.creation.box((1, 1, 1))
+    assert _bvh(mesh) is _bvh(mesh)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.tuples(st.floats(-2, 2), st.floats(-2, 2), st.floats(0.2, 1.5), st.floats(0.2, 1.5),
+                          st.floats(0.2, 1.5), st.floats(-180, 180), st.booleans()), min_size=2, max_size=6))
+def test_agrees_with_trimesh_collision_manager(specs):
+    objects, meshes = [], {}
+    for k, (x, y, sx, sy, sz, yaw, cone) in enumerate(specs):
+        obj = box(f"o{k}", x, y, None, (sx, sy, sz), yaw)
+        objects.append(obj)
+        if cone:
+            meshes[obj.id] = cone_mesh(obj.size)
+    ours = set(colliding_pairs(objects, meshes))
+    theirs = set(independent_collisions(objects, meshes, []))
+    # Exact touching is the only allowed disagreement, and random poses never touch exactly.
+    assert ours == theirs

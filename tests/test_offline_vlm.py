@@ -1,0 +1,175 @@
+import pytest
+
+from scenewright.analysis.arrange import initial_objects
+from scenewright.analysis.catalogue import load_catalogue
+from scenewright.analysis.offline import OfflineVLM, relax_constraints
+from scenewright.analysis.parser import parse_scene
+from scenewright.backends import VisionLanguageModel, create_backend
+from scenewright.editing.plan import EditPlan
+from scenewright.errors import BackendError, InputError
+from scenewright.geometry import front_direction, world_box
+from scenewright.scene import Constraint, LayoutReport, Scene, UnplacedObject
+from scenewright.settings import Settings
+
+LIVING = (
+    "A cosy living room. A grey sofa faces a TV on a TV stand. A coffee table stands in front of the sofa, "
+    "a floor lamp to the left of the sofa, and a potted plant near the TV. A rug lies under the coffee table."
+)
+
+
+@pytest.fixture
+def vlm() -> OfflineVLM:
+    return OfflineVLM()
+
+
+def test_registry_builds_it_and_it_meets_the_protocol():
+    vlm = create_backend("vlm", "offline", Settings())
+    assert isinstance(vlm, OfflineVLM) and isinstance(vlm, VisionLanguageModel)
+    assert vlm.name == "offline"
+    with pytest.raises(InputError, match="takes no argument"):
+        create_backend("vlm", "offline:gpt", Settings())
+
+
+def test_describe_objects(vlm):
+    objects = vlm.describe_objects(LIVING, "realistic", None)
+    assert [o.id for o in objects] == ["sofa_1", "tv_1", "tv_stand_1", "coffee_table_1", "floor_lamp_1",
+                                       "potted_plant_1", "rug_1"]  # fmt: skip
+    catalogue = load_catalogue()
+    for obj in objects:
+        assert obj.category in catalogue
+        assert obj.size.tuple() == catalogue[obj.category].size
+        assert obj.visual_description
+
+
+@pytest.mark.parametrize("text", ["", "   \n "])
+def test_empty_text_is_bad_input(vlm, text):
+    with pytest.raises(InputError, match="empty"):
+        vlm.describe_objects(text, "realistic", None)
+
+
+def test_text_without_objects_is_bad_input(vlm):
+    with pytest.raises(InputError, match="no object recognised in the text; name things like 'a sofa'"):
+        vlm.describe_objects("A feeling of calm and quiet joy.", "realistic", None)
+
+
+def test_parse_is_cached_per_text(vlm):
+    assert vlm.parse(LIVING) is vlm.parse(LIVING + "  ")
+
+
+def test_constraints_follow_the_parse(vlm):
+    objects = vlm.describe_objects(LIVING, "realistic", None)
+    constraints = vlm.write_constraints(LIVING, objects, None)
+    keys = {c.key() for c in constraints}
+    assert {
+        ("face to", "sofa_1", "tv_1"),
+        ("on", "tv_1", "tv_stand_1"),
+        ("in front of", "coffee_table_1", "sofa_1"),
+        ("left of", "floor_lamp_1", "sofa_1"),
+        ("near", "potted_plant_1", "tv_1"),
+        ("on", "coffee_table_1", "rug_1"),
+    } <= keys
+
+
+def test_constraints_skip_removed_objects_and_map_other_ids(vlm):
+    objects = vlm.describe_objects(LIVING, "realistic", None)
+    kept = [o for o in objects if o.id != "tv_1"]
+    assert all("tv_1" not in (c.source, c.target) for c in vlm.write_constraints(LIVING, kept, None))
+    renamed = [o.model_copy(update={"id": f"obj{i}"}) for i, o in enumerate(objects)]
+    constraints = vlm.write_constraints(LIVING, renamed, None)
+    assert ("left of", "obj4", "obj0") in {c.key() for c in constraints}
+
+
+def test_nothing_is_redundant_offline(vlm):
+    assert vlm.find_redundant(vlm.describe_objects(LIVING, "realistic", None), {"sofa_1": b"png"}) == {}
+
+
+def test_judging_needs_a_remote_model(vlm):
+    with pytest.raises(BackendError, match="--vlm openai:MODEL"):
+        vlm.judge(LIVING, b"png", "semantic")
+
+
+def test_plan_edit_uses_the_rule_based_planner(vlm):
+    scene = Scene(text=LIVING, objects=vlm.describe_objects(LIVING, "realistic", None))
+    plan = vlm.plan_edit(scene, "move the floor lamp to the right of the sofa")
+    assert isinstance(plan, EditPlan)
+    assert plan.operation == "move" and plan.focus == "floor_lamp_1"
+
+
+# --- the feedback loop ---------------------------------------------------------------------------
+
+
+def C(relation, source, target):
+    return Constraint(relation=relation, source=source, target=target)
+
+
+def test_revision_relaxes_the_failed_relations(vlm):
+    constraints = [C("left of", "a", "t"), C("face to", "a", "t"), C("near", "b", "t"), C("on", "c", "t")]
+    report = LayoutReport(
+        unplaced=[
+            UnplacedObject(id="a", failed=[C("left of", "a", "t"), C("face to", "a", "t")], reason="no room"),
+            UnplacedObject(id="c", failed=[C("on", "c", "t")], reason="top too small"),
+        ]
+    )
+    revised = vlm.revise_constraints("text", [], constraints, report, None)
+    assert [c.key() for c in revised] == [("near", "a", "t"), ("near", "b", "t")]
+
+
+def test_revision_without_failed_relations_drops_the_weakest():
+    constraints = [C("behind", "a", "t"), C("far", "a", "u"), C("near", "b", "t")]
+    report = LayoutReport(unplaced=[UnplacedObject(id="a", failed=[], reason="collides everywhere")])
+    assert [c.key() for c in relax_constraints(constraints, report)] == [("behind", "a", "t"), ("near", "b", "t")]
+
+
+def test_revision_keeps_everything_when_all_placed():
+    constraints = [C("behind", "a", "t")]
+    assert relax_constraints(constraints, LayoutReport(placed=["a", "t"])) == constraints
+
+
+def test_revision_merges_duplicates():
+    constraints = [C("left of", "a", "t"), C("near", "a", "t")]
+    report = LayoutReport(unplaced=[UnplacedObject(id="a", failed=[C("left of", "a", "t")], reason="x")])
+    assert [c.key() for c in relax_constraints(constraints, report)] == [("near", "a", "t")]
+
+
+# --- first poses ---------------------------------------------------------------------------------
+
+
+def _overlap(a, b) -> bool:
+    (amin, amax), (bmin, bmax) = world_box(a), world_box(b)
+    return all(amin[i] < bmax[i] - 1e-6 and bmin[i] < amax[i] - 1e-6 for i in range(3))
+
+
+def test_first_poses_follow_the_relations():
+    objects = {o.id: o for o in initial_objects(parse_scene(LIVING))}
+    sofa, table, lamp, tv, stand, rug = (objects[k] for k in ("sofa_1", "coffee_table_1", "floor_lamp_1", "tv_1",
+                                                              "tv_stand_1", "rug_1"))  # fmt: skip
+    assert sofa.position.tuple()[:2] == (0.0, 0.0)
+    assert table.position.y < sofa.position.y  # in front = −Y
+    assert lamp.position.x < sofa.position.x
+    # the TV stands on its stand, the table on the rug: bottoms meet tops
+    assert tv.position.z - tv.size.z / 2 == pytest.approx(stand.position.z + stand.size.z / 2)
+    assert table.position.z - table.size.z / 2 == pytest.approx(rug.position.z + rug.size.z / 2)
+    # the sofa looks at the TV
+    direction = front_direction(sofa.rotation.z)
+    to_tv = (tv.position.x - sofa.position.x, tv.position.y - sofa.position.y)
+    assert direction[0] * to_tv[0] + direction[1] * to_tv[1] > 0
+
+
+def test_chairs_around_a_table_face_it():
+    objects = initial_objects(parse_scene("Four chairs surround a round table."))
+    table = next(o for o in objects if o.category == "round_table")
+    for chair in (o for o in objects if o.category == "chair"):
+        d = front_direction(chair.rotation.z)
+        to_table = (table.position.x - chair.position.x, table.position.y - chair.position.y)
+        assert d[0] * to_table[0] + d[1] * to_table[1] > 0
+
+
+def test_first_poses_do_not_overlap_on_the_ground():
+    text = (
+        "A market square with three stalls, a fountain in the middle, four benches around the fountain, "
+        "two lamp posts, a cart to the left of the fountain, barrels, crates and a tree."
+    )
+    objects = initial_objects(parse_scene(text))
+    for i, a in enumerate(objects):
+        for b in objects[i + 1 :]:
+            assert not _overlap(a, b), (a.id, b.id)

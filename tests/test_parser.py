@@ -1,0 +1,365 @@
+import json
+import re
+from collections import Counter
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from scenewright.analysis.bench import load_prompts, run_parse_bench
+from scenewright.analysis.catalogue import load_catalogue
+from scenewright.analysis.parser import (
+    GROUND_KINDS,
+    detect_ground,
+    detect_style,
+    parse_scene,
+    relation_phrases,
+)
+from scenewright.cli import main
+from scenewright.scene import RELATION_TYPES, STYLES
+
+PROMPTS = Path(__file__).resolve().parents[1] / "benchmarks" / "prompts"
+
+
+def counts(text: str) -> Counter:
+    return Counter(o.category for o in parse_scene(text).objects)
+
+
+def triples(text: str, inferred: bool = False) -> set[tuple[str, str, str]]:
+    parsed = parse_scene(text)
+    cat = {o.id: o.category for o in parsed.objects}
+    return {(cat[r.source], r.relation, cat[r.target]) for r in parsed.relations if inferred or not r.inferred}
+
+
+# --- objects and counts ---------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("Four chairs stand in the room.", {"chair": 4}),
+        ("A pair of armchairs and a sofa.", {"armchair": 2, "sofa": 1}),
+        ("Two oak trees and one bench.", {"tree": 2, "bench": 1}),
+        ("Several barrels sit on the dock.", {"barrel": 3}),
+        ("Lamp posts line the street.", {"lamp_post": 3}),
+        ("A dozen crates.", {"crate": 12}),
+        ("Many bollards.", {"bollard": 5}),
+        ("A stack of books.", {"books": 1}),
+        ("A couple of bicycles lean on 3 benches.", {"bicycle": 2, "bench": 3}),
+    ],
+)
+def test_counts(text, expected):
+    assert counts(text) == Counter(expected)
+
+
+def test_definite_mentions_refer_back():
+    text = "A long marble kitchen island stands in the kitchen. Three stools are in front of the island. A bowl rests on the island."
+    assert counts(text) == Counter({"counter": 1, "stool": 3, "bowl": 1})
+    assert ("stool", "in front of", "counter") in triples(text)
+    assert ("bowl", "on", "counter") in triples(text)
+
+
+def test_contents_and_depictions_are_not_objects():
+    assert counts("A vase of fresh tulips and a bowl full of apples sit on the table.") == Counter(
+        {"vase": 1, "bowl": 1, "table": 1}
+    )
+    assert counts("A bronze statue of a horse stands in the square.") == Counter({"statue": 1})
+
+
+def test_noun_modifiers_and_venues_are_not_objects():
+    assert counts("A glass table stands on a stone path in the throne hall.") == Counter({"table": 1})
+
+
+def test_unknown_words_give_no_object():
+    parsed = parse_scene("A quiet evening with soft music and warm light.")
+    assert parsed.objects == [] and parsed.relations == []
+    assert parse_scene("").objects == []
+
+
+def test_descriptions_keep_colours_and_materials():
+    parsed = parse_scene("A large grey fabric sofa faces a low walnut coffee table.")
+    desc = {o.category: o.description for o in parsed.objects}
+    assert desc["sofa"] == "large grey fabric sofa"
+    assert desc["coffee_table"] == "low walnut coffee table"
+
+
+def test_ids_are_category_and_index():
+    parsed = parse_scene("Two chairs, a table and another chair.")
+    assert [o.id for o in parsed.objects] == ["chair_1", "chair_2", "table_1", "chair_3"]
+    assert all(o.category in load_catalogue() for o in parsed.objects)
+
+
+# --- sizes ------------------------------------------------------------------------------------
+
+
+def test_catalogue_size_by_default():
+    (obj,) = parse_scene("A sofa.").objects
+    assert obj.size == load_catalogue()["sofa"].size
+
+
+def test_stated_dimension_overrides_and_scales_the_rest():
+    (statue,) = parse_scene("A 3 m tall statue.").objects
+    base = load_catalogue()["statue"].size
+    assert statue.size[2] == pytest.approx(3.0)
+    assert statue.size[0] / statue.size[2] == pytest.approx(base[0] / base[2])
+
+
+def test_two_stated_dimensions():
+    (table,) = parse_scene("A table that is 2 meters wide and 90 cm tall.").objects
+    assert table.size[0] == pytest.approx(2.0) and table.size[2] == pytest.approx(0.9)
+
+
+def test_long_means_the_longer_side():
+    (bus,) = parse_scene("A bus 12 meters long.").objects
+    assert bus.size[1] == pytest.approx(12.0)
+
+
+# --- relations --------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text, relation",
+    [
+        ("A floor lamp stands to the left of the sofa.", ("floor_lamp", "left of", "sofa")),
+        ("A floor lamp stands to the right of the sofa.", ("floor_lamp", "right of", "sofa")),
+        ("A bench is in front of the fountain.", ("bench", "in front of", "fountain")),
+        ("A tree grows behind the house.", ("tree", "behind", "house")),
+        ("A cabinet stands beside the bed.", ("cabinet", "side of", "bed")),
+        ("A cabinet stands next to the bed.", ("cabinet", "side of", "bed")),
+        ("A rock lies near the pond.", ("rock", "near", "pond")),
+        ("A rock lies close to the pond.", ("rock", "near", "pond")),
+        ("A tower stands far from the house.", ("tower", "far", "house")),
+        ("A vase sits on the table.", ("vase", "on", "table")),
+        ("A vase sits on top of the table.", ("vase", "on", "table")),
+        ("A lantern atop a pillar.", ("lantern", "on", "pillar")),
+        ("A cat is resting on the sofa.", ("cat", "on", "sofa")),
+        ("A chandelier hangs above the table.", ("pendant_lamp", "above", "table")),
+        ("A chandelier hanging over the table.", ("pendant_lamp", "above", "table")),
+        ("A sofa is facing the TV.", ("sofa", "face to", "tv")),
+        ("A lamp is placed on the desk.", ("table_lamp", "on", "desk")),
+        ("A bench stands 1.5 m from the fountain.", ("bench", "near", "fountain")),
+        ("A boulder lies at a distance of 12 metres from the well.", ("rock", "far", "well")),
+    ],
+)
+def test_relation_phrases(text, relation):
+    assert relation in triples(text)
+
+
+def test_opposite_and_across_from_mean_in_front_and_facing():
+    for text in ("An armchair stands opposite the sofa.", "An armchair is across from the sofa."):
+        assert triples(text) == {("armchair", "in front of", "sofa"), ("armchair", "face to", "sofa")}
+
+
+def test_flanked_by_puts_one_on_each_side():
+    parsed = parse_scene("The bed is flanked by two nightstands.")
+    assert {(r.source, r.relation, r.target) for r in parsed.relations} == {
+        ("nightstand_1", "left of", "bed_1"),
+        ("nightstand_2", "right of", "bed_1"),
+    }
+
+
+def test_surrounded_by_uses_every_side_and_faces_the_target():
+    for text in ("Four chairs surround the table.", "The table is surrounded by four chairs."):
+        parsed = parse_scene(text)
+        sides = {r.source: r.relation for r in parsed.relations if r.relation != "face to"}
+        assert sorted(sides.values()) == sorted(["left of", "right of", "in front of", "behind"])
+        assert {r.source for r in parsed.relations if r.relation == "face to"} == set(sides)
+
+
+def test_each_with_gives_one_per_object():
+    parsed = parse_scene("Two nightstands flank the bed, each with a lamp on it.")
+    lamps = [o for o in parsed.objects if o.category == "table_lamp"]
+    assert len(lamps) == 2
+    on = {r.source: r.target for r in parsed.relations if r.relation == "on"}
+    assert sorted(on.values()) == ["nightstand_1", "nightstand_2"]
+
+
+def test_fronted_phrase_places_the_subject():
+    assert ("crate", "in front of", "market_stall") in triples("In front of the stall, wooden crates overflow with apples.")
+
+
+def test_with_phrase_and_pronoun():
+    text = "A sink with a round mirror above it is to the left of the bathtub."
+    assert triples(text) >= {("mirror", "above", "sink"), ("sink", "left of", "bathtub")}
+
+
+def test_pronoun_after_comma_means_the_last_target():
+    assert ("dresser", "face to", "bed") in triples("A dresser is placed in front of the bed, facing it.")
+
+
+def test_over_without_hanging_is_no_relation():
+    assert triples("A tree leans over the pond.") == set()
+
+
+def test_rug_under_table_puts_the_table_on_it():
+    assert triples("A rug lies under the coffee table.") == {("coffee_table", "on", "rug")}
+
+
+def test_relations_use_only_existing_objects_in_placement_order():
+    for prompt in load_prompts(PROMPTS):
+        parsed = parse_scene(prompt.text)
+        ids = {o.id for o in parsed.objects}
+        for r in parsed.relations:
+            assert r.source in ids and r.target in ids and r.source != r.target
+            assert r.relation in RELATION_TYPES
+        # the paper's rule: an object that has been a target is never later a source
+        targets_so_far: set[str] = set()
+        for r in parsed.relations:
+            assert r.source not in targets_so_far, (prompt.id, r)
+            targets_so_far.add(r.target)
+
+
+def test_cycles_are_broken():
+    parsed = parse_scene("The sofa is left of the table. The table is left of the sofa.")
+    assert len(parsed.relations) == 1
+
+
+def test_one_vertical_support_per_object():
+    parsed = parse_scene("A lamp sits on the desk and on the table.")
+    assert sum(r.relation == "on" for r in parsed.relations) == 1
+
+
+# --- inferred support --------------------------------------------------------------------------
+
+
+def test_surface_things_get_a_support():
+    parsed = parse_scene("A bedroom with a bed, a nightstand and a lamp.")
+    (r,) = [r for r in parsed.relations if r.source == "table_lamp_1"]
+    assert (r.relation, r.target, r.inferred) == ("on", "nightstand_1", True)
+
+
+def test_tv_prefers_a_tv_stand_and_big_things_need_room():
+    parsed = parse_scene("A TV, a side table and a TV stand.")
+    assert ("tv_1", "on", "tv_stand_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
+    alone = parse_scene("A TV next to a side table.")
+    assert not [r for r in alone.relations if r.relation == "on"]  # a side table is too small
+
+
+def test_hanging_things_hang_above_something():
+    parsed = parse_scene("A dining table and a chandelier.")
+    assert [(r.source, r.relation, r.target, r.inferred) for r in parsed.relations] == [
+        ("pendant_lamp_1", "above", "table_1", True)
+    ]
+
+
+# --- style and ground ---------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text, style",
+    [
+        ("A cartoon-style snack booth.", "cartoon"),
+        ("Cyberpunk. A neon street.", "cyberpunk"),
+        ("An anime bedroom.", "anime"),
+        ("A low poly forest.", "low-poly"),
+        ("A steampunk workshop.", "steampunk"),
+        ("A photorealistic kitchen.", "realistic"),
+        ("A kitchen.", "realistic"),
+        ("A realistic bench in an anime-style park.", "anime"),
+    ],
+)
+def test_style(text, style):
+    assert detect_style(text) == style
+    assert style in STYLES
+
+
+@pytest.mark.parametrize(
+    "text, indoor, kind",
+    [
+        ("A town square paved with cobblestones.", False, "cobblestone"),
+        ("A beach with palm trees.", False, "sand"),
+        ("A park with benches.", False, "grass"),
+        ("A spaceport landing pad.", False, "metal deck"),
+        ("A bathroom with a tub.", True, "tiles"),
+        ("A living room with a sofa.", True, "wood floor"),
+        ("A clearing.", False, "grass"),
+        ("A hall with a marble floor.", True, "marble"),
+    ],
+)
+def test_ground(text, indoor, kind):
+    assert detect_ground(text, indoor) == kind
+    assert kind in GROUND_KINDS
+
+
+def test_parse_reports_style_ground_and_setting():
+    parsed = parse_scene("A cartoon-style bedroom with a bed and a wardrobe.")
+    assert (parsed.style, parsed.ground, parsed.indoor) == ("cartoon", "carpet", True)
+    outdoor = parse_scene("Two trees and a bench in a park.")
+    assert (outdoor.ground, outdoor.indoor) == ("grass", False)
+
+
+def test_relation_phrases_map_to_the_vocabulary():
+    phrases = relation_phrases()
+    assert phrases["beside"] == ("side of",) and phrases["across from"] == ("in front of", "face to")
+    assert all(set(rel) <= set(RELATION_TYPES) for rel in phrases.values())
+
+
+# --- the shipped prompts and the benchmark --------------------------------------------------------
+
+
+def test_shipped_prompts_are_annotated_and_balanced():
+    prompts = load_prompts(PROMPTS)
+    assert len(prompts) >= 40
+    domains = Counter(p.domain for p in prompts)
+    assert domains["indoor"] >= 20 and domains["outdoor"] >= 20
+    catalogue = load_catalogue()
+    for p in prompts:
+        assert 25 <= len(re.findall(r"\S+", p.text)) <= 300, p.id
+        assert p.style in STYLES
+        assert set(p.objects) <= set(catalogue)
+        for s, rel, t in p.relations:
+            assert s in p.objects and t in p.objects and rel in RELATION_TYPES, (p.id, s, rel, t)
+    assert sum(p.style != "realistic" for p in prompts) >= 10
+
+
+def test_parse_benchmark_meets_its_targets():
+    result = run_parse_bench(PROMPTS)
+    assert result["object_recall"] >= 0.9
+    assert result["relation_precision"] >= 0.85
+
+
+def test_bench_parse_cli_prints_one_json_object(capsys, tmp_path):
+    assert main(["bench", "parse", "--json", "--prompts", str(PROMPTS)]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert {"object_recall", "object_precision", "relation_recall", "relation_precision"} <= set(result)
+    assert main(["bench", "parse", "--json", "--prompts", str(tmp_path)]) == 2
+
+
+def test_elliptic_and_possessive_targets():
+    assert triples("A small desk with a toy robot and a globe on top.") >= {("robot", "on", "desk"), ("globe", "on", "desk")}
+    assert ("potted_plant", "right of", "counter") in triples(
+        "The reception desk has a monitor on it and a potted palm to its right."
+    )
+    text = "A slide stands in the middle, with a swing to the left of it and a seesaw to the right."
+    assert triples(text) == {("swing", "left of", "slide"), ("seesaw", "right of", "slide")}
+
+
+def test_them_after_two_single_things():
+    text = "An armchair stands by the window. A bookcase stands across the room. A rug lies between them."
+    assert triples(text) >= {("rug", "near", "armchair"), ("rug", "near", "bookshelf")}
+
+
+def test_one_thing_around_another_is_near():
+    assert triples("A round ottoman surrounds a potted palm.") == {("ottoman", "near", "potted_plant")}
+
+
+_VOCAB = [
+    "a", "the", "two", "several", "each", "with", "it", "them", "and", ",", ".", "on", "top", "of", "to", "left",
+    "right", "its", "near", "beside", "between", "surrounded", "by", "flanked", "facing", "opposite", "under",
+    "over", "hangs", "at", "distance", "12", "2", "m", "tall", "wide", "chairs", "table", "lamp", "rug", "sofa",
+    "tree", "vase", "full", "stone", "path", "is", "stands", "in", "front", "behind", "every", "pair", "stack",
+]  # fmt: skip
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.lists(st.sampled_from(_VOCAB), max_size=40))
+def test_any_word_salad_parses_to_a_consistent_scene(tokens):
+    parsed = parse_scene(" ".join(tokens))
+    ids = [o.id for o in parsed.objects]
+    assert len(ids) == len(set(ids))
+    assert all(min(o.size) > 0 for o in parsed.objects)
+    for r in parsed.relations:
+        assert r.source in ids and r.target in ids and r.source != r.target
+        assert r.relation in RELATION_TYPES
+    assert parsed.style in STYLES and parsed.ground in GROUND_KINDS

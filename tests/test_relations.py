@@ -1,0 +1,153 @@
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from scenewright.geometry import yaw_towards
+from scenewright.layout import check, violation
+from scenewright.layout.relations import Boxes, half_extents, holds, propose
+from scenewright.scene import SceneObject, Vec3
+
+
+def box(oid, x=0.0, y=0.0, z=None, size=(1.0, 1.0, 1.0), yaw=0.0):
+    s = Vec3.of(size)
+    return SceneObject(id=oid, name=oid, size=s, position=Vec3(x=x, y=y, z=s.z / 2 if z is None else z),
+                       rotation=Vec3(z=yaw))
+
+
+T = box("t")  # unit cube at the origin: x, y in [-0.5, 0.5]
+
+
+@pytest.mark.parametrize(
+    "relation, at_limit, past_limit",
+    [
+        ("left of", dict(x=-1.1), dict(x=-1.09)),
+        ("right of", dict(x=1.1), dict(x=1.09)),
+        ("in front of", dict(y=-1.1), dict(y=-1.09)),
+        ("behind", dict(y=1.1), dict(y=1.09)),
+        ("side of", dict(x=-1.1), dict(x=1.09)),
+        ("side of", dict(x=1.1), dict(x=-1.09)),
+    ],
+)
+def test_relative_buffer_holds_exactly_at_the_limit(relation, at_limit, past_limit):
+    assert check(relation, box("s", **at_limit), T)
+    assert violation(relation, box("s", **at_limit), T) == 0.0
+    assert not check(relation, box("s", **past_limit), T)
+    assert violation(relation, box("s", **past_limit), T) == pytest.approx(0.01)
+
+
+def test_relative_relations_ignore_the_other_axis():
+    assert check("left of", box("s", x=-2, y=50), T)
+    assert check("in front of", box("s", x=-40, y=-2), T)
+    assert not check("left of", box("s", x=-0.2, y=5), T)
+
+
+def test_rotated_target_uses_its_world_box():
+    rotated = box("t", size=(2.0, 0.2, 1.0), yaw=90)  # now 0.2 wide in x, 2 deep in y
+    assert check("left of", box("s", x=-0.7), rotated)  # 0.1 + 0.1 + 0.5 = 0.7
+    assert not check("in front of", box("s", y=-1.5), rotated)  # 1 + 0.1 + 0.5 = 1.6 needed
+    assert check("in front of", box("s", y=-1.6), rotated)
+    diag = box("t", size=(1.0, 1.0, 1.0), yaw=45)  # half width √½
+    assert not check("right of", box("s", x=1.1), diag)
+    assert check("right of", box("s", x=np.sqrt(0.5) + 0.6), diag)
+
+
+def test_near_and_far_measure_the_horizontal_gap():
+    assert check("near", box("s", x=3.0), T)  # gap exactly 2
+    assert not check("near", box("s", x=3.01), T)
+    d = 2.0 / np.sqrt(2)  # diagonal gap of exactly 2
+    assert check("near", box("s", x=1 + d - 1e-9, y=1 + d - 1e-9), T)
+    assert not check("near", box("s", x=1 + d + 0.01, y=1 + d + 0.01), T)
+    assert check("near", box("s", z=5.0), T)  # height does not count
+    assert not check("far", box("s", x=9.0), T)  # gap exactly 8 is not > 8
+    assert check("far", box("s", x=9.01), T)
+    assert violation("far", box("s", x=5.0), T) == pytest.approx(4.0)
+
+
+def test_on_needs_contact_within_2mm_and_footprint_overlap():
+    assert check("on", box("s", z=1.0 + 0.5 + 0.0019), T)
+    assert check("on", box("s", z=1.0 + 0.5 - 0.0019), T)
+    assert not check("on", box("s", z=1.0 + 0.5 + 0.0021), T)
+    assert check("on", box("s", x=0.99, z=1.5), T)  # overlaps by 1 cm
+    assert not check("on", box("s", x=1.0, z=1.5), T)  # only touches edge to edge
+    assert not check("on", box("s", x=1.5, z=1.5), T)
+    assert violation("on", box("s", x=1.5, z=1.5), T) == pytest.approx(0.5)
+
+
+def test_stacked_on_chain():
+    table = box("table", size=(1.2, 0.8, 0.75))
+    book = box("book", size=(0.3, 0.2, 0.05), z=0.75 + 0.025)
+    cup = box("cup", size=(0.08, 0.08, 0.1), z=0.8 + 0.05)
+    assert check("on", book, table) and check("on", cup, book)
+    assert not check("on", cup, table)
+    assert violation("on", cup, table) == pytest.approx(0.05 - 0.002)
+
+
+def test_above_is_measured_bottom_to_top_with_footprint_overlap():
+    lamp = box("lamp", size=(0.4, 0.4, 0.3), z=1.0 + 2.0 + 0.15)
+    assert check("above", lamp, T)
+    low = box("lamp", size=(0.4, 0.4, 0.3), z=1.0 + 1.99 + 0.15)
+    assert not check("above", low, T)
+    assert violation("above", low, T) == pytest.approx(0.01)
+    aside = box("lamp", size=(0.4, 0.4, 0.3), x=0.8, z=3.5)
+    assert not check("above", aside, T)
+    overlapping = box("lamp", size=(0.4, 0.4, 0.3), x=0.69, z=3.5)
+    assert check("above", overlapping, T)
+
+
+@pytest.mark.parametrize("angle", range(0, 360, 45))
+def test_face_to_in_every_quadrant(angle):
+    a = np.radians(angle)
+    src_xy = (5 * np.cos(a), 5 * np.sin(a))
+    yaw = yaw_towards(src_xy, (0.0, 0.0))
+    assert check("face to", box("s", *src_xy, yaw=yaw), T)
+    assert check("face to", box("s", *src_xy, yaw=yaw + 9.9), T)
+    assert check("face to", box("s", *src_xy, yaw=yaw - 9.9), T)
+    assert not check("face to", box("s", *src_xy, yaw=yaw + 10.5), T)
+    assert not check("face to", box("s", *src_xy, yaw=yaw + 180), T)
+    assert violation("face to", box("s", *src_xy, yaw=yaw + 30), T) == pytest.approx(20.0)
+
+
+def test_face_to_front_is_minus_y_at_yaw_zero():
+    assert check("face to", box("s", y=3.0), T)  # T is at −Y of s
+    assert not check("face to", box("s", y=-3.0), T)
+    assert not check("face to", box("s"), box("t", z=5.0))  # same plan centre faces nothing
+
+
+def test_unknown_relation_names_the_valid_ones():
+    with pytest.raises(ValueError, match="valid relations: left of"):
+        check("under", box("s"), T)
+
+
+RELATIONS = ["left of", "right of", "in front of", "behind", "side of", "near", "far", "on", "above", "face to"]
+coord = st.floats(-10, 10, allow_nan=False)
+dim = st.floats(0.05, 3.0, allow_nan=False)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.sampled_from(RELATIONS), coord, coord, st.floats(0, 5), dim, dim, dim, st.floats(-180, 180),
+       coord, coord, dim, dim, dim, st.floats(-180, 180))
+def test_violation_is_zero_exactly_when_the_check_holds(relation, x, y, z, sx, sy, sz, yaw, tx, ty, tsx, tsy, tsz, tyaw):
+    s = box("s", x, y, z + sz / 2, (sx, sy, sz), yaw)
+    t = box("t", tx, ty, None, (tsx, tsy, tsz), tyaw)
+    assert (violation(relation, s, t) == 0.0) == check(relation, s, t)
+    assert violation(relation, s, t) >= 0.0
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.sampled_from(["left of", "right of", "in front of", "behind", "side of", "on", "above", "near"]),
+       coord, coord, dim, dim, st.floats(-180, 180), coord, coord, st.integers(0, 1000))
+def test_proposed_candidates_satisfy_their_relation(relation, tx, ty, sx, sy, tyaw, ax, ay, seed):
+    target = Boxes.of(box("t", tx, ty, None, (1.2, 0.9, 0.7), tyaw))
+    size = Vec3(x=sx, y=sy, z=0.3)
+    half = half_extents(size, Vec3())
+    pts = propose(relation, half, target, np.array([ax, ay]), np.random.default_rng(seed))
+    z = {"on": 0.7 + 0.15, "above": 0.7 + 2.0 + 0.15}.get(relation, 0.15)
+    cands = Boxes.at(np.column_stack([pts, np.full(len(pts), z)]), half, np.zeros(len(pts)))
+    ok = holds(relation, cands, target)
+    if relation == "near":  # a bounding rectangle: most, not all, candidates hold
+        assert ok.any()
+    else:
+        assert ok.all()
+    dist = np.linalg.norm(pts - [ax, ay], axis=1)
+    assert np.all(np.diff(dist) >= -1e-9)  # nearest to the anchor first

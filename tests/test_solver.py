@@ -1,0 +1,156 @@
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from scenewright.layout import check, feedback_text, solve
+from scenewright.layout.bench import independent_collisions
+from scenewright.layout.problems import planted_problem
+from scenewright.layout.relations import Boxes
+from scenewright.scene import SceneObject, Vec3
+
+
+def box(oid, x=0.0, y=0.0, z=None, size=(1.0, 1.0, 1.0), yaw=0.0):
+    s = Vec3.of(size)
+    return SceneObject(id=oid, name=oid, size=s, position=Vec3(x=x, y=y, z=s.z / 2 if z is None else z),
+                       rotation=Vec3(z=yaw))
+
+
+def c(rel, s, t):
+    return {"relation": rel, "source": s, "target": t}
+
+
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(3, 14), st.integers(0, 10_000))
+def test_planted_problems_are_solved_correctly(n, seed):
+    p = planted_problem(n, seed)
+    result = solve(p.objects, p.constraints, meshes=p.meshes, bounds=p.bounds, seed=seed)
+    report = result.report
+    by_id = {o.id: o for o in result.objects}
+    placed = set(report.placed)
+    for con in result.constraints:
+        if con.source in placed and con.target in placed:
+            assert check(con.relation, by_id[con.source], by_id[con.target]), str(con)
+    kept = [o for o in result.objects if o.id in placed]
+    assert independent_collisions(kept, p.meshes, result.constraints) == []
+    half = np.array(p.bounds) / 2
+    for o in kept:
+        box_ = Boxes.of(o)
+        assert np.all(box_.lo[:2] >= -half - 1e-9) and np.all(box_.hi[:2] <= half + 1e-9)
+    assert placed | {u.id for u in report.unplaced} == set(by_id)
+    assert all(u.reason for u in report.unplaced)
+    assert report.complete  # planted problems are satisfiable
+
+
+def test_ground_default_and_vertical_relations():
+    table = box("table", size=(1.2, 0.8, 0.75), z=3.0)
+    cup = box("cup", 0.2, 0.1, z=0.0, size=(0.1, 0.1, 0.12))
+    lamp = box("lamp", size=(0.4, 0.4, 0.3), z=0.5)
+    result = solve([table, cup, lamp], [c("on", "cup", "table"), c("above", "lamp", "table")])
+    t, cp, lp = result.objects
+    assert t.position.z == pytest.approx(0.375)  # nothing puts the table anywhere but the ground
+    assert check("on", cp, t) and check("above", lp, t)
+    assert lp.position.z - 0.15 - 0.75 >= 2.0 - 1e-9
+
+
+def test_face_to_turns_the_source_and_other_yaws_are_kept():
+    sofa = box("sofa", 0, 2, size=(2, 0.9, 0.8))
+    tv = box("tv", 0.5, -1, size=(1.2, 0.3, 0.7), yaw=10)
+    shelf = box("shelf", 3, 0, size=(0.8, 0.4, 1.8), yaw=90)
+    result = solve([tv, sofa, shelf], [c("face to", "sofa", "tv"), c("in front of", "tv", "sofa")])
+    by = {o.id: o for o in result.objects}
+    assert check("face to", by["sofa"], by["tv"]) and check("in front of", by["tv"], by["sofa"])
+    assert by["shelf"].rotation.z == 90 and by["tv"].rotation.z == 10
+
+
+def test_bounds_keep_objects_inside():
+    objects = [box(f"b{k}", 5.0, 5.0, size=(1.0, 1.0, 1.0)) for k in range(6)]
+    result = solve(objects, [], bounds=(4.0, 4.0))
+    assert result.report.complete
+    for o in result.objects:
+        b = Boxes.of(o)
+        assert np.all(np.abs(b.lo[:2]) <= 2 + 1e-9) and np.all(np.abs(b.hi[:2]) <= 2 + 1e-9)
+
+
+def test_fixed_objects_keep_their_pose():
+    a, b = box("a"), box("b", 0.3)
+    result = solve([a, b], [c("right of", "b", "a")], fixed=["a"])
+    assert result.objects[0] == a
+    assert check("right of", result.objects[1], result.objects[0])
+    # A fixed source constrains a free target from the other side.
+    result = solve([a, b], [c("left of", "a", "b")], fixed=["a"])
+    assert check("left of", result.objects[0], result.objects[1])
+
+
+def test_infeasible_constraints_are_reported_with_the_nearest_miss():
+    a, b = box("a"), box("b", 2)
+    result = solve([a, b], [c("left of", "b", "a"), c("right of", "b", "a")], seed=1)
+    [u] = result.report.unplaced
+    assert u.id == "b" and u.reason == "its constraints cannot all hold at once"  # each alone could
+    assert {str(f) for f in u.failed} == {"b left of a", "b right of a"}
+    assert "misses by" in u.nearest_miss
+    assert result.objects[1].position == b.position  # unplaced keeps its initial pose
+    text = feedback_text(result.report, result.objects)
+    assert "Placed 1 of 2" in text and "b left of a; b right of a" in text
+
+
+def test_dependents_of_an_unplaced_object_say_so():
+    objects = [box("a"), box("b", 2), box("c", 4, size=(0.2, 0.2, 0.2))]
+    result = solve(objects, [c("left of", "b", "a"), c("right of", "b", "a"), c("on", "c", "b")])
+    reasons = {u.id: u.reason for u in result.report.unplaced}
+    assert reasons["c"] == "depends on b, which could not be placed"
+
+
+def test_constraints_that_only_hold_outside_the_bounds():
+    objects = [box("stool", size=(0.3, 0.3, 0.5)), box("vase", -3, size=(0.2, 0.2, 0.3))]
+    result = solve(objects, [c("far", "vase", "stool")], bounds=(3.0, 3.0))
+    [u] = result.report.unplaced
+    assert u.id == "vase" and u.reason == "no candidate position satisfies 'vase far stool'"
+    assert [str(f) for f in u.failed] == ["vase far stool"] and "'vase far stool' misses by" in u.nearest_miss
+    result = solve([box("stool"), box("vase", 12, 0)], [c("far", "vase", "stool")])
+    assert result.report.complete  # the same constraint without bounds
+
+
+def test_a_target_too_small_to_hold_its_load():
+    objects = [box("stool", size=(0.3, 0.3, 0.5)), box("tv", 3, size=(1.0, 0.3, 0.6))]
+    result = solve(objects, [c("on", "tv", "stool"), c("left of", "tv", "stool")])
+    [u] = result.report.unplaced
+    assert u.id == "tv" and u.reason == "its constraints cannot all hold at once"
+    assert "'tv left of stool' misses by" in u.nearest_miss or "'tv on stool' misses by" in u.nearest_miss
+
+
+def test_crowded_bounds_report_collisions():
+    objects = [box(f"b{k}", size=(1.0, 1.0, 1.0)) for k in range(3)]
+    result = solve(objects, [], bounds=(2.2, 1.1))
+    assert len(result.report.placed) == 2
+    [u] = result.report.unplaced
+    assert "collides (most often with b" in u.reason and "it would collide with" in u.nearest_miss
+
+
+def test_ablation_keeps_initial_poses_and_reports_violations():
+    a, b, cc = box("a"), box("b", 0.5), box("c", 5)
+    result = solve([a, b, cc], [c("left of", "c", "a")], use_solver=False)
+    assert [o.position for o in result.objects] == [a.position, b.position, cc.position]
+    assert result.report.solver is False
+    reasons = {u.id: u.reason for u in result.report.unplaced}
+    assert "collides with b" in reasons["a"] and "violates 'c left of a'" in reasons["c"]
+    assert result.report.placed == []
+
+
+def test_same_seed_same_layout_and_limits_still_return_a_layout():
+    p = planted_problem(12, 3)
+    one = solve(p.objects, p.constraints, meshes=p.meshes, bounds=p.bounds, seed=5)
+    two = solve(p.objects, p.constraints, meshes=p.meshes, bounds=p.bounds, seed=5)
+    assert one.objects == two.objects
+    capped = solve(p.objects, p.constraints, meshes=p.meshes, bounds=p.bounds, node_limit=3)
+    assert len(capped.objects) == len(p.objects)
+    assert set(capped.report.placed) | {u.id for u in capped.report.unplaced} == {o.id for o in p.objects}
+
+
+def test_bad_arguments_name_the_culprit():
+    from scenewright.errors import InputError
+
+    with pytest.raises(InputError, match="fixed ids \\['ghost'\\]"):
+        solve([box("a")], [], fixed=["ghost"])
+    with pytest.raises(InputError, match="bounds"):
+        solve([box("a")], [], bounds=(0, 3))
