@@ -170,3 +170,36 @@ def test_broken_asset_is_named(tmp_path):
     folder.asset("sofa_1").write_bytes(b"not a glb at all")
     with pytest.raises(InputError, match="sofa_1.*broken"):
         assemble(scene, folder)
+
+
+BLENDER_IMPORT = """
+import json, sys
+import bpy
+bpy.ops.wm.read_factory_settings(use_empty=True)
+bpy.ops.import_scene.gltf(filepath=sys.argv[1])
+print(json.dumps({o.name: [list(o.matrix_world.translation), o.type] for o in bpy.data.objects}))
+"""
+
+
+@pytest.mark.blender
+def test_blender_imports_one_object_per_id_in_the_scene_frame(tmp_path):
+    import importlib.util
+    import subprocess
+    import sys
+
+    if importlib.util.find_spec("bpy") is None:
+        pytest.skip("bpy (the render extra) is not installed")
+    scene, folder = _scene(tmp_path, _objects())
+    path = assemble(scene, folder)
+    proc = subprocess.run(
+        [sys.executable, "-c", BLENDER_IMPORT, str(path)], capture_output=True, text=True, timeout=300
+    )
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    imported = json.loads(proc.stdout.strip().splitlines()[-1])
+    assert "ground" in imported
+    for obj in scene.objects:
+        # Blender turns glTF's +Y up back into +Z up, so its frame is the scene frame.
+        location, kind = imported[obj.id]
+        bottom_centre = np.array(obj.position.tuple()) - [0.0, 0.0, obj.size.z / 2]
+        np.testing.assert_allclose(location, bottom_centre, atol=1e-4)
+        assert kind == "EMPTY"

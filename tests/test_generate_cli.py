@@ -161,6 +161,13 @@ def test_out_under_a_file_is_refused(tmp_path, capsys):
     assert "cannot create" in _err(capsys)
 
 
+@pytest.mark.skipif(not Path("/sys/kernel").is_dir(), reason="needs Linux sysfs")
+def test_out_in_a_system_folder_is_refused(capsys):
+    # sysfs refuses new folders even to root, so this holds whoever runs the tests.
+    assert main(["generate", "A desk.", "--out", "/sys/scenewright-test"]) == 2
+    assert "cannot create /sys/scenewright-test" in _err(capsys)
+
+
 @pytest.mark.skipif(os.geteuid() == 0, reason="root writes into read-only folders")
 def test_read_only_out_is_refused(tmp_path, capsys):
     locked = tmp_path / "locked"
@@ -180,6 +187,7 @@ def test_read_only_out_is_refused(tmp_path, capsys):
         (["generate", "A desk.", "--example", "--out", "x"], "exactly one of"),
         (["generate", "A desk."], "--out DIR is required"),
         (["generate", "--resume", "x", "--out", "y"], "drop --out"),
+        (["generate", "--resume", "x", "--style", "anime"], "keeps its style"),
     ],
 )
 def test_argument_mistakes_are_explained(argv, message, capsys, tmp_path, monkeypatch):
@@ -199,3 +207,19 @@ def test_bench_pipeline_prints_one_json_object(tmp_path, capsys):
     result = json.loads(capsys.readouterr().out)
     assert result["prompts"] == 2
     assert result["median_seconds"] > 0
+
+
+def test_incomplete_layout_is_written_then_reported_with_exit_3(tmp_path, capsys, monkeypatch):
+    import scenewright.pipeline
+    from scenewright.scene import LayoutReport, Scene, SceneObject, UnplacedObject, Vec3
+
+    def incomplete(text, folder, **kwargs):
+        scene = Scene(text=text, objects=[SceneObject(id="sofa_1", name="sofa", size=Vec3(x=2, y=1, z=1))])
+        scene.layout = LayoutReport(unplaced=[UnplacedObject(id="sofa_1", reason="collides everywhere")])
+        return scene
+
+    monkeypatch.setattr(scenewright.pipeline, "generate", incomplete)
+    assert main(["generate", "A sofa.", "--out", str(tmp_path / "s"), "--no-render"]) == 3
+    captured = capsys.readouterr()
+    assert "Scene written to" in captured.out
+    assert "sofa_1 (collides everywhere)" in " ".join(captured.err.split())

@@ -130,11 +130,14 @@ def test_cache_answers_a_fresh_run_of_the_same_text(tmp_path):
 
 def test_style_from_flag_then_text_then_default(tmp_path):
     backends, settings = Backends.from_settings(_settings()), _settings()
+
+    def style_of(text, folder, style=None):
+        return generate(text, tmp_path / folder, backends=backends, settings=settings, style=style, render=False).style
+
     cartoon = "A cartoon-style playground: a red slide next to a blue swing."
-    assert generate(cartoon, tmp_path / "a", backends=backends, settings=settings, style="Steampunk", render=False).style == "steampunk"
-    assert generate(cartoon, tmp_path / "b", backends=backends, settings=settings, render=False).style == "cartoon"
-    plain = "A playground: a red slide next to a blue swing."
-    assert generate(plain, tmp_path / "c", backends=backends, settings=settings, render=False).style == DEFAULT_STYLE
+    assert style_of(cartoon, "a", style="Steampunk") == "steampunk"
+    assert style_of(cartoon, "b") == "cartoon"
+    assert style_of("A playground: a red slide next to a blue swing.", "c") == DEFAULT_STYLE
 
 
 def test_ground_kind_follows_the_text(tmp_path):

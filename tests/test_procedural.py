@@ -20,7 +20,7 @@ from scenewright.backends import MeshRequest, create_backend
 from scenewright.errors import InputError
 from scenewright.geometry import GLTF_TO_SCENE
 from scenewright.procedural import SHAPES
-from scenewright.procedural.material import described_surface, find_colour, find_material
+from scenewright.procedural.material import described_surfaces, find_colour, find_material
 from scenewright.procedural.meshes import ProceduralMeshes, build_glb, build_model, choose_shape, keyword_shape
 from scenewright.procedural.style import ROLES, STYLE_TABLE, resolve_style
 from scenewright.scene import STYLES, Vec3
@@ -85,12 +85,15 @@ def test_every_shape_is_valid_pbr_gltf_filling_its_box(shape):
 @settings(max_examples=25, deadline=None)
 @given(
     shape=st.sampled_from(VOCABULARY),
-    size=st.tuples(*[st.floats(0.05, 12.0)] * 3),
+    size=st.tuples(*[st.floats(0.05, 40.0)] * 3),
     style=st.sampled_from(STYLES),
     seed=st.integers(0, 2**32),
+    name=st.sampled_from(["", "dog", "lighthouse", "campfire", "torii gate", "sailboat", "treasure chest", "snowman"]),
 )
-def test_any_size_and_style_fills_the_box(shape, size, style, seed):
-    assert_fills(build_glb(shape, size, style, seed), size)
+def test_any_size_style_and_variant_fills_the_box_on_a_face_budget(shape, size, style, seed, name):
+    glb = build_glb(shape, size, style, seed, name=name)
+    assert_fills(glb, size)
+    assert sum(len(g.faces) for g in load(glb).geometry.values()) <= 12000
 
 
 def base_colours(scene: trimesh.Scene) -> dict[str, np.ndarray]:
@@ -131,6 +134,7 @@ def test_steampunk_metal_is_brass_and_cartoon_is_rounder():
 
 
 def test_unknown_style_falls_back_to_realistic_with_a_note(caplog):
+    resolve_style.cache_clear()
     with caplog.at_level(logging.WARNING):
         assert resolve_style("baroque-glitch").name == "realistic"
     assert "baroque-glitch" in caplog.text
@@ -152,6 +156,11 @@ def test_colour_words_recolour_the_main_part(description, check):
     assert check(colour), colour
 
 
+def test_colour_before_a_part_noun_goes_to_that_part():
+    lamp = base_colours(build_model("table_lamp", (0.35, 0.35, 0.6), "realistic", 1, "a white lamp with a green shade"))
+    assert lamp["shade"][1] > lamp["shade"][0] and min(lamp["ceramic"]) > 0.8
+
+
 def test_material_words_set_the_surface():
     chrome = build_model("table", (1.2, 0.8, 0.75), "realistic", 1, "a polished chrome table").geometry["wood"]
     assert chrome.visual.material.metallicFactor == 1.0 and chrome.visual.material.roughnessFactor < 0.1
@@ -167,8 +176,15 @@ def test_material_parsing():
     assert find_colour("sky blue walls")[2] > 0.9
     assert find_colour("a wooden chair") is None
     assert find_material("a wooden chair").color == find_material("wood").color
-    assert described_surface("a plain chair", ROLES["wood"]) is None
-    assert described_surface("red leather", ROLES["fabric"]).roughness == find_material("leather").roughness
+    roles = ("wood", "cushion", "fabric")
+    assert described_surfaces("a plain chair", "wood", roles, ROLES.get) == {}
+    assert described_surfaces("red leather", "fabric", roles, ROLES.get)["fabric"].roughness == find_material("leather").roughness
+    split = described_surfaces("a walnut chair with a red cushion", "wood", roles, ROLES.get)
+    assert split["wood"].color == find_material("walnut").color and split["cushion"].color == find_colour("red")
+    assert described_surfaces("a large oak tree", "leaf", ("leaf", "bark"), ROLES.get) == {}
+    assert described_surfaces("a red maple tree", "leaf", ("leaf", "bark"), ROLES.get)["leaf"].color == find_colour("red")
+    # a part the object lacks leaves the colour to the main part
+    assert described_surfaces("a chair with a red shade", "wood", roles, ROLES.get)["wood"].color == find_colour("red")
 
 
 def test_generation_is_deterministic_and_varies_by_seed():
@@ -233,6 +249,7 @@ def test_backend_generates_every_request():
     assert_fills(result["sofa_1"], (2, 0.9, 0.8))
     with pytest.raises(InputError, match="no argument"):
         ProceduralMeshes.from_spec("x", Settings())
+    assert len(backend.params["code"]) == 16, "the asset cache key follows the generators' code"
 
 
 def test_style_table_matches_the_scene_styles():

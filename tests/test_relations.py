@@ -127,7 +127,9 @@ dim = st.floats(0.05, 3.0, allow_nan=False)
 @settings(max_examples=30, deadline=None)
 @given(st.sampled_from(RELATIONS), coord, coord, st.floats(0, 5), dim, dim, dim, st.floats(-180, 180),
        coord, coord, dim, dim, dim, st.floats(-180, 180))
-def test_violation_is_zero_exactly_when_the_check_holds(relation, x, y, z, sx, sy, sz, yaw, tx, ty, tsx, tsy, tsz, tyaw):
+def test_violation_is_zero_exactly_when_the_check_holds(
+    relation, x, y, z, sx, sy, sz, yaw, tx, ty, tsx, tsy, tsz, tyaw
+):
     s = box("s", x, y, z + sz / 2, (sx, sy, sz), yaw)
     t = box("t", tx, ty, None, (tsx, tsy, tsz), tyaw)
     assert (violation(relation, s, t) == 0.0) == check(relation, s, t)

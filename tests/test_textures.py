@@ -83,3 +83,10 @@ def test_offline_images_backend():
     assert png == images.ground_texture("a park with a fountain", "cartoon", "grass", None)
     with pytest.raises(InputError, match="no argument"):
         ProceduralImages.from_spec("x", Settings())
+
+
+def test_every_ground_kind_the_parser_writes_has_its_own_texture():
+    from scenewright.analysis.parser import GROUND_KINDS
+
+    for kind in GROUND_KINDS:
+        assert kind == "concrete" or normalise_kind(kind) != "concrete", kind

@@ -23,7 +23,7 @@ the phrase. Decisions worth knowing:
   of apples" and "a statue of a horse" hold contents, not objects; "a stone path", "a pine
   forest", "a throne hall" name no object; "a potted palm" is a potted plant, "a round
   table" a round table.
-- ``over`` means ``above`` only after a hanging verb (hang, hover, float...); ``X under Y``
+- ``over`` means ``above`` after a hanging verb (hang, hover, float...), else ``near``; ``X under Y``
   puts Y ``on`` X when X is flat (a rug under a table), else X ``near`` Y.
 - Vague counts: a pair / a couple / both → 2; a few / several / some / a bare plural → 3;
   many / lots of → 5; ``each with a lamp`` gives one lamp per object of the group.
@@ -477,6 +477,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         w = t.text
         if w in _NUMBERS and not toks[j + 1].joined:
             count, counted = _NUMBERS[w], True
+            # "above one bench", "between every two benches": of those already there, if any
+            m.definite = w == "one" or (j > 0 and toks[j - 1].text in ("every", "each"))
             break
         if toks[j + 1].joined and adjectives:  # "three-tiered", "red-and-white": one adjective
             adjectives[0] = f"{t.orig}-{adjectives[0]}"
@@ -691,7 +693,10 @@ class _Clause:
     expect_new: bool = False
     groups: list[int] = field(default_factory=list)
     main_groups: list[int] = field(default_factory=list)
-    fronted: list[tuple[str, list[int]]] = field(default_factory=list)
+    fronted: list[tuple[str, list[int], bool]] = field(default_factory=list)
+    last_kind: str = ""
+    #: The clause opens with a noun phrase the catalogue does not know ("a small ice rink lies...").
+    unknown_subject: bool = False
     rels: list[tuple[str, list[int]]] = field(default_factory=list)
     produced: bool = False
 
@@ -771,8 +776,8 @@ class _Reader:
         taken = {k for m in mentions for k in range(m.start, m.end)}
         self.rel_at = {r.start: r for r in _find_relations(toks, taken)}
         self.by_start = {m.start: m for m in mentions if not m.content}
-        prev_subject: list[int] = []
         for sentence in _split(toks):
+            prev_subject: list[int] = []
             pending: list[tuple[str, list[int]]] = []
             last_rels: list[tuple[str, list[int]]] = []
             for ci, (cs, ce) in enumerate(self._merge_lists(sentence)):
@@ -780,15 +785,17 @@ class _Reader:
                 self._clause(c, cs, ce, prev_subject)
                 if c.fronted:
                     srcs = c.main_groups
-                    targets_all = {t for _, ts in c.fronted for t in ts}
+                    targets_all = {t for _, ts, _ in c.fronted for t in ts}
                     srcs = [g for g in srcs if g not in targets_all]
                     if srcs:
-                        for kind, targets in c.fronted:
+                        for kind, targets, each in c.fronted:
+                            if each:  # "beside every table stand two chairs"
+                                self._per_each(srcs[:1], targets[0])
                             for t in targets:
                                 self._relate(kind, srcs, t)
-                        c.rels = list(c.fronted)
+                        c.rels = [(kind, targets) for kind, targets, _ in c.fronted]
                     else:
-                        pending = list(c.fronted)
+                        pending = [(kind, targets) for kind, targets, _ in c.fronted]
                 elif pending and c.main_groups:
                     for kind, targets in pending:
                         for t in targets:
@@ -840,7 +847,7 @@ class _Reader:
         if w == "of" and prev.end == j and prev.category in _CONTENT_HEADS and not m.definite:
             return True  # "a vase of tulips", "a statue of a horse"
         plant = self.catalogue[prev.category].shape in ("potted_plant", "bush", "flower_bed")
-        return w == "in" and prev.end == j and m.category in ("pot", "planter", "vase") and plant
+        return w == "in" and j - prev.end <= 2 and m.category in ("pot", "planter", "vase") and plant
 
     def _merge_lists(self, clauses: list[tuple[int, int]]) -> list[tuple[int, int]]:
         """Join a clause that only lists objects to the next one when that one places them
@@ -848,7 +855,7 @@ class _Reader:
         out: list[tuple[int, int]] = []
         for cs, ce in clauses:
             places = any(k in self.rel_at for k in range(cs, ce))
-            if places and out and self._is_list(*out[-1]):  # a list has no relation phrase of its own
+            if places and out and self._is_list(*out[-1], strict=True):  # a bare list takes the next placing
                 out[-1] = (out[-1][0], ce)
                 continue
             out.append((cs, ce))
@@ -896,10 +903,11 @@ class _Reader:
             break
         return None, pos
 
-    def _pronoun(self, word: str, c: _Clause, srcs: list[int]) -> list[int]:
-        """The group "it" / "them" names: the latest earlier mention of the right number."""
+    def _pronoun(self, word: str, c: _Clause, srcs: list[int], prefer: list[int]) -> list[int]:
+        """The group "it" / "them" names: the subject before (when this clause has its own) or
+        the latest earlier mention, of the right number."""
         plural = word in ("them", "themselves")
-        recent = [g for g in [*reversed(self.history), *reversed(c.groups)] if g not in srcs]
+        recent = [g for g in [*prefer, *reversed(self.history), *reversed(c.groups)] if g not in srcs]
         for g in recent:
             if (self.groups[g].count > 1) == plural:
                 return [g]
@@ -915,12 +923,14 @@ class _Reader:
         while j < ce and (toks[j].text in _DETERMINERS or toks[j].text in _ADVERBS):
             j += 1
         starts_with_rel = j in self.rel_at
+        c.unknown_subject = j > k and toks[k].text in ("a", "an", "the") and j not in self.by_start and not starts_with_rel
         each_group: int | None = None
         last_event_end = cs
         while k < ce:
             w = toks[k].text
             nxt = toks[k + 1].text if k + 1 < ce else ""
-            if w == "each" and nxt in ("with", "have", "has", "holding", "holds", "carrying", "bearing"):
+            each_part = nxt in ("with", "have", "has", "holding", "holds", "carrying", "bearing")
+            if w == "each" and (each_part or (nxt, toks[k + 2].text if k + 2 < ce else "") in _HOLD_PAIRS):
                 plural = [g for g in [*self.history, *c.groups] if self.groups[g].count > 1]
                 if plural:
                     each_group = plural[-1]
@@ -982,15 +992,17 @@ class _Reader:
         between = [t.text for t in toks[last_event_end : rel.start]]
         # sources: the noun the phrase follows when nothing but adverbs lies between
         srcs: list[int]
-        if c.last_target and c.last_target_end == last_event_end and all(b in _ADVERBS for b in between) and kind not in (
+        chained = (c.last_kind in ("on", "on top", "near") or kind in ("on", "on top")) and kind not in (
             "face to", "flank", "around", "no relation"
-        ):  # fmt: skip
-            srcs = list(c.last_target)
+        )  # fmt: skip
+        if chained and c.last_target and c.last_target_end == last_event_end and all(b in _ADVERBS for b in between):
+            srcs = list(c.last_target)  # "a globe on a side table to the right of the desk"
         elif c.head is not None:
             closed = any(_is_verb(b) for b in between)
             if c.wsub and not closed and not c.expect_new:
                 srcs = list(c.wsub)
-                c.wsub_related.update(srcs)
+                if kind in ("on", "above", "over", "on top", "under"):
+                    c.wsub_related.update(srcs)
             else:
                 self._close_with(c)
                 srcs = list(c.head)
@@ -1006,9 +1018,10 @@ class _Reader:
             target = "it" if c.head is not None else None
             rel = replace(rel, elliptic=True)
         if isinstance(target, str) and target != "each other":
-            targets: list[int] | str = self._pronoun(target, c, srcs) if c.head is None else list(c.head)
+            prefer = list(prev_subject) if c.main and srcs == c.main else []
+            targets: list[int] | str = self._pronoun(target, c, srcs, prefer) if c.head is None else list(c.head)
             if c.head is not None and srcs == c.head:
-                targets = self._pronoun(target, c, srcs)
+                targets = self._pronoun(target, c, srcs, prefer)
         elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
             targets = list(c.last_target) or [g for g in self.history[-1:] if g not in srcs]
         elif target is None:
@@ -1035,13 +1048,16 @@ class _Reader:
                         self._relate(active, [t], h)
                 c.produced = True
                 c.rels.append((kind, targets))
+                if c.head is None:
+                    c.main = list(targets)  # "guarded by a skeleton sitting on a barrel"
             c.last_target, c.last_target_end, c.expect_new = [], -1, False
             return end
         if not srcs:
             if starts_with_rel and c.first and not c.produced and isinstance(targets, list) and targets:
-                c.fronted.append((kind, targets))
+                tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
+                c.fronted.append((kind, targets, tm is not None and tm.each))
                 return end
-            if not c.first:
+            if not c.first and not c.unknown_subject:
                 srcs = list(prev_subject)
         if not srcs or not targets:
             return end
@@ -1055,20 +1071,25 @@ class _Reader:
         instance = self.instance.get(self._target_start) if isinstance(target, list) else None
         tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
         if tm is not None and tm.each:  # "a candle on every table": one per table
-            for src in srcs:
-                if self.groups[src].count == 1 and src in c.groups:
-                    self.groups[src].count = self.groups[targets[0]].count
-                    self.pair_each.add((src, targets[0]))
+            self._per_each([s for s in srcs if s in c.groups], targets[0])
         for t in targets:
             self._relate(kind, srcs, t, hang, instance)
         c.produced = True
         c.rels = [(kind, targets)]
+        c.last_kind = "between" if rel.kind == "between" else kind  # "between two trees to the left of"
         if isinstance(target, list):
             c.last_target, c.last_target_end = targets, end
         else:
             c.last_target, c.last_target_end = [], -1
         c.expect_new = True
         return end
+
+    def _per_each(self, srcs: list[int], target: int) -> None:
+        """As many of each source as it says, for every one of the target group."""
+        for src in srcs:
+            if (src, target) not in self.pair_each:
+                self.groups[src].count *= self.groups[target].count
+                self.pair_each.add((src, target))
 
     def _relate(self, kind: str, srcs: list[int], target: int, hang: bool = False, instance=None) -> None:
         for s in srcs:
@@ -1080,7 +1101,7 @@ class _Reader:
     def _kind(self, kind: str, s: int, t: int, hang: bool = False) -> str:
         src = self.catalogue[self.groups[s].category]
         if kind == "over":
-            return "above" if hang or src.rests == "hanging" else "no relation"
+            return "above" if hang or src.rests == "hanging" else "near"  # a tree leaning over a pond
         if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not hang:
             return "near"  # a tree "above" a pond cannot float: read it as near
         if kind == "under":

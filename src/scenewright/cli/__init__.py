@@ -23,7 +23,7 @@ EXIT_INFEASIBLE = 3
 
 def main(argv: list[str] | None = None) -> int:
     logging.basicConfig(level=logging.WARNING, format="%(levelname)s %(name)s: %(message)s")
-    err = Console(stderr=True)
+    err = Console(stderr=True, soft_wrap=True)
     try:
         app(args=argv, standalone_mode=False)
     except InputError as exc:

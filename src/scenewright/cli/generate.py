@@ -115,8 +115,8 @@ def generate_command(
         raise InputError(
             f"give exactly one of TEXT, --example or --resume DIR (got {', '.join(given) or 'none'})"
         )
-    if resume_dir is not None and out is not None:
-        raise InputError("--resume takes the scene folder itself; drop --out")
+    if resume_dir is not None and (out is not None or style is not None):
+        raise InputError("--resume takes the scene folder itself and keeps its style; drop --out and --style")
     if resume_dir is None and out is None:
         raise InputError("--out DIR is required: the folder to write the scene into")
     settings = build_settings(
@@ -159,7 +159,7 @@ def generate_command(
                 render=not no_render,
                 progress=report,
             )
-    _summary(Console(), folder, scene)
+    _summary(Console(soft_wrap=True), folder, scene)
     if scene.layout is not None and scene.layout.unplaced:
         lines = "; ".join(f"{u.id} ({u.reason})" for u in scene.layout.unplaced)
         raise InfeasibleLayout(
@@ -189,7 +189,8 @@ def bench_pipeline(
     with tempfile.TemporaryDirectory(prefix="scenewright-bench-") as tmp:
         for prompt in chosen:
             start = time.perf_counter()
-            scene = generate(prompt.text, Path(tmp) / prompt.id, backends=backends, settings=settings, render=False)
+            folder = Path(tmp) / prompt.id
+            scene = generate(prompt.text, folder, backends=backends, settings=settings, render=False)
             runs.append(
                 {
                     "id": prompt.id,
@@ -202,10 +203,10 @@ def bench_pipeline(
     large = [r["seconds"] for r in runs if r["objects"] >= LARGE_SCENE]
     result = {
         "prompts": len(runs),
-        "median_seconds": statistics.median(seconds),
+        "median_seconds": round(statistics.median(seconds), 3),
         "max_seconds": max(seconds),
         "median_objects": statistics.median(r["objects"] for r in runs),
-        f"median_seconds_{LARGE_SCENE}plus_objects": statistics.median(large) if large else None,
+        f"median_seconds_{LARGE_SCENE}plus_objects": round(statistics.median(large), 3) if large else None,
         f"scenes_{LARGE_SCENE}plus_objects": len(large),
         "complete_layouts": sum(r["complete"] for r in runs),
         "slowest": sorted(runs, key=lambda r: -r["seconds"])[:3],

@@ -40,7 +40,9 @@ def independent_collisions(
 
 def run(sizes: Sequence[int], seeds: int, time_limit: float = 10.0) -> dict:
     """Per size: solve seconds (median, p90), success rate, collisions, constraints satisfied."""
-    out: dict = {"benchmark": "layout", "seeds": seeds, "time_limit": time_limit, "cpus": os.cpu_count(), "sizes": {}}
+    out: dict = {
+        "benchmark": "layout", "seeds": seeds, "time_limit": time_limit, "cpus": os.cpu_count(), "sizes": {},
+    }
     for n in sizes:
         seconds, complete, collisions, satisfied, total, counts, nodes = [], 0, 0, 0, 0, [], []
         for seed in range(seeds):

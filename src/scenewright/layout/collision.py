@@ -24,7 +24,8 @@ from scenewright.geometry import rotation_matrix
 from scenewright.layout.relations import rotated_half, tilt_matrix
 from scenewright.scene import Constraint, SceneObject, Vec3
 
-#: Overlap (m) below which two boxes are touching, not colliding.
+#: Overlap (m) below which two boxes are touching, not colliding: float round-off only, so a
+#: pose the solver accepts never intersects by any independent check.
 TOUCH = 1e-6
 
 _BVH: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()

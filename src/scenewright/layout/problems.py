@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 import trimesh
 
-from scenewright.geometry import yaw_towards
+from scenewright.geometry import world_box, yaw_towards
 from scenewright.layout.relations import check, half_extents
 from scenewright.scene import Constraint, SceneObject, Vec3
 
@@ -51,6 +51,8 @@ def cone_mesh(size: Vec3) -> trimesh.Trimesh:
 
 
 class _Planter:
+    """Builds the planted layout one object at a time, each clear of the ones before."""
+
     def __init__(self, n: int, rng: np.random.Generator, with_meshes: bool):
         self.rng = rng
         self.side = float(np.sqrt(n * 3.5) + 2.0)
@@ -64,13 +66,13 @@ class _Planter:
 
     def _free(self, obj: SceneObject, support: str | None = None) -> bool:
         """Whether ``obj`` fits inside the region, clear of every planted object."""
-        lo, hi = _box(obj)
+        lo, hi = world_box(obj)
         if np.any(lo[:2] < -self.half) or np.any(hi[:2] > self.half):
             return False
         for other in self.objects:
             if other.id == support:
                 continue
-            olo, ohi = _box(other)
+            olo, ohi = world_box(other)
             if np.all(np.minimum(hi, ohi) - np.maximum(lo, olo) > -_CLEARANCE):
                 return False
         return True
@@ -131,7 +133,7 @@ class _Planter:
         if not self.supports:
             return self.furniture(k)
         base = self.objects[int(r.choice(self.supports))]
-        blo, bhi = _box(base)
+        blo, bhi = world_box(base)
         half = half_extents(size, Vec3())
         if np.any(bhi[:2] - blo[:2] < 2 * half[:2]):
             return
@@ -153,7 +155,7 @@ class _Planter:
             return self.furniture(k)
         base = grounded[int(r.integers(len(grounded)))]
         size = Vec3(x=0.4, y=0.4, z=0.3)
-        blo, bhi = _box(base)
+        blo, bhi = world_box(base)
         for _ in range(10):
             xy = r.uniform(blo[:2], bhi[:2])
             obj = SceneObject(id=f"lamp_{k}", name="lamp", size=size,
@@ -162,12 +164,6 @@ class _Planter:
                 self._add(obj)
                 self.required.append(Constraint(relation="above", source=obj.id, target=base.id))
                 return
-
-
-def _box(obj: SceneObject) -> tuple[np.ndarray, np.ndarray]:
-    half = half_extents(obj.size, obj.rotation)
-    centre = np.array(obj.position.tuple())
-    return centre - half, centre + half
 
 
 def planted_problem(n: int, seed: int = 0, *, with_meshes: bool = True, jitter: float = 0.4) -> Problem:

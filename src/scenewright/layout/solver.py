@@ -1,24 +1,32 @@
 """The layout solver: the paper's depth-first search (Algorithm 1), made fast and honest.
 
-Objects are placed in topological order (every target before its sources). For each object
-the candidates come from its highest-priority constraint — ``on``/``above`` first (they fix
-the height and the footprint), then the relative ones (they fix a half-plane), then ``near``,
-``far`` and ``face to`` — or, without constraints, from a spiral around its initial position,
-nearest first, so the model's guess is preferred. Every candidate is checked against all the
-object's constraints and the bounds at once (numpy), then for collision, nearest first.
+Objects are placed in topological order (every target before its sources; among ready
+objects, larger footprints first). For each object the candidates come from its
+highest-priority constraint — ``on``/``above`` first (they fix the height and footprint),
+then the relative ones (a half-plane), then ``near``, ``far`` and ``face to`` — or, without
+constraints, from a spiral around its initial position; nearest to the initial position
+first, so the model's guess is preferred. All candidates are checked against all the
+object's constraints and the bounds at once (numpy), then for collision in order (a numpy
+box broad phase in batches, fcl for the rest).
 
-The search is depth-first with conflict-directed backjumping instead of plain chronological
-backtracking: when no candidate of an object is collision-free, the search jumps back to the
-most recently placed object that blocked it and moves that one (at least the blocked
-object's half width away), instead of re-trying every object in between. Each object gets a
-bounded number of such jumps; past that, or past the node or time limit, it is left unplaced
-with a report and the search goes on, so the result is the most complete layout found. A last
-pass retries unplaced objects over a much wider candidate set.
+Three things keep the search from blowing up where plain backtracking would:
+
+- Forward checking: a pose is taken only if every object that depends on this one can still
+  meet its constraints on the objects placed so far.
+- Conflict-directed backjumping: when an object has no valid pose, the search jumps back to
+  the latest object that blocked it or shaped its candidates (its targets and theirs),
+  moves that one clear of where it was, and re-places what came after. Repeated failures
+  escalate to earlier culprits, and move them farther.
+- Bounded effort and restarts: each object may cause :data:`MAX_JUMPS` jumps; past that, or
+  past the node or time limit, it is left unplaced with a report and the search goes on.
+  An incomplete run is repeated (up to :data:`RESTARTS`) with the troublesome objects and
+  everything they depend on placed first; the most complete layout wins. A last pass
+  retries unplaced objects over a much wider candidate set.
 
 Yaw: an object with a ``face to`` constraint is turned to face its target exactly
 (:func:`geometry.yaw_towards`) at each candidate; every other object keeps the model's yaw.
 Heights follow the paper's ground rule: an object that is not the source of ``on``/``above``
-rests on the ground.
+rests on the ground. ``above`` offers a few heights above its minimum.
 """
 
 from __future__ import annotations
@@ -43,8 +51,8 @@ from scenewright.scene import Constraint, LayoutReport, SceneObject, UnplacedObj
 log = logging.getLogger(__name__)
 
 #: Backjumps one object may trigger before it is left unplaced.
-MAX_JUMPS = 6
-#: Searches per solve, each from more scattered starting points, until one is complete.
+MAX_JUMPS = 10
+#: Searches per solve, until one is complete.
 RESTARTS = 4
 #: Candidates per broad-phase batch.
 CHUNK = 64
@@ -54,6 +62,8 @@ FORWARD_REJECTS = 24
 
 @dataclass
 class LayoutResult:
+    """Copies of the objects with solved poses, the cleaned constraints, and the report."""
+
     objects: list[SceneObject]
     constraints: list[Constraint]
     report: LayoutReport
@@ -96,6 +106,8 @@ class _Node:
 
 
 class _Search:
+    """One search's state: the poses placed so far, their collision world, the candidates."""
+
     def __init__(self, objects, constraints, meshes, bounds, fixed, seed, spread=0.0):
         self.objects = list(objects)
         self.index = {o.id: i for i, o in enumerate(self.objects)}
@@ -164,10 +176,29 @@ class _Search:
 
     # --- candidates ----------------------------------------------------------------------
 
-    def candidates(self, item: _Item, wide: bool = False, probe: bool = False) -> _Node | _Failure:
-        """The object's candidate poses that meet its constraints and the bounds, nearest first.
+    def candidates(self, item: _Item, wide: bool = False) -> _Node | _Failure:
+        """The object's candidate poses that meet its constraints and the bounds, nearest first."""
+        poses = self.poses(item, wide)
+        if isinstance(poses, _Failure):
+            return poses
+        centres, yaws, boxes, sat, ok, inside = poses
+        good = ok & inside
+        if not good.any():
+            return self.explain(item, boxes, sat, ok, inside)
+        centres, yaws = centres[good], yaws[good]
+        lo, hi = self.world.boxes(item.index, centres, yaws)
+        return _Node(item, centres, yaws, lo, hi, self.world.neighbours(item.index))
 
-        A ``probe`` only asks whether there are any: no broad phase, no explanation.
+    def feasible(self, item: _Item) -> bool:
+        """Whether any candidate pose meets the object's constraints and the bounds."""
+        poses = self.poses(item)
+        return not isinstance(poses, _Failure) and bool(np.any(poses[4] & poses[5]))
+
+    def poses(self, item: _Item, wide: bool = False):
+        """Candidate poses and, per constraint, which of them satisfy it; or why there are none.
+
+        Returns (centres, yaws, boxes, per-constraint masks, all-constraints mask, in-bounds
+        mask), or a failure when a target is not placed.
         """
         obj = item.obj
         missing = [c for c, t in item.own if not self.placed[t]]
@@ -216,15 +247,7 @@ class _Search:
         sat = [rel.holds(c.relation, boxes, self.box(t)) for c, t in item.own]
         sat += [rel.holds(c.relation, self.box(s), boxes) for c, s in item.reverse]
         ok = np.logical_and.reduce(sat) if sat else np.ones(len(xy), dtype=bool)
-        inside = self.inside(boxes)
-        good = ok & inside
-        if not good.any():
-            return _Failure("no candidate", []) if probe else self.explain(item, boxes, sat, ok, inside)
-        centres, yaws = centres[good], yaws[good]
-        if probe:
-            return _Node(item, centres, yaws, centres, centres, np.zeros(0, dtype=int))
-        lo, hi = self.world.boxes(item.index, centres, yaws)
-        return _Node(item, centres, yaws, lo, hi, self.world.neighbours(item.index))
+        return centres, yaws, boxes, sat, ok, self.inside(boxes)
 
     def inside(self, boxes: Boxes) -> np.ndarray:
         if self.bounds is None:
@@ -256,7 +279,9 @@ class _Search:
         total = np.sum(misses, axis=0) + (0.0 if self.bounds is None else self.outside_by(boxes))
         k = int(np.argmin(total))
         p = boxes.centre[k]
-        detail = [f"'{c}' {rel.describe(c.relation, float(m[k]))}" for (c, _, _), m in zip(pairs, misses) if m[k] > 0]
+        detail = [
+            f"'{c}' {rel.describe(c.relation, float(m[k]))}" for (c, _, _), m in zip(pairs, misses) if m[k] > 0
+        ]
         if self.bounds is not None and self.outside_by(boxes)[k] > 0:
             detail.append(f"outside the bounds by {self.outside_by(boxes)[k]:.2f} m")
         nearest = f"at ({p[0]:.2f}, {p[1]:.2f}, {p[2]:.2f}): " + ("; ".join(detail) or "all constraints hold")
@@ -267,8 +292,7 @@ class _Search:
         own = [(c, t) for c, t in item.own if c is constraint]
         if not own:
             return False  # a fixed object's constraint on this one: no generator of its own
-        made = self.candidates(replace(item, own=own, reverse=[]), probe=True)
-        return not isinstance(made, _Failure)
+        return self.feasible(replace(item, own=own, reverse=[]))
 
     def outside_by(self, boxes: Boxes) -> np.ndarray:
         over = np.maximum(boxes.hi[:, :2] - self.bounds, 0.0) + np.maximum(-self.bounds - boxes.lo[:, :2], 0.0)
@@ -308,12 +332,12 @@ class _Search:
             known = [(c, t) for c, t in item.own if self.placed[t]]
             if self.placed[s] or (len(known) < 2 and self.bounds is None):
                 continue
-            if not isinstance(self.candidates(replace(item, own=known), probe=True), _Failure):
+            if self.feasible(replace(item, own=known)):
                 continue
             node.conflict.update(t for _, t in known if t != i)
             rest = replace(item, own=[(c, t) for c, t in known if t != i])
-            if isinstance(self.candidates(rest, probe=True), _Failure):
-                log.debug("%s cannot help %s: its other targets must move", self.objects[i].id, self.objects[s].id)
+            if not self.feasible(rest):
+                log.debug("%s cannot help %s: its other targets must move", self.objects[i].id, item.obj.id)
                 return "hopeless"
             node.forward_rejects += 1
             log.debug("%s rejected: %s would have no position", self.objects[i].id, self.objects[s].id)
@@ -411,7 +435,7 @@ def _restarts(objects, constraints, meshes, bounds, fixed, seed, start, time_lim
         budget = None if node_limit is None else node_limit - used
         stop = deadline
         if attempt < RESTARTS - 1:
-            share = 4 * len(objects) + 50
+            share = 10 * len(objects) + 100
             budget = share if budget is None else min(budget, share)
             now = time.perf_counter()
             stop = now + (deadline - now) / (RESTARTS - attempt)
@@ -500,9 +524,9 @@ def _dfs(
             continue
         # Backjump to the latest culprit; everything after it is undone and re-placed.
         jumps[i] += 1
-        # The latest culprit first; if this object keeps failing, escalate to earlier ones.
+        # The latest culprit first; each time this object fails again, the next earlier one.
         depths = sorted((depth_of[j] for j in culprits), reverse=True)
-        back = depths[min((jumps[i] - 1) // 2, len(depths) - 1)]
+        back = depths[(jumps[i] - 1) % len(depths)]
         j = order[back]
         log.debug("%s has no position; back to %s", search.objects[i].id, search.objects[j].id)
         for d in range(depth - 1, back - 1, -1):

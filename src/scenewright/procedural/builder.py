@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import re
 from collections import defaultdict
+from collections.abc import Mapping
 
 import numpy as np
 import trimesh
@@ -19,6 +20,16 @@ from trimesh.visual.material import PBRMaterial
 from scenewright.geometry import SCENE_TO_GLTF
 from scenewright.procedural import parts as P
 from scenewright.procedural.style import NEON_ROLES, NEONS, Style, Surface
+
+
+#: Rotations taking a part drawn about local +Z to one about the named axis. Local x and y
+#: go to the two other axes in cyclic order (about x: y, z; about y: x, z), local +Z to +x,
+#: −y or +z; all are proper rotations, so windings stay outward.
+_AXES = {
+    "z": np.eye(3),
+    "x": np.array([[0, 0, 1], [1, 0, 0], [0, 1, 0]], float),
+    "y": np.array([[1, 0, 0], [0, 0, -1], [0, 1, 0]], float),
+}
 
 
 class Model:
@@ -98,37 +109,41 @@ class Model:
     def ball(self, role: str, centre, radii, fraction: float = 1.0) -> None:
         self.add(role, P.sphere(centre, radii, self.segments(fraction)))
 
+    def leaf(self, role: str, p0, p1, width: float, thickness: float, fraction: float = 0.5) -> None:
+        """A flat ellipsoid from ``p0`` to ``p1``, its broad side level (fronds, leaves, petals)."""
+        p0, p1 = np.asarray(p0, float), np.asarray(p1, float)
+        d = p1 - p0
+        length = float(np.linalg.norm(d))
+        d = d / length
+        side = np.cross(d, (0.0, 0.0, 1.0))
+        side = side / np.linalg.norm(side) if np.linalg.norm(side) > 1e-6 else np.array([1.0, 0.0, 0.0])
+        frame = np.column_stack([side, np.cross(side, d), d])
+        unit = P.sphere((0, 0, 0), (width, thickness, length / 2), self.segments(fraction))
+        self.add(role, P.transform(unit, P.affine(frame, (p0 + p1) / 2)))
+
     def torus(self, role: str, centre, major: float, minor: float, axis: str = "z", arc: float = 2 * np.pi,
               fraction: float = 1.0) -> None:
         """A ring or arc about ``axis``; an x-axis arc starts at +Y and turns over +Z,
         a y-axis arc starts at +X and turns over +Z (arches, handles, wheels)."""
         part = P.torus(major, minor, self.segments(fraction), self.segments(0.5, 4), arc)
-        linear = {
-            "z": np.eye(3),
-            "x": np.array([[0, 0, 1], [1, 0, 0], [0, 1, 0]], float),
-            "y": np.array([[1, 0, 0], [0, 0, 1], [0, 1, 0]], float),
-        }[axis]
-        self.add(role, P.transform(part, P.affine(linear, centre)))
+        self.add(role, P.transform(part, P.affine(_AXES[axis], centre)))
 
     def extrude(self, role: str, outline, axis: str, start: float, end: float) -> None:
         """Extrude a counter-clockwise outline: along x the outline is (y, z), along y it is
         (x, z), along z it is (x, y)."""
         part = P.prism(outline, end - start)
-        linear = {
-            "z": np.eye(3),
-            "x": np.array([[0, 0, 1], [1, 0, 0], [0, 1, 0]], float),
-            "y": np.array([[1, 0, 0], [0, 0, -1], [0, 1, 0]], float),
-        }[axis]
         offset = np.zeros(3)
         offset["xyz".index(axis)] = end if axis == "y" else start
-        self.add(role, P.transform(part, P.affine(linear, offset)))
+        self.add(role, P.transform(part, P.affine(_AXES[axis], offset)))
 
     def beam(self, role: str, p0, p1, width: float, height: float | None = None) -> None:
         self.add(role, P.beam(p0, p1, width, height))
 
     # Output ------------------------------------------------------------------------------
-    def finish(self, override: Surface | None = None) -> trimesh.Scene:
-        """Fit to the box, shade, convert to glTF and attach one PBR material per role."""
+    def finish(self, described: Mapping[str, Surface] | None = None) -> trimesh.Scene:
+        """Fit to the box, shade, convert to glTF and attach one PBR material per role;
+        ``described`` holds the surfaces the description asked for, by role."""
+        described = described or {}
         if not self.parts:
             raise ValueError("a generator drew nothing")
         roles = list(self.parts)
@@ -148,9 +163,10 @@ class Model:
             part = P.drop_degenerate(P.transform(merged[role], fit))
             if self.style.flat:
                 part = P.flatten(part)
-            surface = self.style.surface(role, self.neon)
-            if role == self.main and override is not None:
-                surface = self.style.restyle(override, "described", self.neon)
+            if role in described:
+                surface = self.style.restyle(described[role], "described", self.neon)
+            else:
+                surface = self.style.surface(role, self.neon)
             mesh = trimesh.Trimesh(part.vertices, part.faces, vertex_normals=part.normals, process=False)
             mesh.visual = trimesh.visual.TextureVisuals(material=_material(role, surface))
             scene.add_geometry(mesh, geom_name=role, node_name=role)

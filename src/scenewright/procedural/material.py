@@ -8,6 +8,7 @@ that style would.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable, Collection
 from dataclasses import replace
 
 from scenewright.procedural.style import Surface
@@ -73,19 +74,39 @@ _ADJECTIVES = {"wooden": "wood", "metallic": "metal", "metal": "metal", "golden"
 _COLOUR_RE = re.compile(
     r"\b(?:(%s)[\s-]+)?(%s)\b" % ("|".join(_MODIFIERS), "|".join(sorted(COLOURS, key=len, reverse=True)))
 )
-_MATERIAL_RE = re.compile(
-    r"\b(%s)\b" % "|".join(sorted(list(MATERIALS) + list(_ADJECTIVES), key=len, reverse=True))
+_MATERIAL_WORDS = "|".join(sorted(list(MATERIALS) + list(_ADJECTIVES), key=len, reverse=True))
+_MATERIAL_RE = re.compile(r"\b(%s)\b" % _MATERIAL_WORDS)
+
+
+#: Nouns for parts other than the main one: "a wooden chair with a red cushion" colours the
+#: cushion, not the chair. Each noun lists the roles it may mean, first present wins.
+PART_NOUNS: dict[str, tuple[str, ...]] = {
+    "cushion": ("cushion",), "seat": ("cushion",), "pillow": ("cushion",), "upholstery": ("fabric", "cushion"),
+    "shade": ("shade",), "lampshade": ("shade",), "leaves": ("leaf", "pine_leaf"), "leaf": ("leaf", "pine_leaf"),
+    "foliage": ("leaf", "pine_leaf"), "needles": ("pine_leaf",), "trunk": ("bark",), "roof": ("roof",),
+    "awning": ("canvas",), "canopy": ("canvas", "leaf"), "frame": ("wood", "dark_wood", "metal", "dark_metal"),
+    "legs": ("wood", "dark_wood", "metal", "dark_metal", "chrome"), "base": ("dark_plastic", "metal", "dark_metal"),
+    "handle": ("metal", "brass", "chrome"), "knobs": ("brass", "metal"), "pot": ("ceramic",),
+    "screen": ("screen",), "flowers": ("flower",), "petals": ("flower",), "sheets": ("fabric",),
+    "blanket": ("fabric",), "duvet": ("fabric",), "bedding": ("fabric",), "headboard": ("wood",),
+    "wheels": ("rubber",), "tyres": ("rubber",), "tires": ("rubber",), "windows": ("glass",), "walls": ("wall",),
+    "stripes": ("canvas",), "sail": ("canvas_alt",), "cabin": ("wall",), "top": ("marble",), "countertop": ("marble",),
+}
+_PART_RE = re.compile(
+    r"\s+(?:(%s)\s+)?(%s)s?\b" % (_MATERIAL_WORDS, "|".join(sorted(PART_NOUNS, key=len, reverse=True)))
 )
+
+
+def _colour(match: re.Match) -> tuple[float, float, float]:
+    modifier, name = match.groups()
+    colour = COLOURS[name]
+    return _MODIFIERS[modifier](colour) if modifier else colour
 
 
 def find_colour(text: str) -> tuple[float, float, float] | None:
     """The first colour phrase ("dark blue", "pastel pink", "red") of a description."""
     match = _COLOUR_RE.search(text.lower())
-    if not match:
-        return None
-    modifier, name = match.groups()
-    colour = COLOURS[name]
-    return _MODIFIERS[modifier](colour) if modifier else colour
+    return _colour(match) if match else None
 
 
 def find_material(text: str) -> Surface | None:
@@ -96,12 +117,39 @@ def find_material(text: str) -> Surface | None:
     return MATERIALS[_ADJECTIVES.get(word, word)]
 
 
-def described_surface(description: str, base: Surface) -> Surface | None:
-    """The main part's surface the description asks for, or ``None`` when it names neither."""
-    material, colour = find_material(description), find_colour(description)
-    if material is None and colour is None:
-        return None
-    surface = material or base
-    if colour is not None:
-        surface = replace(surface, color=tuple(float(c) for c in colour))
-    return surface
+def _surface(base: Surface, material: str | None, colour) -> Surface:
+    surface = MATERIALS[_ADJECTIVES.get(material, material)] if material else base
+    return replace(surface, color=tuple(float(c) for c in colour)) if colour is not None else surface
+
+
+#: Roles of living or elemental things: "an oak tree" names a species, not a wood finish,
+#: so material words never apply to them (colour words still do: "a red maple").
+_NATURAL = {"leaf", "pine_leaf", "bark", "flower", "flower_alt", "fur", "water", "flame", "light", "soil"}
+
+
+def described_surfaces(
+    description: str, main: str, roles: Collection[str], base: Callable[[str], Surface]
+) -> dict[str, Surface]:
+    """Role → surface the description asks for. A colour (and material) right before a part
+    noun goes to that part when the object has it ("with a green shade"); the first other
+    colour and material go to the ``main`` role. ``base`` gives a role's unstyled surface."""
+    text = description.lower()
+    found: dict[str, Surface] = {}
+    taken: list[tuple[int, int]] = []
+    main_colour = None
+    for match in _COLOUR_RE.finditer(text):
+        part = _PART_RE.match(text, match.end())
+        role = next((r for r in PART_NOUNS[part.group(2)] if r in roles), None) if part else None
+        if role is not None and role != main:
+            found.setdefault(role, _surface(base(role), part.group(1), _colour(match)))
+            taken.append((match.start(), part.end()))
+        elif main_colour is None:
+            main_colour = _colour(match)
+    material = next(
+        (m.group(1) for m in _MATERIAL_RE.finditer(text) if not any(a <= m.start() < b for a, b in taken)), None
+    )
+    if main in _NATURAL:
+        material = None
+    if material is not None or main_colour is not None:
+        found[main] = _surface(base(main), material, main_colour)
+    return found

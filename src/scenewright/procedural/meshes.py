@@ -12,6 +12,8 @@ import hashlib
 import logging
 import re
 from collections.abc import Callable, Sequence
+from functools import cache
+from pathlib import Path
 
 import numpy as np
 import trimesh
@@ -19,9 +21,9 @@ import trimesh
 from scenewright.backends import MeshRequest
 from scenewright.errors import BackendError, InputError
 from scenewright.procedural.builder import Model
-from scenewright.procedural.material import described_surface
+from scenewright.procedural.material import described_surfaces
 from scenewright.procedural.shapes import SHAPES
-from scenewright.procedural.style import ROLES, resolve_style
+from scenewright.procedural.style import resolve_style
 from scenewright.settings import Settings
 
 log = logging.getLogger(__name__)
@@ -90,6 +92,18 @@ def choose_shape(name: str, category: str | None) -> str:
     return "generic"
 
 
+@cache
+def code_fingerprint() -> str:
+    """A hash of this package's sources: assets cached by an older generator must not be
+    served once the generators change."""
+    root = Path(__file__).parent
+    digest = hashlib.sha256()
+    for path in sorted(root.rglob("*.py")):
+        digest.update(path.relative_to(root).as_posix().encode())
+        digest.update(path.read_bytes())
+    return digest.hexdigest()[:16]
+
+
 def seed_of(text: str) -> int:
     return int.from_bytes(hashlib.sha256(text.encode()).digest()[:8], "little")
 
@@ -105,8 +119,7 @@ def build_model(
     resolved = resolve_style(style)
     model = Model(size, resolved, np.random.default_rng(seed), name=name, description=description)
     SHAPES[shape](model)
-    base = resolved.overrides.get(model.main) or ROLES.get(model.main) or ROLES["plastic"]
-    return model.finish(described_surface(f"{name} {description}", base))
+    return model.finish(described_surfaces(f"{name} {description}", model.main, model.parts.keys(), resolved.base))
 
 
 def build_glb(shape: str, size, style: str, seed: int, description: str = "", name: str = "") -> bytes:
@@ -118,6 +131,11 @@ class ProceduralMeshes:
     """Parametric styled meshes, offline and instant; the default mesh backend."""
 
     name = "procedural"
+
+    @property
+    def params(self) -> dict[str, str]:
+        """What else decides the output (part of the asset cache key): the generators' code."""
+        return {"code": code_fingerprint()}
 
     @classmethod
     def from_spec(cls, argument: str, settings: Settings) -> ProceduralMeshes:

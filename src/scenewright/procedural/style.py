@@ -10,6 +10,7 @@ from __future__ import annotations
 import colorsys
 import logging
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 from scenewright.scene import DEFAULT_STYLE, STYLES
 
@@ -145,10 +146,13 @@ class Style:
         smallest = min(abs(h - lo_) for lo_, h in zip(lo, hi))
         return min(self.bevel * smallest, self.bevel_max)
 
+    def base(self, role: str) -> Surface:
+        """A role's surface before the style's palette shift."""
+        return self.overrides.get(role) or ROLES.get(role) or ROLES["accent" if role == "trim" else "plastic"]
+
     def surface(self, role: str, neon_color=NEONS[0]) -> Surface:
         """The look of a role in this style."""
-        base = self.overrides.get(role) or ROLES.get(role) or ROLES["accent" if role == "trim" else "plastic"]
-        return self.restyle(base, role, neon_color)
+        return self.restyle(self.base(role), role, neon_color)
 
     def restyle(self, base: Surface, role: str, neon_color=NEONS[0]) -> Surface:
         """Apply this style's palette shift to a surface (also to colours the text asked for)."""
@@ -203,6 +207,7 @@ _ALIASES = {
 }
 
 
+@lru_cache(maxsize=64)
 def resolve_style(text: str | None) -> Style:
     """The style a free-text name means; unknown names fall back to realistic with a note."""
     key = " ".join((text or DEFAULT_STYLE).strip().lower().replace("_", " ").split())

@@ -193,7 +193,7 @@ def _concrete(rng, n):
 def _dirt(rng, n):
     base = 0.6 * noise(rng, n, 2.8) + 0.4 * noise(rng, n, 1.2)
     img = _mix(base, (0.3, 0.21, 0.13), (0.55, 0.42, 0.28))
-    f1, f2, _ = cells(rng, n, 150)
+    f1, _, _ = cells(rng, n, 150)
     img[f1 < 0.12] *= 1.3
     return img
 

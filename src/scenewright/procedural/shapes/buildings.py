@@ -11,7 +11,8 @@ from scenewright.procedural.builder import Model
 def _windows(m: Model, x0, x1, z0, z1, y: float, facing: int, floors: int, along: str = "x") -> None:
     """A grid of glass panes with sills on one wall (``along`` the wall's axis)."""
     width = x1 - x0
-    cols = max(1, int(width / 2.2))
+    cols = min(10, max(1, int(width / 2.2)))
+    floors = min(floors, 15)
     fh = (z1 - z0) / floors
     cw = width / cols
     for f in range(floors):
@@ -95,14 +96,14 @@ def market_stall(m: Model) -> None:
     for x in (-m.sx / 2 + post / 2, m.sx / 2 - post / 2):
         m.box("wood", (x - post / 2, -m.sy / 2 + 0.1 * m.sy, 0), (x + post / 2, -m.sy / 2 + 0.1 * m.sy + post, front_top))
         m.box("wood", (x - post / 2, m.sy / 2 - post, 0), (x + post / 2, m.sy / 2, back_top))
-    stripes = max(4, int(m.sx / 0.35))
+    stripes = min(16, max(4, int(m.sx / 0.35)))
     w = m.sx / stripes
     for i in range(stripes):
         role = "canvas" if i % 2 == 0 else "canvas_alt"
         x0 = -m.sx / 2 + i * w
         m.extrude(role, [(-m.sy / 2, front_top - 0.06 * m.sz), (-m.sy / 2, front_top), (m.sy / 2, back_top), (m.sy / 2, back_top - 0.03)],
                   "x", x0, x0 + w)
-    goods = max(3, int(m.sx / 0.3))
+    goods = min(12, max(3, int(m.sx / 0.3)))
     for i in range(goods):
         x = -m.sx / 2 + post + (i + 0.5) * (m.sx - 2 * post) / goods
         s = 0.08 * min(m.sx, 1.5)

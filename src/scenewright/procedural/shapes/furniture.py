@@ -53,14 +53,14 @@ def desk(m: Model) -> None:
     m.box("wood", (-m.sx / 2 + 0.03, m.sy / 2 - 0.05, top * 0.35), (x0, m.sy / 2 - 0.03, top))
 
 
-def _chair_frame(m: Model, seat_z: float, seat_t: float, back_role: str = "wood") -> None:
+def _chair_frame(m: Model, seat_z: float) -> None:
     leg = m.thick(0.022, 0.12 * min(m.sx, m.sy))
     m.legs("wood", 0.02 * m.sx, 0, seat_z, leg, square=True)
     hx = m.sx / 2 - 0.02 * m.sx - leg
     yb = m.sy / 2 - leg
     for x in (-hx, hx):
         m.box("wood", (x - leg, yb - leg, seat_z), (x + leg, yb + leg, m.sz))
-    m.box(back_role, (-hx, yb - leg * 0.8, seat_z + 0.45 * (m.sz - seat_z)), (hx, yb + leg * 0.8, m.sz - 0.02 * m.sz))
+    m.box("wood", (-hx, yb - leg * 0.8, seat_z + 0.45 * (m.sz - seat_z)), (hx, yb + leg * 0.8, m.sz - 0.02 * m.sz))
     m.box("wood", (-hx, yb - leg * 0.6, seat_z + 0.15 * (m.sz - seat_z)), (hx, yb + leg * 0.6, seat_z + 0.25 * (m.sz - seat_z)))
 
 
@@ -69,7 +69,7 @@ def chair(m: Model) -> None:
     t = m.thick(0.04, 0.1 * m.sz)
     m.box("wood", (-m.sx / 2, -m.sy / 2, seat_z - t), (m.sx / 2, m.sy / 2, seat_z))
     m.box("cushion", (-m.sx / 2 + 0.03, -m.sy / 2 + 0.02, seat_z), (m.sx / 2 - 0.03, m.sy / 2 - 0.08, seat_z + t * 0.8))
-    _chair_frame(m, seat_z, t)
+    _chair_frame(m, seat_z)
 
 
 def armchair(m: Model) -> None:
@@ -192,10 +192,12 @@ def bed(m: Model) -> None:
 
 
 def _books_row(m: Model, x0: float, x1: float, y0: float, y1: float, z: float, height: float) -> None:
+    """Books side by side; on a very long shelf they thicken so a row stays under ~40 books."""
     x = x0
     roles = ("book_a", "book_b", "book_c", "paper")
+    scale = max(1.0, (x1 - x0) / 1.4)
     while x < x1 - 0.02:
-        w = min(m.vary(0.02, 0.05), x1 - x)
+        w = min(m.vary(0.02, 0.05) * scale, x1 - x)
         h = height * m.vary(0.65, 0.95)
         m.box(roles[int(m.rng.integers(4))], (x, y0 + m.vary(0, 0.03) * (y1 - y0), z), (x + w - 0.003, y1, z + h), rounded=0.0)
         x += w + (m.vary(0.05, 0.15) if m.rng.random() < 0.08 else 0.0)
@@ -206,7 +208,7 @@ def bookshelf(m: Model) -> None:
     m.box("wood", (-m.sx / 2, -m.sy / 2, 0), (-m.sx / 2 + side, m.sy / 2, m.sz))
     m.box("wood", (m.sx / 2 - side, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, m.sz))
     m.box("dark_wood", (-m.sx / 2 + side, m.sy / 2 - 0.015, 0), (m.sx / 2 - side, m.sy / 2, m.sz))
-    shelves = max(2, int(round(m.sz / 0.38)))
+    shelves = min(8, max(2, int(round(m.sz / 0.38))))
     pitch = (m.sz - side) / shelves
     for i in range(shelves + 1):
         z = i * pitch
@@ -216,15 +218,13 @@ def bookshelf(m: Model) -> None:
                        pitch - side - 0.02)
 
 
-def _doors(m: Model, x0, x1, z0, z1, count: int, y: float, knob_role: str = "metal") -> None:
+def _doors(m: Model, x0, x1, z0, z1, count: int, y: float) -> None:
     w = (x1 - x0) / count
     for i in range(count):
         a, b = x0 + i * w + 0.004, x0 + (i + 1) * w - 0.004
         m.box("wood", (a, y - 0.018, z0), (b, y, z1))
         hx = b - 0.05 if i % 2 == 0 else a + 0.05
-        if count == 1:
-            hx = b - 0.05
-        m.box(knob_role, (hx - 0.01, y - 0.04, z0 + 0.45 * (z1 - z0)), (hx + 0.01, y - 0.018, z0 + 0.45 * (z1 - z0) + min(0.15, 0.3 * (z1 - z0))))
+        m.box("metal", (hx - 0.01, y - 0.04, z0 + 0.45 * (z1 - z0)), (hx + 0.01, y - 0.018, z0 + 0.45 * (z1 - z0) + min(0.15, 0.3 * (z1 - z0))))
 
 
 def cabinet(m: Model) -> None:
@@ -258,7 +258,8 @@ def counter(m: Model) -> None:
     m.box("dark_wood", (-m.sx / 2 + 0.02, -m.sy / 2 + 0.08, 0), (m.sx / 2 - 0.02, m.sy / 2, 0.1))
     m.box("wood", (-m.sx / 2 + 0.02, -m.sy / 2 + 0.04, 0.1), (m.sx / 2 - 0.02, m.sy / 2, m.sz - top_t))
     m.box("marble", (-m.sx / 2, -m.sy / 2, m.sz - top_t), (m.sx / 2, m.sy / 2, m.sz))
-    _doors(m, -m.sx / 2 + 0.03, m.sx / 2 - 0.03, 0.12, m.sz - top_t - 0.02, max(1, int(round(m.sx / 0.5))), -m.sy / 2 + 0.04)
+    _doors(m, -m.sx / 2 + 0.03, m.sx / 2 - 0.03, 0.12, m.sz - top_t - 0.02, min(12, max(1, int(round(m.sx / 0.5)))),
+           -m.sy / 2 + 0.04)
 
 
 def bathtub(m: Model) -> None:

@@ -15,11 +15,11 @@ def tree(m: Model) -> None:
     m.lathe("bark", [(1.6 * r, 0), (r, 0.1 * m.sz), (0.8 * r, trunk_top + 0.15 * m.sz)])
     canopy_h = m.sz - trunk_top
     blobs = int(m.rng.integers(4, 7))
-    m.ball("leaf", (0, 0, trunk_top + 0.55 * canopy_h), (0.4 * m.sx, 0.4 * m.sy, 0.45 * canopy_h))
-    for _ in range(blobs):
-        a = m.vary(0, 2 * np.pi)
-        d = m.vary(0.15, 0.3)
-        s = m.vary(0.18, 0.26)
+    m.ball("leaf", (0, 0, trunk_top + 0.55 * canopy_h), (0.33 * m.sx, 0.33 * m.sy, 0.4 * canopy_h))
+    for k in range(blobs):
+        a = 2 * np.pi * k / blobs + m.vary(-0.3, 0.3)
+        d = m.vary(0.22, 0.3)
+        s = m.vary(0.18, 0.24)
         z = trunk_top + m.vary(0.3, 0.65) * canopy_h
         m.ball("leaf", (np.cos(a) * d * m.sx, np.sin(a) * d * m.sy, z), (s * m.sx, s * m.sy, s * 1.2 * canopy_h), fraction=0.7)
 
@@ -59,19 +59,11 @@ def palm_tree(m: Model) -> None:
         mid = crown + np.array([reach[0] * 0.5, reach[1] * 0.5, 0.12 * m.sz])
         tip = np.array([reach[0], reach[1], crown[2] - m.vary(0.1, 0.3) * m.sz])
         for a0, a1 in ((crown, mid), (mid, tip)):
-            centre = (a0 + a1) / 2
-            d = a1 - a0
-            length = float(np.linalg.norm(d))
-            leaf = P.sphere((0, 0, 0), (0.12 * length + 0.1, 0.02 * length + 0.01, length / 2), m.segments(0.5))
-            m.add("leaf", P.transform(leaf, P.affine(P.align_z(d), centre) @ P.affine(_spin(a), (0, 0, 0))))
+            length = float(np.linalg.norm(a1 - a0))
+            m.leaf("leaf", a0, a1, 0.12 * length + 0.1, 0.02 * length + 0.01)
     for k in range(3):
         a = 2 * np.pi * k / 3
         m.ball("bark", crown + np.array([np.cos(a) * r, np.sin(a) * r, -0.02 * m.sz]), (0.8 * r, 0.8 * r, 0.8 * r), fraction=0.5)
-
-
-def _spin(a: float) -> np.ndarray:
-    c, s = np.cos(a), np.sin(a)
-    return np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
 
 
 def _cactus(m: Model) -> None:
@@ -91,12 +83,13 @@ def bush(m: Model) -> None:
         return
     m.main = "leaf"
     flowers = m.has("flower", "rose", "hydrangea", "blossom")
-    m.ball("leaf", (0, 0, 0.45 * m.sz), (0.4 * m.sx, 0.4 * m.sy, 0.45 * m.sz))
-    for _ in range(int(m.rng.integers(4, 7))):
-        a = m.vary(0, 2 * np.pi)
-        s = m.vary(0.2, 0.3)
-        c = (np.cos(a) * 0.25 * m.sx, np.sin(a) * 0.25 * m.sy, m.vary(0.3, 0.5) * m.sz)
-        m.ball("leaf", c, (s * m.sx, s * m.sy, min(c[2], 0.4 * m.sz)), fraction=0.7)
+    m.ball("leaf", (0, 0, 0.45 * m.sz), (0.33 * m.sx, 0.33 * m.sy, 0.45 * m.sz))
+    blobs = int(m.rng.integers(5, 8))
+    for k in range(blobs):
+        a = 2 * np.pi * k / blobs + m.vary(-0.3, 0.3)
+        s = m.vary(0.17, 0.23)
+        c = (np.cos(a) * 0.3 * m.sx, np.sin(a) * 0.3 * m.sy, m.vary(0.3, 0.5) * m.sz)
+        m.ball("leaf", c, (s * m.sx, s * m.sy, min(c[2], 1.4 * s * m.sz)), fraction=0.7)
         if flowers:
             m.ball("flower", (c[0] * 1.5, c[1] * 1.5, c[2] + 0.1 * m.sz), (0.05 * m.sx,) * 2 + (0.05 * m.sz,), fraction=0.4)
 
@@ -110,8 +103,8 @@ def flower_bed(m: Model) -> None:
                    ((m.sx / 2 - edge, -m.sy / 2 + edge), (m.sx / 2, m.sy / 2 - edge))):
         m.box("stone", (*lo, 0), (*hi, wall_h))
     m.box("soil", (-m.sx / 2 + edge, -m.sy / 2 + edge, 0), (m.sx / 2 - edge, m.sy / 2 - edge, wall_h * 0.8), rounded=0.0)
-    nx = max(2, int((m.sx - 2 * edge) / 0.25))
-    ny = max(1, int((m.sy - 2 * edge) / 0.25))
+    nx = min(10, max(2, int((m.sx - 2 * edge) / 0.25)))
+    ny = min(6, max(1, int((m.sy - 2 * edge) / 0.25)))
     fx = (m.sx - 2 * edge) / nx
     fy = (m.sy - 2 * edge) / ny
     for i in range(nx):
@@ -120,9 +113,10 @@ def flower_bed(m: Model) -> None:
             y = -m.sy / 2 + edge + (j + 0.5) * fy + m.vary(-0.2, 0.2) * fy
             top = m.sz * m.vary(0.75, 1.0)
             s = 0.3 * min(fx, fy)
-            m.post("leaf", x, y, wall_h * 0.7, top - s, 0.01, fraction=0.25)
-            m.ball("flower" if (i + j) % 2 else "flower_alt", (x, y, top - s), (s, s, s), fraction=0.4)
-            m.ball("leaf", (x, y, wall_h * 0.9), (0.45 * fx, 0.45 * fy, 0.15 * m.sz), fraction=0.4)
+            m.post("leaf", x, y, wall_h * 0.7, top - s, 0.01, fraction=0.2)
+            m.ball("flower" if (i + j) % 2 else "flower_alt", (x, y, top - s), (s, s, s), fraction=0.3)
+            if (i + j) % 2 == 0:
+                m.ball("leaf", (x, y, wall_h * 0.9), (0.7 * fx, 0.7 * fy, 0.15 * m.sz), fraction=0.3)
 
 
 def _campfire(m: Model) -> None:
@@ -267,13 +261,13 @@ def sign(m: Model) -> None:
 
 def fence(m: Model) -> None:
     post = m.thick(0.08, 0.4 * m.sy)
-    count = max(2, int(round(m.sx / 1.5)) + 1)
+    count = min(40, max(2, int(round(m.sx / 1.5)) + 1))
     xs = np.linspace(-m.sx / 2 + post / 2, m.sx / 2 - post / 2, count)
     for x in xs:
         m.box("wood", (x - post / 2, -post / 2, 0), (x + post / 2, post / 2, m.sz))
     for z in (0.3 * m.sz, 0.75 * m.sz):
         m.box("wood", (-m.sx / 2, -m.sy / 2, z), (m.sx / 2, -m.sy / 2 + 0.35 * m.sy, z + 0.06 * m.sz))
-    picket = 0.08
+    picket = max(0.08, m.sx / 180)
     n = int(m.sx / (picket * 1.8))
     for i in range(n):
         x = -m.sx / 2 + (i + 0.5) * m.sx / n

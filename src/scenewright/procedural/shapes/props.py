@@ -142,12 +142,10 @@ def potted_plant(m: Model) -> None:
     leaves = int(m.rng.integers(6, 10))
     for k in range(leaves):
         a = 2 * np.pi * k / leaves + m.vary(-0.2, 0.2)
-        lean = m.vary(0.3, 0.7)
+        lean = m.vary(0.6, 1.0)
         tip = np.array([np.cos(a) * r * lean, np.sin(a) * r * lean, pot_h + top * m.vary(0.75, 1.0)])
-        mid = (np.array([0, 0, pot_h]) + tip) / 2
-        length = float(np.linalg.norm(tip - np.array([0, 0, pot_h])))
-        m.ball("leaf", mid, (0.22 * r, 0.22 * r, 0.5 * length), fraction=0.5)
-    m.ball("leaf", (0, 0, pot_h + 0.3 * top), (0.55 * r, 0.55 * r, 0.35 * top), fraction=0.6)
+        m.leaf("leaf", (0, 0, pot_h), tip, 0.28 * r, 0.05 * r)
+    m.ball("leaf", (0, 0, pot_h + 0.2 * top), (0.5 * r, 0.5 * r, 0.25 * top), fraction=0.6)
 
 
 def clock(m: Model) -> None:
@@ -273,7 +271,7 @@ def books(m: Model) -> None:
     if m.sz < max(m.sx, m.sy) * 0.6:
         z = 0.0
         while z < m.sz - 0.005:
-            h = min(m.vary(0.025, 0.05), m.sz - z)
+            h = min(m.vary(0.025, 0.05) * max(1.0, m.sz / 0.6), m.sz - z)
             dx, dy = m.vary(-0.05, 0.05) * m.sx, m.vary(-0.05, 0.05) * m.sy
             lo = (-0.45 * m.sx + dx, -0.45 * m.sy + dy, z)
             hi = (0.45 * m.sx + dx, 0.45 * m.sy + dy, z + h)
@@ -283,7 +281,7 @@ def books(m: Model) -> None:
         return
     x = -m.sx / 2
     while x < m.sx / 2 - 0.01:
-        w = min(m.vary(0.025, 0.06), m.sx / 2 - x)
+        w = min(m.vary(0.025, 0.06) * max(1.0, m.sx / 1.2), m.sx / 2 - x)
         m.box(roles[int(m.rng.integers(3))], (x, -m.sy / 2, 0), (x + w - 0.002, m.sy / 2, m.sz * m.vary(0.75, 1.0)), rounded=0.0)
         x += w
 
