@@ -7,6 +7,9 @@ import pytest
 from scenewright.backends.fake_openai import FakeOpenAI
 from scenewright.settings import Settings
 
+#: The edited-scene fixtures (``template``, ``folder``) live with the scenes they build.
+pytest_plugins = ["editing_scenes"]
+
 
 @pytest.fixture
 def openai_server():

@@ -1,4 +1,3 @@
-import numpy as np
 import trimesh
 from hypothesis import given, settings
 from hypothesis import strategies as st

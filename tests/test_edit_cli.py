@@ -5,7 +5,6 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from editing_scenes import folder, template  # noqa: F401  (fixtures)
 from editing_scenes import snapshot
 from scenewright.assets import load_meshes
 from scenewright.cli import main

@@ -7,7 +7,6 @@ import json
 
 import pytest
 
-from editing_scenes import folder, template  # noqa: F401  (fixtures)
 from editing_scenes import BoxMeshes, NoImages, RulePlanner
 from scenewright.backends import Backends
 from scenewright.editing import apply_edit, entries, redo, undo

@@ -5,14 +5,12 @@ from __future__ import annotations
 import io
 import json
 from collections import Counter
-from importlib import resources
 
 import pytest
 from PIL import Image
 
 from scenewright.analysis.stage import analyze
 from scenewright.backends import Backends
-from scenewright.cache import RequestCache
 from scenewright.errors import BackendError, InputError, MissingExtra
 from scenewright.folder import SceneFolder
 from scenewright.layout.stage import arrange
@@ -119,13 +117,12 @@ def test_interrupted_asset_stage_resumes_with_only_the_missing_assets(tmp_path):
     assert backends.meshes.calls["requests"] == len(scene.objects) - len(built)
 
 
-def test_cache_answers_a_fresh_run_of_the_same_text(tmp_path):
+def test_cache_spares_the_mesh_backend_on_a_fresh_run_of_the_same_text(tmp_path):
     settings = Settings(cache_dir=tmp_path / "cache")
     generate(TEXT, tmp_path / "a", backends=Backends.from_settings(settings), settings=settings, render=False)
     backends = _counting(settings)
     generate(TEXT, tmp_path / "b", backends=backends, settings=settings, render=False)
-    assert backends.vlm.calls["describe_objects"] == 0
-    assert backends.images.calls["ground_texture"] == 0
+    assert backends.meshes.calls["requests"] == 0
 
 
 def test_style_from_flag_then_text_then_default(tmp_path):
@@ -226,7 +223,7 @@ def test_analyze_saves_images_and_records_removed_objects(tmp_path):
     folder.create()
     scene = Scene(text="A bathtub with a faucet.")
     vlm = RedundantVLM()
-    analyze(scene, folder, vlm, DrawingImages(), RequestCache(None))
+    analyze(scene, folder, vlm, DrawingImages())
     assert folder.reference_image.is_file() and folder.ground_image.is_file()
     assert set(vlm.seen_images) == {"bathtub_1", "faucet_1"}
     assert [o.id for o in scene.objects] == ["bathtub_1"]
@@ -237,7 +234,7 @@ def test_analyze_saves_images_and_records_removed_objects(tmp_path):
 
     # A second pass finds every output in place and asks nothing again.
     vlm.find_redundant = lambda *a: pytest.fail("quality control ran twice")
-    again = analyze(scene, folder, vlm, DrawingImages(), RequestCache(None))
+    again = analyze(scene, folder, vlm, DrawingImages())
     assert len(again.removed) == 1
 
 
@@ -249,7 +246,7 @@ def test_analyze_refuses_a_text_without_objects(tmp_path):
     folder = SceneFolder(tmp_path / "x")
     folder.create()
     with pytest.raises(InputError, match="no object"):
-        analyze(Scene(text="blue sky"), folder, Nothing(), DrawingImages(), RequestCache(None))
+        analyze(Scene(text="blue sky"), folder, Nothing(), DrawingImages())
 
 
 # --- layout stage: the feedback loop -------------------------------------------------------------

@@ -96,7 +96,7 @@ def run_stages(
         note = _stage_note(progress, stage)
         note("started")
         if stage == "analyze":
-            analyze(scene, folder, backends.vlm, backends.images, cache, note)
+            analyze(scene, folder, backends.vlm, backends.images, note)
         elif stage == "assets":
             generate_assets(scene, folder, backends.meshes, cache, note)
         elif stage == "layout":

@@ -2,23 +2,21 @@
 
 Each step writes its output into the scene folder and the document before the next starts,
 and is skipped when that output is already there, so an interrupted run resumes where it
-stopped. Backend answers are also cached by request, so a fresh run of the same text with
-the same backends pays for nothing twice.
+stopped. Paid answers are cached by the remote backends themselves (keyed by the whole
+request), so a fresh run of the same text pays for nothing twice; the offline backends are
+cheap enough to ask again.
 """
 
 from __future__ import annotations
 
-import json
 import logging
 from collections.abc import Callable
 
-from scenewright import __version__
 from scenewright.backends import ImageGenerator, VisionLanguageModel
-from scenewright.cache import RequestCache, request_key
 from scenewright.errors import InputError
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
-from scenewright.scene import RemovedObject, Scene, SceneObject
+from scenewright.scene import RemovedObject, Scene
 
 log = logging.getLogger(__name__)
 
@@ -33,33 +31,20 @@ def _note(progress: Callable[[str], None] | None, message: str) -> None:
         progress(message)
 
 
-def _reference(
-    scene: Scene, folder: SceneFolder, images: ImageGenerator, cache: RequestCache
-) -> bytes | None:
+def _reference(scene: Scene, folder: SceneFolder, images: ImageGenerator) -> bytes | None:
     if folder.reference_image.is_file():
         return folder.reference_image.read_bytes()
-    key = request_key("reference", images.name, __version__, scene.text, scene.style)
-    data = cache.get("images", key)
+    data = images.reference_image(scene.text, scene.style)
     if data is None:
-        data = images.reference_image(scene.text, scene.style)
-        if data is None:
-            return None
-        cache.put("images", key, data)
+        return None
     write_atomic(folder.reference_image, data)
     scene.record(STAGE, "drew the reference image", step="reference", backend=images.name)
     return data
 
 
-def _objects(scene: Scene, vlm: VisionLanguageModel, reference: bytes | None, cache: RequestCache) -> None:
-    key = request_key("objects", vlm.name, __version__, scene.text, scene.style, reference or b"")
-    cached = cache.get("vlm", key)
-    if cached is not None:
-        objects = [SceneObject.model_validate(o) for o in json.loads(cached)]
-    else:
-        objects = vlm.describe_objects(scene.text, scene.style, reference)
-        scene.provenance += getattr(vlm, "last_repairs", [])  # what a remote model's answer needed repaired
-        if objects:
-            cache.put("vlm", key, json.dumps([o.model_dump(mode="json") for o in objects]).encode())
+def _objects(scene: Scene, vlm: VisionLanguageModel, reference: bytes | None) -> None:
+    objects = vlm.describe_objects(scene.text, scene.style, reference)
+    scene.provenance += getattr(vlm, "last_repairs", [])  # what a remote model's answer needed repaired
     if not objects:
         raise InputError(
             f"found no object to build in the text {scene.text[:80]!r}; name the things the scene "
@@ -71,36 +56,15 @@ def _objects(scene: Scene, vlm: VisionLanguageModel, reference: bytes | None, ca
     )
 
 
-def _image_key(images: ImageGenerator, scene: Scene, obj: SceneObject, reference: bytes | None) -> str:
-    return request_key(
-        "object_image", images.name, __version__, scene.style, obj.name, obj.visual_description,
-        obj.size.model_dump(), reference or b"",
-    )
-
-
 def _object_images(
     scene: Scene,
     folder: SceneFolder,
     images: ImageGenerator,
     reference: bytes | None,
-    cache: RequestCache,
     progress: Callable[[str], None] | None,
 ) -> None:
     wanted = [o for o in scene.objects if not (o.image and folder.resolve(o.image).is_file())]
-    drawn: dict[str, bytes] = {}
-    to_draw = []
-    for obj in wanted:
-        data = cache.get("images", _image_key(images, scene, obj, reference))
-        if data is None:
-            to_draw.append(obj)
-        else:
-            drawn[obj.id] = data
-    if to_draw:
-        fresh = images.object_images(to_draw, scene.style, reference, progress)
-        for obj in to_draw:
-            if obj.id in fresh:
-                cache.put("images", _image_key(images, scene, obj, reference), fresh[obj.id])
-                drawn[obj.id] = fresh[obj.id]
+    drawn = images.object_images(wanted, scene.style, reference, progress) if wanted else {}
     for obj in wanted:
         if obj.id in drawn:
             path = write_atomic(folder.object_image(obj.id), drawn[obj.id])
@@ -136,17 +100,9 @@ def _remove_redundant(scene: Scene, folder: SceneFolder, vlm: VisionLanguageMode
     )
 
 
-def _ground(
-    scene: Scene, folder: SceneFolder, images: ImageGenerator, reference: bytes | None, cache: RequestCache
-) -> None:
+def _ground(scene: Scene, folder: SceneFolder, images: ImageGenerator, reference: bytes | None) -> None:
     if not folder.ground_image.is_file():
-        key = request_key(
-            "ground", images.name, __version__, scene.text, scene.style, scene.ground.kind, reference or b""
-        )
-        data = cache.get("images", key)
-        if data is None:
-            data = images.ground_texture(scene.text, scene.style, scene.ground.kind, reference)
-            cache.put("images", key, data)
+        data = images.ground_texture(scene.text, scene.style, scene.ground.kind, reference)
         write_atomic(folder.ground_image, data)
         message = f"made the {scene.ground.kind} ground texture"
         scene.record(STAGE, message, step="ground", backend=images.name)
@@ -158,23 +114,22 @@ def analyze(
     folder: SceneFolder,
     vlm: VisionLanguageModel,
     images: ImageGenerator,
-    cache: RequestCache,
     progress: Callable[[str], None] | None = None,
 ) -> Scene:
     """Fill ``scene`` with its objects, their images and the ground texture; save after each step."""
     _note(progress, "reference image")
-    reference = _reference(scene, folder, images, cache)
+    reference = _reference(scene, folder, images)
     if not scene.objects:
         _note(progress, "reading the objects from the text")
-        _objects(scene, vlm, reference, cache)
+        _objects(scene, vlm, reference)
         folder.save(scene)
     _note(progress, f"object images for {len(scene.objects)} objects")
-    _object_images(scene, folder, images, reference, cache, progress)
+    _object_images(scene, folder, images, reference, progress)
     folder.save(scene)
     _note(progress, "quality control")
     _remove_redundant(scene, folder, vlm)
     folder.save(scene)
     _note(progress, "ground texture")
-    _ground(scene, folder, images, reference, cache)
+    _ground(scene, folder, images, reference)
     folder.save(scene)
     return scene

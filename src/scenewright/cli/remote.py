@@ -34,7 +34,6 @@ def bench_analysis(
     from scenewright.backends.fake_openai import CHAT, FakeOpenAI, chat_reply, object_item
     from scenewright.backends.openai_chat import OpenAIChatVLM
     from scenewright.backends.openai_images import OpenAIImages
-    from scenewright.cache import RequestCache
     from scenewright.folder import SceneFolder
     from scenewright.scene import Scene
     from scenewright.settings import Settings
@@ -60,7 +59,7 @@ def bench_analysis(
         # Backends are built before the clock starts, as the CLI builds them before the pipeline runs.
         vlm, images = OpenAIChatVLM("bench-model", settings), OpenAIImages("bench-image", settings)
         start = time.perf_counter()
-        analyze(scene, folder, vlm, images, RequestCache(settings.cache_dir))
+        analyze(scene, folder, vlm, images)
         seconds = time.perf_counter() - start
         image_calls = len(server.requests) - len([r for r in server.requests if r.path == CHAT])
     ideal = latency * (1 + math.ceil(objects / concurrency) + 1)

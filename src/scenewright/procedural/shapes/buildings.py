@@ -158,7 +158,34 @@ def _rocket(m: Model) -> None:
         linear = np.array([[d[0], -d[1], 0], [d[1], d[0], 0], [0, 0, 1]]) @ np.array([[1, 0, 0], [0, 0, 1], [0, 1, 0]], float)
         m.add("paint", P.transform(fin, P.affine(linear, (0, 0, 0))))
 
+def _lattice_tower(m: Model) -> None:
+    """A steel lattice tower: four tapering legs, cross bracing, arms near the top."""
+    m.main = "metal"
+    top = 0.82 * m.sz
+    bar = m.thick(0.006 * m.sz + 0.02, 0.03 * min(m.sx, m.sy) + 0.01)
+    foot, head = 0.4, 0.08
+    levels = 6
+    def corner(sx, sy, z):
+        k = foot + (head - foot) * z / top
+        return np.array([sx * k * m.sx, sy * k * m.sy, z])
+    corners = ((-1, -1), (1, -1), (1, 1), (-1, 1))
+    for sx, sy in corners:
+        m.beam("metal", corner(sx, sy, 0), corner(sx, sy, top), bar)
+    for i in range(levels):
+        z0, z1 = top * i / levels, top * (i + 1) / levels
+        for (ax, ay), (bx, by) in zip(corners, corners[1:] + corners[:1]):
+            m.beam("metal", corner(ax, ay, z0), corner(bx, by, z1), bar * 0.6)
+            m.beam("metal", corner(ax, ay, z1), corner(bx, by, z1), bar * 0.6)
+    m.beam("metal", corner(0, 0, top), (0, 0, m.sz), bar)
+    for z in (0.78 * m.sz, 0.9 * m.sz):
+        m.beam("metal", (-m.sx / 2, 0, z), (m.sx / 2, 0, z), bar)
+        for s in (-1, 1):
+            m.post("ceramic", s * 0.45 * m.sx, 0, z - 0.04 * m.sz, z, bar * 0.8, fraction=0.4)
+
 def tower(m: Model) -> None:
+    if m.named("pylon", "transmission tower", "radio tower", "antenna", "crane"):
+        _lattice_tower(m)
+        return
     if m.named("lighthouse"):
         _lighthouse(m)
         return

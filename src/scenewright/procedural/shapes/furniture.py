@@ -328,7 +328,25 @@ def stove(m: Model) -> None:
     m.box("screen", (-0.15 * m.sx, m.sy / 2 - 0.065, top + 0.04), (0.15 * m.sx, m.sy / 2 - 0.06, m.sz - 0.03), rounded=0.0)
 
 
+def _vending_machine(m: Model) -> None:
+    m.main = "paint"
+    m.box("paint", (-m.sx / 2, -m.sy / 2 + 0.02, 0), (m.sx / 2, m.sy / 2, m.sz))
+    m.box("glass", (-0.45 * m.sx, -m.sy / 2, 0.3 * m.sz), (0.18 * m.sx, -m.sy / 2 + 0.02, 0.92 * m.sz), rounded=0.0)
+    rows, cols = 5, 4
+    for r in range(rows):
+        for c in range(cols):
+            x = -0.42 * m.sx + (c + 0.5) * 0.57 * m.sx / cols
+            z = 0.33 * m.sz + (r + 0.3) * 0.58 * m.sz / rows
+            role = ("book_a", "book_b", "book_c", "flower_alt")[(r + c) % 4]
+            m.box(role, (x - 0.04 * m.sx, -m.sy / 2 + 0.04, z), (x + 0.04 * m.sx, -m.sy / 2 + 0.2 * m.sy, z + 0.06 * m.sz), rounded=0.0)
+    m.box("screen", (0.24 * m.sx, -m.sy / 2 + 0.01, 0.6 * m.sz), (0.44 * m.sx, -m.sy / 2 + 0.02, 0.75 * m.sz), rounded=0.0)
+    m.box("dark_plastic", (-0.4 * m.sx, -m.sy / 2 + 0.005, 0.08 * m.sz), (0.1 * m.sx, -m.sy / 2 + 0.02, 0.2 * m.sz), rounded=0.0)
+    m.box("light", (-m.sx / 2 + 0.02, -m.sy / 2 + 0.005, 0.94 * m.sz), (m.sx / 2 - 0.02, -m.sy / 2 + 0.02, 0.98 * m.sz), rounded=0.0)
+
 def fridge(m: Model) -> None:
+    if m.named("vending machine", "arcade", "atm"):
+        _vending_machine(m)
+        return
     m.main = "metal"
     m.box("metal", (-m.sx / 2, -m.sy / 2 + 0.04, 0), (m.sx / 2, m.sy / 2, m.sz))
     split = 0.68 * m.sz

@@ -248,7 +248,8 @@ def sign(m: Model) -> None:
     m.main = "paint"
     board_z = 0.55 * m.sz
     post = m.thick(0.05, 0.12 * m.sx)
-    m.box("canvas_alt", (-m.sx / 2, -0.3 * m.sy, board_z), (m.sx / 2, 0.2 * m.sy, m.sz))
+    glowing = m.has("neon", "holographic", "hologram", "led", "illuminated", "lit")
+    m.box("crystal" if glowing else "canvas_alt", (-m.sx / 2, -0.3 * m.sy, board_z), (m.sx / 2, 0.2 * m.sy, m.sz))
     m.box("paint", (-m.sx / 2 + 0.04 * m.sx, -0.3 * m.sy - 0.005, board_z + 0.6 * (m.sz - board_z)),
           (m.sx / 2 - 0.04 * m.sx, -0.3 * m.sy, board_z + 0.8 * (m.sz - board_z)), rounded=0.0)
     m.box("accent", (-m.sx / 2 + 0.1 * m.sx, -0.3 * m.sy - 0.005, board_z + 0.2 * (m.sz - board_z)),

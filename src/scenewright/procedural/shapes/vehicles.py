@@ -42,6 +42,7 @@ def car(m: Model) -> None:
 
 
 def truck(m: Model) -> None:
+    food = m.named("food truck", "ice cream truck", "food van")
     m.main = "paint"
     wr = min(0.17 * m.sz, 0.07 * m.sy)
     chassis = 1.2 * wr
@@ -52,6 +53,13 @@ def truck(m: Model) -> None:
     m.extrude("glass", [(-L + 0.01, 0.5 * m.sz), (-L + cab_len * 0.9, 0.5 * m.sz), (-L + cab_len * 0.9, 0.72 * m.sz),
                         (-L + 0.01, 0.72 * m.sz)], "x", -m.sx / 2 + 0.05 * m.sx, m.sx / 2 - 0.05 * m.sx)
     m.box("canvas_alt", (-m.sx / 2 + 0.02 * m.sx, -L + cab_len + 0.04 * m.sy, chassis), (m.sx / 2 - 0.02 * m.sx, L, m.sz))
+    if food:
+        y0, y1 = -L + cab_len + 0.12 * m.sy, L - 0.1 * m.sy
+        m.box("dark_plastic", (-m.sx / 2 + 0.01 * m.sx, y0, 0.5 * m.sz), (-m.sx / 2 + 0.02 * m.sx, y1, 0.8 * m.sz), rounded=0.0)
+        m.box("wood", (-m.sx / 2, y0, 0.48 * m.sz), (-m.sx / 2 + 0.02 * m.sx, y1, 0.5 * m.sz), rounded=0.0)
+        m.extrude("canvas", [(-m.sx / 2 + 0.02 * m.sx, 0.83 * m.sz), (-m.sx / 2, 0.78 * m.sz), (-m.sx / 2, 0.8 * m.sz),
+                             (-m.sx / 2 + 0.02 * m.sx, 0.85 * m.sz)], "y", y0, y1)
+        m.box("light", (-m.sx / 2 + 0.005 * m.sx, y0, 0.87 * m.sz), (-m.sx / 2 + 0.02 * m.sx, y1, 0.95 * m.sz), rounded=0.0)
     for y in (-L + 0.14 * m.sy, L - 0.32 * m.sy, L - 0.15 * m.sy):
         for s in (-1, 1):
             _wheel(m, s * m.sx / 2, y, wr, 0.12 * m.sx, s)
@@ -79,7 +87,29 @@ def bus(m: Model) -> None:
     m.box("screen", (-0.3 * m.sx, -L - 0.015, 0.9 * m.sz), (0.3 * m.sx, -L, 0.97 * m.sz), rounded=0.0)
 
 
+def _motorcycle(m: Model) -> None:
+    m.main = "paint"
+    r = min(0.3 * m.sy, 0.33 * m.sz)
+    tyre = 0.35 * r
+    yf, yr = -m.sy / 2 + r, m.sy / 2 - r
+    for y in (yf, yr):
+        m.torus("rubber", (0, y, r), r - tyre / 2, tyre / 2, axis="x")
+        m.cylinder("metal", (-0.12 * m.sx, y, r), (0.12 * m.sx, y, r), 0.5 * r, fraction=0.6)
+    m.box("dark_metal", (-0.2 * m.sx, -0.15 * m.sy, 0.25 * m.sz), (0.2 * m.sx, 0.15 * m.sy, 0.5 * m.sz))
+    m.ball("paint", (0, -0.12 * m.sy, 0.62 * m.sz), (0.22 * m.sx, 0.16 * m.sy, 0.1 * m.sz))
+    m.box("leather", (-0.16 * m.sx, 0.02 * m.sy, 0.55 * m.sz), (0.16 * m.sx, 0.3 * m.sy, 0.64 * m.sz))
+    m.beam("paint", (0, 0.1 * m.sy, 0.5 * m.sz), (0, yr, r), 0.08 * m.sx)
+    m.beam("chrome", (0, yf, r), (0, yf + 0.12 * m.sy, 0.8 * m.sz), 0.05 * m.sx)
+    m.cylinder("chrome", (-m.sx / 2, yf + 0.12 * m.sy, 0.8 * m.sz), (m.sx / 2, yf + 0.12 * m.sy, 0.8 * m.sz), 0.03 * m.sx,
+               fraction=0.4)
+    m.ball("light", (0, yf + 0.08 * m.sy, 0.7 * m.sz), (0.1 * m.sx, 0.04 * m.sy, 0.06 * m.sz), fraction=0.5)
+    m.cylinder("chrome", (0.15 * m.sx, -0.05 * m.sy, 0.3 * m.sz), (0.18 * m.sx, 0.45 * m.sy, 0.35 * m.sz), 0.05 * m.sx,
+               fraction=0.5)
+
 def bicycle(m: Model) -> None:
+    if m.named("motorcycle", "motorbike", "scooter", "moped"):
+        _motorcycle(m)
+        return
     m.main = "paint"
     r = min(0.32 * m.sy, 0.36 * m.sz)
     tube = m.thick(0.018, 0.2 * m.sx)
@@ -136,6 +166,13 @@ def cart(m: Model) -> None:
         m.box("wood", (x, -0.1 * m.sy, bed_z), (x + 0.04, m.sy / 2, m.sz))
     m.box("wood", (-0.35 * m.sx, m.sy / 2 - 0.04, bed_z), (0.35 * m.sx, m.sy / 2, m.sz))
     m.box("wood", (-0.35 * m.sx, -0.1 * m.sy, bed_z), (0.35 * m.sx, -0.1 * m.sy + 0.04, m.sz * 0.9))
+    if m.has("apple", "fruit", "vegetable", "flower", "melon", "pumpkin"):
+        role = "flower_alt" if m.has("pumpkin", "orange", "lemon") else "flower"
+        s = 0.08 * min(m.sx, m.sy)
+        for i in range(4):
+            for j in range(5):
+                c = (-0.28 * m.sx + i * 0.56 * m.sx / 3, -0.05 * m.sy + j * 0.5 * m.sy / 4, 0.8 * m.sz + (i + j) % 2 * s)
+                m.ball(role, c, (s, s, s), fraction=0.4)
     for s in (-1, 1):
         x = s * (m.sx / 2 - 0.03)
         m.torus("dark_wood", (x, 0.2 * m.sy, wr), wr - 0.03, 0.03, axis="x")
