@@ -22,7 +22,7 @@ from scenewright.geometry import GLTF_TO_SCENE
 from scenewright.procedural import SHAPES
 from scenewright.procedural.material import described_surfaces, find_colour, find_material
 from scenewright.procedural.meshes import ProceduralMeshes, build_glb, build_model, choose_shape, keyword_shape
-from scenewright.procedural.style import ROLES, STYLE_TABLE, resolve_style
+from scenewright.procedural.style import ROLES, resolve_style
 from scenewright.scene import STYLES, Vec3
 from scenewright.settings import Settings
 
@@ -250,10 +250,6 @@ def test_backend_generates_every_request():
     with pytest.raises(InputError, match="no argument"):
         ProceduralMeshes.from_spec("x", Settings())
     assert len(backend.params["code"]) == 16, "the asset cache key follows the generators' code"
-
-
-def test_style_table_matches_the_scene_styles():
-    assert set(STYLE_TABLE) == set(STYLES)
 
 
 VALIDATOR = Path(__file__).resolve().parents[1] / "tools" / "validate-gltf.mjs"

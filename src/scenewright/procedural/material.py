@@ -109,16 +109,17 @@ def find_colour(text: str) -> tuple[float, float, float] | None:
     return _colour(match) if match else None
 
 
-def find_material(text: str) -> Surface | None:
-    match = _MATERIAL_RE.search(text.lower())
-    if not match:
-        return None
-    word = match.group(1)
+def _material(word: str) -> Surface:
     return MATERIALS[_ADJECTIVES.get(word, word)]
 
 
+def find_material(text: str) -> Surface | None:
+    match = _MATERIAL_RE.search(text.lower())
+    return _material(match.group(1)) if match else None
+
+
 def _surface(base: Surface, material: str | None, colour) -> Surface:
-    surface = MATERIALS[_ADJECTIVES.get(material, material)] if material else base
+    surface = _material(material) if material else base
     return replace(surface, color=tuple(float(c) for c in colour)) if colour is not None else surface
 
 
