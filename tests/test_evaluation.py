@@ -8,7 +8,12 @@ from scenewright.evaluation import ABLATED, FULL, evaluate_scene
 from scenewright.evaluation.ablation import initial_objects, without_solver
 from scenewright.evaluation.judge import judge
 from scenewright.evaluation.physical import physical
-from scenewright.evaluation.report import aggregate, markdown_table, summarise, write_report
+from scenewright.evaluation.report import (
+    aggregate,
+    markdown_table,
+    summarise,
+    write_report,
+)
 from scenewright.evaluation.spatial import spatial
 from scenewright.folder import SceneFolder
 from scenewright.scene import Constraint, Scene, SceneObject, Vec3
@@ -188,3 +193,17 @@ def test_evaluate_command_scores_scene_folders(tmp_path):
     assert summary["indoor"]["full"]["cf"] == 50.0 and summary["indoor"]["full"]["cn"] == 0.5
     assert "(paper)" not in (out / "table.md").read_text()
     assert main(["evaluate", str(tmp_path / "missing"), "--out", str(out)]) == 2
+
+
+def test_bench_eval_generates_prompts_full_and_without_solver(tmp_path, capsys):
+    from scenewright.cli import main
+
+    out = tmp_path / "eval"
+    assert main(["bench", "eval", "--limit", "1", "--out", str(out)]) == 0
+    printed = json.loads(capsys.readouterr().out.strip().splitlines()[-1])
+    assert printed["prompts"] == 2
+    assert set(printed["summary"]) == {"indoor", "open-domain"}
+    for methods in printed["summary"].values():
+        assert set(methods) == {FULL, ABLATED}
+        assert methods[FULL]["scenes"] == 1 and methods[FULL]["cf"] is not None
+    assert {p.name for p in out.iterdir()} == {"report.json", "table.md", "chart.png"}

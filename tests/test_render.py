@@ -66,10 +66,12 @@ def test_visibility_decodes_indices_and_ignores_background():
     assert counts["o0"] == 2 and counts["o257"] == 1 and counts["o1"] == 0
 
 
-def test_best_view_prefers_more_objects_then_more_pixels_then_paper_order():
+def test_best_view_prefers_more_objects_then_well_shown_ones_then_pixels_then_paper_order():
     assert best_view({"iso_left": {"a": 5, "b": 0}, "front": {"a": 1, "b": 1}}) == "front"
     assert best_view({"iso_left": {"a": 5, "b": 1}, "front": {"a": 9, "b": 1}}) == "front"
     assert best_view({"iso_left": {"a": 1}, "front": {"a": 1}, "right": {"a": 1}}) == "iso_left"
+    # Same objects seen: the view where fewer are mostly hidden wins over the one with more pixels.
+    assert best_view({"iso_left": {"a": 60, "b": 30}, "right": {"a": 200, "b": 5}}) == "iso_left"
 
 
 def test_bounds_cover_objects_and_footprint():
@@ -105,7 +107,7 @@ def test_missing_bpy_names_the_extra_before_starting_blender(tmp_path, monkeypat
 def test_draft_render_shows_every_object_in_its_index_pass(tmp_path):
     scene, folder = small_scene(tmp_path)
     paths = render(scene, folder, draft=True, keep_all=True)
-    assert [p.name for p in paths][0] == f"{render_info(folder)['best']}.png"
+    assert paths[0].name == f"{render_info(folder)['best']}.png"
     assert sorted(p.name for p in paths) == sorted(f"{v}.png" for v in VIEWS)
     info = json.loads((folder.renders / "renders.json").read_text())
     assert info["missing"] == []

@@ -10,7 +10,13 @@ from typing import Annotated
 import typer
 
 from scenewright.cli.app import app, bench_app
-from scenewright.cli.options import ApiKeyEnvOption, BaseUrlOption, ConfigOption, VlmOption, build_settings
+from scenewright.cli.options import (
+    ApiKeyEnvOption,
+    BaseUrlOption,
+    ConfigOption,
+    VlmOption,
+    build_settings,
+)
 
 
 def _clip(weights: Path | None):

@@ -122,7 +122,7 @@ def render(
 def _run_worker(job_path: Path, result_path: Path, timeout: float) -> dict:
     command = [sys.executable, "-m", "scenewright.render.worker", str(job_path)]
     try:
-        proc = subprocess.run(command, capture_output=True, text=True, timeout=timeout)
+        proc = subprocess.run(command, capture_output=True, text=True, timeout=timeout, check=False)
     except subprocess.TimeoutExpired:
         raise BackendError(f"Blender did not finish rendering within {timeout:.0f} s; lower --samples or --resolution") from None
     if proc.returncode != 0 or not result_path.is_file():

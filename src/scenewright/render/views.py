@@ -23,7 +23,7 @@ VIEWS: dict[str, tuple[float, float]] = {
 LENS_MM = 35.0
 SENSOR_MM = 36.0
 #: Room left around the framed bounds, as a share of the view.
-MARGIN = 1.1
+MARGIN = 1.03
 
 
 def view_direction(name: str) -> np.ndarray:
@@ -78,10 +78,25 @@ def visibility(index_image: np.ndarray, ids: Sequence[str]) -> dict[str, int]:
     return {object_id: int(counts[i + 1]) for i, object_id in enumerate(ids)}
 
 
+#: An object counts as well shown in a view when it has at least this share of the pixels it
+#: has in the view that shows it most (less means it is mostly hidden behind others).
+WELL_SHOWN = 0.25
+
+
 def best_view(visible: Mapping[str, Mapping[str, int]]) -> str:
-    """The view showing the most objects, then the most object pixels; ties keep the paper's order."""
+    """The view showing the most objects, then the most of them well, then the most object pixels.
+
+    Pixels come last because they only reward the view closest to the objects; ties keep the
+    paper's order.
+    """
     order = list(visible)
-    return max(
-        order,
-        key=lambda v: (sum(1 for n in visible[v].values() if n > 0), sum(visible[v].values()), -order.index(v)),
-    )
+    ids = {object_id for counts in visible.values() for object_id in counts}
+    most = {i: max(visible[v].get(i, 0) for v in order) for i in ids}
+
+    def key(view: str):
+        counts = visible[view]
+        shown = sum(1 for n in counts.values() if n > 0)
+        well = sum(1 for i, n in counts.items() if n > 0 and n >= WELL_SHOWN * most[i])
+        return (shown, well, sum(counts.values()), -order.index(view))
+
+    return max(order, key=key)

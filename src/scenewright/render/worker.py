@@ -26,7 +26,13 @@ from mathutils import Matrix
 from PIL import Image
 
 from scenewright.files import write_atomic
-from scenewright.render.views import LENS_MM, SENSOR_MM, best_view, camera_matrix, visibility
+from scenewright.render.views import (
+    LENS_MM,
+    SENSOR_MM,
+    best_view,
+    camera_matrix,
+    visibility,
+)
 
 log = logging.getLogger(__name__)
 
@@ -216,6 +222,7 @@ def render_index(path: Path, override) -> None:
     scene.render.film_transparent = True
     scene.view_settings.view_transform = "Raw"
     scene.view_settings.look = "None"
+    scene.view_settings.exposure = 0.0
     scene.render.filepath = str(path)
     bpy.ops.render.render(write_still=True)
     layer.material_override = None
@@ -239,6 +246,7 @@ def render_beauty(path: Path, job: dict, transform: str) -> None:
     scene.view_settings.view_transform = transform
     # AgX alone flattens saturated asset colours; its punchy look keeps them.
     scene.view_settings.look = "AgX - Punchy" if transform == "AgX" else "None"
+    scene.view_settings.exposure = 0.4 if transform == "AgX" else 0.0  # AgX maps mid-grey darker
     scene.render.filepath = str(path)
     bpy.ops.render.render(write_still=True)
 
