@@ -33,3 +33,10 @@ def test_paths_are_relative_and_portable(tmp_path):
     folder = SceneFolder(tmp_path)
     assert folder.relative(folder.asset("sofa_1")) == "assets/sofa_1.glb"
     assert folder.resolve("images/objects/a.png") == folder.object_image("a")
+
+
+def test_relative_accepts_absolute_paths_of_a_relatively_named_folder(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    folder = SceneFolder("scene")
+    absolute = (tmp_path / "scene" / "renders" / "front.png").resolve()
+    assert folder.relative(absolute) == "renders/front.png"

@@ -65,8 +65,12 @@ class SceneFolder:
         return self.root / "history"
 
     def relative(self, path: Path) -> str:
-        """How the document refers to a file of the folder (portable, POSIX separators)."""
-        return Path(path).relative_to(self.root).as_posix()
+        """How the document refers to a file of the folder (portable, POSIX separators).
+
+        Both sides are resolved, so a folder given as a relative path still recognises the
+        absolute paths a subprocess (the Blender worker) reports back.
+        """
+        return Path(path).resolve().relative_to(self.root.resolve()).as_posix()
 
     def resolve(self, relative: str) -> Path:
         return self.root / relative
