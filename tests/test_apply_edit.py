@@ -223,3 +223,26 @@ def test_turning_in_place_turns_what_rests_on_it_too(folder, backends):
     assert after.get("vase_1").yaw == pytest.approx(90.0)
     assert np.allclose(pose(after.get("coffee_table_1"))[:3], pose(before.get("coffee_table_1"))[:3])
     assert_sound(folder, after)
+
+
+def test_add_records_where_the_new_object_started_and_delete_drops_it(folder, backends):
+    scene = folder.load()
+    scene.remember_initial_poses()  # as the layout stage leaves a generated scene
+    folder.save(scene)
+    after = edit(folder, "add a red armchair next to the sofa", backends)
+    (new,) = {o.id for o in after.objects} - {o.id for o in scene.objects}
+    assert set(after.initial) == set(scene.initial) | {new}
+    assert all(after.initial[oid] == scene.initial[oid] for oid in scene.initial)
+    start = after.initial[new]
+    sofa = after.get("sofa_1").position  # the edit starts the search at the first target
+    assert (start.position.x, start.position.y) == (sofa.x, sofa.y)
+    assert start.position.z == after.get(new).size.z / 2
+    assert start.position != after.get(new).position  # the solver moved it off the sofa; the record stayed
+    gone = edit(folder, "remove the coffee table", backends)
+    assert set(gone.initial) == set(after.initial) - {"coffee_table_1", "vase_1"}
+
+
+def test_an_add_records_only_the_new_object_in_a_scene_without_recorded_poses(folder, backends):
+    before = folder.load()
+    after = edit(folder, "add a red armchair next to the sofa", backends)
+    assert set(after.initial) == {o.id for o in after.objects} - {o.id for o in before.objects} != set()

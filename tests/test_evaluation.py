@@ -16,7 +16,7 @@ from scenewright.evaluation.report import (
 )
 from scenewright.evaluation.spatial import spatial
 from scenewright.folder import SceneFolder
-from scenewright.scene import Constraint, Scene, SceneObject, Vec3
+from scenewright.scene import Constraint, Pose, Scene, SceneObject, Vec3
 
 
 def box(object_id, x, y, z, sx, sy, sz, yaw=0.0):
@@ -123,26 +123,36 @@ def test_offline_judge_is_reported_unavailable_not_faked(tmp_path):
     assert "no render" in no_render.unavailable["judge"]
 
 
-class Proposer:
-    """A vision-language model whose initial layout stacks both crates in one place."""
-
-    name = "proposer"
-
-    def describe_objects(self, text, style, reference):
-        return [box("crate_1", 0, 0, 0.25, 0.5, 0.5, 0.5), box("crate_2", 0.1, 0, 0.25, 0.5, 0.5, 0.5)]
-
-
-def test_ablation_keeps_the_initial_poses_and_the_assets(tmp_path):
+def stacked() -> Scene:
+    """Two crates apart, as solved, whose recorded initial poses overlap (the model stacked them)."""
     scene = tidy()
+    scene.initial = {
+        "crate_1": Pose(position=Vec3(x=0.0, y=0.0, z=0.25), rotation=Vec3(z=0.0)),
+        "crate_2": Pose(position=Vec3(x=0.1, y=0.05, z=0.25), rotation=Vec3(z=30.0)),
+    }
+    return scene
+
+
+def test_ablation_keeps_the_recorded_initial_poses_and_the_assets():
+    scene = stacked()
     scene.objects[1] = scene.objects[1].model_copy(update={"asset": "assets/crate_2.glb"})
-    initial = initial_objects(scene, SceneFolder(tmp_path), Proposer())
-    ablated = without_solver(scene, initial)
-    assert [o.position.x for o in ablated.objects] == [0.0, 0.1]
+    ablated = without_solver(scene, initial_objects(scene))
+    assert {o.id: Pose(position=o.position, rotation=o.rotation) for o in ablated.objects} == scene.initial
     assert ablated.objects[1].asset == "assets/crate_2.glb"
     assert ablated.layout is not None and ablated.layout.solver is False
+    assert [o.position.x for o in scene.objects] == [-1.0, 1.0]  # the scene itself is untouched
     full = evaluate_scene(scene, name="s", method=FULL)
     ablation = evaluate_scene(ablated, name="s", method=ABLATED)
     assert full.collision_free and ablation.collisions == [("crate_1", "crate_2")]
+
+
+def test_ablation_keeps_the_current_pose_of_an_object_with_none_recorded(caplog):
+    scene = stacked()
+    del scene.initial["crate_2"]
+    initial = initial_objects(scene)
+    assert initial[0].position == scene.initial["crate_1"].position
+    assert initial[1].position == scene.objects[1].position
+    assert "crate_2" in caplog.text
 
 
 def test_report_writes_json_table_and_chart(tmp_path):
@@ -182,7 +192,7 @@ def test_evaluate_command_scores_scene_folders(tmp_path):
     from scenewright.cli import main
 
     folders = []
-    for name, scene in (("a", cluttered()), ("b", tidy())):
+    for name, scene in (("a", cluttered()), ("b", stacked())):
         folder = SceneFolder(tmp_path / name)
         folder.create()
         folder.save(scene)
@@ -191,6 +201,10 @@ def test_evaluate_command_scores_scene_folders(tmp_path):
     assert main(["evaluate", *folders, "--out", str(out), "--group", "indoor"]) == 0
     summary = json.loads((out / "report.json").read_text())["summary"]
     assert summary["indoor"]["full"]["cf"] == 50.0 and summary["indoor"]["full"]["cn"] == 0.5
+    assert ABLATED not in summary["indoor"]
+    assert main(["evaluate", *folders, "--out", str(out), "--group", "indoor", "--ablation"]) == 0
+    summary = json.loads((out / "report.json").read_text())["summary"]
+    assert summary["indoor"][FULL]["cn"] == 0.5 and summary["indoor"][ABLATED]["cn"] == 1.0
     assert "(paper)" not in (out / "table.md").read_text()
     assert main(["evaluate", str(tmp_path / "missing"), "--out", str(out)]) == 2
 

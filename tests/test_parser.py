@@ -376,3 +376,13 @@ def test_every_and_each_multiply():
 
 def test_a_plant_in_a_pot_is_one_object():
     assert counts("A fig grows in a pot beside the bed.") == Counter({"potted_plant": 1, "bed": 1})
+
+
+def test_it_after_a_relation_names_that_relation_s_target():
+    parsed = parse_scene(
+        "A playground in a park: a red slide stands next to a blue swing, "
+        "and a wooden bench in front of the swing facing it."
+    )
+    relations = {(c.source, c.relation, c.target) for c in parsed.constraints()}
+    assert ("bench_1", "face to", "swing_1") in relations
+    assert parsed.ground == "grass"

@@ -306,3 +306,18 @@ def test_feedback_loop_is_bounded_and_keeps_the_best_round(tmp_path):
     assert len(vlm.reports) == 2
     assert not scene.layout.complete and scene.layout.unplaced[0].id == "sofa_1"
     assert Scene.load(folder.document).layout == scene.layout
+
+
+def test_arrange_records_the_proposed_poses_once_before_solving(tmp_path):
+    scene, folder = _room(tmp_path)
+    scene.get("sofa_1").position = Vec3(x=0.3, z=0.4)  # inside the table: the solver has to move it
+    proposed = {o.id: (o.position.tuple(), o.rotation.tuple()) for o in scene.objects}
+    arrange(scene, folder, FeedbackVLM(give_up=False), {}, rounds=3, time_limit=2.0)
+    recorded = {oid: (p.position.tuple(), p.rotation.tuple()) for oid, p in scene.initial.items()}
+    assert recorded == proposed
+    assert scene.get("sofa_1").position.tuple() != proposed["sofa_1"][0]
+    assert Scene.load(folder.document).initial == scene.initial
+    first = {oid: pose.model_copy(deep=True) for oid, pose in scene.initial.items()}
+    scene.constraints = []  # arranging again (a resume, a new round of constraints) starts from solved poses
+    arrange(scene, folder, FeedbackVLM(give_up=False), {}, rounds=3, time_limit=2.0)
+    assert scene.initial == first

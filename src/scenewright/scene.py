@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import re
+from collections.abc import Iterable
 from datetime import datetime, timezone
 from pathlib import Path
 from typing import Any, Literal
@@ -98,6 +99,13 @@ class SceneObject(_Model):
     @property
     def yaw(self) -> float:
         return self.rotation.z
+
+
+class Pose(_Model):
+    """Where an object stands and how it is turned, apart from what it is."""
+
+    position: Vec3
+    rotation: Vec3
 
 
 class Constraint(_Model):
@@ -196,6 +204,9 @@ class Scene(_Model):
     bounds: tuple[float, float] | None = None
     backends: dict[str, str] = Field(default_factory=dict)
     layout: LayoutReport | None = None
+    #: The poses the vision-language model proposed, before the solver moved anything; kept for
+    #: the paper's without-solver ablation, since a remote model asked again answers afresh.
+    initial: dict[str, Pose] = Field(default_factory=dict)
     #: Names of the stages whose output is complete, in order; drives resume.
     done: list[str] = Field(default_factory=list)
     provenance: list[Event] = Field(default_factory=list)
@@ -225,6 +236,17 @@ class Scene(_Model):
                 return obj
         known = ", ".join(o.id for o in self.objects) or "none"
         raise InputError(f"no object with id {object_id!r}; objects are: {known}")
+
+    def remember_initial_poses(self, ids: Iterable[str] | None = None) -> None:
+        """Record the current pose of each object (of ``ids``, else every one) as its initial one.
+
+        An object that already has one keeps it: the first proposal is what the ablation
+        measures, and a resumed or repeated layout starts from poses the solver already moved.
+        """
+        wanted = None if ids is None else set(ids)
+        for obj in self.objects:
+            if obj.id not in self.initial and (wanted is None or obj.id in wanted):
+                self.initial[obj.id] = Pose(position=obj.position.model_copy(), rotation=obj.rotation.model_copy())
 
     def record(self, stage: str, message: str, **data: Any) -> None:
         self.provenance.append(Event(stage=stage, message=message, data=data))

@@ -304,7 +304,7 @@ _GROUND_WORDS = [
     ("gravel", ("gravel",)),
     ("snow", ("snow", "snowy", "snow covered", "frozen", "icy", "winter")),
     ("sand", ("sand", "sandy", "beach", "desert", "dunes", "dune", "oasis")),
-    ("rubber", ("rubber ground", "rubber floor", "rubber mat", "rubber flooring", "gym floor", "playground", "gym")),
+    ("rubber", ("rubber ground", "rubber floor", "rubber mat", "rubber flooring", "gym floor", "gym")),
     ("marble", ("marble floor", "marble floors", "marble tiles", "marble flooring")),
     ("tiles", ("tile", "tiles", "tiled", "bathroom", "kitchen", "laboratory", "lab", "spa")),
     ("carpet", ("carpeted", "wall to wall carpet", "carpet floor", "bedroom", "nursery", "office", "conference")),
@@ -1018,7 +1018,8 @@ class _Reader:
             target = "it" if c.head is not None else None
             rel = replace(rel, elliptic=True)
         if isinstance(target, str) and target != "each other":
-            prefer = list(prev_subject) if c.main and srcs == c.main else []
+            # "a bench in front of the swing, facing it": the clause's own last target first.
+            prefer = list(c.last_target) or (list(prev_subject) if c.main and srcs == c.main else [])
             targets: list[int] | str = self._pronoun(target, c, srcs, prefer) if c.head is None else list(c.head)
             if c.head is not None and srcs == c.head:
                 targets = self._pronoun(target, c, srcs, prefer)

@@ -30,7 +30,8 @@ def evaluate_command(
     directories: Annotated[list[Path], typer.Argument(help="Scene folders to score.")],
     out: Annotated[Path, typer.Option("--out", help="Folder for report.json, table.md and chart.png.")],
     ablation: Annotated[
-        bool, typer.Option("--ablation", help="Also score each scene laid out without the solver (initial poses).")
+        bool,
+        typer.Option("--ablation", help="Also score each scene at the model's initial poses, as before the solver."),
     ] = False,
     clip_weights: Annotated[
         Path | None, typer.Option("--clip-weights", help="Local open_clip ViT-B/32 checkpoint for the CLIP score.")
@@ -50,13 +51,12 @@ def evaluate_command(
     from scenewright.evaluation.report import write_report
 
     settings = build_settings(vlm=vlm, base_url=base_url, config=config, api_key_env=api_key_env)
-    model = create_backend("vlm", settings.vlm, settings) if (ablation or judge) else None
     results = evaluate(
         directories,
         group=group,
-        ablation_vlm=model if ablation else None,
+        ablation=ablation,
         clip=_clip(clip_weights),
-        judge_vlm=model if judge else None,
+        judge_vlm=create_backend("vlm", settings.vlm, settings) if judge else None,
     )
     paths = write_report(results, out, paper=False)
     typer.echo(paths["table"].read_text(encoding="utf-8"))
@@ -99,7 +99,7 @@ def bench_eval(
             folder = Path(tmp) / entry.id
             generate(entry.text, folder, backends=backends, settings=settings, style=entry.style, render=False)
             group = PAPER_GROUPS.get(entry.domain, entry.domain)
-            results += evaluate([folder], group=group, ablation_vlm=backends.vlm)
+            results += evaluate([folder], group=group, ablation=True)
     for r in results:  # the temporary folders are gone; name scenes by their prompt
         r.scene = Path(r.scene).name
     paths = write_report(results, out)

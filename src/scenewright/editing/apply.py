@@ -294,6 +294,7 @@ def _delete(edit: _Edit) -> None:
     edit.changes += [f"dropped '{c}'" for c in dropped]
     scene.objects = [o for o in scene.objects if o.id not in gone]
     scene.constraints = [c for c in scene.constraints if c not in dropped]
+    scene.initial = {oid: pose for oid, pose in scene.initial.items() if oid not in gone}
 
 
 def _renew_constraints(edit: _Edit, focus: str) -> tuple[list[Constraint], list[Constraint], list[Constraint]]:
@@ -434,6 +435,7 @@ def _add(edit: _Edit, folder: SceneFolder, backends: Backends, settings: Setting
     mesh = _stage_asset(edit, obj, folder, backends, settings)
     scene.constraints = scene.constraints + list(plan.constraints)
     meshes = _meshes(scene, folder, {obj.id: mesh})
+    scene.remember_initial_poses([obj.id])  # where it starts, at its built size: its layout without the solver
     _place(edit, [obj.id], list(plan.constraints), meshes, settings)
     p = obj.position
     edit.changes.append(f"added {obj.id} ({obj.name}) at ({p.x:.2f}, {p.y:.2f}, {p.z:.2f})")

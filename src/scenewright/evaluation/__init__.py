@@ -103,13 +103,14 @@ def evaluate(
     folders: Sequence[SceneFolder | str | Path],
     *,
     group: str = "scenes",
-    ablation_vlm: VisionLanguageModel | None = None,
+    ablation: bool = False,
     clip: ClipScorer | None = None,
     judge_vlm: VisionLanguageModel | None = None,
 ) -> list[SceneMetrics]:
-    """Metrics of each scene folder; with ``ablation_vlm`` also its layout without the solver.
+    """Metrics of each scene folder; with ``ablation`` also its layout without the solver.
 
-    The ablated layout is not rendered, so its CLIP and judge scores are reported unavailable.
+    The ablated layout is the initial one recorded in the document; it is not rendered, so its
+    CLIP and judge scores are reported unavailable.
     """
     from scenewright.assets import load_meshes
     from scenewright.evaluation.ablation import initial_objects, without_solver
@@ -126,8 +127,8 @@ def evaluate(
                 scene, name=name, group=group, meshes=meshes, image=best_render(folder), clip=clip, vlm=judge_vlm
             )
         )
-        if ablation_vlm is not None:
-            ablated = without_solver(scene, initial_objects(scene, folder, ablation_vlm), meshes)
+        if ablation:
+            ablated = without_solver(scene, initial_objects(scene), meshes)
             results.append(
                 evaluate_scene(ablated, name=name, group=group, method=ABLATED, meshes=meshes, clip=clip, vlm=judge_vlm)
             )

@@ -1,33 +1,44 @@
 """The paper's ablation: the same objects and assets, laid out without the solver.
 
-"Without the layout solver" keeps the vision-language model's initial layout. A finished
-scene holds only the solved poses, so the initial ones are asked again from the same
-backend; the offline backend is deterministic and gives back exactly the poses the
-analysis stage started from (a remote one gives a fresh sample of the same kind).
+"Without the layout solver" keeps the vision-language model's initial layout. The layout
+stage records those poses in the document (``Scene.initial``) before its first solve, and an
+``add`` edit records the pose its new object starts from, so the ablation reads exactly the
+layout the solver started from; asking a remote model again would give a fresh sample.
 """
 
 from __future__ import annotations
 
+import logging
 from collections.abc import Mapping
 
 import trimesh
 
-from scenewright.backends import VisionLanguageModel
-from scenewright.folder import SceneFolder
 from scenewright.layout import solve
 from scenewright.scene import Scene, SceneObject
 
+log = logging.getLogger(__name__)
 
-def initial_objects(scene: Scene, folder: SceneFolder, vlm: VisionLanguageModel) -> list[SceneObject]:
-    """The scene's objects (sizes, assets as built) at the poses the backend first proposed."""
-    reference = folder.reference_image.read_bytes() if folder.reference_image.is_file() else None
-    proposed = {obj.id: obj for obj in vlm.describe_objects(scene.text, scene.style, reference)}
-    return [
-        obj.model_copy(update={"position": proposed[obj.id].position, "rotation": proposed[obj.id].rotation})
-        if obj.id in proposed
-        else obj
-        for obj in scene.objects
-    ]
+
+def initial_objects(scene: Scene) -> list[SceneObject]:
+    """The scene's objects (sizes, assets as built) at their recorded initial poses.
+
+    An object with none recorded (a scene laid out before the poses were kept) stays where
+    it is, which makes it count as solved; a warning names those objects.
+    """
+    missing = [obj.id for obj in scene.objects if obj.id not in scene.initial]
+    if missing:
+        log.warning(
+            "no initial pose recorded for %s (laid out before scenewright kept them); the ablation keeps "
+            "their solved poses",
+            ", ".join(missing),
+        )
+    out = []
+    for obj in scene.objects:
+        pose = scene.initial.get(obj.id)
+        if pose is not None:
+            obj = obj.model_copy(update={"position": pose.position.model_copy(), "rotation": pose.rotation.model_copy()})
+        out.append(obj)
+    return out
 
 
 def without_solver(

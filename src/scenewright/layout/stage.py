@@ -59,6 +59,7 @@ def arrange(
         constraints = vlm.write_constraints(scene.text, scene.objects, reference)
         scene.provenance += getattr(vlm, "last_repairs", [])  # what a remote model's answer needed repaired
         scene.record(STAGE, f"wrote {len(constraints)} constraints", backend=vlm.name)
+    scene.remember_initial_poses()  # the model's proposal, before any solve moves it (the ablation's layout)
     best: LayoutResult | None = None
     for number in range(rounds + 1):
         result = solve(
