@@ -51,6 +51,7 @@ def _objects(scene: Scene, vlm: VisionLanguageModel, reference: bytes | None) ->
             "holds, e.g. 'a wooden table with four chairs around it'"
         )
     scene.objects = objects
+    scene.initial = {}  # poses proposed for an earlier object list no longer apply
     scene.record(
         STAGE, f"found {len(objects)} objects", step="objects", backend=vlm.name, ids=[o.id for o in objects]
     )
