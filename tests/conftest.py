@@ -11,6 +11,12 @@ from scenewright.settings import Settings
 pytest_plugins = ["editing_scenes"]
 
 
+@pytest.fixture(autouse=True)
+def private_cache(tmp_path_factory, monkeypatch):
+    """Commands that build their own Settings cache under XDG_CACHE_HOME: never the user's."""
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path_factory.mktemp("xdg-cache")))
+
+
 @pytest.fixture
 def openai_server():
     """A scripted OpenAI-compatible server on 127.0.0.1 (see scenewright.backends.fake_openai)."""

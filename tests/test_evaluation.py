@@ -221,3 +221,29 @@ def test_bench_eval_generates_prompts_full_and_without_solver(tmp_path, capsys):
         assert set(methods) == {FULL, ABLATED}
         assert methods[FULL]["scenes"] == 1 and methods[FULL]["cf"] is not None
     assert {p.name for p in out.iterdir()} == {"report.json", "table.md", "chart.png"}
+
+
+def test_evaluate_judges_renders_through_a_remote_model(tmp_path, openai_server, monkeypatch):
+    """Pos., Rot., SA and PSA from a scripted OpenAI-compatible server, driven through the CLI."""
+    from scenewright.backends.fake_openai import CHAT, chat_reply
+    from scenewright.cli import main
+
+    monkeypatch.setenv("OPENAI_API_KEY", "test-key")
+    folder = SceneFolder(tmp_path / "tidy")
+    folder.create()
+    folder.save(tidy())
+    folder.renders.mkdir()
+    Image.new("RGB", (16, 9), (90, 120, 200)).save(folder.renders / "front.png")
+    (folder.renders / "renders.json").write_text(json.dumps({"best": "front", "images": {"front": "renders/front.png"}}))
+    openai_server.script(
+        CHAT, chat_reply("Placement is sound.\nScore: 70"), chat_reply("Mostly well turned. 60"),
+        chat_reply("Matches the text.\nFinal score: 80/100"),
+    )
+    out = tmp_path / "report"
+    argv = ["evaluate", str(folder.root), "--out", str(out), "--group", "indoor", "--judge",
+            "--vlm", "openai:test-model", "--base-url", openai_server.url]
+    assert main(argv) == 0
+    row = json.loads((out / "report.json").read_text())["summary"]["indoor"][FULL]
+    assert (row["pos"], row["rot"], row["sa"], row["psa"]) == (70.0, 60.0, 80.0, 80.0)
+    asked = openai_server.seen(CHAT)
+    assert len(asked) == 3 and all(len(r.image_urls) == 1 for r in asked)
