@@ -12,7 +12,7 @@ from scenewright.backends import Backends
 from scenewright.editing import EditPlan, apply_edit, validate_plan
 from scenewright.errors import InfeasibleLayout, InputError
 from scenewright.layout import check, colliding_pairs
-from scenewright.scene import Constraint
+from scenewright.scene import Constraint, Vec3
 from scenewright.settings import Settings
 
 
@@ -163,6 +163,9 @@ def test_plans_are_validated_like_model_answers(folder):
                  constraints=[Constraint(relation="near", source="sofa_1", target="piano_1")]),
         EditPlan(operation="replace", focus="sofa_1"),
         EditPlan(operation="move", focus="sofa_1"),  # neither where to nor a turn
+        EditPlan(operation="move", focus="sofa_1", offset=Vec3(x=1.0),  # two places at once
+                 constraints=[Constraint(relation="near", source="sofa_1", target="bookshelf_1")]),
+        EditPlan(operation="replace", focus="sofa_1", offset=Vec3(x=1.0), new_object={"name": "sofa"}),
     ]
     for plan in bad:
         with pytest.raises(InputError):
@@ -246,3 +249,33 @@ def test_an_add_records_only_the_new_object_in_a_scene_without_recorded_poses(fo
     before = folder.load()
     after = edit(folder, "add a red armchair next to the sofa", backends)
     assert set(after.initial) == {o.id for o in after.objects} - {o.id for o in before.objects} != set()
+
+
+def test_a_shift_moves_the_focus_by_exactly_the_step_and_carries_what_rests_on_it(folder, backends):
+    before = folder.load()
+    after = edit(folder, "move the coffee table 30 cm to the left", backends)
+    step = pose(after.get("coffee_table_1")) - pose(before.get("coffee_table_1"))
+    assert np.allclose(step, [-0.3, 0, 0, 0], atol=1e-9)
+    assert np.allclose(pose(after.get("vase_1")) - pose(before.get("vase_1")), step, atol=1e-9)
+    assert_others_unmoved(before, after, {"coffee_table_1", "vase_1"})
+    assert_sound(folder, after)
+
+
+def test_a_shift_drops_the_focus_constraints_that_no_longer_hold(folder, backends):
+    after = edit(folder, "push the armchair 3 metres forward", backends)
+    assert after.get("armchair_1").position.y == pytest.approx(-4.0)
+    assert not any(c.source == "armchair_1" and c.relation == "near" for c in after.constraints)
+    assert_sound(folder, after)
+
+
+@pytest.mark.parametrize(
+    ("bounds", "instruction", "says"),
+    [(None, "move chair_1 1 m to the right", "chair_1 and table_1"),
+     ((8.0, 6.0), "move the bookshelf 3 m to the left", "bounds")],
+)
+def test_a_shift_into_a_neighbour_or_out_of_bounds_is_refused(folder, backends, bounds, instruction, says):
+    folder.save(folder.load().model_copy(update={"bounds": bounds}))
+    files = snapshot(folder.root)
+    with pytest.raises(InfeasibleLayout, match=says):
+        edit(folder, instruction, backends)
+    assert snapshot(folder.root) == files

@@ -82,6 +82,19 @@ def test_every_kind_of_scene_is_covered(tag, names):
         ("bedside table", "nightstand"),
         ("coffee_table", "coffee_table"),
         ("  Palm Trees ", "palm_tree"),
+        ("koi", "fish"),
+        ("squat rack", "squat_rack"),
+        ("ice rink", "pond"),
+        # "A of B" read as the compound "B A" the catalogue knows
+        ("rack of dumbbells", "dumbbell_rack"),
+        ("racks of bikes", "bike_rack"),
+        ("rack of wine", "wine_rack"),
+        ("demonstration bench", "lab_bench"),
+        ("stack of magazines", "books"),
+        ("white screen", "projector_screen"),
+        ("computer screen", "monitor"),
+        ("water basin", "fountain"),
+        ("studio monitors", "speaker"),
     ],
 )
 def test_lookup_finds_synonyms_and_plurals(phrase, name):
@@ -89,7 +102,7 @@ def test_lookup_finds_synonyms_and_plurals(phrase, name):
     assert category is not None and category.name == name
 
 
-@pytest.mark.parametrize("phrase", ["", "xylophone", "the", "happiness"])
+@pytest.mark.parametrize("phrase", ["", "xylophone", "the", "happiness", "lake"])
 def test_lookup_unknown_is_none(phrase):
     assert lookup(phrase) is None
 

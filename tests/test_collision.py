@@ -3,7 +3,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from scenewright.layout import colliding_pairs, solve
-from scenewright.layout.bench import independent_collisions
+from scenewright.layout.bench import collision_manager, independent_collisions
 from scenewright.layout.collision import _bvh
 from scenewright.layout.problems import cone_mesh, table_mesh
 from scenewright.scene import Constraint, SceneObject, Vec3
@@ -83,5 +83,14 @@ def test_agrees_with_trimesh_collision_manager(specs):
             meshes[obj.id] = cone_mesh(obj.size)
     ours = set(colliding_pairs(objects, meshes))
     theirs = set(independent_collisions(objects, meshes, []))
-    # Exact touching is the only allowed disagreement, and random poses never touch exactly.
-    assert ours == theirs
+    # Exact touching is the only allowed disagreement (we do not count it, trimesh does), and
+    # hypothesis finds it: boxes at yaw 0 placed exactly side by side.
+    for pair in ours ^ theirs:
+        assert pair in theirs and penetration(objects, meshes, pair) < 1e-6, pair
+
+
+def penetration(objects, meshes, pair) -> float:
+    """Deepest contact between two objects, by trimesh's collision manager."""
+    two = [o for o in objects if o.id in pair]
+    _, contacts = collision_manager(two, meshes).in_collision_internal(return_data=True)
+    return max((c.depth for c in contacts), default=0.0)

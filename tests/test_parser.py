@@ -386,3 +386,102 @@ def test_it_after_a_relation_names_that_relation_s_target():
     relations = {(c.source, c.relation, c.target) for c in parsed.constraints()}
     assert ("bench_1", "face to", "swing_1") in relations
     assert parsed.ground == "grass"
+
+
+# --- held-out rules -------------------------------------------------------------------------
+
+
+def test_a_rack_of_things_is_the_compound_category():
+    text = "A weight bench stands in the middle. To the right of the bench there is a rack of dumbbells."
+    assert counts(text) == Counter({"weight_bench": 1, "dumbbell_rack": 1})
+    assert ("dumbbell_rack", "right of", "weight_bench") in triples(text)
+
+
+@pytest.mark.parametrize("phrase", ["Holographic koi swim", "Two holographic screens float", "A holographic dog floats"])
+def test_holographic_things_are_holograms(phrase):
+    text = f"A stone altar stands in the centre. {phrase} above the altar."
+    assert set(counts(text)) == {"altar", "hologram"}
+    assert ("hologram", "above", "altar") in triples(text)
+
+
+def test_things_swimming_above_are_above():
+    assert ("fish", "above", "rock") in triples("A large rock lies in the pool. Three koi swim above the rock.")
+
+
+def test_a_possessive_names_a_new_thing_not_a_compound_seen_before():
+    text = (
+        "Six school desks face a whiteboard. The teacher's desk stands to the right of the whiteboard, "
+        "with a globe on it."
+    )
+    assert counts(text) == Counter({"school_desk": 6, "whiteboard": 1, "desk": 1, "globe": 1})
+    assert {("desk", "right of", "whiteboard"), ("globe", "on", "desk")} <= triples(text)
+
+
+def test_a_holding_clause_is_not_a_bare_list_for_the_next_placing():
+    text = "A long counter holds a cash register, and three grandfather clocks stand behind the counter."
+    assert triples(text) == {("cash_register", "on", "counter"), ("grandfather_clock", "behind", "counter")}
+
+
+def test_a_with_list_goes_on_across_commas_until_the_verb():
+    text = "A narrow counter with combs, scissors and a jar of disinfectant runs beneath the mirror."
+    assert triples(text) == {("bottle", "on", "counter"), ("counter", "near", "mirror")}
+
+
+def test_a_lake_is_scenery_not_an_object():
+    text = "A calm lakeside. Two deck chairs face the lake, with a small fire pit between them."
+    assert "pond" not in counts(text)
+
+
+def test_a_place_with_a_list_does_not_carry_the_list_over_commas():
+    text = "A market square with three stalls, a fountain in the middle, four benches around the fountain."
+    assert not {t for t in triples(text) if t[0] == "market_stall"}
+
+
+def test_a_relation_right_after_the_centre_of_around_places_the_centre():
+    text = "Four armchairs are grouped around a coffee table to the left of the ottoman."
+    found = triples(text)
+    assert ("coffee_table", "left of", "ottoman") in found
+    assert ("armchair", "left of", "ottoman") not in found
+
+
+def test_a_fronted_relation_places_every_coordinated_subject_but_not_later_nouns():
+    text = "A giant mushroom stands in the middle. Around it, four toadstools and four crystals glitter in the moss."
+    found = triples(text)
+    assert {("mushroom", "left of", "mushroom"), ("crystal", "left of", "mushroom")} <= found
+    text = "In front of the tent, a campfire crackles inside a ring of stones."
+    assert triples(text) == {("campfire", "in front of", "tent")}
+
+
+def test_rows_of_long_units_count_one_unit_a_row():
+    assert counts("Three rows of white shelves stand in the middle of the shop.")["bookshelf"] == 3
+    assert counts("Two rows of chairs face the stage.")["chair"] > 2
+
+
+def test_a_possessive_with_another_head_noun_is_not_an_earlier_group_of_its_category():
+    text = "Four lab tables face the teacher's demonstration bench. On the demonstration bench there is a microscope."
+    assert counts(text)["lab_bench"] == 5
+    text = "A wooden desk stands by the window. The teacher's desk holds a globe."
+    assert counts(text)["desk"] == 1
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A desk stands by the window. An office chair is pulled up to the desk.", ("office_chair", "in front of", "desk")),
+        ("A small cabin. A woodpile is stacked against the right side of the cabin.", ("log", "right of", "house")),
+        ("A mixing desk with two studio monitors on it.", ("speaker", "on", "desk")),
+    ],
+)
+def test_more_placing_phrases(text, expected):
+    assert expected in triples(text)
+
+
+def test_a_place_noun_after_a_determiner_qualifies_the_noun():
+    text = "Five benches face the sea. A lamp post stands in front of the middle bench."
+    assert counts(text)["bench"] == 5
+    assert ("lamp_post", "in front of", "bench") in triples(text)
+
+
+def test_a_small_thing_beside_a_small_thing_on_a_table_is_its_peer():
+    assert ("table_lamp", "side of", "pot") in triples("A brass lamp glows on the table next to a teapot.")
+    assert ("side_table", "right of", "desk") in triples("A globe sits on a side table to the right of the desk.")

@@ -4,12 +4,28 @@ import json
 import numpy as np
 import pytest
 import trimesh
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from scenewright.errors import InputError, MissingExtra
 from scenewright.folder import SceneFolder
 from scenewright.geometry import GLTF_TO_SCENE, SCENE_TO_GLTF, object_matrix
-from scenewright.render import best_render, render, render_info, scene_bounds
-from scenewright.render.views import VIEWS, best_view, camera_matrix, visibility
+from scenewright.render import (
+    best_render,
+    object_corners,
+    render,
+    render_info,
+    scene_bounds,
+)
+from scenewright.render.views import (
+    FILL,
+    VIEWS,
+    best_view,
+    camera_matrix,
+    half_fov_tangents,
+    view_direction,
+    visibility,
+)
 from scenewright.scene import Scene, SceneObject, Vec3
 
 has_bpy = importlib.util.find_spec("bpy") is not None
@@ -44,15 +60,56 @@ def small_scene(tmp_path) -> tuple[Scene, SceneFolder]:
     return scene, folder
 
 
-def test_every_view_frames_every_corner_of_the_bounds():
-    low, high = [-3.0, -2.0, 0.0], [5.0, 1.0, 2.5]
+def project(m: np.ndarray, points, aspect: float) -> np.ndarray:
+    """Points → (x, y) in frame units (±1 at the frame's edges) for the camera at ``m``."""
+    cam = (np.linalg.inv(m) @ np.c_[np.asarray(points, float), np.ones(len(points))].T).T[:, :3]
+    assert np.all(cam[:, 2] < 0), "a point behind the camera"  # it looks down −Z
+    tan_x, tan_y = half_fov_tangents(aspect)
+    return np.c_[cam[:, 0] / -cam[:, 2] / tan_x, cam[:, 1] / -cam[:, 2] / tan_y]
+
+
+def scene_of(boxes) -> Scene:
+    objects = [
+        SceneObject(id=f"o{i}", name="box", position=Vec3(x=x, y=y, z=sz / 2), rotation=Vec3(z=yaw), size=Vec3(x=sx, y=sy, z=sz))
+        for i, (x, y, yaw, sx, sy, sz) in enumerate(boxes)
+    ]
+    return Scene(text="boxes", objects=objects)
+
+
+box_params = st.tuples(
+    st.floats(-20, 20), st.floats(-20, 20), st.floats(-180, 180), st.floats(0.05, 6), st.floats(0.05, 6), st.floats(0.05, 8)
+)
+
+
+@settings(max_examples=60, deadline=None)
+@given(boxes=st.lists(box_params, min_size=1, max_size=8), aspect=st.sampled_from([16 / 9, 4 / 3, 1.0, 9 / 16]))
+def test_every_view_frames_every_object_corner_tightly(boxes, aspect):
+    corners = object_corners(scene_of(boxes))
     for view in VIEWS:
-        m = camera_matrix(view, low, high, 16 / 9)
-        inverse = np.linalg.inv(m)
-        for corner in [[x, y, z] for x in (low[0], high[0]) for y in (low[1], high[1]) for z in (low[2], high[2])]:
-            x, y, z = (inverse @ np.array([*corner, 1.0]))[:3]
-            assert z < 0, view  # in front of the camera (it looks down −Z)
-            assert abs(x / -z) <= 18 / 35 + 1e-9 and abs(y / -z) <= 18 / 35 * 9 / 16 + 1e-9, view
+        xy = project(camera_matrix(view, corners, aspect), corners, aspect)
+        assert np.all(np.abs(xy) <= FILL + 1e-6), view
+        # Tight: the objects span the full FILL share on one axis, centred on both.
+        span = xy.max(axis=0) - xy.min(axis=0)
+        assert span.max() >= 2 * FILL - 1e-6 and span.max() >= 2 * 0.8, (view, span)
+        assert np.allclose(xy.max(axis=0), -xy.min(axis=0), atol=1e-6), view
+
+
+def test_views_keep_their_directions_whatever_they_frame():
+    corners = object_corners(scene_of([(0, 0, 0, 1, 1, 1), (9, 4, 30, 2, 1, 3)]))
+    for view in VIEWS:
+        m = camera_matrix(view, corners, 16 / 9)
+        assert np.allclose(m[:3, 2], view_direction(view))  # the camera looks down its −Z
+        assert abs(m[2, 0]) < 1e-12  # no roll: the frame's x axis stays level
+    front = camera_matrix("front", corners, 16 / 9)
+    assert front[1, 3] < min(c[1] for c in corners)  # in front of (−Y from) every object
+
+
+def test_object_corners_follow_the_pose():
+    (box,) = scene_of([(2, 3, 90, 4, 1, 2)]).objects
+    corners = np.array(object_corners(Scene(text="x", objects=[box])))
+    assert corners.shape == (8, 3)
+    # Turned a quarter: the 4 m side now runs along y; bottom on the ground.
+    assert np.allclose(corners.min(axis=0), [1.5, 1.0, 0.0]) and np.allclose(corners.max(axis=0), [2.5, 5.0, 2.0])
 
 
 def test_visibility_decodes_indices_and_ignores_background():
@@ -66,12 +123,28 @@ def test_visibility_decodes_indices_and_ignores_background():
     assert counts["o0"] == 2 and counts["o257"] == 1 and counts["o1"] == 0
 
 
-def test_best_view_prefers_more_objects_then_well_shown_ones_then_pixels_then_paper_order():
+def test_best_view_prefers_more_objects_then_well_shown_ones_then_even_shares_then_paper_order():
     assert best_view({"iso_left": {"a": 5, "b": 0}, "front": {"a": 1, "b": 1}}) == "front"
-    assert best_view({"iso_left": {"a": 5, "b": 1}, "front": {"a": 9, "b": 1}}) == "front"
     assert best_view({"iso_left": {"a": 1}, "front": {"a": 1}, "right": {"a": 1}}) == "iso_left"
     # Same objects seen: the view where fewer are mostly hidden wins over the one with more pixels.
     assert best_view({"iso_left": {"a": 60, "b": 30}, "right": {"a": 200, "b": 5}}) == "iso_left"
+    # All well shown: the even view beats one with more pixels that one object dominates.
+    assert best_view({"iso_left": {"a": 900, "b": 100, "c": 100}, "front": {"a": 300, "b": 200, "c": 200}}) == "front"
+
+
+@settings(max_examples=50, deadline=None)
+@given(
+    counts=st.lists(st.lists(st.integers(6000, 8000), min_size=3, max_size=3), min_size=3, max_size=3),
+    zoom=st.sampled_from([2, 3]),
+)
+def test_zooming_in_on_a_view_does_not_make_it_win(counts, zoom):
+    # Even zoomed, counts stay within a factor 4 of each other: every object stays well shown,
+    # so only the last keys decide, and a nearer camera (all counts scaled) must not matter.
+    visible = {view: dict(zip("abc", row, strict=True)) for view, row in zip(VIEWS, counts, strict=True)}
+    chosen = best_view(visible)
+    for view in VIEWS:
+        zoomed = {**visible, view: {i: n * zoom for i, n in visible[view].items()}}
+        assert best_view(zoomed) == chosen
 
 
 def test_bounds_cover_objects_and_footprint():

@@ -149,7 +149,10 @@ def match_phrase(tokens: tuple[str, ...]) -> str | None:
     if single in index:
         return index[single]
     if len(tokens) >= 3 and tokens[1] == "of":  # "suits of armour", "chests of drawers"
-        return index.get((singular(tokens[0]), *tokens[1:]))
+        found = index.get((singular(tokens[0]), *tokens[1:]))
+        if found is None and len(tokens) == 3:  # "a rack of dumbbells" is a dumbbell rack
+            found = index.get((singular(tokens[2]), singular(tokens[0])))
+        return found
     return None
 
 

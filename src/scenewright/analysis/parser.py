@@ -177,22 +177,24 @@ _CONTENT_MARKERS = {("full", "of"), ("filled", "with"), ("packed", "with"), ("ov
 _HANG_VERBS = {"hang", "hangs", "hanging", "hung", "hover", "hovers", "hovering", "float", "floats",
                "floating", "suspended", "dangle", "dangles", "dangling", "fly", "flies", "flying",
                "soar", "soars", "soaring", "glow", "glows", "drift", "drifts", "mounted", "swing",
-               "swings"}  # fmt: skip
+               "swings", "swim", "swims", "swimming"}  # fmt: skip
 
 # --------------------------------------------------------------------------- relation phrases
 
 _REL_PHRASES: dict[str, list[str]] = {
     "left of": ["to the left of", "on the left of", "left of", "to the left side of", "on the left side of",
-                "at the left of", "on the left hand side of", "to the left hand side of"],
+                "at the left of", "on the left hand side of", "to the left hand side of",
+                "against the left side of", "against the left of"],
     "right of": ["to the right of", "on the right of", "right of", "to the right side of", "on the right side of",
-                 "at the right of", "on the right hand side of", "to the right hand side of"],
+                 "at the right of", "on the right hand side of", "to the right hand side of",
+                 "against the right side of", "against the right of"],
     "left": ["to the left", "on the left"],
     "right": ["to the right", "on the right"],
     "its left": ["to its left", "on its left", "at its left"],
     "its right": ["to its right", "on its right", "at its right"],
     "on top": ["on top", "on the top"],
     "in front of": ["in front of", "at the front of", "in the front of", "just in front of", "right in front of",
-                    "to the front of"],
+                    "to the front of", "pulled up to", "drawn up to", "pushed up to"],
     "behind": ["behind", "at the back of", "in back of", "to the back of", "at the rear of", "to the rear of",
                "in the back of", "just behind", "right behind", "directly behind"],
     "side of": ["beside", "next to", "alongside", "along side", "by the side of", "at the side of", "to the side of",
@@ -387,6 +389,9 @@ _MODIFIER_NOUNS = {"glass", "stone", "rock", "crystal", "box", "plant", "flower"
                    "canvas", "chalkboard", "blackboard", "bench", "chair", "gem", "orb", "barrel", "wine",
                    "bottle", "cup", "coffee", "bus", "car", "boat", "robot", "fence", "kiosk", "computer"}  # fmt: skip
 
+#: Adjectives that make any thing a projection.
+_PROJECTED = {"holographic", "hologram", "projected", "virtual"}
+
 
 def _find_mentions(toks: list[_Tok]) -> list[_Mention]:
     """Longest-first catalogue matches, with a noun followed by another noun read as a modifier
@@ -422,6 +427,8 @@ def _find_mentions(toks: list[_Tok]) -> list[_Mention]:
         qualifies = follow[:1].isalpha() and follow not in _STOP and not _is_verb(follow)
         if len(words) == 1 and words[0] in _MODIFIER_NOUNS and qualifies and not follow.endswith(("ed", "ing")):
             continue  # "a stone path", "a glass roof": an adjective here
+        if s > 0 and toks[s - 1].text in _PROJECTED:
+            cat = "hologram"  # "holographic koi" are light, not fish: place and size them as one
         mentions.append(_Mention(cat, " ".join(t.orig for t in toks[s:e]), s, e, 1, False, False))
     return _alias_mentions(toks, mentions)
 
@@ -465,6 +472,16 @@ def _is_plural(toks: list[_Tok], m: _Mention) -> bool:
     return singular(last) != last or last in ("people", "cacti", "shelves", "benches", "glasses")
 
 
+#: Place nouns that qualify the next noun after a determiner ("the middle bench", "the end stall").
+_POSITION_WORDS = {"middle", "centre", "center", "corner", "end", "front", "back", "top", "bottom", "side"}
+
+
+def _position_adjective(toks: list[_Tok], j: int) -> bool:
+    return toks[j].text in _POSITION_WORDS and j > 0 and toks[j - 1].text in _DETERMINERS and (
+        j + 1 < len(toks) and toks[j + 1].text[:1].isalpha() and toks[j + 1].text not in _STOP
+    )
+
+
 def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
     """Fill count, definiteness and adjectives from the words before the noun."""
     plural = _is_plural(toks, m)
@@ -504,7 +521,9 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             counted = q in ("pair", "couple", "dozen")
             k = j - 2
             if k >= 0 and toks[k].text in _NUMBERS:  # "two pairs of", "three stacks of"
-                count, counted = count * _NUMBERS[toks[k].text], True
+                width, depth, _ = load_catalogue()[m.category].size
+                per = 1 if q in ("row", "rows", "line", "lines") and width >= 1.0 and depth <= 0.6 else count
+                count, counted = per * _NUMBERS[toks[k].text], True  # "three rows of shelves": a unit a row
             elif k >= 0 and toks[k].text == "of" and k > 0 and toks[k - 1].text in _QUANTITY:
                 count = _QUANTITY[toks[k - 1].text]  # "a lot of"
             elif q in ("row", "line", "stack", "pile", "set", "group", "cluster", "ring", "circle") and k >= 0 and toks[
@@ -522,7 +541,7 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         if w in _DEFINITE:
             m.definite = True
             break
-        if w in _STOP or not w[0].isalnum():
+        if (w in _STOP and not _position_adjective(toks, j)) or not w[0].isalnum():
             break
         adjectives.insert(0, t.orig)
         j -= 1
@@ -699,6 +718,9 @@ class _Clause:
     unknown_subject: bool = False
     rels: list[tuple[str, list[int]]] = field(default_factory=list)
     produced: bool = False
+    #: The nouns before the clause's first verb or relation: its subjects.
+    subjects: list[int] = field(default_factory=list)
+    verb_seen: bool = False
 
 
 class _Reader:
@@ -743,7 +765,11 @@ class _Reader:
         if (m.definite or m.each) and not sizes:
             head = singular(self.toks[m.end - 1].text)
             found = next((g.index for g in reversed(self.groups) if g.category == m.category), None)
-            if found is None:
+            # "the teacher's desk" is not one of the school desks, nor "the teacher's bench" a lab table
+            owned = any(t.text.endswith("'s") for t in self.toks[max(0, m.start - 1) : m.end - 1])
+            if owned and found is not None and singular(self.groups[found].name.split()[-1]) != head:
+                found = None
+            if found is None and not owned:
                 found = next(
                     (g.index for g in reversed(self.groups) if g.name.split()[-1].endswith(head)), None
                 )
@@ -797,9 +823,11 @@ class _Reader:
                     else:
                         pending = [(kind, targets) for kind, targets, _ in c.fronted]
                 elif pending and c.main_groups:
+                    # "Around it, toadstools and crystals glitter": every coordinated subject
+                    subjects = c.subjects or c.main_groups[:1]
                     for kind, targets in pending:
                         for t in targets:
-                            self._relate(kind, c.main_groups[:1], t)
+                            self._relate(kind, subjects, t)
                     pending = []
                 elif not c.produced and c.groups and last_rels and self._is_list(cs, ce, strict=True):
                     # "On the desk there is a lamp, a laptop and a mug": the list shares the relation
@@ -855,11 +883,22 @@ class _Reader:
         out: list[tuple[int, int]] = []
         for cs, ce in clauses:
             places = any(k in self.rel_at for k in range(cs, ce))
-            if places and out and self._is_list(*out[-1], strict=True):  # a bare list takes the next placing
+            # "a counter with combs, scissors and a jar runs beneath the mirror": the list goes on
+            goes_on = bool(out) and self._open_with(*out[-1]) and cs not in self.rel_at
+            goes_on = goes_on and self.toks[cs].text not in ("and", "or", "but", "then", "so")
+            if goes_on or (places and out and self._is_list(*out[-1], strict=True)):  # a bare list takes the next placing
                 out[-1] = (out[-1][0], ce)
                 continue
             out.append((cs, ce))
         return out
+
+    def _open_with(self, cs: int, ce: int) -> bool:
+        """The clause ends inside the "with" part of a noun before it: nothing placed after."""
+        toks = self.toks
+        last = max((k for k in range(cs + 1, ce) if toks[k].text == "with" or toks[k].text in _HOLD), default=None)
+        if last is None or not any(cs <= k and m.end <= last for k, m in self.by_start.items()):
+            return False  # "a market square with three stalls, ...": the place's list, not a thing's
+        return not any(k in self.rel_at for k in range(last, ce))
 
     def _is_list(self, cs: int, ce: int, strict: bool = False) -> bool:
         """Only noun phrases joined by "and": no relation phrase, no verb."""
@@ -875,6 +914,8 @@ class _Reader:
             allowed.update(range(m.start - len(m.adjectives) - 2, m.end))
         for k in range(cs, ce):
             w = self.toks[k].text
+            if w in _HOLD:  # "a counter holds a till, and clocks stand behind it": two clauses
+                return False
             if k in allowed or w in ("and", "or", "with") or w in _DETERMINERS or w in _NUMBERS:
                 continue
             return False
@@ -895,7 +936,7 @@ class _Reader:
                 return w, j + 1
             if w in ("each", "one") and j + 1 < ce and toks[j + 1].text in ("other", "another"):
                 return "each other", j + 2
-            if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or (
+            if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
                 w not in _STOP and w[0].isalnum() and not _is_verb(w)
             ):
                 j += 1
@@ -959,9 +1000,12 @@ class _Reader:
                 else:
                     c.main_groups.append(g)
                     c.main = [g] if c.expect_new else [*c.main, g]
+                    if not c.verb_seen:
+                        c.subjects.append(g)
                 c.expect_new = False
                 last_event_end = m.end
                 continue
+            c.verb_seen = c.verb_seen or k in self.rel_at or _is_verb(w)
             if k in self.rel_at:
                 k = self._relation(c, self.rel_at[k], ce, prev_subject, starts_with_rel, last_event_end)
                 last_event_end = k
@@ -992,11 +1036,16 @@ class _Reader:
         between = [t.text for t in toks[last_event_end : rel.start]]
         # sources: the noun the phrase follows when nothing but adverbs lies between
         srcs: list[int]
-        chained = (c.last_kind in ("on", "on top", "near") or kind in ("on", "on top")) and kind not in (
+        # "a globe on a side table to the right of the desk", "chairs around a table left of the sofa"
+        chained = (c.last_kind in ("on", "on top", "near", "around") or kind in ("on", "on top")) and kind not in (
             "face to", "flank", "around", "no relation"
         )  # fmt: skip
+        if chained and isinstance(target, list) and target and c.last_target:
+            # "a lamp on the table next to a teapot": what stands by a small thing is its peer, not the table
+            rests = [self.catalogue[self.groups[g[0]].category].rests for g in (target, c.last_target)]
+            chained = rests[0] != "surface" or rests[1] == "surface"
         if chained and c.last_target and c.last_target_end == last_event_end and all(b in _ADVERBS for b in between):
-            srcs = list(c.last_target)  # "a globe on a side table to the right of the desk"
+            srcs = list(c.last_target)
         elif c.head is not None:
             closed = any(_is_verb(b) for b in between)
             if c.wsub and not closed and not c.expect_new:

@@ -109,6 +109,7 @@ class EditAnswer(_Answer):
     constraints: list[ProposedConstraint]
     new_object: ProposedNewObject | None
     yaw: float | None
+    offset: Vec3 | None = None  # strict schemas list it as required; older answers may omit it
 
 
 _LENGTH = re.compile(
@@ -369,8 +370,8 @@ class OpenAIChatVLM:
             if answer.operation == "delete":
                 return EditPlan(operation="delete", focus=focus)
             constraints = self._focus_constraints(answer.constraints, focus, scene.objects)
-            if answer.operation == "move" and not constraints and answer.yaw is None:
-                raise InvalidAnswer(f"a move of {focus} needs constraints saying where to, or a yaw")
+            if answer.operation == "move" and not constraints and answer.yaw is None and answer.offset is None:
+                raise InvalidAnswer(f"a move of {focus} needs constraints saying where to, or a yaw (or an offset to shift it)")
             new = answer.new_object
             yaw = answer.yaw if answer.yaw is not None and math.isfinite(answer.yaw) else None
             return EditPlan(
@@ -386,6 +387,7 @@ class OpenAIChatVLM:
                 if new is not None and answer.operation != "move"
                 else None,
                 yaw=yaw % 360.0 if yaw is not None else None,
+                offset=answer.offset if answer.operation == "move" else None,
             )
 
         return self.chat.ask("edit_plan", messages, EditAnswer, check)

@@ -175,6 +175,7 @@ Decide the one edit it asks for:
 - constraints: where the focus goes, only for "move", "add" and "replace" when it asks for a new place. The focus is the source of every constraint and never a target; targets are listed ids.
 - new_object: for "add" and "replace", the new object's name, category word, one-sentence look and, when the instruction says so, its size in metres (else null); null for "move" and "delete".
 - yaw: a new yaw in degrees when the instruction asks only to turn the object; else null.
+- offset: for a "move" that names no other object ("a bit to the left", "1 m back"), the shift from where the focus stands in metres (x right, y back, z up; 0.5 m when no distance is said) with no placing constraints; else null.
 
 {RELATIONS}"""
 

@@ -96,7 +96,7 @@ def history_command(folder: FolderArgument) -> None:
 @bench_app.command("edits")
 def bench_edits(
     cases: Annotated[
-        Path, typer.Option("--cases", help="Folder of annotated edit instructions (*.json).")
+        Path, typer.Option("--cases", help="A case file, or a folder of them (*.json, not its subfolders).")
     ] = Path("benchmarks/edits"),
     objects: Annotated[int, typer.Option("--objects", help="Objects in the latency scene.")] = 30,
     moves: Annotated[int, typer.Option("--moves", help="Move edits timed on the latency scene.")] = 20,

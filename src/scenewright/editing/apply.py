@@ -30,7 +30,7 @@ from scenewright.editing.parser import category_in, fresh_id
 from scenewright.editing.plan import EditPlan
 from scenewright.errors import InfeasibleLayout, InputError
 from scenewright.folder import SceneFolder
-from scenewright.geometry import yaw_towards
+from scenewright.geometry import world_box, yaw_towards
 from scenewright.layout import check, colliding_pairs, feedback_text, solve
 from scenewright.scene import Constraint, RemovedObject, Scene, SceneObject, Vec3
 from scenewright.settings import Settings
@@ -110,8 +110,17 @@ def validate_plan(scene: Scene, plan: EditPlan) -> EditPlan:
             raise InputError(f"constraint '{c}' uses the focus {plan.focus!r} as its target; it must be the source only")
         if c.target not in ids:
             raise InputError(f"constraint '{c}' names {c.target!r}, which the scene does not have; objects: {known}")
-    if plan.operation == "move" and not plan.constraints and plan.yaw is None:
+    if plan.operation == "move" and not plan.constraints and plan.yaw is None and plan.offset is None:
         raise InputError(f"the edit moves {plan.focus} but says neither where to nor which way to turn it")
+    if plan.offset is not None:
+        if plan.operation != "move":
+            raise InputError(f"an offset shifts an object from where it stands; a {plan.operation!r} edit takes none")
+        placing = [str(c) for c in plan.constraints if c.relation != "face to"]
+        if placing:
+            raise InputError(
+                f"the edit both shifts {plan.focus} by an offset and places it by {', '.join(placing)}; "
+                "say one place: relative to another object, or a shift from where it stands"
+            )
     if plan.operation == "delete" and plan.constraints:
         raise InputError(f"a 'delete' edit takes no constraints; got {', '.join(map(str, plan.constraints))}")
     return plan
@@ -339,6 +348,9 @@ def _move(edit: _Edit, folder: SceneFolder, settings: Settings) -> None:
         target = scene.get(turning[-1].target)
         focus.rotation = Vec3(x=focus.rotation.x, y=focus.rotation.y,
                               z=yaw_towards(focus.position.tuple(), target.position.tuple()))
+    if plan.offset is not None:
+        _shift(edit, focus, before, carried, meshes)
+        return
     in_place = not placing and all(check(c.relation, focus, scene.get(c.target)) for c in mine)
     if in_place:
         _carry(scene, carried, before, focus)
@@ -360,10 +372,40 @@ def _move(edit: _Edit, folder: SceneFolder, settings: Settings) -> None:
                 f"{focus.id} fits at its new place but what rests on it does not: "
                 + ", ".join(" and ".join(p) for p in hits) + " would collide; the scene is unchanged"
             )
+    _moved(edit, focus, carried)
+
+
+def _moved(edit: _Edit, focus: SceneObject, carried: list[str]) -> None:
     p = focus.position
     edit.changes.append(f"{focus.id} now at ({p.x:.2f}, {p.y:.2f}, {p.z:.2f}), yaw {focus.yaw:.0f}°"
                         + (f", carrying {', '.join(carried)}" if carried else ""))
     _prune(edit, [focus.id, *carried])
+
+
+def _shift(edit: _Edit, focus: SceneObject, before: SceneObject, carried: list[str], meshes: dict[str, trimesh.Trimesh]) -> None:
+    """Shift the focus by the plan's offset, exactly: the instruction gave the step, so a step
+    that collides or leaves the scene's bounds is refused, not bent into another place. Its
+    constraints that no longer hold are dropped."""
+    scene, d = edit.scene, edit.plan.offset
+    p = focus.position
+    focus.position = Vec3(x=p.x + d.x, y=p.y + d.y, z=p.z + d.z)
+    _carry(scene, carried, before, focus)
+    step = f"shifting {focus.id} by ({d.x:+.2f}, {d.y:+.2f}, {d.z:+.2f}) m"
+    if scene.bounds is not None:
+        low, high = world_box(focus)
+        half = np.array(scene.bounds) / 2.0
+        if np.any(low[:2] < -half - 1e-6) or np.any(high[:2] > half + 1e-6):
+            raise InfeasibleLayout(
+                f"{step} takes it outside the scene's {scene.bounds[0]:g} × {scene.bounds[1]:g} m bounds; "
+                "try a smaller step or another direction; the scene is unchanged"
+            )
+    hits = _collisions(scene, [focus.id, *carried], meshes)
+    if hits:
+        raise InfeasibleLayout(
+            f"{step} makes {', '.join(' and '.join(pair) for pair in hits)} collide; "
+            "try a smaller step or another direction; the scene is unchanged"
+        )
+    _moved(edit, focus, carried)
 
 
 def _replace(edit: _Edit, folder: SceneFolder, backends: Backends, settings: Settings) -> None:

@@ -1,7 +1,10 @@
 """The offline edit planner: imperative instructions → :class:`EditPlan`, by rules.
 
 It reads one instruction as *verb, focus, placement clauses* ("move the lamp next to the
-sofa, facing the bed"), resolves every object reference against the scene (ids, names,
+sofa, facing the bed"); a request worded as a wish or a statement ("I'd like the lamp beside
+the sofa", "the chair should face the desk") is first rewritten into that order. A move that
+names no other object ("a bit to the left", "1 m back") shifts the focus from where it stands
+(:attr:`EditPlan.offset`). It resolves every object reference against the scene (ids, names,
 categories and their synonyms, colour or material words, ordinals and side words such as
 "the second chair" or "the left chair") and refuses to guess: an ambiguous reference asks
 which object is meant, naming the candidates, and an unknown one names what the scene has.
@@ -23,13 +26,17 @@ from scenewright.editing.plan import EditPlan, NewObject
 from scenewright.errors import InputError
 from scenewright.scene import Constraint, Scene, SceneObject, Vec3
 
-_POLITE = ("please", "can you", "could you", "would you", "i want you to", "i'd like you to",
-           "i would like you to", "let's", "lets", "now", "then", "also", "and")  # fmt: skip
+_POLITE = ("please", "kindly", "can you", "could you", "would you", "will you", "can we", "could we",
+           "i want you to", "i'd like you to", "i would like you to", "i need you to", "let's", "let", "lets",
+           "let us", "now", "then", "also", "and", "maybe", "perhaps", "just", "go ahead and",
+           "would it be possible to", "is it possible to", "i'd like to", "i would like to", "i want to",
+           "it would be nice to", "it'd be nice to", "it would be great to", "it would be better to")  # fmt: skip
 _DELETE = ("get rid of", "take away", "take out", "clear away", "remove", "delete", "erase",
            "eliminate", "discard", "drop")  # fmt: skip
 _ADD = ("add", "insert", "create", "include", "introduce")
 _PLACE = ("put", "place", "set", "position", "stand", "hang", "mount", "lay", "lean", "park", "stick")
-_MOVE = ("move", "shift", "push", "pull", "slide", "bring", "relocate", "drag", "carry", "reposition")
+_MOVE = ("move", "shift", "push", "pull", "slide", "bring", "relocate", "drag", "carry", "reposition",
+         "nudge", "scoot", "budge")  # fmt: skip
 _TURN = ("turn", "rotate", "spin", "swivel", "orient", "face")
 _REPLACE = ("replace", "swap", "exchange", "substitute", "change", "make", "paint", "colour",
             "color", "recolour", "recolor", "restyle", "convert", "transform", "upgrade", "redo")  # fmt: skip
@@ -332,14 +339,28 @@ def _new_object(scene: Scene, phrase: str, *, base: SceneObject | None = None) -
                      visual_description=description, size=Vec3.of(category.size))
 
 
+_COUNTS = re.compile(
+    r"^(?:[2-9]|\d\d+|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|several|some|many|few|"
+    r"a few|a couple of|a couple|a pair of|a number of|a lot of|lots of|a dozen|a set of)\b"
+)
+
+
 def _count_check(phrase: str) -> None:
-    first = words(phrase)[:1]
-    if first and (first[0] in ("two", "three", "four", "five", "six", "several", "some") or first[0].isdigit()):
-        raise InputError(f"one object per edit: add them one at a time (e.g. 'add a {singular(words(phrase)[-1])} ...')")
+    """Refuse several new objects at once: an edit changes one object, and each gets its own place."""
+    text = " ".join(words(phrase))
+    counted = _COUNTS.match(text)
+    if counted:
+        rest = text[counted.end():]
+        tokens = [singular(t) for t in words(rest)]
+        category = next(  # the counted noun comes first: the longest run of words from the start
+            (found for end in range(len(tokens), 0, -1) if (found := lookup(" ".join(tokens[:end]))) is not None), None
+        )
+        noun = category.label if category is not None else (singular(tokens[0]) if tokens else "object")
+        raise InputError(f"one object per edit: add them one at a time (e.g. 'add a {noun} ...', then another)")
 
 
 def plan_edit_offline(scene: Scene, instruction: str) -> EditPlan:
-    """The edit an imperative instruction asks for, resolved against ``scene``."""
+    """The edit an instruction asks for, resolved against ``scene``."""
     text = _strip_lead(_normalise(instruction))
     if not text:
         raise InputError(
@@ -348,7 +369,22 @@ def plan_edit_offline(scene: Scene, instruction: str) -> EditPlan:
         )
     if not scene.objects and not text.startswith(_ADD):
         raise InputError("the scene has no objects; the only edit possible is to add one, e.g. 'add a sofa'")
+    plan = _plan_imperative(scene, text)
+    if plan is None:  # a wish or a statement: read as the command it amounts to
+        imperative = _imperative(text)
+        plan = _plan_imperative(scene, _strip_lead(imperative)) if imperative is not None else None
+    if plan is None:
+        known = ", ".join(("move/put/place", "turn/rotate", "remove/delete", "add", "replace/swap/change/make/paint"))
+        raise InputError(
+            f"I cannot tell what {instruction.strip()!r} asks; start with one of: {known} "
+            "(e.g. 'move the lamp next to the sofa')"
+        )
+    return plan
 
+
+def _plan_imperative(scene: Scene, text: str) -> EditPlan | None:
+    """The edit a command (normalised text starting with its verb) asks for; None when it
+    starts with no verb the planner knows."""
     verb = _starts(text, _DELETE)
     if verb:
         focus = resolve(scene, _CLAUSE.split(text[len(verb):], maxsplit=1)[0], role="object to remove")
@@ -357,13 +393,14 @@ def plan_edit_offline(scene: Scene, instruction: str) -> EditPlan:
     verb = _starts(text, _ADD) or _starts(text, _PLACE)
     if verb:
         rest = text[len(verb):].strip()
+        _count_check(rest)
         if verb in _ADD or _starts(rest, _INDEFINITE) or rest.split(" ", 1)[0].isdigit():
             return _plan_add(scene, rest)
         return _plan_move(scene, rest)
 
     verb = _starts(text, _MOVE)
     if verb:
-        return _plan_move(scene, text[len(verb):].strip())
+        return _plan_move(scene, text[len(verb):].strip(), small=verb in _SOFT_VERBS)
 
     verb = _starts(text, _TURN)
     if verb:
@@ -381,12 +418,79 @@ def plan_edit_offline(scene: Scene, instruction: str) -> EditPlan:
         if verb == "make" and re.search(r"\bface\b|\bfacing\b", rest):
             return _plan_move(scene, rest, turning=True)
         return _plan_replace(scene, verb, rest)
+    return None
 
-    known = ", ".join(("move/put/place", "turn/rotate", "remove/delete", "add", "replace/swap/change/make/paint"))
-    raise InputError(
-        f"I cannot tell what {instruction.strip()!r} asks; start with one of: {known} "
-        "(e.g. 'move the lamp next to the sofa')"
-    )
+
+#: "I'd like ...", "we need ...", "have ...": a wish for how the scene should be.
+_WISH = re.compile(r"^(?:(?:i|we)(?:'d| would) (?:like|love|prefer)|(?:i|we) (?:want|need)|have|see|give me)\s+")
+#: "<object> should|could|needs to ... <predicate>": a statement of how the object should be.
+_MODAL = re.compile(r"(?<=\s)(?:should|must|shall|could|would|can|will|might|needs? to|has to|have to|ought to)\s+")
+#: Words between the object and what is asked of it: "to be placed", "go", "look better".
+_LINKING = re.compile(r"^(?:(?:to\s+)?be(?:ing)?\s+|to\s+|go\s+|stand\s+|sit\s+|end up\s+|look\s+\w+\s+|looks\s+\w+\s+)+")
+_PARTICIPLES = {"put": "put", "set": "set", "made": "make", "laid": "lay", "hung": "hang", "brought": "bring",
+                "stuck": "stick", "spun": "spin", "got rid of": "get rid of", "taken away": "take away"}  # fmt: skip
+
+
+def _verb(word: str, *, base: bool) -> str | None:
+    """The verb of the planner's vocabulary that ``word`` is a form of ("placed", "facing",
+    "swapped"); its bare form counts only where ``base`` says a verb must come ("to face")."""
+    verbs = {*_MOVE, *_PLACE, *_TURN, *_REPLACE, *(v for v in _DELETE if " " not in v)}
+    if word in _PARTICIPLES:
+        return _PARTICIPLES[word]
+    if base and word in verbs:
+        return word
+    for suffix in ("ed", "ing", "d"):
+        if word.endswith(suffix):
+            stem = word[: -len(suffix)]
+            for candidate in (stem, stem + "e", stem[:-1]):
+                if candidate in verbs:
+                    return candidate
+    return None
+
+
+def _predicate(subject: str, predicate: str) -> str | None:
+    """``subject`` and what is asked of it, as an imperative the planner reads; None when the
+    predicate asks for nothing it knows (a verb form, a placement, a direction or a look)."""
+    linked = _LINKING.match(predicate)
+    rest = predicate[linked.end():] if linked else predicate
+    first, _, after = rest.partition(" ")
+    verb = _verb(first, base=linked is not None and linked.group(0).strip().endswith(("to", "be")))
+    if verb is None and rest.startswith(tuple(p + " " for p in _PARTICIPLES if " " in p)):
+        first = next(p for p in _PARTICIPLES if " " in p and rest.startswith(p + " "))
+        verb, after = _PARTICIPLES[first], rest[len(first):].strip()
+    if verb == "face":
+        return f"turn {subject} to face {after}"
+    if verb is not None:
+        return f"{verb} {subject} {after}".strip()
+    phrases = _find_phrases(rest)
+    if phrases:
+        return f"put {subject} {rest[phrases[0].start:]}"
+    if _DIRECTION.search(rest):
+        return f"move {subject} {rest}"
+    if linked is not None and re.match(r"(?:to\s+)?be\s", linked.group(0)):  # "the sofa should be blue"
+        return f"make {subject} {rest}"
+    return None
+
+
+def _imperative(text: str) -> str | None:
+    """A wish ("I'd like the lamp placed beside the sofa") or a statement ("the chair should
+    face the desk") as the imperative it amounts to ("put the lamp beside the sofa",
+    "turn the chair to face the desk"); None when the text is neither."""
+    wish = _WISH.match(text)
+    if wish:
+        rest = text[wish.end():]
+        tokens = rest.split(" ")
+        phrase_starts = {p.start for p in _find_phrases(rest)}
+        offset = len(tokens[0]) + 1
+        for token in tokens[1:]:  # the object ends where what is asked of it begins
+            if token in ("to", "be", "being") or _verb(token, base=False) or offset in phrase_starts:
+                return _predicate(rest[:offset].strip(), rest[offset:])
+            offset += len(token) + 1
+        return f"put {rest}"  # "I'd like two lamps": nothing asked of it but to be there
+    for modal in _MODAL.finditer(text):  # "the trash can should ...": the modal is the last of a run
+        if not _MODAL.match(text, modal.end()):
+            return _predicate(text[:modal.start()].strip(), text[modal.end():])
+    return None
 
 
 def _split_face(rest: str) -> tuple[str, str]:
@@ -408,14 +512,76 @@ def _plan_add(scene: Scene, rest: str) -> EditPlan:
     )
 
 
+#: "to the left", "back", "forwards": a move relative to where the object stands (scene frame).
+_DIRECTION = re.compile(
+    r"\b(?:(?:more |further |farther )?(?:to|towards?) the )?(left|right|front|back|rear)(?:(?: hand)? side)?\b(?! of\b)"
+    r"|\b(forwards?|backwards?|ahead|leftwards?|rightwards?)\b"
+)
+_HEADINGS = {
+    **dict.fromkeys(("left", "leftward", "leftwards"), (-1.0, 0.0)),
+    **dict.fromkeys(("right", "rightward", "rightwards"), (1.0, 0.0)),
+    **dict.fromkeys(("front", "forward", "forwards", "ahead"), (0.0, -1.0)),
+    **dict.fromkeys(("back", "backward", "backwards", "rear"), (0.0, 1.0)),
+}
+_DISTANCE = re.compile(
+    r"(?:\bby )?(?:about |around |roughly |another )?\b(\d+(?:\.\d+)?|an?|one|two|three|half an?) ?"
+    r"(cm|centimet(?:re|er)s?|mm|millimet(?:re|er)s?|m|met(?:re|er)s?|ft|foot|feet)\b"
+)
+_NUMBERS = {"a": 1.0, "an": 1.0, "one": 1.0, "two": 2.0, "three": 3.0, "half a": 0.5, "half an": 0.5}
+_UNITS = {"c": 0.01, "m": 1.0, "f": 0.3048}
+#: How far a move with no stated distance goes, in metres: a plain step, and "a bit".
+STEP, SMALL_STEP = 0.5, 0.2
+_SOFT = re.compile(r"\b(?:a bit|a little|a little bit|slightly|a touch|a tad)\b")
+#: Verbs that themselves mean a small step.
+_SOFT_VERBS = ("nudge", "scoot", "budge")
+
+
+def _metres(match: re.Match[str]) -> float:
+    number, unit = match.group(1), match.group(2)
+    value = _NUMBERS[number] if number in _NUMBERS else float(number)
+    if unit.startswith(("mm", "millim")):
+        return value / 1000.0
+    return value * _UNITS[unit[0]]
+
+
+def _relative_move(rest: str, *, small: bool) -> tuple[str, Vec3] | None:
+    """The object phrase and the shift of "the sofa 1 m to the left", "the table back a bit";
+    None when ``rest`` names no direction. The heading is the direction word that only a step
+    follows, since side words also pick objects ("the left chair to the right", "the left chair")."""
+    distance = _DISTANCE.search(rest)
+    def blank(m: re.Match[str]) -> str:  # same length, so positions in ``rest`` still hold
+        return " " * len(m.group(0))
+
+    unsaid = _SOFT.sub(blank, _DISTANCE.sub(blank, rest))  # what is not the step
+    headings = [d for d in _DIRECTION.finditer(rest) if not unsaid[d.end():].strip()]
+    if not headings:
+        return None
+    heading = headings[-1]
+    dx, dy = _HEADINGS[heading.group(1) or heading.group(2)]
+    if distance is not None:
+        length = _metres(distance)
+    else:
+        length = SMALL_STEP if small or _SOFT.search(rest) else STEP
+    cut = min(heading.start(), distance.start() if distance else len(rest))
+    return rest[:cut], Vec3(x=dx * length, y=dy * length, z=0.0)
+
+
 _TURN_AROUND = re.compile(r"\b(?:around|round|about)\b|\b(?:by\s+)?(-?\d+(?:\.\d+)?)\s*(?:degrees?|deg|°)")
 
 
-def _plan_move(scene: Scene, rest: str, *, turning: bool = False) -> EditPlan:
+def _plan_move(scene: Scene, rest: str, *, turning: bool = False, small: bool = False) -> EditPlan:
     turn = _TURN_AROUND.search(rest) if turning else None
     if turn is not None:  # "by 90 degrees" is a turn, not a place ("by" also means "near")
         rest = f"{rest[:turn.start()]} {rest[turn.end():]}".strip()
-    phrases = _find_phrases(rest)
+    distance = None if turning else _DISTANCE.search(rest)
+    phrases = _find_phrases(rest if distance is None else rest[:distance.start()] + rest[distance.end():])
+    shift = None if turning or phrases else _relative_move(rest, small=small)
+    if shift is not None:
+        reference = _FILLERS.sub(" ", _CLAUSE.split(shift[0], maxsplit=1)[0])
+        focus = resolve(scene, reference, role="object to move")
+        return EditPlan(operation="move", focus=focus.id, offset=shift[1])
+    if distance is not None:  # "1 m to the right of the sofa": the relation places it
+        rest = rest[:distance.start()] + rest[distance.end():]
     reference = rest[: phrases[0].start] if phrases else rest
     reference = _FILLERS.sub(" ", _CLAUSE.split(reference, maxsplit=1)[0])
     reference = re.sub(r"\b(?:so it|so that it|to|over|back|away|up|down|clockwise|counterclockwise|"
@@ -435,6 +601,7 @@ def _plan_move(scene: Scene, rest: str, *, turning: bool = False) -> EditPlan:
         raise InputError(
             f"{hint}? say where {focus.id} goes relative to another object, e.g. "
             f"'move {focus.name} next to the {next((o.name for o in scene.objects if o.id != focus.id), 'table')}'"
+            + ("" if turning else ", or which way to shift it, e.g. 'a bit to the left', '1 m back'")
         )
     return EditPlan(operation="move", focus=focus.id, constraints=constraints, yaw=yaw)
 

@@ -37,3 +37,6 @@ class EditPlan(BaseModel):
     new_object: NewObject | None = None
     #: Turn the focus in place (degrees about +Z), when the instruction asks for a rotation only.
     yaw: float | None = None
+    #: Shift the focus from where it stands, in metres in the scene frame (+X right, +Y back),
+    #: when a move names no other object ("move the sofa to the left", "1 m forward").
+    offset: Vec3 | None = None

@@ -17,6 +17,20 @@ from scenewright.layout.solver import solve
 from scenewright.scene import Constraint, SceneObject
 
 
+def collision_manager(
+    objects: Sequence[SceneObject], meshes: Mapping[str, trimesh.Trimesh]
+) -> trimesh.collision.CollisionManager:
+    """trimesh's manager holding every object at its pose (a box mesh where there is no asset)."""
+    manager = trimesh.collision.CollisionManager()
+    for o in objects:
+        mesh = meshes.get(o.id)
+        if mesh is None:
+            mesh = trimesh.creation.box(o.size.tuple())
+            mesh.apply_translation((0.0, 0.0, o.size.z / 2))
+        manager.add_object(o.id, mesh, transform=object_matrix(o))
+    return manager
+
+
 def independent_collisions(
     objects: Sequence[SceneObject], meshes: Mapping[str, trimesh.Trimesh], constraints: Sequence[Constraint]
 ) -> list[tuple[str, str]]:
@@ -26,14 +40,7 @@ def independent_collisions(
     a mesh become box meshes in the asset frame (bottom at z = 0), ``on`` pairs are allowed
     to touch.
     """
-    manager = trimesh.collision.CollisionManager()
-    for o in objects:
-        mesh = meshes.get(o.id)
-        if mesh is None:
-            mesh = trimesh.creation.box(o.size.tuple())
-            mesh.apply_translation((0.0, 0.0, o.size.z / 2))
-        manager.add_object(o.id, mesh, transform=object_matrix(o))
-    _, names = manager.in_collision_internal(return_names=True)
+    _, names = collision_manager(objects, meshes).in_collision_internal(return_names=True)
     resting = {frozenset((c.source, c.target)) for c in constraints if c.relation == "on"}
     return sorted(tuple(sorted(pair)) for pair in names if frozenset(pair) not in resting)
 

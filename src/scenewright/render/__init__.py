@@ -22,7 +22,7 @@ import numpy as np
 from scenewright.errors import BackendError, InputError, MissingExtra
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
-from scenewright.geometry import world_box
+from scenewright.geometry import object_matrix, world_box
 from scenewright.render.views import VIEWS
 from scenewright.scene import Scene
 
@@ -42,7 +42,7 @@ def as_folder(folder: SceneFolder | str | Path) -> SceneFolder:
 
 
 def scene_bounds(scene: Scene) -> tuple[list[float], list[float]]:
-    """The box holding every object and the scene's footprint, the box each view frames."""
+    """The box holding every object and the scene's footprint, which the ground and lamps cover."""
     if not scene.objects:
         raise InputError("the scene has no objects to render; add some with `scenewright edit`")
     boxes = [world_box(obj) for obj in scene.objects]
@@ -54,6 +54,22 @@ def scene_bounds(scene: Scene) -> tuple[list[float], list[float]]:
         high = np.maximum(high, [width / 2.0, depth / 2.0, 0.0])
     low[2] = min(low[2], 0.0)
     return low.tolist(), high.tolist()
+
+
+#: Corners of the normalised asset box (footprint centred, bottom at z = 0) in units of its size.
+_UNIT_BOX = np.array([[x, y, z, 1.0] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (0.0, 1.0)])
+
+
+def object_corners(scene: Scene) -> list[list[float]]:
+    """The eight corners of every object's posed size box: the points each camera frames.
+
+    The posed boxes rather than their axis-aligned hulls, so a turned object does not widen
+    the shot by its hull's empty corners.
+    """
+    if not scene.objects:
+        raise InputError("the scene has no objects to render; add some with `scenewright edit`")
+    corners = [(_UNIT_BOX * [*obj.size.tuple(), 1.0]) @ object_matrix(obj).T for obj in scene.objects]
+    return np.concatenate(corners)[:, :3].tolist()
 
 
 def _ground_texture(scene: Scene, folder: SceneFolder) -> str | None:
@@ -88,11 +104,13 @@ def render(
     if importlib.util.find_spec("bpy") is None:
         raise MissingExtra("Rendering", "render", "bpy")
     low, high = scene_bounds(scene)
+    frame = object_corners(scene)
     with tempfile.TemporaryDirectory(prefix="scenewright-render-") as tmp:
         job = {
             "glb": str(folder.glb.resolve()),
             "ids": [obj.id for obj in scene.objects],
             "bounds": [low, high],
+            "frame": frame,
             "style": scene.style,
             "ground_texture": _ground_texture(scene, folder),
             "ground_kind": scene.ground.kind,

@@ -1,4 +1,4 @@
-"""The paper's three candidate viewpoints, framed on the scene's bounds, and the choice among them.
+"""The paper's three candidate viewpoints, framed on the scene's objects, and the choice among them.
 
 Pure numpy, so the worker (which has Blender) and the tests (which may not) share it. The
 Blender world frame equals the scene frame (+Z up): the glTF importer undoes the export's
@@ -22,8 +22,8 @@ VIEWS: dict[str, tuple[float, float]] = {
 #: Horizontal field of view of the camera (a 35 mm lens on a 36 mm sensor).
 LENS_MM = 35.0
 SENSOR_MM = 36.0
-#: Room left around the framed bounds, as a share of the view.
-MARGIN = 1.03
+#: The framed points span at most this share of the frame's width or height: a thin border.
+FILL = 0.94
 
 
 def view_direction(name: str) -> np.ndarray:
@@ -40,33 +40,65 @@ def view_direction(name: str) -> np.ndarray:
     )
 
 
-def camera_matrix(name: str, low: Sequence[float], high: Sequence[float], aspect: float) -> np.ndarray:
-    """4×4 world matrix of a camera (looking down its −Z, +Y up) that frames the box [low, high].
+def half_fov_tangents(aspect: float) -> tuple[float, float]:
+    """Tangents of the half field of view across and up the frame (Blender's AUTO sensor fit)."""
+    tan_wide = SENSOR_MM / 2.0 / LENS_MM
+    return (tan_wide, tan_wide / aspect) if aspect >= 1.0 else (tan_wide * aspect, tan_wide)
 
-    The distance is the smallest at which every corner of the box falls inside the view
-    (with :data:`MARGIN`), so scenes of any size fill the picture the same way.
+
+def camera_matrix(name: str, points: Sequence[Sequence[float]], aspect: float) -> np.ndarray:
+    """4×4 world matrix of a camera (looking down its −Z, +Y up) framing ``points`` tightly.
+
+    The caller passes the corners of the object boxes, not the scene's bounds: the box around a
+    whole scene projects to a hexagon much larger than the objects inside it, which left wide
+    empty floor in the isometric view. The view's direction is fixed; the camera moves back
+    along it to the nearest distance at which every point fits in the frame at :data:`FILL`,
+    and across it so the points' projections are centred on both axes, so the binding axis
+    is filled to :data:`FILL` whatever the scene's size.
     """
-    low, high = np.asarray(low, float), np.asarray(high, float)
-    centre = (low + high) / 2.0
+    pts = np.asarray(points, float).reshape(-1, 3)
+    if len(pts) == 0:
+        raise ValueError("nothing to frame: no points given")
     back = view_direction(name)
     right = np.cross(np.array([0.0, 0.0, 1.0]), back)
     right /= np.linalg.norm(right)
     up = np.cross(back, right)
-    tan_x = SENSOR_MM / 2.0 / LENS_MM / MARGIN
-    tan_y = tan_x / aspect if aspect >= 1.0 else tan_x
-    tan_x = tan_x if aspect >= 1.0 else tan_x * aspect
-    corners = np.array([[x, y, z] for x in (low[0], high[0]) for y in (low[1], high[1]) for z in (low[2], high[2])])
-    rel = corners - centre
-    # A corner at depth D - r·back needs |r·right| ≤ (D - r·back)·tan_x, likewise for up.
-    distance = max(
-        float(np.max(np.abs(rel @ right) / tan_x + rel @ back)),
-        float(np.max(np.abs(rel @ up) / tan_y + rel @ back)),
-        1e-3,
-    )
+    depth = pts @ back  # larger is nearer the camera
+    axes, tangents = (right, up), [tan * FILL for tan in half_fov_tangents(aspect)]
+    distances = []
+    for axis, tan in zip(axes, tangents, strict=True):
+        # A point p fits when |p·axis − o| ≤ (D − p·back)·tan, o the camera's offset along the
+        # axis and D its distance along the view: two linear bounds whose tightest pair gives
+        # the least D that fits this axis.
+        high = np.max(pts @ axis + depth * tan)
+        low = np.max(-(pts @ axis) + depth * tan)
+        distances.append(float(high + low) / (2.0 * tan))
+    # Keep the nearest point at least a few centimetres in front of the lens.
+    distance = max(*distances, float(np.max(depth)) + 0.05)
+    position = distance * back
+    for axis in axes:
+        position += _centred_offset(pts @ axis, distance - depth) * axis
     m = np.eye(4)
     m[:3, 0], m[:3, 1], m[:3, 2] = right, up, back
-    m[:3, 3] = centre + back * distance
+    m[:3, 3] = position
     return m
+
+
+def _centred_offset(along: np.ndarray, depth: np.ndarray) -> float:
+    """The camera offset along an axis at which the points' projections reach equally far both ways.
+
+    At the binding axis this is the linear bounds' midpoint; at the other axis the points'
+    different depths make it nonlinear, and the projected reach each way is monotone in the
+    offset, so bisection finds it.
+    """
+    lo, hi = float(along.min()), float(along.max())
+    for _ in range(60):
+        mid = (lo + hi) / 2.0
+        if np.max((along - mid) / depth) > np.max((mid - along) / depth):
+            lo = mid
+        else:
+            hi = mid
+    return (lo + hi) / 2.0
 
 
 def visibility(index_image: np.ndarray, ids: Sequence[str]) -> dict[str, int]:
@@ -84,10 +116,15 @@ WELL_SHOWN = 0.25
 
 
 def best_view(visible: Mapping[str, Mapping[str, int]]) -> str:
-    """The view showing the most objects, then the most of them well, then the most object pixels.
+    """The view showing the most objects, then the most of them well, then the most evenly.
 
-    Pixels come last because they only reward the view closest to the objects; ties keep the
-    paper's order.
+    "Evenly" is the geometric mean of each shown object's share of the view's object pixels.
+    Raw pixel counts, the former last key, reward whichever view happens to sit closest to
+    the objects: every view is framed to fill the picture, so the count mostly says how
+    compact the scene's projection is, and it peaks when one large near object (a truck in
+    front of the rest) covers the frame. Shares are unchanged when a view zooms (every count
+    scales alike) and highest when small objects are neither dwarfed nor half hidden, which
+    is what a preview should show. Ties keep the paper's order.
     """
     order = list(visible)
     ids = {object_id for counts in visible.values() for object_id in counts}
@@ -95,8 +132,10 @@ def best_view(visible: Mapping[str, Mapping[str, int]]) -> str:
 
     def key(view: str):
         counts = visible[view]
-        shown = sum(1 for n in counts.values() if n > 0)
+        shown = np.array([n for n in counts.values() if n > 0], float)
         well = sum(1 for i, n in counts.items() if n > 0 and n >= WELL_SHOWN * most[i])
-        return (shown, well, sum(counts.values()), -order.index(view))
+        # Rounded so that equal shares tie exactly and fall to the paper's order.
+        evenness = round(float(np.mean(np.log(shown / shown.sum()))), 9) if len(shown) else -math.inf
+        return (len(shown), well, evenness, -order.index(view))
 
     return max(order, key=key)
