@@ -485,3 +485,17 @@ def test_a_place_noun_after_a_determiner_qualifies_the_noun():
 def test_a_small_thing_beside_a_small_thing_on_a_table_is_its_peer():
     assert ("table_lamp", "side of", "pot") in triples("A brass lamp glows on the table next to a teapot.")
     assert ("side_table", "right of", "desk") in triples("A globe sits on a side table to the right of the desk.")
+
+
+def test_a_with_thing_placed_on_its_own_starts_a_new_list_and_is_its_peers_it():
+    text = "The counter is at the back, with a cash register at one end and a computer beside it."
+    assert triples(text) == {
+        ("cash_register", "on", "counter"),
+        ("monitor", "on", "counter"),
+        ("monitor", "side of", "cash_register"),
+    }
+    assert ("chair", "side of", "desk") in triples("A desk with a lamp on it and a chair beside it.")
+
+
+def test_a_holographic_sign_stays_a_sign():
+    assert counts("A holographic sign stands next to a trash can.") == Counter({"sign": 1, "trash_can": 1})

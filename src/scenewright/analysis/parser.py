@@ -18,7 +18,15 @@ the phrase. Decisions worth knowing:
   from their head: "a sink with a mirror above it", "a cart loaded with barrels" (on it), "a
   desk with a lamp" (a surface thing with a support → on it). "It"/"them" name the latest
   earlier mention of the right number. A phrase opening a sentence ("Behind the gate, a
-  pond...") places the subject that follows.
+  pond...") places every subject that follows ("Around it, toadstools and crystals glitter").
+  A with-list runs on over commas to its verb ("a counter with combs, scissors and a jar runs
+  beneath the mirror"); a with-thing placed on its own starts a new list, and a small thing
+  next to "it" stands by its small peer ("with a till at one end and a computer beside it").
+  Beside a small thing on a table means beside that thing, not the table.
+- "the teacher's desk" is a new desk unless an earlier one has the same head noun; "the
+  middle bench" is one of the benches; "a rack of dumbbells" is a dumbbell rack; "holographic
+  koi" are holograms (a holographic sign stays a sign); "three rows of shelves" are three
+  shelving units.
 - "the island" after "a kitchen island" refers back to it; "a vase of tulips", "a bowl full
   of apples" and "a statue of a horse" hold contents, not objects; "a stone path", "a pine
   forest", "a throne hall" name no object; "a potted palm" is a potted plant, "a round
@@ -391,6 +399,8 @@ _MODIFIER_NOUNS = {"glass", "stone", "rock", "crystal", "box", "plant", "flower"
 
 #: Adjectives that make any thing a projection.
 _PROJECTED = {"holographic", "hologram", "projected", "virtual"}
+#: Things that keep their kind when holographic: a sign with a holographic face is still a sign.
+_SHOWS_PROJECTION = {"sign", "billboard", "menu_board"}
 
 
 def _find_mentions(toks: list[_Tok]) -> list[_Mention]:
@@ -427,7 +437,7 @@ def _find_mentions(toks: list[_Tok]) -> list[_Mention]:
         qualifies = follow[:1].isalpha() and follow not in _STOP and not _is_verb(follow)
         if len(words) == 1 and words[0] in _MODIFIER_NOUNS and qualifies and not follow.endswith(("ed", "ing")):
             continue  # "a stone path", "a glass roof": an adjective here
-        if s > 0 and toks[s - 1].text in _PROJECTED:
+        if s > 0 and toks[s - 1].text in _PROJECTED and cat not in _SHOWS_PROJECTION:
             cat = "hologram"  # "holographic koi" are light, not fish: place and size them as one
         mentions.append(_Mention(cat, " ".join(t.orig for t in toks[s:e]), s, e, 1, False, False))
     return _alias_mentions(toks, mentions)
@@ -477,6 +487,7 @@ _POSITION_WORDS = {"middle", "centre", "center", "corner", "end", "front", "back
 
 
 def _position_adjective(toks: list[_Tok], j: int) -> bool:
+    """"the middle bench": a place noun between a determiner and a noun works as an adjective."""
     return toks[j].text in _POSITION_WORDS and j > 0 and toks[j - 1].text in _DETERMINERS and (
         j + 1 < len(toks) and toks[j + 1].text[:1].isalpha() and toks[j + 1].text not in _STOP
     )
@@ -689,6 +700,8 @@ _ADVERBS = {"just", "right", "directly", "all", "both", "neatly", "slightly", "a
 _HOLD = {"holds", "hold", "holding", "carries", "carry", "carrying", "supports", "support", "supporting",
          "bears", "bearing", "displays", "displaying"}  # fmt: skip
 _HOLD_PAIRS = {("loaded", "with"), ("topped", "with"), ("set", "with"), ("laid", "with"), ("decorated", "with")}
+#: Words that start a with-thing's own placing ("with a till at one end and a computer ...").
+_OWN_PLACE = {"at", "in", "along", "against", "under", "inside"}
 _ORDINALS = {"first": 0, "second": 1, "third": 2, "last": -1, "left": 0, "right": -1, "other": -1, "nearest": 0}
 
 
@@ -721,6 +734,8 @@ class _Clause:
     #: The nouns before the clause's first verb or relation: its subjects.
     subjects: list[int] = field(default_factory=list)
     verb_seen: bool = False
+    #: The "with" things before one that was placed on its own ("with a till at one end and ...").
+    wsub_before: list[int] = field(default_factory=list)
 
 
 class _Reader:
@@ -995,7 +1010,11 @@ class _Reader:
                     self.pair_each.add((g, each_group))
                 c.groups.append(g)
                 if c.head is not None:
-                    closed = any(_is_verb(t.text) for t in toks[last_event_end:m.start])
+                    gap = [t.text for t in toks[last_event_end : m.start]]
+                    closed = any(_is_verb(w) for w in gap)
+                    if c.wsub and any(w in _OWN_PLACE for w in gap):  # "a till at one end and a computer"
+                        self._close_with(c)
+                        c.wsub_before, closed = list(c.wsub), True
                     c.wsub = [g] if (c.expect_new or closed) else [*c.wsub, g]
                 else:
                     c.main_groups.append(g)
@@ -1012,6 +1031,10 @@ class _Reader:
                 continue
             k += 1
         self._close_with(c)
+
+    def _small(self, *groups: int) -> bool:
+        """All of these stand on surfaces (tabletop things)."""
+        return all(self.catalogue[self.groups[g].category].rests == "surface" for g in groups)
 
     def _close_with(self, c: _Clause) -> None:
         """"A desk with a lamp", "a cart loaded with barrels": small things with no place of
@@ -1042,8 +1065,7 @@ class _Reader:
         )  # fmt: skip
         if chained and isinstance(target, list) and target and c.last_target:
             # "a lamp on the table next to a teapot": what stands by a small thing is its peer, not the table
-            rests = [self.catalogue[self.groups[g[0]].category].rests for g in (target, c.last_target)]
-            chained = rests[0] != "surface" or rests[1] == "surface"
+            chained = not self._small(target[0]) or self._small(c.last_target[0])
         if chained and c.last_target and c.last_target_end == last_event_end and all(b in _ADVERBS for b in between):
             srcs = list(c.last_target)
         elif c.head is not None:
@@ -1072,6 +1094,8 @@ class _Reader:
             targets: list[int] | str = self._pronoun(target, c, srcs, prefer) if c.head is None else list(c.head)
             if c.head is not None and srcs == c.head:
                 targets = self._pronoun(target, c, srcs, prefer)
+            elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
+                targets = c.wsub_before[-1:]  # "... and a computer beside it": beside the till
         elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
             targets = list(c.last_target) or [g for g in self.history[-1:] if g not in srcs]
         elif target is None:

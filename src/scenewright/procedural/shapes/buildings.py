@@ -11,8 +11,9 @@ from scenewright.procedural.builder import Model
 def _windows(m: Model, x0, x1, z0, z1, y: float, facing: int, floors: int, along: str = "x") -> None:
     """A grid of glass panes with sills on one wall (``along`` the wall's axis)."""
     width = x1 - x0
-    cols = min(10, max(1, int(width / 2.2)))
     floors = min(floors, 15)
+    # Wide panes on big facades keep a tower inside the face budget (about 48 panes per wall).
+    cols = min(10, max(1, int(width / 2.2)), max(1, 48 // floors))
     fh = (z1 - z0) / floors
     cw = width / cols
     for f in range(floors):
