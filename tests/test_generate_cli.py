@@ -223,3 +223,19 @@ def test_incomplete_layout_is_written_then_reported_with_exit_3(tmp_path, capsys
     captured = capsys.readouterr()
     assert "Scene written to" in captured.out
     assert "sofa_1 (collides everywhere)" in " ".join(captured.err.split())
+
+
+def test_max_faces_simplifies_every_asset(tmp_path):
+    pytest.importorskip("fast_simplification")
+    text = "A bookshelf full of books stands behind a leather sofa."
+
+    def faces(flags: list[str]) -> dict[str, int]:
+        out = tmp_path / f"scene{len(flags)}"
+        assert main(["generate", text, "--out", str(out), "--no-render", *flags]) == 0
+        meshes = load_meshes(SceneFolder(out).load(), SceneFolder(out))
+        return {oid: len(mesh.faces) for oid, mesh in meshes.items()}
+
+    whole, reduced = faces([]), faces(["--max-faces", "400"])
+    assert whole.keys() == reduced.keys() and min(whole.values()) > 800
+    # A box cannot lose faces and stay a box, so shelves of many boards keep more than asked.
+    assert all(reduced[oid] < 0.6 * whole[oid] for oid in whole)

@@ -48,6 +48,7 @@ def test_the_working_folder_config_is_read_when_no_file_is_named(tmp_path, monke
         ('timeout = "fast"\n', "timeout must be a number > 0, got 'fast'"),
         ("max_retries = 1.5\n", "max_retries must be an integer >= 0"),
         ("vlm = [1]\n", "vlm must be a non-empty string"),
+        ("max_faces = 50\n", "max_faces must be an integer >= 100 (or 0 for no limit), got 50"),
         ("vlm = \n", "is not valid TOML"),
     ],
 )
@@ -75,3 +76,10 @@ def test_the_cli_reports_a_bad_config_with_exit_code_2(tmp_path, monkeypatch, ca
     (tmp_path / "scenewright.toml").write_text("colour = 'red'\n")
     assert main(["generate", "a table", "--out", str(tmp_path / "scene")]) == 2
     assert "unknown keys colour" in capsys.readouterr().err
+
+
+def test_max_faces_zero_means_no_limit(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "scenewright.toml").write_text("max_faces = 20000\n")
+    assert build_settings().max_faces == 20000
+    assert build_settings(max_faces=0).max_faces is None

@@ -98,7 +98,7 @@ def run_stages(
         if stage == "analyze":
             analyze(scene, folder, backends.vlm, backends.images, note)
         elif stage == "assets":
-            generate_assets(scene, folder, backends.meshes, cache, note)
+            generate_assets(scene, folder, backends.meshes, cache, note, max_faces=settings.max_faces)
         elif stage == "layout":
             arrange(
                 scene,

@@ -37,6 +37,9 @@ class Settings:
     image_concurrency: int = 4
     mesh_concurrency: int = 1
     feedback_rounds: int = 3
+    #: Simplify each generated mesh to about this many triangles (image-to-3D meshes run to
+    #: hundreds of thousands); ``None`` keeps them as they come.
+    max_faces: int | None = None
     time_limit: float = 10.0
     cache_dir: Path | None = field(default_factory=default_cache_dir)
     extra: dict[str, object] = field(default_factory=dict)
@@ -60,6 +63,21 @@ def _count(minimum: int):
         if isinstance(value, bool) or not isinstance(value, int) or value < minimum:
             raise ValueError(f"an integer >= {minimum}")
         return value
+
+    return convert
+
+
+def _optional_count(minimum: int):
+    """An integer >= ``minimum``, or 0 for none."""
+    check = _count(minimum)
+
+    def convert(value: object) -> int | None:
+        if value is None or (value == 0 and not isinstance(value, bool)):
+            return None
+        try:
+            return check(value)
+        except ValueError:
+            raise ValueError(f"an integer >= {minimum} (or 0 for no limit)") from None
 
     return convert
 
@@ -97,6 +115,7 @@ KEYS = {
     "image_concurrency": _count(1),
     "mesh_concurrency": _count(1),
     "feedback_rounds": _count(0),
+    "max_faces": _optional_count(100),
     "time_limit": _positive,
     "cache_dir": _cache_dir,
     "extra": _table,

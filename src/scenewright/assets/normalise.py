@@ -116,8 +116,9 @@ def baked(scene: trimesh.Scene, transform: np.ndarray) -> trimesh.Scene:
 def reduce_faces(scene: trimesh.Scene, max_faces: int) -> None:
     """Simplify the scene's meshes in place to about ``max_faces`` triangles in total.
 
-    Quadric decimation drops UV maps, so each simplified mesh keeps its look as vertex
-    colours sampled from the nearest original vertex (texture or material colour).
+    Quadric decimation drops UV maps: a mesh with a plain PBR material keeps that material,
+    a textured or vertex-coloured one keeps its look as colours sampled from the nearest
+    original vertex.
     """
     total = sum(len(g.faces) for g in scene.geometry.values())
     if total <= max_faces:
@@ -132,11 +133,14 @@ def reduce_faces(scene: trimesh.Scene, max_faces: int) -> None:
         target = max(4, int(len(geom.faces) * max_faces / total))
         if len(geom.faces) <= target:
             continue
-        visual = geom.visual.to_color() if hasattr(geom.visual, "to_color") else geom.visual
-        colours = visual.vertex_colors
         reduced = geom.simplify_quadric_decimation(face_count=target)
-        _, nearest = cKDTree(geom.vertices).query(reduced.vertices)
-        reduced.visual = trimesh.visual.ColorVisuals(reduced, vertex_colors=np.asarray(colours)[nearest])
+        if geom.visual.kind == "texture" and geom.visual.uv is None:
+            reduced.visual = trimesh.visual.TextureVisuals(material=geom.visual.material)
+        else:
+            visual = geom.visual.to_color() if geom.visual.kind == "texture" else geom.visual
+            _, nearest = cKDTree(geom.vertices).query(reduced.vertices)
+            colours = np.asarray(visual.vertex_colors)[nearest]
+            reduced.visual = trimesh.visual.ColorVisuals(reduced, vertex_colors=colours)
         scene.geometry[key] = reduced
     log.debug("reduced %d faces to %d", total, sum(len(g.faces) for g in scene.geometry.values()))
 

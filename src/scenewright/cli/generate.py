@@ -22,6 +22,7 @@ from scenewright.cli.options import (
     FeedbackRoundsOption,
     ImageConcurrencyOption,
     ImagesOption,
+    MaxFacesOption,
     MeshesOption,
     ReasoningEffortOption,
     TimeoutOption,
@@ -104,6 +105,7 @@ def generate_command(
     timeout: TimeoutOption = None,
     image_concurrency: ImageConcurrencyOption = None,
     feedback_rounds: FeedbackRoundsOption = None,
+    max_faces: MaxFacesOption = None,
 ) -> None:
     """Turn TEXT into a scene folder: scene.json, one asset per object, scene.glb, previews."""
     from scenewright.backends import Backends
@@ -130,6 +132,7 @@ def generate_command(
         timeout=timeout,
         image_concurrency=image_concurrency,
         feedback_rounds=feedback_rounds,
+        max_faces=max_faces,
     )
     backends = Backends.from_settings(settings)
     console = Console(stderr=True)

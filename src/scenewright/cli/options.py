@@ -42,6 +42,11 @@ FeedbackRoundsOption = Annotated[
     typer.Option("--feedback-rounds", help="Constraint revisions after an incomplete layout (default 3)."),
 ]
 
+MaxFacesOption = Annotated[
+    int | None,
+    typer.Option("--max-faces", help="Simplify each new mesh to about N triangles (needs the 'simplify' extra)."),
+]
+
 
 def build_settings(
     vlm: str | None = None,

@@ -266,7 +266,9 @@ def _stage_asset(edit: _Edit, obj: SceneObject, folder: SceneFolder, backends: B
             path.parent.mkdir(parents=True, exist_ok=True)
             path.write_bytes(image)
             single.objects[0].image = scratch.relative(path)
-        generate_assets(single, scratch, backends.meshes, RequestCache(settings.cache_dir))
+        generate_assets(
+            single, scratch, backends.meshes, RequestCache(settings.cache_dir), max_faces=settings.max_faces
+        )
         built = single.objects[0]
         glb = scratch.resolve(built.asset).read_bytes()
     digest = hashlib.sha256(glb).hexdigest()[:12]
