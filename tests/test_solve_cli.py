@@ -106,3 +106,12 @@ def test_bench_layout_prints_one_json_object(capsys):
     row = result["sizes"]["6"]
     assert row["success_rate"] == 1.0 and row["colliding_pairs"] == 0 and row["constraints_satisfied"] == 1.0
     assert row["median_seconds"] <= row["p90_seconds"] <= row["max_seconds"]
+
+
+def test_usage_errors_exit_2_with_the_usage(tmp_path, capsys):
+    o, c, out = write(tmp_path)
+    assert main(["solve", o, c, "-o", out, "--no-such-flag"]) == 2
+    err = flat(capsys.readouterr().err)
+    assert "No such option: --no-such-flag" in err and "scenewright solve --help" in err
+    assert main(["solve", o]) == 2
+    assert "Missing argument" in flat(capsys.readouterr().err)

@@ -10,6 +10,7 @@ from __future__ import annotations
 import logging
 import sys
 
+import typer
 from rich.console import Console
 
 from scenewright.cli import assets, backends, edit, evaluate, generate, parse, remote, render, solve  # noqa: F401
@@ -25,7 +26,7 @@ def main(argv: list[str] | None = None) -> int:
     logging.basicConfig(level=logging.WARNING, format="%(levelname)s %(name)s: %(message)s")
     err = Console(stderr=True, soft_wrap=True)
     try:
-        app(args=argv, standalone_mode=False)
+        app(args=argv, prog_name="scenewright", standalone_mode=False)
     except InputError as exc:
         err.print(f"[red]error:[/red] {exc}", highlight=False)
         return EXIT_BAD_INPUT
@@ -38,17 +39,11 @@ def main(argv: list[str] | None = None) -> int:
     except ScenewrightError as exc:
         err.print(f"[red]error:[/red] {exc}", highlight=False)
         return EXIT_BACKEND
-    except SystemExit as exc:  # typer.Exit inside commands
-        return int(exc.code or 0)
-    except Exception as exc:  # click usage errors arrive here with standalone_mode=False
-        import click
-
-        if isinstance(exc, click.exceptions.ClickException):
-            exc.show()
-            return EXIT_BAD_INPUT
-        if isinstance(exc, click.exceptions.Abort):
-            return 130
-        raise
+    except typer.Abort:  # Ctrl-C at a prompt
+        return 130
+    except typer.TyperException as exc:  # usage errors (unknown option, missing argument) with standalone_mode=False
+        exc.show()
+        return EXIT_BAD_INPUT
     return 0
 
 
