@@ -140,6 +140,8 @@ def test_unknown_object_names_what_the_scene_has(scene):
         ("I'd like two lamps", "one object per edit"),
         ("add a flux capacitor", "flux capacitor"),
         ("move the sofa next to the sofa", "itself"),
+        ("remove the vase and add a lamp on the coffee table", "one edit at a time: run 'remove the vase', then 'add a lamp"),
+        ("move the armchair next to the sofa, then rotate the bookshelf", "then 'rotate the bookshelf' as a second"),
     ],
 )
 def test_refusals_say_what_to_write(scene, instruction, says):
@@ -206,3 +208,11 @@ def test_shipped_cases_are_annotated_and_the_planner_meets_its_targets():
     assert scores["operation_accuracy"] >= 0.9
     assert scores["focus_accuracy"] >= 0.9
     assert scores["relation_precision"] >= 0.85
+
+
+def test_a_clause_about_the_same_object_is_the_same_edit(scene):
+    plan = plan_edit_offline(scene, "add a black and white rug and put it in front of the sofa")
+    assert plan.new_object.visual_description == "black and white rug"
+    assert relations(plan) == [("in front of", "sofa_1")]
+    plan = plan_edit_offline(scene, "move the armchair next to the bookshelf and turn it to face the sofa")
+    assert relations(plan) == [("face to", "sofa_1"), ("side of", "bookshelf_1")]

@@ -16,7 +16,7 @@ Placement phrases come from the text parser's vocabulary
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -369,6 +369,7 @@ def plan_edit_offline(scene: Scene, instruction: str) -> EditPlan:
         )
     if not scene.objects and not text.startswith(_ADD):
         raise InputError("the scene has no objects; the only edit possible is to add one, e.g. 'add a sofa'")
+    _single_edit_check(text)
     plan = _plan_imperative(scene, text)
     if plan is None:  # a wish or a statement: read as the command it amounts to
         imperative = _imperative(text)
@@ -380,6 +381,37 @@ def plan_edit_offline(scene: Scene, instruction: str) -> EditPlan:
             "(e.g. 'move the lamp next to the sofa')"
         )
     return plan
+
+
+_EDIT_VERBS = (*_DELETE, *_ADD, *_PLACE, *_MOVE, *_TURN, *_REPLACE)
+#: After an edit verb, words that start a reference to another object ("... and add a lamp").
+_ANOTHER_OBJECT = re.compile(r"(?:the|a|an|another|this|that|these|those|my|our|some|one)\b")
+
+
+def _verb_clauses(text: str) -> Iterator[tuple[re.Match[str], str, str]]:
+    """Each later clause of ``text`` that starts with an edit verb: (the cut, the verb, the clause).
+    "a black and white rug" has none: only a verb starts a clause."""
+    for cut in _CLAUSE.finditer(text):
+        clause = _strip_lead(text[cut.end():])
+        verb = _starts(clause, _EDIT_VERBS)
+        if verb:
+            yield cut, verb, clause
+
+
+def _first_clause(text: str) -> str:
+    """``text`` up to its first clause with a verb of its own ("a lamp and put it on the desk")."""
+    cut = next(_verb_clauses(text), None)
+    return text if cut is None else text[: cut[0].start()]
+
+
+def _single_edit_check(text: str) -> None:
+    """Refuse two edits in one instruction ("remove the vase and add a lamp"): each is its own
+    step of the history, so undo stays one step per change. A clause that goes on with the
+    same object ("... and turn it to face the bed", "..., facing the sofa") is the same edit."""
+    for cut, verb, clause in _verb_clauses(text):
+        if verb != "face" and _ANOTHER_OBJECT.match(clause[len(verb):].strip()):
+            first = text[: cut.start()].strip()
+            raise InputError(f"one edit at a time: run {first!r}, then {clause!r} as a second edit")
 
 
 def _plan_imperative(scene: Scene, text: str) -> EditPlan | None:
@@ -503,7 +535,7 @@ def _split_face(rest: str) -> tuple[str, str]:
 def _plan_add(scene: Scene, rest: str) -> EditPlan:
     _count_check(rest)
     phrases = _find_phrases(rest)
-    noun = rest[: phrases[0].start].strip() if phrases else _CLAUSE.split(rest, maxsplit=1)[0]
+    noun = _first_clause(rest[: phrases[0].start] if phrases else rest).strip()
     new = _new_object(scene, noun)
     focus_id = fresh_id(scene, new.category or "object")
     placement = rest[phrases[0].start:] if phrases else ""
