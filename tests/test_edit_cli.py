@@ -9,7 +9,8 @@ from editing_scenes import snapshot
 from scenewright.assets import load_meshes
 from scenewright.cli import main
 from scenewright.folder import SceneFolder
-from scenewright.layout import check, colliding_pairs
+from scenewright.evaluation.physical import physical
+from scenewright.layout import check
 
 
 @pytest.fixture(autouse=True)
@@ -36,7 +37,8 @@ def edit_and_check(folder, instruction, moved):
     for c in after.constraints:  # the edit's constraints hold, and every one that held still does
         if c.key() in held or c.source in moved or c.source not in {o.id for o in before.objects}:
             assert check(c.relation, after.get(c.source), after.get(c.target)), str(c)
-    assert colliding_pairs(after.objects, load_meshes(after, folder), after.constraints) == []
+    physics = physical(after, load_meshes(after, folder))
+    assert physics.collisions == [] and physics.floating == [] and physics.sunken == []
     assert main(["undo", str(folder.root)]) == 0
     assert folder.document.read_bytes() == before_bytes
     return before, after
@@ -61,6 +63,12 @@ def test_delete(folder):
 def test_replace(folder):
     _, after = edit_and_check(folder, "swap the floor lamp for a lantern", {"floor_lamp_1"})
     assert after.get("floor_lamp_1").category == "lantern"
+
+
+def test_a_replacement_of_another_height_stands_where_the_old_one_stood(folder):
+    before, after = edit_and_check(folder, "replace the bookshelf with a small crate", {"bookshelf_1"})
+    old, new = before.get("bookshelf_1"), after.get("bookshelf_1")
+    assert new.size.z < old.size.z and new.position.z == pytest.approx(new.size.z / 2)
 
 
 def test_restyle(folder):

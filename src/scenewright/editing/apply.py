@@ -426,6 +426,11 @@ def _replace(edit: _Edit, folder: SceneFolder, backends: Backends, settings: Set
     elif changed_kind and category is not None:
         focus.size = Vec3.of(category.size)
     mesh = _stage_asset(edit, focus, folder, backends, settings)
+    rise = (focus.size.z - before.size.z) / 2  # a new height keeps the bottom where it stood
+    focus.position = Vec3(x=focus.position.x, y=focus.position.y, z=focus.position.z + rise)
+    if focus.id in scene.initial:  # and so does the pose the ablation starts it from
+        start = scene.initial[focus.id].position
+        scene.initial[focus.id].position = Vec3(x=start.x, y=start.y, z=start.z + rise)
     z = focus.size
     edit.changes.append(f"{focus.id} is now {focus.name!r} ({focus.visual_description}), "
                         f"{z.x:.2f} × {z.y:.2f} × {z.z:.2f} m")
