@@ -187,6 +187,19 @@ def test_material_parsing():
     assert described_surfaces("a chair with a red shade", "wood", roles, ROLES.get)["wood"].color == find_colour("red")
 
 
+@pytest.mark.parametrize("style", ["realistic", "cyberpunk"])
+def test_a_glowing_colour_is_light_in_the_glb(style):
+    def emissive(name: str) -> list[list[float]]:
+        tree = glb_json(build_glb("fridge", (0.9, 0.8, 1.8), style, 3, name=name))
+        return [m.get("emissiveFactor", [0, 0, 0]) for m in tree["materials"]]
+
+    pink = [e for e in emissive("a glowing pink vending machine") if e[0] > 0.5 and e[1] < e[0] and e[2] > e[1]]
+    assert pink, "the body glows pink"
+    assert not any(e[0] > 0.5 and e[1] < e[0] and e[2] > e[1] for e in emissive("a pink vending machine"))
+    neon = described_surfaces("a neon green sign", "paint", ("paint",), ROLES.get)["paint"]
+    assert neon.emissive == neon.color == find_colour("green")
+
+
 def test_generation_is_deterministic_and_varies_by_seed():
     assert build_glb("tree", (3, 3, 5), "realistic", 5) == build_glb("tree", (3, 3, 5), "realistic", 5)
     assert build_glb("tree", (3, 3, 5), "realistic", 5) != build_glb("tree", (3, 3, 5), "realistic", 6)

@@ -76,6 +76,8 @@ _COLOUR_RE = re.compile(
 )
 _MATERIAL_WORDS = "|".join(sorted(list(MATERIALS) + list(_ADJECTIVES), key=len, reverse=True))
 _MATERIAL_RE = re.compile(r"\b(%s)\b" % _MATERIAL_WORDS)
+#: Words that make the described colour a light's: "a glowing pink vending machine", "a neon blue sign".
+_GLOW_RE = re.compile(r"\b(?:glow(?:s|ing|y)?|luminous|illuminated|neon(?:-lit)?|light-up|backlit|fluorescent)\b")
 
 
 #: Nouns for parts other than the main one: "a wooden chair with a red cushion" colours the
@@ -118,9 +120,12 @@ def find_material(text: str) -> Surface | None:
     return _material(match.group(1)) if match else None
 
 
-def _surface(base: Surface, material: str | None, colour) -> Surface:
+def _surface(base: Surface, material: str | None, colour, glow: bool = False) -> Surface:
     surface = _material(material) if material else base
-    return replace(surface, color=tuple(float(c) for c in colour)) if colour is not None else surface
+    if colour is None:
+        return surface
+    colour = tuple(float(c) for c in colour)
+    return replace(surface, color=colour, emissive=colour if glow else surface.emissive)
 
 
 #: Roles of living or elemental things: "an oak tree" names a species, not a wood finish,
@@ -133,7 +138,8 @@ def described_surfaces(
 ) -> dict[str, Surface]:
     """Role → surface the description asks for. A colour (and material) right before a part
     noun goes to that part when the object has it ("with a green shade"); the first other
-    colour and material go to the ``main`` role. ``base`` gives a role's unstyled surface."""
+    colour and material go to the ``main`` role, as light when the description says it glows.
+    ``base`` gives a role's unstyled surface."""
     text = description.lower()
     found: dict[str, Surface] = {}
     taken: list[tuple[int, int]] = []
@@ -152,5 +158,5 @@ def described_surfaces(
     if main in _NATURAL:
         material = None
     if material is not None or main_colour is not None:
-        found[main] = _surface(base(main), material, main_colour)
+        found[main] = _surface(base(main), material, main_colour, glow=_GLOW_RE.search(text) is not None)
     return found
