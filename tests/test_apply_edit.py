@@ -9,9 +9,9 @@ import pytest
 from editing_scenes import BoxMeshes, NoImages, PictureImages, RulePlanner, snapshot
 from scenewright.assets import load_meshes
 from scenewright.backends import Backends
-from scenewright.editing import EditPlan, apply_edit, validate_plan
+from scenewright.editing import EditPlan, apply_edit, entries, validate_plan
 from scenewright.errors import InfeasibleLayout, InputError
-from scenewright.layout import check, colliding_pairs
+from scenewright.layout import check, clean_constraints, colliding_pairs
 from scenewright.scene import Constraint, Vec3
 from scenewright.settings import Settings
 
@@ -42,7 +42,17 @@ def assert_sound(folder, scene):
     assert colliding_pairs(scene.objects, load_meshes(scene, folder), scene.constraints) == []
     for c in scene.constraints:
         assert check(c.relation, scene.get(c.source), scene.get(c.target)), str(c)
+    assert clean_constraints(scene.objects, scene.constraints)[1] == []  # valid, unique, acyclic
     assert folder.load() == scene  # what apply_edit returned is what it saved
+
+
+def test_an_old_constraint_the_edit_would_close_a_cycle_with_gives_way(folder, backends):
+    assert any(c.key() == ("near", "armchair_1", "coffee_table_1") for c in folder.load().constraints)
+    after = edit(folder, "turn the coffee table to face the armchair", backends)
+    assert ("face to", "coffee_table_1", "armchair_1") in {c.key() for c in after.constraints}
+    assert ("near", "armchair_1", "coffee_table_1") not in {c.key() for c in after.constraints}
+    assert any("would make a cycle" in change for change in entries(folder)[-1].changes)
+    assert_sound(folder, after)
 
 
 def test_move_re_solves_only_the_focus_and_carries_what_rests_on_it(folder, backends):

@@ -31,7 +31,7 @@ from scenewright.editing.plan import EditPlan
 from scenewright.errors import InfeasibleLayout, InputError
 from scenewright.folder import SceneFolder
 from scenewright.geometry import world_box, yaw_towards
-from scenewright.layout import check, colliding_pairs, feedback_text, solve
+from scenewright.layout import break_cycles, check, colliding_pairs, feedback_text, solve
 from scenewright.scene import Constraint, RemovedObject, Scene, SceneObject, Vec3
 from scenewright.settings import Settings
 
@@ -326,8 +326,9 @@ def _renew_constraints(edit: _Edit, focus: str) -> tuple[list[Constraint], list[
                 edit.changes.append(f"replaced '{c}'")
                 continue
         kept.append(c)
-    scene.constraints = kept + list(plan.constraints)
+    scene.constraints, cyclic = break_cycles(kept + list(plan.constraints), first={c.key() for c in plan.constraints})
     edit.changes += [f"added '{c}'" for c in plan.constraints]
+    edit.changes += [f"dropped '{c}': with the edit it would make a cycle ({' -> '.join(path)})" for c, path in cyclic]
     return turning, placing, [c for c in scene.constraints if c.source == focus]
 
 

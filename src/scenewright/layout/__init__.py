@@ -6,13 +6,14 @@ constraints and runs the feedback loop is :mod:`scenewright.layout.stage`.
 """
 
 from scenewright.layout.collision import colliding_pairs
-from scenewright.layout.constraints import clean_constraints, topological_order
+from scenewright.layout.constraints import break_cycles, clean_constraints, topological_order
 from scenewright.layout.relations import check, violation
 from scenewright.layout.report import feedback_text
 from scenewright.layout.solver import LayoutResult, solve
 
 __all__ = [
     "LayoutResult",
+    "break_cycles",
     "check",
     "clean_constraints",
     "colliding_pairs",

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import heapq
 import logging
-from typing import Any, Callable, Iterable, Mapping, Sequence
+from typing import Any, Callable, Collection, Iterable, Mapping, Sequence
 
 from pydantic import ValidationError
 
@@ -63,20 +63,27 @@ def clean_constraints(
         else:
             seen.add(c.key())
             kept.append(c)
-    acyclic, cyclic = _break_cycles(kept)
+    acyclic, cyclic = break_cycles(kept)
     for c, path in cyclic:
         drop(c, f"'{c}' would make a cycle ({' -> '.join(path)}, each placed relative to the next); "
              "constraints must be acyclic")
     return acyclic, dropped
 
 
-def _break_cycles(constraints: list[Constraint]) -> tuple[list[Constraint], list[tuple[Constraint, list[str]]]]:
-    """Admit constraints by (priority, input order); drop one whose target depends on its source."""
+def break_cycles(
+    constraints: list[Constraint], first: Collection[tuple[str, str, str]] = ()
+) -> tuple[list[Constraint], list[tuple[Constraint, list[str]]]]:
+    """Admit constraints by (priority, input order); drop one whose target depends on its source,
+    with the path that makes the cycle. Keys in ``first`` are admitted before all others: an
+    edit's new constraints win over the old ones they contradict."""
     # Edge target -> source: the target is placed first.
     after: dict[str, set[str]] = {}
     admitted: set[int] = set()
     cyclic: list[tuple[Constraint, list[str]]] = []
-    ranked = sorted(range(len(constraints)), key=lambda i: (PRIORITY[constraints[i].relation], i))
+    ranked = sorted(
+        range(len(constraints)),
+        key=lambda i: (constraints[i].key() not in first, PRIORITY[constraints[i].relation], i),
+    )
     for i in ranked:
         c = constraints[i]
         path = _path(after, c.source, c.target)
