@@ -13,7 +13,7 @@ from scenewright.analysis.catalogue import (
 
 #: Categories allowed past 5 m because the real thing is that big (catalogue module docstring).
 LARGE = {"barn", "building", "bus", "crane", "flagpole", "food_truck", "greenhouse", "house", "lighthouse",
-         "palm_tree", "pine_tree", "rocket", "shipping_container", "spaceship", "tower", "tree", "truck",
+         "palm_tree", "pier", "pine_tree", "rocket", "shipping_container", "spaceship", "tower", "tree", "truck",
          "windmill"}  # fmt: skip
 
 

@@ -374,6 +374,51 @@ def test_every_and_each_multiply():
     assert sorted(per_table.values()) == [2, 2, 2]
 
 
+def test_each_surrounded_by_gives_a_share_around_every_member():
+    parsed = parse_scene("Three round tables are in the middle, each surrounded by two chairs.")
+    assert counts(parsed.text) == Counter({"round_table": 3, "chair": 6})
+    sides: dict[str, list[str]] = {}
+    for r in parsed.relations:
+        if r.relation != "face to":
+            sides.setdefault(r.target, []).append(r.relation)
+    assert sorted(sides) == ["round_table_1", "round_table_2", "round_table_3"]
+    assert all(sorted(s) == ["left of", "right of"] for s in sides.values())
+
+
+def test_each_flanked_by_gives_a_pair_per_member():
+    parsed = parse_scene("Two desks stand by the window, each flanked by two lamps.")
+    assert counts(parsed.text)["table_lamp"] == 4
+    flanks = {(r.relation, r.target) for r in parsed.relations if r.relation in ("left of", "right of")}
+    assert flanks == {(side, desk) for side in ("left of", "right of") for desk in ("desk_1", "desk_2")}
+
+
+def test_one_thing_on_each_side_means_one_per_side():
+    for cat, text in (
+        ("lamp_post", "A gas lamp post stands on each side of the warehouse door."),
+        ("torch", "A torch burns on either side of the church."),
+        ("lamp_post", "A lamp post stands on both sides of the building."),
+    ):
+        assert counts(text)[cat] == 2, text
+        assert triples(text) == {(cat, "left of", "building"), (cat, "right of", "building")}, text
+    assert counts("A potted palm stands on each side of the elevator.") == Counter({"potted_plant": 2})
+    assert counts("A statue flanks the gate.")["statue"] == 1  # the verb names one side only
+
+
+def test_every_subject_has_its_own_parts():
+    text = "Four desks stand in two rows. Every desk has a lamp and a laptop on it."
+    assert counts(text) == Counter({"desk": 4, "table_lamp": 4, "laptop": 4})
+    on = Counter(r.target for r in parse_scene(text).relations if r.relation == "on")
+    assert sorted(on.values()) == [2, 2, 2, 2]
+    assert counts("Three boats float here. Every boat has a buoy floating behind it.")["buoy"] == 3
+
+
+def test_cake_stands_chalkboard_menus_and_piers_are_known():
+    text = "A cake stand sits on the counter. A chalkboard menu hangs on the wall behind the counter."
+    assert triples(text) == {("cake_stand", "on", "counter"), ("menu_board", "behind", "counter")}
+    for pier in ("pier", "jetty", "boardwalk"):
+        assert triples(f"Three boats are moored beside the {pier}.") == {("boat", "side of", "pier")}
+
+
 def test_a_plant_in_a_pot_is_one_object():
     assert counts("A fig grows in a pot beside the bed.") == Counter({"potted_plant": 1, "bed": 1})
 

@@ -8,7 +8,8 @@ the phrase. Decisions worth knowing:
 
 - ``beside`` / ``next to`` / ``alongside`` → ``side of``; ``near`` / ``close to`` / ``by`` →
   ``near``; ``opposite`` / ``across from`` → ``in front of`` + ``face to``; ``flanked by`` and
-  ``on either side of`` → one flanker ``left of`` and one ``right of``; ``around`` /
+  ``on either side of`` → one flanker ``left of`` and one ``right of`` (one thing named "on each
+  side of" is two, one a side, even beside a door that is no object); ``around`` /
   ``surrounding`` / ``surrounded by`` → the surrounding objects shared among the target's
   sides (every side once, then the long sides of a long table), each facing it; one thing
   "around" another is ``near`` it; ``between A and B`` → ``near`` both; ``at a distance of
@@ -34,7 +35,8 @@ the phrase. Decisions worth knowing:
 - ``over`` means ``above`` after a hanging verb (hang, hover, float...), else ``near``; ``X under Y``
   puts Y ``on`` X when X is flat (a rug under a table), else X ``near`` Y.
 - Vague counts: a pair / a couple / both → 2; a few / several / some / a bare plural → 3;
-  many / lots of → 5; ``each with a lamp`` gives one lamp per object of the group.
+  many / lots of → 5; ``each with a lamp``, ``every desk has a lamp`` and ``each surrounded by
+  two chairs`` give that many per object of the group, placed by their own one.
 - Stated sizes (``2 meters wide``, ``a 3 m tall statue``) set that dimension; the others
   scale by the same factor so the object keeps its proportions.
 - Things that rest on a surface but have no stated support get an inferred ``on`` to the
@@ -736,6 +738,8 @@ class _Clause:
     verb_seen: bool = False
     #: The "with" things before one that was placed on its own ("with a till at one end and ...").
     wsub_before: list[int] = field(default_factory=list)
+    #: The group "each"/"every" distributes over: its with-parts and flankers come once per member.
+    each: int | None = None
 
 
 class _Reader:
@@ -980,20 +984,22 @@ class _Reader:
             j += 1
         starts_with_rel = j in self.rel_at
         c.unknown_subject = j > k and toks[k].text in ("a", "an", "the") and j not in self.by_start and not starts_with_rel
-        each_group: int | None = None
         last_event_end = cs
         while k < ce:
             w = toks[k].text
             nxt = toks[k + 1].text if k + 1 < ce else ""
             each_part = nxt in ("with", "have", "has", "holding", "holds", "carrying", "bearing")
-            if w == "each" and (each_part or (nxt, toks[k + 2].text if k + 2 < ce else "") in _HOLD_PAIRS):
+            # "each surrounded by two chairs": the passive flankers come once per member too
+            each_passive = k + 1 in self.rel_at and self.rel_at[k + 1].kind in ("flanked by", "surrounded by")
+            each_hold = (nxt, toks[k + 2].text if k + 2 < ce else "") in _HOLD_PAIRS
+            if w == "each" and (each_part or each_passive or each_hold):
                 plural = [g for g in [*self.history, *c.groups] if self.groups[g].count > 1]
                 if plural:
-                    each_group = plural[-1]
+                    c.each = plural[-1]
                 k += 1
                 continue
             if w == "with" or w in _HOLD or (w, nxt) in _HOLD_PAIRS or w in ("has", "have"):
-                c.head = [each_group] if each_group is not None else (c.main or list(prev_subject))
+                c.head = [c.each] if c.each is not None else (c.main or list(prev_subject))
                 c.wsub, c.expect_new = [], False
                 c.hold = w in _HOLD or (w, nxt) in _HOLD_PAIRS
                 k += 2 if (w, nxt) in _HOLD_PAIRS else 1
@@ -1005,9 +1011,11 @@ class _Reader:
                 k = m.end
                 if g < 0:
                     continue
-                if each_group is not None and c.head is not None and not m.definite and g != each_group:
-                    self.groups[g].count = max(1, m.count) * self.groups[each_group].count
-                    self.pair_each.add((g, each_group))
+                if c.each is not None and c.head is not None and not m.definite and g != c.each:
+                    self.groups[g].count = max(1, m.count) * self.groups[c.each].count
+                    self.pair_each.add((g, c.each))
+                if m.each and c.head is None and not c.verb_seen:
+                    c.each = g  # "every desk has a lamp": a lamp per desk
                 c.groups.append(g)
                 if c.head is not None:
                     gap = [t.text for t in toks[last_event_end : m.start]]
@@ -1117,6 +1125,8 @@ class _Reader:
             head = srcs or list(prev_subject)
             if isinstance(targets, list) and head:
                 active = {"flanked by": "flank", "surrounded by": "around", "near by": "near", "on by": "on"}[kind]
+                if c.each is not None:  # "three tables, each surrounded by two chairs": two per table
+                    self._per_each([t for t in targets if t != c.each], c.each)
                 for t in targets:
                     for h in head:
                         self._relate(active, [t], h)
@@ -1133,6 +1143,8 @@ class _Reader:
                 return end
             if not c.first and not c.unknown_subject:
                 srcs = list(prev_subject)
+        if kind in ("flank", "flank elliptic") and not toks[rel.start].text.startswith("flank"):
+            self._one_a_side(srcs)  # also beside what is no object: "on each side of the elevator"
         if not srcs or not targets:
             return end
         hang = any(t.text in _HANG_VERBS for t in toks[max(0, rel.start - 3) : rel.start])
@@ -1164,6 +1176,12 @@ class _Reader:
             if (src, target) not in self.pair_each:
                 self.groups[src].count *= self.groups[target].count
                 self.pair_each.add((src, target))
+
+    def _one_a_side(self, srcs: list[int]) -> None:
+        """"A lamp post on each side of the door": one thing named for both sides means two."""
+        for s in srcs:
+            if self.groups[s].count == 1 and s not in self.history:
+                self.groups[s].count = 2
 
     def _relate(self, kind: str, srcs: list[int], target: int, hang: bool = False, instance=None) -> None:
         for s in srcs:
@@ -1246,10 +1264,12 @@ def _expand(reader: _Reader) -> list[ParsedRelation]:
         elif kind == "around" and len(src.ids) == 1:  # one round ottoman "surrounds" a palm: it is near
             out += [ParsedRelation(src.ids[0], "near", b) for b in tgt.ids[:1]]
         elif kind == "around":
-            sides = _around_sides(len(src.ids), src, tgt)
+            # paired ("each surrounded by two chairs"): each target's sides go to its own share
+            per = len(tgt.ids) if paired else 1
+            sides = _around_sides(-(-len(src.ids) // per), src, tgt)
             for i, a in enumerate(src.ids):
                 b = tgt.ids[i % len(tgt.ids)]
-                out += [ParsedRelation(a, sides[i], b), ParsedRelation(a, "face to", b)]
+                out += [ParsedRelation(a, sides[i // per], b), ParsedRelation(a, "face to", b)]
         elif kind == "under flat":
             for a, b in pairs:
                 out.append(ParsedRelation(b, "on", a))
