@@ -56,6 +56,21 @@ def test_cones_whose_boxes_overlap_need_not_touch():
     assert colliding_pairs([a, b], meshes) == []
 
 
+def test_an_object_wholly_inside_a_mesh_collides_though_no_triangle_crosses_it():
+    cone = box("cone", size=(1.4, 1.4, 1.6))
+    crate = box("crate", x=0.05, size=(0.3, 0.3, 0.6))  # inside the cone near its axis
+    building = box("building", size=(10, 10, 12))
+    meshes = {"cone": cone_mesh(cone.size), "building": trimesh.creation.box((10, 10, 12))}
+    meshes["building"].apply_translation((0, 0, 6))  # the asset frame: bottom at z = 0
+    assert colliding_pairs([cone, crate], meshes) == [("cone", "crate")]
+    assert colliding_pairs([crate, cone], meshes) == [("cone", "crate")]
+    inner = box("inner", size=(1, 1, 1))  # a cone mesh wholly inside a building mesh
+    assert colliding_pairs([building, inner], {**meshes, "inner": cone_mesh(inner.size)}) == [("building", "inner")]
+    assert independent_collisions([cone, crate], meshes, []) == [("cone", "crate")]
+    # Beside the cone's slope, inside its box but outside its solid, it is clear.
+    assert colliding_pairs([cone, box("crate", x=0.55, y=0.55, size=(0.1, 0.1, 0.1))], meshes) == []
+
+
 def test_solver_uses_mesh_collision():
     table = box("table", size=(1.4, 0.9, 0.75))
     stool = box("stool", size=(0.4, 0.4, 0.45))

@@ -5,7 +5,10 @@ when a mesh pokes out of it) for many candidate poses at once. Pairs whose boxes
 more than :data:`TOUCH` on every axis go to fcl: each mesh becomes one BVH model, built once
 per mesh and cached, and only its transform changes per candidate; an object without a mesh
 collides as its oriented size box. Boxes that only touch never collide, and a pair linked by
-an ``on`` constraint (resting contact) is exempt.
+an ``on`` constraint (resting contact) is exempt. fcl tests a mesh's triangles, not the solid
+they close, so an object wholly inside a mesh (a crate inside a building, a box inside a
+cone) meets no triangle: when one broad box holds the other, a point of the inner object is
+tested against the outer mesh by its winding number.
 
 Meshes are in the scene-frame asset frame (footprint centred, bottom at z = 0, front −Y) and
 are treated as immutable once handed in.
@@ -29,6 +32,7 @@ from scenewright.scene import Constraint, SceneObject, Vec3
 TOUCH = 1e-6
 
 _BVH: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+_TRIANGLES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
 def _bvh(mesh: trimesh.Trimesh) -> fcl.BVHModel:
@@ -40,6 +44,20 @@ def _bvh(mesh: trimesh.Trimesh) -> fcl.BVHModel:
         model.endModel()
         _BVH[mesh] = model
     return model
+
+
+def _winding_number(mesh: trimesh.Trimesh, point: np.ndarray) -> float:
+    """How many times ``mesh`` wraps ``point`` (1 inside a closed mesh, 0 outside): the sum of
+    its triangles' signed solid angles (Van Oosterom and Strackee) over 4π."""
+    triangles = _TRIANGLES.get(mesh)
+    if triangles is None:
+        triangles = _TRIANGLES[mesh] = np.asarray(mesh.triangles, dtype=float)
+    a, b, c = (triangles[:, k] - point for k in range(3))
+    la, lb, lc = (np.linalg.norm(v, axis=1) for v in (a, b, c))
+    det = np.einsum("ij,ij->i", a, np.cross(b, c))
+    dot = lambda u, v: np.einsum("ij,ij->i", u, v)  # noqa: E731
+    div = la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la
+    return float(np.arctan2(det, div).sum() / (2.0 * np.pi))
 
 
 def _yaw_rotation(tilt: np.ndarray, yaw: float) -> np.ndarray:
@@ -69,11 +87,15 @@ class CollisionWorld:
         #: Translation from the box centre to the shape's origin, in the object's own frame.
         self.offset = np.zeros((n, 3))
         self.has_mesh = np.zeros(n, dtype=bool)
+        self.meshes: list[trimesh.Trimesh | None] = []
         self.shapes: list[fcl.CollisionObject] = []
         for i, o in enumerate(objects):
             half = np.array(o.size.tuple()) / 2.0
             mesh = meshes.get(o.id)
-            if mesh is not None and len(mesh.faces):
+            if mesh is not None and not len(mesh.faces):
+                mesh = None
+            self.meshes.append(mesh)
+            if mesh is not None:
                 self.has_mesh[i] = True
                 self.offset[i] = (0.0, 0.0, -half[2])
                 bounds = np.asarray(mesh.bounds) + self.offset[i]
@@ -132,6 +154,7 @@ class CollisionWorld:
         hits = []
         posed = False
         aligned = self._aligned(i, yaw)
+        lo, hi = (box[0] for box in self.boxes(i, np.asarray(centre, dtype=float)[None], np.array([yaw])))
         for j in candidates:
             if aligned and self.axis_aligned[j]:
                 hits.append(int(j))  # two axis-aligned boxes: the broad phase was exact
@@ -139,9 +162,29 @@ class CollisionWorld:
             if not posed:
                 self._pose(i, centre, yaw)
                 posed = True
-            if fcl.collide(self.shapes[i], self.shapes[j], fcl.CollisionRequest(), fcl.CollisionResult()):
+            if fcl.collide(self.shapes[i], self.shapes[j], fcl.CollisionRequest(), fcl.CollisionResult()) or (
+                _holds(self.lo[j], self.hi[j], lo, hi) and self._inside(i, j)
+            ) or (_holds(lo, hi, self.lo[j], self.hi[j]) and self._inside(j, i)):
                 hits.append(int(j))
         return hits
+
+    def _inside(self, inner: int, outer: int) -> bool:
+        """Whether ``inner`` (posed) lies in the solid of ``outer``'s mesh, by one of its points:
+        with no triangle crossing, one point inside means all of it is."""
+        mesh = self.meshes[outer]
+        if mesh is None:
+            return False  # fcl's boxes are solid: it has already seen this
+        shape = self.shapes[inner]
+        point = shape.getTranslation()
+        if self.meshes[inner] is not None:  # a vertex: a mesh's origin may lie outside it
+            point = shape.getRotation() @ self.meshes[inner].vertices[0] + point
+        frame = self.shapes[outer]
+        local = frame.getRotation().T @ (point - frame.getTranslation())
+        return _winding_number(mesh, local) > 0.5
+
+
+def _holds(lo: np.ndarray, hi: np.ndarray, inner_lo: np.ndarray, inner_hi: np.ndarray) -> bool:
+    return bool(np.all(lo <= inner_lo) and np.all(inner_hi <= hi))
 
 
 def colliding_pairs(
