@@ -393,13 +393,13 @@ def test_each_flanked_by_gives_a_pair_per_member():
 
 
 def test_one_thing_on_each_side_means_one_per_side():
-    for cat, text in (
-        ("lamp_post", "A gas lamp post stands on each side of the warehouse door."),
-        ("torch", "A torch burns on either side of the church."),
-        ("lamp_post", "A lamp post stands on both sides of the building."),
+    for cat, text, target in (
+        ("lamp_post", "A gas lamp post stands on each side of the warehouse door.", "warehouse"),
+        ("torch", "A torch burns on either side of the church.", "building"),
+        ("lamp_post", "A lamp post stands on both sides of the building.", "building"),
     ):
         assert counts(text)[cat] == 2, text
-        assert triples(text) == {(cat, "left of", "building"), (cat, "right of", "building")}, text
+        assert triples(text) == {(cat, "left of", target), (cat, "right of", target)}, text
     assert counts("A potted palm stands on each side of the elevator.") == Counter({"potted_plant": 2})
     assert counts("A statue flanks the gate.")["statue"] == 1  # the verb names one side only
 
@@ -544,3 +544,60 @@ def test_a_with_thing_placed_on_its_own_starts_a_new_list_and_is_its_peers_it():
 
 def test_a_holographic_sign_stays_a_sign():
     assert counts("A holographic sign stands next to a trash can.") == Counter({"sign": 1, "trash_can": 1})
+
+
+@pytest.mark.parametrize(
+    "text, description",
+    [
+        ("A vending machine glowing pink stands to the right of the food truck.", "vending machine glowing pink"),
+        ("A lantern painted red hangs above the door.", "lantern painted red"),
+        ("A sofa covered in green velvet faces the TV.", "sofa covered in green velvet"),
+        ("A crate made of steel sits near the fence.", "crate made of steel"),
+    ],
+)
+def test_a_look_written_after_the_noun_stays_in_its_description(text, description):
+    assert description in {o.description for o in parse_scene(text).objects}
+
+
+def test_a_look_stops_at_relations_and_other_objects_and_its_material_is_no_object():
+    text = "A vending machine glowing pink stands to the right of the food truck."
+    assert triples(text) == {("vending_machine", "right of", "food_truck")}
+    parsed = parse_scene("A crate painted green and a barrel sit by the fence.")
+    assert [o.description for o in parsed.objects] == ["crate painted green", "barrel", "fence"]
+    assert counts("A table made of glass stands beside a sofa.") == Counter({"table": 1, "sofa": 1})
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A house stands on the hill. Far from the house, a campfire burns.", ("campfire", "far", "house")),
+        ("A cottage sits in a clearing. Far from the cottage, three small totems stand.", ("totem", "far", "house")),
+    ],
+)
+def test_a_fronted_far_from_places_the_subject_after_it(text, expected):
+    assert expected in triples(text)
+
+
+def test_a_part_of_its_owner_places_by_the_owner():
+    assert ("lantern", "above", "house") in triples("A cottage with a lantern hanging above its door.")
+    text = "A barn stands in the field. Barrels lean against its walls."
+    assert ("barrel", "near", "barn") in triples(text)
+
+
+def test_a_with_thing_on_either_side_flanks_its_head():
+    text = "A sofa faces the window. A bed with a nightstand on either side."
+    assert counts(text)["nightstand"] == 2
+    assert triples(text) >= {("nightstand", "left of", "bed"), ("nightstand", "right of", "bed")}
+    assert not {r for r in triples(text) if r[0] == "nightstand" and r[2] == "sofa"}
+
+
+def test_a_side_wall_is_no_relation_target():
+    assert triples("A teacher's desk stands at the front. A whiteboard hangs on the left wall.") == set()
+    assert ("nightstand", "left of", "bed") in triples("A bed. On the left hand side there is a nightstand.")
+
+
+def test_low_wide_buildings_are_not_office_blocks():
+    parsed = parse_scene("A warehouse, a factory and a hangar stand by the dock.")
+    assert {o.category for o in parsed.objects} == {"warehouse"}
+    width, depth, height = parsed.objects[0].size
+    assert height < width and height < depth and height < load_catalogue()["building"].size[2]

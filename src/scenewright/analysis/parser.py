@@ -14,12 +14,17 @@ the phrase. Decisions worth knowing:
   sides (every side once, then the long sides of a long table), each facing it; one thing
   "around" another is ``near`` it; ``between A and B`` → ``near`` both; ``at a distance of
   N m`` → ``near`` when N ≤ 2, ``far`` when N > 8.
+- "on the left wall" places nothing: a side word before a noun is that noun's adjective, and
+  walls are no objects. A part named by a possessive is its owner ("above its door" → above
+  it), since doors, roofs and porches are not objects either.
 - A phrase right after another's target places that target ("a globe on a side table to the
   right of the desk": the side table is right of the desk). ``with``/``holding`` parts hang
   from their head: "a sink with a mirror above it", "a cart loaded with barrels" (on it), "a
-  desk with a lamp" (a surface thing with a support → on it). "It"/"them" name the latest
+  desk with a lamp" (a surface thing with a support → on it); "a bed with a nightstand on
+  either side" flanks the head, the with-thing's only target. "It"/"them" name the latest
   earlier mention of the right number. A phrase opening a sentence ("Behind the gate, a
-  pond...") places every subject that follows ("Around it, toadstools and crystals glitter").
+  pond...", "Far from the house, ...") places every subject that follows ("Around it,
+  toadstools and crystals glitter"); an adverb that starts a phrase ("far", "just") is part of it.
   A with-list runs on over commas to its verb ("a counter with combs, scissors and a jar runs
   beneath the mirror"); a with-thing placed on its own starts a new list, and a small thing
   next to "it" stands by its small peer ("with a till at one end and a computer beside it").
@@ -28,6 +33,10 @@ the phrase. Decisions worth knowing:
   middle bench" is one of the benches; "a rack of dumbbells" is a dumbbell rack; "holographic
   koi" are holograms (a holographic sign stays a sign); "three rows of shelves" are three
   shelving units.
+- A look written after the noun is part of its description, so the mesh gets its colours,
+  materials and glow: "a vending machine glowing pink", "a sofa covered in green velvet" (a
+  participle and its describing words, up to a verb, a relation phrase or another object); a
+  catalogue noun after "made of" is a material ("a table made of glass" holds no glass).
 - "the island" after "a kitchen island" refers back to it; "a vase of tulips", "a bowl full
   of apples" and "a statue of a horse" hold contents, not objects; "a stone path", "a pine
   forest", "a throne hall" name no object; "a potted palm" is a potted plant, "a round
@@ -198,8 +207,8 @@ _REL_PHRASES: dict[str, list[str]] = {
     "right of": ["to the right of", "on the right of", "right of", "to the right side of", "on the right side of",
                  "at the right of", "on the right hand side of", "to the right hand side of",
                  "against the right side of", "against the right of"],
-    "left": ["to the left", "on the left"],
-    "right": ["to the right", "on the right"],
+    "left": ["to the left", "on the left", "on the left hand side", "to the left hand side"],
+    "right": ["to the right", "on the right", "on the right hand side", "to the right hand side"],
     "its left": ["to its left", "on its left", "at its left"],
     "its right": ["to its right", "on its right", "at its right"],
     "on top": ["on top", "on the top"],
@@ -368,6 +377,8 @@ class _Mention:
     adjectives: list[str] = field(default_factory=list)
     group: int = -1
     content: bool = False  # inside a container or a depiction: not an object
+    #: Describing words after the noun ("a vending machine glowing pink", "a crate made of steel").
+    post: list[str] = field(default_factory=list)
     alias: bool = False  # "the island" after "a kitchen island": only a reference
 
 
@@ -567,6 +578,47 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
     m.count, m.counted, m.adjectives = count, counted, adjectives
 
 
+#: Participles that describe the look of the noun before them ("painted red", "made of steel").
+_LOOK_PARTICIPLES = {"glowing", "gleaming", "shining", "painted", "covered", "made", "coated", "upholstered",
+                     "carved", "lacquered", "varnished", "dyed", "tinted", "trimmed", "wrapped", "draped",
+                     "clad", "plated", "cast", "forged", "woven", "built", "lit", "finished"}  # fmt: skip
+_LOOK_PREPOSITIONS = {"in", "of", "from", "with"}
+#: After these, every noun is what the thing is made of ("made of steel and glass").
+_MADE_OF = {("made", "of"), ("made", "from"), ("built", "of"), ("built", "from"), ("carved", "from"),
+            ("carved", "of"), ("cast", "in"), ("forged", "from"), ("woven", "from")}  # fmt: skip
+_MAX_LOOK_WORDS = 4
+
+
+def _post_description(toks: list[_Tok], end: int, starts: set[int]) -> tuple[list[str], int]:
+    """The look a participle gives the noun ending at ``end`` ("glowing pink", "covered in green
+    velvet") and where it ends: the descriptive words up to a verb, a relation phrase or another
+    noun phrase, so the mesh generator reads colours and materials written after the noun too."""
+    if end >= len(toks) or toks[end].text not in _LOOK_PARTICIPLES or end in starts:
+        return [], end
+    k = end + 1
+    made_of = k < len(toks) and (toks[end].text, toks[k].text) in _MADE_OF
+    if k < len(toks) and toks[k].text in _LOOK_PREPOSITIONS:
+        k += 1
+    first = k
+
+    def describes(i: int) -> bool:
+        w = toks[i].text if i < len(toks) else ""
+        noun_ok = made_of or i not in starts
+        return w[:1].isalpha() and w not in _STOP and noun_ok and not _is_verb(w)
+
+    while k - first < _MAX_LOOK_WORDS and (describes(k) or (toks[k].text in ("and", "or") and describes(k + 1))):
+        k += 1
+    if k == first:
+        return [], end  # "a table covered in books": contents, no look
+    words: list[str] = []
+    for t in toks[end:k]:
+        if t.joined and words:  # "neon-pink"
+            words[-1] += "-" + t.text
+        else:
+            words.append(t.text)
+    return words, k
+
+
 # --------------------------------------------------------------------------- sizes
 
 _NUM_WORD = {**{k: float(v) for k, v in _NUMBERS.items() if k not in ("single", "dozen")}, "half": 0.5}
@@ -651,6 +703,15 @@ def _distance_at(toks: list[_Tok], i: int) -> _Rel | None:
     return _Rel(kind, i, k + 1 if has_from else k, elliptic=not has_from)
 
 
+def _qualifies_noun(toks: list[_Tok], end: int, kind: str) -> bool:
+    """"on the left wall", "on the left bench": the side word is the next noun's adjective, so
+    the phrase is only its preposition (a wall is no object: nothing is left of anything)."""
+    if kind not in ("left", "right") or end >= len(toks):
+        return False
+    w = toks[end].text
+    return w[0].isalpha() and w not in _STOP and not _is_verb(w)
+
+
 def _find_relations(toks: list[_Tok], taken: set[int]) -> list[_Rel]:
     table = _phrase_table()
     rels: list[_Rel] = []
@@ -664,7 +725,7 @@ def _find_relations(toks: list[_Tok], taken: set[int]) -> list[_Rel]:
             if hit or any(k in taken for k in range(i, i + length)):
                 continue
             key = tuple(t.text for t in toks[i : i + length])
-            if key in table:
+            if key in table and not _qualifies_noun(toks, i + length, table[key]):
                 hit = _Rel(table[key], i, i + length)
                 break
         if hit:
@@ -704,6 +765,8 @@ _HOLD = {"holds", "hold", "holding", "carries", "carry", "carrying", "supports",
 _HOLD_PAIRS = {("loaded", "with"), ("topped", "with"), ("set", "with"), ("laid", "with"), ("decorated", "with")}
 #: Words that start a with-thing's own placing ("with a till at one end and a computer ...").
 _OWN_PLACE = {"at", "in", "along", "against", "under", "inside"}
+#: Possessives whose noun, when no object, is a part of what the pronoun names ("its door").
+_OWNER_PRONOUNS = {"its": "it", "their": "them"}
 _ORDINALS = {"first": 0, "second": 1, "third": 2, "last": -1, "left": 0, "right": -1, "other": -1, "nearest": 0}
 
 
@@ -770,7 +833,7 @@ class _Reader:
         if _is_plural(self.toks, m):
             words = name.split()
             name = " ".join([singular(words[0]), *words[1:]]) if "of" in words[1:2] else singular(name)
-        description = " ".join([*(a.lower() for a in m.adjectives), name]).strip()
+        description = " ".join([*(a.lower() for a in m.adjectives), name, *m.post]).strip()
         size = _apply_sizes(cat.size, sizes) if sizes else cat.size
         g = _Group(len(self.groups), m.category, max(1, m.count), name, description, size)
         self.groups.append(g)
@@ -820,6 +883,7 @@ class _Reader:
                 self.size_of.setdefault(owner, []).append((dim, value))
         taken = {k for m in mentions for k in range(m.start, m.end)}
         self.rel_at = {r.start: r for r in _find_relations(toks, taken)}
+        self._read_looks(mentions)
         self.by_start = {m.start: m for m in mentions if not m.content}
         for sentence in _split(toks):
             prev_subject: list[int] = []
@@ -858,6 +922,15 @@ class _Reader:
                 if c.main_groups:
                     prev_subject = c.main_groups[:1] if not c.main else c.main
                 self.history.extend(c.groups)
+
+    def _read_looks(self, mentions: list[_Mention]) -> None:
+        """Each noun's look written after it; a catalogue noun inside a "made of" look is its
+        material, not an object ("a table made of glass" holds no drinking glass)."""
+        starts = {m.start for m in mentions} | set(self.rel_at)
+        for m in mentions:
+            m.post, end = _post_description(self.toks, m.end, starts)
+            for other in mentions:
+                other.content = other.content or m.end < other.start < end
 
     def _size_owner(self, mentions: list[_Mention], s: int, e: int) -> int | None:
         after = [m for m in mentions if m.start >= e and m.start - e <= 4]
@@ -955,12 +1028,16 @@ class _Reader:
                 return w, j + 1
             if w in ("each", "one") and j + 1 < ce and toks[j + 1].text in ("other", "another"):
                 return "each other", j + 2
+            after_determiner = j > pos and toks[j - 1].text in _DETERMINERS  # a noun, not a verb ("its walls")
             if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
-                w not in _STOP and w[0].isalnum() and not _is_verb(w)
+                w not in _STOP and w[0].isalnum() and (after_determiner or not _is_verb(w))
             ):
                 j += 1
                 continue
             break
+        owner = _OWNER_PRONOUNS.get(toks[pos].text) if pos < ce else None
+        if owner and j > pos + 1:
+            return owner, j  # "above its door": a part of its owner places by the owner itself
         return None, pos
 
     def _pronoun(self, word: str, c: _Clause, srcs: list[int], prefer: list[int]) -> list[int]:
@@ -980,7 +1057,8 @@ class _Reader:
         while k < ce and toks[k].text in ("and", "or", "but", "then", "also", "so", "there", "is", "are"):
             k += 1
         j = k
-        while j < ce and (toks[j].text in _DETERMINERS or toks[j].text in _ADVERBS):
+        # an adverb that opens a relation phrase is part of it ("Far from the house, ...")
+        while j < ce and j not in self.rel_at and (toks[j].text in _DETERMINERS or toks[j].text in _ADVERBS):
             j += 1
         starts_with_rel = j in self.rel_at
         c.unknown_subject = j > k and toks[k].text in ("a", "an", "the") and j not in self.by_start and not starts_with_rel
@@ -1105,7 +1183,9 @@ class _Reader:
             elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
                 targets = c.wsub_before[-1:]  # "... and a computer beside it": beside the till
         elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
-            targets = list(c.last_target) or [g for g in self.history[-1:] if g not in srcs]
+            # "a bed with a nightstand on either side": a with-thing's side is its head's
+            owner = list(c.head) if c.head is not None and srcs == c.wsub else []
+            targets = list(c.last_target) or owner or [g for g in self.history[-1:] if g not in srcs]
         elif target is None:
             targets = []
         else:
