@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import importlib.util
+
 import numpy as np
 import pytest
 
@@ -11,6 +13,7 @@ from scenewright.cli import main
 from scenewright.folder import SceneFolder
 from scenewright.evaluation.physical import physical
 from scenewright.layout import check
+from scenewright.render import render, render_info
 
 
 @pytest.fixture(autouse=True)
@@ -153,3 +156,16 @@ def test_every_operation_on_a_generated_scene(tmp_path):
     edit_and_check(folder, "paint the bookshelf white", {shelf})
     before, after = edit_and_check(folder, "remove the potted plant", set())
     assert len(after.objects) == len(before.objects) - 1
+
+
+@pytest.mark.blender
+@pytest.mark.skipif(importlib.util.find_spec("bpy") is None, reason="needs the render extra (bpy)")
+def test_previews_are_called_stale_after_an_edit_and_render_refreshes_them_as_they_were(folder, capsys):
+    render(folder.load(), folder, draft=True)
+    made = render_info(folder)
+    assert main(["edit", str(folder.root), "move the floor lamp to the left of the bookshelf"]) == 0
+    assert "renders/ show the scene before this edit" in capsys.readouterr().out
+    assert main(["edit", str(folder.root), "move the armchair next to the bookshelf", "--render"]) == 0
+    assert "rendered" in capsys.readouterr().out
+    again = render_info(folder)
+    assert again["resolution"] == made["resolution"] and again["draft"] and again["visible"] != made["visible"]

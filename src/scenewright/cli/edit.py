@@ -40,10 +40,14 @@ def edit_command(
     api_key_env: ApiKeyEnvOption = None,
     reasoning_effort: ReasoningEffortOption = None,
     timeout: TimeoutOption = None,
+    render: Annotated[
+        bool, typer.Option("--render", help="Refresh the previews in renders/ after the edit, as they were made.")
+    ] = False,
 ) -> None:
     """Apply one edit (move, add, delete, replace/restyle); the previous version goes to history/."""
     from scenewright.backends import Backends
     from scenewright.editing import apply_edit, entries
+    from scenewright.render import render_info
 
     scene_folder = SceneFolder(folder)
     scene = scene_folder.load()
@@ -56,6 +60,13 @@ def edit_command(
     for change in last.changes:
         console.print(f"  {change}")
     console.print(f"  wrote {scene_folder.document} and {scene_folder.glb}; undo with `scenewright undo {folder}`")
+    if render:
+        from scenewright.render import render_again
+
+        console.print(f"  rendered {', '.join(str(p) for p in render_again(scene_folder.load(), scene_folder))}")
+    elif render_info(scene_folder) is not None:
+        console.print(f"  renders/ show the scene before this edit: refresh them with `scenewright render {folder}`"
+                      " (or edit with --render)")
 
 
 @app.command("undo")

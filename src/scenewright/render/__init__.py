@@ -131,10 +131,25 @@ def render(
         if view not in result["images"] and stale.exists():
             stale.unlink()
     result["images"] = {v: folder.relative(Path(p)) for v, p in result["images"].items()}
-    result.update(resolution=job["resolution"], samples=job["samples"], draft=draft)
+    result.update(resolution=job["resolution"], samples=job["samples"], draft=draft, transparent=transparent)
     write_atomic(folder.renders / METADATA, json.dumps(result, indent=2) + "\n")
     log.info("rendered %s in %.1f s (best view %s)", [p.name for p in images], result["total_seconds"], result["best"])
     return images
+
+
+def render_again(scene: Scene, folder: SceneFolder | str | Path) -> list[Path]:
+    """Refresh the previews as the last render made them (size, samples, one view or all), so
+    they show the scene as it is now, e.g. after an edit."""
+    info = render_info(folder) or {}
+    return render(
+        scene,
+        folder,
+        keep_all=len(info.get("images", {})) > 1,
+        resolution=tuple(info.get("resolution", (1280, 720))),
+        samples=int(info.get("samples", DEFAULT_SAMPLES)),
+        draft=bool(info.get("draft", False)),
+        transparent=bool(info.get("transparent", False)),
+    )
 
 
 def _run_worker(job_path: Path, result_path: Path, timeout: float) -> dict:
