@@ -154,7 +154,7 @@ class CollisionWorld:
         hits = []
         posed = False
         aligned = self._aligned(i, yaw)
-        lo, hi = (box[0] for box in self.boxes(i, np.asarray(centre, dtype=float)[None], np.array([yaw])))
+        box = None
         for j in candidates:
             if aligned and self.axis_aligned[j]:
                 hits.append(int(j))  # two axis-aligned boxes: the broad phase was exact
@@ -162,10 +162,16 @@ class CollisionWorld:
             if not posed:
                 self._pose(i, centre, yaw)
                 posed = True
-            if fcl.collide(self.shapes[i], self.shapes[j], fcl.CollisionRequest(), fcl.CollisionResult()) or (
-                _holds(self.lo[j], self.hi[j], lo, hi) and self._inside(i, j)
-            ) or (_holds(lo, hi, self.lo[j], self.hi[j]) and self._inside(j, i)):
+            if fcl.collide(self.shapes[i], self.shapes[j], fcl.CollisionRequest(), fcl.CollisionResult()):
                 hits.append(int(j))
+            elif self.has_mesh[i] or self.has_mesh[j]:  # boxes alone are solid to fcl
+                if box is None:
+                    box = [b[0] for b in self.boxes(i, np.asarray(centre, dtype=float)[None], np.array([yaw]))]
+                lo, hi = box
+                if (_holds(self.lo[j], self.hi[j], lo, hi) and self._inside(i, j)) or (
+                    _holds(lo, hi, self.lo[j], self.hi[j]) and self._inside(j, i)
+                ):
+                    hits.append(int(j))
         return hits
 
     def _inside(self, inner: int, outer: int) -> bool:
@@ -173,7 +179,7 @@ class CollisionWorld:
         with no triangle crossing, one point inside means all of it is."""
         mesh = self.meshes[outer]
         if mesh is None:
-            return False  # fcl's boxes are solid: it has already seen this
+            return False  # a box is solid to fcl: it has already seen this
         shape = self.shapes[inner]
         point = shape.getTranslation()
         if self.meshes[inner] is not None:  # a vertex: a mesh's origin may lie outside it
