@@ -105,7 +105,8 @@ def parse_figures(rows: list[dict]) -> dict:
 
 def summarise(rows: list[dict]) -> dict:
     result: dict = {"prompts": len(rows)}
-    for name, subset in (("all", rows), *((d, [r for r in rows if r["domain"] == d]) for d in ("indoor", "outdoor"))):
+    domains = ((d, [r for r in rows if r["domain"] == d]) for d in ("indoor", "outdoor"))
+    for name, subset in (("all", rows), *((d, subset) for d, subset in domains if subset)):
         result[name] = parse_figures(subset) | {
             "style_accuracy": ratio(sum(r["style_correct"] for r in subset), len(subset)),
         }
