@@ -12,7 +12,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from scenewright.evaluation.stated import on_ground
+from scenewright.evaluation.stated import on_ground, supports
 from scenewright.scene import Scene, SceneObject
 
 #: Below this spread the ground objects stand (nearly) in a line.
@@ -22,7 +22,8 @@ MIN_GROUND = 3
 
 
 def ground_objects(scene: Scene) -> list[SceneObject]:
-    return [o for o in scene.objects if on_ground(o, scene.objects)]
+    resting = supports(scene.objects)
+    return [o for o in scene.objects if on_ground(*resting[o.id])]
 
 
 def spread_of(points: Sequence[Sequence[float]]) -> float | None:

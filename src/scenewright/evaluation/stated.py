@@ -23,20 +23,33 @@ import numpy as np
 from scenewright.evaluation.annotations import GROUND, UNCHECKED_SUPPORTS, Prompt, assign_keys
 from scenewright.geometry import world_box
 from scenewright.layout import check
+from scenewright.layout.relations import Boxes, holds
 from scenewright.scene import Scene, SceneObject
 
 #: Metres a bottom may sit from z = 0 and still stand on the ground (as the physical metrics).
 GROUND_TOLERANCE = 0.01
 
 
-def rests_on(obj: SceneObject, others: Sequence[SceneObject]) -> SceneObject | None:
-    """The object ``obj`` rests on (the shared ``on`` check), if any."""
-    return next((o for o in others if o.id != obj.id and check("on", obj, o)), None)
+def supports(objects: Sequence[SceneObject]) -> dict[str, tuple[float, list[str]]]:
+    """Object id → (bottom height, ids of the objects it rests on by the shared ``on`` check).
+
+    All pairs at once through the layout engine's broadcasting check, so a 150-object scene
+    costs one array operation rather than 22 000 single checks.
+    """
+    if not objects:
+        return {}
+    corners = [world_box(o) for o in objects]
+    lo = np.array([c[0] for c in corners])
+    hi = np.array([c[1] for c in corners])
+    yaw = np.array([o.yaw for o in objects], dtype=float)
+    on = holds("on", Boxes(lo[:, None], hi[:, None], yaw[:, None]), Boxes(lo[None], hi[None], yaw[None]))
+    np.fill_diagonal(on, False)
+    return {o.id: (float(lo[i, 2]), [objects[j].id for j in np.flatnonzero(on[i])]) for i, o in enumerate(objects)}
 
 
-def on_ground(obj: SceneObject, others: Sequence[SceneObject]) -> bool:
-    """Bottom at ~0 and not resting on another object (a flat rug at 0 counts as ground)."""
-    return abs(float(world_box(obj)[0][2])) <= GROUND_TOLERANCE and rests_on(obj, others) is None
+def on_ground(bottom: float, hosts: Sequence[str]) -> bool:
+    """Bottom at ~0 and resting on no other object (a flat rug at 0 counts as ground)."""
+    return abs(bottom) <= GROUND_TOLERANCE and not hosts
 
 
 def between(source: SceneObject, a: SceneObject, b: SceneObject) -> bool:
@@ -131,6 +144,7 @@ def stated(scene: Scene, prompt: Prompt) -> Stated:
             result.realised += 1
         else:
             result.not_realised.append(_why(f"{source} | between | {first} | {second}", found, source, first, second))
+    resting = supports(scene.objects)
     for key, objects in found.items():
         wanted = prompt.support_of(key)
         for obj in objects:
@@ -138,19 +152,17 @@ def stated(scene: Scene, prompt: Prompt) -> Stated:
                 result.supports_skipped[wanted] = result.supports_skipped.get(wanted, 0) + 1
                 continue
             result.supports_checked += 1
-            if _support_right(obj, wanted, found, scene.objects):
+            bottom, hosts = resting[obj.id]
+            if wanted == GROUND:
+                right = on_ground(bottom, hosts)
+            else:
+                right = any(h.id in hosts for h in found[wanted])
+            if right:
                 result.supports_right += 1
             else:
-                host = rests_on(obj, scene.objects)
-                actual = host.id if host else f"bottom at {world_box(obj)[0][2]:.2f} m"
+                actual = ", ".join(hosts) if hosts else f"bottom at {bottom:.2f} m"
                 result.wrong_supports.append(f"{obj.id}: wants {wanted}, rests on {actual}")
     return result
-
-
-def _support_right(obj: SceneObject, wanted: str, found: Mapping[str, list[SceneObject]], objects) -> bool:
-    if wanted == GROUND:
-        return on_ground(obj, objects)
-    return any(h.id != obj.id and check("on", obj, h) for h in found[wanted])
 
 
 def _why(label: str, found: Mapping[str, list[SceneObject]], *keys: str) -> str:
