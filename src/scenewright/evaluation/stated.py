@@ -8,9 +8,9 @@ when every instance of the source satisfies it against at least one instance of 
 pair (*on either side of* → left of + right of, *around* → the four sides) describe a group
 spread round the target, which no single instance can satisfy alone: each such side holds when
 some source instance stands on it while every instance stands on one of the stated sides.
-*Between* holds when the source's
-centre projects inside the segment joining some pair of target instances and lies within half
-the narrower target's width of it, so it stands in the gap, not beside the pair.
+*Between* holds when the source's centre projects inside the segment joining some pair of
+target instances and lies within half the narrower target's width of it, so it stands in the
+gap, not beside the pair.
 """
 
 from __future__ import annotations
