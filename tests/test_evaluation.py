@@ -1,20 +1,29 @@
 import json
+from pathlib import Path
 
+import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from PIL import Image
 
-from scenewright.errors import BackendError, MissingExtra
+from scenewright.analysis.bench import score_objects
+from scenewright.errors import BackendError, InputError, MissingExtra
 from scenewright.evaluation import ABLATED, FULL, evaluate_scene
 from scenewright.evaluation.ablation import initial_objects, without_solver
+from scenewright.evaluation.annotations import assign_keys, find_annotation, load_prompts, parse_prompt
+from scenewright.evaluation.composition import in_a_line, spread, spread_of
 from scenewright.evaluation.judge import judge
 from scenewright.evaluation.physical import physical
 from scenewright.evaluation.report import (
+    SOURCES,
     aggregate,
     markdown_table,
     summarise,
     write_report,
 )
 from scenewright.evaluation.spatial import spatial
+from scenewright.evaluation.stated import between, stated
 from scenewright.folder import SceneFolder
 from scenewright.scene import Constraint, Pose, Scene, SceneObject, Vec3
 
@@ -169,8 +178,9 @@ def test_report_writes_json_table_and_chart(tmp_path):
     table = paths["table"].read_text()
     assert "| indoor | full | 1 | – | 0.00 | 1.00 |" in table
     assert "| indoor | full (paper) | – | 0.297 | 97.14 | 0.11 |" in table
-    assert Image.open(paths["chart"]).size == (1200, 420)
-    assert markdown_table(summarise(results), paper=False).count("\n") == 5
+    assert Image.open(paths["chart"]).size == (1600, 420)
+    rows = [line for line in markdown_table(summarise(results), paper=False).splitlines() if line.startswith("|")]
+    assert len(rows) == 5
 
 
 def test_clip_scores_a_render_with_a_randomly_initialised_model(tmp_path):
@@ -247,3 +257,260 @@ def test_evaluate_judges_renders_through_a_remote_model(tmp_path, openai_server,
     assert (row["pos"], row["rot"], row["sa"], row["psa"]) == (70.0, 60.0, 80.0, 80.0)
     asked = openai_server.seen(CHAT)
     assert len(asked) == 3 and all(len(r.image_urls) == 1 for r in asked)
+
+
+# --- the text's own figures: annotations, matching, relations realised, supports, spread -----------------
+
+def thing(object_id, x, y, z, sx, sy, sz, *, category=None, name=None, yaw=0.0):
+    return SceneObject(
+        id=object_id,
+        name=name or object_id.rsplit("_", 1)[0].replace("_", " "),
+        category=category,
+        position=Vec3(x=x, y=y, z=z),
+        rotation=Vec3(z=yaw),
+        size=Vec3(x=sx, y=sy, z=sz),
+    )
+
+
+def annotation(objects, relations, supports=None, **extra):
+    raw = {"id": "t", "domain": "indoor", "style": "realistic", "text": "text", "objects": objects, "relations": relations}
+    if supports is not None:
+        raw["supports"] = supports
+    return parse_prompt(raw | extra)
+
+
+def test_objects_match_keys_by_category_or_by_the_words_of_an_open_key():
+    keys = ["fuel_tank", "tank", "sofa", "ferris_wheel", "bird"]
+    objects = [
+        ("a", "sofa", "grey couch"),  # catalogue key: by category
+        ("b", None, "white fuel tanks"),  # open key, plural in the name; the longer key wins over "tank"
+        ("c", "cylinder", "tank"),
+        ("d", "tower", "huge ferris wheel"),  # guessed as another category, still found by name
+        ("e", "lamp", "seagull bird lamp"),  # "bird" is a catalogue key: never matched by name
+        ("f", "chair", "wheel chair"),  # "ferris_wheel" needs both words
+    ]
+    assert assign_keys(objects, keys) == {"a": "sofa", "b": "fuel_tank", "c": "tank", "d": "ferris_wheel"}
+
+
+def test_between_is_recalled_when_the_source_relates_to_both_targets_and_those_relations_are_correct():
+    prompt = annotation(
+        {"trash_can": 1, "vending_machine": 1, "market_stall": 1, "camel": 1},
+        [["trash_can", "between", "vending_machine", "market_stall"], ["camel", "near", "market_stall"]],
+    )
+    objects = [("t", "trash_can", "bin"), ("v", "vending_machine", "vm"), ("s", "market_stall", "stall"), ("c", None, "camel")]
+    both = score_objects(prompt, objects, [("t", "left of", "v"), ("t", "right of", "s"), ("c", "near", "s")])
+    assert (both["relations_recalled"], both["relations_expected"]) == (2, 2)
+    assert (both["relations_correct"], both["relations_predicted"]) == (3, 3) and both["wrong_relations"] == []
+    half = score_objects(prompt, objects, [("t", "near", "v"), ("c", "near", "s")])
+    assert (half["relations_recalled"], half["relations_correct"], half["relations_predicted"]) == (1, 1, 2)
+    assert half["missing_relations"] == ["trash_can | between | vending_machine | market_stall"]
+    assert half["wrong_relations"] == ["trash_can | near | vending_machine"]
+    assert (half["objects_found"], half["objects_correct"]) == (4, 4)
+
+
+def test_annotations_load_old_and_new_formats_and_name_bad_entries(tmp_path):
+    old = load_prompts()[0]
+    assert old.between == frozenset() and all(old.support_of(k) == "ground" for k in old.objects)
+    fresh = load_prompts(Path(__file__).resolve().parents[1] / "benchmarks" / "prompts-fresh-1")
+    office = next(p for p in fresh if p.id == "design_office")
+    assert ("filing_cabinet", "printer", "water_cooler") in office.between
+    assert office.support_of("cup") == "books" and office.support_of("whiteboard") == "wall"
+    assert office.stated == len(office.relations) + 1
+    for bad, word in (
+        ({"supports": {"cup": "shelf"}}, "supports"),
+        ({"relations": [["cup", "between", "desk"]]}, "between"),
+        ({"relations": [["cup", "on", "ghost"]]}, "ghost"),
+    ):
+        raw = {"id": "x", "domain": "indoor", "style": "realistic", "text": "a cup", "objects": {"cup": 1, "desk": 1}, "relations": []}
+        (tmp_path / "x.json").write_text(json.dumps(raw | bad))
+        with pytest.raises(InputError, match=word):
+            load_prompts(tmp_path)
+    assert find_annotation(fresh, text="  " + office.text.replace(" ", "  "), name="other") is office
+    assert find_annotation(fresh, text="unknown", name="design_office") is office
+    assert find_annotation(fresh, text="unknown", name="other") is None
+
+
+def market() -> Scene:
+    """A bin in the gap of the vending machine and the stall, a camel beside the stall, a crate on it, two lamps either side."""
+    return Scene(
+        text="market",
+        objects=[
+            thing("vending_machine_1", -3, 0, 0.9, 0.9, 0.8, 1.8, category="vending_machine"),
+            thing("market_stall_1", 3, 0, 1.2, 2.5, 1.5, 2.4, category="market_stall"),
+            thing("trash_can_1", 0, 0.1, 0.35, 0.4, 0.4, 0.7, category="trash_can"),
+            thing("camel_1", 5.5, 0, 1.0, 0.8, 2.0, 2.0, category="horse", name="camel"),
+            thing("crate_1", 3, 0, 2.65, 0.5, 0.5, 0.5, category="crate"),
+            thing("street_lamp_1", 1.2, -3, 1.5, 0.3, 0.3, 3.0, category="street_lamp"),
+            thing("street_lamp_2", 4.8, -3, 1.5, 0.3, 0.3, 3.0, category="street_lamp"),
+        ],
+    )
+
+
+def test_stated_relations_are_checked_in_the_layout_not_taken_from_constraints():
+    objects = {"vending_machine": 1, "market_stall": 1, "trash_can": 1, "camel": 1, "crate": 1, "street_lamp": 2, "pig": 1}
+    prompt = annotation(
+        objects,
+        [
+            ["trash_can", "between", "vending_machine", "market_stall"],
+            ["camel", "right of", "market_stall"],  # holds
+            ["camel", "left of", "market_stall"],  # a single camel on the right: a lone stated side that fails
+            ["crate", "on", "market_stall"],
+            ["street_lamp", "left of", "market_stall"],  # either side: one lamp each, both hold
+            ["street_lamp", "right of", "market_stall"],
+            ["pig", "near", "market_stall"],  # no pig in the scene
+        ],
+        supports={"crate": "market_stall"},
+    )
+    result = stated(market(), prompt)
+    assert (result.realised, result.relations) == (5, 7)
+    assert result.not_realised == ["camel | left of | market_stall", "pig | near | market_stall (no pig in the scene)"]
+    assert (result.supports_right, result.supports_checked) == (7, 7)
+
+
+def test_between_needs_the_gap_not_just_nearness():
+    a, b = thing("a_1", -2, 0, 0.5, 1, 1, 1), thing("b_1", 2, 0, 0.5, 1, 1, 1)
+    assert between(thing("s_1", 0.5, 0.4, 0.3, 0.3, 0.3, 0.6), a, b)
+    assert not between(thing("s_1", 0.5, 0.6, 0.3, 0.3, 0.3, 0.6), a, b)  # beside the pair
+    assert not between(thing("s_1", 2.8, 0.0, 0.3, 0.3, 0.3, 0.6), a, b)  # past one end
+    prompt = annotation({"s": 1, "a": 1, "b": 1}, [["s", "between", "a", "b"]])
+    outside = Scene(text="t", objects=[a, b, thing("s_1", -3.2, 0, 0.3, 0.3, 0.3, 0.6)])
+    assert stated(outside, prompt).realised == 0
+
+
+def test_supports_right_ground_on_an_object_and_the_unchecked_kinds():
+    scene = Scene(
+        text="t",
+        objects=[
+            thing("desk_1", 0, 0, 0.375, 1.2, 0.6, 0.75, category="desk"),
+            thing("monitor_1", 0, 0, 0.95, 0.5, 0.2, 0.4, category="monitor"),  # on the desk: right
+            thing("printer_1", 0.3, 0.1, 0.9, 0.4, 0.3, 0.3, category="printer"),  # on the desk, wants the ground
+            thing("cup_1", 2, 0, 0.05, 0.1, 0.1, 0.1, category="cup"),  # on the floor, wants the desk
+            thing("picture_frame_1", 0, 0.5, 1.6, 0.6, 0.05, 0.4, category="picture_frame"),  # wall: not checked
+        ],
+    )
+    prompt = annotation(
+        {"desk": 1, "monitor": 1, "printer": 1, "cup": 1, "picture_frame": 1},
+        [],
+        supports={"monitor": "desk", "cup": "desk", "picture_frame": "wall"},
+    )
+    result = stated(scene, prompt)
+    assert (result.supports_right, result.supports_checked) == (2, 4)
+    assert result.supports_skipped == {"wall": 1}
+    assert result.wrong_supports == ["printer_1: wants ground, rests on desk_1", "cup_1: wants desk, rests on bottom at 0.00 m"]
+
+
+def test_spread_tells_a_line_from_a_grid():
+    line = [(0.0, y) for y in range(6)]
+    grid = [(x, y) for x in range(3) for y in range(3)]
+    assert spread_of(line) == 0.0 and in_a_line(spread_of(line))
+    assert spread_of(grid) == 1.0 and not in_a_line(spread_of(grid))
+    assert spread_of([(0, 0), (5, 3)]) is None and not in_a_line(None)
+    crooked = [(0.05 * (i % 2), float(i)) for i in range(8)]  # a line with a little wobble is still a line
+    assert in_a_line(spread_of(crooked))
+    hung = market()  # the crate on the stall is not a ground object
+    value, ground = spread(hung)
+    assert ground == 6 and value is not None
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.lists(st.tuples(st.floats(-20, 20), st.floats(-20, 20)), min_size=3, max_size=12),
+    st.floats(0, 360),
+    st.floats(0.1, 10),
+    st.tuples(st.floats(-50, 50), st.floats(-50, 50)),
+)
+def test_spread_ignores_where_the_scene_stands_how_it_is_turned_and_its_scale(points, degrees, scale, shift):
+    base = spread_of(points)
+    a = np.radians(degrees)
+    turn = np.array([[np.cos(a), -np.sin(a)], [np.sin(a), np.cos(a)]])
+    moved = (np.asarray(points) @ turn.T) * scale + np.asarray(shift)
+    if np.ptp(np.asarray(points), axis=0).max() < 1e-3:  # a single point: degenerate either way
+        return
+    assert 0.0 <= base <= 1.0
+    assert abs(spread_of(moved) - base) <= 2e-3
+
+
+def test_report_says_which_figures_are_the_parsers_own(tmp_path):
+    prompt = annotation({"vending_machine": 1, "market_stall": 1, "trash_can": 1}, [["trash_can", "between", "vending_machine", "market_stall"]])
+    results = [
+        evaluate_scene(market(), name="market", group="outdoor", annotation=prompt),
+        evaluate_scene(cluttered(), name="cluttered", group="outdoor"),
+    ]
+    paths = write_report(results, tmp_path)
+    table = paths["table"].read_text()
+    assert "Parser constraints held (%)*" in table
+    assert "constraints held: as written by the analysis stage, not checked against the text" in table
+    assert "| market | full | 7 | 6 |" in table and "100.0 (1/1)" in table
+    report = json.loads(paths["json"].read_text())
+    assert report["sources"] == SOURCES
+    row = report["summary"]["outdoor"]["full"]
+    assert row["stated"] == 100.0 and row["annotated_scenes"] == 1 and row["in_a_line"] == 0
+    assert report["scenes"][0]["stated"]["relations_realised"] == [1, 1]
+    assert report["scenes"][1]["stated"] is None
+
+
+def test_evaluate_command_checks_the_text_with_annotations(tmp_path):
+    from scenewright.cli import main
+
+    scene = market()
+    scene.text = "A bin stands between the vending machine and the stall, a crate sits on the stall."
+    scene.constraints = [Constraint(relation="right of", source="trash_can_1", target="vending_machine_1")]
+    for name, text in (("market", scene.text), ("elsewhere", "Something else entirely.")):
+        folder = SceneFolder(tmp_path / "scenes" / name)
+        folder.create()
+        folder.save(scene.model_copy(update={"text": text}))
+    notes = tmp_path / "notes"
+    notes.mkdir()
+    (notes / "market.json").write_text(
+        json.dumps(
+            {
+                "id": "some_market",
+                "domain": "outdoor",
+                "style": "realistic",
+                "text": scene.text,
+                "objects": {"trash_can": 1, "vending_machine": 1, "market_stall": 1, "crate": 1, "camel": 1},
+                "relations": [["trash_can", "between", "vending_machine", "market_stall"], ["camel", "left of", "crate"]],
+                "supports": {"crate": "market_stall"},
+            }
+        )
+    )
+    out = tmp_path / "report"
+    folders = [str(tmp_path / "scenes" / n) for n in ("market", "elsewhere")]
+    assert main(["evaluate", *folders, "--out", str(out), "--annotations", str(notes)]) == 0
+    report = json.loads((out / "report.json").read_text())
+    market_row, other_row = report["scenes"]
+    assert market_row["annotation"] == "some_market"
+    assert market_row["stated"]["relations_realised"] == [1, 2]
+    assert market_row["stated"]["supports_right"] == [5, 5]
+    assert market_row["constraints"] == {"right of": [1, 1]}  # the parser's one constraint, counted apart
+    assert other_row["stated"] is None and "no annotation" in other_row["unavailable"]["stated"]
+    assert report["summary"]["scenes"]["full"]["stated"] == 50.0
+    assert "not checked against the text" in (out / "table.md").read_text()
+    assert main(["evaluate", *folders, "--out", str(out), "--annotations", str(tmp_path / "none")]) == 2
+
+
+def test_bench_pipeline_scores_the_final_layout_of_annotated_prompts(tmp_path, capsys):
+    from scenewright.cli import main
+
+    prompts = tmp_path / "prompts"
+    prompts.mkdir()
+    (prompts / "01.json").write_text(
+        json.dumps(
+            {
+                "id": "office",
+                "domain": "indoor",
+                "style": "realistic",
+                "text": "A desk with a lamp on it, an office chair in front of the desk and a bookshelf to the left of the desk.",
+                "objects": {"desk": 1, "table_lamp": 1, "office_chair": 1, "bookshelf": 1},
+                "relations": [["table_lamp", "on", "desk"], ["office_chair", "in front of", "desk"], ["bookshelf", "left of", "desk"]],
+                "supports": {"table_lamp": "desk"},
+            }
+        )
+    )
+    assert main(["bench", "pipeline", "--prompts", str(prompts), "--json", "--details"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    for key in ("object_recall", "relation_precision", "relations_realised", "supports_right", "scenes_spread_below_0.15", "median_seconds"):
+        assert key in result
+    row = result["details"][0]
+    assert row["relations_stated"] == 3 and row["supports_checked"] == 4
+    assert 0.0 <= result["relations_realised"] <= 1.0 and row["parse"]["objects_expected"] == 4

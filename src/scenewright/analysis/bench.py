@@ -1,116 +1,117 @@
-"""Scores the offline parser against the annotated descriptions in ``benchmarks/prompts/``.
+"""Scores the offline parser against annotated descriptions (``benchmarks/prompts*``).
 
-Each prompt file holds the text, its domain, the style it names, the expected objects
-(category → count, or [least, most] where the text is vague) and the expected relations as
-(source category, relation, target category). Relations are compared at category level, as
-sets, and only the relations the parser read from the text count: the ones it inferred (a
-lamp put on a nightstand nobody mentioned it standing on) are reported separately.
+Each parsed object counts as the annotation key it matches (its category, or for a thing
+outside the catalogue the key's words in its name, :func:`assign_keys`). Relations are compared
+at key level, as sets, and only the relations the parser read from the text count: the ones it
+inferred (a lamp put on a nightstand nobody mentioned it standing on) are reported separately.
+A *between* entry is recalled when the parser related the source to both targets, in whatever
+relations it chose; those relations are then correct, not wrong.
 """
 
 from __future__ import annotations
 
-import json
 from collections import Counter
-from dataclasses import dataclass
+from collections.abc import Iterable
 from pathlib import Path
 
-from scenewright.analysis.parser import ParsedScene, parse_scene
-from scenewright.errors import InputError
+from scenewright.analysis.parser import parse_scene
+from scenewright.evaluation.annotations import Prompt, assign_keys, default_prompt_dir, load_prompts
+
+__all__ = ["Prompt", "default_prompt_dir", "load_prompts", "run_parse_bench", "score_objects", "score_prompt", "summarise"]
 
 
-@dataclass(frozen=True)
-class Prompt:
-    id: str
-    domain: str
-    style: str
-    text: str
-    objects: dict[str, tuple[int, int]]
-    relations: frozenset[tuple[str, str, str]]
-
-
-def default_prompt_dir() -> Path:
-    """``benchmarks/prompts`` of the source tree this package runs from, else of the cwd."""
-    here = Path(__file__).resolve().parents[3] / "benchmarks" / "prompts"
-    return here if here.is_dir() else Path("benchmarks/prompts")
-
-
-def load_prompts(folder: Path | None = None) -> list[Prompt]:
-    folder = Path(folder) if folder else default_prompt_dir()
-    files = sorted(folder.glob("*.json"))
-    if not files:
-        raise InputError(f"{folder}: no prompt files (*.json); pass --prompts DIR")
-    prompts = []
-    for path in files:
-        try:
-            raw = json.loads(path.read_text(encoding="utf-8"))
-            objects = {
-                cat: (int(v[0]), int(v[1])) if isinstance(v, list) else (int(v), int(v))
-                for cat, v in raw["objects"].items()
-            }
-            relations = frozenset(tuple(r) for r in raw["relations"])
-            prompts.append(Prompt(raw["id"], raw["domain"], raw["style"], raw["text"], objects, relations))  # type: ignore[arg-type]
-        except (json.JSONDecodeError, KeyError, TypeError, ValueError) as exc:
-            raise InputError(f"{path}: not a prompt file ({exc})") from None
-    return prompts
-
-
-def _relation_triples(parsed: ParsedScene) -> set[tuple[str, str, str]]:
-    category = {o.id: o.category for o in parsed.objects}
-    return {(category[r.source], r.relation, category[r.target]) for r in parsed.relations if not r.inferred}
-
-
-def score_prompt(prompt: Prompt) -> dict:
-    parsed = parse_scene(prompt.text)
-    predicted = Counter(o.category for o in parsed.objects)
+def score_objects(
+    prompt: Prompt,
+    objects: Iterable[tuple[str, str | None, str]],
+    relations: Iterable[tuple[str, str, str]],
+) -> dict:
+    """Object and relation counts of one reading: ``(id, category, name)`` objects, ``(source id, relation, target id)``."""
+    objects = list(objects)
+    keys = assign_keys(objects, prompt.objects)
+    label = {oid: keys.get(oid, category or name.replace(" ", "_")) for oid, category, name in objects}
+    predicted = Counter(label.values())
     need = sum(lo for lo, _ in prompt.objects.values())
-    found = sum(min(predicted.get(cat, 0), lo) for cat, (lo, _) in prompt.objects.items())
-    right = sum(min(n, prompt.objects.get(cat, (0, 0))[1]) for cat, n in predicted.items())
-    triples = _relation_triples(parsed)
+    found = sum(min(predicted.get(key, 0), lo) for key, (lo, _) in prompt.objects.items())
+    right = sum(min(n, prompt.objects.get(key, (0, 0))[1]) for key, n in predicted.items())
+    triples = {(label[s], r, label[t]) for s, r, t in relations if s in label and t in label}
     hits = triples & prompt.relations
+    explained: set[tuple[str, str, str]] = set()
+    between_hits = []
+    for source, first, second in sorted(prompt.between):
+        to_first = {t for t in triples if t[0] == source and t[2] == first}
+        to_second = {t for t in triples if t[0] == source and t[2] == second}
+        if to_first and to_second:
+            between_hits.append((source, first, second))
+            explained |= to_first | to_second
+    correct = hits | explained
     return {
-        "id": prompt.id,
-        "domain": prompt.domain,
         "objects_expected": need,
         "objects_found": found,
         "objects_predicted": sum(predicted.values()),
         "objects_correct": right,
-        "relations_expected": len(prompt.relations),
+        "relations_expected": prompt.stated,
         "relations_predicted": len(triples),
-        "relations_correct": len(hits),
-        "relations_inferred": sum(r.inferred for r in parsed.relations),
-        "style_correct": parsed.style == prompt.style,
+        "relations_recalled": len(hits) + len(between_hits),
+        "relations_correct": len(correct),
         "missing_objects": sorted(
-            f"{cat}×{lo - predicted.get(cat, 0)}" for cat, (lo, _) in prompt.objects.items() if predicted.get(cat, 0) < lo
+            f"{key}×{lo - predicted.get(key, 0)}" for key, (lo, _) in prompt.objects.items() if predicted.get(key, 0) < lo
         ),
         "extra_objects": sorted(
-            f"{cat}×{n - prompt.objects.get(cat, (0, 0))[1]}"
-            for cat, n in predicted.items()
-            if n > prompt.objects.get(cat, (0, 0))[1]
+            f"{key}×{n - prompt.objects.get(key, (0, 0))[1]}"
+            for key, n in predicted.items()
+            if n > prompt.objects.get(key, (0, 0))[1]
         ),
-        "missing_relations": sorted(" | ".join(t) for t in prompt.relations - triples),
-        "wrong_relations": sorted(" | ".join(t) for t in triples - prompt.relations),
+        "missing_relations": sorted(
+            [" | ".join(t) for t in prompt.relations - triples]
+            + [f"{s} | between | {a} | {b}" for s, a, b in prompt.between if (s, a, b) not in between_hits]
+        ),
+        "wrong_relations": sorted(" | ".join(t) for t in triples - correct),
     }
 
 
-def _ratio(a: int, b: int) -> float:
+def score_prompt(prompt: Prompt) -> dict:
+    parsed = parse_scene(prompt.text)
+    row = score_objects(
+        prompt,
+        ((o.id, o.category, o.name) for o in parsed.objects),
+        ((r.source, r.relation, r.target) for r in parsed.relations if not r.inferred),
+    )
+    return {
+        "id": prompt.id,
+        "domain": prompt.domain,
+        **row,
+        "relations_inferred": sum(r.inferred for r in parsed.relations),
+        "style_correct": parsed.style == prompt.style,
+    }
+
+
+def ratio(a: int, b: int) -> float:
     return round(a / b, 4) if b else 1.0
 
 
-def summarise(rows: list[dict]) -> dict:
-    def total(key: str, subset=rows) -> int:
-        return sum(r[key] for r in subset)
+def parse_figures(rows: list[dict]) -> dict:
+    """Object recall / precision and relation recall / precision over ``rows`` of :func:`score_objects`."""
 
+    def total(key: str) -> int:
+        return sum(r[key] for r in rows)
+
+    return {
+        "object_recall": ratio(total("objects_found"), total("objects_expected")),
+        "object_precision": ratio(total("objects_correct"), total("objects_predicted")),
+        "relation_recall": ratio(total("relations_recalled"), total("relations_expected")),
+        "relation_precision": ratio(total("relations_correct"), total("relations_predicted")),
+    }
+
+
+def summarise(rows: list[dict]) -> dict:
     result: dict = {"prompts": len(rows)}
-    for name, subset in (("all", rows), *((d, [r for r in rows if r["domain"] == d]) for d in ("indoor", "outdoor"))):
-        result[name] = {
-            "object_recall": _ratio(total("objects_found", subset), total("objects_expected", subset)),
-            "object_precision": _ratio(total("objects_correct", subset), total("objects_predicted", subset)),
-            "relation_recall": _ratio(total("relations_correct", subset), total("relations_expected", subset)),
-            "relation_precision": _ratio(total("relations_correct", subset), total("relations_predicted", subset)),
-            "style_accuracy": _ratio(sum(r["style_correct"] for r in subset), len(subset)),
+    domains = ((d, [r for r in rows if r["domain"] == d]) for d in ("indoor", "outdoor"))
+    for name, subset in (("all", rows), *((d, subset) for d, subset in domains if subset)):
+        result[name] = parse_figures(subset) | {
+            "style_accuracy": ratio(sum(r["style_correct"] for r in subset), len(subset)),
         }
     result.update(result.pop("all"))
-    result["inferred_relations"] = total("relations_inferred")
+    result["inferred_relations"] = sum(r["relations_inferred"] for r in rows)
     return result
 
 

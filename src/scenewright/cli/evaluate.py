@@ -40,14 +40,24 @@ def evaluate_command(
         bool, typer.Option("--judge", help="Ask the vision-language backend for Pos., Rot. and SA on the renders.")
     ] = False,
     group: Annotated[str, typer.Option("--group", help="Name of this set of scenes in the table.")] = "scenes",
+    annotations: Annotated[
+        Path | None,
+        typer.Option(
+            "--annotations",
+            help="An annotated prompt file or a folder of them (benchmarks/prompts* format): also check the "
+            "relations the text states and the supports in each scene whose text or folder name matches one.",
+        ),
+    ] = None,
     vlm: VlmOption = None,
     base_url: BaseUrlOption = None,
     api_key_env: ApiKeyEnvOption = None,
     config: ConfigOption = None,
 ) -> None:
-    """Collisions (CF, CN), unsupported and out-of-bounds objects, constraints held, CLIP, judge scores."""
+    """Collisions (CF, CN), unsupported and out-of-bounds objects, spread of the ground objects, the
+    parser's constraints held, and with --annotations the relations the text states that hold; CLIP, judge."""
     from scenewright.backends import create_backend
     from scenewright.evaluation import evaluate
+    from scenewright.evaluation.annotations import load_prompts
     from scenewright.evaluation.report import write_report
 
     settings = build_settings(vlm=vlm, base_url=base_url, config=config, api_key_env=api_key_env)
@@ -57,6 +67,7 @@ def evaluate_command(
         ablation=ablation,
         clip=_clip(clip_weights),
         judge_vlm=create_backend("vlm", settings.vlm, settings) if judge else None,
+        annotations=load_prompts(annotations) if annotations is not None else None,
     )
     paths = write_report(results, out, paper=False)
     typer.echo(paths["table"].read_text(encoding="utf-8"))
@@ -99,7 +110,7 @@ def bench_eval(
             folder = Path(tmp) / entry.id
             generate(entry.text, folder, backends=backends, settings=settings, style=entry.style, render=False)
             group = PAPER_GROUPS.get(entry.domain, entry.domain)
-            results += evaluate([folder], group=group, ablation=True)
+            results += evaluate([folder], group=group, ablation=True, annotations=[entry])
     for r in results:  # the temporary folders are gone; name scenes by their prompt
         r.scene = Path(r.scene).name
     paths = write_report(results, out)

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import json
-import statistics
 import tempfile
 import time
 from importlib import resources
@@ -35,8 +34,6 @@ from scenewright.scene import STYLES, Scene
 
 #: The bundled text ``--example`` generates (``make demo``).
 EXAMPLE = "living_room.txt"
-#: Scenes with at least this many objects are reported apart by ``bench pipeline``.
-LARGE_SCENE = 12
 
 
 def _example_text() -> str:
@@ -174,44 +171,27 @@ def generate_command(
 @bench_app.command("pipeline")
 def bench_pipeline(
     prompts: Annotated[
-        Path | None, typer.Option("--prompts", help="Folder of prompt files (default: benchmarks/prompts).")
+        Path | None, typer.Option("--prompts", help="Folder of annotated prompt files (default: benchmarks/prompts).")
     ] = None,
     limit: Annotated[int | None, typer.Option("--limit", help="Use only the first N prompts.")] = None,
+    details: Annotated[bool, typer.Option("--details", help="Add per-prompt figures, misses and times.")] = False,
     json_output: Annotated[bool, typer.Option("--json", help="Print JSON (the only output format).")] = True,
 ) -> None:
-    """Seconds of `generate --no-render` (offline backends, no cache) per shipped prompt, as JSON."""
+    """`generate --no-render` (offline, no cache) per annotated prompt: the final layouts scored
+    against the text (relations realised, supports right, spread), the parse's figures, and seconds."""
     from scenewright.analysis.bench import load_prompts
     from scenewright.backends import Backends
+    from scenewright.evaluation.bench import run_row, summarise_runs
     from scenewright.pipeline import generate
 
     chosen = load_prompts(prompts)[:limit]
     settings = build_settings()
     settings.cache_dir = None
     backends = Backends.from_settings(settings)
-    runs = []
+    rows = []
     with tempfile.TemporaryDirectory(prefix="scenewright-bench-") as tmp:
         for prompt in chosen:
             start = time.perf_counter()
-            folder = Path(tmp) / prompt.id
-            scene = generate(prompt.text, folder, backends=backends, settings=settings, render=False)
-            runs.append(
-                {
-                    "id": prompt.id,
-                    "seconds": round(time.perf_counter() - start, 3),
-                    "objects": len(scene.objects),
-                    "complete": scene.layout.complete,
-                }
-            )
-    seconds = [r["seconds"] for r in runs]
-    large = [r["seconds"] for r in runs if r["objects"] >= LARGE_SCENE]
-    result = {
-        "prompts": len(runs),
-        "median_seconds": round(statistics.median(seconds), 3),
-        "max_seconds": max(seconds),
-        "median_objects": statistics.median(r["objects"] for r in runs),
-        f"median_seconds_{LARGE_SCENE}plus_objects": round(statistics.median(large), 3) if large else None,
-        f"scenes_{LARGE_SCENE}plus_objects": len(large),
-        "complete_layouts": sum(r["complete"] for r in runs),
-        "slowest": sorted(runs, key=lambda r: -r["seconds"])[:3],
-    }
-    typer.echo(json.dumps(result))
+            scene = generate(prompt.text, Path(tmp) / prompt.id, backends=backends, settings=settings, render=False)
+            rows.append(run_row(prompt, scene, time.perf_counter() - start))
+    typer.echo(json.dumps(summarise_runs(rows, details=details), indent=1 if details else None))

@@ -1,4 +1,8 @@
-"""``scenewright bench parse``: how well the offline parser reads the shipped descriptions."""
+"""``scenewright bench parse``: how well the offline parser reads annotated descriptions.
+
+``bench pipeline`` (in :mod:`scenewright.cli.generate`) scores the final layouts of the same
+prompts; the two together are how a fresh batch is scored.
+"""
 
 from __future__ import annotations
 
@@ -14,7 +18,11 @@ from scenewright.cli.app import bench_app
 @bench_app.command("parse")
 def bench_parse(
     prompts: Annotated[
-        Path | None, typer.Option("--prompts", help="Folder of annotated prompt files (default: benchmarks/prompts).")
+        Path | None,
+        typer.Option(
+            "--prompts",
+            help="Folder (or one file) of annotated prompts, benchmarks/prompts* format (default: benchmarks/prompts).",
+        ),
     ] = None,
     details: Annotated[bool, typer.Option("--details", help="Add per-prompt misses and extras.")] = False,
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON (the only output format).")] = True,

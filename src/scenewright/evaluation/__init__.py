@@ -1,9 +1,13 @@
 """Scoring scenes the way the paper does (§4, Table 1) so every change can be compared.
 
 Per scene: physical plausibility (collisions at mesh level, out of bounds, unsupported
-objects), spatial consistency (constraints that hold, by relation), perceptual quality (CLIP
-on the render, with user-supplied weights) and the vision-language judge (Pos., Rot., SA,
-PSA). :mod:`scenewright.evaluation.report` aggregates them into the paper's table.
+objects), composition (the spread of the ground objects: near 0 is a line), the constraints
+the analysis stage wrote that hold (the paper's spatial consistency: it checks the layout
+against the parser's own reading, never against the text), and, when an annotation of the
+text is given, the relations the *text* states that hold and the supports that are right
+(:mod:`scenewright.evaluation.stated`); then perceptual quality (CLIP on the render, with
+user-supplied weights) and the vision-language judge (Pos., Rot., SA, PSA).
+:mod:`scenewright.evaluation.report` aggregates them into the paper's table.
 """
 
 from __future__ import annotations
@@ -16,10 +20,13 @@ from pathlib import Path
 import trimesh
 
 from scenewright.backends import VisionLanguageModel
+from scenewright.evaluation.annotations import Prompt, find_annotation
+from scenewright.evaluation.composition import spread
 from scenewright.evaluation.judge import judge, psa
 from scenewright.evaluation.perceptual import ClipScorer
 from scenewright.evaluation.physical import physical
 from scenewright.evaluation.spatial import spatial
+from scenewright.evaluation.stated import stated
 from scenewright.folder import SceneFolder
 from scenewright.scene import Scene
 
@@ -39,9 +46,16 @@ class SceneMetrics:
     out_of_bounds: list[str]
     floating: list[str]
     sunken: list[str]
-    #: relation → [satisfied, total]
+    #: relation → [satisfied, total], over the constraints the analysis stage wrote (not the text)
     constraints: dict[str, list[int]]
     violated: list[str]
+    #: minor/major standard deviation of the ground objects' centres (None: fewer than three)
+    spread: float | None = None
+    ground_objects: int = 0
+    #: the annotation this scene was checked against, and what its text states that holds
+    #: (:meth:`scenewright.evaluation.stated.Stated.to_dict`); None without an annotation
+    annotation: str | None = None
+    stated: dict | None = None
     clip: float | None = None
     #: pos, rot, sa (1–100) when the judge could score the render
     judge: dict[str, float] = field(default_factory=dict)
@@ -67,9 +81,12 @@ def evaluate_scene(
     image: Path | None = None,
     clip: ClipScorer | None = None,
     vlm: VisionLanguageModel | None = None,
+    annotation: Prompt | None = None,
 ) -> SceneMetrics:
-    """Every metric for one scene; render-based ones only when ``image`` (its render) is given."""
+    """Every metric for one scene; render-based ones only when ``image`` (its render) is given,
+    the text's relations only when its ``annotation`` is."""
     phys, spat = physical(scene, meshes), spatial(scene)
+    ratio, ground = spread(scene)
     metrics = SceneMetrics(
         scene=name,
         group=group,
@@ -81,7 +98,12 @@ def evaluate_scene(
         sunken=phys.sunken,
         constraints=spat.by_relation,
         violated=spat.violated,
+        spread=ratio,
+        ground_objects=ground,
     )
+    if annotation is not None:
+        metrics.annotation = annotation.id
+        metrics.stated = stated(scene, annotation).to_dict()
     wanted = [m for m, asked in (("clip", clip), ("judge", vlm)) if asked is not None]
     if image is None:
         for metric in wanted:
@@ -106,11 +128,13 @@ def evaluate(
     ablation: bool = False,
     clip: ClipScorer | None = None,
     judge_vlm: VisionLanguageModel | None = None,
+    annotations: Sequence[Prompt] | None = None,
 ) -> list[SceneMetrics]:
     """Metrics of each scene folder; with ``ablation`` also its layout without the solver.
 
     The ablated layout is the initial one recorded in the document; it is not rendered, so its
-    CLIP and judge scores are reported unavailable.
+    CLIP and judge scores are reported unavailable. With ``annotations``, each scene is checked
+    against the one with its text (or, failing that, whose id is the folder's name).
     """
     from scenewright.assets import load_meshes
     from scenewright.evaluation.ablation import initial_objects, without_solver
@@ -122,14 +146,36 @@ def evaluate(
         scene = folder.load()
         meshes = load_meshes(scene, folder)
         name = str(folder.root)
+        annotation = find_annotation(annotations, text=scene.text, name=folder.root.name) if annotations else None
         results.append(
             evaluate_scene(
-                scene, name=name, group=group, meshes=meshes, image=best_render(folder), clip=clip, vlm=judge_vlm
+                scene,
+                name=name,
+                group=group,
+                meshes=meshes,
+                image=best_render(folder),
+                clip=clip,
+                vlm=judge_vlm,
+                annotation=annotation,
             )
         )
         if ablation:
             ablated = without_solver(scene, initial_objects(scene), meshes)
             results.append(
-                evaluate_scene(ablated, name=name, group=group, method=ABLATED, meshes=meshes, clip=clip, vlm=judge_vlm)
+                evaluate_scene(
+                    ablated,
+                    name=name,
+                    group=group,
+                    method=ABLATED,
+                    meshes=meshes,
+                    clip=clip,
+                    vlm=judge_vlm,
+                    annotation=annotation,
+                )
             )
+        if annotations and annotation is None:
+            for r in results[-(2 if ablation else 1):]:
+                r.unavailable["stated"] = (
+                    f"no annotation has this scene's text or the id {folder.root.name!r}"
+                )
     return results

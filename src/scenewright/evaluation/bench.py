@@ -1,0 +1,91 @@
+"""``bench pipeline``: the offline pipeline on annotated prompts, scored from the final layout, and its speed.
+
+The command generates each prompt from scratch (offline backends, no cache, no render, a
+temporary folder) and hands the scenes here. The figures a user would see come from the finished scene checked against the
+annotation of the text (:mod:`scenewright.evaluation.stated`), and from the spread of its
+ground objects (:mod:`scenewright.evaluation.composition`); the parse figures beside them
+score what the analysis stage read (:mod:`scenewright.analysis.bench`).
+"""
+
+from __future__ import annotations
+
+import statistics
+
+from scenewright.analysis.bench import parse_figures, ratio, score_prompt
+from scenewright.evaluation.annotations import Prompt
+from scenewright.evaluation.composition import LINE, in_a_line, spread
+from scenewright.evaluation.stated import stated
+from scenewright.scene import Scene
+
+#: Scenes with at least this many objects are reported apart (the speed target is for 15).
+LARGE_SCENE = 12
+
+
+def layout_row(scene: Scene, prompt: Prompt) -> dict:
+    """Relations realised, supports right and spread of one finished scene."""
+    result = stated(scene, prompt)
+    value, ground = spread(scene)
+    return {
+        "relations_realised": result.realised,
+        "relations_stated": result.relations,
+        "supports_right": result.supports_right,
+        "supports_checked": result.supports_checked,
+        "supports_skipped": result.supports_skipped,
+        "spread": value,
+        "ground_objects": ground,
+        "not_realised": result.not_realised,
+        "wrong_supports": result.wrong_supports,
+    }
+
+
+def layout_figures(rows: list[dict]) -> dict:
+    skipped: dict[str, int] = {}
+    for r in rows:
+        for kind, n in r["supports_skipped"].items():
+            skipped[kind] = skipped.get(kind, 0) + n
+    spreads = [r["spread"] for r in rows if r["spread"] is not None]
+    return {
+        "relations_realised": ratio(sum(r["relations_realised"] for r in rows), sum(r["relations_stated"] for r in rows)),
+        "supports_right": ratio(sum(r["supports_right"] for r in rows), sum(r["supports_checked"] for r in rows)),
+        "supports_skipped": skipped,
+        "median_spread": round(statistics.median(spreads), 4) if spreads else None,
+        f"scenes_spread_below_{LINE}": sum(in_a_line(r["spread"]) for r in rows),
+        "scenes_with_spread": len(spreads),
+    }
+
+
+def run_row(prompt: Prompt, scene: Scene, seconds: float) -> dict:
+    """One generated prompt: its time, size, layout figures and the parse's own score."""
+    return {
+        "id": prompt.id,
+        "domain": prompt.domain,
+        "seconds": round(seconds, 3),
+        "objects": len(scene.objects),
+        "complete": scene.layout.complete if scene.layout is not None else False,
+        **layout_row(scene, prompt),
+        "parse": score_prompt(prompt),
+    }
+
+
+def summarise_runs(rows: list[dict], *, details: bool = False) -> dict:
+    """Parse figures, layout figures and speed over the rows of :func:`run_row`."""
+    seconds = [r["seconds"] for r in rows]
+    large = [r["seconds"] for r in rows if r["objects"] >= LARGE_SCENE]
+    result = {
+        "prompts": len(rows),
+        **parse_figures([r["parse"] for r in rows]),
+        **layout_figures(rows),
+        "median_seconds": round(statistics.median(seconds), 3),
+        "max_seconds": max(seconds),
+        "median_objects": statistics.median(r["objects"] for r in rows),
+        f"median_seconds_{LARGE_SCENE}plus_objects": round(statistics.median(large), 3) if large else None,
+        f"scenes_{LARGE_SCENE}plus_objects": len(large),
+        "complete_layouts": sum(r["complete"] for r in rows),
+        "slowest": [
+            {k: r[k] for k in ("id", "seconds", "objects", "complete")}
+            for r in sorted(rows, key=lambda r: -r["seconds"])[:3]
+        ],
+    }
+    if details:
+        result["details"] = rows
+    return result
