@@ -232,3 +232,12 @@ def test_text_ids_are_stable_and_seeds_multiply_entries(tmp_path):
     path.write_text("a bed\na sofa and a lamp\n")  # reordered: same ids
     again, _ = read_entries(path, style="anime", seeds=[0, 1])
     assert {e.id for e in again} == {e.id for e in entries}
+
+
+def test_ray_missing_names_the_extra(monkeypatch, tmp_path, capsys):
+    monkeypatch.setitem(sys.modules, "ray", None)  # as if the batch extra were not installed
+    prompts = tmp_path / "prompts.txt"
+    prompts.write_text("a bed and a nightstand\n")
+    assert main(["batch", str(prompts), "--out", str(tmp_path / "out"), "--ray", "local", "--no-render"]) == 1
+    err = " ".join(capsys.readouterr().err.split())
+    assert "pip install 'scenewright[batch]'" in err and "Traceback" not in err

@@ -126,6 +126,8 @@ def run_batch(
             _run_local([replace(j, slots=slots) for j in jobs], workers, arrived, record)
         else:
             _run_ray(jobs, ray, workers, limit, arrived, record)
+    except KeyboardInterrupt:  # between two waits; the workers had the signal too and stop
+        record.interrupted = True
     finally:
         record.seconds = time.perf_counter() - start
         record.write()

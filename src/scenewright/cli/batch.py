@@ -5,7 +5,6 @@ from __future__ import annotations
 import json
 import logging
 import os
-import resource
 import tempfile
 import time
 from pathlib import Path
@@ -13,6 +12,7 @@ from typing import Annotated
 
 import typer
 from rich.console import Console
+from rich.markup import escape
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
 
 from scenewright.cli.app import app, bench_app
@@ -102,7 +102,7 @@ def batch_command(
         more = f" (and {len(problems) - 20} more)" if len(problems) > 20 else ""
         raise InputError(f"{prompts}: {len(problems)} lines cannot be used: {listed}{more}. Fix them or drop --strict")
     for problem in problems:
-        err.print(f"[yellow]skipped[/yellow] {prompts}:{problem.line}: {problem.reason}")
+        err.print(f"[yellow]skipped[/yellow] {escape(str(prompts))}:{problem.line}: {escape(problem.reason)}")
     if not entries:
         raise InputError(f"{prompts}: no usable entry; every line was skipped")
     ray = _ray_options(ray_address, workers, gpus_per_scene)
@@ -131,7 +131,7 @@ def batch_command(
             running = min(n_workers, len(entries) - sum(counts.values()))
             bar.update(task, advance=1, done=counts["done"], failed=counts["failed"], running=running)
             if outcome.status == "failed":
-                bar.console.print(f"[red]failed[/red] {outcome.id}: {outcome.reason}")
+                bar.console.print(f"[red]failed[/red] {outcome.id}: {escape(outcome.reason or '')}")
 
         record = run_batch(
             entries, out, settings=settings, workers=workers, render=not no_render, ray=ray,
@@ -162,6 +162,8 @@ def bench_batch(
 ) -> None:
     """Scenes per minute offline with --no-render for each worker count, and Ray's overhead
     per scene against the process pool; with CPU times and the load, since cores are shared."""
+    import resource
+
     from scenewright.analysis.bench import load_prompts
     from scenewright.batch import Entry, RayOptions, run_batch
     from scenewright.batch.entries import text_id
@@ -198,7 +200,7 @@ def bench_batch(
             # Everything the pool's workers used, start-up and imports included (not visible for Ray's workers).
             "worker_processes_cpu_s": None if ray_options else round(
                 (after_children.ru_utime + after_children.ru_stime) - (children.ru_utime + children.ru_stime), 2),
-            "parent_cpu_s": round((after_own.ru_utime + after_own.ru_stime) - (own.ru_utime + own.ru_stime), 2),
+            "parent_cpu_s": round((after_own.ru_utime + after_own.ru_stime) - (own.ru_utime + own.ru_stime), 3),
             # Wall time per scene the workers spent outside scenes (start-up, dispatch, idle), per scene.
             "overhead_s_per_scene": round((n * wall - in_scene) / len(made), 3) if made else None,
             "load_average_1min_before": round(load, 2),
@@ -208,10 +210,18 @@ def bench_batch(
 
     for n in counts:
         timed(f"local_{n}", n)
+        run = runs[f"local_{n}"]
+        # What the wall time would be with a free core per worker: the workers' CPU (start-up
+        # included) spread over them. On a shared machine this is the figure that compares.
+        run["cpu_bound_wall_s"] = round(run["worker_processes_cpu_s"] / n, 2)
+        run["cpu_bound_scenes_per_minute"] = round(60 * run["scenes"] / run["cpu_bound_wall_s"], 2)
     result: dict = {"scenes": len(entries), "cpus_available": len(os.sched_getaffinity(0)), "runs": runs}
-    base = runs.get(f"local_{counts[0]}")
-    if len(counts) > 1 and base and runs[f"local_{counts[-1]}"]["wall_s"]:
-        result["speedup"] = round(base["wall_s"] / runs[f"local_{counts[-1]}"]["wall_s"], 3)
+    first, last = runs[f"local_{counts[0]}"], runs[f"local_{counts[-1]}"]
+    if len(counts) > 1:
+        result["speedup"] = {
+            "wall": round(first["wall_s"] / last["wall_s"], 3),
+            "cpu_bound": round(first["cpu_bound_wall_s"] / last["cpu_bound_wall_s"], 3),
+        }
     if ray:
         try:
             import ray as ray_module
@@ -231,7 +241,8 @@ def bench_batch(
                 result["ray_vs_pool"] = {
                     "workers": n,
                     "extra_wall_s_per_scene": round((on_ray["wall_s"] - pool["wall_s"]) / len(entries), 3),
-                    "extra_cpu_s_per_scene": round(on_ray["cpu_s_per_scene"] - pool["cpu_s_per_scene"], 3),
+                    "extra_cpu_s_per_scene_in_task": round(on_ray["cpu_s_per_scene"] - pool["cpu_s_per_scene"], 3),
+                    "extra_driver_cpu_s_per_scene": round((on_ray["parent_cpu_s"] - pool["parent_cpu_s"]) / len(entries), 4),
                     "ray_init_s": round(init_s, 2),
                 }
     typer.echo(json.dumps(result))
