@@ -74,14 +74,26 @@ def _graphs(out: Path) -> list[Path]:
 
 @pytest.fixture(scope="module")
 def fresh(tmp_path_factory):
-    """One uninterrupted batch through the CLI: (prompts file, output folder, exit code)."""
-    tmp = tmp_path_factory.mktemp("fresh")
-    prompts = _prompts(tmp)
-    out = tmp / "out"
-    code = main(_args(prompts, out))
-    return prompts, out, code
+    """One uninterrupted batch through the CLI: (prompts file, output folder, exit code).
+
+    Made once per test session: under pytest-xdist the workers share it through a lock in
+    the session's temporary folder, so the twelve scenes are not made once per worker.
+    """
+    import fcntl
+
+    base = tmp_path_factory.getbasetemp()
+    shared = base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base
+    tmp = shared / "batch-fresh"
+    with open(shared / "batch-fresh.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not (tmp / "exit-code").is_file():
+            tmp.mkdir(exist_ok=True)
+            code = main(_args(_prompts(tmp), tmp / "out"))
+            (tmp / "exit-code").write_text(str(code))
+    return tmp / "prompts.txt", tmp / "out", int((tmp / "exit-code").read_text())
 
 
+@pytest.mark.slow
 def test_twelve_entries_one_bad_give_eleven_scenes_and_a_record(fresh):
     prompts, out, code = fresh
     assert code == 1  # some scene failed: the record says which
@@ -130,6 +142,8 @@ def _run_cli(prompts: Path, out: Path) -> subprocess.Popen:
         stderr=subprocess.PIPE,
         text=True,
         start_new_session=True,  # its own process group: the kill below takes the workers too
+        # A test runner started in the background inherits SIGINT ignored; Ctrl-C must reach the CLI.
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
     )
 
 
@@ -141,6 +155,7 @@ def _wait_for_scenes(out: Path, count: int, process: subprocess.Popen, timeout: 
         time.sleep(0.1)
 
 
+@pytest.mark.slow
 def test_ctrl_c_then_kill_then_rerun_gives_the_same_scenes(fresh, tmp_path):
     prompts, fresh_out, _ = fresh
     out = tmp_path / "out"
@@ -171,6 +186,7 @@ def test_ctrl_c_then_kill_then_rerun_gives_the_same_scenes(fresh, tmp_path):
     assert _scenes(out) == _scenes(fresh_out)
 
 
+@pytest.mark.slow
 def test_ray_local_mode_gives_identical_scene_documents(fresh, tmp_path):
     ray = pytest.importorskip("ray", reason="the batch extra (ray) is not installed")
     prompts, fresh_out, _ = fresh
@@ -241,3 +257,21 @@ def test_ray_missing_names_the_extra(monkeypatch, tmp_path, capsys):
     assert main(["batch", str(prompts), "--out", str(tmp_path / "out"), "--ray", "local", "--no-render"]) == 1
     err = " ".join(capsys.readouterr().err.split())
     assert "pip install 'scenewright[batch]'" in err and "Traceback" not in err
+
+
+#: The five-line loader the README shows, run as written against a batch folder.
+LOADER = """
+import json, pathlib
+root = pathlib.Path(BATCH)
+for row in map(json.loads, (root / "index.jsonl").read_text().splitlines()):
+    graph = json.loads((root / row["scene_graph"]).read_text())
+    print(row["id"], [(o["category"], o["pose"]["position"], o["support"]) for o in graph["objects"]])
+"""
+
+
+def test_the_readme_loader_reads_every_scene(fresh, capsys):
+    _, out, _ = fresh
+    capsys.readouterr()
+    exec(LOADER, {"BATCH": str(out)})
+    printed = capsys.readouterr().out.splitlines()
+    assert len(printed) == 11 and all("(" in line for line in printed)

@@ -11,6 +11,8 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
+import pytest
+
 from scenewright.backends.fake_openai import CHAT, EDIT, GENERATE, chat_reply, image_reply, object_item
 from scenewright.batch.limits import FileSlots, SlotTable
 from scenewright.cli import main
@@ -49,6 +51,7 @@ ANSWERS = {
 }
 
 
+@pytest.mark.slow
 def test_four_workers_share_one_limit_of_k_requests(openai_server, tmp_path):
     counter = InFlight(0.15)
     openai_server.responders[CHAT] = counter.around(lambda r: chat_reply(ANSWERS[r.schema_name]))
@@ -95,6 +98,8 @@ def test_file_slots_never_exceed_the_limit_among_threads(tmp_path):
 HOLD = """
 import sys, time
 from pathlib import Path
+
+import pytest
 from scenewright.batch.limits import FileSlots
 with FileSlots(Path(sys.argv[1]), 1).slot("server"):
     print("holding", flush=True)

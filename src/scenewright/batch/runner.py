@@ -24,7 +24,7 @@ import time
 from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -50,7 +50,6 @@ class RayOptions:
     num_cpus: int | None = None
     cpus_per_scene: float = 1.0
     gpus_per_scene: float = 0.0
-    init: dict[str, Any] = field(default_factory=dict)
 
 
 def default_workers() -> int:
@@ -151,36 +150,47 @@ def _run_local(jobs: list[Job], workers: int, arrived: OnOutcome, record: Record
 
 
 def _pool_round(jobs: list[Job], workers: int, context, arrived: OnOutcome, record: Record) -> list[Job]:
-    """Run ``jobs`` in one pool; returns the ones a broken pool took down."""
+    """Run ``jobs`` in one pool; returns the ones a broken pool took down.
+
+    A future leaves ``unrecorded`` only after its outcome is recorded, so a Ctrl-C that lands
+    while one is being recorded loses nothing: the next turn of the loop records it again.
+    """
     lost: list[Job] = []
     level = logging.getLogger().getEffectiveLevel()
-    with ProcessPoolExecutor(
+    pool = ProcessPoolExecutor(
         max_workers=min(workers, len(jobs)), mp_context=context, initializer=init_worker, initargs=(level,)
-    ) as pool:
+    )
+    try:
         futures = {pool.submit(run_scene, job): job for job in jobs}
-        waiting = set(futures)
+        unrecorded = set(futures)
         stopping = False
-        while waiting:
+        while unrecorded:
             try:
-                finished, waiting = wait(waiting, return_when=FIRST_COMPLETED)
+                finished, _ = wait(unrecorded, return_when=FIRST_COMPLETED)
+                for future in finished:
+                    if future.cancelled():
+                        arrived(_interrupted(futures[future], "not started"))
+                    else:
+                        try:
+                            arrived(future.result())
+                        except BrokenProcessPool:
+                            lost.append(futures[future])
+                    unrecorded.discard(future)
             except KeyboardInterrupt:
                 if stopping:  # the second Ctrl-C: end the workers now
                     _signal_workers(kill=True)
-                    _give_up(waiting, futures, arrived, "ended by a second Ctrl-C; a re-run resumes it")
+                    _give_up(unrecorded, futures, arrived, "ended by a second Ctrl-C; a re-run resumes it")
                     break
                 stopping = record.interrupted = True
                 log.warning("stopping: queued scenes cancelled, running ones stop at their next step")
-                for future in list(waiting):
-                    if future.cancel():
-                        waiting.discard(future)
-                        arrived(_interrupted(futures[future], "not started"))
+                for future in unrecorded:
+                    future.cancel()
                 _signal_workers(kill=False)
-                continue
-            for future in finished:
-                try:
-                    arrived(future.result())
-                except BrokenProcessPool:
-                    lost.append(futures[future])
+    except BaseException:
+        _signal_workers(kill=False)  # whatever escapes, running scenes stop at their next step
+        raise
+    finally:
+        pool.shutdown(wait=True, cancel_futures=True)
     return lost
 
 
@@ -212,7 +222,7 @@ def _run_ray(jobs: list[Job], options: RayOptions, workers: int, limit: int, arr
     ray = import_ray()
     started_here = not ray.is_initialized()
     if started_here:
-        kwargs: dict[str, Any] = {"include_dashboard": False, "log_to_driver": False, **options.init}
+        kwargs: dict[str, Any] = {"include_dashboard": False, "log_to_driver": False}
         if options.address:
             kwargs["address"] = options.address
         else:

@@ -80,12 +80,6 @@ class Outcome:
         return asdict(self)
 
 
-def _wanted(render: bool) -> tuple[str, ...]:
-    from scenewright.pipeline import STAGES
-
-    return STAGES if render else tuple(s for s in STAGES if s != "render")
-
-
 def finished(folder: Path, render: bool) -> dict[str, Any] | None:
     """The scene graph of a finished scene in ``folder`` (None when it is not finished)."""
     graph = folder / GRAPH
@@ -96,9 +90,10 @@ def finished(folder: Path, render: bool) -> dict[str, Any] | None:
         data = json.loads(graph.read_text(encoding="utf-8"))
     except (OSError, ValueError):
         return None
-    stages = _wanted(render)
+    from scenewright.pipeline import STAGES
+
     # A render that could not run (no Blender) leaves "render" out of done: still finished.
-    if all(s in done for s in stages if s != "render") and ("render" in done or not render or data.get("unrendered")):
+    if all(s in done for s in STAGES if s != "render") and ("render" in done or not render or data.get("unrendered")):
         return data
     return None
 
@@ -198,5 +193,5 @@ def run_scene(job: Job) -> Outcome:
 
 
 def _failed(entry: Entry, kind: str, exc: BaseException, stages: list[str], times: dict, prefix: str = "") -> Outcome:
-    log.warning("scene %s failed (%s): %s", entry.id, kind, exc)
+    log.info("scene %s failed (%s): %s", entry.id, kind, exc)
     return outcome(entry, "failed", {}, reason=f"{prefix}{exc}", error=kind, stages=stages, **times)

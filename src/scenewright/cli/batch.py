@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import json
-import logging
 import os
 import tempfile
 import time
@@ -32,8 +31,6 @@ from scenewright.cli.options import (
 )
 from scenewright.errors import InputError
 from scenewright.scene import STYLES
-
-log = logging.getLogger(__name__)
 
 EXIT_SOME_FAILED = 1
 EXIT_INTERRUPTED = 130
