@@ -129,7 +129,7 @@ class Record:
             "",
             f"{t['entries']} scenes from `{self.source}` on {self.executor} ({self.workers} workers), {state}: "
             f"{t['done']} made now, {t['finished_before']} finished before, {t['failed']} failed, "
-            f"{t['interrupted']} interrupted, {t['pending']} pending; {t['skipped_lines']} input lines skipped. "
+            f"{t['interrupted']} interrupted, {t['pending']} pending; input lines skipped: {t['skipped_lines']}. "
             f"{t['objects']} objects, constraints held {t['constraints_held']}/{t['constraints']}, "
             f"collision-free {t['collision_free']}/{t['done'] + t['finished_before']}; {t['seconds']:.1f} s.",
             "",
