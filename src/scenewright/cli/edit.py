@@ -11,7 +11,7 @@ import typer
 from rich.console import Console
 from rich.table import Table
 
-from scenewright.cli.app import app, bench_app
+from scenewright.cli.app import app, bench_app, on_interrupt
 from scenewright.cli.options import (
     ApiKeyEnvOption,
     BaseUrlOption,
@@ -54,6 +54,7 @@ def edit_command(
     settings = build_settings(vlm=vlm, images=images, meshes=meshes, base_url=base_url, config=config,
                               api_key_env=api_key_env, reasoning_effort=reasoning_effort, timeout=timeout)
     backends = Backends.from_settings(settings)
+    on_interrupt(lambda: f"the edit took effect if `scenewright history {folder}` lists it; if not, run it again")
     with writing(scene_folder, settings.lock_timeout):
         scene = scene_folder.load()  # read under the lock: a concurrent edit's result is not lost
         apply_edit(scene, scene_folder, instruction, backends=backends, settings=settings)
@@ -78,6 +79,7 @@ def undo_command(folder: FolderArgument) -> None:
     from scenewright.editing import undo
     from scenewright.pipeline import writing
 
+    on_interrupt(lambda: f"`scenewright history {folder}` shows which edits are in effect")
     with writing(SceneFolder(folder), build_settings().lock_timeout) as scene_folder:
         _, entry = undo(scene_folder)
     Console().print(f"undid edit {entry.number}: {entry.instruction!r}; redo with `scenewright redo {folder}`")
@@ -89,6 +91,7 @@ def redo_command(folder: FolderArgument) -> None:
     from scenewright.editing import redo
     from scenewright.pipeline import writing
 
+    on_interrupt(lambda: f"`scenewright history {folder}` shows which edits are in effect")
     with writing(SceneFolder(folder), build_settings().lock_timeout) as scene_folder:
         _, entry = redo(scene_folder)
     Console().print(f"redid edit {entry.number}: {entry.instruction!r}")

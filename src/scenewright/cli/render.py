@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from scenewright.cli.app import app
+from scenewright.cli.app import app, on_interrupt
 from scenewright.errors import InputError
 from scenewright.folder import SceneFolder
 
@@ -38,6 +38,7 @@ def render_command(
 
     if views not in ("best", "all"):
         raise InputError(f"--views {views!r}: choose best or all")
+    on_interrupt(lambda: f"the previews were left as they were; render again with `scenewright render {directory}`")
     with writing(SceneFolder(directory), build_settings().lock_timeout) as folder:
         paths = render(
             folder.load(),
