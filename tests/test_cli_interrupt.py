@@ -119,3 +119,43 @@ def test_ctrl_c_prints_how_to_resume_and_exits_130(tmp_path, monkeypatch, capsys
     monkeypatch.undo()
     assert main(["generate", "--resume", str(out), "--no-render"]) == 0
     assert os.path.isfile(out / "scene.glb")
+
+
+def test_ctrl_c_while_object_images_are_drawn_sends_no_image_request_not_yet_started(tmp_path, monkeypatch):
+    from scenewright.backends.fake_openai import CHAT, EDIT, GENERATE, FakeOpenAI, chat_reply, image_reply, object_item
+
+    answers = {
+        "scene_objects": {"objects": [object_item(f"crate_{i}", f"crate number {i}", (0.5, 0.5, 0.5), 2.0 * i)
+                                      for i in range(1, 7)]},
+        "redundant_images": {"redundant": []},
+        "spatial_constraints": {"constraints": []},
+    }
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "scenewright.toml").write_text(
+        f'cache_dir = "{(tmp_path / "cache").as_posix()}"\nmax_retries = 0\ntimeout = 30\nimage_concurrency = 2\n'
+    )
+    with FakeOpenAI() as server:
+        server.responders[CHAT] = lambda request: chat_reply(answers[request.schema_name])
+        server.responders[GENERATE] = lambda request: image_reply()
+        server.responders[EDIT] = lambda request: image_reply(delay=2.0)
+        flags = ["--vlm", "openai:test-model", "--images", "openai:test-image", "--base-url", server.url, "--no-render"]
+        command = [sys.executable, "-m", "scenewright", "generate", "six crates", "--out", "scene", *flags]
+        env = {k: v for k, v in os.environ.items() if k != "OPENAI_API_KEY"}
+        env["PYTHONPATH"] = str(Path(scenewright.__file__).parents[1])
+        process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+        try:
+            deadline = time.monotonic() + 120
+            while len(server.seen(EDIT)) < 2 and time.monotonic() < deadline:
+                assert process.poll() is None, process.communicate()
+                time.sleep(0.02)
+            process.send_signal(signal.SIGINT)
+            _, err = process.communicate(timeout=60)
+        finally:
+            if process.poll() is None:
+                process.kill()
+                process.wait()
+        assert process.returncode == 130, err
+        assert len(server.seen(EDIT)) == 2  # the two in flight; the other four were never asked for
+        server.responders[EDIT] = lambda request: image_reply()
+        assert main(["generate", "--resume", "scene", *flags]) == 0
+        assert len(server.seen(EDIT)) == 2 + 4 + 1  # the two in flight landed in the cache; then the ground
