@@ -64,16 +64,37 @@ def _after(folder: SceneFolder, number: int) -> Path:
     return folder.history / f"{number:04d}.after.json"
 
 
+def _read_json(path: Path, what: str) -> list:
+    """The JSON values of ``path`` (one per line when ``what`` is "lines"), or an InputError naming it."""
+    try:
+        text = path.read_text(encoding="utf-8")
+        if what == "lines":
+            return [json.loads(line) for line in text.splitlines() if line.strip()]
+        return [json.loads(text)]
+    except (ValueError, UnicodeDecodeError) as exc:
+        raise InputError(
+            f"{path} is damaged ({exc}); restore it, or delete the folder's history/ to start a new one"
+        ) from None
+
+
 def _records(folder: SceneFolder) -> list[dict]:
     path = _log(folder)
     if not path.is_file():
         return []
-    return [json.loads(line) for line in path.read_text(encoding="utf-8").splitlines() if line.strip()]
+    records = _read_json(path, "lines")
+    if not all(isinstance(r, dict) and isinstance(r.get("number"), int) for r in records):
+        raise InputError(f"{path} is damaged (a line is not an edit record); restore it, or delete history/")
+    return records
 
 
 def _current(folder: SceneFolder) -> int:
     path = _state(folder)
-    return int(json.loads(path.read_text(encoding="utf-8"))["current"]) if path.is_file() else len(_records(folder))
+    if not path.is_file():
+        return len(_records(folder))
+    (state,) = _read_json(path, "whole")
+    if not isinstance(state, dict) or not isinstance(state.get("current"), int):
+        raise InputError(f"{path} is damaged (no edit count); restore it, or delete history/")
+    return state["current"]
 
 
 def _pending(folder: SceneFolder) -> Path:
@@ -91,6 +112,8 @@ def _staged(folder: SceneFolder) -> dict | None:
         return None  # cut short: its document cannot have been written after it
     if not isinstance(pending, dict) or pending.get("document_sha256") != file_sha256(folder.document):
         return None
+    if not {"current", "records", "write", "remove"} <= set(pending):
+        return None  # not one this module wrote
     return pending
 
 
