@@ -225,7 +225,8 @@ def test_generate_killed_at_random_points_resumes_to_the_uninterrupted_result(tm
         whole(folder)
         key = f"{'killed' if status else 'finished'}, {how}"
         outcomes[key] = outcomes.get(key, 0) + 1
-    print(json.dumps({"command": "generate", "write_events": events, "seconds": round(seconds, 2), "outcomes": outcomes}))
+    summary = {"command": "generate", "write_events": events, "seconds": round(seconds, 2), "outcomes": outcomes}
+    print(json.dumps(summary))
     assert sum(outcomes.values()) == EVENT_KILLS["generate"] + TIME_KILLS["generate"]
     assert sum(n for key, n in outcomes.items() if key.startswith("killed")) >= EVENT_KILLS["generate"]
 

@@ -205,7 +205,7 @@ def commit(
     kept = [r for r in records if r["number"] <= current]
     number = current + 1
     # A new edit after undo drops the redo branch; its own number's files are overwritten.
-    dropped = [p.name for r in records if r["number"] > number for p in (_before(folder, r["number"]), _after(folder, r["number"]))]
+    dropped = [path(folder, r["number"]).name for r in records if r["number"] > number for path in (_before, _after)]
     written: list[Path] = []
     document = b""
     try:
