@@ -17,8 +17,8 @@ import trimesh
 from scenewright.assets import generate_assets
 from scenewright.cache import RequestCache
 from scenewright.editing.parser import plan_edit_offline
-from scenewright.export import assemble
 from scenewright.folder import SceneFolder
+from scenewright.integrity import assemble_recorded
 from scenewright.scene import Constraint, Scene, SceneObject, Vec3
 
 
@@ -109,7 +109,7 @@ def build_folder(root: Path, scene: Scene | None = None) -> SceneFolder:
     folder.create()
     scene = scene or living_room()
     generate_assets(scene, folder, BoxMeshes(), RequestCache(None))
-    assemble(scene, folder)
+    assemble_recorded(scene, folder)
     folder.save(scene)
     return folder
 

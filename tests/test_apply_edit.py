@@ -289,3 +289,30 @@ def test_a_shift_into_a_neighbour_or_out_of_bounds_is_refused(folder, backends, 
     with pytest.raises(InfeasibleLayout, match=says):
         edit(folder, instruction, backends)
     assert snapshot(folder.root) == files
+
+
+@pytest.mark.parametrize(
+    "plan, says",
+    [
+        ({"operation": "move", "focus": "sofa_1", "offset": {"x": 1e308}}, "within ±10000 m"),
+        ({"operation": "move", "focus": "sofa_1", "offset": {"y": -10_002.0}}, "within ±10000 m"),
+        ({"operation": "move", "focus": "sofa_1", "yaw": float("nan")}, "finite number of degrees"),
+        ({"operation": "move", "focus": "sofa_1", "yaw": float("inf")}, "finite number of degrees"),
+        ({"operation": "add", "focus": "crate_1", "new_object": {"name": "crate", "size": {"x": 5e3, "y": 1, "z": 1}}},
+         "between 0.001 and 1000 metres"),
+    ],
+)
+def test_a_model_plan_with_wild_numbers_is_refused_and_writes_nothing(folder, plan, says):
+    files = snapshot(folder.root)
+    backends = Backends(vlm=ScriptedPlanner(EditPlan.model_validate(plan)), images=NoImages(), meshes=BoxMeshes())
+    with pytest.raises(InputError, match=says):
+        edit(folder, "do as the model says", backends)
+    assert snapshot(folder.root) == files
+    assert entries(folder) == []
+
+
+def test_nan_in_a_model_offset_is_refused_where_the_answer_is_read():
+    from pydantic import ValidationError
+
+    with pytest.raises(ValidationError, match="finite"):
+        EditPlan.model_validate({"operation": "move", "focus": "sofa_1", "offset": {"x": float("nan")}})

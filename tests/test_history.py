@@ -7,7 +7,7 @@ import json
 
 import pytest
 
-from editing_scenes import BoxMeshes, NoImages, RulePlanner
+from editing_scenes import BoxMeshes, NoImages, RulePlanner, build_folder
 from scenewright.backends import Backends
 from scenewright.editing import apply_edit, entries, redo, undo
 from scenewright.errors import InputError
@@ -83,3 +83,15 @@ def test_history_of_a_folder_that_is_not_a_scene_is_refused(tmp_path):
         entries(SceneFolder(tmp_path))
     with pytest.raises(InputError, match="not a scene folder"):
         undo(SceneFolder(tmp_path))
+
+
+@pytest.mark.parametrize(
+    "name, content", [("log.jsonl", "{not json\n"), ("log.jsonl", "[1, 2]\n"), ("state.json", ""), ("state.json", '{"x": 1}')]
+)
+def test_a_damaged_history_file_is_bad_input_naming_it(tmp_path, name, content):
+    folder = build_folder(tmp_path / "scene")
+    folder.history.mkdir()
+    (folder.history / "log.jsonl").write_text("")
+    (folder.history / name).write_text(content)
+    with pytest.raises(InputError, match=f"{name} is damaged"):
+        undo(folder)

@@ -1,5 +1,11 @@
 import importlib.util
 import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -7,6 +13,7 @@ import trimesh
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+import scenewright
 from scenewright.errors import InputError, MissingExtra
 from scenewright.folder import SceneFolder
 from scenewright.geometry import GLTF_TO_SCENE, SCENE_TO_GLTF, object_matrix
@@ -205,3 +212,80 @@ def test_a_blender_failure_becomes_a_backend_error_with_its_stderr(tmp_path):
     with pytest.raises(BackendError, match="Blender render failed") as info:
         render(scene, folder, draft=True)
     assert "Traceback" in str(info.value) or "Error" in str(info.value)
+
+
+def _gone(pid: int) -> bool:
+    """Whether the process has ended (a zombie nobody reaped has ended too)."""
+    try:
+        with open(f"/proc/{pid}/stat") as fh:
+            return fh.read().rsplit(")", 1)[1].split()[0] in ("Z", "X")
+    except FileNotFoundError:
+        return True
+
+
+def _wait_gone(pid: int, seconds: float = 30.0) -> bool:
+    deadline = time.monotonic() + seconds
+    while not _gone(pid) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    return _gone(pid)
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the kernel's parent-death signal is Linux's")
+def test_a_worker_dies_with_the_process_that_started_it_even_by_sigkill(tmp_path):
+    parent_code = (
+        "import sys, time; from pathlib import Path; from scenewright.render import start_worker\n"
+        "w = start_worker([sys.executable, '-c', 'import time; time.sleep(600)'], Path(sys.argv[1]))\n"
+        "print(w.pid, flush=True); time.sleep(600)\n"
+    )
+    env = {**os.environ, "PYTHONPATH": str(Path(scenewright.__file__).parents[1])}
+    parent = subprocess.Popen([sys.executable, "-c", parent_code, str(tmp_path)], stdout=subprocess.PIPE, text=True, env=env)
+    try:
+        worker = int(parent.stdout.readline())
+        assert not _gone(worker)
+        parent.send_signal(signal.SIGKILL)  # no cleanup of its own can run
+        parent.wait()
+        assert _wait_gone(worker), "the worker outlived its parent"
+    finally:
+        parent.kill()
+        parent.wait()
+        parent.stdout.close()
+
+
+@pytest.mark.blender
+@pytest.mark.skipif(not has_bpy, reason="needs the render extra (bpy)")
+def test_ctrl_c_during_a_render_exits_130_and_leaves_no_worker_and_no_files(tmp_path):
+    _, folder = small_scene(tmp_path)
+    before = sorted(p.relative_to(folder.root) for p in folder.root.rglob("*"))
+    private = tmp_path / "tmp"
+    private.mkdir()
+    env = {**os.environ, "TMPDIR": str(private), "PYTHONPATH": str(Path(scenewright.__file__).parents[1])}
+    command = [sys.executable, "-m", "scenewright", "render", str(folder.root), "--resolution", "640x360", "--samples", "64"]
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, cwd=tmp_path)
+    try:
+        deadline = time.monotonic() + 120
+        workers: list[int] = []
+        while not workers and time.monotonic() < deadline:  # the worker names its job, in our TMPDIR
+            assert process.poll() is None, process.communicate()
+            workers = [int(p.name) for p in Path("/proc").iterdir() if p.name.isdigit() and _cmdline_has(p, str(private))]
+            time.sleep(0.05)
+        assert workers, "the render worker never started"
+        time.sleep(1.0)  # into Blender's own work
+        process.send_signal(signal.SIGINT)
+        _, err = process.communicate(timeout=60)
+    finally:
+        process.kill()
+        process.wait()
+    assert process.returncode == 130, err
+    assert "interrupted; the previews were left as they were" in " ".join(err.split())
+    assert all(_wait_gone(pid) for pid in workers)
+    assert list(private.iterdir()) == []  # the worker's temporary folder is gone too
+    assert sorted(p.relative_to(folder.root) for p in folder.root.rglob("*")) == before
+
+
+def _cmdline_has(proc: Path, text: str) -> bool:
+    try:
+        return text in (proc / "cmdline").read_bytes().decode(errors="replace") and "render.worker" in (
+            proc / "cmdline"
+        ).read_bytes().decode(errors="replace")
+    except OSError:
+        return False

@@ -27,10 +27,47 @@ def test_unknown_relation_names_the_valid_ones():
     assert "under" in str(exc.value) and "face to" in str(exc.value)
 
 
-@pytest.mark.parametrize("size", [(0, 1, 1), (1, -0.5, 1)])
-def test_non_positive_sizes_are_rejected(size):
-    with pytest.raises(ValidationError, match="size must be > 0"):
+@pytest.mark.parametrize("size", [(0, 1, 1), (1, -0.5, 1), (0.0005, 1, 1), (1, 1, 1001)])
+def test_sizes_outside_a_millimetre_to_a_kilometre_are_rejected(size):
+    with pytest.raises(ValidationError, match="between 0.001 and 1000 metres"):
         SceneObject(id="x", name="x", size=Vec3.of(size))
+
+
+@pytest.mark.parametrize("value", [float("nan"), float("inf"), -float("inf")])
+def test_nan_and_infinity_are_refused_everywhere(value):
+    with pytest.raises(ValidationError, match="finite"):
+        Vec3(x=value)
+    obj = SceneObject(id="x", name="x", size=Vec3.of((1, 1, 1)))
+    with pytest.raises(ValidationError, match="finite"):  # an assignment is checked too
+        obj.rotation = Vec3(z=value)
+    with pytest.raises(ValidationError, match="finite"):
+        Scene(text="t", bounds=(value, 5.0))
+
+
+@pytest.mark.parametrize("position", [(1e308, 0, 0), (0, -10_000.5, 0), (0, 0, 2e4)])
+def test_positions_beyond_ten_kilometres_are_rejected(position):
+    with pytest.raises(ValidationError, match="within ±10000 m"):
+        SceneObject(id="x", name="x", size=Vec3.of((1, 1, 1)), position=Vec3.of(position))
+
+
+@pytest.mark.parametrize(
+    "field, value, says",
+    [
+        ("position", {"x": "NaN"}, "finite"),
+        ("position", {"x": 1e308}, "within ±10000 m"),
+        ("rotation", {"z": "Infinity"}, "finite"),
+        ("size", {"x": 1e308, "y": 1, "z": 1}, "between 0.001 and 1000 metres"),
+    ],
+)
+def test_a_tampered_document_with_wild_numbers_is_bad_input_naming_the_field(tmp_path, field, value, says):
+    scene = Scene(text="a room", objects=[SceneObject(id="x", name="x", size=Vec3.of((1, 1, 1)))])
+    data = json.loads(scene.to_json())
+    data["objects"][0][field] = value
+    path = tmp_path / "scene.json"
+    # NaN and Infinity are what json.dumps writes for them, and what a tampered file holds.
+    path.write_text(json.dumps(data).replace('"NaN"', "NaN").replace('"Infinity"', "Infinity"))
+    with pytest.raises(InputError, match=f"objects.0.{field}.*{says}"):
+        Scene.load(path)
 
 
 def test_ids_must_be_names_and_unique():

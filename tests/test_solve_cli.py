@@ -77,7 +77,7 @@ def test_some_unplaced_exits_3_and_still_writes(tmp_path, capsys):
         ("{not json", CONSTRAINTS, "objects.json: not valid JSON"),
         (ITEMS, "[1, 2", "constraints.json: not valid JSON"),
         ([{k: v for k, v in ITEMS[0].items() if k != "size"}], [], "items[0].size: missing"),
-        ([{**ITEMS[0], "size": {"x": -1, "y": 1, "z": 1}}], [], "items[0]: size: Value error, every size must be > 0"),
+        ([{**ITEMS[0], "size": {"x": -1, "y": 1, "z": 1}}], [], "items[0]: size: Value error, every size must be between 0.001 and 1000 metres"),
         ([{k: v for k, v in ITEMS[0].items() if k != "id"}], [], "items[0]: id: Field required"),
         ([ITEMS[0], ITEMS[0]], [], "id 'table1' used more than once"),
         ("[]", [], 'expected an object with an "items" list'),

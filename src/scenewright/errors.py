@@ -21,6 +21,10 @@ class InfeasibleLayout(ScenewrightError):
     """The constraints admit no collision-free layout for some objects."""
 
 
+class FolderBusy(ScenewrightError):
+    """Another process is writing the scene folder, and did not finish within the wait allowed."""
+
+
 class MissingExtra(BackendError, ImportError):
     """An optional dependency is missing; the message names the extra to install."""
 

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from scenewright.errors import InputError
+from scenewright.lock import LOCK_NAME
 from scenewright.scene import Scene
 
 
@@ -89,11 +90,17 @@ class SceneFolder:
     def save(self, scene: Scene) -> Path:
         return scene.save(self.document)
 
+    def _leftover(self, path: Path) -> bool:
+        """A file scenewright leaves in a folder before it holds a scene: the lock file, and the
+        temporary file of a first save that was cut short."""
+        name = path.name
+        return name == LOCK_NAME or (name.startswith(f".{self.document.name}.") and name.endswith(".tmp"))
+
     def create(self) -> None:
         """Make the folder ready for a new scene, refusing anything that would lose files."""
         if self.root.exists() and not self.root.is_dir():
             raise InputError(f"{self.root} exists and is not a folder; choose another --out")
-        if self.root.is_dir() and any(self.root.iterdir()) and not self.is_scene():
+        if self.root.is_dir() and any(not self._leftover(p) for p in self.root.iterdir()) and not self.is_scene():
             raise InputError(
                 f"{self.root} is not empty and holds no scene.json; refusing to write into it. "
                 "Choose an empty or new folder for --out"

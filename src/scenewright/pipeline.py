@@ -10,7 +10,8 @@ from __future__ import annotations
 
 import logging
 import shutil
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from pathlib import Path
 
 from scenewright.analysis.stage import analyze
@@ -18,10 +19,12 @@ from scenewright.assets import generate_assets, load_meshes
 from scenewright.assets.stage import needs_asset
 from scenewright.backends import Backends
 from scenewright.cache import RequestCache
+from scenewright.editing.history import recover
 from scenewright.errors import InputError, MissingExtra
-from scenewright.export import assemble
 from scenewright.folder import SceneFolder
+from scenewright.integrity import assemble_recorded, finish_first_save, glb_matches, rebuild_glb, remove_temporaries
 from scenewright.layout.stage import arrange
+from scenewright.lock import LOCK_NAME, locked
 from scenewright.scene import Scene
 from scenewright.settings import Settings
 
@@ -46,7 +49,7 @@ def _output_present(stage: str, scene: Scene, folder: SceneFolder) -> bool:
     if stage == "layout":
         return scene.layout is not None
     if stage == "export":
-        return folder.glb.is_file()
+        return glb_matches(scene, folder) if scene.glb_sha256 is not None else folder.glb.is_file()
     return folder.renders.is_dir() and any(folder.renders.glob("*.png"))
 
 
@@ -70,6 +73,21 @@ def _render(scene: Scene, folder: SceneFolder, note: Callable[[str], None]) -> b
         return False
     scene.record("render", f"rendered {len(paths)} previews", files=[Path(p).name for p in paths])
     return True
+
+
+@contextmanager
+def writing(folder: SceneFolder, timeout: float) -> Iterator[SceneFolder]:
+    """Hold the folder's lock and make it whole after any run that died in it (see
+    :mod:`scenewright.integrity`); every command that writes a scene folder runs inside this."""
+    if not folder.root.is_dir():
+        folder.load()  # raises the error that names the folder and how to make a scene
+    with locked(folder.root, timeout):
+        finish_first_save(folder)
+        remove_temporaries(folder)
+        if folder.is_scene():
+            recover(folder)
+            rebuild_glb(folder)
+        yield folder
 
 
 def _stage_note(progress: Progress | None, stage: str) -> Callable[[str], None]:
@@ -109,7 +127,7 @@ def run_stages(
                 time_limit=settings.time_limit,
             )
         elif stage == "export":
-            path = assemble(scene, folder)
+            path = assemble_recorded(scene, folder)
             scene.record(stage, f"wrote {folder.relative(path)}")
         elif not _render(scene, folder, note):
             break
@@ -151,28 +169,29 @@ def generate(
         )
     existed = folder.root.exists()
     folder.create()
-    fresh = not folder.is_scene()
-    if not fresh:
-        scene = folder.load()
-        if scene.text != text or scene.seed != seed or (style and scene.style != style.strip().lower()):
-            raise InputError(
-                f"{folder.root} already holds another scene ({scene.text[:60]!r}, style {scene.style}, "
-                f"seed {scene.seed}); resume it with `scenewright generate --resume {folder.root}` "
-                "or choose a new --out"
+    with writing(folder, settings.lock_timeout):
+        fresh = not folder.is_scene()
+        if not fresh:
+            scene = folder.load()
+            if scene.text != text or scene.seed != seed or (style and scene.style != style.strip().lower()):
+                raise InputError(
+                    f"{folder.root} already holds another scene ({scene.text[:60]!r}, style {scene.style}, "
+                    f"seed {scene.seed}); resume it with `scenewright generate --resume {folder.root}` "
+                    "or choose a new --out"
+                )
+            log.info("resuming %s (done: %s)", folder.root, ", ".join(scene.done) or "nothing")
+        else:
+            scene = _new_scene(text, style, seed)
+            scene.record("generate", "new scene", style=scene.style, seed=seed, backends=backends.names())
+            folder.save(scene)
+        try:
+            return run_stages(
+                scene, folder, backends=backends, settings=settings, render=render, progress=progress
             )
-        log.info("resuming %s (done: %s)", folder.root, ", ".join(scene.done) or "nothing")
-    else:
-        scene = _new_scene(text, style, seed)
-        scene.record("generate", "new scene", style=scene.style, seed=seed, backends=backends.names())
-        folder.save(scene)
-    try:
-        return run_stages(
-            scene, folder, backends=backends, settings=settings, render=render, progress=progress
-        )
-    except InputError:
-        if fresh and not scene.objects:
-            _discard(folder, existed)
-        raise
+        except InputError:
+            if fresh and not scene.objects:
+                _discard(folder, existed)
+            raise
 
 
 def _discard(folder: SceneFolder, existed: bool) -> None:
@@ -181,6 +200,8 @@ def _discard(folder: SceneFolder, existed: bool) -> None:
         shutil.rmtree(folder.root, ignore_errors=True)
         return
     for child in folder.root.iterdir():
+        if child.name == LOCK_NAME:  # held by this run until it returns
+            continue
         if child.is_dir():
             shutil.rmtree(child, ignore_errors=True)
         else:
@@ -197,5 +218,6 @@ def resume(
 ) -> Scene:
     """Finish an interrupted scene: run only the stages it has not completed."""
     folder = _as_folder(folder)
-    scene = folder.load()
-    return run_stages(scene, folder, backends=backends, settings=settings, render=render, progress=progress)
+    with writing(folder, settings.lock_timeout):
+        scene = folder.load()
+        return run_stages(scene, folder, backends=backends, settings=settings, render=render, progress=progress)

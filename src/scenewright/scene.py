@@ -50,9 +50,17 @@ DEFAULT_STYLE = "realistic"
 
 _ID = re.compile(r"^[A-Za-z0-9_\-.]+$")
 
+#: Sane bounds for every length a document or a model answer gives, in metres: a position
+#: further out, or a size outside them, is a typo or a broken answer, never a scene.
+MAX_COORDINATE = 10_000.0
+MIN_SIZE = 0.001
+MAX_SIZE = 1_000.0
+
 
 class _Model(BaseModel):
-    model_config = ConfigDict(extra="forbid", validate_assignment=True)
+    # NaN and infinity are refused in every float field: one of them in a pose poisons the
+    # solver, the GLB and every later save (JSON has no spelling for them).
+    model_config = ConfigDict(extra="forbid", validate_assignment=True, allow_inf_nan=False)
 
 
 class Vec3(_Model):
@@ -67,6 +75,20 @@ class Vec3(_Model):
     def of(cls, values) -> Vec3:
         x, y, z = (float(v) for v in values)
         return cls(x=x, y=y, z=z)
+
+
+def check_position(v: Vec3) -> Vec3:
+    """``v`` when every coordinate is within ±MAX_COORDINATE metres; else ValueError saying so."""
+    if max(abs(c) for c in v.tuple()) > MAX_COORDINATE:
+        raise ValueError(f"a position must lie within ±{MAX_COORDINATE:g} m of the origin, got {v.tuple()}")
+    return v
+
+
+def check_size(v: Vec3) -> Vec3:
+    """``v`` when every extent is between MIN_SIZE and MAX_SIZE metres; else ValueError saying so."""
+    if min(v.tuple()) < MIN_SIZE or max(v.tuple()) > MAX_SIZE:
+        raise ValueError(f"every size must be between {MIN_SIZE:g} and {MAX_SIZE:g} metres, got {v.tuple()}")
+    return v
 
 
 class SceneObject(_Model):
@@ -91,10 +113,13 @@ class SceneObject(_Model):
 
     @field_validator("size")
     @classmethod
-    def _size_is_positive(cls, v: Vec3) -> Vec3:
-        if min(v.x, v.y, v.z) <= 0:
-            raise ValueError(f"every size must be > 0 metres, got {v.tuple()}")
-        return v
+    def _size_is_sane(cls, v: Vec3) -> Vec3:
+        return check_size(v)
+
+    @field_validator("position")
+    @classmethod
+    def _position_is_sane(cls, v: Vec3) -> Vec3:
+        return check_position(v)
 
     @property
     def yaw(self) -> float:
@@ -106,6 +131,11 @@ class Pose(_Model):
 
     position: Vec3
     rotation: Vec3
+
+    @field_validator("position")
+    @classmethod
+    def _position_is_sane(cls, v: Vec3) -> Vec3:
+        return check_position(v)
 
 
 class Constraint(_Model):
@@ -209,6 +239,9 @@ class Scene(_Model):
     initial: dict[str, Pose] = Field(default_factory=dict)
     #: Names of the stages whose output is complete, in order; drives resume.
     done: list[str] = Field(default_factory=list)
+    #: SHA-256 of the ``scene.glb`` assembled from this document. The GLB is written before the
+    #: document, so a run killed in between leaves a GLB that does not match; it is rebuilt.
+    glb_sha256: str | None = None
     provenance: list[Event] = Field(default_factory=list)
 
     @field_validator("schema_version")
@@ -219,6 +252,13 @@ class Scene(_Model):
                 f"scene.json has schema_version {v}, newer than this scenewright understands "
                 f"({SCHEMA_VERSION}); upgrade scenewright"
             )
+        return v
+
+    @field_validator("bounds")
+    @classmethod
+    def _bounds_are_sane(cls, v: tuple[float, float] | None) -> tuple[float, float] | None:
+        if v is not None and not all(0 < side <= 2 * MAX_COORDINATE for side in v):
+            raise ValueError(f"bounds (width, depth) must each be > 0 and at most {2 * MAX_COORDINATE:g} m, got {v}")
         return v
 
     @model_validator(mode="after")

@@ -41,6 +41,8 @@ class Settings:
     #: hundreds of thousands); ``None`` keeps them as they come.
     max_faces: int | None = None
     time_limit: float = 10.0
+    #: Seconds a command that writes a scene folder waits while another one is writing it.
+    lock_timeout: float = 60.0
     cache_dir: Path | None = field(default_factory=default_cache_dir)
     extra: dict[str, object] = field(default_factory=dict)
 
@@ -88,6 +90,12 @@ def _positive(value: object) -> float:
     return float(value)
 
 
+def _non_negative(value: object) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not 0 <= value < float("inf"):
+        raise ValueError("a number >= 0")
+    return float(value)
+
+
 def _cache_dir(value: object) -> Path | None:
     """A folder, or an empty string for no cache."""
     if value is None or value == "":
@@ -117,6 +125,7 @@ KEYS = {
     "feedback_rounds": _count(0),
     "max_faces": _optional_count(100),
     "time_limit": _positive,
+    "lock_timeout": _non_negative,
     "cache_dir": _cache_dir,
     "extra": _table,
 }

@@ -117,6 +117,15 @@ def generate_assets(
         store(oid, raw[oid])
     width = max(1, min(len(missing), int(getattr(meshes, "concurrency", 1))))
     pool = ThreadPoolExecutor(max_workers=width, thread_name_prefix="assets")
+    futures = {}
+    stored: set[str] = set()
+
+    def land(oid: str, glb: bytes) -> None:
+        store(oid, glb)
+        stored.add(oid)
+        if oid not in failures:  # a broken mesh is asked for again next time
+            cache.put(CACHE_KIND, keys[oid], glb)
+
     try:
         futures = {pool.submit(meshes.generate, [req], progress): req.id for req in missing}
         for future in as_completed(futures):
@@ -129,11 +138,21 @@ def generate_assets(
             except KeyError:
                 failures[oid] = f"{meshes.name} returned no mesh for {oid!r}"
                 continue
-            store(oid, glb)
-            if oid not in failures:  # a broken mesh is asked for again next time
-                cache.put(CACHE_KIND, keys[oid], glb)
+            land(oid, glb)
+    except KeyboardInterrupt:
+        # Ctrl-C: requests not yet started are never sent, running ones are abandoned (when the
+        # backend can), and meshes that finished meanwhile are kept: they are paid for.
+        pool.shutdown(wait=False, cancel_futures=True)
+        cancel = getattr(meshes, "cancel", None)
+        if cancel is not None:
+            cancel()
+        for future, oid in futures.items():
+            if oid not in stored and future.done() and not future.cancelled() and future.exception() is None:
+                glb = future.result().get(oid)
+                if glb is not None:
+                    land(oid, glb)
+        raise
     finally:
-        # An interrupted run drops the requests not yet started instead of waiting for them.
         pool.shutdown(wait=False, cancel_futures=True)
 
     built = [obj.id for obj in todo if obj.id not in failures]

@@ -113,6 +113,7 @@ class Hunyuan3D:
         self.max_failures = max_failures
         self._cond = threading.Condition()
         self._health_lock = threading.Lock()
+        self._cancelled = threading.Event()
         self._client = httpx.Client(
             timeout=httpx.Timeout(timeout, connect=min(10.0, timeout)),
             limits=httpx.Limits(max_connections=len(urls) * concurrency * 2 + 4),
@@ -140,6 +141,13 @@ class Hunyuan3D:
 
     def close(self) -> None:
         self._client.close()
+
+    def cancel(self) -> None:
+        """Stop for good (the run was interrupted): no job is sent any more, and running ones are
+        no longer polled, so their threads end within a poll interval instead of ``job_timeout``."""
+        self._cancelled.set()
+        with self._cond:
+            self._cond.notify_all()
 
     # -- the MeshGenerator protocol -------------------------------------------------------
 
@@ -191,6 +199,8 @@ class Hunyuan3D:
         """A free slot on a server in rotation that this job has not tried; waits for one."""
         with self._cond:
             while True:
+                if self._cancelled.is_set():
+                    return None
                 untried = [s for s in self.servers if s.retired is None and s.url not in tried]
                 if not untried:
                     return None
@@ -304,7 +314,8 @@ class Hunyuan3D:
             if time.monotonic() > next_health:
                 next_health = time.monotonic() + self.health_interval
                 self._check_same_worker(server, uid, worker)
-            time.sleep(self.poll_interval)
+            if self._cancelled.wait(self.poll_interval):
+                raise JobFailed(f"job {uid} abandoned: the run was interrupted")
 
     def _check_same_worker(self, server: Server, uid: str, worker: str | None) -> None:
         """JobFailed when the server that took job ``uid`` (as ``worker``) is not the one running now."""

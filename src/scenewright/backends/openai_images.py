@@ -65,7 +65,8 @@ class OpenAIImages(RemoteModel):
         drawn: dict[str, bytes] = {}
         failures: list[str] = []
         workers = max(1, min(self.settings.image_concurrency, len(unique)))
-        with ThreadPoolExecutor(max_workers=workers, thread_name_prefix="openai-images") as pool:
+        pool = ThreadPoolExecutor(max_workers=workers, thread_name_prefix="openai-images")
+        try:
             futures = {pool.submit(draw, prompt): prompt for prompt in unique}
             for future in as_completed(futures):
                 prompt = futures[future]
@@ -76,6 +77,10 @@ class OpenAIImages(RemoteModel):
                 if progress is not None:
                     for object_id in (i for i, p in prompts_by_id.items() if p == prompt):
                         progress(f"{object_id}: image {len(drawn) + len(failures)} of {len(unique)}")
+        finally:
+            # Ctrl-C: images not yet requested are never requested (nor paid for); those in
+            # flight finish in the background and land in the cache for the resumed run.
+            pool.shutdown(wait=False, cancel_futures=True)
         if failures:
             raise BackendError(
                 f"{len(failures)} of {len(unique)} object images failed (the others are cached): "

@@ -15,19 +15,23 @@ from rich.console import Console
 from rich.markup import escape
 
 from scenewright.cli import assets, backends, batch, edit, evaluate, generate, parse, remote, render, solve  # noqa: F401
-from scenewright.cli.app import app
+from scenewright.cli.app import app, interrupt_hint
 from scenewright.errors import BackendError, InfeasibleLayout, InputError, ScenewrightError
 
 EXIT_BAD_INPUT = 2
 EXIT_BACKEND = 1
 EXIT_INFEASIBLE = 3
+#: A shell's code for a command stopped by Ctrl-C (128 + SIGINT).
+EXIT_INTERRUPTED = 130
 
 
 def main(argv: list[str] | None = None) -> int:
     logging.basicConfig(level=logging.WARNING, format="%(levelname)s %(name)s: %(message)s")
     err = Console(stderr=True, soft_wrap=True)
+    interrupt_hint.clear()
     try:
-        # A command that ends with typer.Exit(code) (batch: some scenes failed) returns its code.
+        # Typer turns Ctrl-C into this return value, and a typer.Exit (batch: some scenes failed)
+        # into its code.
         code = app(args=argv, prog_name="scenewright", standalone_mode=False)
     except InputError as exc:
         err.print(f"[red]error:[/red] {escape(str(exc))}", highlight=False)
@@ -42,10 +46,13 @@ def main(argv: list[str] | None = None) -> int:
         err.print(f"[red]error:[/red] {escape(str(exc))}", highlight=False)
         return EXIT_BACKEND
     except typer.Abort:  # Ctrl-C at a prompt
-        return 130
+        code = EXIT_INTERRUPTED
     except typer.TyperException as exc:  # usage errors (unknown option, missing argument) with standalone_mode=False
         exc.show()
         return EXIT_BAD_INPUT
+    if code == EXIT_INTERRUPTED:
+        hint = interrupt_hint["hint"]() if "hint" in interrupt_hint else None
+        err.print(f"[yellow]interrupted[/yellow]{'; ' + escape(hint) if hint else ''}", highlight=False)
     return code if isinstance(code, int) else 0
 
 

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import typer
 
 app = typer.Typer(
@@ -13,3 +15,12 @@ app = typer.Typer(
 )
 bench_app = typer.Typer(help="Benchmarks; each prints one JSON object.", no_args_is_help=True)
 app.add_typer(bench_app, name="bench")
+
+
+#: How to go on when Ctrl-C stops the running command, worked out when it happens (what to say
+#: may depend on how far the command got); a command that writes sets it.
+interrupt_hint: dict[str, Callable[[], str]] = {}
+
+
+def on_interrupt(hint: Callable[[], str]) -> None:
+    interrupt_hint["hint"] = hint

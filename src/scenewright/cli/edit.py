@@ -11,7 +11,7 @@ import typer
 from rich.console import Console
 from rich.table import Table
 
-from scenewright.cli.app import app, bench_app
+from scenewright.cli.app import app, bench_app, on_interrupt
 from scenewright.cli.options import (
     ApiKeyEnvOption,
     BaseUrlOption,
@@ -47,34 +47,41 @@ def edit_command(
     """Apply one edit (move, add, delete, replace/restyle); the previous version goes to history/."""
     from scenewright.backends import Backends
     from scenewright.editing import apply_edit, entries
+    from scenewright.pipeline import writing
     from scenewright.render import render_info
 
     scene_folder = SceneFolder(folder)
-    scene = scene_folder.load()
     settings = build_settings(vlm=vlm, images=images, meshes=meshes, base_url=base_url, config=config,
                               api_key_env=api_key_env, reasoning_effort=reasoning_effort, timeout=timeout)
-    apply_edit(scene, scene_folder, instruction, backends=Backends.from_settings(settings), settings=settings)
-    last = [e for e in entries(scene_folder) if e.active][-1]
-    console = Console()
-    console.print(f"[bold green]edit {last.number}[/bold green]: {last.operation} {last.focus}")
-    for change in last.changes:
-        console.print(f"  {change}")
-    console.print(f"  wrote {scene_folder.document} and {scene_folder.glb}; undo with `scenewright undo {folder}`")
-    if render:
-        from scenewright.render import render_again
+    backends = Backends.from_settings(settings)
+    on_interrupt(lambda: f"the edit took effect if `scenewright history {folder}` lists it; if not, run it again")
+    with writing(scene_folder, settings.lock_timeout):
+        scene = scene_folder.load()  # read under the lock: a concurrent edit's result is not lost
+        apply_edit(scene, scene_folder, instruction, backends=backends, settings=settings)
+        last = [e for e in entries(scene_folder) if e.active][-1]
+        console = Console()
+        console.print(f"[bold green]edit {last.number}[/bold green]: {last.operation} {last.focus}")
+        for change in last.changes:
+            console.print(f"  {change}")
+        console.print(f"  wrote {scene_folder.document} and {scene_folder.glb}; undo with `scenewright undo {folder}`")
+        if render:
+            from scenewright.render import render_again
 
-        console.print(f"  rendered {', '.join(str(p) for p in render_again(scene_folder.load(), scene_folder))}")
-    elif render_info(scene_folder) is not None:
-        console.print(f"  renders/ show the scene before this edit: refresh them with `scenewright render {folder}`"
-                      " (or edit with --render)")
+            console.print(f"  rendered {', '.join(str(p) for p in render_again(scene_folder.load(), scene_folder))}")
+        elif render_info(scene_folder) is not None:
+            console.print(f"  renders/ show the scene before this edit: refresh them with `scenewright render {folder}`"
+                          " (or edit with --render)")
 
 
 @app.command("undo")
 def undo_command(folder: FolderArgument) -> None:
     """Restore the scene as it was before the last edit (scene.json byte for byte, and scene.glb)."""
     from scenewright.editing import undo
+    from scenewright.pipeline import writing
 
-    _, entry = undo(SceneFolder(folder))
+    on_interrupt(lambda: f"`scenewright history {folder}` shows which edits are in effect")
+    with writing(SceneFolder(folder), build_settings().lock_timeout) as scene_folder:
+        _, entry = undo(scene_folder)
     Console().print(f"undid edit {entry.number}: {entry.instruction!r}; redo with `scenewright redo {folder}`")
 
 
@@ -82,8 +89,11 @@ def undo_command(folder: FolderArgument) -> None:
 def redo_command(folder: FolderArgument) -> None:
     """Re-apply the edit undone last, exactly as it came out."""
     from scenewright.editing import redo
+    from scenewright.pipeline import writing
 
-    _, entry = redo(SceneFolder(folder))
+    on_interrupt(lambda: f"`scenewright history {folder}` shows which edits are in effect")
+    with writing(SceneFolder(folder), build_settings().lock_timeout) as scene_folder:
+        _, entry = redo(scene_folder)
     Console().print(f"redid edit {entry.number}: {entry.instruction!r}")
 
 

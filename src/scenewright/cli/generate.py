@@ -13,7 +13,7 @@ import typer
 from rich.console import Console
 from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
-from scenewright.cli.app import app, bench_app
+from scenewright.cli.app import app, bench_app, on_interrupt
 from scenewright.cli.options import (
     ApiKeyEnvOption,
     BaseUrlOption,
@@ -132,6 +132,9 @@ def generate_command(
         max_faces=max_faces,
     )
     backends = Backends.from_settings(settings)
+    folder = SceneFolder((resume_dir if resume_dir is not None else out).absolute())
+    on_interrupt(lambda: f"resume with `scenewright generate --resume {folder.root}`" if folder.is_scene()
+                 else "nothing was saved; run the same command again")
     console = Console(stderr=True)
     with Progress(
         SpinnerColumn(),
@@ -143,12 +146,10 @@ def generate_command(
     ) as bar:
         report = _StageProgress(bar)
         if resume_dir is not None:
-            folder = SceneFolder(resume_dir.absolute())
             scene = resume(
                 folder, backends=backends, settings=settings, render=not no_render, progress=report
             )
         else:
-            folder = SceneFolder(out.absolute())
             scene = generate(
                 _example_text() if example else text,
                 folder,

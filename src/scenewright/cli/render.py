@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from scenewright.cli.app import app
+from scenewright.cli.app import app, on_interrupt
 from scenewright.errors import InputError
 from scenewright.folder import SceneFolder
 
@@ -32,22 +32,24 @@ def render_command(
     transparent: Annotated[bool, typer.Option("--transparent", help="Transparent background instead of the sky.")] = False,
 ) -> None:
     """Render previews with Blender (Cycles on the CPU) into DIR/renders/."""
+    from scenewright.cli.options import build_settings
+    from scenewright.pipeline import writing
     from scenewright.render import DEFAULT_SAMPLES, render, render_info
 
     if views not in ("best", "all"):
         raise InputError(f"--views {views!r}: choose best or all")
-    folder = SceneFolder(directory)
-    scene = folder.load()
-    paths = render(
-        scene,
-        folder,
-        keep_all=views == "all",
-        resolution=parse_resolution(resolution),
-        samples=samples if samples is not None else DEFAULT_SAMPLES,
-        draft=draft,
-        transparent=transparent,
-    )
-    info = render_info(folder) or {}
+    on_interrupt(lambda: f"the previews were left as they were; render again with `scenewright render {directory}`")
+    with writing(SceneFolder(directory), build_settings().lock_timeout) as folder:
+        paths = render(
+            folder.load(),
+            folder,
+            keep_all=views == "all",
+            resolution=parse_resolution(resolution),
+            samples=samples if samples is not None else DEFAULT_SAMPLES,
+            draft=draft,
+            transparent=transparent,
+        )
+        info = render_info(folder) or {}
     for path in paths:
         typer.echo(str(path))
     typer.echo(f"best view: {info.get('best')}; {info.get('total_seconds')} s in Blender", err=True)

@@ -15,12 +15,14 @@ from __future__ import annotations
 
 import hashlib
 import logging
+import math
 import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 import trimesh
+from pydantic import ValidationError
 
 from scenewright.assets import asset_mesh, generate_assets, load_meshes
 from scenewright.backends import Backends
@@ -32,7 +34,7 @@ from scenewright.errors import InfeasibleLayout, InputError
 from scenewright.folder import SceneFolder
 from scenewright.geometry import world_box, yaw_towards
 from scenewright.layout import break_cycles, check, colliding_pairs, feedback_text, solve
-from scenewright.scene import Constraint, RemovedObject, Scene, SceneObject, Vec3
+from scenewright.scene import Constraint, RemovedObject, Scene, SceneObject, Vec3, describe_validation_error
 from scenewright.settings import Settings
 
 log = logging.getLogger(__name__)
@@ -61,7 +63,13 @@ def apply_edit(scene: Scene, folder: SceneFolder, instruction: str, *, backends:
             "the instruction is empty; say what to change, e.g. 'move the lamp next to the sofa'"
         )
     plan = backends.vlm.plan_edit(scene, instruction)
-    edit = run_plan(scene, folder, plan, backends=backends, settings=settings)
+    try:
+        edit = run_plan(scene, folder, plan, backends=backends, settings=settings)
+    except ValidationError as exc:  # a pose or size out of bounds: the answer asked for the impossible
+        raise InputError(
+            f"the edit {plan.operation} {plan.focus} would give an invalid scene, so nothing was written: "
+            f"{describe_validation_error(exc)}"
+        ) from None
     edit.scene.provenance += getattr(backends.vlm, "last_repairs", [])  # what a remote model's answer needed
     edit.scene.record(STAGE, f"{plan.operation} {plan.focus}: {instruction.strip()}",
                       backend=backends.vlm.name, changes=edit.changes)
@@ -110,6 +118,8 @@ def validate_plan(scene: Scene, plan: EditPlan) -> EditPlan:
             raise InputError(f"constraint '{c}' uses the focus {plan.focus!r} as its target; it must be the source only")
         if c.target not in ids:
             raise InputError(f"constraint '{c}' names {c.target!r}, which the scene does not have; objects: {known}")
+    if plan.yaw is not None and not math.isfinite(plan.yaw):
+        raise InputError(f"the edit turns {plan.focus} to yaw {plan.yaw}; a yaw must be a finite number of degrees")
     if plan.operation == "move" and not plan.constraints and plan.yaw is None and plan.offset is None:
         raise InputError(f"the edit moves {plan.focus} but says neither where to nor which way to turn it")
     if plan.offset is not None:

@@ -6,21 +6,31 @@ edit in ``log.jsonl``, and ``state.json`` with how many of them are in effect. U
 copy a stored version back as it was, so undo restores the previous document exactly; a new
 edit after an undo drops the undone ones. Asset files are never deleted or overwritten by an
 edit (new ones get content-addressed names), so every stored version still has its assets.
+
+``scene.json`` is the commit point of every change. A change first writes what it will do to
+the history as ``pending.json`` (with the hash of the document it is about to save), then the
+document, then the history files. Whoever opens the folder next finishes a pending change
+whose document was saved and forgets one whose document was not (:func:`recover`), so a run
+killed at any point leaves a history that matches the document: undo never undoes an edit
+that never took effect.
 """
 
 from __future__ import annotations
 
+import hashlib
 import json
 import logging
 from dataclasses import dataclass
 from datetime import datetime, timezone
 from pathlib import Path
 
+from pydantic import ValidationError
+
 from scenewright.errors import InputError
-from scenewright.export import assemble
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
-from scenewright.scene import Scene
+from scenewright.integrity import assemble_recorded, file_sha256
+from scenewright.scene import Scene, describe_validation_error
 
 log = logging.getLogger(__name__)
 
@@ -54,29 +64,120 @@ def _after(folder: SceneFolder, number: int) -> Path:
     return folder.history / f"{number:04d}.after.json"
 
 
+def _read_json(path: Path, what: str) -> list:
+    """The JSON values of ``path`` (one per line when ``what`` is "lines"), or an InputError naming it."""
+    try:
+        text = path.read_text(encoding="utf-8")
+        if what == "lines":
+            return [json.loads(line) for line in text.splitlines() if line.strip()]
+        return [json.loads(text)]
+    except (ValueError, UnicodeDecodeError) as exc:
+        raise InputError(
+            f"{path} is damaged ({exc}); restore it, or delete the folder's history/ to start a new one"
+        ) from None
+
+
 def _records(folder: SceneFolder) -> list[dict]:
     path = _log(folder)
     if not path.is_file():
         return []
-    return [json.loads(line) for line in path.read_text(encoding="utf-8").splitlines() if line.strip()]
+    records = _read_json(path, "lines")
+    if not all(isinstance(r, dict) and isinstance(r.get("number"), int) for r in records):
+        raise InputError(f"{path} is damaged (a line is not an edit record); restore it, or delete history/")
+    return records
 
 
 def _current(folder: SceneFolder) -> int:
     path = _state(folder)
-    return int(json.loads(path.read_text(encoding="utf-8"))["current"]) if path.is_file() else len(_records(folder))
+    if not path.is_file():
+        return len(_records(folder))
+    (state,) = _read_json(path, "whole")
+    if not isinstance(state, dict) or not isinstance(state.get("current"), int):
+        raise InputError(f"{path} is damaged (no edit count); restore it, or delete history/")
+    return state["current"]
+
+
+def _pending(folder: SceneFolder) -> Path:
+    return folder.history / "pending.json"
+
+
+def _staged(folder: SceneFolder) -> dict | None:
+    """The pending change when its document is the one in effect (it got saved), else None."""
+    path = _pending(folder)
+    if not path.is_file():
+        return None
+    try:
+        pending = json.loads(path.read_text(encoding="utf-8"))
+    except (ValueError, UnicodeDecodeError):
+        return None  # cut short: its document cannot have been written after it
+    if not isinstance(pending, dict) or pending.get("document_sha256") != file_sha256(folder.document):
+        return None
+    if not {"current", "records", "write", "remove"} <= set(pending):
+        return None  # not one this module wrote
+    return pending
+
+
+def _in_effect(folder: SceneFolder) -> tuple[list[dict], int]:
+    """The log's records and how many are in effect, counting a pending change whose document
+    was saved (so reading the history needs no write)."""
+    staged = _staged(folder)
+    if staged is not None:
+        return staged["records"], staged["current"]
+    return _records(folder), _current(folder)
 
 
 def entries(folder: SceneFolder) -> list[Entry]:
     """The edits of the folder, oldest first; undone ones have ``active`` False."""
     folder.load()
-    current = _current(folder)
+    records, current = _in_effect(folder)
     return [
         Entry(
             number=r["number"], instruction=r["instruction"], operation=r["operation"], focus=r["focus"],
             changes=list(r.get("changes", [])), time=r["time"], active=r["number"] <= current,
         )
-        for r in _records(folder)
+        for r in records
     ]
+
+
+def _finish(folder: SceneFolder, pending: dict) -> None:
+    """Write the history files of a change whose document is saved; safe to run again."""
+    for name, text in pending["write"].items():
+        write_atomic(folder.history / name, text)
+    for name in pending["remove"]:
+        (folder.history / name).unlink(missing_ok=True)
+    lines = [json.dumps(r, ensure_ascii=False) for r in pending["records"]]
+    write_atomic(_log(folder), "".join(line + "\n" for line in lines))
+    write_atomic(_state(folder), json.dumps({"current": pending["current"]}) + "\n")
+    _pending(folder).unlink(missing_ok=True)
+
+
+def _apply(folder: SceneFolder, pending: dict, document: bytes) -> None:
+    """Save ``document`` as the change ``pending`` describes: intent, document, history."""
+    pending = {**pending, "document_sha256": hashlib.sha256(document).hexdigest()}
+    write_atomic(_pending(folder), json.dumps(pending, ensure_ascii=False))
+    write_atomic(folder.document, document)
+    _finish(folder, pending)
+
+
+def recover(folder: SceneFolder) -> None:
+    """Finish the history of a change whose document was saved; forget one whose was not."""
+    if not _pending(folder).exists():
+        return
+    staged = _staged(folder)
+    if staged is not None:
+        log.warning("finishing the history of an interrupted change in %s", folder.root)
+        _finish(folder, staged)
+    else:
+        log.warning("dropping an interrupted change of %s that never took effect", folder.root)
+        _pending(folder).unlink(missing_ok=True)
+
+
+def _checked(document: bytes | str, what: str) -> Scene:
+    """The document a change is about to save, refused when it does not validate."""
+    try:
+        return Scene.model_validate_json(document)
+    except ValidationError as exc:
+        raise InputError(f"{what} would be invalid, so nothing was written: {describe_validation_error(exc)}") from None
 
 
 def commit(
@@ -89,54 +190,65 @@ def commit(
     focus: str,
     changes: list[str],
 ) -> int:
-    """Write an edited scene: its new files, ``scene.glb``, the history, then ``scene.json``.
+    """Write an edited scene: its new files, ``scene.glb``, then the document and its history.
 
-    The document goes last, so an interruption before it leaves the old document in effect
-    (new asset files have fresh names and the old document does not refer to them).
-    Returns the edit's number.
+    Nothing is written when the edited document does not validate. An interruption before the
+    document is saved leaves the old one in effect (new asset files have fresh names and the
+    old document does not refer to them; a ``scene.glb`` left newer than it does not match its
+    recorded hash and is rebuilt). Returns the edit's number.
     """
+    recover(folder)
+    _checked(scene.to_json(), "the edited scene")
     previous = folder.document.read_bytes()
     old_glb = folder.glb.read_bytes() if folder.glb.is_file() else None
+    records, current = _records(folder), _current(folder)
+    kept = [r for r in records if r["number"] <= current]
+    number = current + 1
+    # A new edit after undo drops the redo branch; its own number's files are overwritten.
+    dropped = [path(folder, r["number"]).name for r in records if r["number"] > number for path in (_before, _after)]
     written: list[Path] = []
+    document = b""
     try:
         for relative, data in files.items():
             path = folder.resolve(relative)
             if not path.exists():
                 written.append(write_atomic(path, data))
-        assemble(scene, folder)
-        current = _current(folder)
-        kept = [r for r in _records(folder) if r["number"] <= current]
-        for stale in _records(folder)[len(kept):]:  # a new edit after undo drops the redo branch
-            _before(folder, stale["number"]).unlink(missing_ok=True)
-            _after(folder, stale["number"]).unlink(missing_ok=True)
-        number = current + 1
-        document = scene.to_json()
-        write_atomic(_before(folder, number), previous)
-        write_atomic(_after(folder, number), document)
+        assemble_recorded(scene, folder)
+        document = scene.to_json().encode("utf-8")
         record = {
             "number": number, "instruction": instruction, "operation": operation, "focus": focus,
             "changes": changes, "time": datetime.now(timezone.utc).isoformat(timespec="seconds"),
         }
-        lines = [json.dumps(r, ensure_ascii=False) for r in [*kept, record]]
-        write_atomic(_log(folder), "\n".join(lines) + "\n")
-        write_atomic(_state(folder), json.dumps({"current": number}) + "\n")
-        write_atomic(folder.document, document)
+        pending = {
+            "current": number,
+            "records": [*kept, record],
+            "write": {_before(folder, number).name: previous.decode("utf-8"),
+                      _after(folder, number).name: document.decode("utf-8")},
+            "remove": dropped,
+        }
+        _apply(folder, pending, document)
     except BaseException:
-        for path in written:
-            path.unlink(missing_ok=True)
-        if old_glb is not None:
-            write_atomic(folder.glb, old_glb)
+        if file_sha256(folder.document) != hashlib.sha256(document).hexdigest():  # not saved: undo the rest
+            for path in written:
+                path.unlink(missing_ok=True)
+            if old_glb is not None:
+                write_atomic(folder.glb, old_glb)
+            _pending(folder).unlink(missing_ok=True)
         raise
     log.info("edit %d: %s %s", number, operation, focus)
     return number
 
 
 def _restore(folder: SceneFolder, source: Path, current: int) -> Scene:
+    """Make the stored version ``source`` the document again, with ``current`` edits in effect."""
     data = source.read_bytes()
-    scene = Scene.model_validate_json(data)
-    assemble(scene, folder)
-    write_atomic(_state(folder), json.dumps({"current": current}) + "\n")
-    write_atomic(folder.document, data)
+    scene = _checked(data, f"the stored version {source}")
+    recorded = scene.glb_sha256
+    assemble_recorded(scene, folder)
+    if recorded is not None and scene.glb_sha256 != recorded:  # another trimesh wrote other bytes
+        data = scene.to_json().encode("utf-8")
+    records, _ = _in_effect(folder)
+    _apply(folder, {"current": current, "records": records, "write": {}, "remove": []}, data)
     return scene
 
 
@@ -149,6 +261,7 @@ def _check_unchanged(folder: SceneFolder, current: int) -> None:
 
 def undo(folder: SceneFolder) -> tuple[Scene, Entry]:
     """Go back one edit: the document before it, byte for byte, and ``scene.glb`` to match."""
+    recover(folder)
     done = [e for e in entries(folder) if e.active]
     if not done:
         raise InputError(f"nothing to undo in {folder.root}: no edit is in effect")
@@ -159,6 +272,7 @@ def undo(folder: SceneFolder) -> tuple[Scene, Entry]:
 
 def redo(folder: SceneFolder) -> tuple[Scene, Entry]:
     """Re-apply the edit undone last, exactly as it came out the first time."""
+    recover(folder)
     undone = [e for e in entries(folder) if not e.active]
     if not undone:
         raise InputError(f"nothing to redo in {folder.root}: no edit has been undone")

@@ -4,17 +4,26 @@
 imports ``bpy``) with the same interpreter, and reads its result file, so a missing or crashing
 Blender never takes the caller down. Renders land in ``renders/<view>.png``; ``renders/renders.json``
 records which view was chosen and how many pixels of each object every candidate view shows.
+
+The worker works in a temporary folder only (its images, its own temporary files); this
+process copies the images into the scene folder once the worker has succeeded, so a worker
+that outlives a stopped run could never write there. It does not outlive it: it runs in its
+own session (Ctrl-C reaches this process, which kills it and removes the temporary folder),
+and on Linux the kernel kills it when this process dies, however it dies.
 """
 
 from __future__ import annotations
 
+import ctypes
 import importlib.util
 import json
 import logging
+import os
+import signal
 import subprocess
 import sys
 import tempfile
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 
 import numpy as np
@@ -120,11 +129,15 @@ def render(
             "samples": int(samples),
             "denoise": True,
             "transparent": transparent,
-            "out_dir": str(folder.renders.resolve()),
+            "out_dir": str(Path(tmp) / "renders"),
             "result": str(Path(tmp) / "result.json"),
         }
         job_path = write_atomic(Path(tmp) / "job.json", json.dumps(job))
         result = _run_worker(job_path, Path(job["result"]), timeout)
+        result["images"] = {
+            view: str(write_atomic(folder.renders / f"{view}.png", Path(made).read_bytes()))
+            for view, made in result["images"].items()
+        }
     images = [Path(result["images"][v]) for v in result["images"]]
     for view in VIEWS:  # a previous keep-all run's other views would now be stale
         stale = folder.renders / f"{view}.png"
@@ -152,16 +165,59 @@ def render_again(scene: Scene, folder: SceneFolder | str | Path) -> list[Path]:
     )
 
 
+#: prctl(2) option: the signal the kernel sends a process when the thread that started it dies.
+PR_SET_PDEATHSIG = 1
+
+
+def _dies_with_parent() -> Callable[[], None] | None:
+    """A function for the worker to run between fork and exec, on Linux: have the kernel SIGKILL
+    it when this process dies (even by SIGKILL, which runs no cleanup). None elsewhere."""
+    if not sys.platform.startswith("linux"):
+        return None
+    try:
+        prctl = ctypes.CDLL(None, use_errno=True).prctl  # looked up before the fork, not in it
+    except (OSError, AttributeError):
+        return None
+    parent = os.getpid()
+
+    def arrange() -> None:
+        prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+        if os.getppid() != parent:  # the parent died before the request took effect
+            os._exit(1)
+
+    return arrange
+
+
+def start_worker(command: Sequence[str], workdir: Path) -> subprocess.Popen:
+    """Start ``command`` as a worker tied to this process, its temporary files in ``workdir``."""
+    return subprocess.Popen(
+        list(command),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env={**os.environ, "TMPDIR": str(workdir)},
+        start_new_session=True,  # the terminal's Ctrl-C goes to this process, which ends it
+        preexec_fn=_dies_with_parent(),
+    )
+
+
 def _run_worker(job_path: Path, result_path: Path, timeout: float) -> dict:
     command = [sys.executable, "-m", "scenewright.render.worker", str(job_path)]
+    process = start_worker(command, job_path.parent)
     try:
-        proc = subprocess.run(command, capture_output=True, text=True, timeout=timeout, check=False)
+        stdout, stderr = process.communicate(timeout=timeout)
     except subprocess.TimeoutExpired:
+        process.kill()
+        process.communicate()
         raise BackendError(f"Blender did not finish rendering within {timeout:.0f} s; lower --samples or --resolution") from None
-    if proc.returncode != 0 or not result_path.is_file():
-        tail = "\n".join((proc.stderr or proc.stdout).strip().splitlines()[-15:])
-        raise BackendError(f"Blender render failed (exit code {proc.returncode}):\n{tail}")
-    log.debug("blender output:\n%s", proc.stdout[-4000:])
+    except BaseException:  # Ctrl-C: no worker left behind, and its folder goes with the caller's
+        process.kill()
+        process.wait()
+        raise
+    if process.returncode != 0 or not result_path.is_file():
+        tail = "\n".join((stderr or stdout).strip().splitlines()[-15:])
+        raise BackendError(f"Blender render failed (exit code {process.returncode}):\n{tail}")
+    log.debug("blender output:\n%s", stdout[-4000:])
     return json.loads(result_path.read_text(encoding="utf-8"))
 
 
