@@ -15,6 +15,7 @@ from rich.console import Console
 
 from scenewright.cli import assets, backends, edit, evaluate, generate, parse, remote, render, solve  # noqa: F401
 from scenewright.cli.app import app
+from scenewright.cli.display import safe
 from scenewright.errors import BackendError, InfeasibleLayout, InputError, ScenewrightError
 
 EXIT_BAD_INPUT = 2
@@ -28,16 +29,16 @@ def main(argv: list[str] | None = None) -> int:
     try:
         app(args=argv, prog_name="scenewright", standalone_mode=False)
     except InputError as exc:
-        err.print(f"[red]error:[/red] {exc}", highlight=False)
+        err.print(f"[red]error:[/red] {safe(exc)}", highlight=False)
         return EXIT_BAD_INPUT
     except InfeasibleLayout as exc:
-        err.print(f"[yellow]layout incomplete:[/yellow] {exc}", highlight=False)
+        err.print(f"[yellow]layout incomplete:[/yellow] {safe(exc)}", highlight=False)
         return EXIT_INFEASIBLE
     except BackendError as exc:
-        err.print(f"[red]backend error:[/red] {exc}", highlight=False)
+        err.print(f"[red]backend error:[/red] {safe(exc)}", highlight=False)
         return EXIT_BACKEND
     except ScenewrightError as exc:
-        err.print(f"[red]error:[/red] {exc}", highlight=False)
+        err.print(f"[red]error:[/red] {safe(exc)}", highlight=False)
         return EXIT_BACKEND
     except typer.Abort:  # Ctrl-C at a prompt
         return 130

@@ -10,6 +10,7 @@ from typing import Annotated
 import typer
 
 from scenewright.cli.app import app, bench_app
+from scenewright.cli.display import printable
 from scenewright.cli.options import (
     ApiKeyEnvOption,
     BaseUrlOption,
@@ -59,8 +60,8 @@ def evaluate_command(
         judge_vlm=create_backend("vlm", settings.vlm, settings) if judge else None,
     )
     paths = write_report(results, out, paper=False)
-    typer.echo(paths["table"].read_text(encoding="utf-8"))
-    typer.echo(f"wrote {', '.join(str(p) for p in paths.values())}", err=True)
+    typer.echo(printable(paths["table"].read_text(encoding="utf-8")))
+    typer.echo(printable(f"wrote {', '.join(str(p) for p in paths.values())}"), err=True)
 
 
 #: Prompt domains → the paper's group names, so the table sits next to its figures.

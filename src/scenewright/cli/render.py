@@ -8,6 +8,7 @@ from typing import Annotated
 import typer
 
 from scenewright.cli.app import app
+from scenewright.cli.display import printable
 from scenewright.cli.options import ConfigOption, build_settings
 from scenewright.errors import InputError
 from scenewright.folder import SceneFolder
@@ -55,5 +56,5 @@ def render_command(
     )
     info = render_info(folder) or {}
     for path in paths:
-        typer.echo(str(path))
-    typer.echo(f"best view: {info.get('best')}; {info.get('total_seconds')} s in Blender", err=True)
+        typer.echo(printable(path))
+    typer.echo(printable(f"best view: {info.get('best')}; {info.get('total_seconds')} s in Blender"), err=True)
