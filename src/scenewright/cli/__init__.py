@@ -40,6 +40,10 @@ def main(argv: list[str] | None = None) -> int:
     except ScenewrightError as exc:
         err.print(f"[red]error:[/red] {safe(exc)}", highlight=False)
         return EXIT_BACKEND
+    except OSError as exc:  # a read-only or full disk, a folder where a file should be: the user's to fix
+        where = f"{exc.filename}: " if exc.filename else ""
+        err.print(f"[red]error:[/red] {safe(where)}{safe(exc.strerror or exc)}", highlight=False)
+        return EXIT_BAD_INPUT
     except typer.Abort:  # Ctrl-C at a prompt
         return 130
     except typer.TyperException as exc:  # usage errors (unknown option, missing argument) with standalone_mode=False

@@ -52,7 +52,9 @@ def edit_command(
 
     scene_folder = SceneFolder(folder)
     scene = scene_folder.load()
-    rendered = render_info(scene_folder) is not None  # read first: a broken file stops the edit before it saves
+    # Read first: a broken history or renders.json stops the edit before it asks a model or saves.
+    entries(scene_folder)
+    rendered = render_info(scene_folder) is not None
     settings = build_settings(vlm=vlm, images=images, meshes=meshes, base_url=base_url, config=config,
                               api_key_env=api_key_env, reasoning_effort=reasoning_effort, timeout=timeout)
     apply_edit(scene, scene_folder, instruction, backends=Backends.from_settings(settings), settings=settings)

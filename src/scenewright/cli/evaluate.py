@@ -11,6 +11,7 @@ import typer
 
 from scenewright.cli.app import app, bench_app
 from scenewright.cli.display import printable
+from scenewright.errors import InputError
 from scenewright.cli.options import (
     ApiKeyEnvOption,
     BaseUrlOption,
@@ -51,6 +52,8 @@ def evaluate_command(
     from scenewright.evaluation import evaluate
     from scenewright.evaluation.report import write_report
 
+    if out.exists() and not out.is_dir():
+        raise InputError(f"--out {out} is a file; give a folder for report.json, table.md and chart.png")
     settings = build_settings(vlm=vlm, base_url=base_url, config=config, api_key_env=api_key_env)
     results = evaluate(
         directories,

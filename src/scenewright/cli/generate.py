@@ -29,6 +29,7 @@ from scenewright.cli.options import (
     TimeoutOption,
     VlmOption,
     build_settings,
+    check_seed,
 )
 from scenewright.errors import InfeasibleLayout, InputError
 from scenewright.folder import SceneFolder
@@ -122,6 +123,7 @@ def generate_command(
         raise InputError("--resume takes the scene folder itself and keeps its style; drop --out and --style")
     if resume_dir is None and out is None:
         raise InputError("--out DIR is required: the folder to write the scene into")
+    check_seed(seed)
     settings = build_settings(
         vlm=vlm,
         images=images,

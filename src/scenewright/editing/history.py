@@ -16,11 +16,13 @@ from dataclasses import dataclass
 from datetime import datetime, timezone
 from pathlib import Path
 
+from pydantic import ValidationError
+
 from scenewright.errors import InputError
 from scenewright.export import assemble
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
-from scenewright.scene import Scene
+from scenewright.scene import Scene, describe_validation_error
 
 log = logging.getLogger(__name__)
 
@@ -54,16 +56,50 @@ def _after(folder: SceneFolder, number: int) -> Path:
     return folder.history / f"{number:04d}.after.json"
 
 
+def _broken(folder: SceneFolder, path: Path, why: str) -> InputError:
+    return InputError(
+        f"{path} is broken ({why}); undo, redo and edit need an intact history: restore it, or move "
+        f"{folder.history} away to keep the scene as it is and start a new history"
+    )
+
+
+#: The fields of a log record and the type each must have.
+_RECORD = {"number": int, "instruction": str, "operation": str, "focus": str, "changes": list, "time": str}
+
+
 def _records(folder: SceneFolder) -> list[dict]:
     path = _log(folder)
     if not path.is_file():
         return []
-    return [json.loads(line) for line in path.read_text(encoding="utf-8").splitlines() if line.strip()]
+    records = []
+    try:
+        lines = path.read_text(encoding="utf-8").splitlines()
+    except UnicodeDecodeError as exc:
+        raise _broken(folder, path, f"not UTF-8 text: {exc.reason}") from None
+    for index, line in enumerate((line for line in lines if line.strip()), start=1):
+        try:
+            record = json.loads(line)
+        except json.JSONDecodeError as exc:
+            raise _broken(folder, path, f"edit {index} is not valid JSON: {exc.msg}") from None
+        bad = [k for k, kind in _RECORD.items() if not isinstance(record, dict) or not isinstance(record.get(k), kind)]
+        if bad or record["number"] != index:
+            raise _broken(folder, path, f"edit {index} has no valid {', '.join(bad) or 'number'}")
+        records.append(record)
+    return records
 
 
 def _current(folder: SceneFolder) -> int:
     path = _state(folder)
-    return int(json.loads(path.read_text(encoding="utf-8"))["current"]) if path.is_file() else len(_records(folder))
+    count = len(_records(folder))
+    if not path.is_file():
+        return count
+    try:
+        current = json.loads(path.read_text(encoding="utf-8"))["current"]
+    except (json.JSONDecodeError, UnicodeDecodeError, TypeError, KeyError) as exc:
+        raise _broken(folder, path, f"no 'current' edit number: {type(exc).__name__}") from None
+    if isinstance(current, bool) or not isinstance(current, int) or not 0 <= current <= count:
+        raise _broken(folder, path, f"current is {current!r}, not an edit number from 0 to {count}")
+    return current
 
 
 def entries(folder: SceneFolder) -> list[Entry]:
@@ -132,8 +168,13 @@ def commit(
 
 
 def _restore(folder: SceneFolder, source: Path, current: int) -> Scene:
-    data = source.read_bytes()
-    scene = Scene.model_validate_json(data)
+    try:
+        data = source.read_bytes()
+        scene = Scene.model_validate_json(data)
+    except FileNotFoundError:
+        raise _broken(folder, source, "missing") from None
+    except ValidationError as exc:
+        raise _broken(folder, source, describe_validation_error(exc)) from None
     assemble(scene, folder)
     write_atomic(_state(folder), json.dumps({"current": current}) + "\n")
     write_atomic(folder.document, data)
