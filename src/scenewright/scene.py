@@ -330,6 +330,8 @@ class Scene(_Model):
             raw = path.read_text(encoding="utf-8")
         except FileNotFoundError:
             raise InputError(f"{path}: no such file") from None
+        except UnicodeDecodeError as exc:
+            raise InputError(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start})") from None
         try:
             data = json.loads(raw)
         except json.JSONDecodeError as exc:

@@ -6,6 +6,7 @@ variable name, a base URL, a cache folder) comes through :class:`Settings`.
 
 from __future__ import annotations
 
+import math
 import os
 import tomllib
 from collections.abc import Mapping
@@ -93,8 +94,8 @@ def _optional_count(minimum: int):
 
 
 def _positive(value: object) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not value > 0:
-        raise ValueError("a number > 0")
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not 0 < value < math.inf:
+        raise ValueError("a finite number > 0")
     return float(value)
 
 
