@@ -8,11 +8,13 @@ makes of a description.
 from __future__ import annotations
 
 import hashlib
+import io
 import shutil
 from pathlib import Path
 
 import pytest
 import trimesh
+from PIL import Image
 
 from scenewright.assets import generate_assets
 from scenewright.cache import RequestCache
@@ -49,12 +51,19 @@ class NoImages:
 
 
 class PictureImages(NoImages):
-    """An image backend that draws one (tiny, fake) object image per object."""
+    """An image backend that draws one tiny PNG per object, coloured by its description
+    (a real image: images are decoded before they go to a mesh server)."""
 
     name = "pictures"
 
     def object_images(self, objects, style, reference, progress=None):
-        return {o.id: hashlib.sha256(o.visual_description.encode()).digest() for o in objects}
+        return {o.id: _swatch(hashlib.sha256(o.visual_description.encode()).digest()[:3]) for o in objects}
+
+
+def _swatch(colour: bytes) -> bytes:
+    out = io.BytesIO()
+    Image.new("RGB", (4, 4), tuple(colour)).save(out, format="PNG")
+    return out.getvalue()
 
 
 class RulePlanner:

@@ -180,3 +180,16 @@ def test_bench_assets_prints_one_json_object(capsys):
     assert result["assets"] == 4 and result["ideal_seconds"] == pytest.approx(0.1)
     assert result["jobs_per_server"] == [2, 2]
     assert result["wall_seconds"] > 0
+
+
+def test_a_status_answer_trickled_a_byte_at_a_time_times_out_after_the_deadline():
+    # Each byte arrives well within the read timeout; only a total deadline stops the request.
+    with servers({"fault": "drip", "fault_jobs": 1}) as started:
+        with pytest.raises(BackendError, match=r"timed out after 1 s"):
+            backend(started, timeout=1.0, max_failures=1).generate(requests(1))
+
+
+def test_a_status_answer_without_end_is_cut_at_max_download_bytes():
+    with servers({"fault": "flood", "fault_jobs": 1}) as started:
+        with pytest.raises(BackendError, match=r"larger than max_download_bytes \(4,194,304 bytes\)"):
+            backend(started, timeout=30.0, max_failures=1, max_download_bytes=4 << 20).generate(requests(1))

@@ -372,3 +372,60 @@ def test_the_key_comes_from_the_named_variable(openai_server, remote_settings, m
     openai_server.script(CHAT, chat_reply("Score: 50"))
     OpenAIChatVLM("test-model", remote_settings).judge("a room", png(), "semantic")
     assert openai_server.seen(CHAT)[0].headers["authorization"] == "Bearer sk-test-123"
+
+
+# --- limits on what a server may send (issue 11) ----------------------------------------------
+
+from scenewright.backends.fake_openai import Reply  # noqa: E402
+
+
+def test_a_reply_trickled_a_byte_at_a_time_stops_at_the_total_deadline(openai_server, remote_settings):
+    # Every byte comes within the read timeout; without a total deadline this takes minutes.
+    remote_settings.timeout, remote_settings.max_retries = 1.0, 0
+    body = chat_reply({"objects": [object_item("table_1", "table")]}).body
+    openai_server.script(CHAT, Reply(body, drip=0.1))
+    with pytest.raises(BackendError, match=r"scene_objects \(test-model\): timed out after 1 s"):
+        OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)
+
+
+def test_a_body_larger_than_max_download_bytes_is_not_read(openai_server, remote_settings):
+    remote_settings.max_retries, remote_settings.max_download_bytes = 0, 100_000
+    openai_server.script(CHAT, chat_reply({"objects": [object_item("t", "x" * 200_000)]}))
+    with pytest.raises(BackendError, match=r"larger than max_download_bytes \(100,000 bytes\)"):
+        OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)
+
+
+def test_a_200_whose_body_is_not_json_is_a_backend_error(openai_server, remote_settings):
+    openai_server.script(CHAT, Reply("<html>maintenance</html>"))
+    with pytest.raises(BackendError, match="body that is not JSON"):
+        OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)
+
+
+def test_an_oversized_answer_is_refused_and_not_sent_back_whole(openai_server, remote_settings):
+    remote_settings.max_answer_chars = 5_000
+    huge = {"objects": [object_item("table_1", "table " * 2_000)]}
+    good = {"objects": [object_item("table_1", "table")]}
+    openai_server.script(CHAT, chat_reply(huge), chat_reply(good))
+    objects = OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)
+    assert [o.id for o in objects] == ["table_1"]
+    retry = openai_server.seen(CHAT)[1].json
+    assert len(json.dumps(retry)) < 10_000
+    assert "more than max_answer_chars (5,000)" in retry["messages"][-1]["content"]
+
+
+def test_too_many_objects_or_too_long_names_are_asked_again(openai_server, remote_settings):
+    remote_settings.max_objects, remote_settings.max_retries = 3, 1
+    many = {"objects": [object_item(f"box_{i}", "box", x=i) for i in range(4)]}
+    long_name = {"objects": [object_item("lamp_1", "lamp " * 50)]}
+    openai_server.script(CHAT, chat_reply(many), chat_reply(long_name))
+    with pytest.raises(BackendError, match=r"name: Value error, 249 characters, more than the 200 allowed"):
+        OpenAIChatVLM("test-model", remote_settings).describe_objects("boxes", "realistic", None)
+    first = openai_server.seen(CHAT)[1].json["messages"][-1]["content"]
+    assert "4 objects, more than max_objects (3)" in first
+
+
+def test_a_model_name_that_is_not_one_is_an_input_error(remote_settings):
+    with pytest.raises(InputError, match="is not a model name"):
+        create_backend("vlm", "openai:" + "m" * 300, remote_settings)
+    with pytest.raises(InputError, match="is not a model name"):
+        create_backend("images", "openai:a model; rm -rf", remote_settings)

@@ -2,6 +2,7 @@ import importlib.util
 import json
 import os
 import signal
+import struct
 import subprocess
 import sys
 import time
@@ -208,7 +209,8 @@ def test_a_blender_failure_becomes_a_backend_error_with_its_stderr(tmp_path):
     from scenewright.errors import BackendError
 
     scene, folder = small_scene(tmp_path)
-    folder.glb.write_bytes(b"not a glb")
+    # A header that passes the check before Blender starts, over a body Blender cannot read.
+    folder.glb.write_bytes(b"glTF" + struct.pack("<II", 2, 24) + b"\x00" * 12)
     with pytest.raises(BackendError, match="Blender render failed") as info:
         render(scene, folder, draft=True)
     assert "Traceback" in str(info.value) or "Error" in str(info.value)
@@ -289,3 +291,45 @@ def _cmdline_has(proc: Path, text: str) -> bool:
         ).read_bytes().decode(errors="replace")
     except OSError:
         return False
+def test_render_refuses_a_corrupt_asset_or_scene_glb_before_starting_blender(tmp_path, monkeypatch):
+    scene, folder = small_scene(tmp_path)
+    monkeypatch.setattr("subprocess.run", lambda *a, **k: pytest.fail("the worker must not start"))
+    monkeypatch.setattr(importlib.util, "find_spec", lambda name, *a: object())
+    folder.assets.mkdir()
+    (folder.assets / "table_1.glb").write_bytes(b"")
+    scene.objects[0].asset = "assets/table_1.glb"
+    with pytest.raises(InputError, match=r"table_1 \(its asset assets/table_1.glb is not a usable GLB.*--resume"):
+        render(scene, folder, draft=True)
+    scene.objects[0].asset = None
+    folder.glb.write_bytes(folder.glb.read_bytes()[:100])
+    with pytest.raises(InputError, match=r"scene.glb \(header declares .* \(truncated\?\)\)"):
+        render(scene, folder, draft=True)
+
+
+@pytest.mark.parametrize(
+    ("resolution", "samples", "message"),
+    [
+        ((100000, 100000), 16, "more than max_render_pixels"),
+        ((1280, 720), 10**6, "more than max_render_samples"),
+        ((8, 8), 16, "at least 16x16"),
+    ],
+)
+def test_render_size_and_samples_are_bounded(tmp_path, monkeypatch, resolution, samples, message):
+    scene, folder = small_scene(tmp_path)
+    monkeypatch.setattr("subprocess.run", lambda *a, **k: pytest.fail("the worker must not start"))
+    with pytest.raises(InputError, match=message):
+        render(scene, folder, resolution=resolution, samples=samples)
+
+
+@pytest.mark.parametrize(
+    "content",
+    ["{not json", "[]", '{"images": {"front": "/etc/hostname"}, "best": "front"}',
+     '{"images": {"front": "../../outside.png"}, "best": "front"}', '{"images": {}, "best": 3}',
+     '{"images": {"front": "renders/front.png"}, "best": "front", "resolution": [1, "x"]}'],
+)
+def test_a_broken_or_tampered_renders_json_is_an_input_error(tmp_path, content):
+    _, folder = small_scene(tmp_path)
+    folder.renders.mkdir()
+    (folder.renders / "renders.json").write_text(content)
+    with pytest.raises(InputError, match="renders.json"):
+        best_render(folder)

@@ -14,6 +14,8 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
+from pydantic import ValidationError
+
 from scenewright.analysis.stage import analyze
 from scenewright.assets import generate_assets, load_meshes
 from scenewright.assets.stage import needs_asset
@@ -25,7 +27,7 @@ from scenewright.folder import SceneFolder
 from scenewright.integrity import assemble_recorded, finish_first_save, glb_matches, rebuild_glb, remove_temporaries
 from scenewright.layout.stage import arrange
 from scenewright.lock import LOCK_NAME, locked
-from scenewright.scene import Scene
+from scenewright.scene import Scene, describe_validation_error
 from scenewright.settings import Settings
 
 log = logging.getLogger(__name__)
@@ -139,12 +141,19 @@ def run_stages(
 
 def _new_scene(text: str, style: str | None, seed: int) -> Scene:
     """A scene with the style (the flag, else the one the text names, else the default) and the
-    ground kind read from the text by the offline parser, whichever backends run the stages."""
+    ground kind read from the text by the offline parser, whichever backends run the stages.
+
+    Made before the folder is touched, so bad input leaves nothing behind.
+    """
     from scenewright.analysis.parser import parse_scene
 
+    try:
+        scene = Scene(text=text, seed=seed, **({"style": style.strip().lower()} if style and style.strip() else {}))
+    except ValidationError as exc:
+        raise InputError(describe_validation_error(exc)) from None
     parsed = parse_scene(text)
-    chosen = style.strip().lower() if style and style.strip() else parsed.style
-    scene = Scene(text=text, style=chosen, seed=seed)
+    if not (style and style.strip()):
+        scene.style = parsed.style
     scene.ground.kind = parsed.ground
     return scene
 
@@ -167,6 +176,7 @@ def generate(
         raise InputError(
             "the text is empty; describe the scene, e.g. 'a cosy reading corner with an armchair'"
         )
+    candidate = _new_scene(text, style, seed)
     existed = folder.root.exists()
     folder.create()
     with writing(folder, settings.lock_timeout):
@@ -181,7 +191,7 @@ def generate(
                 )
             log.info("resuming %s (done: %s)", folder.root, ", ".join(scene.done) or "nothing")
         else:
-            scene = _new_scene(text, style, seed)
+            scene = candidate
             scene.record("generate", "new scene", style=scene.style, seed=seed, backends=backends.names())
             folder.save(scene)
         try:

@@ -55,6 +55,27 @@ _ID = re.compile(r"^[A-Za-z0-9_\-.]+$")
 MAX_COORDINATE = 10_000.0
 MIN_SIZE = 0.001
 MAX_SIZE = 1_000.0
+# --- limits on what a document (and so a model's answer) may hold (docs/security.md) ---------
+# Fixed rather than configured: a scene must load the same on every machine. Ids name files.
+MAX_ID_CHARS = 64
+MAX_NAME_CHARS = 200
+MAX_DESCRIPTION_CHARS = 2_000
+MAX_TEXT_CHARS = 20_000
+MAX_STYLE_CHARS = 40
+#: Seeds feed numpy's generator, which takes 0 .. 2**32 - 1.
+MAX_SEED = 2**32 - 1
+_STYLE = re.compile(r"^[A-Za-z0-9][A-Za-z0-9 _\-]*$")
+
+
+def _at_most(limit: int):
+    """A field validator: the string has at most ``limit`` characters."""
+
+    def check(cls, v: Any) -> Any:
+        if isinstance(v, str) and len(v) > limit:
+            raise ValueError(f"{len(v)} characters, more than the {limit} allowed")
+        return v
+
+    return classmethod(check)
 
 
 class _Model(BaseModel):
@@ -125,6 +146,11 @@ class SceneObject(_Model):
     def yaw(self) -> float:
         return self.rotation.z
 
+    # limits (docs/security.md)
+    _id_length = field_validator("id")(_at_most(MAX_ID_CHARS))
+    _name_length = field_validator("name", "category")(_at_most(MAX_NAME_CHARS))
+    _description_length = field_validator("visual_description")(_at_most(MAX_DESCRIPTION_CHARS))
+
 
 class Pose(_Model):
     """Where an object stands and how it is turned, apart from what it is."""
@@ -167,6 +193,9 @@ class Constraint(_Model):
     def key(self) -> tuple[str, str, str]:
         return (self.relation, self.source, self.target)
 
+    # limits (docs/security.md)
+    _id_length = field_validator("source", "target")(_at_most(MAX_ID_CHARS))
+
     def __str__(self) -> str:
         return f"{self.source} {self.relation} {self.target}"
 
@@ -178,11 +207,20 @@ class RemovedObject(_Model):
     name: str
     reason: str
 
+    # limits (docs/security.md)
+    _id_length = field_validator("id")(_at_most(MAX_ID_CHARS))
+    _name_length = field_validator("name")(_at_most(MAX_NAME_CHARS))
+    _reason_length = field_validator("reason")(_at_most(MAX_DESCRIPTION_CHARS))
+
 
 class Ground(_Model):
     kind: str = "grass"
     texture: str | None = None
     description: str = ""
+
+    # limits (docs/security.md)
+    _kind_length = field_validator("kind")(_at_most(MAX_NAME_CHARS))
+    _description_length = field_validator("description")(_at_most(MAX_DESCRIPTION_CHARS))
 
 
 class DroppedConstraint(_Model):
@@ -259,6 +297,31 @@ class Scene(_Model):
     def _bounds_are_sane(cls, v: tuple[float, float] | None) -> tuple[float, float] | None:
         if v is not None and not all(0 < side <= 2 * MAX_COORDINATE for side in v):
             raise ValueError(f"bounds (width, depth) must each be > 0 and at most {2 * MAX_COORDINATE:g} m, got {v}")
+    # limits (docs/security.md)
+    _text_length = field_validator("text")(_at_most(MAX_TEXT_CHARS))
+
+    @field_validator("schema_version")
+    @classmethod
+    def _version_positive(cls, v: int) -> int:
+        if v < 1:
+            raise ValueError(f"schema_version {v} is not a version scenewright ever wrote (1..{SCHEMA_VERSION})")
+        return v
+
+    @field_validator("seed")
+    @classmethod
+    def _seed_in_range(cls, v: int) -> int:
+        if not 0 <= v <= MAX_SEED:
+            raise ValueError(f"the seed must be from 0 to {MAX_SEED}, got {v}")
+        return v
+
+    @field_validator("style")
+    @classmethod
+    def _style_is_a_word(cls, v: str) -> str:
+        if len(v) > MAX_STYLE_CHARS or not _STYLE.match(v):
+            raise ValueError(
+                f"style {v[:60]!r} must be a name of at most {MAX_STYLE_CHARS} letters, digits, spaces, "
+                f"'-' and '_' (e.g. {', '.join(STYLES)})"
+            )
         return v
 
     @model_validator(mode="after")
@@ -304,6 +367,8 @@ class Scene(_Model):
             raw = path.read_text(encoding="utf-8")
         except FileNotFoundError:
             raise InputError(f"{path}: no such file") from None
+        except UnicodeDecodeError as exc:
+            raise InputError(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start})") from None
         try:
             data = json.loads(raw)
         except json.JSONDecodeError as exc:

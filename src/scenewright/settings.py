@@ -6,6 +6,7 @@ variable name, a base URL, a cache folder) comes through :class:`Settings`.
 
 from __future__ import annotations
 
+import math
 import os
 import tomllib
 from collections.abc import Mapping
@@ -38,11 +39,21 @@ class Settings:
     mesh_concurrency: int = 1
     feedback_rounds: int = 3
     #: Simplify each generated mesh to about this many triangles (image-to-3D meshes run to
-    #: hundreds of thousands); ``None`` keeps them as they come.
-    max_faces: int | None = None
+    #: hundreds of thousands, and layout slows with every one); ``None`` keeps them as they come.
+    max_faces: int | None = 200_000
     time_limit: float = 10.0
     #: Seconds a command that writes a scene folder waits while another one is writing it.
     lock_timeout: float = 60.0
+    # Limits on what untrusted servers may hand back (docs/security.md).
+    #: Characters of one model answer; a longer one is refused and asked for again.
+    max_answer_chars: int = 200_000
+    #: Objects of one scene, from a model's answer or an edit.
+    max_objects: int = 150
+    #: Bytes of one HTTP response body (a GLB, an image, a status); the download stops there.
+    max_download_bytes: int = 256 * 1024 * 1024
+    #: Pixels (width × height) and Cycles samples of one render.
+    max_render_pixels: int = 3840 * 2160
+    max_render_samples: int = 4096
     cache_dir: Path | None = field(default_factory=default_cache_dir)
     extra: dict[str, object] = field(default_factory=dict)
 
@@ -85,8 +96,8 @@ def _optional_count(minimum: int):
 
 
 def _positive(value: object) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not value > 0:
-        raise ValueError("a number > 0")
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not 0 < value < math.inf:
+        raise ValueError("a finite number > 0")
     return float(value)
 
 
@@ -124,6 +135,11 @@ KEYS = {
     "mesh_concurrency": _count(1),
     "feedback_rounds": _count(0),
     "max_faces": _optional_count(100),
+    "max_answer_chars": _count(1000),
+    "max_objects": _count(1),
+    "max_download_bytes": _count(1024),
+    "max_render_pixels": _count(256),
+    "max_render_samples": _count(1),
     "time_limit": _positive,
     "lock_timeout": _non_negative,
     "cache_dir": _cache_dir,

@@ -33,7 +33,7 @@ def _note(progress: Callable[[str], None] | None, message: str) -> None:
 
 def _reference(scene: Scene, folder: SceneFolder, images: ImageGenerator) -> bytes | None:
     if folder.reference_image.is_file():
-        return folder.reference_image.read_bytes()
+        return folder.reference()
     data = images.reference_image(scene.text, scene.style)
     if data is None:
         return None
@@ -64,7 +64,7 @@ def _object_images(
     reference: bytes | None,
     progress: Callable[[str], None] | None,
 ) -> None:
-    wanted = [o for o in scene.objects if not (o.image and folder.resolve(o.image).is_file())]
+    wanted = [o for o in scene.objects if not (o.image and folder.image_of(o).is_file())]
     drawn = images.object_images(wanted, scene.style, reference, progress) if wanted else {}
     for obj in wanted:
         if obj.id in drawn:
@@ -77,7 +77,7 @@ def _object_images(
 def _remove_redundant(scene: Scene, folder: SceneFolder, vlm: VisionLanguageModel) -> None:
     if any(e.stage == STAGE and e.data.get("step") == REDUNDANCY_STEP for e in scene.provenance):
         return
-    pictures = {o.id: folder.resolve(o.image).read_bytes() for o in scene.objects if o.image}
+    pictures = {o.id: folder.read_image(folder.image_of(o), f"objects[{o.id}].image") for o in scene.objects if o.image}
     redundant = vlm.find_redundant(scene.objects, pictures)
     scene.provenance += getattr(vlm, "last_repairs", [])
     unknown = sorted(set(redundant) - {o.id for o in scene.objects})

@@ -8,7 +8,7 @@ from scenewright.assets.normalise import parse_glb
 from scenewright.errors import InputError
 from scenewright.folder import SceneFolder
 from scenewright.geometry import GLTF_TO_SCENE
-from scenewright.scene import Scene
+from scenewright.scene import Scene, SceneObject
 
 
 def asset_mesh(glb: bytes) -> trimesh.Trimesh:
@@ -22,9 +22,9 @@ def load_meshes(scene: Scene, folder: SceneFolder) -> dict[str, trimesh.Trimesh]
     """Each object's asset by id; objects without an asset are left out (boxes stand in)."""
     meshes: dict[str, trimesh.Trimesh] = {}
     for obj in scene.objects:
-        if obj.asset is None:
+        path = folder.asset_of(obj)
+        if path is None:
             continue
-        path = folder.resolve(obj.asset)
         try:
             meshes[obj.id] = asset_mesh(path.read_bytes())
         except FileNotFoundError:
@@ -35,3 +35,28 @@ def load_meshes(scene: Scene, folder: SceneFolder) -> dict[str, trimesh.Trimesh]
         except ValueError as exc:
             raise InputError(f"object {obj.id!r}: its asset {path} is not a usable GLB: {exc}") from None
     return meshes
+
+
+#: Verdicts of :func:`asset_problem` by (path, mtime, size): a resume checks every asset, and an
+#: asset file is never rewritten in place, so a verdict stays true while its key does.
+_VERDICTS: dict[tuple[str, int, int], str | None] = {}
+
+
+def asset_problem(obj: SceneObject, folder: SceneFolder) -> str | None:
+    """Why ``obj``'s stored asset cannot be used (none, missing, empty, corrupt, no triangles),
+    or ``None`` when it can; a path the document should not name is an InputError."""
+    path = folder.asset_of(obj)
+    if path is None:
+        return "it has no asset"
+    try:
+        stat = path.stat()
+    except FileNotFoundError:
+        return f"its asset {obj.asset} is missing"
+    key = (str(path.resolve()), stat.st_mtime_ns, stat.st_size)
+    if key not in _VERDICTS:
+        try:
+            asset_mesh(path.read_bytes())
+            _VERDICTS[key] = None
+        except ValueError as exc:
+            _VERDICTS[key] = f"its asset {obj.asset} is not a usable GLB ({exc})"
+    return _VERDICTS[key]

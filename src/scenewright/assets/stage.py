@@ -14,6 +14,7 @@ import logging
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor, as_completed
 
+from scenewright.assets.load import asset_problem
 from scenewright.assets.normalise import normalise, to_glb
 from scenewright.backends import MeshGenerator, MeshRequest
 from scenewright.cache import RequestCache, request_key
@@ -28,15 +29,19 @@ CACHE_KIND = "meshes"
 
 
 def needs_asset(obj: SceneObject, folder: SceneFolder) -> bool:
-    return obj.asset is None or not folder.resolve(obj.asset).is_file()
+    """Whether ``obj`` has no usable asset: none, missing, empty, corrupt or without triangles."""
+    problem = asset_problem(obj, folder)
+    if problem is not None and obj.asset is not None:
+        log.warning("object %r: %s; it is built again", obj.id, problem)
+    return problem is not None
 
 
 def mesh_request(obj: SceneObject, folder: SceneFolder, style: str) -> MeshRequest:
     image = None
-    if obj.image is not None:
-        path = folder.resolve(obj.image)
+    path = folder.image_of(obj)
+    if path is not None:
         try:
-            image = path.read_bytes()
+            image = folder.read_image(path, f"objects[{obj.id}].image")
         except FileNotFoundError:
             raise InputError(
                 f"object {obj.id!r}: its image {obj.image} is missing from {folder.root}; "

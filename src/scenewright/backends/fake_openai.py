@@ -4,7 +4,8 @@
 It speaks ``/v1/chat/completions`` (JSON), ``/v1/images/generations`` (JSON) and
 ``/v1/images/edits`` (multipart) on 127.0.0.1 in a thread per request, records every request
 it saw, and answers from scripts: a queue of :class:`Reply` per route, else a responder
-function per route. Replies can be delayed (latency, hung requests) or be HTTP faults.
+function per route. Replies can be delayed (latency, hung requests), trickle a byte at a time, be any bytes at
+all (not JSON, huge) or be HTTP faults.
 """
 
 from __future__ import annotations
@@ -35,6 +36,8 @@ class Reply:
     status: int = 200
     delay: float = 0.0
     headers: dict[str, str] = field(default_factory=dict)
+    #: Seconds between the bytes of the body (a server that trickles); 0 sends it at once.
+    drip: float = 0.0
 
 
 @dataclass
@@ -202,7 +205,13 @@ class FakeOpenAI:
                     for key, value in reply.headers.items():
                         self.send_header(key, value)
                     self.end_headers()
-                    self.wfile.write(data)
+                    if not reply.drip:
+                        self.wfile.write(data)
+                    for k in range(len(data) if reply.drip else 0):
+                        self.wfile.write(data[k : k + 1])
+                        self.wfile.flush()
+                        if server._stop.wait(reply.drip):
+                            return
                 except (BrokenPipeError, ConnectionResetError):  # the client gave up (timeout test)
                     return
 

@@ -38,6 +38,8 @@ from scenewright.settings import Settings
 
 try:
     import httpx
+
+    from scenewright.backends.http import limited_client
 except ImportError:  # the remote extra; Hunyuan3D.__init__ says how to install it
     httpx = None  # type: ignore[assignment]
 
@@ -93,6 +95,7 @@ class Hunyuan3D:
         poll_interval: float = 2.0,
         health_interval: float = 60.0,
         max_failures: int = 3,
+        max_download_bytes: int = Settings.max_download_bytes,
     ):
         if httpx is None:
             raise MissingExtra("the Hunyuan3D mesh backend", "remote", "httpx")
@@ -114,9 +117,8 @@ class Hunyuan3D:
         self._cond = threading.Condition()
         self._health_lock = threading.Lock()
         self._cancelled = threading.Event()
-        self._client = httpx.Client(
-            timeout=httpx.Timeout(timeout, connect=min(10.0, timeout)),
-            limits=httpx.Limits(max_connections=len(urls) * concurrency * 2 + 4),
+        self._client = limited_client(
+            timeout, max_download_bytes, limits=httpx.Limits(max_connections=len(urls) * concurrency * 2 + 4)
         )
 
     @classmethod
@@ -132,7 +134,10 @@ class Hunyuan3D:
         extra = dict(settings.extra.get("hunyuan3d", {}) or {})
         knobs = ("job_timeout", "poll_interval", "health_interval", "max_failures")
         tuning = {k: extra.pop(k) for k in knobs if k in extra}
-        return cls(urls, concurrency=settings.mesh_concurrency, params=extra, timeout=settings.timeout, **tuning)
+        return cls(
+            urls, concurrency=settings.mesh_concurrency, params=extra, timeout=settings.timeout,
+            max_download_bytes=settings.max_download_bytes, **tuning,
+        )
 
     @property
     def concurrency(self) -> int:
@@ -253,7 +258,7 @@ class Hunyuan3D:
             response = self._client.get(f"{server.url}/health")
             body = response.json()
         except httpx.HTTPError as exc:
-            return f"unreachable ({type(exc).__name__}: {exc})", None
+            return f"unreachable ({_http_problem(exc)})", None
         except ValueError:
             return f"HTTP {response.status_code} with a body that is not JSON", None
         if not isinstance(body, dict) or body.get("status") not in ("healthy", "ok"):
@@ -273,7 +278,7 @@ class Hunyuan3D:
                     return self._poll(server, uid, request, progress)
             return self._generate_direct(server, payload)
         except httpx.HTTPError as exc:
-            raise JobFailed(f"connection failed ({type(exc).__name__}: {exc})") from None
+            raise JobFailed(f"connection failed ({_http_problem(exc)})") from None
 
     def _send(self, server: Server, payload: dict[str, Any]) -> str | None:
         """The job's uid, or None when the server has no job endpoints (so /generate is used)."""
@@ -348,6 +353,13 @@ def _decode_model(encoded: Any) -> bytes:
     if problem:
         raise JobFailed(f"model_base64 is not a GLB: {problem}")
     return data
+
+
+def _http_problem(exc: httpx.HTTPError) -> str:
+    """What went wrong, in words: a deadline or size limit says so itself."""
+    from scenewright.backends.http import DeadlineExceeded, ResponseTooLarge
+
+    return str(exc) if isinstance(exc, (DeadlineExceeded, ResponseTooLarge)) else f"{type(exc).__name__}: {exc}"
 
 
 def _json_or_none(response: httpx.Response) -> Any:

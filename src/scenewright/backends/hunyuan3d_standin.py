@@ -5,7 +5,8 @@ It speaks the real server's endpoints (``/health``, ``/send``, ``/status/{uid}``
 can misbehave on purpose the ways real servers do: die in the middle of a job, restart and
 forget its jobs (still answering ``processing`` for them, as the real one does), report an
 ``error`` status, send base64 that does not decode or bytes that are not a GLB, or lack the
-job endpoints altogether. It counts every request so a test can prove what was (not) asked.
+job endpoints altogether; or hold the client with a ``/status`` answer sent one byte at a
+time (``drip``) or one that never ends (``flood``). It counts every request so a test can prove what was (not) asked.
 The meshes it returns come from the ``model`` callable its user supplies.
 """
 
@@ -21,7 +22,10 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 
-FAULTS = ("die", "restart", "error", "bad_base64", "not_glb", "generate_only", "unhealthy")
+FAULTS = ("die", "restart", "error", "bad_base64", "not_glb", "generate_only", "unhealthy", "drip", "flood")
+#: Seconds between the bytes of a ``drip`` answer, and bytes of each piece of a ``flood``.
+DRIP_INTERVAL = 0.2
+FLOOD_PIECE = 1 << 20
 
 
 @dataclass
@@ -138,6 +142,24 @@ class _Handler(BaseHTTPRequestHandler):
         self.end_headers()
         self.wfile.write(data)
 
+    def _stream(self, fault: str) -> None:
+        """An answer that takes for ever: one byte at a time, or pieces without end (no length,
+        so only closing the connection ends it); stops when the client hangs up."""
+        self.send_response(200)
+        self.send_header("Content-Type", "application/json")
+        self.end_headers()
+        piece = b" " * FLOOD_PIECE
+        try:
+            for _ in range(100_000):
+                if fault == "drip":
+                    self.wfile.write(b" ")
+                    self.wfile.flush()
+                    time.sleep(DRIP_INTERVAL)
+                else:
+                    self.wfile.write(piece)
+        except (BrokenPipeError, ConnectionResetError):
+            return
+
     def _payload(self) -> dict:
         length = int(self.headers.get("Content-Length", 0))
         return json.loads(self.rfile.read(length) or b"{}")
@@ -154,6 +176,8 @@ class _Handler(BaseHTTPRequestHandler):
             job = s._jobs.get(self.path.removeprefix("/status/"))
             if job is None:  # the real server cannot tell an unknown uid from a running one
                 return self._reply(200, {"status": "processing"})
+            if job.fault in ("drip", "flood"):
+                return self._stream(job.fault)
             return self._reply(200, self._status(job))
         self._reply(404, {"detail": "Not Found"})
 

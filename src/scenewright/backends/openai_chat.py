@@ -23,9 +23,9 @@ from typing import TYPE_CHECKING, Annotated, Any, Literal
 from pydantic import BaseModel, ConfigDict, WithJsonSchema
 
 from scenewright.backends import prompts
-from scenewright.backends.structured import ChatClient, InvalidAnswer, json_text, user_message
+from scenewright.backends.structured import ChatClient, InvalidAnswer, json_text, model_name, user_message
 from scenewright.errors import InputError
-from scenewright.scene import RELATION_TYPES, Constraint, Event, SceneObject, Vec3
+from scenewright.scene import MAX_ID_CHARS, RELATION_TYPES, Constraint, Event, SceneObject, Vec3
 
 if TYPE_CHECKING:
     from scenewright.editing.plan import EditPlan
@@ -167,7 +167,7 @@ class OpenAIChatVLM:
 
     @classmethod
     def from_spec(cls, argument: str, settings: Settings) -> OpenAIChatVLM:
-        return cls(argument or DEFAULT_MODEL, settings)
+        return cls(model_name(argument, DEFAULT_MODEL), settings)
 
     # --- repairs -------------------------------------------------------------------------
 
@@ -191,6 +191,12 @@ class OpenAIChatVLM:
         def check(answer: ObjectsAnswer) -> list[SceneObject]:
             # Each check starts the record afresh: only the accepted answer's repairs count.
             self._begin()
+            limit = self.chat.settings.max_objects
+            if len(answer.objects) > limit:
+                raise InvalidAnswer(
+                    f"the list has {len(answer.objects)} objects, more than max_objects ({limit}); "
+                    "list only the objects the description names"
+                )
             objects = self._objects_from(answer.objects, low, high)
             if not objects:
                 raise InvalidAnswer("the list has no usable object; list the objects the description names")
@@ -212,7 +218,7 @@ class OpenAIChatVLM:
             if words[-1] in BACKGROUND_WORDS:
                 self._repaired("scene_objects", f"dropped background element {name!r}", id=item.id)
                 continue
-            object_id = snake_id(item.id) or snake_id(name)
+            object_id = (snake_id(item.id) or snake_id(name))[:MAX_ID_CHARS - 4].strip("_")
             base, n = object_id, 1
             while object_id in taken:
                 n += 1
@@ -359,7 +365,7 @@ class OpenAIChatVLM:
             focus = answer.focus if answer.focus in known else by_snake.get(snake_id(answer.focus))
             if answer.operation == "add":
                 # An id the scene already uses is replaced by editing.validate_plan, constraints and all.
-                focus = snake_id(answer.focus) or "object"
+                focus = snake_id(answer.focus)[:MAX_ID_CHARS - 4].strip("_") or "object"
             elif focus is None:
                 raise InvalidAnswer(
                     f"focus {answer.focus!r} is not an object of the scene; "

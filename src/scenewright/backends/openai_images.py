@@ -17,7 +17,7 @@ from concurrent.futures import ThreadPoolExecutor, as_completed
 from typing import Any
 
 from scenewright.backends import prompts
-from scenewright.backends.structured import RemoteModel, image_mime, sdk_errors, transport_error
+from scenewright.backends.structured import RemoteModel, image_mime, model_name, sdk_errors, transport_error
 from scenewright.cache import request_key
 from scenewright.errors import BackendError
 from scenewright.scene import SceneObject
@@ -37,7 +37,7 @@ class OpenAIImages(RemoteModel):
 
     @classmethod
     def from_spec(cls, argument: str, settings: Settings) -> OpenAIImages:
-        return cls(argument or DEFAULT_MODEL, settings)
+        return cls(model_name(argument, DEFAULT_MODEL), settings)
 
     def reference_image(self, text: str, style: str) -> bytes:
         return self._draw("reference image", prompts.reference_image(text, style), None, size=REFERENCE_SIZE)

@@ -25,7 +25,7 @@ from typing import Any, TypeVar
 from pydantic import BaseModel, ValidationError
 
 from scenewright.cache import RequestCache, request_key
-from scenewright.errors import BackendError, MissingExtra
+from scenewright.errors import BackendError, InputError, MissingExtra
 from scenewright.scene import describe_validation_error
 from scenewright.settings import Settings
 
@@ -46,6 +46,8 @@ def openai_client(settings: Settings):
     """An SDK client for ``settings``: base URL, key from the named variable, timeout, retries."""
     try:
         import openai
+
+        from scenewright.backends.http import limited_client
     except ImportError as exc:
         raise MissingExtra("the openai backends", "remote", "openai") from exc
     key = os.environ.get(settings.api_key_env)
@@ -58,15 +60,43 @@ def openai_client(settings: Settings):
             )
         key = _PLACEHOLDER_KEY
     return openai.OpenAI(
-        api_key=key, base_url=settings.base_url, timeout=settings.timeout, max_retries=settings.max_retries
+        api_key=key,
+        base_url=settings.base_url,
+        timeout=settings.timeout,
+        max_retries=settings.max_retries,
+        http_client=limited_client(settings.timeout, settings.max_download_bytes),
     )
+
+
+#: Characters a model name may have (servers name models in a few dozen).
+MAX_MODEL_CHARS = 128
+_MODEL = re.compile(r"^[\w.:/@+-]+$")
+
+
+def model_name(argument: str, default: str) -> str:
+    """The model a backend spec names (``openai:MODEL``), checked: a name, not a paragraph."""
+    name = argument or default
+    if len(name) > MAX_MODEL_CHARS or not _MODEL.match(name):
+        raise InputError(
+            f"model name {name[:60]!r}{'...' if len(name) > 60 else ''} is not a model name: at most "
+            f"{MAX_MODEL_CHARS} letters, digits and . : / @ + - _ (e.g. openai:o3)"
+        )
+    return name
 
 
 def transport_error(task: str, exc: Exception) -> BackendError:
     """The SDK's failure, after its own retries, as one line naming the task."""
     import openai
 
-    if isinstance(exc, openai.APITimeoutError):
+    from scenewright.backends.http import DeadlineExceeded, ResponseTooLarge
+
+    cause = exc.__cause__
+    if isinstance(exc, json.JSONDecodeError):
+        what = f"the server answered with a body that is not JSON ({exc.msg} at line {exc.lineno})"
+    elif isinstance(cause, (DeadlineExceeded, ResponseTooLarge)):
+        hint = " (raise --timeout or check the server)" if isinstance(cause, DeadlineExceeded) else ""
+        what = f"{cause}{hint}"
+    elif isinstance(exc, openai.APITimeoutError):
         what = "timed out (raise --timeout or check the server)"
     elif isinstance(exc, openai.APIConnectionError):
         what = f"could not reach the server ({exc})"
@@ -79,9 +109,11 @@ def transport_error(task: str, exc: Exception) -> BackendError:
 
 
 def sdk_errors() -> tuple[type[Exception], ...]:
+    """What a request through the SDK raises when the server or the connection fails; a 200
+    whose body is not JSON surfaces as a JSONDecodeError from the SDK's parsing."""
     import openai
 
-    return (openai.APIError,)
+    return (openai.APIError, json.JSONDecodeError)
 
 
 def image_mime(data: bytes) -> str:
@@ -153,6 +185,15 @@ def parse_json(content: str, answer: type[BaseModel]) -> Any:
         if any(err["type"] == "json_invalid" for err in exc.errors()):
             raise InvalidAnswer(f"the reply is not valid JSON ({_short(str(exc.errors()[0]['msg']))})") from None
         raise InvalidAnswer(f"the reply does not match the schema: {describe_validation_error(exc)}") from None
+
+
+def _checked(parse: Callable[[str], T], content: str) -> T:
+    """``parse(content)``, where a model object that does not validate (a task's check builds
+    scene objects from the answer) is an answer to redo like any other."""
+    try:
+        return parse(content)
+    except ValidationError as exc:
+        raise InvalidAnswer(f"the answer does not fit the scene: {describe_validation_error(exc)}") from None
 
 
 def _short(text: str, limit: int = 300) -> str:
@@ -234,7 +275,13 @@ class ChatClient(RemoteModel):
                         raise InvalidAnswer(f"the model refused: {_short(message.refusal)}")
                     if not content.strip():
                         raise InvalidAnswer("the reply is empty")
-                    result = parse(content)
+                    limit = self.settings.max_answer_chars
+                    if len(content) > limit:
+                        raise InvalidAnswer(
+                            f"the reply has {len(content):,} characters, more than max_answer_chars ({limit:,}); "
+                            "answer briefly"
+                        )
+                    result = _checked(parse, content)
                 except InvalidAnswer as exc:
                     error = str(exc)
                 else:
@@ -243,7 +290,9 @@ class ChatClient(RemoteModel):
             log.warning("%s: invalid answer (attempt %d of %d): %s", task, attempt, attempts, error)
             request["messages"] = [
                 *request["messages"],
-                {"role": "assistant", "content": content or "(no answer)"},
+                # An oversized answer goes back as an excerpt: never re-sent whole on each retry.
+                {"role": "assistant", "content": _short(content, 2_000) if len(content) > self.settings.max_answer_chars
+                 else content or "(no answer)"},
                 {
                     "role": "user",
                     "content": f"That answer cannot be used: {error}. Answer the same request again, "

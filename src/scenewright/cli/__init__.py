@@ -12,10 +12,10 @@ import sys
 
 import typer
 from rich.console import Console
-from rich.markup import escape
 
 from scenewright.cli import assets, backends, batch, edit, evaluate, generate, parse, remote, render, solve  # noqa: F401
 from scenewright.cli.app import app, interrupt_hint
+from scenewright.cli.display import safe
 from scenewright.errors import BackendError, InfeasibleLayout, InputError, ScenewrightError
 
 EXIT_BAD_INPUT = 2
@@ -34,17 +34,21 @@ def main(argv: list[str] | None = None) -> int:
         # into its code.
         code = app(args=argv, prog_name="scenewright", standalone_mode=False)
     except InputError as exc:
-        err.print(f"[red]error:[/red] {escape(str(exc))}", highlight=False)
+        err.print(f"[red]error:[/red] {safe(exc)}", highlight=False)
         return EXIT_BAD_INPUT
     except InfeasibleLayout as exc:
-        err.print(f"[yellow]layout incomplete:[/yellow] {escape(str(exc))}", highlight=False)
+        err.print(f"[yellow]layout incomplete:[/yellow] {safe(exc)}", highlight=False)
         return EXIT_INFEASIBLE
     except BackendError as exc:
-        err.print(f"[red]backend error:[/red] {escape(str(exc))}", highlight=False)
+        err.print(f"[red]backend error:[/red] {safe(exc)}", highlight=False)
         return EXIT_BACKEND
     except ScenewrightError as exc:
-        err.print(f"[red]error:[/red] {escape(str(exc))}", highlight=False)
+        err.print(f"[red]error:[/red] {safe(exc)}", highlight=False)
         return EXIT_BACKEND
+    except OSError as exc:  # a read-only or full disk, a folder where a file should be: the user's to fix
+        where = f"{exc.filename}: " if exc.filename else ""
+        err.print(f"[red]error:[/red] {safe(where)}{safe(exc.strerror or exc)}", highlight=False)
+        return EXIT_BAD_INPUT
     except typer.Abort:  # Ctrl-C at a prompt
         code = EXIT_INTERRUPTED
     except typer.TyperException as exc:  # usage errors (unknown option, missing argument) with standalone_mode=False
@@ -52,7 +56,7 @@ def main(argv: list[str] | None = None) -> int:
         return EXIT_BAD_INPUT
     if code == EXIT_INTERRUPTED:
         hint = interrupt_hint["hint"]() if "hint" in interrupt_hint else None
-        err.print(f"[yellow]interrupted[/yellow]{'; ' + escape(hint) if hint else ''}", highlight=False)
+        err.print(f"[yellow]interrupted[/yellow]{'; ' + safe(hint) if hint else ''}", highlight=False)
     return code if isinstance(code, int) else 0
 
 

@@ -6,6 +6,7 @@ from rich.console import Console
 from rich.table import Table
 
 from scenewright.cli.app import app
+from scenewright.cli.display import safe
 
 
 @app.command("backends")
@@ -17,5 +18,5 @@ def list_backends() -> None:
     for kind, names in available_backends().items():
         for name, status in names.items():
             label = f"{name} (default)" if DEFAULTS[kind] == name else name
-            table.add_row(kind, label, "[green]ok[/green]" if status == "ok" else f"[red]{status}[/red]")
+            table.add_row(kind, label, "[green]ok[/green]" if status == "ok" else f"[red]{safe(status)}[/red]")
     Console().print(table)

@@ -12,6 +12,7 @@ from rich.console import Console
 from rich.table import Table
 
 from scenewright.cli.app import app, bench_app, on_interrupt
+from scenewright.cli.display import safe
 from scenewright.cli.options import (
     ApiKeyEnvOption,
     BaseUrlOption,
@@ -57,19 +58,26 @@ def edit_command(
     on_interrupt(lambda: f"the edit took effect if `scenewright history {folder}` lists it; if not, run it again")
     with writing(scene_folder, settings.lock_timeout):
         scene = scene_folder.load()  # read under the lock: a concurrent edit's result is not lost
+        # Read first: a broken history or renders.json stops the edit before it asks a model or saves.
+        entries(scene_folder)
+        rendered = render_info(scene_folder) is not None
         apply_edit(scene, scene_folder, instruction, backends=backends, settings=settings)
         last = [e for e in entries(scene_folder) if e.active][-1]
         console = Console()
-        console.print(f"[bold green]edit {last.number}[/bold green]: {last.operation} {last.focus}")
+        console.print(f"[bold green]edit {last.number}[/bold green]: {safe(last.operation)} {safe(last.focus)}")
         for change in last.changes:
-            console.print(f"  {change}")
-        console.print(f"  wrote {scene_folder.document} and {scene_folder.glb}; undo with `scenewright undo {folder}`")
+            console.print(f"  {safe(change)}")
+        console.print(
+            f"  wrote {safe(scene_folder.document)} and {safe(scene_folder.glb)}; "
+            f"undo with `scenewright undo {safe(folder)}`"
+        )
         if render:
             from scenewright.render import render_again
 
-            console.print(f"  rendered {', '.join(str(p) for p in render_again(scene_folder.load(), scene_folder))}")
-        elif render_info(scene_folder) is not None:
-            console.print(f"  renders/ show the scene before this edit: refresh them with `scenewright render {folder}`"
+            paths = render_again(scene_folder.load(), scene_folder)
+            console.print(f"  rendered {safe(', '.join(str(p) for p in paths))}")
+        elif rendered:
+            console.print(f"  renders/ show the scene before this edit: refresh them with `scenewright render {safe(folder)}`"
                           " (or edit with --render)")
 
 
@@ -82,7 +90,7 @@ def undo_command(folder: FolderArgument) -> None:
     on_interrupt(lambda: f"`scenewright history {folder}` shows which edits are in effect")
     with writing(SceneFolder(folder), build_settings().lock_timeout) as scene_folder:
         _, entry = undo(scene_folder)
-    Console().print(f"undid edit {entry.number}: {entry.instruction!r}; redo with `scenewright redo {folder}`")
+    Console().print(f"undid edit {entry.number}: {safe(repr(entry.instruction))}; redo with `scenewright redo {safe(folder)}`")
 
 
 @app.command("redo")
@@ -94,7 +102,7 @@ def redo_command(folder: FolderArgument) -> None:
     on_interrupt(lambda: f"`scenewright history {folder}` shows which edits are in effect")
     with writing(SceneFolder(folder), build_settings().lock_timeout) as scene_folder:
         _, entry = redo(scene_folder)
-    Console().print(f"redid edit {entry.number}: {entry.instruction!r}")
+    Console().print(f"redid edit {entry.number}: {safe(repr(entry.instruction))}")
 
 
 @app.command("history")
@@ -105,11 +113,11 @@ def history_command(folder: FolderArgument) -> None:
     found = entries(SceneFolder(folder))
     console = Console()
     if not found:
-        console.print(f"no edits yet in {folder}")
+        console.print(f"no edits yet in {safe(folder)}")
         return
     table = Table("#", "time", "operation", "focus", "instruction", "state")
     for e in found:
-        table.add_row(str(e.number), e.time, e.operation, e.focus, e.instruction,
+        table.add_row(str(e.number), safe(e.time), safe(e.operation), safe(e.focus), safe(e.instruction),
                       "in effect" if e.active else "[dim]undone[/dim]")
     console.print(table)
 

@@ -10,6 +10,8 @@ from typing import Annotated
 import typer
 
 from scenewright.cli.app import app, bench_app
+from scenewright.cli.display import printable
+from scenewright.errors import InputError
 from scenewright.cli.options import (
     ApiKeyEnvOption,
     BaseUrlOption,
@@ -60,6 +62,8 @@ def evaluate_command(
     from scenewright.evaluation.annotations import load_prompts
     from scenewright.evaluation.report import write_report
 
+    if out.exists() and not out.is_dir():
+        raise InputError(f"--out {out} is a file; give a folder for report.json, table.md and chart.png")
     settings = build_settings(vlm=vlm, base_url=base_url, config=config, api_key_env=api_key_env)
     results = evaluate(
         directories,
@@ -70,8 +74,8 @@ def evaluate_command(
         annotations=load_prompts(annotations) if annotations is not None else None,
     )
     paths = write_report(results, out, paper=False)
-    typer.echo(paths["table"].read_text(encoding="utf-8"))
-    typer.echo(f"wrote {', '.join(str(p) for p in paths.values())}", err=True)
+    typer.echo(printable(paths["table"].read_text(encoding="utf-8")))
+    typer.echo(printable(f"wrote {', '.join(str(p) for p in paths.values())}"), err=True)
 
 
 #: Prompt domains → the paper's group names, so the table sits next to its figures.

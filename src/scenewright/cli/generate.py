@@ -14,6 +14,7 @@ from rich.console import Console
 from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
 from scenewright.cli.app import app, bench_app, on_interrupt
+from scenewright.cli.display import safe
 from scenewright.cli.options import (
     ApiKeyEnvOption,
     BaseUrlOption,
@@ -27,6 +28,7 @@ from scenewright.cli.options import (
     TimeoutOption,
     VlmOption,
     build_settings,
+    check_seed,
 )
 from scenewright.errors import InfeasibleLayout, InputError
 from scenewright.folder import SceneFolder
@@ -54,24 +56,24 @@ class _StageProgress:
         if message == "done":
             self.progress.update(task, completed=1, note="[green]done[/green]")
         elif message.startswith("skipped"):
-            self.progress.update(task, completed=1, note=f"[yellow]{message}[/yellow]")
+            self.progress.update(task, completed=1, note=f"[yellow]{safe(message)}[/yellow]")
         else:
-            self.progress.update(task, note=message)
+            self.progress.update(task, note=safe(message))
 
 
 def _summary(console: Console, folder: SceneFolder, scene: Scene) -> None:
-    console.print(f"[bold green]Scene written to {folder.root}[/bold green]")
-    console.print(f"  scene.glb    {folder.glb}  (open it in Blender, Godot or Unreal)")
+    console.print(f"[bold green]Scene written to {safe(folder.root)}[/bold green]")
+    console.print(f"  scene.glb    {safe(folder.glb)}  (open it in Blender, Godot or Unreal)")
     counts = f"{len(scene.objects)} objects, {len(scene.constraints)} constraints"
-    console.print(f"  scene.json   {folder.document}  ({counts})")
-    console.print(f"  assets/      {folder.assets}  (one GLB per object)")
-    console.print(f"  images/      {folder.images}")
+    console.print(f"  scene.json   {safe(folder.document)}  ({counts})")
+    console.print(f"  assets/      {safe(folder.assets)}  (one GLB per object)")
+    console.print(f"  images/      {safe(folder.images)}")
     renders = sorted(folder.renders.glob("*.png")) if folder.renders.is_dir() else []
     if renders:
         plural = "s" if len(renders) != 1 else ""
-        console.print(f"  renders/     {folder.renders}  ({len(renders)} preview{plural})")
+        console.print(f"  renders/     {safe(folder.renders)}  ({len(renders)} preview{plural})")
     for removed in scene.removed:
-        console.print(f"  [dim]removed {removed.id}: {removed.reason}[/dim]")
+        console.print(f"  [dim]removed {safe(removed.id)}: {safe(removed.reason)}[/dim]")
 
 
 @app.command("generate")
@@ -118,6 +120,7 @@ def generate_command(
         raise InputError("--resume takes the scene folder itself and keeps its style; drop --out and --style")
     if resume_dir is None and out is None:
         raise InputError("--out DIR is required: the folder to write the scene into")
+    check_seed(seed)
     settings = build_settings(
         vlm=vlm,
         images=images,

@@ -12,6 +12,8 @@ from typing import Annotated
 
 import typer
 
+from scenewright.errors import InputError
+from scenewright.scene import MAX_SEED
 from scenewright.settings import DEFAULT_CONFIG, Settings, apply, load_config
 
 VlmOption = Annotated[str | None, typer.Option("--vlm", help="Vision-language backend: offline | openai:MODEL.")]
@@ -46,6 +48,12 @@ MaxFacesOption = Annotated[
     int | None,
     typer.Option("--max-faces", help="Simplify each new mesh to about N triangles (needs the 'simplify' extra)."),
 ]
+
+
+def check_seed(seed: int) -> int:
+    if not 0 <= seed <= MAX_SEED:
+        raise InputError(f"--seed must be an integer from 0 to {MAX_SEED}, got {seed}")
+    return seed
 
 
 def build_settings(

@@ -8,6 +8,8 @@ from typing import Annotated
 import typer
 
 from scenewright.cli.app import app, on_interrupt
+from scenewright.cli.display import printable
+from scenewright.cli.options import ConfigOption, build_settings
 from scenewright.errors import InputError
 from scenewright.folder import SceneFolder
 
@@ -30,26 +32,30 @@ def render_command(
     resolution: Annotated[str, typer.Option("--resolution", help="WIDTHxHEIGHT in pixels.")] = "1280x720",
     samples: Annotated[int | None, typer.Option("--samples", help="Cycles samples per pixel (denoised).")] = None,
     transparent: Annotated[bool, typer.Option("--transparent", help="Transparent background instead of the sky.")] = False,
+    config: ConfigOption = None,
 ) -> None:
     """Render previews with Blender (Cycles on the CPU) into DIR/renders/."""
-    from scenewright.cli.options import build_settings
     from scenewright.pipeline import writing
     from scenewright.render import DEFAULT_SAMPLES, render, render_info
 
     if views not in ("best", "all"):
         raise InputError(f"--views {views!r}: choose best or all")
+    settings = build_settings(config=config)
+    size = parse_resolution(resolution)
     on_interrupt(lambda: f"the previews were left as they were; render again with `scenewright render {directory}`")
-    with writing(SceneFolder(directory), build_settings().lock_timeout) as folder:
+    with writing(SceneFolder(directory), settings.lock_timeout) as folder:
         paths = render(
             folder.load(),
             folder,
             keep_all=views == "all",
-            resolution=parse_resolution(resolution),
+            resolution=size,
             samples=samples if samples is not None else DEFAULT_SAMPLES,
             draft=draft,
             transparent=transparent,
+            max_pixels=settings.max_render_pixels,
+            max_samples=settings.max_render_samples,
         )
         info = render_info(folder) or {}
     for path in paths:
-        typer.echo(str(path))
-    typer.echo(f"best view: {info.get('best')}; {info.get('total_seconds')} s in Blender", err=True)
+        typer.echo(printable(path))
+    typer.echo(printable(f"best view: {info.get('best')}; {info.get('total_seconds')} s in Blender"), err=True)

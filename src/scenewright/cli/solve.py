@@ -12,12 +12,15 @@ from pydantic import ValidationError
 from rich.console import Console
 
 from scenewright.cli.app import app, bench_app
+from scenewright.cli.options import check_seed
 from scenewright.errors import InfeasibleLayout, InputError
 from scenewright.files import write_atomic
 from scenewright.layout import feedback_text, solve
 from scenewright.scene import SceneObject, describe_validation_error
 
 log = logging.getLogger(__name__)
+#: Metres a footprint may span (20 km: any scene, never an overflow).
+MAX_BOUNDS = 20_000.0
 _FIELDS = set(SceneObject.model_fields)
 
 
@@ -85,8 +88,8 @@ def parse_bounds(text: str | None) -> tuple[float, float] | None:
         w, d = (float(v) for v in text.split(","))
     except ValueError:
         raise InputError(f"--bounds: expected W,D in metres (e.g. 8,6), got {text!r}") from None
-    if w <= 0 or d <= 0:
-        raise InputError(f"--bounds: width and depth must be > 0, got {text!r}")
+    if not (0 < w < MAX_BOUNDS and 0 < d < MAX_BOUNDS):
+        raise InputError(f"--bounds: width and depth must be finite, > 0 and < {MAX_BOUNDS:g} m, got {text!r}")
     return (w, d)
 
 
@@ -100,10 +103,13 @@ def solve_command(
     seed: Annotated[int, typer.Option("--seed", help="Candidate sampling seed.")] = 0,
 ) -> None:
     """Place objects so that their constraints hold without collisions; exit 3 if some cannot be."""
+    if output.is_dir():
+        raise InputError(f"-o {output} is a folder; give the path of the LAYOUT.json file to write")
+    check_seed(seed)
+    if not 0 < time_limit < float("inf"):
+        raise InputError(f"--time-limit must be a finite number of seconds > 0, got {time_limit}")
     raw, objects = load_objects(objects_file)
     constraints = load_constraints(constraints_file)
-    if time_limit <= 0:
-        raise InputError(f"--time-limit must be > 0 seconds, got {time_limit}")
     result = solve(objects, constraints, bounds=parse_bounds(bounds), time_limit=time_limit, seed=seed)
     solved = {o.id: o for o in result.objects}
     items = []

@@ -179,9 +179,9 @@ def _meshes(scene: Scene, folder: SceneFolder, staged: dict[str, trimesh.Trimesh
     found: dict[str, trimesh.Trimesh] = {}
     keys: dict[str, tuple[str, int, int]] = {}
     for obj in scene.objects:
-        if obj.id in staged or obj.asset is None:
+        path = folder.asset_of(obj)
+        if obj.id in staged or path is None:
             continue
-        path = folder.resolve(obj.asset)
         stat = path.stat() if path.is_file() else None
         if stat is not None:
             keys[obj.id] = (str(path.resolve()), stat.st_mtime_ns, stat.st_size)
@@ -265,7 +265,7 @@ def _stage_asset(edit: _Edit, obj: SceneObject, folder: SceneFolder, backends: B
     Sets ``obj.asset``, ``obj.image`` and the size the mesh came out at; returns the mesh.
     """
     scene = edit.scene
-    reference = folder.reference_image.read_bytes() if folder.reference_image.is_file() else None
+    reference = folder.reference()
     with tempfile.TemporaryDirectory(prefix="scenewright-edit-") as tmp:
         scratch = SceneFolder(Path(tmp))
         single = Scene(text=scene.text, style=scene.style, seed=scene.seed,

@@ -64,37 +64,50 @@ def _after(folder: SceneFolder, number: int) -> Path:
     return folder.history / f"{number:04d}.after.json"
 
 
-def _read_json(path: Path, what: str) -> list:
-    """The JSON values of ``path`` (one per line when ``what`` is "lines"), or an InputError naming it."""
-    try:
-        text = path.read_text(encoding="utf-8")
-        if what == "lines":
-            return [json.loads(line) for line in text.splitlines() if line.strip()]
-        return [json.loads(text)]
-    except (ValueError, UnicodeDecodeError) as exc:
-        raise InputError(
-            f"{path} is damaged ({exc}); restore it, or delete the folder's history/ to start a new one"
-        ) from None
+def _broken(folder: SceneFolder, path: Path, why: str) -> InputError:
+    return InputError(
+        f"{path} is broken ({why}); undo, redo and edit need an intact history: restore it, or move "
+        f"{folder.history} away to keep the scene as it is and start a new history"
+    )
+
+
+#: The fields of a log record and the type each must have.
+_RECORD = {"number": int, "instruction": str, "operation": str, "focus": str, "changes": list, "time": str}
 
 
 def _records(folder: SceneFolder) -> list[dict]:
     path = _log(folder)
     if not path.is_file():
         return []
-    records = _read_json(path, "lines")
-    if not all(isinstance(r, dict) and isinstance(r.get("number"), int) for r in records):
-        raise InputError(f"{path} is damaged (a line is not an edit record); restore it, or delete history/")
+    records = []
+    try:
+        lines = path.read_text(encoding="utf-8").splitlines()
+    except UnicodeDecodeError as exc:
+        raise _broken(folder, path, f"not UTF-8 text: {exc.reason}") from None
+    for index, line in enumerate((line for line in lines if line.strip()), start=1):
+        try:
+            record = json.loads(line)
+        except json.JSONDecodeError as exc:
+            raise _broken(folder, path, f"edit {index} is not valid JSON: {exc.msg}") from None
+        bad = [k for k, kind in _RECORD.items() if not isinstance(record, dict) or not isinstance(record.get(k), kind)]
+        if bad or record["number"] != index:
+            raise _broken(folder, path, f"edit {index} has no valid {', '.join(bad) or 'number'}")
+        records.append(record)
     return records
 
 
 def _current(folder: SceneFolder) -> int:
     path = _state(folder)
+    count = len(_records(folder))
     if not path.is_file():
-        return len(_records(folder))
-    (state,) = _read_json(path, "whole")
-    if not isinstance(state, dict) or not isinstance(state.get("current"), int):
-        raise InputError(f"{path} is damaged (no edit count); restore it, or delete history/")
-    return state["current"]
+        return count
+    try:
+        current = json.loads(path.read_text(encoding="utf-8"))["current"]
+    except (json.JSONDecodeError, UnicodeDecodeError, TypeError, KeyError) as exc:
+        raise _broken(folder, path, f"no 'current' edit number: {type(exc).__name__}") from None
+    if isinstance(current, bool) or not isinstance(current, int) or not 0 <= current <= count:
+        raise _broken(folder, path, f"current is {current!r}, not an edit number from 0 to {count}")
+    return current
 
 
 def _pending(folder: SceneFolder) -> Path:
@@ -241,7 +254,10 @@ def commit(
 
 def _restore(folder: SceneFolder, source: Path, current: int) -> Scene:
     """Make the stored version ``source`` the document again, with ``current`` edits in effect."""
-    data = source.read_bytes()
+    try:
+        data = source.read_bytes()
+    except FileNotFoundError:
+        raise _broken(folder, source, "missing") from None
     scene = _checked(data, f"the stored version {source}")
     recorded = scene.glb_sha256
     assemble_recorded(scene, folder)

@@ -27,6 +27,7 @@ from scenewright.evaluation.perceptual import ClipScorer
 from scenewright.evaluation.physical import physical
 from scenewright.evaluation.spatial import spatial
 from scenewright.evaluation.stated import stated
+from scenewright.files import check_image
 from scenewright.folder import SceneFolder
 from scenewright.scene import Scene
 
@@ -112,7 +113,7 @@ def evaluate_scene(
     if clip is not None:
         metrics.clip = clip.score(scene.text, image)
     if vlm is not None:
-        verdict = judge(scene.text, image.read_bytes(), vlm)
+        verdict = judge(scene.text, check_image(image.read_bytes(), f"the render {image}"), vlm)
         if verdict.unavailable:
             metrics.unavailable["judge"] = verdict.unavailable
         else:

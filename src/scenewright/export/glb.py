@@ -39,7 +39,7 @@ def node_matrix(obj: SceneObject) -> np.ndarray:
 def _asset_paths(scene: Scene, folder: SceneFolder) -> dict[str, Path]:
     paths, missing = {}, []
     for obj in scene.objects:
-        path = folder.resolve(obj.asset) if obj.asset else None
+        path = folder.asset_of(obj)
         if path is None or not path.is_file():
             missing.append(obj.id)
         else:
@@ -101,7 +101,7 @@ def assemble(scene: Scene, folder: SceneFolder) -> Path:
     glb = trimesh.Scene()
     for obj in scene.objects:
         _add_object(glb, obj, paths[obj.id])
-    texture = folder.resolve(scene.ground.texture) if scene.ground.texture else None
+    texture = folder.ground_texture(scene)
     glb.add_geometry(
         ground_mesh(scene.objects, scene.bounds, texture), geom_name=GROUND_NODE, node_name=GROUND_NODE
     )

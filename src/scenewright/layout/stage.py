@@ -53,7 +53,7 @@ def arrange(
     time_limit: float = 10.0,
 ) -> Scene:
     """Solve the layout of ``scene``'s objects, revising constraints up to ``rounds`` times."""
-    reference = folder.reference_image.read_bytes() if folder.reference_image.is_file() else None
+    reference = folder.reference()
     constraints = list(scene.constraints)
     if not constraints:
         constraints = vlm.write_constraints(scene.text, scene.objects, reference)

@@ -34,6 +34,7 @@ from scenewright.folder import SceneFolder
 from scenewright.geometry import object_matrix, world_box
 from scenewright.render.views import VIEWS
 from scenewright.scene import Scene
+from scenewright.settings import Settings
 
 log = logging.getLogger(__name__)
 
@@ -82,9 +83,48 @@ def object_corners(scene: Scene) -> list[list[float]]:
 
 
 def _ground_texture(scene: Scene, folder: SceneFolder) -> str | None:
-    candidates = [folder.resolve(scene.ground.texture)] if scene.ground.texture else []
-    candidates.append(folder.ground_image)
+    named = folder.ground_texture(scene)
+    candidates = [named, folder.ground_image] if named is not None else [folder.ground_image]
     return next((str(p.resolve()) for p in candidates if p.is_file()), None)
+
+
+def check_renderable(scene: Scene, folder: SceneFolder) -> None:
+    """Refuse a folder whose assets or ``scene.glb`` are missing, empty or corrupt: a render of
+    it would show something other than the scene, or nothing at all."""
+    from scenewright.assets.load import asset_problem
+    from scenewright.assets.normalise import check_glb
+
+    broken = [
+        f"{obj.id} ({problem})"
+        for obj in scene.objects
+        if obj.asset is not None and (problem := asset_problem(obj, folder))
+    ]
+    if not folder.glb.is_file():
+        broken.append(f"{folder.glb.name} (missing)")
+    elif (problem := check_glb(folder.glb.read_bytes())) is not None:
+        broken.append(f"{folder.glb.name} ({problem})")
+    if broken:
+        raise InputError(
+            f"cannot render {folder.root}: {'; '.join(broken)}; rebuild them with "
+            f"`scenewright generate --resume {folder.root}`"
+        )
+
+
+def check_render_size(resolution: tuple[int, int], samples: int, max_pixels: int, max_samples: int) -> None:
+    """Resolution and samples within what a preview needs, so one flag cannot run Blender for days."""
+    width, height = resolution
+    if min(resolution) < 16 or samples < 1:
+        raise InputError(f"resolution {width}x{height} and samples {samples}: need at least 16x16 pixels and 1 sample")
+    if width * height > max_pixels:
+        raise InputError(
+            f"resolution {width}x{height} has {width * height:,} pixels, more than max_render_pixels "
+            f"({max_pixels:,}); lower --resolution or raise max_render_pixels in the config"
+        )
+    if samples > max_samples:
+        raise InputError(
+            f"{samples} samples is more than max_render_samples ({max_samples}); "
+            "lower --samples or raise max_render_samples in the config"
+        )
 
 
 def render(
@@ -98,6 +138,8 @@ def render(
     draft: bool = False,
     transparent: bool = False,
     timeout: float = DEFAULT_TIMEOUT,
+    max_pixels: int = Settings.max_render_pixels,
+    max_samples: int = Settings.max_render_samples,
 ) -> list[Path]:
     """Render the scene from the candidate views; return the chosen view first (all when ``keep_all``)."""
     folder = as_folder(folder)
@@ -106,10 +148,10 @@ def render(
         raise InputError(f"unknown view(s) {unknown or views!r}; views are {', '.join(VIEWS)}")
     if draft:
         resolution, samples = DRAFT_RESOLUTION, DRAFT_SAMPLES
-    if min(resolution) < 16 or samples < 1:
-        raise InputError(f"resolution {resolution} and samples {samples}: need at least 16×16 pixels and 1 sample")
+    check_render_size(resolution, samples, max_pixels, max_samples)
     if not folder.glb.is_file():
         raise InputError(f"{folder.glb} does not exist; build the scene with `scenewright generate` first")
+    check_renderable(scene, folder)
     if importlib.util.find_spec("bpy") is None:
         raise MissingExtra("Rendering", "render", "bpy")
     low, high = scene_bounds(scene)
@@ -222,10 +264,34 @@ def _run_worker(job_path: Path, result_path: Path, timeout: float) -> dict:
 
 
 def render_info(folder: SceneFolder | str | Path) -> dict | None:
-    """What the last render of the folder recorded (chosen view, visibility, timings), if any."""
+    """What the last render of the folder recorded (chosen view, visibility, timings), if any.
+
+    The file is checked as the document is: a broken one is an InputError saying how to make
+    it again, and the paths it names must be renders inside the folder.
+    """
     folder = as_folder(folder)
     path = folder.renders / METADATA
-    return json.loads(path.read_text(encoding="utf-8")) if path.is_file() else None
+    if not path.is_file():
+        return None
+    folder.check()
+    try:
+        info = json.loads(path.read_text(encoding="utf-8"))
+    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
+        raise _broken(path, f"not valid JSON ({exc})") from None
+    if not isinstance(info, dict) or not isinstance(info.get("images"), dict) or not isinstance(info.get("best"), str):
+        raise _broken(path, "it needs an 'images' table and a 'best' view")
+    for view, image in info["images"].items():
+        folder.resolve(image, f"renders/{METADATA} images.{view}", "image")
+    for key, kind in (("resolution", list), ("samples", int)):
+        if key in info and not isinstance(info[key], kind):
+            raise _broken(path, f"{key} is {info[key]!r}")
+    if "resolution" in info and (len(info["resolution"]) != 2 or not all(isinstance(v, int) for v in info["resolution"])):
+        raise _broken(path, f"resolution is {info['resolution']!r}")
+    return info
+
+
+def _broken(path: Path, why: str) -> InputError:
+    return InputError(f"{path} is broken: {why}; delete it and render again with `scenewright render {path.parent.parent}`")
 
 
 def best_render(folder: SceneFolder | str | Path) -> Path | None:
@@ -234,5 +300,5 @@ def best_render(folder: SceneFolder | str | Path) -> Path | None:
     info = render_info(folder)
     if info is None or info["best"] not in info["images"]:
         return None
-    path = folder.resolve(info["images"][info["best"]])
+    path = folder.resolve(info["images"][info["best"]], f"renders/{METADATA} images.{info['best']}", "image")
     return path if path.is_file() else None
