@@ -39,7 +39,10 @@ def test_jobs_spread_over_servers_within_their_concurrency():
         seen: list[str] = []
         results = backend(started, concurrency=1).generate(reqs, progress=seen.append)
         assert_good(results, reqs)
-        assert [s.counts["send"] for s in started] == [3, 3]
+        sends = [s.counts["send"] for s in started]
+        # Both servers take jobs; the exact split follows which one frees its slot first, which a
+        # loaded machine decides, so it is not pinned to 3/3.
+        assert sum(sends) == 6 and min(sends) >= 1, sends
         assert all(s.counts["health"] == 1 for s in started)
         assert all(s.peak == 1 for s in started)  # never two jobs on a one-slot server
         assert any("completed" in line for line in seen)
