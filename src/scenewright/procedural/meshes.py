@@ -20,6 +20,7 @@ import trimesh
 
 from scenewright.backends import MeshRequest
 from scenewright.errors import BackendError, InputError
+from scenewright.gltf import keep_materials
 from scenewright.procedural.builder import Model
 from scenewright.procedural.material import described_surfaces
 from scenewright.procedural.shapes import SHAPES
@@ -114,17 +115,23 @@ def build_model(
     """The styled object as a glTF-convention scene: one node and PBR material per part role.
     ``name`` (the object's name and category) picks variants within a shape: a lighthouse
     among towers, a dog for the generic shape."""
+    return _finished(shape, size, style, seed, description, name)[0]
+
+
+def _finished(shape: str, size, style: str, seed: int, description: str, name: str) -> tuple[trimesh.Scene, Model]:
     if shape not in SHAPES:
         raise InputError(f"unknown shape {shape!r}; shapes are: {', '.join(sorted(SHAPES))}")
     resolved = resolve_style(style)
     model = Model(size, resolved, np.random.default_rng(seed), name=name, description=description)
     SHAPES[shape](model)
-    return model.finish(described_surfaces(f"{name} {description}", model.main, model.parts.keys(), resolved.base))
+    scene = model.finish(described_surfaces(f"{name} {description}", model.main, model.parts.keys(), resolved.base))
+    return scene, model
 
 
 def build_glb(shape: str, size, style: str, seed: int, description: str = "", name: str = "") -> bytes:
-    scene = build_model(shape, size, style, seed, description, name)
-    return scene.export(file_type="glb", include_normals=True)
+    """The object as GLB bytes, its materials exact (trimesh's own copy rounds colours to 8 bits)."""
+    scene, model = _finished(shape, size, style, seed, description, name)
+    return scene.export(file_type="glb", include_normals=True, tree_postprocessor=keep_materials(model.materials))
 
 
 class ProceduralMeshes:

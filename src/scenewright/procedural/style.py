@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import colorsys
 import logging
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
 from scenewright.scene import DEFAULT_STYLE, STYLES
@@ -19,13 +19,16 @@ log = logging.getLogger(__name__)
 
 @dataclass(frozen=True)
 class Surface:
-    """A PBR surface: linear-ish RGB in 0..1, metallic, roughness, emissive RGB, opacity."""
+    """A PBR surface: sRGB colour in 0..1 (as a palette or a colour word gives it; the
+    builder converts it to linear glTF factors), metallic, roughness, emissive sRGB, opacity,
+    and how much light passes through it (glass)."""
 
     color: tuple[float, float, float]
     metallic: float = 0.0
     roughness: float = 0.7
     emissive: tuple[float, float, float] = (0.0, 0.0, 0.0)
     alpha: float = 1.0
+    transmission: float = 0.0
 
 
 #: The realistic look of every role a generator may use.
@@ -40,7 +43,7 @@ ROLES: dict[str, Surface] = {
     "dark_metal": Surface((0.18, 0.19, 0.2), 0.9, 0.45),
     "chrome": Surface((0.9, 0.9, 0.92), 1.0, 0.1),
     "brass": Surface((0.78, 0.6, 0.28), 1.0, 0.3),
-    "glass": Surface((0.82, 0.9, 0.95), 0.0, 0.05, alpha=0.35),
+    "glass": Surface((0.82, 0.9, 0.95), 0.0, 0.05, alpha=0.35, transmission=1.0),
     "plastic": Surface((0.9, 0.9, 0.88), 0.0, 0.45),
     "dark_plastic": Surface((0.08, 0.08, 0.09), 0.0, 0.4),
     "ceramic": Surface((0.94, 0.94, 0.92), 0.0, 0.2),
@@ -169,7 +172,8 @@ class Style:
             roughness = min(roughness, 0.45)
         elif self.pastel and any(emissive):
             emissive = _hsv(emissive, toward_white=self.pastel)
-        return Surface(tuple(float(c) for c in color), float(metallic), float(roughness), emissive, base.alpha)
+        return replace(base, color=tuple(float(c) for c in color), metallic=float(metallic), roughness=float(roughness),
+                       emissive=tuple(float(c) for c in emissive))
 
 
 STYLE_TABLE: dict[str, Style] = {
