@@ -85,6 +85,7 @@ def keep_materials(by_mesh: Mapping[str, dict]) -> Callable[[dict], None]:
 
     def postprocess(tree: dict) -> None:
         materials = tree.get("materials", [])
+        pristine = copy.deepcopy(materials)
         claimed: dict[int, str] = {}
         copies: dict[tuple[int, str], int] = {}
         used = set(tree.get("extensionsUsed", []))
@@ -97,7 +98,7 @@ def keep_materials(by_mesh: Mapping[str, dict]) -> Callable[[dict], None]:
                     continue
                 if claimed.setdefault(index, key) != key:
                     if (index, key) not in copies:
-                        materials.append(copy.deepcopy(materials[index]))
+                        materials.append(copy.deepcopy(pristine[index]))
                         copies[index, key] = len(materials) - 1
                         claimed[len(materials) - 1] = key
                     index = primitive["material"] = copies[index, key]
