@@ -142,6 +142,18 @@ class Model:
     def beam(self, role: str, p0, p1, width: float, height: float | None = None) -> None:
         self.add(role, P.beam(p0, p1, width, height))
 
+    def inset(self, generator, lo, size, role: str | None = None) -> None:
+        """Draw another generator's object into the box at corner ``lo`` (its footprint
+        centred on ``lo``'s x/y, bottom at ``lo``'s z) of ``size``, every part in ``role``
+        when one is given: the lion on a statue's plinth, the rider on a horse."""
+        inner = Model(size, self.style, self.rng, main=self.main, name=self.name)
+        inner.text = self.text
+        generator(inner)
+        offset = P.affine(np.eye(3), lo)
+        for own, parts in inner.parts.items():
+            for part in parts:
+                self.add(role or own, P.transform(part, offset))
+
     # Output ------------------------------------------------------------------------------
     def finish(self, described: Mapping[str, Surface] | None = None) -> trimesh.Scene:
         """Fit to the box, shade, convert to glTF and attach one PBR material per role;

@@ -77,6 +77,24 @@ ROLES: dict[str, Surface] = {
     "book_a": Surface((0.55, 0.12, 0.12), 0.0, 0.8),
     "book_b": Surface((0.15, 0.25, 0.5), 0.0, 0.8),
     "book_c": Surface((0.2, 0.42, 0.25), 0.0, 0.8),
+    # Creatures and figures.
+    "fur_light": Surface((0.78, 0.62, 0.4), 0.0, 0.95),
+    "fur_dark": Surface((0.16, 0.12, 0.1), 0.0, 0.9),
+    "fur_orange": Surface((0.85, 0.45, 0.15), 0.0, 0.9),
+    "fur_white": Surface((0.92, 0.9, 0.86), 0.0, 0.9),
+    "skin_pink": Surface((0.93, 0.66, 0.64), 0.0, 0.6),
+    "hide": Surface((0.52, 0.5, 0.48), 0.0, 0.85),
+    "wool": Surface((0.94, 0.92, 0.86), 0.0, 1.0),
+    "scales": Surface((0.2, 0.45, 0.25), 0.15, 0.45),
+    "wing": Surface((0.45, 0.2, 0.15), 0.0, 0.7),
+    "horn": Surface((0.86, 0.8, 0.66), 0.0, 0.4),
+    "feather": Surface((0.55, 0.5, 0.45), 0.0, 0.85),
+    "skin": Surface((0.87, 0.67, 0.53), 0.0, 0.6),
+    "alien": Surface((0.45, 0.78, 0.35), 0.0, 0.4),
+    "hair": Surface((0.2, 0.13, 0.08), 0.0, 0.8),
+    "clothes": Surface((0.22, 0.36, 0.6), 0.0, 0.9),
+    "trousers": Surface((0.2, 0.22, 0.28), 0.0, 0.9),
+    "straw": Surface((0.86, 0.72, 0.38), 0.0, 0.95),
 }
 
 #: Roles that carry neon in a cyberpunk scene.
