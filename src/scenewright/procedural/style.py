@@ -43,6 +43,7 @@ ROLES: dict[str, Surface] = {
     "dark_metal": Surface((0.18, 0.19, 0.2), 0.9, 0.45),
     "chrome": Surface((0.9, 0.9, 0.92), 1.0, 0.1),
     "brass": Surface((0.78, 0.6, 0.28), 1.0, 0.3),
+    "copper": Surface((0.8, 0.45, 0.3), 1.0, 0.3),
     "glass": Surface((0.82, 0.9, 0.95), 0.0, 0.05, alpha=0.35, transmission=1.0),
     "plastic": Surface((0.9, 0.9, 0.88), 0.0, 0.45),
     "dark_plastic": Surface((0.08, 0.08, 0.09), 0.0, 0.4),
