@@ -1,7 +1,8 @@
 """The offline mesh generator: a styled parametric model per object, as GLB bytes.
 
-The shape comes from the object's catalogue category; where the catalogue does not know
-it, from the nouns of the object's name; failing both, the generic block. The result is
+The shape comes from the object's catalogue category (or the shape family an open-vocabulary
+object was given as its category); where the catalogue does not know it, from the nouns of
+the object's name; failing both, the generic shape. The result is
 deterministic: the random variation (how many books, where the canopy blobs sit) is
 seeded from the object id.
 """
@@ -24,14 +25,17 @@ from scenewright.gltf import keep_materials
 from scenewright.procedural.builder import Model
 from scenewright.procedural.material import described_surfaces
 from scenewright.procedural.shapes import SHAPES
+from scenewright.procedural.shapes.families import FAMILY_WORDS
 from scenewright.procedural.style import resolve_style
 from scenewright.settings import Settings
 
 log = logging.getLogger(__name__)
 
-#: Words of an object's name → shape, for names the catalogue does not know.
+#: Words of an object's name → shape, for names the catalogue does not know: the shapes'
+#: own names, the words of each shape family ("camel" → animal), then synonyms.
 KEYWORDS: dict[str, str] = {
     **{name.replace("_", " "): name for name in SHAPES},
+    **{word: family for family, words in FAMILY_WORDS.items() for word in words},
     "couch": "sofa", "loveseat": "sofa", "settee": "sofa", "recliner": "armchair",
     "desk chair": "office_chair", "gaming chair": "office_chair", "swivel chair": "office_chair",
     "side table": "coffee_table", "end table": "nightstand", "dining table": "table", "bedside table": "nightstand",

@@ -55,6 +55,8 @@ ROLES: dict[str, Surface] = {
     "wall": Surface((0.88, 0.84, 0.76), 0.0, 0.9),
     "roof": Surface((0.5, 0.2, 0.15), 0.0, 0.8),
     "paint": Surface((0.6, 0.08, 0.08), 0.3, 0.3),
+    "yellow_paint": Surface((0.95, 0.72, 0.08), 0.3, 0.35),
+    "olive_paint": Surface((0.33, 0.36, 0.2), 0.2, 0.6),
     "rubber": Surface((0.06, 0.06, 0.06), 0.0, 0.9),
     "bark": Surface((0.33, 0.23, 0.15), 0.0, 0.95),
     "leaf": Surface((0.22, 0.45, 0.18), 0.0, 0.8),

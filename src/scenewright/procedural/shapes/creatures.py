@@ -81,6 +81,9 @@ def build_of(m: Model) -> tuple[str, Build]:
 def animal(m: Model) -> None:
     """A four-legged animal facing −Y; its name picks the build and the parts that make it
     that animal (hump, trunk and tusks, long neck, wings and tail, horns, mane, spots)."""
+    if m.named("fish", "koi", "goldfish", "carp", "shark", "dolphin", "whale"):
+        fish(m)
+        return
     kind, b = build_of(m)
     m.main = b.coat
     coat = b.coat
@@ -126,7 +129,7 @@ def animal(m: Model) -> None:
     nose_role = "skin_pink" if kind in ("pig", "piglet", "hog", "swine") else "dark_plastic"
     m.ball(nose_role, snout + (0, -0.5 * snout_len - 0.35 * hr, 0.1 * hr), (0.3 * hw, 0.1 * hr, 0.25 * hr), fraction=0.4)
     for s in (-1, 1):
-        m.ball("dark_plastic", head + (s * 0.6 * hw, -0.75 * hr, 0.3 * hr), (0.15 * hr,) * 3, fraction=0.4)
+        m.ball("lacquer", head + (s * 0.6 * hw, -0.75 * hr, 0.3 * hr), (0.15 * hr,) * 3, fraction=0.4)
     _ears(m, b, face, head, hw, hr)
     _tail(m, b, coat, body_y + half, body_z, gz, bw)
     _features(m, kind, coat, head, hw, hr, snout, snout_len, body_y, half, body_z, gz, bw, shoulder)
@@ -281,7 +284,7 @@ def bird(m: Model) -> None:
         for s in (-1, 1):
             m.ball("fur_dark", (s * 0.42 * m.sx, 0.05 * m.sy, 0.45 * m.sz), (0.08 * m.sx, 0.2 * m.sy, 0.3 * m.sz), fraction=0.5)
             m.ball("flower_alt", (s * 0.15 * m.sx, -0.15 * m.sy, 0.02 * m.sz), (0.12 * m.sx, 0.2 * m.sy, 0.02 * m.sz), fraction=0.4)
-            m.ball("dark_plastic", (s * 0.1 * m.sx, -0.22 * m.sy, 0.9 * m.sz), (0.03 * m.sx,) * 3, fraction=0.4)
+            m.ball("lacquer", (s * 0.1 * m.sx, -0.22 * m.sy, 0.9 * m.sz), (0.03 * m.sx,) * 3, fraction=0.4)
         return
     long_legs = m.named("flamingo", "heron", "stork", "crane bird", "ostrich", "emu")
     swan = m.named("swan", "goose")
@@ -315,7 +318,7 @@ def bird(m: Model) -> None:
     m.cylinder(beak, (0, head_c[1] - 0.8 * head_r[1], head_c[2]), tip, 0.35 * head_r[0], 0.0, fraction=0.4)
     for s in (-1, 1):
         eye = 0.3 * head_r[0] if m.named("owl") else 0.15 * head_r[0]
-        m.ball("dark_plastic", (s * 0.5 * head_r[0], head_c[1] - 0.8 * head_r[1], head_c[2] + 0.2 * head_r[2]), (eye,) * 3,
+        m.ball("lacquer", (s * 0.5 * head_r[0], head_c[1] - 0.8 * head_r[1], head_c[2] + 0.2 * head_r[2]), (eye,) * 3,
                fraction=0.4)
         m.ball(coat if not m.named("parrot", "macaw") else "book_b", (s * body_r[0], body_c[1] + 0.1 * m.sy, body_c[2] + 0.1 * body_r[2]),
                (0.3 * body_r[0], 0.9 * body_r[1], 0.6 * body_r[2]), fraction=0.6)
@@ -391,7 +394,7 @@ def figure(m: Model) -> None:
                        0.05 * head_r, fraction=0.3)
             m.ball("light", head + (s * 0.6 * head_r, 0.1 * head_r, 1.15 * head_r), (0.1 * head_r,) * 3, fraction=0.3)
         elif not (knight or astronaut):
-            m.ball("dark_plastic", head + (s * 0.32 * head_r, -0.88 * head_r, 0.1 * head_r), (eye,) * 3, fraction=0.3)
+            m.ball("lacquer", head + (s * 0.32 * head_r, -0.88 * head_r, 0.1 * head_r), (eye,) * 3, fraction=0.3)
     if knight:
         m.ball("metal", head + (0, 0, 0.1 * head_r), (0.95 * head_r, 1.05 * head_r, 1.2 * head_r))
         m.box("dark_plastic", (-0.6 * head_r, -1.07 * head_r, head_z + 0.05 * head_r), (0.6 * head_r, -0.8 * head_r, head_z + 0.2 * head_r),
@@ -531,3 +534,17 @@ def _mannequin(m: Model) -> None:
 
 
 SHAPES = {"animal": animal, "bird": bird, "figure": figure}
+
+
+def fish(m: Model) -> None:
+    """A fish (or shark, dolphin, whale) swimming toward −Y: body, tail fin, fins, eyes."""
+    m.main = "hide" if m.named("shark", "dolphin", "whale") else "fur_orange"
+    coat = m.main
+    body_z = 0.5 * m.sz
+    m.ball(coat, (0, -0.08 * m.sy, body_z), (0.45 * m.sx, 0.38 * m.sy, 0.38 * m.sz))
+    m.extrude(coat, [(0.25 * m.sy, body_z), (m.sy / 2, m.sz), (0.42 * m.sy, body_z), (m.sy / 2, 0.0)], "x", -0.04 * m.sx, 0.04 * m.sx)
+    m.extrude(coat, [(-0.2 * m.sy, 0.8 * m.sz), (0.1 * m.sy, 0.8 * m.sz), (0.05 * m.sy, m.sz if m.named("shark", "dolphin") else 0.92 * m.sz)],
+              "x", -0.03 * m.sx, 0.03 * m.sx)
+    for s in (-1, 1):
+        m.ball("lacquer", (s * 0.3 * m.sx, -0.33 * m.sy, body_z + 0.08 * m.sz), (0.06 * m.sx, 0.04 * m.sy, 0.06 * m.sz), fraction=0.4)
+        m.leaf(coat, (s * 0.35 * m.sx, -0.1 * m.sy, 0.4 * m.sz), (s * m.sx / 2, 0.05 * m.sy, 0.25 * m.sz), 0.05 * m.sy, 0.01 * m.sz)

@@ -8,6 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from scenewright.procedural.builder import Model
+from scenewright.procedural.shapes.vehicles import _battle_tank
 
 
 def _buttons(m: Model, x0: float, x1: float, z: float, y: float, count: int, r: float) -> None:
@@ -231,6 +232,7 @@ def _silo(m: Model) -> None:
     m.main = "metal"
     r = 0.45
     body = 0.8 * m.sz
+    m.lathe("concrete", [(r * 1.1, 0), (r * 1.1, 0.02 * m.sz)], scale=(m.sx, m.sy), fraction=0.7)
     m.lathe("metal", [(r, 0), (r, body)], scale=(m.sx, m.sy))
     m.lathe("metal", [(r * 1.02, body), (r * 0.2, 0.97 * m.sz), (0.0, m.sz)], scale=(m.sx, m.sy))
     for k in range(1, 6):
@@ -288,6 +290,10 @@ def _cauldron(m: Model) -> None:
                    (np.cos(a) * 0.4 * m.sx, np.sin(a) * 0.4 * m.sy, 0.0), 0.04 * min(m.sx, m.sy), fraction=0.4)
     m.torus("dark_metal", (0, 0, rim + 0.02 * m.sz), 0.44 * m.sx, 0.015 * min(m.sx, m.sz), axis="x", arc=np.pi, fraction=0.5)
     for k in range(3):
+        a = np.pi * k / 3
+        d = np.array([np.cos(a), np.sin(a)]) * 0.3 * min(m.sx, m.sy)
+        m.cylinder("bark", (d[0], d[1], 0.04 * m.sz), (-d[0], -d[1], 0.04 * m.sz), 0.04 * min(m.sx, m.sy, m.sz), fraction=0.4)
+    for k in range(3):
         a = 2 * np.pi * k / 3
         m.ball(brew, (np.cos(a) * 0.15 * m.sx, np.sin(a) * 0.15 * m.sy, rim - 0.02 * m.sz), (0.05 * m.sx,) * 2 + (0.04 * m.sz,),
                fraction=0.3)
@@ -309,8 +315,10 @@ def _aquarium(m: Model) -> None:
 
 def tank(m: Model) -> None:
     """A vessel; its name picks the build: a fuel or gas tank on saddles, a silo, a water
-    tower on legs, a boiler, a cauldron, an aquarium; else standing or lying by its box."""
+    tower on legs, a boiler, a cauldron, an aquarium (and an army tank is the vehicle);
+    else standing or lying by its box."""
     variants = (
+        (("army tank", "battle tank", "military tank", "panzer", "armored tank", "armoured tank"), _battle_tank),
         (("fish tank", "aquarium", "terrarium", "vivarium"), _aquarium),
         (("cauldron", "pot", "kettle"), _cauldron),
         (("silo", "grain silo", "grain bin"), _silo),

@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from scenewright.procedural.builder import Model
+from scenewright.procedural.shapes.machines import _cauldron
 
 
 def table_lamp(m: Model) -> None:
@@ -232,6 +233,9 @@ def picture_frame(m: Model) -> None:
 
 
 def trash_can(m: Model) -> None:
+    if m.named("basket", "hamper"):
+        _basket(m)
+        return
     m.main = "metal"
     r = min(m.sx, m.sy) / 2
     m.lathe("metal", [(0.82 * r, 0), (0.95 * r, 0.88 * m.sz)], scale=(m.sx / (2 * r), m.sy / (2 * r)))
@@ -330,7 +334,24 @@ def cup(m: Model) -> None:
     m.lathe("soil", [(0.85 * r, 0.8 * m.sz), (0.85 * r, 0.82 * m.sz)], centre=(-(m.sx / 2 - r), 0, 0))
 
 
+def _basket(m: Model) -> None:
+    m.main = "wood"
+    m.lathe("wood", [(0.0, 0.0), (0.38, 0.0), (0.5, 0.6 * m.sz), (0.46, 0.6 * m.sz), (0.34, 0.04 * m.sz), (0.0, 0.04 * m.sz)],
+            scale=(m.sx, m.sy))
+    for z in (0.15, 0.3, 0.45):
+        m.lathe("dark_wood", [(0.38 + 0.2 * z, z * m.sz), (0.38 + 0.2 * z, z * m.sz + 0.03 * m.sz)], scale=(m.sx * 1.02, m.sy * 1.02),
+                fraction=0.7)
+    m.torus("dark_wood", (0, 0, 0.6 * m.sz), 0.45 * m.sx, 0.02 * min(m.sx, m.sz), axis="y", arc=np.pi, fraction=0.5)
+    m.lathe("canvas", [(0.47, 0.56 * m.sz), (0.5, 0.64 * m.sz), (0.3, 0.6 * m.sz)], scale=(m.sx, m.sy), fraction=0.7)
+
+
 def bowl(m: Model) -> None:
+    if m.named("cauldron"):
+        _cauldron(m)
+        return
+    if m.named("basket", "hamper"):
+        _basket(m)
+        return
     m.main = "ceramic"
     r = 0.5
     h = m.sz * (0.6 if m.has("fruit") else 1.0)

@@ -7,8 +7,8 @@ from __future__ import annotations
 import numpy as np
 
 from scenewright.procedural.builder import Model
-from scenewright.procedural.shapes.buildings import _windmill
-from scenewright.procedural.shapes.props import _chest
+from scenewright.procedural.shapes.buildings import _crane, _windmill
+from scenewright.procedural.shapes.props import _basket, _chest
 
 
 def _ferris_wheel(m: Model) -> None:
@@ -42,40 +42,6 @@ def _ferris_wheel(m: Model) -> None:
         m.cbox("canvas_alt", c + (0, 0, 0.75 * cabin), (1.5 * cabin, 0.75 * D, 0.25 * cabin))
     m.box("concrete", (-0.7 * R, -D, 0), (0.7 * R, D, 0.05 * H))
     m.box("wall", (-0.25 * R, -D, 0.05 * H), (0.25 * R, -0.5 * D, 0.12 * H))
-
-
-def _crane(m: Model) -> None:
-    """A tower crane: a lattice mast, a long jib and a short counter-jib with its weights,
-    the operator's cab and a hook on its cable."""
-    m.main = "paint"
-    W, D, H = m.sx / 2, m.sy / 2, m.sz
-    mast = min(0.08 * m.sx, 0.8 * D, 0.06 * H)
-    x0 = -W + 0.3 * m.sx
-    top = 0.85 * H
-    bar = 0.08 * mast + 0.01
-    levels = max(4, int(top / (2 * mast + 1e-9)) // 2 * 2)
-    levels = min(levels, 24)
-    corners = [(x0 - mast / 2, -mast / 2), (x0 + mast / 2, -mast / 2), (x0 + mast / 2, mast / 2), (x0 - mast / 2, mast / 2)]
-    for x, y in corners:
-        m.beam("paint", (x, y, 0), (x, y, top), bar)
-    for i in range(levels):
-        z0, z1 = top * i / levels, top * (i + 1) / levels
-        for (ax, ay), (bx, by) in zip(corners, corners[1:] + corners[:1]):
-            m.beam("paint", (ax, ay, z0), (bx, by, z1), 0.6 * bar)
-    m.box("concrete", (x0 - 1.5 * mast, -min(D, 1.5 * mast), 0), (x0 + 1.5 * mast, min(D, 1.5 * mast), 0.03 * H))
-    jib_z = top + 0.02 * H
-    m.beam("paint", (x0, 0, jib_z), (W, 0, jib_z), 0.6 * mast, 0.5 * mast)
-    m.beam("paint", (-W, 0, jib_z), (x0, 0, jib_z), 0.6 * mast, 0.5 * mast)
-    m.box("concrete", (-W, -0.4 * mast, jib_z - 0.8 * mast), (-W + 0.12 * m.sx, 0.4 * mast, jib_z + 0.25 * mast))
-    peak = np.array([x0, 0.0, H])
-    m.beam("paint", (x0, 0, jib_z), peak, 0.5 * mast)
-    m.beam("dark_metal", peak, (W - 0.02 * m.sx, 0, jib_z + 0.2 * mast), 0.1 * bar + 0.005)
-    m.beam("dark_metal", peak, (-W + 0.05 * m.sx, 0, jib_z + 0.2 * mast), 0.1 * bar + 0.005)
-    m.box("glass", (x0 + 0.5 * mast, -0.6 * mast, top - 1.2 * mast), (x0 + 1.5 * mast, 0.6 * mast, top))
-    hook_x = x0 + 0.6 * (W - x0)
-    m.box("dark_metal", (hook_x - 0.3 * mast, -0.3 * mast, jib_z - 0.5 * mast), (hook_x + 0.3 * mast, 0.3 * mast, jib_z - 0.25 * mast))
-    m.beam("dark_metal", (hook_x, 0, jib_z - 0.3 * mast), (hook_x, 0, 0.45 * H), 0.08 * bar + 0.004)
-    m.torus("flower_alt", (hook_x, 0, 0.45 * H - 0.2 * mast), 0.2 * mast, 0.06 * mast, axis="y", arc=1.5 * np.pi, fraction=0.5)
 
 
 def _carousel(m: Model) -> None:
@@ -160,7 +126,8 @@ def _scaffold(m: Model) -> None:
     ys = (-D + tube, D - tube)
     for x in xs:
         for y in ys:
-            m.post("metal", x, y, 0, H, tube, fraction=0.3)
+            m.post("metal", x, y, 0.01 * H, H, tube, fraction=0.3)
+            m.box("dark_wood", (x - 3 * tube, y - 2 * tube, 0), (x + 3 * tube, y + 2 * tube, 0.01 * H))
     for j in range(1, lifts + 1):
         z = H * j / lifts - tube
         for y in ys:
@@ -221,8 +188,9 @@ def panel(m: Model) -> None:
     if m.named("solar panel", "solar"):
         m.main = "screen"
         for x in (-0.8 * W, 0.8 * W):
-            m.post("metal", x, 0.6 * D, 0, 0.9 * H, 0.02 * W + 0.01, fraction=0.3)
-            m.post("metal", x, -0.6 * D, 0, 0.3 * H, 0.02 * W + 0.01, fraction=0.3)
+            for y, top in ((0.6 * D, 0.9 * H), (-0.6 * D, 0.3 * H)):
+                m.post("metal", x, y, 0.04 * H, top, 0.02 * W + 0.01, fraction=0.3)
+                m.box("concrete", (x - 0.08 * W, y - 0.1 * D, 0), (x + 0.08 * W, y + 0.1 * D, 0.04 * H))
         m.extrude("metal", [(-D, 0.25 * H), (D, 0.92 * H), (D, H), (-D, 0.33 * H)], "x", -W, W)
         for k in range(6):
             x = -W + (k + 0.5) * 2 * W / 6
@@ -311,16 +279,6 @@ def _sack(m: Model) -> None:
     m.lathe("bark", [(0.11, 0.78 * m.sz), (0.11, 0.84 * m.sz)], scale=(m.sx, m.sy), fraction=0.5)
     m.ball("canvas_alt", (0.05 * m.sx, 0, 0.9 * m.sz), (0.18 * m.sx, 0.16 * m.sy, 0.1 * m.sz), fraction=0.5)
     m.box("accent", (-0.15 * m.sx, -0.47 * m.sy, 0.3 * m.sz), (0.15 * m.sx, -0.45 * m.sy, 0.5 * m.sz), rounded=0.0)
-
-
-def _basket(m: Model) -> None:
-    m.main = "wood"
-    m.lathe("wood", [(0.0, 0.0), (0.38, 0.0), (0.5, 0.6 * m.sz), (0.46, 0.6 * m.sz), (0.34, 0.04 * m.sz), (0.0, 0.04 * m.sz)],
-            scale=(m.sx, m.sy))
-    for z in (0.15, 0.3, 0.45):
-        m.lathe("dark_wood", [(0.38 + 0.2 * z, z * m.sz), (0.38 + 0.2 * z, z * m.sz + 0.03 * m.sz)], scale=(m.sx * 1.02, m.sy * 1.02),
-                fraction=0.7)
-    m.torus("dark_wood", (0, 0, 0.6 * m.sz), 0.45 * m.sx, 0.02 * min(m.sx, m.sz), axis="y", arc=np.pi, fraction=0.5)
 
 
 def container(m: Model) -> None:
