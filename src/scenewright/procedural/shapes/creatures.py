@@ -542,6 +542,7 @@ def fish(m: Model) -> None:
     coat = m.main
     body_z = 0.5 * m.sz
     m.ball(coat, (0, -0.08 * m.sy, body_z), (0.45 * m.sx, 0.38 * m.sy, 0.38 * m.sz))
+    m.ball("fur_white", (0, -0.1 * m.sy, body_z - 0.1 * m.sz), (0.4 * m.sx, 0.33 * m.sy, 0.3 * m.sz), fraction=0.7)
     m.extrude(coat, [(0.25 * m.sy, body_z), (m.sy / 2, m.sz), (0.42 * m.sy, body_z), (m.sy / 2, 0.0)], "x", -0.04 * m.sx, 0.04 * m.sx)
     m.extrude(coat, [(-0.2 * m.sy, 0.8 * m.sz), (0.1 * m.sy, 0.8 * m.sz), (0.05 * m.sy, m.sz if m.named("shark", "dolphin") else 0.92 * m.sz)],
               "x", -0.03 * m.sx, 0.03 * m.sx)

@@ -24,7 +24,7 @@ FAMILY_WORDS: dict[str, tuple[str, ...]] = {
         "bear", "panda", "fox", "wolf", "coyote", "rabbit", "bunny", "hare", "mouse", "rat", "hamster", "squirrel", "cat",
         "kitten", "dog", "puppy", "hound", "poodle", "dragon", "wyvern", "dinosaur", "t-rex", "tyrannosaurus", "raptor",
         "stegosaurus", "triceratops", "brontosaurus", "diplodocus", "livestock", "beast", "creature", "monster", "fish", "koi",
-        "goldfish", "shark", "dolphin", "whale",
+        "goldfish", "carp", "shark", "dolphin", "whale",
     ),
     "bird": (
         "bird", "parrot", "macaw", "duck", "chicken", "hen", "rooster", "owl", "pigeon", "dove", "penguin", "flamingo", "swan",

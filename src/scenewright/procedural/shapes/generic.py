@@ -4,10 +4,7 @@ with no hint at all."""
 
 from __future__ import annotations
 
-import numpy as np
-
 from scenewright.procedural.builder import Model
-from scenewright.procedural.shapes.creatures import fish
 from scenewright.procedural.shapes.families import FAMILIES, family_of
 
 
@@ -52,7 +49,6 @@ def generic(m: Model) -> None:
         (("cushion", "pillow", "pouf"), _cushion),
         (("curtain", "drape"), _curtain),
         (("lifebuoy", "life ring", "tyre", "tire"), _lifebuoy),
-        (("fish", "koi", "goldfish", "carp", "shark", "dolphin", "whale"), fish),
     )
     for words, build in variants:
         if m.named(*words):
