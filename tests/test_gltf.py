@@ -36,7 +36,7 @@ def test_srgb_to_linear_is_the_srgb_transfer_function():
 @given(st.lists(st.floats(0.0, 1.0), min_size=1, max_size=4))
 def test_the_conversion_round_trips_and_darkens(values):
     linear = srgb_to_linear(values)
-    np.testing.assert_allclose(to_srgb(linear), values, atol=1e-9)
+    np.testing.assert_allclose(to_srgb(linear), values, atol=1e-6)  # the two thresholds differ by ~1e-7
     assert all(lin <= v + 1e-12 for lin, v in zip(linear, values))
 
 
