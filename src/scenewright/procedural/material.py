@@ -129,6 +129,9 @@ def _surface(base: Surface, material: str | None, colour, glow: bool = False) ->
     return replace(surface, color=colour, emissive=colour if glow else surface.emissive)
 
 
+#: Main roles whose cushions are upholstered in the same cover.
+_UPHOLSTERED = {"fabric", "leather"}
+
 #: Roles of living or elemental things: "an oak tree" names a species, not a wood finish,
 #: so material words never apply to them (colour words still do: "a red maple").
 _NATURAL = {"leaf", "pine_leaf", "bark", "flower", "flower_alt", "fur", "water", "flame", "light", "soil"}
@@ -160,4 +163,7 @@ def described_surfaces(
         material = None
     if material is not None or main_colour is not None:
         found[main] = _surface(base(main), material, main_colour, glow=_GLOW_RE.search(text) is not None)
+        # A grey sofa's cushions are grey too (a shade lighter), unless the text colours them.
+        if main in _UPHOLSTERED and "cushion" in roles and "cushion" not in found:
+            found["cushion"] = replace(found[main], color=tuple(c + (1 - c) * 0.12 for c in found[main].color))
     return found
