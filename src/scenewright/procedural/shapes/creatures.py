@@ -219,7 +219,7 @@ def _features(m: Model, kind: str, coat: str, head, hw, hr, snout, snout_len, bo
             m.cylinder("gold", head + (0, -0.4 * hr, 0.8 * hr), head + (0, -0.9 * hr, 2.2 * hr), 0.18 * hr, 0.0, fraction=0.4)
     if m.named("lion") and not m.named("lioness"):
         m.ball("fur_orange", head + (0, 0.5 * hr, 0.1 * hr), (1.5 * hw, 0.8 * hr, 1.5 * hr), fraction=0.6)
-    if m.named("bear", "panda") and m.named("panda"):
+    if m.named("panda"):
         for s in (-1, 1):
             m.ball("fur_dark", head + (s * 0.5 * hw, -0.8 * hr, 0.25 * hr), (0.3 * hr, 0.12 * hr, 0.25 * hr), fraction=0.3)
     if m.named("sheep", "lamb", "ram"):
