@@ -143,9 +143,9 @@ class Model:
         self.add(role, P.beam(p0, p1, width, height))
 
     def inset(self, generator, lo, size, role: str | None = None) -> None:
-        """Draw another generator's object into the box at corner ``lo`` (its footprint
-        centred on ``lo``'s x/y, bottom at ``lo``'s z) of ``size``, every part in ``role``
-        when one is given: the lion on a statue's plinth, the rider on a horse."""
+        """Draw another generator's object into a box of ``size`` standing at ``lo`` (its
+        footprint centred on ``lo``'s x/y, its bottom at ``lo``'s z), every part in ``role``
+        when one is given: the lion on a statue's plinth, all in marble."""
         inner = Model(size, self.style, self.rng, main=self.main, name=self.name)
         inner.text = self.text
         generator(inner)
