@@ -149,5 +149,10 @@ def reduce_faces(scene: trimesh.Scene, max_faces: int) -> None:
 def to_glb(scene: trimesh.Scene, source: bytes | None = None) -> bytes:
     """The scene as GLB; with the ``source`` GLB it was read from, each mesh keeps that
     file's material exactly (extensions and full-precision factors, which trimesh drops)."""
-    keep = keep_materials(mesh_materials(source)) if source is not None else None
+    keep = None
+    if source is not None:
+        try:
+            keep = keep_materials(mesh_materials(source))
+        except ValueError as exc:  # trimesh read it, but its JSON chunk is not plain glTF JSON
+            log.warning("materials kept as trimesh read them: the source GLB's JSON is unreadable (%s)", exc)
     return scene.export(file_type="glb", tree_postprocessor=keep)
