@@ -131,3 +131,17 @@ def test_the_scene_with_glass_is_valid_gltf(living_room):
     folder, _ = living_room
     report = assert_valid(folder.glb)
     assert "KHR_materials_transmission" in report["info"]["extensionsUsed"]
+
+
+def test_normalised_assets_keep_their_exact_materials(caplog):
+    from scenewright.assets.normalise import normalise, to_glb
+    from scenewright.procedural.meshes import build_glb
+    from scenewright.scene import Vec3
+
+    glb = build_glb("table", (1.2, 0.8, 0.75), "realistic", 1, "a glass table", "table")
+    asset, _ = normalise(glb, Vec3(x=1.2, y=0.8, z=0.75), name="table_1", backend="procedural")
+    kept = json_chunk(to_glb(asset, source=glb))["materials"]
+    assert kept == json_chunk(glb)["materials"]
+    with caplog.at_level("WARNING"):
+        plain = json_chunk(to_glb(asset, source=b"glTF\x02\x00\x00\x00 not json"))
+    assert "unreadable" in caplog.text and "extensions" not in plain["materials"][0]
