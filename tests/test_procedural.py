@@ -31,7 +31,23 @@ bookshelf cabinet wardrobe nightstand counter table_lamp floor_lamp pendant_lamp
 potted_plant vase bathtub toilet sink stove fridge piano clock mirror picture_frame trash_can crate barrel
 books bottle cup bowl tree pine_tree palm_tree bush flower_bed rock fountain statue lamp_post sign fence
 arch bollard hydrant car truck bus bicycle boat building house kiosk market_stall tent umbrella swing slide
-treadmill whiteboard robot crystal tower well cart pillar generic""".split()
+treadmill whiteboard robot crystal tower well cart pillar generic
+animal bird figure machine tank structure panel container tool vehicle""".split()
+
+#: The shape families unknown nouns get, with names that pick their variants.
+FAMILIES = {
+    "animal": ["camel", "elephant", "giraffe", "pig", "sheep", "goat", "horse", "dog", "fox", "dragon", "dinosaur", "t-rex"],
+    "bird": ["sparrow", "penguin", "owl", "flamingo"],
+    "figure": ["person", "street musician", "violinist", "knight", "wizard", "astronaut", "scarecrow", "mannequin", "alien"],
+    "machine": ["machine", "arcade cabinet", "generator", "compressor", "terminal", "printer"],
+    "tank": ["fuel tank", "silo", "water tank", "boiler", "cauldron", "aquarium"],
+    "structure": ["ferris wheel", "windmill", "crane", "carousel", "stage", "scaffold"],
+    "panel": ["notice board", "banner", "screen", "solar panel"],
+    "container": ["box", "chest", "trunk", "sack", "basket"],
+    "tool": ["anvil", "hammer", "toolbox", "gadget"],
+    "vehicle": ["tractor", "forklift", "cart", "golf cart", "drone", "spaceship", "army tank"],
+    "statue": ["dragon statue", "lion statue", "horse statue", "statue"],
+}
 
 #: Typical sizes (x width, y depth, z height) so each shape is tested at a plausible box.
 SIZES = {
@@ -67,7 +83,7 @@ def assert_fills(glb: bytes, size) -> None:
 
 def test_vocabulary_is_covered():
     assert set(SHAPES) == set(VOCABULARY)
-    assert len(SHAPES) - 1 >= 60
+    assert len(SHAPES) - 1 >= 70
 
 
 @pytest.mark.parametrize("shape", VOCABULARY)
@@ -88,7 +104,9 @@ def test_every_shape_is_valid_pbr_gltf_filling_its_box(shape):
     size=st.tuples(*[st.floats(0.05, 40.0)] * 3),
     style=st.sampled_from(STYLES),
     seed=st.integers(0, 2**32),
-    name=st.sampled_from(["", "dog", "lighthouse", "campfire", "torii gate", "sailboat", "treasure chest", "snowman"]),
+    name=st.sampled_from(["", "dog", "lighthouse", "campfire", "torii gate", "sailboat", "treasure chest", "snowman", "camel",
+                          "dragon statue", "street musician", "fuel tank", "ferris wheel", "anvil", "tractor", "knight",
+                          "arcade cabinet", "round mirror"]),
 )
 def test_any_size_style_and_variant_fills_the_box_on_a_face_budget(shape, size, style, seed, name):
     glb = build_glb(shape, size, style, seed, name=name)
@@ -276,11 +294,17 @@ VALIDATOR = Path(__file__).resolve().parents[1] / "tools" / "validate-gltf.mjs"
 @pytest.mark.parametrize(
     ("shape", "style"),
     [("rock", "realistic"), ("crystal", "cartoon"), ("sofa", "low-poly"), ("car", "cyberpunk"),
-     ("palm_tree", "steampunk"), ("fountain", "anime"), ("bottle", "realistic")],
+     ("palm_tree", "steampunk"), ("fountain", "anime"), ("bottle", "realistic"), ("animal", "low-poly"),
+     ("figure", "realistic"), ("structure", "cartoon"), ("tank", "cyberpunk"), ("statue", "steampunk"),
+     ("vehicle", "anime"), ("bird", "realistic"), ("machine", "realistic"), ("panel", "low-poly"),
+     ("container", "cartoon"), ("tool", "realistic")],
 )
 def test_khronos_validator_finds_no_errors(tmp_path, shape, style):
     path = tmp_path / f"{shape}.glb"
-    path.write_bytes(build_glb(shape, SIZES.get(shape, (0.8, 0.6, 0.9)), style, seed=2))
+    names = {"animal": "dragon", "figure": "street musician", "structure": "ferris wheel", "tank": "fuel tank",
+             "statue": "lion statue", "vehicle": "tractor", "machine": "arcade cabinet", "panel": "solar panel",
+             "container": "trunk", "tool": "anvil", "bird": "flamingo"}
+    path.write_bytes(build_glb(shape, SIZES.get(shape, (0.8, 0.6, 0.9)), style, seed=2, name=names.get(shape, "")))
     run = subprocess.run(["node", str(VALIDATOR), str(path)], capture_output=True, text=True, timeout=60)
     report = json.loads(run.stdout)
     assert report["issues"]["numErrors"] == 0, report["issues"]["messages"][:5]

@@ -18,6 +18,7 @@ import numpy as np
 import trimesh
 
 from scenewright.errors import BackendError, MissingExtra
+from scenewright.gltf import keep_materials, mesh_materials
 from scenewright.scene import Vec3
 
 log = logging.getLogger(__name__)
@@ -145,5 +146,13 @@ def reduce_faces(scene: trimesh.Scene, max_faces: int) -> None:
     log.debug("reduced %d faces to %d", total, sum(len(g.faces) for g in scene.geometry.values()))
 
 
-def to_glb(scene: trimesh.Scene) -> bytes:
-    return scene.export(file_type="glb")
+def to_glb(scene: trimesh.Scene, source: bytes | None = None) -> bytes:
+    """The scene as GLB; with the ``source`` GLB it was read from, each mesh keeps that
+    file's material exactly (extensions and full-precision factors, which trimesh drops)."""
+    keep = None
+    if source is not None:
+        try:
+            keep = keep_materials(mesh_materials(source))
+        except ValueError as exc:  # trimesh read it, but its JSON chunk is not plain glTF JSON
+            log.warning("materials kept as trimesh read them: the source GLB's JSON is unreadable (%s)", exc)
+    return scene.export(file_type="glb", tree_postprocessor=keep)

@@ -111,7 +111,7 @@ def generate_assets(
         except BackendError as exc:
             failures[oid] = str(exc)
             return
-        path = write_atomic(folder.asset(oid), to_glb(asset))
+        path = write_atomic(folder.asset(oid), to_glb(asset, source=glb))
         obj.asset = folder.relative(path)
         obj.size = size
         folder.save(scene)

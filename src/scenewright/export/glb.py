@@ -21,6 +21,7 @@ from scenewright.export.ground import ground_mesh
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
 from scenewright.geometry import GLTF_TO_SCENE, SCENE_TO_GLTF, object_matrix
+from scenewright.gltf import keep_materials, mesh_materials
 from scenewright.scene import Scene, SceneObject
 
 log = logging.getLogger(__name__)
@@ -52,15 +53,21 @@ def _asset_paths(scene: Scene, folder: SceneFolder) -> dict[str, Path]:
     return paths
 
 
-def _add_object(target: trimesh.Scene, obj: SceneObject, path: Path) -> None:
+def _add_object(target: trimesh.Scene, obj: SceneObject, path: Path, materials: dict[str, dict]) -> None:
+    """Hang the asset's meshes under the object's node; ``materials`` learns each new mesh's
+    material as the asset file wrote it (trimesh's copy is rounded and loses extensions)."""
+    data = path.read_bytes()
     try:
-        asset = parse_glb(path.read_bytes())
+        asset = parse_glb(data)
+        source = mesh_materials(data)
     except ValueError as exc:
         raise InputError(f"cannot assemble object {obj.id!r}: its asset {path} is broken ({exc})") from None
     target.graph.update(frame_to=obj.id, frame_from=target.graph.base_frame, matrix=node_matrix(obj))
     for node in asset.graph.nodes_geometry:
         transform, geometry_name = asset.graph[node]
         name = f"{obj.id}/{node}"
+        if geometry_name in source:
+            materials[name] = source[geometry_name]
         target.add_geometry(
             asset.geometry[geometry_name],
             geom_name=name,
@@ -81,11 +88,14 @@ def _mark_buffer_targets(tree: dict) -> None:
                 tree["bufferViews"][view]["target"] = ELEMENT_ARRAY_BUFFER
 
 
-def _describe_nodes(scene: Scene):
-    """A glTF tree hook that names the generator and tags each object node with its record."""
+def _describe_nodes(scene: Scene, materials: dict[str, dict]):
+    """A glTF tree hook that names the generator, tags each object node with its record and
+    gives each mesh its asset's exact material."""
     extras = {obj.id: {"name": obj.name, "category": obj.category} for obj in scene.objects}
+    keep = keep_materials(materials)
 
     def postprocess(tree: dict) -> None:
+        keep(tree)
         tree["asset"]["generator"] = f"scenewright {__version__}"
         for node in tree.get("nodes", []):
             if node.get("name") in extras:
@@ -99,12 +109,13 @@ def assemble(scene: Scene, folder: SceneFolder) -> Path:
     """Write ``scene.glb`` (metres, +Y up) from the objects' assets and poses; return its path."""
     paths = _asset_paths(scene, folder)
     glb = trimesh.Scene()
+    materials: dict[str, dict] = {}
     for obj in scene.objects:
-        _add_object(glb, obj, paths[obj.id])
+        _add_object(glb, obj, paths[obj.id], materials)
     texture = folder.ground_texture(scene)
     glb.add_geometry(
         ground_mesh(scene.objects, scene.bounds, texture), geom_name=GROUND_NODE, node_name=GROUND_NODE
     )
-    data = trimesh.exchange.gltf.export_glb(glb, tree_postprocessor=_describe_nodes(scene))
+    data = trimesh.exchange.gltf.export_glb(glb, tree_postprocessor=_describe_nodes(scene, materials))
     log.info("assembled %d objects into %s", len(scene.objects), folder.glb)
     return write_atomic(folder.glb, data)

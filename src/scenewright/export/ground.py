@@ -17,6 +17,7 @@ import trimesh
 from PIL import Image
 
 from scenewright.geometry import SCENE_TO_GLTF, world_box
+from scenewright.gltf import srgb_to_linear
 from scenewright.scene import SceneObject
 
 log = logging.getLogger(__name__)
@@ -28,8 +29,9 @@ MARGIN_METRES = 2.0
 MARGIN_SHARE = 0.25
 #: Extent used when there is nothing to measure.
 EMPTY_HALF_EXTENT = 5.0
-#: Colour of an untextured ground (the texture file is missing): a neutral mid grey.
-PLAIN_COLOUR = (128, 128, 128, 255)
+#: Colour of an untextured ground (the texture file is missing): a neutral mid grey, as a
+#: linear glTF factor.
+PLAIN_COLOUR = (*srgb_to_linear((0.5, 0.5, 0.5)), 1.0)
 
 
 def ground_extent(

@@ -18,6 +18,7 @@ import trimesh
 from trimesh.visual.material import PBRMaterial
 
 from scenewright.geometry import SCENE_TO_GLTF
+from scenewright.gltf import srgb_to_linear
 from scenewright.procedural import parts as P
 from scenewright.procedural.style import NEON_ROLES, NEONS, Style, Surface
 
@@ -48,6 +49,8 @@ class Model:
         self.main = main
         self.parts: dict[str, list[P.Part]] = defaultdict(list)
         self.neon = NEONS[int(rng.integers(len(NEONS)))]
+        #: Role → its glTF material, exact, as :meth:`finish` made it (trimesh keeps 8 bits).
+        self.materials: dict[str, dict] = {}
 
     # Proportions -------------------------------------------------------------------------
     def thick(self, metres: float, limit: float | None = None) -> float:
@@ -139,6 +142,18 @@ class Model:
     def beam(self, role: str, p0, p1, width: float, height: float | None = None) -> None:
         self.add(role, P.beam(p0, p1, width, height))
 
+    def inset(self, generator, lo, size, role: str | None = None) -> None:
+        """Draw another generator's object into a box of ``size`` standing at ``lo`` (its
+        footprint centred on ``lo``'s x/y, its bottom at ``lo``'s z), every part in ``role``
+        when one is given: the lion on a statue's plinth, all in marble."""
+        inner = Model(size, self.style, self.rng, main=self.main, name=self.name)
+        inner.text = self.text
+        generator(inner)
+        offset = P.affine(np.eye(3), lo)
+        for own, parts in inner.parts.items():
+            for part in parts:
+                self.add(role or own, P.transform(part, offset))
+
     # Output ------------------------------------------------------------------------------
     def finish(self, described: Mapping[str, Surface] | None = None) -> trimesh.Scene:
         """Fit to the box, shade, convert to glTF and attach one PBR material per role;
@@ -168,7 +183,8 @@ class Model:
             else:
                 surface = self.style.surface(role, self.neon)
             mesh = trimesh.Trimesh(part.vertices, part.faces, vertex_normals=part.normals, process=False)
-            mesh.visual = trimesh.visual.TextureVisuals(material=_material(role, surface))
+            self.materials[role] = gltf_material(role, surface)
+            mesh.visual = trimesh.visual.TextureVisuals(material=_pbr(self.materials[role]))
             scene.add_geometry(mesh, geom_name=role, node_name=role)
         return scene
 
@@ -186,13 +202,34 @@ def _mentions(text: str, words) -> bool:
     return any(re.search(rf"\b{re.escape(w)}(?:e?s)?\b", text) for w in words)
 
 
-def _material(role: str, s: Surface) -> PBRMaterial:
+def gltf_material(name: str, s: Surface) -> dict:
+    """A surface as a glTF material: sRGB colours as linear factors; see-through surfaces
+    blend (alpha) and, where a viewer supports it, transmit light (``KHR_materials_transmission``)."""
+    material = {
+        "name": name,
+        "pbrMetallicRoughness": {
+            "baseColorFactor": [*srgb_to_linear(s.color), float(s.alpha)],
+            "metallicFactor": float(s.metallic),
+            "roughnessFactor": float(s.roughness),
+        },
+        "emissiveFactor": list(srgb_to_linear(s.emissive)),
+        "alphaMode": "BLEND" if s.alpha < 1 else "OPAQUE",
+        "doubleSided": s.alpha < 1 or s.transmission > 0,
+    }
+    if s.transmission > 0:
+        material["extensions"] = {"KHR_materials_transmission": {"transmissionFactor": float(s.transmission)}}
+    return material
+
+
+def _pbr(material: dict) -> PBRMaterial:
+    """trimesh's copy of a glTF material (its base colour rounded to 8 bits)."""
+    pbr = material["pbrMetallicRoughness"]
     return PBRMaterial(
-        name=role,
-        baseColorFactor=[*s.color, s.alpha],
-        metallicFactor=s.metallic,
-        roughnessFactor=s.roughness,
-        emissiveFactor=list(s.emissive),
-        alphaMode="BLEND" if s.alpha < 1 else "OPAQUE",
-        doubleSided=s.alpha < 1,
+        name=material["name"],
+        baseColorFactor=pbr["baseColorFactor"],
+        metallicFactor=pbr["metallicFactor"],
+        roughnessFactor=pbr["roughnessFactor"],
+        emissiveFactor=material["emissiveFactor"],
+        alphaMode=material["alphaMode"],
+        doubleSided=material["doubleSided"],
     )

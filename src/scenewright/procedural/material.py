@@ -55,8 +55,9 @@ MATERIALS: dict[str, Surface] = {
     "aluminum": Surface((0.85, 0.86, 0.88), 1.0, 0.3), "chrome": Surface((0.92, 0.92, 0.94), 1.0, 0.06),
     "brass": Surface((0.78, 0.6, 0.28), 1.0, 0.3), "copper": Surface((0.8, 0.45, 0.3), 1.0, 0.3),
     "bronze": Surface((0.6, 0.42, 0.22), 1.0, 0.4), "gold": Surface((1.0, 0.77, 0.34), 1.0, 0.2),
-    "silver": Surface((0.9, 0.9, 0.92), 1.0, 0.15), "glass": Surface((0.82, 0.9, 0.95), 0.0, 0.05, alpha=0.35),
-    "crystal": Surface((0.85, 0.92, 1.0), 0.0, 0.05, alpha=0.5), "marble": Surface((0.92, 0.91, 0.88), 0.0, 0.2),
+    "silver": Surface((0.9, 0.9, 0.92), 1.0, 0.15),
+    "glass": Surface((0.82, 0.9, 0.95), 0.0, 0.05, alpha=0.35, transmission=1.0),
+    "crystal": Surface((0.85, 0.92, 1.0), 0.0, 0.05, alpha=0.5, transmission=0.9), "marble": Surface((0.92, 0.91, 0.88), 0.0, 0.2),
     "granite": Surface((0.45, 0.44, 0.43), 0.0, 0.4), "stone": Surface((0.56, 0.55, 0.52), 0.0, 0.9),
     "concrete": Surface((0.62, 0.61, 0.58), 0.0, 0.95), "brick": Surface((0.6, 0.28, 0.2), 0.0, 0.9),
     "leather": Surface((0.36, 0.2, 0.12), 0.0, 0.5), "velvet": Surface((0.45, 0.08, 0.15), 0.0, 1.0),
@@ -128,6 +129,9 @@ def _surface(base: Surface, material: str | None, colour, glow: bool = False) ->
     return replace(surface, color=colour, emissive=colour if glow else surface.emissive)
 
 
+#: Main roles whose cushions are upholstered in the same cover.
+_UPHOLSTERED = {"fabric", "leather"}
+
 #: Roles of living or elemental things: "an oak tree" names a species, not a wood finish,
 #: so material words never apply to them (colour words still do: "a red maple").
 _NATURAL = {"leaf", "pine_leaf", "bark", "flower", "flower_alt", "fur", "water", "flame", "light", "soil"}
@@ -159,4 +163,7 @@ def described_surfaces(
         material = None
     if material is not None or main_colour is not None:
         found[main] = _surface(base(main), material, main_colour, glow=_GLOW_RE.search(text) is not None)
+        # A grey sofa's cushions are grey too (a shade lighter), unless the text colours them.
+        if main in _UPHOLSTERED and "cushion" in roles and "cushion" not in found:
+            found["cushion"] = replace(found[main], color=tuple(c + (1 - c) * 0.12 for c in found[main].color))
     return found

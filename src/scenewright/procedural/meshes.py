@@ -1,7 +1,8 @@
 """The offline mesh generator: a styled parametric model per object, as GLB bytes.
 
-The shape comes from the object's catalogue category; where the catalogue does not know
-it, from the nouns of the object's name; failing both, the generic block. The result is
+The shape comes from the object's catalogue category (or the shape family an open-vocabulary
+object was given as its category); where the catalogue does not know it, from the nouns of
+the object's name; failing both, the generic shape. The result is
 deterministic: the random variation (how many books, where the canopy blobs sit) is
 seeded from the object id.
 """
@@ -20,17 +21,21 @@ import trimesh
 
 from scenewright.backends import MeshRequest
 from scenewright.errors import BackendError, InputError
+from scenewright.gltf import keep_materials
 from scenewright.procedural.builder import Model
 from scenewright.procedural.material import described_surfaces
 from scenewright.procedural.shapes import SHAPES
+from scenewright.procedural.shapes.families import FAMILY_WORDS
 from scenewright.procedural.style import resolve_style
 from scenewright.settings import Settings
 
 log = logging.getLogger(__name__)
 
-#: Words of an object's name → shape, for names the catalogue does not know.
+#: Words of an object's name → shape, for names the catalogue does not know: the shapes'
+#: own names, the words of each shape family ("camel" → animal), then synonyms.
 KEYWORDS: dict[str, str] = {
     **{name.replace("_", " "): name for name in SHAPES},
+    **{word: family for family, words in FAMILY_WORDS.items() for word in words},
     "couch": "sofa", "loveseat": "sofa", "settee": "sofa", "recliner": "armchair",
     "desk chair": "office_chair", "gaming chair": "office_chair", "swivel chair": "office_chair",
     "side table": "coffee_table", "end table": "nightstand", "dining table": "table", "bedside table": "nightstand",
@@ -114,17 +119,23 @@ def build_model(
     """The styled object as a glTF-convention scene: one node and PBR material per part role.
     ``name`` (the object's name and category) picks variants within a shape: a lighthouse
     among towers, a dog for the generic shape."""
+    return _finished(shape, size, style, seed, description, name)[0]
+
+
+def _finished(shape: str, size, style: str, seed: int, description: str, name: str) -> tuple[trimesh.Scene, Model]:
     if shape not in SHAPES:
         raise InputError(f"unknown shape {shape!r}; shapes are: {', '.join(sorted(SHAPES))}")
     resolved = resolve_style(style)
     model = Model(size, resolved, np.random.default_rng(seed), name=name, description=description)
     SHAPES[shape](model)
-    return model.finish(described_surfaces(f"{name} {description}", model.main, model.parts.keys(), resolved.base))
+    scene = model.finish(described_surfaces(f"{name} {description}", model.main, model.parts.keys(), resolved.base))
+    return scene, model
 
 
 def build_glb(shape: str, size, style: str, seed: int, description: str = "", name: str = "") -> bytes:
-    scene = build_model(shape, size, style, seed, description, name)
-    return scene.export(file_type="glb", include_normals=True)
+    """The object as GLB bytes, its materials exact (trimesh's own copy rounds colours to 8 bits)."""
+    scene, model = _finished(shape, size, style, seed, description, name)
+    return scene.export(file_type="glb", include_normals=True, tree_postprocessor=keep_materials(model.materials))
 
 
 class ProceduralMeshes:

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import colorsys
 import logging
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
 from scenewright.scene import DEFAULT_STYLE, STYLES
@@ -19,13 +19,16 @@ log = logging.getLogger(__name__)
 
 @dataclass(frozen=True)
 class Surface:
-    """A PBR surface: linear-ish RGB in 0..1, metallic, roughness, emissive RGB, opacity."""
+    """A PBR surface: sRGB colour in 0..1 (as a palette or a colour word gives it; the
+    builder converts it to linear glTF factors), metallic, roughness, emissive sRGB, opacity,
+    and how much light passes through it (glass)."""
 
     color: tuple[float, float, float]
     metallic: float = 0.0
     roughness: float = 0.7
     emissive: tuple[float, float, float] = (0.0, 0.0, 0.0)
     alpha: float = 1.0
+    transmission: float = 0.0
 
 
 #: The realistic look of every role a generator may use.
@@ -40,7 +43,8 @@ ROLES: dict[str, Surface] = {
     "dark_metal": Surface((0.18, 0.19, 0.2), 0.9, 0.45),
     "chrome": Surface((0.9, 0.9, 0.92), 1.0, 0.1),
     "brass": Surface((0.78, 0.6, 0.28), 1.0, 0.3),
-    "glass": Surface((0.82, 0.9, 0.95), 0.0, 0.05, alpha=0.35),
+    "copper": Surface((0.8, 0.45, 0.3), 1.0, 0.3),
+    "glass": Surface((0.82, 0.9, 0.95), 0.0, 0.05, alpha=0.35, transmission=1.0),
     "plastic": Surface((0.9, 0.9, 0.88), 0.0, 0.45),
     "dark_plastic": Surface((0.08, 0.08, 0.09), 0.0, 0.4),
     "ceramic": Surface((0.94, 0.94, 0.92), 0.0, 0.2),
@@ -51,6 +55,8 @@ ROLES: dict[str, Surface] = {
     "wall": Surface((0.88, 0.84, 0.76), 0.0, 0.9),
     "roof": Surface((0.5, 0.2, 0.15), 0.0, 0.8),
     "paint": Surface((0.6, 0.08, 0.08), 0.3, 0.3),
+    "yellow_paint": Surface((0.95, 0.72, 0.08), 0.3, 0.35),
+    "olive_paint": Surface((0.33, 0.36, 0.2), 0.2, 0.6),
     "rubber": Surface((0.06, 0.06, 0.06), 0.0, 0.9),
     "bark": Surface((0.33, 0.23, 0.15), 0.0, 0.95),
     "leaf": Surface((0.22, 0.45, 0.18), 0.0, 0.8),
@@ -74,6 +80,24 @@ ROLES: dict[str, Surface] = {
     "book_a": Surface((0.55, 0.12, 0.12), 0.0, 0.8),
     "book_b": Surface((0.15, 0.25, 0.5), 0.0, 0.8),
     "book_c": Surface((0.2, 0.42, 0.25), 0.0, 0.8),
+    # Creatures and figures.
+    "fur_light": Surface((0.78, 0.62, 0.4), 0.0, 0.95),
+    "fur_dark": Surface((0.16, 0.12, 0.1), 0.0, 0.9),
+    "fur_orange": Surface((0.85, 0.45, 0.15), 0.0, 0.9),
+    "fur_white": Surface((0.92, 0.9, 0.86), 0.0, 0.9),
+    "skin_pink": Surface((0.93, 0.66, 0.64), 0.0, 0.6),
+    "hide": Surface((0.52, 0.5, 0.48), 0.0, 0.85),
+    "wool": Surface((0.94, 0.92, 0.86), 0.0, 1.0),
+    "scales": Surface((0.2, 0.45, 0.25), 0.15, 0.45),
+    "wing": Surface((0.45, 0.2, 0.15), 0.0, 0.7),
+    "horn": Surface((0.86, 0.8, 0.66), 0.0, 0.4),
+    "feather": Surface((0.55, 0.5, 0.45), 0.0, 0.85),
+    "skin": Surface((0.87, 0.67, 0.53), 0.0, 0.6),
+    "alien": Surface((0.45, 0.78, 0.35), 0.0, 0.4),
+    "hair": Surface((0.2, 0.13, 0.08), 0.0, 0.8),
+    "clothes": Surface((0.22, 0.36, 0.6), 0.0, 0.9),
+    "trousers": Surface((0.2, 0.22, 0.28), 0.0, 0.9),
+    "straw": Surface((0.86, 0.72, 0.38), 0.0, 0.95),
 }
 
 #: Roles that carry neon in a cyberpunk scene.
@@ -169,7 +193,8 @@ class Style:
             roughness = min(roughness, 0.45)
         elif self.pastel and any(emissive):
             emissive = _hsv(emissive, toward_white=self.pastel)
-        return Surface(tuple(float(c) for c in color), float(metallic), float(roughness), emissive, base.alpha)
+        return replace(base, color=tuple(float(c) for c in color), metallic=float(metallic), roughness=float(roughness),
+                       emissive=tuple(float(c) for c in emissive))
 
 
 STYLE_TABLE: dict[str, Style] = {

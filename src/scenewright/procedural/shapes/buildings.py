@@ -183,8 +183,45 @@ def _lattice_tower(m: Model) -> None:
         for s in (-1, 1):
             m.post("ceramic", s * 0.45 * m.sx, 0, z - 0.04 * m.sz, z, bar * 0.8, fraction=0.4)
 
+def _crane(m: Model) -> None:
+    """A tower crane: a lattice mast, a long jib and a short counter-jib with its weights,
+    the operator's cab and a hook on its cable."""
+    m.main = "paint"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    mast = min(0.08 * m.sx, 0.8 * D, 0.06 * H)
+    x0 = -W + 0.3 * m.sx
+    top = 0.85 * H
+    bar = 0.08 * mast + 0.01
+    levels = max(4, int(top / (2 * mast + 1e-9)) // 2 * 2)
+    levels = min(levels, 24)
+    corners = [(x0 - mast / 2, -mast / 2), (x0 + mast / 2, -mast / 2), (x0 + mast / 2, mast / 2), (x0 - mast / 2, mast / 2)]
+    for x, y in corners:
+        m.beam("paint", (x, y, 0), (x, y, top), bar)
+    for i in range(levels):
+        z0, z1 = top * i / levels, top * (i + 1) / levels
+        for (ax, ay), (bx, by) in zip(corners, corners[1:] + corners[:1]):
+            m.beam("paint", (ax, ay, z0), (bx, by, z1), 0.6 * bar)
+    m.box("concrete", (x0 - 1.5 * mast, -min(D, 1.5 * mast), 0), (x0 + 1.5 * mast, min(D, 1.5 * mast), 0.03 * H))
+    jib_z = top + 0.02 * H
+    m.beam("paint", (x0, 0, jib_z), (W, 0, jib_z), 0.6 * mast, 0.5 * mast)
+    m.beam("paint", (-W, 0, jib_z), (x0, 0, jib_z), 0.6 * mast, 0.5 * mast)
+    m.box("concrete", (-W, -0.4 * mast, jib_z - 0.8 * mast), (-W + 0.12 * m.sx, 0.4 * mast, jib_z + 0.25 * mast))
+    peak = np.array([x0, 0.0, H])
+    m.beam("paint", (x0, 0, jib_z), peak, 0.5 * mast)
+    m.beam("dark_metal", peak, (W - 0.02 * m.sx, 0, jib_z + 0.2 * mast), 0.1 * bar + 0.005)
+    m.beam("dark_metal", peak, (-W + 0.05 * m.sx, 0, jib_z + 0.2 * mast), 0.1 * bar + 0.005)
+    m.box("glass", (x0 + 0.5 * mast, -0.6 * mast, top - 1.2 * mast), (x0 + 1.5 * mast, 0.6 * mast, top))
+    hook_x = x0 + 0.6 * (W - x0)
+    m.box("dark_metal", (hook_x - 0.3 * mast, -0.3 * mast, jib_z - 0.5 * mast), (hook_x + 0.3 * mast, 0.3 * mast, jib_z - 0.25 * mast))
+    m.beam("dark_metal", (hook_x, 0, jib_z - 0.3 * mast), (hook_x, 0, 0.45 * H), 0.08 * bar + 0.004)
+    m.torus("flower_alt", (hook_x, 0, 0.45 * H - 0.2 * mast), 0.2 * mast, 0.06 * mast, axis="y", arc=1.5 * np.pi, fraction=0.5)
+
+
 def tower(m: Model) -> None:
-    if m.named("pylon", "transmission tower", "radio tower", "antenna", "crane"):
+    if m.named("crane"):
+        _crane(m)
+        return
+    if m.named("pylon", "transmission tower", "radio tower", "antenna"):
         _lattice_tower(m)
         return
     if m.named("lighthouse"):

@@ -5,6 +5,8 @@ from __future__ import annotations
 import numpy as np
 
 from scenewright.procedural.builder import Model
+from scenewright.procedural.shapes.machines import machine, tank
+from scenewright.procedural.shapes.structures import structure
 
 
 def table(m: Model) -> None:
@@ -18,6 +20,9 @@ def table(m: Model) -> None:
 
 
 def round_table(m: Model) -> None:
+    if m.named("carousel", "merry-go-round", "merry go round"):
+        structure(m)
+        return
     t = m.thick(0.04, 0.2 * m.sz)
     m.lathe("wood", [(0.5, m.sz - t), (0.5, m.sz)], scale=(m.sx, m.sy))
     r = m.thick(0.05, 0.12 * min(m.sx, m.sy))
@@ -228,6 +233,12 @@ def _doors(m: Model, x0, x1, z0, z1, count: int, y: float) -> None:
 
 
 def cabinet(m: Model) -> None:
+    if m.named("washing machine", "washer", "dryer", "dishwasher", "printer", "copier", "photocopier", "server", "server rack"):
+        machine(m)
+        return
+    if m.named("aquarium", "fish tank"):
+        tank(m)
+        return
     plinth = 0.06 * m.sz
     m.box("dark_wood", (-m.sx / 2 + 0.03, -m.sy / 2 + 0.03, 0), (m.sx / 2 - 0.03, m.sy / 2, plinth))
     m.box("wood", (-m.sx / 2, -m.sy / 2 + 0.02, plinth), (m.sx / 2, m.sy / 2, m.sz - 0.03))
@@ -254,6 +265,9 @@ def nightstand(m: Model) -> None:
 
 
 def counter(m: Model) -> None:
+    if m.named("control panel", "console", "terminal", "control desk", "control console"):
+        machine(m)
+        return
     top_t = m.thick(0.04, 0.08 * m.sz)
     m.box("dark_wood", (-m.sx / 2 + 0.02, -m.sy / 2 + 0.08, 0), (m.sx / 2 - 0.02, m.sy / 2, 0.1))
     m.box("wood", (-m.sx / 2 + 0.02, -m.sy / 2 + 0.04, 0.1), (m.sx / 2 - 0.02, m.sy / 2, m.sz - top_t))

@@ -6,6 +6,8 @@ import numpy as np
 
 from scenewright.procedural import parts as P
 from scenewright.procedural.builder import Model
+from scenewright.procedural.shapes.creatures import animal, bird, figure
+from scenewright.procedural.shapes.families import family_of
 
 
 def tree(m: Model) -> None:
@@ -176,23 +178,31 @@ def _snowman(m: Model) -> None:
         m.cylinder("bark", (s * 0.45 * r, 0, 0.58 * m.sz), (s * r, 0, 0.75 * m.sz), 0.03 * r, fraction=0.3)
 
 def statue(m: Model) -> None:
+    """A statue shows its subject on a plinth: the animal its name says ("dragon statue",
+    "lion statue", a dinosaur skeleton in bone), else a standing figure; a scarecrow,
+    mannequin or suit of armour is the figure itself, a snowman is a snowman."""
     if m.named("snowman"):
         _snowman(m)
         return
-    m.main = "stone"
-    plinth = 0.25 * m.sz
-    m.box("stone", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, plinth * 0.85))
-    m.box("stone", (-0.45 * m.sx, -0.45 * m.sy, plinth * 0.85), (0.45 * m.sx, 0.45 * m.sy, plinth))
-    h = m.sz - plinth
-    w = min(0.35 * m.sx, 0.25 * h)
-    role = "brass" if m.has("bronze", "brass", "golden") else "marble"
-    for s in (-1, 1):
-        m.cylinder(role, (s * 0.35 * w, 0, plinth), (s * 0.3 * w, 0, plinth + 0.47 * h), 0.16 * w, 0.2 * w, fraction=0.6)
-    m.lathe(role, [(0.4 * w, plinth + 0.45 * h), (0.55 * w, plinth + 0.6 * h), (0.62 * w, plinth + 0.8 * h),
-                   (0.25 * w, plinth + 0.84 * h)], scale=(1, 0.6))
-    m.ball(role, (0, 0, plinth + 0.91 * h), (0.2 * w, 0.22 * w, 0.09 * h))
-    m.cylinder(role, (0.6 * w, 0, plinth + 0.8 * h), (0.8 * w, -0.1 * w, plinth + 0.5 * h), 0.1 * w, fraction=0.5)
-    m.cylinder(role, (-0.6 * w, 0, plinth + 0.8 * h), (-0.9 * w, -0.1 * w, plinth + h), 0.1 * w, fraction=0.5)
+    if m.named("scarecrow", "mannequin", "dress form", "dummy", "suit of armor", "suit of armour", "armor", "armour"):
+        figure(m)
+        return
+    family = family_of(m.name)
+    subject = {"animal": animal, "bird": bird}.get(family, figure)
+    if m.named("skeleton", "fossil"):
+        role = "horn"
+    elif m.has("gold", "golden", "gilded"):
+        role = "gold"
+    elif m.has("bronze", "brass", "copper"):
+        role = "brass"
+    else:
+        role = "marble"
+    m.main = role
+    plinth = (0.18 if subject is not figure else 0.22) * m.sz
+    m.box("stone", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, plinth * 0.8))
+    m.box("stone", (-0.46 * m.sx, -0.46 * m.sy, plinth * 0.8), (0.46 * m.sx, 0.46 * m.sy, plinth))
+    m.box("brass", (-0.2 * m.sx, -0.465 * m.sy, 0.3 * plinth), (0.2 * m.sx, -0.46 * m.sy, 0.6 * plinth), rounded=0.0)
+    m.inset(subject, (0.0, 0.0, plinth), (0.88 * m.sx, 0.88 * m.sy, m.sz - plinth), role)
 
 
 def _traffic_light(m: Model) -> None:

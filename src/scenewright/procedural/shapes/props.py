@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from scenewright.procedural.builder import Model
+from scenewright.procedural.shapes.machines import _cauldron
 
 
 def table_lamp(m: Model) -> None:
@@ -175,14 +176,32 @@ def clock(m: Model) -> None:
     m.beam("dark_metal", (0, face_y - 0.008, cz), (-0.1 * r, face_y - 0.008, cz + 0.65 * r), 0.03 * r, 0.004)
 
 
+def _round_mirror(m: Model, f: float) -> None:
+    """A round glass in a ring frame that stays round whatever box the layout asked for: in
+    a box taller than wide a thin (wall) mirror hangs from a strap, a deep one stands on a
+    slim stand like a vanity mirror."""
+    r = min(m.sx, m.sz) / 2
+    ring = min(f / 2, 0.2 * r)
+    tall = m.sz - 2 * r > 0.1 * m.sz
+    hanging = tall and m.sy < 0.15 * m.sx
+    cz = r if hanging else m.sz - r
+    m.torus("wood", (0, 0, cz), r - ring, ring, axis="y")
+    m.cylinder("mirror", (0, 0.4 * m.sy, cz), (0, -0.2 * m.sy, cz), r - ring)
+    if hanging:
+        for s in (-1, 1):
+            m.beam("leather", (s * 0.35 * r, 0.3 * m.sy, cz + 0.9 * r), (0, 0.3 * m.sy, m.sz - 0.02 * m.sz), 0.1 * r, 0.2 * m.sy)
+        m.ball("brass", (0, 0.2 * m.sy, m.sz - 0.03 * m.sz), (0.06 * r, 0.3 * m.sy, 0.03 * m.sz), fraction=0.4)
+    elif tall:
+        m.post("wood", 0, 0, 0.04 * m.sz, cz - r + ring, min(0.3 * ring, 0.05 * m.sx) + 0.004, fraction=0.5)
+        m.lathe("wood", [(0.35 * m.sx, 0), (0.35 * m.sx, 0.03 * m.sz), (0.1 * m.sx, 0.05 * m.sz)], scale=(1, m.sy / (0.7 * m.sx)))
+
+
 def mirror(m: Model) -> None:
     m.main = "wood"
     f = m.thick(0.04, 0.12 * min(m.sx, m.sz))
     y0, y1 = -m.sy / 2, m.sy / 2
-    if abs(m.sx - m.sz) < 0.1 * max(m.sx, m.sz):
-        r = min(m.sx, m.sz) / 2
-        m.torus("wood", (0, 0, r), r - f / 2, f / 2, axis="y")
-        m.cylinder("mirror", (0, y1, r), (0, 0, r), r - f / 2)
+    if m.has("round", "circular") or abs(m.sx - m.sz) < 0.1 * max(m.sx, m.sz):
+        _round_mirror(m, f)
         return
     stand = m.sz > 1.4 and m.sy > 0.15
     if stand:
@@ -214,6 +233,9 @@ def picture_frame(m: Model) -> None:
 
 
 def trash_can(m: Model) -> None:
+    if m.named("basket", "hamper"):
+        _basket(m)
+        return
     m.main = "metal"
     r = min(m.sx, m.sy) / 2
     m.lathe("metal", [(0.82 * r, 0), (0.95 * r, 0.88 * m.sz)], scale=(m.sx / (2 * r), m.sy / (2 * r)))
@@ -312,7 +334,24 @@ def cup(m: Model) -> None:
     m.lathe("soil", [(0.85 * r, 0.8 * m.sz), (0.85 * r, 0.82 * m.sz)], centre=(-(m.sx / 2 - r), 0, 0))
 
 
+def _basket(m: Model) -> None:
+    m.main = "wood"
+    m.lathe("wood", [(0.0, 0.0), (0.38, 0.0), (0.5, 0.6 * m.sz), (0.46, 0.6 * m.sz), (0.34, 0.04 * m.sz), (0.0, 0.04 * m.sz)],
+            scale=(m.sx, m.sy))
+    for z in (0.15, 0.3, 0.45):
+        m.lathe("dark_wood", [(0.38 + 0.2 * z, z * m.sz), (0.38 + 0.2 * z, z * m.sz + 0.03 * m.sz)], scale=(m.sx * 1.02, m.sy * 1.02),
+                fraction=0.7)
+    m.torus("dark_wood", (0, 0, 0.6 * m.sz), 0.45 * m.sx, 0.02 * min(m.sx, m.sz), axis="y", arc=np.pi, fraction=0.5)
+    m.lathe("canvas", [(0.47, 0.56 * m.sz), (0.5, 0.64 * m.sz), (0.3, 0.6 * m.sz)], scale=(m.sx, m.sy), fraction=0.7)
+
+
 def bowl(m: Model) -> None:
+    if m.named("cauldron"):
+        _cauldron(m)
+        return
+    if m.named("basket", "hamper"):
+        _basket(m)
+        return
     m.main = "ceramic"
     r = 0.5
     h = m.sz * (0.6 if m.has("fruit") else 1.0)

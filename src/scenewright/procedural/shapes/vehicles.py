@@ -42,6 +42,9 @@ def car(m: Model) -> None:
 
 
 def truck(m: Model) -> None:
+    if m.named("tractor", "bulldozer", "harvester", "forklift", "golf cart"):
+        vehicle(m)
+        return
     food = m.named("food truck", "ice cream truck", "food van")
     m.main = "paint"
     wr = min(0.17 * m.sz, 0.07 * m.sy)
@@ -216,7 +219,178 @@ def treadmill(m: Model) -> None:
     m.box("screen", (-0.25 * m.sx, -0.35 * m.sy, 0.82 * m.sz), (0.25 * m.sx, -0.34 * m.sy, 0.95 * m.sz), rounded=0.0)
 
 
+def craft(m: Model) -> None:
+    """A spaceship or drone: a hull, wings or rotor arms, glowing engines."""
+    m.main = "metal"
+    if m.named("drone", "quadcopter"):
+        m.box("dark_plastic", (-0.2 * m.sx, -0.2 * m.sy, 0.3 * m.sz), (0.2 * m.sx, 0.2 * m.sy, 0.7 * m.sz))
+        for sx in (-1, 1):
+            for sy in (-1, 1):
+                c = np.array([sx * 0.35 * m.sx, sy * 0.35 * m.sy, 0.75 * m.sz])
+                m.beam("dark_plastic", (0, 0, 0.55 * m.sz), c, 0.05 * m.sx)
+                m.lathe("glass", [(0.15 * m.sx, 0.9 * m.sz), (0.15 * m.sx, m.sz)], centre=(c[0], c[1], 0))
+                m.cylinder("metal", c, c + (0, 0, 0.1 * m.sz), 0.03 * m.sx, fraction=0.5)
+        m.ball("light", (0, -0.2 * m.sy, 0.5 * m.sz), (0.05 * m.sx,) * 3, fraction=0.4)
+        m.post("dark_plastic", -0.1 * m.sx, 0, 0, 0.3 * m.sz, 0.02 * m.sx)
+        m.post("dark_plastic", 0.1 * m.sx, 0, 0, 0.3 * m.sz, 0.02 * m.sx)
+        return
+    m.ball("metal", (0, 0, 0.5 * m.sz), (0.2 * m.sx, 0.5 * m.sy, 0.25 * m.sz))
+    m.ball("glass", (0, -0.2 * m.sy, 0.65 * m.sz), (0.1 * m.sx, 0.18 * m.sy, 0.12 * m.sz), fraction=0.6)
+    m.extrude("paint", [(-m.sx / 2, 0.35 * m.sy), (-0.1 * m.sx, -0.2 * m.sy), (0.1 * m.sx, -0.2 * m.sy), (m.sx / 2, 0.35 * m.sy),
+                        (m.sx / 2, 0.45 * m.sy), (-m.sx / 2, 0.45 * m.sy)], "z", 0.4 * m.sz, 0.47 * m.sz)
+    m.extrude("paint", [(0.2 * m.sy, 0.5 * m.sz), (0.45 * m.sy, 0.5 * m.sz), (0.48 * m.sy, m.sz), (0.38 * m.sy, m.sz)],
+              "x", -0.02 * m.sx, 0.02 * m.sx)
+    for s in (-1, 1):
+        m.cylinder("light", (s * 0.1 * m.sx, 0.45 * m.sy, 0.45 * m.sz), (s * 0.1 * m.sx, m.sy / 2, 0.45 * m.sz), 0.06 * m.sx)
+    for x in (-0.15 * m.sx, 0.15 * m.sx):
+        m.post("dark_metal", x, 0, 0, 0.3 * m.sz, 0.02 * m.sx, fraction=0.4)
+
+
+def _tractor(m: Model) -> None:
+    """A farm tractor: big rear wheels under the cab, small front wheels, a long hood, an
+    exhaust stack."""
+    m.main = "paint"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    rear = min(0.42 * H, 0.3 * m.sy)
+    front = 0.55 * rear
+    yr, yf = L - rear, -L + front
+    for s in (-1, 1):
+        _wheel(m, s * W, yr, rear, 0.25 * m.sx, s)
+        _wheel(m, s * 0.8 * W, yf, front, 0.16 * m.sx, s)
+        m.torus("paint", (s * 0.85 * W, yr, rear), 1.05 * rear, 0.06 * rear, axis="x", arc=np.pi, fraction=0.6)
+    m.box("paint", (-0.35 * W, yf - 0.6 * front, 0.7 * front), (0.35 * W, yr - 0.3 * rear, 1.05 * rear))
+    m.box("dark_metal", (-0.3 * W, yf - 0.65 * front, 0.9 * front), (0.3 * W, yf - 0.6 * front, 1.0 * rear), rounded=0.0)
+    m.box("dark_metal", (-0.5 * W, yr - 0.5 * rear, 0.6 * rear), (0.5 * W, L - 0.05 * m.sy, 1.15 * rear))
+    cab_lo, cab_hi = 1.15 * rear, H - 0.04 * H
+    m.box("glass", (-0.5 * W, yr - 0.6 * rear, cab_lo), (0.5 * W, L - 0.08 * m.sy, cab_hi), rounded=0.0)
+    for x in (-0.5 * W, 0.48 * W):
+        for y in (yr - 0.6 * rear, L - 0.1 * m.sy):
+            m.box("dark_metal", (x, y, cab_lo), (x + 0.02 * W, y + 0.02 * m.sy, cab_hi), rounded=0.0)
+    m.box("paint", (-0.55 * W, yr - 0.65 * rear, cab_hi), (0.55 * W, L - 0.05 * m.sy, H))
+    m.post("dark_metal", 0.2 * W, yf + 0.3 * front, 1.0 * rear, 0.95 * H, 0.03 * m.sx + 0.01, fraction=0.4)
+    for s in (-1, 1):
+        m.box("light", (s * 0.25 * W - 0.06 * W, yf - 0.62 * front, 0.85 * rear), (s * 0.25 * W + 0.06 * W, yf - 0.6 * front, 0.95 * rear),
+              rounded=0.0)
+
+
+def _forklift(m: Model) -> None:
+    """A forklift: a low body with its counterweight, a mast and forks at the front, an
+    overhead guard over the seat."""
+    m.main = "yellow_paint"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    wr = 0.14 * H
+    mast_y = -L + 0.22 * m.sy
+    for s in (-1, 1):
+        _wheel(m, s * W, mast_y + 0.12 * m.sy, wr, 0.18 * m.sx, s)
+        _wheel(m, s * 0.9 * W, L - 0.2 * m.sy, 0.85 * wr, 0.16 * m.sx, s)
+    m.box("yellow_paint", (-0.8 * W, mast_y + 0.02 * m.sy, 0.5 * wr), (0.8 * W, L, 0.42 * H))
+    m.box("dark_metal", (-0.8 * W, L - 0.2 * m.sy, 0.42 * H), (0.8 * W, L, 0.55 * H))
+    m.box("dark_plastic", (-0.3 * W, 0.05 * m.sy, 0.42 * H), (0.3 * W, 0.25 * m.sy, 0.5 * H))
+    m.box("dark_plastic", (-0.3 * W, 0.2 * m.sy, 0.5 * H), (0.3 * W, 0.25 * m.sy, 0.65 * H))
+    for x in (-0.45 * W, 0.45 * W):
+        m.box("dark_metal", (x - 0.06 * W, mast_y - 0.03 * m.sy, 0.02 * H), (x + 0.06 * W, mast_y, H))
+    m.box("dark_metal", (-0.55 * W, mast_y - 0.06 * m.sy, 0.05 * H), (0.55 * W, mast_y - 0.03 * m.sy, 0.3 * H))
+    for x in (-0.3 * W, 0.3 * W):
+        m.box("metal", (x - 0.05 * W, -L, 0.02 * H), (x + 0.05 * W, mast_y - 0.06 * m.sy, 0.04 * H), rounded=0.0)
+    guard = 0.9 * H
+    for x in (-0.75 * W, 0.75 * W):
+        for y in (mast_y + 0.08 * m.sy, L - 0.22 * m.sy):
+            m.beam("dark_metal", (x, y, 0.42 * H), (x, y, guard), 0.04 * m.sx + 0.01)
+    for k in range(4):
+        x = -0.75 * W + k * 0.5 * W
+        m.beam("dark_metal", (x, mast_y + 0.08 * m.sy, guard), (x, L - 0.22 * m.sy, guard), 0.03 * m.sx + 0.01)
+    m.box("light", (0.5 * W, mast_y + 0.03 * m.sy, guard - 0.05 * H), (0.7 * W, mast_y + 0.06 * m.sy, guard), rounded=0.0)
+
+
+def _golf_cart(m: Model) -> None:
+    """A golf cart: a small open body, a bench seat, a roof on four posts, a windscreen."""
+    m.main = "fur_white"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    wr = 0.14 * H
+    for y in (-L + 0.2 * m.sy, L - 0.2 * m.sy):
+        for s in (-1, 1):
+            _wheel(m, s * W, y, wr, 0.12 * m.sx, s)
+    m.box("fur_white", (-0.85 * W, -L, 0.6 * wr), (0.85 * W, L, 0.3 * H))
+    m.box("fur_white", (-0.85 * W, -L, 0.3 * H), (0.85 * W, -L + 0.25 * m.sy, 0.42 * H))
+    m.box("leather", (-0.75 * W, 0.05 * m.sy, 0.3 * H), (0.75 * W, 0.3 * m.sy, 0.4 * H))
+    m.box("leather", (-0.75 * W, 0.25 * m.sy, 0.4 * H), (0.75 * W, 0.32 * m.sy, 0.62 * H))
+    roof = 0.95 * H
+    for x in (-0.8 * W, 0.8 * W):
+        for y in (-L + 0.27 * m.sy, 0.35 * m.sy):
+            m.post("metal", x, y, 0.3 * H, roof, 0.02 * m.sx + 0.005, fraction=0.3)
+    m.box("fur_white", (-0.9 * W, -L + 0.2 * m.sy, roof), (0.9 * W, 0.45 * m.sy, H))
+    m.box("glass", (-0.8 * W, -L + 0.26 * m.sy, 0.45 * H), (0.8 * W, -L + 0.27 * m.sy, roof), rounded=0.0)
+    m.cylinder("dark_plastic", (0.3 * W, -L + 0.3 * m.sy, 0.5 * H), (0.3 * W, -L + 0.25 * m.sy, 0.55 * H), 0.15 * W, fraction=0.4)
+    m.box("canvas_alt", (-0.5 * W, L - 0.05 * m.sy, 0.3 * H), (0.5 * W, L, 0.7 * H))
+
+
+def _battle_tank(m: Model) -> None:
+    """A battle tank: tracks with road wheels, a hull with a sloped glacis, a turret and gun."""
+    m.main = "olive_paint"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    track_h = 0.4 * H
+    for s in (-1, 1):
+        x0, x1 = sorted((s * W, s * 0.65 * W))
+        m.extrude("rubber", [(-L, 0.5 * track_h), (-L + 0.1 * m.sy, 0), (L - 0.08 * m.sy, 0), (L, 0.5 * track_h), (L - 0.04 * m.sy, track_h),
+                             (-L + 0.04 * m.sy, track_h)], "x", x0, x1)
+        for k in range(6):
+            y = -L + 0.15 * m.sy + k * 0.7 * m.sy / 5
+            m.cylinder("dark_metal", (s * W * 1.001, y, 0.35 * track_h), (s * W * 1.02, y, 0.35 * track_h), 0.3 * track_h, fraction=0.4)
+    m.extrude("olive_paint", [(-L + 0.05 * m.sy, 0.35 * track_h), (L, 0.35 * track_h), (L, 0.6 * H), (-0.2 * L, 0.6 * H), (-L, 1.1 * track_h)],
+              "x", -0.65 * W, 0.65 * W)
+    m.box("olive_paint", (-W, -L + 0.1 * m.sy, track_h), (W, L, 1.1 * track_h), rounded=0.0)
+    m.lathe("olive_paint", [(0.5, 0.6 * H), (0.42, 0.85 * H), (0.0, 0.87 * H)], centre=(0, 0.1 * m.sy, 0), scale=(0.9 * W, 0.55 * L))
+    m.cylinder("olive_paint", (0, -0.2 * L, 0.74 * H), (0, -L, 0.76 * H), 0.05 * H, fraction=0.5)
+    m.cylinder("dark_metal", (0, -L, 0.76 * H), (0, -L - 0.001, 0.76 * H), 0.04 * H, fraction=0.4)
+    m.lathe("dark_metal", [(0.12 * W, 0.86 * H), (0.1 * W, H)], centre=(0.25 * W, 0.25 * L, 0), fraction=0.5)
+
+
+def _locomotive(m: Model) -> None:
+    """A steam locomotive: a boiler on a frame, a chimney, a cab, large driving wheels."""
+    m.main = "dark_metal"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    wr = 0.2 * H
+    for k in range(3):
+        y = -0.25 * L + k * 0.35 * L
+        for s in (-1, 1):
+            _wheel(m, s * 0.9 * W, y, wr, 0.1 * m.sx, s)
+    for s in (-1, 1):
+        _wheel(m, s * 0.85 * W, -0.8 * L, 0.6 * wr, 0.1 * m.sx, s)
+    m.box("dark_metal", (-0.7 * W, -L, 0.8 * wr), (0.7 * W, L, 1.3 * wr))
+    br = min(0.6 * W, 0.22 * H)
+    m.cylinder("dark_metal", (0, -0.95 * L, 1.3 * wr + br), (0, 0.35 * L, 1.3 * wr + br), br)
+    m.cylinder("accent", (0, -0.95 * L, 1.3 * wr + br), (0, -0.97 * L, 1.3 * wr + br), 0.9 * br)
+    m.cylinder("dark_metal", (0, -0.75 * L, 1.3 * wr + 1.8 * br), (0, -0.75 * L, H), 0.3 * br, 0.4 * br, fraction=0.5)
+    m.ball("brass", (0, -0.2 * L, 1.3 * wr + 2 * br), (0.3 * br, 0.4 * br, 0.3 * br), fraction=0.5)
+    m.box("accent", (-W, 0.35 * L, 1.3 * wr), (W, L, 0.9 * H))
+    m.box("glass", (-1.001 * W, 0.45 * L, 0.6 * H), (1.001 * W, 0.8 * L, 0.8 * H), rounded=0.0)
+    m.box("dark_metal", (-1.05 * W, 0.3 * L, 0.9 * H), (1.05 * W, L, 0.95 * H))
+    m.extrude("dark_metal", [(-L, 0.0), (-0.85 * L, 0.0), (-0.85 * L, 0.8 * wr), (-L, 0.8 * wr)], "x", -0.7 * W, 0.7 * W)
+    m.box("light", (-0.2 * W, -0.99 * L, 1.3 * wr + 1.6 * br), (0.2 * W, -0.95 * L, 1.3 * wr + 1.9 * br))
+
+
+def vehicle(m: Model) -> None:
+    """A vehicle the catalogue does not know: tractor, forklift, golf cart, cart, battle
+    tank, locomotive, or a flying craft (drone, spaceship); else a car."""
+    variants = (
+        (("tractor", "bulldozer", "harvester", "combine"), _tractor),
+        (("forklift", "fork lift", "pallet truck"), _forklift),
+        (("golf cart", "buggy", "gokart", "go-kart", "kart", "rickshaw"), _golf_cart),
+        (("army tank", "battle tank", "military tank", "panzer", "armored", "armoured", "tank"), _battle_tank),
+        (("locomotive", "train", "engine car", "steam engine"), _locomotive),
+        (("cart", "wagon", "carriage", "wheelbarrow", "trolley", "chariot"), cart),
+        (("spaceship", "spacecraft", "starship", "drone", "quadcopter", "jet", "airplane", "plane", "aircraft", "ufo",
+          "shuttle", "helicopter", "rocket ship"), craft),
+    )
+    for words, build in variants:
+        if m.named(*words):
+            build(m)
+            return
+    car(m)
+
+
 SHAPES = {
+    "vehicle": vehicle,
     "car": car, "truck": truck, "bus": bus, "bicycle": bicycle, "boat": boat, "cart": cart, "robot": robot,
     "treadmill": treadmill,
 }

@@ -1,0 +1,302 @@
+"""Large open structures, upright panels and containers the catalogue does not know one by
+one: a ferris wheel, crane, carousel, stage or scaffold; a screen, banner or notice board;
+a box, trunk, sack or basket. Fronts face −Y."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from scenewright.procedural.builder import Model
+from scenewright.procedural.shapes.buildings import _crane, _windmill
+from scenewright.procedural.shapes.props import _basket, _chest
+
+
+def _ferris_wheel(m: Model) -> None:
+    """Two rims joined by spokes and cabins, on an A-frame, over a boarding platform; the
+    wheel turns in the x–z plane, facing the viewer."""
+    m.main = "paint"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    R = min(W, 0.5 * H) * 0.9
+    hub = np.array([0.0, 0.0, H - R - 0.06 * H])
+    bar = 0.012 * R + 0.01
+    rims = (-0.45 * D, 0.45 * D)
+    spokes = 16
+    for y in rims:
+        m.torus("paint", hub + (0, y, 0), R, 1.5 * bar, axis="y", fraction=1.0)
+        m.torus("metal", hub + (0, y, 0), 0.55 * R, bar, axis="y", fraction=0.8)
+        for k in range(spokes):
+            a = 2 * np.pi * k / spokes
+            m.beam("metal", hub + (0, y, 0), hub + (np.cos(a) * R, y, np.sin(a) * R), bar)
+    m.cylinder("dark_metal", hub + (0, -0.7 * D, 0), hub + (0, 0.7 * D, 0), 0.05 * R, fraction=0.5)
+    for s in (-1, 1):
+        for y in (-0.75 * D, 0.75 * D):
+            m.beam("dark_metal", (s * 0.6 * R, y, 0.05 * H), hub + (0, 0.93 * y, 0), 2.5 * bar)
+    cabins = 8
+    cabin = 0.14 * R
+    roles = ("accent", "book_b", "flower_alt", "leaf")
+    for k in range(cabins):
+        a = 2 * np.pi * k / cabins + np.pi / cabins
+        c = hub + (np.cos(a) * R, 0, np.sin(a) * R - 1.2 * cabin)
+        role = roles[k % len(roles)]
+        m.cbox(role, c, (1.4 * cabin, 0.7 * D, 1.2 * cabin))
+        m.cbox("canvas_alt", c + (0, 0, 0.75 * cabin), (1.5 * cabin, 0.75 * D, 0.25 * cabin))
+    m.box("concrete", (-0.7 * R, -D, 0), (0.7 * R, D, 0.05 * H))
+    m.box("wall", (-0.25 * R, -D, 0.05 * H), (0.25 * R, -0.5 * D, 0.12 * H))
+
+
+def _carousel(m: Model) -> None:
+    """A carousel: round platform, centre column, striped conical canopy, horses on poles."""
+    m.main = "canvas"
+    H = m.sz
+    deck = 0.08 * H
+    eave = 0.7 * H
+    m.lathe("wood", [(0.48, 0), (0.48, deck)], scale=(m.sx, m.sy))
+    m.lathe("brass", [(0.08, deck), (0.08, eave)], scale=(m.sx, m.sy), fraction=0.6)
+    m.lathe("canvas_alt", [(0.5, eave), (0.5, eave + 0.06 * H)], scale=(m.sx, m.sy))
+    stripes = 12
+    for k in range(stripes):
+        a0, a1 = 2 * np.pi * k / stripes, 2 * np.pi * (k + 1) / stripes
+        role = "canvas" if k % 2 else "canvas_alt"
+        m.extrude(role, [(0, 0), (0.5 * np.cos(a0) * m.sx, 0.5 * np.sin(a0) * m.sy), (0.5 * np.cos(a1) * m.sx, 0.5 * np.sin(a1) * m.sy)],
+                  "z", eave + 0.06 * H, eave + 0.07 * H)
+        m.add(role, _cone_slice(m, a0, a1, eave + 0.06 * H, H - 0.04 * H))
+    m.ball("gold", (0, 0, H - 0.03 * H), (0.03 * m.sx, 0.03 * m.sy, 0.03 * H), fraction=0.4)
+    horses = 8
+    for k in range(horses):
+        a = 2 * np.pi * k / horses
+        x, y = 0.36 * np.cos(a) * m.sx, 0.36 * np.sin(a) * m.sy
+        m.post("brass", x, y, deck, eave, 0.006 * min(m.sx, m.sy) + 0.01, fraction=0.3)
+        z = deck + (0.22 + 0.08 * (k % 2)) * H
+        t = np.array([-np.sin(a), np.cos(a), 0.0])
+        size = 0.07 * min(m.sx, m.sy)
+        body = np.array([x, y, z])
+        radii = np.abs(t) * 1.1 * size + (1 - np.abs(t)) * 0.4 * size
+        radii[2] = 0.45 * size
+        m.ball("fur_white", body, radii, fraction=0.5)
+        m.ball("fur_white", body + t * 1.1 * size + (0, 0, 0.5 * size), (0.3 * size,) * 3, fraction=0.4)
+        for s in (-0.7, 0.7):
+            m.beam("fur_white", body + s * t * size, body + s * t * size - (0, 0, 0.9 * size), 0.12 * size)
+
+
+def _cone_slice(m: Model, a0: float, a1: float, z0: float, z1: float):
+    """One gore of a conical roof from angle ``a0`` to ``a1``: a triangle to the apex."""
+    from scenewright.procedural import parts as P
+
+    points = np.array([[0.5 * np.cos(a0) * m.sx, 0.5 * np.sin(a0) * m.sy, z0],
+                       [0.5 * np.cos(a1) * m.sx, 0.5 * np.sin(a1) * m.sy, z0], [0.0, 0.0, z1]])
+    return P.flatten(P.Part(points, np.array([[0, 1, 2], [0, 2, 1]]), np.zeros_like(points)))
+
+
+def _stage(m: Model) -> None:
+    """A stage: a raised platform with steps, a backdrop and a lighting truss on posts."""
+    m.main = "dark_wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    deck = min(0.2 * H, 0.4 * D) + 0.05
+    m.box("dark_wood", (-W, -D, 0), (W, D, deck))
+    m.box("dark_plastic", (-W, -D - 0.001, 0), (W, -D + 0.01 * D, deck), rounded=0.0)
+    steps = 3
+    for k in range(steps):
+        h = deck * (k + 1) / (steps + 1)
+        m.box("dark_wood", (0.55 * W, -D - (steps - k) * 0.06 * D, 0), (0.8 * W, -D, h))
+    m.box("canvas", (-0.95 * W, 0.85 * D, deck), (0.95 * W, D, 0.85 * H))
+    post = 0.015 * m.sx + 0.03
+    for x in (-W + post, W - post):
+        for y in (-0.8 * D, 0.9 * D):
+            m.post("dark_metal", x, y, deck, H, post, fraction=0.4)
+    for y in (-0.8 * D, 0.9 * D):
+        m.beam("dark_metal", (-W, y, H - post), (W, y, H - post), 2 * post)
+    for x in (-W, W):
+        m.beam("dark_metal", (x, -0.8 * D, H - post), (x, 0.9 * D, H - post), 2 * post)
+    for k in range(6):
+        x = -0.8 * W + k * 0.32 * W
+        m.cylinder("dark_plastic", (x, -0.8 * D, H - 2 * post), (x, -0.85 * D, H - 5 * post), 1.2 * post, fraction=0.4)
+        m.cylinder("light", (x, -0.85 * D, H - 5 * post), (x, -0.86 * D, H - 5.3 * post), 1.1 * post, fraction=0.4)
+    m.post("dark_metal", 0, -0.3 * D, deck, deck + 0.3 * (H - deck), 0.01 * m.sx + 0.005, fraction=0.3)
+    m.ball("dark_metal", (0, -0.3 * D, deck + 0.3 * (H - deck)), (0.02 * m.sx + 0.01,) * 3, fraction=0.3)
+
+
+def _scaffold(m: Model) -> None:
+    """Scaffolding: a grid of tubes with planks on each lift and diagonal braces."""
+    m.main = "metal"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    tube = 0.006 * max(m.sx, m.sz) + 0.02
+    bays = max(1, min(8, int(round(m.sx / 2.0))))
+    lifts = max(1, min(8, int(round(m.sz / 2.0))))
+    xs = np.linspace(-W + tube, W - tube, bays + 1)
+    ys = (-D + tube, D - tube)
+    for x in xs:
+        for y in ys:
+            m.post("metal", x, y, 0.01 * H, H, tube, fraction=0.3)
+            m.box("dark_wood", (x - 3 * tube, y - 2 * tube, 0), (x + 3 * tube, y + 2 * tube, 0.01 * H))
+    for j in range(1, lifts + 1):
+        z = H * j / lifts - tube
+        for y in ys:
+            m.cylinder("metal", (-W, y, z), (W, y, z), tube, fraction=0.3)
+        for x in xs:
+            m.cylinder("metal", (x, -D, z), (x, D, z), tube, fraction=0.3)
+        m.box("wood", (-W + tube, -D + 2 * tube, z + tube), (W - tube, D - 2 * tube, z + tube + 0.04))
+    for i in range(bays):
+        m.beam("metal", (xs[i], -D + tube, 0.05 * H), (xs[i + 1], -D + tube, H - tube), 0.8 * tube)
+
+
+def _truss(m: Model) -> None:
+    """A generic open structure: a gantry of two lattice towers joined by a truss."""
+    m.main = "metal"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    bar = 0.01 * max(m.sx, m.sz) + 0.02
+    legs = min(0.25 * W, D)
+    for x0 in (-W + legs, W - legs):
+        corners = [(x0 - legs, -legs), (x0 + legs, -legs), (x0 + legs, legs), (x0 - legs, legs)]
+        for x, y in corners:
+            m.beam("metal", (x, y, 0), (x, y, H), bar)
+        for k in range(4):
+            z0, z1 = H * k / 4, H * (k + 1) / 4
+            for (ax, ay), (bx, by) in zip(corners, corners[1:] + corners[:1]):
+                m.beam("metal", (ax, ay, z0), (bx, by, z1), 0.6 * bar)
+    for y in (-legs, legs):
+        for z in (H - bar, 0.85 * H):
+            m.beam("metal", (-W, y, z), (W, y, z), bar)
+        for k in range(8):
+            x0, x1 = -W + 2 * W * k / 8, -W + 2 * W * (k + 1) / 8
+            m.beam("metal", (x0, y, 0.85 * H), (x1, y, H - bar), 0.6 * bar)
+    m.box("accent", (-0.3 * W, -legs - bar, 0.86 * H), (0.3 * W, -legs, H - 2 * bar), rounded=0.0)
+
+
+def structure(m: Model) -> None:
+    """A large open structure; its name picks it: ferris wheel, windmill, crane, carousel,
+    stage, scaffold; else a truss gantry."""
+    variants = (
+        (("ferris wheel", "big wheel", "observation wheel", "wheel"), _ferris_wheel),
+        (("windmill", "wind turbine"), _windmill),
+        (("crane", "tower crane", "gantry crane"), _crane),
+        (("carousel", "merry-go-round", "merry go round", "roundabout"), _carousel),
+        (("stage", "bandstand", "podium", "platform"), _stage),
+        (("scaffold", "scaffolding"), _scaffold),
+    )
+    for words, build in variants:
+        if m.named(*words):
+            build(m)
+            return
+    _truss(m)
+
+
+def panel(m: Model) -> None:
+    """A flat upright board: a screen on feet, a banner between poles, a notice board on
+    legs, a tilted solar panel; else a painted board on two feet."""
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    t = min(0.3 * D, 0.03 * max(m.sx, m.sz)) + 0.005
+    if m.named("solar panel", "solar"):
+        m.main = "screen"
+        for x in (-0.8 * W, 0.8 * W):
+            for y, top in ((0.6 * D, 0.9 * H), (-0.6 * D, 0.3 * H)):
+                m.post("metal", x, y, 0.04 * H, top, 0.02 * W + 0.01, fraction=0.3)
+                m.box("concrete", (x - 0.08 * W, y - 0.1 * D, 0), (x + 0.08 * W, y + 0.1 * D, 0.04 * H))
+        m.extrude("metal", [(-D, 0.25 * H), (D, 0.92 * H), (D, H), (-D, 0.33 * H)], "x", -W, W)
+        for k in range(6):
+            x = -W + (k + 0.5) * 2 * W / 6
+            m.extrude("screen", [(-0.95 * D, 0.34 * H), (0.95 * D, 1.0 * H), (0.95 * D, 1.005 * H), (-0.95 * D, 0.345 * H)], "x",
+                      x - 0.15 * W, x + 0.15 * W)
+        return
+    if m.named("banner", "flag", "tapestry", "pennant"):
+        m.main = "canvas"
+        pole = 0.03 * W + 0.01
+        for x in (-W + pole, W - pole):
+            m.post("dark_wood", x, 0, 0, H, pole, fraction=0.4)
+            m.ball("gold", (x, 0, H - pole), (1.5 * pole,) * 3, fraction=0.4)
+        m.cylinder("dark_wood", (-W, 0, 0.95 * H), (W, 0, 0.95 * H), 0.7 * pole, fraction=0.4)
+        m.extrude("canvas", [(-W + 2 * pole, 0.94 * H), (W - 2 * pole, 0.94 * H), (W - 2 * pole, 0.3 * H), (0, 0.22 * H),
+                             (-W + 2 * pole, 0.3 * H)], "y", -0.5 * t, 0.5 * t)
+        m.box("canvas_alt", (-0.6 * W, -0.5 * t - 0.003, 0.6 * H), (0.6 * W, -0.5 * t, 0.75 * H), rounded=0.0)
+        return
+    board_lo = (0.35 if m.named("notice board", "bulletin board", "noticeboard", "corkboard", "cork board") else 0.25) * H
+    if m.named("screen", "display", "monitor", "video wall", "projection screen", "jumbotron", "hologram", "holo"):
+        m.main = "dark_plastic"
+        m.box("dark_plastic", (-W, -0.2 * D, board_lo), (W, 0.4 * D, H))
+        m.box("screen", (-0.95 * W, -0.2 * D - 0.005, board_lo + 0.04 * (H - board_lo)), (0.95 * W, -0.2 * D, H - 0.04 * (H - board_lo)),
+              rounded=0.0)
+        for x in (-0.5 * W, 0.5 * W):
+            m.box("dark_metal", (x - 0.05 * W, 0.0, 0), (x + 0.05 * W, 0.3 * D, board_lo))
+            m.box("dark_metal", (x - 0.08 * W, -D, 0), (x + 0.08 * W, D, 0.03 * H))
+        return
+    notice = board_lo > 0.3 * H
+    m.main = "wood" if notice else "paint"
+    frame = 0.04 * min(m.sx, H - board_lo)
+    m.box("wood" if notice else "paint", (-W, -0.5 * t, board_lo), (W, 0.5 * t, H))
+    m.box("fur_light" if notice else "canvas_alt", (-W + frame, -0.5 * t - 0.004, board_lo + frame), (W - frame, -0.5 * t, H - frame),
+          rounded=0.0)
+    if notice:
+        for k in range(6):
+            cx = m.vary(-0.7, 0.7) * W
+            cz = board_lo + m.vary(0.2, 0.8) * (H - board_lo)
+            w, h = m.vary(0.1, 0.2) * m.sx, m.vary(0.1, 0.25) * (H - board_lo)
+            m.box(("paper", "canvas_alt", "flower_alt")[k % 3], (cx - w / 2, -0.5 * t - 0.006, cz - h / 2), (cx + w / 2, -0.5 * t - 0.004, cz + h / 2),
+                  rounded=0.0)
+            m.ball("accent", (cx, -0.5 * t - 0.008, cz + 0.4 * h), (0.01 * m.sx,) * 3, fraction=0.3)
+    else:
+        m.box("accent", (-0.7 * W, -0.5 * t - 0.006, board_lo + 0.6 * (H - board_lo)), (0.7 * W, -0.5 * t - 0.004, board_lo + 0.8 * (H - board_lo)),
+              rounded=0.0)
+    leg = min(0.06 * W, 0.4 * D) + 0.01
+    for x in (-0.8 * W, 0.8 * W):
+        m.box("dark_wood" if notice else "dark_metal", (x - leg, -0.5 * t, 0), (x + leg, 0.5 * t + leg, board_lo + 0.1 * (H - board_lo)))
+        m.box("dark_wood" if notice else "dark_metal", (x - 1.5 * leg, -D, 0), (x + 1.5 * leg, D, 0.03 * H))
+
+
+def _box(m: Model) -> None:
+    """A cardboard box with its flaps taped shut."""
+    m.main = "fur_light"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.box("fur_light", (-W, -D, 0), (W, D, H), rounded=0.01 * min(m.sx, m.sy, m.sz))
+    m.box("paper", (-0.12 * W, -1.005 * D, 0.7 * H), (0.12 * W, 1.005 * D, 1.003 * H), rounded=0.0)
+    m.box("paper", (-0.12 * W, -1.005 * D, 0.7 * H), (0.12 * W, -D, H), rounded=0.0)
+    m.box("canvas_alt", (0.3 * W, -1.004 * D, 0.2 * H), (0.8 * W, -D, 0.45 * H), rounded=0.0)
+    m.box("fur_dark", (-W, -0.01 * D, 0.997 * H), (W, 0.01 * D, 1.001 * H), rounded=0.0)
+
+
+def _trunk(m: Model) -> None:
+    """A travel trunk: a box with leather straps, brass corners, a lock and side handles."""
+    m.main = "dark_wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.box("dark_wood", (-W, -D, 0), (W, D, H))
+    m.box("dark_metal", (-1.005 * W, -1.005 * D, 0.62 * H), (1.005 * W, 1.005 * D, 0.66 * H), rounded=0.0)
+    for x in (-0.5 * W, 0.5 * W):
+        m.box("leather", (x - 0.07 * W, -1.01 * D, 0), (x + 0.07 * W, 1.01 * D, 1.01 * H), rounded=0.0)
+    c = 0.12 * min(W, D, H)
+    for x in (-W, W - c):
+        for y in (-D, D - c):
+            for z in (0, H - c):
+                m.box("brass", (x - 0.01 * c, y - 0.01 * c, z - 0.01 * c), (x + 1.01 * c, y + 1.01 * c, z + 1.01 * c), rounded=0.0)
+    m.box("brass", (-0.08 * W, -1.02 * D, 0.5 * H), (0.08 * W, -D, 0.68 * H), rounded=0.0)
+    for s in (-1, 1):
+        m.torus("leather", (s * W, 0, 0.6 * H), 0.15 * D, 0.03 * H, axis="x", arc=np.pi, fraction=0.4)
+
+
+def _sack(m: Model) -> None:
+    """A sack: a lumpy bag tied at the neck, its top flopping over."""
+    m.main = "canvas_alt"
+    r = 0.5
+    m.lathe("canvas_alt", [(0.0, 0.0), (0.38 * r * 2, 0.02 * m.sz), (0.48 * r * 2, 0.3 * m.sz), (0.42 * r * 2, 0.65 * m.sz),
+                           (0.15 * r * 2, 0.8 * m.sz), (0.1 * r * 2, 0.84 * m.sz)], scale=(m.sx, m.sy))
+    m.lathe("bark", [(0.11, 0.78 * m.sz), (0.11, 0.84 * m.sz)], scale=(m.sx, m.sy), fraction=0.5)
+    m.ball("canvas_alt", (0.05 * m.sx, 0, 0.9 * m.sz), (0.18 * m.sx, 0.16 * m.sy, 0.1 * m.sz), fraction=0.5)
+    m.box("accent", (-0.15 * m.sx, -0.47 * m.sy, 0.3 * m.sz), (0.15 * m.sx, -0.45 * m.sy, 0.5 * m.sz), rounded=0.0)
+
+
+def container(m: Model) -> None:
+    """Something that holds things: a cardboard box, a treasure chest, a travel trunk, a
+    sack, a basket; else a box."""
+    variants = (
+        (("chest", "treasure", "coffer"), _chest),
+        (("trunk", "footlocker", "suitcase", "luggage"), _trunk),
+        (("sack", "bag", "sandbag", "pouch"), _sack),
+        (("basket", "hamper"), _basket),
+    )
+    for words, build in variants:
+        if m.named(*words):
+            if build is _chest:
+                m.main = "wood"
+            build(m)
+            return
+    _box(m)
+
+
+SHAPES = {"structure": structure, "panel": panel, "container": container}

@@ -1,0 +1,140 @@
+"""Shape families for unknown nouns: each family and variant is a recognisable, styled,
+multi-material object in its box, and names reach the right family."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from test_procedural import FAMILIES, assert_fills, base_colours, load, scene_frame
+
+from scenewright.procedural.meshes import build_glb, build_model, choose_shape
+from scenewright.procedural.shapes.families import FAMILY_WORDS, family_of
+from scenewright.scene import STYLES
+
+CASES = [(family, name) for family, names in FAMILIES.items() for name in names]
+BOX = (1.0, 2.0, 2.0)
+
+
+def points(shape: str, size, name: str, roles=None) -> np.ndarray:
+    parts = scene_frame(build_model(shape, size, "realistic", 1, name=name))
+    return np.concatenate([g.vertices for role, g in parts.items() if roles is None or role in roles])
+
+
+@pytest.mark.parametrize(("family", "name"), CASES)
+def test_every_variant_fills_its_box_with_several_materials(family, name):
+    size = (1.2, 1.6, 1.4)
+    glb = build_glb(family, size, "realistic", 4, name=name)
+    assert_fills(glb, size)
+    scene = load(glb)
+    assert len(scene.geometry) >= 3, f"{name}: parts with their own materials"
+    assert sum(len(g.faces) for g in scene.geometry.values()) <= 6000
+
+
+@pytest.mark.parametrize("family", sorted(FAMILIES))
+def test_a_family_s_variants_differ(family):
+    looks = {tuple(sorted((role, len(g.vertices)) for role, g in build_model(family, (1, 1, 1), "realistic", 1, name=n).geometry.items()))
+             for n in FAMILIES[family]}
+    assert len(looks) == len(FAMILIES[family])
+
+
+@pytest.mark.parametrize("family", sorted(FAMILY_WORDS))
+def test_styles_restyle_every_family(family):
+    name = FAMILIES[family][0]
+    looks = set()
+    for style in STYLES:
+        scene = build_model(family, (1, 1, 1), style, 1, name=name)
+        looks.add(tuple(np.round(np.concatenate(sorted(base_colours(scene).values(), key=tuple)), 2)))
+    assert len(looks) == len(STYLES)
+
+
+def test_animals_read_as_their_animal():
+    def mid_height(name):
+        p = points("animal", BOX, name)
+        middle = p[(np.abs(p[:, 1]) < 0.2 * BOX[1]) & (np.abs(p[:, 0]) < 0.2 * BOX[0])]
+        return middle[:, 2].max() / BOX[2]
+
+    assert mid_height("camel") > mid_height("horse") + 0.15, "a camel has a hump in the middle of its back"
+    giraffe = points("animal", BOX, "giraffe")
+    assert giraffe[giraffe[:, 2] > 0.9 * BOX[2], 1].mean() < -0.3 * BOX[1], "a giraffe's head is high and in front"
+    trunk = points("animal", BOX, "elephant")
+    assert np.any((trunk[:, 1] < -0.3 * BOX[1]) & (trunk[:, 2] < 0.25 * BOX[2]) & (np.abs(trunk[:, 0]) < 0.15 * BOX[0])), \
+        "an elephant's trunk reaches down in front"
+    wings = points("animal", BOX, "dragon", roles={"wing"})
+    assert np.abs(wings[:, 0]).max() > 0.45 * BOX[0] and wings[:, 2].max() > 0.9 * BOX[2], "a dragon spreads its wings"
+    pig = scene_frame(build_model("animal", (0.5, 1.0, 0.55), "realistic", 1, name="pig"))
+    assert "skin_pink" in pig, "a pig is pink"
+
+
+def test_figures_stand_and_hold_what_they_are_named_for():
+    size = (0.6, 0.5, 1.75)
+    musician = scene_frame(build_model("figure", size, "realistic", 1, name="street musician"))
+    assert musician["hair"].vertices[:, 2].max() > 0.95 * size[2], "the head is at the top"
+    guitar = musician["wood"].vertices
+    assert guitar[:, 1].max() < 0 and 0.3 * size[2] < guitar[:, 2].mean() < 0.7 * size[2], "a guitar held in front"
+    knight = scene_frame(build_model("figure", size, "realistic", 1, name="knight"))
+    assert {"metal", "chrome", "paint"} <= set(knight), "armour, a sword and a shield"
+    assert "hair" not in knight
+
+
+def test_structures_and_tanks_have_their_shape():
+    wheel = points("structure", (20, 8, 22), "ferris wheel", roles={"paint"})
+    hub = np.array([0.0, 22 - 0.06 * 22 - 0.9 * 10])
+    radius = np.hypot(wheel[:, 0] - hub[0], wheel[:, 2] - hub[1])
+    rims = radius[radius > 5]
+    assert rims.std() < 0.05 * rims.mean(), "the ferris wheel's rims are circles about the hub"
+    fuel = points("tank", (3, 1.4, 1.6), "fuel tank", roles={"paint"})
+    assert np.ptp(fuel[:, 0]) > 2 * np.ptp(fuel[:, 2]), "a fuel tank lies on its side"
+    silo = points("tank", (3, 3, 8), "silo")
+    assert np.ptp(silo[:, 2]) > 2 * np.ptp(silo[:, 0])
+
+
+def test_a_statue_shows_its_subject_on_a_plinth():
+    size = (1.5, 1.5, 2.5)
+    lion = scene_frame(build_model("statue", size, "realistic", 1, name="lion statue"))
+    person = scene_frame(build_model("statue", size, "realistic", 1, name="statue"))
+    for statue in (lion, person):
+        assert statue["stone"].vertices[:, 2].max() < 0.25 * size[2] and statue["marble"].vertices[:, 2].min() > 0.15 * size[2]
+    lion_extent, person_extent = np.ptp(lion["marble"].vertices, axis=0), np.ptp(person["marble"].vertices, axis=0)
+    assert lion_extent[1] > 1.3 * lion_extent[0], "a four-legged subject runs front to back"
+    assert person_extent[2] > 1.5 * person_extent[1], "a figure stands"
+    gold = build_model("statue", size, "realistic", 1, name="gold statue").geometry
+    assert "gold" in gold and gold["gold"].visual.material.metallicFactor == 1.0
+
+
+def test_a_round_mirror_is_round_in_any_box():
+    for size in ((0.6, 0.04, 0.9), (0.6, 0.3, 1.5), (0.8, 0.05, 0.8)):
+        glass = scene_frame(build_model("mirror", size, "realistic", 1, name="round mirror"))["mirror"].vertices
+        width, _, height = np.ptp(glass, axis=0)
+        assert width == pytest.approx(height, rel=0.02), size
+    square = scene_frame(build_model("mirror", (0.6, 0.04, 0.9), "realistic", 1, name="mirror"))["mirror"].vertices
+    assert np.ptp(square[:, 2]) > 1.3 * np.ptp(square[:, 0])
+
+
+@pytest.mark.parametrize(
+    ("name", "family"),
+    [("camel", "animal"), ("three pigs", "animal"), ("dragon statue", "animal"), ("statue of a horse", "animal"),
+     ("street musician", "figure"), ("man with a guitar", "figure"), ("fuel tanks", "tank"), ("ferris wheel", "structure"),
+     ("anvil", "tool"), ("boxes", "container"), ("notice board", "panel"), ("golf cart", "vehicle"), ("parrot", "bird"),
+     ("horse cart", None), ("queen bed", None), ("hot dog stand", None), ("statue", None)],
+)
+def test_a_name_s_head_noun_picks_the_family(name, family):
+    assert family_of(name) == family
+
+
+@pytest.mark.parametrize(
+    ("name", "category", "shape"),
+    [("camel", None, "camel_shape"), ("camel", "animal", "animal"), ("fuel tank", None, "tank"),
+     ("street musician", "figure", "figure"), ("ferris wheel", None, "structure"), ("anvil", None, "tool"),
+     ("dragon statue", "statue", "statue"), ("tractor", None, "truck")],
+)
+def test_family_names_and_words_choose_the_shape(name, category, shape):
+    expected = "animal" if shape == "camel_shape" else shape
+    assert choose_shape(name, category) == expected
+
+
+def test_the_generic_shape_follows_any_hint_in_the_name():
+    camel = build_model("generic", (0.7, 2.2, 2.1), "realistic", 1, name="camel")
+    assert "fur_light" in camel.geometry and len(camel.geometry) >= 3
+    assert "wing" in build_model("generic", (3, 4, 2), "realistic", 1, name="dragon").geometry
+    block = build_model("generic", (1, 1, 1), "realistic", 1, name="thingamajig")
+    assert set(block.geometry) == {"plastic", "dark_plastic", "accent"}
