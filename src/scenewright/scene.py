@@ -69,6 +69,31 @@ class Vec3(_Model):
         return cls(x=x, y=y, z=z)
 
 
+class ObjectPhysics(_Model):
+    """What a simulator needs of an object, derived from its asset (:mod:`scenewright.export.physics`).
+
+    Mass, centre of mass and inertia are in the asset frame (bottom centre at the origin,
+    front −Y, before the object's pose); ``inertia`` is (ixx, iyy, izz, ixy, ixz, iyz) about
+    the centre of mass in kg m². ``collider`` is the file of convex pieces in the scene folder.
+    ``key`` hashes what the record was derived from: when the asset or the object's words
+    change, the record is derived again.
+    """
+
+    static: bool
+    mass: float = Field(gt=0)
+    center_of_mass: Vec3
+    inertia: tuple[float, float, float, float, float, float]
+    friction: float = Field(gt=0)
+    material: str
+    density: float = Field(gt=0)
+    volume: float = Field(ge=0)
+    collider: str
+    method: Literal["hull", "parts", "coacd"]
+    hulls: int = Field(ge=1)
+    notes: list[str] = Field(default_factory=list)
+    key: str
+
+
 class SceneObject(_Model):
     """One object of the scene; the fields of the paper's object JSON plus provenance."""
 
@@ -81,6 +106,7 @@ class SceneObject(_Model):
     visual_description: str = ""
     asset: str | None = None
     image: str | None = None
+    physics: ObjectPhysics | None = None
 
     @field_validator("id")
     @classmethod

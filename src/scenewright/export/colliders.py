@@ -1,0 +1,183 @@
+"""Convex collision pieces for an asset: what simulators collide, since they only do convex shapes well.
+
+Three ways, the cheapest that is faithful wins:
+
+- ``hull``: one convex hull, when the mesh fills most of its hull (a crate, a cabinet, a vase).
+- ``parts``: one hull per separate part, when the mesh is made of parts (procedural assets are:
+  a table's top and legs, a chair's seat, back and legs), so the space under a table top stays
+  free for the chair pushed under it. Many small parts (books on a shelf, leaves of a plant) are
+  grouped by position into at most :data:`MAX_HULLS` pieces.
+- ``coacd``: an approximate convex decomposition by CoACD (the ``sim`` extra) of a single
+  concave body (an image-to-3D mesh is one welded surface); without CoACD its convex hull stands
+  in and a note says so.
+
+A mesh that is not watertight still gets hulls (a hull needs only points) and a note, since its
+volume, and so its mass, is then an estimate.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import logging
+import warnings
+from dataclasses import dataclass, field
+
+import numpy as np
+import trimesh
+from scipy.cluster.vq import kmeans2
+from scipy.spatial import ConvexHull, QhullError
+
+log = logging.getLogger(__name__)
+
+#: Version of the method: cached pieces from another version are computed again.
+VERSION = 1
+#: A mesh whose solid fills at least this share of its hull collides as the hull.
+CONVEX_SHARE = 0.85
+#: Upper bound of pieces per object: simulators slow down with every convex piece.
+MAX_HULLS = 24
+#: Flat parts (a screen's quad, a rug's top) are thickened to this many metres to make a hull.
+MIN_THICKNESS = 0.004
+#: An open surface (a lamp shade, a leaf) is a shell this many metres thick, not the solid its
+#: hull encloses, so a shade does not outweigh the lamp's base.
+SHELL_THICKNESS = 0.01
+#: CoACD's concavity threshold (its default is 0.05; coarser is faster and enough for contact).
+COACD_THRESHOLD = 0.08
+
+
+@dataclass
+class Collider:
+    hulls: list[trimesh.Trimesh]
+    method: str
+    notes: list[str] = field(default_factory=list)
+    #: Solid volume (m³) of the asset: its watertight parts' volume, open surfaces as shells.
+    volume: float = 0.0
+    #: Solid volume each hull stands for, in the order of ``hulls``: where the mass sits.
+    weights: list[float] = field(default_factory=list)
+
+    def __post_init__(self) -> None:
+        if not self.weights:
+            self.weights = [float(h.volume) for h in self.hulls]
+
+    def to_bytes(self) -> bytes:
+        arrays = {"meta": np.array(json.dumps({"method": self.method, "notes": self.notes, "volume": self.volume, "weights": self.weights}))}
+        for k, hull in enumerate(self.hulls):
+            arrays[f"v{k}"] = np.asarray(hull.vertices, dtype=np.float64)
+            arrays[f"f{k}"] = np.asarray(hull.faces, dtype=np.int32)
+        buffer = io.BytesIO()
+        np.savez_compressed(buffer, **arrays)
+        return buffer.getvalue()
+
+    @classmethod
+    def from_bytes(cls, data: bytes) -> Collider:
+        with np.load(io.BytesIO(data), allow_pickle=False) as npz:
+            meta = json.loads(str(npz["meta"]))
+            count = sum(1 for name in npz.files if name.startswith("v"))
+            hulls = [trimesh.Trimesh(npz[f"v{k}"], npz[f"f{k}"], process=False) for k in range(count)]
+        return cls(hulls, meta["method"], meta["notes"], meta["volume"], meta["weights"])
+
+
+def coacd_available() -> bool:
+    try:
+        import coacd  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+def _hull(points: np.ndarray) -> trimesh.Trimesh | None:
+    """The convex hull of points; a flat set is thickened along its thinnest axis first."""
+    points = np.unique(np.asarray(points, dtype=float).round(9), axis=0)
+    if len(points) < 3:
+        return None
+    centred = points - points.mean(axis=0)
+    _, singular, axes = np.linalg.svd(centred, full_matrices=False)
+    if len(singular) < 3 or singular[2] < 1e-6 * max(singular[0], 1e-12):
+        normal = axes[-1] * (MIN_THICKNESS / 2.0)
+        points = np.vstack([points + normal, points - normal])
+    try:
+        hull = trimesh.convex.convex_hull(points)
+    except QhullError:
+        return None
+    return hull if hull.volume > 0 else None
+
+
+def _hull_volume(points: np.ndarray) -> float:
+    """Volume of the points' hull without building a mesh (0 for a flat set): many parts are cheap."""
+    if len(points) < 4:
+        return 0.0
+    try:
+        return float(ConvexHull(points).volume)
+    except QhullError:
+        return 0.0
+
+
+def _grouped(centres: np.ndarray, sizes: list[float], limit: int) -> list[np.ndarray]:
+    """Indices of parts in at most ``limit`` groups by where they are (k-means on the part
+    centres, seeded deterministically with the biggest parts)."""
+    if len(centres) <= limit:
+        return [np.array([k]) for k in range(len(centres))]
+    order = np.argsort([-s for s in sizes], kind="stable")
+    with warnings.catch_warnings():  # a group left empty is merely dropped
+        warnings.simplefilter("ignore")
+        _, labels = kmeans2(centres, centres[order[:limit]], minit="matrix", iter=20)
+    return [np.flatnonzero(labels == label) for label in np.unique(labels)]
+
+
+def _coacd(mesh: trimesh.Trimesh) -> list[trimesh.Trimesh]:
+    import coacd
+
+    coacd.set_log_level("error")
+    pieces = coacd.run_coacd(
+        coacd.Mesh(np.asarray(mesh.vertices), np.asarray(mesh.faces)),
+        threshold=COACD_THRESHOLD,
+        max_convex_hull=MAX_HULLS,
+        seed=0,
+    )
+    return [h for h in (_hull(np.asarray(v)) for v, _ in pieces) if h is not None]
+
+
+def collider(mesh: trimesh.Trimesh, *, use_coacd: bool | None = None) -> Collider:
+    """Convex pieces of ``mesh`` (scene-frame asset frame) and its solid volume.
+
+    ``use_coacd`` None means: when the package is installed.
+    """
+    if use_coacd is None:
+        use_coacd = coacd_available()
+    notes = []
+    if not mesh.is_watertight:
+        notes.append("the mesh is not watertight: its collision hulls are built from its points and its volume is estimated")
+    whole = _hull(mesh.vertices)
+    if whole is None:
+        raise ValueError("the mesh has fewer than three distinct points; no collision shape can be made")
+    parts = [p for p in mesh.split(only_watertight=False) if len(p.faces)] or [mesh]
+    points = [np.asarray(p.vertices, dtype=float) for p in parts]
+    hull_volumes = [_hull_volume(v) for v in points]
+    solid = [
+        abs(float(p.volume)) if p.is_watertight and p.is_volume else min(h, float(p.area) * SHELL_THICKNESS)
+        for p, h in zip(parts, hull_volumes)
+    ]
+    volume = min(sum(solid), float(whole.volume))
+    # How much of the whole hull the parts fill: a single open surface says nothing about it.
+    filled = volume if len(parts) == 1 else min(sum(hull_volumes), float(whole.volume))
+    if (len(parts) > 1 or mesh.is_watertight) and filled >= CONVEX_SHARE * whole.volume:
+        return Collider([whole], "hull", notes, volume)
+    if len(parts) > 1:
+        hulls, weights = [], []
+        for group in _grouped(np.array([v.mean(axis=0) for v in points]), hull_volumes, MAX_HULLS):
+            hull = _hull(np.vstack([points[k] for k in group]))
+            if hull is not None:
+                hulls.append(hull)
+                weights.append(max(sum(solid[k] for k in group), 1e-9))
+        return Collider(hulls, "parts", notes, volume, weights)
+    if use_coacd:
+        pieces = _coacd(mesh)
+        if pieces:
+            return Collider(pieces, "coacd", notes, volume)
+        notes.append("CoACD returned no pieces; the convex hull stands in")
+    else:
+        notes.append(
+            "the mesh is concave but CoACD is not installed, so its convex hull stands in "
+            "(install the 'sim' extra for a convex decomposition)"
+        )
+    return Collider([whole], "hull", notes, volume)
