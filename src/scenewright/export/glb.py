@@ -95,8 +95,8 @@ def _describe_nodes(scene: Scene):
     return postprocess
 
 
-def assemble(scene: Scene, folder: SceneFolder) -> Path:
-    """Write ``scene.glb`` (metres, +Y up) from the objects' assets and poses; return its path."""
+def build_scene(scene: Scene, folder: SceneFolder) -> trimesh.Scene:
+    """The scene graph of ``scene.glb``: a node per object (named by id) and the ground."""
     paths = _asset_paths(scene, folder)
     glb = trimesh.Scene()
     for obj in scene.objects:
@@ -105,6 +105,16 @@ def assemble(scene: Scene, folder: SceneFolder) -> Path:
     glb.add_geometry(
         ground_mesh(scene.objects, scene.bounds, texture), geom_name=GROUND_NODE, node_name=GROUND_NODE
     )
-    data = trimesh.exchange.gltf.export_glb(glb, tree_postprocessor=_describe_nodes(scene))
+    return glb
+
+
+def glb_bytes(glb: trimesh.Scene, scene: Scene) -> bytes:
+    """The binary glTF of a graph from :func:`build_scene`, its object nodes tagged."""
+    return trimesh.exchange.gltf.export_glb(glb, tree_postprocessor=_describe_nodes(scene))
+
+
+def assemble(scene: Scene, folder: SceneFolder) -> Path:
+    """Write ``scene.glb`` (metres, +Y up) from the objects' assets and poses; return its path."""
+    data = glb_bytes(build_scene(scene, folder), scene)
     log.info("assembled %d objects into %s", len(scene.objects), folder.glb)
     return write_atomic(folder.glb, data)
