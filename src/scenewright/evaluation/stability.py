@@ -111,3 +111,21 @@ def stability(scene: Scene, folder: SceneFolder, cache: RequestCache, seconds: f
             result.objects.append(Settled(obj.id, *motion[obj.id]))
     log.info("stability: %d of %d dynamic objects stable", len(result.objects) - len(result.unstable), len(result.objects))
     return result
+
+
+def settle_check(metrics, scene: Scene, folder: SceneFolder, cache: RequestCache | None = None) -> None:
+    """Put the settle check into an evaluation's metrics, or say why it could not run."""
+    try:
+        metrics.stability = stability(scene, folder, cache or RequestCache(None)).to_dict()
+    except MissingExtra as exc:
+        metrics.unavailable["stability"] = str(exc)
+
+
+def stability_figures(results) -> dict:
+    """Share of stable dynamic objects and of stable scenes (%) among the results that have the check."""
+    checked = [r.stability for r in results if r.stability is not None]
+    dynamic = sum(c["dynamic"] for c in checked)
+    return {
+        "stable_objects": round(100.0 * sum(c["stable_objects"] for c in checked) / dynamic, 2) if dynamic else None,
+        "stable_scenes": round(100.0 * sum(c["stable"] for c in checked) / len(checked), 2) if checked else None,
+    }
