@@ -3,7 +3,7 @@ PY      ?= python3.11
 VENV    := .venv
 BIN     := $(VENV)/bin
 STAMP   := $(VENV)/.installed
-EXTRAS  ?= test,remote,render
+EXTRAS  ?= test,remote,render,sim
 
 .PHONY: install install-render install-clip tools demo test bench clean
 
@@ -18,8 +18,8 @@ $(STAMP): $(BIN)/python pyproject.toml
 
 install: $(STAMP)
 
-# Optional extras named by MissingExtra messages (render is already part of the default EXTRAS).
-install-render install-clip: install-%: $(STAMP)
+# Optional extras named by MissingExtra messages (render and sim are already part of the default EXTRAS).
+install-render install-clip install-sim: install-%: $(STAMP)
 	$(BIN)/pip install -q -e ".[$*]"
 
 # Node tools the tests use (the Khronos glTF validator), pinned by tools/package-lock.json.
@@ -47,6 +47,7 @@ bench: install
 	$(BIN)/scenewright bench assets --assets 16 --servers 4 --delay 2 --json | tee bench-results/assets.json
 	$(BIN)/scenewright bench edits --json | tee bench-results/edits.json
 	$(BIN)/scenewright bench parse --json | tee bench-results/parse.json
+	$(BIN)/scenewright bench physics --json | tee bench-results/physics.json
 	$(BIN)/python benchmarks/procedural.py | tee bench-results/procedural.json
 
 clean:

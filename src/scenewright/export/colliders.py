@@ -31,12 +31,12 @@ from scipy.spatial import ConvexHull, QhullError
 log = logging.getLogger(__name__)
 
 #: Version of the method: cached pieces from another version are computed again.
-VERSION = 1
+VERSION = 3
 #: A mesh whose solid fills at least this share of its hull collides as the hull.
 CONVEX_SHARE = 0.85
 #: Upper bound of pieces per object: simulators slow down with every convex piece.
 MAX_HULLS = 24
-#: Flat parts (a screen's quad, a rug's top) are thickened to this many metres to make a hull.
+#: Flat parts (a screen's quad, a rug's top) are thickened inward by this many metres to make a hull.
 MIN_THICKNESS = 0.004
 #: An open surface (a lamp shade, a leaf) is a shell this many metres thick, not the solid its
 #: hull encloses, so a shade does not outweigh the lamp's base.
@@ -85,16 +85,18 @@ def coacd_available() -> bool:
     return True
 
 
-def _hull(points: np.ndarray) -> trimesh.Trimesh | None:
-    """The convex hull of points; a flat set is thickened along its thinnest axis first."""
+def _hull(points: np.ndarray, inward: np.ndarray) -> trimesh.Trimesh | None:
+    """The convex hull of points. A flat set (a screen's quad, a rug's face) is thickened toward
+    ``inward`` (the middle of the whole mesh), so the piece never pokes out of the object and
+    into what it rests on or what rests on it."""
     points = np.unique(np.asarray(points, dtype=float).round(9), axis=0)
     if len(points) < 3:
         return None
-    centred = points - points.mean(axis=0)
-    _, singular, axes = np.linalg.svd(centred, full_matrices=False)
+    middle = points.mean(axis=0)
+    _, singular, axes = np.linalg.svd(points - middle, full_matrices=False)
     if len(singular) < 3 or singular[2] < 1e-6 * max(singular[0], 1e-12):
-        normal = axes[-1] * (MIN_THICKNESS / 2.0)
-        points = np.vstack([points + normal, points - normal])
+        normal = axes[-1] if np.dot(axes[-1], inward - middle) >= 0 else -axes[-1]
+        points = np.vstack([points, points + normal * MIN_THICKNESS])
     try:
         hull = trimesh.convex.convex_hull(points)
     except QhullError:
@@ -110,6 +112,15 @@ def _hull_volume(points: np.ndarray) -> float:
         return float(ConvexHull(points).volume)
     except QhullError:
         return 0.0
+
+
+def _part_volume(part: trimesh.Trimesh, hull_volume: float) -> float:
+    """A closed part's own volume; an open surface's as a shell, never more than its hull (a flat
+    one, whose hull is empty, as a shell all the same)."""
+    if part.is_watertight and part.is_volume:
+        return abs(float(part.volume))
+    shell = float(part.area) * SHELL_THICKNESS
+    return min(hull_volume, shell) if hull_volume > 0 else shell
 
 
 def _grouped(centres: np.ndarray, sizes: list[float], limit: int) -> list[np.ndarray]:
@@ -134,7 +145,8 @@ def _coacd(mesh: trimesh.Trimesh) -> list[trimesh.Trimesh]:
         max_convex_hull=MAX_HULLS,
         seed=0,
     )
-    return [h for h in (_hull(np.asarray(v)) for v, _ in pieces) if h is not None]
+    middle = np.asarray(mesh.bounds).mean(axis=0)
+    return [h for h in (_hull(np.asarray(v), middle) for v, _ in pieces) if h is not None]
 
 
 def collider(mesh: trimesh.Trimesh, *, use_coacd: bool | None = None) -> Collider:
@@ -147,16 +159,15 @@ def collider(mesh: trimesh.Trimesh, *, use_coacd: bool | None = None) -> Collide
     notes = []
     if not mesh.is_watertight:
         notes.append("the mesh is not watertight: its collision hulls are built from its points and its volume is estimated")
-    whole = _hull(mesh.vertices)
+    lo, hi = mesh.bounds
+    middle = (lo + hi) / 2.0
+    whole = _hull(mesh.vertices, middle)
     if whole is None:
         raise ValueError("the mesh has fewer than three distinct points; no collision shape can be made")
     parts = [p for p in mesh.split(only_watertight=False) if len(p.faces)] or [mesh]
     points = [np.asarray(p.vertices, dtype=float) for p in parts]
     hull_volumes = [_hull_volume(v) for v in points]
-    solid = [
-        abs(float(p.volume)) if p.is_watertight and p.is_volume else min(h, float(p.area) * SHELL_THICKNESS)
-        for p, h in zip(parts, hull_volumes)
-    ]
+    solid = [_part_volume(p, h) for p, h in zip(parts, hull_volumes)]
     volume = min(sum(solid), float(whole.volume))
     # How much of the whole hull the parts fill: a single open surface says nothing about it.
     filled = volume if len(parts) == 1 else min(sum(hull_volumes), float(whole.volume))
@@ -165,7 +176,7 @@ def collider(mesh: trimesh.Trimesh, *, use_coacd: bool | None = None) -> Collide
     if len(parts) > 1:
         hulls, weights = [], []
         for group in _grouped(np.array([v.mean(axis=0) for v in points]), hull_volumes, MAX_HULLS):
-            hull = _hull(np.vstack([points[k] for k in group]))
+            hull = _hull(np.vstack([points[k] for k in group]), middle)
             if hull is not None:
                 hulls.append(hull)
                 weights.append(max(sum(solid[k] for k in group), 1e-9))

@@ -18,7 +18,7 @@ from scipy.spatial.transform import Rotation
 
 from scenewright.export.colliders import Collider
 from scenewright.export.physics import inertia_matrix
-from scenewright.export.visual import visual_parts
+from scenewright.export.visual import object_parts
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
 from scenewright.geometry import object_matrix
@@ -83,7 +83,7 @@ def build_mjcf(scene: Scene, folder: SceneFolder, pieces: dict[str, Collider]) -
         ET.SubElement(body, "inertial", pos=_numbers(physics.center_of_mass.tuple()), mass=f"{physics.mass:.6g}",
                       fullinertia=_numbers([inertia[0, 0], inertia[1, 1], inertia[2, 2],
                                             inertia[0, 1], inertia[0, 2], inertia[1, 2]]))
-        for k, part in enumerate(visual_parts(folder.resolve(obj.asset).read_bytes())):
+        for k, part in enumerate(object_parts(obj, folder)):
             name = f"{obj.id}:visual{k}"
             files[f"{MESH_DIR}/{name}.stl"] = part.mesh.export(file_type="stl")
             ET.SubElement(assets, "mesh", name=name, file=f"{name}.stl", inertia="shell")

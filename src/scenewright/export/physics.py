@@ -18,6 +18,8 @@ import logging
 import re
 
 import numpy as np
+import trimesh
+from scipy.spatial import ConvexHull, QhullError
 
 from scenewright.analysis.catalogue import load_catalogue
 from scenewright.assets import asset_mesh
@@ -25,6 +27,7 @@ from scenewright.cache import RequestCache, request_key
 from scenewright.errors import InputError
 from scenewright.export.colliders import VERSION as COLLIDER_VERSION
 from scenewright.export.colliders import Collider, coacd_available, collider
+from scenewright.export.visual import size_box
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
 from scenewright.scene import ObjectPhysics, Scene, SceneObject, Vec3
@@ -33,14 +36,14 @@ log = logging.getLogger(__name__)
 
 CACHE_KIND = "colliders"
 #: Version of the derivation below: records of another version are derived again.
-VERSION = 1
+VERSION = 2
 
 #: Effective density (kg/m³ of the mesh's solid volume) per procedural shape; see the module doc.
 DENSITY = {
     "table": 500, "round_table": 500, "coffee_table": 500, "desk": 400, "chair": 400, "armchair": 75,
     "office_chair": 150, "stool": 450, "sofa": 70, "bench": 450, "bed": 120, "bookshelf": 450, "cabinet": 110,
     "wardrobe": 110, "nightstand": 200, "counter": 250, "table_lamp": 500, "floor_lamp": 900,
-    "pendant_lamp": 150, "rug": 1500, "tv": 400, "monitor": 400, "laptop": 600, "potted_plant": 300, "vase": 1000,
+    "pendant_lamp": 150, "rug": 150, "tv": 400, "monitor": 400, "laptop": 600, "potted_plant": 300, "vase": 1000,
     "bathtub": 300, "toilet": 400, "sink": 400, "stove": 250, "fridge": 150, "piano": 300, "clock": 300,
     "mirror": 800, "picture_frame": 500, "trash_can": 150, "crate": 300, "barrel": 300, "books": 700,
     "bottle": 400, "cup": 500, "bowl": 600, "tree": 600, "pine_tree": 600, "palm_tree": 600, "bush": 100,
@@ -58,7 +61,13 @@ FIXED_SHAPES = frozenset({
     "building", "house", "tower", "kiosk", "market_stall", "tent", "tree", "pine_tree", "palm_tree",
     "lamp_post", "fence", "arch", "pillar", "fountain", "well", "swing", "slide", "bollard", "hydrant",
     "flower_bed", "bathtub", "toilet", "sink", "counter", "pendant_lamp",
+    # rooted, grown from the ground, afloat or on a cradle, wall-mounted, on a plinth or frozen to
+    # the ground (a snowman is a statue): none is a loose body standing on the ground
+    "bush", "crystal", "boat", "whiteboard", "statue",
 })  # fmt: skip
+#: Living things hold their own pose (a bird on one leg, a cat on a chair's back); a rigid body
+#: standing in for one would topple where the animal would not, so they do not move either.
+ANIMALS = frozenset({"bird", "cat", "dog", "horse", "fish"})
 #: Heavier than this (kg), an object is treated as immovable furniture or structure.
 STATIC_MASS = 400.0
 
@@ -112,6 +121,41 @@ def mass_properties(piece: Collider, mass: float) -> tuple[np.ndarray, np.ndarra
     return com, inertia * (mass / total)
 
 
+#: Points of the collision pieces this close (m) to their lowest point are what the object stands on.
+SUPPORT_BAND = 0.01
+#: The centre of mass is kept within this share of its support polygon (scaled about its centre).
+SUPPORT_SHARE = 0.9
+
+
+def over_support(com: np.ndarray, piece: Collider) -> tuple[np.ndarray, float]:
+    """The centre of mass moved horizontally over the object's support, and how far (m) it moved.
+
+    Something that stands by itself has its centre of mass over what it stands on, or it would
+    not stand. The mesh's volume is only a proxy for where the mass is (a cart's solid wheels
+    against its thin bed), so when the proxy puts the centre outside the support polygon it is
+    brought back toward the polygon's centre until it lies inside :data:`SUPPORT_SHARE` of it.
+    A point or a line of support (a ball, a keel) has no inside, and the centre stays.
+    """
+    points = np.vstack([h.vertices for h in piece.hulls])
+    low = points[points[:, 2] <= points[:, 2].min() + SUPPORT_BAND][:, :2]
+    try:
+        polygon = ConvexHull(low)
+    except (QhullError, ValueError):
+        return com, 0.0
+    centre = low[polygon.vertices].mean(axis=0)
+    normals, offsets = polygon.equations[:, :2], polygon.equations[:, 2]
+    direction = com[:2] - centre
+    reach = normals @ direction
+    # Inside the scaled polygon: n·(c + t·d / share) + b <= 0 for every edge.
+    limits = [-(n @ centre + b) * SUPPORT_SHARE / r for n, b, r in zip(normals, offsets, reach) if r > 1e-12]
+    t = min([1.0, *limits])
+    if t >= 1.0:
+        return com, 0.0
+    moved = com.copy()
+    moved[:2] = centre + max(t, 0.0) * direction
+    return moved, float(np.linalg.norm(moved[:2] - com[:2]))
+
+
 def _materials_by_area(glb: bytes) -> list[str]:
     from scenewright.assets.normalise import parse_glb
 
@@ -126,8 +170,13 @@ def properties(obj: SceneObject, piece: Collider, glb: bytes, *, hanging: bool, 
     volume = piece.volume if piece.volume > 0 else float(sum(h.volume for h in piece.hulls))
     mass = max(density * volume, 0.05)
     com, inertia = mass_properties(piece, mass)
-    material, mu = friction(obj.visual_description or obj.name, _materials_by_area(glb))
-    static = hanging or shape in FIXED_SHAPES or mass > STATIC_MASS
+    material, mu = friction(obj.visual_description or obj.name, _materials_by_area(glb) if obj.asset else [])
+    static = hanging or shape in FIXED_SHAPES or obj.category in ANIMALS or mass > STATIC_MASS
+    notes = list(piece.notes)
+    if not static:
+        com, moved = over_support(com, piece)
+        if moved > 0:
+            notes.append(f"centre of mass moved {100 * moved:.1f} cm to lie over the object's support")
     return ObjectPhysics(
         static=static,
         mass=round(mass, 4),
@@ -140,7 +189,7 @@ def properties(obj: SceneObject, piece: Collider, glb: bytes, *, hanging: bool, 
         collider=path,
         method=piece.method,
         hulls=len(piece.hulls),
-        notes=piece.notes,
+        notes=notes,
         key=key,
     )
 
@@ -148,6 +197,21 @@ def properties(obj: SceneObject, piece: Collider, glb: bytes, *, hanging: bool, 
 def inertia_matrix(physics: ObjectPhysics) -> np.ndarray:
     ixx, iyy, izz, ixy, ixz, iyz = physics.inertia
     return np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]])
+
+
+def _source(obj: SceneObject, folder: SceneFolder) -> tuple[bytes, trimesh.Trimesh | None]:
+    """What the record derives from: the asset's bytes (its mesh parsed later, only when needed);
+    an object without an asset collides as its size box."""
+    if obj.asset is None:
+        return f"box {obj.size.tuple()}".encode(), size_box(obj.size)
+    source = folder.resolve(obj.asset)
+    try:
+        return source.read_bytes(), None
+    except FileNotFoundError:
+        raise InputError(
+            f"object {obj.id!r}: its asset {obj.asset} is missing from {folder.root}, so it has no "
+            f"collision shape; re-run `scenewright generate --resume {folder.root}` to rebuild it"
+        ) from None
 
 
 def ensure_physics(
@@ -161,13 +225,7 @@ def ensure_physics(
     pieces: dict[str, Collider] = {}
     derived = []
     for obj in scene.objects:
-        source = folder.resolve(obj.asset) if obj.asset else None
-        if source is None or not source.is_file():
-            raise InputError(
-                f"object {obj.id!r} has no asset file, so it has no collision shape; "
-                f"resume the scene with `scenewright generate --resume {folder.root}` to build it"
-            )
-        glb = source.read_bytes()
+        glb, mesh = _source(obj, folder)
         hangs = _hangs(obj, hanging)
         key = request_key(
             "physics", VERSION, COLLIDER_VERSION, use_coacd, glb, obj.category, obj.name, obj.visual_description, hangs
@@ -180,10 +238,9 @@ def ensure_physics(
         raw = cache.get(CACHE_KIND, hull_key)
         if raw is None:
             try:
-                mesh = asset_mesh(glb)
-                raw = collider(mesh, use_coacd=use_coacd).to_bytes()
+                raw = collider(mesh if mesh is not None else asset_mesh(glb), use_coacd=use_coacd).to_bytes()
             except ValueError as exc:
-                raise InputError(f"object {obj.id!r}: no collision shape from its asset {source}: {exc}") from None
+                raise InputError(f"object {obj.id!r}: no collision shape from its asset {obj.asset}: {exc}") from None
             cache.put(CACHE_KIND, hull_key, raw)
         pieces[obj.id] = Collider.from_bytes(raw)
         write_atomic(path, raw)

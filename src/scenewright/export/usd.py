@@ -23,7 +23,7 @@ from scenewright.errors import MissingExtra
 from scenewright.export.colliders import Collider
 from scenewright.export.ground import ground_extent
 from scenewright.export.physics import inertia_matrix
-from scenewright.export.visual import Look, visual_parts
+from scenewright.export.visual import Look, object_parts
 from scenewright.folder import SceneFolder
 from scenewright.geometry import object_matrix
 from scenewright.scene import Scene
@@ -120,7 +120,7 @@ def _object(w: _Writer, path: str, obj, folder: SceneFolder, piece: Collider) ->
     prim = xform.GetPrim()
     prim.CreateAttribute("scenewright:id", w.Sdf.ValueTypeNames.String).Set(obj.id)
     prim.CreateAttribute("scenewright:name", w.Sdf.ValueTypeNames.String).Set(obj.name)
-    for k, part in enumerate(visual_parts(folder.resolve(obj.asset).read_bytes())):
+    for k, part in enumerate(object_parts(obj, folder)):
         mesh = w.mesh(f"{path}/visual/part_{k}", part.mesh)
         w.bind(mesh, w.material(part.look))
     physics = obj.physics

@@ -65,6 +65,21 @@ def _look(mesh: trimesh.Trimesh) -> Look:
     )
 
 
+def size_box(size) -> trimesh.Trimesh:
+    """The object's size box in the asset frame (bottom centre at the origin): what stands in
+    for an object that has no asset, as in the solver and the evaluation."""
+    box = trimesh.creation.box(extents=size.tuple())
+    box.apply_translation((0.0, 0.0, size.z / 2.0))
+    return box
+
+
+def object_parts(obj, folder) -> list[Part]:
+    """The object's visual parts: its asset's, else its size box in plain grey."""
+    if obj.asset is None:
+        return [Part(name="box", mesh=size_box(obj.size), look=Look(PLAIN, 0.0, 0.6, (0.0, 0.0, 0.0)))]
+    return visual_parts(folder.resolve(obj.asset).read_bytes())
+
+
 def visual_parts(glb: bytes) -> list[Part]:
     """Each mesh of a normalised asset in the scene-frame asset frame, with its look."""
     scene = parse_glb(glb)
