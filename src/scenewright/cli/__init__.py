@@ -12,6 +12,7 @@ import sys
 
 import typer
 from rich.console import Console
+from rich.markup import escape
 
 from scenewright.cli import assets, backends, edit, evaluate, export, generate, parse, remote, render, solve  # noqa: F401
 from scenewright.cli.app import app
@@ -28,16 +29,16 @@ def main(argv: list[str] | None = None) -> int:
     try:
         app(args=argv, prog_name="scenewright", standalone_mode=False)
     except InputError as exc:
-        err.print(f"[red]error:[/red] {exc}", highlight=False)
+        err.print(f"[red]error:[/red] {escape(str(exc))}", highlight=False)
         return EXIT_BAD_INPUT
     except InfeasibleLayout as exc:
-        err.print(f"[yellow]layout incomplete:[/yellow] {exc}", highlight=False)
+        err.print(f"[yellow]layout incomplete:[/yellow] {escape(str(exc))}", highlight=False)
         return EXIT_INFEASIBLE
     except BackendError as exc:
-        err.print(f"[red]backend error:[/red] {exc}", highlight=False)
+        err.print(f"[red]backend error:[/red] {escape(str(exc))}", highlight=False)
         return EXIT_BACKEND
     except ScenewrightError as exc:
-        err.print(f"[red]error:[/red] {exc}", highlight=False)
+        err.print(f"[red]error:[/red] {escape(str(exc))}", highlight=False)
         return EXIT_BACKEND
     except typer.Abort:  # Ctrl-C at a prompt
         return 130
