@@ -49,6 +49,8 @@ def test_every_object_is_one_usd_prim_with_physics(exported, prompt_id):
     scene = folder.load()
     stage = Usd.Stage.Open(str(folder.simulation / "scene.usd"))
     assert UsdGeom.GetStageUpAxis(stage) == UsdGeom.Tokens.z and UsdGeom.GetStageMetersPerUnit(stage) == 1.0
+    problems = _validation_errors(stage)
+    assert problems == [], problems
     world = stage.GetDefaultPrim()
     bodies = {p.GetAttribute("scenewright:id").Get(): p for p in world.GetChildren() if p.HasAttribute("scenewright:id")}
     ground = world.GetChild("ground")
@@ -65,6 +67,14 @@ def test_every_object_is_one_usd_prim_with_physics(exported, prompt_id):
             assert UsdPhysics.MassAPI(prim).GetMassAttr().Get() == pytest.approx(obj.physics.mass, rel=1e-5)
         visual = [d for d in Usd.PrimRange(prim) if d.IsA(UsdGeom.Mesh) and "/visual/" in str(d.GetPath())]
         assert visual and all(d.HasAPI(pxr_binding()) for d in visual)
+
+
+def _validation_errors(stage) -> list[str]:
+    """What USD's own validators (UsdPhysics rigid body and collider checkers among them) find."""
+    from pxr import UsdValidation
+
+    validators = UsdValidation.ValidationRegistry().GetOrLoadAllValidators()
+    return [e.GetMessage() for e in UsdValidation.ValidationContext(validators).Validate(stage)]
 
 
 def pxr_binding():
@@ -154,3 +164,11 @@ def test_evaluate_reports_stable_objects_next_to_cf(exported, tmp_path, capsys):
     assert row["stable_objects"] is not None and 0 <= row["stable_objects"] <= 100
     assert all(s["stability"]["dynamic"] >= 1 for s in report["scenes"])
     assert "Stable objects (%)" in capsys.readouterr().out
+
+
+def test_importing_the_cli_pulls_no_simulator(tmp_path):
+    import subprocess
+
+    code = "import sys, scenewright.cli, scenewright.export.sim; print(sorted({'pxr', 'mujoco', 'coacd'} & set(sys.modules)))"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "[]"
