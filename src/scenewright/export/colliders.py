@@ -20,6 +20,7 @@ from __future__ import annotations
 import io
 import json
 import logging
+import multiprocessing
 import warnings
 from dataclasses import dataclass, field
 
@@ -31,7 +32,7 @@ from scipy.spatial import ConvexHull, QhullError
 log = logging.getLogger(__name__)
 
 #: Version of the method: cached pieces from another version are computed again.
-VERSION = 4
+VERSION = 5
 #: A mesh whose solid fills at least this share of its hull collides as the hull.
 CONVEX_SHARE = 0.85
 #: Upper bound of pieces per object: simulators slow down with every convex piece.
@@ -45,6 +46,8 @@ SHELL_THICKNESS = 0.01
 COACD_THRESHOLD = 0.08
 #: A lighter search than CoACD's defaults: about half the time for the same number of pieces on
 #: a ring (a few seconds instead of ten), which matters when a scene has dozens of assets.
+#: Seconds CoACD may take for one mesh before the convex hull stands in.
+COACD_SECONDS = 30.0
 COACD_SEARCH = {"mcts_iterations": 60, "mcts_nodes": 10, "resolution": 1000, "preprocess_resolution": 30}
 
 
@@ -88,6 +91,26 @@ def coacd_available() -> bool:
     return True
 
 
+def _convex(points: np.ndarray) -> trimesh.Trimesh | None:
+    """The hull as a mesh straight from Qhull, faces turned outward (trimesh's own hull repairs and
+    checks each one, which costs more than the hull when an asset has hundreds of parts)."""
+    try:
+        hull = ConvexHull(points)
+    except QhullError:
+        return None
+    if not hull.volume > 0:
+        return None
+    used = np.unique(hull.simplices)
+    index = np.full(len(points), -1)
+    index[used] = np.arange(len(used))
+    vertices, faces = points[used], index[hull.simplices]
+    triangles = vertices[faces]
+    normals = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])
+    inward = np.einsum("ij,ij->i", normals, hull.equations[:, :3]) < 0
+    faces[inward] = faces[inward][:, ::-1]
+    return trimesh.Trimesh(vertices, faces, process=False)
+
+
 def _hull(points: np.ndarray, inward: np.ndarray) -> trimesh.Trimesh | None:
     """The convex hull of points. A flat set (a screen's quad, a rug's face) is thickened toward
     ``inward`` (the middle of the whole mesh), so the piece never pokes out of the object and
@@ -100,11 +123,7 @@ def _hull(points: np.ndarray, inward: np.ndarray) -> trimesh.Trimesh | None:
     if len(singular) < 3 or singular[2] < 1e-6 * max(singular[0], 1e-12):
         normal = axes[-1] if np.dot(axes[-1], inward - middle) >= 0 else -axes[-1]
         points = np.vstack([points, points + normal * MIN_THICKNESS])
-    try:
-        hull = trimesh.convex.convex_hull(points)
-    except QhullError:
-        return None
-    return hull if hull.volume > 0 else None
+    return _convex(points)
 
 
 def _hull_volume(points: np.ndarray) -> float:
@@ -117,13 +136,47 @@ def _hull_volume(points: np.ndarray) -> float:
         return 0.0
 
 
-def _part_volume(part: trimesh.Trimesh, hull_volume: float) -> float:
-    """A closed part's own volume; an open surface's as a shell, never more than its hull (a flat
-    one, whose hull is empty, as a shell all the same)."""
-    if part.is_watertight and part.is_volume:
-        return abs(float(part.volume))
-    shell = float(part.area) * SHELL_THICKNESS
-    return min(hull_volume, shell) if hull_volume > 0 else shell
+@dataclass
+class _Part:
+    points: np.ndarray
+    closed: bool
+    #: the enclosed volume when closed (else meaningless) and the surface area
+    volume: float
+    area: float
+
+    def solid(self, hull_volume: float) -> float:
+        """A closed part's own volume; an open surface's as a shell, never more than its hull (a
+        flat one, whose hull is empty, as a shell all the same)."""
+        if self.closed:
+            return abs(self.volume)
+        shell = self.area * SHELL_THICKNESS
+        return min(hull_volume, shell) if hull_volume > 0 else shell
+
+
+def _parts(mesh: trimesh.Trimesh) -> list[_Part]:
+    """The mesh's connected pieces (faces sharing a vertex index), each closed when every one of its
+    edges has exactly two faces. Coincident vertices are not merged: a generator's separate parts
+    often touch (a leg under a top) and should stay separate pieces."""
+    if not len(mesh.faces):
+        return []
+    labels = trimesh.graph.connected_component_labels(mesh.face_adjacency, node_count=len(mesh.faces))
+    _, inverse, counts = np.unique(mesh.edges_sorted, axis=0, return_inverse=True, return_counts=True)
+    open_faces = np.zeros(len(mesh.faces), dtype=bool)
+    open_faces[mesh.edges_face[counts[inverse.ravel()] != 2]] = True
+    v0, v1, v2 = (mesh.triangles[:, k] for k in range(3))
+    signed = np.einsum("ij,ij->i", v0, np.cross(v1, v2)) / 6.0
+    count = int(labels.max()) + 1
+    volumes = np.bincount(labels, weights=signed, minlength=count)
+    areas = np.bincount(labels, weights=mesh.area_faces, minlength=count)
+    opened = np.bincount(labels, weights=open_faces, minlength=count)
+    order = np.argsort(labels, kind="stable")
+    bounds = np.searchsorted(labels[order], np.arange(count + 1))
+    parts = []
+    for k in range(count):
+        faces = mesh.faces[order[bounds[k]:bounds[k + 1]]]
+        points = np.asarray(mesh.vertices[np.unique(faces)], dtype=float)
+        parts.append(_Part(points, opened[k] == 0, float(volumes[k]), float(areas[k])))
+    return parts
 
 
 def _grouped(centres: np.ndarray, sizes: list[float], limit: int) -> list[np.ndarray]:
@@ -138,19 +191,29 @@ def _grouped(centres: np.ndarray, sizes: list[float], limit: int) -> list[np.nda
     return [np.flatnonzero(labels == label) for label in np.unique(labels)]
 
 
-def _coacd(mesh: trimesh.Trimesh) -> list[trimesh.Trimesh]:
+def _run_coacd(vertices: np.ndarray, faces: np.ndarray) -> list[np.ndarray]:
     import coacd
 
     coacd.set_log_level("error")
     pieces = coacd.run_coacd(
-        coacd.Mesh(np.asarray(mesh.vertices), np.asarray(mesh.faces)),
-        threshold=COACD_THRESHOLD,
-        max_convex_hull=MAX_HULLS,
-        seed=0,
-        **COACD_SEARCH,
+        coacd.Mesh(vertices, faces), threshold=COACD_THRESHOLD, max_convex_hull=MAX_HULLS, seed=0, **COACD_SEARCH
     )
+    return [np.asarray(v) for v, _ in pieces]
+
+
+def _coacd(mesh: trimesh.Trimesh) -> list[trimesh.Trimesh] | None:
+    """CoACD's pieces, or None when it took longer than :data:`COACD_SECONDS` (it runs in a child
+    process, so it can be stopped: its search time varies by orders of magnitude with the shape)."""
+    context = multiprocessing.get_context("spawn")
+    with context.Pool(1) as pool:
+        job = pool.apply_async(_run_coacd, (np.asarray(mesh.vertices), np.asarray(mesh.faces)))
+        try:
+            pieces = job.get(timeout=COACD_SECONDS)
+        except multiprocessing.TimeoutError:
+            log.warning("CoACD took longer than %s s; the convex hull stands in", COACD_SECONDS)
+            return None
     middle = np.asarray(mesh.bounds).mean(axis=0)
-    return [h for h in (_hull(np.asarray(v), middle) for v, _ in pieces) if h is not None]
+    return [h for h in (_hull(v, middle) for v in pieces) if h is not None]
 
 
 def collider(mesh: trimesh.Trimesh, *, use_coacd: bool | None = None) -> Collider:
@@ -161,21 +224,22 @@ def collider(mesh: trimesh.Trimesh, *, use_coacd: bool | None = None) -> Collide
     if use_coacd is None:
         use_coacd = coacd_available()
     notes = []
-    if not mesh.is_watertight:
+    parts = _parts(mesh)
+    closed = bool(parts) and all(p.closed for p in parts)
+    if not closed:
         notes.append("the mesh is not watertight: its collision hulls are built from its points and its volume is estimated")
     lo, hi = mesh.bounds
     middle = (lo + hi) / 2.0
     whole = _hull(mesh.vertices, middle)
     if whole is None:
         raise ValueError("the mesh has fewer than three distinct points; no collision shape can be made")
-    parts = [p for p in mesh.split(only_watertight=False) if len(p.faces)] or [mesh]
-    points = [np.asarray(p.vertices, dtype=float) for p in parts]
+    points = [p.points for p in parts]
     hull_volumes = [_hull_volume(v) for v in points]
-    solid = [_part_volume(p, h) for p, h in zip(parts, hull_volumes)]
+    solid = [p.solid(h) for p, h in zip(parts, hull_volumes)]
     volume = min(sum(solid), float(whole.volume))
     # How much of the whole hull the parts fill: a single open surface says nothing about it.
     filled = volume if len(parts) == 1 else min(sum(hull_volumes), float(whole.volume))
-    if (len(parts) > 1 or mesh.is_watertight) and filled >= CONVEX_SHARE * whole.volume:
+    if (len(parts) > 1 or closed) and filled >= CONVEX_SHARE * whole.volume:
         return Collider([whole], "hull", notes, volume)
     if len(parts) > 1:
         hulls, weights = [], []
@@ -185,7 +249,7 @@ def collider(mesh: trimesh.Trimesh, *, use_coacd: bool | None = None) -> Collide
                 hulls.append(hull)
                 weights.append(max(sum(solid[k] for k in group), 1e-9))
         return Collider(hulls, "parts", notes, volume, weights)
-    if not mesh.is_watertight:
+    if not closed:
         # CoACD would first remesh the open surface into a thin solid and then cut it for minutes;
         # with no inside to measure, the hull is the honest shape.
         notes.append("an open single surface collides as its convex hull")
@@ -194,7 +258,11 @@ def collider(mesh: trimesh.Trimesh, *, use_coacd: bool | None = None) -> Collide
         pieces = _coacd(mesh)
         if pieces:
             return Collider(pieces, "coacd", notes, volume)
-        notes.append("CoACD returned no pieces; the convex hull stands in")
+        notes.append(
+            f"CoACD took longer than {COACD_SECONDS:g} s, so the convex hull stands in"
+            if pieces is None
+            else "CoACD returned no pieces; the convex hull stands in"
+        )
     else:
         notes.append(
             "the mesh is concave but CoACD is not installed, so its convex hull stands in "
