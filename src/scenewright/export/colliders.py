@@ -71,15 +71,16 @@ class Collider:
             arrays[f"v{k}"] = np.asarray(hull.vertices, dtype=np.float64)
             arrays[f"f{k}"] = np.asarray(hull.faces, dtype=np.int32)
         buffer = io.BytesIO()
-        np.savez_compressed(buffer, **arrays)
+        np.savez(buffer, **arrays)
         return buffer.getvalue()
 
     @classmethod
     def from_bytes(cls, data: bytes) -> Collider:
         with np.load(io.BytesIO(data), allow_pickle=False) as npz:
-            meta = json.loads(str(npz["meta"]))
-            count = sum(1 for name in npz.files if name.startswith("v"))
-            hulls = [trimesh.Trimesh(npz[f"v{k}"], npz[f"f{k}"], process=False) for k in range(count)]
+            arrays = {name: npz[name] for name in npz.files}
+        meta = json.loads(str(arrays["meta"]))
+        count = sum(1 for name in arrays if name.startswith("v"))
+        hulls = [trimesh.Trimesh(arrays[f"v{k}"], arrays[f"f{k}"], process=False) for k in range(count)]
         return cls(hulls, meta["method"], meta["notes"], meta["volume"], meta["weights"])
 
 
