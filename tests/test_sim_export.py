@@ -14,6 +14,7 @@ import trimesh
 from scenewright.analysis.bench import load_prompts
 from scenewright.cli import main
 from scenewright.folder import SceneFolder
+from gltf_validator import assert_valid
 from sim_scenes import box, glb
 
 #: Shipped prompts exported in the tests: indoor with a rug and stacked things, outdoor with
@@ -113,6 +114,15 @@ def test_glb_physics_names_colliders_for_godot_or_unreal(exported, tmp_path):
     unreal = trimesh.load(out, force="scene")
     assert sum(n.startswith("UCX_") for n in unreal.graph.nodes) == sum(o.physics.hulls for o in scene.objects) + 1
     assert not any("convcolonly" in n for n in unreal.graph.nodes)
+
+
+@pytest.mark.node
+def test_glb_physics_passes_the_gltf_validator(exported, tmp_path):
+    folder = exported["living_room_cosy"]
+    for engine in ("godot", "unreal"):
+        out = tmp_path / f"{engine}.glb"
+        assert main(["export", str(folder.root), "-f", "glb-physics", "--engine", engine, "--out", str(out)]) == 0
+        assert_valid(out)
 
 
 def test_unknown_format_lists_the_valid_ones(exported, capsys):
