@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 import trimesh
 
-from scenewright.analysis.bench import load_prompts
+from scenewright.analysis.bench import default_prompt_dir, load_prompts
 from scenewright.cli import main
 from scenewright.folder import SceneFolder
 from gltf_validator import assert_valid
@@ -183,3 +183,18 @@ def test_importing_the_cli_pulls_no_simulator(tmp_path):
     code = "import sys, scenewright.cli, scenewright.export.sim; print(sorted({'pxr', 'mujoco', 'coacd'} & set(sys.modules)))"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
+
+
+def test_bench_physics_prints_stability_and_timing(tmp_path, capsys):
+    pytest.importorskip("mujoco", reason="the physics bench needs the 'sim' extra (mujoco)")
+    pytest.importorskip("pxr", reason="the physics bench exports USD (the 'sim' extra)")
+    import shutil
+
+    prompts = tmp_path / "prompts"
+    prompts.mkdir()
+    shutil.copy(next(default_prompt_dir().glob("*home_office.json")), prompts)
+    assert main(["bench", "physics", "--prompts", str(prompts), "--repeats", "1", "--json"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert result["prompts"] == 1 and result["dynamic_objects"] >= 1
+    assert 0 <= result["stable_objects_pct"] <= 100 and result["stable_scenes_pct"] in (0.0, 100.0)
+    assert result["timed_scene"]["objects"] == 15 and len(result["export_settle_runs"]) == 1
