@@ -3,9 +3,9 @@ PY      ?= python3.11
 VENV    := .venv
 BIN     := $(VENV)/bin
 STAMP   := $(VENV)/.installed
-EXTRAS  ?= test,remote,render,batch
+EXTRAS  ?= test,remote,render,batch,sim
 
-.PHONY: install install-render install-clip install-batch tools demo test bench clean
+.PHONY: install install-render install-clip install-batch install-sim tools demo test bench clean
 
 $(BIN)/python:
 	@command -v $(PY) >/dev/null 2>&1 || { echo "scenewright needs Python 3.11 ($(PY) not found); set PY=/path/to/python3.11"; exit 1; }
@@ -18,8 +18,8 @@ $(STAMP): $(BIN)/python pyproject.toml
 
 install: $(STAMP)
 
-# Optional extras named by MissingExtra messages (render and batch are already part of the default EXTRAS).
-install-render install-clip install-batch: install-%: $(STAMP)
+# Optional extras named by MissingExtra messages (render, batch and sim are already part of the default EXTRAS).
+install-render install-clip install-batch install-sim: install-%: $(STAMP)
 	$(BIN)/pip install -q -e ".[$*]"
 
 # Node tools the tests use (the Khronos glTF validator), pinned by tools/package-lock.json.
@@ -48,6 +48,7 @@ bench: install
 	$(BIN)/scenewright bench edits --json | tee bench-results/edits.json
 	$(BIN)/scenewright bench parse --json | tee bench-results/parse.json
 	$(BIN)/scenewright bench batch --json | tee bench-results/batch.json
+	$(BIN)/scenewright bench physics --json | tee bench-results/physics.json
 	$(BIN)/python benchmarks/procedural.py | tee bench-results/procedural.json
 
 clean:

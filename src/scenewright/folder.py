@@ -72,6 +72,18 @@ class SceneFolder:
     def asset(self, object_id: str) -> Path:
         return self.assets / f"{object_id}.glb"
 
+    @property
+    def colliders(self) -> Path:
+        return self.root / "colliders"
+
+    def collider(self, object_id: str) -> Path:
+        return self.colliders / f"{object_id}.npz"
+
+    @property
+    def simulation(self) -> Path:
+        """Where ``scenewright export`` writes the simulator formats by default."""
+        return self.root / "sim"
+
     def object_image(self, object_id: str) -> Path:
         return self.object_images / f"{object_id}.png"
 

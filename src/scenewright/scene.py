@@ -110,6 +110,29 @@ def check_size(v: Vec3) -> Vec3:
     if min(v.tuple()) < MIN_SIZE or max(v.tuple()) > MAX_SIZE:
         raise ValueError(f"every size must be between {MIN_SIZE:g} and {MAX_SIZE:g} metres, got {v.tuple()}")
     return v
+class ObjectPhysics(_Model):
+    """What a simulator needs of an object, derived from its asset (:mod:`scenewright.export.physics`).
+
+    Mass, centre of mass and inertia are in the asset frame (bottom centre at the origin,
+    front −Y, before the object's pose); ``inertia`` is (ixx, iyy, izz, ixy, ixz, iyz) about
+    the centre of mass in kg m². ``collider`` is the file of convex pieces in the scene folder.
+    ``key`` hashes what the record was derived from: when the asset or the object's words
+    change, the record is derived again.
+    """
+
+    static: bool
+    mass: float = Field(gt=0)
+    center_of_mass: Vec3
+    inertia: tuple[float, float, float, float, float, float]
+    friction: float = Field(gt=0)
+    material: str
+    density: float = Field(gt=0)
+    volume: float = Field(ge=0)
+    collider: str
+    method: Literal["hull", "parts", "coacd"]
+    hulls: int = Field(ge=1)
+    notes: list[str] = Field(default_factory=list)
+    key: str
 
 
 class SceneObject(_Model):
@@ -124,6 +147,7 @@ class SceneObject(_Model):
     visual_description: str = ""
     asset: str | None = None
     image: str | None = None
+    physics: ObjectPhysics | None = None
 
     @field_validator("id")
     @classmethod

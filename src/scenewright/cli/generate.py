@@ -105,9 +105,18 @@ def generate_command(
     image_concurrency: ImageConcurrencyOption = None,
     feedback_rounds: FeedbackRoundsOption = None,
     max_faces: MaxFacesOption = None,
+    export: Annotated[
+        list[str] | None,
+        typer.Option("--export", help="Also export for simulators: usd | mjcf | glb-physics (repeatable)."),
+    ] = None,
 ) -> None:
     """Turn TEXT into a scene folder: scene.json, one asset per object, scene.glb, previews."""
     from scenewright.backends import Backends
+    from scenewright.cli.export import export_formats
+    from scenewright.export.sim import check_format
+
+    for fmt in export or ():
+        check_format(fmt)  # before the run, not after it
     from scenewright.pipeline import generate, resume
 
     sources = (("TEXT", text is not None), ("--example", example), ("--resume", resume_dir is not None))
@@ -164,6 +173,8 @@ def generate_command(
                 progress=report,
             )
     _summary(Console(soft_wrap=True), folder, scene)
+    for path in export_formats(folder.root, export, config=config) if export else ():
+        typer.echo(f"  exported     {path}")
     if scene.layout is not None and scene.layout.unplaced:
         lines = "; ".join(f"{u.id} ({u.reason})" for u in scene.layout.unplaced)
         raise InfeasibleLayout(

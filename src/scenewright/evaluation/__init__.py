@@ -63,6 +63,8 @@ class SceneMetrics:
     psa: float | None = None
     #: metric → why it could not be computed
     unavailable: dict[str, str] = field(default_factory=dict)
+    #: the MuJoCo settle check (:mod:`scenewright.evaluation.stability`), when it could run
+    stability: dict | None = None
 
     @property
     def collision_free(self) -> bool:
@@ -139,6 +141,7 @@ def evaluate(
     """
     from scenewright.assets import load_meshes
     from scenewright.evaluation.ablation import initial_objects, without_solver
+    from scenewright.evaluation.stability import settle_check
     from scenewright.render import as_folder, best_render
 
     results = []
@@ -160,6 +163,7 @@ def evaluate(
                 annotation=annotation,
             )
         )
+        settle_check(results[-1], scene, folder)
         if ablation:
             ablated = without_solver(scene, initial_objects(scene), meshes)
             results.append(

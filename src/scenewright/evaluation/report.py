@@ -18,6 +18,7 @@ from PIL import Image, ImageDraw, ImageFont
 
 from scenewright.evaluation import SceneMetrics
 from scenewright.evaluation.composition import LINE, in_a_line
+from scenewright.evaluation.stability import stability_figures
 from scenewright.files import write_atomic
 
 #: The paper's Tables 1 and 2 (Holodeck 2.0, full and without the layout solver), for comparison.
@@ -33,6 +34,8 @@ COLUMNS = {
     "clip": ("CLIP↑", "{:.3f}"),
     "cf": ("CF (%)↑", "{:.2f}"),
     "cn": ("CN↓", "{:.2f}"),
+    "stable_objects": ("Stable objects (%)↑", "{:.2f}"),
+    "stable_scenes": ("Stable scenes (%)↑", "{:.2f}"),
     "pos": ("Pos.↑", "{:.2f}"),
     "rot": ("Rot.↑", "{:.2f}"),
     "psa": ("PSA↑", "{:.2f}"),
@@ -103,6 +106,7 @@ def aggregate(results: Sequence[SceneMetrics]) -> dict:
         "floating": _mean([len(r.floating) for r in results]),
         "out_of_bounds": _mean([len(r.out_of_bounds) for r in results]),
         "unavailable": sorted({f"{k}: {v}" for r in results for k, v in r.unavailable.items()}),
+        **stability_figures(results),
     }
 
 

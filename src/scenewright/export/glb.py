@@ -105,8 +105,9 @@ def _describe_nodes(scene: Scene, materials: dict[str, dict]):
     return postprocess
 
 
-def assemble(scene: Scene, folder: SceneFolder) -> Path:
-    """Write ``scene.glb`` (metres, +Y up) from the objects' assets and poses; return its path."""
+def build_scene(scene: Scene, folder: SceneFolder) -> tuple[trimesh.Scene, dict[str, dict]]:
+    """The scene graph of ``scene.glb`` (a node per object, named by id, and the ground) and the
+    assets' exact glTF materials by mesh name, which trimesh's own export would round."""
     paths = _asset_paths(scene, folder)
     glb = trimesh.Scene()
     materials: dict[str, dict] = {}
@@ -116,6 +117,17 @@ def assemble(scene: Scene, folder: SceneFolder) -> Path:
     glb.add_geometry(
         ground_mesh(scene.objects, scene.bounds, texture), geom_name=GROUND_NODE, node_name=GROUND_NODE
     )
-    data = trimesh.exchange.gltf.export_glb(glb, tree_postprocessor=_describe_nodes(scene, materials))
+    return glb, materials
+
+
+def glb_bytes(glb: trimesh.Scene, scene: Scene, materials: dict[str, dict]) -> bytes:
+    """The binary glTF of a graph from :func:`build_scene`, its object nodes tagged."""
+    return trimesh.exchange.gltf.export_glb(glb, tree_postprocessor=_describe_nodes(scene, materials))
+
+
+def assemble(scene: Scene, folder: SceneFolder) -> Path:
+    """Write ``scene.glb`` (metres, +Y up) from the objects' assets and poses; return its path."""
+    glb, materials = build_scene(scene, folder)
+    data = glb_bytes(glb, scene, materials)
     log.info("assembled %d objects into %s", len(scene.objects), folder.glb)
     return write_atomic(folder.glb, data)

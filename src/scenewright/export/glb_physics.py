@@ -1,0 +1,55 @@
+"""``scene.glb`` with collision nodes that game engines turn into colliders on import.
+
+Godot reads node-name suffixes: a mesh node ending in ``-convcolonly`` becomes a convex
+collision shape and is not drawn (``-colonly`` for a concave one). Unreal reads ``UCX_<mesh>_NN``
+meshes as the convex collision of the static mesh ``<mesh>`` (import the object's meshes
+combined, so that the static mesh carries the object's id). The two naming schemes would
+draw each other's colliders, so one file follows one engine. Each object's convex pieces
+hang under its node, so they move with it; the ground gets a thin box.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import trimesh
+
+from scenewright.export.colliders import Collider
+from scenewright.export.glb import build_scene, glb_bytes
+from scenewright.export.ground import ground_extent
+from scenewright.files import write_atomic
+from scenewright.folder import SceneFolder
+from scenewright.geometry import SCENE_TO_GLTF
+from scenewright.scene import Scene
+
+ENGINES = ("godot", "unreal")
+GROUND_COLLIDER = "ground_collider"
+GROUND_THICKNESS = 0.1
+
+
+def collider_name(engine: str, owner: str, k: int) -> str:
+    if engine == "godot":
+        return f"{owner}-hull{k}-convcolonly"
+    return f"UCX_{owner}_{k:02d}"
+
+
+def _add(glb: trimesh.Scene, mesh: trimesh.Trimesh, name: str, parent: str | None) -> None:
+    gltf = mesh.copy()
+    gltf.apply_transform(SCENE_TO_GLTF)  # pieces are in the scene-frame asset frame
+    gltf.visual = trimesh.visual.ColorVisuals(gltf)
+    kwargs = {"parent_node_name": parent} if parent else {}
+    glb.add_geometry(gltf, geom_name=name, node_name=name, **kwargs)
+
+
+def write_glb_physics(
+    scene: Scene, folder: SceneFolder, pieces: dict[str, Collider], path: Path, engine: str = "godot"
+) -> Path:
+    glb, materials = build_scene(scene, folder)
+    for obj in scene.objects:
+        for k, hull in enumerate(pieces[obj.id].hulls):
+            _add(glb, hull, collider_name(engine, obj.id, k), obj.id)
+    lo, hi = ground_extent(scene.objects, scene.bounds)
+    ground = trimesh.creation.box(extents=(*(hi - lo), GROUND_THICKNESS))
+    ground.apply_translation((*((lo + hi) / 2.0), -GROUND_THICKNESS / 2.0))
+    _add(glb, ground, collider_name(engine, GROUND_COLLIDER, 0), None)
+    return write_atomic(path, glb_bytes(glb, scene, materials))
