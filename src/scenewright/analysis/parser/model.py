@@ -1,0 +1,46 @@
+"""What a parse gives back: objects, relations and the scene's look, as plain data.
+
+The arranger and the offline backend consume these; their fields are the parser's public contract.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from scenewright.scene import Constraint
+
+
+@dataclass(frozen=True)
+class ParsedObject:
+    id: str
+    category: str
+    name: str
+    description: str
+    size: tuple[float, float, float]
+    #: Index of the noun phrase it came from (objects of one phrase share it).
+    group: int
+
+
+@dataclass(frozen=True)
+class ParsedRelation:
+    source: str
+    relation: str
+    target: str
+    #: Added by a default rule rather than read from the text.
+    inferred: bool = False
+
+    def constraint(self) -> Constraint:
+        return Constraint(relation=self.relation, source=self.source, target=self.target)
+
+
+@dataclass
+class ParsedScene:
+    text: str
+    objects: list[ParsedObject]
+    relations: list[ParsedRelation]
+    style: str
+    ground: str
+    indoor: bool
+
+    def constraints(self) -> list[Constraint]:
+        return [r.constraint() for r in self.relations]

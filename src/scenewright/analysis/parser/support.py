@@ -1,0 +1,69 @@
+"""Default supports: surface things nobody put anywhere go on the best support present, hanging
+things above the nearest large object. Marked ``inferred``.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+
+from scenewright.analysis.parser.model import ParsedObject, ParsedRelation
+
+
+_SUPPORT_PREFERENCE = {
+    "table_lamp": ("nightstand", "desk", "side_table", "dresser", "vanity", "table", "coffee_table", "cabinet"),
+    "alarm_clock": ("nightstand", "dresser", "desk", "side_table"),
+    "tv": ("tv_stand", "cabinet", "dresser", "counter", "desk", "table"),
+    "monitor": ("desk", "school_desk", "table", "counter", "control_panel", "lab_bench"),
+    "laptop": ("desk", "school_desk", "table", "coffee_table", "counter", "round_table"),
+    "keyboard": ("desk", "school_desk", "table"),
+    "printer": ("desk", "cabinet", "filing_cabinet", "table"),
+    "microwave": ("counter", "cabinet", "table"),
+    "coffee_machine": ("counter", "side_table", "table", "cabinet"),
+    "toaster": ("counter", "table"),
+    "cash_register": ("counter", "display_case", "table"),
+    "flask": ("lab_bench", "table", "desk", "counter"),
+    "microscope": ("lab_bench", "desk", "table"),
+    "projector": ("table", "desk", "side_table"),
+    "radio": ("cabinet", "side_table", "dresser", "desk", "table"),
+    "aquarium": ("cabinet", "dresser", "side_table", "counter", "table"),
+    "magic_orb": ("pedestal", "altar", "table", "round_table", "desk"),
+}
+
+
+def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation], catalogue) -> list[ParsedRelation]:
+    """Surface things with no stated support go on the best support present; hanging things
+    with no stated target hang above the nearest-mentioned large object."""
+    placed_vertically = {r.source for r in relations if r.relation in ("on", "above")}
+    load: Counter[str] = Counter(r.target for r in relations if r.relation == "on")
+    extra: list[ParsedRelation] = []
+    supports = [o for o in objects if catalogue[o.category].support]
+    for obj in objects:
+        cat = catalogue[obj.category]
+        if obj.id in placed_vertically:
+            continue
+        if cat.rests == "surface":
+            prefs = _SUPPORT_PREFERENCE.get(obj.category, ())
+            fitting = [
+                s for s in supports
+                if s.id != obj.id and s.size[0] >= obj.size[0] * 0.9 and s.size[1] >= obj.size[1] * 0.9
+            ]  # fmt: skip
+            if not fitting:
+                continue
+
+            def score(s: ParsedObject, prefs=prefs, obj=obj) -> tuple:
+                rank = prefs.index(s.category) if s.category in prefs else len(prefs)
+                return (rank, load[s.id], abs(s.group - obj.group))
+
+            best = min(fitting, key=score)
+            load[best.id] += 1
+            extra.append(ParsedRelation(obj.id, "on", best.id, inferred=True))
+        elif cat.rests == "hanging":
+            hosts = [
+                o for o in objects
+                if o.id != obj.id and catalogue[o.category].rests == "ground" and 0.3 < o.size[2] < 2.5
+            ]  # fmt: skip
+            if hosts:
+                # the nearest mention, the one before on a tie ("a dresser with a mirror")
+                best = min(hosts, key=lambda o: (abs(o.group - obj.group), o.group > obj.group, -o.size[0] * o.size[1]))
+                extra.append(ParsedRelation(obj.id, "above", best.id, inferred=True))
+    return extra
