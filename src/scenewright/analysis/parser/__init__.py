@@ -84,12 +84,14 @@ def _parse_cached(text: str) -> ParsedScene:
     _ids(reader.groups)
     catalogue = reader.catalogue
     objects = [
-        ParsedObject(i, g.category, g.name, g.description, g.size, g.index) for g in reader.groups for i in g.ids
+        ParsedObject(i, g.category, g.name, g.description, g.size, g.index, g.guessed, g.rests)
+        for g in reader.groups
+        for i in g.ids
     ]
     stated = _acyclic(_expand(reader), [o.id for o in objects])
     inferred = _infer_support(objects, stated, catalogue)
     relations = _acyclic(stated + inferred, [o.id for o in objects])
-    indoor = _is_indoor([o.category for o in objects], text, catalogue)
+    indoor = _is_indoor([o.category for o in objects], text, catalogue, reader.places)
     return ParsedScene(
         text=text,
         objects=objects,
@@ -97,4 +99,5 @@ def _parse_cached(text: str) -> ParsedScene:
         style=detect_style(text),
         ground=detect_ground(text, indoor),
         indoor=indoor,
+        places=reader.places,
     )

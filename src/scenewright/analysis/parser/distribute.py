@@ -5,6 +5,7 @@
 from __future__ import annotations
 
 import logging
+import re
 from collections import Counter
 from dataclasses import replace
 
@@ -16,11 +17,13 @@ log = logging.getLogger(__name__)
 
 
 def _ids(groups: list[_Group]) -> None:
+    """``chair_1``, ``chair_2``...; a guessed thing by its own name (``fuel_tank_1``, not ``tank_1``)."""
     counters: Counter[str] = Counter()
     for g in groups:
+        base = (re.sub(r"[^a-z0-9]+", "_", g.name.lower()).strip("_") or g.category) if g.guessed else g.category
         for _ in range(g.count):
-            counters[g.category] += 1
-            g.ids.append(f"{g.category}_{counters[g.category]}")
+            counters[base] += 1
+            g.ids.append(f"{base}_{counters[base]}")
 
 
 def _around_sides(n: int, src: _Group, tgt: _Group) -> list[str]:

@@ -5,7 +5,7 @@ The arranger and the offline backend consume these; their fields are the parser'
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from scenewright.scene import Constraint
 
@@ -19,6 +19,10 @@ class ParsedObject:
     size: tuple[float, float, float]
     #: Index of the noun phrase it came from (objects of one phrase share it).
     group: int
+    #: Read through the open vocabulary (a shape family sized from its head word), not the catalogue.
+    guessed: bool = False
+    #: How it rests when that differs from its category's (an anvil is a ``tool`` on the ground).
+    rests: str | None = None
 
 
 @dataclass(frozen=True)
@@ -41,6 +45,8 @@ class ParsedScene:
     style: str
     ground: str
     indoor: bool
+    #: Place words that set the scene and stand nowhere in it ("hangar", "kitchen").
+    places: list[str] = field(default_factory=list)
 
     def constraints(self) -> list[Constraint]:
         return [r.constraint() for r in self.relations]

@@ -8,6 +8,7 @@ from functools import lru_cache
 
 from scenewright.analysis.catalogue import load_catalogue, match_phrase, phrase_index, singular
 from scenewright.analysis.parser.tokens import _Tok
+from scenewright.analysis.parser.vocabulary import Entry, load_vocabulary
 from scenewright.analysis.parser.words import (
     _DEFINITE,
     _DETERMINERS,
@@ -16,6 +17,7 @@ from scenewright.analysis.parser.words import (
     _STOP,
     _UNITS,
     _VAGUE,
+    _FINITE,
     _is_verb,
 )
 
@@ -36,6 +38,10 @@ class _Mention:
     #: Describing words after the noun ("a vending machine glowing pink", "a crate made of steel").
     post: list[str] = field(default_factory=list)
     alias: bool = False  # "the island" after "a kitchen island": only a reference
+    #: What the open vocabulary says of a thing the catalogue does not name (a guessed object).
+    guess: Entry | None = None
+    #: Nouns before the head that name its kind ("dragon" in "a dragon statue").
+    modifier: list[str] = field(default_factory=list)
 
 
 @dataclass
@@ -47,6 +53,10 @@ class _Group:
     description: str
     size: tuple[float, float, float]
     ids: list[str] = field(default_factory=list)
+    #: How it rests (``ground``, ``surface``, ``hanging``): its category's, or the vocabulary's.
+    rests: str = "ground"
+    #: Read through the open vocabulary, not the catalogue.
+    guessed: bool = False
 
 
 @lru_cache(maxsize=1)
@@ -72,44 +82,166 @@ _PROJECTED = {"holographic", "hologram", "projected", "virtual"}
 _SHOWS_PROJECTION = {"sign", "billboard", "menu_board"}
 
 
-def _find_mentions(toks: list[_Tok]) -> list[_Mention]:
-    """Longest-first catalogue matches, with a noun followed by another noun read as a modifier
-    ("glass table", "stone path")."""
+def _match_at(toks: list[_Tok], i: int) -> tuple[int, str, Entry | None] | None:
+    """The longest thing named at ``i``: a catalogue phrase, else (same length) a vocabulary one."""
     n = len(toks)
-    longest = _max_phrase_len()
-    raw: list[tuple[int, int, str]] = []
+    vocabulary = load_vocabulary()
+    for length in range(min(max(_max_phrase_len(), vocabulary.longest), n - i), 0, -1):
+        words = tuple(t.text for t in toks[i : i + length])
+        if any(not w[0].isalpha() for w in words):
+            continue
+        cat = match_phrase(words)
+        if cat:
+            return i + length, cat, None
+        entry = vocabulary.match(words)
+        # a catalogue head keeps its kind: "a toy robot" is a robot, "a rocking chair" a chair
+        if entry is not None and not (length > 1 and match_phrase(words[-1:])):
+            return i + length, entry.category, entry
+    return None
+
+
+def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
+    """Longest-first catalogue and vocabulary matches, with a noun followed by another noun read
+    as a modifier ("glass table", "stone path"), then the nouns nobody listed (a generic thing
+    each); also the place words that set the scene instead of standing in it ("a sci-fi hangar
+    with a spaceship", "a farmhouse kitchen")."""
+    n = len(toks)
+    vocabulary = load_vocabulary()
+    raw: list[tuple[int, int, str, Entry | None]] = []
     i = 0
     while i < n:
-        found = None
-        for length in range(min(longest, n - i), 0, -1):
-            words = tuple(t.text for t in toks[i : i + length])
-            if any(not w[0].isalpha() for w in words):
-                continue
-            cat = match_phrase(words)
-            if cat:
-                found = (i, i + length, cat)
-                break
+        found = _match_at(toks, i)
         if found:
-            raw.append(found)
-            i = found[1]
+            raw.append((i, *found))
+            i = found[0]
         else:
             i += 1
+    raw = sorted(raw + _unknown_nouns(toks, raw), key=lambda r: r[0])
     mentions: list[_Mention] = []
-    for k, (s, e, cat) in enumerate(raw):
+    places: list[str] = []
+    modifier: list[str] = []
+    for k, (s, e, cat, entry) in enumerate(raw):
         nxt = raw[k + 1] if k + 1 < len(raw) else None
-        if nxt and nxt[0] == e:
-            continue  # modifier of the next noun ("glass table", "tree house")
         words = [t.text for t in toks[s:e]]
+        # a singular noun before another names its kind ("glass table", "dragon statue"); a plural
+        # one is the subject of a verb that looks like a noun ("pylons guard the altar")
+        if nxt and nxt[0] == e and singular(words[-1]) == words[-1]:
+            if not (nxt[3] is not None and entry is None and nxt[1] - nxt[0] == 1 and toks[nxt[0]].text in _KIND_WORDS):
+                modifier += words
+                continue
+            raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])  # "a chalkboard menu board": the board is the menu board
+            e = nxt[1]
+        if s == e:
+            continue
+        kind, modifier = modifier, []
+        if entry is not None and s > 0 and (_is_verb(toks[s - 1].text) or (k > 0 and raw[k - 1][1] == s and not kind)):
+            continue  # "two robots stand guard", "fox statues guard the path": a verb here
         follow = toks[e].text if e < n else ""
-        if follow in _VENUES or (follow and singular(follow) in _VENUES and len(words) == 1):
-            continue  # "a throne hall", "a flower shop": the place, not the thing
+        if entry is not None and singular(words[-1]) == words[-1] and _names_kind(toks, e):
+            continue  # "a bear face", "a train compartment", "camel-hair tents": a kind, not a thing
+        if follow in _VENUES or follow in vocabulary.places or (
+            follow and singular(follow) in _VENUES and len(words) == 1
+        ):
+            continue  # "a throne hall", "a flower shop", "a farmhouse kitchen": the place, not the thing
+        if _is_place(toks, s, e, raw[k + 1 :]):
+            places.append(" ".join(words))
+            continue
         qualifies = follow[:1].isalpha() and follow not in _STOP and not _is_verb(follow)
         if len(words) == 1 and words[0] in _MODIFIER_NOUNS and qualifies and not follow.endswith(("ed", "ing")):
             continue  # "a stone path", "a glass roof": an adjective here
         if s > 0 and toks[s - 1].text in _PROJECTED and cat not in _SHOWS_PROJECTION:
-            cat = "hologram"  # "holographic koi" are light, not fish: place and size them as one
-        mentions.append(_Mention(cat, " ".join(t.orig for t in toks[s:e]), s, e, 1, False, False))
-    return _alias_mentions(toks, mentions)
+            cat, entry = "hologram", None  # "holographic koi" are light, not fish: place and size them as one
+        mention = _Mention(cat, " ".join(t.orig for t in toks[s:e]), s, e, 1, False, False)
+        mention.guess, mention.modifier = entry, kind
+        mentions.append(mention)
+    return _alias_mentions(toks, mentions), places
+
+
+#: Vocabulary words that only restate what the catalogue noun before them is ("a menu board").
+_KIND_WORDS = {"board", "panel", "screen", "machine", "device", "unit", "box", "container", "tool", "vehicle",
+               "structure", "apparatus", "console", "gadget", "station"}  # fmt: skip
+
+
+def _names_kind(toks: list[_Tok], e: int) -> bool:
+    """The noun ending at ``e`` qualifies the word after it: a hyphen joins them, or a noun that
+    is no verb, adverb or participle follows."""
+    if e >= len(toks):
+        return False
+    t = toks[e]
+    w = t.text
+    if t.joined or (w in load_vocabulary().not_things and singular(w) == w and w not in _FINITE):
+        return True  # "camel-hair tents", "a bear face"
+    return (
+        w[:1].isalpha() and w not in _STOP and not _is_verb(w) and not w.endswith(("ed", "ing", "ly"))
+        and not load_vocabulary().is_adjective(w) and w not in _DETERMINERS
+    )  # fmt: skip
+
+
+#: Words that open the setting's contents after a place word ("a hangar with...", "a hangar where...").
+_PLACE_OPENERS = {"with", "where", "full", "filled", "housing", "containing", "holding", "packed", "crammed"}
+_INSIDE = {"in", "inside", "within", "into", "throughout"}
+
+
+def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
+    """A place word used as the setting: "inside a hangar", "a hangar with a spaceship" (when the
+    with-part names things), not "a barn stands behind the pond"."""
+    if singular(toks[e - 1].text) not in load_vocabulary().places:
+        return False
+    j = s - 1
+    while j >= 0 and s - j <= 4 and (toks[j].text in _DETERMINERS or (toks[j].text not in _STOP and toks[j].text[:1].isalpha())):
+        j -= 1
+    if j >= 0 and toks[j].text in _INSIDE:
+        return True
+    if e < len(toks) and toks[e].text in _PLACE_OPENERS:
+        starts = {r[0] for r in later}
+        k = e + 1
+        while k < len(toks) and toks[k].text not in (".", "!", "?", ";") and not _is_verb(toks[k].text):
+            if k in starts:
+                return True  # the with-part names a thing: the place holds the scene
+            k += 1
+    return False
+
+
+def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None]]) -> list:
+    """Noun phrases whose head neither the catalogue nor the vocabulary knows ("a zorbulator",
+    "three glimmerwings"): counted phrases only, and only heads that can name a thing."""
+    vocabulary = load_vocabulary()
+    covered = {k for s, e, _, _ in raw for k in range(s, e)}
+    out = []
+    n = len(toks)
+    for i, t in enumerate(toks):
+        w = t.text
+        counter = w in ("a", "an", "another") or w in _NUMBERS or w in _VAGUE or w.isdigit() or (
+            w == "of" and i > 0 and toks[i - 1].text in _QUANTITY
+        )
+        if not counter or w == "one" and i + 1 < n and toks[i + 1].text in ("of", "another", "other"):
+            continue
+        plural = w not in ("a", "an", "another", "one") and not (w.isdigit() and int(w) == 1)
+        j = i + 1
+        if w == "a" and j < n and toks[j].text in ("few", "couple", "pair", "dozen"):
+            continue  # the count of a phrase read by its own rules
+        head = None
+        while j < n and j - i <= 5:
+            x = toks[j].text
+            if j in covered or not x[:1].isalpha() or x in _STOP:
+                break
+            if j > i + 1 and not plural and _is_verb(x):
+                break
+            head = j
+            j += 1
+            if plural and singular(x) != x:
+                break  # "three zorbs glow": the plural noun ends the phrase
+        if head is None or any(k in covered for k in range(i + 1, head + 1)):
+            continue
+        if j < n and j in covered:
+            continue  # the words before a known noun are its adjectives ("a shiny [robot]")
+        word = toks[head].text
+        if not vocabulary.is_thing_word(word) or word in _QUANTITY or (j < n and toks[j].text == "of"):
+            continue  # "a sunny afternoon", "a pair of", "a sense of calm"
+        entry = vocabulary.guess(word)
+        out.append((head, head + 1, entry.category, entry))
+        covered.add(head)
+    return out
 
 
 def _alias_mentions(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention]:

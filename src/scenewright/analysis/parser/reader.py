@@ -19,6 +19,7 @@ from scenewright.analysis.parser.nouns import (
 from scenewright.analysis.parser.phrases import _Rel, _find_relations
 from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
 from scenewright.analysis.parser.tokens import _split, _tokenise
+from scenewright.analysis.parser.vocabulary import load_vocabulary, scaled
 from scenewright.analysis.parser.words import (
     _ADVERBS,
     _CONTENT_HEADS,
@@ -81,6 +82,8 @@ class _Reader:
         self.history: list[int] = []  # groups in the order earlier clauses mentioned them
         self.instance: dict[int, int | None] = {}  # mention start → instance it names
         self._target_start = -1
+        #: Place words that set the scene rather than stand in it ("a hangar with a spaceship").
+        self.places: list[str] = []
 
     # ---- groups
 
@@ -89,15 +92,27 @@ class _Reader:
         if m.category == "table" and adjectives & {"round", "circular"}:
             m.category = "round_table"
         if adjectives & {"potted", "pot"} and self.catalogue[m.category].shape in _PLANT_SHAPES:
-            m.category = "potted_plant"  # "a potted palm" is a house plant, not a 6 m tree
+            m.category, m.guess = "potted_plant", None  # "a potted palm" is a house plant, not a 6 m tree
         cat: Category = self.catalogue[m.category]
         name = m.phrase.lower()
         if _is_plural(self.toks, m):
             words = name.split()
             name = " ".join([singular(words[0]), *words[1:]]) if "of" in words[1:2] else singular(name)
-        description = " ".join([*(a.lower() for a in m.adjectives), name, *m.post]).strip()
-        size = _apply_sizes(cat.size, sizes) if sizes else cat.size
-        g = _Group(len(self.groups), m.category, max(1, m.count), name, description, size)
+        kind = [w.lower() for w in m.modifier]
+        describing = [a.lower() for a in m.adjectives]
+        if kind and describing[-len(kind) :] == kind:
+            describing = describing[: -len(kind)]
+        vocabulary = load_vocabulary()
+        if m.guess is not None and not kind and describing and not vocabulary.is_adjective(describing[-1]):
+            kind = describing[-1:]  # "a street musician": the noun before names its kind
+            describing = describing[:-1]
+        name = " ".join([*kind, name])
+        description = " ".join([*describing, name, *m.post]).strip()
+        base = scaled(m.guess.size, describing) if m.guess is not None else cat.size
+        size = _apply_sizes(base, sizes) if sizes else base
+        rests = m.guess.rests if m.guess is not None else cat.rests
+        g = _Group(len(self.groups), m.category, max(1, m.count), name, description, size, rests=rests)
+        g.guessed = m.guess is not None
         self.groups.append(g)
         return g.index
 
@@ -108,7 +123,14 @@ class _Reader:
             return m.group
         if (m.definite or m.each) and not sizes:
             head = singular(self.toks[m.end - 1].text)
-            found = next((g.index for g in reversed(self.groups) if g.category == m.category), None)
+            family = self.catalogue[m.category].family  # a camel is not "the pig"
+            found = next(
+                (
+                    g.index for g in reversed(self.groups)
+                    if g.category == m.category and (not family or singular(g.name.split()[-1]) == head)
+                ),
+                None,
+            )  # fmt: skip
             # "the teacher's desk" is not one of the school desks, nor "the teacher's bench" a lab table
             owned = any(t.text.endswith("'s") for t in self.toks[max(0, m.start - 1) : m.end - 1])
             if owned and found is not None and singular(self.groups[found].name.split()[-1]) != head:
@@ -132,7 +154,7 @@ class _Reader:
 
     def read(self) -> None:
         toks = self.toks
-        mentions = _find_mentions(toks)
+        mentions, self.places = _find_mentions(toks)
         prev_end = 0
         for m in mentions:
             _read_count(toks, m, prev_end)
@@ -226,10 +248,26 @@ class _Reader:
         w = self.toks[j].text
         if (self.toks[j - 1].text, w) in _CONTENT_MARKERS and j - prev.end <= 2:
             return True  # "a bowl full of apples"
+        if self._listed_content(m.start):
+            return True  # "crates overflow with apples, pumpkins and carrots"
         if w == "of" and prev.end == j and prev.category in _CONTENT_HEADS and not m.definite:
             return True  # "a vase of tulips", "a statue of a horse"
         plant = self.catalogue[prev.category].shape in ("potted_plant", "bush", "flower_bed")
         return w == "in" and j - prev.end <= 2 and m.category in ("pot", "planter", "vase") and plant
+
+    def _listed_content(self, start: int) -> bool:
+        """Whether the noun at ``start`` is in a list of bare nouns that a content marker opens
+        ("overflow with apples, pumpkins and carrots": the pumpkins are contents too)."""
+        toks = self.toks
+        k = start - 1
+        while k > 0 and start - k <= 10:
+            w = toks[k].text
+            if (toks[k - 1].text, w) in _CONTENT_MARKERS:
+                return True
+            if not (w in (",", "and", "or") or (w[:1].isalpha() and w not in _STOP)):
+                return False
+            k -= 1
+        return False
 
     def _merge_lists(self, clauses: list[tuple[int, int]]) -> list[tuple[int, int]]:
         """Join a clause that only lists objects to the next one when that one places them
@@ -382,7 +420,7 @@ class _Reader:
 
     def _small(self, *groups: int) -> bool:
         """All of these stand on surfaces (tabletop things)."""
-        return all(self.catalogue[self.groups[g].category].rests == "surface" for g in groups)
+        return all(self.groups[g].rests == "surface" for g in groups)
 
     def _close_with(self, c: _Clause) -> None:
         """"A desk with a lamp", "a cart loaded with barrels": small things with no place of
@@ -395,7 +433,7 @@ class _Reader:
             for h in c.head:
                 if h == g:
                     continue
-                rests = self.catalogue[self.groups[g].category].rests
+                rests = self.groups[g].rests
                 if c.hold or (rests == "surface" and self.catalogue[self.groups[h].category].support):
                     self._relate("on", [g], h)
                     c.produced = True
@@ -533,7 +571,7 @@ class _Reader:
             self.relations.append((resolved, s, target, instance))
 
     def _kind(self, kind: str, s: int, t: int, hang: bool = False) -> str:
-        src = self.catalogue[self.groups[s].category]
+        src = self.groups[s]
         if kind == "over":
             return "above" if hang or src.rests == "hanging" else "near"  # a tree leaning over a pond
         if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not hang:

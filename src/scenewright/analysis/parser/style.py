@@ -56,7 +56,7 @@ _GROUND_WORDS = [
     ("carpet", ("carpeted", "wall to wall carpet", "carpet floor", "bedroom", "nursery", "office", "conference")),
     ("asphalt", ("asphalt", "tarmac", "road", "street", "parking", "highway", "city", "gas station")),
     ("concrete", ("concrete", "pavement", "sidewalk", "station", "platform", "warehouse", "garage", "industrial",
-                  "dock", "harbour", "harbor", "pier")),
+                  "dock", "harbour", "harbor", "pier", "hangar", "factory floor")),
     ("wood floor", ("wooden floor", "wood floor", "hardwood", "parquet", "floorboards", "wooden deck",
                     "plank", "room", "house", "cabin", "studio", "apartment", "cafe", "café", "bistro",
                     "restaurant", "shop", "store", "boutique", "hall")),
@@ -86,12 +86,21 @@ def detect_ground(text: str, indoor: bool) -> str:
     return "wood floor" if indoor else "grass"
 
 
-def _is_indoor(categories: list[str], text: str, catalogue) -> bool:
+#: Places whose setting is a building: a scene "in a hangar" is an interior.
+_INDOOR_PLACES = {"hangar", "warehouse", "factory", "garage", "workshop", "library", "museum", "tavern", "inn", "pub",
+                  "attic", "basement", "cellar", "loft", "lobby", "hallway", "corridor", "chamber", "church",
+                  "cathedral", "chapel", "temple", "dungeon", "crypt", "bunker", "vault", "gym", "spa", "bakery",
+                  "salon", "theatre", "theater", "cinema", "ballroom", "lounge", "pantry", "diner", "restaurant",
+                  "bar", "arcade", "mall", "station", "hospital", "clinic", "nursery", "school", "kitchen", "bedroom"}  # fmt: skip
+
+
+def _is_indoor(categories: list[str], text: str, catalogue, places: list[str] = ()) -> bool:
     low = text.lower()
     votes = 0
     for name in categories:
         tags = catalogue[name].tags
         votes += ("indoor" in tags) - ("outdoor" in tags)
+    votes += 3 * sum(1 for p in places if p.split()[-1] in _INDOOR_PLACES)
     for word in ("room", "kitchen", "bedroom", "bathroom", "office", "classroom", "lab", "apartment", "studio",
                  "café", "cafe", "shop", "store", "boutique", "gallery", "hall", "interior", "indoors"):
         if re.search(rf"\b{word}\b", low):

@@ -38,10 +38,10 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
     extra: list[ParsedRelation] = []
     supports = [o for o in objects if catalogue[o.category].support]
     for obj in objects:
-        cat = catalogue[obj.category]
+        rests = obj.rests or catalogue[obj.category].rests
         if obj.id in placed_vertically:
             continue
-        if cat.rests == "surface":
+        if rests == "surface":
             prefs = _SUPPORT_PREFERENCE.get(obj.category, ())
             fitting = [
                 s for s in supports
@@ -57,10 +57,10 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
             best = min(fitting, key=score)
             load[best.id] += 1
             extra.append(ParsedRelation(obj.id, "on", best.id, inferred=True))
-        elif cat.rests == "hanging":
+        elif rests == "hanging":
             hosts = [
                 o for o in objects
-                if o.id != obj.id and catalogue[o.category].rests == "ground" and 0.3 < o.size[2] < 2.5
+                if o.id != obj.id and (o.rests or catalogue[o.category].rests) == "ground" and 0.3 < o.size[2] < 2.5
             ]  # fmt: skip
             if hosts:
                 # the nearest mention, the one before on a tie ("a dresser with a mirror")

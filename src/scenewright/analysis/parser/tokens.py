@@ -8,7 +8,8 @@ import re
 from dataclasses import dataclass
 
 
-_TOKEN = re.compile(r"\d+(?:\.\d+)?|[A-Za-z]+(?:['’][A-Za-z]+)?|[.,;:!?()\"]|[-–—]")
+#: Letters of any script, so an accented word ("café", "Stühle") stays one word.
+_TOKEN = re.compile(r"\d+(?:\.\d+)?|[^\W\d_]+(?:['’][^\W\d_]+)?|[.,;:!?()\"]|[-–—]")
 
 
 @dataclass

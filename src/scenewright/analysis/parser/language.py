@@ -1,0 +1,74 @@
+"""Is the text English? The offline reader's rules are English rules.
+
+A French or German description would otherwise come out as a scene of the few words that
+happen to be English too ("une table en bois avec deux chaises" → one table), with exit 0.
+English prose, even a short list of things, carries its small words (articles, prepositions,
+"and", counts) or nouns the catalogue knows; other languages carry few of either.
+"""
+
+from __future__ import annotations
+
+import re
+
+from scenewright.errors import InputError
+
+#: Closed-class English words that almost every description uses.
+_ENGLISH = frozenset(
+    "a an the and or with of on in at to by from near beside behind above under over into onto "
+    "next between around is are there it its them this that these those some several many few "
+    "each every one two three four five six seven eight nine ten twelve has have stands sits "
+    "small large big tall little old new wooden red blue green white black grey gray brown "
+    "yellow left right front back middle corner against along inside for stand sit lies hang "
+    "hangs while where which room scene".split()
+)
+_WORD = re.compile(r"[^\W\d_]+")
+#: Fewer known words than this share of the text's words means another language.
+MIN_KNOWN_SHARE = 0.3
+#: Shortest text judged: a name or two ("Treehouse", "Zen garden") is left alone.
+MIN_WORDS = 3
+
+OTHER_LANGUAGE = (
+    "the offline reader reads English, and this text looks like another language ({sample}); "
+    "write the description in English, or let a vision-language model read it: "
+    "--vlm openai:MODEL (e.g. --vlm openai:o3 with OPENAI_API_KEY set, or --base-url for a local server)"
+)
+
+
+def known_words() -> frozenset[str]:
+    """English words the reader knows: its small words and every catalogue and vocabulary noun."""
+    from scenewright.analysis.catalogue import load_catalogue, words
+    from scenewright.analysis.parser.vocabulary import load_vocabulary
+
+    known = set(_ENGLISH)
+    for category in load_catalogue().values():
+        for phrase in category.phrases:
+            known.update(words(phrase))
+    for phrase in load_vocabulary().entries:
+        known.update(phrase)
+    return frozenset(known)
+
+
+def check_english(text: str) -> None:
+    """Raise :class:`InputError` when ``text`` is not English (see the module's note)."""
+    from scenewright.analysis.catalogue import singular
+
+    found = _WORD.findall(text.lower())
+    if len(found) < MIN_WORDS:
+        return
+    non_latin = sum(1 for w in found if not w.isascii())
+    known = _known()
+    share = sum(1 for w in found if w in known or singular(w) in known) / len(found)
+    small = any(w in _ENGLISH for w in found)
+    if share < MIN_KNOWN_SHARE or not small or non_latin * 2 > len(found):
+        unknown = [w for w in found if w not in known][:4]
+        raise InputError(OTHER_LANGUAGE.format(sample=", ".join(repr(w) for w in unknown)))
+
+
+_KNOWN: frozenset[str] | None = None
+
+
+def _known() -> frozenset[str]:
+    global _KNOWN
+    if _KNOWN is None:
+        _KNOWN = known_words()
+    return _KNOWN
