@@ -41,6 +41,8 @@ class Settings:
     #: hundreds of thousands); ``None`` keeps them as they come.
     max_faces: int | None = None
     time_limit: float = 10.0
+    #: The most objects a text may ask for; more is refused before any work (a runaway count).
+    max_objects: int = 150
     cache_dir: Path | None = field(default_factory=default_cache_dir)
     extra: dict[str, object] = field(default_factory=dict)
 
@@ -117,6 +119,7 @@ KEYS = {
     "feedback_rounds": _count(0),
     "max_faces": _optional_count(100),
     "time_limit": _positive,
+    "max_objects": _count(1),
     "cache_dir": _cache_dir,
     "extra": _table,
 }

@@ -23,6 +23,7 @@ from scenewright.cli.options import (
     ImageConcurrencyOption,
     ImagesOption,
     MaxFacesOption,
+    MaxObjectsOption,
     MeshesOption,
     ReasoningEffortOption,
     TimeoutOption,
@@ -75,6 +76,10 @@ def _summary(console: Console, folder: SceneFolder, scene: Scene) -> None:
         console.print(f"  renders/     {folder.renders}  ({len(renders)} preview{plural})")
     for removed in scene.removed:
         console.print(f"  [dim]removed {removed.id}: {removed.reason}[/dim]")
+    guessed = {k: v for e in scene.provenance for k, v in e.data.get("guessed", {}).items()}
+    if guessed:
+        names = ", ".join(f"{i} ({family})" for i, family in guessed.items())
+        console.print(f"  [yellow]guessed {len(guessed)} objects the catalogue does not name: {names}[/yellow]")
 
 
 @app.command("generate")
@@ -106,6 +111,7 @@ def generate_command(
     image_concurrency: ImageConcurrencyOption = None,
     feedback_rounds: FeedbackRoundsOption = None,
     max_faces: MaxFacesOption = None,
+    max_objects: MaxObjectsOption = None,
 ) -> None:
     """Turn TEXT into a scene folder: scene.json, one asset per object, scene.glb, previews."""
     from scenewright.backends import Backends
@@ -133,6 +139,7 @@ def generate_command(
         image_concurrency=image_concurrency,
         feedback_rounds=feedback_rounds,
         max_faces=max_faces,
+        max_objects=max_objects,
     )
     backends = Backends.from_settings(settings)
     console = Console(stderr=True)

@@ -9,7 +9,11 @@ English prose, even a short list of things, carries its small words (articles, p
 from __future__ import annotations
 
 import re
+import unicodedata
+from functools import lru_cache
 
+from scenewright.analysis.catalogue import load_catalogue, singular, words
+from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.errors import InputError
 
 #: Closed-class English words that almost every description uses.
@@ -34,11 +38,9 @@ OTHER_LANGUAGE = (
 )
 
 
+@lru_cache(maxsize=1)
 def known_words() -> frozenset[str]:
     """English words the reader knows: its small words and every catalogue and vocabulary noun."""
-    from scenewright.analysis.catalogue import load_catalogue, words
-    from scenewright.analysis.parser.vocabulary import load_vocabulary
-
     known = set(_ENGLISH)
     for category in load_catalogue().values():
         for phrase in category.phrases:
@@ -50,25 +52,16 @@ def known_words() -> frozenset[str]:
 
 def check_english(text: str) -> None:
     """Raise :class:`InputError` when ``text`` is not English (see the module's note)."""
-    from scenewright.analysis.catalogue import singular
-
     found = _WORD.findall(text.lower())
+    letters = [ch for ch in text if ch.isalpha()]
+    other_script = sum(1 for ch in letters if not unicodedata.name(ch, "").startswith("LATIN"))
+    if other_script * 2 > len(letters):  # Chinese, Russian, Greek...: no English rule can read it
+        raise InputError(OTHER_LANGUAGE.format(sample=repr(text.strip()[:24])))
     if len(found) < MIN_WORDS:
         return
-    non_latin = sum(1 for w in found if not w.isascii())
-    known = _known()
+    known = known_words()
     share = sum(1 for w in found if w in known or singular(w) in known) / len(found)
     small = any(w in _ENGLISH for w in found)
-    if share < MIN_KNOWN_SHARE or not small or non_latin * 2 > len(found):
+    if share < MIN_KNOWN_SHARE or not small:
         unknown = [w for w in found if w not in known][:4]
         raise InputError(OTHER_LANGUAGE.format(sample=", ".join(repr(w) for w in unknown)))
-
-
-_KNOWN: frozenset[str] | None = None
-
-
-def _known() -> frozenset[str]:
-    global _KNOWN
-    if _KNOWN is None:
-        _KNOWN = known_words()
-    return _KNOWN

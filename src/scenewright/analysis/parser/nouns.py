@@ -94,8 +94,11 @@ def _match_at(toks: list[_Tok], i: int) -> tuple[int, str, Entry | None] | None:
         if cat:
             return i + length, cat, None
         entry = vocabulary.match(words)
-        # a catalogue head keeps its kind: "a toy robot" is a robot, "a rocking chair" a chair
-        if entry is not None and not (length > 1 and match_phrase(words[-1:])):
+        # a catalogue head keeps its kind ("a toy chest" is a chest) unless the vocabulary says
+        # otherwise ("an arcade cabinet"); "a fig plant stands" has a verb, not a plant stand
+        verb = length > 1 and words[-1] != singular(words[-1]) and singular(words[-1]) in _FINITE
+        head_known = length > 1 and match_phrase(words[-1:]) and not vocabulary.over_catalogue(words)
+        if entry is not None and not verb and not head_known:
             return i + length, entry.category, entry
     return None
 
@@ -125,6 +128,11 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         words = [t.text for t in toks[s:e]]
         # a singular noun before another names its kind ("glass table", "dragon statue"); a plural
         # one is the subject of a verb that looks like a noun ("pylons guard the altar")
+        if nxt and nxt[0] == e and singular(words[-1]) == words[-1]:
+            last = toks[nxt[1] - 1].text
+            if nxt[3] is not None and singular(last) != last:  # "a knight guards the gate": a verb
+                raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])
+                nxt = None
         if nxt and nxt[0] == e and singular(words[-1]) == words[-1]:
             if not (nxt[3] is not None and entry is None and nxt[1] - nxt[0] == 1 and toks[nxt[0]].text in _KIND_WORDS):
                 modifier += words
@@ -280,6 +288,8 @@ def _alias_mentions(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention
 
 def _is_plural(toks: list[_Tok], m: _Mention) -> bool:
     last = toks[m.end - 1].text
+    if m.guess is not None and tuple(t.text for t in toks[m.start : m.end]) in load_vocabulary().entries:
+        return False  # "a triceratops" is listed as it is written
     return singular(last) != last or last in ("people", "cacti", "shelves", "benches", "glasses")
 
 

@@ -68,6 +68,10 @@ class _Clause:
     each: int | None = None
 
 
+#: No phrase makes more objects than this ("a million chairs"): the object limit then refuses the text.
+MAX_COUNT = 10_000
+
+
 class _Reader:
     """One pass over the text that builds groups of objects and relations between them."""
 
@@ -111,7 +115,8 @@ class _Reader:
         base = scaled(m.guess.size, describing) if m.guess is not None else cat.size
         size = _apply_sizes(base, sizes) if sizes else base
         rests = m.guess.rests if m.guess is not None else cat.rests
-        g = _Group(len(self.groups), m.category, max(1, m.count), name, description, size, rests=rests)
+        count = min(max(1, m.count), MAX_COUNT)
+        g = _Group(len(self.groups), m.category, count, name, description, size, rests=rests)
         g.guessed = m.guess is not None
         self.groups.append(g)
         return g.index

@@ -42,6 +42,11 @@ class Vocabulary:
     size_words: dict[str, float]
     suffixes: tuple[tuple[str, str], ...]
     longest: int
+    #: Phrases that beat the catalogue noun they end with ("arcade cabinet").
+    overrides: frozenset[tuple[str, ...]] = frozenset()
+
+    def over_catalogue(self, tokens: tuple[str, ...]) -> bool:
+        return tokens in self.overrides or (*tokens[:-1], singular(tokens[-1])) in self.overrides
 
     def match(self, tokens: tuple[str, ...]) -> Entry | None:
         """The entry a word tuple names, the last word also in its singular form."""
@@ -107,6 +112,7 @@ def _validate(raw: dict) -> Vocabulary:
         size_words={k: float(v) for k, v in raw["size_words"].items()},
         suffixes=tuple(sorted(raw["suffixes"].items(), key=lambda kv: -len(kv[0]))),
         longest=max(len(k) for k in entries),
+        overrides=frozenset(tuple(words(p)) for p in raw.get("over_catalogue", ())),
     )
 
 
