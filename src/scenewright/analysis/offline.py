@@ -89,7 +89,10 @@ class OfflineVLM:
         self, text: str, objects: Sequence[SceneObject], reference: bytes | None
     ) -> list[Constraint]:
         parsed = self.parse(text)
-        self.last_repairs = []
+        self.last_repairs = [
+            Event(stage="vlm.constraints", message=f"repaired: {note}", data={"backend": self.name, "step": "repair"})
+            for note in parsed.repairs
+        ]
         ids = _match_ids(parsed, objects)
         out: list[Constraint] = []
         for r in parsed.relations:

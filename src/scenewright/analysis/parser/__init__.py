@@ -63,7 +63,7 @@ from scenewright.analysis.parser.model import ParsedObject, ParsedRelation, Pars
 from scenewright.analysis.parser.phrases import FAR_LIMIT, NEAR_LIMIT, relation_phrases
 from scenewright.analysis.parser.reader import _Reader
 from scenewright.analysis.parser.style import GROUND_KINDS, _is_indoor, detect_ground, detect_style
-from scenewright.analysis.parser.support import _infer_support
+from scenewright.analysis.parser.support import _infer_support, repair_supports
 
 __all__ = [
     "FAR_LIMIT", "GROUND_KINDS", "NEAR_LIMIT", "ParsedObject", "ParsedRelation", "ParsedScene",
@@ -84,11 +84,11 @@ def _parse_cached(text: str) -> ParsedScene:
     _ids(reader.groups)
     catalogue = reader.catalogue
     objects = [
-        ParsedObject(i, g.category, g.name, g.description, g.size, g.index, g.guessed, g.rests)
+        ParsedObject(i, g.category, g.name, g.description, g.size, g.index, g.guessed, g.rests, reader.anchors.get(g.index))
         for g in reader.groups
         for i in g.ids
     ]
-    stated = _acyclic(_expand(reader), [o.id for o in objects])
+    stated, repairs = repair_supports(objects, _acyclic(_expand(reader), [o.id for o in objects]), catalogue)
     inferred = _infer_support(objects, stated, catalogue)
     relations = _acyclic(stated + inferred, [o.id for o in objects])
     indoor = _is_indoor([o.category for o in objects], text, catalogue, reader.places)
@@ -100,4 +100,5 @@ def _parse_cached(text: str) -> ParsedScene:
         ground=detect_ground(text, indoor),
         indoor=indoor,
         places=reader.places,
+        repairs=repairs,
     )

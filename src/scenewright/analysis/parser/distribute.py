@@ -53,9 +53,70 @@ def _instance_pairs(src: _Group, tgt: _Group, paired: bool) -> list[tuple[str, s
     return [(s, tgt.ids[i % m]) for i, s in enumerate(src.ids)]
 
 
+#: The sides that put a thing between two others, by how the two stand to each other.
+_BETWEEN_SIDES = {
+    "left of": ("left of", "right of"), "right of": ("right of", "left of"),
+    "in front of": ("in front of", "behind"), "behind": ("behind", "in front of"),
+}  # fmt: skip
+
+
+def _between(reader: _Reader, src: _Group, a: str, b: str) -> list[ParsedRelation]:
+    """"A bin between the machine and the stall": the centre in the gap, as a side of each (right
+    of one, left of the other), along the axis the pair already stands on (front to back when
+    the text put one in front of the other), and near both."""
+    sides = ("right of", "left of")
+    for kind, s, t, _ in reader.relations:
+        ids_s, ids_t = reader.groups[s].ids, reader.groups[t].ids
+        if kind in _BETWEEN_SIDES and a in ids_s and b in ids_t:  # a left of b: x right of a, left of b
+            first, second = _BETWEEN_SIDES[kind]
+            sides = (second, first)
+            break
+        if kind in _BETWEEN_SIDES and b in ids_s and a in ids_t:
+            sides = _BETWEEN_SIDES[kind]
+            break
+    out = []
+    for x in src.ids:
+        out += [ParsedRelation(x, sides[0], a), ParsedRelation(x, sides[1], b)]
+        out += [ParsedRelation(x, "near", a), ParsedRelation(x, "near", b)]
+    return out
+
+
+def _formations(reader: _Reader) -> list[ParsedRelation]:
+    """"Three stalls in a row": each right of the one before; "crates stacked": each on the one
+    below."""
+    out: list[ParsedRelation] = []
+    for g, formation in reader.formations.items():
+        ids = reader.groups[g].ids
+        relation = {"row": "right of", "stack": "on"}.get(formation)
+        if relation is not None:
+            out += [ParsedRelation(ids[i], relation, ids[i - 1]) for i in range(1, len(ids))]
+    return out
+
+
 def _expand(reader: _Reader) -> list[ParsedRelation]:
+    out = _expand_relations(reader)
+    # a stack stands where its bottom stands: the rest only rest on the one below
+    upper = {i for g, f in reader.formations.items() if f == "stack" for i in reader.groups[g].ids[1:]}
+    return _formations(reader) + [r for r in out if r.source not in upper]
+
+
+def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
     out: list[ParsedRelation] = []
     groups = reader.groups
+    betweens: dict[int, list[tuple[int, int | None]]] = {}
+    for kind, s, t, instance in reader.relations:
+        if kind == "between":
+            betweens.setdefault(s, []).append((t, instance))
+    for s, targets in betweens.items():
+        ends = [
+            groups[t].ids[i] if i is not None else groups[t].ids[0] for t, i in targets
+        ]  # "between the machine and the stall"
+        if len(targets) == 1 and len(groups[targets[0][0]].ids) >= 2 and targets[0][1] is None:
+            ends = groups[targets[0][0]].ids[:2]  # "between the two trees", "between them"
+        if len(ends) >= 2:
+            out += _between(reader, groups[s], ends[0], ends[1])
+        else:
+            out += [ParsedRelation(x, "near", ends[0]) for x in groups[s].ids]
     for kind, s, t, instance in reader.relations:
         src, tgt = groups[s], groups[t]
         paired = (s, t) in reader.pair_each or (t, s) in reader.pair_each
@@ -69,6 +130,9 @@ def _expand(reader: _Reader) -> list[ParsedRelation]:
         if kind == "opposite":
             for a, b in pairs:
                 out += [ParsedRelation(a, "in front of", b), ParsedRelation(a, "face to", b)]
+        elif kind == "at seat":  # a chair at a desk: pulled up to its front, facing it
+            for a, b in pairs:
+                out += [ParsedRelation(a, "in front of", b), ParsedRelation(a, "face to", b), ParsedRelation(a, "near", b)]
         elif kind == "flank":
             for i, (a, _) in enumerate(pairs):
                 out.append(ParsedRelation(a, ("left of", "right of")[i % 2], tgt.ids[(i // 2) % len(tgt.ids)]))

@@ -23,6 +23,9 @@ class ParsedObject:
     guessed: bool = False
     #: How it rests when that differs from its category's (an anvil is a ``tool`` on the ground).
     rests: str | None = None
+    #: The part of the room the text puts it in with no object to relate to: ``wall``,
+    #: ``corner``, ``centre``, ``back`` or ``front`` ("a sofa against the wall").
+    anchor: str | None = None
 
 
 @dataclass(frozen=True)
@@ -47,6 +50,8 @@ class ParsedScene:
     indoor: bool
     #: Place words that set the scene and stand nowhere in it ("hangar", "kitchen").
     places: list[str] = field(default_factory=list)
+    #: What the parse changed from the text's literal reading, and why ("x on y: y cannot hold it").
+    repairs: list[str] = field(default_factory=list)
 
     def constraints(self) -> list[Constraint]:
         return [r.constraint() for r in self.relations]

@@ -68,6 +68,16 @@ class _Clause:
     each: int | None = None
 
 
+#: Phrases that place a group in a formation rather than by a target.
+_FORMATIONS = ("row", "stack", "circle")
+#: Phrase kinds that, with no object after them, name a part of the room ("along the back wall").
+_PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None, "foot of": None, "at": None}
+#: Phrase kinds read as one of the scene's relations whatever they join.
+_KIND_RELATION = {"left": "left of", "right": "right of", "flank elliptic": "flank", "hanging from": "above",
+                  "leaning on": "side of", "along": "side of"}  # fmt: skip
+#: Seat shapes: what is "at" a desk or a table faces it from the front.
+_SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
+
 #: No phrase makes more objects than this ("a million chairs"): the object limit then refuses the text.
 MAX_COUNT = 10_000
 
@@ -88,6 +98,10 @@ class _Reader:
         self._target_start = -1
         #: Place words that set the scene rather than stand in it ("a hangar with a spaceship").
         self.places: list[str] = []
+        #: Group → the part of the room the text puts it in (wall, corner, centre, back, front).
+        self.anchors: dict[int, str] = {}
+        #: Group → the formation its members stand in (row, stack, circle).
+        self.formations: dict[int, str] = {}
 
     # ---- groups
 
@@ -146,7 +160,7 @@ class _Reader:
                 )
             if found is not None:
                 m.group = found
-                if not _is_plural(self.toks, m) and self.groups[found].count > 1:
+                if not _is_plural(self.toks, m) and self.groups[found].count > 1 and not m.each:
                     adj = [a.lower() for a in m.adjectives]
                     self.instance[m.start] = next((_ORDINALS[a] for a in adj if a in _ORDINALS), 0)
                 return found
@@ -171,7 +185,8 @@ class _Reader:
             if owner is not None:
                 self.size_of.setdefault(owner, []).append((dim, value))
         taken = {k for m in mentions for k in range(m.start, m.end)}
-        self.rel_at = {r.start: r for r in _find_relations(toks, taken)}
+        starts = {m.start for m in mentions}
+        self.rel_at = {r.start: r for r in _find_relations(toks, taken) if r.kind != "at" or self._names_thing(r.end, starts)}
         self._read_looks(mentions)
         self.by_start = {m.start: m for m in mentions if not m.content}
         for sentence in _split(toks):
@@ -283,7 +298,12 @@ class _Reader:
             # "a counter with combs, scissors and a jar runs beneath the mirror": the list goes on
             goes_on = bool(out) and self._open_with(*out[-1]) and cs not in self.rel_at
             goes_on = goes_on and self.toks[cs].text not in ("and", "or", "but", "then", "so")
-            if goes_on or (places and out and self._is_list(*out[-1], strict=True)):  # a bare list takes the next placing
+            # a bare list takes the next placing when "and" closes it ("a lamp, a laptop and a mug on
+            # the desk"); a list of commas only is a list of separate things ("a desk, an armchair, a
+            # globe on the desk": only the globe is on the desk)
+            first_rel = min((k for k in range(cs, ce) if k in self.rel_at), default=ce)
+            joined = bool(out) and any(self.toks[k].text in ("and", "or") for k in range(out[-1][0], first_rel))
+            if goes_on or (places and out and joined and self._is_list(*out[-1], strict=True)):
                 out[-1] = (out[-1][0], ce)
                 continue
             out.append((cs, ce))
@@ -350,9 +370,13 @@ class _Reader:
         the latest earlier mention, of the right number."""
         plural = word in ("them", "themselves")
         recent = [g for g in [*prefer, *reversed(self.history), *reversed(c.groups)] if g not in srcs]
-        for g in recent:
-            if (self.groups[g].count > 1) == plural:
-                return [g]
+        # a thing on the floor is not placed by a small thing on a table ("a nightstand with a lamp
+        # on it. A rug lies in front of it": the nightstand)
+        big = bool(srcs) and not self._small(*srcs)
+        for fits in ((lambda g: not (big and self._small(g))), (lambda g: True)):
+            for g in recent:
+                if (self.groups[g].count > 1) == plural and fits(g):
+                    return [g]
         # "them" after two single things ("an armchair ... a bookcase ..., between them")
         return list(dict.fromkeys(recent))[:2] if plural else []
 
@@ -471,7 +495,16 @@ class _Reader:
                 c.head, c.wsub = None, []
         else:
             srcs = list(c.main)
-        if kind == "no relation":
+        if kind == "no relation" or (kind == "stack" and end < ce and toks[end].text == "with"):
+            return end  # "a shelf stacked with books": contents, no stack
+        if kind in _FORMATIONS or kind.startswith("anchor ") or (target is None and kind in _PLACE_KINDS):
+            # "three stalls stand in a row", "a sofa against the wall", "a rug in the middle of the room"
+            place = _PLACE_KINDS.get(kind) or self._anchor_after(rel.end, ce) if not kind.startswith("anchor ") else kind
+            for g in srcs or ([] if c.first else list(prev_subject)):
+                if kind in _FORMATIONS:
+                    self.formations.setdefault(g, kind)
+                elif place:
+                    self.anchors.setdefault(g, place.removeprefix("anchor "))
             return end
         if kind in ("its left", "its right") and target is None:
             kind, target = ("left of" if kind == "its left" else "right of"), "it"
@@ -500,7 +533,6 @@ class _Reader:
                 second, end2 = self._target_at(end + 1, ce)
                 if isinstance(second, list):
                     targets, end = targets + second, end2
-            kind = "near"
         if isinstance(targets, list) and targets:
             for t in targets:
                 if t in c.groups:
@@ -532,7 +564,7 @@ class _Reader:
             self._one_a_side(srcs)  # also beside what is no object: "on each side of the elevator"
         if not srcs or not targets:
             return end
-        hang = any(t.text in _HANG_VERBS for t in toks[max(0, rel.start - 3) : rel.start])
+        hang = kind == "hanging from" or any(t.text in _HANG_VERBS for t in toks[max(0, rel.start - 3) : rel.start])
         if targets == "each other":
             for s in srcs:
                 self.relations.append(("face to" if kind == "face to" else "near", s, s, None))
@@ -554,6 +586,27 @@ class _Reader:
             c.last_target, c.last_target_end = [], -1
         c.expect_new = True
         return end
+
+    def _names_thing(self, start: int, starts: set[int]) -> bool:
+        """A noun phrase of a thing follows ("at each desk"), not a time or a part ("at one end")."""
+        k = start
+        while k < len(self.toks) and k - start < 4:
+            w = self.toks[k].text
+            if k in starts or w in ("it", "them"):
+                return True
+            if not (w in _DETERMINERS or w in ("each", "every") or (w[:1].isalpha() and w not in _STOP)):
+                return False
+            k += 1
+        return False
+
+    def _anchor_after(self, start: int, ce: int) -> str | None:
+        """The part of the room a phrase with no object names ("along the back wall" → wall)."""
+        for t in self.toks[start : min(ce, start + 4)]:
+            if t.text in ("wall", "walls"):
+                return "wall"
+            if t.text in ("corner", "corners"):
+                return "corner"
+        return None
 
     def _per_each(self, srcs: list[int], target: int) -> None:
         """As many of each source as it says, for every one of the target group."""
@@ -584,4 +637,18 @@ class _Reader:
         if kind == "under":
             tgt = self.catalogue[self.groups[t].category]
             return "under flat" if self.groups[s].size[2] < 0.1 and tgt.size[2] < 1.5 else "near"
-        return {"left": "left of", "right": "right of", "flank elliptic": "flank"}.get(kind, kind)
+        target = self.catalogue[self.groups[t].category]
+        if kind == "at":  # "an office chair at each desk": pulled up to it, facing it
+            seat = self.catalogue[src.category].shape in _SEATS
+            return "at seat" if seat and (target.support or target.shape in ("desk", "table", "counter")) else "near"
+        if kind in ("foot of", "head of"):  # "a chest at the foot of the bed": its front, the headboard its back
+            if target.shape in ("bed", "sofa", "bench"):
+                return "in front of" if kind == "foot of" else "behind"
+            if kind == "head of" and target.support:
+                return "left of"  # the head of a table is one of its ends
+            return "near"
+        if kind == "hanging from":  # from a beam or a shelf: above it; from a tall tree: beside it
+            return "above" if target.size[2] <= 2.5 else "near"
+        if kind == "centre of":  # "a vase in the middle of the table": on it; else near it
+            return "on" if src.rests == "surface" and target.support else "near"
+        return _KIND_RELATION.get(kind, kind)

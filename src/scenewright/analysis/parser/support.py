@@ -67,3 +67,44 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
                 best = min(hosts, key=lambda o: (abs(o.group - obj.group), o.group > obj.group, -o.size[0] * o.size[1]))
                 extra.append(ParsedRelation(obj.id, "above", best.id, inferred=True))
     return extra
+
+
+#: A host this low is ground-like (a rug, a pond, a pallet, a blanket): anything may stand on it.
+FLAT_HOST = 0.3
+#: How much larger than its host a thing may be and still rest on it (footprint, longest side):
+#: a statue overhangs its plinth, a bird its bollard.
+_AREA_SLACK, _SIDE_SLACK = 2.0, 1.6
+#: Furniture that stands on the floor, never on another piece ("a sofa on the desk" is beside it).
+_FLOOR_FURNITURE = {"sofa", "armchair", "bed", "wardrobe", "bookshelf", "office_chair", "piano", "fridge",
+                    "stove", "counter", "desk", "table", "round_table", "coffee_table", "bathtub", "treadmill",
+                    "dresser", "tv_stand", "school_desk", "dining_table"}  # fmt: skip
+
+
+def can_hold(host: ParsedObject, thing: ParsedObject, catalogue) -> bool:
+    """Whether ``thing`` can rest on ``host``: hosts that hang hold nothing; a flat host holds
+    anything; otherwise the thing must be about the host's size or smaller."""
+    if (host.rests or catalogue[host.category].rests) == "hanging":
+        return False
+    if host.size[2] <= FLAT_HOST:
+        return True
+    if thing.category in _FLOOR_FURNITURE:
+        return False
+    area = thing.size[0] * thing.size[1] <= _AREA_SLACK * host.size[0] * host.size[1]
+    side = max(thing.size[:2]) <= _SIDE_SLACK * max(host.size[:2])
+    return area and side
+
+
+def repair_supports(
+    objects: list[ParsedObject], relations: list[ParsedRelation], catalogue
+) -> tuple[list[ParsedRelation], list[str]]:
+    """Each ``on`` whose host cannot hold the thing becomes ``side of`` (what the text most
+    likely meant: "a dinosaur skeleton on a barrel" stands beside it), with a note of the repair."""
+    by_id = {o.id: o for o in objects}
+    out: list[ParsedRelation] = []
+    notes: list[str] = []
+    for r in relations:
+        if r.relation == "on" and not can_hold(by_id[r.target], by_id[r.source], catalogue):
+            notes.append(f"{r.source} on {r.target}: {r.target} cannot hold it; placed beside it instead")
+            r = ParsedRelation(r.source, "side of", r.target, r.inferred)
+        out.append(r)
+    return out, notes
