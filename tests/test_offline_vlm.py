@@ -202,3 +202,12 @@ def test_guessed_objects_are_recorded_for_the_provenance(vlm):
     assert "camel_1 (animal)" in event.message
     vlm.find_redundant(objects, {})
     assert vlm.last_repairs == []  # reported once, not again by the next call
+
+
+def test_support_repairs_are_recorded_with_the_constraints(vlm):
+    text = "A desk stands by the window, and a sofa sits on the desk."
+    objects = vlm.describe_objects(text, "realistic", None)
+    constraints = vlm.write_constraints(text, objects, None)
+    assert ("sofa_1", "side of", "desk_1") in {(c.source, c.relation, c.target) for c in constraints}
+    assert [e.data["step"] for e in vlm.last_repairs] == ["repair"]
+    assert "desk_1 cannot hold it" in vlm.last_repairs[0].message
