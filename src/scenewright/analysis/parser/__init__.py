@@ -4,7 +4,34 @@ The offline vision-language backend answers from this parse. It reads descriptio
 the way people write them (the paper's 50–300-word inputs): noun phrases are matched against
 the catalogue (longest phrase first, plurals folded), counts come from the words before them,
 and relation phrases connect the clause's subject (the thing placed) to the noun phrase after
-the phrase. Decisions worth knowing:
+the phrase.
+
+Where things live: ``tokens`` (words, clauses), ``words`` (closed word classes), ``nouns``
+(noun phrases, the open vocabulary, place words), ``sizes``, ``phrases`` (relation phrases;
+the phrases themselves are ``data/relation_phrases.json``), ``reader`` (clause reading and
+reference resolution), ``distribute`` ("each", around, between, rows: group relations to
+object relations), ``support`` (default supports, ``on`` only onto hosts that can hold the
+thing), ``vocabulary`` (``data/vocabulary.json``), ``language`` (English only), ``style``.
+To add a phrase, add it to its kind's list in ``data/relation_phrases.json``; to add a thing,
+add its head word to ``data/vocabulary.json``.
+
+Decisions worth knowing:
+
+- A noun the catalogue does not know still names an object: the vocabulary gives its shape
+  family (animal, figure, machine, tank, structure, panel, container, tool, vehicle) and size;
+  a noun nobody listed becomes a generic ``thing`` unless it names no thing (a place, a time,
+  weather, a part, a material). Such objects are ``guessed``. A place word sets the scene
+  ("inside a warehouse", "a hangar with a spaceship", "a farmhouse kitchen") and is no object.
+- ``between A and B`` → right of one and left of the other (front/behind when the pair stands
+  front to back) and near both; a seat ``at`` a desk or table → in front of it, facing it;
+  ``at the foot of`` a bed → in front of it, ``at the head of`` → behind it (a table's head is
+  an end); ``hanging from`` → above (near a tall host); ``leaning on`` / ``along`` → side of;
+  ``in a row`` / ``stacked`` → each right of / on the one before; ``against the wall``, ``in
+  the corner``, ``in the middle of the room``, ``at the back`` name no object and become the
+  object's ``anchor`` for the arranger.
+- ``on`` only onto a host that can hold the thing (flat hosts hold anything; floor furniture
+  stands on no other piece; a thing at most about the host's size); otherwise ``side of``, and
+  the repair is listed in ``ParsedScene.repairs``.
 
 - ``beside`` / ``next to`` / ``alongside`` → ``side of``; ``near`` / ``close to`` / ``by`` →
   ``near``; ``opposite`` / ``across from`` → ``in front of`` + ``face to``; ``flanked by`` and
@@ -12,7 +39,7 @@ the phrase. Decisions worth knowing:
   side of" is two, one a side, even beside a door that is no object); ``around`` /
   ``surrounding`` / ``surrounded by`` → the surrounding objects shared among the target's
   sides (every side once, then the long sides of a long table), each facing it; one thing
-  "around" another is ``near`` it; ``between A and B`` → ``near`` both; ``at a distance of
+  "around" another is ``near`` it; ``at a distance of
   N m`` → ``near`` when N ≤ 2, ``far`` when N > 8.
 - "on the left wall" places nothing: a side word before a noun is that noun's adjective, and
   walls are no objects. A part named by a possessive is its owner ("above its door" → above
