@@ -39,6 +39,8 @@ _SINGLE_TARGET = {
     "left of": ("left of",), "right of": ("right of",), "in front of": ("in front of",), "behind": ("behind",),
     "side of": ("side of",), "near": ("near",), "far": ("far",), "on": ("on",), "above": ("above",),
     "over": ("above",), "face to": ("face to",), "opposite": ("in front of", "face to"), "between": ("near",),
+    "foot of": ("in front of",), "head of": ("behind",), "hanging from": ("above",), "leaning on": ("side of",),
+    "along": ("side of",),
 }  # fmt: skip
 
 
