@@ -76,6 +76,11 @@ def test_rows_and_stacks_chain_the_group():
     assert not any(r[1] == "on" and r[0].startswith("bookshelf") for r in rels("A bookshelf stacked with books."))
 
 
+def test_a_circle_is_a_formation_for_the_arranger():
+    parsed = parse_scene("Six stools stand in a circle.")
+    assert {o.formation for o in parsed.objects} == {"circle"}
+
+
 def test_parts_of_the_room_are_anchors():
     parsed = parse_scene(
         "A sofa against the wall, a rug in the middle of the room, a plant in the corner. "

@@ -111,7 +111,10 @@ def _parse_cached(text: str) -> ParsedScene:
     _ids(reader.groups)
     catalogue = reader.catalogue
     objects = [
-        ParsedObject(i, g.category, g.name, g.description, g.size, g.index, g.guessed, g.rests, reader.anchors.get(g.index))
+        ParsedObject(
+            i, g.category, g.name, g.description, g.size, g.index, g.guessed, g.rests,
+            reader.anchors.get(g.index), reader.formations.get(g.index),
+        )
         for g in reader.groups
         for i in g.ids
     ]

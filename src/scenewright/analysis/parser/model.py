@@ -26,6 +26,8 @@ class ParsedObject:
     #: The part of the room the text puts it in with no object to relate to: ``wall``,
     #: ``corner``, ``centre``, ``back`` or ``front`` ("a sofa against the wall").
     anchor: str | None = None
+    #: The formation its group stands in: ``row``, ``stack`` or ``circle`` ("three stalls in a row").
+    formation: str | None = None
 
 
 @dataclass(frozen=True)
