@@ -100,3 +100,10 @@ def test_it_for_a_floor_thing_is_not_a_tabletop_thing():
 def test_one_of_them_names_one_member():
     found = rels("Two armchairs face the fireplace, and a cat sleeps on one of them.")
     assert ("cat_1", "on", "armchair_1") in found
+
+
+def test_between_a_facing_pair_runs_front_to_back():
+    found = rels("A sofa faces the TV stand. A coffee table stands between the sofa and the TV stand.")
+    assert {("coffee_table_1", "behind", "sofa_1"), ("coffee_table_1", "in front of", "tv_stand_1")} <= found
+    found = rels("Two sofas face each other, with a coffee table between them.")
+    assert {("coffee_table_1", "behind", "sofa_1"), ("coffee_table_1", "in front of", "sofa_2")} <= found

@@ -60,6 +60,10 @@ _BETWEEN_SIDES = {
 }  # fmt: skip
 
 
+#: Relations that put a pair front to back, read as "in front of" when choosing between's axis.
+_FACING = {"opposite": "in front of", "face to": "in front of", "at seat": "in front of"}
+
+
 def _between(reader: _Reader, src: _Group, a: str, b: str) -> list[ParsedRelation]:
     """"A bin between the machine and the stall": the centre in the gap, as a side of each (right
     of one, left of the other), along the axis the pair already stands on (front to back when
@@ -67,6 +71,10 @@ def _between(reader: _Reader, src: _Group, a: str, b: str) -> list[ParsedRelatio
     sides = ("right of", "left of")
     for kind, s, t, _ in reader.relations:
         ids_s, ids_t = reader.groups[s].ids, reader.groups[t].ids
+        if kind == "face to" and s == t and a in ids_s and b in ids_s:  # two sofas facing each other
+            sides = ("behind", "in front of")
+            break
+        kind = _FACING.get(kind, kind)  # a TV opposite the sofa: the pair stands front to back
         if kind in _BETWEEN_SIDES and a in ids_s and b in ids_t:  # a left of b: x right of a, left of b
             first, second = _BETWEEN_SIDES[kind]
             sides = (second, first)
