@@ -32,6 +32,8 @@ def test_other_languages_are_refused_with_the_way_out(text):
         "Zen garden",
         "a sofa facing a TV",
         "Two camels, a dragon and a zorbulator near the oasis.",
+        "Cyberpunk ramen bar",
+        "Neo-Tokyo noodle stall at midnight",
     ],
 )
 def test_english_passes(text):

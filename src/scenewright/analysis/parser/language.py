@@ -25,7 +25,16 @@ _ENGLISH = frozenset(
     "yellow left right front back middle corner against along inside for stand sit lies hang "
     "hangs while where which room scene".split()
 )
+#: Small words of the languages people most often write in instead (French, Spanish, German,
+#: Italian, Portuguese, Dutch) that are no English words.
+_FOREIGN = frozenset(
+    "le la les un une des et avec dans sur sous du au aux est sont el los las y con una del por para "
+    "junto der die das und mit ein eine einer einem auf im neben dem den ist il lo gli della di nel "
+    "sul con uno os um uma com na ao ou het een met op naast bij".split()
+)
 _WORD = re.compile(r"[^\W\d_]+")
+#: Below this many words a text is judged only by foreign small words ("Cyberpunk ramen bar").
+SHORT_TEXT = 6
 #: Fewer known words than this share of the text's words means another language.
 MIN_KNOWN_SHARE = 0.3
 #: Shortest text judged: a name or two ("Treehouse", "Zen garden") is left alone.
@@ -45,9 +54,12 @@ def known_words() -> frozenset[str]:
     for category in load_catalogue().values():
         for phrase in category.phrases:
             known.update(words(phrase))
-    for phrase in load_vocabulary().entries:
+    vocabulary = load_vocabulary()
+    for phrase in vocabulary.entries:
         known.update(phrase)
-    return frozenset(known)
+    for word in (*vocabulary.not_things, *vocabulary.adjectives):
+        known.update(words(word))
+    return frozenset(known - _FOREIGN)
 
 
 def check_english(text: str) -> None:
@@ -62,6 +74,8 @@ def check_english(text: str) -> None:
     known = known_words()
     share = sum(1 for w in found if w in known or singular(w) in known) / len(found)
     small = any(w in _ENGLISH for w in found)
-    if share < MIN_KNOWN_SHARE or not small:
+    foreign = sum(1 for w in found if w in _FOREIGN) / len(found)
+    long_text = len(found) >= SHORT_TEXT
+    if foreign >= 0.15 or (long_text and (share < MIN_KNOWN_SHARE or not small)):
         unknown = [w for w in found if w not in known][:4]
         raise InputError(OTHER_LANGUAGE.format(sample=", ".join(repr(w) for w in unknown)))
