@@ -107,3 +107,18 @@ def test_between_a_facing_pair_runs_front_to_back():
     assert {("coffee_table_1", "behind", "sofa_1"), ("coffee_table_1", "in front of", "tv_stand_1")} <= found
     found = rels("Two sofas face each other, with a coffee table between them.")
     assert {("coffee_table_1", "behind", "sofa_1"), ("coffee_table_1", "in front of", "sofa_2")} <= found
+
+
+def test_a_clause_opened_by_and_keeps_its_own_placing():
+    parsed = parse_scene("Two robots sell orbs from a cart, and three aliens wait in a line.")
+    formations = {o.name: o.formation for o in parsed.objects}
+    assert formations["alien"] == "row" and formations["robot"] is None and formations["orb"] is None
+
+
+def test_with_after_a_persons_target_belongs_to_the_target():
+    found = rels("A baker stands behind the counter with a tray of bread on it.")
+    assert ("plate_1", "on", "counter_1") in found and ("baker_1", "behind", "counter_1") in found
+
+
+def test_what_a_person_holds_is_beside_them():
+    assert rels("A brave knight stands at the entrance, holding a shield.") == {("shield_1", "side of", "knight_1")}

@@ -302,7 +302,11 @@ class _Reader:
             # the desk"); a list of commas only is a list of separate things ("a desk, an armchair, a
             # globe on the desk": only the globe is on the desk)
             first_rel = min((k for k in range(cs, ce) if k in self.rel_at), default=ce)
-            joined = bool(out) and any(self.toks[k].text in ("and", "or") for k in range(out[-1][0], first_rel))
+            # (an "and" opening the placing clause starts a clause of its own: "..., and three
+            # aliens wait in a line")
+            joined = bool(out) and any(
+                self.toks[k].text in ("and", "or") for k in (*range(out[-1][0] + 1, out[-1][1]), *range(cs + 1, first_rel))
+            )
             if goes_on or (places and out and joined and self._is_list(*out[-1], strict=True)):
                 out[-1] = (out[-1][0], ce)
                 continue
@@ -407,6 +411,8 @@ class _Reader:
                 continue
             if w == "with" or w in _HOLD or (w, nxt) in _HOLD_PAIRS or w in ("has", "have"):
                 c.head = [c.each] if c.each is not None else (c.main or list(prev_subject))
+                if w == "with" and c.last_target and c.last_target_end == k and self._animate(*c.head):
+                    c.head = list(c.last_target)  # "a baker stands behind the counter with a tray on it"
                 c.wsub, c.expect_new = [], False
                 c.hold = w in _HOLD or (w, nxt) in _HOLD_PAIRS
                 k += 2 if (w, nxt) in _HOLD_PAIRS else 1
@@ -446,6 +452,10 @@ class _Reader:
                 continue
             k += 1
         self._close_with(c)
+
+    def _animate(self, *groups: int) -> bool:
+        """People and animals: what comes "with" right after their target belongs to the target."""
+        return bool(groups) and all(self.groups[g].category in ("figure", "animal", "bird") for g in groups)
 
     def _small(self, *groups: int) -> bool:
         """All of these stand on surfaces (tabletop things)."""

@@ -69,6 +69,8 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
     return extra
 
 
+#: Hosts with no top to put things on: people and birds (a horse or a camel can carry a load).
+_NO_TOP = {"figure", "bird", "mannequin", "scarecrow"}
 #: A host this low is ground-like (a rug, a pond, a pallet, a blanket): anything may stand on it.
 FLAT_HOST = 0.3
 #: How much larger than its host a thing may be and still rest on it (footprint, longest side):
@@ -83,8 +85,8 @@ _FLOOR_FURNITURE = {"sofa", "armchair", "bed", "wardrobe", "bookshelf", "office_
 def can_hold(host: ParsedObject, thing: ParsedObject, catalogue) -> bool:
     """Whether ``thing`` can rest on ``host``: hosts that hang hold nothing; a flat host holds
     anything; otherwise the thing must be about the host's size or smaller."""
-    if (host.rests or catalogue[host.category].rests) == "hanging":
-        return False
+    if (host.rests or catalogue[host.category].rests) == "hanging" or host.category in _NO_TOP:
+        return False  # what a knight holds is beside him, not on him
     if host.size[2] <= FLAT_HOST:
         return True
     if thing.category in _FLOOR_FURNITURE:
