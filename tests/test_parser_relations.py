@@ -122,3 +122,10 @@ def test_with_after_a_persons_target_belongs_to_the_target():
 
 def test_what_a_person_holds_is_beside_them():
     assert rels("A brave knight stands at the entrance, holding a shield.") == {("shield_1", "side of", "knight_1")}
+
+
+def test_between_two_rows_of_a_plant():
+    parsed = parse_scene("A scarecrow stands between two rows of tulips.")
+    assert [o.category for o in parsed.objects].count("flower_bed") == 2
+    found = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert {("scarecrow_1", "right of", "flower_bed_1"), ("scarecrow_1", "left of", "flower_bed_2")} <= found

@@ -344,7 +344,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             k = j - 2
             if k >= 0 and toks[k].text in _NUMBERS:  # "two pairs of", "three stacks of"
                 width, depth, _ = load_catalogue()[m.category].size
-                per = 1 if q in ("row", "rows", "line", "lines") and width >= 1.0 and depth <= 0.6 else count
+                long_unit = (width >= 1.0 and depth <= 0.6) or load_catalogue()[m.category].shape == "flower_bed"
+                per = 1 if q in ("row", "rows", "line", "lines") and long_unit else count  # a row of tulips is a bed
                 count, counted = per * _NUMBERS[toks[k].text], True  # "three rows of shelves": a unit a row
             elif k >= 0 and toks[k].text == "of" and k > 0 and toks[k - 1].text in _QUANTITY:
                 count = _QUANTITY[toks[k - 1].text]  # "a lot of"

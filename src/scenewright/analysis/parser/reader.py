@@ -357,7 +357,8 @@ class _Reader:
                 return w, j + 1
             if w in ("each", "one") and j + 1 < ce and toks[j + 1].text in ("other", "another"):
                 return "each other", j + 2
-            after_determiner = j > pos and toks[j - 1].text in _DETERMINERS  # a noun, not a verb ("its walls")
+            # a noun, not a verb, after a determiner or a count ("its walls", "two rows of")
+            after_determiner = j > pos and (toks[j - 1].text in _DETERMINERS or toks[j - 1].text in _NUMBERS)
             if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
                 w not in _STOP and w[0].isalnum() and (after_determiner or not _is_verb(w))
             ):
