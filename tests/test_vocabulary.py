@@ -140,3 +140,15 @@ def test_a_building_the_text_places_stays_an_object():
 )
 def test_nouns_used_as_verbs_kinds_or_contents_are_no_objects(text, absent):
     assert absent not in objects(text)
+
+
+def test_a_place_floor_is_the_setting():
+    parsed = parse_scene("An abandoned factory floor with a rusted conveyor belt and a pile of scrap metal.")
+    assert [o.name for o in parsed.objects] == ["conveyor belt"]
+    assert parsed.places == ["factory"] and parsed.indoor
+
+
+def test_people_count_as_figures_and_taxis_as_cars():
+    parsed = parse_scene("A busy street with lots of people, a food truck and a couple of taxis.")
+    categories = [o.category for o in parsed.objects]
+    assert categories.count("figure") == 5 and categories.count("car") == 2 and "thing" not in categories

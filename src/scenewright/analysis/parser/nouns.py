@@ -151,7 +151,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             follow and singular(follow) in _VENUES and len(words) == 1
         ):
             continue  # "a throne hall", "a flower shop", "a farmhouse kitchen": the place, not the thing
-        if _is_place(toks, s, e, raw[k + 1 :]):
+        if _is_place(toks, s, e, raw[k + 1 :]) or (
+            follow in ("floor", "interior", "grounds") and singular(words[-1]) in vocabulary.places
+        ):  # "an abandoned factory floor with a conveyor belt"
             places.append(" ".join(words))
             continue
         qualifies = follow[:1].isalpha() and follow not in _STOP and not _is_verb(follow)
