@@ -67,9 +67,8 @@ def test_phrase_families(text, expected):
 
 
 def test_rows_and_stacks_chain_the_group():
-    assert {("market_stall_2", "right of", "market_stall_1"), ("market_stall_3", "right of", "market_stall_2")} <= rels(
-        "Three market stalls stand in a row."
-    )
+    row = parse_scene("Three market stalls stand in a row.")
+    assert {o.formation for o in row.objects} == {"row"} and not row.relations  # a row states no side
     found = rels("Three crates are stacked beside the door of the barn.")
     assert {("crate_2", "on", "crate_1"), ("crate_3", "on", "crate_2")} <= found
     # a shelf stacked with books holds them; it is no stack
@@ -129,3 +128,13 @@ def test_between_two_rows_of_a_plant():
     assert [o.category for o in parsed.objects].count("flower_bed") == 2
     found = {(r.source, r.relation, r.target) for r in parsed.relations}
     assert {("scarecrow_1", "right of", "flower_bed_1"), ("scarecrow_1", "left of", "flower_bed_2")} <= found
+
+
+def test_contents_do_not_close_a_with_part():
+    assert rels("A cart with a bowl of apples on it.") == {("bowl_1", "on", "cart_1")}
+    assert rels("A cart with a tray of bottles on it.") == {("plate_1", "on", "cart_1")}
+
+
+def test_its_part_is_its_owner():
+    found = rels("A market stall sells fruit, with a pile of pumpkins on its counter.")
+    assert all(t == "market_stall_1" for _, _, t in found) and found

@@ -152,3 +152,10 @@ def test_people_count_as_figures_and_taxis_as_cars():
     parsed = parse_scene("A busy street with lots of people, a food truck and a couple of taxis.")
     categories = [o.category for o in parsed.objects]
     assert categories.count("figure") == 5 and categories.count("car") == 2 and "thing" not in categories
+
+
+def test_counted_plurals_of_compound_things_are_things():
+    found = objects("Two music stands, three thermoses and a donkey tied to a post.")
+    assert found["music stand"] == ("tool", True) and found["thermos"] == ("tool", True)
+    assert found["post"] == ("thing", True)
+    assert objects("A potted fig plant stands next to the sofa.").keys() >= {"sofa"}

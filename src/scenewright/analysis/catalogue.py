@@ -41,7 +41,8 @@ RESTS = ("ground", "surface", "hanging")
 _WORD = re.compile(r"[^\W_]+(?:['’][^\W\d_]+)?")  # letters of any script: "café" is one word
 #: Plurals that the suffix rules below would get wrong.
 _IRREGULAR = {"cacti": "cactus", "mice": "mouse", "geese": "goose", "people": "person", "children": "child",
-              "taxis": "taxi", "buses": "bus", "octopuses": "octopus", "walruses": "walrus", "cactuses": "cactus"}
+              "taxis": "taxi", "buses": "bus", "octopuses": "octopus", "walruses": "walrus", "cactuses": "cactus",
+              "thermoses": "thermos", "canvases": "canvas", "lenses": "lens", "atlases": "atlas"}
 _KEEP_S = ("ss", "us", "is", "ous", "ics")
 
 

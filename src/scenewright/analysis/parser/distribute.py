@@ -90,14 +90,13 @@ def _between(reader: _Reader, src: _Group, a: str, b: str) -> list[ParsedRelatio
 
 
 def _formations(reader: _Reader) -> list[ParsedRelation]:
-    """"Three stalls in a row": each right of the one before; "crates stacked": each on the one
-    below."""
+    """"Crates stacked": each on the one below. A row or a circle states no side, so it stays the
+    objects' ``formation`` for the arranger rather than a relation."""
     out: list[ParsedRelation] = []
     for g, formation in reader.formations.items():
         ids = reader.groups[g].ids
-        relation = {"row": "right of", "stack": "on"}.get(formation)
-        if relation is not None:
-            out += [ParsedRelation(ids[i], relation, ids[i - 1]) for i in range(1, len(ids))]
+        if formation == "stack":
+            out += [ParsedRelation(ids[i], "on", ids[i - 1]) for i in range(1, len(ids))]
     return out
 
 

@@ -97,10 +97,24 @@ def _match_at(toks: list[_Tok], i: int) -> tuple[int, str, Entry | None] | None:
         # a catalogue head keeps its kind ("a toy chest" is a chest) unless the vocabulary says
         # otherwise ("an arcade cabinet"); "a fig plant stands" has a verb, not a plant stand
         verb = length > 1 and words[-1] != singular(words[-1]) and singular(words[-1]) in _FINITE
+        verb = verb and not _counted_plural(toks, i)  # "two music stands" are stands
         head_known = length > 1 and match_phrase(words[-1:]) and not vocabulary.over_catalogue(words)
         if entry is not None and not verb and not head_known:
             return i + length, entry.category, entry
     return None
+
+
+def _counted_plural(toks: list[_Tok], i: int) -> bool:
+    """A count above one stands right before ``i`` (adjectives aside): "two (wooden) music stands"."""
+    j = i - 1
+    while j >= 0 and i - j <= 3:
+        w = toks[j].text
+        if w in _NUMBERS or w in _VAGUE or w.isdigit():
+            return w not in ("one", "single", "1")
+        if w in _STOP or not w[:1].isalpha():
+            return False
+        j -= 1
+    return False
 
 
 def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
@@ -169,7 +183,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
 
 #: Vocabulary words that only restate what the catalogue noun before them is ("a menu board").
 _KIND_WORDS = {"board", "panel", "screen", "machine", "device", "unit", "box", "container", "tool", "vehicle",
-               "structure", "apparatus", "console", "gadget", "station"}  # fmt: skip
+               "structure", "apparatus", "console", "gadget", "station", "post", "pole", "platform"}  # fmt: skip
 
 
 def _names_kind(toks: list[_Tok], e: int) -> bool:

@@ -189,6 +189,7 @@ class _Reader:
         self.rel_at = {r.start: r for r in _find_relations(toks, taken) if r.kind != "at" or self._names_thing(r.end, starts)}
         self._read_looks(mentions)
         self.by_start = {m.start: m for m in mentions if not m.content}
+        self.content_at = {k for m in mentions if m.content for k in range(m.start, m.end)}
         for sentence in _split(toks):
             prev_subject: list[int] = []
             pending: list[tuple[str, list[int]]] = []
@@ -270,8 +271,9 @@ class _Reader:
             return True  # "a bowl full of apples"
         if self._listed_content(m.start):
             return True  # "crates overflow with apples, pumpkins and carrots"
-        if w == "of" and prev.end == j and prev.category in _CONTENT_HEADS and not m.definite:
-            return True  # "a vase of tulips", "a statue of a horse"
+        holder = prev.category in _CONTENT_HEADS or prev.category in ("container", "tool")
+        if w == "of" and prev.end == j and holder and not m.definite:
+            return True  # "a vase of tulips", "a statue of a horse", "a tray of medicine bottles"
         plant = self.catalogue[prev.category].shape in ("potted_plant", "bush", "flower_bed")
         return w == "in" and j - prev.end <= 2 and m.category in ("pot", "planter", "vase") and plant
 
@@ -350,6 +352,9 @@ class _Reader:
             if j in self.by_start:
                 m = self.by_start[j]
                 self._target_start = m.start
+                owner = _OWNER_PRONOUNS.get(toks[pos].text) if pos < ce else None
+                if owner and m.group < 0 and not any(g.category == m.category for g in self.groups):
+                    return owner, m.end  # "pumpkins on its counter": the stall's own counter is the stall
                 g = self._resolve(m, self.size_of.get(m.start, []))
                 return ([g] if g >= 0 else None), m.end
             w = toks[j].text
@@ -495,7 +500,12 @@ class _Reader:
         if chained and c.last_target and c.last_target_end == last_event_end and all(b in _ADVERBS for b in between):
             srcs = list(c.last_target)
         elif c.head is not None:
-            closed = any(_is_verb(b) for b in between)
+            # contents are no verbs: "a cart with a bowl of apples on it" keeps the bowl as the source
+            closed = any(
+                _is_verb(toks[k].text)
+                for k in range(last_event_end, rel.start)
+                if k not in self.content_at and toks[k - 1].text != "of"
+            )
             if c.wsub and not closed and not c.expect_new:
                 srcs = list(c.wsub)
                 if kind in ("on", "above", "over", "on top", "under"):
