@@ -138,3 +138,10 @@ def test_contents_do_not_close_a_with_part():
 def test_its_part_is_its_owner():
     found = rels("A market stall sells fruit, with a pile of pumpkins on its counter.")
     assert all(t == "market_stall_1" for _, _, t in found) and found
+
+
+def test_each_one_is_one_per_member():
+    parsed = parse_scene("Three desks stand by the wall; there is an office chair in front of each one.")
+    assert [o.category for o in parsed.objects].count("office_chair") == 3
+    found = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert {("office_chair_1", "in front of", "desk_1"), ("office_chair_3", "in front of", "desk_3")} <= found

@@ -159,3 +159,11 @@ def test_counted_plurals_of_compound_things_are_things():
     assert found["music stand"] == ("tool", True) and found["thermos"] == ("tool", True)
     assert found["post"] == ("thing", True)
     assert objects("A potted fig plant stands next to the sofa.").keys() >= {"sofa"}
+
+
+def test_an_opening_place_or_a_part_of_one_is_the_setting():
+    parsed = parse_scene("A neon cyberpunk hangar on the edge of the megacity, late at night. A spaceship sits in the middle.")
+    assert [o.category for o in parsed.objects] == ["spaceship"] and parsed.places == ["hangar"]
+    parsed = parse_scene("A small design office on the top floor of a converted warehouse. A desk stands by the window.")
+    assert [o.category for o in parsed.objects] == ["desk"]
+    assert [o.category for o in parse_scene("A warehouse.").objects] == ["warehouse"]  # nothing else: the thing

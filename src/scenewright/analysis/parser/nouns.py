@@ -216,6 +216,14 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
         j -= 1
     if j >= 0 and toks[j].text in _INSIDE:
         return True
+    # "on the top floor of a converted warehouse": a part of the place holds the scene
+    if j > 0 and toks[j].text == "of" and toks[j - 1].text in ("floor", "top", "edge", "roof", "corner", "end", "back"):
+        return True
+    # the description opens with the place ("A cyberpunk hangar on the edge of the city, late at night.")
+    opening = j < 0 or (toks[j].text in (".", "!", "?") and j == s - 1)
+    follow = toks[e].text if e < len(toks) else "."
+    if opening and later and not later_before(later, toks, e) and (follow in (",", ".", ":", ";") or follow in ("on", "at", "in")):
+        return True
     if e < len(toks) and toks[e].text in _PLACE_OPENERS:
         starts = {r[0] for r in later}
         k = e + 1
@@ -223,6 +231,19 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
             if k in starts:
                 return True  # the with-part names a thing: the place holds the scene
             k += 1
+    return False
+
+
+def later_before(later: list, toks: list[_Tok], e: int) -> bool:
+    """Whether a thing is named between ``e`` and the next verb (then the opening noun is a subject)."""
+    starts = {r[0] for r in later}
+    k = e
+    while k < len(toks) and toks[k].text not in (".", "!", "?", ",", ":", ";"):
+        if _is_verb(toks[k].text):
+            return False
+        if k in starts:
+            return True
+        k += 1
     return False
 
 

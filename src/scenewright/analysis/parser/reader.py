@@ -362,6 +362,8 @@ class _Reader:
                 return w, j + 1
             if w in ("each", "one") and j + 1 < ce and toks[j + 1].text in ("other", "another"):
                 return "each other", j + 2
+            if w in ("each", "every") and j + 1 < ce and toks[j + 1].text == "one":
+                return "each one", j + 2  # "a chair in front of each one": one per member
             # a noun, not a verb, after a determiner or a count ("its walls", "two rows of")
             after_determiner = j > pos and (toks[j - 1].text in _DETERMINERS or toks[j - 1].text in _NUMBERS)
             if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
@@ -533,7 +535,11 @@ class _Reader:
             kind = "on"
             target = "it" if c.head is not None else None
             rel = replace(rel, elliptic=True)
-        if isinstance(target, str) and target != "each other":
+        if target == "each one":
+            targets = self._pronoun("them", c, srcs, list(c.last_target))
+            if targets:
+                self._per_each([s for s in srcs if s in c.groups], targets[0])
+        elif isinstance(target, str) and target != "each other":
             # "a bench in front of the swing, facing it": the clause's own last target first.
             prefer = list(c.last_target) or (list(prev_subject) if c.main and srcs == c.main else [])
             targets: list[int] | str = self._pronoun(target, c, srcs, prefer) if c.head is None else list(c.head)
