@@ -167,3 +167,7 @@ def test_an_opening_place_or_a_part_of_one_is_the_setting():
     parsed = parse_scene("A small design office on the top floor of a converted warehouse. A desk stands by the window.")
     assert [o.category for o in parsed.objects] == ["desk"]
     assert [o.category for o in parse_scene("A warehouse.").objects] == ["warehouse"]  # nothing else: the thing
+
+
+def test_a_participle_after_a_thing_is_no_kind():
+    assert "ferris wheel" in objects("A huge ferris wheel strung with coloured bulbs turns slowly.")

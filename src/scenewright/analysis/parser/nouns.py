@@ -186,6 +186,12 @@ _KIND_WORDS = {"board", "panel", "screen", "machine", "device", "unit", "box", "
                "structure", "apparatus", "console", "gadget", "station", "post", "pole", "platform"}  # fmt: skip
 
 
+#: Participles without -ed that follow a noun to describe it ("strung with lights", "built of stone").
+_IRREGULAR_PARTICIPLES = {"strung", "hung", "spun", "built", "made", "lit", "set", "worn", "torn", "sunk", "stuck",
+                          "swung", "bound", "wound", "laid", "held", "spread", "cast", "shot", "dug", "hidden",
+                          "frozen", "broken", "woven", "fallen", "overgrown", "half", "full", "covered"}  # fmt: skip
+
+
 def _names_kind(toks: list[_Tok], e: int) -> bool:
     """The noun ending at ``e`` qualifies the word after it: a hyphen joins them, or a noun that
     is no verb, adverb or participle follows."""
@@ -195,6 +201,8 @@ def _names_kind(toks: list[_Tok], e: int) -> bool:
     w = t.text
     if t.joined or (w in load_vocabulary().not_things and singular(w) == w and w not in _FINITE):
         return True  # "camel-hair tents", "a bear face"
+    if w in _IRREGULAR_PARTICIPLES:
+        return False  # "a ferris wheel strung with bulbs": a participle, not a kind
     return (
         w[:1].isalpha() and w not in _STOP and not _is_verb(w) and not w.endswith(("ed", "ing", "ly"))
         and not load_vocabulary().is_adjective(w) and w not in _DETERMINERS
