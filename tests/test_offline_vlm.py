@@ -173,3 +173,41 @@ def test_first_poses_do_not_overlap_on_the_ground():
     for i, a in enumerate(objects):
         for b in objects[i + 1 :]:
             assert not _overlap(a, b), (a.id, b.id)
+
+
+def test_too_many_objects_are_refused_naming_the_limit_and_the_flag():
+    vlm = OfflineVLM(max_objects=10)
+    with pytest.raises(InputError) as err:
+        vlm.describe_objects("A hall with twelve chairs.", "realistic", None)
+    assert "12 objects" in str(err.value) and "limit of 10" in str(err.value)
+    assert "--max-objects" in str(err.value) and "max_objects" in str(err.value)
+    assert len(vlm.describe_objects("A hall with ten chairs.", "realistic", None)) == 10
+
+
+def test_the_limit_comes_from_settings_and_defaults_to_150():
+    assert create_backend("vlm", "offline", Settings()).max_objects == 150
+    settings = Settings()
+    settings.max_objects = 7
+    assert create_backend("vlm", "offline", settings).max_objects == 7
+    with pytest.raises(InputError, match="150"):
+        OfflineVLM().describe_objects("A stadium with 1000000 seats and 999999 chairs.", "realistic", None)
+
+
+def test_guessed_objects_are_recorded_for_the_provenance(vlm):
+    objects = vlm.describe_objects("A camel and two fuel tanks beside a bench.", "realistic", None)
+    assert [o.id for o in objects] == ["camel_1", "fuel_tank_1", "fuel_tank_2", "bench_1"]
+    assert [o.name for o in objects][:2] == ["camel", "fuel tank"]
+    (event,) = vlm.last_repairs
+    assert event.data["guessed"] == {"camel_1": "animal", "fuel_tank_1": "tank", "fuel_tank_2": "tank"}
+    assert "camel_1 (animal)" in event.message
+    vlm.find_redundant(objects, {})
+    assert vlm.last_repairs == []  # reported once, not again by the next call
+
+
+def test_support_repairs_are_recorded_with_the_constraints(vlm):
+    text = "A desk stands by the window, and a sofa sits on the desk."
+    objects = vlm.describe_objects(text, "realistic", None)
+    constraints = vlm.write_constraints(text, objects, None)
+    assert ("sofa_1", "side of", "desk_1") in {(c.source, c.relation, c.target) for c in constraints}
+    assert [e.data["step"] for e in vlm.last_repairs] == ["repair"]
+    assert "desk_1 cannot hold it" in vlm.last_repairs[0].message

@@ -47,7 +47,8 @@ class Settings:
     # Limits on what untrusted servers may hand back (docs/security.md).
     #: Characters of one model answer; a longer one is refused and asked for again.
     max_answer_chars: int = 200_000
-    #: Objects of one scene, from a model's answer or an edit.
+    #: Objects of one scene, from the text, a model's answer or an edit; more is refused before
+    #: any work (a runaway count).
     max_objects: int = 150
     #: Bytes of one HTTP response body (a GLB, an image, a status); the download stops there.
     max_download_bytes: int = 256 * 1024 * 1024

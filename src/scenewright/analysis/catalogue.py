@@ -4,7 +4,9 @@ One record per category (``data/catalogue.json``): the words that name it, its t
 (x width, y depth, z height in metres, at yaw 0 with the front toward −Y), how it rests
 (``ground``, on a ``surface``, or ``hanging`` above something), the procedural generator
 that builds it (``shape``, one name of :data:`SHAPE_NAMES`), indoor/outdoor tags, and
-whether other things are usually put on it (``support``: tables, desks, counters).
+whether other things are usually put on it (``support``: tables, desks, counters). The last
+records are shape families (``family``): what a thing nobody catalogued becomes (a camel is an
+``animal`` named "camel"), sized by ``data/vocabulary.json``.
 
 Sizes stay within 0.1–5 m except where the thing itself is larger: buildings, houses,
 towers, trees, vehicles, cranes and the like keep their real size, because a 5 m bus or
@@ -31,12 +33,16 @@ SHAPE_NAMES = (
     "sign", "fence", "arch", "bollard", "hydrant", "car", "truck", "bus", "bicycle", "boat",
     "building", "house", "kiosk", "market_stall", "tent", "umbrella", "swing", "slide",
     "treadmill", "whiteboard", "robot", "crystal", "tower", "well", "cart", "pillar", "generic",
+    # shape families of the open vocabulary: things the catalogue does not name
+    "animal", "bird", "figure", "machine", "tank", "structure", "panel", "container", "tool", "vehicle",
 )  # fmt: skip
 RESTS = ("ground", "surface", "hanging")
 
-_WORD = re.compile(r"[a-z0-9]+(?:['’][a-z]+)?")
+_WORD = re.compile(r"[^\W_]+(?:['’][^\W\d_]+)?")  # letters of any script: "café" is one word
 #: Plurals that the suffix rules below would get wrong.
-_IRREGULAR = {"cacti": "cactus", "mice": "mouse", "geese": "goose", "people": "person", "children": "child"}
+_IRREGULAR = {"cacti": "cactus", "mice": "mouse", "geese": "goose", "people": "person", "children": "child",
+              "taxis": "taxi", "buses": "bus", "octopuses": "octopus", "walruses": "walrus", "cactuses": "cactus",
+              "thermoses": "thermos", "canvases": "canvas", "lenses": "lens", "atlases": "atlas"}
 _KEEP_S = ("ss", "us", "is", "ous", "ics")
 
 
@@ -49,6 +55,9 @@ class Category:
     shape: str
     tags: tuple[str, ...]
     support: bool = False
+    #: A shape family of the open vocabulary (``animal``, ``machine``...): reached through
+    #: ``data/vocabulary.json`` from the words it covers, never by its own name as a phrase.
+    family: bool = False
 
     @property
     def indoor(self) -> bool:
@@ -111,6 +120,7 @@ def _validate(entry: dict, seen: set[str]) -> Category:
         shape=entry["shape"],
         tags=tuple(entry.get("tags", ())),
         support=bool(entry.get("support", False)),
+        family=bool(entry.get("family", False)),
     )
 
 
@@ -133,6 +143,8 @@ def phrase_index() -> dict[tuple[str, ...], str]:
     phrase keeps it."""
     index: dict[tuple[str, ...], str] = {}
     for category in load_catalogue().values():
+        if category.family:
+            continue
         for phrase in category.phrases:
             index.setdefault(_key(phrase), category.name)
     return index

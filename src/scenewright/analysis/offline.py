@@ -13,8 +13,9 @@ from typing import TYPE_CHECKING
 
 from scenewright.analysis.arrange import initial_objects
 from scenewright.analysis.parser import ParsedScene, parse_scene
+from scenewright.analysis.parser.language import check_english
 from scenewright.errors import BackendError, InputError
-from scenewright.scene import Constraint, LayoutReport, SceneObject
+from scenewright.scene import Constraint, Event, LayoutReport, SceneObject
 
 if TYPE_CHECKING:
     from scenewright.editing.plan import EditPlan
@@ -30,6 +31,12 @@ _RELAX: dict[str, str | None] = {
 _PRIORITY = ("far", "face to", "near", "side of", "left of", "right of", "in front of", "behind", "above", "on")
 
 NO_OBJECT = "no object recognised in the text; name things like 'a sofa', 'two trees', 'a lamp on the desk'"
+#: The default of ``Settings.max_objects``.
+DEFAULT_MAX_OBJECTS = 150
+TOO_MANY = (
+    "the text asks for {count} objects, more than the limit of {limit}; describe fewer, or raise the "
+    "limit with --max-objects N (config key max_objects)"
+)
 
 
 class OfflineVLM:
@@ -37,34 +44,55 @@ class OfflineVLM:
 
     name = "offline"
 
-    def __init__(self) -> None:
+    def __init__(self, max_objects: int = DEFAULT_MAX_OBJECTS) -> None:
         self._parses: dict[str, ParsedScene] = {}
+        self.max_objects = max_objects
+        #: What the last answer guessed or repaired, for the stage to add to the provenance.
+        self.last_repairs: list[Event] = []
 
     @classmethod
     def from_spec(cls, argument: str, settings: Settings) -> OfflineVLM:
         if argument:
             raise InputError(f"the offline vision-language backend takes no argument, got {argument!r}; use --vlm offline")
-        return cls()
+        return cls(max_objects=settings.max_objects)
 
     def parse(self, text: str) -> ParsedScene:
-        """The parse of ``text``, read once per text."""
+        """The parse of ``text``, read once per text; English only (the rules are English rules)."""
         key = " ".join(text.split())
         if not key:
             raise InputError("the scene text is empty; describe the scene, e.g. 'a sofa facing a TV on a stand'")
         if key not in self._parses:
+            check_english(key)
             self._parses[key] = parse_scene(key)
         return self._parses[key]
 
     def describe_objects(self, text: str, style: str, reference: bytes | None) -> list[SceneObject]:
         parsed = self.parse(text)
+        self.last_repairs = []
         if not parsed.objects:
             raise InputError(NO_OBJECT)
+        if len(parsed.objects) > self.max_objects:
+            raise InputError(TOO_MANY.format(count=len(parsed.objects), limit=self.max_objects))
+        guessed = {o.id: o.category for o in parsed.objects if o.guessed}
+        if guessed:
+            names = ", ".join(f"{i} ({c})" for i, c in guessed.items())
+            self.last_repairs.append(
+                Event(
+                    stage="vlm.objects",
+                    message=f"guessed {len(guessed)} objects the catalogue does not name: {names}",
+                    data={"backend": self.name, "step": "guessed", "guessed": guessed},
+                )
+            )
         return initial_objects(parsed)
 
     def write_constraints(
         self, text: str, objects: Sequence[SceneObject], reference: bytes | None
     ) -> list[Constraint]:
         parsed = self.parse(text)
+        self.last_repairs = [
+            Event(stage="vlm.constraints", message=f"repaired: {note}", data={"backend": self.name, "step": "repair"})
+            for note in parsed.repairs
+        ]
         ids = _match_ids(parsed, objects)
         out: list[Constraint] = []
         for r in parsed.relations:
@@ -74,6 +102,7 @@ class OfflineVLM:
 
     def find_redundant(self, objects: Sequence[SceneObject], images: Mapping[str, bytes]) -> dict[str, str]:
         # The parse lists each thing once, and there are no pictures to compare offline.
+        self.last_repairs = []
         return {}
 
     def revise_constraints(
@@ -84,6 +113,7 @@ class OfflineVLM:
         report: LayoutReport,
         reference: bytes | None,
     ) -> list[Constraint]:
+        self.last_repairs = []
         return relax_constraints(constraints, report)
 
     def plan_edit(self, scene: Scene, instruction: str) -> EditPlan:

@@ -23,6 +23,7 @@ from scenewright.cli.options import (
     ImageConcurrencyOption,
     ImagesOption,
     MaxFacesOption,
+    MaxObjectsOption,
     MeshesOption,
     ReasoningEffortOption,
     TimeoutOption,
@@ -74,6 +75,10 @@ def _summary(console: Console, folder: SceneFolder, scene: Scene) -> None:
         console.print(f"  renders/     {safe(folder.renders)}  ({len(renders)} preview{plural})")
     for removed in scene.removed:
         console.print(f"  [dim]removed {safe(removed.id)}: {safe(removed.reason)}[/dim]")
+    guessed = {k: v for e in scene.provenance for k, v in e.data.get("guessed", {}).items()}
+    if guessed:
+        names = ", ".join(f"{i} ({family})" for i, family in guessed.items())
+        console.print(f"  [yellow]guessed {len(guessed)} objects the catalogue does not name: {safe(names)}[/yellow]")
 
 
 @app.command("generate")
@@ -109,6 +114,7 @@ def generate_command(
         list[str] | None,
         typer.Option("--export", help="Also export for simulators: usd | mjcf | glb-physics (repeatable)."),
     ] = None,
+    max_objects: MaxObjectsOption = None,
 ) -> None:
     """Turn TEXT into a scene folder: scene.json, one asset per object, scene.glb, previews."""
     from scenewright.backends import Backends
@@ -142,6 +148,7 @@ def generate_command(
         image_concurrency=image_concurrency,
         feedback_rounds=feedback_rounds,
         max_faces=max_faces,
+        max_objects=max_objects,
     )
     backends = Backends.from_settings(settings)
     folder = SceneFolder((resume_dir if resume_dir is not None else out).absolute())

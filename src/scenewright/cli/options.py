@@ -49,6 +49,11 @@ MaxFacesOption = Annotated[
     typer.Option("--max-faces", help="Simplify each new mesh to about N triangles (needs the 'simplify' extra)."),
 ]
 
+MaxObjectsOption = Annotated[
+    int | None,
+    typer.Option("--max-objects", help="Refuse texts that ask for more objects than this (default 150)."),
+]
+
 
 def check_seed(seed: int) -> int:
     if not 0 <= seed <= MAX_SEED:

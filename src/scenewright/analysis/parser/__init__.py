@@ -1,0 +1,134 @@
+"""Rule-based reading of a scene description: objects, counts, looks, sizes, relations, style.
+
+The offline vision-language backend answers from this parse. It reads descriptions written
+the way people write them (the paper's 50–300-word inputs): noun phrases are matched against
+the catalogue (longest phrase first, plurals folded), counts come from the words before them,
+and relation phrases connect the clause's subject (the thing placed) to the noun phrase after
+the phrase.
+
+Where things live: ``tokens`` (words, clauses), ``words`` (closed word classes), ``nouns``
+(noun phrases, the open vocabulary, place words), ``sizes``, ``phrases`` (relation phrases;
+the phrases themselves are ``data/relation_phrases.json``), ``reader`` (clause reading and
+reference resolution), ``distribute`` ("each", around, between, rows: group relations to
+object relations), ``support`` (default supports, ``on`` only onto hosts that can hold the
+thing), ``vocabulary`` (``data/vocabulary.json``), ``language`` (English only), ``style``.
+To add a phrase, add it to its kind's list in ``data/relation_phrases.json``; to add a thing,
+add its head word to ``data/vocabulary.json``.
+
+Decisions worth knowing:
+
+- A noun the catalogue does not know still names an object: the vocabulary gives its shape
+  family (animal, figure, machine, tank, structure, panel, container, tool, vehicle) and size;
+  a noun nobody listed becomes a generic ``thing`` unless it names no thing (a place, a time,
+  weather, a part, a material). Such objects are ``guessed``. A place word sets the scene
+  ("inside a warehouse", "a hangar with a spaceship", "a farmhouse kitchen") and is no object.
+- ``between A and B`` → right of one and left of the other (front/behind when the pair stands
+  front to back) and near both; a seat ``at`` a desk or table → in front of it, facing it;
+  ``at the foot of`` a bed → in front of it, ``at the head of`` → behind it (a table's head is
+  an end); ``hanging from`` → above (near a tall host); ``leaning on`` / ``along`` → side of;
+  ``in a row`` / ``stacked`` → each right of / on the one before; ``against the wall``, ``in
+  the corner``, ``in the middle of the room``, ``at the back`` name no object and become the
+  object's ``anchor`` for the arranger.
+- ``on`` only onto a host that can hold the thing (flat hosts hold anything; floor furniture
+  stands on no other piece; a thing at most about the host's size); otherwise ``side of``, and
+  the repair is listed in ``ParsedScene.repairs``.
+
+- ``beside`` / ``next to`` / ``alongside`` → ``side of``; ``near`` / ``close to`` / ``by`` →
+  ``near``; ``opposite`` / ``across from`` → ``in front of`` + ``face to``; ``flanked by`` and
+  ``on either side of`` → one flanker ``left of`` and one ``right of`` (one thing named "on each
+  side of" is two, one a side, even beside a door that is no object); ``around`` /
+  ``surrounding`` / ``surrounded by`` → the surrounding objects shared among the target's
+  sides (every side once, then the long sides of a long table), each facing it; one thing
+  "around" another is ``near`` it; ``at a distance of
+  N m`` → ``near`` when N ≤ 2, ``far`` when N > 8.
+- "on the left wall" places nothing: a side word before a noun is that noun's adjective, and
+  walls are no objects. A part named by a possessive is its owner ("above its door" → above
+  it), since doors, roofs and porches are not objects either.
+- A phrase right after another's target places that target ("a globe on a side table to the
+  right of the desk": the side table is right of the desk). ``with``/``holding`` parts hang
+  from their head: "a sink with a mirror above it", "a cart loaded with barrels" (on it), "a
+  desk with a lamp" (a surface thing with a support → on it); "a bed with a nightstand on
+  either side" flanks the head, the with-thing's only target. "It"/"them" name the latest
+  earlier mention of the right number. A phrase opening a sentence ("Behind the gate, a
+  pond...", "Far from the house, ...") places every subject that follows ("Around it,
+  toadstools and crystals glitter"); an adverb that starts a phrase ("far", "just") is part of it.
+  A with-list runs on over commas to its verb ("a counter with combs, scissors and a jar runs
+  beneath the mirror"); a with-thing placed on its own starts a new list, and a small thing
+  next to "it" stands by its small peer ("with a till at one end and a computer beside it").
+  Beside a small thing on a table means beside that thing, not the table.
+- "the teacher's desk" is a new desk unless an earlier one has the same head noun; "the
+  middle bench" is one of the benches; "a rack of dumbbells" is a dumbbell rack; "holographic
+  koi" are holograms (a holographic sign stays a sign); "three rows of shelves" are three
+  shelving units.
+- A look written after the noun is part of its description, so the mesh gets its colours,
+  materials and glow: "a vending machine glowing pink", "a sofa covered in green velvet" (a
+  participle and its describing words, up to a verb, a relation phrase or another object); a
+  catalogue noun after "made of" is a material ("a table made of glass" holds no glass).
+- "the island" after "a kitchen island" refers back to it; "a vase of tulips", "a bowl full
+  of apples" and "a statue of a horse" hold contents, not objects; "a stone path", "a pine
+  forest", "a throne hall" name no object; "a potted palm" is a potted plant, "a round
+  table" a round table.
+- ``over`` means ``above`` after a hanging verb (hang, hover, float...), else ``near``; ``X under Y``
+  puts Y ``on`` X when X is flat (a rug under a table), else X ``near`` Y.
+- Vague counts: a pair / a couple / both → 2; a few / several / some / a bare plural → 3;
+  many / lots of → 5; ``each with a lamp``, ``every desk has a lamp`` and ``each surrounded by
+  two chairs`` give that many per object of the group, placed by their own one.
+- Stated sizes (``2 meters wide``, ``a 3 m tall statue``) set that dimension; the others
+  scale by the same factor so the object keeps its proportions.
+- Things that rest on a surface but have no stated support get an inferred ``on`` to the
+  most fitting support in the scene (a lamp → nightstand, desk, side table, table...); hanging
+  things without a stated target get an inferred ``above`` the nearest-mentioned large
+  object. Both are marked ``inferred`` (the parse benchmark scores stated relations only).
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+from scenewright.analysis.parser.distribute import _acyclic, _expand, _ids
+from scenewright.analysis.parser.model import ParsedObject, ParsedRelation, ParsedScene
+from scenewright.analysis.parser.phrases import FAR_LIMIT, NEAR_LIMIT, relation_phrases
+from scenewright.analysis.parser.reader import _Reader
+from scenewright.analysis.parser.style import GROUND_KINDS, _is_indoor, detect_ground, detect_style
+from scenewright.analysis.parser.support import _infer_support, repair_supports
+
+__all__ = [
+    "FAR_LIMIT", "GROUND_KINDS", "NEAR_LIMIT", "ParsedObject", "ParsedRelation", "ParsedScene",
+    "detect_ground", "detect_style", "parse_scene", "relation_phrases",
+]  # fmt: skip
+
+
+def parse_scene(text: str) -> ParsedScene:
+    """Read a description into objects (with ids, sizes, descriptions), relations, style and
+    ground kind. Deterministic: the same text always gives the same parse."""
+    return _parse_cached(" ".join(text.split()))
+
+
+@lru_cache(maxsize=64)
+def _parse_cached(text: str) -> ParsedScene:
+    reader = _Reader(text)
+    reader.read()
+    _ids(reader.groups)
+    catalogue = reader.catalogue
+    objects = [
+        ParsedObject(
+            i, g.category, g.name, g.description, g.size, g.index, g.guessed, g.rests,
+            reader.anchors.get(g.index), reader.formations.get(g.index),
+        )
+        for g in reader.groups
+        for i in g.ids
+    ]
+    stated, repairs = repair_supports(objects, _acyclic(_expand(reader), [o.id for o in objects]), catalogue)
+    inferred = _infer_support(objects, stated, catalogue)
+    relations = _acyclic(stated + inferred, [o.id for o in objects])
+    indoor = _is_indoor([o.category for o in objects], text, catalogue, reader.places)
+    return ParsedScene(
+        text=text,
+        objects=objects,
+        relations=relations,
+        style=detect_style(text),
+        ground=detect_ground(text, indoor),
+        indoor=indoor,
+        places=reader.places,
+        repairs=repairs,
+    )

@@ -1,0 +1,206 @@
+"""Distribution: the reader's group-level relations as relations between single objects
+("each", "around", "on either side", opposite), then made acyclic and ordered for the solver.
+"""
+
+from __future__ import annotations
+
+import logging
+import re
+from collections import Counter
+from dataclasses import replace
+
+from scenewright.analysis.parser.model import ParsedRelation
+from scenewright.analysis.parser.nouns import _Group
+from scenewright.analysis.parser.reader import _Reader
+
+log = logging.getLogger(__name__)
+
+
+def _ids(groups: list[_Group]) -> None:
+    """``chair_1``, ``chair_2``...; a guessed thing by its own name (``fuel_tank_1``, not ``tank_1``)."""
+    counters: Counter[str] = Counter()
+    for g in groups:
+        base = (re.sub(r"[^a-z0-9]+", "_", g.name.lower()).strip("_") or g.category) if g.guessed else g.category
+        for _ in range(g.count):
+            counters[base] += 1
+            g.ids.append(f"{base}_{counters[base]}")
+
+
+def _around_sides(n: int, src: _Group, tgt: _Group) -> list[str]:
+    """Which side of the target each of ``n`` surrounding objects takes: long sides first."""
+    tx, ty, _ = tgt.size
+    width = max(src.size[0], 0.3) + 0.15
+    if tx >= 1.4 * ty:
+        first, short = ["in front of", "behind"], ["left of", "right of"]
+        long_cap, short_cap = max(1, int(tx // width)), max(1, int(ty // width))
+    elif ty >= 1.4 * tx:
+        first, short = ["left of", "right of"], ["in front of", "behind"]
+        long_cap, short_cap = max(1, int(ty // width)), max(1, int(tx // width))
+    else:
+        first, short = ["left of", "right of"], ["in front of", "behind"]
+        long_cap = short_cap = max(1, int(max(tx, ty) // width))
+    # every side once (four chairs take four sides), then the long sides fill up first
+    order = first + short + first * (long_cap - 1) + short * (short_cap - 1)
+    if n < 4:
+        order = first + short
+    return [order[i % len(order)] for i in range(n)]
+
+
+def _instance_pairs(src: _Group, tgt: _Group, paired: bool) -> list[tuple[str, str]]:
+    n, m = len(src.ids), len(tgt.ids)
+    if paired or (n == m and n > 1):
+        return [(src.ids[i], tgt.ids[i % m]) for i in range(n)]
+    return [(s, tgt.ids[i % m]) for i, s in enumerate(src.ids)]
+
+
+#: The sides that put a thing between two others, by how the two stand to each other.
+_BETWEEN_SIDES = {
+    "left of": ("left of", "right of"), "right of": ("right of", "left of"),
+    "in front of": ("in front of", "behind"), "behind": ("behind", "in front of"),
+}  # fmt: skip
+
+
+#: Relations that put a pair front to back, read as "in front of" when choosing between's axis.
+_FACING = {"opposite": "in front of", "face to": "in front of", "at seat": "in front of"}
+
+
+def _between(reader: _Reader, src: _Group, a: str, b: str) -> list[ParsedRelation]:
+    """"A bin between the machine and the stall": the centre in the gap, as a side of each (right
+    of one, left of the other), along the axis the pair already stands on (front to back when
+    the text put one in front of the other), and near both."""
+    sides = ("right of", "left of")
+    for kind, s, t, _ in reader.relations:
+        ids_s, ids_t = reader.groups[s].ids, reader.groups[t].ids
+        if kind == "face to" and s == t and a in ids_s and b in ids_s:  # two sofas facing each other
+            sides = ("behind", "in front of")
+            break
+        kind = _FACING.get(kind, kind)  # a TV opposite the sofa: the pair stands front to back
+        if kind in _BETWEEN_SIDES and a in ids_s and b in ids_t:  # a left of b: x right of a, left of b
+            first, second = _BETWEEN_SIDES[kind]
+            sides = (second, first)
+            break
+        if kind in _BETWEEN_SIDES and b in ids_s and a in ids_t:
+            sides = _BETWEEN_SIDES[kind]
+            break
+    out = []
+    for x in src.ids:
+        out += [ParsedRelation(x, sides[0], a), ParsedRelation(x, sides[1], b)]
+        out += [ParsedRelation(x, "near", a), ParsedRelation(x, "near", b)]
+    return out
+
+
+def _formations(reader: _Reader) -> list[ParsedRelation]:
+    """"Crates stacked": each on the one below. A row or a circle states no side, so it stays the
+    objects' ``formation`` for the arranger rather than a relation."""
+    out: list[ParsedRelation] = []
+    for g, formation in reader.formations.items():
+        ids = reader.groups[g].ids
+        if formation == "stack":
+            out += [ParsedRelation(ids[i], "on", ids[i - 1]) for i in range(1, len(ids))]
+    return out
+
+
+def _expand(reader: _Reader) -> list[ParsedRelation]:
+    out = _expand_relations(reader)
+    # a stack stands where its bottom stands: the rest only rest on the one below
+    upper = {i for g, f in reader.formations.items() if f == "stack" for i in reader.groups[g].ids[1:]}
+    return _formations(reader) + [r for r in out if r.source not in upper]
+
+
+def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
+    out: list[ParsedRelation] = []
+    groups = reader.groups
+    betweens: dict[int, list[tuple[int, int | None]]] = {}
+    for kind, s, t, instance in reader.relations:
+        if kind == "between":
+            betweens.setdefault(s, []).append((t, instance))
+    for s, targets in betweens.items():
+        ends = [
+            groups[t].ids[i] if i is not None else groups[t].ids[0] for t, i in targets
+        ]  # "between the machine and the stall"
+        if len(targets) == 1 and len(groups[targets[0][0]].ids) >= 2 and targets[0][1] is None:
+            ends = groups[targets[0][0]].ids[:2]  # "between the two trees", "between them"
+        if len(ends) >= 2:
+            out += _between(reader, groups[s], ends[0], ends[1])
+        else:
+            out += [ParsedRelation(x, "near", ends[0]) for x in groups[s].ids]
+    for kind, s, t, instance in reader.relations:
+        src, tgt = groups[s], groups[t]
+        paired = (s, t) in reader.pair_each or (t, s) in reader.pair_each
+        if s == t:  # "facing each other": the later ones face the first
+            if kind == "face to" and len(src.ids) > 1:
+                out += [ParsedRelation(i, "face to", src.ids[0]) for i in src.ids[1:]]
+            continue
+        if instance is not None:
+            tgt = replace(tgt, ids=[tgt.ids[instance]])
+        pairs = _instance_pairs(src, tgt, paired)
+        if kind == "opposite":
+            for a, b in pairs:
+                out += [ParsedRelation(a, "in front of", b), ParsedRelation(a, "face to", b)]
+        elif kind == "at seat":  # a chair at a desk: pulled up to its front, facing it
+            for a, b in pairs:
+                out += [ParsedRelation(a, "in front of", b), ParsedRelation(a, "face to", b), ParsedRelation(a, "near", b)]
+        elif kind == "flank":
+            for i, (a, _) in enumerate(pairs):
+                out.append(ParsedRelation(a, ("left of", "right of")[i % 2], tgt.ids[(i // 2) % len(tgt.ids)]))
+        elif kind == "around" and len(src.ids) == 1:  # one round ottoman "surrounds" a palm: it is near
+            out += [ParsedRelation(src.ids[0], "near", b) for b in tgt.ids[:1]]
+        elif kind == "around":
+            # paired ("each surrounded by two chairs"): each target's sides go to its own share
+            per = len(tgt.ids) if paired else 1
+            sides = _around_sides(-(-len(src.ids) // per), src, tgt)
+            for i, a in enumerate(src.ids):
+                b = tgt.ids[i % len(tgt.ids)]
+                out += [ParsedRelation(a, sides[i // per], b), ParsedRelation(a, "face to", b)]
+        elif kind == "under flat":
+            for a, b in pairs:
+                out.append(ParsedRelation(b, "on", a))
+        elif kind in ("left of", "right of", "in front of", "behind", "side of", "near", "far", "on", "above", "face to"):
+            out += [ParsedRelation(a, kind, b) for a, b in pairs]
+    return out
+
+
+def _acyclic(relations: list[ParsedRelation], ids: list[str]) -> list[ParsedRelation]:
+    """Drop duplicates and any relation that would close a cycle (later and inferred ones go
+    first), then order them so that an object is placed before it serves as a target."""
+    seen: set[tuple[str, str, str]] = set()
+    kept: list[ParsedRelation] = []
+    edges: dict[str, set[str]] = {i: set() for i in ids}  # source → targets
+
+    def reaches(a: str, b: str) -> bool:
+        stack, visited = [a], set()
+        while stack:
+            x = stack.pop()
+            if x == b:
+                return True
+            if x in visited:
+                continue
+            visited.add(x)
+            stack.extend(edges.get(x, ()))
+        return False
+
+    for r in sorted(relations, key=lambda r: r.inferred):
+        key = (r.source, r.relation, r.target)
+        if key in seen or r.source == r.target or r.source not in edges or r.target not in edges:
+            continue
+        if reaches(r.target, r.source):
+            log.debug("dropping %s %s %s: it would close a cycle", r.source, r.relation, r.target)
+            continue
+        # one vertical support per object
+        if r.relation in ("on", "above") and any(
+            k.source == r.source and k.relation in ("on", "above") for k in kept
+        ):
+            continue
+        seen.add(key)
+        kept.append(r)
+        edges[r.source].add(r.target)
+    depth: dict[str, int] = {}
+
+    def level(x: str) -> int:
+        if x not in depth:
+            depth[x] = 0
+            depth[x] = 1 + max((level(t) for t in edges[x]), default=-1)
+        return depth[x]
+
+    order = {i: n for n, i in enumerate(ids)}
+    return sorted(kept, key=lambda r: (level(r.source), order[r.source]))

@@ -1,0 +1,463 @@
+"""Noun phrases: catalogue matches, their counts, adjectives and the look written after them.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+from scenewright.analysis.catalogue import load_catalogue, match_phrase, phrase_index, singular
+from scenewright.analysis.parser.tokens import _Tok
+from scenewright.analysis.parser.vocabulary import Entry, load_vocabulary
+from scenewright.analysis.parser.words import (
+    _DEFINITE,
+    _DETERMINERS,
+    _NUMBERS,
+    _QUANTITY,
+    _STOP,
+    _UNITS,
+    _VAGUE,
+    _FINITE,
+    _is_verb,
+)
+
+
+@dataclass
+class _Mention:
+    category: str
+    phrase: str
+    start: int
+    end: int  # exclusive
+    count: int
+    counted: bool  # the count was stated (a number, "a", "a pair of")
+    definite: bool
+    each: bool = False  # "each X" / "every X"
+    adjectives: list[str] = field(default_factory=list)
+    group: int = -1
+    content: bool = False  # inside a container or a depiction: not an object
+    #: Describing words after the noun ("a vending machine glowing pink", "a crate made of steel").
+    post: list[str] = field(default_factory=list)
+    alias: bool = False  # "the island" after "a kitchen island": only a reference
+    #: What the open vocabulary says of a thing the catalogue does not name (a guessed object).
+    guess: Entry | None = None
+    #: Nouns before the head that name its kind ("dragon" in "a dragon statue").
+    modifier: list[str] = field(default_factory=list)
+
+
+@dataclass
+class _Group:
+    index: int
+    category: str
+    count: int
+    name: str
+    description: str
+    size: tuple[float, float, float]
+    ids: list[str] = field(default_factory=list)
+    #: How it rests (``ground``, ``surface``, ``hanging``): its category's, or the vocabulary's.
+    rests: str = "ground"
+    #: Read through the open vocabulary, not the catalogue.
+    guessed: bool = False
+
+
+@lru_cache(maxsize=1)
+def _max_phrase_len() -> int:
+    return max(len(k) for k in phrase_index())
+
+
+#: Places named after what they hold ("a throne hall", "a book shop").
+_VENUES = {"room", "hall", "shop", "store", "garden", "yard", "market", "park", "studio", "gallery", "lab",
+           "area", "aisle", "section", "station", "court", "museum", "cafe", "café", "bar", "square",
+           "street", "farm", "factory", "workshop", "showroom", "district", "festival", "fair", "lot",
+           "lounge", "parlour", "parlor", "emporium", "boutique", "depot", "dealership", "nursery"}  # fmt: skip
+#: Nouns that often qualify the next word ("a stone path", "a pine forest", "a canvas awning").
+_MODIFIER_NOUNS = {"glass", "stone", "rock", "crystal", "box", "plant", "flower", "book", "rope", "candle",
+                   "cat", "dog", "fruit", "bird", "horse", "tree", "sign", "toy", "table", "cactus", "mushroom",
+                   "hay", "lamp", "pool", "tower", "pine", "oak", "maple", "birch", "cherry", "palm", "cedar",
+                   "canvas", "chalkboard", "blackboard", "bench", "chair", "gem", "orb", "barrel", "wine",
+                   "bottle", "cup", "coffee", "bus", "car", "boat", "robot", "fence", "kiosk", "computer"}  # fmt: skip
+
+#: Adjectives that make any thing a projection.
+_PROJECTED = {"holographic", "hologram", "projected", "virtual"}
+#: Things that keep their kind when holographic: a sign with a holographic face is still a sign.
+_SHOWS_PROJECTION = {"sign", "billboard", "menu_board"}
+
+
+def _match_at(toks: list[_Tok], i: int) -> tuple[int, str, Entry | None] | None:
+    """The longest thing named at ``i``: a catalogue phrase, else (same length) a vocabulary one."""
+    n = len(toks)
+    vocabulary = load_vocabulary()
+    for length in range(min(max(_max_phrase_len(), vocabulary.longest), n - i), 0, -1):
+        words = tuple(t.text for t in toks[i : i + length])
+        if any(not w[0].isalpha() for w in words):
+            continue
+        cat = match_phrase(words)
+        if cat:
+            return i + length, cat, None
+        entry = vocabulary.match(words)
+        # a catalogue head keeps its kind ("a toy chest" is a chest) unless the vocabulary says
+        # otherwise ("an arcade cabinet"); "a fig plant stands" has a verb, not a plant stand
+        verb = length > 1 and words[-1] != singular(words[-1]) and singular(words[-1]) in _FINITE
+        verb = verb and not _counted_plural(toks, i)  # "two music stands" are stands
+        head_known = length > 1 and match_phrase(words[-1:]) and not vocabulary.over_catalogue(words)
+        if entry is not None and not verb and not head_known:
+            return i + length, entry.category, entry
+    return None
+
+
+def _counted_plural(toks: list[_Tok], i: int) -> bool:
+    """A count above one stands right before ``i`` (adjectives aside): "two (wooden) music stands"."""
+    j = i - 1
+    while j >= 0 and i - j <= 3:
+        w = toks[j].text
+        if w in _NUMBERS or w in _VAGUE or w.isdigit():
+            return w not in ("one", "single", "1")
+        if w in _STOP or not w[:1].isalpha():
+            return False
+        j -= 1
+    return False
+
+
+def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
+    """Longest-first catalogue and vocabulary matches, with a noun followed by another noun read
+    as a modifier ("glass table", "stone path"), then the nouns nobody listed (a generic thing
+    each); also the place words that set the scene instead of standing in it ("a sci-fi hangar
+    with a spaceship", "a farmhouse kitchen")."""
+    n = len(toks)
+    vocabulary = load_vocabulary()
+    raw: list[tuple[int, int, str, Entry | None]] = []
+    i = 0
+    while i < n:
+        found = _match_at(toks, i)
+        if found:
+            raw.append((i, *found))
+            i = found[0]
+        else:
+            i += 1
+    raw = sorted(raw + _unknown_nouns(toks, raw), key=lambda r: r[0])
+    mentions: list[_Mention] = []
+    places: list[str] = []
+    modifier: list[str] = []
+    for k, (s, e, cat, entry) in enumerate(raw):
+        nxt = raw[k + 1] if k + 1 < len(raw) else None
+        words = [t.text for t in toks[s:e]]
+        # a singular noun before another names its kind ("glass table", "dragon statue"); a plural
+        # one is the subject of a verb that looks like a noun ("pylons guard the altar")
+        if nxt and nxt[0] == e and singular(words[-1]) == words[-1]:
+            last = toks[nxt[1] - 1].text
+            if nxt[3] is not None and singular(last) != last:  # "a knight guards the gate": a verb
+                raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])
+                nxt = None
+        if nxt and nxt[0] == e and singular(words[-1]) == words[-1]:
+            if not (nxt[3] is not None and entry is None and nxt[1] - nxt[0] == 1 and toks[nxt[0]].text in _KIND_WORDS):
+                modifier += words
+                continue
+            raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])  # "a chalkboard menu board": the board is the menu board
+            e = nxt[1]
+        if s == e:
+            continue
+        kind, modifier = modifier, []
+        if entry is not None and s > 0 and (_is_verb(toks[s - 1].text) or (k > 0 and raw[k - 1][1] == s and not kind)):
+            continue  # "two robots stand guard", "fox statues guard the path": a verb here
+        follow = toks[e].text if e < n else ""
+        if entry is not None and singular(words[-1]) == words[-1] and _names_kind(toks, e):
+            continue  # "a bear face", "a train compartment", "camel-hair tents": a kind, not a thing
+        if follow in _VENUES or follow in vocabulary.places or (
+            follow and singular(follow) in _VENUES and len(words) == 1
+        ):
+            continue  # "a throne hall", "a flower shop", "a farmhouse kitchen": the place, not the thing
+        if _is_place(toks, s, e, raw[k + 1 :]) or (
+            follow in ("floor", "interior", "grounds") and singular(words[-1]) in vocabulary.places
+        ):  # "an abandoned factory floor with a conveyor belt"
+            places.append(" ".join(words))
+            continue
+        qualifies = follow[:1].isalpha() and follow not in _STOP and not _is_verb(follow)
+        if len(words) == 1 and words[0] in _MODIFIER_NOUNS and qualifies and not follow.endswith(("ed", "ing")):
+            continue  # "a stone path", "a glass roof": an adjective here
+        if s > 0 and toks[s - 1].text in _PROJECTED and cat not in _SHOWS_PROJECTION:
+            cat, entry = "hologram", None  # "holographic koi" are light, not fish: place and size them as one
+        mention = _Mention(cat, " ".join(t.orig for t in toks[s:e]), s, e, 1, False, False)
+        mention.guess, mention.modifier = entry, kind
+        mentions.append(mention)
+    return _alias_mentions(toks, mentions), places
+
+
+#: Vocabulary words that only restate what the catalogue noun before them is ("a menu board").
+_KIND_WORDS = {"board", "panel", "screen", "machine", "device", "unit", "box", "container", "tool", "vehicle",
+               "structure", "apparatus", "console", "gadget", "station", "post", "pole", "platform"}  # fmt: skip
+
+
+#: Participles without -ed that follow a noun to describe it ("strung with lights", "built of stone").
+_IRREGULAR_PARTICIPLES = {"strung", "hung", "spun", "built", "made", "lit", "set", "worn", "torn", "sunk", "stuck",
+                          "swung", "bound", "wound", "laid", "held", "spread", "cast", "shot", "dug", "hidden",
+                          "frozen", "broken", "woven", "fallen", "overgrown", "half", "full", "covered"}  # fmt: skip
+
+
+def _names_kind(toks: list[_Tok], e: int) -> bool:
+    """The noun ending at ``e`` qualifies the word after it: a hyphen joins them, or a noun that
+    is no verb, adverb or participle follows."""
+    if e >= len(toks):
+        return False
+    t = toks[e]
+    w = t.text
+    if t.joined or (w in load_vocabulary().not_things and singular(w) == w and w not in _FINITE):
+        return True  # "camel-hair tents", "a bear face"
+    if w in _IRREGULAR_PARTICIPLES:
+        return False  # "a ferris wheel strung with bulbs": a participle, not a kind
+    return (
+        w[:1].isalpha() and w not in _STOP and not _is_verb(w) and not w.endswith(("ed", "ing", "ly"))
+        and not load_vocabulary().is_adjective(w) and w not in _DETERMINERS
+    )  # fmt: skip
+
+
+#: Words that open the setting's contents after a place word ("a hangar with...", "a hangar where...").
+_PLACE_OPENERS = {"with", "where", "full", "filled", "housing", "containing", "holding", "packed", "crammed"}
+_INSIDE = {"in", "inside", "within", "into", "throughout"}
+
+
+def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
+    """A place word used as the setting: "inside a hangar", "a hangar with a spaceship" (when the
+    with-part names things), not "a barn stands behind the pond"."""
+    if singular(toks[e - 1].text) not in load_vocabulary().places:
+        return False
+    j = s - 1
+    while j >= 0 and s - j <= 4 and (toks[j].text in _DETERMINERS or (toks[j].text not in _STOP and toks[j].text[:1].isalpha())):
+        j -= 1
+    if j >= 0 and toks[j].text in _INSIDE:
+        return True
+    # "on the top floor of a converted warehouse": a part of the place holds the scene
+    if j > 0 and toks[j].text == "of" and toks[j - 1].text in ("floor", "top", "edge", "roof", "corner", "end", "back"):
+        return True
+    # the description opens with the place ("A cyberpunk hangar on the edge of the city, late at night.")
+    opening = j < 0 or (toks[j].text in (".", "!", "?") and j == s - 1)
+    follow = toks[e].text if e < len(toks) else "."
+    if opening and later and not later_before(later, toks, e) and (follow in (",", ".", ":", ";") or follow in ("on", "at", "in")):
+        return True
+    if e < len(toks) and toks[e].text in _PLACE_OPENERS:
+        starts = {r[0] for r in later}
+        k = e + 1
+        while k < len(toks) and toks[k].text not in (".", "!", "?", ";") and not _is_verb(toks[k].text):
+            if k in starts:
+                return True  # the with-part names a thing: the place holds the scene
+            k += 1
+    return False
+
+
+def later_before(later: list, toks: list[_Tok], e: int) -> bool:
+    """Whether a thing is named between ``e`` and the next verb (then the opening noun is a subject)."""
+    starts = {r[0] for r in later}
+    k = e
+    while k < len(toks) and toks[k].text not in (".", "!", "?", ",", ":", ";"):
+        if _is_verb(toks[k].text):
+            return False
+        if k in starts:
+            return True
+        k += 1
+    return False
+
+
+def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None]]) -> list:
+    """Noun phrases whose head neither the catalogue nor the vocabulary knows ("a zorbulator",
+    "three glimmerwings"): counted phrases only, and only heads that can name a thing."""
+    vocabulary = load_vocabulary()
+    covered = {k for s, e, _, _ in raw for k in range(s, e)}
+    out = []
+    n = len(toks)
+    for i, t in enumerate(toks):
+        w = t.text
+        counter = w in ("a", "an", "another") or w in _NUMBERS or w in _VAGUE or w.isdigit() or (
+            w == "of" and i > 0 and toks[i - 1].text in _QUANTITY
+        )
+        if not counter or w == "one" and i + 1 < n and toks[i + 1].text in ("of", "another", "other"):
+            continue
+        plural = w not in ("a", "an", "another", "one") and not (w.isdigit() and int(w) == 1)
+        j = i + 1
+        if w == "a" and j < n and toks[j].text in ("few", "couple", "pair", "dozen"):
+            continue  # the count of a phrase read by its own rules
+        head = None
+        while j < n and j - i <= 5:
+            x = toks[j].text
+            if j in covered or not x[:1].isalpha() or x in _STOP:
+                break
+            if j > i + 1 and not plural and _is_verb(x):
+                break
+            head = j
+            j += 1
+            if plural and singular(x) != x:
+                break  # "three zorbs glow": the plural noun ends the phrase
+        if head is None or any(k in covered for k in range(i + 1, head + 1)):
+            continue
+        if j < n and j in covered:
+            continue  # the words before a known noun are its adjectives ("a shiny [robot]")
+        word = toks[head].text
+        if not vocabulary.is_thing_word(word) or word in _QUANTITY or (j < n and toks[j].text == "of"):
+            continue  # "a sunny afternoon", "a pair of", "a sense of calm"
+        entry = vocabulary.guess(word)
+        out.append((head, head + 1, entry.category, entry))
+        covered.add(head)
+    return out
+
+
+def _alias_mentions(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention]:
+    """"the island" after "a kitchen island", "the pumps" after "two fuel pumps": a definite
+    head noun of an earlier phrase refers back to it."""
+    heads: dict[str, str] = {}
+    compounds: dict[str, str] = {}  # "campfire" answers to "the fire"
+    taken = {k for m in mentions for k in range(m.start, m.end)}
+    extra: list[_Mention] = []
+    ordered = sorted(mentions, key=lambda m: m.start)
+    nxt = 0
+    for i, t in enumerate(toks):
+        while nxt < len(ordered) and ordered[nxt].end <= i:
+            m = ordered[nxt]
+            words = m.phrase.lower().split()
+            if len(words) > 1:
+                heads.setdefault(singular(words[-1]), m.category)
+            else:
+                compounds.setdefault(singular(words[0]), m.category)
+            nxt += 1
+        word = singular(t.text)
+        if word not in heads and len(word) >= 4:
+            compound = next((c for w, c in compounds.items() if w.endswith(word)), None)
+            if compound is not None:
+                heads[word] = compound
+        if i in taken or not t.text[0].isalpha() or word not in heads:
+            continue
+        j = i - 1
+        while j >= 0 and i - j <= 3 and toks[j].text not in _DEFINITE and toks[j].text not in _STOP:
+            j -= 1
+        if j >= 0 and toks[j].text in _DEFINITE | {"each", "every"}:
+            m = _Mention(heads[word], t.orig, i, i + 1, 1, False, True, alias=True)
+            extra.append(m)
+    return sorted(mentions + extra, key=lambda m: m.start)
+
+
+def _is_plural(toks: list[_Tok], m: _Mention) -> bool:
+    last = toks[m.end - 1].text
+    if m.guess is not None and tuple(t.text for t in toks[m.start : m.end]) in load_vocabulary().entries:
+        return False  # "a triceratops" is listed as it is written
+    return singular(last) != last or last in ("people", "cacti", "shelves", "benches", "glasses")
+
+
+#: Place nouns that qualify the next noun after a determiner ("the middle bench", "the end stall").
+_POSITION_WORDS = {"middle", "centre", "center", "corner", "end", "front", "back", "top", "bottom", "side"}
+
+
+def _position_adjective(toks: list[_Tok], j: int) -> bool:
+    """"the middle bench": a place noun between a determiner and a noun works as an adjective."""
+    return toks[j].text in _POSITION_WORDS and j > 0 and toks[j - 1].text in _DETERMINERS and (
+        j + 1 < len(toks) and toks[j + 1].text[:1].isalpha() and toks[j + 1].text not in _STOP
+    )
+
+
+def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
+    """Fill count, definiteness and adjectives from the words before the noun."""
+    plural = _is_plural(toks, m)
+    j = m.start - 1
+    adjectives: list[str] = []
+    count: int | None = None
+    counted = False
+    while j >= prev_end and j >= 0 and m.start - j <= 7:
+        t = toks[j]
+        w = t.text
+        if w in _NUMBERS and not toks[j + 1].joined:
+            count, counted = _NUMBERS[w], True
+            # "above one bench", "between every two benches": of those already there, if any
+            m.definite = w == "one" or (j > 0 and toks[j - 1].text in ("every", "each"))
+            break
+        if toks[j + 1].joined and adjectives:  # "three-tiered", "red-and-white": one adjective
+            adjectives[0] = f"{t.orig}-{adjectives[0]}"
+            j -= 1
+            continue
+        if w.replace(".", "").isdigit():
+            if j + 1 < len(toks) and (toks[j + 1].joined or toks[j + 1].text in _UNITS):
+                adjectives.insert(0, t.orig)  # "27-inch", "4 m tall": a size, not a count
+                j -= 1
+                continue
+            count, counted = int(float(w)), True
+            break
+        if w in _VAGUE:
+            count = _VAGUE[w]
+            counted = w == "both"
+            if w == "few" and j > 0 and toks[j - 1].text == "a":
+                j -= 1
+            break
+        if w == "of" and j > 0 and toks[j - 1].text in _QUANTITY:
+            q = toks[j - 1].text
+            small = load_catalogue()[m.category].rests == "surface"
+            count = 1 if q in ("stack", "pile") and small else _QUANTITY[q]
+            counted = q in ("pair", "couple", "dozen")
+            k = j - 2
+            if k >= 0 and toks[k].text in _NUMBERS:  # "two pairs of", "three stacks of"
+                width, depth, _ = load_catalogue()[m.category].size
+                long_unit = (width >= 1.0 and depth <= 0.6) or load_catalogue()[m.category].shape == "flower_bed"
+                per = 1 if q in ("row", "rows", "line", "lines") and long_unit else count  # a row of tulips is a bed
+                count, counted = per * _NUMBERS[toks[k].text], True  # "three rows of shelves": a unit a row
+            elif k >= 0 and toks[k].text == "of" and k > 0 and toks[k - 1].text in _QUANTITY:
+                count = _QUANTITY[toks[k - 1].text]  # "a lot of"
+            elif q in ("row", "line", "stack", "pile", "set", "group", "cluster", "ring", "circle") and k >= 0 and toks[
+                k
+            ].text not in ("a", "an", "one"):
+                count = max(count, 4)
+            break
+        if w in ("a", "an", "another"):
+            count, counted = 1, True
+            break
+        if w in ("each", "every"):
+            m.each = True
+            count, counted = 1, True
+            break
+        if w in _DEFINITE:
+            m.definite = True
+            break
+        if (w in _STOP and not _position_adjective(toks, j)) or not w[0].isalnum():
+            break
+        adjectives.insert(0, t.orig)
+        j -= 1
+    if count is None:
+        count = 3 if plural else 1
+    if m.category == "books" and not counted:
+        count = 1
+    if plural and count == 1 and counted and not m.each and toks[max(m.start - 1, 0)].text not in ("a", "an"):
+        count = 2
+    m.count, m.counted, m.adjectives = count, counted, adjectives
+
+
+#: Participles that describe the look of the noun before them ("painted red", "made of steel").
+_LOOK_PARTICIPLES = {"glowing", "gleaming", "shining", "painted", "covered", "made", "coated", "upholstered",
+                     "carved", "lacquered", "varnished", "dyed", "tinted", "trimmed", "wrapped", "draped",
+                     "clad", "plated", "cast", "forged", "woven", "built", "lit", "finished"}  # fmt: skip
+_LOOK_PREPOSITIONS = {"in", "of", "from", "with"}
+#: After these, every noun is what the thing is made of ("made of steel and glass").
+_MADE_OF = {("made", "of"), ("made", "from"), ("built", "of"), ("built", "from"), ("carved", "from"),
+            ("carved", "of"), ("cast", "in"), ("forged", "from"), ("woven", "from")}  # fmt: skip
+_MAX_LOOK_WORDS = 4
+
+
+def _post_description(toks: list[_Tok], end: int, starts: set[int]) -> tuple[list[str], int]:
+    """The look a participle gives the noun ending at ``end`` ("glowing pink", "covered in green
+    velvet") and where it ends: the descriptive words up to a verb, a relation phrase or another
+    noun phrase, so the mesh generator reads colours and materials written after the noun too."""
+    if end >= len(toks) or toks[end].text not in _LOOK_PARTICIPLES or end in starts:
+        return [], end
+    k = end + 1
+    made_of = k < len(toks) and (toks[end].text, toks[k].text) in _MADE_OF
+    if k < len(toks) and toks[k].text in _LOOK_PREPOSITIONS:
+        k += 1
+    first = k
+
+    def describes(i: int) -> bool:
+        w = toks[i].text if i < len(toks) else ""
+        noun_ok = made_of or i not in starts
+        return w[:1].isalpha() and w not in _STOP and noun_ok and not _is_verb(w)
+
+    while k - first < _MAX_LOOK_WORDS and (describes(k) or (toks[k].text in ("and", "or") and describes(k + 1))):
+        k += 1
+    if k == first:
+        return [], end  # "a table covered in books": contents, no look
+    words: list[str] = []
+    for t in toks[end:k]:
+        if t.joined and words:  # "neon-pink"
+            words[-1] += "-" + t.text
+        else:
+            words.append(t.text)
+    return words, k

@@ -1,0 +1,124 @@
+"""Relation phrases: where they are in the text and what kind each is.
+
+The phrases themselves are data (``data/relation_phrases.json``): a newcomer adds a phrase to the
+list of its kind there. This module finds them (longest first), reads distances ("at a distance of
+12 m") and says which kinds place one object relative to one target.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+
+from scenewright.analysis.parser.sizes import _NUM_WORD
+from scenewright.analysis.parser.tokens import _Tok
+from scenewright.analysis.parser.words import _STOP, _UNITS, _is_verb
+
+
+@lru_cache(maxsize=1)
+def _rel_phrases() -> dict[str, list[str]]:
+    """Kind → phrases, read once from ``data/relation_phrases.json``."""
+    raw = resources.files("scenewright.data").joinpath("relation_phrases.json").read_text(encoding="utf-8")
+    return json.loads(raw)["phrases"]
+
+
+@lru_cache(maxsize=1)
+def _phrase_table() -> dict[tuple[str, ...], str]:
+    table: dict[tuple[str, ...], str] = {}
+    for kind, phrases in _rel_phrases().items():
+        for phrase in phrases:
+            table[tuple(phrase.split())] = kind
+    return table
+
+
+_MAX_REL = 6
+#: Phrase kinds that name relations of one object to one target, and the relations they mean.
+_SINGLE_TARGET = {
+    "left of": ("left of",), "right of": ("right of",), "in front of": ("in front of",), "behind": ("behind",),
+    "side of": ("side of",), "near": ("near",), "far": ("far",), "on": ("on",), "above": ("above",),
+    "over": ("above",), "face to": ("face to",), "opposite": ("in front of", "face to"), "between": ("near",),
+    "foot of": ("in front of",), "head of": ("behind",), "hanging from": ("above",), "leaning on": ("side of",),
+    "along": ("side of",),
+}  # fmt: skip
+
+
+def relation_phrases() -> dict[str, tuple[str, ...]]:
+    """Phrase → the relations it means, for phrases that place one object relative to one
+    target ("beside" → side of, "across from" → in front of + face to). Editing reads
+    instructions with the same vocabulary."""
+    return {
+        phrase: _SINGLE_TARGET[kind]
+        for kind, phrases in _rel_phrases().items()
+        if kind in _SINGLE_TARGET
+        for phrase in phrases
+    }
+
+@dataclass
+class _Rel:
+    kind: str
+    start: int
+    end: int
+    #: The target is the last one named ("..., at a distance of 12 m").
+    elliptic: bool = False
+
+
+#: At most this far apart is "near", beyond the other "far" (the relations' own thresholds).
+NEAR_LIMIT = 2.0
+FAR_LIMIT = 8.0
+
+
+def _distance_at(toks: list[_Tok], i: int) -> _Rel | None:
+    """"at a distance of N m (from X)", "N metres (away) from X" → near / far / nothing."""
+    j = i
+    if [t.text for t in toks[i : i + 4]] == ["at", "a", "distance", "of"]:
+        j = i + 4
+    elif i > 0 and toks[i - 1].text in ("about", "some", "roughly", "around", "only", "just", "of"):
+        return None
+    value = toks[j].text if j < len(toks) else ""
+    number = float(value) if value.replace(".", "", 1).isdigit() else _NUM_WORD.get(value)
+    if number is None or j + 1 >= len(toks) or toks[j + 1].text not in _UNITS:
+        return None
+    metres = number * _UNITS[toks[j + 1].text]
+    k = j + 2
+    if k < len(toks) and toks[k].text == "away":
+        k += 1
+    has_from = k < len(toks) and toks[k].text == "from"
+    if not has_from and j == i:
+        return None  # "2 m" alone is a size or a count, not a distance
+    kind = "near" if metres <= NEAR_LIMIT else "far" if metres > FAR_LIMIT else "no relation"
+    return _Rel(kind, i, k + 1 if has_from else k, elliptic=not has_from)
+
+
+def _qualifies_noun(toks: list[_Tok], end: int, kind: str) -> bool:
+    """"on the left wall", "on the left bench": the side word is the next noun's adjective, so
+    the phrase is only its preposition (a wall is no object: nothing is left of anything)."""
+    if kind not in ("left", "right") or end >= len(toks):
+        return False
+    w = toks[end].text
+    return w[0].isalpha() and w not in _STOP and not _is_verb(w)
+
+
+def _find_relations(toks: list[_Tok], taken: set[int]) -> list[_Rel]:
+    table = _phrase_table()
+    rels: list[_Rel] = []
+    i = 0
+    while i < len(toks):
+        if i in taken:
+            i += 1
+            continue
+        hit = _distance_at(toks, i)
+        for length in range(min(_MAX_REL, len(toks) - i), 0, -1):
+            if hit or any(k in taken for k in range(i, i + length)):
+                continue
+            key = tuple(t.text for t in toks[i : i + length])
+            if key in table and not _qualifies_noun(toks, i + length, table[key]):
+                hit = _Rel(table[key], i, i + length)
+                break
+        if hit:
+            rels.append(hit)
+            i = hit.end
+        else:
+            i += 1
+    return rels

@@ -1,0 +1,681 @@
+"""Clause reading: one pass over the text that builds groups of objects and the relations
+between them, resolving references ("it", "them", "the island") on the way.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+from scenewright.analysis.catalogue import Category, load_catalogue, singular
+from scenewright.analysis.parser.nouns import (
+    _Group,
+    _Mention,
+    _find_mentions,
+    _is_plural,
+    _position_adjective,
+    _post_description,
+    _read_count,
+)
+from scenewright.analysis.parser.phrases import _Rel, _find_relations
+from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
+from scenewright.analysis.parser.tokens import _split, _tokenise
+from scenewright.analysis.parser.vocabulary import load_vocabulary, scaled
+from scenewright.analysis.parser.words import (
+    _ADVERBS,
+    _CONTENT_HEADS,
+    _CONTENT_MARKERS,
+    _DETERMINERS,
+    _HANG_VERBS,
+    _HOLD,
+    _HOLD_PAIRS,
+    _NUMBERS,
+    _ORDINALS,
+    _OWNER_PRONOUNS,
+    _OWN_PLACE,
+    _PLANT_SHAPES,
+    _STOP,
+    _is_verb,
+)
+
+
+@dataclass
+class _Clause:
+    """What one clause has built so far."""
+
+    first: bool
+    main: list[int] = field(default_factory=list)
+    head: list[int] | None = None  # what a "with" part hangs from
+    wsub: list[int] = field(default_factory=list)
+    hold: bool = False
+    wsub_related: set[int] = field(default_factory=set)
+    last_target: list[int] = field(default_factory=list)
+    last_target_end: int = -1
+    expect_new: bool = False
+    groups: list[int] = field(default_factory=list)
+    main_groups: list[int] = field(default_factory=list)
+    fronted: list[tuple[str, list[int], bool]] = field(default_factory=list)
+    last_kind: str = ""
+    #: The clause opens with a noun phrase the catalogue does not know ("a small ice rink lies...").
+    unknown_subject: bool = False
+    rels: list[tuple[str, list[int]]] = field(default_factory=list)
+    produced: bool = False
+    #: The nouns before the clause's first verb or relation: its subjects.
+    subjects: list[int] = field(default_factory=list)
+    verb_seen: bool = False
+    #: The "with" things before one that was placed on its own ("with a till at one end and ...").
+    wsub_before: list[int] = field(default_factory=list)
+    #: The group "each"/"every" distributes over: its with-parts and flankers come once per member.
+    each: int | None = None
+
+
+#: Phrases that place a group in a formation rather than by a target.
+_FORMATIONS = ("row", "stack", "circle")
+#: Phrase kinds that, with no object after them, name a part of the room ("along the back wall").
+_PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None, "foot of": None, "at": None}
+#: Phrase kinds read as one of the scene's relations whatever they join.
+_KIND_RELATION = {"left": "left of", "right": "right of", "flank elliptic": "flank", "hanging from": "above",
+                  "leaning on": "side of", "along": "side of"}  # fmt: skip
+#: Seat shapes: what is "at" a desk or a table faces it from the front.
+_SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
+
+#: No phrase makes more objects than this ("a million chairs"): the object limit then refuses the text.
+MAX_COUNT = 10_000
+
+
+class _Reader:
+    """One pass over the text that builds groups of objects and relations between them."""
+
+    def __init__(self, text: str):
+        self.text = text
+        self.toks = _tokenise(text)
+        self.catalogue = load_catalogue()
+        self.groups: list[_Group] = []
+        #: (kind, source group, target group, target instance when one of the group is meant)
+        self.relations: list[tuple[str, int, int, int | None]] = []
+        self.pair_each: set[tuple[int, int]] = set()
+        self.history: list[int] = []  # groups in the order earlier clauses mentioned them
+        self.instance: dict[int, int | None] = {}  # mention start → instance it names
+        self._target_start = -1
+        #: Place words that set the scene rather than stand in it ("a hangar with a spaceship").
+        self.places: list[str] = []
+        #: Group → the part of the room the text puts it in (wall, corner, centre, back, front).
+        self.anchors: dict[int, str] = {}
+        #: Group → the formation its members stand in (row, stack, circle).
+        self.formations: dict[int, str] = {}
+
+    # ---- groups
+
+    def _new_group(self, m: _Mention, sizes: list[tuple[str, float]]) -> int:
+        adjectives = {a.lower() for a in m.adjectives}
+        if m.category == "table" and adjectives & {"round", "circular"}:
+            m.category = "round_table"
+        if adjectives & {"potted", "pot"} and self.catalogue[m.category].shape in _PLANT_SHAPES:
+            m.category, m.guess = "potted_plant", None  # "a potted palm" is a house plant, not a 6 m tree
+        cat: Category = self.catalogue[m.category]
+        name = m.phrase.lower()
+        if _is_plural(self.toks, m):
+            words = name.split()
+            name = " ".join([singular(words[0]), *words[1:]]) if "of" in words[1:2] else singular(name)
+        kind = [w.lower() for w in m.modifier]
+        describing = [a.lower() for a in m.adjectives]
+        if kind and describing[-len(kind) :] == kind:
+            describing = describing[: -len(kind)]
+        vocabulary = load_vocabulary()
+        if m.guess is not None and not kind and describing and not vocabulary.is_adjective(describing[-1]):
+            kind = describing[-1:]  # "a street musician": the noun before names its kind
+            describing = describing[:-1]
+        name = " ".join([*kind, name])
+        description = " ".join([*describing, name, *m.post]).strip()
+        base = scaled(m.guess.size, describing) if m.guess is not None else cat.size
+        size = _apply_sizes(base, sizes) if sizes else base
+        rests = m.guess.rests if m.guess is not None else cat.rests
+        count = min(max(1, m.count), MAX_COUNT)
+        g = _Group(len(self.groups), m.category, count, name, description, size, rests=rests)
+        g.guessed = m.guess is not None
+        self.groups.append(g)
+        return g.index
+
+    def _resolve(self, m: _Mention, sizes: list[tuple[str, float]]) -> int:
+        """A definite mention of something already present refers to it (by category, else by
+        its head noun: "the island" → the kitchen island); anything else is new."""
+        if m.group >= 0:
+            return m.group
+        if (m.definite or m.each) and not sizes:
+            head = singular(self.toks[m.end - 1].text)
+            family = self.catalogue[m.category].family  # a camel is not "the pig"
+            found = next(
+                (
+                    g.index for g in reversed(self.groups)
+                    if g.category == m.category and (not family or singular(g.name.split()[-1]) == head)
+                ),
+                None,
+            )  # fmt: skip
+            # "the teacher's desk" is not one of the school desks, nor "the teacher's bench" a lab table
+            owned = any(t.text.endswith("'s") for t in self.toks[max(0, m.start - 1) : m.end - 1])
+            if owned and found is not None and singular(self.groups[found].name.split()[-1]) != head:
+                found = None
+            if found is None and not owned:
+                found = next(
+                    (g.index for g in reversed(self.groups) if g.name.split()[-1].endswith(head)), None
+                )
+            if found is not None:
+                m.group = found
+                if not _is_plural(self.toks, m) and self.groups[found].count > 1 and not m.each:
+                    adj = [a.lower() for a in m.adjectives]
+                    self.instance[m.start] = next((_ORDINALS[a] for a in adj if a in _ORDINALS), 0)
+                return found
+        if m.alias:
+            return -1
+        m.group = self._new_group(m, sizes)
+        return m.group
+
+    # ---- the parse
+
+    def read(self) -> None:
+        toks = self.toks
+        mentions, self.places = _find_mentions(toks)
+        prev_end = 0
+        for m in mentions:
+            _read_count(toks, m, prev_end)
+            prev_end = m.end
+        self._mark_contents(mentions)
+        self.size_of: dict[int, list[tuple[str, float]]] = {}
+        for s, e, dim, value in _read_sizes(toks):
+            owner = self._size_owner(mentions, s, e)
+            if owner is not None:
+                self.size_of.setdefault(owner, []).append((dim, value))
+        taken = {k for m in mentions for k in range(m.start, m.end)}
+        starts = {m.start for m in mentions}
+        self.rel_at = {r.start: r for r in _find_relations(toks, taken) if r.kind != "at" or self._names_thing(r.end, starts)}
+        self._read_looks(mentions)
+        self.by_start = {m.start: m for m in mentions if not m.content}
+        self.content_at = {k for m in mentions if m.content for k in range(m.start, m.end)}
+        for sentence in _split(toks):
+            prev_subject: list[int] = []
+            pending: list[tuple[str, list[int]]] = []
+            last_rels: list[tuple[str, list[int]]] = []
+            for ci, (cs, ce) in enumerate(self._merge_lists(sentence)):
+                c = _Clause(first=ci == 0)
+                self._clause(c, cs, ce, prev_subject)
+                if c.fronted:
+                    srcs = c.main_groups
+                    targets_all = {t for _, ts, _ in c.fronted for t in ts}
+                    srcs = [g for g in srcs if g not in targets_all]
+                    if srcs:
+                        for kind, targets, each in c.fronted:
+                            if each:  # "beside every table stand two chairs"
+                                self._per_each(srcs[:1], targets[0])
+                            for t in targets:
+                                self._relate(kind, srcs, t)
+                        c.rels = [(kind, targets) for kind, targets, _ in c.fronted]
+                    else:
+                        pending = [(kind, targets) for kind, targets, _ in c.fronted]
+                elif pending and c.main_groups:
+                    # "Around it, toadstools and crystals glitter": every coordinated subject
+                    subjects = c.subjects or c.main_groups[:1]
+                    for kind, targets in pending:
+                        for t in targets:
+                            self._relate(kind, subjects, t)
+                    pending = []
+                elif not c.produced and c.groups and last_rels and self._is_list(cs, ce, strict=True):
+                    # "On the desk there is a lamp, a laptop and a mug": the list shares the relation
+                    for kind, targets in last_rels:
+                        for t in targets:
+                            self._relate(kind, c.groups, t)
+                    c.rels = last_rels
+                last_rels = c.rels or last_rels
+                if c.main_groups:
+                    prev_subject = c.main_groups[:1] if not c.main else c.main
+                self.history.extend(c.groups)
+
+    def _read_looks(self, mentions: list[_Mention]) -> None:
+        """Each noun's look written after it; a catalogue noun inside a "made of" look is its
+        material, not an object ("a table made of glass" holds no drinking glass)."""
+        starts = {m.start for m in mentions} | set(self.rel_at)
+        for m in mentions:
+            m.post, end = _post_description(self.toks, m.end, starts)
+            for other in mentions:
+                other.content = other.content or m.end < other.start < end
+
+    def _size_owner(self, mentions: list[_Mention], s: int, e: int) -> int | None:
+        after = [m for m in mentions if m.start >= e and m.start - e <= 4]
+        if after:
+            return after[0].start
+        before = [m for m in mentions if m.end <= s and s - m.end <= 8]
+        return before[-1].start if before else None
+
+    def _mark_contents(self, mentions: list[_Mention]) -> None:
+        """Nouns after "full of", or after "of" following a container or a depiction ("a vase of
+        tulips", "a statue of a horse"), are contents, not objects of the scene."""
+        toks = self.toks
+        chain = False
+        for k, m in enumerate(mentions):
+            prev = mentions[k - 1] if k else None
+            j = m.start - 1
+            while j >= 0 and (toks[j].text in _DETERMINERS or toks[j].text in _NUMBERS or (
+                toks[j].text not in _STOP and toks[j].text[0].isalnum())) and m.start - j < 5:  # fmt: skip
+                j -= 1
+            if j < 1 or prev is None:
+                chain = False
+                continue
+            gap = [t.text for t in toks[prev.end : j + 1]]
+            content = self._is_content(m, prev, j) or (
+                chain and prev.content and not (m.counted or m.definite) and all(g in ("and", ",", "or") for g in gap)
+            )
+            m.content = content
+            chain = content
+
+    def _is_content(self, m: _Mention, prev: _Mention, j: int) -> bool:
+        w = self.toks[j].text
+        if (self.toks[j - 1].text, w) in _CONTENT_MARKERS and j - prev.end <= 2:
+            return True  # "a bowl full of apples"
+        if self._listed_content(m.start):
+            return True  # "crates overflow with apples, pumpkins and carrots"
+        holder = prev.category in _CONTENT_HEADS or prev.category in ("container", "tool")
+        if w == "of" and prev.end == j and holder and not m.definite:
+            return True  # "a vase of tulips", "a statue of a horse", "a tray of medicine bottles"
+        plant = self.catalogue[prev.category].shape in ("potted_plant", "bush", "flower_bed")
+        return w == "in" and j - prev.end <= 2 and m.category in ("pot", "planter", "vase") and plant
+
+    def _listed_content(self, start: int) -> bool:
+        """Whether the noun at ``start`` is in a list of bare nouns that a content marker opens
+        ("overflow with apples, pumpkins and carrots": the pumpkins are contents too)."""
+        toks = self.toks
+        k = start - 1
+        while k > 0 and start - k <= 10:
+            w = toks[k].text
+            if (toks[k - 1].text, w) in _CONTENT_MARKERS:
+                return True
+            if not (w in (",", "and", "or") or (w[:1].isalpha() and w not in _STOP)):
+                return False
+            k -= 1
+        return False
+
+    def _merge_lists(self, clauses: list[tuple[int, int]]) -> list[tuple[int, int]]:
+        """Join a clause that only lists objects to the next one when that one places them
+        ("with a laptop, a mug and a lamp on it")."""
+        out: list[tuple[int, int]] = []
+        for cs, ce in clauses:
+            places = any(k in self.rel_at for k in range(cs, ce))
+            # "a counter with combs, scissors and a jar runs beneath the mirror": the list goes on
+            goes_on = bool(out) and self._open_with(*out[-1]) and cs not in self.rel_at
+            goes_on = goes_on and self.toks[cs].text not in ("and", "or", "but", "then", "so")
+            # a bare list takes the next placing when "and" closes it ("a lamp, a laptop and a mug on
+            # the desk"); a list of commas only is a list of separate things ("a desk, an armchair, a
+            # globe on the desk": only the globe is on the desk)
+            first_rel = min((k for k in range(cs, ce) if k in self.rel_at), default=ce)
+            # (an "and" opening the placing clause starts a clause of its own: "..., and three
+            # aliens wait in a line")
+            joined = bool(out) and any(
+                self.toks[k].text in ("and", "or") for k in (*range(out[-1][0] + 1, out[-1][1]), *range(cs + 1, first_rel))
+            )
+            if goes_on or (places and out and joined and self._is_list(*out[-1], strict=True)):
+                out[-1] = (out[-1][0], ce)
+                continue
+            out.append((cs, ce))
+        return out
+
+    def _open_with(self, cs: int, ce: int) -> bool:
+        """The clause ends inside the "with" part of a noun before it: nothing placed after."""
+        toks = self.toks
+        last = max((k for k in range(cs + 1, ce) if toks[k].text == "with" or toks[k].text in _HOLD), default=None)
+        if last is None or not any(cs <= k and m.end <= last for k, m in self.by_start.items()):
+            return False  # "a market square with three stalls, ...": the place's list, not a thing's
+        return not any(k in self.rel_at for k in range(last, ce))
+
+    def _is_list(self, cs: int, ce: int, strict: bool = False) -> bool:
+        """Only noun phrases joined by "and": no relation phrase, no verb."""
+        if any(k in self.rel_at for k in range(cs, ce)):
+            return False
+        mentions = [m for k, m in self.by_start.items() if cs <= k < ce]
+        if not mentions or max(m.end for m in mentions) != ce:
+            return False
+        if not strict:
+            return True
+        allowed: set[int] = set()
+        for m in mentions:
+            allowed.update(range(m.start - len(m.adjectives) - 2, m.end))
+        for k in range(cs, ce):
+            w = self.toks[k].text
+            if w in _HOLD:  # "a counter holds a till, and clocks stand behind it": two clauses
+                return False
+            if k in allowed or w in ("and", "or", "with") or w in _DETERMINERS or w in _NUMBERS:
+                continue
+            return False
+        return True
+
+    def _target_at(self, pos: int, ce: int) -> tuple[list[int] | str | None, int]:
+        """The noun phrase (or pronoun) right after a relation phrase, and where it ends."""
+        toks = self.toks
+        j = pos
+        while j < ce and j - pos < 6:
+            if j in self.by_start:
+                m = self.by_start[j]
+                self._target_start = m.start
+                owner = _OWNER_PRONOUNS.get(toks[pos].text) if pos < ce else None
+                if owner and m.group < 0 and not any(g.category == m.category for g in self.groups):
+                    return owner, m.end  # "pumpkins on its counter": the stall's own counter is the stall
+                g = self._resolve(m, self.size_of.get(m.start, []))
+                return ([g] if g >= 0 else None), m.end
+            w = toks[j].text
+            if w in ("it", "them", "itself", "themselves", "him", "her"):
+                return w, j + 1
+            if w in ("each", "one") and j + 1 < ce and toks[j + 1].text in ("other", "another"):
+                return "each other", j + 2
+            if w in ("each", "every") and j + 1 < ce and toks[j + 1].text == "one":
+                return "each one", j + 2  # "a chair in front of each one": one per member
+            # a noun, not a verb, after a determiner or a count ("its walls", "two rows of")
+            after_determiner = j > pos and (toks[j - 1].text in _DETERMINERS or toks[j - 1].text in _NUMBERS)
+            if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
+                w not in _STOP and w[0].isalnum() and (after_determiner or not _is_verb(w))
+            ):
+                j += 1
+                continue
+            break
+        owner = _OWNER_PRONOUNS.get(toks[pos].text) if pos < ce else None
+        if owner and j > pos + 1:
+            return owner, j  # "above its door": a part of its owner places by the owner itself
+        return None, pos
+
+    def _pronoun(self, word: str, c: _Clause, srcs: list[int], prefer: list[int]) -> list[int]:
+        """The group "it" / "them" names: the subject before (when this clause has its own) or
+        the latest earlier mention, of the right number."""
+        plural = word in ("them", "themselves")
+        recent = [g for g in [*prefer, *reversed(self.history), *reversed(c.groups)] if g not in srcs]
+        # a thing on the floor is not placed by a small thing on a table ("a nightstand with a lamp
+        # on it. A rug lies in front of it": the nightstand)
+        big = bool(srcs) and not self._small(*srcs)
+        for fits in ((lambda g: not (big and self._small(g))), (lambda g: True)):
+            for g in recent:
+                if (self.groups[g].count > 1) == plural and fits(g):
+                    return [g]
+        # "them" after two single things ("an armchair ... a bookcase ..., between them")
+        return list(dict.fromkeys(recent))[:2] if plural else []
+
+    def _clause(self, c: _Clause, cs: int, ce: int, prev_subject: list[int]) -> None:
+        toks = self.toks
+        k = cs
+        while k < ce and toks[k].text in ("and", "or", "but", "then", "also", "so", "there", "is", "are"):
+            k += 1
+        j = k
+        # an adverb that opens a relation phrase is part of it ("Far from the house, ...")
+        while j < ce and j not in self.rel_at and (toks[j].text in _DETERMINERS or toks[j].text in _ADVERBS):
+            j += 1
+        starts_with_rel = j in self.rel_at
+        c.unknown_subject = j > k and toks[k].text in ("a", "an", "the") and j not in self.by_start and not starts_with_rel
+        last_event_end = cs
+        while k < ce:
+            w = toks[k].text
+            nxt = toks[k + 1].text if k + 1 < ce else ""
+            each_part = nxt in ("with", "have", "has", "holding", "holds", "carrying", "bearing")
+            # "each surrounded by two chairs": the passive flankers come once per member too
+            each_passive = k + 1 in self.rel_at and self.rel_at[k + 1].kind in ("flanked by", "surrounded by")
+            each_hold = (nxt, toks[k + 2].text if k + 2 < ce else "") in _HOLD_PAIRS
+            if w == "each" and (each_part or each_passive or each_hold):
+                plural = [g for g in [*self.history, *c.groups] if self.groups[g].count > 1]
+                if plural:
+                    c.each = plural[-1]
+                k += 1
+                continue
+            if w == "with" or w in _HOLD or (w, nxt) in _HOLD_PAIRS or w in ("has", "have"):
+                c.head = [c.each] if c.each is not None else (c.main or list(prev_subject))
+                if w == "with" and c.last_target and c.last_target_end == k and self._animate(*c.head):
+                    c.head = list(c.last_target)  # "a baker stands behind the counter with a tray on it"
+                c.wsub, c.expect_new = [], False
+                c.hold = w in _HOLD or (w, nxt) in _HOLD_PAIRS
+                k += 2 if (w, nxt) in _HOLD_PAIRS else 1
+                last_event_end = k
+                continue
+            if k in self.by_start:
+                m = self.by_start[k]
+                g = self._resolve(m, self.size_of.get(m.start, []))
+                k = m.end
+                if g < 0:
+                    continue
+                if c.each is not None and c.head is not None and not m.definite and g != c.each:
+                    self.groups[g].count = max(1, m.count) * self.groups[c.each].count
+                    self.pair_each.add((g, c.each))
+                if m.each and c.head is None and not c.verb_seen:
+                    c.each = g  # "every desk has a lamp": a lamp per desk
+                c.groups.append(g)
+                if c.head is not None:
+                    gap = [t.text for t in toks[last_event_end : m.start]]
+                    closed = any(_is_verb(w) for w in gap)
+                    if c.wsub and any(w in _OWN_PLACE for w in gap):  # "a till at one end and a computer"
+                        self._close_with(c)
+                        c.wsub_before, closed = list(c.wsub), True
+                    c.wsub = [g] if (c.expect_new or closed) else [*c.wsub, g]
+                else:
+                    c.main_groups.append(g)
+                    c.main = [g] if c.expect_new else [*c.main, g]
+                    if not c.verb_seen:
+                        c.subjects.append(g)
+                c.expect_new = False
+                last_event_end = m.end
+                continue
+            c.verb_seen = c.verb_seen or k in self.rel_at or _is_verb(w)
+            if k in self.rel_at:
+                k = self._relation(c, self.rel_at[k], ce, prev_subject, starts_with_rel, last_event_end)
+                last_event_end = k
+                continue
+            k += 1
+        self._close_with(c)
+
+    def _animate(self, *groups: int) -> bool:
+        """People and animals: what comes "with" right after their target belongs to the target."""
+        return bool(groups) and all(self.groups[g].category in ("figure", "animal", "bird") for g in groups)
+
+    def _small(self, *groups: int) -> bool:
+        """All of these stand on surfaces (tabletop things)."""
+        return all(self.groups[g].rests == "surface" for g in groups)
+
+    def _close_with(self, c: _Clause) -> None:
+        """"A desk with a lamp", "a cart loaded with barrels": small things with no place of
+        their own stand on what they came with."""
+        if c.head is None:
+            return
+        for g in c.wsub:
+            if g in c.wsub_related:
+                continue
+            for h in c.head:
+                if h == g:
+                    continue
+                rests = self.groups[g].rests
+                if c.hold or (rests == "surface" and self.catalogue[self.groups[h].category].support):
+                    self._relate("on", [g], h)
+                    c.produced = True
+
+    def _relation(self, c: _Clause, rel: _Rel, ce: int, prev_subject, starts_with_rel, last_event_end) -> int:
+        toks = self.toks
+        kind = rel.kind
+        target, end = self._target_at(rel.end, ce)
+        between = [t.text for t in toks[last_event_end : rel.start]]
+        # sources: the noun the phrase follows when nothing but adverbs lies between
+        srcs: list[int]
+        # "a globe on a side table to the right of the desk", "chairs around a table left of the sofa"
+        chained = (c.last_kind in ("on", "on top", "near", "around") or kind in ("on", "on top")) and kind not in (
+            "face to", "flank", "around", "no relation"
+        )  # fmt: skip
+        if chained and isinstance(target, list) and target and c.last_target:
+            # "a lamp on the table next to a teapot": what stands by a small thing is its peer, not the table
+            chained = not self._small(target[0]) or self._small(c.last_target[0])
+        if chained and c.last_target and c.last_target_end == last_event_end and all(b in _ADVERBS for b in between):
+            srcs = list(c.last_target)
+        elif c.head is not None:
+            # contents are no verbs: "a cart with a bowl of apples on it" keeps the bowl as the source
+            closed = any(
+                _is_verb(toks[k].text)
+                for k in range(last_event_end, rel.start)
+                if k not in self.content_at and toks[k - 1].text != "of"
+            )
+            if c.wsub and not closed and not c.expect_new:
+                srcs = list(c.wsub)
+                if kind in ("on", "above", "over", "on top", "under"):
+                    c.wsub_related.update(srcs)
+            else:
+                self._close_with(c)
+                srcs = list(c.head)
+                c.head, c.wsub = None, []
+        else:
+            srcs = list(c.main)
+        if kind == "no relation" or (kind == "stack" and end < ce and toks[end].text == "with"):
+            return end  # "a shelf stacked with books": contents, no stack
+        if kind in _FORMATIONS or kind.startswith("anchor ") or (target is None and kind in _PLACE_KINDS):
+            # "three stalls stand in a row", "a sofa against the wall", "a rug in the middle of the room"
+            place = _PLACE_KINDS.get(kind) or self._anchor_after(rel.end, ce) if not kind.startswith("anchor ") else kind
+            for g in srcs or ([] if c.first else list(prev_subject)):
+                if kind in _FORMATIONS:
+                    self.formations.setdefault(g, kind)
+                elif place:
+                    self.anchors.setdefault(g, place.removeprefix("anchor "))
+            return end
+        if kind in ("its left", "its right") and target is None:
+            kind, target = ("left of" if kind == "its left" else "right of"), "it"
+        if kind == "on top" and target is None:
+            kind = "on"
+            target = "it" if c.head is not None else None
+            rel = replace(rel, elliptic=True)
+        if target == "each one":
+            targets = self._pronoun("them", c, srcs, list(c.last_target))
+            if targets:
+                self._per_each([s for s in srcs if s in c.groups], targets[0])
+        elif isinstance(target, str) and target != "each other":
+            # "a bench in front of the swing, facing it": the clause's own last target first.
+            prefer = list(c.last_target) or (list(prev_subject) if c.main and srcs == c.main else [])
+            targets: list[int] | str = self._pronoun(target, c, srcs, prefer) if c.head is None else list(c.head)
+            if c.head is not None and srcs == c.head:
+                targets = self._pronoun(target, c, srcs, prefer)
+            elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
+                targets = c.wsub_before[-1:]  # "... and a computer beside it": beside the till
+        elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
+            # "a bed with a nightstand on either side": a with-thing's side is its head's
+            owner = list(c.head) if c.head is not None and srcs == c.wsub else []
+            targets = list(c.last_target) or owner or [g for g in self.history[-1:] if g not in srcs]
+        elif target is None:
+            targets = []
+        else:
+            targets = target
+        if kind == "between" and isinstance(targets, list) and targets:
+            if end < ce and toks[end].text == "and":
+                second, end2 = self._target_at(end + 1, ce)
+                if isinstance(second, list):
+                    targets, end = targets + second, end2
+        if isinstance(targets, list) and targets:
+            for t in targets:
+                if t in c.groups:
+                    continue
+                c.groups.append(t)
+        if kind in ("flanked by", "surrounded by", "near by", "on by"):
+            head = srcs or list(prev_subject)
+            if isinstance(targets, list) and head:
+                active = {"flanked by": "flank", "surrounded by": "around", "near by": "near", "on by": "on"}[kind]
+                if c.each is not None:  # "three tables, each surrounded by two chairs": two per table
+                    self._per_each([t for t in targets if t != c.each], c.each)
+                for t in targets:
+                    for h in head:
+                        self._relate(active, [t], h)
+                c.produced = True
+                c.rels.append((kind, targets))
+                if c.head is None:
+                    c.main = list(targets)  # "guarded by a skeleton sitting on a barrel"
+            c.last_target, c.last_target_end, c.expect_new = [], -1, False
+            return end
+        if not srcs:
+            if starts_with_rel and c.first and not c.produced and isinstance(targets, list) and targets:
+                tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
+                c.fronted.append((kind, targets, tm is not None and tm.each))
+                return end
+            if not c.first and not c.unknown_subject:
+                srcs = list(prev_subject)
+        if kind in ("flank", "flank elliptic") and not toks[rel.start].text.startswith("flank"):
+            self._one_a_side(srcs)  # also beside what is no object: "on each side of the elevator"
+        if not srcs or not targets:
+            return end
+        hang = kind == "hanging from" or any(t.text in _HANG_VERBS for t in toks[max(0, rel.start - 3) : rel.start])
+        if targets == "each other":
+            for s in srcs:
+                self.relations.append(("face to" if kind == "face to" else "near", s, s, None))
+            c.produced = True
+            return end
+        assert isinstance(targets, list)
+        instance = self.instance.get(self._target_start) if isinstance(target, list) else None
+        tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
+        if tm is not None and tm.each:  # "a candle on every table": one per table
+            self._per_each([s for s in srcs if s in c.groups], targets[0])
+        for t in targets:
+            self._relate(kind, srcs, t, hang, instance)
+        c.produced = True
+        c.rels = [(kind, targets)]
+        c.last_kind = "between" if rel.kind == "between" else kind  # "between two trees to the left of"
+        if isinstance(target, list):
+            c.last_target, c.last_target_end = targets, end
+        else:
+            c.last_target, c.last_target_end = [], -1
+        c.expect_new = True
+        return end
+
+    def _names_thing(self, start: int, starts: set[int]) -> bool:
+        """A noun phrase of a thing follows ("at each desk"), not a time or a part ("at one end")."""
+        k = start
+        while k < len(self.toks) and k - start < 4:
+            w = self.toks[k].text
+            if k in starts or w in ("it", "them"):
+                return True
+            if not (w in _DETERMINERS or w in ("each", "every") or (w[:1].isalpha() and w not in _STOP)):
+                return False
+            k += 1
+        return False
+
+    def _anchor_after(self, start: int, ce: int) -> str | None:
+        """The part of the room a phrase with no object names ("along the back wall" → wall)."""
+        for t in self.toks[start : min(ce, start + 4)]:
+            if t.text in ("wall", "walls"):
+                return "wall"
+            if t.text in ("corner", "corners"):
+                return "corner"
+        return None
+
+    def _per_each(self, srcs: list[int], target: int) -> None:
+        """As many of each source as it says, for every one of the target group."""
+        for src in srcs:
+            if (src, target) not in self.pair_each:
+                self.groups[src].count *= self.groups[target].count
+                self.pair_each.add((src, target))
+
+    def _one_a_side(self, srcs: list[int]) -> None:
+        """"A lamp post on each side of the door": one thing named for both sides means two."""
+        for s in srcs:
+            if self.groups[s].count == 1 and s not in self.history:
+                self.groups[s].count = 2
+
+    def _relate(self, kind: str, srcs: list[int], target: int, hang: bool = False, instance=None) -> None:
+        for s in srcs:
+            resolved = self._kind(kind, s, target, hang)
+            if s == target or resolved == "no relation":
+                continue
+            self.relations.append((resolved, s, target, instance))
+
+    def _kind(self, kind: str, s: int, t: int, hang: bool = False) -> str:
+        src = self.groups[s]
+        if kind == "over":
+            return "above" if hang or src.rests == "hanging" else "near"  # a tree leaning over a pond
+        if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not hang:
+            return "near"  # a tree "above" a pond cannot float: read it as near
+        if kind == "under":
+            tgt = self.catalogue[self.groups[t].category]
+            return "under flat" if self.groups[s].size[2] < 0.1 and tgt.size[2] < 1.5 else "near"
+        target = self.catalogue[self.groups[t].category]
+        if kind == "at":  # "an office chair at each desk": pulled up to it, facing it
+            seat = self.catalogue[src.category].shape in _SEATS
+            return "at seat" if seat and (target.support or target.shape in ("desk", "table", "counter")) else "near"
+        if kind in ("foot of", "head of"):  # "a chest at the foot of the bed": its front, the headboard its back
+            if target.shape in ("bed", "sofa", "bench"):
+                return "in front of" if kind == "foot of" else "behind"
+            if kind == "head of" and target.support:
+                return "left of"  # the head of a table is one of its ends
+            return "near"
+        if kind == "hanging from":  # from a beam or a shelf: above it; from a tall tree: beside it
+            return "above" if target.size[2] <= 2.5 else "near"
+        if kind == "centre of":  # "a vase in the middle of the table": on it; else near it
+            return "on" if src.rests == "surface" and target.support else "near"
+        return _KIND_RELATION.get(kind, kind)

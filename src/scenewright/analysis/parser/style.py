@@ -1,0 +1,112 @@
+"""The look of the scene as a whole: the named style, the ground kind and indoor-ness.
+"""
+
+from __future__ import annotations
+
+import re
+
+from scenewright.scene import DEFAULT_STYLE
+
+#: Ground kinds the procedural ground textures understand.
+GROUND_KINDS = (
+    "wood floor", "tiles", "carpet", "concrete", "marble", "grass", "gravel", "cobblestone",
+    "sand", "dirt", "snow", "metal deck", "stone", "rubber", "asphalt",
+)  # fmt: skip
+
+
+_STYLE_WORDS = [
+    ("low-poly", ("low poly", "lowpoly", "low-poly", "polygonal", "flat shaded")),
+    ("cartoon", ("cartoon", "cartoonish", "cartoony", "toon", "pixar", "claymation")),
+    ("anime", ("anime", "ghibli", "cel shaded", "cel-shaded")),
+    ("cyberpunk", ("cyberpunk", "neon noir", "neon-noir", "blade runner")),
+    ("steampunk", ("steampunk", "clockwork")),
+    ("realistic", ("realistic", "photorealistic", "photo realistic", "photo-realistic", "lifelike")),
+]
+
+
+def detect_style(text: str, default: str = DEFAULT_STYLE) -> str:
+    """The style the text names ("cartoon-style", "Cyberpunk.", "anime"), else ``default``.
+
+    A word followed by "style" wins over a word used in passing; otherwise the first named."""
+    low = " " + " ".join(re.findall(r"[a-z]+", text.lower())) + " "
+    best: tuple[int, int, str] | None = None
+    for style, words in _STYLE_WORDS:
+        for w in words:
+            w = " " + " ".join(re.findall(r"[a-z]+", w)) + " "
+            pos = low.find(w)
+            if pos < 0:
+                continue
+            styled = low[pos + len(w) : pos + len(w) + 6].startswith(("style", "styled", "look", "aesthetic"))
+            rank = (0 if styled else 1, pos, style)
+            if best is None or rank < best:
+                best = rank
+    return best[2] if best else default
+
+
+_GROUND_WORDS = [
+    ("metal deck", ("metal deck", "metal floor", "steel deck", "landing pad", "spaceport", "space station",
+                    "spaceship deck", "metal grating", "starship", "platform deck", "metal plating")),
+    ("cobblestone", ("cobblestone", "cobblestones", "cobbled", "cobble")),
+    ("gravel", ("gravel",)),
+    ("snow", ("snow", "snowy", "snow covered", "frozen", "icy", "winter")),
+    ("sand", ("sand", "sandy", "beach", "desert", "dunes", "dune", "oasis")),
+    ("rubber", ("rubber ground", "rubber floor", "rubber mat", "rubber flooring", "gym floor", "gym")),
+    ("marble", ("marble floor", "marble floors", "marble tiles", "marble flooring")),
+    ("tiles", ("tile", "tiles", "tiled", "bathroom", "kitchen", "laboratory", "lab", "spa")),
+    ("carpet", ("carpeted", "wall to wall carpet", "carpet floor", "bedroom", "nursery", "office", "conference")),
+    ("asphalt", ("asphalt", "tarmac", "road", "street", "alley", "alleyway", "parking", "highway", "city", "gas station")),
+    ("concrete", ("concrete", "pavement", "sidewalk", "station", "platform", "warehouse", "garage", "industrial",
+                  "dock", "harbour", "harbor", "pier", "hangar", "factory floor")),
+    ("wood floor", ("wooden floor", "wood floor", "hardwood", "parquet", "floorboards", "wooden deck",
+                    "plank", "room", "house", "cabin", "studio", "apartment", "cafe", "café", "bistro",
+                    "restaurant", "shop", "store", "boutique", "hall")),
+    ("stone", ("stone floor", "flagstone", "flagstones", "paved", "plaza", "courtyard", "castle", "temple")),
+    ("dirt", ("dirt", "mud", "muddy", "soil", "farm", "farmyard", "barnyard", "stable yard", "paddock", "dusty", "village", "campsite", "orchard", "trail",
+              "planet", "rocky", "crater", "martian", "wasteland")),
+    ("grass", ("grass", "grassy", "lawn", "meadow", "park", "garden", "field", "backyard", "yard", "forest")),
+]
+
+
+def detect_ground(text: str, indoor: bool) -> str:
+    """A ground kind from :data:`GROUND_KINDS`: an explicit floor word, else the place's word,
+    else wood floor indoors and grass outdoors."""
+    low = " " + " ".join(re.findall(r"[a-zé]+", text.lower())) + " "
+    best: tuple[int, int, str] | None = None
+    for rank, (kind, words) in enumerate(_GROUND_WORDS):
+        for w in words:
+            pos = low.find(" " + w + " ")
+            if pos >= 0:
+                # Material words ("cobblestones", "tiles") outrank place words ("kitchen", "park").
+                explicit = 0 if rank < 7 or " " in w or w in ("tile", "tiles", "tiled", "concrete", "asphalt", "grass") else 1
+                key = (explicit, rank, kind)
+                if best is None or key < best:
+                    best = key
+    if best is not None:
+        return best[2]
+    return "wood floor" if indoor else "grass"
+
+
+#: Places whose setting is a building: a scene "in a hangar" is an interior.
+_INDOOR_PLACES = {"hangar", "warehouse", "factory", "garage", "workshop", "library", "museum", "tavern", "inn", "pub",
+                  "attic", "basement", "cellar", "loft", "lobby", "hallway", "corridor", "chamber", "church",
+                  "cathedral", "chapel", "temple", "dungeon", "crypt", "bunker", "vault", "gym", "spa", "bakery",
+                  "salon", "theatre", "theater", "cinema", "ballroom", "lounge", "pantry", "diner", "restaurant",
+                  "bar", "arcade", "mall", "station", "hospital", "clinic", "nursery", "school", "kitchen", "bedroom"}  # fmt: skip
+
+
+def _is_indoor(categories: list[str], text: str, catalogue, places: list[str] = ()) -> bool:
+    low = text.lower()
+    votes = 0
+    for name in categories:
+        tags = catalogue[name].tags
+        votes += ("indoor" in tags) - ("outdoor" in tags)
+    votes += 3 * sum(1 for p in places if p.split()[-1] in _INDOOR_PLACES)
+    for word in ("room", "kitchen", "bedroom", "bathroom", "office", "classroom", "lab", "apartment", "studio",
+                 "café", "cafe", "shop", "store", "boutique", "gallery", "hall", "interior", "indoors"):
+        if re.search(rf"\b{word}\b", low):
+            votes += 2
+    for word in ("street", "park", "garden", "square", "market", "beach", "forest", "yard", "outdoor", "harbour",
+                 "harbor", "village", "desert", "planet", "courtyard", "playground", "campsite", "field"):
+        if re.search(rf"\b{word}\b", low):
+            votes -= 2
+    return votes > 0

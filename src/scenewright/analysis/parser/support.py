@@ -1,0 +1,112 @@
+"""Default supports: surface things nobody put anywhere go on the best support present, hanging
+things above the nearest large object. Marked ``inferred``.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+
+from scenewright.analysis.parser.model import ParsedObject, ParsedRelation
+
+
+_SUPPORT_PREFERENCE = {
+    "table_lamp": ("nightstand", "desk", "side_table", "dresser", "vanity", "table", "coffee_table", "cabinet"),
+    "alarm_clock": ("nightstand", "dresser", "desk", "side_table"),
+    "tv": ("tv_stand", "cabinet", "dresser", "counter", "desk", "table"),
+    "monitor": ("desk", "school_desk", "table", "counter", "control_panel", "lab_bench"),
+    "laptop": ("desk", "school_desk", "table", "coffee_table", "counter", "round_table"),
+    "keyboard": ("desk", "school_desk", "table"),
+    "printer": ("desk", "cabinet", "filing_cabinet", "table"),
+    "microwave": ("counter", "cabinet", "table"),
+    "coffee_machine": ("counter", "side_table", "table", "cabinet"),
+    "toaster": ("counter", "table"),
+    "cash_register": ("counter", "display_case", "table"),
+    "flask": ("lab_bench", "table", "desk", "counter"),
+    "microscope": ("lab_bench", "desk", "table"),
+    "projector": ("table", "desk", "side_table"),
+    "radio": ("cabinet", "side_table", "dresser", "desk", "table"),
+    "aquarium": ("cabinet", "dresser", "side_table", "counter", "table"),
+    "magic_orb": ("pedestal", "altar", "table", "round_table", "desk"),
+}
+
+
+def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation], catalogue) -> list[ParsedRelation]:
+    """Surface things with no stated support go on the best support present; hanging things
+    with no stated target hang above the nearest-mentioned large object."""
+    placed_vertically = {r.source for r in relations if r.relation in ("on", "above")}
+    load: Counter[str] = Counter(r.target for r in relations if r.relation == "on")
+    extra: list[ParsedRelation] = []
+    supports = [o for o in objects if catalogue[o.category].support]
+    for obj in objects:
+        rests = obj.rests or catalogue[obj.category].rests
+        if obj.id in placed_vertically:
+            continue
+        if rests == "surface":
+            prefs = _SUPPORT_PREFERENCE.get(obj.category, ())
+            fitting = [
+                s for s in supports
+                if s.id != obj.id and s.size[0] >= obj.size[0] * 0.9 and s.size[1] >= obj.size[1] * 0.9
+            ]  # fmt: skip
+            if not fitting:
+                continue
+
+            def score(s: ParsedObject, prefs=prefs, obj=obj) -> tuple:
+                rank = prefs.index(s.category) if s.category in prefs else len(prefs)
+                return (rank, load[s.id], abs(s.group - obj.group))
+
+            best = min(fitting, key=score)
+            load[best.id] += 1
+            extra.append(ParsedRelation(obj.id, "on", best.id, inferred=True))
+        elif rests == "hanging":
+            hosts = [
+                o for o in objects
+                if o.id != obj.id and (o.rests or catalogue[o.category].rests) == "ground" and 0.3 < o.size[2] < 2.5
+            ]  # fmt: skip
+            if hosts:
+                # the nearest mention, the one before on a tie ("a dresser with a mirror")
+                best = min(hosts, key=lambda o: (abs(o.group - obj.group), o.group > obj.group, -o.size[0] * o.size[1]))
+                extra.append(ParsedRelation(obj.id, "above", best.id, inferred=True))
+    return extra
+
+
+#: Hosts with no top to put things on: people and birds (a horse or a camel can carry a load).
+_NO_TOP = {"figure", "bird", "mannequin", "scarecrow"}
+#: A host this low is ground-like (a rug, a pond, a pallet, a blanket): anything may stand on it.
+FLAT_HOST = 0.3
+#: How much larger than its host a thing may be and still rest on it (footprint, longest side):
+#: a statue overhangs its plinth, a bird its bollard.
+_AREA_SLACK, _SIDE_SLACK = 2.0, 1.6
+#: Furniture that stands on the floor, never on another piece ("a sofa on the desk" is beside it).
+_FLOOR_FURNITURE = {"sofa", "armchair", "bed", "wardrobe", "bookshelf", "office_chair", "piano", "fridge",
+                    "stove", "counter", "desk", "table", "round_table", "coffee_table", "bathtub", "treadmill",
+                    "dresser", "tv_stand", "school_desk", "dining_table"}  # fmt: skip
+
+
+def can_hold(host: ParsedObject, thing: ParsedObject, catalogue) -> bool:
+    """Whether ``thing`` can rest on ``host``: hosts that hang hold nothing; a flat host holds
+    anything; otherwise the thing must be about the host's size or smaller."""
+    if (host.rests or catalogue[host.category].rests) == "hanging" or host.category in _NO_TOP:
+        return False  # what a knight holds is beside him, not on him
+    if host.size[2] <= FLAT_HOST:
+        return True
+    if thing.category in _FLOOR_FURNITURE:
+        return False
+    area = thing.size[0] * thing.size[1] <= _AREA_SLACK * host.size[0] * host.size[1]
+    side = max(thing.size[:2]) <= _SIDE_SLACK * max(host.size[:2])
+    return area and side
+
+
+def repair_supports(
+    objects: list[ParsedObject], relations: list[ParsedRelation], catalogue
+) -> tuple[list[ParsedRelation], list[str]]:
+    """Each ``on`` whose host cannot hold the thing becomes ``side of`` (what the text most
+    likely meant: "a dinosaur skeleton on a barrel" stands beside it), with a note of the repair."""
+    by_id = {o.id: o for o in objects}
+    out: list[ParsedRelation] = []
+    notes: list[str] = []
+    for r in relations:
+        if r.relation == "on" and not can_hold(by_id[r.target], by_id[r.source], catalogue):
+            notes.append(f"{r.source} on {r.target}: {r.target} cannot hold it; placed beside it instead")
+            r = ParsedRelation(r.source, "side of", r.target, r.inferred)
+        out.append(r)
+    return out, notes

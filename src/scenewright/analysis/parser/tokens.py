@@ -1,0 +1,59 @@
+"""Words and clauses: the tokeniser (hyphen-joined words kept apart, dashes as commas) and the
+sentence/clause split the reader walks.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+
+#: Letters of any script, so an accented word ("café", "Stühle") stays one word.
+_TOKEN = re.compile(r"\d+(?:\.\d+)?|[^\W\d_]+(?:['’][^\W\d_]+)?|[.,;:!?()\"]|[-–—]")
+
+
+@dataclass
+class _Tok:
+    text: str  # lowercase
+    orig: str
+    joined: bool  # hyphen-joined to the previous word ("three-tiered")
+
+
+def _tokenise(text: str) -> list[_Tok]:
+    toks: list[_Tok] = []
+    hyphen = False
+    prev_end = -1
+    for m in _TOKEN.finditer(text):
+        s = m.group(0)
+        if s in "-–" and m.start() == prev_end:
+            hyphen = True
+            prev_end = m.end()
+            continue
+        if s in "—–-":
+            s = ","
+        joined = hyphen and m.start() == prev_end
+        hyphen = False
+        prev_end = m.end()
+        toks.append(_Tok(s.lower().replace("’", "'"), s, joined))
+    return toks
+
+
+_CLAUSE_BREAK = {",", ";", ":", "(", ")", '"'}
+_CLAUSE_WORDS = {"while", "whereas", "where", "whilst", "although", "though"}
+_SENTENCE_END = {".", "!", "?"}
+
+
+def _split(toks: list[_Tok]) -> list[list[tuple[int, int]]]:
+    """Sentences as lists of clauses, each a (start, end) token span."""
+    sentences: list[list[tuple[int, int]]] = []
+    clauses: list[tuple[int, int]] = []
+    start = 0
+    for i, t in enumerate(toks + [_Tok(".", ".", False)]):
+        if t.text in _SENTENCE_END or t.text in _CLAUSE_BREAK or t.text in _CLAUSE_WORDS:
+            if i > start:
+                clauses.append((start, i))
+            start = i + 1
+            if t.text in _SENTENCE_END and clauses:
+                sentences.append(clauses)
+                clauses = []
+    return sentences

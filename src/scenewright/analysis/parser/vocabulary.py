@@ -1,0 +1,132 @@
+"""The open vocabulary: things the catalogue does not name still become objects.
+
+A camel, a fuel tank or a street musician has no catalogue record, but each names a thing a
+user expects to see. ``data/vocabulary.json`` maps such head words to a shape family (a
+catalogue record marked ``family``: animal, figure, machine, tank...) or to an existing
+category, with a typical size; words that name no thing (places, times, weather, parts,
+materials) are listed so that a noun nobody listed can still become a generic ``thing``
+without turning "a sunny afternoon" into an object. Objects read this way are *guessed*.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+
+from scenewright.analysis.catalogue import load_catalogue, singular, words
+
+#: The family a thing nobody listed falls back to.
+GENERIC = "thing"
+#: Endings of English adjectives ("rusty", "glowing", "magical", "robotic", "woollen").
+_ADJECTIVE_ENDINGS = ("ly", "ous", "ful", "ish", "less", "able", "ible", "ive", "ed", "est", "y", "ing", "al", "ic",
+                      "en", "ern", "ar", "ant", "ent", "ese", "ian")  # fmt: skip
+
+
+@dataclass(frozen=True)
+class Entry:
+    """What the vocabulary says of one head word or phrase."""
+
+    category: str
+    size: tuple[float, float, float]
+    rests: str
+
+
+@dataclass(frozen=True)
+class Vocabulary:
+    entries: dict[tuple[str, ...], Entry]
+    not_things: frozenset[str]
+    places: frozenset[str]
+    adjectives: frozenset[str]
+    size_words: dict[str, float]
+    suffixes: tuple[tuple[str, str], ...]
+    longest: int
+    #: Phrases that beat the catalogue noun they end with ("arcade cabinet").
+    overrides: frozenset[tuple[str, ...]] = frozenset()
+
+    def over_catalogue(self, tokens: tuple[str, ...]) -> bool:
+        return tokens in self.overrides or (*tokens[:-1], singular(tokens[-1])) in self.overrides
+
+    def match(self, tokens: tuple[str, ...]) -> Entry | None:
+        """The entry a word tuple names, the last word also in its singular form."""
+        if tokens in self.entries:
+            return self.entries[tokens]
+        if tokens:
+            return self.entries.get((*tokens[:-1], singular(tokens[-1])))
+        return None
+
+    def is_thing_word(self, word: str) -> bool:
+        """Could ``word`` head a noun phrase naming a thing? Not a place, time, part, material
+        or adjective, and shaped like a noun."""
+        w = word.lower()
+        one = singular(w)
+        if w in self.not_things or one in self.not_things or w in self.adjectives:
+            return False
+        if not w.isalpha() or len(w) < 3:
+            return False
+        return not w.endswith(("ly", "ous", "ful", "ish", "less", "able", "ible", "ive", "ed", "est"))
+
+    def is_adjective(self, word: str) -> bool:
+        """A describing word rather than a noun that names the kind ("rusty" vs "street")."""
+        w = word.lower()
+        if w in self.adjectives or w in self.size_words:
+            return True
+        if self.match((w,)) is not None or w in self.places:
+            return False
+        return w.endswith(_ADJECTIVE_ENDINGS) or not w.isalpha()
+
+    def guess(self, head: str) -> Entry:
+        """A family for a noun nobody listed, from its ending ("…saurus" → animal), else a thing."""
+        catalogue = load_catalogue()
+        one = singular(head.lower())
+        for suffix, family in self.suffixes:
+            if one.endswith(suffix) and one != suffix:
+                category = catalogue[family]
+                return Entry(family, category.size, category.rests)
+        category = catalogue[GENERIC]
+        return Entry(GENERIC, category.size, category.rests)
+
+
+def _validate(raw: dict) -> Vocabulary:
+    catalogue = load_catalogue()
+    entries: dict[tuple[str, ...], Entry] = {}
+    for phrase, spec in raw["things"].items():
+        name, *size = spec[:4]
+        if name not in catalogue:
+            raise ValueError(f"vocabulary: {phrase!r} names category {name!r}, which the catalogue does not have")
+        if len(size) != 3 or min(size) <= 0:
+            raise ValueError(f"vocabulary: {phrase!r} needs three positive sizes, got {size}")
+        rests = spec[4] if len(spec) > 4 else catalogue[name].rests
+        entries[tuple(words(phrase))] = Entry(name, (float(size[0]), float(size[1]), float(size[2])), rests)
+    lists = raw["not_things"]
+    not_things = frozenset(w for kind in lists.values() for w in kind)
+    for family in raw["suffixes"].values():
+        if family not in catalogue:
+            raise ValueError(f"vocabulary: suffix family {family!r} is not a catalogue category")
+    return Vocabulary(
+        entries=entries,
+        not_things=not_things,
+        places=frozenset(lists["places"]),
+        adjectives=frozenset(raw["adjectives"]),
+        size_words={k: float(v) for k, v in raw["size_words"].items()},
+        suffixes=tuple(sorted(raw["suffixes"].items(), key=lambda kv: -len(kv[0]))),
+        longest=max(len(k) for k in entries),
+        overrides=frozenset(tuple(words(p)) for p in raw.get("over_catalogue", ())),
+    )
+
+
+@lru_cache(maxsize=1)
+def load_vocabulary() -> Vocabulary:
+    """The vocabulary, read once from the package data."""
+    text = resources.files("scenewright.data").joinpath("vocabulary.json").read_text(encoding="utf-8")
+    return _validate(json.loads(text))
+
+
+def scaled(size: tuple[float, float, float], adjectives: list[str]) -> tuple[float, float, float]:
+    """``size`` scaled by the size words among ``adjectives`` ("a giant tortoise", "a tiny dragon")."""
+    factor = 1.0
+    table = load_vocabulary().size_words
+    for adjective in adjectives:
+        factor *= table.get(adjective.lower(), 1.0)
+    return (round(size[0] * factor, 4), round(size[1] * factor, 4), round(size[2] * factor, 4))

@@ -1,0 +1,77 @@
+"""The small word tables of the reader: counts, determiners, stop words, units, verbs.
+
+They are the closed classes of English the rules lean on; the open classes (things, relation
+phrases) live in data files (``catalogue.json``, ``relation_phrases.json``, ``vocabulary.json``).
+"""
+
+from __future__ import annotations
+
+
+_NUMBERS = {
+    "one": 1, "single": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7,
+    "eight": 8, "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "dozen": 12, "twenty": 20,
+}  # fmt: skip
+_VAGUE = {"few": 3, "several": 3, "some": 3, "various": 3, "many": 5, "numerous": 5, "multiple": 3, "both": 2}
+#: Nouns that count or arrange what follows "of" ("a row of lamps", "stacks of crates").
+_QUANTITY = {
+    "pair": 2, "couple": 2, "row": 3, "rows": 5, "line": 3, "set": 3, "group": 3, "cluster": 3,
+    "stack": 3, "stacks": 4, "pile": 3, "piles": 4, "bunch": 3, "handful": 3, "collection": 3,
+    "coils": 3, "coil": 1, "ring": 4, "circle": 4, "lot": 5, "lots": 5, "plenty": 5, "dozens": 12,
+    "series": 3, "trio": 3, "clusters": 5, "grove": 4, "patch": 1,
+}  # fmt: skip
+_DETERMINERS = {"a", "an", "the", "this", "that", "these", "those", "its", "their", "his", "her", "our", "my",
+                "your", "another", "each", "every", "any", "other", "one", "all"}  # fmt: skip
+_DEFINITE = {"the", "this", "that", "these", "those", "its", "their", "his", "her", "our", "my", "your"}
+_PRONOUNS = {"it", "them", "itself", "themselves", "one"}
+#: Words that end a noun phrase when reading backwards for adjectives.
+_STOP = (
+    set(_NUMBERS) | set(_VAGUE) | _DETERMINERS | _PRONOUNS
+    | {
+        "and", "or", "but", "with", "of", "in", "on", "at", "to", "from", "by", "for", "into", "onto",
+        "near", "beside", "behind", "above", "under", "below", "over", "between", "around", "is",
+        "are", "was", "were", "be", "has", "have", "had", "there", "here", "while", "where", "which",
+        "who", "that", "as", "than", "stands", "stand", "sits", "sit", "lies", "lie", "rests", "rest",
+        "hangs", "hang", "grows", "grow", "placed", "next", "across", "opposite", "facing",
+        "faces", "face", "toward", "towards", "against", "along", "inside", "outside", "up", "down",
+        "out", "off", "through", "like", "full", "filled", "covered", "packed", "made", "also", "just",
+        "very", "too", "so", "then", "it's", "each", "every", "lots", "plenty", "atop", "upon",
+        "beneath", "underneath", "close", "far", "away", "front", "back",
+        "side", "sides", "middle", "centre", "center", "corner", "edge", "end", "top", "bottom",
+    }
+)  # fmt: skip
+_UNITS = {
+    "m": 1.0, "meter": 1.0, "meters": 1.0, "metre": 1.0, "metres": 1.0, "cm": 0.01,
+    "centimeter": 0.01, "centimeters": 0.01, "centimetre": 0.01, "centimetres": 0.01, "mm": 0.001,
+    "ft": 0.3048, "foot": 0.3048, "feet": 0.3048, "inch": 0.0254, "inches": 0.0254,
+}  # fmt: skip
+_DIMENSIONS = {"wide": "x", "width": "x", "across": "x", "long": "long", "length": "long", "deep": "y",
+               "depth": "y", "tall": "z", "high": "z", "height": "z", "diameter": "d"}  # fmt: skip
+#: Containers and depictions: what follows their "of" is content or subject, not an object.
+_CONTENT_HEADS = {"vase", "bowl", "basket", "plate", "bottle", "cup", "pot", "crate", "cart", "statue",
+                  "picture_frame", "planter", "sign", "billboard", "shop_shelf", "bookshelf", "flask",
+                  "barrel", "shipping_container", "flower_bed", "cauldron", "sandbox"}  # fmt: skip
+_CONTENT_MARKERS = {("full", "of"), ("filled", "with"), ("packed", "with"), ("overflowing", "with"),
+                    ("covered", "in"), ("covered", "with"), ("stacked", "with"), ("heaped", "with"),
+                    ("stocked", "with"), ("lined", "with"), ("piled", "with"), ("overflow", "with")}  # fmt: skip
+_HANG_VERBS = {"hang", "hangs", "hanging", "hung", "hover", "hovers", "hovering", "float", "floats",
+               "floating", "suspended", "dangle", "dangles", "dangling", "fly", "flies", "flying",
+               "soar", "soars", "soaring", "glow", "glows", "drift", "drifts", "mounted", "swing",
+               "swings", "swim", "swims", "swimming"}  # fmt: skip
+
+_PLANT_SHAPES = ("tree", "pine_tree", "palm_tree", "bush", "flower_bed")
+_FINITE = {"is", "are", "was", "were", "has", "have", "had", "stand", "sit", "lie", "rest", "hang", "grow",
+           "lean", "wait", "glow", "run", "line", "rise", "stay", "remain", "tower", "loom", "float", "hover"}  # fmt: skip
+_ADVERBS = {"just", "right", "directly", "all", "both", "neatly", "slightly", "also", "then", "only", "far", "well"}
+_HOLD = {"holds", "hold", "holding", "carries", "carry", "carrying", "supports", "support", "supporting",
+         "bears", "bearing", "displays", "displaying"}  # fmt: skip
+_HOLD_PAIRS = {("loaded", "with"), ("topped", "with"), ("set", "with"), ("laid", "with"), ("decorated", "with")}
+#: Words that start a with-thing's own placing ("with a till at one end and a computer ...").
+_OWN_PLACE = {"at", "in", "along", "against", "under", "inside"}
+#: Possessives whose noun, when no object, is a part of what the pronoun names ("its door").
+_OWNER_PRONOUNS = {"its": "it", "their": "them"}
+_ORDINALS = {"first": 0, "second": 1, "third": 2, "last": -1, "left": 0, "right": -1, "other": -1, "nearest": 0}
+
+
+def _is_verb(word: str) -> bool:
+    """A finite verb, roughly: what closes a noun phrase's "with" part ("with a mirror is placed")."""
+    return word in _FINITE or (len(word) > 3 and word.endswith("s") and not word.endswith(("ss", "us", "is")))

@@ -1,0 +1,147 @@
+"""Relation phrases beyond one-to-one: between, each, at, foot/head of, formations, anchors, pronouns.
+
+Every case here was read wrong (or not at all) by the reader before the parser was split."""
+
+import pytest
+
+from scenewright.analysis.parser import parse_scene
+
+
+def rels(text: str, inferred: bool = False) -> set[tuple[str, str, str]]:
+    return {(r.source, r.relation, r.target) for r in parse_scene(text).relations if inferred or not r.inferred}
+
+
+def test_between_puts_the_centre_in_the_gap():
+    found = rels("A trash bin between the vending machine and the stall.")
+    assert {("trash_can_1", "right of", "vending_machine_1"), ("trash_can_1", "left of", "market_stall_1")} <= found
+    assert {("trash_can_1", "near", "vending_machine_1"), ("trash_can_1", "near", "market_stall_1")} <= found
+
+
+def test_between_follows_the_pairs_own_arrangement():
+    text = "A shed stands in front of the barn. A well stands between the shed and the barn."
+    found = rels(text)
+    assert {("well_1", "behind", "shed_1"), ("well_1", "in front of", "barn_1")} <= found
+    text = "The vending machine stands to the right of the stall. A bin stands between the vending machine and the stall."
+    assert {("trash_can_1", "left of", "vending_machine_1"), ("trash_can_1", "right of", "market_stall_1")} <= rels(text)
+
+
+def test_between_them_uses_two_of_the_group():
+    found = rels("Two oak trees stand by the pond, with a hammock between them.")
+    assert {("hammock_1", "right of", "tree_1"), ("hammock_1", "left of", "tree_2")} <= found
+
+
+def test_one_per_member_of_each():
+    parsed = parse_scene("Three desks stand in the office, a monitor on each desk, an office chair at each desk.")
+    categories = [o.category for o in parsed.objects]
+    assert categories.count("desk") == 3 and categories.count("monitor") == 3 and categories.count("office_chair") == 3
+    found = rels(parsed.text)
+    assert {("monitor_1", "on", "desk_1"), ("monitor_2", "on", "desk_2"), ("monitor_3", "on", "desk_3")} <= found
+    for i in (1, 2, 3):
+        assert {(f"office_chair_{i}", "in front of", f"desk_{i}"), (f"office_chair_{i}", "face to", f"desk_{i}")} <= found
+
+
+def test_a_comma_list_is_separate_things_and_an_and_list_shares_the_place():
+    assert rels("A reading desk, an armchair, a globe on the desk.") == {("globe_1", "on", "desk_1")}
+    shared = rels("A desk stands by the wall. A lamp, a laptop and a mug on the desk.")
+    assert {("table_lamp_1", "on", "desk_1"), ("laptop_1", "on", "desk_1"), ("cup_1", "on", "desk_1")} <= shared
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A toy chest at the foot of the bed.", ("treasure_chest_1", "in front of", "bed_1")),
+        ("A floor lamp stands at the head of the bed.", ("floor_lamp_1", "behind", "bed_1")),
+        ("A chair at the head of the dining table.", ("chair_1", "left of", "table_1")),
+        ("A lantern hanging from the shelf.", ("lantern_1", "above", "bookshelf_1")),
+        ("A lantern hanging from the oak tree.", ("lantern_1", "near", "tree_1")),
+        ("A bicycle leaning on the fence.", ("bicycle_1", "side of", "fence_1")),
+        ("Benches run along the fence.", ("bench_1", "side of", "fence_1")),
+        ("A stool at the counter.", ("stool_1", "in front of", "counter_1")),
+        ("A cat sits at the well.", ("cat_1", "near", "well_1")),
+        ("A desk stands by the window. Its chair is pushed under it.", ("chair_1", "in front of", "desk_1")),
+        ("A vase in the middle of the table.", ("vase_1", "on", "table_1")),
+    ],
+)
+def test_phrase_families(text, expected):
+    assert expected in rels(text)
+
+
+def test_rows_and_stacks_chain_the_group():
+    row = parse_scene("Three market stalls stand in a row.")
+    assert {o.formation for o in row.objects} == {"row"} and not row.relations  # a row states no side
+    found = rels("Three crates are stacked beside the door of the barn.")
+    assert {("crate_2", "on", "crate_1"), ("crate_3", "on", "crate_2")} <= found
+    # a shelf stacked with books holds them; it is no stack
+    assert not any(r[1] == "on" and r[0].startswith("bookshelf") for r in rels("A bookshelf stacked with books."))
+
+
+def test_a_circle_is_a_formation_for_the_arranger():
+    parsed = parse_scene("Six stools stand in a circle.")
+    assert {o.formation for o in parsed.objects} == {"circle"}
+
+
+def test_parts_of_the_room_are_anchors():
+    parsed = parse_scene(
+        "A sofa against the wall, a rug in the middle of the room, a plant in the corner. "
+        "Bookshelves line the back wall. A desk stands at the back."
+    )
+    anchors = {o.category: o.anchor for o in parsed.objects}
+    assert anchors == {"sofa": "wall", "rug": "centre", "potted_plant": "corner", "bookshelf": "wall", "desk": "back"}
+
+
+def test_it_for_a_floor_thing_is_not_a_tabletop_thing():
+    text = "A nightstand beside the bed with a small lamp on it. A rug lies in front of it."
+    found = rels(text)
+    assert ("table_lamp_1", "on", "nightstand_1") in found
+    assert not any(r[0] == "rug_1" and r[2] == "table_lamp_1" for r in found)
+
+
+def test_one_of_them_names_one_member():
+    found = rels("Two armchairs face the fireplace, and a cat sleeps on one of them.")
+    assert ("cat_1", "on", "armchair_1") in found
+
+
+def test_between_a_facing_pair_runs_front_to_back():
+    found = rels("A sofa faces the TV stand. A coffee table stands between the sofa and the TV stand.")
+    assert {("coffee_table_1", "behind", "sofa_1"), ("coffee_table_1", "in front of", "tv_stand_1")} <= found
+    found = rels("Two sofas face each other, with a coffee table between them.")
+    assert {("coffee_table_1", "behind", "sofa_1"), ("coffee_table_1", "in front of", "sofa_2")} <= found
+
+
+def test_a_clause_opened_by_and_keeps_its_own_placing():
+    parsed = parse_scene("Two robots sell orbs from a cart, and three aliens wait in a line.")
+    formations = {o.name: o.formation for o in parsed.objects}
+    assert formations["alien"] == "row" and formations["robot"] is None and formations["orb"] is None
+
+
+def test_with_after_a_persons_target_belongs_to_the_target():
+    found = rels("A baker stands behind the counter with a tray of bread on it.")
+    assert ("plate_1", "on", "counter_1") in found and ("baker_1", "behind", "counter_1") in found
+
+
+def test_what_a_person_holds_is_beside_them():
+    assert rels("A brave knight stands at the entrance, holding a shield.") == {("shield_1", "side of", "knight_1")}
+
+
+def test_between_two_rows_of_a_plant():
+    parsed = parse_scene("A scarecrow stands between two rows of tulips.")
+    assert [o.category for o in parsed.objects].count("flower_bed") == 2
+    found = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert {("scarecrow_1", "right of", "flower_bed_1"), ("scarecrow_1", "left of", "flower_bed_2")} <= found
+
+
+def test_contents_do_not_close_a_with_part():
+    assert rels("A cart with a bowl of apples on it.") == {("bowl_1", "on", "cart_1")}
+    assert rels("A cart with a tray of bottles on it.") == {("plate_1", "on", "cart_1")}
+
+
+def test_its_part_is_its_owner():
+    found = rels("A market stall sells fruit, with a pile of pumpkins on its counter.")
+    assert all(t == "market_stall_1" for _, _, t in found) and found
+
+
+def test_each_one_is_one_per_member():
+    parsed = parse_scene("Three desks stand by the wall; there is an office chair in front of each one.")
+    assert [o.category for o in parsed.objects].count("office_chair") == 3
+    found = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert {("office_chair_1", "in front of", "desk_1"), ("office_chair_3", "in front of", "desk_3")} <= found

@@ -1,0 +1,41 @@
+"""`on` only onto hosts that can hold the thing; implausible supports are repaired and recorded."""
+
+import pytest
+
+from scenewright.analysis.catalogue import load_catalogue
+from scenewright.analysis.parser import ParsedObject, ParsedRelation, parse_scene
+from scenewright.analysis.parser.support import can_hold, repair_supports
+
+
+def obj(id_: str, category: str, size, rests=None) -> ParsedObject:
+    return ParsedObject(id_, category, category, category, size, 0, rests=rests)
+
+
+@pytest.mark.parametrize(
+    "thing, host, ok",
+    [
+        (obj("lamp", "table_lamp", (0.3, 0.3, 0.5)), obj("desk", "desk", (1.4, 0.7, 0.75)), True),
+        (obj("statue", "statue", (0.8, 0.8, 2.0)), obj("plinth", "pedestal", (0.6, 0.6, 1.0)), True),
+        (obj("horse", "horse", (0.6, 2.2, 1.7)), obj("rug", "rug", (2.4, 1.7, 0.02)), True),
+        (obj("sofa", "sofa", (2.1, 0.9, 0.85)), obj("desk", "desk", (1.4, 0.7, 0.75)), False),
+        (obj("armchair", "armchair", (0.85, 0.85, 0.95)), obj("desk", "desk", (1.4, 0.7, 0.75)), False),
+        (obj("skeleton", "dinosaur_skeleton", (4.5, 1.5, 3.0)), obj("barrel", "barrel", (0.6, 0.6, 0.9)), False),
+        (obj("cup", "cup", (0.1, 0.1, 0.1)), obj("lamp", "pendant_lamp", (0.5, 0.5, 0.5), "hanging"), False),
+    ],
+)
+def test_can_hold(thing, host, ok):
+    assert can_hold(host, thing, load_catalogue()) is ok
+
+
+def test_repair_turns_on_into_side_of_and_says_why():
+    sofa, desk = obj("sofa_1", "sofa", (2.1, 0.9, 0.85)), obj("desk_1", "desk", (1.4, 0.7, 0.75))
+    relations, notes = repair_supports([sofa, desk], [ParsedRelation("sofa_1", "on", "desk_1")], load_catalogue())
+    assert relations == [ParsedRelation("sofa_1", "side of", "desk_1")]
+    assert notes and "desk_1 cannot hold" in notes[0]
+
+
+def test_the_parse_records_its_repairs():
+    parsed = parse_scene("A desk stands by the window, and a sofa sits on the desk. A lamp sits on the desk.")
+    triples = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert ("sofa_1", "side of", "desk_1") in triples and ("table_lamp_1", "on", "desk_1") in triples
+    assert len(parsed.repairs) == 1 and parsed.repairs[0].startswith("sofa_1 on desk_1")
