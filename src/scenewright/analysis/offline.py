@@ -1,7 +1,8 @@
 """The offline vision-language backend: the catalogue parser answering the model's questions.
 
 No network, no weights: objects, sizes and first poses come from :func:`parse_scene` and
-:func:`initial_objects`, constraints from the relations the parse read, and the feedback loop
+:func:`compose`, constraints from the relations the parse read (with those the composition
+added, such as a sofa standing on the rug put under it), and the feedback loop
 relaxes what the solver could not satisfy. Edits are planned by the rule-based edit parser;
 judging renders needs a real vision model and says so.
 """
@@ -11,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
-from scenewright.analysis.arrange import initial_objects
+from scenewright.analysis.arrange import Composition, compose
 from scenewright.analysis.parser import ParsedScene, parse_scene
 from scenewright.errors import BackendError, InputError
 from scenewright.scene import Constraint, LayoutReport, SceneObject
@@ -39,6 +40,7 @@ class OfflineVLM:
 
     def __init__(self) -> None:
         self._parses: dict[str, ParsedScene] = {}
+        self._compositions: dict[str, Composition] = {}
 
     @classmethod
     def from_spec(cls, argument: str, settings: Settings) -> OfflineVLM:
@@ -55,11 +57,18 @@ class OfflineVLM:
             self._parses[key] = parse_scene(key)
         return self._parses[key]
 
-    def describe_objects(self, text: str, style: str, reference: bytes | None) -> list[SceneObject]:
+    def composition(self, text: str) -> Composition:
+        """The designed first layout of ``text``, made once per text."""
         parsed = self.parse(text)
-        if not parsed.objects:
+        key = parsed.text
+        if key not in self._compositions:
+            self._compositions[key] = compose(parsed)
+        return self._compositions[key]
+
+    def describe_objects(self, text: str, style: str, reference: bytes | None) -> list[SceneObject]:
+        if not self.parse(text).objects:
             raise InputError(NO_OBJECT)
-        return initial_objects(parsed)
+        return [o.model_copy(deep=True) for o in self.composition(text).objects]
 
     def write_constraints(
         self, text: str, objects: Sequence[SceneObject], reference: bytes | None
@@ -67,7 +76,7 @@ class OfflineVLM:
         parsed = self.parse(text)
         ids = _match_ids(parsed, objects)
         out: list[Constraint] = []
-        for r in parsed.relations:
+        for r in self.composition(text).relations:
             if r.source in ids and r.target in ids:
                 out.append(Constraint(relation=r.relation, source=ids[r.source], target=ids[r.target]))
         return out
