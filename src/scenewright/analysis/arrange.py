@@ -25,8 +25,7 @@ from scenewright.analysis.composition import edges, groups, outdoor, packing, re
 from scenewright.analysis.composition.lines import unline
 from scenewright.analysis.composition.units import Layout, Unit
 from scenewright.analysis.parser import ParsedRelation, ParsedScene
-from scenewright.layout import relations as rel
-from scenewright.scene import SceneObject, Vec3
+from scenewright.scene import SceneObject
 
 
 @dataclass
@@ -65,8 +64,8 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
     edges.along_edges(layout, storage)
     outdoor.park(layout, vehicles)
     outdoor.scatter(layout, natural, random.Random(seed))
-    unline(layout, lambda ids: _relations_hold(layout, ids))
-    return Composition([_scene_object(layout, o.id) for o in parsed.objects], layout.relations)
+    unline(layout, layout.relations_hold)
+    return Composition([layout.scene_object(o.id) for o in parsed.objects], layout.relations)
 
 
 def initial_objects(parsed: ParsedScene, seed: int = 0) -> list[SceneObject]:
@@ -140,26 +139,3 @@ def _rests_on(root: str, ids: list[str], relations: list[ParsedRelation]) -> boo
             seen.add(i)
             i = support[i]
     return all(r.relation in ("on", "above") for r in relations)
-
-
-def _scene_object(layout: Layout, object_id: str) -> SceneObject:
-    obj, p = layout.by_id[object_id], layout.placed[object_id]
-    return SceneObject(
-        id=obj.id,
-        name=obj.name,
-        category=obj.category,
-        position=Vec3(x=round(p.x, 4), y=round(p.y, 4), z=round(p.z, 4)),
-        rotation=Vec3(z=round(p.yaw, 3)),
-        size=Vec3.of(obj.size),
-        visual_description=obj.description,
-    )
-
-
-def _relations_hold(layout: Layout, ids: set[str]) -> bool:
-    """Whether every relation touching ``ids`` holds at the current poses."""
-    touched = [r for r in layout.relations if r.source in ids or r.target in ids]
-    if not touched:
-        return True
-    need = {i for r in touched for i in (r.source, r.target)}
-    objects = {i: _scene_object(layout, i) for i in need}
-    return all(rel.check(r.relation, objects[r.source], objects[r.target]) for r in touched)

@@ -196,10 +196,12 @@ def lamps(layout: Layout) -> None:
 
 
 def rugs(layout: Layout) -> None:
-    """A rug under the group it belongs to — the lounge, the bed, the dining table — and the
-    group's things standing on it (an inferred ``on``, so the solver keeps them there)."""
+    """A rug under the group it belongs to: centred under the lounge's coffee table or the
+    dining table, at the foot of a bed. What stands wholly on it gets an inferred ``on`` (so
+    the solver keeps it there); what would stand half on it steps off its edge, unless that
+    breaks a relation the text stated (then the rug is left to lie on its own)."""
     free = layout.free_units(roles.RUGS)
-    hosts = layout.hosts(roles.COFFEE_TABLES) + layout.hosts(roles.BEDS) + layout.hosts(roles.TABLES)
+    hosts = layout.hosts(roles.COFFEE_TABLES) + layout.hosts(roles.TABLES) + layout.hosts(roles.BEDS)
     used: set[int] = set()
     for host in hosts:
         if not free:
@@ -208,40 +210,59 @@ def rugs(layout: Layout) -> None:
         if id(unit) in used or any(layout.kind(i) in roles.RUGS for i in unit.ids):
             continue
         h = layout.placed[host]
-        rug = free.pop(0)
-        ly = -h.size[1] * 0.2 if layout.kind(host) in roles.BEDS else 0.0
+        rug = free[0]
+        r = _size(layout, rug)
+        ly = -(h.size[1] + r[1]) / 2 if layout.kind(host) in roles.BEDS else 0.0
         x, y = h.local_to_world(0.0, ly)
         layout.turn(rug, h.yaw)
-        r = layout.placed[rug.root]
-        layout.move(rug, x - r.x, y - r.y)
-        unit.ids.extend(rug.ids)
-        rug.merged = True
-        layout.unit_of[rug.root] = unit
-        used.add(id(unit))
-        _stand_on(layout, unit, rug.root)
+        p = layout.placed[rug.root]
+        layout.move(rug, x - p.x, y - p.y)
+        if _lay(layout, unit, rug.root):
+            free.pop(0)
+            unit.ids.extend(rug.ids)
+            rug.merged = True
+            layout.unit_of[rug.root] = unit
+            used.add(id(unit))
 
 
-def _stand_on(layout: Layout, unit: Unit, rug: str) -> None:
+def _lay(layout: Layout, unit: Unit, rug: str) -> bool:
+    """Stand the unit's things on the rug or off its edge; False (nothing changed) if a stated
+    relation would break."""
     r = layout.placed[rug]
     supported = {x.source for x in layout.relations if x.relation in ("on", "above")}
-    lift = {i for i in unit.ids if i != rug and i not in supported and layout.on_ground(i)}
-    lift = {i for i in lift if _overlap(layout.placed[i], r)}
-    for i in sorted(lift, key=unit.ids.index):
+    standing = [i for i in unit.ids if i not in supported and layout.on_ground(i) and layout.by_id[i].size[2] >= 0.1]
+    inside = [i for i in standing if _within(layout.placed[i], r)]
+    moved: dict[str, tuple[float, float]] = {}
+    for i in standing:
+        p = layout.placed[i]
+        if i in inside or not p.plan_overlaps(r, margin=-1e-6):
+            continue
+        # off the nearest edge: along the axis it has least far to go
+        exits = {
+            (1.0, 0.0): r.x + r.w / 2 - (p.x - p.w / 2), (-1.0, 0.0): p.x + p.w / 2 - (r.x - r.w / 2),
+            (0.0, 1.0): r.y + r.d / 2 - (p.y - p.d / 2), (0.0, -1.0): p.y + p.d / 2 - (r.y - r.d / 2),
+        }  # fmt: skip
+        (ux, uy), far = min(exits.items(), key=lambda kv: kv[1])
+        for j in layout.with_load(i):
+            layout.placed[j].x += ux * (far + 0.02)
+            layout.placed[j].y += uy * (far + 0.02)
+            moved[j] = (ux * (far + 0.02), uy * (far + 0.02))
+    others = [layout.placed[j] for j in standing]
+    crowded = any(layout.placed[i].overlaps(q) for i in moved for q in others if q is not layout.placed[i])
+    if crowded or not layout.relations_hold(set(moved)):
+        for j, (dx, dy) in moved.items():
+            layout.placed[j].x -= dx
+            layout.placed[j].y -= dy
+        return False
+    for i in inside:
         layout.relations.append(ParsedRelation(source=i, relation="on", target=rug, inferred=True))
-    carried = set(lift)
-    changed = True
-    while changed:  # what rests on a lifted thing rises with it
-        changed = False
-        for x in layout.relations:
-            if x.relation in ("on", "above") and x.target in carried and x.source not in carried and x.target != rug:
-                carried.add(x.source)
-                changed = True
-    for i in carried:
+    for i in {j for i in inside for j in layout.with_load(i)}:
         layout.placed[i].z += r.h
+    return True
 
 
-def _overlap(a: Footprint, b: Footprint) -> bool:
-    return a.plan_overlaps(b, margin=-0.05)
+def _within(a: Footprint, b: Footprint) -> bool:
+    return abs(a.x - b.x) + a.w / 2 <= b.w / 2 + 1e-6 and abs(a.y - b.y) + a.d / 2 <= b.d / 2 + 1e-6
 
 
 RULES = (bed, desks, dining, lounge, lamps, rugs)

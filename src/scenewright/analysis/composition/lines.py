@@ -26,7 +26,7 @@ def unline(layout: Layout, holds: Callable[[set[str]], bool]) -> None:
         return
     sets = [list(u.ids) for u in layout.top_units()]
     if len(sets) < 3:  # too few units to break the line with: single objects, with their load
-        sets += [_with_load(layout, i) for i in ground if layout.by_id[i].size[2] >= 0.1]
+        sets += [layout.with_load(i) for i in ground if layout.by_id[i].size[2] >= 0.1]
     for _ in range(4 * len(ground)):
         points = np.array([(layout.placed[i].x, layout.placed[i].y) for i in ground])
         now = spread(points)
@@ -52,14 +52,6 @@ def unline(layout: Layout, holds: Callable[[set[str]], bool]) -> None:
         if best is None:
             return
         _shift(layout, best[1], best[2], best[3])
-
-
-def _with_load(layout: Layout, object_id: str) -> list[str]:
-    """The object and everything resting on it, however high the stack."""
-    out = [object_id]
-    for i in out:
-        out += [r.source for r in layout.relations if r.relation in ("on", "above") and r.target == i and r.source not in out]
-    return out
 
 
 def _shift(layout: Layout, ids: list[str], dx: float, dy: float) -> None:

@@ -15,6 +15,8 @@ from dataclasses import dataclass, field
 from scenewright.analysis.composition import roles
 from scenewright.analysis.composition.footprint import Footprint, bbox, clear
 from scenewright.analysis.parser import ParsedObject, ParsedRelation
+from scenewright.layout import relations as rel
+from scenewright.scene import SceneObject, Vec3
 
 
 @dataclass
@@ -72,6 +74,32 @@ class Layout:
     def hosts(self, kinds: frozenset[str]) -> list[str]:
         """Objects of ``kinds`` standing on the ground, in text order."""
         return [o.id for o in self.objects if roles.kind(o.category) in kinds and self.on_ground(o.id)]
+
+    def scene_object(self, object_id: str) -> SceneObject:
+        obj, p = self.by_id[object_id], self.placed[object_id]
+        return SceneObject(
+            id=obj.id,
+            name=obj.name,
+            category=obj.category,
+            position=Vec3(x=round(p.x, 4), y=round(p.y, 4), z=round(p.z, 4)),
+            rotation=Vec3(z=round(p.yaw, 3)),
+            size=Vec3.of(obj.size),
+            visual_description=obj.description,
+        )
+
+    def relations_hold(self, ids: set[str]) -> bool:
+        """Whether every relation touching ``ids`` holds at the current poses."""
+        touched = [r for r in self.relations if r.source in ids or r.target in ids]
+        need = {i for r in touched for i in (r.source, r.target)}
+        objects = {i: self.scene_object(i) for i in need}
+        return all(rel.check(r.relation, objects[r.source], objects[r.target]) for r in touched)
+
+    def with_load(self, object_id: str) -> list[str]:
+        """The object and everything resting on it, however high the stack."""
+        out = [object_id]
+        for i in out:
+            out += [r.source for r in self.relations if r.relation in ("on", "above") and r.target == i and r.source not in out]
+        return out
 
     def box(self, unit: Unit) -> tuple[float, float, float, float]:
         return bbox(self.placed[i] for i in unit.ids)
