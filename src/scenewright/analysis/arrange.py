@@ -38,7 +38,7 @@ class Composition:
 
 
 #: Rules that join units into groups, in order: a host's own partners before shared ones.
-GROUP_RULES = (outdoor.square, outdoor.street, *groups.RULES)
+GROUP_RULES = (outdoor.square, outdoor.street, outdoor.stock, *groups.RULES)
 
 
 def compose(parsed: ParsedScene, seed: int = 0) -> Composition:

@@ -3,7 +3,8 @@
 Bookshelves, wardrobes, cabinets, fridges and the like stand where walls would be: along
 the back of what is set out, then down its left and right sides, fronts turned inward —
 never in the open front, which is the viewer's. Two or fewer go side by side at the back;
-more share the back with the sides (a U), so storage alone never forms a line.
+more share the back with the sides (a U), so storage alone never forms a line. Where a bed's
+headboard takes the back, the sides come first.
 """
 
 from __future__ import annotations

@@ -123,13 +123,19 @@ def lounge(layout: Layout) -> None:
                 _slot(layout, host, f, h.size[0] / 2 + 1.4 + _size(layout, f)[1] / 2, 0.0, -90.0)
             else:
                 slots.append((1.0, 0.0, -90.0))
-            slots = [(-1.0, 0.0, 90.0), (0.0, 1.0, 0.0), (0.0, -1.0, 180.0), *slots]
-            for ux, uy, yaw in slots:
+            # the first seat (the sofa) faces the focal object across the table; the next two
+            # sit side by side behind it, facing the viewer; the front stays open while it can
+            pair = 2 if len(seats) >= 3 else 1
+            slots = [(-1.0, 0.0, 90.0), *[(0.0, 1.0, 0.0, k, pair) for k in range(pair)], (0.0, -1.0, 180.0), *slots]
+            for ux, uy, yaw, *place in slots:
                 if not seats:
                     break
                 seat = seats.pop(0)
-                reach = (h.size[0] if ux else h.size[1]) / 2 + LOUNGE_GAP + _size(layout, seat)[1] / 2
-                _slot(layout, host, seat, ux * reach, uy * reach, yaw)
+                size = _size(layout, seat)
+                reach = (h.size[0] if ux else h.size[1]) / 2 + LOUNGE_GAP + size[1] / 2
+                k, n = place or (0, 1)
+                along = (k - (n - 1) / 2) * (size[0] + 0.15)
+                _slot(layout, host, seat, ux * reach + along, uy * reach, yaw)
             layout.unit_of[host].group = layout.unit_of[host].group or "lounge"
         return
     screens = layout.hosts(roles.FOCAL)

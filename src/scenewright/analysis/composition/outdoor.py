@@ -1,5 +1,5 @@
-"""Outdoor priors: stalls around a square or in two rows along a street, vehicles parked
-along an edge like a road, natural things scattered with Poisson-disc spacing — and the
+"""Outdoor priors: stalls around a square or in two rows along a street, their barrels and
+crates beside them, vehicles parked along an edge like a road, natural things scattered with Poisson-disc spacing — and the
 ways in kept free of all of them.
 """
 
@@ -62,6 +62,36 @@ def street(layout: Layout) -> None:
         y = layout.placed[first.root].y + pitch * (k // 2)
         layout.attach(unit, first, x, y, 90.0 if side < 0 else -90.0, (0.0, 1.0))
     first.group = "street"
+
+
+def stock(layout: Layout) -> None:
+    """Barrels, crates and the like beside the stalls, shared out one stall at a time, at the
+    stalls' sides so their fronts stay open."""
+    props = layout.free_units(roles.STALL_PROPS)
+    stalls = layout.hosts(roles.STALLS)
+    if not props or not stalls:
+        return
+    used = {s: 0 for s in stalls}
+    while props:
+        progress = False
+        for host in stalls:
+            if not props:
+                break
+            h = layout.placed[host]
+            k = used[host]
+            used[host] += 1
+            if k >= 4:
+                continue
+            size = layout.by_id[props[0].root].size
+            side = 1 if k % 2 == 0 else -1
+            lx = side * (h.size[0] / 2 + 0.15 + size[0] / 2)
+            ly = -h.size[1] / 2 + size[1] / 2 + (k // 2) * (size[1] + 0.1)
+            x, y = h.local_to_world(lx, ly)
+            if layout.attach(props[0], layout.unit_of[host], x, y, h.yaw, (x - h.x, y - h.y)):
+                props.pop(0)
+                progress = True
+        if not progress:
+            return
 
 
 def park(layout: Layout, units: list[Unit]) -> None:

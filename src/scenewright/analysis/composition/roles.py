@@ -47,6 +47,8 @@ NATURAL = frozenset({
 })  # fmt: skip
 #: Selling places, set out in rows or around a square.
 STALLS = frozenset({"market_stall", "kiosk", "food_truck"})
+#: Goods and stock a stall keeps beside it.
+STALL_PROPS = frozenset({"barrel", "crate", "hay_bale", "basket", "cooler", "pallet"})
 #: Parked along an edge of the scene, like a road.
 VEHICLES = frozenset({"car", "truck", "bus", "motorcycle", "tractor", "bicycle", "cart", "spaceship"})
 #: The middle of an outdoor square.
