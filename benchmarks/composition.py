@@ -56,12 +56,12 @@ def main() -> None:
     with tempfile.TemporaryDirectory(prefix="scenewright-composition-") as tmp:
         for folder, prompt in prompts:
             start = time.perf_counter()
-            scene = generate(prompt.text, Path(tmp) / folder / prompt.id, backends=backends, settings=settings, render=False)
+            out = Path(tmp) / folder / prompt.id
+            scene = generate(prompt.text, out, backends=backends, settings=settings, render=False)
             seconds = time.perf_counter() - start
             initial = [
-                o.model_copy(update={"position": scene.initial[o.id].position, "rotation": scene.initial[o.id].rotation})
-                if o.id in scene.initial else o
-                for o in scene.objects
+                o.model_copy(update={"position": p.position, "rotation": p.rotation}) if p else o
+                for o, p in ((o, scene.initial.get(o.id)) for o in scene.objects)
             ]
             by_id = {o.id: o for o in scene.objects}
             stated = [r for r in parse_scene(prompt.text).relations if not r.inferred]

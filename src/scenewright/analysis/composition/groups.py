@@ -196,7 +196,8 @@ def lamps(layout: Layout) -> None:
         h = layout.placed[host]
         lamp = _size(layout, lights[0])
         for side in (1, -1):
-            if _slot(layout, host, lights[0], side * (h.size[0] / 2 + 0.15 + lamp[0] / 2), (h.size[1] - lamp[1]) / 2, 0.0):
+            lx, ly = side * (h.size[0] / 2 + 0.15 + lamp[0] / 2), (h.size[1] - lamp[1]) / 2
+            if _slot(layout, host, lights[0], lx, ly, 0.0):
                 lights.pop(0)
                 break
 

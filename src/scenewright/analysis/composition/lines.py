@@ -64,8 +64,8 @@ def _try(layout: Layout, ids: list[str], dx: float, dy: float, holds) -> bool:
     """Shift ``ids``; keep the shift (True) only if clear and every relation holds."""
     _shift(layout, ids, dx, dy)
     mine = set(ids)
-    others = [layout.placed[i] for i in layout.placed if i not in mine and layout.on_ground(i) and layout.by_id[i].size[2] >= 0.1]
-    ok = all(clear(layout.placed[i], others) for i in ids if layout.on_ground(i) and layout.by_id[i].size[2] >= 0.1)
+    others = layout.ground_prints(i for i in layout.placed if i not in mine)
+    ok = all(clear(p, others) for p in layout.ground_prints(ids))
     if ok and not holds(mine):
         ok = False
     if not ok:

@@ -58,7 +58,8 @@ def street(layout: Layout) -> None:
     for k, unit in enumerate(stalls[1:], start=1):
         side = -1 if k % 2 == 0 else 1
         size = layout.by_id[unit.root].size
-        x = layout.placed[first.root].x + (0.0 if side < 0 else STREET + (size[1] + layout.by_id[first.root].size[1]) / 2)
+        across = STREET + (size[1] + layout.by_id[first.root].size[1]) / 2
+        x = layout.placed[first.root].x + (0.0 if side < 0 else across)
         y = layout.placed[first.root].y + pitch * (k // 2)
         layout.attach(unit, first, x, y, 90.0 if side < 0 else -90.0, (0.0, 1.0))
     first.group = "street"
@@ -167,7 +168,7 @@ def _dart(layout, unit, reach, done, region, core, rng):
             continue
         if any(math.hypot(cx - x, cy - y) < r + reach + SCATTER_GAP for x, y, r in done):
             continue
-        if any(fx0 - reach < cx < fx1 + reach and fy0 - reach < cy < fy1 + reach for fx0, fy0, fx1, fy1 in layout.keep_free):
+        if any(x0 - reach < cx < x1 + reach and y0 - reach < cy < y1 + reach for x0, y0, x1, y1 in layout.keep_free):
             continue
         if core is not None and core[0] - reach < cx < core[2] + reach and core[1] - reach < cy < core[3] + reach:
             continue

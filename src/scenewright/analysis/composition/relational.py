@@ -15,7 +15,7 @@ from collections import Counter, defaultdict
 from collections.abc import Callable
 
 from scenewright.analysis.composition import roles
-from scenewright.analysis.composition.footprint import GAP, Footprint, normal_yaw, push
+from scenewright.analysis.composition.footprint import GAP, Footprint, clear, push
 from scenewright.analysis.parser import ParsedObject, ParsedRelation
 from scenewright.geometry import front_direction, yaw_towards
 
@@ -147,7 +147,8 @@ def place_related(
             roles.DESKS | roles.TABLES | roles.COFFEE_TABLES
         )
         if rel == "side of":
-            rel = "left of" if side_use[(anchored.target, "left of")] <= side_use[(anchored.target, "right of")] else "right of"
+            left, right = side_use[(anchored.target, "left of")], side_use[(anchored.target, "right of")]
+            rel = "left of" if left <= right else "right of"
         if rel == "near":
             order = SEAT_NEAR_SIDES if seat_at_table else NEAR_SIDES
             rel = min(order, key=lambda s: (side_use[(anchored.target, s)], order.index(s)))
@@ -165,13 +166,18 @@ def place_related(
 
     for obj in objects:
         place(obj)
-    for obj in objects:  # turn what faces something toward it, now that both stand
+    resting = {frozenset((r.source, r.target)) for r in relations if r.relation in ("on", "above")}
+    for obj in objects:  # turn what faces something toward it, now that both stand, if it stays clear
         target = facing(obj, outgoing[obj.id], anchor(outgoing[obj.id], flat))
         p = placed[obj.id]
         if target is not None and target in placed and target != obj.id:
             q = placed[target]
             if (q.x, q.y) != (p.x, p.y):
+                before = p.yaw
                 p.turn(round(yaw_towards((p.x, p.y), (q.x, q.y)), 3))
+                others = [v for k, v in placed.items() if k != obj.id and frozenset((k, obj.id)) not in resting]
+                if not clear(p, [v for v in others if v.h >= 0.1]):
+                    p.turn(before)  # the solver turns it exactly where it finds room
     return placed
 
 

@@ -70,14 +70,3 @@ def kind(category: str) -> str:
     if category in catalogue:
         return category
     return _SHAPE_FALLBACK.get(category, category)
-
-
-def rests(category: str) -> str:
-    """How the category rests (ground, surface, hanging); unknown ones stand on the ground."""
-    found = load_catalogue().get(category)
-    return found.rests if found is not None else "ground"
-
-
-def is_outdoor(category: str) -> bool:
-    found = load_catalogue().get(category)
-    return found is not None and found.outdoor and not found.indoor

@@ -98,7 +98,9 @@ class Layout:
         """The object and everything resting on it, however high the stack."""
         out = [object_id]
         for i in out:
-            out += [r.source for r in self.relations if r.relation in ("on", "above") and r.target == i and r.source not in out]
+            out += [
+                r.source for r in self.relations if r.relation in ("on", "above") and r.target == i and r.source not in out
+            ]
         return out
 
     def box(self, unit: Unit) -> tuple[float, float, float, float]:
