@@ -173,3 +173,10 @@ def test_first_poses_do_not_overlap_on_the_ground():
     for i, a in enumerate(objects):
         for b in objects[i + 1 :]:
             assert not _overlap(a, b), (a.id, b.id)
+
+
+def test_constraints_keep_what_the_composition_added(vlm):
+    text = "A living room with a sofa, a coffee table and a rug."
+    objects = vlm.describe_objects(text, "realistic", None)
+    constraints = {(c.source, c.relation, c.target) for c in vlm.write_constraints(text, objects, None)}
+    assert ("coffee_table_1", "on", "rug_1") in constraints  # the rug was laid under the coffee table
