@@ -20,38 +20,46 @@ STEPS = (0.25, 0.4, 0.6, 0.9, 1.3)
 
 def unline(layout: Layout, holds: Callable[[set[str]], bool]) -> None:
     """Move things off the line; ``holds(ids)`` says whether the relations of the objects
-    ``ids`` still hold where they now stand."""
+    ``ids`` still hold where they now stand.
+
+    Each pass walks the movable sets along the line and steps them to alternate sides (a
+    zigzag), keeping each step that widens the spread, until the spread reaches the target.
+    """
     ground = [i for i in layout.placed if layout.on_ground(i)]
     if len(ground) < 3:
         return
     sets = [list(u.ids) for u in layout.top_units()]
     if len(sets) < 3:  # too few units to break the line with: single objects, with their load
         sets += [layout.with_load(i) for i in ground if layout.by_id[i].size[2] >= 0.1]
-    for _ in range(4 * len(ground)):
-        points = np.array([(layout.placed[i].x, layout.placed[i].y) for i in ground])
-        now = spread(points)
+
+    def points() -> np.ndarray:
+        return np.array([(layout.placed[i].x, layout.placed[i].y) for i in ground])
+
+    for _ in range(6):
+        now = spread(points())
         if now >= TARGET:
             return
-        axis = major_axis(points)
+        axis = major_axis(points())
         normal = np.array([-axis[1], axis[0]])
-        scale = float(np.std(points @ axis))
-        best = None
-        for step in STEPS:
-            for ids in sets:
-                for sign in (1.0, -1.0):
-                    dx, dy = normal * sign * step * max(scale, 0.5)
-                    if not _try(layout, ids, dx, dy, holds):
-                        continue
-                    moved = np.array([(layout.placed[i].x, layout.placed[i].y) for i in ground])
-                    score = spread(moved)
-                    _shift(layout, ids, -dx, -dy)
-                    if score > now + 1e-3 and (best is None or score > best[0]):
-                        best = (score, ids, dx, dy)
-            if best is not None:
-                break
-        if best is None:
+        scale = max(float(np.std(points() @ axis)), 0.5)
+        centre = {k: np.mean([(layout.placed[i].x, layout.placed[i].y) for i in ids], axis=0) @ axis
+                  for k, ids in enumerate(sets)}  # fmt: skip
+        improved = False
+        for rank, k in enumerate(sorted(centre, key=centre.get)):
+            side = 1.0 if rank % 2 == 0 else -1.0
+            for step, sign in ((step, sign) for step in STEPS for sign in (side, -side)):
+                dx, dy = normal * sign * step * scale
+                if not _try(layout, sets[k], dx, dy, holds):
+                    continue
+                score = spread(points())
+                if score > now + 1e-3:
+                    now, improved = score, True
+                    break
+                _shift(layout, sets[k], -dx, -dy)
+            if now >= TARGET:
+                return
+        if not improved:
             return
-        _shift(layout, best[1], best[2], best[3])
 
 
 def _shift(layout: Layout, ids: list[str], dx: float, dy: float) -> None:
