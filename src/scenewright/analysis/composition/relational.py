@@ -11,6 +11,7 @@ front of it, a nightstand beside a bed stands at the bed's head.
 
 from __future__ import annotations
 
+import math
 from collections import Counter, defaultdict
 from collections.abc import Callable
 
@@ -18,6 +19,8 @@ from scenewright.analysis.composition import roles
 from scenewright.analysis.composition.footprint import GAP, Footprint, clear, push
 from scenewright.analysis.parser import ParsedObject, ParsedRelation
 from scenewright.geometry import front_direction, yaw_towards
+from scenewright.layout import relations as rel
+from scenewright.scene import SceneObject, Vec3
 
 #: Which relation decides where an object goes, strongest first.
 ANCHOR_ORDER = ("on", "above", "left of", "right of", "in front of", "behind", "side of", "near", "far")
@@ -167,18 +170,42 @@ def place_related(
     for obj in objects:
         place(obj)
     resting = {frozenset((r.source, r.target)) for r in relations if r.relation in ("on", "above")}
-    for obj in objects:  # turn what faces something toward it, now that both stand, if it stays clear
+    for obj in objects:  # turn what faces something toward it, now that both stand
         target = facing(obj, outgoing[obj.id], anchor(outgoing[obj.id], flat))
-        p = placed[obj.id]
         if target is not None and target in placed and target != obj.id:
-            q = placed[target]
-            if (q.x, q.y) != (p.x, p.y):
-                before = p.yaw
-                p.turn(round(yaw_towards((p.x, p.y), (q.x, q.y)), 3))
-                others = [v for k, v in placed.items() if k != obj.id and frozenset((k, obj.id)) not in resting]
-                if not clear(p, [v for v in others if v.h >= 0.1]):
-                    p.turn(before)  # the solver turns it exactly where it finds room
+            others = [v for k, v in placed.items() if k != obj.id and frozenset((k, obj.id)) not in resting]
+            _turn_clear(obj, placed, placed[target], [v for v in others if v.h >= 0.1], relations, by_id)
     return placed
+
+
+def _turn_clear(obj, placed, target: Footprint, others, relations, by_id) -> None:
+    """Turn ``obj`` to face ``target``; where the turned footprint hits a neighbour, step it
+    away from that neighbour (turning again) until clear with its relations holding, else
+    leave it as it was (the solver then turns it exactly where it finds room)."""
+    p = placed[obj.id]
+    before = (p.x, p.y, p.yaw)
+    mine = [r for r in relations if obj.id in (r.source, r.target) and r.source in placed and r.target in placed]
+    for k in range(9):
+        if (target.x, target.y) == (p.x, p.y):
+            break
+        p.turn(round(yaw_towards((p.x, p.y), (target.x, target.y)), 3))
+        hit = next((q for q in others if p.overlaps(q)), None)
+        if hit is None and all(rel.check(r.relation, _scene(r.source, placed, by_id), _scene(r.target, placed, by_id))
+                               for r in mine):  # fmt: skip
+            return
+        if hit is None or k == 8:
+            break
+        dx, dy = p.x - hit.x, p.y - hit.y
+        norm = math.hypot(dx, dy) or 1.0
+        p.x, p.y = before[0] + dx / norm * 0.15 * (k + 1), before[1] + dy / norm * 0.15 * (k + 1)
+    p.x, p.y = before[0], before[1]
+    p.turn(before[2])
+
+
+def _scene(object_id: str, placed, by_id) -> SceneObject:
+    p, o = placed[object_id], by_id[object_id]
+    return SceneObject(id=o.id, name=o.name, category=o.category, position=Vec3(x=p.x, y=p.y, z=p.z),
+                       rotation=Vec3(z=p.yaw), size=Vec3.of(o.size))  # fmt: skip
 
 
 def _lay_under(obj: ParsedObject, relations: list[ParsedRelation], flat: set[str], placed, by_id) -> None:
