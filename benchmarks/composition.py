@@ -4,7 +4,7 @@ For every annotated prompt (``benchmarks/prompts*``) the offline pipeline runs w
 renders; per scene it records the spread of the ground objects (minor/major standard
 deviation of their centres, near 0 = a line) for the initial poses and the final layout,
 how many of the relations the parser read from the text (not the ones it inferred) hold in
-the final layout, whether the layout is complete, and the seconds. Prints one JSON object.
+the initial poses and in the final layout, whether the layout is complete, and the seconds. Prints one JSON object.
 
 The spread is computed by this checkout's ``analysis/composition/spread.py``, loaded by path,
 so the same figure scores scenes made by any other checkout put first on ``PYTHONPATH``
@@ -65,8 +65,8 @@ def main() -> None:
             ]
             by_id = {o.id: o for o in scene.objects}
             stated = [r for r in parse_scene(prompt.text).relations if not r.inferred]
-            held = [r for r in stated if r.source in by_id and r.target in by_id
-                    and rel.check(r.relation, by_id[r.source], by_id[r.target])]
+            held = _held(stated, by_id)
+            held_initial = _held(stated, {o.id: o for o in initial})
             ground = measure.ground_objects(scene.objects)
             rows.append({
                 "id": f"{folder}/{prompt.id}",
@@ -76,6 +76,7 @@ def main() -> None:
                 "spread_final": round(measure.scene_spread(scene.objects), 3),
                 "stated": len(stated),
                 "stated_held": len(held),
+                "stated_held_initial": len(held_initial),
                 "complete": scene.layout.complete,
                 "seconds": round(seconds, 3),
             })
@@ -89,6 +90,7 @@ def main() -> None:
         "median_spread_final": round(statistics.median(r["spread_final"] for r in rows), 3),
         "stated_relations": sum(r["stated"] for r in rows),
         "stated_held_share": round(sum(r["stated_held"] for r in rows) / max(1, sum(r["stated"] for r in rows)), 3),
+        "stated_held_initial": sum(r["stated_held_initial"] for r in rows),
         "complete_layouts": sum(r["complete"] for r in rows),
         "median_seconds": round(statistics.median(r["seconds"] for r in rows), 3),
         "lined_scenes": [r["id"] for r in lined],
@@ -96,6 +98,12 @@ def main() -> None:
     if args.per_scene:
         result["per_scene"] = rows
     print(json.dumps(result))
+
+
+def _held(relations, by_id):
+    """The relations whose source and target both stand where the relation holds."""
+    return [r for r in relations if r.source in by_id and r.target in by_id
+            and rel.check(r.relation, by_id[r.source], by_id[r.target])]  # fmt: skip
 
 
 if __name__ == "__main__":
