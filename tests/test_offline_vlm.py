@@ -211,3 +211,10 @@ def test_support_repairs_are_recorded_with_the_constraints(vlm):
     assert ("sofa_1", "side of", "desk_1") in {(c.source, c.relation, c.target) for c in constraints}
     assert [e.data["step"] for e in vlm.last_repairs] == ["repair"]
     assert "desk_1 cannot hold it" in vlm.last_repairs[0].message
+
+
+def test_constraints_keep_what_the_composition_added(vlm):
+    text = "A living room with a sofa, a coffee table and a rug."
+    objects = vlm.describe_objects(text, "realistic", None)
+    constraints = {(c.source, c.relation, c.target) for c in vlm.write_constraints(text, objects, None)}
+    assert ("coffee_table_1", "on", "rug_1") in constraints  # the rug was laid under the coffee table

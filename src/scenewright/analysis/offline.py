@@ -1,7 +1,8 @@
 """The offline vision-language backend: the catalogue parser answering the model's questions.
 
 No network, no weights: objects, sizes and first poses come from :func:`parse_scene` and
-:func:`initial_objects`, constraints from the relations the parse read, and the feedback loop
+:func:`compose`, constraints from the relations the parse read (with those the composition
+added, such as a sofa standing on the rug put under it), and the feedback loop
 relaxes what the solver could not satisfy. Edits are planned by the rule-based edit parser;
 judging renders needs a real vision model and says so.
 """
@@ -11,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
-from scenewright.analysis.arrange import initial_objects
+from scenewright.analysis.arrange import Composition, compose
 from scenewright.analysis.parser import ParsedScene, parse_scene
 from scenewright.analysis.parser.language import check_english
 from scenewright.errors import BackendError, InputError
@@ -49,6 +50,7 @@ class OfflineVLM:
         self.max_objects = max_objects
         #: What the last answer guessed or repaired, for the stage to add to the provenance.
         self.last_repairs: list[Event] = []
+        self._compositions: dict[str, Composition] = {}
 
     @classmethod
     def from_spec(cls, argument: str, settings: Settings) -> OfflineVLM:
@@ -65,6 +67,14 @@ class OfflineVLM:
             check_english(key)
             self._parses[key] = parse_scene(key)
         return self._parses[key]
+
+    def composition(self, text: str) -> Composition:
+        """The designed first layout of ``text``, made once per text."""
+        parsed = self.parse(text)
+        key = parsed.text
+        if key not in self._compositions:
+            self._compositions[key] = compose(parsed)
+        return self._compositions[key]
 
     def describe_objects(self, text: str, style: str, reference: bytes | None) -> list[SceneObject]:
         parsed = self.parse(text)
@@ -83,7 +93,7 @@ class OfflineVLM:
                     data={"backend": self.name, "step": "guessed", "guessed": guessed},
                 )
             )
-        return initial_objects(parsed)
+        return [o.model_copy(deep=True) for o in self.composition(text).objects]
 
     def write_constraints(
         self, text: str, objects: Sequence[SceneObject], reference: bytes | None
@@ -95,7 +105,7 @@ class OfflineVLM:
         ]
         ids = _match_ids(parsed, objects)
         out: list[Constraint] = []
-        for r in parsed.relations:
+        for r in self.composition(text).relations:
             if r.source in ids and r.target in ids:
                 out.append(Constraint(relation=r.relation, source=ids[r.source], target=ids[r.target]))
         return out

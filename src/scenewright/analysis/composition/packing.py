@@ -1,0 +1,121 @@
+"""Setting the units out on the ground: compact, two-dimensional, the viewer's side open.
+
+Units go down largest first; each next one takes the clear spot beside those already down
+that keeps the whole smallest and squarest, preferring the sides and the back to the front
+(−Y, where the viewer stands). Repeated groups — four desks each with its chair, three
+beds with their nightstands — first form a grid block, as in an office or a dormitory.
+The same search finds a spot for a single object next to a group of related ones.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import defaultdict
+
+import numpy as np
+
+from scenewright.analysis.composition.footprint import GAP, Footprint
+from scenewright.analysis.composition.units import Layout, Unit
+
+#: Room between units: a walkway.
+AISLE = 0.9
+#: Extra cost of a spot in front (toward the viewer) of what is already placed.
+FRONT_COST = 0.35
+
+Box = tuple[float, float, float, float]
+
+
+def best_spot(size: tuple[float, float], boxes: list[Box], gap: float = AISLE) -> tuple[float, float]:
+    """The centre for a ``size`` (w, d) box beside ``boxes`` that keeps their union compact and
+    square, sides and back before the front; (0, 0) when there is nothing yet."""
+    if not boxes:
+        return 0.0, 0.0
+    w, d = size
+    arr = np.array(boxes, dtype=float)
+    cands = []
+    for x0, y0, x1, y1 in boxes:
+        cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+        for y in (cy, y0 + d / 2, y1 - d / 2):
+            cands += [(x1 + gap + w / 2, y), (x0 - gap - w / 2, y)]
+        for x in (cx, x0 + w / 2, x1 - w / 2):
+            cands += [(x, y1 + gap + d / 2), (x, y0 - gap - d / 2)]
+    c = np.array(cands)
+    lo = c - (w / 2, d / 2)
+    hi = c + (w / 2, d / 2)
+    margin = gap - 1e-6
+    hit = (
+        (lo[:, None, 0] < arr[None, :, 2] + margin)
+        & (hi[:, None, 0] > arr[None, :, 0] - margin)
+        & (lo[:, None, 1] < arr[None, :, 3] + margin)
+        & (hi[:, None, 1] > arr[None, :, 1] - margin)
+    ).any(axis=1)
+    ux0, uy0 = np.minimum(lo[:, 0], arr[:, 0].min()), np.minimum(lo[:, 1], arr[:, 1].min())
+    ux1, uy1 = np.maximum(hi[:, 0], arr[:, 2].max()), np.maximum(hi[:, 1], arr[:, 3].max())
+    uw, ud = ux1 - ux0, uy1 - uy0
+    area = uw * ud * (1.0 + 0.5 * np.abs(np.log(uw / ud)))
+    front = c[:, 1] < (arr[:, 1].min() + arr[:, 3].max()) / 2 - 1e-6
+    behind_all = lo[:, 1] >= arr[:, 1].min() - 1e-6
+    cost = area * (1.0 + FRONT_COST * (front & ~behind_all)) + 1e-3 * np.hypot(c[:, 0], c[:, 1])
+    cost[hit] = np.inf
+    k = int(np.argmin(cost))
+    if not np.isfinite(cost[k]):  # boxed in everywhere: beyond the far right
+        return float(arr[:, 2].max() + gap + w / 2), float((arr[:, 1].min() + arr[:, 3].max()) / 2)
+    return float(c[k, 0]), float(c[k, 1])
+
+
+def free_spot(obj, placed: dict[str, Footprint]) -> Footprint:
+    """A spot for an object the relations of its group leave unplaced, beside the group."""
+    boxes = [(p.x - p.w / 2, p.y - p.d / 2, p.x + p.w / 2, p.y + p.d / 2) for p in placed.values()]
+    x, y = best_spot((obj.size[0], obj.size[1]), boxes, gap=GAP)
+    return Footprint(x, y, obj.size[2] / 2, 0.0, obj.size)
+
+
+def _grid(layout: Layout, units: list[Unit]) -> None:
+    """Repeated groups side by side in rows, like desks in an office, all facing one way."""
+    boxes = [layout.box(u) for u in units]
+    cw = max(b[2] - b[0] for b in boxes) + AISLE
+    cd = max(b[3] - b[1] for b in boxes) + AISLE
+    cols = math.ceil(math.sqrt(len(units)))
+    rows = math.ceil(len(units) / cols)
+    for k, (unit, b) in enumerate(zip(units, boxes)):
+        r, c = divmod(k, cols)
+        x, y = (c - (cols - 1) / 2) * cw, ((rows - 1) / 2 - r) * cd
+        layout.move(unit, x - (b[0] + b[2]) / 2, y - (b[1] + b[3]) / 2)
+
+
+def pack(layout: Layout, units: list[Unit]) -> None:
+    """Set ``units`` out compactly around the origin (what is already placed stays)."""
+    by_group: dict[tuple[str, str], list[Unit]] = defaultdict(list)
+    blocks: list[list[Unit]] = []
+    for u in units:
+        if u.group:
+            by_group[(u.group, layout.kind(u.root))].append(u)
+        else:
+            blocks.append([u])
+    for members in by_group.values():
+        if len(members) > 1:
+            _grid(layout, members)
+            blocks.append(members)
+        else:
+            blocks.append(members[:1])
+    order = {id(u): k for k, u in enumerate(units)}
+
+    def weight(block: list[Unit]):
+        x0, y0, x1, y1 = _union(layout, block)
+        count = sum(len(u.ids) for u in block)
+        return (-count, -(x1 - x0) * (y1 - y0), min(order[id(u)] for u in block))
+
+    down: list[Box] = []
+    for block in sorted(blocks, key=weight):
+        x0, y0, x1, y1 = _union(layout, block)
+        # the first stays in its own frame (its main object at the origin)
+        x, y = best_spot((x1 - x0, y1 - y0), down) if down else ((x0 + x1) / 2, (y0 + y1) / 2)
+        for u in block:
+            layout.move(u, x - (x0 + x1) / 2, y - (y0 + y1) / 2)
+            layout.settled.append(u)
+        down.append(_union(layout, block))
+
+
+def _union(layout: Layout, block: list[Unit]) -> Box:
+    boxes = [layout.box(u) for u in block]
+    return min(b[0] for b in boxes), min(b[1] for b in boxes), max(b[2] for b in boxes), max(b[3] for b in boxes)

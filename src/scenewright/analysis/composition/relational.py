@@ -1,0 +1,230 @@
+"""Where the text puts things: first poses from the parser's relations, one connected group
+of related objects at a time, in that group's own frame.
+
+The group's main object (the one most relations point at) stands at the origin. Every other
+object goes where its strongest relation says — on its support, to the named side of its
+target, within reach for ``near`` — targets first, and is pushed outward until its footprint
+is clear. Objects facing a target, and seats beside one, are turned toward it. Where a
+relation leaves a degree free, the roles decide: a seat near a desk or table pulls up in
+front of it, a nightstand beside a bed stands at the bed's head.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import Counter, defaultdict
+from collections.abc import Callable
+
+from scenewright.analysis.composition import roles
+from scenewright.analysis.composition.footprint import GAP, Footprint, clear, push
+from scenewright.analysis.parser import ParsedObject, ParsedRelation
+from scenewright.geometry import front_direction, yaw_towards
+from scenewright.layout import relations as rel
+from scenewright.scene import SceneObject, Vec3
+
+#: Which relation decides where an object goes, strongest first.
+ANCHOR_ORDER = ("on", "above", "left of", "right of", "in front of", "behind", "side of", "near", "far")
+#: Unit direction (x, y) from the target to the source, and the yaw that faces back at the target.
+SIDES = {"left of": ((-1.0, 0.0), 90.0), "right of": ((1.0, 0.0), -90.0),
+         "in front of": ((0.0, -1.0), 180.0), "behind": ((0.0, 1.0), 0.0)}  # fmt: skip
+#: Sides tried, least used first, for ``near``: a seat near a desk or table pulls up in front.
+NEAR_SIDES = ("right of", "left of", "behind", "in front of")
+SEAT_NEAR_SIDES = ("in front of", "behind", "left of", "right of")
+#: Where the target of a relation stands from its source.
+INVERSE = {"left of": "right of", "right of": "left of", "in front of": "behind", "behind": "in front of",
+           "side of": "right of", "near": "right of"}  # fmt: skip
+FAR = 9.0
+ABOVE = 2.05
+
+#: Places an object the relations leave unplaced next to what is already there.
+FreeSpot = Callable[[ParsedObject, dict[str, Footprint]], Footprint]
+
+
+def main_object(objects: list[ParsedObject], relations: list[ParsedRelation]) -> ParsedObject:
+    """The object the others gather around: most pointed at, not resting on anything, largest."""
+    incoming = Counter(r.target for r in relations)
+    sources_on = {r.source for r in relations if r.relation in ("on", "above")}
+    candidates = [o for o in objects if o.id not in sources_on] or objects
+    order = {o.id: i for i, o in enumerate(objects)}
+    return max(candidates, key=lambda o: (incoming[o.id], o.size[0] * o.size[1], -order[o.id]))
+
+
+def anchor(relations: list[ParsedRelation], flat: set[str]) -> ParsedRelation | None:
+    """The relation that places the object; standing on a rug places it only when nothing else does,
+    and facing something means standing in front of it when nothing else says where."""
+    ranked = [r for r in relations if r.relation in ANCHOR_ORDER and not (r.relation == "on" and r.target in flat)]
+    if ranked:
+        return min(ranked, key=lambda r: ANCHOR_ORDER.index(r.relation))
+    ranked = [r for r in relations if r.relation == "on"] or [r for r in relations if r.relation == "face to"]
+    return ranked[0] if ranked else None
+
+
+def facing(obj: ParsedObject, relations: list[ParsedRelation], anchored: ParsedRelation | None) -> str | None:
+    """The id the object should turn toward, if any."""
+    for r in relations:
+        if r.relation == "face to":
+            return r.target
+    if anchored is not None and anchored.relation in SIDES and roles.kind(obj.category) in roles.SEATS:
+        return anchored.target
+    return None
+
+
+def place_related(
+    objects: list[ParsedObject], relations: list[ParsedRelation], free_spot: FreeSpot
+) -> dict[str, Footprint]:
+    """First poses of one group of related objects, its main object at the origin."""
+    by_id = {o.id: o for o in objects}
+    outgoing: dict[str, list[ParsedRelation]] = defaultdict(list)
+    faced_by: dict[str, list[str]] = defaultdict(list)
+    for r in relations:
+        outgoing[r.source].append(r)
+        if r.relation == "face to":
+            faced_by[r.target].append(r.source)
+    incoming: dict[str, list[ParsedRelation]] = defaultdict(list)
+    for r in relations:
+        incoming[r.target].append(r)
+    flat = {o.id for o in objects if o.size[2] < 0.1}
+    placed: dict[str, Footprint] = {}
+    side_use: Counter[tuple[str, str]] = Counter()
+    main = main_object(objects, relations)
+    placed[main.id] = Footprint(0.0, 0.0, main.size[2] / 2, 0.0, main.size)
+
+    def beside_source(obj: ParsedObject) -> bool:
+        """Place ``obj`` from a relation a placed object has to it (S left of obj: obj right
+        of S), when its own relations cannot place it; False if there is none."""
+        for r in incoming[obj.id]:
+            if r.source in placed and r.relation in INVERSE:
+                placed[obj.id] = beside(obj, placed[r.source], r.source, INVERSE[r.relation], False)
+                return True
+        return False
+
+    def beside(obj: ParsedObject, t: Footprint, target: str, rel: str, turn: bool) -> Footprint:
+        """``obj`` on the ``rel`` side of ``t``, the n-th there, pushed clear."""
+        (dx, dy), face_yaw = SIDES[rel]
+        probe = Footprint(0, 0, 0, face_yaw if turn else 0.0, obj.size)
+        n = side_use[(target, rel)]
+        side_use[(target, rel)] += 1
+        along = (probe.d if dx else probe.w) + GAP
+        offset = along * ((n + 1) // 2) * (1 if n % 2 else -1)
+        if n == 0 and dx and roles.kind(obj.category) in roles.NIGHTSTANDS and roles.kind(
+            by_id[target].category
+        ) in roles.BEDS:
+            offset = (t.d - probe.d) / 2  # beside the bed's head, not its middle
+        x = t.x + dx * ((t.w + probe.w) / 2 + GAP) + (0.0 if dx else offset)
+        y = t.y + dy * ((t.d + probe.d) / 2 + GAP) + (offset if dx else 0.0)
+        p = Footprint(x, y, obj.size[2] / 2, probe.yaw, obj.size)
+        return push(p, (dx, dy), list(placed.values()))
+
+    def place(obj: ParsedObject, trail: frozenset[str] = frozenset()) -> None:
+        if obj.id in placed:
+            return
+        anchored = anchor(outgoing[obj.id], flat)
+        if anchored is not None and anchored.target not in placed and anchored.target not in trail:
+            if anchor(outgoing[anchored.target], flat) is None and beside_source(obj):
+                return  # its target has nothing to place it by but this object: it follows
+            place(by_id[anchored.target], trail | {obj.id})
+        if anchored is None or anchored.target not in placed:
+            if beside_source(obj):
+                return
+            facer = next((f for f in faced_by[obj.id] if f in placed), None)
+            if facer is None:
+                placed[obj.id] = free_spot(obj, placed)
+                return
+            # what something faces goes where that thing looks (its front, −Y at yaw 0)
+            f = placed[facer]
+            fx, fy = (float(v) for v in front_direction(f.yaw))
+            reach = (f.d + max(obj.size[0], obj.size[1])) / 2 + 1.5
+            p = Footprint(f.x + fx * reach, f.y + fy * reach, obj.size[2] / 2, f.yaw + 180.0, obj.size)
+            placed[obj.id] = push(p, (fx, fy), list(placed.values()))
+            return
+        t = placed[anchored.target]
+        rel = anchored.relation
+        if rel in ("on", "above"):
+            n = side_use[(anchored.target, rel)]
+            side_use[(anchored.target, rel)] += 1
+            dx, dy = _spread_on(n, t, obj.size)
+            z = t.z + t.h / 2 + obj.size[2] / 2 + (ABOVE if rel == "above" else 0.0)
+            placed[obj.id] = Footprint(dx, dy, z, t.yaw, obj.size)
+            return
+        seat_at_table = roles.kind(obj.category) in roles.SEATS and roles.kind(by_id[anchored.target].category) in (
+            roles.DESKS | roles.TABLES | roles.COFFEE_TABLES
+        )
+        if rel == "side of":
+            left, right = side_use[(anchored.target, "left of")], side_use[(anchored.target, "right of")]
+            rel = "left of" if left <= right else "right of"
+        if rel == "near":
+            order = SEAT_NEAR_SIDES if seat_at_table else NEAR_SIDES
+            rel = min(order, key=lambda s: (side_use[(anchored.target, s)], order.index(s)))
+        if rel == "face to":
+            rel = "in front of"
+        if rel == "far":
+            p = Footprint(t.x, t.y + t.d / 2 + FAR + obj.size[1] / 2, obj.size[2] / 2, 0.0, obj.size)
+            placed[obj.id] = push(p, (0.0, 1.0), list(placed.values()))
+            return
+        turn = facing(obj, outgoing[obj.id], anchored) == anchored.target or (
+            seat_at_table and anchored.relation == "near"
+        )
+        placed[obj.id] = beside(obj, t, anchored.target, rel, turn)
+        _lay_under(obj, outgoing[obj.id], flat, placed, by_id)
+
+    for obj in objects:
+        place(obj)
+    resting = {frozenset((r.source, r.target)) for r in relations if r.relation in ("on", "above")}
+    for obj in objects:  # turn what faces something toward it, now that both stand
+        target = facing(obj, outgoing[obj.id], anchor(outgoing[obj.id], flat))
+        if target is not None and target in placed and target != obj.id:
+            others = [v for k, v in placed.items() if k != obj.id and frozenset((k, obj.id)) not in resting]
+            _turn_clear(obj, placed, placed[target], [v for v in others if v.h >= 0.1], relations, by_id)
+    return placed
+
+
+def _turn_clear(obj, placed, target: Footprint, others, relations, by_id) -> None:
+    """Turn ``obj`` to face ``target``; where the turned footprint hits a neighbour, step it
+    away from that neighbour (turning again) until clear with its relations holding, else
+    leave it as it was (the solver then turns it exactly where it finds room)."""
+    p = placed[obj.id]
+    before = (p.x, p.y, p.yaw)
+    mine = [r for r in relations if obj.id in (r.source, r.target) and r.source in placed and r.target in placed]
+    for k in range(9):
+        if (target.x, target.y) == (p.x, p.y):
+            break
+        p.turn(round(yaw_towards((p.x, p.y), (target.x, target.y)), 3))
+        hit = next((q for q in others if p.overlaps(q)), None)
+        if hit is None and all(rel.check(r.relation, _scene(r.source, placed, by_id), _scene(r.target, placed, by_id))
+                               for r in mine):  # fmt: skip
+            return
+        if hit is None or k == 8:
+            break
+        dx, dy = p.x - hit.x, p.y - hit.y
+        norm = math.hypot(dx, dy) or 1.0
+        p.x, p.y = before[0] + dx / norm * 0.15 * (k + 1), before[1] + dy / norm * 0.15 * (k + 1)
+    p.x, p.y = before[0], before[1]
+    p.turn(before[2])
+
+
+def _scene(object_id: str, placed, by_id) -> SceneObject:
+    p, o = placed[object_id], by_id[object_id]
+    return SceneObject(id=o.id, name=o.name, category=o.category, position=Vec3(x=p.x, y=p.y, z=p.z),
+                       rotation=Vec3(z=p.yaw), size=Vec3.of(o.size))  # fmt: skip
+
+
+def _lay_under(obj: ParsedObject, relations: list[ParsedRelation], flat: set[str], placed, by_id) -> None:
+    """A rug the object stands on goes under it, and the object onto the rug."""
+    for r in relations:
+        if r.relation == "on" and r.target in flat and r.target not in placed:
+            p = placed[obj.id]
+            rug = by_id[r.target]
+            placed[r.target] = Footprint(p.x, p.y, rug.size[2] / 2, 0.0, rug.size)
+            p.z += rug.size[2]
+            return
+
+
+def _spread_on(n: int, t: Footprint, size: tuple[float, float, float]) -> tuple[float, float]:
+    """Centre of the n-th thing put on one support: a small grid over its top."""
+    if n == 0:
+        return t.x, t.y
+    cols = max(1, int(t.w // max(size[0] + 0.05, 0.05)))
+    rows = max(1, int(t.d // max(size[1] + 0.05, 0.05)))
+    slots = [(c, r) for r in range(rows) for c in range(cols)]
+    c, r = slots[n % len(slots)]
+    return t.x + (c + 0.5) * t.w / cols - t.w / 2, t.y + (r + 0.5) * t.d / rows - t.d / 2

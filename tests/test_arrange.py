@@ -1,0 +1,256 @@
+"""The arranger's placement priors, one rule at a time, and its guarantees as properties."""
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from scenewright.analysis.arrange import compose, initial_objects, share_supports
+from scenewright.analysis.catalogue import load_catalogue
+from scenewright.analysis.composition import roles
+from scenewright.analysis.composition.edges import share
+from scenewright.analysis.composition.outdoor import SCATTER_GAP
+from scenewright.analysis.composition.spread import MIN_SPREAD, ground_objects, scene_spread, spread
+from scenewright.analysis.parser import ParsedObject, ParsedRelation, ParsedScene, parse_scene
+from scenewright.geometry import front_direction, world_box
+from scenewright.layout import relations as rel
+
+
+def _scene(*categories: str, relations=(), indoor=True) -> ParsedScene:
+    """A parse of the given categories, numbered per category, with catalogue sizes."""
+    catalogue = load_catalogue()
+    count: dict[str, int] = {}
+    objects = []
+    for k, c in enumerate(categories):
+        count[c] = count.get(c, 0) + 1
+        label = c.replace("_", " ")
+        objects.append(ParsedObject(f"{c}_{count[c]}", c, label, label, catalogue[c].size, k))
+    rels = [ParsedRelation(s, r, t, inferred) for s, r, t, inferred in relations]
+    return ParsedScene(" ".join(categories), objects, rels, "realistic", "wood", indoor)
+
+
+def _by_id(objects):
+    return {o.id: o for o in objects}
+
+
+def _faces(obj, target, within: float = 10.0) -> bool:
+    """Whether ``obj``'s front points at ``target``'s centre within ``within`` degrees."""
+    d = front_direction(obj.rotation.z)
+    v = np.array([target.position.x - obj.position.x, target.position.y - obj.position.y])
+    return float(d @ v) / float(np.linalg.norm(v)) >= math.cos(math.radians(within))
+
+
+def _gap(a, b) -> float:
+    (alo, ahi), (blo, bhi) = world_box(a), world_box(b)
+    return float(max(0.0, blo[0] - ahi[0], alo[0] - bhi[0], blo[1] - ahi[1], alo[1] - bhi[1]))
+
+
+def _plan_overlap(a, b) -> bool:
+    (alo, ahi), (blo, bhi) = world_box(a), world_box(b)
+    return all(alo[i] < bhi[i] - 1e-6 and blo[i] < ahi[i] - 1e-6 for i in range(2))
+
+
+# --- functional groups -------------------------------------------------------------------------
+
+
+def test_four_desks_each_get_a_chair_facing_them():
+    objects = _by_id(initial_objects(_scene(*["desk"] * 4, *["office_chair"] * 4)))
+    desks = [o for o in objects.values() if o.category == "desk"]
+    chairs = [o for o in objects.values() if o.category == "office_chair"]
+    for desk in desks:
+        near = [c for c in chairs if _gap(c, desk) < 0.3]
+        assert len(near) == 1, (desk.id, [c.id for c in near])
+        chair = near[0]
+        assert _faces(chair, desk)
+        # in front of the desk: on the side its front (−Y at yaw 0) looks to
+        assert chair.position.y < desk.position.y
+    # the desks are set out in a grid, not a line
+    assert spread((d.position.x, d.position.y) for d in desks) > 0.5
+
+
+def test_chairs_go_around_a_dining_table_facing_it():
+    objects = initial_objects(_scene("table", *["chair"] * 6))
+    table = next(o for o in objects if o.category == "table")
+    for chair in (o for o in objects if o.category == "chair"):
+        assert _gap(chair, table) < 0.3
+        assert _faces(chair, table, within=45.0)
+
+
+def test_a_lounge_gathers_around_its_coffee_table_and_faces_the_tv():
+    parsed = _scene("sofa", "armchair", "coffee_table", "tv_stand", "rug", "floor_lamp")
+    made = compose(parsed)
+    o = _by_id(made.objects)
+    sofa, chair, table, tv, rug, lamp = (o[k] for k in ("sofa_1", "armchair_1", "coffee_table_1", "tv_stand_1",
+                                                         "rug_1", "floor_lamp_1"))  # fmt: skip
+    assert _faces(sofa, tv) and _faces(tv, sofa)
+    assert _gap(sofa, table) < 0.8 and _gap(chair, table) < 0.8
+    assert _faces(chair, table, within=45.0)
+    # the rug lies under the group: what stands wholly on it says so (the solver keeps it
+    # there), what would stand half on it stands off its edge
+    on_rug = {r.source for r in made.relations if r.relation == "on" and r.target == "rug_1"}
+    assert on_rug == {"coffee_table_1"}
+    assert rel.check("on", table, rug)
+    assert not _plan_overlap(sofa, rug) and not _plan_overlap(chair, rug)
+    assert _gap(lamp, sofa) < 0.3
+
+
+def test_a_bed_has_nightstands_either_side_of_its_head_and_a_chest_at_its_foot():
+    made = compose(_scene("bed", "nightstand", "nightstand", "treasure_chest", "rug"))
+    o = _by_id(made.objects)
+    bed, left, right, chest = o["bed_1"], o["nightstand_1"], o["nightstand_2"], o["treasure_chest_1"]
+    xs = sorted([left.position.x, right.position.x])
+    assert xs[0] < bed.position.x - bed.size.x / 2 and xs[1] > bed.position.x + bed.size.x / 2
+    for stand in (left, right):
+        assert stand.position.y > bed.position.y  # at the head (the back, +Y at yaw 0)
+        assert _gap(stand, bed) < 0.2
+    assert chest.position.y < bed.position.y - bed.size.y / 2
+    assert _gap(chest, bed) < 0.3
+    # the rug lies at the bed's foot, the chest on it
+    assert o["rug_1"].position.y < bed.position.y - bed.size.y / 2
+    assert ("treasure_chest_1", "on", "rug_1") in {(r.source, r.relation, r.target) for r in made.relations}
+
+
+def test_each_desk_gets_its_own_monitor():
+    parsed = _scene("desk", "desk", "monitor", "monitor",
+                    relations=[("monitor_1", "on", "desk_1", True), ("monitor_2", "on", "desk_1", True)])  # fmt: skip
+    hosts = {r.source: r.target for r in share_supports(parsed)}
+    assert hosts == {"monitor_1": "desk_1", "monitor_2": "desk_2"}
+    o = _by_id(compose(parsed).objects)
+    assert rel.check("on", o["monitor_2"], o["desk_2"])
+
+
+# --- edges, rows, scatter ----------------------------------------------------------------------
+
+
+def test_bookshelves_stand_at_an_edge_with_their_backs_outward():
+    objects = initial_objects(_scene("table", "chair", "chair", "bookshelf", "bookshelf", "bookshelf", "bookshelf"))
+    rest = [o for o in objects if o.category != "bookshelf"]
+    lo = np.min([world_box(o)[0] for o in rest], axis=0)
+    hi = np.max([world_box(o)[1] for o in rest], axis=0)
+    centre = (lo + hi) / 2
+    for shelf in (o for o in objects if o.category == "bookshelf"):
+        slo, shi = world_box(shelf)
+        outside = shi[0] <= lo[0] or slo[0] >= hi[0] or slo[1] >= hi[1]
+        assert outside, shelf.id
+        assert shi[1] > lo[1] + 1e-6 or slo[1] >= hi[1], "never in the open front"
+        front = front_direction(shelf.rotation.z)
+        inward = centre[:2] - np.array([shelf.position.x, shelf.position.y])
+        assert float(front @ inward) > 0.7 * float(np.linalg.norm(inward))
+
+
+def test_storage_alone_makes_a_u_not_a_line():
+    assert share(2) == ["back", "back"]
+    assert share(5) == ["back", "back", "back", "left", "right"]
+    objects = initial_objects(_scene(*["bookshelf"] * 5))
+    assert scene_spread(objects) >= MIN_SPREAD
+
+
+def test_stalls_stand_around_a_fountain_facing_it_and_leave_the_front_open():
+    o = _by_id(initial_objects(_scene("fountain", *["market_stall"] * 5, indoor=False)))
+    fountain = o["fountain_1"]
+    for k in range(1, 6):
+        stall = o[f"market_stall_{k}"]
+        assert _faces(stall, fountain)
+        assert stall.position.y > fountain.position.y - 0.5  # none between the fountain and the viewer
+
+
+def test_stalls_without_a_square_line_a_street_facing_each_other():
+    o = _by_id(initial_objects(_scene(*["market_stall"] * 4, indoor=False)))
+    left = [s for s in o.values() if s.rotation.z == pytest.approx(90.0)]
+    right = [s for s in o.values() if s.rotation.z == pytest.approx(-90.0)]
+    assert len(left) == 2 and len(right) == 2
+    assert max(s.position.x for s in left) < min(s.position.x for s in right) - 2.0  # the walk between
+
+
+def test_vehicles_park_along_an_edge_beside_a_free_road():
+    objects = initial_objects(_scene("bench", "fountain", "lamp_post", "car", "car", "tree", "tree", indoor=False))
+    cars = [o for o in objects if o.category == "car"]
+    others = [o for o in objects if o.category not in ("car", "tree")]
+    edge = max(world_box(o)[1][0] for o in others)
+    assert all(world_box(c)[0][0] > edge + 2.0 for c in cars)
+    assert len({round(c.position.x, 3) for c in cars}) == 1  # nose to tail
+
+
+def test_trees_are_poisson_spaced_and_deterministic_per_seed():
+    parsed = _scene(*["tree"] * 8, *["rock"] * 4, *["bush"] * 4, "campfire", indoor=False)
+    objects = compose(parsed, seed=3).objects
+    natural = [o for o in objects if roles.kind(o.category) in roles.NATURAL]
+    for i, a in enumerate(natural):
+        for b in natural[i + 1 :]:
+            reach = (max(a.size.x, a.size.y) + max(b.size.x, b.size.y)) / 2
+            distance = math.hypot(a.position.x - b.position.x, a.position.y - b.position.y)
+            assert distance >= reach + SCATTER_GAP - 1e-6, (a.id, b.id)
+    assert compose(parsed, seed=3).objects == objects
+    assert compose(parsed, seed=4).objects != objects
+
+
+# --- the text first, and never a line ----------------------------------------------------------
+
+
+def test_stated_relations_hold_at_the_first_poses():
+    text = (
+        "A home office: a desk with a monitor on it, an office chair to the left of the desk, a bookshelf "
+        "behind the desk, a plant near the chair, and a lamp on the desk."
+    )
+    made = compose(parse_scene(text))
+    o = _by_id(made.objects)
+    for r in made.relations:
+        assert rel.check(r.relation, o[r.source], o[r.target]), r
+
+
+def test_three_unrelated_objects_are_not_collinear():
+    objects = initial_objects(_scene("lamp_post", "bench", "trash_can", indoor=False))
+    assert scene_spread(objects) >= MIN_SPREAD
+
+
+def test_a_stated_row_is_broken_sideways_only_where_the_relations_allow():
+    parsed = _scene("crate", "barrel", "crate", "barrel",
+                    relations=[("crate_1", "left of", "barrel_1", False), ("barrel_1", "left of", "crate_2", False),
+                               ("crate_2", "left of", "barrel_2", False)])  # fmt: skip
+    made = compose(parsed)
+    o = _by_id(made.objects)
+    assert scene_spread(made.objects) >= MIN_SPREAD
+    for r in made.relations:
+        assert rel.check(r.relation, o[r.source], o[r.target])
+
+
+def test_spread_measures_lines():
+    assert spread([(0, 0), (1, 0), (2, 0), (3, 0)]) == pytest.approx(0.0)
+    assert spread([(0, 0), (1, 0), (0, 1), (1, 1)]) == pytest.approx(1.0)
+    assert spread([(0, 0), (1, 1)]) == 1.0
+
+
+# --- properties --------------------------------------------------------------------------------
+
+_GROUND = sorted(c.name for c in load_catalogue().values() if c.rests == "ground")
+_SURFACE = sorted(c.name for c in load_catalogue().values() if c.rests == "surface")
+
+
+@st.composite
+def scenes(draw):
+    ground = draw(st.lists(st.sampled_from(_GROUND), min_size=1, max_size=14))
+    surface = draw(st.lists(st.sampled_from(_SURFACE), max_size=4))
+    parsed = _scene(*ground, *surface, indoor=draw(st.booleans()))
+    supports = [o.id for o in parsed.objects if load_catalogue()[o.category].support]
+    for o in parsed.objects[len(ground) :]:
+        if supports:
+            parsed.relations.append(ParsedRelation(o.id, "on", draw(st.sampled_from(supports)), True))
+    return parsed
+
+
+@settings(max_examples=60, deadline=None)
+@given(scenes(), st.integers(0, 2**16))
+def test_compositions_never_overlap_never_line_up_and_repeat_per_seed(parsed, seed):
+    made = compose(parsed, seed)
+    assert [o.id for o in made.objects] == [o.id for o in parsed.objects]
+    resting = {frozenset((r.source, r.target)) for r in made.relations if r.relation in ("on", "above")}
+    ground = [o for o in ground_objects(made.objects) if o.size.z >= 0.1]
+    for i, a in enumerate(ground):
+        for b in ground[i + 1 :]:
+            if frozenset((a.id, b.id)) not in resting:
+                assert not _plan_overlap(a, b), (a.id, b.id)
+    if len(ground_objects(made.objects)) >= 3:
+        assert scene_spread(made.objects) >= MIN_SPREAD
+    assert compose(parsed, seed).objects == made.objects
