@@ -1,4 +1,4 @@
-"""Command line: ``scenewright generate|batch|solve|edit|undo|redo|history|render|evaluate|bench``.
+"""Command line: ``scenewright generate|batch|solve|edit|undo|redo|history|render|evaluate|studio|bench``.
 
 Each command lives in the module named for what it drives; importing them registers them on
 :data:`scenewright.cli.app.app`. Library errors become one readable line and an exit code:
@@ -14,7 +14,7 @@ import typer
 from rich.console import Console
 from rich.markup import escape
 
-from scenewright.cli import assets, backends, batch, edit, evaluate, generate, parse, remote, render, solve  # noqa: F401
+from scenewright.cli import assets, backends, batch, edit, evaluate, generate, parse, remote, render, solve, studio  # noqa: F401
 from scenewright.cli.app import app
 from scenewright.errors import BackendError, InfeasibleLayout, InputError, ScenewrightError
 
