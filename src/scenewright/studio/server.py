@@ -65,7 +65,8 @@ class Studio:
         #: GUI callbacks and the disk watcher redraw from their own threads.
         self._drawing = threading.RLock()
         gui = self.server.gui
-        gui.configure_theme(control_width="large")
+        gui.configure_theme(control_layout="fixed", control_width="large", show_logo=False)
+        self._aim_camera()
         self.status = gui.add_markdown("Click an object to select it.")
         with gui.add_folder("Object"):
             self.panel = gui.add_markdown("_nothing selected_")
@@ -92,6 +93,16 @@ class Studio:
     def stop(self) -> None:
         self._stop.set()
         self.server.stop()
+
+    def _aim_camera(self) -> None:
+        """Start the view above the front of the scene, looking at its middle."""
+        scene = self.session.scene
+        points = np.array([o.position.tuple() for o in scene.objects] or [(0.0, 0.0, 0.0)])
+        centre = (points.min(axis=0) + points.max(axis=0)) / 2
+        reach = max(float(np.ptp(points[:, :2], axis=0).max()), 2.0)
+        camera = self.server.initial_camera
+        camera.look_at = (float(centre[0]), float(centre[1]), 0.0)
+        camera.position = (float(centre[0]), float(centre[1]) - 1.2 * reach, 0.9 * reach)
 
     # --- drawing ---------------------------------------------------------------------------
 
