@@ -65,7 +65,8 @@ class Studio:
         #: GUI callbacks and the disk watcher redraw from their own threads.
         self._drawing = threading.RLock()
         gui = self.server.gui
-        gui.configure_theme(control_layout="fixed", control_width="large", show_logo=False)
+        gui.configure_theme(control_width="large", show_logo=False)
+        gui.main_panel.dock_right()
         self._aim_camera()
         self.status = gui.add_markdown("Click an object to select it.")
         with gui.add_folder("Object"):

@@ -73,6 +73,7 @@ class Session:
 
     def reload(self) -> Scene:
         with self.lock:
+            self.folder.load()  # a folder without scene.json: the error says how to make one
             stamp = self._disk_stamp()
             self.scene = self.folder.load()
             self._stamp = stamp
