@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import logging
 import time
 from pathlib import Path
 from typing import Annotated
@@ -24,14 +23,15 @@ from scenewright.cli.options import (
 )
 from scenewright.folder import SceneFolder
 
-log = logging.getLogger(__name__)
 LOCAL = "127.0.0.1"
 
 
 @app.command("studio")
 def studio_command(
     folder: Annotated[Path, typer.Argument(help="The scene folder (holds scene.json).")],
-    host: Annotated[str, typer.Option("--host", help="Address to listen on; anything but 127.0.0.1 exposes the editor.")] = LOCAL,
+    host: Annotated[
+        str, typer.Option("--host", help="Address to listen on; anything but 127.0.0.1 exposes the editor.")
+    ] = LOCAL,
     port: Annotated[int, typer.Option("--port", help="Port to listen on.")] = 8080,
     vlm: VlmOption = None,
     images: ImagesOption = None,

@@ -60,7 +60,8 @@ def object_panel(scene: Scene, object_id: str) -> ObjectPanel:
             continue
         source, target = scene.get(c.source), scene.get(c.target)
         held = check(c.relation, source, target)
-        states.append(ConstraintState(str(c), held, "" if held else describe(c.relation, violation(c.relation, source, target))))
+        miss = "" if held else describe(c.relation, violation(c.relation, source, target))
+        states.append(ConstraintState(str(c), held, miss))
     unplaced = None
     if scene.layout is not None:
         unplaced = next((u.reason + (f" ({u.nearest_miss})" if u.nearest_miss else "")

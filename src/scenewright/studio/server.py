@@ -7,19 +7,18 @@ after each change and whenever scene.json changes on disk.
 
 from __future__ import annotations
 
-import logging
 import threading
 
 import numpy as np
 import trimesh
 
-from scenewright.errors import InfeasibleLayout, MissingExtra, ScenewrightError
+from scenewright.errors import MissingExtra, ScenewrightError
 from scenewright.export.ground import ground_mesh
 from scenewright.geometry import GLTF_TO_SCENE, object_matrix
 from scenewright.scene import SceneObject
+from scenewright.studio.panel import object_panel
 from scenewright.studio.session import Session, inside
 
-log = logging.getLogger(__name__)
 
 #: How often scene.json's modification time is looked at, seconds.
 POLL_SECONDS = 0.5
@@ -187,10 +186,15 @@ class Studio:
         moved = obj.model_copy(update={"position": obj.position.model_copy(update={"x": float(x), "y": float(y)}),
                                        "rotation": obj.rotation.model_copy(update={"z": yaw})})
         node = self._nodes.get(obj.id)
-        if node is not None and obj.asset is not None:
-            node.wxyz, node.position = _pose(object_matrix(moved) @ GLTF_TO_SCENE)
+        if node is not None:
+            node.wxyz, node.position = (_pose(object_matrix(moved) @ GLTF_TO_SCENE) if obj.asset is not None
+                                        else (_yaw_quaternion(yaw), moved.position.tuple()))
         if event.phase == "end":
             self.drag(obj.id, float(x), float(y), yaw)
+        else:  # which of its constraints the pose under the pointer breaks (boxes only: cheap enough per update)
+            trial = self.session.scene.model_copy(update={
+                "objects": [moved if o.id == obj.id else o for o in self.session.scene.objects]})
+            self.panel.content = object_panel(trial, obj.id).markdown()
 
     def drag(self, object_id: str, x: float, y: float, yaw: float) -> str:
         result = self.session.drag(object_id, x, y, yaw)
@@ -204,11 +208,12 @@ class Studio:
     def _run(self, action, verb: str) -> str:
         try:
             entry = action()
-        except (InfeasibleLayout, ScenewrightError) as exc:
+        except ScenewrightError as exc:  # the CLI's messages: bad input, an infeasible place, a backend
             message = f"**not done:** {exc}"
         else:
-            changes = "; ".join(entry.changes)
-            message = f"{verb} {entry.number}: {entry.instruction}" + (f" — {changes}" if changes and verb == "edit" else "")
+            message = f"{verb} {entry.number}: {entry.instruction}"
+            if verb == "edit" and entry.changes:
+                message += " — " + "; ".join(entry.changes)
         self.status.content = message
         self.draw()
         return message

@@ -8,7 +8,6 @@ is one history entry like any other, undoable from either side.
 
 from __future__ import annotations
 
-import logging
 import threading
 from dataclasses import dataclass
 from pathlib import Path
@@ -26,8 +25,6 @@ from scenewright.layout import check, colliding_pairs, solve
 from scenewright.scene import Scene, SceneObject, Vec3
 from scenewright.settings import Settings
 from scenewright.studio.panel import ObjectPanel, object_panel
-
-log = logging.getLogger(__name__)
 
 
 def inside(folder: SceneFolder, relative: str) -> Path:
@@ -94,7 +91,8 @@ class Session:
 
     def glb(self) -> bytes:
         if not self.folder.glb.is_file():
-            raise InputError(f"{self.folder.glb} does not exist; export it with `scenewright generate --resume {self.folder.root}`")
+            raise InputError(f"{self.folder.glb} does not exist; "
+                             f"export it with `scenewright generate --resume {self.folder.root}`")
         return self.folder.glb.read_bytes()
 
     def panel(self, object_id: str) -> ObjectPanel:
