@@ -148,7 +148,7 @@ def browser():
 @pytest.mark.timeout(180)
 def test_editor_in_the_browser(folder, browser, tmp_path):
     """Select (through the editor's server-side API: clicks in software WebGL are not reliable),
-    read the panel, type an edit, undo, reload: the page and scene.json agree throughout."""
+    read the panel, type an edit, undo, reload, redo with the CLI: the page and scene.json agree throughout."""
     from scenewright.studio.server import Studio
 
     s = session(folder)
@@ -185,5 +185,10 @@ def test_editor_in_the_browser(folder, browser, tmp_path):
         page.get_by_text("Connected").wait_for(timeout=30_000)
         page.get_by_text("floor_lamp_1 right of sofa_1: held").wait_for(timeout=15_000)
         assert "(undone)" in page.inner_text("body")
+
+        assert main(["redo", str(folder.root)]) == 0  # the CLI changes scene.json: the page follows
+        page.get_by_text("scene.json changed on disk; reloaded").wait_for(timeout=30_000)
+        page.get_by_text("floor_lamp_1 left of sofa_1: held").wait_for(timeout=15_000)
+        assert "(undone)" not in page.inner_text("body")
     finally:
         studio.stop()
