@@ -3,9 +3,9 @@ PY      ?= python3.11
 VENV    := .venv
 BIN     := $(VENV)/bin
 STAMP   := $(VENV)/.installed
-EXTRAS  ?= test,remote,render,batch,sim
+EXTRAS  ?= test,remote,render,batch,sim,studio
 
-.PHONY: install install-render install-clip install-batch install-sim tools demo test bench clean
+.PHONY: install install-render install-clip install-batch install-sim install-studio tools chromium demo test bench clean
 
 $(BIN)/python:
 	@command -v $(PY) >/dev/null 2>&1 || { echo "scenewright needs Python 3.11 ($(PY) not found); set PY=/path/to/python3.11"; exit 1; }
@@ -18,8 +18,8 @@ $(STAMP): $(BIN)/python pyproject.toml
 
 install: $(STAMP)
 
-# Optional extras named by MissingExtra messages (render, batch and sim are already part of the default EXTRAS).
-install-render install-clip install-batch install-sim: install-%: $(STAMP)
+# Optional extras named by MissingExtra messages (render, batch, sim and studio are already part of the default EXTRAS).
+install-render install-clip install-batch install-sim install-studio: install-%: $(STAMP)
 	$(BIN)/pip install -q -e ".[$*]"
 
 # Node tools the tests use (the Khronos glTF validator), pinned by tools/package-lock.json.
@@ -29,7 +29,12 @@ $(TOOLS_STAMP): tools/package.json tools/package-lock.json
 	cd tools && npm ci --no-audit --no-fund --loglevel=error
 	@touch $(TOOLS_STAMP)
 
-tools: $(TOOLS_STAMP)
+# The studio's browser tests drive Debian's chromium (headless, software GL); apt installs it when missing.
+chromium:
+	@command -v chromium >/dev/null 2>&1 || { command -v apt-get >/dev/null 2>&1 && apt-get update && apt-get install -y chromium; } \
+		|| echo "chromium is not installed and apt-get is unavailable: the studio browser tests will be skipped"
+
+tools: $(TOOLS_STAMP) chromium
 
 demo: install
 	$(BIN)/scenewright generate --example --out demo-scene

@@ -1,4 +1,4 @@
-"""Command line: ``scenewright generate|batch|solve|edit|undo|redo|history|render|evaluate|export|bench``.
+"""Command line: ``scenewright generate|batch|solve|edit|undo|redo|history|render|evaluate|export|studio|bench``.
 
 Each command lives in the module named for what it drives; importing them registers them on
 :data:`scenewright.cli.app.app`. Library errors become one readable line and an exit code:
@@ -13,7 +13,9 @@ import sys
 import typer
 from rich.console import Console
 
-from scenewright.cli import assets, backends, batch, edit, evaluate, export, generate, parse, remote, render, solve  # noqa: F401
+from scenewright.cli import (  # noqa: F401  (importing a command module registers it)
+    assets, backends, batch, edit, evaluate, export, generate, parse, remote, render, solve, studio,
+)
 from scenewright.cli.app import app, interrupt_hint
 from scenewright.cli.display import safe
 from scenewright.errors import BackendError, InfeasibleLayout, InputError, ScenewrightError

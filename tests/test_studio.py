@@ -1,0 +1,194 @@
+"""``scenewright studio``: the editing session on its own, and the editor in a headless browser."""
+
+from __future__ import annotations
+
+import json
+import socket
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from editing_scenes import RulePlanner, snapshot
+from scenewright.backends import Backends
+from scenewright.cli import main
+from scenewright.editing import entries
+from scenewright.errors import InputError, MissingExtra
+from scenewright.layout import check
+from scenewright.scene import Constraint, Vec3
+from scenewright.settings import Settings
+from scenewright.studio import Session, inside, object_panel
+
+CHROMIUM = Path("/usr/bin/chromium")
+
+
+def session(folder) -> Session:
+    settings = Settings()
+    return Session(folder, backends=Backends.from_settings(settings), settings=settings)
+
+
+def test_panel_shows_constraints_held_and_violated_and_the_unplaced_reason(folder):
+    scene = folder.load()
+    lamp = scene.get("floor_lamp_1")
+    lamp.position = Vec3(x=-3.0, y=1.5, z=lamp.position.z)  # now left of the sofa, not right
+    scene.layout = {"unplaced": [{"id": "floor_lamp_1", "reason": "no free spot right of sofa_1"}]}
+    panel = object_panel(scene, "floor_lamp_1")
+    assert (panel.id, panel.name) == ("floor_lamp_1", "floor lamp")
+    assert panel.size == pytest.approx((0.45, 0.45, 1.7), abs=1e-6)
+    [state] = panel.constraints
+    assert state.text == "floor_lamp_1 right of sofa_1" and not state.held and state.miss.startswith("misses by")
+    assert panel.unplaced == "no free spot right of sofa_1"
+    text = panel.markdown()
+    assert "**violated**" in text and "unplaced" in text
+    # Constraints where the object is the target are listed too, and held ones say so.
+    sofa = object_panel(folder.load(), "sofa_1")
+    assert {c.text for c in sofa.constraints} == {"coffee_table_1 in front of sofa_1", "floor_lamp_1 right of sofa_1",
+                                                 "bookshelf_1 left of sofa_1"}
+    assert all(c.held for c in sofa.constraints) and sofa.unplaced is None
+
+
+def test_paths_outside_the_folder_are_refused(folder):
+    assert inside(folder, "assets/sofa_1.glb") == (folder.root / "assets/sofa_1.glb").resolve()
+    with pytest.raises(InputError, match="outside the scene folder"):
+        inside(folder, "../../etc/passwd")
+    scene = folder.load()
+    scene.get("sofa_1").asset = "../secret.glb"
+    with pytest.raises(InputError, match="outside the scene folder"):
+        session(folder).asset_bytes(scene.get("sofa_1"))
+
+
+def test_drag_commits_one_edit_and_keeps_the_constraints(folder):
+    s = session(folder)
+    message = s.drag("armchair_1", -1.2, -1.3, 30.0).message
+    [entry] = entries(folder)
+    assert entry.operation == "move" and entry.focus == "armchair_1" and message.startswith("edit 1")
+    after = folder.load()
+    chair = after.get("armchair_1")
+    assert (round(chair.position.x, 3), round(chair.position.y, 3), round(chair.yaw, 3)) == (-1.2, -1.3, 30.0)
+    assert all(check(c.relation, after.get(c.source), after.get(c.target)) for c in after.constraints)
+
+
+def test_drag_into_a_collision_snaps_to_a_pose_that_fits(folder):
+    s = session(folder)
+    result = s.drag("armchair_1", 0.0, 1.5, 0.0)  # right onto the sofa
+    assert result.committed and "snapped" in result.message
+    after = folder.load()
+    chair = after.get("armchair_1")
+    assert (chair.position.x, chair.position.y) != (0.0, 1.5)
+    assert all(check(c.relation, after.get(c.source), after.get(c.target)) for c in after.constraints)
+    assert len(entries(folder)) == 1
+
+
+def test_drag_with_no_pose_that_fits_changes_nothing(folder):
+    scene = folder.load()  # left of the sofa and right of it: no pose keeps both
+    scene.constraints += [Constraint(relation="left of", source="armchair_1", target="sofa_1"),
+                          Constraint(relation="right of", source="armchair_1", target="sofa_1")]
+    folder.save(scene)
+    before = snapshot(folder.root)
+    result = session(folder).drag("armchair_1", -1.0, -1.5, 0.0)
+    assert not result.committed and "stays where it was" in result.message
+    assert "armchair_1 left of sofa_1" in result.message
+    assert snapshot(folder.root) == before
+
+
+def test_language_edit_undo_redo_and_disk_changes(folder, monkeypatch):
+    s = session(folder)
+    s.backends = Backends(vlm=RulePlanner(), images=s.backends.images, meshes=s.backends.meshes)
+    original = folder.document.read_bytes()
+    entry = s.edit("move the lamp to the left of the sofa")
+    assert entry.number == 1 and check("left of", s.scene.get("floor_lamp_1"), s.scene.get("sofa_1"))
+    assert s.undo().number == 1 and folder.document.read_bytes() == original
+    assert s.redo().number == 1
+    assert not s.changed_on_disk()
+    time.sleep(0.01)
+    assert main(["undo", str(folder.root)]) == 0  # the CLI edits while the editor is open
+    assert s.changed_on_disk()
+    s.reload()
+    assert not s.changed_on_disk() and folder.document.read_bytes() == original
+
+
+def test_studio_command_reports_a_folder_that_is_not_a_scene(tmp_path):
+    assert main(["studio", str(tmp_path)]) == 2
+
+
+def test_without_viser_the_error_names_the_extra(folder, monkeypatch):
+    from scenewright.studio import server
+
+    monkeypatch.setitem(sys.modules, "viser", None)
+    with pytest.raises(MissingExtra, match=r"scenewright\[studio\]"):
+        server.Studio(session(folder))
+
+
+# --- in the browser ----------------------------------------------------------------------------
+
+
+def _free_port() -> int:
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        return sock.getsockname()[1]
+
+
+@pytest.fixture
+def browser():
+    playwright = pytest.importorskip("playwright.sync_api", reason="playwright is not installed (the test extra)")
+    pytest.importorskip("viser", reason="viser is not installed (the studio extra: make install-studio)")
+    if not CHROMIUM.is_file():
+        pytest.skip(f"no chromium at {CHROMIUM}: `make tools` installs it with apt (apt-get install chromium)")
+    with playwright.sync_playwright() as p:
+        launched = p.chromium.launch(
+            executable_path=str(CHROMIUM),
+            args=["--headless=new", "--use-angle=swiftshader", "--enable-unsafe-swiftshader"],
+        )
+        yield launched
+        launched.close()
+
+
+@pytest.mark.slow
+@pytest.mark.timeout(180)
+def test_editor_in_the_browser(folder, browser, tmp_path):
+    """Select (through the editor's server-side API: clicks in software WebGL are not reliable),
+    read the panel, type an edit, undo, reload, redo with the CLI: the page and scene.json agree throughout."""
+    from scenewright.studio.server import Studio
+
+    s = session(folder)
+    s.backends = Backends(vlm=RulePlanner(), images=s.backends.images, meshes=s.backends.meshes)
+    studio = Studio(s, port=_free_port())
+    try:
+        assert studio.url.startswith("http://127.0.0.1:")
+        page = browser.new_page(viewport={"width": 1280, "height": 800})
+        page.goto(studio.url)
+        page.get_by_text("Connected").wait_for(timeout=30_000)
+        studio.select("floor_lamp_1")
+        page.get_by_text("floor_lamp_1 right of sofa_1: held").wait_for(timeout=15_000)
+        assert "size 0.45 × 0.45 × 1.70 m" in page.inner_text("body")
+
+        original = folder.document.read_bytes()
+        typed = "move the lamp to the left of the sofa"
+        page.locator("input.mantine-TextInput-input:visible").fill(typed)  # the Instruction box
+        for _ in range(100):  # the typed value reaches the server before the button is pressed
+            if studio.instruction.value == typed:
+                break
+            time.sleep(0.1)
+        page.get_by_role("button", name="Apply edit").click()
+        page.get_by_text("floor_lamp_1 left of sofa_1: held").wait_for(timeout=30_000)
+        [entry] = entries(folder)
+        assert entry.active and entry.instruction == "move the lamp to the left of the sofa"
+        assert json.loads(folder.document.read_bytes())["objects"] != json.loads(original)["objects"]
+        page.screenshot(path=str(tmp_path / "studio.png"))
+
+        page.get_by_role("button", name="Undo").click()
+        page.get_by_text("undid 1").wait_for(timeout=30_000)
+        assert folder.document.read_bytes() == original and not entries(folder)[0].active
+
+        page.reload()
+        page.get_by_text("Connected").wait_for(timeout=30_000)
+        page.get_by_text("floor_lamp_1 right of sofa_1: held").wait_for(timeout=15_000)
+        assert "(undone)" in page.inner_text("body")
+
+        assert main(["redo", str(folder.root)]) == 0  # the CLI changes scene.json: the page follows
+        page.get_by_text("scene.json changed on disk; reloaded").wait_for(timeout=30_000)
+        page.get_by_text("floor_lamp_1 left of sofa_1: held").wait_for(timeout=15_000)
+        assert "(undone)" not in page.inner_text("body")
+    finally:
+        studio.stop()
