@@ -16,7 +16,7 @@ from collections import Counter, defaultdict
 from collections.abc import Callable
 
 from scenewright.analysis.composition import roles
-from scenewright.analysis.composition.footprint import GAP, Footprint, clear, push
+from scenewright.analysis.composition.footprint import GAP, Footprint, push
 from scenewright.analysis.parser import ParsedObject, ParsedRelation
 from scenewright.geometry import front_direction, yaw_towards
 from scenewright.layout import relations as rel
