@@ -93,5 +93,5 @@ def test_a_damaged_history_file_is_bad_input_naming_it(tmp_path, name, content):
     folder.history.mkdir()
     (folder.history / "log.jsonl").write_text("")
     (folder.history / name).write_text(content)
-    with pytest.raises(InputError, match=f"{name} is damaged"):
+    with pytest.raises(InputError, match=f"{name} is broken"):
         undo(folder)

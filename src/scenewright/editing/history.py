@@ -256,9 +256,11 @@ def _restore(folder: SceneFolder, source: Path, current: int) -> Scene:
     """Make the stored version ``source`` the document again, with ``current`` edits in effect."""
     try:
         data = source.read_bytes()
+        scene = Scene.model_validate_json(data)
     except FileNotFoundError:
         raise _broken(folder, source, "missing") from None
-    scene = _checked(data, f"the stored version {source}")
+    except ValidationError as exc:
+        raise _broken(folder, source, describe_validation_error(exc)) from None
     recorded = scene.glb_sha256
     assemble_recorded(scene, folder)
     if recorded is not None and scene.glb_sha256 != recorded:  # another trimesh wrote other bytes
