@@ -3,7 +3,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from scenewright.layout import check, feedback_text, solve
+from scenewright.layout import check, colliding_pairs, feedback_text, solve
 from scenewright.layout.bench import independent_collisions
 from scenewright.layout.problems import planted_problem
 from scenewright.layout.relations import Boxes
@@ -88,17 +88,22 @@ def test_infeasible_constraints_are_reported_with_the_nearest_miss():
     [u] = result.report.unplaced
     assert u.id == "b" and u.reason == "its constraints cannot all hold at once"  # each alone could
     assert {str(f) for f in u.failed} == {"b left of a", "b right of a"}
-    assert "misses by" in u.nearest_miss
-    assert result.objects[1].position == b.position  # unplaced keeps its initial pose
+    # It is placed at its nearest miss: one of the two holds, the other misses by the least.
+    assert u.nearest_miss.startswith("placed at") and "misses by 2.20 m" in u.nearest_miss
+    a2, b2 = result.objects
+    assert check("left of", b2, a2) != check("right of", b2, a2)
+    assert result.posed == {"a", "b"} and colliding_pairs(result.objects) == []
     text = feedback_text(result.report, result.objects)
     assert "Placed 1 of 2" in text and "b left of a; b right of a" in text
 
 
-def test_dependents_of_an_unplaced_object_say_so():
-    objects = [box("a"), box("b", 2), box("c", 4, size=(0.2, 0.2, 0.2))]
-    result = solve(objects, [c("left of", "b", "a"), c("right of", "b", "a"), c("on", "c", "b")])
-    reasons = {u.id: u.reason for u in result.report.unplaced}
-    assert reasons["c"] == "depends on b, which could not be placed"
+def test_dependents_of_an_object_at_its_nearest_miss_are_placed_against_it():
+    objects = [box("a"), box("b", 2), box("c", 4, size=(0.2, 0.2, 0.2)), box("d", -3, size=(0.3, 0.3, 0.3))]
+    result = solve(objects, [c("left of", "b", "a"), c("right of", "b", "a"), c("on", "c", "b"),
+                             c("near", "d", "c")])
+    assert [u.id for u in result.report.unplaced] == ["b"]  # only the real conflict is reported
+    by = {o.id: o for o in result.objects}
+    assert check("on", by["c"], by["b"]) and check("near", by["d"], by["c"])
 
 
 def test_constraints_that_only_hold_outside_the_bounds():
