@@ -134,38 +134,33 @@ def _corners(centre, half, axes) -> np.ndarray:
 def _separation(ca, ha, xa, cb, hb, xb) -> np.ndarray:
     """Largest gap along the four edge normals (> 0: apart; ≤ 0: minus the least overlap)."""
     d = cb - ca
-    gaps = []
-    for axes in (xa, xb):
-        for k in range(2):
-            n = axes[..., k, :]
-            ra = (np.abs(np.sum(xa * n[..., None, :], -1)) * ha).sum(-1)
-            rb = (np.abs(np.sum(xb * n[..., None, :], -1)) * hb).sum(-1)
-            gaps.append(np.abs(np.sum(d * n, -1)) - ra - rb)
-    return np.max(gaps, axis=0)
+    m = np.abs(np.einsum("...ij,...kj->...ik", xa, xb))  # |cos| between A's axis i and B's axis k
+    da = np.abs(np.einsum("...j,...ij->...i", d, xa))
+    db = np.abs(np.einsum("...j,...kj->...k", d, xb))
+    on_a = da - ha - np.einsum("...ik,...k->...i", m, hb)
+    on_b = db - hb - np.einsum("...ik,...i->...k", m, ha)
+    return np.maximum(on_a.max(-1), on_b.max(-1))
 
 
-def _point_segment(p, a, b) -> np.ndarray:
-    ab = b - a
-    t = np.clip(np.sum((p - a) * ab, -1) / np.maximum(np.sum(ab * ab, -1), 1e-300), 0.0, 1.0)
-    return np.linalg.norm(p - (a + t[..., None] * ab), axis=-1)
+def _to_rectangle(points, centre, half, axes) -> np.ndarray:
+    """Distance from each of ``points`` (..., k, 2) to a rectangle (0 inside it)."""
+    local = np.einsum("...kj,...ij->...ki", points - centre[..., None, :], axes)
+    return np.linalg.norm(np.maximum(np.abs(local) - half[..., None, :], 0.0), axis=-1)
 
 
 def _plan_gap(a: Boxes, b: Boxes) -> np.ndarray:
-    """Horizontal distance between two footprints (0 when they overlap or touch)."""
+    """Horizontal distance between two footprints (0 when they overlap or touch).
+
+    Two apart convex shapes are nearest at a corner of one of them, so the gap is the least
+    distance from a corner of either to the other rectangle."""
     ra, rb = _rectangle(a), _rectangle(b)
     if a.foot is None and b.foot is None:  # two axis-aligned rectangles: the direct formula
         dx = np.maximum(0.0, np.abs(rb[0][..., 0] - ra[0][..., 0]) - ra[1][..., 0] - rb[1][..., 0])
         dy = np.maximum(0.0, np.abs(rb[0][..., 1] - ra[0][..., 1]) - ra[1][..., 1] - rb[1][..., 1])
         return np.hypot(dx, dy)
     apart = _separation(*ra, *rb) > 0.0
-    pa, pb = _corners(*ra), _corners(*rb)
-    shape = np.broadcast_shapes(pa.shape, pb.shape)
-    pa, pb = np.broadcast_to(pa, shape), np.broadcast_to(pb, shape)
-    best = np.full(shape[:-2], np.inf)
-    for p, q in ((pa, pb), (pb, pa)):  # each corner against each edge of the other
-        d = _point_segment(p[..., :, None, :], q[..., None, :, :], np.roll(q, -1, axis=-2)[..., None, :, :])
-        best = np.minimum(best, d.min(axis=(-1, -2)))
-    return np.where(apart, best, 0.0)
+    gap = np.minimum(_to_rectangle(_corners(*ra), *rb).min(-1), _to_rectangle(_corners(*rb), *ra).min(-1))
+    return np.where(apart, gap, 0.0)
 
 
 def _footprint_overlap(a: Boxes, b: Boxes) -> np.ndarray:
@@ -232,8 +227,10 @@ def holds(relation: str, src: Boxes, tgt: Boxes) -> np.ndarray:
     """Whether ``relation`` holds for every (broadcast) source/target box pair."""
     if relation == "far":  # strict: the gap must exceed 8 m
         return _plan_gap(src, tgt) > FAR
-    if relation in ("on", "above"):
-        return (_VIOLATION[relation](src, tgt) <= EPS) & _footprint_overlap(src, tgt)
+    if relation == "on":
+        return (np.abs(src.lo[..., 2] - tgt.hi[..., 2]) <= ON_GAP + EPS) & _footprint_overlap(src, tgt)
+    if relation == "above":
+        return (src.lo[..., 2] - tgt.hi[..., 2] >= ABOVE - EPS) & _footprint_overlap(src, tgt)
     return _VIOLATION[relation](src, tgt) <= EPS
 
 

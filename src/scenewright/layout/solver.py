@@ -52,7 +52,7 @@ import numpy as np
 import trimesh
 
 from scenewright.errors import InputError
-from scenewright.geometry import world_box, yaw_towards
+from scenewright.geometry import world_box
 from scenewright.layout import relations as rel
 from scenewright.layout.collision import CollisionWorld, colliding_pairs, resting_pairs
 from scenewright.layout.constraints import clean_constraints, topological_order
@@ -82,6 +82,12 @@ AXIS_YAWS = (0.0, 90.0, 180.0, 270.0)
 
 def _cpu() -> float:
     return time.thread_time()
+
+
+def _yaws_towards(src: np.ndarray, dst: np.ndarray) -> np.ndarray:
+    """:func:`geometry.yaw_towards` for many points at once."""
+    d = np.asarray(dst, dtype=float) - np.asarray(src, dtype=float)
+    return np.degrees(np.arctan2(d[..., 0], -d[..., 1]))
 
 
 @dataclass
@@ -253,7 +259,7 @@ class _Search:
 
     def candidates(self, item: _Item, wide: bool = False) -> _Node | _Failure:
         """The object's candidate poses that meet its constraints and the bounds, nearest first."""
-        centres, yaws, boxes, sat, ok, inside, turns = self.poses(item, wide)
+        centres, yaws, boxes, sat, ok, inside, turns = self.poses(item, "wide" if wide else "normal")
         good = ok & inside
         if not good.any():
             return self.explain(item, boxes, sat, ok, inside)
@@ -263,16 +269,22 @@ class _Search:
                      {f: y[good] for f, y in turns.items()}, wide=wide)
 
     def feasible(self, item: _Item) -> bool:
-        """Whether any candidate pose meets the object's constraints and the bounds."""
-        poses = self.poses(item)
-        return bool(np.any(poses[4] & poses[5]))
+        """Whether any candidate pose meets the object's constraints and the bounds: a sparse
+        set at the model's yaw first (it usually answers), then the full one."""
+        for density in ("probe", "normal"):
+            poses = self.poses(item, density)
+            if np.any(poses[4] & poses[5]):
+                return True
+        return False
 
     def active(self, item: _Item) -> list[tuple[Constraint, int]]:
         """The object's constraints whose targets have a pose (a facing waits for its target)."""
         return [(c, t) for c, t in item.own if self.posed[t]]
 
-    def poses(self, item: _Item, wide: bool = False):
-        """Candidate poses and, per constraint, which of them satisfy it.
+    def poses(self, item: _Item, density: str = "normal"):
+        """Candidate poses and, per constraint, which of them satisfy it. ``density`` is
+        ``"normal"``, ``"wide"`` (farther and denser, when the normal set ran out) or
+        ``"probe"`` (a sparse set at the model's yaw, for forward checking).
 
         Returns (centres, yaws, boxes, per-constraint masks, all-constraints mask, in-bounds
         mask, followers' yaws per candidate).
@@ -288,12 +300,15 @@ class _Search:
         if facing is not None or waiting is not None:
             yaw_choices = (obj.yaw,)
         else:
-            yaw_choices = item.yaws
+            yaw_choices = item.yaws[:1] if density == "probe" else item.yaws
         xy_parts, yaw_parts, cost_parts = [], [], []
         for k, yaw in enumerate(yaw_choices):
             half = rotated_half(item.half, item.tilt, yaw)
             few = k > 0  # turned yaws get a sparser set
-            if wide:
+            if density == "probe":
+                parts = [rel.propose(relation, half, target, anchor, self.rng, n=40, spacing=0.3),
+                         rel.propose(relation, half, target, anchor, self.rng, n=40, spacing=0.8)]
+            elif density == "wide":
                 parts = [rel.propose(relation, half, target, anchor, self.rng, n=450 if few else 900, spacing=0.3)]
                 if self.bounds is not None:
                     parts.append(self.rng.uniform(-self.bounds, self.bounds, size=(300 if few else 600, 2)))
@@ -321,8 +336,7 @@ class _Search:
         flat = np.argsort(cost.ravel(), kind="stable")
         h, xy, yaws = heights[flat // len(xy)], xy[flat % len(xy)], yaws[flat % len(xy)]
         if facing is not None:
-            goal = self.box(facing).centre[:2]
-            yaws = np.array([yaw_towards(p, goal) for p in xy])
+            yaws = _yaws_towards(xy, self.box(facing).centre[:2])
         centres = np.column_stack([xy, h])
         boxes = self.boxes_of(item, centres, yaws)
 
@@ -332,8 +346,7 @@ class _Search:
         turns = {}
         for f in self.followers[item.index]:
             if self.posed[f]:  # it turns to face this candidate: its own relations must survive
-                d = centres[:, :2] - self.pos[f][:2]
-                turns[f] = np.degrees(np.arctan2(d[:, 0], -d[:, 1]))
+                turns[f] = _yaws_towards(self.pos[f][:2], centres[:, :2])
                 ok &= self.still_holds(f, turns[f], exclude=item.index)
         return centres, yaws, boxes, sat, ok, self.inside(boxes), turns
 
@@ -482,7 +495,7 @@ class _Search:
         so the objects placed against it still have a pose to be placed against.
         """
         item = self.items[i]
-        centres, yaws, boxes, _, _, _, turns = self.poses(item, wide=True)
+        centres, yaws, boxes, _, _, _, turns = self.poses(item, "wide")
         pairs = self.pairs(item)
         misses = [
             rel.violations(c.relation, boxes, tb) if tb is not None else rel.violations(c.relation, sb, boxes)
