@@ -76,6 +76,10 @@ ATTEMPT_NODES = 12
 NODES_PER_OBJECT = 80
 #: Distance (m) a turned pose must gain over the model's yaw to be tried first.
 TURN_COST = 0.3
+#: Floor share covered from which candidates include positions flush against others.
+CROWDED = 0.25
+#: Clearance (m) of a position flush against another object.
+FLUSH_GAP = 1e-3
 #: Yaws tried for an object whose orientation nothing fixes, besides the model's.
 AXIS_YAWS = (0.0, 90.0, 180.0, 270.0)
 
@@ -317,6 +321,8 @@ class _Search:
                     rel.propose(relation, half, target, anchor, self.rng, n=80 if few else 160, spacing=0.12),
                     rel.propose(relation, half, target, anchor, self.rng, n=70 if few else 140, spacing=0.45),
                 ]
+            if density != "probe" and relation not in ("on", "above") and self.crowded():
+                parts.append(self.flush(item, half, anchor))
             xy = np.concatenate(parts)
             if self.bounds is not None and np.all(self.bounds >= half[:2]):
                 # Pull outside points onto the bounds' edge: tight rooms need their walls and corners.
@@ -349,6 +355,32 @@ class _Search:
                 turns[f] = _yaws_towards(self.pos[f][:2], centres[:, :2])
                 ok &= self.still_holds(f, turns[f], exclude=item.index)
         return centres, yaws, boxes, sat, ok, self.inside(boxes), turns
+
+    def crowded(self) -> bool:
+        """Whether the floor inside the bounds is so full that free positions are best found
+        flush against what stands there (:data:`CROWDED` of it covered)."""
+        if self.bounds is None:
+            return False
+        ground = self.placed & (self.lo[:, 2] < 0.05)
+        covered = np.prod(self.hi[ground, :2] - self.lo[ground, :2], axis=1).sum()
+        return covered > CROWDED * 4 * np.prod(self.bounds)
+
+    def flush(self, item: _Item, half: np.ndarray, anchor: np.ndarray, near: int = 8) -> np.ndarray:
+        """Positions flush against the walls and the nearest placed objects standing at its
+        height: every pairing of their edges' x and y (and the anchor's), the corner points a
+        packer tries, which leave the floor in the fewest, largest free pieces."""
+        i = item.index
+        others = np.flatnonzero(self.placed & (self.world.lo[:, 2] < 2 * item.half_z))
+        others = others[others != i]
+        if len(others) > near:
+            dist = np.linalg.norm((self.world.lo[others, :2] + self.world.hi[others, :2]) / 2 - anchor[:2], axis=1)
+            others = others[np.argsort(dist, kind="stable")[:near]]
+        lo, hi = self.world.lo[others, :2], self.world.hi[others, :2]
+        gap = half[:2] + FLUSH_GAP  # a hair apart: touching counts as a collision to some checkers
+        edges = np.concatenate([[-self.bounds + half[:2], self.bounds - half[:2]], hi + gap, lo - gap])
+        xs = np.append(edges[:, 0], anchor[0])
+        ys = np.append(edges[:, 1], anchor[1])
+        return np.stack(np.meshgrid(xs, ys), axis=-1).reshape(-1, 2)
 
     def still_holds(self, f: int, yaws: np.ndarray, exclude: int) -> np.ndarray:
         """Whether follower ``f``, turned to each of ``yaws``, keeps its constraints, those of the
@@ -606,31 +638,26 @@ def _restarts(objects, constraints, meshes, bounds, fixed, keep_yaw, seed, start
     has what is left. A rerun puts the objects that gave trouble (left unplaced, or forced
     backjumps) and everything they depend on first — the "squeaky wheel": placed while the
     scene is still empty, they fit — and scatters the other starting anchors a little more
-    each time. A rerun that fails on the same objects for the same reasons ends the search:
-    that is a conflict in the constraints, not bad luck.
+    each time. A run whose every failure is a contradiction among one object's constraints
+    ends the search: no rerun can mend that.
     """
     best = None
     used = 0
     deadline = start + time_limit
     trouble: set[int] = set()
-    last = None
     for attempt in range(RESTARTS):
         search = _Search(objects, constraints, meshes, bounds, fixed, seed + attempt, spread=0.15 * attempt,
                          keep_yaw=keep_yaw)
         budget = node_limit - used
         if attempt < RESTARTS - 1:
             budget = min(budget, ATTEMPT_NODES * len(objects) + 100)
-        report, troubled = _dfs(search, deadline, budget, first=search.ancestors(trouble))
+        report, troubled, inherent = _dfs(search, deadline, budget, first=search.ancestors(trouble))
         trouble |= troubled
         used += report.nodes
         if best is None or _score(report) > _score(best[1]):
             best = (search, report)
-        if report.complete or used >= node_limit or _cpu() > deadline:
+        if report.complete or used >= node_limit or _cpu() > deadline or inherent:
             break
-        outcome = {(u.id, u.reason) for u in report.unplaced}
-        if outcome == last:
-            break
-        last = outcome
         log.info("layout attempt %d left %d unplaced; restarting", attempt + 1, len(report.unplaced))
     best[1].nodes = used
     return best
@@ -642,8 +669,9 @@ def _score(report: LayoutReport) -> tuple[int, int]:
 
 def _dfs(
     search: _Search, deadline: float, node_limit: int, first: set[int] = frozenset()
-) -> tuple[LayoutReport, set[int]]:
-    """One depth-first search; also returns the objects that gave trouble.
+) -> tuple[LayoutReport, set[int], bool]:
+    """One depth-first search; also returns the objects that gave trouble, and whether every
+    failure was a contradiction among one object's constraints.
 
     Objects in ``first`` are placed before the rest (as far as the order allows); among the
     others, larger footprints go first.
@@ -754,7 +782,8 @@ def _dfs(
         for i, f in sorted(failures.items(), key=lambda kv: order.index(kv[0]))
     ]
     troubled = set(failures) | {i for i, n in jumps.items() if n}
-    return LayoutReport(placed=placed, unplaced=unplaced, nodes=count, solver=True), troubled
+    inherent = all(f.inherent for f in failures.values())
+    return LayoutReport(placed=placed, unplaced=unplaced, nodes=count, solver=True), troubled, inherent
 
 
 def _audit(search: _Search, objects, constraints, meshes) -> LayoutReport:
