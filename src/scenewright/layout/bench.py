@@ -155,13 +155,18 @@ def _solve_here(problem: Problem, seed: int, time_limit: float) -> tuple[dict, f
     return score(problem, r.objects, r.constraints, set(r.report.placed), r.posed), cpu
 
 
+def _checkout(tree: Path) -> Path:
+    src = Path(tree) / "src"
+    if not (src / "scenewright").is_dir():
+        raise InputError(f"--baseline {tree}: no src/scenewright there; give the root of a scenewright checkout")
+    return src
+
+
 def _solve_baseline(tree: Path, suite, time_limit: float) -> list[tuple[dict, float]]:
     """Every problem solved by the scenewright in ``tree`` (a checkout with ``src/``), in one
     subprocess; its layouts scored here. Objects it leaves unplaced keep their initial poses
     and are left out of its collision count, as it reports them."""
-    src = tree / "src"
-    if not (src / "scenewright").is_dir():
-        raise InputError(f"--baseline {tree}: no src/scenewright there; give the root of a scenewright checkout")
+    src = _checkout(tree)
     jobs = [([o.model_dump() for o in p.objects], [c.model_dump() for c in p.constraints], p.meshes, p.bounds,
              seed, time_limit) for _, seed, p in suite]
     with tempfile.TemporaryDirectory(prefix="scenewright-bench-baseline-") as tmp:
@@ -202,6 +207,8 @@ def run_hard(sizes: Sequence[int], seeds: int, time_limit: float = 10.0, room_se
     """The hard benchmark: per row (a size, or a dense room's floor share) the share fully solved
     (every object placed, every constraint held, no collision, inside the bounds), median CPU
     seconds, colliding pairs; with ``baseline``, the same for that checkout beside it."""
+    if baseline is not None:
+        _checkout(baseline)  # before the long part
     suite = hard_suite(sizes, seeds, room_seeds)
     here = [_solve_here(p, seed, time_limit) for _, seed, p in suite]
     there = _solve_baseline(Path(baseline), suite, time_limit) if baseline is not None else None

@@ -346,14 +346,15 @@ class _Search:
         centres = np.column_stack([xy, h])
         boxes = self.boxes_of(item, centres, yaws)
 
-        sat = [rel.holds(c.relation, boxes, self.box(t)) for c, t in own]
-        sat += [rel.holds(c.relation, self.box(s), boxes) for c, s in item.reverse]
+        # An object facing this one turns to face each candidate: relations to it are to it turned.
+        turns = {f: _yaws_towards(self.pos[f][:2], centres[:, :2]) for f in self.followers[item.index] if self.posed[f]}
+        sat = [
+            rel.holds(c.relation, boxes, tb) if tb is not None else rel.holds(c.relation, sb, boxes)
+            for c, tb, sb in self.pairs(item, turns, centres)
+        ]
         ok = np.logical_and.reduce(sat) if sat else np.ones(len(xy), dtype=bool)
-        turns = {}
-        for f in self.followers[item.index]:
-            if self.posed[f]:  # it turns to face this candidate: its own relations must survive
-                turns[f] = _yaws_towards(self.pos[f][:2], centres[:, :2])
-                ok &= self.still_holds(f, turns[f], exclude=item.index)
+        for f, y in turns.items():  # and its own relations must survive the turn
+            ok &= self.still_holds(f, y, exclude=item.index)
         return centres, yaws, boxes, sat, ok, self.inside(boxes), turns
 
     def crowded(self) -> bool:
@@ -405,9 +406,17 @@ class _Search:
             boxes.hi[:, :2] <= self.bounds + rel.EPS, axis=1
         )
 
-    def pairs(self, item: _Item) -> list[tuple[Constraint, Boxes | None, Boxes | None]]:
-        """The object's constraints with the other side's box: (constraint, target box, source box)."""
-        return [(c, self.box(t), None) for c, t in self.active(item)] + [
+    def pairs(self, item: _Item, turns=None, centres=None) -> list[tuple[Constraint, Boxes | None, Boxes | None]]:
+        """The object's constraints with the other side's box: (constraint, target box, source box);
+        a target that ``turns`` to face each of ``centres`` with its boxes so turned."""
+        turns = turns or {}
+
+        def target(t):
+            if t not in turns:
+                return self.box(t)
+            return self.boxes_of(self.items[t], np.broadcast_to(self.pos[t], centres.shape), turns[t])
+
+        return [(c, target(t), None) for c, t in self.active(item)] + [
             (c, None, self.box(s)) for c, s in item.reverse
         ]
 
@@ -528,7 +537,7 @@ class _Search:
         """
         item = self.items[i]
         centres, yaws, boxes, _, _, _, turns = self.poses(item, "wide")
-        pairs = self.pairs(item)
+        pairs = self.pairs(item, turns, centres)
         misses = [
             rel.violations(c.relation, boxes, tb) if tb is not None else rel.violations(c.relation, sb, boxes)
             for c, tb, sb in pairs
