@@ -70,6 +70,8 @@ CHUNK = 64
 #: Poses of one object forward checking may first reject; doubled each time the object is
 #: jumped back into.
 FORWARD_REJECTS = 32
+#: The most poses forward checking may reject in one go, however often it was jumped back into.
+MAX_REJECTS = 128
 #: Search nodes per object each of the first searches may use; the last one gets what is left
 #: of the whole budget, :data:`NODES_PER_OBJECT` per object.
 ATTEMPT_NODES = 12
@@ -112,7 +114,8 @@ class _Failure:
     reason: str
     failed: list[Constraint]
     nearest: str | None = None
-    #: No move of another object can help: the constraints contradict each other.
+    #: No move of another object can help: the constraints contradict each other, or it is
+    #: placed against an object that stands at its nearest miss.
     inherent: bool = False
 
 
@@ -196,6 +199,11 @@ class _Search:
         for s in range(n):
             for t in sorted({t for _, t in own[s]}):
                 self.dependents[t].append(s)
+        #: Objects placed at their nearest miss, violating their constraints.
+        self.missed: set[int] = set()
+        #: (object, target, target's yaw) -> the object's constraints to that target if they
+        #: contradict each other, else None.
+        self.contradictions: dict[tuple[int, int, float], list[Constraint] | None] = {}
         #: Per object, the placed objects that face it and turn when it is placed.
         self.followers: dict[int, list[int]] = {i: [] for i in range(n)}
         for i in self.fixed:
@@ -251,7 +259,13 @@ class _Search:
 
     def take(self, i: int) -> None:
         self.placed[i] = self.posed[i] = False
+        self.missed.discard(i)
         self.world.remove(i)
+
+    def downstream(self, item: _Item) -> bool:
+        """Whether the object is placed against one at its nearest miss: its own trouble follows
+        from that conflict, and moving other objects is no cure."""
+        return any(t in self.missed for _, t in item.own)
 
     def box(self, i: int) -> Boxes:
         return Boxes(self.lo[i], self.hi[i], self.yaw[i], self.items[i].foot)
@@ -275,7 +289,7 @@ class _Search:
     def feasible(self, item: _Item) -> bool:
         """Whether any candidate pose meets the object's constraints and the bounds: a sparse
         set at the model's yaw first (it usually answers), then the full one."""
-        for density in ("probe", "normal"):
+        for density in ("probe", "check"):
             poses = self.poses(item, density)
             if np.any(poses[4] & poses[5]):
                 return True
@@ -285,17 +299,20 @@ class _Search:
         """The object's constraints whose targets have a pose (a facing waits for its target)."""
         return [(c, t) for c, t in item.own if self.posed[t]]
 
-    def poses(self, item: _Item, density: str = "normal"):
+    def poses(self, item: _Item, density: str = "normal", anchor: np.ndarray | None = None, bounded: bool = True):
         """Candidate poses and, per constraint, which of them satisfy it. ``density`` is
-        ``"normal"``, ``"wide"`` (farther and denser, when the normal set ran out) or
-        ``"probe"`` (a sparse set at the model's yaw, for forward checking).
+        ``"normal"``, ``"wide"`` (farther and denser, when the normal set ran out), ``"probe"``
+        (a sparse set at the model's yaw) or ``"check"`` (sparser than normal): the last two for
+        forward checking.
 
         Returns (centres, yaws, boxes, per-constraint masks, all-constraints mask, in-bounds
-        mask, followers' yaws per candidate).
+        mask, followers' yaws per candidate). ``anchor`` replaces the object's own; ``bounded=False``
+        ignores the bounds.
         """
         obj = item.obj
         own = self.active(item)
-        anchor = self.anchor[item.index]
+        anchor = self.anchor[item.index] if anchor is None else anchor
+        bounds = self.bounds if bounded else None
         ranked = sorted(own, key=lambda ct: rel.PRIORITY[ct[0].relation])
         primary = ranked[0] if ranked else None
         relation, target = (primary[0].relation, self.box(primary[1])) if primary else ("face to", None)
@@ -314,19 +331,22 @@ class _Search:
                          rel.propose(relation, half, target, anchor, self.rng, n=40, spacing=0.8)]
             elif density == "wide":
                 parts = [rel.propose(relation, half, target, anchor, self.rng, n=450 if few else 900, spacing=0.3)]
-                if self.bounds is not None:
-                    parts.append(self.rng.uniform(-self.bounds, self.bounds, size=(300 if few else 600, 2)))
+                if bounds is not None:
+                    parts.append(self.rng.uniform(-bounds, bounds, size=(300 if few else 600, 2)))
             else:
+                scale = 0.5 if density == "check" else 1.0
                 parts = [
-                    rel.propose(relation, half, target, anchor, self.rng, n=80 if few else 160, spacing=0.12),
-                    rel.propose(relation, half, target, anchor, self.rng, n=70 if few else 140, spacing=0.45),
+                    rel.propose(relation, half, target, anchor, self.rng, n=int(scale * (80 if few else 160)),
+                                spacing=0.12 / np.sqrt(scale)),
+                    rel.propose(relation, half, target, anchor, self.rng, n=int(scale * (70 if few else 140)),
+                                spacing=0.45 / np.sqrt(scale)),
                 ]
-            if density != "probe" and relation not in ("on", "above") and self.crowded():
+            if density != "probe" and bounded and relation not in ("on", "above") and self.crowded():
                 parts.append(self.flush(item, half, anchor))
             xy = np.concatenate(parts)
-            if self.bounds is not None and np.all(self.bounds >= half[:2]):
+            if bounds is not None and np.all(bounds >= half[:2]):
                 # Pull outside points onto the bounds' edge: tight rooms need their walls and corners.
-                xy = np.clip(xy, -self.bounds + half[:2], self.bounds - half[:2])
+                xy = np.clip(xy, -bounds + half[:2], bounds - half[:2])
             key = np.round(xy, 4) @ np.array([1.0, 1j])
             _, first = np.unique(key, return_index=True)
             xy = xy[np.sort(first)]
@@ -435,10 +455,34 @@ class _Search:
             reason = "its constraints cannot all hold at once, with the objects facing it turned"
         else:
             reason = "its constraints cannot all hold at once"
-        # Relations to one object hold or fail wherever that object stands: moving it cannot help.
-        others = {t for _, t in self.active(item)} | {s for _, s in item.reverse}
-        inherent = not ok.any() and len(others) == 1 and not any(self.posed[f] for f in self.followers[item.index])
-        return _Failure(reason, [c for c, _, _ in pairs], inherent=inherent)
+        conflict = self.contradiction(item) if not ok.any() else None
+        if conflict is not None:
+            return _Failure(reason, conflict, inherent=True)
+        return _Failure(reason, [c for c, _, _ in pairs])
+
+    def contradiction(self, item: _Item) -> list[Constraint] | None:
+        """Constraints to one object that no pose meets together, or None. Relations between two
+        objects do not change when both move together, so moving that object cannot help: it is
+        a conflict in the constraints, and the report names only these."""
+        groups: dict[int, list[tuple[Constraint, int]]] = {}
+        for c, t in self.active(item):
+            groups.setdefault(t, []).append((c, t))
+        for t, group in groups.items():
+            if len(group) < 2:
+                continue
+            key = (item.index, t, round(float(self.yaw[t]) % 360.0, 3))
+            if key not in self.contradictions:
+                saved = self.followers[item.index]
+                self.followers[item.index] = []  # as the objects facing it stand
+                try:
+                    probe = replace(item, own=group, reverse=[])
+                    found = self.poses(probe, "wide", anchor=self.box(t).centre, bounded=False)[4].any()
+                finally:
+                    self.followers[item.index] = saved
+                self.contradictions[key] = None if found else [c for c, _ in group]
+            if self.contradictions[key] is not None:
+                return self.contradictions[key]
+        return None
 
     def alone(self, item: _Item, constraint: Constraint) -> bool:
         """Whether ``constraint`` on its own has a candidate inside the bounds."""
@@ -496,10 +540,12 @@ class _Search:
         for s in self.dependents[i]:
             item = self.items[s]
             known = self.active(item)
-            if self.posed[s] or (len(known) < 2 and self.bounds is None):
+            if self.posed[s] or (len(known) < 2 and self.bounds is None) or self.downstream(item):
                 continue
             if self.feasible(replace(item, own=known)):
                 continue
+            if self.contradiction(replace(item, own=known)) is not None:
+                continue  # no pose of anything helps it; it will be placed at its nearest miss
             node.conflict.update(t for _, t in known if t != i)
             rest = replace(item, own=[(c, t) for c, t in known if t != i])
             if not self.feasible(rest):
@@ -564,6 +610,8 @@ class _Search:
         ]
         if self.bounds is not None and self.outside_by(boxes)[j] > 0:
             detail.append(f"outside the bounds by {self.outside_by(boxes)[j]:.2f} m")
+        if self.downstream(item):
+            failure = replace(failure, inherent=True)
         for f in list(node.turns):
             if not self.still_holds(f, node.turns[f][k : k + 1], exclude=i)[0]:
                 del node.turns[f]  # it stays as it is, not facing this object
@@ -571,6 +619,7 @@ class _Search:
         self.place_at(node, k)
         if not detail:
             return None, node.cursor  # the wider set found a pose that meets everything
+        self.missed.add(i)
         nearest = f"placed at ({p[0]:.2f}, {p[1]:.2f}, {p[2]:.2f}): " + "; ".join(detail)
         return replace(failure, nearest=nearest), node.cursor
 
@@ -749,7 +798,7 @@ def _dfs(
             conflict, failure = node.conflict | search.ancestors({i}) - {i}, None
             conflict |= set(search.followers[i])
         culprits = {j for j in conflict if j in depth_of and search.placed[j]}
-        if limited or not culprits or jumps[i] >= MAX_JUMPS:
+        if limited or not culprits or jumps[i] >= MAX_JUMPS or search.downstream(search.items[i]):
             if fallback is not None:  # the dependents will report their own failure
                 place(i, node, fallback)
                 continue
@@ -780,7 +829,8 @@ def _dfs(
         target = nodes[back]
         assert target is not None, "a placed object has its node"
         target.conflict |= culprits - {j}
-        target.reject_allowance = target.forward_rejects + 2 * target.reject_allowance
+        target.reject_allowance = min(target.forward_rejects + 2 * target.reject_allowance,
+                                      target.forward_rejects + MAX_REJECTS)
         # Move the culprit clear of where it was, farther each time this object fails.
         reach = max(0.15, float(max(half[0], half[1]))) * jumps[i]
         target.avoid.append((search.pos[j][:2].copy(), reach))
@@ -791,7 +841,7 @@ def _dfs(
         for i, f in sorted(failures.items(), key=lambda kv: order.index(kv[0]))
     ]
     troubled = set(failures) | {i for i, n in jumps.items() if n}
-    inherent = all(f.inherent for f in failures.values())
+    inherent = all(f.inherent or search.downstream(search.items[i]) for i, f in failures.items())
     return LayoutReport(placed=placed, unplaced=unplaced, nodes=count, solver=True), troubled, inherent
 
 
