@@ -70,11 +70,13 @@ CHUNK = 64
 #: Poses of one object forward checking may first reject; doubled each time the object is
 #: jumped back into.
 FORWARD_REJECTS = 32
+#: Radius (m) around a pose forward checking rejected in which no other pose is tried.
+REJECT_SPREAD = 0.2
 #: The most poses forward checking may reject in one go, however often it was jumped back into.
 MAX_REJECTS = 128
 #: Search nodes per object each of the first searches may use; the last one gets what is left
 #: of the whole budget, :data:`NODES_PER_OBJECT` per object.
-ATTEMPT_NODES = 12
+ATTEMPT_NODES = 6
 NODES_PER_OBJECT = 80
 #: Distance (m) a turned pose must gain over the model's yaw to be tried first.
 TURN_COST = 0.3
@@ -508,8 +510,10 @@ class _Search:
             node.cursor += 1
             if k % CHUNK == 0:  # broad phase for the next chunk of candidates
                 node.hits = self.world.overlaps(node.columns, node.lo[k : k + CHUNK], node.hi[k : k + CHUNK])
-            if any(np.linalg.norm(node.centres[k, :2] - p) < d for p, d in node.avoid):
-                continue
+            if node.avoid:
+                where = np.array([p for p, _ in node.avoid])
+                if np.any(np.linalg.norm(where - node.centres[k, :2], axis=1) < [d for _, d in node.avoid]):
+                    continue
             touching = node.columns[node.hits[k % CHUNK]]
             if len(touching) == 0:
                 return k
@@ -779,6 +783,8 @@ def _dfs(
                 if verdict == "ok":
                     break
                 fallback = k if fallback is None else fallback
+                # Its neighbours would most likely fail the same way: look a little farther.
+                node.avoid.append((node.centres[k, :2].copy(), REJECT_SPREAD))
                 if verdict == "hopeless" or node.forward_rejects >= node.reject_allowance:
                     k = None
                     break
