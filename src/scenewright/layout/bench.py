@@ -127,10 +127,11 @@ def hard_suite(sizes: Sequence[int], seeds: int, room_seeds: int = 3) -> list[tu
     return suite
 
 
-def score(problem: Problem, objects: Sequence[SceneObject], constraints: Sequence[Constraint],
-          placed: set[str], posed: set[str]) -> dict:
-    """One solved problem, checked independently: constraints by the relations' one definition,
-    collisions by trimesh's manager among the objects the solver gave a pose, bounds by box."""
+def score(problem: Problem, objects: Sequence[SceneObject], placed: set[str], posed: set[str]) -> dict:
+    """One solved problem, checked independently against the problem's own constraints (one a
+    solver dropped counts as missed): constraints by the relations' one definition, collisions
+    by trimesh's manager among the objects the solver gave a pose, bounds by box."""
+    constraints = problem.constraints
     by_id = {o.id: o for o in objects}
     held = sum(check(c.relation, by_id[c.source], by_id[c.target]) for c in constraints)
     kept = [o for o in objects if o.id in posed]
@@ -152,7 +153,7 @@ def _solve_here(problem: Problem, seed: int, time_limit: float) -> tuple[dict, f
     r = solve(problem.objects, problem.constraints, meshes=problem.meshes, bounds=problem.bounds,
               seed=seed, time_limit=time_limit)
     cpu = time.process_time() - start
-    return score(problem, r.objects, r.constraints, set(r.report.placed), r.posed), cpu
+    return score(problem, r.objects, set(r.report.placed), r.posed), cpu
 
 
 def _checkout(tree: Path) -> Path:
@@ -179,10 +180,9 @@ def _solve_baseline(tree: Path, suite, time_limit: float) -> list[tuple[dict, fl
             raise InputError(f"--baseline {tree}: its solver failed:\n{done.stderr[-2000:]}")
         answers = pickle.loads(taken.read_bytes())
     out = []
-    for (_, _, problem), (objects, constraints, placed, _, cpu) in zip(suite, answers):
+    for (_, _, problem), (objects, _, placed, _, cpu) in zip(suite, answers):
         objects = [SceneObject.model_validate(o) for o in objects]
-        constraints = [Constraint.model_validate(c) for c in constraints]
-        out.append((score(problem, objects, constraints, set(placed), set(placed)), cpu))
+        out.append((score(problem, objects, set(placed), set(placed)), cpu))
     return out
 
 
