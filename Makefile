@@ -46,6 +46,7 @@ test: install tools
 bench: install
 	@mkdir -p bench-results
 	$(BIN)/scenewright bench layout --sizes 15,50,100 --seeds 20 --json | tee bench-results/layout.json
+	$(BIN)/scenewright bench layout --hard --seeds 10 --json | tee bench-results/layout-hard.json
 	$(BIN)/scenewright bench pipeline --json | tee bench-results/pipeline.json
 	$(BIN)/scenewright bench analysis --objects 15 --latency 1 --concurrency 4 --json | tee bench-results/analysis.json
 	$(BIN)/scenewright bench eval --out bench-results/eval | tee bench-results/eval.json

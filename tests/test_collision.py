@@ -1,3 +1,4 @@
+import numpy as np
 import trimesh
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -109,3 +110,23 @@ def penetration(objects, meshes, pair) -> float:
     two = [o for o in objects if o.id in pair]
     _, contacts = collision_manager(two, meshes).in_collision_internal(return_data=True)
     return max((c.depth for c in contacts), default=0.0)
+
+
+def test_an_object_that_turns_later_holds_the_room_it_turns_in():
+    from scenewright.layout.collision import CollisionWorld
+
+    chair, crate = box("chair", size=(1.0, 0.4, 1.0)), box("crate", size=(0.3, 0.3, 0.3))
+    world = CollisionWorld([chair, crate])
+
+    def hits(y):
+        centre = np.array([0.0, y, 0.15])
+        lo, hi = world.boxes(1, centre[None], np.zeros(1))
+        near = np.array([0])[world.overlaps(np.array([0]), lo, hi)[0]]
+        return world.colliders(1, centre, 0.0, near)
+
+    world.place(0, np.array([0.0, 0.0, 0.5]), 0.0)
+    assert hits(0.45) == []  # clear of the chair as it stands
+    world.turning_room(0)
+    world.place(0, np.array([0.0, 0.0, 0.5]), 0.0)
+    assert hits(0.45) == [0]  # but not of it turning
+    assert hits(0.70) == []  # its radius is 0.54 m

@@ -64,3 +64,20 @@ def test_topological_order_puts_targets_first():
     assert order.index("table") < order.index("lamp")
     assert topological_order(["b", "a"], []) == ["b", "a"]
     assert topological_order(["b", "a"], [], key={"a": 0, "b": 1}.get) == ["a", "b"]
+
+
+def test_mutual_facing_is_not_a_cycle_but_positional_cycles_still_are():
+    given = [
+        c("face to", "chair1", "chair2"), c("face to", "chair2", "chair1"),
+        c("in front of", "chair1", "table"), c("behind", "chair2", "table"),
+        c("face to", "table", "chair1"),  # closes a cycle with 'chair1 in front of table': still kept
+        c("near", "table", "chair2"),  # closes a positional cycle: dropped
+    ]
+    kept, dropped = clean_constraints(objs("table", "chair1", "chair2"), given)
+    assert [str(k) for k in kept] == [
+        "chair1 face to chair2", "chair2 face to chair1", "chair1 in front of table", "chair2 behind table",
+        "table face to chair1",
+    ]
+    assert [d.constraint["relation"] for d in dropped] == ["near"] and "cycle" in dropped[0].reason
+    order = topological_order(["chair1", "chair2", "table"], kept)
+    assert order.index("table") < order.index("chair1") and order.index("table") < order.index("chair2")

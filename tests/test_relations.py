@@ -153,3 +153,47 @@ def test_proposed_candidates_satisfy_their_relation(relation, tx, ty, sx, sy, ty
         assert ok.all()
     dist = np.linalg.norm(pts - [ax, ay], axis=1)
     assert np.all(np.diff(dist) >= -1e-9)  # nearest to the anchor first
+
+
+def _outline(centre, half, yaw, m=120):
+    t = np.linspace(-1.0, 1.0, m)
+    ones = np.ones(m)
+    local = np.concatenate([
+        np.stack([t * half[0], ones * half[1]], 1), np.stack([t * half[0], -ones * half[1]], 1),
+        np.stack([ones * half[0], t * half[1]], 1), np.stack([-ones * half[0], t * half[1]], 1),
+    ])
+    a = np.radians(yaw)
+    return local @ np.array([[np.cos(a), np.sin(a)], [-np.sin(a), np.cos(a)]]) + centre
+
+
+def _inside(point, centre, half, yaw):
+    a = np.radians(yaw)
+    d = np.asarray(point) - centre
+    local = np.array([d[0] * np.cos(a) + d[1] * np.sin(a), -d[0] * np.sin(a) + d[1] * np.cos(a)])
+    return bool(np.all(np.abs(local) <= half))
+
+
+@settings(max_examples=60, deadline=None)
+@given(coord, coord, dim, dim, st.floats(-180, 180), coord, coord, dim, dim, st.floats(-180, 180))
+def test_near_measures_the_true_footprints_of_turned_objects(x, y, sx, sy, yaw, tx, ty, tsx, tsy, tyaw):
+    s = box("s", x, y, None, (sx, sy, 1.0), yaw)
+    t = box("t", tx, ty, None, (tsx, tsy, 1.0), tyaw)
+    cs, hs, ct, ht = np.array([x, y]), np.array([sx, sy]) / 2, np.array([tx, ty]), np.array([tsx, tsy]) / 2
+    # Brute force: the distance between the two outlines, 0 when one holds the other.
+    gap = np.sqrt(((_outline(cs, hs, yaw)[:, None] - _outline(ct, ht, tyaw)[None]) ** 2).sum(-1)).min()
+    if _inside(cs, ct, ht, tyaw) or _inside(ct, cs, hs, yaw):
+        gap = 0.0
+    tolerance = 0.05 * max(sx, sy, tsx, tsy)  # the outline's sampling step
+    if gap > 2.0 + tolerance:
+        assert not check("near", s, t)
+    if gap < 2.0 - tolerance:
+        assert check("near", s, t)
+    assert violation("near", s, t) == pytest.approx(max(0.0, gap - 2.0), abs=tolerance)
+
+
+def test_a_turned_object_is_near_by_its_footprint_not_its_world_box():
+    # A 4 m beam across the diagonal: its world box comes within 1.44 m of T, the beam itself 3.44 m.
+    beam = box("s", 3.0, 3.0, size=(4.0, 0.2, 1.0), yaw=-45)
+    assert not check("near", beam, T)
+    assert violation("near", beam, T) == pytest.approx(2.5 * np.sqrt(2) - 0.1 - 2.0)
+    assert check("near", box("s", 3.0, 3.0, size=(4.0, 0.2, 1.0), yaw=45), T)  # along the diagonal: 1.54 m

@@ -115,3 +115,20 @@ def test_usage_errors_exit_2_with_the_usage(tmp_path, capsys):
     assert "No such option: --no-such-flag" in err and "scenewright solve --help" in err
     assert main(["solve", o]) == 2
     assert "Missing argument" in flat(capsys.readouterr().err)
+
+
+def test_bench_layout_hard_prints_this_version_per_row(capsys):
+    assert main(["bench", "layout", "--hard", "--sizes", "5", "--seeds", "1", "--room-seeds", "0"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert result["benchmark"] == "layout-hard" and list(result["rows"]) == ["n=5"]
+    row = result["rows"]["n=5"]["this"]
+    assert row["problems"] == 1 and row["colliding_pairs"] == 0 and 0.0 <= row["solved_share"] <= 1.0
+    assert "baseline" not in result["rows"]["n=5"]
+
+
+def test_bench_layout_baseline_needs_hard_and_a_checkout(tmp_path, capsys):
+    assert main(["bench", "layout", "--baseline", str(tmp_path)]) == 2
+    assert "add --hard" in flat(capsys.readouterr().err)
+    assert main(["bench", "layout", "--hard", "--sizes", "3", "--seeds", "1", "--room-seeds", "0",
+                 "--baseline", str(tmp_path)]) == 2
+    assert "no src/scenewright there" in flat(capsys.readouterr().err)

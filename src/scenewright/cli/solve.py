@@ -99,7 +99,7 @@ def solve_command(
     constraints_file: Annotated[Path, typer.Argument(metavar="CONSTRAINTS.json", help="A list of constraints.")],
     output: Annotated[Path, typer.Option("-o", "--output", help="Where to write LAYOUT.json.")],
     bounds: Annotated[str | None, typer.Option("--bounds", help="Scene footprint W,D in metres, centred.")] = None,
-    time_limit: Annotated[float, typer.Option("--time-limit", help="Search time limit, seconds.")] = 10.0,
+    time_limit: Annotated[float, typer.Option("--time-limit", help="Search limit, CPU seconds.")] = 10.0,
     seed: Annotated[int, typer.Option("--seed", help="Candidate sampling seed.")] = 0,
 ) -> None:
     """Place objects so that their constraints hold without collisions; exit 3 if some cannot be."""
@@ -131,19 +131,32 @@ def solve_command(
 
 @bench_app.command("layout")
 def bench_layout(
-    sizes: Annotated[str, typer.Option("--sizes", help="Object counts, comma-separated.")] = "15,50,100",
+    sizes: Annotated[str | None, typer.Option(
+        "--sizes", help="Object counts, comma-separated [default: 15,50,100; with --hard 10,30,60,100,200].")] = None,
     seeds: Annotated[int, typer.Option("--seeds", help="Problems per size.")] = 20,
-    time_limit: Annotated[float, typer.Option("--time-limit", help="Per-problem time limit, seconds.")] = 10.0,
+    time_limit: Annotated[float, typer.Option("--time-limit", help="Per-problem limit, CPU seconds.")] = 10.0,
+    hard: Annotated[bool, typer.Option(
+        "--hard", help="Arbitrary yaws, 2+ relations per object, facing pairs, stacks, dense rooms.")] = False,
+    room_seeds: Annotated[int, typer.Option("--room-seeds", help="With --hard: dense rooms per floor share.")] = 3,
+    baseline: Annotated[Path | None, typer.Option(
+        "--baseline", help="With --hard: also solve every problem with the scenewright checkout at this path.")] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON (the only format).")] = True,
 ) -> None:
     """Solve planted-solution problems; print timings, success, collisions as one JSON object."""
     from scenewright.layout import bench
 
+    text = sizes or ("10,30,60,100,200" if hard else "15,50,100")
     try:
-        counts = [int(s) for s in sizes.split(",")]
+        counts = [int(s) for s in text.split(",")]
     except ValueError:
-        raise InputError(f"--sizes: expected comma-separated integers, got {sizes!r}") from None
-    if not counts or min(counts) < 1 or seeds < 1:
-        raise InputError("--sizes must be positive integers and --seeds at least 1")
+        raise InputError(f"--sizes: expected comma-separated integers, got {text!r}") from None
+    if not counts or min(counts) < 1 or seeds < 1 or room_seeds < 0:
+        raise InputError("--sizes must be positive integers, --seeds at least 1 and --room-seeds at least 0")
+    if baseline is not None and not hard:
+        raise InputError("--baseline compares on the hard problems: add --hard")
     logging.getLogger("scenewright.layout").setLevel(logging.ERROR)
-    typer.echo(json.dumps(bench.run(counts, seeds, time_limit)))
+    if hard:
+        result = bench.run_hard(counts, seeds, time_limit, room_seeds, baseline)
+    else:
+        result = bench.run(counts, seeds, time_limit)
+    typer.echo(json.dumps(result))

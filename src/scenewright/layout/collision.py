@@ -10,6 +10,10 @@ they close, so an object wholly inside a mesh (a crate inside a building, a box 
 cone) meets no triangle: when one broad box holds the other, a point of the inner object is
 tested against the outer mesh by its winding number.
 
+An object the solver will turn later (the source of a ``face to`` whose target is placed after
+it) holds the room it turns in: a vertical cylinder around its shape, so any later yaw is as
+collision-free as the pose that was checked.
+
 Meshes are in the scene-frame asset frame (footprint centred, bottom at z = 0, front −Y) and
 are treated as immutable once handed in.
 """
@@ -87,6 +91,8 @@ class CollisionWorld:
         #: Translation from the box centre to the shape's origin, in the object's own frame.
         self.offset = np.zeros((n, 3))
         self.has_mesh = np.zeros(n, dtype=bool)
+        #: Whether the shape is exactly the (tilted, turned) size box.
+        self.is_box = np.zeros(n, dtype=bool)
         self.meshes: list[trimesh.Trimesh | None] = []
         self.shapes: list[fcl.CollisionObject] = []
         for i, o in enumerate(objects):
@@ -103,6 +109,7 @@ class CollisionWorld:
                 geom = _bvh(mesh)
             else:
                 geom = fcl.Box(*np.maximum(np.array(o.size.tuple()) - 2 * TOUCH, TOUCH))
+                self.is_box[i] = True
             self.local_half[i] = half
             self.shapes.append(fcl.CollisionObject(geom, fcl.Transform()))
         index = {x: i for i, x in enumerate(self.ids)}
@@ -122,7 +129,22 @@ class CollisionWorld:
         return centres - half, centres + half
 
     def _aligned(self, i: int, yaw: float) -> bool:
-        return not self.has_mesh[i] and self.upright[i] and abs(yaw / 90.0 - round(yaw / 90.0)) < 1e-9
+        return self.is_box[i] and self.upright[i] and abs(yaw / 90.0 - round(yaw / 90.0)) < 1e-9
+
+    def turning_room(self, i: int) -> None:
+        """Make ``i``'s shape the vertical cylinder it sweeps turning about its centre."""
+        mesh = self.meshes[i]
+        if mesh is not None:
+            points = np.asarray(mesh.vertices) @ self.tilt[i].T + self.tilt[i] @ self.offset[i]
+        else:
+            corners = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]) * self.local_half[i]
+            points = corners @ self.tilt[i].T
+        radius = float(np.max(np.hypot(points[:, 0], points[:, 1])))
+        half_z = float(np.max(np.abs(points[:, 2])))
+        self.shapes[i] = fcl.CollisionObject(fcl.Cylinder(radius, 2 * max(half_z - TOUCH, TOUCH)), fcl.Transform())
+        self.meshes[i], self.has_mesh[i], self.is_box[i] = None, False, False
+        self.tilt[i], self.upright[i], self.offset[i] = np.eye(3), True, 0.0
+        self.local_half[i] = (radius, radius, half_z)
 
     def _pose(self, i: int, centre: np.ndarray, yaw: float) -> None:
         r = _yaw_rotation(self.tilt[i], yaw)

@@ -6,6 +6,11 @@ crash: each bad entry is dropped and reported (:class:`~scenewright.scene.Droppe
 so the report can go back to the model. Cycles are broken deterministically: constraints are
 admitted by relation priority (vertical first, then relative, then the rest) and then input
 order, and one that would close a cycle is dropped.
+
+Only positional relations make cycles. ``face to`` turns its source and places nothing, so
+two chairs facing each other, or a couple at a table, is satisfiable: a ``face to`` orders
+placement (target first) where it can, and where it would close a cycle it is kept without
+ordering anything; the solver then turns its source when the target is placed.
 """
 
 from __future__ import annotations
@@ -73,26 +78,43 @@ def clean_constraints(
 def break_cycles(
     constraints: list[Constraint], first: Collection[tuple[str, str, str]] = ()
 ) -> tuple[list[Constraint], list[tuple[Constraint, list[str]]]]:
-    """Admit constraints by (priority, input order); drop one whose target depends on its source,
-    with the path that makes the cycle. Keys in ``first`` are admitted before all others: an
-    edit's new constraints win over the old ones they contradict."""
-    # Edge target -> source: the target is placed first.
-    after: dict[str, set[str]] = {}
+    """Admit constraints by (priority, input order); drop a positional one whose target depends on
+    its source, with the path that makes the cycle. Keys in ``first`` are admitted before all
+    others: an edit's new constraints win over the old ones they contradict. ``face to`` is never
+    dropped (see the module docstring)."""
+    ordering, cyclic = _admit(constraints, first)
+    keep = ordering | {i for i, c in enumerate(constraints) if c.relation == "face to"}
+    dropped = [(c, path) for i, c, path in cyclic if c.relation != "face to"]
+    return [c for i, c in enumerate(constraints) if i in keep], dropped
+
+
+def _admit(
+    constraints: Sequence[Constraint], first: Collection[tuple[str, str, str]] = ()
+) -> tuple[set[int], list[tuple[int, Constraint, list[str]]]]:
+    """Indices of the constraints that order placement, and the ones that would close a cycle
+    (with its path). Positional relations are admitted first, ``face to`` last, so a facing
+    never costs a positional constraint its place."""
+    after: dict[str, set[str]] = {}  # edge target -> source: the target is placed first
     admitted: set[int] = set()
-    cyclic: list[tuple[Constraint, list[str]]] = []
+    cyclic: list[tuple[int, Constraint, list[str]]] = []
     ranked = sorted(
         range(len(constraints)),
-        key=lambda i: (constraints[i].key() not in first, PRIORITY[constraints[i].relation], i),
+        key=lambda i: (
+            constraints[i].key() not in first,
+            constraints[i].relation == "face to",
+            PRIORITY[constraints[i].relation],
+            i,
+        ),
     )
     for i in ranked:
         c = constraints[i]
         path = _path(after, c.source, c.target)
         if path is not None:
-            cyclic.append((c, [c.source] + path[::-1]))
+            cyclic.append((i, c, [c.source] + path[::-1]))
             continue
         after.setdefault(c.target, set()).add(c.source)
         admitted.add(i)
-    return [c for i, c in enumerate(constraints) if i in admitted], cyclic
+    return admitted, cyclic
 
 
 def _path(after: dict[str, set[str]], start: str, goal: str) -> list[str] | None:
@@ -115,17 +137,21 @@ def topological_order(
 ) -> list[str]:
     """Every target before its sources; among ready objects, smallest ``key`` first.
 
-    ``constraints`` must be acyclic (as :func:`clean_constraints` returns them); constraints
-    naming ids outside ``ids`` are ignored.
+    ``constraints`` must have acyclic positional relations (as :func:`clean_constraints` returns
+    them); a ``face to`` that would close a cycle orders nothing. Constraints naming ids outside
+    ``ids`` are ignored.
     """
     index = {x: i for i, x in enumerate(ids)}
+    inside = [c for c in constraints if c.source in index and c.target in index]
+    ordering, cyclic = _admit(inside)
+    assert all(c.relation == "face to" for _, c, _ in cyclic), "topological_order needs acyclic constraints"
+    constraints = [c for i, c in enumerate(inside) if i in ordering]
     rank = key or index.__getitem__
     indegree = {x: 0 for x in ids}
     after: dict[str, list[str]] = {x: [] for x in ids}
     for c in constraints:
-        if c.source in index and c.target in index:
-            after[c.target].append(c.source)
-            indegree[c.source] += 1
+        after[c.target].append(c.source)
+        indegree[c.source] += 1
     ready = [(rank(x), index[x], x) for x in ids if indegree[x] == 0]
     heapq.heapify(ready)
     order = []

@@ -11,10 +11,13 @@ Decisions where the table leaves room:
 - Relative relations (left of, right of, in front of, behind, side of) compare world boxes
   along one axis only, with the 0.1 m buffer: ``left of`` holds when the source's max x is
   at most the target's min x − 0.1 (a gap of exactly 0.1 m holds).
-- ``near``/``far`` use the horizontal (xy) gap between the two boxes; overlapping boxes have
-  gap 0. ``near`` holds at gap ≤ 2 m, ``far`` at gap > 8 m.
+- ``near``/``far`` use the horizontal (xy) gap between the two objects' true footprints: the
+  rectangles of their size boxes turned by their yaws (a tilted object's footprint is its
+  tilted box's extent in its own yaw frame), not the world boxes, which grow by up to 41 % when
+  an object turns. Overlapping footprints have gap 0. ``near`` holds at gap ≤ 2 m, ``far`` at
+  gap > 8 m. Collision works on the same turned shapes (:mod:`.collision`).
 - ``on``: the source's bottom is within 2 mm of the target's top (either side) and their
-  footprints overlap with positive area.
+  true footprints overlap with positive area.
 - ``above``: the gap from the source's *bottom* to the target's *top* is at least 2 m, and
   the footprints overlap.
 - ``face to``: the source's front (−Y at yaw 0, :func:`geometry.front_direction`) is within
@@ -45,25 +48,33 @@ EPS = 1e-9
 
 @dataclass(frozen=True)
 class Boxes:
-    """World boxes (``lo``/``hi`` corners, shape (..., 3)) and yaws (degrees, shape (...))."""
+    """World boxes (``lo``/``hi`` corners, shape (..., 3)), yaws (degrees, shape (...)) and
+    footprints: half extents (..., 2) of the plan rectangle in the object's yaw frame. Without
+    ``foot`` the footprint is the world box's own (an axis-aligned shape)."""
 
     lo: np.ndarray
     hi: np.ndarray
     yaw: np.ndarray
+    foot: np.ndarray | None = None
 
     @property
     def centre(self) -> np.ndarray:
         return (self.lo + self.hi) / 2.0
 
     @classmethod
-    def at(cls, centre: np.ndarray, half: np.ndarray, yaw) -> Boxes:
+    def at(cls, centre: np.ndarray, half: np.ndarray, yaw, foot: np.ndarray | None = None) -> Boxes:
         centre = np.asarray(centre, dtype=float)
-        return cls(centre - half, centre + half, np.asarray(yaw, dtype=float))
+        return cls(centre - half, centre + half, np.asarray(yaw, dtype=float), foot)
 
     @classmethod
     def of(cls, obj: SceneObject) -> Boxes:
         lo, hi = world_box(obj)
-        return cls(lo, hi, np.asarray(obj.yaw, dtype=float))
+        return cls(lo, hi, np.asarray(obj.yaw, dtype=float), footprint_half(obj.size, obj.rotation))
+
+    def __getitem__(self, k) -> Boxes:
+        """The boxes selected by an index or mask over the leading axis."""
+        return Boxes(self.lo[k], self.hi[k], np.broadcast_to(self.yaw, self.lo.shape[:-1])[k],
+                     None if self.foot is None else np.broadcast_to(self.foot, self.lo.shape[:-1] + (2,))[k])
 
 
 def half_extents(size: Vec3, rotation: Vec3, yaws=None) -> np.ndarray:
@@ -72,6 +83,11 @@ def half_extents(size: Vec3, rotation: Vec3, yaws=None) -> np.ndarray:
     if yaws is None:
         return np.abs(rotation_matrix(rotation)) @ half
     return rotated_half(half, tilt_matrix(rotation), yaws)
+
+
+def footprint_half(size: Vec3, rotation: Vec3) -> np.ndarray:
+    """Half extents (x, y) of an object's footprint in its own yaw frame (tilt included)."""
+    return rotated_half(np.array(size.tuple()) / 2.0, tilt_matrix(rotation), 0.0)[:2]
 
 
 def tilt_matrix(rotation: Vec3) -> np.ndarray:
@@ -92,17 +108,64 @@ def rotated_half(half: np.ndarray, tilt: np.ndarray, yaws) -> np.ndarray:
 
 # --- shared measures ---------------------------------------------------------------------
 
+def _rectangle(b: Boxes) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A footprint as centre (..., 2), half extents (..., 2) and unit axes (..., 2, 2)."""
+    centre = b.centre[..., :2]
+    if b.foot is None:
+        half = (b.hi[..., :2] - b.lo[..., :2]) / 2.0
+        axes = np.broadcast_to(np.eye(2), centre.shape[:-1] + (2, 2))
+    else:
+        half = np.broadcast_to(b.foot, centre.shape)
+        a = np.radians(np.broadcast_to(b.yaw, centre.shape[:-1]))
+        c, s = np.cos(a), np.sin(a)
+        axes = np.stack([np.stack([c, s], -1), np.stack([-s, c], -1)], -2)  # rows: local x, local y
+    return centre, half, axes
+
+
+_SIGNS = np.array([[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]])  # corners in order
+
+
+def _corners(centre, half, axes) -> np.ndarray:
+    """The rectangle's four corners (..., 4, 2), in order around it."""
+    offsets = (_SIGNS * half[..., None, :]) @ axes
+    return centre[..., None, :] + offsets
+
+
+def _separation(ca, ha, xa, cb, hb, xb) -> np.ndarray:
+    """Largest gap along the four edge normals (> 0: apart; ≤ 0: minus the least overlap)."""
+    d = cb - ca
+    m = np.abs(np.einsum("...ij,...kj->...ik", xa, xb))  # |cos| between A's axis i and B's axis k
+    da = np.abs(np.einsum("...j,...ij->...i", d, xa))
+    db = np.abs(np.einsum("...j,...kj->...k", d, xb))
+    on_a = da - ha - np.einsum("...ik,...k->...i", m, hb)
+    on_b = db - hb - np.einsum("...ik,...i->...k", m, ha)
+    return np.maximum(on_a.max(-1), on_b.max(-1))
+
+
+def _to_rectangle(points, centre, half, axes) -> np.ndarray:
+    """Distance from each of ``points`` (..., k, 2) to a rectangle (0 inside it)."""
+    local = np.einsum("...kj,...ij->...ki", points - centre[..., None, :], axes)
+    return np.linalg.norm(np.maximum(np.abs(local) - half[..., None, :], 0.0), axis=-1)
+
+
 def _plan_gap(a: Boxes, b: Boxes) -> np.ndarray:
-    """Horizontal distance between two boxes' footprints (0 when they overlap)."""
-    dx = np.maximum(0.0, np.maximum(a.lo[..., 0] - b.hi[..., 0], b.lo[..., 0] - a.hi[..., 0]))
-    dy = np.maximum(0.0, np.maximum(a.lo[..., 1] - b.hi[..., 1], b.lo[..., 1] - a.hi[..., 1]))
-    return np.hypot(dx, dy)
+    """Horizontal distance between two footprints (0 when they overlap or touch).
+
+    Two apart convex shapes are nearest at a corner of one of them, so the gap is the least
+    distance from a corner of either to the other rectangle."""
+    ra, rb = _rectangle(a), _rectangle(b)
+    if a.foot is None and b.foot is None:  # two axis-aligned rectangles: the direct formula
+        dx = np.maximum(0.0, np.abs(rb[0][..., 0] - ra[0][..., 0]) - ra[1][..., 0] - rb[1][..., 0])
+        dy = np.maximum(0.0, np.abs(rb[0][..., 1] - ra[0][..., 1]) - ra[1][..., 1] - rb[1][..., 1])
+        return np.hypot(dx, dy)
+    apart = _separation(*ra, *rb) > 0.0
+    gap = np.minimum(_to_rectangle(_corners(*ra), *rb).min(-1), _to_rectangle(_corners(*rb), *ra).min(-1))
+    return np.where(apart, gap, 0.0)
 
 
 def _footprint_overlap(a: Boxes, b: Boxes) -> np.ndarray:
-    ox = np.minimum(a.hi[..., 0], b.hi[..., 0]) - np.maximum(a.lo[..., 0], b.lo[..., 0])
-    oy = np.minimum(a.hi[..., 1], b.hi[..., 1]) - np.maximum(a.lo[..., 1], b.lo[..., 1])
-    return (ox > EPS) & (oy > EPS)
+    """Whether the footprints overlap with positive area."""
+    return _separation(*_rectangle(a), *_rectangle(b)) < -EPS
 
 
 def _footprint_miss(a: Boxes, b: Boxes) -> np.ndarray:
@@ -164,8 +227,10 @@ def holds(relation: str, src: Boxes, tgt: Boxes) -> np.ndarray:
     """Whether ``relation`` holds for every (broadcast) source/target box pair."""
     if relation == "far":  # strict: the gap must exceed 8 m
         return _plan_gap(src, tgt) > FAR
-    if relation in ("on", "above"):
-        return (_VIOLATION[relation](src, tgt) <= EPS) & _footprint_overlap(src, tgt)
+    if relation == "on":
+        return (np.abs(src.lo[..., 2] - tgt.hi[..., 2]) <= ON_GAP + EPS) & _footprint_overlap(src, tgt)
+    if relation == "above":
+        return (src.lo[..., 2] - tgt.hi[..., 2] >= ABOVE - EPS) & _footprint_overlap(src, tgt)
     return _VIOLATION[relation](src, tgt) <= EPS
 
 
@@ -270,9 +335,19 @@ def propose(
     rectangle where it is bounded; every point lies inside the rectangle.
     """
     anchor = np.asarray(anchor, dtype=float)[:2]
+    origin, axes = np.zeros(2), np.eye(2)
+    if relation in ("on", "above") and target is not None and target.foot is not None:
+        # Over a turned target, work in its own frame, where its footprint is a rectangle.
+        origin, _, axes = _rectangle(target)
+        turned = np.abs(axes @ np.array([[half[0], 0.0], [0.0, half[1]]])).sum(-1)  # source box in that frame
+        local = Boxes.at(np.zeros(3), np.append(target.foot, 0.0), 0.0)
+        regions = _region(relation, turned, local)
+    else:
+        regions = _region(relation, half, target)
+    start = (anchor - origin) @ axes.T
     out = []
-    for lo, hi in _region(relation, half, target):
-        base = np.clip(anchor, lo, hi)
+    for lo, hi in regions:
+        base = np.clip(start, lo, hi)
         jitter = rng.uniform(0.0, 2 * np.pi)
         c, s = np.cos(jitter), np.sin(jitter)
         spiral = sunflower(n, spacing) @ np.array([[c, -s], [s, c]])
@@ -280,7 +355,7 @@ def propose(
         if np.all(np.isfinite(hi - lo)):
             pts = np.concatenate([pts, rng.uniform(lo, hi, size=(n // 2, 2))])
         out.append(pts)
-    pts = np.concatenate(out)
+    pts = np.concatenate(out) @ axes + origin
     order = np.argsort(np.linalg.norm(pts - anchor, axis=1), kind="stable")
     return pts[order]
 

@@ -12,9 +12,12 @@ def feedback_text(report: LayoutReport, objects: Sequence[SceneObject]) -> str:
     names = {o.id: o.name for o in objects}
     total = len(report.placed) + len(report.unplaced)
     verb = "Placed" if report.solver else "Initial poses are fine for"
-    lines = [f"{verb} {len(report.placed)} of {total} objects ({report.nodes} nodes, {report.seconds:.2f} s)."]
+    lines = [f"{verb} {len(report.placed)} of {total} objects ({report.nodes} nodes, {report.seconds:.2f} CPU s)."]
     if report.unplaced:
-        lines.append("Could not place:" if report.solver else "Problems with the initial poses:")
+        lines.append(
+            "Could not satisfy (each stands at its nearest miss where a collision-free pose exists):"
+            if report.solver else "Problems with the initial poses:"
+        )
         for u in report.unplaced:
             label = f"{u.id} ({names[u.id]})" if names.get(u.id) and names[u.id] != u.id else u.id
             lines.append(f"- {label}: {u.reason}.")

@@ -12,21 +12,32 @@ box broad phase in batches, fcl for the rest).
 Three things keep the search from blowing up where plain backtracking would:
 
 - Forward checking: a pose is taken only if every object that depends on this one can still
-  meet its constraints on the objects placed so far.
+  meet its constraints on the objects placed so far. How many poses it may reject adapts:
+  each time a later object's failure jumps back into this one, its allowance doubles.
 - Conflict-directed backjumping: when an object has no valid pose, the search jumps back to
   the latest object that blocked it or shaped its candidates (its targets and theirs),
   moves that one clear of where it was, and re-places what came after. Repeated failures
   escalate to earlier culprits, and move them farther.
 - Bounded effort and restarts: each object may cause :data:`MAX_JUMPS` jumps; past that, or
-  past the node or time limit, it is left unplaced with a report and the search goes on.
-  An incomplete run is repeated (up to :data:`RESTARTS`) with the troublesome objects and
-  everything they depend on placed first; the most complete layout wins. A last pass
-  retries unplaced objects over a much wider candidate set.
+  past the work limit, it is given up. An incomplete run is repeated (up to
+  :data:`RESTARTS`) with the troublesome objects and everything they depend on placed first;
+  the most complete layout wins.
 
-Yaw: an object with a ``face to`` constraint is turned to face its target exactly
-(:func:`geometry.yaw_towards`) at each candidate; every other object keeps the model's yaw.
+An object given up on is still placed: at its nearest miss, the collision-free pose (inside
+the bounds where there is one) that violates its constraints least. It is reported with the
+constraints in conflict, and everything placed against it is placed as usual, so one
+contradiction costs one object, not all that depend on it.
+
+Yaw: an object with a ``face to`` is turned to face its target exactly
+(:func:`geometry.yaw_towards`) at each candidate; when that target is placed after it (two
+objects facing each other), it holds the room to turn in and is turned when the target is
+placed. Every other object not named in ``keep_yaw`` is tried at the model's yaw and at the
+four axis yaws (a turn costs :data:`TURN_COST` of distance), so a dense room can be packed.
 Heights follow the paper's ground rule: an object that is not the source of ``on``/``above``
 rests on the ground. ``above`` offers a few heights above its minimum.
+
+The work limit counts search nodes, so the same problem and seed give the same layout on an
+idle and a loaded machine; ``time_limit`` is a backstop in CPU seconds of the solving thread.
 """
 
 from __future__ import annotations
@@ -41,32 +52,63 @@ import numpy as np
 import trimesh
 
 from scenewright.errors import InputError
-from scenewright.geometry import world_box, yaw_towards
+from scenewright.geometry import world_box
 from scenewright.layout import relations as rel
 from scenewright.layout.collision import CollisionWorld, colliding_pairs, resting_pairs
 from scenewright.layout.constraints import clean_constraints, topological_order
-from scenewright.layout.relations import Boxes, half_extents, rotated_half, tilt_matrix
+from scenewright.layout.relations import Boxes, footprint_half, half_extents, rotated_half, tilt_matrix
 from scenewright.scene import Constraint, LayoutReport, SceneObject, UnplacedObject, Vec3
 
 log = logging.getLogger(__name__)
 
-#: Backjumps one object may trigger before it is left unplaced.
+#: Backjumps one object may trigger before it is given up.
 MAX_JUMPS = 10
 #: Searches per solve, until one is complete.
 RESTARTS = 4
 #: Candidates per broad-phase batch.
 CHUNK = 64
-#: Poses of one object forward checking may reject before its other targets must move.
-FORWARD_REJECTS = 24
+#: Poses of one object forward checking may first reject; doubled each time the object is
+#: jumped back into.
+FORWARD_REJECTS = 32
+#: Radius (m) around a pose forward checking rejected in which no other pose is tried.
+REJECT_SPREAD = 0.2
+#: The most poses forward checking may reject in one go, however often it was jumped back into.
+MAX_REJECTS = 128
+#: Search nodes per object each of the first searches may use; the last one gets what is left
+#: of the whole budget, :data:`NODES_PER_OBJECT` per object.
+ATTEMPT_NODES = 6
+NODES_PER_OBJECT = 80
+#: Distance (m) a turned pose must gain over the model's yaw to be tried first.
+TURN_COST = 0.3
+#: Floor share covered from which candidates include positions flush against others.
+CROWDED = 0.25
+#: Clearance (m) of a position flush against another object.
+FLUSH_GAP = 1e-3
+#: Yaws tried for an object whose orientation nothing fixes, besides the model's.
+AXIS_YAWS = (0.0, 90.0, 180.0, 270.0)
+
+
+def _cpu() -> float:
+    return time.thread_time()
+
+
+def _yaws_towards(src: np.ndarray, dst: np.ndarray) -> np.ndarray:
+    """:func:`geometry.yaw_towards` for many points at once."""
+    d = np.asarray(dst, dtype=float) - np.asarray(src, dtype=float)
+    return np.degrees(np.arctan2(d[..., 0], -d[..., 1]))
 
 
 @dataclass
 class LayoutResult:
-    """Copies of the objects with solved poses, the cleaned constraints, and the report."""
+    """Copies of the objects with solved poses, the cleaned constraints, and the report.
+
+    ``posed`` holds the ids the solver gave a collision-free pose: every placed object and each
+    unplaced one put at its nearest miss (the rest keep their initial pose)."""
 
     objects: list[SceneObject]
     constraints: list[Constraint]
     report: LayoutReport
+    posed: set[str] = field(default_factory=set)
 
 
 @dataclass
@@ -74,6 +116,9 @@ class _Failure:
     reason: str
     failed: list[Constraint]
     nearest: str | None = None
+    #: No move of another object can help: the constraints contradict each other, or it is
+    #: placed against an object that stands at its nearest miss.
+    inherent: bool = False
 
 
 @dataclass
@@ -85,8 +130,10 @@ class _Item:
     half: np.ndarray  # half size, local
     tilt: np.ndarray  # rotation without yaw
     half_z: float
+    foot: np.ndarray  # footprint half extents in its own yaw frame
     own: list[tuple[Constraint, int]]  # this object is the source; (constraint, target)
     reverse: list[tuple[Constraint, int]]  # a fixed object is the source; (constraint, source)
+    yaws: tuple[float, ...]  # yaws it may take when no facing decides
 
 
 @dataclass
@@ -97,22 +144,26 @@ class _Node:
     lo: np.ndarray  # broad-phase boxes of the candidates
     hi: np.ndarray
     columns: np.ndarray  # placed objects the broad phase looks at
+    turns: dict[int, np.ndarray] = field(default_factory=dict)  # follower -> its yaw per candidate
     hits: np.ndarray | None = None  # candidates × columns, filled a chunk at a time
     cursor: int = 0
     conflict: set[int] = field(default_factory=set)
     blockers: Counter = field(default_factory=Counter)
     avoid: list[tuple[np.ndarray, float]] = field(default_factory=list)
     forward_rejects: int = 0
+    reject_allowance: int = FORWARD_REJECTS
+    wide: bool = False  # drawn from the wide set, after the usual one ran out
 
 
 class _Search:
     """One search's state: the poses placed so far, their collision world, the candidates."""
 
-    def __init__(self, objects, constraints, meshes, bounds, fixed, seed, spread=0.0):
+    def __init__(self, objects, constraints, meshes, bounds, fixed, seed, spread=0.0, keep_yaw=()):
         self.objects = list(objects)
         self.index = {o.id: i for i, o in enumerate(self.objects)}
         self.bounds = None if bounds is None else np.asarray(bounds, dtype=float) / 2.0
         self.rng = np.random.default_rng(seed)
+        self.meshes = meshes or {}
         self.world = CollisionWorld(self.objects, meshes, resting_pairs(constraints))
         n = len(self.objects)
         self.pos = np.array([o.position.tuple() for o in self.objects]).reshape(n, 3)
@@ -122,7 +173,10 @@ class _Search:
         self.yaw = np.array([o.yaw for o in self.objects], dtype=float)
         self.lo = np.zeros((n, 3))
         self.hi = np.zeros((n, 3))
+        #: In the collision world.
         self.placed = np.zeros(n, dtype=bool)
+        #: Has a pose others may be placed against (placed, or given up at its initial pose).
+        self.posed = np.zeros(n, dtype=bool)
         self.fixed = {self.index[x] for x in fixed}
         own: dict[int, list] = {i: [] for i in range(n)}
         reverse: dict[int, list] = {i: [] for i in range(n)}
@@ -132,20 +186,53 @@ class _Search:
                 own[s].append((c, t))
             elif t not in self.fixed:
                 reverse[t].append((c, s))
-        self.items = {
-            i: _Item(
+        keep = set(keep_yaw)
+        self.items = {}
+        for i, o in enumerate(self.objects):
+            facing = any(c.relation == "face to" for c, _ in own[i])
+            yaws = (o.yaw,) if facing or o.id in keep or i in self.fixed else self._yaw_options(o)
+            self.items[i] = _Item(
                 i, o, np.array(o.size.tuple()) / 2, tilt_matrix(o.rotation),
-                float(half_extents(o.size, o.rotation)[2]), own[i], reverse[i],
+                float(half_extents(o.size, o.rotation)[2]), footprint_half(o.size, o.rotation),
+                own[i], reverse[i], yaws,
             )
-            for i, o in enumerate(self.objects)
-        }
-        #: Objects with a constraint on each object, for forward checking.
+        #: Objects with a constraint on each object, for forward checking and re-checks.
         self.dependents: dict[int, list[int]] = {i: [] for i in range(n)}
         for s in range(n):
             for t in sorted({t for _, t in own[s]}):
                 self.dependents[t].append(s)
+        #: Objects placed at their nearest miss, violating their constraints.
+        self.missed: set[int] = set()
+        #: (object, target, target's yaw) -> the object's constraints to that target if they
+        #: contradict each other, else None.
+        self.contradictions: dict[tuple[int, int, float], list[Constraint] | None] = {}
+        #: Per object, the placed objects that face it and turn when it is placed.
+        self.followers: dict[int, list[int]] = {i: [] for i in range(n)}
         for i in self.fixed:
             self.put(i, self.pos[i], self.yaw[i])
+
+    def _yaw_options(self, obj: SceneObject) -> tuple[float, ...]:
+        """The model's yaw, then the axis yaws that give a different shape: a half turn of a plain
+        box changes nothing the solver sees, a quarter turn does."""
+        symmetric = obj.id not in self.meshes
+        seen, out = [], []
+        for yaw in (obj.yaw, *AXIS_YAWS):
+            key = yaw % (180.0 if symmetric else 360.0)
+            if not any(min(abs(key - k), abs(abs(key - k) - (180.0 if symmetric else 360.0))) < 1e-6 for k in seen):
+                seen.append(key)
+                out.append(float(yaw))
+        return tuple(out)
+
+    def follow(self, order: list[int]) -> None:
+        """Set up the facings whose target comes later in ``order``: the source turns then."""
+        at = {i: k for k, i in enumerate(order)}
+        for i, item in self.items.items():
+            if i not in at:
+                continue
+            for c, t in item.own:
+                if c.relation == "face to" and at.get(t, -1) > at[i]:
+                    self.followers[t].append(i)
+                    self.world.turning_room(i)
 
     def ancestors(self, ids: set[int]) -> set[int]:
         """``ids`` and every object they depend on, through their constraints' targets."""
@@ -159,95 +246,180 @@ class _Search:
 
     # --- state ---------------------------------------------------------------------------
 
-    def put(self, i: int, centre: np.ndarray, yaw: float) -> None:
+    def set_pose(self, i: int, centre: np.ndarray, yaw: float) -> None:
+        """Record ``i``'s pose for the relations (not the collision world)."""
         item = self.items[i]
         half = rotated_half(item.half, item.tilt, yaw)
         self.pos[i], self.yaw[i] = centre, yaw
         self.lo[i], self.hi[i] = centre - half, centre + half
+        self.posed[i] = True
+
+    def put(self, i: int, centre: np.ndarray, yaw: float) -> None:
+        self.set_pose(i, centre, yaw)
         self.placed[i] = True
         self.world.place(i, centre, yaw)
 
     def take(self, i: int) -> None:
-        self.placed[i] = False
+        self.placed[i] = self.posed[i] = False
+        self.missed.discard(i)
         self.world.remove(i)
 
+    def downstream(self, item: _Item) -> bool:
+        """Whether the object is placed against one at its nearest miss: its own trouble follows
+        from that conflict, and moving other objects is no cure."""
+        return any(t in self.missed for _, t in item.own)
+
     def box(self, i: int) -> Boxes:
-        return Boxes(self.lo[i], self.hi[i], self.yaw[i])
+        return Boxes(self.lo[i], self.hi[i], self.yaw[i], self.items[i].foot)
+
+    def boxes_of(self, item: _Item, centres: np.ndarray, yaws: np.ndarray) -> Boxes:
+        return Boxes.at(centres, rotated_half(item.half, item.tilt, yaws), yaws, item.foot)
 
     # --- candidates ----------------------------------------------------------------------
 
     def candidates(self, item: _Item, wide: bool = False) -> _Node | _Failure:
         """The object's candidate poses that meet its constraints and the bounds, nearest first."""
-        poses = self.poses(item, wide)
-        if isinstance(poses, _Failure):
-            return poses
-        centres, yaws, boxes, sat, ok, inside = poses
+        centres, yaws, boxes, sat, ok, inside, turns = self.poses(item, "wide" if wide else "normal")
         good = ok & inside
         if not good.any():
             return self.explain(item, boxes, sat, ok, inside)
         centres, yaws = centres[good], yaws[good]
         lo, hi = self.world.boxes(item.index, centres, yaws)
-        return _Node(item, centres, yaws, lo, hi, self.world.neighbours(item.index))
+        return _Node(item, centres, yaws, lo, hi, self.world.neighbours(item.index),
+                     {f: y[good] for f, y in turns.items()}, wide=wide)
 
     def feasible(self, item: _Item) -> bool:
-        """Whether any candidate pose meets the object's constraints and the bounds."""
-        poses = self.poses(item)
-        return not isinstance(poses, _Failure) and bool(np.any(poses[4] & poses[5]))
+        """Whether any candidate pose meets the object's constraints and the bounds: a sparse
+        set at the model's yaw first (it usually answers), then the full one."""
+        for density in ("probe", "check"):
+            poses = self.poses(item, density)
+            if np.any(poses[4] & poses[5]):
+                return True
+        return False
 
-    def poses(self, item: _Item, wide: bool = False):
-        """Candidate poses and, per constraint, which of them satisfy it; or why there are none.
+    def active(self, item: _Item) -> list[tuple[Constraint, int]]:
+        """The object's constraints whose targets have a pose (a facing waits for its target)."""
+        return [(c, t) for c, t in item.own if self.posed[t]]
+
+    def poses(self, item: _Item, density: str = "normal", anchor: np.ndarray | None = None, bounded: bool = True):
+        """Candidate poses and, per constraint, which of them satisfy it. ``density`` is
+        ``"normal"``, ``"wide"`` (farther and denser, when the normal set ran out), ``"probe"``
+        (a sparse set at the model's yaw) or ``"check"`` (sparser than normal): the last two for
+        forward checking.
 
         Returns (centres, yaws, boxes, per-constraint masks, all-constraints mask, in-bounds
-        mask), or a failure when a target is not placed.
+        mask, followers' yaws per candidate). ``anchor`` replaces the object's own; ``bounded=False``
+        ignores the bounds.
         """
         obj = item.obj
-        missing = [c for c, t in item.own if not self.placed[t]]
-        if missing:
-            names = sorted({c.target for c in missing})
-            return _Failure(f"depends on {', '.join(names)}, which could not be placed", missing)
-        anchor = self.anchor[item.index]
-        half0 = rotated_half(item.half, item.tilt, obj.yaw)
-        ranked = sorted(item.own, key=lambda ct: rel.PRIORITY[ct[0].relation])
+        own = self.active(item)
+        anchor = self.anchor[item.index] if anchor is None else anchor
+        bounds = self.bounds if bounded else None
+        ranked = sorted(own, key=lambda ct: rel.PRIORITY[ct[0].relation])
         primary = ranked[0] if ranked else None
         relation, target = (primary[0].relation, self.box(primary[1])) if primary else ("face to", None)
-        if wide:
-            parts = [rel.propose(relation, half0, target, anchor, self.rng, n=900, spacing=0.3)]
-            if self.bounds is not None:
-                parts.append(self.rng.uniform(-self.bounds, self.bounds, size=(600, 2)))
+        facing = next((t for c, t in ranked if c.relation == "face to"), None)
+        waiting = next((t for c, t in item.own if c.relation == "face to" and not self.posed[t]), None)
+        if facing is not None or waiting is not None:
+            yaw_choices = (obj.yaw,)
         else:
-            parts = [
-                rel.propose(relation, half0, target, anchor, self.rng, n=160, spacing=0.12),
-                rel.propose(relation, half0, target, anchor, self.rng, n=140, spacing=0.45),
-            ]
-        xy = np.concatenate(parts)
-        if self.bounds is not None and np.all(self.bounds >= half0[:2]):
-            # Pull outside points onto the bounds' edge: tight rooms need their walls and corners.
-            xy = np.clip(xy, -self.bounds + half0[:2], self.bounds - half0[:2])
-        xy = xy[np.argsort(np.linalg.norm(xy - anchor[:2], axis=1), kind="stable")]
-        key = np.round(xy, 4) @ np.array([1.0, 1j])
-        _, first = np.unique(key, return_index=True)
-        xy = xy[np.sort(first)]
+            yaw_choices = item.yaws[:1] if density == "probe" else item.yaws
+        xy_parts, yaw_parts, cost_parts = [], [], []
+        for k, yaw in enumerate(yaw_choices):
+            half = rotated_half(item.half, item.tilt, yaw)
+            few = k > 0  # turned yaws get a sparser set
+            if density == "probe":
+                parts = [rel.propose(relation, half, target, anchor, self.rng, n=40, spacing=0.3),
+                         rel.propose(relation, half, target, anchor, self.rng, n=40, spacing=0.8)]
+            elif density == "wide":
+                parts = [rel.propose(relation, half, target, anchor, self.rng, n=450 if few else 900, spacing=0.3)]
+                if bounds is not None:
+                    parts.append(self.rng.uniform(-bounds, bounds, size=(300 if few else 600, 2)))
+            else:
+                scale = 0.5 if density == "check" else 1.0
+                parts = [
+                    rel.propose(relation, half, target, anchor, self.rng, n=int(scale * (80 if few else 160)),
+                                spacing=0.12 / np.sqrt(scale)),
+                    rel.propose(relation, half, target, anchor, self.rng, n=int(scale * (70 if few else 140)),
+                                spacing=0.45 / np.sqrt(scale)),
+                ]
+            if density != "probe" and bounded and relation not in ("on", "above") and self.crowded():
+                parts.append(self.flush(item, half, anchor))
+            xy = np.concatenate(parts)
+            if bounds is not None and np.all(bounds >= half[:2]):
+                # Pull outside points onto the bounds' edge: tight rooms need their walls and corners.
+                xy = np.clip(xy, -bounds + half[:2], bounds - half[:2])
+            key = np.round(xy, 4) @ np.array([1.0, 1j])
+            _, first = np.unique(key, return_index=True)
+            xy = xy[np.sort(first)]
+            xy_parts.append(xy)
+            yaw_parts.append(np.full(len(xy), yaw))
+            cost_parts.append(np.linalg.norm(xy - anchor[:2], axis=1) + (TURN_COST if k else 0.0))
+        xy, yaws, cost = np.concatenate(xy_parts), np.concatenate(yaw_parts), np.concatenate(cost_parts)
 
         heights = rel.source_heights(relation, item.half_z, target, anchor[2]) if primary else None
         if heights is None:
             heights = np.array([item.half_z])  # the ground rule
-        elif len(heights) > 1:
-            cost = np.linalg.norm(xy - anchor[:2], axis=1)[None] + np.abs(heights - heights[0])[:, None]
-            flat = np.argsort(cost.ravel(), kind="stable")
-            heights, xy = heights[flat // len(xy)], xy[flat % len(xy)]
-        facing = next((t for c, t in ranked if c.relation == "face to"), None)
-        if facing is None:
-            yaws = np.full(len(xy), obj.yaw)
-        else:
-            goal = self.box(facing).centre[:2]
-            yaws = np.array([yaw_towards(p, goal) for p in xy])
-        centres = np.column_stack([xy, np.broadcast_to(heights, len(xy))])
-        boxes = Boxes.at(centres, rotated_half(item.half, item.tilt, yaws), yaws)
+        cost = cost[None] + np.abs(heights - heights[0])[:, None]
+        flat = np.argsort(cost.ravel(), kind="stable")
+        h, xy, yaws = heights[flat // len(xy)], xy[flat % len(xy)], yaws[flat % len(xy)]
+        if facing is not None:
+            yaws = _yaws_towards(xy, self.box(facing).centre[:2])
+        centres = np.column_stack([xy, h])
+        boxes = self.boxes_of(item, centres, yaws)
 
-        sat = [rel.holds(c.relation, boxes, self.box(t)) for c, t in item.own]
-        sat += [rel.holds(c.relation, self.box(s), boxes) for c, s in item.reverse]
+        # An object facing this one turns to face each candidate: relations to it are to it turned.
+        turns = {f: _yaws_towards(self.pos[f][:2], centres[:, :2]) for f in self.followers[item.index] if self.posed[f]}
+        sat = [
+            rel.holds(c.relation, boxes, tb) if tb is not None else rel.holds(c.relation, sb, boxes)
+            for c, tb, sb in self.pairs(item, turns, centres)
+        ]
         ok = np.logical_and.reduce(sat) if sat else np.ones(len(xy), dtype=bool)
-        return centres, yaws, boxes, sat, ok, self.inside(boxes)
+        for f, y in turns.items():  # and its own relations must survive the turn
+            ok &= self.still_holds(f, y, exclude=item.index)
+        return centres, yaws, boxes, sat, ok, self.inside(boxes), turns
+
+    def crowded(self) -> bool:
+        """Whether the floor inside the bounds is so full that free positions are best found
+        flush against what stands there (:data:`CROWDED` of it covered)."""
+        if self.bounds is None:
+            return False
+        ground = self.placed & (self.lo[:, 2] < 0.05)
+        covered = np.prod(self.hi[ground, :2] - self.lo[ground, :2], axis=1).sum()
+        return covered > CROWDED * 4 * np.prod(self.bounds)
+
+    def flush(self, item: _Item, half: np.ndarray, anchor: np.ndarray, near: int = 8) -> np.ndarray:
+        """Positions flush against the walls and the nearest placed objects standing at its
+        height: every pairing of their edges' x and y (and the anchor's), the corner points a
+        packer tries, which leave the floor in the fewest, largest free pieces."""
+        i = item.index
+        others = np.flatnonzero(self.placed & (self.world.lo[:, 2] < 2 * item.half_z))
+        others = others[others != i]
+        if len(others) > near:
+            dist = np.linalg.norm((self.world.lo[others, :2] + self.world.hi[others, :2]) / 2 - anchor[:2], axis=1)
+            others = others[np.argsort(dist, kind="stable")[:near]]
+        lo, hi = self.world.lo[others, :2], self.world.hi[others, :2]
+        gap = half[:2] + FLUSH_GAP  # a hair apart: touching counts as a collision to some checkers
+        edges = np.concatenate([[-self.bounds + half[:2], self.bounds - half[:2]], hi + gap, lo - gap])
+        xs = np.append(edges[:, 0], anchor[0])
+        ys = np.append(edges[:, 1], anchor[1])
+        return np.stack(np.meshgrid(xs, ys), axis=-1).reshape(-1, 2)
+
+    def still_holds(self, f: int, yaws: np.ndarray, exclude: int) -> np.ndarray:
+        """Whether follower ``f``, turned to each of ``yaws``, keeps its constraints, those of the
+        objects placed against it, and the bounds."""
+        item = self.items[f]
+        boxes = self.boxes_of(item, np.broadcast_to(self.pos[f], (len(yaws), 3)), yaws)
+        ok = self.inside(boxes)
+        for c, t in item.own:
+            if t != exclude and self.posed[t] and c.relation != "face to":
+                ok &= rel.holds(c.relation, boxes, self.box(t))
+        for s in self.dependents[f]:
+            if s != exclude and self.posed[s]:
+                for c, t in self.items[s].own:
+                    if t == f:
+                        ok &= rel.holds(c.relation, self.box(s), boxes)
+        return ok
 
     def inside(self, boxes: Boxes) -> np.ndarray:
         if self.bounds is None:
@@ -256,43 +428,75 @@ class _Search:
             boxes.hi[:, :2] <= self.bounds + rel.EPS, axis=1
         )
 
+    def pairs(self, item: _Item, turns=None, centres=None) -> list[tuple[Constraint, Boxes | None, Boxes | None]]:
+        """The object's constraints with the other side's box: (constraint, target box, source box);
+        a target that ``turns`` to face each of ``centres`` with its boxes so turned."""
+        turns = turns or {}
+
+        def target(t):
+            if t not in turns:
+                return self.box(t)
+            return self.boxes_of(self.items[t], np.broadcast_to(self.pos[t], centres.shape), turns[t])
+
+        return [(c, target(t), None) for c, t in self.active(item)] + [
+            (c, None, self.box(s)) for c, s in item.reverse
+        ]
+
     def explain(self, item: _Item, boxes: Boxes, sat, ok, inside) -> _Failure:
-        """Why no candidate satisfied the constraints and bounds, and the nearest miss."""
-        pairs = [(c, self.box(t), None) for c, t in item.own] + [(c, None, self.box(s)) for c, s in item.reverse]
+        """Why no candidate satisfied the constraints and bounds."""
+        pairs = self.pairs(item)
         never = [c for (c, _, _), s in zip(pairs, sat) if not s.any()]
         # A constraint that fails here may only fail among the primary's candidates: ask its own.
         never = [c for c in never if not self.alone(item, c)]
         if never:
-            reason = "no candidate position satisfies " + "; ".join(f"'{c}'" for c in never)
-            failed = never
-        elif ok.any():
+            return _Failure("no candidate position satisfies " + "; ".join(f"'{c}'" for c in never), never)
+        if ok.any():
             w, d = self.bounds * 2
             reason = f"every position satisfying its constraints lies outside the {w:g} x {d:g} m bounds"
-            failed = [c for c, _, _ in pairs]
+        elif any(self.posed[f] for f in self.followers[item.index]):
+            reason = "its constraints cannot all hold at once, with the objects facing it turned"
         else:
             reason = "its constraints cannot all hold at once"
-            failed = [c for c, _, _ in pairs]
-        misses = [
-            rel.violations(c.relation, boxes, tb) if tb is not None else rel.violations(c.relation, sb, boxes)
-            for c, tb, sb in pairs
-        ]
-        total = np.sum(misses, axis=0) + (0.0 if self.bounds is None else self.outside_by(boxes))
-        k = int(np.argmin(total))
-        p = boxes.centre[k]
-        detail = [
-            f"'{c}' {rel.describe(c.relation, float(m[k]))}" for (c, _, _), m in zip(pairs, misses) if m[k] > 0
-        ]
-        if self.bounds is not None and self.outside_by(boxes)[k] > 0:
-            detail.append(f"outside the bounds by {self.outside_by(boxes)[k]:.2f} m")
-        nearest = f"at ({p[0]:.2f}, {p[1]:.2f}, {p[2]:.2f}): " + ("; ".join(detail) or "all constraints hold")
-        return _Failure(reason, failed, nearest)
+        conflict = self.contradiction(item) if not ok.any() else None
+        if conflict is not None:
+            return _Failure(reason, conflict, inherent=True)
+        return _Failure(reason, [c for c, _, _ in pairs])
+
+    def contradiction(self, item: _Item) -> list[Constraint] | None:
+        """Constraints to one object that no pose meets together, or None. Relations between two
+        objects do not change when both move together, so moving that object cannot help: it is
+        a conflict in the constraints, and the report names only these."""
+        groups: dict[int, list[tuple[Constraint, int]]] = {}
+        for c, t in self.active(item):
+            groups.setdefault(t, []).append((c, t))
+        for t, group in groups.items():
+            if len(group) < 2:
+                continue
+            key = (item.index, t, round(float(self.yaw[t]) % 360.0, 3))
+            if key not in self.contradictions:
+                saved = self.followers[item.index]
+                self.followers[item.index] = []  # as the objects facing it stand
+                try:
+                    probe = replace(item, own=group, reverse=[])
+                    found = self.poses(probe, "wide", anchor=self.box(t).centre, bounded=False)[4].any()
+                finally:
+                    self.followers[item.index] = saved
+                self.contradictions[key] = None if found else [c for c, _ in group]
+            if self.contradictions[key] is not None:
+                return self.contradictions[key]
+        return None
 
     def alone(self, item: _Item, constraint: Constraint) -> bool:
         """Whether ``constraint`` on its own has a candidate inside the bounds."""
         own = [(c, t) for c, t in item.own if c is constraint]
         if not own:
-            return False  # a fixed object's constraint on this one: no generator of its own
-        return self.feasible(replace(item, own=own, reverse=[]))
+            return False  # another object's constraint on this one: no generator of its own
+        probe = replace(item, own=own, reverse=[])
+        saved, self.followers[item.index] = self.followers[item.index], []
+        try:
+            return self.feasible(probe)
+        finally:
+            self.followers[item.index] = saved
 
     def outside_by(self, boxes: Boxes) -> np.ndarray:
         over = np.maximum(boxes.hi[:, :2] - self.bounds, 0.0) + np.maximum(-self.bounds - boxes.lo[:, :2], 0.0)
@@ -306,8 +510,10 @@ class _Search:
             node.cursor += 1
             if k % CHUNK == 0:  # broad phase for the next chunk of candidates
                 node.hits = self.world.overlaps(node.columns, node.lo[k : k + CHUNK], node.hi[k : k + CHUNK])
-            if any(np.linalg.norm(node.centres[k, :2] - p) < d for p, d in node.avoid):
-                continue
+            if node.avoid:
+                where = np.array([p for p, _ in node.avoid])
+                if np.any(np.linalg.norm(where - node.centres[k, :2], axis=1) < [d for _, d in node.avoid]):
+                    continue
             touching = node.columns[node.hits[k % CHUNK]]
             if len(touching) == 0:
                 return k
@@ -317,6 +523,14 @@ class _Search:
             node.conflict.update(blockers)
             node.blockers.update(blockers)
         return None
+
+    def place_at(self, node: _Node, k: int) -> None:
+        """Put ``node``'s object at candidate ``k`` and turn the objects that face it."""
+        self.put(node.item.index, node.centres[k], float(node.yaws[k]))
+        for f, yaws in node.turns.items():
+            self.set_pose(f, self.pos[f], float(yaws[k]))
+            if self.placed[f]:
+                self.world.place(f, self.pos[f], float(yaws[k]))
 
     def forward_check(self, i: int, node: _Node) -> str:
         """Whether every object that depends on ``i`` can still meet its constraints.
@@ -329,11 +543,13 @@ class _Search:
         """
         for s in self.dependents[i]:
             item = self.items[s]
-            known = [(c, t) for c, t in item.own if self.placed[t]]
-            if self.placed[s] or (len(known) < 2 and self.bounds is None):
+            known = self.active(item)
+            if self.posed[s] or (len(known) < 2 and self.bounds is None) or self.downstream(item):
                 continue
             if self.feasible(replace(item, own=known)):
                 continue
+            if self.contradiction(replace(item, own=known)) is not None:
+                continue  # no pose of anything helps it; it will be placed at its nearest miss
             node.conflict.update(t for _, t in known if t != i)
             rest = replace(item, own=[(c, t) for c, t in known if t != i])
             if not self.feasible(rest):
@@ -359,7 +575,57 @@ class _Search:
         if len(node.centres):
             p = node.centres[0]
             nearest = f"at ({p[0]:.2f}, {p[1]:.2f}, {p[2]:.2f}) it would collide with {names}"
-        return _Failure(reason, [c for c, _ in item.own] + [c for c, _ in item.reverse], nearest)
+        return _Failure(reason, [c for c, _, _ in self.pairs(item)], nearest)
+
+    def settle(self, i: int, failure: _Failure) -> tuple[_Failure, int]:
+        """Put an object given up on at its nearest miss; returns its failure and the nodes used.
+
+        The nearest miss is the collision-free pose, inside the bounds if any is, whose summed
+        violation of its constraints is least (a degree of facing counts as a centimetre). With
+        no collision-free pose at all it keeps its initial pose, outside the collision world,
+        so the objects placed against it still have a pose to be placed against.
+        """
+        item = self.items[i]
+        centres, yaws, boxes, _, _, _, turns = self.poses(item, "wide")
+        pairs = self.pairs(item, turns, centres)
+        misses = [
+            rel.violations(c.relation, boxes, tb) if tb is not None else rel.violations(c.relation, sb, boxes)
+            for c, tb, sb in pairs
+        ]
+        scale = [0.01 if c.relation == "face to" else 1.0 for c, _, _ in pairs]
+        total = sum(m * w for m, w in zip(misses, scale)) if misses else np.zeros(len(centres))
+        if self.bounds is not None:
+            total = total + 1e3 * self.outside_by(boxes)
+        for f, yaw in turns.items():  # a follower that cannot turn there misses its facing
+            total = total + 1e3 * ~self.still_holds(f, yaw, exclude=i)
+        order = np.argsort(total, kind="stable")
+        obj = item.obj
+        lo, hi = self.world.boxes(i, centres[order], yaws[order])
+        node = _Node(item, centres[order], yaws[order], lo, hi, self.world.neighbours(i),
+                     {f: y[order] for f, y in turns.items()})
+        k = self.next_free(node)
+        if k is None:
+            self.set_pose(i, np.array(obj.position.tuple()), obj.yaw)
+            log.debug("%s: no collision-free pose at all; it keeps its initial pose", obj.id)
+            return failure, node.cursor
+        p, j = node.centres[k], order[k]
+        detail = [
+            f"'{c}' {rel.describe(c.relation, float(m[j]))}" for (c, _, _), m in zip(pairs, misses) if m[j] > 0
+        ]
+        if self.bounds is not None and self.outside_by(boxes)[j] > 0:
+            detail.append(f"outside the bounds by {self.outside_by(boxes)[j]:.2f} m")
+        if self.downstream(item):
+            failure = replace(failure, inherent=True)
+        for f in list(node.turns):
+            if not self.still_holds(f, node.turns[f][k : k + 1], exclude=i)[0]:
+                del node.turns[f]  # it stays as it is, not facing this object
+                detail.append(f"'{self.objects[f].id} face to {obj.id}' not met: it cannot turn there")
+        self.place_at(node, k)
+        if not detail:
+            return None, node.cursor  # the wider set found a pose that meets everything
+        self.missed.add(i)
+        nearest = f"placed at ({p[0]:.2f}, {p[1]:.2f}, {p[2]:.2f}): " + "; ".join(detail)
+        return replace(failure, nearest=nearest), node.cursor
 
 
 def solve(
@@ -369,6 +635,7 @@ def solve(
     meshes: Mapping[str, trimesh.Trimesh] | None = None,
     bounds: tuple[float, float] | None = None,
     fixed: Iterable[str] = (),
+    keep_yaw: Iterable[str] = (),
     time_limit: float = 10.0,
     node_limit: int | None = None,
     seed: int = 0,
@@ -376,11 +643,15 @@ def solve(
 ) -> LayoutResult:
     """Place every object the constraints allow, collision-free, inside ``bounds`` (W, D).
 
-    Unplaced objects keep their initial pose and are explained in the report. ``fixed`` ids
-    keep their pose and count as placed. ``use_solver=False`` keeps every initial pose and
-    only reports which objects violate their constraints, collide or leave the bounds.
+    An object that cannot meet its constraints is put at its nearest miss and explained in
+    the report; only with no collision-free pose anywhere does it keep its initial pose.
+    ``fixed`` ids keep their pose and count as placed; ``keep_yaw`` ids keep their yaw unless a
+    ``face to`` turns them. ``node_limit`` caps the search work (default
+    :data:`NODES_PER_OBJECT` per object), ``time_limit`` its CPU seconds. ``use_solver=False``
+    keeps every initial pose and only reports which objects violate their constraints,
+    collide or leave the bounds.
     """
-    start = time.perf_counter()
+    start = _cpu()
     objects = list(objects)
     ids = [o.id for o in objects]
     if len(set(ids)) != len(ids):
@@ -397,13 +668,17 @@ def solve(
         search = _Search(objects, cleaned, meshes, bounds, fixed, seed)
         report = _audit(search, objects, cleaned, meshes)
     else:
-        search, report = _restarts(objects, cleaned, meshes, bounds, fixed, seed, start, time_limit, node_limit)
+        if node_limit is None:
+            node_limit = NODES_PER_OBJECT * len(objects) + 1000
+        search, report = _restarts(objects, cleaned, meshes, bounds, fixed, keep_yaw, seed, start, time_limit,
+                                   node_limit)
     report.dropped = dropped
-    report.seconds = round(time.perf_counter() - start, 4)
+    report.seconds = round(_cpu() - start, 4)
     placed = set(report.placed)
+    posed = placed | {u.id for u in report.unplaced if use_solver and search.placed[search.index[u.id]]}
     solved = []
     for i, o in enumerate(objects):
-        if o.id in placed and use_solver:
+        if o.id in posed:
             p, y = search.pos[i], float(search.yaw[i])
             o = o.model_copy(
                 update={"position": Vec3.of(p), "rotation": Vec3(x=o.rotation.x, y=o.rotation.y, z=y)}
@@ -412,50 +687,53 @@ def solve(
             o = o.model_copy(deep=True)
         solved.append(o)
     log.info(
-        "layout: %d placed, %d unplaced, %d nodes, %.3fs",
+        "layout: %d placed, %d unplaced, %d nodes, %.3f CPU s",
         len(report.placed), len(report.unplaced), report.nodes, report.seconds,
     )
-    return LayoutResult(solved, cleaned, report)
+    return LayoutResult(solved, cleaned, report, posed)
 
 
-def _restarts(objects, constraints, meshes, bounds, fixed, seed, start, time_limit, node_limit):
+def _restarts(objects, constraints, meshes, bounds, fixed, keep_yaw, seed, start, time_limit, node_limit):
     """Run the search up to :data:`RESTARTS` times until one places everything; keep the best.
 
-    Every run but the last has a node budget proportional to the object count. A rerun puts
-    the objects that gave trouble (left unplaced, or forced backjumps) and everything they
-    depend on first — the "squeaky wheel": placed while the scene is still empty, they fit
-    — and scatters the other starting anchors a little more each time.
+    Every run but the last has a node budget of :data:`ATTEMPT_NODES` per object; the last
+    has what is left. A rerun puts the objects that gave trouble (left unplaced, or forced
+    backjumps) and everything they depend on first — the "squeaky wheel": placed while the
+    scene is still empty, they fit — and scatters the other starting anchors a little more
+    each time. A run whose every failure is a contradiction among one object's constraints
+    ends the search: no rerun can mend that.
     """
     best = None
     used = 0
     deadline = start + time_limit
     trouble: set[int] = set()
     for attempt in range(RESTARTS):
-        search = _Search(objects, constraints, meshes, bounds, fixed, seed + attempt, spread=0.15 * attempt)
-        budget = None if node_limit is None else node_limit - used
-        stop = deadline
+        search = _Search(objects, constraints, meshes, bounds, fixed, seed + attempt, spread=0.15 * attempt,
+                         keep_yaw=keep_yaw)
+        budget = node_limit - used
         if attempt < RESTARTS - 1:
-            share = 10 * len(objects) + 100
-            budget = share if budget is None else min(budget, share)
-            now = time.perf_counter()
-            stop = now + (deadline - now) / (RESTARTS - attempt)
-        report, troubled = _dfs(search, stop, budget, first=search.ancestors(trouble))
+            budget = min(budget, ATTEMPT_NODES * len(objects) + 100)
+        report, troubled, inherent = _dfs(search, deadline, budget, first=search.ancestors(trouble))
         trouble |= troubled
         used += report.nodes
-        if best is None or len(report.placed) > len(best[1].placed):
+        if best is None or _score(report) > _score(best[1]):
             best = (search, report)
-        out_of_budget = node_limit is not None and used >= node_limit
-        if report.complete or out_of_budget or time.perf_counter() > deadline:
+        if report.complete or used >= node_limit or _cpu() > deadline or inherent:
             break
         log.info("layout attempt %d left %d unplaced; restarting", attempt + 1, len(report.unplaced))
     best[1].nodes = used
     return best
 
 
+def _score(report: LayoutReport) -> tuple[int, int]:
+    return (len(report.placed), -len(report.unplaced))
+
+
 def _dfs(
-    search: _Search, deadline: float, node_limit: int | None, first: set[int] = frozenset()
-) -> tuple[LayoutReport, set[int]]:
-    """One depth-first search; also returns the objects that gave trouble.
+    search: _Search, deadline: float, node_limit: int, first: set[int] = frozenset()
+) -> tuple[LayoutReport, set[int], bool]:
+    """One depth-first search; also returns the objects that gave trouble, and whether every
+    failure was a contradiction among one object's constraints.
 
     Objects in ``first`` are placed before the rest (as far as the order allows); among the
     others, larger footprints go first.
@@ -464,6 +742,7 @@ def _dfs(
     rank = {o.id: (i not in first, -o.size.x * o.size.y) for i, o in enumerate(search.objects)}
     own = [c for item in search.items.values() for c, _ in item.own]
     order = [search.index[x] for x in topological_order(free, own, key=rank.get)]
+    search.follow(order)
     nodes: list[_Node | None] = [None] * len(order)
     failures: dict[int, _Failure] = {}
     depth_of: dict[int, int] = {}
@@ -472,16 +751,14 @@ def _dfs(
     limited = False
     depth = 0
 
-    def place(i: int, centre, yaw) -> None:
+    def place(i: int, node: _Node, k: int) -> None:
         nonlocal depth
-        search.put(i, centre, yaw)
+        search.place_at(node, k)
         depth_of[i] = depth
         depth += 1
 
     while depth < len(order):
-        if not limited and (
-            time.perf_counter() > deadline or (node_limit is not None and count >= node_limit)
-        ):
+        if not limited and (_cpu() > deadline or count >= node_limit):
             limited = True
             log.info("layout search limit reached after %d nodes; finishing greedily", count)
         i = order[depth]
@@ -492,35 +769,51 @@ def _dfs(
             if isinstance(made, _Failure):
                 # Its targets' poses decide its candidates: they are the conflict set.
                 conflict, failure = {t for c, t in search.items[i].own if search.placed[t]}, made
+                conflict = set() if made.inherent else conflict | set(search.followers[i])
             else:
                 node = nodes[depth] = made
         if node is not None:
             k = search.next_free(node)
             verdict = "ok"
             while k is not None:
-                search.put(i, node.centres[k], float(node.yaws[k]))
+                search.place_at(node, k)
                 count += 1
                 verdict = "ok" if limited else search.forward_check(i, node)
                 search.take(i)
                 if verdict == "ok":
                     break
                 fallback = k if fallback is None else fallback
-                if verdict == "hopeless" or node.forward_rejects >= FORWARD_REJECTS:
+                # Its neighbours would most likely fail the same way: look a little farther.
+                node.avoid.append((node.centres[k, :2].copy(), REJECT_SPREAD))
+                if verdict == "hopeless" or node.forward_rejects >= node.reject_allowance:
                     k = None
                     break
                 k = search.next_free(node)
             if k is not None:
-                place(i, node.centres[k], float(node.yaws[k]))
+                place(i, node, k)
                 continue
+            if not node.wide and not limited and verdict != "hopeless":
+                # Before blaming others, look farther afield (the same avoidances hold).
+                wider = search.candidates(search.items[i], wide=True)
+                if not isinstance(wider, _Failure):
+                    wider.conflict, wider.blockers, wider.avoid = node.conflict, node.blockers, node.avoid
+                    wider.forward_rejects, wider.reject_allowance = node.forward_rejects, node.reject_allowance
+                    nodes[depth] = wider
+                    continue
             # Its targets, and theirs, shaped its candidates, so they share the blame.
             conflict, failure = node.conflict | search.ancestors({i}) - {i}, None
+            conflict |= set(search.followers[i])
         culprits = {j for j in conflict if j in depth_of and search.placed[j]}
-        if limited or not culprits or jumps[i] >= MAX_JUMPS:
+        if limited or not culprits or jumps[i] >= MAX_JUMPS or search.downstream(search.items[i]):
             if fallback is not None:  # the dependents will report their own failure
-                place(i, node.centres[fallback], float(node.yaws[fallback]))
-            else:
-                failures[i] = failure or search.blocked(node, limited)
-                depth += 1
+                place(i, node, fallback)
+                continue
+            failure = failure or search.blocked(node, limited)
+            settled, used = search.settle(i, failure)
+            count += 1 + used // CHUNK
+            if settled is not None:
+                failures[i] = settled
+            depth += 1
             continue
         # Backjump to the latest culprit; everything after it is undone and re-placed.
         jumps[i] += 1
@@ -531,7 +824,7 @@ def _dfs(
         log.debug("%s has no position; back to %s", search.objects[i].id, search.objects[j].id)
         for d in range(depth - 1, back - 1, -1):
             x = order[d]
-            if search.placed[x]:
+            if search.posed[x]:
                 search.take(x)
                 depth_of.pop(x, None)
             failures.pop(x, None)
@@ -542,36 +835,20 @@ def _dfs(
         target = nodes[back]
         assert target is not None, "a placed object has its node"
         target.conflict |= culprits - {j}
+        target.reject_allowance = min(target.forward_rejects + 2 * target.reject_allowance,
+                                      target.forward_rejects + MAX_REJECTS)
         # Move the culprit clear of where it was, farther each time this object fails.
         reach = max(0.15, float(max(half[0], half[1]))) * jumps[i]
         target.avoid.append((search.pos[j][:2].copy(), reach))
         depth = back
-    count += _repair(search, order, failures)
-    placed = [o.id for i, o in enumerate(search.objects) if search.placed[i]]
+    placed = [o.id for i, o in enumerate(search.objects) if search.placed[i] and i not in failures]
     unplaced = [
         UnplacedObject(id=search.objects[i].id, failed=f.failed, reason=f.reason, nearest_miss=f.nearest)
         for i, f in sorted(failures.items(), key=lambda kv: order.index(kv[0]))
     ]
     troubled = set(failures) | {i for i, n in jumps.items() if n}
-    return LayoutReport(placed=placed, unplaced=unplaced, nodes=count, solver=True), troubled
-
-
-def _repair(search: _Search, order: list[int], failures: dict[int, _Failure]) -> int:
-    """Retry each unplaced object, in order, over a wide candidate set; returns nodes used."""
-    count = 0
-    for i in [x for x in order if x in failures]:
-        made = search.candidates(search.items[i], wide=True)
-        if isinstance(made, _Failure):
-            failures[i] = made
-            continue
-        k = search.next_free(made)
-        if k is None:
-            failures[i] = search.blocked(made, limited=False)
-            continue
-        search.put(i, made.centres[k], float(made.yaws[k]))
-        del failures[i]
-        count += 1
-    return count
+    inherent = all(f.inherent or search.downstream(search.items[i]) for i, f in failures.items())
+    return LayoutReport(placed=placed, unplaced=unplaced, nodes=count, solver=True), troubled, inherent
 
 
 def _audit(search: _Search, objects, constraints, meshes) -> LayoutReport:
