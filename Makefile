@@ -53,6 +53,7 @@ bench: install
 	$(BIN)/scenewright bench assets --assets 16 --servers 4 --delay 2 --json | tee bench-results/assets.json
 	$(BIN)/scenewright bench edits --json | tee bench-results/edits.json
 	$(BIN)/scenewright bench parse --json | tee bench-results/parse.json
+	for b in 1 2 3; do $(BIN)/scenewright bench pipeline --prompts benchmarks/prompts-fresh-$$b --json > bench-results/fresh-$$b.json; done
 	$(BIN)/scenewright bench batch --json | tee bench-results/batch.json
 	$(BIN)/scenewright bench physics --json | tee bench-results/physics.json
 	$(BIN)/python benchmarks/procedural.py | tee bench-results/procedural.json

@@ -321,6 +321,8 @@ class Scene(_Model):
     def _bounds_are_sane(cls, v: tuple[float, float] | None) -> tuple[float, float] | None:
         if v is not None and not all(0 < side <= 2 * MAX_COORDINATE for side in v):
             raise ValueError(f"bounds (width, depth) must each be > 0 and at most {2 * MAX_COORDINATE:g} m, got {v}")
+        return v
+
     # limits (docs/security.md)
     _text_length = field_validator("text")(_at_most(MAX_TEXT_CHARS))
 
