@@ -53,9 +53,12 @@ def _args(prompts: Path, out: Path) -> list[str]:
 
 
 def _comparable(path: Path) -> dict:
-    """scene.json without what differs by nature between two runs: wall-clock stamps and the
-    solver's measured seconds (in its report and in each layout round's provenance)."""
+    """scene.json without what differs by nature between two runs: wall-clock stamps, the
+    solver's measured seconds (in its report and in each layout round's provenance), and which
+    assets the asset stage built in this run (a run interrupted in that stage keeps the assets
+    it finished, so its resume records only the rest; the scene.glb hash still compares them)."""
     doc = json.loads(path.read_text(encoding="utf-8"))
+    doc["provenance"] = [e for e in doc["provenance"] if e["stage"] != "assets"]
     for event in doc["provenance"]:
         event.pop("time")
         event["data"].pop("seconds", None)
