@@ -67,6 +67,8 @@ def test_a_command_on_a_folder_another_process_holds_says_who_and_changes_nothin
         assert ready.wait(30)
         assert main(["edit", str(folder.root), "move the armchair half a metre to the left"]) == 1
         assert main(["undo", str(folder.root)]) == 1
+        assert main(["export", str(folder.root), "--format", "mjcf"]) == 1  # writes physics and sim/
+        assert not (folder.root / "sim").exists()
     finally:
         release.set()
         child.join(30)

@@ -35,11 +35,14 @@ def export_formats(directory: Path, formats: list[str], *, out: Path | None = No
         check_format(fmt)
     if out is not None and len(formats) > 1:
         raise InputError("--out names one file; give one --format with it, or drop --out for the defaults under sim/")
+    from scenewright.pipeline import writing
+
     settings = build_settings(config=config)
-    folder = SceneFolder(directory)
-    scene = folder.load()
     cache = RequestCache(settings.cache_dir)
-    return [export_scene(scene, folder, fmt, cache, out=out, engine=engine) for fmt in formats]
+    # Export writes physics into scene.json and files into the folder: under its lock, like every writer.
+    with writing(SceneFolder(directory), settings.lock_timeout) as folder:
+        scene = folder.load()
+        return [export_scene(scene, folder, fmt, cache, out=out, engine=engine) for fmt in formats]
 
 
 @app.command("export")
