@@ -101,10 +101,13 @@ class _Planter:
                 return obj
         return None
 
+    def _table_yaw(self) -> float:
+        return float(self.rng.choice([0.0, 90.0]))
+
     def table(self, k: int) -> None:
         r = self.rng
         size = Vec3(x=r.uniform(0.8, 2.0), y=r.uniform(0.6, 1.2), z=r.uniform(0.45, 0.9))
-        obj = self._ground(f"table_{k}", size, float(r.choice([0.0, 90.0])))
+        obj = self._ground(f"table_{k}", size, self._table_yaw())
         if obj is not None:
             i = self._add(obj, table_mesh(size))
             self.tables.append(i)
@@ -215,14 +218,8 @@ class _HardPlanter(_Planter):
     """Every ground object at an arbitrary yaw; chairs in pairs facing each other; small things
     stacked anywhere on a turned support's true top."""
 
-    def table(self, k: int) -> None:
-        r = self.rng
-        size = Vec3(x=r.uniform(0.8, 2.0), y=r.uniform(0.6, 1.2), z=r.uniform(0.45, 0.9))
-        obj = self._ground(f"table_{k}", size, float(r.uniform(-180, 180)))
-        if obj is not None:
-            i = self._add(obj, table_mesh(size))
-            self.tables.append(i)
-            self.supports.append(i)
+    def _table_yaw(self) -> float:
+        return float(self.rng.uniform(-180, 180))
 
     def furniture(self, k: int) -> None:
         r = self.rng
