@@ -11,10 +11,10 @@ from typing import Annotated
 
 import typer
 from rich.console import Console
-from rich.markup import escape
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
 
 from scenewright.cli.app import app, bench_app
+from scenewright.cli.display import safe
 from scenewright.cli.options import (
     ApiKeyEnvOption,
     BaseUrlOption,
@@ -99,7 +99,7 @@ def batch_command(
         more = f" (and {len(problems) - 20} more)" if len(problems) > 20 else ""
         raise InputError(f"{prompts}: {len(problems)} lines cannot be used: {listed}{more}. Fix them or drop --strict")
     for problem in problems:
-        err.print(f"[yellow]skipped[/yellow] {escape(str(prompts))}:{problem.line}: {escape(problem.reason)}")
+        err.print(f"[yellow]skipped[/yellow] {safe(str(prompts))}:{problem.line}: {safe(problem.reason)}")
     if not entries:
         raise InputError(f"{prompts}: no usable entry; every line was skipped")
     ray = _ray_options(ray_address, workers, gpus_per_scene)
@@ -128,7 +128,7 @@ def batch_command(
             running = min(n_workers, len(entries) - sum(counts.values()))
             bar.update(task, advance=1, done=counts["done"], failed=counts["failed"], running=running)
             if outcome.status == "failed":
-                bar.console.print(f"[red]failed[/red] {outcome.id}: {escape(outcome.reason or '')}")
+                bar.console.print(f"[red]failed[/red] {outcome.id}: {safe(outcome.reason or '')}")
 
         record = run_batch(
             entries, out, settings=settings, workers=workers, render=not no_render, ray=ray,
@@ -137,12 +137,12 @@ def batch_command(
     t = record.totals()
     console = Console(soft_wrap=True, highlight=False)
     console.print(
-        f"[bold]{t['done'] + t['finished_before']} of {t['entries']} scenes finished[/bold] in {out} "
+        f"[bold]{t['done'] + t['finished_before']} of {t['entries']} scenes finished[/bold] in {safe(out)} "
         f"({t['done']} now, {t['finished_before']} before), {t['failed']} failed, {t['interrupted']} interrupted; "
         f"{t['seconds']:.1f} s"
     )
-    console.print(f"  batch.md / batch.json  {out / 'batch.md'}  (per scene status, objects, constraints, CF, time)")
-    console.print(f"  index.jsonl            {out / 'index.jsonl'}  (one line per finished scene)")
+    console.print(f"  batch.md / batch.json  {safe(out / 'batch.md')}  (per scene status, objects, constraints, CF, time)")
+    console.print(f"  index.jsonl            {safe(out / 'index.jsonl')}  (one line per finished scene)")
     if record.interrupted:
         console.print("[yellow]interrupted[/yellow]: run the same command again to finish the rest")
         raise typer.Exit(EXIT_INTERRUPTED)
