@@ -4,7 +4,7 @@ import pytest
 from pydantic import ValidationError
 
 from scenewright.errors import InputError
-from scenewright.scene import SCHEMA_VERSION, Constraint, Scene, SceneObject, Vec3
+from scenewright.scene import SCHEMA_VERSION, Constraint, Opening, Room, Scene, SceneObject, Vec3
 
 
 def _obj(id_="table_1", **kw):
@@ -112,3 +112,38 @@ def test_get_names_known_objects():
     assert scene.get("b").id == "b"
     with pytest.raises(InputError, match="objects are: a, b"):
         scene.get("c")
+
+
+def test_a_version_1_document_loads_as_an_open_scene(tmp_path):
+    path = tmp_path / "scene.json"
+    path.write_text(json.dumps({"text": "a red chair", "schema_version": 1}))
+    scene = Scene.load(path)
+    assert scene.schema_version == SCHEMA_VERSION and scene.room is None
+
+
+def test_a_rectangular_room_lists_its_walls_counter_clockwise():
+    room = Room.rectangle(4, 5, 2.6, openings=[Opening(kind="door", wall=0, offset=1.0, width=0.9, height=2.1)])
+    assert room.walls[0] == ((-2.0, -2.5), (2.0, -2.5)) and len(room.walls) == 4
+    assert room.wall_length(1) == 5.0
+
+
+def test_a_clockwise_floor_is_turned_round():
+    room = Room(floor=[(0, 0), (0, 3), (4, 3), (4, 0)])
+    assert room.floor == [(4, 0), (4, 3), (0, 3), (0, 0)]
+
+
+@pytest.mark.parametrize(
+    "fields, words",
+    [
+        ({"floor": [(0, 0), (4, 0), (0, 3), (4, 3)]}, "intersects itself"),
+        ({"floor": [(0, 0), (4, 0)]}, "at least 3 corners"),
+        ({"floor": [(0, 0), (0.2, 0), (0.2, 4), (0, 4)]}, "shorter than"),
+        ({"floor": [(0, 0), (4, 0), (4, 3)], "height": 30}, "height"),
+        ({"floor": [(0, 0), (4, 0), (4, 3)], "openings": [{"kind": "door", "wall": 0, "offset": 0.2, "width": 0.9, "height": 2}]}, "does not fit"),
+        ({"floor": [(0, 0), (4, 0), (4, 3)], "openings": [{"kind": "window", "wall": 7, "offset": 1, "width": 0.9, "height": 1}]}, "walls 0..2"),
+        ({"floor": [(0, 0), (4, 0), (4, 3)], "openings": [{"kind": "door", "wall": 0, "offset": 1, "width": 0.9, "height": 2, "sill": 0.5}]}, "sill 0"),
+    ],
+)
+def test_a_bad_room_is_refused_naming_what_is_wrong(fields, words):
+    with pytest.raises(ValidationError, match=words):
+        Room(**fields)

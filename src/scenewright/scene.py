@@ -23,7 +23,8 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_valida
 from scenewright.errors import InputError
 from scenewright.files import write_atomic
 
-SCHEMA_VERSION = 1
+#: Version 2 added ``room``; :func:`migrate` brings older documents up to date.
+SCHEMA_VERSION = 2
 
 #: The ten relations of the paper (Table 3) and the type each belongs to. Their geometry is
 #: defined once, in :mod:`scenewright.layout.relations`.
@@ -247,6 +248,139 @@ class Ground(_Model):
     _description_length = field_validator("description")(_at_most(MAX_DESCRIPTION_CHARS))
 
 
+#: Room limits: a wall shorter than this is a typo, a room taller than this is a hall, not a room.
+MIN_WALL = 0.5
+MIN_ROOM_HEIGHT, MAX_ROOM_HEIGHT = 2.0, 12.0
+
+
+class Opening(_Model):
+    """A door or window cut into one wall of the room.
+
+    ``wall`` indexes :attr:`Room.walls`; ``offset`` is the distance in metres along that wall,
+    from its start corner, to the opening's centre; ``sill`` is the height of its bottom edge
+    above the floor (0 for a door).
+    """
+
+    kind: Literal["door", "window"]
+    wall: int = Field(ge=0)
+    offset: float = Field(ge=0)
+    width: float = Field(gt=0)
+    height: float = Field(gt=0)
+    sill: float = Field(default=0.0, ge=0)
+
+    @model_validator(mode="after")
+    def _door_on_the_floor(self) -> Opening:
+        if self.kind == "door" and self.sill != 0:
+            raise ValueError(f"a door starts at the floor (sill 0), got sill {self.sill:g} m")
+        return self
+
+
+class Room(_Model):
+    """The room of an indoor scene: a floor polygon, walls along its edges, openings in them.
+
+    ``floor`` lists the corners (x, y) counter-clockwise seen from above, so each wall's inside
+    is to its left; wall ``i`` runs from corner ``i`` to corner ``i + 1`` (the last one closes
+    the polygon). The floor is at z = 0 and the ceiling at ``height``.
+    """
+
+    floor: list[tuple[float, float]]
+    height: float = 2.7
+    openings: list[Opening] = Field(default_factory=list)
+    floor_material: str = "wood floor"
+    wall_material: str = "painted plaster"
+    ceiling_material: str = "white plaster"
+
+    @classmethod
+    def rectangle(cls, width: float, depth: float, height: float = 2.7, **fields: Any) -> Room:
+        """A ``width`` (x) by ``depth`` (y) room centred at the origin; walls front, right, back, left."""
+        w, d = width / 2.0, depth / 2.0
+        return cls(floor=[(-w, -d), (w, -d), (w, d), (-w, d)], height=height, **fields)
+
+    @property
+    def walls(self) -> list[tuple[tuple[float, float], tuple[float, float]]]:
+        """The wall segments (start, end), in the order openings index them."""
+        n = len(self.floor)
+        return [(self.floor[i], self.floor[(i + 1) % n]) for i in range(n)]
+
+    def wall_length(self, index: int) -> float:
+        (x0, y0), (x1, y1) = self.walls[index]
+        return ((x1 - x0) ** 2 + (y1 - y0) ** 2) ** 0.5
+
+    @field_validator("height")
+    @classmethod
+    def _height_is_a_room(cls, v: float) -> float:
+        if not MIN_ROOM_HEIGHT <= v <= MAX_ROOM_HEIGHT:
+            raise ValueError(f"a room's height must be from {MIN_ROOM_HEIGHT:g} to {MAX_ROOM_HEIGHT:g} m, got {v:g}")
+        return v
+
+    @field_validator("floor")
+    @classmethod
+    def _floor_is_a_simple_polygon(cls, v: list[tuple[float, float]]) -> list[tuple[float, float]]:
+        if len(v) < 3:
+            raise ValueError(f"a floor needs at least 3 corners, got {len(v)}")
+        if max(abs(c) for p in v for c in p) > MAX_COORDINATE:
+            raise ValueError(f"every floor corner must lie within ±{MAX_COORDINATE:g} m of the origin")
+        n = len(v)
+        for i in range(n):
+            a, b = v[i], v[(i + 1) % n]
+            if ((b[0] - a[0]) ** 2 + (b[1] - a[1]) ** 2) ** 0.5 < MIN_WALL:
+                raise ValueError(f"wall {i} from {a} to {b} is shorter than {MIN_WALL:g} m")
+            for j in range(i + 2, n):
+                if i == 0 and j == n - 1:
+                    continue  # the first and last walls share a corner
+                if _segments_cross(a, b, v[j], v[(j + 1) % n]):
+                    raise ValueError(f"the floor polygon intersects itself: wall {i} crosses wall {j}")
+        area = _signed_area(v)
+        if abs(area) < MIN_WALL**2:
+            raise ValueError(f"the floor polygon encloses {abs(area):.3g} m², too little for a room")
+        # Clockwise as given: the same room with its walls listed the other way round.
+        return v if area > 0 else list(reversed(v))
+
+    @model_validator(mode="after")
+    def _openings_fit_their_walls(self) -> Room:
+        for k, o in enumerate(self.openings):
+            if o.wall >= len(self.floor):
+                raise ValueError(f"opening {k} is on wall {o.wall}, but the room has walls 0..{len(self.floor) - 1}")
+            length = self.wall_length(o.wall)
+            if o.offset - o.width / 2 < 0 or o.offset + o.width / 2 > length:
+                raise ValueError(
+                    f"opening {k} ({o.kind}, {o.width:g} m wide at {o.offset:g} m) does not fit on wall "
+                    f"{o.wall}, which is {length:.2f} m long"
+                )
+            if o.sill + o.height > self.height:
+                raise ValueError(
+                    f"opening {k} ({o.kind}) reaches {o.sill + o.height:g} m, above the {self.height:g} m ceiling"
+                )
+        return self
+
+    _material_length = field_validator("floor_material", "wall_material", "ceiling_material")(
+        _at_most(MAX_NAME_CHARS)
+    )
+
+
+def _signed_area(points: list[tuple[float, float]]) -> float:
+    """Shoelace area: positive when the corners run counter-clockwise."""
+    n = len(points)
+    return 0.5 * sum(points[i][0] * points[(i + 1) % n][1] - points[(i + 1) % n][0] * points[i][1] for i in range(n))
+
+
+def _segments_cross(a, b, c, d) -> bool:
+    """True when segment ab and segment cd share a point (touching counts)."""
+
+    def orient(p, q, r) -> float:
+        return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
+
+    def within(p, q, r) -> bool:
+        return min(p[0], q[0]) - 1e-9 <= r[0] <= max(p[0], q[0]) + 1e-9 and min(p[1], q[1]) - 1e-9 <= r[1] <= max(p[1], q[1]) + 1e-9
+
+    o1, o2, o3, o4 = orient(a, b, c), orient(a, b, d), orient(c, d, a), orient(c, d, b)
+    if (o1 > 0) != (o2 > 0) and (o3 > 0) != (o4 > 0) and 0 not in (o1, o2, o3, o4):
+        return True
+    return any(
+        abs(o) < 1e-12 and within(p, q, r) for o, p, q, r in ((o1, a, b, c), (o2, a, b, d), (o3, c, d, a), (o4, c, d, b))
+    )
+
+
 class DroppedConstraint(_Model):
     constraint: dict[str, Any]
     reason: str
@@ -294,6 +428,8 @@ class Scene(_Model):
     ground: Ground = Field(default_factory=Ground)
     #: Optional footprint (width along x, depth along y), centred at the origin.
     bounds: tuple[float, float] | None = None
+    #: The room of an indoor scene; None for an open scene on the ground plane.
+    room: Room | None = None
     backends: dict[str, str] = Field(default_factory=dict)
     layout: LayoutReport | None = None
     #: The poses the vision-language model proposed, before the solver moved anything; kept for
@@ -383,6 +519,18 @@ class Scene(_Model):
     def to_json(self) -> str:
         return self.model_dump_json(indent=2) + "\n"
 
+    @classmethod
+    def from_json(cls, document: str | bytes) -> Scene:
+        """The scene in ``document``, migrated from an older schema version when need be.
+
+        Raises pydantic's ValidationError for anything that is not a valid scene, bad JSON too.
+        """
+        try:
+            data = json.loads(document)
+        except ValueError:
+            return cls.model_validate_json(document)  # raises the ValidationError that says where
+        return cls.model_validate(migrate(data))
+
     def save(self, path: str | Path) -> Path:
         return write_atomic(path, self.to_json())
 
@@ -400,9 +548,27 @@ class Scene(_Model):
         except json.JSONDecodeError as exc:
             raise InputError(f"{path}: not valid JSON ({exc.msg} at line {exc.lineno})") from None
         try:
-            return cls.model_validate(data)
+            return cls.model_validate(migrate(data))
         except ValidationError as exc:
             raise InputError(f"{path}: {describe_validation_error(exc)}") from None
+
+
+def migrate(data: Any) -> Any:
+    """A document of an older schema version brought up to this one (the input is not changed).
+
+    Each step takes version ``n`` to ``n + 1``; a version newer than this scenewright, or not a
+    number, is left for validation to refuse with its message.
+    """
+    if not isinstance(data, dict) or not isinstance(data.get("schema_version", 1), int):
+        return data
+    data = dict(data)
+    version = data.get("schema_version", 1)
+    if version == 1:  # 1 -> 2: rooms arrived; a version-1 scene stands on the open ground
+        data["room"] = None
+        version = 2
+    if 1 <= version <= SCHEMA_VERSION:
+        data["schema_version"] = version
+    return data
 
 
 def describe_validation_error(exc: ValidationError, limit: int = 5) -> str:

@@ -188,7 +188,7 @@ def recover(folder: SceneFolder) -> None:
 def _checked(document: bytes | str, what: str) -> Scene:
     """The document a change is about to save, refused when it does not validate."""
     try:
-        return Scene.model_validate_json(document)
+        return Scene.from_json(document)
     except ValidationError as exc:
         raise InputError(f"{what} would be invalid, so nothing was written: {describe_validation_error(exc)}") from None
 
@@ -256,7 +256,7 @@ def _restore(folder: SceneFolder, source: Path, current: int) -> Scene:
     """Make the stored version ``source`` the document again, with ``current`` edits in effect."""
     try:
         data = source.read_bytes()
-        scene = Scene.model_validate_json(data)
+        scene = Scene.from_json(data)
     except FileNotFoundError:
         raise _broken(folder, source, "missing") from None
     except ValidationError as exc:
