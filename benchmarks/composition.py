@@ -25,7 +25,7 @@ from pathlib import Path
 
 from scenewright.analysis.bench import load_prompts
 from scenewright.analysis.parser import parse_scene
-from scenewright.backends import Backends
+from scenewright.backends import backends_from_settings
 from scenewright.cli.options import build_settings
 from scenewright.layout import relations as rel
 from scenewright.pipeline import generate
@@ -51,7 +51,7 @@ def main() -> None:
     prompts = [(folder, p) for folder in FOLDERS for p in load_prompts(ROOT / "benchmarks" / folder)][: args.limit]
     settings = build_settings()
     settings.cache_dir = None
-    backends = Backends.from_settings(settings)
+    backends = backends_from_settings(settings)
     rows = []
     with tempfile.TemporaryDirectory(prefix="scenewright-composition-") as tmp:
         for folder, prompt in prompts:

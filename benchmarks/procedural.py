@@ -11,8 +11,8 @@ import time
 
 from scenewright.backends import MeshRequest
 from scenewright.procedural import SHAPES
-from scenewright.procedural.images import ProceduralImages
-from scenewright.procedural.meshes import ProceduralMeshes
+from scenewright.backends.procedural_images import ProceduralImages
+from scenewright.backends.procedural_meshes import ProceduralMeshes
 from scenewright.procedural.textures import KINDS
 from scenewright.scene import STYLES, Vec3
 

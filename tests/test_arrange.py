@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from scenewright.analysis.arrange import compose, initial_objects, share_supports
-from scenewright.analysis.catalogue import load_catalogue
+from scenewright.core.catalogue import load_catalogue
 from scenewright.analysis.composition import roles
 from scenewright.analysis.composition.edges import share
 from scenewright.analysis.composition.outdoor import SCATTER_GAP

@@ -7,7 +7,7 @@ import pytest
 import trimesh
 
 from scenewright.assets import asset_mesh, generate_assets, normalise
-from scenewright.assets.library import AssetLibrary, infer_index
+from scenewright.backends.library import AssetLibrary, infer_index
 from scenewright.assets.normalise import to_glb
 from scenewright.backends import MeshRequest, create_backend
 from scenewright.cache import RequestCache

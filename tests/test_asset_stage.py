@@ -17,7 +17,7 @@ from scenewright.backends.hunyuan3d import Hunyuan3D
 from scenewright.cache import RequestCache
 from scenewright.errors import BackendError, InputError
 from scenewright.folder import SceneFolder
-from scenewright.procedural.meshes import ProceduralMeshes
+from scenewright.backends.procedural_meshes import ProceduralMeshes
 from scenewright.scene import Scene, SceneObject, Vec3
 
 

@@ -137,13 +137,13 @@ def test_slot_table_counts_per_server():
 
 
 def test_share_limit_wraps_only_remote_clients(remote_settings):
-    from scenewright.backends import Backends
+    from scenewright.backends import backends_from_settings
     from scenewright.batch.limits import share_limit
     from scenewright.settings import Settings
 
-    offline = Backends.from_settings(Settings(cache_dir=None))
+    offline = backends_from_settings(Settings(cache_dir=None))
     assert share_limit(offline, FileSlots(Path("/nonexistent"), 1)) == 0
     remote_settings.vlm, remote_settings.images = "openai:m", "openai:i"
-    remote = Backends.from_settings(remote_settings)
+    remote = backends_from_settings(remote_settings)
     assert share_limit(remote, FileSlots(Path("/nonexistent"), 1)) == 2
     assert share_limit(remote, FileSlots(Path("/nonexistent"), 1)) == 0  # never wrapped twice

@@ -1,6 +1,6 @@
 import pytest
 
-from scenewright.analysis.catalogue import (
+from scenewright.core.catalogue import (
     RESTS,
     SHAPE_NAMES,
     _validate,

@@ -139,13 +139,13 @@ GENERATED = (
 
 
 def test_every_operation_on_a_generated_scene(tmp_path):
-    from scenewright.backends import Backends
+    from scenewright.backends import backends_from_settings
     from scenewright.pipeline import generate
     from scenewright.settings import Settings
 
     settings = Settings(cache_dir=tmp_path / "cache")
     folder = SceneFolder(tmp_path / "generated")
-    generate(GENERATED, folder, backends=Backends.from_settings(settings), settings=settings, render=False)
+    generate(GENERATED, folder, backends=backends_from_settings(settings), settings=settings, render=False)
     scene = folder.load()
     by_category = {o.category: o.id for o in scene.objects}
     lamp, shelf = by_category["floor_lamp"], by_category["bookshelf"]

@@ -1,11 +1,11 @@
 import pytest
 
 from scenewright.analysis.arrange import initial_objects
-from scenewright.analysis.catalogue import load_catalogue
-from scenewright.analysis.offline import OfflineVLM, relax_constraints
+from scenewright.core.catalogue import load_catalogue
+from scenewright.backends.offline_vlm import OfflineVLM, relax_constraints
 from scenewright.analysis.parser import parse_scene
 from scenewright.backends import VisionLanguageModel, create_backend
-from scenewright.editing.plan import EditPlan
+from scenewright.core.plan import EditPlan
 from scenewright.errors import BackendError, InputError
 from scenewright.geometry import front_direction, world_box
 from scenewright.scene import Constraint, LayoutReport, Scene, UnplacedObject

@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from scenewright.analysis.bench import load_prompts, run_parse_bench
-from scenewright.analysis.catalogue import load_catalogue
+from scenewright.core.catalogue import load_catalogue
 from scenewright.analysis.parser import (
     GROUND_KINDS,
     detect_ground,

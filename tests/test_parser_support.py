@@ -2,7 +2,7 @@
 
 import pytest
 
-from scenewright.analysis.catalogue import load_catalogue
+from scenewright.core.catalogue import load_catalogue
 from scenewright.analysis.parser import ParsedObject, ParsedRelation, parse_scene
 from scenewright.analysis.parser.support import can_hold, repair_supports
 

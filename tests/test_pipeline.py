@@ -10,7 +10,7 @@ import pytest
 from PIL import Image
 
 from scenewright.analysis.stage import analyze
-from scenewright.backends import Backends
+from scenewright.backends import Backends, backends_from_settings
 from scenewright.errors import BackendError, InputError, MissingExtra
 from scenewright.folder import SceneFolder
 from scenewright.layout.stage import arrange
@@ -54,7 +54,7 @@ def _settings() -> Settings:
 
 
 def _counting(settings: Settings, fail_after: int | None = None) -> Backends:
-    real = Backends.from_settings(settings)
+    real = backends_from_settings(settings)
     return Backends(vlm=Counting(real.vlm), images=Counting(real.images), meshes=Counting(real.meshes, fail_after))
 
 
@@ -66,7 +66,7 @@ def _png(colour=(200, 100, 50, 255)) -> bytes:
 
 def test_generate_writes_a_complete_scene_folder(tmp_path):
     folder = SceneFolder(tmp_path / "study")
-    scene = generate(TEXT, folder, backends=Backends.from_settings(_settings()), settings=_settings(), render=False)
+    scene = generate(TEXT, folder, backends=backends_from_settings(_settings()), settings=_settings(), render=False)
     assert scene.done == ["analyze", "assets", "layout", "export"]
     assert folder.glb.is_file() and folder.ground_image.is_file()
     assert {o.category for o in scene.objects} >= {"desk", "laptop", "office_chair", "bookshelf"}
@@ -81,7 +81,7 @@ def test_generate_writes_a_complete_scene_folder(tmp_path):
 
 def test_rerun_of_a_finished_scene_calls_no_backend(tmp_path):
     settings = _settings()
-    generate(TEXT, tmp_path / "s", backends=Backends.from_settings(settings), settings=settings, render=False)
+    generate(TEXT, tmp_path / "s", backends=backends_from_settings(settings), settings=settings, render=False)
     backends = _counting(settings)
     generate(TEXT, tmp_path / "s", backends=backends, settings=settings, render=False)
     assert not (backends.vlm.calls + backends.images.calls + backends.meshes.calls)
@@ -90,7 +90,7 @@ def test_rerun_of_a_finished_scene_calls_no_backend(tmp_path):
 def test_deleted_glb_is_rebuilt_by_export_alone(tmp_path):
     settings = _settings()
     folder = SceneFolder(tmp_path / "s")
-    first = generate(TEXT, folder, backends=Backends.from_settings(settings), settings=settings, render=False)
+    first = generate(TEXT, folder, backends=backends_from_settings(settings), settings=settings, render=False)
     folder.glb.unlink()
     backends = _counting(settings)
     scene = resume(folder, backends=backends, settings=settings, render=False)
@@ -119,14 +119,14 @@ def test_interrupted_asset_stage_resumes_with_only_the_missing_assets(tmp_path):
 
 def test_cache_spares_the_mesh_backend_on_a_fresh_run_of_the_same_text(tmp_path):
     settings = Settings(cache_dir=tmp_path / "cache")
-    generate(TEXT, tmp_path / "a", backends=Backends.from_settings(settings), settings=settings, render=False)
+    generate(TEXT, tmp_path / "a", backends=backends_from_settings(settings), settings=settings, render=False)
     backends = _counting(settings)
     generate(TEXT, tmp_path / "b", backends=backends, settings=settings, render=False)
     assert backends.meshes.calls["requests"] == 0
 
 
 def test_style_from_flag_then_text_then_default(tmp_path):
-    backends, settings = Backends.from_settings(_settings()), _settings()
+    backends, settings = backends_from_settings(_settings()), _settings()
 
     def style_of(text, folder, style=None):
         return generate(text, tmp_path / folder, backends=backends, settings=settings, style=style, render=False).style
@@ -138,7 +138,7 @@ def test_style_from_flag_then_text_then_default(tmp_path):
 
 
 def test_ground_kind_follows_the_text(tmp_path):
-    backends, settings = Backends.from_settings(_settings()), _settings()
+    backends, settings = backends_from_settings(_settings()), _settings()
     scene = generate(
         "A park on green grass: an oak tree with a bench in front of it.",
         tmp_path / "p", backends=backends, settings=settings, render=False,
@@ -150,10 +150,10 @@ def test_ground_kind_follows_the_text(tmp_path):
 def test_folder_holding_another_scene_is_refused_untouched(tmp_path):
     settings = _settings()
     folder = SceneFolder(tmp_path / "s")
-    generate(TEXT, folder, backends=Backends.from_settings(settings), settings=settings, render=False)
+    generate(TEXT, folder, backends=backends_from_settings(settings), settings=settings, render=False)
     before = folder.document.read_bytes()
     with pytest.raises(InputError, match="already holds another scene"):
-        generate("A kitchen with a fridge.", folder, backends=Backends.from_settings(settings), settings=settings)
+        generate("A kitchen with a fridge.", folder, backends=backends_from_settings(settings), settings=settings)
     assert folder.document.read_bytes() == before
 
 
@@ -165,7 +165,7 @@ def test_missing_render_extra_is_a_warning(tmp_path, monkeypatch, caplog):
 
     monkeypatch.setattr(scenewright.render, "render", no_blender)
     settings = _settings()
-    scene = generate(TEXT, tmp_path / "s", backends=Backends.from_settings(settings), settings=settings, render=True)
+    scene = generate(TEXT, tmp_path / "s", backends=backends_from_settings(settings), settings=settings, render=True)
     assert scene.done == ["analyze", "assets", "layout", "export"]
     assert "no preview renders" in caplog.text
 

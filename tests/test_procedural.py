@@ -21,7 +21,8 @@ from scenewright.errors import InputError
 from scenewright.geometry import GLTF_TO_SCENE
 from scenewright.procedural import SHAPES
 from scenewright.procedural.material import described_surfaces, find_colour, find_material
-from scenewright.procedural.meshes import ProceduralMeshes, build_glb, build_model, choose_shape, keyword_shape
+from scenewright.backends.procedural_meshes import ProceduralMeshes
+from scenewright.procedural.meshes import build_glb, build_model, choose_shape, keyword_shape
 from scenewright.procedural.style import ROLES, resolve_style
 from scenewright.scene import STYLES, Vec3
 from scenewright.settings import Settings

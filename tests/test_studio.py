@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 from editing_scenes import RulePlanner, snapshot
-from scenewright.backends import Backends
+from scenewright.backends import Backends, backends_from_settings
 from scenewright.cli import main
 from scenewright.editing import entries
 from scenewright.errors import InputError, MissingExtra
@@ -25,7 +25,7 @@ CHROMIUM = Path("/usr/bin/chromium")
 
 def session(folder) -> Session:
     settings = Settings()
-    return Session(folder, backends=Backends.from_settings(settings), settings=settings)
+    return Session(folder, backends=backends_from_settings(settings), settings=settings)
 
 
 def test_panel_shows_constraints_held_and_violated_and_the_unplaced_reason(folder):

@@ -10,7 +10,7 @@ from PIL import Image
 
 from scenewright.backends import create_backend
 from scenewright.errors import InputError
-from scenewright.procedural.images import ProceduralImages
+from scenewright.backends.procedural_images import ProceduralImages
 from scenewright.procedural.textures import KINDS, ground_texture, normalise_kind
 from scenewright.scene import STYLES
 from scenewright.settings import Settings

@@ -7,7 +7,7 @@ reached lazily by the stages that need them.
 from scenewright.errors import BackendError, InfeasibleLayout, InputError, ScenewrightError
 from scenewright.scene import Constraint, Scene, SceneObject, Vec3
 
-__version__ = "0.1.0"
+from scenewright.version import __version__
 
 __all__ = [
     "BackendError",

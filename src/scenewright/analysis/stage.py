@@ -12,7 +12,7 @@ from __future__ import annotations
 import logging
 from collections.abc import Callable
 
-from scenewright.backends import ImageGenerator, VisionLanguageModel
+from scenewright.core.protocols import ImageGenerator, VisionLanguageModel
 from scenewright.errors import InputError
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder

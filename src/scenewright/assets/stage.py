@@ -16,7 +16,7 @@ from concurrent.futures import ThreadPoolExecutor, as_completed
 
 from scenewright.assets.load import asset_problem
 from scenewright.assets.normalise import normalise, to_glb
-from scenewright.backends import MeshGenerator, MeshRequest
+from scenewright.core.protocols import MeshGenerator, MeshRequest
 from scenewright.cache import RequestCache, request_key
 from scenewright.errors import BackendError, InputError
 from scenewright.files import write_atomic

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from scenewright.assets.normalise import check_glb
-from scenewright.backends import MeshRequest
+from scenewright.core.protocols import MeshRequest
 from scenewright.errors import BackendError, InputError, MissingExtra
 from scenewright.settings import Settings
 

@@ -28,7 +28,7 @@ from scenewright.errors import InputError
 from scenewright.scene import MAX_ID_CHARS, RELATION_TYPES, Constraint, Event, SceneObject, Vec3
 
 if TYPE_CHECKING:
-    from scenewright.editing.plan import EditPlan
+    from scenewright.core.plan import EditPlan
     from scenewright.scene import LayoutReport, Scene
     from scenewright.settings import Settings
 
@@ -205,7 +205,7 @@ class OpenAIChatVLM:
         return self.chat.ask("scene_objects", messages, ObjectsAnswer, check)
 
     def _objects_from(self, proposed: Sequence[ProposedObject], low: float, high: float) -> list[SceneObject]:
-        from scenewright.analysis.catalogue import lookup
+        from scenewright.core.catalogue import lookup
 
         objects: list[SceneObject] = []
         taken: set[str] = set()
@@ -345,7 +345,7 @@ class OpenAIChatVLM:
     # --- editing --------------------------------------------------------------------------
 
     def plan_edit(self, scene: Scene, instruction: str) -> EditPlan:
-        from scenewright.editing.plan import EditPlan, NewObject
+        from scenewright.core.plan import EditPlan, NewObject
 
         self._begin()
         objects_text = "\n".join(

@@ -129,7 +129,7 @@ def finished_outcome(entry: Entry, out: Path, render: bool) -> Outcome | None:
 
 def run_scene(job: Job) -> Outcome:
     """Make (or resume, or skip) the scene of ``job.entry`` in ``job.out/<id>``."""
-    from scenewright.backends import Backends
+    from scenewright.backends import backends_from_settings
     from scenewright.dataset import scene_graph
     from scenewright.folder import SceneFolder
     from scenewright.files import write_atomic
@@ -157,7 +157,7 @@ def run_scene(job: Job) -> Outcome:
 
     try:
         settings = entry.settings(job.settings)
-        backends = Backends.from_settings(settings)
+        backends = backends_from_settings(settings)
         if job.slots is not None:
             from scenewright.batch.limits import share_limit
 

@@ -46,7 +46,7 @@ def edit_command(
     ] = False,
 ) -> None:
     """Apply one edit (move, add, delete, replace/restyle); the previous version goes to history/."""
-    from scenewright.backends import Backends
+    from scenewright.backends import backends_from_settings
     from scenewright.editing import apply_edit, entries
     from scenewright.pipeline import writing
     from scenewright.render import render_info
@@ -54,7 +54,7 @@ def edit_command(
     scene_folder = SceneFolder(folder)
     settings = build_settings(vlm=vlm, images=images, meshes=meshes, base_url=base_url, config=config,
                               api_key_env=api_key_env, reasoning_effort=reasoning_effort, timeout=timeout)
-    backends = Backends.from_settings(settings)
+    backends = backends_from_settings(settings)
     on_interrupt(lambda: f"the edit took effect if `scenewright history {folder}` lists it; if not, run it again")
     with writing(scene_folder, settings.lock_timeout):
         scene = scene_folder.load()  # read under the lock: a concurrent edit's result is not lost

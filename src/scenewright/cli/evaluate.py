@@ -94,7 +94,7 @@ def bench_eval(
 ) -> None:
     """Generate the shipped prompts offline and score them, full pipeline vs without the solver."""
     from scenewright.analysis.bench import load_prompts
-    from scenewright.backends import Backends
+    from scenewright.backends import backends_from_settings
     from scenewright.evaluation import evaluate
     from scenewright.evaluation.report import write_report
     from scenewright.pipeline import generate
@@ -107,7 +107,7 @@ def bench_eval(
         entries = [e for group in by_domain.values() for e in group[:limit]]
     settings = build_settings()
     settings.cache_dir = None
-    backends = Backends.from_settings(settings)
+    backends = backends_from_settings(settings)
     results = []
     with tempfile.TemporaryDirectory(prefix="scenewright-eval-") as tmp:
         for entry in entries:

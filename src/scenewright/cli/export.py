@@ -70,7 +70,7 @@ def bench_physics(
     """Stability after a 2 s settle on the shipped prompts, and export + settle seconds of the bundled
     example (15 objects, all of them dynamic)."""
     from scenewright.analysis.bench import load_prompts
-    from scenewright.backends import Backends
+    from scenewright.backends import backends_from_settings
     from scenewright.cache import RequestCache
     from scenewright.cli.generate import _example_text
     from scenewright.evaluation.stability import load_mujoco, stability
@@ -81,7 +81,7 @@ def bench_physics(
     load_mujoco()
     chosen = load_prompts(prompts)[:limit]
     settings = build_settings()
-    backends = Backends.from_settings(settings)
+    backends = backends_from_settings(settings)
     scenes = []
     with tempfile.TemporaryDirectory(prefix="scenewright-physics-") as tmp:
         cache = RequestCache(Path(tmp) / "cache")

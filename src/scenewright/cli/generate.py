@@ -117,7 +117,7 @@ def generate_command(
     max_objects: MaxObjectsOption = None,
 ) -> None:
     """Turn TEXT into a scene folder: scene.json, one asset per object, scene.glb, previews."""
-    from scenewright.backends import Backends
+    from scenewright.backends import backends_from_settings
     from scenewright.cli.export import export_formats
     from scenewright.export.sim import check_format
 
@@ -150,7 +150,7 @@ def generate_command(
         max_faces=max_faces,
         max_objects=max_objects,
     )
-    backends = Backends.from_settings(settings)
+    backends = backends_from_settings(settings)
     folder = SceneFolder((resume_dir if resume_dir is not None else out).absolute())
     on_interrupt(lambda: f"resume with `scenewright generate --resume {folder.root}`" if folder.is_scene()
                  else "nothing was saved; run the same command again")
@@ -202,14 +202,14 @@ def bench_pipeline(
     """`generate --no-render` (offline, no cache) per annotated prompt: the final layouts scored
     against the text (relations realised, supports right, spread), the parse's figures, and seconds."""
     from scenewright.analysis.bench import load_prompts
-    from scenewright.backends import Backends
+    from scenewright.backends import backends_from_settings
     from scenewright.evaluation.bench import run_row, summarise_runs
     from scenewright.pipeline import generate
 
     chosen = load_prompts(prompts)[:limit]
     settings = build_settings()
     settings.cache_dir = None
-    backends = Backends.from_settings(settings)
+    backends = backends_from_settings(settings)
     rows = []
     with tempfile.TemporaryDirectory(prefix="scenewright-bench-") as tmp:
         for prompt in chosen:

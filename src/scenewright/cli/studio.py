@@ -43,13 +43,13 @@ def studio_command(
     timeout: TimeoutOption = None,
 ) -> None:
     """Edit the scene in the browser: select, drag, type edits, undo; the same engine as `edit`."""
-    from scenewright.backends import Backends
+    from scenewright.backends import backends_from_settings
     from scenewright.studio import Session
     from scenewright.studio.server import Studio
 
     settings = build_settings(vlm=vlm, images=images, meshes=meshes, base_url=base_url, config=config,
                               api_key_env=api_key_env, reasoning_effort=reasoning_effort, timeout=timeout)
-    session = Session(SceneFolder(folder), backends=Backends.from_settings(settings), settings=settings)
+    session = Session(SceneFolder(folder), backends=backends_from_settings(settings), settings=settings)
     console = Console()
     if host != LOCAL:
         console.print(f"[yellow]warning:[/yellow] listening on {host}: anyone who can reach this machine "

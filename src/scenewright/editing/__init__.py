@@ -6,6 +6,6 @@ the plan and the offline parser stay light so backends can import them.
 
 from scenewright.editing.apply import apply_edit, run_plan, validate_plan
 from scenewright.editing.history import entries, redo, undo
-from scenewright.editing.plan import EditPlan, NewObject
+from scenewright.core.plan import EditPlan, NewObject
 
 __all__ = ["EditPlan", "NewObject", "apply_edit", "entries", "redo", "run_plan", "undo", "validate_plan"]

@@ -25,11 +25,11 @@ import trimesh
 from pydantic import ValidationError
 
 from scenewright.assets import asset_mesh, generate_assets, load_meshes
-from scenewright.backends import Backends
+from scenewright.core.protocols import Backends
 from scenewright.cache import RequestCache
 from scenewright.editing.history import commit
 from scenewright.editing.parser import category_in, fresh_id
-from scenewright.editing.plan import EditPlan
+from scenewright.core.plan import EditPlan
 from scenewright.errors import InfeasibleLayout, InputError
 from scenewright.folder import SceneFolder
 from scenewright.geometry import world_box, yaw_towards

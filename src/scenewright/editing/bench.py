@@ -17,8 +17,8 @@ import tempfile
 import time
 from pathlib import Path
 
-from scenewright.analysis.catalogue import load_catalogue, lookup
-from scenewright.backends import Backends
+from scenewright.core.catalogue import load_catalogue, lookup
+from scenewright.backends import Backends, backends_from_settings
 from scenewright.editing.apply import run_plan
 from scenewright.editing.parser import plan_edit_offline
 from scenewright.errors import InputError
@@ -116,7 +116,7 @@ def latency(count: int, moves: int) -> tuple[list[float], list[float]]:
     from scenewright.settings import Settings
 
     settings = Settings(cache_dir=None)
-    backends = Backends.from_settings(settings)
+    backends = backends_from_settings(settings)
     solving, whole = [], []
     with tempfile.TemporaryDirectory(prefix="scenewright-bench-edits-") as tmp:
         folder = SceneFolder(Path(tmp))

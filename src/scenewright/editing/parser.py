@@ -20,9 +20,9 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from functools import lru_cache
 
-from scenewright.analysis.catalogue import Category, load_catalogue, lookup, singular, words
+from scenewright.core.catalogue import Category, load_catalogue, lookup, singular, words
 from scenewright.analysis.parser import relation_phrases
-from scenewright.editing.plan import EditPlan, NewObject
+from scenewright.core.plan import EditPlan, NewObject
 from scenewright.errors import InputError
 from scenewright.scene import Constraint, Scene, SceneObject, Vec3
 

@@ -19,7 +19,7 @@ from pathlib import Path
 
 import trimesh
 
-from scenewright.backends import VisionLanguageModel
+from scenewright.core.protocols import VisionLanguageModel
 from scenewright.evaluation.annotations import Prompt, find_annotation
 from scenewright.evaluation.composition import spread
 from scenewright.evaluation.judge import judge, psa

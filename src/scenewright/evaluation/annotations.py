@@ -17,7 +17,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from scenewright.analysis.catalogue import load_catalogue, singular, words
+from scenewright.core.catalogue import load_catalogue, singular, words
 from scenewright.errors import InputError
 from scenewright.scene import RELATION_TYPES
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 import logging
 from dataclasses import dataclass, field
 
-from scenewright.backends import VisionLanguageModel
+from scenewright.core.protocols import VisionLanguageModel
 from scenewright.errors import BackendError
 
 log = logging.getLogger(__name__)

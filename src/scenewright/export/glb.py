@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 import trimesh
 
-from scenewright import __version__
+from scenewright.version import __version__
 from scenewright.assets.normalise import parse_glb
 from scenewright.errors import InputError
 from scenewright.export.ground import ground_mesh

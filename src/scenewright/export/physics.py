@@ -21,7 +21,7 @@ import numpy as np
 import trimesh
 from scipy.spatial import ConvexHull, QhullError
 
-from scenewright.analysis.catalogue import load_catalogue
+from scenewright.core.catalogue import load_catalogue
 from scenewright.assets import asset_mesh
 from scenewright.cache import RequestCache, request_key
 from scenewright.errors import InputError

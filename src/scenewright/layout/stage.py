@@ -13,7 +13,7 @@ from collections.abc import Mapping
 
 import trimesh
 
-from scenewright.backends import VisionLanguageModel
+from scenewright.core.protocols import VisionLanguageModel
 from scenewright.folder import SceneFolder
 from scenewright.layout import LayoutResult, solve
 from scenewright.scene import Scene

@@ -10,26 +10,22 @@ seeded from the object id.
 from __future__ import annotations
 
 import hashlib
-import logging
 import re
-from collections.abc import Callable, Sequence
 from functools import cache
 from pathlib import Path
 
 import numpy as np
 import trimesh
 
-from scenewright.backends import MeshRequest
-from scenewright.errors import BackendError, InputError
+from scenewright.core.catalogue import lookup
+from scenewright.errors import InputError
 from scenewright.gltf import keep_materials
 from scenewright.procedural.builder import Model
 from scenewright.procedural.material import described_surfaces
 from scenewright.procedural.shapes import SHAPES
 from scenewright.procedural.shapes.families import FAMILY_WORDS
 from scenewright.procedural.style import resolve_style
-from scenewright.settings import Settings
 
-log = logging.getLogger(__name__)
 
 #: Words of an object's name → shape, for names the catalogue does not know: the shapes'
 #: own names, the words of each shape family ("camel" → animal), then synonyms.
@@ -63,12 +59,6 @@ _KEYWORD_RE = re.compile(r"\b(%s)(?:e?s)?\b" % "|".join(sorted(map(re.escape, KE
 
 
 def _catalogue_shape(word: str) -> str | None:
-    try:
-        from scenewright.analysis.catalogue import lookup
-    except ModuleNotFoundError as exc:
-        if exc.name not in ("scenewright.analysis.catalogue", "scenewright.analysis"):
-            raise
-        return None
     category = lookup(word)
     shape = getattr(category, "shape", None) if category is not None else None
     return shape if shape in SHAPES else None
@@ -136,42 +126,3 @@ def build_glb(shape: str, size, style: str, seed: int, description: str = "", na
     """The object as GLB bytes, its materials exact (trimesh's own copy rounds colours to 8 bits)."""
     scene, model = _finished(shape, size, style, seed, description, name)
     return scene.export(file_type="glb", include_normals=True, tree_postprocessor=keep_materials(model.materials))
-
-
-class ProceduralMeshes:
-    """Parametric styled meshes, offline and instant; the default mesh backend."""
-
-    name = "procedural"
-
-    @property
-    def params(self) -> dict[str, str]:
-        """What else decides the output (part of the asset cache key): the generators' code."""
-        return {"code": code_fingerprint()}
-
-    @classmethod
-    def from_spec(cls, argument: str, settings: Settings) -> ProceduralMeshes:
-        if argument:
-            raise InputError(f"the procedural mesh backend takes no argument, got {argument!r}; use 'procedural'")
-        return cls()
-
-    def generate(
-        self, requests: Sequence[MeshRequest], progress: Callable[[str], None] | None = None
-    ) -> dict[str, bytes]:
-        results: dict[str, bytes] = {}
-        failures: list[str] = []
-        for request in requests:
-            shape = choose_shape(request.name, request.category)
-            try:
-                name = f"{request.name} {request.category or ''}".strip()
-                results[request.id] = build_glb(
-                    shape, request.size.tuple(), request.style, seed_of(request.id), request.description, name
-                )
-            except (ValueError, np.linalg.LinAlgError) as exc:
-                failures.append(f"{request.id} ({shape}): {exc}")
-                continue
-            log.debug("built %s as %s in %s style", request.id, shape, request.style)
-            if progress is not None:
-                progress(f"{request.id}: {shape}")
-        if failures:
-            raise BackendError("procedural meshes failed for: " + "; ".join(failures))
-        return results

@@ -8,7 +8,7 @@ back on their shape, and else play no part.
 
 from __future__ import annotations
 
-from scenewright.analysis.catalogue import load_catalogue
+from scenewright.core.catalogue import load_catalogue
 
 #: A person sits on it, facing its front.
 SEATS = frozenset({

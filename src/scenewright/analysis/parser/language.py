@@ -12,7 +12,7 @@ import re
 import unicodedata
 from functools import lru_cache
 
-from scenewright.analysis.catalogue import load_catalogue, singular, words
+from scenewright.core.catalogue import load_catalogue, singular, words
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.errors import InputError
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from functools import lru_cache
 
-from scenewright.analysis.catalogue import load_catalogue, match_phrase, phrase_index, singular
+from scenewright.core.catalogue import load_catalogue, match_phrase, phrase_index, singular
 from scenewright.analysis.parser.tokens import _Tok
 from scenewright.analysis.parser.vocabulary import Entry, load_vocabulary
 from scenewright.analysis.parser.words import (

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
 
-from scenewright.analysis.catalogue import Category, load_catalogue, singular
+from scenewright.core.catalogue import Category, load_catalogue, singular
 from scenewright.analysis.parser.nouns import (
     _Group,
     _Mention,

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
 
-from scenewright.analysis.catalogue import load_catalogue, singular, words
+from scenewright.core.catalogue import load_catalogue, singular, words
 
 #: The family a thing nobody listed falls back to.
 GENERIC = "thing"

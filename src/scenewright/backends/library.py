@@ -28,8 +28,8 @@ from pathlib import Path
 import numpy as np
 import trimesh
 
-from scenewright.analysis.catalogue import load_catalogue, lookup, singular, words
-from scenewright.backends import MeshRequest
+from scenewright.core.catalogue import load_catalogue, lookup, singular, words
+from scenewright.core.protocols import MeshRequest
 from scenewright.errors import BackendError, InputError
 from scenewright.geometry import SCENE_TO_GLTF
 from scenewright.settings import Settings

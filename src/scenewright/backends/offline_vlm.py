@@ -19,7 +19,7 @@ from scenewright.errors import BackendError, InputError
 from scenewright.scene import Constraint, Event, LayoutReport, SceneObject
 
 if TYPE_CHECKING:
-    from scenewright.editing.plan import EditPlan
+    from scenewright.core.plan import EditPlan
     from scenewright.scene import Scene
     from scenewright.settings import Settings
 

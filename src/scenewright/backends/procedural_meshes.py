@@ -1,0 +1,54 @@
+"""The offline mesh backend: a styled parametric model per request (:mod:`scenewright.procedural`)."""
+
+from __future__ import annotations
+
+import logging
+from collections.abc import Callable, Sequence
+
+import numpy as np
+
+from scenewright.core.protocols import MeshRequest
+from scenewright.errors import BackendError, InputError
+from scenewright.procedural.meshes import build_glb, choose_shape, code_fingerprint, seed_of
+from scenewright.settings import Settings
+
+log = logging.getLogger(__name__)
+
+
+class ProceduralMeshes:
+    """Parametric styled meshes, offline and instant; the default mesh backend."""
+
+    name = "procedural"
+
+    @property
+    def params(self) -> dict[str, str]:
+        """What else decides the output (part of the asset cache key): the generators' code."""
+        return {"code": code_fingerprint()}
+
+    @classmethod
+    def from_spec(cls, argument: str, settings: Settings) -> ProceduralMeshes:
+        if argument:
+            raise InputError(f"the procedural mesh backend takes no argument, got {argument!r}; use 'procedural'")
+        return cls()
+
+    def generate(
+        self, requests: Sequence[MeshRequest], progress: Callable[[str], None] | None = None
+    ) -> dict[str, bytes]:
+        results: dict[str, bytes] = {}
+        failures: list[str] = []
+        for request in requests:
+            shape = choose_shape(request.name, request.category)
+            try:
+                name = f"{request.name} {request.category or ''}".strip()
+                results[request.id] = build_glb(
+                    shape, request.size.tuple(), request.style, seed_of(request.id), request.description, name
+                )
+            except (ValueError, np.linalg.LinAlgError) as exc:
+                failures.append(f"{request.id} ({shape}): {exc}")
+                continue
+            log.debug("built %s as %s in %s style", request.id, shape, request.style)
+            if progress is not None:
+                progress(f"{request.id}: {shape}")
+        if failures:
+            raise BackendError("procedural meshes failed for: " + "; ".join(failures))
+        return results

@@ -1,0 +1,114 @@
+"""The three kinds of backend the stages use, as protocols: what a stage may ask of each.
+
+A vision-language model (objects, constraints, quality control, edits, judging), an image
+generator (reference image, object images, ground texture) and a mesh generator (image or
+description → GLB). Stages receive backend objects as arguments and never look them up; the
+implementations and the registry that names them live in :mod:`scenewright.backends`, above
+every stage (docs/architecture.md).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Protocol, runtime_checkable
+
+from scenewright.core.plan import EditPlan
+from scenewright.scene import Constraint, SceneObject, Vec3
+
+if TYPE_CHECKING:
+    from scenewright.scene import LayoutReport, Scene
+
+
+@runtime_checkable
+class VisionLanguageModel(Protocol):
+    """Reasons about the scene. Every answer is validated before a stage uses it."""
+
+    name: str
+
+    def describe_objects(self, text: str, style: str, reference: bytes | None) -> list[SceneObject]:
+        """Objects of the scene with initial position, rotation, size and visual description."""
+
+    def write_constraints(
+        self, text: str, objects: Sequence[SceneObject], reference: bytes | None
+    ) -> list[Constraint]:
+        """Spatial constraints between the objects (source is the object placed)."""
+
+    def find_redundant(self, objects: Sequence[SceneObject], images: Mapping[str, bytes]) -> dict[str, str]:
+        """Ids of objects whose image is already part of another object's image → reason."""
+
+    def revise_constraints(
+        self,
+        text: str,
+        objects: Sequence[SceneObject],
+        constraints: Sequence[Constraint],
+        report: LayoutReport,
+        reference: bytes | None,
+    ) -> list[Constraint]:
+        """New constraints after the solver's ``report`` on the last ones (the paper's feedback loop)."""
+
+    def plan_edit(self, scene: Scene, instruction: str) -> EditPlan:
+        """What an instruction asks: operation, focus object, new constraints, new object."""
+
+    def judge(self, text: str, image: bytes, criterion: str) -> float:
+        """A 1–100 score of a render against the text for one rubric criterion."""
+
+
+@runtime_checkable
+class ImageGenerator(Protocol):
+    """Draws the reference image, the isolated object images and the ground texture."""
+
+    name: str
+
+    def reference_image(self, text: str, style: str) -> bytes | None:
+        """PNG of the whole scene, or ``None`` when this backend draws none."""
+
+    def object_images(
+        self,
+        objects: Sequence[SceneObject],
+        style: str,
+        reference: bytes | None,
+        progress: Callable[[str], None] | None = None,
+    ) -> dict[str, bytes]:
+        """Transparent front-view PNG per object id (may be empty when the backend draws none)."""
+
+    def ground_texture(self, text: str, style: str, kind: str, reference: bytes | None) -> bytes:
+        """A seamless, tileable PNG of the ground."""
+
+
+@dataclass(frozen=True)
+class MeshRequest:
+    """One asset to build: from an image where there is one, else from the description."""
+
+    id: str
+    name: str
+    category: str | None
+    description: str
+    style: str
+    size: Vec3
+    image: bytes | None = None
+
+
+@runtime_checkable
+class MeshGenerator(Protocol):
+    """Builds assets. Returns GLB bytes per request id in glTF convention (+Y up, front +Z),
+    as image-to-3D models do; :mod:`scenewright.assets` normalises them to the scene frame."""
+
+    name: str
+
+    def generate(
+        self, requests: Sequence[MeshRequest], progress: Callable[[str], None] | None = None
+    ) -> dict[str, bytes]:
+        """GLB bytes per request id; raises BackendError naming every request that failed."""
+
+
+@dataclass
+class Backends:
+    """The three backends one run uses."""
+
+    vlm: VisionLanguageModel
+    images: ImageGenerator
+    meshes: MeshGenerator
+
+    def names(self) -> dict[str, str]:
+        return {"vlm": self.vlm.name, "images": self.images.name, "meshes": self.meshes.name}
