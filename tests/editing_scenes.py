@@ -18,6 +18,7 @@ from PIL import Image
 
 from scenewright.assets import generate_assets
 from scenewright.cache import RequestCache
+from scenewright.core.protocols import Answer
 from scenewright.editing.parser import plan_edit_offline
 from scenewright.folder import SceneFolder
 from scenewright.integrity import assemble_recorded
@@ -28,9 +29,14 @@ class BoxMeshes:
     """A mesh backend answering a box of the requested size (glTF axes, bottom at y = 0)."""
 
     name = "boxes"
+    params: dict = {}
+    concurrency = 1
 
     def __init__(self) -> None:
         self.requests = []
+
+    def cancel(self):
+        """Boxes are made inside ``generate``; nothing runs to abandon."""
 
     def generate(self, requests, progress=None):
         out = {}
@@ -70,7 +76,7 @@ class RulePlanner:
     name = "rules"
 
     def plan_edit(self, scene, instruction):
-        return plan_edit_offline(scene, instruction)
+        return Answer(plan_edit_offline(scene, instruction))
 
 
 def _obj(oid, category, name, size, x, y, z=None, yaw=0.0, description=""):

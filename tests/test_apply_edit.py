@@ -9,6 +9,7 @@ import pytest
 from editing_scenes import BoxMeshes, NoImages, PictureImages, RulePlanner, snapshot
 from scenewright.assets import load_meshes
 from scenewright.backends import Backends
+from scenewright.core.protocols import Answer
 from scenewright.editing import EditPlan, apply_edit, entries, validate_plan
 from scenewright.errors import InfeasibleLayout, InputError
 from scenewright.layout import check, clean_constraints, colliding_pairs
@@ -196,7 +197,7 @@ class ScriptedPlanner:
         self.plan = plan
 
     def plan_edit(self, scene, instruction):
-        return self.plan
+        return Answer(self.plan)
 
 
 def test_a_model_plan_that_replaces_and_re_places_is_carried_out(folder):

@@ -27,7 +27,11 @@ class Counting:
     def __init__(self, inner, fail=(), broken=()):
         self.inner, self.fail, self.broken = inner, set(fail), set(broken)
         self.name = inner.name
+        self.params, self.concurrency = inner.params, inner.concurrency
         self.asked: list[str] = []
+
+    def cancel(self):
+        self.inner.cancel()
 
     def generate(self, requests, progress=None):
         self.asked += [r.id for r in requests]

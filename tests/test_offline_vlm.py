@@ -31,7 +31,7 @@ def test_registry_builds_it_and_it_meets_the_protocol():
 
 
 def test_describe_objects(vlm):
-    objects = vlm.describe_objects(LIVING, "realistic", None)
+    objects = vlm.describe_objects(LIVING, "realistic", None).value
     assert [o.id for o in objects] == ["sofa_1", "tv_1", "tv_stand_1", "coffee_table_1", "floor_lamp_1",
                                        "potted_plant_1", "rug_1"]  # fmt: skip
     catalogue = load_catalogue()
@@ -44,12 +44,12 @@ def test_describe_objects(vlm):
 @pytest.mark.parametrize("text", ["", "   \n "])
 def test_empty_text_is_bad_input(vlm, text):
     with pytest.raises(InputError, match="empty"):
-        vlm.describe_objects(text, "realistic", None)
+        vlm.describe_objects(text, "realistic", None).value
 
 
 def test_text_without_objects_is_bad_input(vlm):
     with pytest.raises(InputError, match="no object recognised in the text; name things like 'a sofa'"):
-        vlm.describe_objects("A feeling of calm and quiet joy.", "realistic", None)
+        vlm.describe_objects("A feeling of calm and quiet joy.", "realistic", None).value
 
 
 def test_parse_is_cached_per_text(vlm):
@@ -57,8 +57,8 @@ def test_parse_is_cached_per_text(vlm):
 
 
 def test_constraints_follow_the_parse(vlm):
-    objects = vlm.describe_objects(LIVING, "realistic", None)
-    constraints = vlm.write_constraints(LIVING, objects, None)
+    objects = vlm.describe_objects(LIVING, "realistic", None).value
+    constraints = vlm.write_constraints(LIVING, objects, None).value
     keys = {c.key() for c in constraints}
     assert {
         ("face to", "sofa_1", "tv_1"),
@@ -71,16 +71,16 @@ def test_constraints_follow_the_parse(vlm):
 
 
 def test_constraints_skip_removed_objects_and_map_other_ids(vlm):
-    objects = vlm.describe_objects(LIVING, "realistic", None)
+    objects = vlm.describe_objects(LIVING, "realistic", None).value
     kept = [o for o in objects if o.id != "tv_1"]
-    assert all("tv_1" not in (c.source, c.target) for c in vlm.write_constraints(LIVING, kept, None))
+    assert all("tv_1" not in (c.source, c.target) for c in vlm.write_constraints(LIVING, kept, None).value)
     renamed = [o.model_copy(update={"id": f"obj{i}"}) for i, o in enumerate(objects)]
-    constraints = vlm.write_constraints(LIVING, renamed, None)
+    constraints = vlm.write_constraints(LIVING, renamed, None).value
     assert ("left of", "obj4", "obj0") in {c.key() for c in constraints}
 
 
 def test_nothing_is_redundant_offline(vlm):
-    assert vlm.find_redundant(vlm.describe_objects(LIVING, "realistic", None), {"sofa_1": b"png"}) == {}
+    assert vlm.find_redundant(vlm.describe_objects(LIVING, "realistic", None).value, {"sofa_1": b"png"}).value == {}
 
 
 def test_judging_needs_a_remote_model(vlm):
@@ -89,8 +89,8 @@ def test_judging_needs_a_remote_model(vlm):
 
 
 def test_plan_edit_uses_the_rule_based_planner(vlm):
-    scene = Scene(text=LIVING, objects=vlm.describe_objects(LIVING, "realistic", None))
-    plan = vlm.plan_edit(scene, "move the floor lamp to the right of the sofa")
+    scene = Scene(text=LIVING, objects=vlm.describe_objects(LIVING, "realistic", None).value)
+    plan = vlm.plan_edit(scene, "move the floor lamp to the right of the sofa").value
     assert isinstance(plan, EditPlan)
     assert plan.operation == "move" and plan.focus == "floor_lamp_1"
 
@@ -110,7 +110,7 @@ def test_revision_relaxes_the_failed_relations(vlm):
             UnplacedObject(id="c", failed=[C("on", "c", "t")], reason="top too small"),
         ]
     )
-    revised = vlm.revise_constraints("text", [], constraints, report, None)
+    revised = vlm.revise_constraints("text", [], constraints, report, None).value
     assert [c.key() for c in revised] == [("near", "a", "t"), ("near", "b", "t")]
 
 
@@ -178,10 +178,10 @@ def test_first_poses_do_not_overlap_on_the_ground():
 def test_too_many_objects_are_refused_naming_the_limit_and_the_flag():
     vlm = OfflineVLM(max_objects=10)
     with pytest.raises(InputError) as err:
-        vlm.describe_objects("A hall with twelve chairs.", "realistic", None)
+        vlm.describe_objects("A hall with twelve chairs.", "realistic", None).value
     assert "12 objects" in str(err.value) and "limit of 10" in str(err.value)
     assert "--max-objects" in str(err.value) and "max_objects" in str(err.value)
-    assert len(vlm.describe_objects("A hall with ten chairs.", "realistic", None)) == 10
+    assert len(vlm.describe_objects("A hall with ten chairs.", "realistic", None).value) == 10
 
 
 def test_the_limit_comes_from_settings_and_defaults_to_150():
@@ -190,31 +190,31 @@ def test_the_limit_comes_from_settings_and_defaults_to_150():
     settings.max_objects = 7
     assert create_backend("vlm", "offline", settings).max_objects == 7
     with pytest.raises(InputError, match="150"):
-        OfflineVLM().describe_objects("A stadium with 1000000 seats and 999999 chairs.", "realistic", None)
+        OfflineVLM().describe_objects("A stadium with 1000000 seats and 999999 chairs.", "realistic", None).value
 
 
 def test_guessed_objects_are_recorded_for_the_provenance(vlm):
-    objects = vlm.describe_objects("A camel and two fuel tanks beside a bench.", "realistic", None)
+    answer = vlm.describe_objects("A camel and two fuel tanks beside a bench.", "realistic", None)
+    objects = answer.value
     assert [o.id for o in objects] == ["camel_1", "fuel_tank_1", "fuel_tank_2", "bench_1"]
     assert [o.name for o in objects][:2] == ["camel", "fuel tank"]
-    (event,) = vlm.last_repairs
+    (event,) = answer.repairs
     assert event.data["guessed"] == {"camel_1": "animal", "fuel_tank_1": "tank", "fuel_tank_2": "tank"}
     assert "camel_1 (animal)" in event.message
-    vlm.find_redundant(objects, {})
-    assert vlm.last_repairs == []  # reported once, not again by the next call
+    assert vlm.find_redundant(objects, {}).repairs == ()  # reported once, with its own answer
 
 
 def test_support_repairs_are_recorded_with_the_constraints(vlm):
     text = "A desk stands by the window, and a sofa sits on the desk."
-    objects = vlm.describe_objects(text, "realistic", None)
-    constraints = vlm.write_constraints(text, objects, None)
-    assert ("sofa_1", "side of", "desk_1") in {(c.source, c.relation, c.target) for c in constraints}
-    assert [e.data["step"] for e in vlm.last_repairs] == ["repair"]
-    assert "desk_1 cannot hold it" in vlm.last_repairs[0].message
+    objects = vlm.describe_objects(text, "realistic", None).value
+    answer = vlm.write_constraints(text, objects, None)
+    assert ("sofa_1", "side of", "desk_1") in {(c.source, c.relation, c.target) for c in answer.value}
+    assert [e.data["step"] for e in answer.repairs] == ["repair"]
+    assert "desk_1 cannot hold it" in answer.repairs[0].message
 
 
 def test_constraints_keep_what_the_composition_added(vlm):
     text = "A living room with a sofa, a coffee table and a rug."
-    objects = vlm.describe_objects(text, "realistic", None)
-    constraints = {(c.source, c.relation, c.target) for c in vlm.write_constraints(text, objects, None)}
+    objects = vlm.describe_objects(text, "realistic", None).value
+    constraints = {(c.source, c.relation, c.target) for c in vlm.write_constraints(text, objects, None).value}
     assert ("coffee_table_1", "on", "rug_1") in constraints  # the rug was laid under the coffee table

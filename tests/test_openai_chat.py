@@ -30,7 +30,7 @@ def _objects():
 def test_objects_request_carries_strict_schema_and_reference_image(openai_server, remote_settings):
     openai_server.script(CHAT, chat_reply({"objects": [object_item("table_1", "wooden table", (1.6, 0.9, 0.75))]}))
     reference = png()
-    objects = OpenAIChatVLM("test-model", remote_settings).describe_objects("a wooden table", "cartoon", reference)
+    objects = OpenAIChatVLM("test-model", remote_settings).describe_objects("a wooden table", "cartoon", reference).value
     assert [o.id for o in objects] == ["table_1"]
     assert objects[0].category == "table"
     (request,) = openai_server.seen(CHAT)
@@ -69,16 +69,17 @@ def test_object_answers_are_repaired_and_recorded(openai_server, remote_settings
     answer["objects"][3]["rotation"] = {"x": 90, "y": 0, "z": -90}
     openai_server.script(CHAT, chat_reply(answer))
     vlm = OpenAIChatVLM("test-model", remote_settings)
-    objects = vlm.describe_objects("a grey sofa, another sofa and a lamp", "realistic", None)
+    answer = vlm.describe_objects("a grey sofa, another sofa and a lamp", "realistic", None)
+    objects = answer.value
     assert [o.id for o in objects] == ["sofa_1", "sofa_1_2", "lamp"]
     assert objects[1].size.x == 5.0
     assert objects[2].size.x == 0.1
     assert objects[2].rotation.tuple() == (0.0, 0.0, 270.0)
-    messages = " | ".join(e.message for e in vlm.last_repairs)
+    messages = " | ".join(e.message for e in answer.repairs)
     assert "background element 'wooden floor'" in messages
     assert "renamed id 'Sofa 1' to 'sofa_1'" in messages
     assert "clamped" in messages and "upright" in messages
-    assert all(e.stage == "vlm.scene_objects" for e in vlm.last_repairs)
+    assert all(e.stage == "vlm.scene_objects" for e in answer.repairs)
     assert openai_server.seen(CHAT)[0].image_urls == []
 
 
@@ -94,7 +95,7 @@ def test_malformed_json_is_sent_back_with_the_error(openai_server, remote_settin
         chat_reply('{"objects": [ {"id": "table_1",'),
         chat_reply("```json\n" + json.dumps({"objects": [object_item("table_1", "table")]}) + "\n```"),
     )
-    objects = OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)
+    objects = OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None).value
     assert [o.id for o in objects] == ["table_1"]
     first, second = openai_server.seen(CHAT)
     assert len(second.json["messages"]) == len(first.json["messages"]) + 2
@@ -106,7 +107,7 @@ def test_schema_invalid_answers_exhaust_the_budget_with_a_clear_error(openai_ser
     bad = chat_reply({"objects": [{"id": "t", "name": "table"}]})
     openai_server.script(CHAT, bad, bad, bad)
     with pytest.raises(BackendError) as err:
-        OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)
+        OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None).value
     message = str(err.value)
     assert "scene_objects (test-model)" in message and "3 attempts" in message
     assert "objects.0.position" in message and "Field required" in message
@@ -120,14 +121,14 @@ def test_a_refusal_is_retried(openai_server, remote_settings):
         chat_reply({"objects": [object_item("table_1", "table")]}),
     )
     vlm = OpenAIChatVLM("test-model", remote_settings)
-    assert [o.id for o in vlm.describe_objects("a table", "realistic", None)] == ["table_1"]
+    assert [o.id for o in vlm.describe_objects("a table", "realistic", None).value] == ["table_1"]
     assert "refused" in openai_server.seen(CHAT)[1].json["messages"][-1]["content"]
 
 
 def test_refusing_every_time_names_the_refusal(openai_server, remote_settings):
     openai_server.script(CHAT, *[chat_reply(None, refusal="No.")] * 3)
     with pytest.raises(BackendError, match="the model refused: No."):
-        OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)
+        OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None).value
 
 
 def test_rate_limit_then_success(openai_server, remote_settings):
@@ -137,7 +138,7 @@ def test_rate_limit_then_success(openai_server, remote_settings):
         error_reply(429, "slow down", headers=FAST),
         chat_reply({"objects": [object_item("table_1", "table")]}),
     )
-    assert len(OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)) == 1
+    assert len(OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None).value) == 1
     assert len(openai_server.seen(CHAT)) == 3
 
 
@@ -145,7 +146,7 @@ def test_server_errors_past_the_retry_budget(openai_server, remote_settings):
     openai_server.script(CHAT, *[error_reply(500, "the GPU caught fire", headers=FAST)] * 3)
     expected = r"scene_objects \(test-model\): server answered HTTP 500: the GPU caught fire"
     with pytest.raises(BackendError, match=expected):
-        OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)
+        OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None).value
     assert len(openai_server.seen(CHAT)) == 3
 
 
@@ -153,7 +154,7 @@ def test_a_hung_request_times_out_and_is_retried(openai_server, remote_settings)
     remote_settings.timeout = 0.3
     hung = chat_reply({"objects": []}, delay=30)
     openai_server.script(CHAT, hung, chat_reply({"objects": [object_item("table_1", "table")]}))
-    assert len(OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)) == 1
+    assert len(OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None).value) == 1
     assert len(openai_server.seen(CHAT)) == 2
 
 
@@ -161,13 +162,13 @@ def test_a_server_that_always_hangs_fails_naming_the_timeout(openai_server, remo
     remote_settings.timeout, remote_settings.max_retries = 0.2, 1
     openai_server.script(CHAT, *[chat_reply({"objects": []}, delay=30)] * 2)
     with pytest.raises(BackendError, match="timed out"):
-        OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)
+        OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None).value
 
 
 def test_accepted_replies_are_cached(openai_server, remote_settings):
     openai_server.script(CHAT, chat_reply({"objects": [object_item("table_1", "table")]}))
-    first = OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)
-    again = OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)
+    first = OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None).value
+    again = OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None).value
     assert first == again
     assert len(openai_server.seen(CHAT)) == 1
 
@@ -178,7 +179,7 @@ def test_an_empty_object_list_is_asked_again(openai_server, remote_settings):
         chat_reply({"objects": [object_item("grass", "grass")]}),
         chat_reply({"objects": [object_item("bench_1", "bench")]}),
     )
-    objects = OpenAIChatVLM("test-model", remote_settings).describe_objects("a bench", "realistic", None)
+    objects = OpenAIChatVLM("test-model", remote_settings).describe_objects("a bench", "realistic", None).value
     assert [o.id for o in objects] == ["bench_1"]
     assert "no usable object" in openai_server.seen(CHAT)[1].json["messages"][-1]["content"]
 
@@ -196,13 +197,13 @@ def test_constraints_drop_unknown_relations_ids_duplicates_and_cycles(openai_ser
     }
     openai_server.script(CHAT, chat_reply(answer))
     vlm = OpenAIChatVLM("test-model", remote_settings)
-    kept = vlm.write_constraints("a chair right of a table, a lamp", _objects(), png())
-    assert [str(c) for c in kept] == ["chair_1 right of table_1"]
-    dropped = [e.message for e in vlm.last_repairs]
+    answer = vlm.write_constraints("a chair right of a table, a lamp", _objects(), png())
+    assert [str(c) for c in answer.value] == ["chair_1 right of table_1"]
+    dropped = [e.message for e in answer.repairs]
     assert len(dropped) == 5
     assert any("'under'" in m and "unknown relation" in m for m in dropped), dropped
     assert any("sofa_9" in m for m in dropped)
-    assert all(e.stage == "vlm.spatial_constraints" for e in vlm.last_repairs)
+    assert all(e.stage == "vlm.spatial_constraints" for e in answer.repairs)
     (request,) = openai_server.seen(CHAT)
     assert request.schema_name == "spatial_constraints"
     schema = request.json["response_format"]["json_schema"]["schema"]
@@ -220,7 +221,7 @@ def test_revision_sends_the_last_constraints_and_the_solver_report(openai_server
         unplaced=[UnplacedObject(id="chair_1", failed=last, reason="no collision-free place left of table_1")],
     )
     vlm = OpenAIChatVLM("test-model", remote_settings)
-    revised = vlm.revise_constraints("a chair by a table", _objects(), last, report, None)
+    revised = vlm.revise_constraints("a chair by a table", _objects(), last, report, None).value
     assert [str(c) for c in revised] == ["chair_1 near table_1"]
     (request,) = openai_server.seen(CHAT)
     assert request.schema_name == "revised_constraints"
@@ -235,15 +236,16 @@ def test_redundant_images_are_labelled_and_unknown_ids_ignored(openai_server, re
     )
     vlm = OpenAIChatVLM("test-model", remote_settings)
     images = {"table_1": png((1, 2, 3, 255)), "lamp_1": png((4, 5, 6, 255))}
-    assert vlm.find_redundant(_objects(), images) == {"lamp_1": "drawn on the table"}
-    assert "ghost" in vlm.last_repairs[0].message
+    answer = vlm.find_redundant(_objects(), images)
+    assert answer.value == {"lamp_1": "drawn on the table"}
+    assert "ghost" in answer.repairs[0].message
     (request,) = openai_server.seen(CHAT)
     assert len(request.image_urls) == 2
     assert "Picture of table_1:" in request.text and "chair_1" not in request.text
 
 
 def test_redundancy_needs_no_call_for_a_single_image(openai_server, remote_settings):
-    assert OpenAIChatVLM("test-model", remote_settings).find_redundant(_objects(), {"table_1": png()}) == {}
+    assert OpenAIChatVLM("test-model", remote_settings).find_redundant(_objects(), {"table_1": png()}).value == {}
     assert openai_server.requests == []
 
 
@@ -270,10 +272,11 @@ def test_edit_plans_keep_the_focus_as_the_only_source(openai_server, remote_sett
         ),
     )
     vlm = OpenAIChatVLM("test-model", remote_settings)
-    plan = vlm.plan_edit(_scene(), "put the chair to the right of the table, facing the lamp")
+    answer = vlm.plan_edit(_scene(), "put the chair to the right of the table, facing the lamp")
+    plan = answer.value
     assert plan.operation == "move" and plan.focus == "chair_1"
     assert [str(c) for c in plan.constraints] == ["chair_1 right of table_1", "chair_1 face to lamp_1"]
-    messages = " | ".join(e.message for e in vlm.last_repairs)
+    messages = " | ".join(e.message for e in answer.repairs)
     assert "turned {'relation': 'left of', 'source': 'table_1'" in messages
     assert "'source': 'lamp_1', 'target': 'chair_1'}: its source is not the focus" in messages
     assert "unknown object 'sofa_7'" in messages
@@ -282,7 +285,7 @@ def test_edit_plans_keep_the_focus_as_the_only_source(openai_server, remote_sett
 
 def test_an_unknown_focus_is_asked_again_with_the_choices(openai_server, remote_settings):
     openai_server.script(CHAT, _edit(focus="armchair_3"), _edit(operation="delete", focus="Lamp_1"))
-    plan = OpenAIChatVLM("test-model", remote_settings).plan_edit(_scene(), "remove the lamp")
+    plan = OpenAIChatVLM("test-model", remote_settings).plan_edit(_scene(), "remove the lamp").value
     assert plan.operation == "delete" and plan.focus == "lamp_1" and plan.constraints == []
     retry = openai_server.seen(CHAT)[1].json["messages"][-1]["content"]
     assert "'armchair_3' is not an object" in retry and "chair_1, lamp_1, table_1" in retry
@@ -303,7 +306,7 @@ def test_an_added_object_is_planned_with_a_clamped_size(openai_server, remote_se
             constraints=[{"relation": "left of", "source": "chair_1", "target": "table_1"}],
         ),
     )
-    plan = OpenAIChatVLM("test-model", remote_settings).plan_edit(_scene(), "add a plant left of the table")
+    plan = OpenAIChatVLM("test-model", remote_settings).plan_edit(_scene(), "add a plant left of the table").value
     assert "needs new_object" in openai_server.seen(CHAT)[1].json["messages"][-1]["content"]
     assert plan.operation == "add" and plan.new_object.size.tuple() == (5.0, 0.4, 1.0)
     assert [str(c) for c in plan.constraints] == ["chair_1 left of table_1"]
@@ -316,7 +319,7 @@ def test_an_added_object_is_planned_with_a_clamped_size(openai_server, remote_se
 def test_a_move_going_nowhere_is_asked_again(openai_server, remote_settings):
     nowhere = [{"relation": "near", "source": "chair_1", "target": "ghost"}]
     openai_server.script(CHAT, _edit(constraints=nowhere), _edit(yaw=-90.0))
-    plan = OpenAIChatVLM("test-model", remote_settings).plan_edit(_scene(), "turn the chair to the right")
+    plan = OpenAIChatVLM("test-model", remote_settings).plan_edit(_scene(), "turn the chair to the right").value
     assert plan.operation == "move" and plan.yaw == 270.0 and plan.constraints == []
     assert "needs constraints saying where to, or a yaw" in openai_server.seen(CHAT)[1].json["messages"][-1]["content"]
 
@@ -385,20 +388,20 @@ def test_a_reply_trickled_a_byte_at_a_time_stops_at_the_total_deadline(openai_se
     body = chat_reply({"objects": [object_item("table_1", "table")]}).body
     openai_server.script(CHAT, Reply(body, drip=0.1))
     with pytest.raises(BackendError, match=r"scene_objects \(test-model\): timed out after 1 s"):
-        OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)
+        OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None).value
 
 
 def test_a_body_larger_than_max_download_bytes_is_not_read(openai_server, remote_settings):
     remote_settings.max_retries, remote_settings.max_download_bytes = 0, 100_000
     openai_server.script(CHAT, chat_reply({"objects": [object_item("t", "x" * 200_000)]}))
     with pytest.raises(BackendError, match=r"larger than max_download_bytes \(100,000 bytes\)"):
-        OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)
+        OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None).value
 
 
 def test_a_200_whose_body_is_not_json_is_a_backend_error(openai_server, remote_settings):
     openai_server.script(CHAT, Reply("<html>maintenance</html>"))
     with pytest.raises(BackendError, match="body that is not JSON"):
-        OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)
+        OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None).value
 
 
 def test_an_oversized_answer_is_refused_and_not_sent_back_whole(openai_server, remote_settings):
@@ -406,7 +409,7 @@ def test_an_oversized_answer_is_refused_and_not_sent_back_whole(openai_server, r
     huge = {"objects": [object_item("table_1", "table " * 2_000)]}
     good = {"objects": [object_item("table_1", "table")]}
     openai_server.script(CHAT, chat_reply(huge), chat_reply(good))
-    objects = OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)
+    objects = OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None).value
     assert [o.id for o in objects] == ["table_1"]
     retry = openai_server.seen(CHAT)[1].json
     assert len(json.dumps(retry)) < 10_000
@@ -419,7 +422,7 @@ def test_too_many_objects_or_too_long_names_are_asked_again(openai_server, remot
     long_name = {"objects": [object_item("lamp_1", "lamp " * 50)]}
     openai_server.script(CHAT, chat_reply(many), chat_reply(long_name))
     with pytest.raises(BackendError, match=r"name: Value error, 249 characters, more than the 200 allowed"):
-        OpenAIChatVLM("test-model", remote_settings).describe_objects("boxes", "realistic", None)
+        OpenAIChatVLM("test-model", remote_settings).describe_objects("boxes", "realistic", None).value
     first = openai_server.seen(CHAT)[1].json["messages"][-1]["content"]
     assert "4 objects, more than max_objects (3)" in first
 

@@ -11,6 +11,7 @@ from PIL import Image
 
 from scenewright.analysis.stage import analyze
 from scenewright.backends import Backends, backends_from_settings
+from scenewright.core.protocols import Answer
 from scenewright.errors import BackendError, InputError, MissingExtra
 from scenewright.folder import SceneFolder
 from scenewright.layout.stage import arrange
@@ -208,14 +209,14 @@ class RedundantVLM:
 
     def describe_objects(self, text, style, reference):
         assert reference is not None
-        return [
+        return Answer([
             SceneObject(id="bathtub_1", name="bathtub", size=Vec3(x=1.7, y=0.8, z=0.6)),
             SceneObject(id="faucet_1", name="faucet", size=Vec3(x=0.1, y=0.2, z=0.3)),
-        ]
+        ])
 
     def find_redundant(self, objects, images):
         self.seen_images = dict(images)
-        return {"faucet_1": "already part of the bathtub's image"}
+        return Answer({"faucet_1": "already part of the bathtub's image"})
 
 
 def test_analyze_saves_images_and_records_removed_objects(tmp_path):
@@ -241,7 +242,7 @@ def test_analyze_saves_images_and_records_removed_objects(tmp_path):
 def test_analyze_refuses_a_text_without_objects(tmp_path):
     class Nothing(RedundantVLM):
         def describe_objects(self, text, style, reference):
-            return []
+            return Answer([])
 
     folder = SceneFolder(tmp_path / "x")
     folder.create()
@@ -262,13 +263,13 @@ class FeedbackVLM:
         self.reports = []
 
     def write_constraints(self, text, objects, reference):
-        return [Constraint(relation="far", source="sofa_1", target="table_1")]
+        return Answer([Constraint(relation="far", source="sofa_1", target="table_1")])
 
     def revise_constraints(self, text, objects, constraints, report, reference):
         self.reports.append(report)
         if self.give_up:
-            return list(constraints)
-        return [Constraint(relation="near", source="sofa_1", target="table_1")]
+            return Answer(list(constraints))
+        return Answer([Constraint(relation="near", source="sofa_1", target="table_1")])
 
 
 def _room(tmp_path) -> tuple[Scene, SceneFolder]:

@@ -43,8 +43,9 @@ def _reference(scene: Scene, folder: SceneFolder, images: ImageGenerator) -> byt
 
 
 def _objects(scene: Scene, vlm: VisionLanguageModel, reference: bytes | None) -> None:
-    objects = vlm.describe_objects(scene.text, scene.style, reference)
-    scene.provenance += getattr(vlm, "last_repairs", [])  # what a remote model's answer needed repaired
+    answer = vlm.describe_objects(scene.text, scene.style, reference)
+    scene.provenance += answer.repairs  # what the model's answer needed repaired
+    objects = answer.value
     if not objects:
         raise InputError(
             f"found no object to build in the text {scene.text[:80]!r}; name the things the scene "
@@ -78,8 +79,9 @@ def _remove_redundant(scene: Scene, folder: SceneFolder, vlm: VisionLanguageMode
     if any(e.stage == STAGE and e.data.get("step") == REDUNDANCY_STEP for e in scene.provenance):
         return
     pictures = {o.id: folder.read_image(folder.image_of(o), f"objects[{o.id}].image") for o in scene.objects if o.image}
-    redundant = vlm.find_redundant(scene.objects, pictures)
-    scene.provenance += getattr(vlm, "last_repairs", [])
+    answer = vlm.find_redundant(scene.objects, pictures)
+    scene.provenance += answer.repairs
+    redundant = answer.value
     unknown = sorted(set(redundant) - {o.id for o in scene.objects})
     if unknown:
         log.warning("quality control named unknown objects %s; ignoring them", ", ".join(unknown))

@@ -65,7 +65,7 @@ def cache_key(meshes: MeshGenerator, request: MeshRequest) -> str:
     (two chairs of one scene are not the same mesh). ``params`` is the backend's own say in
     what changes its output (Hunyuan3D's generation settings, a library's contents).
     """
-    params = getattr(meshes, "params", None)
+    params = dict(meshes.params)
     if request.image is not None:
         return request_key(meshes.name, params, request.image, request.style)
     return request_key(
@@ -120,7 +120,7 @@ def generate_assets(
 
     for oid in list(raw):
         store(oid, raw[oid])
-    width = max(1, min(len(missing), int(getattr(meshes, "concurrency", 1))))
+    width = max(1, min(len(missing), meshes.concurrency))
     pool = ThreadPoolExecutor(max_workers=width, thread_name_prefix="assets")
     futures = {}
     stored: set[str] = set()
@@ -148,9 +148,7 @@ def generate_assets(
         # Ctrl-C: requests not yet started are never sent, running ones are abandoned (when the
         # backend can), and meshes that finished meanwhile are kept: they are paid for.
         pool.shutdown(wait=False, cancel_futures=True)
-        cancel = getattr(meshes, "cancel", None)
-        if cancel is not None:
-            cancel()
+        meshes.cancel()
         for future, oid in futures.items():
             if oid not in stored and future.done() and not future.cancelled() and future.exception() is None:
                 glb = future.result().get(oid)

@@ -132,6 +132,8 @@ class AssetLibrary:
     """MeshGenerator that picks, for each request, the best-matching file of a collection."""
 
     name = "library"
+    #: Reading a file is quick; one request at a time.
+    concurrency = 1
 
     def __init__(self, root: str | Path):
         self.root = Path(root).expanduser()
@@ -156,6 +158,9 @@ class AssetLibrary:
             stat = (self.root / entry.file).stat()
             h.update(repr((asdict(entry), stat.st_size, stat.st_mtime_ns)).encode())
         return h.hexdigest()
+
+    def cancel(self) -> None:
+        """Nothing runs in the background: each request is answered inside ``generate``."""
 
     def score(self, request: MeshRequest, index: int) -> int:
         entry, have = self.entries[index], self._tokens[index]

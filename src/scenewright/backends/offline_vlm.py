@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 from scenewright.analysis.arrange import Composition, compose
 from scenewright.analysis.parser import ParsedScene, parse_scene
 from scenewright.analysis.parser.language import check_english
+from scenewright.core.protocols import Answer
 from scenewright.errors import BackendError, InputError
 from scenewright.scene import Constraint, Event, LayoutReport, SceneObject
 
@@ -48,8 +49,6 @@ class OfflineVLM:
     def __init__(self, max_objects: int = DEFAULT_MAX_OBJECTS) -> None:
         self._parses: dict[str, ParsedScene] = {}
         self.max_objects = max_objects
-        #: What the last answer guessed or repaired, for the stage to add to the provenance.
-        self.last_repairs: list[Event] = []
         self._compositions: dict[str, Composition] = {}
 
     @classmethod
@@ -76,9 +75,9 @@ class OfflineVLM:
             self._compositions[key] = compose(parsed)
         return self._compositions[key]
 
-    def describe_objects(self, text: str, style: str, reference: bytes | None) -> list[SceneObject]:
+    def describe_objects(self, text: str, style: str, reference: bytes | None) -> Answer[list[SceneObject]]:
         parsed = self.parse(text)
-        self.last_repairs = []
+        repairs: list[Event] = []
         if not parsed.objects:
             raise InputError(NO_OBJECT)
         if len(parsed.objects) > self.max_objects:
@@ -86,34 +85,35 @@ class OfflineVLM:
         guessed = {o.id: o.category for o in parsed.objects if o.guessed}
         if guessed:
             names = ", ".join(f"{i} ({c})" for i, c in guessed.items())
-            self.last_repairs.append(
+            repairs.append(
                 Event(
                     stage="vlm.objects",
                     message=f"guessed {len(guessed)} objects the catalogue does not name: {names}",
                     data={"backend": self.name, "step": "guessed", "guessed": guessed},
                 )
             )
-        return [o.model_copy(deep=True) for o in self.composition(text).objects]
+        return Answer([o.model_copy(deep=True) for o in self.composition(text).objects], tuple(repairs))
 
     def write_constraints(
         self, text: str, objects: Sequence[SceneObject], reference: bytes | None
-    ) -> list[Constraint]:
+    ) -> Answer[list[Constraint]]:
         parsed = self.parse(text)
-        self.last_repairs = [
+        repairs = tuple(
             Event(stage="vlm.constraints", message=f"repaired: {note}", data={"backend": self.name, "step": "repair"})
             for note in parsed.repairs
-        ]
+        )
         ids = _match_ids(parsed, objects)
         out: list[Constraint] = []
         for r in self.composition(text).relations:
             if r.source in ids and r.target in ids:
                 out.append(Constraint(relation=r.relation, source=ids[r.source], target=ids[r.target]))
-        return out
+        return Answer(out, repairs)
 
-    def find_redundant(self, objects: Sequence[SceneObject], images: Mapping[str, bytes]) -> dict[str, str]:
+    def find_redundant(
+        self, objects: Sequence[SceneObject], images: Mapping[str, bytes]
+    ) -> Answer[dict[str, str]]:
         # The parse lists each thing once, and there are no pictures to compare offline.
-        self.last_repairs = []
-        return {}
+        return Answer({})
 
     def revise_constraints(
         self,
@@ -122,14 +122,13 @@ class OfflineVLM:
         constraints: Sequence[Constraint],
         report: LayoutReport,
         reference: bytes | None,
-    ) -> list[Constraint]:
-        self.last_repairs = []
-        return relax_constraints(constraints, report)
+    ) -> Answer[list[Constraint]]:
+        return Answer(relax_constraints(constraints, report))
 
-    def plan_edit(self, scene: Scene, instruction: str) -> EditPlan:
+    def plan_edit(self, scene: Scene, instruction: str) -> Answer[EditPlan]:
         from scenewright.editing.parser import plan_edit_offline
 
-        return plan_edit_offline(scene, instruction)
+        return Answer(plan_edit_offline(scene, instruction))
 
     def judge(self, text: str, image: bytes, criterion: str) -> float:
         raise BackendError("judging renders needs a remote vision-language model: --vlm openai:MODEL")

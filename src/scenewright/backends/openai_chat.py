@@ -4,8 +4,8 @@ Each task sends its prompt (:mod:`scenewright.backends.prompts`), the images it 
 JSON schema of its answer, then treats the answer as untrusted input. What the schema cannot
 guarantee is repaired here and kept on record: ids are made valid and unique, sizes clamped,
 background "objects" dropped; constraints with unknown relations or ids, duplicates, self
-references and cycles dropped. After each call :attr:`OpenAIChatVLM.last_repairs` holds one
-provenance :class:`~scenewright.scene.Event` per repair, for the stage to add to the scene.
+references and cycles dropped. Each answer comes back as an :class:`~scenewright.core.protocols.Answer`
+with one provenance :class:`~scenewright.scene.Event` per repair, for the stage to add to the scene.
 
 Sizes are clamped to [0.1, 5] m, the paper's range, widened to any length the text itself
 states ("a 12 m tall tower", "a 5 cm coin"), so a model's slip cannot make a 40 m chair while
@@ -23,12 +23,13 @@ from typing import TYPE_CHECKING, Annotated, Any, Literal
 from pydantic import BaseModel, ConfigDict, WithJsonSchema
 
 from scenewright.backends import prompts
+from scenewright.core.plan import EditPlan, NewObject
+from scenewright.core.protocols import Answer
 from scenewright.backends.structured import ChatClient, InvalidAnswer, json_text, model_name, user_message
 from scenewright.errors import InputError
 from scenewright.scene import MAX_ID_CHARS, RELATION_TYPES, Constraint, Event, SceneObject, Vec3
 
 if TYPE_CHECKING:
-    from scenewright.core.plan import EditPlan
     from scenewright.scene import LayoutReport, Scene
     from scenewright.settings import Settings
 
@@ -162,8 +163,6 @@ class OpenAIChatVLM:
     def __init__(self, model: str, settings: Settings, client: Any = None):
         self.model = model
         self.chat = ChatClient(model, settings, client)
-        #: Provenance events for what the last call repaired or dropped in the model's answer.
-        self.last_repairs: list[Event] = []
 
     @classmethod
     def from_spec(cls, argument: str, settings: Settings) -> OpenAIChatVLM:
@@ -171,40 +170,38 @@ class OpenAIChatVLM:
 
     # --- repairs -------------------------------------------------------------------------
 
-    def _repaired(self, task: str, message: str, **data: Any) -> None:
+    def _repaired(self, repairs: list[Event], task: str, message: str, **data: Any) -> None:
         log.info("%s: %s", task, message)
-        self.last_repairs.append(Event(stage=f"vlm.{task}", message=message, data={"model": self.model, **data}))
-
-    def _begin(self) -> None:
-        self.last_repairs = []
+        repairs.append(Event(stage=f"vlm.{task}", message=message, data={"model": self.model, **data}))
 
     # --- scene analysis ------------------------------------------------------------------
 
-    def describe_objects(self, text: str, style: str, reference: bytes | None) -> list[SceneObject]:
-        self._begin()
+    def describe_objects(self, text: str, style: str, reference: bytes | None) -> Answer[list[SceneObject]]:
         low, high = size_range(text)
         messages = [
             {"role": "system", "content": prompts.OBJECTS_SYSTEM},
             user_message(prompts.describe_objects(text, style, low, high), [reference] if reference else []),
         ]
 
-        def check(answer: ObjectsAnswer) -> list[SceneObject]:
-            # Each check starts the record afresh: only the accepted answer's repairs count.
-            self._begin()
+        def check(answer: ObjectsAnswer) -> Answer[list[SceneObject]]:
+            # Each check keeps its own record: only the accepted answer's repairs count.
+            repairs: list[Event] = []
             limit = self.chat.settings.max_objects
             if len(answer.objects) > limit:
                 raise InvalidAnswer(
                     f"the list has {len(answer.objects)} objects, more than max_objects ({limit}); "
                     "list only the objects the description names"
                 )
-            objects = self._objects_from(answer.objects, low, high)
+            objects = self._objects_from(answer.objects, low, high, repairs)
             if not objects:
                 raise InvalidAnswer("the list has no usable object; list the objects the description names")
-            return objects
+            return Answer(objects, tuple(repairs))
 
         return self.chat.ask("scene_objects", messages, ObjectsAnswer, check)
 
-    def _objects_from(self, proposed: Sequence[ProposedObject], low: float, high: float) -> list[SceneObject]:
+    def _objects_from(
+        self, proposed: Sequence[ProposedObject], low: float, high: float, repairs: list[Event]
+    ) -> list[SceneObject]:
         from scenewright.core.catalogue import lookup
 
         objects: list[SceneObject] = []
@@ -213,10 +210,10 @@ class OpenAIChatVLM:
             name = " ".join(item.name.split())
             words = snake_id(name).split("_")
             if not name or not words[0]:
-                self._repaired("scene_objects", f"dropped an object without a name (id {item.id!r})")
+                self._repaired(repairs, "scene_objects", f"dropped an object without a name (id {item.id!r})")
                 continue
             if words[-1] in BACKGROUND_WORDS:
-                self._repaired("scene_objects", f"dropped background element {name!r}", id=item.id)
+                self._repaired(repairs, "scene_objects", f"dropped background element {name!r}", id=item.id)
                 continue
             object_id = (snake_id(item.id) or snake_id(name))[:MAX_ID_CHARS - 4].strip("_")
             base, n = object_id, 1
@@ -224,13 +221,13 @@ class OpenAIChatVLM:
                 n += 1
                 object_id = f"{base}_{n}"
             if object_id != item.id:
-                self._repaired("scene_objects", f"renamed id {item.id!r} to {object_id!r}", id=object_id)
+                self._repaired(repairs, "scene_objects", f"renamed id {item.id!r} to {object_id!r}", id=object_id)
             taken.add(object_id)
-            size = self._clamped("scene_objects", object_id, item.size, low, high)
+            size = self._clamped(repairs, "scene_objects", object_id, item.size, low, high)
             position = Vec3.of(v if math.isfinite(v) else 0.0 for v in item.position.tuple())
             yaw = item.rotation.z if math.isfinite(item.rotation.z) else 0.0
             if item.rotation.x or item.rotation.y:
-                self._repaired("scene_objects", f"{object_id}: kept the yaw only; objects stand upright", id=object_id)
+                self._repaired(repairs, "scene_objects", f"{object_id}: kept the yaw only; objects stand upright", id=object_id)
             category = lookup(name)
             objects.append(
                 SceneObject(
@@ -245,11 +242,11 @@ class OpenAIChatVLM:
             )
         return objects
 
-    def _clamped(self, task: str, object_id: str, size: Vec3, low: float, high: float) -> Vec3:
+    def _clamped(self, repairs: list[Event], task: str, object_id: str, size: Vec3, low: float, high: float) -> Vec3:
         values = [v if math.isfinite(v) else low for v in size.tuple()]
         clamped = Vec3.of(min(max(v, low), high) for v in values)
         if clamped.tuple() != size.tuple():
-            self._repaired(
+            self._repaired(repairs, 
                 task,
                 f"{object_id}: size {size.tuple()} clamped to [{low:g}, {high:g}] m",
                 id=object_id,
@@ -257,27 +254,28 @@ class OpenAIChatVLM:
             )
         return clamped
 
-    def find_redundant(self, objects: Sequence[SceneObject], images: Mapping[str, bytes]) -> dict[str, str]:
-        self._begin()
+    def find_redundant(
+        self, objects: Sequence[SceneObject], images: Mapping[str, bytes]
+    ) -> Answer[dict[str, str]]:
         shown = [obj for obj in objects if obj.id in images]
         if len(shown) < 2:
-            return {}
+            return Answer({})
         labelled = [(f"Picture of {obj.id}:", images[obj.id]) for obj in shown]
         messages = [
             {"role": "system", "content": prompts.REDUNDANT_SYSTEM},
             user_message(prompts.find_redundant(_objects_text(shown)), labelled),
         ]
 
-        def check(answer: RedundantAnswer) -> dict[str, str]:
-            self._begin()
+        def check(answer: RedundantAnswer) -> Answer[dict[str, str]]:
+            repairs: list[Event] = []
             known = {obj.id for obj in shown}
             result: dict[str, str] = {}
             for item in answer.redundant:
                 if item.id not in known:
-                    self._repaired("redundant_images", f"ignored unknown id {item.id!r}", id=item.id)
+                    self._repaired(repairs, "redundant_images", f"ignored unknown id {item.id!r}", id=item.id)
                     continue
                 result[item.id] = item.reason.strip() or "already part of another object's image"
-            return result
+            return Answer(result, tuple(repairs))
 
         return self.chat.ask("redundant_images", messages, RedundantAnswer, check)
 
@@ -285,8 +283,7 @@ class OpenAIChatVLM:
 
     def write_constraints(
         self, text: str, objects: Sequence[SceneObject], reference: bytes | None
-    ) -> list[Constraint]:
-        self._begin()
+    ) -> Answer[list[Constraint]]:
         messages = [
             {"role": "system", "content": prompts.CONSTRAINTS_SYSTEM},
             user_message(prompts.write_constraints(text, _objects_text(objects)), [reference] if reference else []),
@@ -300,10 +297,9 @@ class OpenAIChatVLM:
         constraints: Sequence[Constraint],
         report: LayoutReport,
         reference: bytes | None,
-    ) -> list[Constraint]:
+    ) -> Answer[list[Constraint]]:
         from scenewright.layout import feedback_text
 
-        self._begin()
         last = json_text([c.model_dump(exclude={"type"}) for c in constraints])
         prompt = prompts.revise_constraints(text, _objects_text(objects), last, feedback_text(report, objects))
         messages = [
@@ -312,10 +308,13 @@ class OpenAIChatVLM:
         ]
         return self._ask_constraints("revised_constraints", messages, objects)
 
-    def _ask_constraints(self, task: str, messages: list, objects: Sequence[SceneObject]) -> list[Constraint]:
-        def check(answer: ConstraintsAnswer) -> list[Constraint]:
-            self._begin()
-            return self._cleaned(task, self._matched(answer.constraints, objects), objects)
+    def _ask_constraints(
+        self, task: str, messages: list, objects: Sequence[SceneObject]
+    ) -> Answer[list[Constraint]]:
+        def check(answer: ConstraintsAnswer) -> Answer[list[Constraint]]:
+            repairs: list[Event] = []
+            kept = self._cleaned(repairs, task, self._matched(answer.constraints, objects), objects)
+            return Answer(kept, tuple(repairs))
 
         return self.chat.ask(task, messages, ConstraintsAnswer, check)
 
@@ -332,22 +331,19 @@ class OpenAIChatVLM:
             for item in proposed
         ]
 
-    def _cleaned(self, task: str, raw: Sequence[dict[str, str]], objects: Sequence[SceneObject]) -> list[Constraint]:
+    def _cleaned(self, repairs: list[Event], task: str, raw: Sequence[dict[str, str]], objects: Sequence[SceneObject]) -> list[Constraint]:
         """The layout engine's cleaning drops unknown relations and ids, self references,
         duplicates and cycles; each drop is recorded."""
         from scenewright.layout import clean_constraints
 
         kept, dropped = clean_constraints(objects, raw)
         for item in dropped:
-            self._repaired(task, f"dropped a constraint: {item.reason}", constraint=item.constraint)
+            self._repaired(repairs, task, f"dropped a constraint: {item.reason}", constraint=item.constraint)
         return kept
 
     # --- editing --------------------------------------------------------------------------
 
-    def plan_edit(self, scene: Scene, instruction: str) -> EditPlan:
-        from scenewright.core.plan import EditPlan, NewObject
-
-        self._begin()
+    def plan_edit(self, scene: Scene, instruction: str) -> Answer[EditPlan]:
         objects_text = "\n".join(
             f"- {o.id}: {o.name}, at ({o.position.x:.2f}, {o.position.y:.2f}, {o.position.z:.2f}), "
             f"yaw {o.yaw:g}, size {_size_text(o)}" + (f", {o.visual_description}" if o.visual_description else "")
@@ -360,8 +356,8 @@ class OpenAIChatVLM:
         known = {o.id for o in scene.objects}
         by_snake = {snake_id(i): i for i in known}
 
-        def check(answer: EditAnswer) -> EditPlan:
-            self._begin()
+        def check(answer: EditAnswer) -> Answer[EditPlan]:
+            repairs: list[Event] = []
             focus = answer.focus if answer.focus in known else by_snake.get(snake_id(answer.focus))
             if answer.operation == "add":
                 # An id the scene already uses is replaced by editing.validate_plan, constraints and all.
@@ -374,13 +370,13 @@ class OpenAIChatVLM:
             if answer.operation in ("add", "replace") and answer.new_object is None:
                 raise InvalidAnswer(f"operation {answer.operation!r} needs new_object")
             if answer.operation == "delete":
-                return EditPlan(operation="delete", focus=focus)
-            constraints = self._focus_constraints(answer.constraints, focus, scene.objects)
+                return Answer(EditPlan(operation="delete", focus=focus))
+            constraints = self._focus_constraints(answer.constraints, focus, scene.objects, repairs)
             if answer.operation == "move" and not constraints and answer.yaw is None and answer.offset is None:
                 raise InvalidAnswer(f"a move of {focus} needs constraints saying where to, or a yaw (or an offset to shift it)")
             new = answer.new_object
             yaw = answer.yaw if answer.yaw is not None and math.isfinite(answer.yaw) else None
-            return EditPlan(
+            plan = EditPlan(
                 operation=answer.operation,
                 focus=focus,
                 constraints=constraints,
@@ -388,18 +384,23 @@ class OpenAIChatVLM:
                     name=new.name.strip(),
                     category=new.category,
                     visual_description=new.visual_description.strip(),
-                    size=self._clamped("edit_plan", focus, new.size, *size_range(instruction)) if new.size else None,
+                    size=self._clamped(repairs, "edit_plan", focus, new.size, *size_range(instruction)) if new.size else None,
                 )
                 if new is not None and answer.operation != "move"
                 else None,
                 yaw=yaw % 360.0 if yaw is not None else None,
                 offset=answer.offset if answer.operation == "move" else None,
             )
+            return Answer(plan, tuple(repairs))
 
         return self.chat.ask("edit_plan", messages, EditAnswer, check)
 
     def _focus_constraints(
-        self, proposed: Sequence[ProposedConstraint], focus: str, objects: Sequence[SceneObject]
+        self,
+        proposed: Sequence[ProposedConstraint],
+        focus: str,
+        objects: Sequence[SceneObject],
+        repairs: list[Event],
     ) -> list[Constraint]:
         """The focus as the only source: constraints written the other way round are turned
         when their relation has an inverse, dropped otherwise; then cleaned as any others."""
@@ -414,20 +415,19 @@ class OpenAIChatVLM:
                     relation = None
                 if relation in INVERSE:
                     turned = {"relation": INVERSE[relation], "source": focus, "target": item["source"]}
-                    self._repaired("edit_plan", f"turned {item} into {turned}", constraint=turned)
+                    self._repaired(repairs, "edit_plan", f"turned {item} into {turned}", constraint=turned)
                     item = turned
             if item["source"] == focus:
                 focused.append(item)
             else:
-                self._repaired("edit_plan", f"dropped {item}: its source is not the focus {focus!r}", constraint=item)
-        return self._cleaned("edit_plan", focused, objects)
+                self._repaired(repairs, "edit_plan", f"dropped {item}: its source is not the focus {focus!r}", constraint=item)
+        return self._cleaned(repairs, "edit_plan", focused, objects)
 
     # --- judging --------------------------------------------------------------------------
 
     def judge(self, text: str, image: bytes, criterion: str) -> float:
         if criterion not in prompts.CRITERIA:
             raise InputError(f"unknown judging criterion {criterion!r}; choose one of: {', '.join(prompts.CRITERIA)}")
-        self._begin()
         messages = [
             {"role": "system", "content": prompts.JUDGE_SYSTEM},
             user_message(prompts.judge(text, criterion), [image]),

@@ -19,11 +19,16 @@ class ProceduralMeshes:
     """Parametric styled meshes, offline and instant; the default mesh backend."""
 
     name = "procedural"
+    #: Building is CPU-bound Python; threads would only queue on the interpreter lock.
+    concurrency = 1
 
     @property
     def params(self) -> dict[str, str]:
         """What else decides the output (part of the asset cache key): the generators' code."""
         return {"code": code_fingerprint()}
+
+    def cancel(self) -> None:
+        """Nothing runs in the background: each model is built inside ``generate``."""
 
     @classmethod
     def from_spec(cls, argument: str, settings: Settings) -> ProceduralMeshes:

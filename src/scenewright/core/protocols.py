@@ -11,13 +11,28 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Protocol, runtime_checkable
+from typing import TYPE_CHECKING, Any, Generic, Protocol, TypeVar, runtime_checkable
 
 from scenewright.core.plan import EditPlan
-from scenewright.scene import Constraint, SceneObject, Vec3
+from scenewright.scene import Constraint, Event, SceneObject, Vec3
 
 if TYPE_CHECKING:
     from scenewright.scene import LayoutReport, Scene
+
+
+T = TypeVar("T")
+
+
+@dataclass(frozen=True)
+class Answer(Generic[T]):
+    """A model's answer after validation, with what had to be repaired or dropped in it to pass.
+
+    The repairs travel with the answer (not as state left on the backend) so that one backend
+    can serve several threads, and the stage that asked records them in the scene's provenance.
+    """
+
+    value: T
+    repairs: tuple[Event, ...] = ()
 
 
 @runtime_checkable
@@ -26,15 +41,17 @@ class VisionLanguageModel(Protocol):
 
     name: str
 
-    def describe_objects(self, text: str, style: str, reference: bytes | None) -> list[SceneObject]:
+    def describe_objects(self, text: str, style: str, reference: bytes | None) -> Answer[list[SceneObject]]:
         """Objects of the scene with initial position, rotation, size and visual description."""
 
     def write_constraints(
         self, text: str, objects: Sequence[SceneObject], reference: bytes | None
-    ) -> list[Constraint]:
+    ) -> Answer[list[Constraint]]:
         """Spatial constraints between the objects (source is the object placed)."""
 
-    def find_redundant(self, objects: Sequence[SceneObject], images: Mapping[str, bytes]) -> dict[str, str]:
+    def find_redundant(
+        self, objects: Sequence[SceneObject], images: Mapping[str, bytes]
+    ) -> Answer[dict[str, str]]:
         """Ids of objects whose image is already part of another object's image → reason."""
 
     def revise_constraints(
@@ -44,10 +61,10 @@ class VisionLanguageModel(Protocol):
         constraints: Sequence[Constraint],
         report: LayoutReport,
         reference: bytes | None,
-    ) -> list[Constraint]:
+    ) -> Answer[list[Constraint]]:
         """New constraints after the solver's ``report`` on the last ones (the paper's feedback loop)."""
 
-    def plan_edit(self, scene: Scene, instruction: str) -> EditPlan:
+    def plan_edit(self, scene: Scene, instruction: str) -> Answer[EditPlan]:
         """What an instruction asks: operation, focus object, new constraints, new object."""
 
     def judge(self, text: str, image: bytes, criterion: str) -> float:
@@ -95,11 +112,19 @@ class MeshGenerator(Protocol):
     as image-to-3D models do; :mod:`scenewright.assets` normalises them to the scene frame."""
 
     name: str
+    #: What besides the request decides the output (generation settings, a library's
+    #: contents, the generators' code); part of the asset cache key, empty when nothing does.
+    params: Mapping[str, Any]
+    #: How many requests the backend serves at once; the assets stage runs that many threads.
+    concurrency: int
 
     def generate(
         self, requests: Sequence[MeshRequest], progress: Callable[[str], None] | None = None
     ) -> dict[str, bytes]:
         """GLB bytes per request id; raises BackendError naming every request that failed."""
+
+    def cancel(self) -> None:
+        """Abandon the requests under way (Ctrl-C); the assets stage keeps what finished."""
 
 
 @dataclass

@@ -62,7 +62,8 @@ def apply_edit(scene: Scene, folder: SceneFolder, instruction: str, *, backends:
         raise InputError(
             "the instruction is empty; say what to change, e.g. 'move the lamp next to the sofa'"
         )
-    plan = backends.vlm.plan_edit(scene, instruction)
+    answer = backends.vlm.plan_edit(scene, instruction)
+    plan = answer.value
     try:
         edit = run_plan(scene, folder, plan, backends=backends, settings=settings)
     except ValidationError as exc:  # a pose or size out of bounds: the answer asked for the impossible
@@ -70,7 +71,7 @@ def apply_edit(scene: Scene, folder: SceneFolder, instruction: str, *, backends:
             f"the edit {plan.operation} {plan.focus} would give an invalid scene, so nothing was written: "
             f"{describe_validation_error(exc)}"
         ) from None
-    edit.scene.provenance += getattr(backends.vlm, "last_repairs", [])  # what a remote model's answer needed
+    edit.scene.provenance += answer.repairs  # what the model's answer needed repaired
     edit.scene.record(STAGE, f"{plan.operation} {plan.focus}: {instruction.strip()}",
                       backend=backends.vlm.name, changes=edit.changes)
     commit(folder, edit.scene, edit.files, instruction=instruction.strip(), operation=plan.operation,

@@ -56,8 +56,9 @@ def arrange(
     reference = folder.reference()
     constraints = list(scene.constraints)
     if not constraints:
-        constraints = vlm.write_constraints(scene.text, scene.objects, reference)
-        scene.provenance += getattr(vlm, "last_repairs", [])  # what a remote model's answer needed repaired
+        answer = vlm.write_constraints(scene.text, scene.objects, reference)
+        scene.provenance += answer.repairs  # what the model's answer needed repaired
+        constraints = answer.value
         scene.record(STAGE, f"wrote {len(constraints)} constraints", backend=vlm.name)
     scene.remember_initial_poses()  # the model's proposal, before any solve moves it (the ablation's layout)
     best: LayoutResult | None = None
@@ -76,10 +77,9 @@ def arrange(
         if result.report.complete or number == rounds:
             break
         log.info("round %d left %d unplaced; asking for new constraints", number, len(result.report.unplaced))
-        constraints = vlm.revise_constraints(
-            scene.text, scene.objects, result.constraints, result.report, reference
-        )
-        scene.provenance += getattr(vlm, "last_repairs", [])
+        answer = vlm.revise_constraints(scene.text, scene.objects, result.constraints, result.report, reference)
+        scene.provenance += answer.repairs
+        constraints = answer.value
     assert best is not None
     solved = {obj.id: obj for obj in best.objects}
     scene.objects = [solved[obj.id] for obj in scene.objects]
