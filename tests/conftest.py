@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from scenewright.backends.fake_openai import FakeOpenAI
+from scenewright.testing.fake_openai import FakeOpenAI
 from scenewright.settings import Settings
 
 #: The edited-scene fixtures (``template``, ``folder``) live with the scenes they build.
@@ -19,7 +19,7 @@ def private_cache(tmp_path_factory, monkeypatch):
 
 @pytest.fixture
 def openai_server():
-    """A scripted OpenAI-compatible server on 127.0.0.1 (see scenewright.backends.fake_openai)."""
+    """A scripted OpenAI-compatible server on 127.0.0.1 (see scenewright.testing.fake_openai)."""
     with FakeOpenAI() as server:
         yield server
 

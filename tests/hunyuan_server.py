@@ -1,6 +1,6 @@
 """Local Hunyuan3D servers for the protocol tests: real GLBs built here, scripted faults.
 
-The server itself is :mod:`scenewright.backends.hunyuan3d_standin` (the assets benchmark runs
+The server itself is :mod:`scenewright.testing.hunyuan3d_standin` (the assets benchmark runs
 it too); this module builds the meshes it returns and starts groups of servers.
 """
 
@@ -14,7 +14,7 @@ import numpy as np
 import trimesh
 from PIL import Image
 
-from scenewright.backends.hunyuan3d_standin import StandInServer
+from scenewright.testing.hunyuan3d_standin import StandInServer
 
 #: What every test server returns, in glTF axes: 0.8 wide, 1.2 tall, 0.6 deep, off-centre.
 MODEL_EXTENTS = (0.8, 1.2, 0.6)

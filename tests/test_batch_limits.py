@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-from scenewright.backends.fake_openai import CHAT, EDIT, GENERATE, chat_reply, image_reply, object_item
+from scenewright.testing.fake_openai import CHAT, EDIT, GENERATE, chat_reply, image_reply, object_item
 from scenewright.batch.limits import FileSlots, SlotTable
 from scenewright.cli import main
 

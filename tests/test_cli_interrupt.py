@@ -17,7 +17,7 @@ from PIL import Image
 
 import scenewright
 
-from scenewright.backends.hunyuan3d_standin import StandInServer
+from scenewright.testing.hunyuan3d_standin import StandInServer
 from scenewright.cli import main
 from scenewright.folder import SceneFolder
 
@@ -122,7 +122,7 @@ def test_ctrl_c_prints_how_to_resume_and_exits_130(tmp_path, monkeypatch, capsys
 
 
 def test_ctrl_c_while_object_images_are_drawn_sends_no_image_request_not_yet_started(tmp_path, monkeypatch):
-    from scenewright.backends.fake_openai import CHAT, EDIT, GENERATE, FakeOpenAI, chat_reply, image_reply, object_item
+    from scenewright.testing.fake_openai import CHAT, EDIT, GENERATE, FakeOpenAI, chat_reply, image_reply, object_item
 
     answers = {
         "scene_objects": {"objects": [object_item(f"crate_{i}", f"crate number {i}", (0.5, 0.5, 0.5), 2.0 * i)

@@ -10,7 +10,7 @@ import pytest
 
 from editing_scenes import snapshot
 from hunyuan_server import png, servers
-from scenewright.backends.fake_openai import CHAT, chat_reply
+from scenewright.testing.fake_openai import CHAT, chat_reply
 from scenewright.cli import main
 from scenewright.folder import SceneFolder
 
@@ -143,7 +143,7 @@ def test_a_model_name_of_300_characters_is_refused(tmp_path, capsys):
 
 
 def test_a_non_json_200_from_the_model_server_is_a_backend_error(tmp_path, openai_server, capsys):
-    from scenewright.backends.fake_openai import Reply
+    from scenewright.testing.fake_openai import Reply
 
     openai_server.responders[CHAT] = lambda r: Reply("<html>502</html>")
     code, err = run(capsys, "generate", "a chair", "--out", tmp_path / "new", "--vlm", "openai:m",

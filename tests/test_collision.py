@@ -4,9 +4,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from scenewright.layout import colliding_pairs, solve
-from scenewright.layout.bench import collision_manager, independent_collisions
+from scenewright.bench.layout import collision_manager, independent_collisions
 from scenewright.layout.collision import _bvh
-from scenewright.layout.problems import cone_mesh, table_mesh
+from scenewright.testing.problems import cone_mesh, table_mesh
 from scenewright.scene import Constraint, SceneObject, Vec3
 
 

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from editing_scenes import living_room
-from scenewright.editing.bench import case_scene, score_cases
+from scenewright.bench.editing import case_scene, score_cases
 from scenewright.editing.parser import plan_edit_offline, resolve
 from scenewright.errors import InputError
 

@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from PIL import Image
 
-from scenewright.analysis.bench import score_objects
+from scenewright.bench.analysis import score_objects
 from scenewright.errors import BackendError, InputError, MissingExtra
 from scenewright.evaluation import ABLATED, FULL, evaluate_scene
 from scenewright.evaluation.ablation import initial_objects, without_solver
@@ -235,7 +235,7 @@ def test_bench_eval_generates_prompts_full_and_without_solver(tmp_path, capsys):
 
 def test_evaluate_judges_renders_through_a_remote_model(tmp_path, openai_server, monkeypatch):
     """Pos., Rot., SA and PSA from a scripted OpenAI-compatible server, driven through the CLI."""
-    from scenewright.backends.fake_openai import CHAT, chat_reply
+    from scenewright.testing.fake_openai import CHAT, chat_reply
     from scenewright.cli import main
 
     monkeypatch.setenv("OPENAI_API_KEY", "test-key")

@@ -9,7 +9,7 @@ import json
 import pytest
 
 from scenewright.backends import create_backend
-from scenewright.backends.fake_openai import CHAT, chat_reply, error_reply, object_item, png
+from scenewright.testing.fake_openai import CHAT, chat_reply, error_reply, object_item, png
 from scenewright.backends.openai_chat import EditAnswer, OpenAIChatVLM, parse_score, size_range
 from scenewright.backends.structured import InvalidAnswer, strict_schema
 from scenewright.errors import BackendError, InputError
@@ -379,7 +379,7 @@ def test_the_key_comes_from_the_named_variable(openai_server, remote_settings, m
 
 # --- limits on what a server may send (issue 11) ----------------------------------------------
 
-from scenewright.backends.fake_openai import Reply  # noqa: E402
+from scenewright.testing.fake_openai import Reply  # noqa: E402
 
 
 def test_a_reply_trickled_a_byte_at_a_time_stops_at_the_total_deadline(openai_server, remote_settings):

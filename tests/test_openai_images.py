@@ -7,7 +7,7 @@ import io
 import threading
 
 import pytest
-from scenewright.backends.fake_openai import EDIT, GENERATE, Reply, error_reply, image_reply, png
+from scenewright.testing.fake_openai import EDIT, GENERATE, Reply, error_reply, image_reply, png
 from PIL import Image
 
 from scenewright.backends.openai_images import OpenAIImages

@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from scenewright.analysis.bench import load_prompts, run_parse_bench
+from scenewright.bench.analysis import load_prompts, run_parse_bench
 from scenewright.core.catalogue import load_catalogue
 from scenewright.analysis.parser import (
     GROUND_KINDS,

@@ -12,7 +12,7 @@ import time
 
 import pytest
 
-from scenewright.backends.fake_openai import CHAT, EDIT, GENERATE, Reply, chat_reply, image_reply, object_item, png
+from scenewright.testing.fake_openai import CHAT, EDIT, GENERATE, Reply, chat_reply, image_reply, object_item, png
 from scenewright.cli import main
 from scenewright.folder import SceneFolder
 from scenewright.layout import check

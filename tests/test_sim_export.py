@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 import trimesh
 
-from scenewright.analysis.bench import default_prompt_dir, load_prompts
+from scenewright.bench.analysis import default_prompt_dir, load_prompts
 from scenewright.cli import main
 from scenewright.folder import SceneFolder
 from gltf_validator import assert_valid

@@ -7,8 +7,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from scenewright.layout import check, colliding_pairs, feedback_text, solve
-from scenewright.layout.bench import independent_collisions
-from scenewright.layout.problems import hard_problem, planted_problem
+from scenewright.bench.layout import independent_collisions
+from scenewright.testing.problems import hard_problem, planted_problem
 from scenewright.layout.relations import Boxes
 from scenewright.scene import Constraint, SceneObject, Vec3
 

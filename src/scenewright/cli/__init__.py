@@ -14,7 +14,7 @@ import typer
 from rich.console import Console
 
 from scenewright.cli import (  # noqa: F401  (importing a command module registers it)
-    assets, backends, batch, edit, evaluate, export, generate, parse, remote, render, solve, studio,
+    backends, batch, bench, edit, evaluate, export, generate, render, solve, studio,
 )
 from scenewright.cli.app import app, interrupt_hint
 from scenewright.cli.display import safe

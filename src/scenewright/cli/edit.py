@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import json
-import statistics
 from pathlib import Path
 from typing import Annotated
 
@@ -11,7 +9,7 @@ import typer
 from rich.console import Console
 from rich.table import Table
 
-from scenewright.cli.app import app, bench_app, on_interrupt
+from scenewright.cli.app import app, on_interrupt
 from scenewright.cli.display import safe
 from scenewright.cli.options import (
     ApiKeyEnvOption,
@@ -120,32 +118,3 @@ def history_command(folder: FolderArgument) -> None:
         table.add_row(str(e.number), safe(e.time), safe(e.operation), safe(e.focus), safe(e.instruction),
                       "in effect" if e.active else "[dim]undone[/dim]")
     console.print(table)
-
-
-@bench_app.command("edits")
-def bench_edits(
-    cases: Annotated[
-        Path, typer.Option("--cases", help="A case file, or a folder of them (*.json, not its subfolders).")
-    ] = Path("benchmarks/edits"),
-    objects: Annotated[int, typer.Option("--objects", help="Objects in the latency scene.")] = 30,
-    moves: Annotated[int, typer.Option("--moves", help="Move edits timed on the latency scene.")] = 20,
-    json_output: Annotated[bool, typer.Option("--json", help="Print JSON (the only output format).")] = True,
-) -> None:
-    """Offline planner accuracy on annotated instructions, and move-edit latency, as JSON.
-
-    ``move_resolve_median_s`` is the solver's time per move; ``move_edit_median_s`` the whole
-    edit short of writing files (parse, meshes, solve); ``move_edit_first_s`` the first edit of
-    the session, which also parses every asset."""
-    from scenewright.editing.bench import latency, score_cases
-
-    scores = score_cases(cases)
-    solve_seconds, edit_seconds = latency(objects, moves)
-    result = {
-        **scores,
-        "latency_objects": objects,
-        "latency_moves": len(solve_seconds),
-        "move_resolve_median_s": round(statistics.median(solve_seconds), 4),
-        "move_edit_median_s": round(statistics.median(edit_seconds), 4),
-        "move_edit_first_s": round(edit_seconds[0], 4),
-    }
-    typer.echo(json.dumps(result))

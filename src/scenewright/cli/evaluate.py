@@ -2,14 +2,12 @@
 
 from __future__ import annotations
 
-import json
-import tempfile
 from pathlib import Path
 from typing import Annotated
 
 import typer
 
-from scenewright.cli.app import app, bench_app
+from scenewright.cli.app import app
 from scenewright.cli.display import printable
 from scenewright.errors import InputError
 from scenewright.cli.options import (
@@ -76,47 +74,3 @@ def evaluate_command(
     paths = write_report(results, out, paper=False)
     typer.echo(printable(paths["table"].read_text(encoding="utf-8")))
     typer.echo(printable(f"wrote {', '.join(str(p) for p in paths.values())}"), err=True)
-
-
-#: Prompt domains → the paper's group names, so the table sits next to its figures.
-PAPER_GROUPS = {"indoor": "indoor", "outdoor": "open-domain"}
-
-
-@bench_app.command("eval")
-def bench_eval(
-    out: Annotated[Path, typer.Option("--out", help="Folder for table.md, report.json and chart.png.")] = Path(
-        "bench-results/eval"
-    ),
-    prompts: Annotated[
-        Path | None, typer.Option("--prompts", help="Folder of benchmark prompts (default: benchmarks/prompts).")
-    ] = None,
-    limit: Annotated[int | None, typer.Option("--limit", help="Use only the first N prompts of each domain.")] = None,
-) -> None:
-    """Generate the shipped prompts offline and score them, full pipeline vs without the solver."""
-    from scenewright.analysis.bench import load_prompts
-    from scenewright.backends import backends_from_settings
-    from scenewright.evaluation import evaluate
-    from scenewright.evaluation.report import write_report
-    from scenewright.pipeline import generate
-
-    entries = load_prompts(prompts)
-    if limit is not None:
-        by_domain: dict[str, list] = {}
-        for entry in entries:
-            by_domain.setdefault(entry.domain, []).append(entry)
-        entries = [e for group in by_domain.values() for e in group[:limit]]
-    settings = build_settings()
-    settings.cache_dir = None
-    backends = backends_from_settings(settings)
-    results = []
-    with tempfile.TemporaryDirectory(prefix="scenewright-eval-") as tmp:
-        for entry in entries:
-            folder = Path(tmp) / entry.id
-            generate(entry.text, folder, backends=backends, settings=settings, style=entry.style, render=False)
-            group = PAPER_GROUPS.get(entry.domain, entry.domain)
-            results += evaluate([folder], group=group, ablation=True, annotations=[entry])
-    for r in results:  # the temporary folders are gone; name scenes by their prompt
-        r.scene = Path(r.scene).name
-    paths = write_report(results, out)
-    summary = json.loads(paths["json"].read_text(encoding="utf-8"))["summary"]
-    typer.echo(json.dumps({"prompts": len(entries), "out": str(out), "summary": summary}))

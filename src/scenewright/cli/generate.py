@@ -2,10 +2,6 @@
 
 from __future__ import annotations
 
-import json
-import tempfile
-import time
-from importlib import resources
 from pathlib import Path
 from typing import Annotated
 
@@ -13,7 +9,7 @@ import typer
 from rich.console import Console
 from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
-from scenewright.cli.app import app, bench_app, on_interrupt
+from scenewright.cli.app import app, on_interrupt
 from scenewright.cli.display import safe
 from scenewright.cli.options import (
     ApiKeyEnvOption,
@@ -32,15 +28,11 @@ from scenewright.cli.options import (
     check_seed,
 )
 from scenewright.errors import InfeasibleLayout, InputError
+from scenewright.examples import example_text
 from scenewright.folder import SceneFolder
 from scenewright.scene import STYLES, Scene
 
 #: The bundled text ``--example`` generates (``make demo``).
-EXAMPLE = "living_room.txt"
-
-
-def _example_text() -> str:
-    return (resources.files("scenewright") / "data" / "examples" / EXAMPLE).read_text(encoding="utf-8")
 
 
 class _StageProgress:
@@ -170,7 +162,7 @@ def generate_command(
             )
         else:
             scene = generate(
-                _example_text() if example else text,
+                example_text() if example else text,
                 folder,
                 backends=backends,
                 settings=settings,
@@ -188,32 +180,3 @@ def generate_command(
             f"{len(scene.layout.unplaced)} objects could not be placed and stay at their initial "
             f"positions: {lines}. The scene is written; move them with `scenewright edit`."
         )
-
-
-@bench_app.command("pipeline")
-def bench_pipeline(
-    prompts: Annotated[
-        Path | None, typer.Option("--prompts", help="Folder of annotated prompt files (default: benchmarks/prompts).")
-    ] = None,
-    limit: Annotated[int | None, typer.Option("--limit", help="Use only the first N prompts.")] = None,
-    details: Annotated[bool, typer.Option("--details", help="Add per-prompt figures, misses and times.")] = False,
-    json_output: Annotated[bool, typer.Option("--json", help="Print JSON (the only output format).")] = True,
-) -> None:
-    """`generate --no-render` (offline, no cache) per annotated prompt: the final layouts scored
-    against the text (relations realised, supports right, spread), the parse's figures, and seconds."""
-    from scenewright.analysis.bench import load_prompts
-    from scenewright.backends import backends_from_settings
-    from scenewright.evaluation.bench import run_row, summarise_runs
-    from scenewright.pipeline import generate
-
-    chosen = load_prompts(prompts)[:limit]
-    settings = build_settings()
-    settings.cache_dir = None
-    backends = backends_from_settings(settings)
-    rows = []
-    with tempfile.TemporaryDirectory(prefix="scenewright-bench-") as tmp:
-        for prompt in chosen:
-            start = time.perf_counter()
-            scene = generate(prompt.text, Path(tmp) / prompt.id, backends=backends, settings=settings, render=False)
-            rows.append(run_row(prompt, scene, time.perf_counter() - start))
-    typer.echo(json.dumps(summarise_runs(rows, details=details), indent=1 if details else None))

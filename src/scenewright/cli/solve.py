@@ -11,7 +11,7 @@ import typer
 from pydantic import ValidationError
 from rich.console import Console
 
-from scenewright.cli.app import app, bench_app
+from scenewright.cli.app import app
 from scenewright.cli.options import check_seed
 from scenewright.errors import InfeasibleLayout, InputError
 from scenewright.files import write_atomic
@@ -127,36 +127,3 @@ def solve_command(
             f"{len(result.report.unplaced)} of {len(objects)} objects could not be placed ({ids}); "
             f"the layout with them at their initial poses is in {output}"
         )
-
-
-@bench_app.command("layout")
-def bench_layout(
-    sizes: Annotated[str | None, typer.Option(
-        "--sizes", help="Object counts, comma-separated [default: 15,50,100; with --hard 10,30,60,100,200].")] = None,
-    seeds: Annotated[int, typer.Option("--seeds", help="Problems per size.")] = 20,
-    time_limit: Annotated[float, typer.Option("--time-limit", help="Per-problem limit, CPU seconds.")] = 10.0,
-    hard: Annotated[bool, typer.Option(
-        "--hard", help="Arbitrary yaws, 2+ relations per object, facing pairs, stacks, dense rooms.")] = False,
-    room_seeds: Annotated[int, typer.Option("--room-seeds", help="With --hard: dense rooms per floor share.")] = 3,
-    baseline: Annotated[Path | None, typer.Option(
-        "--baseline", help="With --hard: also solve every problem with the scenewright checkout at this path.")] = None,
-    as_json: Annotated[bool, typer.Option("--json", help="Print JSON (the only format).")] = True,
-) -> None:
-    """Solve planted-solution problems; print timings, success, collisions as one JSON object."""
-    from scenewright.layout import bench
-
-    text = sizes or ("10,30,60,100,200" if hard else "15,50,100")
-    try:
-        counts = [int(s) for s in text.split(",")]
-    except ValueError:
-        raise InputError(f"--sizes: expected comma-separated integers, got {text!r}") from None
-    if not counts or min(counts) < 1 or seeds < 1 or room_seeds < 0:
-        raise InputError("--sizes must be positive integers, --seeds at least 1 and --room-seeds at least 0")
-    if baseline is not None and not hard:
-        raise InputError("--baseline compares on the hard problems: add --hard")
-    logging.getLogger("scenewright.layout").setLevel(logging.ERROR)
-    if hard:
-        result = bench.run_hard(counts, seeds, time_limit, room_seeds, baseline)
-    else:
-        result = bench.run(counts, seeds, time_limit)
-    typer.echo(json.dumps(result))

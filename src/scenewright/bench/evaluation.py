@@ -4,18 +4,26 @@ The command generates each prompt from scratch (offline backends, no cache, no r
 temporary folder) and hands the scenes here. The figures a user would see come from the finished scene checked against the
 annotation of the text (:mod:`scenewright.evaluation.stated`), and from the spread of its
 ground objects (:mod:`scenewright.evaluation.composition`); the parse figures beside them
-score what the analysis stage read (:mod:`scenewright.analysis.bench`).
+score what the analysis stage read (:mod:`scenewright.bench.analysis`).
 """
 
 from __future__ import annotations
 
+import json
 import statistics
+import tempfile
+import time
+from pathlib import Path
 
-from scenewright.analysis.bench import parse_figures, ratio, score_prompt
+from scenewright.bench.analysis import parse_figures, ratio, score_prompt
 from scenewright.evaluation.annotations import Prompt
 from scenewright.evaluation.composition import LINE, in_a_line, spread
 from scenewright.evaluation.stated import stated
 from scenewright.scene import Scene
+from scenewright.settings import Settings
+
+#: Prompt domains → the paper's group names, so the table sits next to its figures.
+PAPER_GROUPS = {"indoor": "indoor", "outdoor": "open-domain"}
 
 #: Scenes with at least this many objects are reported apart (the speed target is for 15).
 LARGE_SCENE = 12
@@ -89,3 +97,52 @@ def summarise_runs(rows: list[dict], *, details: bool = False) -> dict:
     if details:
         result["details"] = rows
     return result
+
+
+def run_pipeline_bench(prompts: Path | None, limit: int | None, details: bool, settings: Settings) -> dict:
+    """`generate --no-render` (offline, no cache) per annotated prompt: the final layouts scored
+    against the text (relations realised, supports right, spread), the parse's figures, and seconds."""
+    from scenewright.bench.analysis import load_prompts
+    from scenewright.backends import backends_from_settings
+    from scenewright.pipeline import generate
+
+    chosen = load_prompts(prompts)[:limit]
+    settings.cache_dir = None
+    backends = backends_from_settings(settings)
+    rows = []
+    with tempfile.TemporaryDirectory(prefix="scenewright-bench-") as tmp:
+        for prompt in chosen:
+            start = time.perf_counter()
+            scene = generate(prompt.text, Path(tmp) / prompt.id, backends=backends, settings=settings, render=False)
+            rows.append(run_row(prompt, scene, time.perf_counter() - start))
+    return summarise_runs(rows, details=details)
+
+
+def run_eval_bench(out: Path, prompts: Path | None, limit: int | None, settings: Settings) -> dict:
+    """Generate the shipped prompts offline and score them, full pipeline vs without the solver."""
+    from scenewright.bench.analysis import load_prompts
+    from scenewright.backends import backends_from_settings
+    from scenewright.evaluation import evaluate
+    from scenewright.evaluation.report import write_report
+    from scenewright.pipeline import generate
+
+    entries = load_prompts(prompts)
+    if limit is not None:
+        by_domain: dict[str, list] = {}
+        for entry in entries:
+            by_domain.setdefault(entry.domain, []).append(entry)
+        entries = [e for group in by_domain.values() for e in group[:limit]]
+    settings.cache_dir = None
+    backends = backends_from_settings(settings)
+    results = []
+    with tempfile.TemporaryDirectory(prefix="scenewright-eval-") as tmp:
+        for entry in entries:
+            folder = Path(tmp) / entry.id
+            generate(entry.text, folder, backends=backends, settings=settings, style=entry.style, render=False)
+            group = PAPER_GROUPS.get(entry.domain, entry.domain)
+            results += evaluate([folder], group=group, ablation=True, annotations=[entry])
+    for r in results:  # the temporary folders are gone; name scenes by their prompt
+        r.scene = Path(r.scene).name
+    paths = write_report(results, out)
+    summary = json.loads(paths["json"].read_text(encoding="utf-8"))["summary"]
+    return {"prompts": len(entries), "out": str(out), "summary": summary}

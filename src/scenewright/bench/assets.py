@@ -2,15 +2,9 @@
 
 from __future__ import annotations
 
-import json
 import tempfile
 import time
 from pathlib import Path
-from typing import Annotated
-
-import typer
-
-from scenewright.cli.app import bench_app
 
 
 def _box_glb() -> bytes:
@@ -29,18 +23,11 @@ def _png(index: int) -> bytes:
     return buffer.getvalue()
 
 
-@bench_app.command("assets")
-def bench_assets(
-    assets: Annotated[int, typer.Option("--assets", help="Objects to build.")] = 16,
-    servers: Annotated[int, typer.Option("--servers", help="Local stand-in Hunyuan3D servers.")] = 4,
-    delay: Annotated[float, typer.Option("--delay", help="Seconds each server takes per asset.")] = 2.0,
-    poll: Annotated[float, typer.Option("--poll", help="Seconds between status polls.")] = 0.1,
-    json_output: Annotated[bool, typer.Option("--json", help="Print JSON (the only output format).")] = True,
-) -> None:
+def run_assets_bench(assets: int, servers: int, delay: float, poll: float) -> dict:
     """Wall time of the asset stage over local servers (one job each at a time) against the ideal."""
     from scenewright.assets import generate_assets
     from scenewright.backends.hunyuan3d import Hunyuan3D
-    from scenewright.backends.hunyuan3d_standin import StandInServer
+    from scenewright.testing.hunyuan3d_standin import StandInServer
     from scenewright.cache import RequestCache
     from scenewright.folder import SceneFolder
     from scenewright.scene import Scene, SceneObject, Vec3
@@ -78,4 +65,4 @@ def bench_assets(
         "target_ratio": 1.25,
         "jobs_per_server": [s.counts["send"] for s in started],
     }
-    typer.echo(json.dumps(result))
+    return result

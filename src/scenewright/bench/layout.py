@@ -8,6 +8,7 @@ figures of two versions come from one run on the same problems and the same chec
 
 from __future__ import annotations
 
+import logging
 import os
 import pickle
 import statistics
@@ -23,7 +24,7 @@ import trimesh
 
 from scenewright.errors import InputError
 from scenewright.geometry import object_matrix, world_box
-from scenewright.layout.problems import Problem, dense_room, hard_problem, planted_problem
+from scenewright.testing.problems import Problem, dense_room, hard_problem, planted_problem
 from scenewright.layout.relations import check
 from scenewright.layout.solver import solve
 from scenewright.scene import Constraint, SceneObject
@@ -227,3 +228,22 @@ def run_hard(sizes: Sequence[int], seeds: int, time_limit: float = 10.0, room_se
     if baseline is not None:
         out["baseline"] = str(baseline)
     return out
+
+
+def run_layout_bench(
+    sizes: str | None, seeds: int, time_limit: float, hard: bool, room_seeds: int, baseline: Path | None
+) -> dict:
+    """Solve planted-solution problems: timings, success and collisions per size."""
+    text = sizes or ("10,30,60,100,200" if hard else "15,50,100")
+    try:
+        counts = [int(s) for s in text.split(",")]
+    except ValueError:
+        raise InputError(f"--sizes: expected comma-separated integers, got {text!r}") from None
+    if not counts or min(counts) < 1 or seeds < 1 or room_seeds < 0:
+        raise InputError("--sizes must be positive integers, --seeds at least 1 and --room-seeds at least 0")
+    if baseline is not None and not hard:
+        raise InputError("--baseline compares on the hard problems: add --hard")
+    logging.getLogger("scenewright.layout").setLevel(logging.ERROR)  # the solver's per-object notes
+    if hard:
+        return run_hard(counts, seeds, time_limit, room_seeds, baseline)
+    return run(counts, seeds, time_limit)

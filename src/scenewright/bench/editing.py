@@ -13,6 +13,7 @@ holds instructions written after, scored alone with ``--cases``.
 from __future__ import annotations
 
 import json
+import statistics
 import tempfile
 import time
 from pathlib import Path
@@ -133,3 +134,22 @@ def latency(count: int, moves: int) -> tuple[list[float], list[float]]:
             solving.append(edit.seconds_solving)
             scene = edit.scene
     return solving, whole
+
+
+def run_edits_bench(cases: Path, objects: int, moves: int) -> dict:
+    """Offline planner accuracy on annotated instructions, and move-edit latency, as JSON.
+
+    ``move_resolve_median_s`` is the solver's time per move; ``move_edit_median_s`` the whole
+    edit short of writing files (parse, meshes, solve); ``move_edit_first_s`` the first edit of
+    the session, which also parses every asset."""
+    scores = score_cases(cases)
+    solve_seconds, edit_seconds = latency(objects, moves)
+    result = {
+        **scores,
+        "latency_objects": objects,
+        "latency_moves": len(solve_seconds),
+        "move_resolve_median_s": round(statistics.median(solve_seconds), 4),
+        "move_edit_median_s": round(statistics.median(edit_seconds), 4),
+        "move_edit_first_s": round(edit_seconds[0], 4),
+    }
+    return result

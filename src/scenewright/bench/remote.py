@@ -8,30 +8,16 @@ rounds of object images, and the ground texture.
 
 from __future__ import annotations
 
-import json
 import math
 import tempfile
 import time
 from pathlib import Path
-from typing import Annotated
-
-import typer
-
-from scenewright.cli.app import bench_app
 
 
-@bench_app.command("analysis")
-def bench_analysis(
-    objects: Annotated[int, typer.Option("--objects", min=1, help="Objects in the scene.")] = 15,
-    latency: Annotated[
-        float, typer.Option("--latency", min=0.0, help="Seconds the server takes per image call.")
-    ] = 1.0,
-    concurrency: Annotated[int, typer.Option("--concurrency", min=1, help="Image calls in flight at once.")] = 4,
-    json_output: Annotated[bool, typer.Option("--json", help="Print JSON (the only output format).")] = True,
-) -> None:
+def run_analysis_bench(objects: int, latency: float, concurrency: int) -> dict:
     """Wall time of scene analysis over the OpenAI backends against a local server with latency."""
     from scenewright.analysis.stage import analyze
-    from scenewright.backends.fake_openai import CHAT, FakeOpenAI, chat_reply, object_item
+    from scenewright.testing.fake_openai import CHAT, FakeOpenAI, chat_reply, object_item
     from scenewright.backends.openai_chat import OpenAIChatVLM
     from scenewright.backends.openai_images import OpenAIImages
     from scenewright.folder import SceneFolder
@@ -63,17 +49,13 @@ def bench_analysis(
         seconds = time.perf_counter() - start
         image_calls = len(server.requests) - len([r for r in server.requests if r.path == CHAT])
     ideal = latency * (1 + math.ceil(objects / concurrency) + 1)
-    typer.echo(
-        json.dumps(
-            {
-                "objects": objects,
-                "latency_s": latency,
-                "concurrency": concurrency,
-                "image_calls": image_calls,
-                "chat_calls": len(server.requests) - image_calls,
-                "seconds": round(seconds, 3),
-                "ideal_seconds": round(ideal, 3),
-                "ratio": round(seconds / ideal, 3) if ideal else None,
-            }
-        )
-    )
+    return {
+        "objects": objects,
+        "latency_s": latency,
+        "concurrency": concurrency,
+        "image_calls": image_calls,
+        "chat_calls": len(server.requests) - image_calls,
+        "seconds": round(seconds, 3),
+        "ideal_seconds": round(ideal, 3),
+        "ratio": round(seconds / ideal, 3) if ideal else None,
+    }
