@@ -23,7 +23,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from scenewright.analysis.bench import load_prompts
+from scenewright.bench.analysis import load_prompts
 from scenewright.analysis.parser import parse_scene
 from scenewright.backends import backends_from_settings
 from scenewright.cli.options import build_settings
