@@ -243,3 +243,8 @@ def _path_problem(relative: object, kind: str | None) -> str | None:
     if kind is not None and PurePosixPath(relative).suffix.lower() not in KINDS[kind]:
         return f"is not a {kind} file (expected {', '.join(KINDS[kind])})"
     return None
+
+
+def as_folder(folder: SceneFolder | str | Path) -> SceneFolder:
+    """The scene folder a library caller named by path or passed as is."""
+    return folder if isinstance(folder, SceneFolder) else SceneFolder(Path(folder))

@@ -23,7 +23,7 @@ from scenewright.backends import Backends
 from scenewright.cache import RequestCache
 from scenewright.editing.history import recover
 from scenewright.errors import InputError, MissingExtra
-from scenewright.folder import SceneFolder
+from scenewright.folder import SceneFolder, as_folder
 from scenewright.integrity import assemble_recorded, finish_first_save, glb_matches, rebuild_glb, remove_temporaries
 from scenewright.layout.stage import arrange
 from scenewright.lock import LOCK_NAME, locked
@@ -36,10 +36,6 @@ STAGES = ("analyze", "assets", "layout", "export", "render")
 
 #: Called with (stage, message) as the run goes; the CLI turns it into a progress display.
 Progress = Callable[[str, str], None]
-
-
-def _as_folder(folder: SceneFolder | str | Path) -> SceneFolder:
-    return folder if isinstance(folder, SceneFolder) else SceneFolder(Path(folder))
 
 
 def _output_present(stage: str, scene: Scene, folder: SceneFolder) -> bool:
@@ -170,7 +166,7 @@ def generate(
     progress: Progress | None = None,
 ) -> Scene:
     """Make the scene ``text`` describes in ``folder``; resume it when the folder holds it already."""
-    folder = _as_folder(folder)
+    folder = as_folder(folder)
     text = text.strip()
     if not text:
         raise InputError(
@@ -227,7 +223,7 @@ def resume(
     progress: Progress | None = None,
 ) -> Scene:
     """Finish an interrupted scene: run only the stages it has not completed."""
-    folder = _as_folder(folder)
+    folder = as_folder(folder)
     with writing(folder, settings.lock_timeout):
         scene = folder.load()
         return run_stages(scene, folder, backends=backends, settings=settings, render=render, progress=progress)

@@ -16,6 +16,7 @@ from scenewright.analysis.arrange import Composition, compose
 from scenewright.analysis.parser import ParsedScene, parse_scene
 from scenewright.analysis.parser.language import check_english
 from scenewright.core.protocols import Answer
+from scenewright.core.relations import BINDING
 from scenewright.errors import BackendError, InputError
 from scenewright.scene import Constraint, Event, LayoutReport, SceneObject
 
@@ -30,7 +31,6 @@ _RELAX: dict[str, str | None] = {
     "near": None, "far": None, "face to": None, "above": None, "on": None,
 }  # fmt: skip
 #: Which relation gives way first when the report names no failed relation.
-_PRIORITY = ("far", "face to", "near", "side of", "left of", "right of", "in front of", "behind", "above", "on")
 
 NO_OBJECT = "no object recognised in the text; name things like 'a sofa', 'two trees', 'a lamp on the desk'"
 #: The default of ``Settings.max_objects``.
@@ -144,7 +144,7 @@ def relax_constraints(constraints: Sequence[Constraint], report: LayoutReport) -
         if not failed:
             own = [c for c in out if c.source == unplaced.id]
             if own:
-                failed = {min(own, key=lambda c: _PRIORITY.index(c.relation)).key()}
+                failed = {max(own, key=lambda c: BINDING.index(c.relation)).key()}
         revised: list[Constraint] = []
         for c in out:
             if c.key() not in failed:

@@ -25,6 +25,7 @@ from pydantic import BaseModel, ConfigDict, WithJsonSchema
 from scenewright.backends import prompts
 from scenewright.core.plan import EditPlan, NewObject
 from scenewright.core.protocols import Answer
+from scenewright.core.relations import INVERSE
 from scenewright.backends.structured import ChatClient, InvalidAnswer, json_text, model_name, user_message
 from scenewright.errors import InputError
 from scenewright.scene import MAX_ID_CHARS, RELATION_TYPES, Constraint, Event, SceneObject, Vec3
@@ -43,18 +44,6 @@ BACKGROUND_WORDS = frozenset(
     "wall walls floor floors ceiling ceilings ground grass lawn sky skies road roads street "
     "terrain landscape curtain curtains window windows background horizon water sea ocean river".split()
 )
-
-#: relation → the relation that says the same with source and target swapped.
-INVERSE = {
-    "left of": "right of",
-    "right of": "left of",
-    "in front of": "behind",
-    "behind": "in front of",
-    "side of": "side of",
-    "near": "near",
-    "far": "far",
-}
-
 
 class _Answer(BaseModel):
     model_config = ConfigDict(extra="forbid")
@@ -344,6 +333,8 @@ class OpenAIChatVLM:
     # --- editing --------------------------------------------------------------------------
 
     def plan_edit(self, scene: Scene, instruction: str) -> Answer[EditPlan]:
+        from scenewright.editing.apply import validate_plan
+
         objects_text = "\n".join(
             f"- {o.id}: {o.name}, at ({o.position.x:.2f}, {o.position.y:.2f}, {o.position.z:.2f}), "
             f"yaw {o.yaw:g}, size {_size_text(o)}" + (f", {o.visual_description}" if o.visual_description else "")
@@ -358,22 +349,12 @@ class OpenAIChatVLM:
 
         def check(answer: EditAnswer) -> Answer[EditPlan]:
             repairs: list[Event] = []
-            focus = answer.focus if answer.focus in known else by_snake.get(snake_id(answer.focus))
+            focus = answer.focus if answer.focus in known else by_snake.get(snake_id(answer.focus), answer.focus)
             if answer.operation == "add":
                 # An id the scene already uses is replaced by editing.validate_plan, constraints and all.
                 focus = snake_id(answer.focus)[:MAX_ID_CHARS - 4].strip("_") or "object"
-            elif focus is None:
-                raise InvalidAnswer(
-                    f"focus {answer.focus!r} is not an object of the scene; "
-                    f"for {answer.operation!r} choose one of: {', '.join(sorted(known))}"
-                )
-            if answer.operation in ("add", "replace") and answer.new_object is None:
-                raise InvalidAnswer(f"operation {answer.operation!r} needs new_object")
-            if answer.operation == "delete":
-                return Answer(EditPlan(operation="delete", focus=focus))
-            constraints = self._focus_constraints(answer.constraints, focus, scene.objects, repairs)
-            if answer.operation == "move" and not constraints and answer.yaw is None and answer.offset is None:
-                raise InvalidAnswer(f"a move of {focus} needs constraints saying where to, or a yaw (or an offset to shift it)")
+            placing = answer.operation != "delete" and (answer.operation == "add" or focus in known)
+            constraints = self._focus_constraints(answer.constraints, focus, scene.objects, repairs) if placing else []
             new = answer.new_object
             yaw = answer.yaw if answer.yaw is not None and math.isfinite(answer.yaw) else None
             plan = EditPlan(
@@ -391,6 +372,10 @@ class OpenAIChatVLM:
                 yaw=yaw % 360.0 if yaw is not None else None,
                 offset=answer.offset if answer.operation == "move" else None,
             )
+            try:  # the checks every plan passes (editing.validate_plan), the model's errors told back to it
+                plan = validate_plan(scene, plan)
+            except InputError as exc:
+                raise InvalidAnswer(str(exc)) from None
             return Answer(plan, tuple(repairs))
 
         return self.chat.ask("edit_plan", messages, EditAnswer, check)

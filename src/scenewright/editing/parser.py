@@ -22,6 +22,7 @@ from functools import lru_cache
 
 from scenewright.core.catalogue import Category, load_catalogue, lookup, singular, words
 from scenewright.analysis.parser import relation_phrases
+from scenewright.analysis.parser.words import ORDINALS
 from scenewright.core.plan import EditPlan, NewObject
 from scenewright.errors import InputError
 from scenewright.scene import Constraint, Scene, SceneObject, Vec3
@@ -43,11 +44,6 @@ _REPLACE = ("replace", "swap", "exchange", "substitute", "change", "make", "pain
 #: Words that introduce a new object rather than name an existing one.
 _INDEFINITE = ("a", "an", "another", "one more", "a new", "an extra", "one", "some", "a second", "an additional")
 _DETERMINERS = {"the", "this", "that", "my", "our", "its", "their", "your"}
-_ORDINALS = {
-    "first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6, "seventh": 7,
-    "eighth": 8, "ninth": 9, "tenth": 10, "1st": 1, "2nd": 2, "3rd": 3, "4th": 4, "5th": 5,
-    "6th": 6, "7th": 7, "8th": 8, "9th": 9, "10th": 10,
-}  # fmt: skip
 #: Side words → (axis, pick the largest?): "left" is the smallest x in the scene frame.
 _SIDES = {
     "left": (0, False), "leftmost": (0, False), "right": (0, True), "rightmost": (0, True),
@@ -187,13 +183,13 @@ def resolve(scene: Scene, phrase: str, *, role: str = "object") -> SceneObject:
     tokens = [t for t in words(text) if t not in _DETERMINERS and t not in ("one", "object", "thing")]
     if not tokens:
         raise InputError(f"which {role}? name one of: {_describe(scene.objects)}")
-    ordinal = next((_ORDINALS[t] for t in tokens if t in _ORDINALS), None)
+    ordinal = next((ORDINALS[t] for t in tokens if t in ORDINALS), None)
     last = "last" in tokens
     side = next((_SIDES[t] for t in tokens if t in _SIDES), None)
     middle = any(t in ("middle", "centre", "center", "central") for t in tokens)
     extreme = next((_SIZES[t] for t in tokens if t in _SIZES), None)
     number = next((int(t) for t in tokens if t.isdigit()), None)
-    skip = set(_ORDINALS) | set(_SIDES) | set(_SIZES) | {"last", "middle", "centre", "center", "central", "side", "number", "no"}
+    skip = set(ORDINALS) | set(_SIDES) | set(_SIZES) | {"last", "middle", "centre", "center", "central", "side", "number", "no"}
     nouns = [t for t in tokens if t not in skip and not t.isdigit()]
     if not nouns:
         raise InputError(f"which {role} is {phrase!r}? the scene has: {_describe(scene.objects)}")
@@ -227,12 +223,12 @@ def resolve(scene: Scene, phrase: str, *, role: str = "object") -> SceneObject:
         candidates = numbered
     if len(candidates) > 1 and (ordinal is not None or last):
         ordered = sorted(candidates, key=_id_index)
-        index = len(ordered) if last else ordinal
-        if index > len(ordered):
+        index = len(ordered) - 1 if last else ordinal
+        if index >= len(ordered):
             raise InputError(
-                f"there are only {len(ordered)} {nouns[-1]}s, so no number {index}: {_describe(ordered)}"
+                f"there are only {len(ordered)} {nouns[-1]}s, so no number {index + 1}: {_describe(ordered)}"
             )
-        candidates = [ordered[index - 1]]
+        candidates = [ordered[index]]
     if len(candidates) > 1 and side is not None:
         axis, largest = side
         key = lambda o: o.position.tuple()[axis]  # noqa: E731

@@ -28,7 +28,7 @@ from scenewright.evaluation.physical import physical
 from scenewright.evaluation.spatial import spatial
 from scenewright.evaluation.stated import stated
 from scenewright.files import check_image
-from scenewright.folder import SceneFolder
+from scenewright.folder import SceneFolder, as_folder
 from scenewright.scene import Scene
 
 log = logging.getLogger(__name__)
@@ -142,7 +142,7 @@ def evaluate(
     from scenewright.assets import load_meshes
     from scenewright.evaluation.ablation import initial_objects, without_solver
     from scenewright.evaluation.stability import settle_check
-    from scenewright.render import as_folder, best_render
+    from scenewright.render import best_render
 
     results = []
     for item in folders:

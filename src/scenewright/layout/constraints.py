@@ -21,7 +21,7 @@ from typing import Any, Callable, Collection, Iterable, Mapping, Sequence
 
 from pydantic import ValidationError
 
-from scenewright.layout.relations import PRIORITY
+from scenewright.core.relations import PRIORITY
 from scenewright.scene import Constraint, DroppedConstraint, SceneObject, describe_validation_error
 
 log = logging.getLogger(__name__)
@@ -94,7 +94,7 @@ def _admit(
     """Indices of the constraints that order placement, and the ones that would close a cycle
     (with its path). Positional relations are admitted first, ``face to`` last, so a facing
     never costs a positional constraint its place."""
-    after: dict[str, set[str]] = {}  # edge target -> source: the target is placed first
+    graph = PlacementGraph()
     admitted: set[int] = set()
     cyclic: list[tuple[int, Constraint, list[str]]] = []
     ranked = sorted(
@@ -108,13 +108,30 @@ def _admit(
     )
     for i in ranked:
         c = constraints[i]
-        path = _path(after, c.source, c.target)
-        if path is not None:
-            cyclic.append((i, c, [c.source] + path[::-1]))
+        cycle = graph.cycle(c.source, c.target)
+        if cycle is not None:
+            cyclic.append((i, c, cycle))
             continue
-        after.setdefault(c.target, set()).add(c.source)
+        graph.add(c.source, c.target)
         admitted.add(i)
     return admitted, cyclic
+
+
+class PlacementGraph:
+    """Who is placed relative to whom, grown one relation at a time; the one place that says
+    whether a relation would close a cycle (the layout's cleaning and the parser both ask it)."""
+
+    def __init__(self) -> None:
+        self._after: dict[str, set[str]] = {}  # target -> sources: the target is placed first
+
+    def cycle(self, source: str, target: str) -> list[str] | None:
+        """The cycle ``source -> target -> ... -> source`` (each placed relative to the next)
+        that placing ``source`` relative to ``target`` would close, or ``None``."""
+        path = _path(self._after, source, target)
+        return None if path is None else [source] + path[::-1]
+
+    def add(self, source: str, target: str) -> None:
+        self._after.setdefault(target, set()).add(source)
 
 
 def _path(after: dict[str, set[str]], start: str, goal: str) -> list[str] | None:

@@ -1,4 +1,4 @@
-"""The ten spatial relations of the paper (Table 3, DESIGN.md §4), each defined once.
+"""The geometry of the ten spatial relations of the paper (Table 3, docs/architecture.md), each defined once.
 
 Every relation has three parts, all here: ``holds`` (the check), ``violation`` (how far from
 holding: metres, or degrees for ``face to``; 0 when it holds) and ``propose`` (candidate
@@ -33,15 +33,10 @@ from typing import Callable
 
 import numpy as np
 
+from scenewright.core.relations import ABOVE, BUFFER, FACE_DEGREES, FAR, NEAR, ON_GAP
 from scenewright.geometry import front_direction, rotation_matrix, world_box
 from scenewright.scene import RELATION_TYPES, SceneObject, Vec3
 
-BUFFER = 0.1  # m, relative relations
-NEAR = 2.0  # m, horizontal gap
-FAR = 8.0  # m, horizontal gap
-ON_GAP = 0.002  # m, clearance for "on"
-ABOVE = 2.0  # m, bottom of source to top of target
-FACE_DEGREES = 10.0
 #: Slack for floating-point round-off only, so that limits hold exactly at the limit.
 EPS = 1e-9
 
@@ -257,14 +252,6 @@ def violation(relation: str, source: SceneObject, target: SceneObject) -> float:
 
 
 # --- candidate generation ------------------------------------------------------------------
-
-#: Solver priority: the first relation of an object in this order generates its candidates.
-PRIORITY: dict[str, int] = {
-    "on": 0, "above": 0,
-    "left of": 1, "right of": 1, "in front of": 1, "behind": 1, "side of": 1,
-    "near": 2, "far": 2, "face to": 2,
-}
-
 
 @lru_cache(maxsize=32)
 def sunflower(n: int, spacing: float) -> np.ndarray:

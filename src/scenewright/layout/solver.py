@@ -53,6 +53,7 @@ import trimesh
 
 from scenewright.errors import InputError
 from scenewright.geometry import world_box
+from scenewright.core.relations import PRIORITY
 from scenewright.layout import relations as rel
 from scenewright.layout.collision import CollisionWorld, colliding_pairs, resting_pairs
 from scenewright.layout.constraints import clean_constraints, topological_order
@@ -315,7 +316,7 @@ class _Search:
         own = self.active(item)
         anchor = self.anchor[item.index] if anchor is None else anchor
         bounds = self.bounds if bounded else None
-        ranked = sorted(own, key=lambda ct: rel.PRIORITY[ct[0].relation])
+        ranked = sorted(own, key=lambda ct: PRIORITY[ct[0].relation])
         primary = ranked[0] if ranked else None
         relation, target = (primary[0].relation, self.box(primary[1])) if primary else ("face to", None)
         facing = next((t for c, t in ranked if c.relation == "face to"), None)

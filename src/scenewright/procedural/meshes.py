@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 import trimesh
 
-from scenewright.core.catalogue import lookup
+from scenewright.core.catalogue import load_catalogue, lookup
 from scenewright.errors import InputError
 from scenewright.gltf import keep_materials
 from scenewright.procedural.builder import Model
@@ -27,33 +27,21 @@ from scenewright.procedural.shapes.families import FAMILY_WORDS
 from scenewright.procedural.style import resolve_style
 
 
-#: Words of an object's name → shape, for names the catalogue does not know: the shapes'
-#: own names, the words of each shape family ("camel" → animal), then synonyms.
+#: Words of an object's name → shape, for names the catalogue does not know as a whole ("oak
+#: couch cushion"): the shapes' own names, the words of each shape family ("camel" → animal),
+#: every catalogue name and synonym (the catalogue owns synonyms; data/catalogue.json), and
+#: the few words the catalogue does not name ("bar" reads as a counter).
 KEYWORDS: dict[str, str] = {
     **{name.replace("_", " "): name for name in SHAPES},
     **{word: family for family, words in FAMILY_WORDS.items() for word in words},
-    "couch": "sofa", "loveseat": "sofa", "settee": "sofa", "recliner": "armchair",
-    "desk chair": "office_chair", "gaming chair": "office_chair", "swivel chair": "office_chair",
-    "side table": "coffee_table", "end table": "nightstand", "dining table": "table", "bedside table": "nightstand",
-    "bookcase": "bookshelf", "shelf": "bookshelf", "shelves": "bookshelf", "shelving": "bookshelf",
-    "cupboard": "cabinet", "dresser": "cabinet", "sideboard": "cabinet", "drawers": "cabinet", "tv stand": "cabinet",
-    "closet": "wardrobe", "armoire": "wardrobe", "bedside": "nightstand", "bar": "counter", "kitchen island": "counter",
-    "desk lamp": "table_lamp", "lamp": "table_lamp", "chandelier": "pendant_lamp", "ceiling light": "pendant_lamp",
-    "pendant": "pendant_lamp", "carpet": "rug", "mat": "rug", "television": "tv", "screen": "monitor",
-    "computer": "monitor", "plant": "potted_plant", "houseplant": "potted_plant", "tub": "bathtub", "basin": "sink",
-    "oven": "stove", "cooker": "stove", "refrigerator": "fridge", "painting": "picture_frame",
-    "picture": "picture_frame", "poster": "picture_frame", "artwork": "picture_frame", "frame": "picture_frame",
-    "bin": "trash_can", "trash": "trash_can", "garbage can": "trash_can", "dustbin": "trash_can", "box": "crate",
-    "chest": "crate", "keg": "barrel", "book": "books", "mug": "cup", "teacup": "cup",
-    "pine": "pine_tree", "fir": "pine_tree", "spruce": "pine_tree", "christmas tree": "pine_tree", "palm": "palm_tree",
-    "shrub": "bush", "hedge": "bush", "flowerbed": "flower_bed", "flowers": "flower_bed", "planter": "flower_bed",
-    "boulder": "rock", "sculpture": "statue", "monument": "statue", "lamppost": "lamp_post", "street lamp": "lamp_post",
-    "streetlight": "lamp_post", "street light": "lamp_post", "signpost": "sign", "billboard": "sign",
-    "railing": "fence", "gate": "arch", "torii": "arch", "archway": "arch", "taxi": "car", "sedan": "car",
-    "van": "truck", "lorry": "truck", "tram": "bus", "bike": "bicycle", "ship": "boat", "yacht": "boat",
-    "canoe": "boat", "skyscraper": "building", "cottage": "house", "cabin": "house", "hut": "house", "booth": "kiosk",
-    "stall": "market_stall", "parasol": "umbrella", "blackboard": "whiteboard", "chalkboard": "whiteboard",
-    "android": "robot", "column": "pillar", "wagon": "cart", "wheelbarrow": "cart", "castle tower": "tower",
+    **{
+        word: category.shape
+        for category in load_catalogue().values()
+        if category.shape in SHAPES and not category.family
+        for word in (category.label, *category.synonyms)
+    },
+    "bedside": "nightstand", "bar": "counter", "frame": "picture_frame", "trash": "trash_can",
+    "castle tower": "tower",
 }
 _KEYWORD_RE = re.compile(r"\b(%s)(?:e?s)?\b" % "|".join(sorted(map(re.escape, KEYWORDS), key=len, reverse=True)))
 

@@ -30,7 +30,7 @@ import numpy as np
 
 from scenewright.errors import BackendError, InputError, MissingExtra
 from scenewright.files import write_atomic
-from scenewright.folder import SceneFolder
+from scenewright.folder import SceneFolder, as_folder
 from scenewright.geometry import object_matrix, world_box
 from scenewright.render.views import VIEWS
 from scenewright.scene import Scene
@@ -45,10 +45,6 @@ DRAFT_RESOLUTION = (256, 144)
 DRAFT_SAMPLES = 4
 DEFAULT_TIMEOUT = 900.0
 METADATA = "renders.json"
-
-
-def as_folder(folder: SceneFolder | str | Path) -> SceneFolder:
-    return folder if isinstance(folder, SceneFolder) else SceneFolder(Path(folder))
 
 
 def scene_bounds(scene: Scene) -> tuple[list[float], list[float]]:

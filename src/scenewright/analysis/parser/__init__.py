@@ -87,13 +87,13 @@ from functools import lru_cache
 
 from scenewright.analysis.parser.distribute import _acyclic, _expand, _ids
 from scenewright.analysis.parser.model import ParsedObject, ParsedRelation, ParsedScene
-from scenewright.analysis.parser.phrases import FAR_LIMIT, NEAR_LIMIT, relation_phrases
+from scenewright.analysis.parser.phrases import relation_phrases
 from scenewright.analysis.parser.reader import _Reader
 from scenewright.analysis.parser.style import GROUND_KINDS, _is_indoor, detect_ground, detect_style
 from scenewright.analysis.parser.support import _infer_support, repair_supports
 
 __all__ = [
-    "FAR_LIMIT", "GROUND_KINDS", "NEAR_LIMIT", "ParsedObject", "ParsedRelation", "ParsedScene",
+    "GROUND_KINDS", "ParsedObject", "ParsedRelation", "ParsedScene",
     "detect_ground", "detect_style", "parse_scene", "relation_phrases",
 ]  # fmt: skip
 

@@ -12,6 +12,7 @@ from dataclasses import replace
 from scenewright.analysis.parser.model import ParsedRelation
 from scenewright.analysis.parser.nouns import _Group
 from scenewright.analysis.parser.reader import _Reader
+from scenewright.layout.constraints import PlacementGraph
 
 log = logging.getLogger(__name__)
 
@@ -166,24 +167,13 @@ def _acyclic(relations: list[ParsedRelation], ids: list[str]) -> list[ParsedRela
     seen: set[tuple[str, str, str]] = set()
     kept: list[ParsedRelation] = []
     edges: dict[str, set[str]] = {i: set() for i in ids}  # source → targets
-
-    def reaches(a: str, b: str) -> bool:
-        stack, visited = [a], set()
-        while stack:
-            x = stack.pop()
-            if x == b:
-                return True
-            if x in visited:
-                continue
-            visited.add(x)
-            stack.extend(edges.get(x, ()))
-        return False
+    graph = PlacementGraph()
 
     for r in sorted(relations, key=lambda r: r.inferred):
         key = (r.source, r.relation, r.target)
         if key in seen or r.source == r.target or r.source not in edges or r.target not in edges:
             continue
-        if reaches(r.target, r.source):
+        if graph.cycle(r.source, r.target) is not None:
             log.debug("dropping %s %s %s: it would close a cycle", r.source, r.relation, r.target)
             continue
         # one vertical support per object
@@ -194,6 +184,7 @@ def _acyclic(relations: list[ParsedRelation], ids: list[str]) -> list[ParsedRela
         seen.add(key)
         kept.append(r)
         edges[r.source].add(r.target)
+        graph.add(r.source, r.target)
     depth: dict[str, int] = {}
 
     def level(x: str) -> int:

@@ -15,6 +15,7 @@ from importlib import resources
 from scenewright.analysis.parser.sizes import _NUM_WORD
 from scenewright.analysis.parser.tokens import _Tok
 from scenewright.analysis.parser.words import _STOP, _UNITS, _is_verb
+from scenewright.core.relations import FAR, NEAR
 
 
 @lru_cache(maxsize=1)
@@ -64,10 +65,6 @@ class _Rel:
     elliptic: bool = False
 
 
-#: At most this far apart is "near", beyond the other "far" (the relations' own thresholds).
-NEAR_LIMIT = 2.0
-FAR_LIMIT = 8.0
-
 
 def _distance_at(toks: list[_Tok], i: int) -> _Rel | None:
     """"at a distance of N m (from X)", "N metres (away) from X" → near / far / nothing."""
@@ -87,7 +84,8 @@ def _distance_at(toks: list[_Tok], i: int) -> _Rel | None:
     has_from = k < len(toks) and toks[k].text == "from"
     if not has_from and j == i:
         return None  # "2 m" alone is a size or a count, not a distance
-    kind = "near" if metres <= NEAR_LIMIT else "far" if metres > FAR_LIMIT else "no relation"
+    # At most NEAR apart is "near", beyond FAR "far": the relations' own thresholds.
+    kind = "near" if metres <= NEAR else "far" if metres > FAR else "no relation"
     return _Rel(kind, i, k + 1 if has_from else k, elliptic=not has_from)
 
 

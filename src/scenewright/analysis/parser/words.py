@@ -69,7 +69,15 @@ _HOLD_PAIRS = {("loaded", "with"), ("topped", "with"), ("set", "with"), ("laid",
 _OWN_PLACE = {"at", "in", "along", "against", "under", "inside"}
 #: Possessives whose noun, when no object, is a part of what the pronoun names ("its door").
 _OWNER_PRONOUNS = {"its": "it", "their": "them"}
-_ORDINALS = {"first": 0, "second": 1, "third": 2, "last": -1, "left": 0, "right": -1, "other": -1, "nearest": 0}
+#: Ordinal words → position, counted from 0 as Python indexes ("first" is 0); the scene parser
+#: and the edit parser both read ordinals through this one table.
+ORDINALS = {
+    "first": 0, "second": 1, "third": 2, "fourth": 3, "fifth": 4, "sixth": 5, "seventh": 6,
+    "eighth": 7, "ninth": 8, "tenth": 9, "1st": 0, "2nd": 1, "3rd": 2, "4th": 3, "5th": 4,
+    "6th": 5, "7th": 6, "8th": 7, "9th": 8, "10th": 9,
+}  # fmt: skip
+#: Words that pick one of a group the text named before ("the other chair", "the last lamp").
+_ORDINALS = {**ORDINALS, "last": -1, "left": 0, "right": -1, "other": -1, "nearest": 0}
 
 
 def _is_verb(word: str) -> bool:
