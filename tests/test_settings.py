@@ -9,7 +9,7 @@ import pytest
 from scenewright.cli import main
 from scenewright.cli.options import build_settings
 from scenewright.errors import InputError
-from scenewright.settings import KEYS, Settings
+from scenewright.settings import KEYS, Settings, default_cache_dir
 
 
 def test_every_settings_field_is_a_config_key():
@@ -89,3 +89,12 @@ def test_max_faces_zero_means_no_limit(tmp_path, monkeypatch):
     (tmp_path / "scenewright.toml").write_text("max_faces = 20000\n")
     assert build_settings().max_faces == 20000
     assert build_settings(max_faces=0).max_faces is None
+
+
+def test_library_settings_read_no_environment_and_the_cli_does(monkeypatch, tmp_path):
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    assert Settings().cache_dir is None  # a library caller caches nothing until told where
+    assert default_cache_dir({"XDG_CACHE_HOME": "/c"}) == Path("/c/scenewright")
+    assert default_cache_dir({}) == Path.home() / ".cache" / "scenewright"
+    monkeypatch.chdir(tmp_path)  # no scenewright.toml here
+    assert build_settings().cache_dir == tmp_path / "xdg" / "scenewright"

@@ -1,7 +1,9 @@
 """Run configuration in one explicit object, filled from defaults, a TOML file and CLI flags.
 
 Library code never reads the environment on its own: whatever a backend needs (an API key's
-variable name, a base URL, a cache folder) comes through :class:`Settings`.
+variable name, a base URL, a cache folder) comes through :class:`Settings`. The command line is
+the edge that reads it (:func:`scenewright.cli.options.build_settings` passes ``os.environ`` to
+:func:`default_cache_dir`); a library caller's ``Settings()`` caches nothing until told where.
 """
 
 from __future__ import annotations
@@ -16,8 +18,9 @@ from pathlib import Path
 from scenewright.errors import InputError
 
 
-def default_cache_dir() -> Path:
-    base = os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache"
+def default_cache_dir(environ: Mapping[str, str]) -> Path:
+    """The command line's cache: ``$XDG_CACHE_HOME/scenewright``, else ``~/.cache/scenewright``."""
+    base = environ.get("XDG_CACHE_HOME") or Path.home() / ".cache"
     return Path(base) / "scenewright"
 
 
@@ -55,7 +58,9 @@ class Settings:
     #: Pixels (width × height) and Cycles samples of one render.
     max_render_pixels: int = 3840 * 2160
     max_render_samples: int = 4096
-    cache_dir: Path | None = field(default_factory=default_cache_dir)
+    #: Where model answers and meshes are cached; ``None`` caches nothing (the CLI's default is
+    #: :func:`default_cache_dir`).
+    cache_dir: Path | None = None
     extra: dict[str, object] = field(default_factory=dict)
 
 

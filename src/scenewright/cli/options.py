@@ -7,6 +7,7 @@ the keys of :class:`~scenewright.settings.Settings`, then the flags given.
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 from typing import Annotated
 
@@ -14,7 +15,7 @@ import typer
 
 from scenewright.errors import InputError
 from scenewright.scene import MAX_SEED
-from scenewright.settings import DEFAULT_CONFIG, Settings, apply, load_config
+from scenewright.settings import DEFAULT_CONFIG, Settings, apply, default_cache_dir, load_config
 
 VlmOption = Annotated[str | None, typer.Option("--vlm", help="Vision-language backend: offline | openai:MODEL.")]
 ImagesOption = Annotated[str | None, typer.Option("--images", help="Image backend: offline | openai:MODEL.")]
@@ -71,7 +72,7 @@ def build_settings(
 ) -> Settings:
     """Defaults, then the config file, then flags: the later wins. ``flags`` are further
     Settings keys (``api_key_env=...``); a flag left at ``None`` was not given."""
-    settings = Settings()
+    settings = Settings(cache_dir=default_cache_dir(os.environ))  # the one place the environment is read
     if config is None and Path(DEFAULT_CONFIG).is_file():
         config = Path(DEFAULT_CONFIG)
     if config is not None:

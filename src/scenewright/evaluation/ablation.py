@@ -13,7 +13,7 @@ from collections.abc import Mapping
 
 import trimesh
 
-from scenewright.layout import solve
+from scenewright.layout import audit
 from scenewright.scene import Scene, SceneObject
 
 log = logging.getLogger(__name__)
@@ -44,6 +44,6 @@ def initial_objects(scene: Scene) -> list[SceneObject]:
 def without_solver(
     scene: Scene, initial: list[SceneObject], meshes: Mapping[str, trimesh.Trimesh] | None = None
 ) -> Scene:
-    """A copy of ``scene`` whose layout is the initial one, as ``solve(use_solver=False)`` keeps it."""
-    result = solve(initial, scene.constraints, meshes=meshes, bounds=scene.bounds, use_solver=False)
+    """A copy of ``scene`` whose layout is the initial one, judged by :func:`~scenewright.layout.audit`."""
+    result = audit(initial, scene.constraints, meshes=meshes, bounds=scene.bounds)
     return scene.model_copy(update={"objects": result.objects, "layout": result.report})

@@ -9,10 +9,11 @@ from scenewright.layout.collision import colliding_pairs
 from scenewright.layout.constraints import break_cycles, clean_constraints, topological_order
 from scenewright.layout.relations import check, violation
 from scenewright.layout.report import feedback_text
-from scenewright.layout.solver import LayoutResult, solve
+from scenewright.layout.solver import LayoutResult, audit, solve
 
 __all__ = [
     "LayoutResult",
+    "audit",
     "break_cycles",
     "check",
     "clean_constraints",

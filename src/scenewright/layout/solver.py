@@ -112,6 +112,23 @@ class LayoutResult:
     posed: set[str] = field(default_factory=set)
 
 
+@dataclass(frozen=True)
+class _Poses:
+    """One object's candidate poses (nearest the anchor first) and what each of them meets."""
+
+    centres: np.ndarray
+    yaws: np.ndarray
+    boxes: Boxes
+    #: Per active constraint, which candidates satisfy it.
+    satisfied: list[np.ndarray]
+    #: Which candidates satisfy all of them (and keep the followers' relations when turned).
+    ok: np.ndarray
+    #: Which candidates lie inside the bounds.
+    inside: np.ndarray
+    #: Follower index → its yaw per candidate (an object facing this one turns with it).
+    turns: dict[int, np.ndarray]
+
+
 @dataclass
 class _Failure:
     reason: str
@@ -280,21 +297,21 @@ class _Search:
 
     def candidates(self, item: _Item, wide: bool = False) -> _Node | _Failure:
         """The object's candidate poses that meet its constraints and the bounds, nearest first."""
-        centres, yaws, boxes, sat, ok, inside, turns = self.poses(item, "wide" if wide else "normal")
-        good = ok & inside
+        poses = self.poses(item, "wide" if wide else "normal")
+        good = poses.ok & poses.inside
         if not good.any():
-            return self.explain(item, boxes, sat, ok, inside)
-        centres, yaws = centres[good], yaws[good]
+            return self.explain(item, poses.boxes, poses.satisfied, poses.ok, poses.inside)
+        centres, yaws = poses.centres[good], poses.yaws[good]
         lo, hi = self.world.boxes(item.index, centres, yaws)
         return _Node(item, centres, yaws, lo, hi, self.world.neighbours(item.index),
-                     {f: y[good] for f, y in turns.items()}, wide=wide)
+                     {f: y[good] for f, y in poses.turns.items()}, wide=wide)
 
     def feasible(self, item: _Item) -> bool:
         """Whether any candidate pose meets the object's constraints and the bounds: a sparse
         set at the model's yaw first (it usually answers), then the full one."""
         for density in ("probe", "check"):
             poses = self.poses(item, density)
-            if np.any(poses[4] & poses[5]):
+            if np.any(poses.ok & poses.inside):
                 return True
         return False
 
@@ -302,15 +319,13 @@ class _Search:
         """The object's constraints whose targets have a pose (a facing waits for its target)."""
         return [(c, t) for c, t in item.own if self.posed[t]]
 
-    def poses(self, item: _Item, density: str = "normal", anchor: np.ndarray | None = None, bounded: bool = True):
+    def poses(
+        self, item: _Item, density: str = "normal", anchor: np.ndarray | None = None, bounded: bool = True
+    ) -> _Poses:
         """Candidate poses and, per constraint, which of them satisfy it. ``density`` is
         ``"normal"``, ``"wide"`` (farther and denser, when the normal set ran out), ``"probe"``
         (a sparse set at the model's yaw) or ``"check"`` (sparser than normal): the last two for
-        forward checking.
-
-        Returns (centres, yaws, boxes, per-constraint masks, all-constraints mask, in-bounds
-        mask, followers' yaws per candidate). ``anchor`` replaces the object's own; ``bounded=False``
-        ignores the bounds.
+        forward checking. ``anchor`` replaces the object's own; ``bounded=False`` ignores the bounds.
         """
         obj = item.obj
         own = self.active(item)
@@ -378,7 +393,7 @@ class _Search:
         ok = np.logical_and.reduce(sat) if sat else np.ones(len(xy), dtype=bool)
         for f, y in turns.items():  # and its own relations must survive the turn
             ok &= self.still_holds(f, y, exclude=item.index)
-        return centres, yaws, boxes, sat, ok, self.inside(boxes), turns
+        return _Poses(centres, yaws, boxes, sat, ok, self.inside(boxes), turns)
 
     def crowded(self) -> bool:
         """Whether the floor inside the bounds is so full that free positions are best found
@@ -479,7 +494,7 @@ class _Search:
                 self.followers[item.index] = []  # as the objects facing it stand
                 try:
                     probe = replace(item, own=group, reverse=[])
-                    found = self.poses(probe, "wide", anchor=self.box(t).centre, bounded=False)[4].any()
+                    found = self.poses(probe, "wide", anchor=self.box(t).centre, bounded=False).ok.any()
                 finally:
                     self.followers[item.index] = saved
                 self.contradictions[key] = None if found else [c for c, _ in group]
@@ -587,7 +602,8 @@ class _Search:
         so the objects placed against it still have a pose to be placed against.
         """
         item = self.items[i]
-        centres, yaws, boxes, _, _, _, turns = self.poses(item, "wide")
+        poses = self.poses(item, "wide")
+        centres, yaws, boxes, turns = poses.centres, poses.yaws, poses.boxes, poses.turns
         pairs = self.pairs(item, turns, centres)
         misses = [
             rel.violations(c.relation, boxes, tb) if tb is not None else rel.violations(c.relation, sb, boxes)
@@ -640,7 +656,6 @@ def solve(
     time_limit: float = 10.0,
     node_limit: int | None = None,
     seed: int = 0,
-    use_solver: bool = True,
 ) -> LayoutResult:
     """Place every object the constraints allow, collision-free, inside ``bounds`` (W, D).
 
@@ -648,11 +663,41 @@ def solve(
     the report; only with no collision-free pose anywhere does it keep its initial pose.
     ``fixed`` ids keep their pose and count as placed; ``keep_yaw`` ids keep their yaw unless a
     ``face to`` turns them. ``node_limit`` caps the search work (default
-    :data:`NODES_PER_OBJECT` per object), ``time_limit`` its CPU seconds. ``use_solver=False``
-    keeps every initial pose and only reports which objects violate their constraints,
-    collide or leave the bounds.
+    :data:`NODES_PER_OBJECT` per object), ``time_limit`` its CPU seconds.
     """
     start = _cpu()
+    objects, fixed = _checked(objects, fixed, bounds)
+    cleaned, dropped = clean_constraints(objects, constraints)
+    if node_limit is None:
+        node_limit = NODES_PER_OBJECT * len(objects) + 1000
+    search, report = _restarts(objects, cleaned, meshes, bounds, fixed, keep_yaw, seed, start, time_limit,
+                               node_limit)
+    # An unplaced object the search left at its nearest miss has a pose too.
+    posed = {u.id for u in report.unplaced if search.placed[search.index[u.id]]}
+    return _result(objects, cleaned, dropped, search, report, posed, start)
+
+
+def audit(
+    objects: Sequence[SceneObject],
+    constraints: Iterable[Constraint | Mapping],
+    *,
+    meshes: Mapping[str, trimesh.Trimesh] | None = None,
+    bounds: tuple[float, float] | None = None,
+    fixed: Iterable[str] = (),
+) -> LayoutResult:
+    """The layout as it stands, judged without moving anything: which objects violate their
+    constraints, collide or leave the bounds (the ablation's layout "without the solver")."""
+    start = _cpu()
+    objects, fixed = _checked(objects, fixed, bounds)
+    cleaned, dropped = clean_constraints(objects, constraints)
+    search = _Search(objects, cleaned, meshes, bounds, fixed, 0)
+    report = _audit(search, objects, cleaned, meshes)
+    return _result(objects, cleaned, dropped, search, report, set(), start)
+
+
+def _checked(
+    objects: Sequence[SceneObject], fixed: Iterable[str], bounds: tuple[float, float] | None
+) -> tuple[list[SceneObject], list[str]]:
     objects = list(objects)
     ids = [o.id for o in objects]
     if len(set(ids)) != len(ids):
@@ -664,19 +709,22 @@ def solve(
         raise InputError(f"fixed ids {unknown} are not objects; objects are: {', '.join(ids)}")
     if bounds is not None and (len(bounds) != 2 or min(bounds) <= 0):
         raise InputError(f"bounds must be two positive numbers (width, depth), got {bounds!r}")
-    cleaned, dropped = clean_constraints(objects, constraints)
-    if not use_solver:
-        search = _Search(objects, cleaned, meshes, bounds, fixed, seed)
-        report = _audit(search, objects, cleaned, meshes)
-    else:
-        if node_limit is None:
-            node_limit = NODES_PER_OBJECT * len(objects) + 1000
-        search, report = _restarts(objects, cleaned, meshes, bounds, fixed, keep_yaw, seed, start, time_limit,
-                                   node_limit)
+    return objects, fixed
+
+
+def _result(
+    objects: list[SceneObject],
+    cleaned: list[Constraint],
+    dropped: list,
+    search: _Search,
+    report: LayoutReport,
+    posed_unplaced: set[str],
+    start: float,
+) -> LayoutResult:
+    """The objects at the poses the search gave the placed ones (and ``posed_unplaced``)."""
     report.dropped = dropped
     report.seconds = round(_cpu() - start, 4)
-    placed = set(report.placed)
-    posed = placed | {u.id for u in report.unplaced if use_solver and search.placed[search.index[u.id]]}
+    posed = set(report.placed) | posed_unplaced
     solved = []
     for i, o in enumerate(objects):
         if o.id in posed:

@@ -83,7 +83,6 @@ Decisions worth knowing:
 
 from __future__ import annotations
 
-from functools import lru_cache
 
 from scenewright.analysis.parser.distribute import _acyclic, _expand, _ids
 from scenewright.analysis.parser.model import ParsedObject, ParsedRelation, ParsedScene
@@ -100,12 +99,10 @@ __all__ = [
 
 def parse_scene(text: str) -> ParsedScene:
     """Read a description into objects (with ids, sizes, descriptions), relations, style and
-    ground kind. Deterministic: the same text always gives the same parse."""
-    return _parse_cached(" ".join(text.split()))
-
-
-@lru_cache(maxsize=64)
-def _parse_cached(text: str) -> ParsedScene:
+    ground kind. Deterministic: the same text always gives the same parse. Each call returns a
+    new parse the caller may change; a caller that reads one text often keeps its own (the
+    offline backend does, per instance)."""
+    text = " ".join(text.split())
     reader = _Reader(text)
     reader.read()
     _ids(reader.groups)
