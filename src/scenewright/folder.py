@@ -1,4 +1,4 @@
-"""The scene folder of DESIGN.md §2: where each file of a scene lives, and nowhere else.
+"""The scene folder (docs/architecture.md, "Data flow"): where each file of a scene lives, and nowhere else.
 
 One class names the paths so no stage spells them out; :meth:`SceneFolder.create` refuses
 to write into a folder that holds something other than a scene, so nothing is overwritten

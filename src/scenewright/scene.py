@@ -4,7 +4,7 @@ Every stage reads a :class:`Scene`, adds what it produces and writes it back, so
 stops half way resumes from what is on disk. The document holds plain data only (no
 backend objects, no meshes): paths to images and assets are relative to the scene folder.
 
-Frames (DESIGN.md §3): +X right, +Y backward, +Z up, metres, degrees. ``position`` is the
+Frames (docs/architecture.md, "Frames and units"): +X right, +Y backward, +Z up, metres, degrees. ``position`` is the
 centre of the object's bounding box (the paper's convention, which is what a model writes);
 ``size`` is the axis-aligned extent at yaw 0; at yaw 0 an object's front faces −Y.
 """

@@ -1,6 +1,6 @@
 """Object generation: one normalised GLB per object, from any mesh backend, cached and resumable.
 
-The stored convention (DESIGN.md §3): glTF axes, footprint centred at the origin, bottom at
+The stored convention (docs/architecture.md, "Frames and units"): glTF axes, footprint centred at the origin, bottom at
 y = 0, scaled to the object's height. :func:`load_meshes` hands the same assets to the
 solver and evaluation in the scene frame (bottom at z = 0, front −Y).
 """

@@ -1,7 +1,7 @@
 """Bring any backend's GLB to the stored asset convention.
 
 Image-to-3D models, asset libraries and the procedural generator all hand back meshes at
-arbitrary scale and offset. The rest of scenewright relies on one convention (DESIGN.md §3):
+arbitrary scale and offset. The rest of scenewright relies on one convention (docs/architecture.md, "Frames and units"):
 glTF axes (+Y up, front +Z), footprint centred at the origin, bottom at y = 0, height equal
 to the object's requested height. Like the paper, the rescale is uniform and uses the
 height only, so a generated sofa keeps its proportions and the document learns its real

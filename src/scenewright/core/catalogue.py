@@ -22,7 +22,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
 
-#: The procedural generators' names (the brief's SHAPES vocabulary); ``generic`` is the fallback.
+#: The procedural generators' names (the shape vocabulary of :mod:`scenewright.procedural.shapes`); ``generic`` is the fallback.
 SHAPE_NAMES = (
     "table", "round_table", "coffee_table", "desk", "chair", "armchair", "office_chair", "stool",
     "sofa", "bench", "bed", "bookshelf", "cabinet", "wardrobe", "nightstand", "counter",

@@ -1,4 +1,4 @@
-"""How far a set of floor positions is from a line: the composition figure of DESIGN.md §9.
+"""How far a set of floor positions is from a line: a composition figure of docs/architecture.md, "Evaluation".
 
 The spread is the ratio of the minor to the major standard deviation of the centres (the
 square root of the ratio of their covariance's eigenvalues): 1 for a round or square cloud,
