@@ -184,8 +184,10 @@ def test_report_writes_json_table_and_chart(tmp_path):
 
 
 def test_clip_scores_a_render_with_a_randomly_initialised_model(tmp_path):
-    """Real weights cannot be downloaded here: this checks the plumbing (model, preprocessing,
-    tokenizer, cosine) with random weights, so only the range of the score is asserted."""
+    """Real weights cannot be downloaded here, so this runs the plumbing (model, preprocessing,
+    tokenizer, cosine) with random weights and asserts what holds for any weights: the score is
+    a cosine, the same for the same input, depends on the text, and ignores what lies past
+    CLIP's 77 tokens."""
     from scenewright.evaluation.perceptual import ClipScorer
 
     try:
@@ -194,8 +196,12 @@ def test_clip_scores_a_render_with_a_randomly_initialised_model(tmp_path):
         pytest.skip(f"CLIP extra not usable here: {exc}")
     image = tmp_path / "render.png"
     Image.new("RGB", (64, 48), (200, 40, 40)).save(image)
-    score = scorer.score("a red square " * 40, image)  # longer than CLIP's 77 tokens
+    long = "a red square " * 40  # 120 tokens, longer than CLIP's 77
+    score = scorer.score(long, image)
     assert -1.0 <= score <= 1.0
+    assert scorer.score(long, image) == score
+    assert scorer.score(long + "and a blue circle", image) == score  # cut at 77 tokens either way
+    assert scorer.score("a blue circle", image) != score
 
 
 def test_evaluate_command_scores_scene_folders(tmp_path):

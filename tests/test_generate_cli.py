@@ -203,10 +203,16 @@ def test_resume_of_a_non_scene_is_refused(tmp_path, capsys):
 
 def test_bench_pipeline_prints_one_json_object(tmp_path, capsys):
     prompts = Path(__file__).resolve().parents[1] / "benchmarks" / "prompts"
-    assert main(["bench", "pipeline", "--prompts", str(prompts), "--limit", "2", "--json"]) == 0
+    assert main(["bench", "pipeline", "--prompts", str(prompts), "--limit", "2", "--details", "--json"]) == 0
     result = json.loads(capsys.readouterr().out)
-    assert result["prompts"] == 2
-    assert result["median_seconds"] > 0
+    rows = result["details"]
+    first_two = [json.loads(p.read_text())["id"] for p in sorted(prompts.glob("*.json"))[:2]]
+    assert result["prompts"] == 2 and [r["id"] for r in rows] == first_two
+    # the summary is the rows pooled: realised over stated relations across both scenes
+    realised, stated = sum(r["relations_realised"] for r in rows), sum(r["relations_stated"] for r in rows)
+    assert stated > 0 and result["relations_realised"] == round(realised / stated, 4)
+    assert result["complete_layouts"] == sum(r["complete"] for r in rows)
+    assert all(r["objects"] > 0 and r["relations_realised"] <= r["relations_stated"] for r in rows)
 
 
 def test_incomplete_layout_is_written_then_reported_with_exit_3(tmp_path, capsys, monkeypatch):

@@ -79,10 +79,6 @@ def test_constraints_skip_removed_objects_and_map_other_ids(vlm):
     assert ("left of", "obj4", "obj0") in {c.key() for c in constraints}
 
 
-def test_nothing_is_redundant_offline(vlm):
-    assert vlm.find_redundant(vlm.describe_objects(LIVING, "realistic", None).value, {"sofa_1": b"png"}).value == {}
-
-
 def test_judging_needs_a_remote_model(vlm):
     with pytest.raises(BackendError, match="--vlm openai:MODEL"):
         vlm.judge(LIVING, b"png", "semantic")
