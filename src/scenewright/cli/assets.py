@@ -1,4 +1,11 @@
-"""``scenewright bench assets``: how well the asset stage spreads jobs over several mesh servers."""
+"""``scenewright bench assets``: how well the asset stage spreads jobs over several mesh servers.
+
+One of the servers can fail on purpose: ``transient`` fails its first job (after the job's
+full time, as an out-of-memory error does), ``permanent`` fails every job until it leaves the
+rotation. The ideal wall time is that of the remaining capacity: the fewest rounds of
+``delay`` seconds in which the healthy servers, plus the flaky one after its failed jobs,
+have room for every asset.
+"""
 
 from __future__ import annotations
 
@@ -29,12 +36,34 @@ def _png(index: int) -> bytes:
     return buffer.getvalue()
 
 
+#: --fault → how the first stand-in server misbehaves.
+FAULTS: dict[str, dict] = {
+    "none": {},
+    "transient": {"fault": "error", "fault_jobs": 1},
+    "permanent": {"fault": "error"},
+}
+MAX_FAILURES = 3
+
+
+def ideal_rounds(assets: int, servers: int, failed: int, *, permanent: bool) -> int:
+    """The fewest rounds in which the servers' remaining capacity holds every asset: each
+    healthy server builds one asset a round, the flaky one loses a round per failed job, and a
+    permanently failing one builds nothing."""
+    rounds = 1
+    while (servers - 1) * rounds + (0 if permanent else max(0, rounds - failed)) < assets:
+        rounds += 1
+    return rounds
+
+
 @bench_app.command("assets")
 def bench_assets(
     assets: Annotated[int, typer.Option("--assets", help="Objects to build.")] = 16,
     servers: Annotated[int, typer.Option("--servers", help="Local stand-in Hunyuan3D servers.")] = 4,
     delay: Annotated[float, typer.Option("--delay", help="Seconds each server takes per asset.")] = 2.0,
     poll: Annotated[float, typer.Option("--poll", help="Seconds between status polls.")] = 0.1,
+    fault: Annotated[
+        str, typer.Option("--fault", help="What the first server does: none | transient | permanent.")
+    ] = "transient",
     json_output: Annotated[bool, typer.Option("--json", help="Print JSON (the only output format).")] = True,
 ) -> None:
     """Wall time of the asset stage over local servers (one job each at a time) against the ideal."""
@@ -45,10 +74,17 @@ def bench_assets(
     from scenewright.folder import SceneFolder
     from scenewright.scene import Scene, SceneObject, Vec3
 
+    from scenewright.errors import InputError
+
+    if fault not in FAULTS:
+        raise InputError(f"--fault {fault!r} is not one of: {', '.join(FAULTS)}")
+    if servers < 2 and fault == "permanent":
+        raise InputError("--fault permanent needs --servers 2 or more (one must stay healthy)")
     glb = _box_glb()
-    started = [StandInServer(model=lambda image: glb, delay=delay).start() for _ in range(servers)]
+    faults = [FAULTS[fault]] + [{}] * (servers - 1)
+    started = [StandInServer(model=lambda image: glb, delay=delay, **f).start() for f in faults]
     try:
-        backend = Hunyuan3D([s.url for s in started], concurrency=1, poll_interval=poll)
+        backend = Hunyuan3D([s.url for s in started], concurrency=1, poll_interval=poll, max_failures=MAX_FAILURES)
         with tempfile.TemporaryDirectory(prefix="scenewright-bench-assets-") as tmp:
             folder = SceneFolder(Path(tmp))
             folder.object_images.mkdir(parents=True)
@@ -62,20 +98,25 @@ def bench_assets(
             start = time.perf_counter()
             generate_assets(scene, folder, backend, RequestCache(None))
             wall = time.perf_counter() - start
+            record = [e for e in scene.provenance if e.stage == "assets"][-1].data
         backend.close()
     finally:
         for server in started:
             server.stop()
-    ideal = -(-assets // servers) * delay
+    failed = len(record.get("failed_attempts", []))
+    ideal = ideal_rounds(assets, servers, failed, permanent=fault == "permanent") * delay
     result = {
         "assets": assets,
         "servers": servers,
+        "fault": fault,
         "seconds_per_asset": delay,
         "poll_seconds": poll,
+        "failed_attempts": failed,
+        "out_of_rotation": sorted(record.get("out_of_rotation", {})),
         "ideal_seconds": round(ideal, 3),
         "wall_seconds": round(wall, 3),
         "ratio_to_ideal": round(wall / ideal, 3),
-        "target_ratio": 1.25,
+        "target_ratio": 1.15,
         "jobs_per_server": [s.counts["send"] for s in started],
     }
     typer.echo(json.dumps(result))
