@@ -178,11 +178,26 @@ def test_bench_assets_prints_one_json_object(capsys):
 
     from scenewright.cli import main
 
-    assert main(["bench", "assets", "--assets", "4", "--servers", "2", "--delay", "0.05", "--poll", "0.01"]) == 0
+    args = ["bench", "assets", "--assets", "4", "--servers", "2", "--delay", "0.05", "--poll", "0.01"]
+    assert main([*args, "--fault", "none"]) == 0
     result = json.loads(capsys.readouterr().out)
     assert result["assets"] == 4 and result["ideal_seconds"] == pytest.approx(0.1)
     assert result["jobs_per_server"] == [2, 2]
     assert result["wall_seconds"] > 0
+    assert main([*args, "--fault", "transient"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    # the flaky server loses one round to its failed job: 3 rounds of 0.05 s hold the 4 assets
+    assert result["failed_attempts"] == 1 and result["ideal_seconds"] == pytest.approx(0.15)
+    assert sum(result["jobs_per_server"]) == 5
+
+
+def test_ideal_rounds_count_the_capacity_left_after_failures():
+    from scenewright.cli.assets import ideal_rounds
+
+    assert ideal_rounds(16, 4, 0, permanent=False) == 4
+    assert ideal_rounds(16, 4, 1, permanent=False) == 5
+    assert ideal_rounds(16, 4, 3, permanent=True) == 6
+    assert ideal_rounds(12, 4, 1, permanent=False) == 4
 
 
 def test_a_status_answer_trickled_a_byte_at_a_time_times_out_after_the_deadline():
