@@ -123,6 +123,8 @@ REGISTRY: dict[str, dict[str, str]] = {
     "meshes": {
         "procedural": "scenewright.procedural.meshes:ProceduralMeshes",
         "hunyuan3d": "scenewright.backends.hunyuan3d:Hunyuan3D",
+        "gradio": "scenewright.backends.gradio:Gradio",
+        "meshy": "scenewright.backends.meshy:Meshy",
         "library": "scenewright.assets.library:AssetLibrary",
     },
 }

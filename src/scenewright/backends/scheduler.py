@@ -259,6 +259,7 @@ class ServerPool:
     def _next_reprobe(self) -> float | None:
         """Seconds until the next retired server is due for a health check (None: never)."""
         due = [s.retired_at + self.reprobe_interval for s in self.servers if s.retired is not None and not s.probing]
+        due = [t for t in due if t != float("inf")]
         return max(0.01, min(due) - time.monotonic()) if due else None
 
     def _reprobe_due(self) -> None:
