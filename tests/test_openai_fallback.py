@@ -234,3 +234,17 @@ def test_extract_json_finds_the_object(reply):
 
 def test_extract_json_leaves_a_reply_without_json_as_it_is():
     assert extract_json("  no json here ") == "no json here"
+
+
+def test_backends_check_prints_a_table(openai_server, workdir, capsys):
+    openai_server.responders[CHAT] = lambda request: chat_reply('{"colour": "red"}')
+    openai_server.models = ["test-model"]
+    assert main(["backends", "--check", "--base-url", openai_server.url, "--model", "test-model"]) == 0
+    out = capsys.readouterr().out
+    assert "json_schema" in out and "supported" in out and "model listed" in out
+
+
+def test_backends_lists_the_new_mesh_backends(capsys):
+    assert main(["backends"]) == 0
+    out = capsys.readouterr().out
+    assert "gradio" in out and "meshy" in out
