@@ -211,3 +211,14 @@ def test_a_status_answer_without_end_is_cut_at_max_download_bytes():
     with servers({"fault": "flood", "fault_jobs": 1}) as started:
         with pytest.raises(BackendError, match=r"larger than max_download_bytes \(4,194,304 bytes\)"):
             backend(started, timeout=30.0, max_failures=1, max_download_bytes=4 << 20).generate(requests(1))
+
+
+def test_a_job_turned_away_at_once_is_built_elsewhere_while_that_server_takes_the_next():
+    with servers({"fault": "reject", "fault_jobs": 1, "delay": 0.2}, {"delay": 0.2}) as (rejecting, good):
+        reqs = requests(4)
+        h = backend([rejecting, good])
+        assert_good(h.generate(reqs), reqs)
+        record = h.provenance([r.id for r in reqs])
+        (failed,) = record["failed_attempts"]
+        assert failed["server"] == rejecting.url and "HTTP 500" in failed["error"]
+        assert rejecting.counts["send"] >= 2  # it kept taking work after turning one away

@@ -1,10 +1,12 @@
 """``scenewright bench assets``: how well the asset stage spreads jobs over several mesh servers.
 
-One of the servers can fail on purpose: ``transient`` fails its first job (after the job's
-full time, as an out-of-memory error does), ``permanent`` fails every job until it leaves the
-rotation. The ideal wall time is that of the remaining capacity: the fewest rounds of
-``delay`` seconds in which the healthy servers, plus the flaky one after its failed jobs,
-have room for every asset.
+One of the servers can fail on purpose: ``transient`` fails its first job after the job's
+full time (an error status at the end), ``reject`` turns its first job away at once (HTTP
+500 from ``/send``), ``permanent`` fails every job until it leaves the rotation. The ideal
+wall time is that of the remaining capacity: the fewest rounds of ``delay`` seconds in which
+the healthy servers, plus the flaky one after the rounds its failed jobs took, have room for
+every asset. A rejected job takes no round, so there the ideal is that of no fault at all:
+any time the flaky server sits idle after turning a job away shows in the ratio.
 """
 
 from __future__ import annotations
@@ -40,17 +42,18 @@ def _png(index: int) -> bytes:
 FAULTS: dict[str, dict] = {
     "none": {},
     "transient": {"fault": "error", "fault_jobs": 1},
+    "reject": {"fault": "reject", "fault_jobs": 1},
     "permanent": {"fault": "error"},
 }
 MAX_FAILURES = 3
 
 
-def ideal_rounds(assets: int, servers: int, failed: int, *, permanent: bool) -> int:
+def ideal_rounds(assets: int, servers: int, lost: int, *, permanent: bool) -> int:
     """The fewest rounds in which the servers' remaining capacity holds every asset: each
-    healthy server builds one asset a round, the flaky one loses a round per failed job, and a
-    permanently failing one builds nothing."""
+    healthy server builds one asset a round, the flaky one loses ``lost`` rounds to its failed
+    jobs, and a permanently failing one builds nothing."""
     rounds = 1
-    while (servers - 1) * rounds + (0 if permanent else max(0, rounds - failed)) < assets:
+    while (servers - 1) * rounds + (0 if permanent else max(0, rounds - lost)) < assets:
         rounds += 1
     return rounds
 
@@ -62,7 +65,7 @@ def bench_assets(
     delay: Annotated[float, typer.Option("--delay", help="Seconds each server takes per asset.")] = 2.0,
     poll: Annotated[float, typer.Option("--poll", help="Seconds between status polls.")] = 0.1,
     fault: Annotated[
-        str, typer.Option("--fault", help="What the first server does: none | transient | permanent.")
+        str, typer.Option("--fault", help="What the first server does: none | transient | reject | permanent.")
     ] = "transient",
     json_output: Annotated[bool, typer.Option("--json", help="Print JSON (the only output format).")] = True,
 ) -> None:
@@ -104,7 +107,8 @@ def bench_assets(
         for server in started:
             server.stop()
     failed = len(record.get("failed_attempts", []))
-    ideal = ideal_rounds(assets, servers, failed, permanent=fault == "permanent") * delay
+    lost = 0 if fault == "reject" else failed  # rounds the failed jobs kept the flaky server busy
+    ideal = ideal_rounds(assets, servers, lost, permanent=fault == "permanent") * delay
     result = {
         "assets": assets,
         "servers": servers,
