@@ -7,6 +7,12 @@ before the task fails with a :class:`BackendError` that names it and the last er
 Transport faults (429, 5xx, timeouts, dropped connections) are the SDK's job: it retries them
 with exponential backoff, honouring ``Retry-After``, ``settings.max_retries`` times.
 
+Servers differ in how they can be held to a schema, so structured answers are asked in the
+best response format the server supports, found on the first request and remembered
+(:mod:`scenewright.backends.formats`; docs/remote.md lists what known servers need). A
+request the server refuses for its format (HTTP 400) is asked again one level down and does
+not count as an attempt.
+
 Accepted replies are cached by a hash of the request, so a resumed or repeated run never asks
 the same question twice.
 """
