@@ -248,3 +248,12 @@ def test_backends_lists_the_new_mesh_backends(capsys):
     assert main(["backends"]) == 0
     out = capsys.readouterr().out
     assert "gradio" in out and "meshy" in out
+
+
+def test_json_cut_short_is_retried_without_giving_up_the_schema(openai_server, remote_settings):
+    from scenewright.backends.fake_openai import object_item
+
+    openai_server.script(CHAT, chat_reply('{"objects": [{"id": "table_1", "na'),
+                         chat_reply({"objects": [object_item("table_1", "table")]}))
+    OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None)
+    assert [response_format(r) for r in openai_server.seen(CHAT)] == ["json_schema", "json_schema"]

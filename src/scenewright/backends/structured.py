@@ -341,7 +341,7 @@ class ChatClient(RemoteModel):
                     result = _checked(parse, content)
                 except InvalidAnswer as exc:
                     error = str(exc)
-                    if answer is not None and _format_ignored(level, exc):
+                    if answer is not None and _format_ignored(level, exc, content):
                         ignored = level
                         level = LEVELS[LEVELS.index(level) + 1]
                         refused[ignored] = f"accepted but ignored ({error})"
@@ -407,12 +407,14 @@ def _format_refused(exc: Exception) -> bool:
     return isinstance(exc, openai.APIStatusError) and exc.status_code in (400, 422, 501)
 
 
-def _format_ignored(level: str, exc: InvalidAnswer) -> bool:
+def _format_ignored(level: str, exc: InvalidAnswer, content: str) -> bool:
     """Whether a bad answer proves the server ignored ``level``: a server that honours
-    json_schema answers schema-shaped JSON, one that honours json_object answers JSON."""
+    json_schema answers schema-shaped JSON, one that honours json_object answers JSON. JSON
+    that starts right but breaks off (an answer cut at the token limit) proves nothing."""
+    cut_short = isinstance(exc, NotJSON) and content.lstrip().startswith("{")
     if level == "json_schema":
-        return isinstance(exc, (NotJSON, OffSchema))
-    return level == "json_object" and isinstance(exc, NotJSON)
+        return isinstance(exc, OffSchema) or (isinstance(exc, NotJSON) and not cut_short)
+    return level == "json_object" and isinstance(exc, NotJSON) and not cut_short
 
 
 def _refused_note(refused: dict[str, str]) -> str:
