@@ -67,9 +67,10 @@ class Meshy(ServerPool):
     ):
         if httpx is None:
             raise MissingExtra("the Meshy mesh backend", "remote", "httpx")
-        # One "server"; a failure there fails the job (no other server to move to), and a
-        # permanently failing API is not re-asked for every asset.
-        super().__init__([base_url], concurrency=concurrency, max_failures=3, reprobe_interval=float("inf"))
+        # One "server"; a failure there fails the job (no other server to move to), and after
+        # three in a row (a spent quota, an outage) the API rests for a minute before the
+        # next task is sent, instead of being asked for every asset.
+        super().__init__([base_url], concurrency=concurrency, max_failures=3, reprobe_interval=60.0)
         self.key = key
         self.params = {**DEFAULT_PARAMS, **(params or {})}
         self.tasks = cache or RequestCache(None)
