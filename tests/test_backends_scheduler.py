@@ -39,40 +39,49 @@ class Scripted(ServerPool):
         return self.health(server.url), None
 
 
+def wait_for(condition, seconds: float = 10.0) -> None:
+    deadline = time.monotonic() + seconds
+    while not condition():
+        assert time.monotonic() < deadline, "timed out"
+        time.sleep(0.005)
+
+
 def test_a_server_whose_job_failed_takes_the_next_job_while_the_failed_one_waits_for_another():
-    release_b = threading.Event()
+    release_b, b_started = threading.Event(), threading.Event()
     ran_on_a: list[str] = []
+    pool: Scripted
 
     def behave(url, job):
         if url == "a":
             ran_on_a.append(job)
             if job == "job_1":
-                time.sleep(0.3)  # the other jobs are queued by now: job_2 on "b", job_3 waiting
+                # fail only once another job runs on "b" and a third one waits in line
+                wait_for(lambda: b_started.is_set() and len(pool._waiting) == 1)
                 raise JobFailed("out of memory")
             return b"glb-" + job.encode()
-        assert release_b.wait(5)
+        b_started.set()
+        assert release_b.wait(10)
         return b"glb-" + job.encode()
 
     pool = Scripted(["a", "b"], behave)
     results: dict[str, bytes] = {}
     threads = [threading.Thread(target=lambda i=i: results.update(pool.generate([request(i)]))) for i in (1, 2, 3)]
     threads[0].start()
-    time.sleep(0.05)  # job_1 is first in line: it goes to "a" (both idle, "a" sorts first)
+    wait_for(lambda: ran_on_a == ["job_1"])  # job_1 runs on "a"
     for t in threads[1:]:
         t.start()
-    deadline = time.monotonic() + 5
-    while "job_3" not in ran_on_a and time.monotonic() < deadline:
-        time.sleep(0.01)
-    # "b" is still busy with job_2, yet "a" already works on job_3: it did not sit idle.
-    assert ran_on_a[:2] == ["job_1", "job_3"] and not release_b.is_set()
+    wait_for(lambda: len(ran_on_a) == 2)
+    # "b" is still busy, yet "a" already works on the job that was waiting: it did not sit idle,
+    # and the failed job_1 did not take that place on "a" again.
+    assert ran_on_a[1] != "job_1" and not release_b.is_set()
     release_b.set()
     for t in threads:
-        t.join(5)
+        t.join(10)
     assert set(results) == {"job_1", "job_2", "job_3"}
     record = pool.provenance(["job_1", "job_2", "job_3"])
-    assert record["built_by"] == {"job_1": "b", "job_2": "b", "job_3": "a"}
+    assert record["built_by"]["job_1"] == "b" and record["built_by"][ran_on_a[1]] == "a"
     assert record["failed_attempts"] == [
-        {"object": "job_1", "server": "a", "seconds": pytest.approx(0, abs=1), "error": "out of memory"}
+        {"object": "job_1", "server": "a", "seconds": pytest.approx(0, abs=10), "error": "out of memory"}
     ]
     assert "out_of_rotation" not in record
 
