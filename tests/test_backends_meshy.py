@@ -132,7 +132,7 @@ def test_submit_poll_download_one_paid_task_per_asset(settings):
 
 
 def test_a_killed_run_resumes_its_paid_tasks_instead_of_submitting_again(settings):
-    with MeshyStandIn(box_glb(), delay=0.5) as api:
+    with MeshyStandIn(box_glb(), delay=2.0) as api:  # still building when the run is cancelled
         first = create_backend("meshes", f"meshy:{api.url}", settings)
         outcome: dict = {}
         thread = threading.Thread(target=lambda: outcome.setdefault("r", _try(first.generate, requests(1))))

@@ -118,7 +118,7 @@ def test_cancel_ends_waiting_jobs_without_sending_them():
 
     def behave(url, job):
         started.set()
-        time.sleep(0.2)
+        time.sleep(1.0)  # long enough for the cancel to come while it runs, even on a loaded machine
         return b"glb"
 
     pool = Scripted(["a"], behave)
