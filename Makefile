@@ -50,7 +50,9 @@ bench: install
 	$(BIN)/scenewright bench pipeline --json | tee bench-results/pipeline.json
 	$(BIN)/scenewright bench analysis --objects 15 --latency 1 --concurrency 4 --json | tee bench-results/analysis.json
 	$(BIN)/scenewright bench eval --out bench-results/eval | tee bench-results/eval.json
-	$(BIN)/scenewright bench assets --assets 16 --servers 4 --delay 2 --json | tee bench-results/assets.json
+	$(BIN)/scenewright bench assets --assets 16 --servers 4 --delay 2 --fault transient --json | tee bench-results/assets.json
+	$(BIN)/scenewright bench assets --assets 16 --servers 4 --delay 2 --fault reject --json | tee bench-results/assets-reject.json
+	$(BIN)/scenewright bench assets --assets 16 --servers 4 --delay 2 --fault permanent --json | tee bench-results/assets-permanent.json
 	$(BIN)/scenewright bench edits --json | tee bench-results/edits.json
 	$(BIN)/scenewright bench parse --json | tee bench-results/parse.json
 	for b in 1 2 3; do $(BIN)/scenewright bench pipeline --prompts benchmarks/prompts-fresh-$$b --json > bench-results/fresh-$$b.json; done

@@ -75,7 +75,7 @@ def test_a_failing_server_is_bypassed_and_taken_out_of_rotation(fault, reason, c
         assert retired[good.url] is None
         assert retired[bad.url] is not None and reason in retired[bad.url]
         assert "taken out of rotation" in caplog.text
-        assert h.concurrency == 1
+        assert h.slots == 1
 
 
 def test_a_server_that_errors_once_stays_in_rotation():
@@ -161,7 +161,7 @@ def test_from_spec_reads_urls_concurrency_and_parameters():
     settings.extra["hunyuan3d"] = {"texture": False, "seed": 7, "poll_interval": 0.5, "health_interval": 9}
     h = create_backend("meshes", settings.meshes, settings)
     assert [s.url for s in h.servers] == ["http://a:8081", "http://b:8081"]
-    assert h.concurrency == 4 and h.poll_interval == 0.5 and h.health_interval == 9
+    assert h.slots == 4 and h.poll_interval == 0.5 and h.health_interval == 9
     assert h.params == {**DEFAULT_PARAMS, "texture": False, "seed": 7}
     with pytest.raises(InputError, match="not an http"):
         Hunyuan3D.from_spec("gpu1:8081", Settings())
@@ -178,11 +178,26 @@ def test_bench_assets_prints_one_json_object(capsys):
 
     from scenewright.cli import main
 
-    assert main(["bench", "assets", "--assets", "4", "--servers", "2", "--delay", "0.05", "--poll", "0.01"]) == 0
+    args = ["bench", "assets", "--assets", "4", "--servers", "2", "--delay", "0.05", "--poll", "0.01"]
+    assert main([*args, "--fault", "none"]) == 0
     result = json.loads(capsys.readouterr().out)
     assert result["assets"] == 4 and result["ideal_seconds"] == pytest.approx(0.1)
     assert result["jobs_per_server"] == [2, 2]
     assert result["wall_seconds"] > 0
+    assert main([*args, "--fault", "transient"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    # the flaky server loses one round to its failed job: 3 rounds of 0.05 s hold the 4 assets
+    assert result["failed_attempts"] == 1 and result["ideal_seconds"] == pytest.approx(0.15)
+    assert sum(result["jobs_per_server"]) == 5
+
+
+def test_ideal_rounds_count_the_capacity_left_after_failures():
+    from scenewright.bench.assets import ideal_rounds
+
+    assert ideal_rounds(16, 4, 0, permanent=False) == 4
+    assert ideal_rounds(16, 4, 1, permanent=False) == 5
+    assert ideal_rounds(16, 4, 3, permanent=True) == 6
+    assert ideal_rounds(12, 4, 1, permanent=False) == 4
 
 
 def test_a_status_answer_trickled_a_byte_at_a_time_times_out_after_the_deadline():
@@ -196,3 +211,14 @@ def test_a_status_answer_without_end_is_cut_at_max_download_bytes():
     with servers({"fault": "flood", "fault_jobs": 1}) as started:
         with pytest.raises(BackendError, match=r"larger than max_download_bytes \(4,194,304 bytes\)"):
             backend(started, timeout=30.0, max_failures=1, max_download_bytes=4 << 20).generate(requests(1))
+
+
+def test_a_job_turned_away_at_once_is_built_elsewhere_while_that_server_takes_the_next():
+    with servers({"fault": "reject", "fault_jobs": 1, "delay": 0.2}, {"delay": 0.2}) as (rejecting, good):
+        reqs = requests(4)
+        h = backend([rejecting, good])
+        assert_good(h.generate(reqs), reqs)
+        record = h.provenance([r.id for r in reqs])
+        (failed,) = record["failed_attempts"]
+        assert failed["server"] == rejecting.url and "HTTP 500" in failed["error"]
+        assert rejecting.counts["send"] >= 2  # it kept taking work after turning one away

@@ -109,7 +109,7 @@ def test_schema_invalid_answers_exhaust_the_budget_with_a_clear_error(openai_ser
     with pytest.raises(BackendError) as err:
         OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None).value
     message = str(err.value)
-    assert "scene_objects (test-model)" in message and "3 attempts" in message
+    assert "scene_objects (test-model at http://127.0.0.1" in message and "3 attempts" in message
     assert "objects.0.position" in message and "Field required" in message
     assert len(openai_server.seen(CHAT)) == 3
 
@@ -144,7 +144,7 @@ def test_rate_limit_then_success(openai_server, remote_settings):
 
 def test_server_errors_past_the_retry_budget(openai_server, remote_settings):
     openai_server.script(CHAT, *[error_reply(500, "the GPU caught fire", headers=FAST)] * 3)
-    expected = r"scene_objects \(test-model\): server answered HTTP 500: the GPU caught fire"
+    expected = r"scene_objects \(test-model at http://127.0.0.1:\d+/v1\): server answered HTTP 500: the GPU caught fire"
     with pytest.raises(BackendError, match=expected):
         OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None).value
     assert len(openai_server.seen(CHAT)) == 3
@@ -387,7 +387,7 @@ def test_a_reply_trickled_a_byte_at_a_time_stops_at_the_total_deadline(openai_se
     remote_settings.timeout, remote_settings.max_retries = 1.0, 0
     body = chat_reply({"objects": [object_item("table_1", "table")]}).body
     openai_server.script(CHAT, Reply(body, drip=0.1))
-    with pytest.raises(BackendError, match=r"scene_objects \(test-model\): timed out after 1 s"):
+    with pytest.raises(BackendError, match=r"scene_objects \(test-model at [^)]*\): timed out after 1 s"):
         OpenAIChatVLM("test-model", remote_settings).describe_objects("a table", "realistic", None).value
 
 

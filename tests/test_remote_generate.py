@@ -159,7 +159,7 @@ def test_a_refusing_model_fails_generate_with_a_clear_message(server, workdir, c
     server.responders[CHAT] = lambda request: chat_reply(None, refusal="I can't help with that.")
     assert main(["generate", TEXT, "--out", "scene", *_flags(server)]) == 1
     err = " ".join(capsys.readouterr().err.split())  # rich wraps long lines
-    assert "scene_objects (test-model)" in err and "the model refused" in err
+    assert "scene_objects (test-model at http://127.0.0.1" in err and "the model refused" in err
     assert len(server.seen(CHAT)) == 2  # one retry (max_retries = 1 in scenewright.toml)
 
 

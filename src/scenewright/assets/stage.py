@@ -4,8 +4,11 @@ Asset generation dominates a run (80 % of an hour in the paper), so the stage ne
 twice: an object whose asset file is on disk is skipped, the backend's raw answer is cached
 by a hash of the request, and the document is saved as each asset lands, so a killed run
 resumes with only the unfinished objects. Requests go to the backend one per call, as many
-at a time as the backend says it can serve (its ``concurrency``, 1 when it says nothing),
-which lets each finished asset be stored at once instead of waiting for the whole batch.
+at a time as the backend asks for (its ``concurrency``: the jobs it runs at once, or all of
+them when it queues jobs itself), which lets each
+finished asset be stored at once instead of waiting for the whole batch. A backend with a
+``provenance(ids)`` method says which server built which asset and which attempts failed;
+that goes into the scene's record with the stage's own summary.
 """
 
 from __future__ import annotations
@@ -159,8 +162,10 @@ def generate_assets(
         pool.shutdown(wait=False, cancel_futures=True)
 
     built = [obj.id for obj in todo if obj.id not in failures]
+    servers = getattr(meshes, "provenance", None)
     scene.record("assets", f"built {len(built)} assets with {meshes.name}", objects=built,
-                 from_cache=sorted(set(raw) & set(built)))
+                 from_cache=sorted(set(raw) & set(built)),
+                 **(servers([r.id for r in missing]) if callable(servers) else {}))
     folder.save(scene)
     if failures:
         details = "; ".join(f"{oid}: {why}" for oid, why in failures.items())

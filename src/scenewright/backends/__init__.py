@@ -41,6 +41,8 @@ REGISTRY: dict[str, dict[str, str]] = {
     "meshes": {
         "procedural": "scenewright.backends.procedural_meshes:ProceduralMeshes",
         "hunyuan3d": "scenewright.backends.hunyuan3d:Hunyuan3D",
+        "gradio": "scenewright.backends.gradio:Gradio",
+        "meshy": "scenewright.backends.meshy:Meshy",
         "library": "scenewright.backends.library:AssetLibrary",
     },
 }

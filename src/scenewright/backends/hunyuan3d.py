@@ -13,10 +13,10 @@ it keeps jobs as files it wipes when it starts, answering ``processing`` for a u
 never heard of; so while a job runs the client re-reads ``/health`` now and then, and a new
 ``worker_id`` means the server restarted and the job is gone.
 
-Several servers share one slot pool: each has ``concurrency`` slots, every job waits for a
-free slot on a server it has not tried yet, and a job that fails on one server moves to
-another. A server that fails ``max_failures`` times in a row leaves the rotation; it is
-logged and named in the error of every job that could not be built.
+Several servers share one job queue (:mod:`scenewright.backends.scheduler`): each has
+``concurrency`` slots, a free slot takes the first waiting job that has not failed there, and
+a failed job goes back to the queue for the next free server. A server that fails
+``max_failures`` times in a row leaves the rotation until a later ``/health`` says it is back.
 """
 
 from __future__ import annotations
@@ -24,14 +24,12 @@ from __future__ import annotations
 import base64
 import binascii
 import logging
-import threading
 import time
 from collections.abc import Callable, Sequence
-from concurrent.futures import ThreadPoolExecutor
-from dataclasses import dataclass
 from typing import Any
 
 from scenewright.assets.normalise import check_glb
+from scenewright.backends.scheduler import JobFailed, Server, ServerPool, server_urls
 from scenewright.core.protocols import MeshRequest
 from scenewright.errors import BackendError, InputError, MissingExtra
 from scenewright.settings import Settings
@@ -59,30 +57,11 @@ DEFAULT_PARAMS: dict[str, Any] = {
 RUNNING = ("processing", "texturing")
 
 
-class JobFailed(Exception):
-    """One attempt of one job on one server failed; the job may go to another server."""
-
-
-@dataclass
-class Server:
-    url: str
-    slots: int
-    busy: int = 0
-    #: Failures in a row; a success resets it.
-    failures: int = 0
-    #: Why the server left the rotation, or None while it is in it.
-    retired: str | None = None
-    #: Whether it has /send and /status (None until the first job tells).
-    jobs_api: bool | None = None
-    healthy: bool = False
-    #: The ``worker_id`` /health gave; a different one later means the server restarted.
-    worker_id: str | None = None
-
-
-class Hunyuan3D:
+class Hunyuan3D(ServerPool):
     """MeshGenerator over one or more Hunyuan3D-2.1 API servers."""
 
     name = "hunyuan3d"
+    label = "Hunyuan3D"
 
     def __init__(
         self,
@@ -94,6 +73,7 @@ class Hunyuan3D:
         job_timeout: float = 1800.0,
         poll_interval: float = 2.0,
         health_interval: float = 60.0,
+        reprobe_interval: float = 60.0,
         max_failures: int = 3,
         max_download_bytes: int = Settings.max_download_bytes,
     ):
@@ -101,22 +81,16 @@ class Hunyuan3D:
             raise MissingExtra("the Hunyuan3D mesh backend", "remote", "httpx")
         if not urls:
             raise InputError("hunyuan3d needs at least one server URL, e.g. hunyuan3d:http://gpu1:8081")
-        if concurrency < 1:
-            raise InputError(f"mesh concurrency must be at least 1 job per server, got {concurrency}")
         unknown = set(params or {}) - set(DEFAULT_PARAMS)
         if unknown:
             raise InputError(
                 f"unknown hunyuan3d parameters {sorted(unknown)}; valid ones: {', '.join(DEFAULT_PARAMS)}"
             )
-        self.servers = [Server(url=u.rstrip("/"), slots=concurrency) for u in urls]
+        super().__init__(urls, concurrency=concurrency, max_failures=max_failures, reprobe_interval=reprobe_interval)
         self.params = {**DEFAULT_PARAMS, **(params or {})}
         self.job_timeout = job_timeout
         self.poll_interval = poll_interval
         self.health_interval = health_interval
-        self.max_failures = max_failures
-        self._cond = threading.Condition()
-        self._health_lock = threading.Lock()
-        self._cancelled = threading.Event()
         self._client = limited_client(
             timeout, max_download_bytes, limits=httpx.Limits(max_connections=len(urls) * concurrency * 2 + 4)
         )
@@ -124,41 +98,19 @@ class Hunyuan3D:
     @classmethod
     def from_spec(cls, argument: str, settings: Settings) -> Hunyuan3D:
         """``http://a:8081,http://b:8081``; tuning from ``settings.extra["hunyuan3d"]``."""
-        urls = [u.strip() for u in argument.split(",") if u.strip()]
-        for url in urls:
-            if not url.startswith(("http://", "https://")):
-                raise InputError(
-                    f"hunyuan3d server {url!r} is not an http(s) URL; "
-                    "write --meshes hunyuan3d:http://gpu1:8081,http://gpu2:8081"
-                )
+        urls = server_urls(argument, "hunyuan3d", "--meshes hunyuan3d:http://gpu1:8081,http://gpu2:8081")
         extra = dict(settings.extra.get("hunyuan3d", {}) or {})
-        knobs = ("job_timeout", "poll_interval", "health_interval", "max_failures")
+        knobs = ("job_timeout", "poll_interval", "health_interval", "reprobe_interval", "max_failures")
         tuning = {k: extra.pop(k) for k in knobs if k in extra}
         return cls(
             urls, concurrency=settings.mesh_concurrency, params=extra, timeout=settings.timeout,
             max_download_bytes=settings.max_download_bytes, **tuning,
         )
 
-    @property
-    def concurrency(self) -> int:
-        """Jobs the servers in rotation can run at once (how many requests to send in parallel)."""
-        return sum(s.slots for s in self.servers if s.retired is None) or 1
-
     def close(self) -> None:
         self._client.close()
 
-    def cancel(self) -> None:
-        """Stop for good (the run was interrupted): no job is sent any more, and running ones are
-        no longer polled, so their threads end within a poll interval instead of ``job_timeout``."""
-        self._cancelled.set()
-        with self._cond:
-            self._cond.notify_all()
-
-    # -- the MeshGenerator protocol -------------------------------------------------------
-
-    def generate(
-        self, requests: Sequence[MeshRequest], progress: Callable[[str], None] | None = None
-    ) -> dict[str, bytes]:
+    def _check_requests(self, requests: Sequence[MeshRequest]) -> None:
         imageless = [r.id for r in requests if r.image is None]
         if imageless:
             raise BackendError(
@@ -166,91 +118,6 @@ class Hunyuan3D:
                 f"{', '.join(imageless)}. Configure an image backend (e.g. --images openai:gpt-image-1) "
                 "or use --meshes procedural"
             )
-        self._check_health()
-        results: dict[str, bytes] = {}
-        errors: dict[str, str] = {}
-        with ThreadPoolExecutor(max_workers=max(1, len(requests)), thread_name_prefix="hunyuan3d") as pool:
-            for request, outcome in zip(requests, pool.map(lambda r: self._build(r, progress), requests)):
-                if isinstance(outcome, bytes):
-                    results[request.id] = outcome
-                else:
-                    errors[request.id] = outcome
-        if errors:
-            details = "; ".join(f"{oid}: {why}" for oid, why in errors.items())
-            raise BackendError(f"Hunyuan3D could not build {', '.join(errors)} ({details}){self._retired_note()}")
-        return results
-
-    # -- scheduling -----------------------------------------------------------------------
-
-    def _build(self, request: MeshRequest, progress: Callable[[str], None] | None) -> bytes | str:
-        """The GLB, or why no server could build it (every server in rotation tried once)."""
-        tried: dict[str, str] = {}
-        while (server := self._acquire(tried)) is not None:
-            failure: str | None = "interrupted by an unexpected error"
-            try:
-                glb = self._run(server, request, progress)
-                failure = None
-                return glb
-            except JobFailed as exc:
-                failure = tried[server.url] = str(exc)
-                log.warning("hunyuan3d %s failed %s: %s", server.url, request.id, exc)
-            finally:
-                self._release(server, failure)
-        if not tried:
-            return "no Hunyuan3D server is in rotation"
-        return "; ".join(f"{url}: {why}" for url, why in tried.items())
-
-    def _acquire(self, tried: dict[str, str]) -> Server | None:
-        """A free slot on a server in rotation that this job has not tried; waits for one."""
-        with self._cond:
-            while True:
-                if self._cancelled.is_set():
-                    return None
-                untried = [s for s in self.servers if s.retired is None and s.url not in tried]
-                if not untried:
-                    return None
-                free = [s for s in untried if s.busy < s.slots]
-                if free:
-                    server = min(free, key=lambda s: (s.busy / s.slots, s.failures))
-                    server.busy += 1
-                    return server
-                self._cond.wait()
-
-    def _release(self, server: Server, failure: str | None) -> None:
-        with self._cond:
-            server.busy -= 1
-            if failure is None:
-                server.failures = 0
-            else:
-                server.failures += 1
-                if server.failures >= self.max_failures and server.retired is None:
-                    self._retire(server, f"{server.failures} failures in a row, last: {failure}")
-            self._cond.notify_all()
-
-    def _retire(self, server: Server, reason: str) -> None:
-        server.retired = reason
-        log.warning("hunyuan3d server %s taken out of rotation: %s", server.url, reason)
-
-    def _retired_note(self) -> str:
-        out = [f"{s.url} ({s.retired})" for s in self.servers if s.retired is not None]
-        return f"; servers out of rotation: {'; '.join(out)}" if out else ""
-
-    def _check_health(self) -> None:
-        """Ask each server not yet seen for /health once; one that does not answer leaves the rotation."""
-        with self._health_lock:
-            for server in self.servers:
-                if server.healthy or server.retired is not None:
-                    continue
-                problem, worker_id = self._health(server)
-                with self._cond:
-                    if problem is None:
-                        server.healthy = True
-                        server.worker_id = worker_id
-                    else:
-                        self._retire(server, f"health check failed: {problem}")
-                    self._cond.notify_all()
-            if all(s.retired is not None for s in self.servers):
-                raise BackendError(f"no Hunyuan3D server is usable{self._retired_note()}")
 
     def _health(self, server: Server) -> tuple[str | None, str | None]:
         """(what is wrong with the server or None, its worker id)."""

@@ -155,7 +155,9 @@ class OpenAIChatVLM:
 
     @classmethod
     def from_spec(cls, argument: str, settings: Settings) -> OpenAIChatVLM:
-        return cls(model_name(argument, DEFAULT_MODEL), settings)
+        vlm = cls(model_name(argument, DEFAULT_MODEL), settings)
+        vlm.chat.preflight()  # before the run pays for anything
+        return vlm
 
     # --- repairs -------------------------------------------------------------------------
 

@@ -37,7 +37,9 @@ class OpenAIImages(RemoteModel):
 
     @classmethod
     def from_spec(cls, argument: str, settings: Settings) -> OpenAIImages:
-        return cls(model_name(argument, DEFAULT_MODEL), settings)
+        images = cls(model_name(argument, DEFAULT_MODEL), settings)
+        images.preflight()  # before the run pays for anything
+        return images
 
     def reference_image(self, text: str, style: str) -> bytes:
         return self._draw("reference image", prompts.reference_image(text, style), None, size=REFERENCE_SIZE)

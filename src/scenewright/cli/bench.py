@@ -112,12 +112,15 @@ def bench_assets(
     servers: Annotated[int, typer.Option("--servers", help="Local stand-in Hunyuan3D servers.")] = 4,
     delay: Annotated[float, typer.Option("--delay", help="Seconds each server takes per asset.")] = 2.0,
     poll: Annotated[float, typer.Option("--poll", help="Seconds between status polls.")] = 0.1,
+    fault: Annotated[
+        str, typer.Option("--fault", help="What the first server does: none | transient | reject | permanent.")
+    ] = "transient",
     as_json: JsonOption = True,
 ) -> None:
     """Wall time of the asset stage over local servers (one job each at a time) against the ideal."""
     from scenewright.bench.assets import run_assets_bench
 
-    emit(run_assets_bench(assets, servers, delay, poll), as_json)
+    emit(run_assets_bench(assets, servers, delay, poll, fault), as_json)
 
 
 @bench_app.command("edits")

@@ -21,7 +21,10 @@ VlmOption = Annotated[str | None, typer.Option("--vlm", help="Vision-language ba
 ImagesOption = Annotated[str | None, typer.Option("--images", help="Image backend: offline | openai:MODEL.")]
 MeshesOption = Annotated[
     str | None,
-    typer.Option("--meshes", help="Mesh backend: procedural | hunyuan3d:URL[,URL...] | library:FOLDER."),
+    typer.Option(
+        "--meshes",
+        help="Mesh backend: procedural | hunyuan3d:URL[,URL...] | gradio:URL[,URL...]#APP | meshy | library:FOLDER.",
+    ),
 ]
 BaseUrlOption = Annotated[str | None, typer.Option("--base-url", help="OpenAI-compatible server URL.")]
 ConfigOption = Annotated[

@@ -115,7 +115,8 @@ class MeshGenerator(Protocol):
     #: What besides the request decides the output (generation settings, a library's
     #: contents, the generators' code); part of the asset cache key, empty when nothing does.
     params: Mapping[str, Any]
-    #: How many requests the backend serves at once; the assets stage runs that many threads.
+    #: How many requests the assets stage hands over at once (one thread each): the jobs the
+    #: backend runs at a time, or all of them when it keeps its own queue of jobs.
     concurrency: int
 
     def generate(

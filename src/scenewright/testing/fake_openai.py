@@ -1,8 +1,8 @@
 """A local stand-in for an OpenAI-compatible server, for protocol and fault tests and for
 ``scenewright bench analysis`` (which is why it ships in the package, not in ``tests/``).
 
-It speaks ``/v1/chat/completions`` (JSON), ``/v1/images/generations`` (JSON) and
-``/v1/images/edits`` (multipart) on 127.0.0.1 in a thread per request, records every request
+It speaks ``/v1/chat/completions`` (JSON), ``/v1/images/generations`` (JSON),
+``/v1/images/edits`` (multipart) and, when given a list, ``GET /v1/models`` on 127.0.0.1 in a thread per request, records every request
 it saw, and answers from scripts: a queue of :class:`Reply` per route, else a responder
 function per route. Replies can be delayed (latency, hung requests), trickle a byte at a time, be any bytes at
 all (not JSON, huge) or be HTTP faults.
@@ -128,6 +128,10 @@ class FakeOpenAI:
             GENERATE: lambda r: image_reply(),
             EDIT: lambda r: image_reply(),
         }
+        #: Model ids ``GET /v1/models`` lists; None answers it 404, as servers without a list do.
+        self.models: list[str] | None = None
+        #: Paths of every GET (kept apart from ``requests``, which are the billable calls).
+        self.gets: list[str] = []
         #: Seconds added to every images request (latency benchmarks).
         self.image_latency = 0.0
         self._lock = threading.Lock()
@@ -171,6 +175,22 @@ class FakeOpenAI:
 
             def log_message(self, *args) -> None:  # keep test output quiet
                 return
+
+            def do_GET(self) -> None:
+                server.gets.append(self.path)
+                if self.path == "/v1/models" and server.models is not None:
+                    body = {"object": "list", "data": [
+                        {"id": m, "object": "model", "created": 0, "owned_by": "local"} for m in server.models
+                    ]}
+                    status = 200
+                else:
+                    body, status = {"error": {"message": f"no route {self.path}", "type": "not_found"}}, 404
+                data = json.dumps(body).encode()
+                self.send_response(status)
+                self.send_header("content-type", "application/json")
+                self.send_header("content-length", str(len(data)))
+                self.end_headers()
+                self.wfile.write(data)
 
             def do_POST(self) -> None:
                 body = self.rfile.read(int(self.headers.get("content-length", 0)))

@@ -5,7 +5,7 @@ It speaks the real server's endpoints (``/health``, ``/send``, ``/status/{uid}``
 can misbehave on purpose the ways real servers do: die in the middle of a job, restart and
 forget its jobs (still answering ``processing`` for them, as the real one does), report an
 ``error`` status, send base64 that does not decode or bytes that are not a GLB, or lack the
-job endpoints altogether; or hold the client with a ``/status`` answer sent one byte at a
+job endpoints altogether, or turn a job away at once (``reject``: HTTP 500 from ``/send``); or hold the client with a ``/status`` answer sent one byte at a
 time (``drip``) or one that never ends (``flood``). It counts every request so a test can prove what was (not) asked.
 The meshes it returns come from the ``model`` callable its user supplies.
 """
@@ -22,7 +22,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 
-FAULTS = ("die", "restart", "error", "bad_base64", "not_glb", "generate_only", "unhealthy", "drip", "flood")
+FAULTS = ("die", "restart", "error", "reject", "bad_base64", "not_glb", "generate_only", "unhealthy", "drip", "flood")
 #: Seconds between the bytes of a ``drip`` answer, and bytes of each piece of a ``flood``.
 DRIP_INTERVAL = 0.2
 FLOOD_PIECE = 1 << 20
@@ -108,7 +108,7 @@ class StandInServer:
         with self._lock:
             if self.fault is None or self.fault in ("generate_only", "unhealthy"):
                 return None
-            if len(self.submitted) <= self.healthy_jobs:
+            if self.counts["send"] + self.counts["generate"] <= self.healthy_jobs:
                 return None
             if self.fault_jobs is not None and self._faulted >= self.fault_jobs:
                 return None
@@ -201,6 +201,8 @@ class _Handler(BaseHTTPRequestHandler):
         if self.path == "/send" and s.fault != "generate_only":
             s.counts["send"] += 1
             payload = self._payload()
+            if s.fault == "reject" and s._faulty():  # refused before it takes any GPU time
+                return self._reply(500, {"detail": "CUDA out of memory"})
             job = s._queue(base64.b64decode(payload["image"]))
             job.fault = s._faulty()
             uid = str(uuid.uuid4())
