@@ -6,6 +6,9 @@ by a hash of the request, and the document is saved as each asset lands, so a ki
 resumes with only the unfinished objects. Requests go to the backend one per call, as many
 at a time as the backend says it can serve (its ``concurrency``, 1 when it says nothing),
 which lets each finished asset be stored at once instead of waiting for the whole batch.
+The stage does not save the document: the caller does when it ends (also on an error or
+Ctrl-C) and at the checkpoints offered as each asset lands. The bytes written go into the run's :class:`~scenewright.assets.load.AssetMeshes`, so the later
+stages do not read and parse them again.
 """
 
 from __future__ import annotations
@@ -14,7 +17,7 @@ import logging
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor, as_completed
 
-from scenewright.assets.load import asset_problem
+from scenewright.assets.load import AssetMeshes
 from scenewright.assets.normalise import normalise, to_glb
 from scenewright.backends import MeshGenerator, MeshRequest
 from scenewright.cache import RequestCache, request_key
@@ -28,9 +31,9 @@ log = logging.getLogger(__name__)
 CACHE_KIND = "meshes"
 
 
-def needs_asset(obj: SceneObject, folder: SceneFolder) -> bool:
+def needs_asset(obj: SceneObject, folder: SceneFolder, store: AssetMeshes) -> bool:
     """Whether ``obj`` has no usable asset: none, missing, empty, corrupt or without triangles."""
-    problem = asset_problem(obj, folder)
+    problem = store.problem(obj, folder)
     if problem is not None and obj.asset is not None:
         log.warning("object %r: %s; it is built again", obj.id, problem)
     return problem is not None
@@ -82,13 +85,18 @@ def generate_assets(
     progress: Callable[[str], None] | None = None,
     *,
     max_faces: int | None = None,
+    store: AssetMeshes | None = None,
+    checkpoint: Callable[[], None] = lambda: None,
 ) -> Scene:
     """Build every missing asset of ``scene`` (in place), writing ``assets/<id>.glb``.
 
     Each object gets ``asset`` and the x/y size of its rescaled mesh. When some objects
-    fail, the others are still stored and a BackendError names each failure.
+    fail, the others are still stored and a BackendError names each failure. ``store`` (the
+    run's parsed assets) learns each file written; ``checkpoint`` is offered after each one
+    (the caller saves the document, see :class:`~scenewright.folder.DocumentSaver`).
     """
-    todo = [obj for obj in scene.objects if needs_asset(obj, folder)]
+    parsed = store if store is not None else AssetMeshes()
+    todo = [obj for obj in scene.objects if needs_asset(obj, folder, parsed)]
     if not todo:
         return scene
     requests = {obj.id: mesh_request(obj, folder, scene.style) for obj in todo}
@@ -111,10 +119,12 @@ def generate_assets(
         except BackendError as exc:
             failures[oid] = str(exc)
             return
-        path = write_atomic(folder.asset(oid), to_glb(asset, source=glb))
+        data = to_glb(asset, source=glb)
+        path = write_atomic(folder.asset(oid), data)
+        parsed.add(path, data)
         obj.asset = folder.relative(path)
         obj.size = size
-        folder.save(scene)
+        checkpoint()
         if progress:
             progress(oid)
 
@@ -163,7 +173,6 @@ def generate_assets(
     built = [obj.id for obj in todo if obj.id not in failures]
     scene.record("assets", f"built {len(built)} assets with {meshes.name}", objects=built,
                  from_cache=sorted(set(raw) & set(built)))
-    folder.save(scene)
     if failures:
         details = "; ".join(f"{oid}: {why}" for oid, why in failures.items())
         raise BackendError(
