@@ -34,7 +34,7 @@ from scenewright.errors import BackendError, InputError, MissingExtra
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
 from scenewright.geometry import object_matrix, world_box
-from scenewright.render.views import VIEWS
+from scenewright.render.views import VIEWS, object_weights
 from scenewright.scene import Scene
 from scenewright.settings import Settings
 
@@ -97,8 +97,23 @@ def object_corners(scene: Scene) -> list[list[float]]:
     """
     if not scene.objects:
         raise InputError("the scene has no objects to render; add some with `scenewright edit`")
-    corners = [(_UNIT_BOX * [*obj.size.tuple(), 1.0]) @ object_matrix(obj).T for obj in scene.objects]
-    return np.concatenate(corners)[:, :3].tolist()
+    return np.concatenate(list(box_corners(scene).values())).tolist()
+
+
+def box_corners(scene: Scene) -> dict[str, np.ndarray]:
+    """Each object's eight posed box corners (8×3) by id."""
+    return {obj.id: ((_UNIT_BOX * [*obj.size.tuple(), 1.0]) @ object_matrix(obj).T)[:, :3] for obj in scene.objects}
+
+
+def view_weights(scene: Scene) -> dict[str, float]:
+    """How much showing each object matters to the view choice (see
+    :func:`scenewright.render.views.object_weights`): its size and the relations it is in."""
+    relations = {obj.id: 0 for obj in scene.objects}
+    for c in scene.constraints:
+        for end in (c.source, c.target):
+            if end in relations:
+                relations[end] += 1
+    return object_weights({obj.id: obj.size.tuple() for obj in scene.objects}, relations)
 
 
 def _ground_texture(scene: Scene, folder: SceneFolder) -> str | None:
@@ -194,6 +209,8 @@ def render(
             "ids": [obj.id for obj in scene.objects],
             "bounds": [low, high],
             "frame": frame,
+            "boxes": {oid: box.tolist() for oid, box in box_corners(scene).items()},
+            "weights": view_weights(scene),
             "style": scene.style,
             "ground_texture": _ground_texture(scene, folder),
             "ground_kind": scene.ground.kind,

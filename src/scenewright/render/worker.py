@@ -4,10 +4,12 @@ Run as ``python -m scenewright.render.worker job.json``; it reads the job, rende
 writes the result JSON the job names. Running it in its own process means a Blender crash
 (or Blender's global state) never reaches the pipeline.
 
-Per view it first renders a one-sample object-index pass — every object's material replaced
-by an emission of its ``pass_index`` (index = R + 256·G, exact because the view transform is
-Raw and dithering is off) — counts the pixels of each object, then renders the chosen views
-with Cycles, denoised.
+Per view it first renders a one-sample object-index pass at a quarter of the picture's width
+and height — every object's material replaced by an emission of its ``pass_index`` (index =
+R + 256·G, exact because the view transform is Raw and dithering is off) — counts the pixels
+of each object against the pixels its box would cover unhidden, chooses the view (see
+:func:`scenewright.render.views.best_view`), then renders the chosen views with Cycles,
+denoised by OpenImageDenoise.
 """
 
 from __future__ import annotations
@@ -31,6 +33,7 @@ from scenewright.render.views import (
     SENSOR_MM,
     best_view,
     camera_matrix,
+    projected_area,
     visibility,
 )
 
@@ -315,13 +318,20 @@ def run(job: dict) -> dict:
     out = Path(job["out_dir"])
     out.mkdir(parents=True, exist_ok=True)
     visible: dict[str, dict[str, int]] = {}
+    expected: dict[str, dict[str, float]] = {}
+    frame_pixels = 0
     with tempfile.TemporaryDirectory(prefix="scenewright-index-") as tmp:
         for view in job["views"]:
             camera.matrix_world = Matrix(camera_matrix(view, job["frame"], width / height).tolist())
             index_png = Path(tmp) / f"{view}.png"
             render_index(index_png, override)
-            visible[view] = visibility(np.asarray(Image.open(index_png).convert("RGBA")), ids)
-    best = best_view(visible)
+            image = np.asarray(Image.open(index_png).convert("RGBA"))
+            visible[view] = visibility(image, ids)
+            matrix = camera_matrix(view, job["frame"], width / height)
+            size = (image.shape[1], image.shape[0])
+            expected[view] = {oid: projected_area(box, matrix, size) for oid, box in job.get("boxes", {}).items()}
+            frame_pixels = image.shape[0] * image.shape[1]
+    best = best_view(visible, expected or None, job.get("weights"), frame_pixels)
     chosen = list(job["views"]) if job["keep_all"] else [best]
     chosen.sort(key=lambda v: v != best)
     images, seconds = {}, {}
