@@ -48,19 +48,21 @@ DEFAULT_VIEWS = tuple(VIEWS)
 
 @dataclass(frozen=True)
 class Preview:
-    """A render quality: picture size, Cycles samples per pixel (before the denoiser), and the
-    light-path bounces each ray may take (total, diffuse, glossy)."""
+    """A render quality: picture size, Cycles samples per pixel (before the denoiser), the
+    light-path bounces each ray may take (total, diffuse, glossy), and OpenImageDenoise's
+    quality (FAST, BALANCED or HIGH)."""
 
     resolution: tuple[int, int]
     samples: int
     bounces: tuple[int, int, int]
+    denoise: str
 
 
 #: The render qualities ``--preview`` names; docs/rendering.md tells how they were chosen.
 PREVIEWS = {
-    "draft": Preview((480, 270), 2, (2, 1, 1)),
-    "default": Preview((1280, 720), 8, (3, 1, 1)),
-    "final": Preview((1920, 1080), 64, (8, 4, 4)),
+    "draft": Preview((480, 270), 2, (2, 1, 1), "FAST"),
+    "default": Preview((1280, 720), 2, (3, 1, 1), "BALANCED"),
+    "final": Preview((1920, 1080), 64, (8, 4, 4), "HIGH"),
 }
 DEFAULT_TIMEOUT = 900.0
 METADATA = "renders.json"
@@ -219,6 +221,7 @@ def render(
             "resolution": [int(resolution[0]), int(resolution[1])],
             "samples": int(samples),
             "bounces": list(quality.bounces),
+            "denoise_quality": quality.denoise,
             "denoise": True,
             "transparent": transparent,
             "out_dir": str(Path(tmp) / "renders"),
