@@ -389,3 +389,20 @@ def test_document_saver_checkpoints_at_most_once_per_interval(tmp_path):
     assert saver.saves == 2 and folder.is_scene()  # at 2.1 and at 4.1 or later
     saver.save()
     assert saver.saves == 3
+
+
+def test_generate_passes_the_preview_quality_to_the_render_stage(tmp_path, monkeypatch):
+    import scenewright.render
+
+    asked = []
+
+    def fake_render(scene, folder, **kwargs):
+        asked.append(kwargs["preview"])
+        folder.renders.mkdir(exist_ok=True)
+        (folder.renders / "front.png").write_bytes(_png())
+        return [folder.renders / "front.png"]
+
+    monkeypatch.setattr(scenewright.render, "render", fake_render)
+    settings = _settings()
+    generate(TEXT, tmp_path / "s", backends=Backends.from_settings(settings), settings=settings, preview="draft")
+    assert asked == ["draft"]

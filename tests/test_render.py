@@ -371,3 +371,24 @@ def test_larger_and_more_related_objects_weigh_more_in_the_view_choice():
     visible = {"iso_left": {"barn": 0, "cow": 500, "hen": 80}, "front": {"barn": 9000, "cow": 400, "hen": 0}}
     assert best_view(visible) == "iso_left"  # unweighted: a tie on count, then evenness
     assert best_view(visible, weights=weights) == "front"
+
+
+def test_preview_qualities_grow_from_draft_to_final_and_unknown_ones_are_refused(tmp_path):
+    from scenewright.render import PREVIEWS
+
+    draft, default, final = (PREVIEWS[k] for k in ("draft", "default", "final"))
+    assert default.resolution == (1280, 720)
+    for small, large in ((draft, default), (default, final)):
+        assert small.resolution[0] < large.resolution[0] and small.samples <= large.samples
+        assert all(a <= b for a, b in zip(small.bounces, large.bounces))
+    scene, folder = small_scene(tmp_path)
+    with pytest.raises(InputError, match="draft, default, final"):
+        render(scene, folder, preview="ultra")
+
+
+def test_generate_refuses_an_unknown_preview_before_it_starts(tmp_path, capsys):
+    from scenewright.cli import main
+
+    out = tmp_path / "s"
+    assert main(["generate", "a chair", "--out", str(out), "--preview", "ultra"]) == 2
+    assert "--preview 'ultra'" in capsys.readouterr().err and not out.exists()
