@@ -3,7 +3,8 @@
 Each stage adds its output to the document and the folder, then its name goes into
 ``scene.done``; a re-run skips every stage that is done and whose output is still on disk.
 When a stage has to run again, every later stage runs again too, since it was built on the
-old output.
+old output. The stages are one table, :data:`PIPELINE` (name, what runs it, whether its output
+is still there), and :func:`run_stages` is the only place a run saves the document.
 """
 
 from __future__ import annotations
@@ -12,7 +13,7 @@ import logging
 import shutil
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from pydantic import ValidationError
@@ -52,11 +53,7 @@ class Run:
     #: Preview quality of the render stage (see :data:`scenewright.render.PREVIEWS`).
     preview: str = "default"
     note: Callable[[str], None] = lambda message: None
-    meshes: AssetMeshes = None  # type: ignore[assignment]
-
-    def __post_init__(self) -> None:
-        if self.meshes is None:
-            self.meshes = AssetMeshes()
+    meshes: AssetMeshes = field(default_factory=AssetMeshes)
 
 
 @dataclass(frozen=True)
