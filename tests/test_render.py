@@ -19,6 +19,7 @@ from scenewright.errors import InputError, MissingExtra
 from scenewright.folder import SceneFolder
 from scenewright.geometry import GLTF_TO_SCENE, SCENE_TO_GLTF, object_matrix
 from scenewright.render import (
+    PREVIEWS,
     best_render,
     object_corners,
     render,
@@ -199,7 +200,7 @@ def test_draft_render_shows_every_object_in_its_index_pass(tmp_path):
     from PIL import Image
 
     image = np.asarray(Image.open(best_render(folder)).convert("RGB"))
-    assert image.shape == (144, 256, 3)
+    assert image.shape == (*PREVIEWS["draft"].resolution[::-1], 3)
     assert image.std() > 5  # a picture, not a flat fill
 
 
