@@ -4,6 +4,9 @@ VENV    := .venv
 BIN     := $(VENV)/bin
 STAMP   := $(VENV)/.installed
 EXTRAS  ?= test,remote,render,batch,sim,studio
+#: The revision `make bench` measures the speed figures against (before the start-up, asset and
+#: edit speed work); override with SPEED_BASELINE=<rev>.
+SPEED_BASELINE ?= 9091e14
 
 .PHONY: install install-render install-clip install-batch install-sim install-studio tools chromium demo test bench clean
 
@@ -36,8 +39,14 @@ chromium:
 
 tools: $(TOOLS_STAMP) chromium
 
-demo: install
-	$(BIN)/scenewright generate --example --out demo-scene
+# The demo needs only the render extra (Blender for the previews); a full install serves it too.
+DEMO_STAMP := $(VENV)/.demo-installed
+$(DEMO_STAMP): $(BIN)/python pyproject.toml
+	@test -f $(STAMP) || $(BIN)/pip install -q -e ".[render]"
+	@touch $(DEMO_STAMP)
+
+demo: $(DEMO_STAMP)
+	$(BIN)/scenewright generate --example --out demo-scene --preview default
 	@echo "Open demo-scene/scene.glb in Blender (File > Import > glTF 2.0), Godot 4 or Unreal 5."
 
 test: install tools
@@ -59,6 +68,7 @@ bench: install
 	$(BIN)/scenewright bench batch --json | tee bench-results/batch.json
 	$(BIN)/scenewright bench physics --json | tee bench-results/physics.json
 	$(BIN)/python benchmarks/procedural.py | tee bench-results/procedural.json
+	$(BIN)/python benchmarks/speed.py --baseline $(SPEED_BASELINE) --render | tee bench-results/speed.json
 
 clean:
 	rm -rf $(VENV) demo-scene bench-results

@@ -9,7 +9,7 @@ import json
 import statistics
 import time
 
-from scenewright.backends import MeshRequest
+from scenewright.core.protocols import MeshRequest
 from scenewright.procedural import SHAPES
 from scenewright.backends.procedural_images import ProceduralImages
 from scenewright.backends.procedural_meshes import ProceduralMeshes

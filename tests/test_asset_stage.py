@@ -13,6 +13,7 @@ import pytest
 
 from hunyuan_server import box_glb, png, servers
 from scenewright.assets import generate_assets, load_meshes
+from scenewright.assets.load import AssetMeshes
 from scenewright.backends.hunyuan3d import Hunyuan3D
 from scenewright.cache import RequestCache
 from scenewright.errors import BackendError, InputError
@@ -64,7 +65,10 @@ def test_assets_are_written_normalised_and_sizes_follow_the_mesh(tmp_path):
     scene, folder = room(tmp_path)
     heights = {o.id: o.size.z for o in scene.objects}
     notes: list[str] = []
-    generate_assets(scene, folder, ProceduralMeshes(), RequestCache(tmp_path / "cache"), notes.append)
+    offered: list[list[str | None]] = []
+    store = AssetMeshes()
+    generate_assets(scene, folder, ProceduralMeshes(), RequestCache(tmp_path / "cache"), notes.append,
+                    store=store, checkpoint=lambda: offered.append([o.asset for o in scene.objects]))
     meshes = load_meshes(scene, folder)
     assert set(meshes) == {o.id for o in scene.objects}
     for obj in scene.objects:
@@ -75,10 +79,15 @@ def test_assets_are_written_normalised_and_sizes_follow_the_mesh(tmp_path):
         assert lo[2] == pytest.approx(0.0, abs=1e-5)
         assert (lo[:2] + hi[:2]) / 2 == pytest.approx((0.0, 0.0), abs=1e-4)
     assert set(heights) <= set(notes)
-    # The document on disk already knows every asset.
-    saved = folder.load()
-    assert [o.asset for o in saved.objects] == [o.asset for o in scene.objects]
-    assert saved.provenance[-1].stage == "assets"
+    # A checkpoint is offered as each asset lands, the document then naming it; the stage itself
+    # saves nothing (the pipeline does).
+    assert [sum(a is not None for a in assets) for assets in offered] == [1, 2, 3]
+    assert folder.load().objects[0].asset is None
+    assert scene.provenance[-1].stage == "assets"
+    # The run's store holds every file parsed as written: the same meshes as a fresh parse.
+    for oid, mesh in meshes.items():
+        kept = store.parsed(folder.asset(oid)).mesh
+        assert np.array_equal(kept.vertices, mesh.vertices) and np.array_equal(kept.faces, mesh.faces)
 
 
 def test_a_rerun_builds_nothing_and_another_scene_reuses_the_cache(tmp_path):
@@ -86,6 +95,7 @@ def test_a_rerun_builds_nothing_and_another_scene_reuses_the_cache(tmp_path):
     scene, folder = room(tmp_path)
     meshes = Counting(ProceduralMeshes())
     generate_assets(scene, folder, meshes, cache)
+    folder.save(scene)  # as the pipeline does after the stage
     assert len(meshes.asked) == 3
     generate_assets(folder.load(), folder, meshes, cache)
     assert len(meshes.asked) == 3
@@ -107,7 +117,7 @@ def test_failures_are_named_after_the_others_are_saved(tmp_path):
         generate_assets(scene, folder, meshes, cache)
     text = str(info.value)
     assert "sofa_1" in text and "floor_lamp_1" in text and "procedural" in text and "2 of 3" in text
-    saved = folder.load()
+    saved = scene
     assert saved.get("coffee_table_1").asset == "assets/coffee_table_1.glb"
     assert saved.get("sofa_1").asset is None and saved.get("floor_lamp_1").asset is None
     # The broken mesh was not cached: a healthy re-run asks for exactly the two failures.
@@ -154,17 +164,19 @@ def test_hunyuan_assets_resume_without_resubmitting_finished_ones(tmp_path):
         with pytest.raises(BackendError) as info:
             generate_assets(scene, folder, Hunyuan3D([dying.url], poll_interval=0.01), cache)
     assert "3 of 5 assets failed" in str(info.value) and "out of rotation" in str(info.value)
-    finished = [o for o in folder.load().objects if o.asset]
+    finished = [o for o in scene.objects if o.asset]
     assert len(finished) == 2
+    folder.save(scene)  # as the pipeline does when a stage stops
+    final = folder.load()
     with servers({}) as (fresh,):
-        generate_assets(folder.load(), folder, Hunyuan3D([fresh.url], poll_interval=0.01), cache)
+        generate_assets(final, folder, Hunyuan3D([fresh.url], poll_interval=0.01), cache)
         assert fresh.counts["send"] == 3
         finished_images = {folder.resolve(o.image).read_bytes() for o in finished}
         assert not finished_images & set(fresh.submitted)
-    final = folder.load()
     assert all(o.asset for o in final.objects)
     # Rescaled by height: the 0.8 × 1.2 × 0.6 (glTF) model at 0.6 m tall.
     assert final.get("crate_1").size.tuple() == pytest.approx((0.4, 0.3, 0.6))
+    folder.save(final)
     # A deleted asset comes back from the cache (keyed by its image): no server is asked.
     folder.asset("crate_1").unlink()
     with servers({}) as (idle,):
@@ -178,10 +190,14 @@ KILLED_RUN = textwrap.dedent(
     from scenewright.assets import generate_assets
     from scenewright.backends.hunyuan3d import Hunyuan3D
     from scenewright.cache import RequestCache
-    from scenewright.folder import SceneFolder
+    from scenewright.folder import DocumentSaver, SceneFolder
 
     folder = SceneFolder(sys.argv[1])
-    generate_assets(folder.load(), folder, Hunyuan3D([sys.argv[2]], poll_interval=0.01), RequestCache(None))
+    scene = folder.load()
+    # A slow backend: every landed asset is worth a checkpoint (the pipeline's saver, interval 0).
+    saver = DocumentSaver(folder, scene, interval=0.0)
+    generate_assets(scene, folder, Hunyuan3D([sys.argv[2]], poll_interval=0.01), RequestCache(None),
+                    checkpoint=saver.checkpoint)
     """
 )
 
@@ -202,11 +218,12 @@ def test_a_killed_run_resumes_without_resubmitting_finished_assets(tmp_path):
         done = [o for o in folder.load().objects if o.asset]
         assert 2 <= len(done) < 6, "the run was meant to be killed half way"
         before = len(server.submitted)
-        generate_assets(folder.load(), folder, Hunyuan3D([server.url], poll_interval=0.01), RequestCache(None))
+        resumed = folder.load()
+        generate_assets(resumed, folder, Hunyuan3D([server.url], poll_interval=0.01), RequestCache(None))
         resubmitted = server.submitted[before:]
         assert len(resubmitted) == 6 - len(done)
         assert not {folder.resolve(o.image).read_bytes() for o in done} & set(resubmitted)
-    assert all(o.asset for o in folder.load().objects)
+    assert all(o.asset for o in resumed.objects)
 
 
 def test_box_fixture_is_what_the_servers_return():

@@ -130,3 +130,18 @@ def test_an_object_that_turns_later_holds_the_room_it_turns_in():
     world.place(0, np.array([0.0, 0.0, 0.5]), 0.0)
     assert hits(0.45) == [0]  # but not of it turning
     assert hits(0.70) == []  # its radius is 0.54 m
+
+
+def test_bvh_built_only_for_pairs_that_reach_the_exact_test(monkeypatch):
+    import scenewright.layout.collision as collision
+
+    built = []
+    real = collision._bvh
+    monkeypatch.setattr(collision, "_bvh", lambda mesh: built.append(mesh) or real(mesh))
+    meshes = {k: cone_mesh(Vec3(x=1, y=1, z=1)) for k in "abc"}
+    # Far apart: the box broad phase settles every pair, so no mesh needs a BVH.
+    assert colliding_pairs([box("a"), box("b", x=5), box("c", x=10)], meshes) == []
+    assert built == []
+    # a and b overlap: exactly their two meshes get one (c, far away, still none).
+    assert colliding_pairs([box("a"), box("b", x=0.5), box("c", x=10)], meshes) == [("a", "b")]
+    assert [id(m) for m in built] == [id(meshes["a"]), id(meshes["b"])]

@@ -161,3 +161,21 @@ def test_the_files_own_normals_survive():
     scene, _ = normalise(glb_of(box), Vec3(x=1, y=1, z=3.0), name="pillar_1", backend="test")
     mesh = next(iter(parse_glb(to_glb(scene)).geometry.values()))
     assert np.allclose(mesh.vertex_normals, [0.0, 1.0, 0.0], atol=1e-6)
+
+
+@pytest.mark.parametrize("mirror", [False, True])
+def test_asset_mesh_is_trimesh_to_mesh_in_the_scene_frame(mirror):
+    """The geometry-only concatenation gives the solver exactly what trimesh's own would:
+    the same vertices and faces in the same order (a mirroring node turns the winding over)."""
+    from scenewright.geometry import GLTF_TO_SCENE
+
+    scene = trimesh.Scene()
+    scene.add_geometry(trimesh.creation.box((1, 2, 3)), geom_name="a")
+    node = np.diag([-1.0, 1.0, 1.0, 1.0]) if mirror else np.eye(4)
+    node[:3, 3] = (0.5, 0.2, -0.3)
+    scene.add_geometry(trimesh.creation.icosphere(1, 0.4), geom_name="b", transform=node)
+    data = to_glb(scene)
+    expected = parse_glb(data).to_mesh()
+    expected.apply_transform(GLTF_TO_SCENE)
+    got = asset_mesh(data)
+    assert np.allclose(got.vertices, expected.vertices) and np.array_equal(got.faces, expected.faces)

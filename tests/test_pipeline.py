@@ -13,7 +13,7 @@ from scenewright.analysis.stage import analyze
 from scenewright.backends import Backends, backends_from_settings
 from scenewright.core.protocols import Answer
 from scenewright.errors import BackendError, InputError, MissingExtra
-from scenewright.folder import SceneFolder
+from scenewright.folder import DocumentSaver, SceneFolder
 from scenewright.layout.stage import arrange
 from scenewright.pipeline import generate, resume
 from scenewright.scene import DEFAULT_STYLE, Constraint, Scene, SceneObject, Vec3
@@ -224,14 +224,16 @@ def test_analyze_saves_images_and_records_removed_objects(tmp_path):
     folder.create()
     scene = Scene(text="A bathtub with a faucet.")
     vlm = RedundantVLM()
-    analyze(scene, folder, vlm, DrawingImages())
+    saver = DocumentSaver(folder, scene, interval=0.0)
+    analyze(scene, folder, vlm, DrawingImages(), checkpoint=saver.checkpoint)
     assert folder.reference_image.is_file() and folder.ground_image.is_file()
     assert set(vlm.seen_images) == {"bathtub_1", "faucet_1"}
     assert [o.id for o in scene.objects] == ["bathtub_1"]
     assert scene.objects[0].image == "images/objects/bathtub_1.png"
     assert folder.object_image("faucet_1").is_file()
     assert [(r.id, r.reason) for r in scene.removed] == [("faucet_1", "already part of the bathtub's image")]
-    assert Scene.load(folder.document).removed == scene.removed
+    # Checkpoints offered after the objects, their images and quality control, each saved.
+    assert saver.saves == 3 and Scene.load(folder.document).removed == scene.removed
 
     # A second pass finds every output in place and asks nothing again.
     vlm.find_redundant = lambda *a: pytest.fail("quality control ran twice")
@@ -306,7 +308,6 @@ def test_feedback_loop_is_bounded_and_keeps_the_best_round(tmp_path):
     arrange(scene, folder, vlm, {}, rounds=2, time_limit=1.0)
     assert len(vlm.reports) == 2
     assert not scene.layout.complete and scene.layout.unplaced[0].id == "sofa_1"
-    assert Scene.load(folder.document).layout == scene.layout
 
 
 def test_arrange_records_the_proposed_poses_once_before_solving(tmp_path):
@@ -317,8 +318,92 @@ def test_arrange_records_the_proposed_poses_once_before_solving(tmp_path):
     recorded = {oid: (p.position.tuple(), p.rotation.tuple()) for oid, p in scene.initial.items()}
     assert recorded == proposed
     assert scene.get("sofa_1").position.tuple() != proposed["sofa_1"][0]
-    assert Scene.load(folder.document).initial == scene.initial
     first = {oid: pose.model_copy(deep=True) for oid, pose in scene.initial.items()}
     scene.constraints = []  # arranging again (a resume, a new round of constraints) starts from solved poses
     arrange(scene, folder, FeedbackVLM(give_up=False), {}, rounds=3, time_limit=2.0)
     assert scene.initial == first
+
+
+# --- the stage table: one save per stage, each asset parsed once, no offline parse for a remote model ---
+
+
+def test_a_run_saves_the_document_once_per_stage_and_parses_each_asset_once(tmp_path, monkeypatch):
+    import importlib
+
+    load = importlib.import_module("scenewright.assets.load")
+    normalise = importlib.import_module("scenewright.assets.normalise")  # the package exports a function of that name
+    saves, parses = [], []
+    real_save, real_parse = SceneFolder.save, normalise.parse_glb
+    monkeypatch.setattr(SceneFolder, "save", lambda self, scene: saves.append(list(scene.done)) or real_save(self, scene))
+
+    def counted(data):
+        parses.append(len(data))
+        return real_parse(data)
+
+    monkeypatch.setattr(normalise, "parse_glb", counted)
+    monkeypatch.setattr(load, "parse_glb", counted)
+    settings = _settings()
+    scene = generate(TEXT, tmp_path / "s", backends=backends_from_settings(settings), settings=settings, render=False)
+    # The new document, then once after each of the four stages.
+    assert saves == [[], ["analyze"], ["analyze", "assets"], ["analyze", "assets", "layout"],
+                     ["analyze", "assets", "layout", "export"]]
+    # Each asset: the backend's answer once (to normalise it) and the stored file once (kept for
+    # the checks, the solver and the export).
+    assert len(parses) == 2 * len(scene.objects)
+
+
+def test_the_stage_table_names_each_stage_once_in_order():
+    from scenewright.pipeline import PIPELINE, STAGES
+
+    assert STAGES == ("analyze", "assets", "layout", "export", "render")
+    assert [s.name for s in PIPELINE] == list(STAGES)
+
+
+def test_a_remote_model_run_does_not_run_the_offline_parser(tmp_path, monkeypatch):
+    import scenewright.analysis.parser as parser
+
+    settings = _settings()
+    real = backends_from_settings(settings)
+    vlm = Counting(real.vlm)
+    vlm.name = "remote-model"  # stands in for a remote model; it answers with the offline one's answers
+
+    def refuse(text):
+        raise AssertionError("the offline parser ran for a remote model's scene")
+
+    monkeypatch.setattr(parser, "parse_scene", refuse)
+    scene = generate(
+        "A cartoon park on green grass: an oak tree with a bench in front of it.", tmp_path / "p",
+        backends=Backends(vlm=vlm, images=real.images, meshes=real.meshes), settings=settings, render=False,
+    )
+    assert scene.style == "cartoon" and scene.ground.kind == "grass"
+    assert vlm.calls["describe_objects"] == 1
+
+
+def test_document_saver_checkpoints_at_most_once_per_interval(tmp_path):
+    folder = SceneFolder(tmp_path / "s")
+    folder.create()
+    now = [0.0]
+    saver = DocumentSaver(folder, Scene(text="a chair"), interval=2.0, clock=lambda: now[0])
+    for t in (0.5, 1.0, 2.1, 2.5, 4.0, 4.2):
+        now[0] = t
+        saver.checkpoint()
+    assert saver.saves == 2 and folder.is_scene()  # at 2.1 and at 4.1 or later
+    saver.save()
+    assert saver.saves == 3
+
+
+def test_generate_passes_the_preview_quality_to_the_render_stage(tmp_path, monkeypatch):
+    import scenewright.render
+
+    asked = []
+
+    def fake_render(scene, folder, **kwargs):
+        asked.append(kwargs["preview"])
+        folder.renders.mkdir(exist_ok=True)
+        (folder.renders / "front.png").write_bytes(_png())
+        return [folder.renders / "front.png"]
+
+    monkeypatch.setattr(scenewright.render, "render", fake_render)
+    settings = _settings()
+    generate(TEXT, tmp_path / "s", backends=backends_from_settings(settings), settings=settings, preview="draft")
+    assert asked == ["draft"]

@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import trimesh
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from scenewright.backends import MeshRequest, create_backend
@@ -338,3 +338,23 @@ def test_names_pick_variants_within_a_shape(shape, name, role):
 def test_a_description_alone_does_not_change_what_an_object_is():
     described = build_model("rock", (1.0, 1.0, 0.6), "realistic", 1, description="a rock beside the campfire", name="rock")
     assert "flame" not in described.geometry
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.floats(-3, 3), min_size=9, max_size=9))
+def test_closed_form_inverse_matches_numpy(values):
+    from scenewright.procedural.parts import inverse3
+
+    m = np.array(values).reshape(3, 3)
+    det = np.linalg.det(m)
+    assume(abs(det) > 1e-3)
+    inverse, got = inverse3(m)
+    assert got == pytest.approx(det, rel=1e-9, abs=1e-12)
+    assert np.allclose(inverse, np.linalg.inv(m), rtol=1e-7, atol=1e-9)
+
+
+def test_a_singular_part_transform_is_refused():
+    from scenewright.procedural.parts import inverse3
+
+    with pytest.raises(ValueError, match="singular"):
+        inverse3(np.diag([1.0, 0.0, 1.0]))

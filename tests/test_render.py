@@ -19,6 +19,7 @@ from scenewright.errors import InputError, MissingExtra
 from scenewright.folder import SceneFolder
 from scenewright.geometry import GLTF_TO_SCENE, SCENE_TO_GLTF, object_matrix
 from scenewright.render import (
+    PREVIEWS,
     best_render,
     object_corners,
     render,
@@ -199,7 +200,7 @@ def test_draft_render_shows_every_object_in_its_index_pass(tmp_path):
     from PIL import Image
 
     image = np.asarray(Image.open(best_render(folder)).convert("RGB"))
-    assert image.shape == (144, 256, 3)
+    assert image.shape == (*PREVIEWS["draft"].resolution[::-1], 3)
     assert image.std() > 5  # a picture, not a flat fill
 
 
@@ -333,3 +334,62 @@ def test_a_broken_or_tampered_renders_json_is_an_input_error(tmp_path, content):
     (folder.renders / "renders.json").write_text(content)
     with pytest.raises(InputError, match="renders.json"):
         best_render(folder)
+
+
+def test_projected_area_of_a_box_facing_the_camera():
+    from scenewright.render.views import projected_area
+
+    camera = np.eye(4)
+    camera[:3, 3] = (0.0, 0.0, 10.0)  # looking down −Z at a 2 × 2 square 10 m away
+    square = [[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (0.0, -0.001)]
+    width, height = 1280, 720
+    tan_w = 18.0 / 35.0
+    pixels_per_metre = (width / 2) / (tan_w * 10.0)
+    assert projected_area(square, camera, (width, height)) == pytest.approx((2 * pixels_per_metre) ** 2, rel=1e-3)
+    camera[:3, 3] = (0.0, 0.0, -10.0)  # behind it
+    assert projected_area(square, camera, (width, height)) == 0.0
+
+
+def test_a_few_dozen_pixels_of_an_object_do_not_count_as_seeing_it():
+    # The console shows 40 px of the 4000 its box covers in the front view: not seen there, so
+    # the front view shows no more than the first view in the paper's order.
+    visible = {"iso_left": {"ship": 90000, "console": 0}, "front": {"ship": 150000, "console": 40}}
+    expected = {"iso_left": {"ship": 120000, "console": 3000}, "front": {"ship": 160000, "console": 4000}}
+    assert best_view(visible) == "front"  # any pixel counted: the front "shows" both
+    assert best_view(visible, expected, frame_pixels=1280 * 720) == "iso_left"
+    # A speck: 6 px of a 1280 × 720 frame is not seen even when that is all its box covers.
+    speck = {"iso_left": {"ship": 90000, "bolt": 0}, "front": {"ship": 90000, "bolt": 6}}
+    assert best_view(speck, {"iso_left": {"bolt": 6}, "front": {"bolt": 6}}, frame_pixels=1280 * 720) == "iso_left"
+
+
+def test_larger_and_more_related_objects_weigh_more_in_the_view_choice():
+    from scenewright.render.views import object_weights
+
+    weights = object_weights({"barn": (10, 8, 6), "cow": (2, 0.8, 1.5), "hen": (0.3, 0.3, 0.4)},
+                             {"barn": 2, "cow": 1, "hen": 0})
+    assert weights["barn"] > weights["cow"] > weights["hen"]
+    # One view shows the barn and the cow, the other the hen and the cow: the barn matters more.
+    visible = {"iso_left": {"barn": 0, "cow": 500, "hen": 80}, "front": {"barn": 9000, "cow": 400, "hen": 0}}
+    assert best_view(visible) == "iso_left"  # unweighted: a tie on count, then evenness
+    assert best_view(visible, weights=weights) == "front"
+
+
+def test_preview_qualities_grow_from_draft_to_final_and_unknown_ones_are_refused(tmp_path):
+    from scenewright.render import PREVIEWS
+
+    draft, default, final = (PREVIEWS[k] for k in ("draft", "default", "final"))
+    assert default.resolution == (1280, 720)
+    for small, large in ((draft, default), (default, final)):
+        assert small.resolution[0] < large.resolution[0] and small.samples <= large.samples
+        assert all(a <= b for a, b in zip(small.bounces, large.bounces))
+    scene, folder = small_scene(tmp_path)
+    with pytest.raises(InputError, match="draft, default, final"):
+        render(scene, folder, preview="ultra")
+
+
+def test_generate_refuses_an_unknown_preview_before_it_starts(tmp_path, capsys):
+    from scenewright.cli import main
+
+    out = tmp_path / "s"
+    assert main(["generate", "a chair", "--out", str(out), "--preview", "ultra"]) == 2
+    assert "--preview 'ultra'" in capsys.readouterr().err and not out.exists()

@@ -16,6 +16,8 @@ nothing is ever written outside the folder either.
 from __future__ import annotations
 
 import os
+import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath, PureWindowsPath
 
@@ -230,6 +232,36 @@ class SceneFolder:
         if not os.access(self.root, os.W_OK):
             raise InputError(f"{self.root} is not writable; choose another --out")
         self.check()
+
+
+class DocumentSaver:
+    """The one writer of a run's ``scene.json``: whole at the end of each stage, and as a
+    checkpoint while a long stage runs.
+
+    Each save rewrites and syncs the whole document, so saving after every asset grew as the
+    square of the object count and cost more than building the offline assets. A stage calls
+    :meth:`checkpoint` when it has something worth keeping (a paid asset, a drawn image); that
+    writes only when ``interval`` seconds have passed since the last save, so a fast offline
+    stage saves once and a killed run of a slow remote backend loses at most ``interval``
+    seconds of work (files it wrote meanwhile are on disk, but the document does not name
+    them yet, so they are built again).
+    """
+
+    def __init__(self, folder: SceneFolder, scene: Scene, interval: float = 2.0,
+                 clock: Callable[[], float] = time.monotonic) -> None:
+        self.folder, self.scene, self.interval, self._clock = folder, scene, interval, clock
+        self._last = clock()
+        #: How many times the document was written (the benchmarks and tests read it).
+        self.saves = 0
+
+    def save(self) -> None:
+        self.folder.save(self.scene)
+        self.saves += 1
+        self._last = self._clock()
+
+    def checkpoint(self) -> None:
+        if self._clock() - self._last >= self.interval:
+            self.save()
 
 
 def _path_problem(relative: object, kind: str | None) -> str | None:

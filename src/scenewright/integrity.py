@@ -22,6 +22,7 @@ import os
 import re
 from pathlib import Path
 
+from scenewright.assets.load import AssetMeshes
 from scenewright.errors import InputError
 from scenewright.export import assemble
 from scenewright.folder import SceneFolder
@@ -41,9 +42,10 @@ def file_sha256(path: Path) -> str | None:
         return None
 
 
-def assemble_recorded(scene: Scene, folder: SceneFolder) -> Path:
-    """Write ``scene.glb`` from ``scene`` and record its hash in ``scene`` (the caller saves it)."""
-    path = assemble(scene, folder)
+def assemble_recorded(scene: Scene, folder: SceneFolder, meshes: AssetMeshes | None = None) -> Path:
+    """Write ``scene.glb`` from ``scene`` and record its hash in ``scene`` (the caller saves it);
+    ``meshes`` holds the assets the caller has parsed already."""
+    path = assemble(scene, folder, meshes)
     scene.glb_sha256 = file_sha256(path)
     return path
 

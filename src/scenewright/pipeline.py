@@ -3,7 +3,8 @@
 Each stage adds its output to the document and the folder, then its name goes into
 ``scene.done``; a re-run skips every stage that is done and whose output is still on disk.
 When a stage has to run again, every later stage runs again too, since it was built on the
-old output.
+old output. The stages are one table, :data:`PIPELINE` (name, what runs it, whether its output
+is still there), and :func:`run_stages` is the only place a run saves the document.
 """
 
 from __future__ import annotations
@@ -12,18 +13,20 @@ import logging
 import shutil
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from pydantic import ValidationError
 
 from scenewright.analysis.stage import analyze
-from scenewright.assets import generate_assets, load_meshes
+from scenewright.assets import generate_assets
+from scenewright.assets.load import AssetMeshes
 from scenewright.assets.stage import needs_asset
 from scenewright.backends import Backends
 from scenewright.cache import RequestCache
 from scenewright.editing.history import recover
 from scenewright.errors import InputError, MissingExtra
-from scenewright.folder import SceneFolder, as_folder
+from scenewright.folder import DocumentSaver, SceneFolder, as_folder
 from scenewright.integrity import assemble_recorded, finish_first_save, glb_matches, rebuild_glb, remove_temporaries
 from scenewright.layout.stage import arrange
 from scenewright.lock import LOCK_NAME, locked
@@ -32,45 +35,102 @@ from scenewright.settings import Settings
 
 log = logging.getLogger(__name__)
 
-STAGES = ("analyze", "assets", "layout", "export", "render")
-
 #: Called with (stage, message) as the run goes; the CLI turns it into a progress display.
 Progress = Callable[[str, str], None]
 
 
-def _output_present(stage: str, scene: Scene, folder: SceneFolder) -> bool:
-    """Whether what ``stage`` produced is still there (a user may have deleted files)."""
-    if stage == "analyze":
-        return bool(scene.objects) and folder.ground_image.is_file()
-    if stage == "assets":
-        return not any(needs_asset(obj, folder) for obj in scene.objects)
-    if stage == "layout":
-        return scene.layout is not None
-    if stage == "export":
-        return glb_matches(scene, folder) if scene.glb_sha256 is not None else folder.glb.is_file()
-    return folder.renders.is_dir() and any(folder.renders.glob("*.png"))
+@dataclass
+class Run:
+    """What the stages of one run share: the document, its folder, the backends and settings,
+    and the assets parsed so far (each asset file is parsed once per run, see
+    :class:`~scenewright.assets.load.AssetMeshes`)."""
+
+    scene: Scene
+    folder: SceneFolder
+    backends: Backends
+    settings: Settings
+    saver: DocumentSaver
+    #: Preview quality of the render stage (see :data:`scenewright.render.PREVIEWS`).
+    preview: str = "default"
+    note: Callable[[str], None] = lambda message: None
+    meshes: AssetMeshes = field(default_factory=AssetMeshes)
 
 
-def _pending(scene: Scene, folder: SceneFolder) -> list[str]:
-    """Stages to run: from the first one not done (or whose output is gone) to the end."""
-    for index, stage in enumerate(STAGES):
-        if stage not in scene.done or not _output_present(stage, scene, folder):
-            return list(STAGES[index:])
-    return []
+@dataclass(frozen=True)
+class Stage:
+    """One step of the pipeline: ``run`` adds its output to the document and the folder (and
+    says False when it could not, so the run stops there without marking it done), ``present``
+    says whether that output is still there (a user may have deleted files)."""
+
+    name: str
+    run: Callable[[Run], bool]
+    present: Callable[[Run], bool]
 
 
-def _render(scene: Scene, folder: SceneFolder, note: Callable[[str], None]) -> bool:
+def _analyze(run: Run) -> bool:
+    analyze(run.scene, run.folder, run.backends.vlm, run.backends.images, run.note, checkpoint=run.saver.checkpoint)
+    return True
+
+
+def _assets(run: Run) -> bool:
+    generate_assets(
+        run.scene, run.folder, run.backends.meshes, RequestCache(run.settings.cache_dir), run.note,
+        max_faces=run.settings.max_faces, store=run.meshes, checkpoint=run.saver.checkpoint,
+    )
+    return True
+
+
+def _layout(run: Run) -> bool:
+    arrange(
+        run.scene,
+        run.folder,
+        run.backends.vlm,
+        run.meshes.of(run.scene, run.folder),
+        rounds=run.settings.feedback_rounds,
+        time_limit=run.settings.time_limit,
+    )
+    return True
+
+
+def _export(run: Run) -> bool:
+    path = assemble_recorded(run.scene, run.folder, run.meshes)
+    run.scene.record("export", f"wrote {run.folder.relative(path)}")
+    return True
+
+
+def _render(run: Run) -> bool:
     """Preview renders when Blender is installed; without it the scene is complete all the same."""
     from scenewright.render import render
 
     try:
-        paths = render(scene, folder, draft=False)
+        paths = render(run.scene, run.folder, preview=run.preview, meshes=run.meshes)
     except MissingExtra as exc:
         log.warning("no preview renders: %s", exc)
-        note("skipped: Blender (the render extra) is not installed")
+        run.note("skipped: Blender (the render extra) is not installed")
         return False
-    scene.record("render", f"rendered {len(paths)} previews", files=[Path(p).name for p in paths])
+    run.scene.record("render", f"rendered {len(paths)} previews", files=[Path(p).name for p in paths])
     return True
+
+
+#: The pipeline, in order. A re-run skips every stage that is done and whose output is still
+#: there; when a stage has to run again, every later stage runs again too.
+PIPELINE: tuple[Stage, ...] = (
+    Stage("analyze", _analyze, lambda r: bool(r.scene.objects) and r.folder.ground_image.is_file()),
+    Stage("assets", _assets, lambda r: not any(needs_asset(o, r.folder, r.meshes) for o in r.scene.objects)),
+    Stage("layout", _layout, lambda r: r.scene.layout is not None),
+    Stage("export", _export, lambda r: glb_matches(r.scene, r.folder) if r.scene.glb_sha256 is not None
+          else r.folder.glb.is_file()),
+    Stage("render", _render, lambda r: r.folder.renders.is_dir() and any(r.folder.renders.glob("*.png"))),
+)
+STAGES = tuple(stage.name for stage in PIPELINE)
+
+
+def _pending(run: Run) -> list[Stage]:
+    """Stages to run: from the first one not done (or whose output is gone) to the end."""
+    for index, stage in enumerate(PIPELINE):
+        if stage.name not in run.scene.done or not stage.present(run):
+            return list(PIPELINE[index:])
+    return []
 
 
 @contextmanager
@@ -88,10 +148,6 @@ def writing(folder: SceneFolder, timeout: float) -> Iterator[SceneFolder]:
         yield folder
 
 
-def _stage_note(progress: Progress | None, stage: str) -> Callable[[str], None]:
-    return (lambda message: progress(stage, message)) if progress else (lambda message: None)
-
-
 def run_stages(
     scene: Scene,
     folder: SceneFolder,
@@ -99,58 +155,58 @@ def run_stages(
     backends: Backends,
     settings: Settings,
     render: bool = True,
+    preview: str = "default",
     progress: Progress | None = None,
 ) -> Scene:
-    """Run every stage of ``scene`` that is not done yet; save the document after each."""
-    cache = RequestCache(settings.cache_dir)
+    """Run every stage of ``scene`` that is not done yet; save the document after each.
+
+    This is the one place a run saves its document: once per stage, also when a stage stops
+    with an error or Ctrl-C (what it finished is kept), and at the checkpoints a long stage
+    asks for (see :class:`~scenewright.folder.DocumentSaver`).
+    """
     scene.backends = backends.names()
-    pending = _pending(scene, folder)
-    scene.done = [s for s in scene.done if s not in pending]
+    run = Run(scene, folder, backends, settings, DocumentSaver(folder, scene), preview)
+    pending = _pending(run)
+    scene.done = [s for s in scene.done if s not in {stage.name for stage in pending}]
     for stage in pending:
-        if stage == "render" and not render:
+        if stage.name == "render" and not render:
             break
-        note = _stage_note(progress, stage)
-        note("started")
-        if stage == "analyze":
-            analyze(scene, folder, backends.vlm, backends.images, note)
-        elif stage == "assets":
-            generate_assets(scene, folder, backends.meshes, cache, note, max_faces=settings.max_faces)
-        elif stage == "layout":
-            arrange(
-                scene,
-                folder,
-                backends.vlm,
-                load_meshes(scene, folder),
-                rounds=settings.feedback_rounds,
-                time_limit=settings.time_limit,
-            )
-        elif stage == "export":
-            path = assemble_recorded(scene, folder)
-            scene.record(stage, f"wrote {folder.relative(path)}")
-        elif not _render(scene, folder, note):
+        run.note = (lambda message, name=stage.name: progress(name, message)) if progress else (lambda message: None)
+        run.note("started")
+        try:
+            finished = stage.run(run)
+            if finished:
+                scene.done.append(stage.name)
+        finally:
+            run.saver.save()
+        if not finished:
             break
-        scene.done.append(stage)
-        folder.save(scene)
-        note("done")
+        run.note("done")
     return scene
 
 
-def _new_scene(text: str, style: str | None, seed: int) -> Scene:
+def _new_scene(text: str, style: str | None, seed: int, offline: bool) -> Scene:
     """A scene with the style (the flag, else the one the text names, else the default) and the
-    ground kind read from the text by the offline parser, whichever backends run the stages.
+    ground kind the text names.
 
+    With the offline model the ground kind comes from its parse of the text (the same parse
+    the analysis stage uses, cached), which knows whether the objects stand indoors. With a
+    remote model the offline parser does not run at all (it would cost time and could refuse
+    a text the model reads well): the kind is read from the text's words alone.
     Made before the folder is touched, so bad input leaves nothing behind.
     """
-    from scenewright.analysis.parser import parse_scene
+    from scenewright.analysis.parser import _is_indoor, detect_ground, detect_style, parse_scene
 
     try:
         scene = Scene(text=text, seed=seed, **({"style": style.strip().lower()} if style and style.strip() else {}))
     except ValidationError as exc:
         raise InputError(describe_validation_error(exc)) from None
-    parsed = parse_scene(text)
     if not (style and style.strip()):
-        scene.style = parsed.style
-    scene.ground.kind = parsed.ground
+        scene.style = detect_style(text)
+    if offline:
+        scene.ground.kind = parse_scene(text).ground
+    else:
+        scene.ground.kind = detect_ground(text, _is_indoor([], text, None))
     return scene
 
 
@@ -163,6 +219,7 @@ def generate(
     style: str | None = None,
     seed: int = 0,
     render: bool = True,
+    preview: str = "default",
     progress: Progress | None = None,
 ) -> Scene:
     """Make the scene ``text`` describes in ``folder``; resume it when the folder holds it already."""
@@ -172,7 +229,7 @@ def generate(
         raise InputError(
             "the text is empty; describe the scene, e.g. 'a cosy reading corner with an armchair'"
         )
-    candidate = _new_scene(text, style, seed)
+    candidate = _new_scene(text, style, seed, offline=backends.vlm.name == "offline")
     existed = folder.root.exists()
     folder.create()
     with writing(folder, settings.lock_timeout):
@@ -192,7 +249,8 @@ def generate(
             folder.save(scene)
         try:
             return run_stages(
-                scene, folder, backends=backends, settings=settings, render=render, progress=progress
+                scene, folder, backends=backends, settings=settings, render=render, preview=preview,
+                progress=progress,
             )
         except InputError:
             if fresh and not scene.objects:
@@ -220,10 +278,13 @@ def resume(
     backends: Backends,
     settings: Settings,
     render: bool = True,
+    preview: str = "default",
     progress: Progress | None = None,
 ) -> Scene:
     """Finish an interrupted scene: run only the stages it has not completed."""
     folder = as_folder(folder)
     with writing(folder, settings.lock_timeout):
         scene = folder.load()
-        return run_stages(scene, folder, backends=backends, settings=settings, render=render, progress=progress)
+        return run_stages(
+            scene, folder, backends=backends, settings=settings, render=render, preview=preview, progress=progress
+        )

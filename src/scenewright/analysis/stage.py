@@ -2,7 +2,8 @@
 
 Each step writes its output into the scene folder and the document before the next starts,
 and is skipped when that output is already there, so an interrupted run resumes where it
-stopped. Paid answers are cached by the remote backends themselves (keyed by the whole
+stopped. The stage does not save the document itself: the pipeline does, when the stage ends,
+and at the checkpoints this stage offers after each step (``checkpoint``). Paid answers are cached by the remote backends themselves (keyed by the whole
 request), so a fresh run of the same text pays for nothing twice; the offline backends are
 cheap enough to ask again.
 """
@@ -118,21 +119,23 @@ def analyze(
     vlm: VisionLanguageModel,
     images: ImageGenerator,
     progress: Callable[[str], None] | None = None,
+    *,
+    checkpoint: Callable[[], None] = lambda: None,
 ) -> Scene:
-    """Fill ``scene`` with its objects, their images and the ground texture; save after each step."""
+    """Fill ``scene`` with its objects, their images and the ground texture, offering a
+    ``checkpoint`` after each step (the caller saves; see :class:`~scenewright.folder.DocumentSaver`)."""
     _note(progress, "reference image")
     reference = _reference(scene, folder, images)
     if not scene.objects:
         _note(progress, "reading the objects from the text")
         _objects(scene, vlm, reference)
-        folder.save(scene)
+        checkpoint()
     _note(progress, f"object images for {len(scene.objects)} objects")
     _object_images(scene, folder, images, reference, progress)
-    folder.save(scene)
+    checkpoint()
     _note(progress, "quality control")
     _remove_redundant(scene, folder, vlm)
-    folder.save(scene)
+    checkpoint()
     _note(progress, "ground texture")
     _ground(scene, folder, images, reference)
-    folder.save(scene)
     return scene

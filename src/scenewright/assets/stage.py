@@ -5,10 +5,13 @@ twice: an object whose asset file is on disk is skipped, the backend's raw answe
 by a hash of the request, and the document is saved as each asset lands, so a killed run
 resumes with only the unfinished objects. Requests go to the backend one per call, as many
 at a time as the backend asks for (its ``concurrency``: the jobs it runs at once, or all of
-them when it queues jobs itself), which lets each
-finished asset be stored at once instead of waiting for the whole batch. A backend with a
-``provenance(ids)`` method says which server built which asset and which attempts failed;
-that goes into the scene's record with the stage's own summary.
+them when it queues jobs itself), which lets each finished asset be stored at once instead of
+waiting for the whole batch. A backend with a ``provenance(ids)`` method says which server
+built which asset and which attempts failed; that goes into the scene's record with the
+stage's own summary. The stage does not save the document: the caller does when it ends
+(also on an error or Ctrl-C) and at the checkpoints offered as each asset lands. The bytes
+written go into the run's :class:`~scenewright.assets.load.AssetMeshes`, so the later stages
+do not read and parse them again.
 """
 
 from __future__ import annotations
@@ -17,7 +20,7 @@ import logging
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor, as_completed
 
-from scenewright.assets.load import asset_problem
+from scenewright.assets.load import AssetMeshes
 from scenewright.assets.normalise import normalise, to_glb
 from scenewright.core.protocols import MeshGenerator, MeshRequest
 from scenewright.cache import RequestCache, request_key
@@ -31,9 +34,9 @@ log = logging.getLogger(__name__)
 CACHE_KIND = "meshes"
 
 
-def needs_asset(obj: SceneObject, folder: SceneFolder) -> bool:
+def needs_asset(obj: SceneObject, folder: SceneFolder, store: AssetMeshes) -> bool:
     """Whether ``obj`` has no usable asset: none, missing, empty, corrupt or without triangles."""
-    problem = asset_problem(obj, folder)
+    problem = store.problem(obj, folder)
     if problem is not None and obj.asset is not None:
         log.warning("object %r: %s; it is built again", obj.id, problem)
     return problem is not None
@@ -85,13 +88,18 @@ def generate_assets(
     progress: Callable[[str], None] | None = None,
     *,
     max_faces: int | None = None,
+    store: AssetMeshes | None = None,
+    checkpoint: Callable[[], None] = lambda: None,
 ) -> Scene:
     """Build every missing asset of ``scene`` (in place), writing ``assets/<id>.glb``.
 
     Each object gets ``asset`` and the x/y size of its rescaled mesh. When some objects
-    fail, the others are still stored and a BackendError names each failure.
+    fail, the others are still stored and a BackendError names each failure. ``store`` (the
+    run's parsed assets) learns each file written; ``checkpoint`` is offered after each one
+    (the caller saves the document, see :class:`~scenewright.folder.DocumentSaver`).
     """
-    todo = [obj for obj in scene.objects if needs_asset(obj, folder)]
+    parsed = store if store is not None else AssetMeshes()
+    todo = [obj for obj in scene.objects if needs_asset(obj, folder, parsed)]
     if not todo:
         return scene
     requests = {obj.id: mesh_request(obj, folder, scene.style) for obj in todo}
@@ -114,10 +122,12 @@ def generate_assets(
         except BackendError as exc:
             failures[oid] = str(exc)
             return
-        path = write_atomic(folder.asset(oid), to_glb(asset, source=glb))
+        data = to_glb(asset, source=glb)
+        path = write_atomic(folder.asset(oid), data)
+        parsed.add(path, data)
         obj.asset = folder.relative(path)
         obj.size = size
-        folder.save(scene)
+        checkpoint()
         if progress:
             progress(oid)
 
@@ -166,7 +176,6 @@ def generate_assets(
     scene.record("assets", f"built {len(built)} assets with {meshes.name}", objects=built,
                  from_cache=sorted(set(raw) & set(built)),
                  **(servers([r.id for r in missing]) if callable(servers) else {}))
-    folder.save(scene)
     if failures:
         details = "; ".join(f"{oid}: {why}" for oid, why in failures.items())
         raise BackendError(

@@ -21,6 +21,7 @@ from scenewright.cli.options import (
     MaxFacesOption,
     MaxObjectsOption,
     MeshesOption,
+    PreviewOption,
     ReasoningEffortOption,
     TimeoutOption,
     VlmOption,
@@ -87,6 +88,7 @@ def generate_command(
     ] = None,
     seed: Annotated[int, typer.Option("--seed", help="Seed of the layout search and procedural looks.")] = 0,
     no_render: Annotated[bool, typer.Option("--no-render", help="Skip the Blender preview renders.")] = False,
+    preview: PreviewOption = "default",
     resume_dir: Annotated[
         Path | None, typer.Option("--resume", help="Finish an interrupted scene folder instead of a new one.")
     ] = None,
@@ -128,6 +130,10 @@ def generate_command(
     if resume_dir is None and out is None:
         raise InputError("--out DIR is required: the folder to write the scene into")
     check_seed(seed)
+    from scenewright.render import PREVIEWS
+
+    if preview not in PREVIEWS:  # before the run, not at its end
+        raise InputError(f"--preview {preview!r}: choose {', '.join(PREVIEWS)}")
     settings = build_settings(
         vlm=vlm,
         images=images,
@@ -158,7 +164,8 @@ def generate_command(
         report = _StageProgress(bar)
         if resume_dir is not None:
             scene = resume(
-                folder, backends=backends, settings=settings, render=not no_render, progress=report
+                folder, backends=backends, settings=settings, render=not no_render, preview=preview,
+                progress=report,
             )
         else:
             scene = generate(
@@ -169,6 +176,7 @@ def generate_command(
                 style=style,
                 seed=seed,
                 render=not no_render,
+                preview=preview,
                 progress=report,
             )
     _summary(Console(soft_wrap=True), folder, scene)

@@ -31,6 +31,10 @@ ConfigOption = Annotated[
     Path | None,
     typer.Option("--config", help=f"TOML file with the same keys (default: ./{DEFAULT_CONFIG} when present)."),
 ]
+PreviewOption = Annotated[
+    str,
+    typer.Option("--preview", help="Render quality: draft (480x270, seconds), default (1280x720) or final (1920x1080)."),
+]
 ApiKeyEnvOption = Annotated[
     str | None,
     typer.Option("--api-key-env", help="Environment variable holding the API key (default OPENAI_API_KEY)."),

@@ -9,7 +9,7 @@ import typer
 
 from scenewright.cli.app import app, on_interrupt
 from scenewright.cli.display import printable
-from scenewright.cli.options import ConfigOption, build_settings
+from scenewright.cli.options import ConfigOption, PreviewOption, build_settings
 from scenewright.errors import InputError
 from scenewright.folder import SceneFolder
 
@@ -28,29 +28,30 @@ def render_command(
     views: Annotated[
         str, typer.Option("--views", help="best: render the view showing most objects; all: the three views.")
     ] = "best",
-    draft: Annotated[bool, typer.Option("--draft", help="Tiny, noisy and fast: for checks, not for looking at.")] = False,
-    resolution: Annotated[str, typer.Option("--resolution", help="WIDTHxHEIGHT in pixels.")] = "1280x720",
-    samples: Annotated[int | None, typer.Option("--samples", help="Cycles samples per pixel (denoised).")] = None,
+    preview: PreviewOption = "default",
+    draft: Annotated[bool, typer.Option("--draft", help="Same as --preview draft.")] = False,
+    resolution: Annotated[str | None, typer.Option("--resolution", help="WIDTHxHEIGHT in pixels [default: the preview's].")] = None,
+    samples: Annotated[int | None, typer.Option("--samples", help="Cycles samples per pixel, denoised [default: the preview's].")] = None,
     transparent: Annotated[bool, typer.Option("--transparent", help="Transparent background instead of the sky.")] = False,
     config: ConfigOption = None,
 ) -> None:
     """Render previews with Blender (Cycles on the CPU) into DIR/renders/."""
     from scenewright.pipeline import writing
-    from scenewright.render import DEFAULT_SAMPLES, render, render_info
+    from scenewright.render import render, render_info
 
     if views not in ("best", "all"):
         raise InputError(f"--views {views!r}: choose best or all")
     settings = build_settings(config=config)
-    size = parse_resolution(resolution)
+    size = parse_resolution(resolution) if resolution is not None else None
     on_interrupt(lambda: f"the previews were left as they were; render again with `scenewright render {directory}`")
     with writing(SceneFolder(directory), settings.lock_timeout) as folder:
         paths = render(
             folder.load(),
             folder,
             keep_all=views == "all",
+            preview="draft" if draft else preview,
             resolution=size,
-            samples=samples if samples is not None else DEFAULT_SAMPLES,
-            draft=draft,
+            samples=samples,
             transparent=transparent,
             max_pixels=settings.max_render_pixels,
             max_samples=settings.max_render_samples,

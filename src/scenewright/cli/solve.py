@@ -15,7 +15,6 @@ from scenewright.cli.app import app
 from scenewright.cli.options import check_seed
 from scenewright.errors import InfeasibleLayout, InputError
 from scenewright.files import write_atomic
-from scenewright.layout import feedback_text, solve
 from scenewright.scene import SceneObject, describe_validation_error
 
 log = logging.getLogger(__name__)
@@ -108,6 +107,8 @@ def solve_command(
     check_seed(seed)
     if not 0 < time_limit < float("inf"):
         raise InputError(f"--time-limit must be a finite number of seconds > 0, got {time_limit}")
+    from scenewright.layout import feedback_text, solve  # the solver pulls trimesh and fcl: only when solving
+
     raw, objects = load_objects(objects_file)
     constraints = load_constraints(constraints_file)
     result = solve(objects, constraints, bounds=parse_bounds(bounds), time_limit=time_limit, seed=seed)

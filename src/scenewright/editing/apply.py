@@ -24,7 +24,8 @@ import numpy as np
 import trimesh
 from pydantic import ValidationError
 
-from scenewright.assets import asset_mesh, generate_assets, load_meshes
+from scenewright.assets import asset_mesh, generate_assets
+from scenewright.assets.load import AssetMeshes
 from scenewright.core.protocols import Backends
 from scenewright.cache import RequestCache
 from scenewright.editing.history import commit
@@ -52,10 +53,23 @@ class _Edit:
     #: relative path → bytes of new files (assets, object images), named by their content.
     files: dict[str, bytes] = field(default_factory=dict)
     seconds_solving: float = 0.0
+    #: The stored assets, parsed once (by the caller's store, which may serve many edits).
+    assets: AssetMeshes = field(default_factory=AssetMeshes)
 
 
-def apply_edit(scene: Scene, folder: SceneFolder, instruction: str, *, backends: Backends, settings: Settings) -> Scene:
-    """Carry out ``instruction`` on the scene in ``folder``; save it, its history and ``scene.glb``."""
+def apply_edit(
+    scene: Scene,
+    folder: SceneFolder,
+    instruction: str,
+    *,
+    backends: Backends,
+    settings: Settings,
+    meshes: AssetMeshes | None = None,
+) -> Scene:
+    """Carry out ``instruction`` on the scene in ``folder``; save it, its history and ``scene.glb``.
+
+    ``meshes`` holds the assets parsed by earlier edits of the same caller (a studio session);
+    without it each asset is parsed once for this edit."""
     if not folder.is_scene():
         folder.load()  # raises the "not a scene folder" error, naming the folder
     if not instruction.strip():
@@ -64,8 +78,9 @@ def apply_edit(scene: Scene, folder: SceneFolder, instruction: str, *, backends:
         )
     answer = backends.vlm.plan_edit(scene, instruction)
     plan = answer.value
+    meshes = meshes if meshes is not None else AssetMeshes()
     try:
-        edit = run_plan(scene, folder, plan, backends=backends, settings=settings)
+        edit = run_plan(scene, folder, plan, backends=backends, settings=settings, meshes=meshes)
     except ValidationError as exc:  # a pose or size out of bounds: the answer asked for the impossible
         raise InputError(
             f"the edit {plan.operation} {plan.focus} would give an invalid scene, so nothing was written: "
@@ -75,14 +90,23 @@ def apply_edit(scene: Scene, folder: SceneFolder, instruction: str, *, backends:
     edit.scene.record(STAGE, f"{plan.operation} {plan.focus}: {instruction.strip()}",
                       backend=backends.vlm.name, changes=edit.changes)
     commit(folder, edit.scene, edit.files, instruction=instruction.strip(), operation=plan.operation,
-           focus=plan.focus, changes=edit.changes)
+           focus=plan.focus, changes=edit.changes, meshes=meshes)
     return edit.scene
 
 
-def run_plan(scene: Scene, folder: SceneFolder, plan: EditPlan, *, backends: Backends, settings: Settings) -> _Edit:
-    """The edited document (a copy) and its new files; writes nothing."""
+def run_plan(
+    scene: Scene,
+    folder: SceneFolder,
+    plan: EditPlan,
+    *,
+    backends: Backends,
+    settings: Settings,
+    meshes: AssetMeshes | None = None,
+) -> _Edit:
+    """The edited document (a copy) and its new files; writes nothing. ``meshes`` holds the
+    assets the caller has parsed already."""
     plan = validate_plan(scene, plan)
-    edit = _Edit(scene=scene.model_copy(deep=True), plan=plan)
+    edit = _Edit(scene=scene.model_copy(deep=True), plan=plan, assets=meshes if meshes is not None else AssetMeshes())
     if plan.operation == "delete":
         _delete(edit)
     elif plan.operation == "move":
@@ -168,32 +192,9 @@ def _carry(scene: Scene, ids: list[str], before: SceneObject, after: SceneObject
         obj.rotation = Vec3(x=obj.rotation.x, y=obj.rotation.y, z=(obj.yaw + turn + 180.0) % 360.0 - 180.0)
 
 
-#: Parsed assets by (path, mtime, size): a session editing one scene again and again parses each
-#: asset once, and the solver's per-mesh collision structures (cached per mesh object) survive
-#: between edits too. Asset files are never rewritten in place, so a key never goes stale.
-_MESHES: dict[tuple[str, int, int], trimesh.Trimesh] = {}
-_MESHES_KEPT = 512
-
-
-def _meshes(scene: Scene, folder: SceneFolder, staged: dict[str, trimesh.Trimesh]) -> dict[str, trimesh.Trimesh]:
+def _meshes(edit: _Edit, folder: SceneFolder, staged: dict[str, trimesh.Trimesh]) -> dict[str, trimesh.Trimesh]:
     """The stored meshes of every object, with the ones built by this edit in their place."""
-    found: dict[str, trimesh.Trimesh] = {}
-    keys: dict[str, tuple[str, int, int]] = {}
-    for obj in scene.objects:
-        path = folder.asset_of(obj)
-        if obj.id in staged or path is None:
-            continue
-        stat = path.stat() if path.is_file() else None
-        if stat is not None:
-            keys[obj.id] = (str(path.resolve()), stat.st_mtime_ns, stat.st_size)
-            if keys[obj.id] in _MESHES:
-                found[obj.id] = _MESHES[keys[obj.id]]
-    missing = [o for o in scene.objects if o.id not in staged and o.id not in found]
-    loaded = load_meshes(scene.model_copy(update={"objects": missing}), folder)
-    if len(_MESHES) + len(loaded) > _MESHES_KEPT:
-        _MESHES.clear()
-    _MESHES.update({keys[oid]: mesh for oid, mesh in loaded.items() if oid in keys})
-    return {**found, **loaded, **staged}
+    return {**edit.assets.of(edit.scene, folder, skip=set(staged)), **staged}
 
 
 def _place(
@@ -355,7 +356,7 @@ def _move(edit: _Edit, folder: SceneFolder, settings: Settings) -> None:
             f"so {focus.id} cannot be placed against it; move that first"
         )
     turning, placing, mine = _renew_constraints(edit, focus.id)
-    meshes = _meshes(scene, folder, {})
+    meshes = _meshes(edit, folder, {})
     if plan.yaw is not None:
         focus.rotation = Vec3(x=focus.rotation.x, y=focus.rotation.y, z=plan.yaw)
     if not placing and turning:  # turn in place towards the target when nothing is in the way
@@ -446,7 +447,7 @@ def _replace(edit: _Edit, folder: SceneFolder, backends: Backends, settings: Set
     z = focus.size
     edit.changes.append(f"{focus.id} is now {focus.name!r} ({focus.visual_description}), "
                         f"{z.x:.2f} × {z.y:.2f} × {z.z:.2f} m")
-    meshes = _meshes(scene, folder, {focus.id: mesh})
+    meshes = _meshes(edit, folder, {focus.id: mesh})
     carried = riders(scene, focus.id)
     _, placing, mine = _renew_constraints(edit, focus.id)
     if plan.yaw is not None:
@@ -495,7 +496,7 @@ def _add(edit: _Edit, folder: SceneFolder, backends: Backends, settings: Setting
     scene.objects.append(obj)
     mesh = _stage_asset(edit, obj, folder, backends, settings)
     scene.constraints = scene.constraints + list(plan.constraints)
-    meshes = _meshes(scene, folder, {obj.id: mesh})
+    meshes = _meshes(edit, folder, {obj.id: mesh})
     scene.remember_initial_poses([obj.id])  # where it starts, at its built size: its layout without the solver
     _place(edit, [obj.id], list(plan.constraints), meshes, settings)
     p = obj.position

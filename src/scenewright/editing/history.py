@@ -26,6 +26,7 @@ from pathlib import Path
 
 from pydantic import ValidationError
 
+from scenewright.assets.load import AssetMeshes
 from scenewright.errors import InputError
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
@@ -202,8 +203,10 @@ def commit(
     operation: str,
     focus: str,
     changes: list[str],
+    meshes: AssetMeshes | None = None,
 ) -> int:
     """Write an edited scene: its new files, ``scene.glb``, then the document and its history.
+    ``meshes`` holds the assets the edit has parsed already.
 
     Nothing is written when the edited document does not validate. An interruption before the
     document is saved leaves the old one in effect (new asset files have fresh names and the
@@ -226,7 +229,7 @@ def commit(
             path = folder.resolve(relative)
             if not path.exists():
                 written.append(write_atomic(path, data))
-        assemble_recorded(scene, folder)
+        assemble_recorded(scene, folder, meshes)
         document = scene.to_json().encode("utf-8")
         record = {
             "number": number, "instruction": instruction, "operation": operation, "focus": focus,

@@ -14,14 +14,14 @@ from pathlib import Path
 import numpy as np
 import trimesh
 
+from scenewright.assets.load import AssetMeshes
 from scenewright.version import __version__
-from scenewright.assets.normalise import parse_glb
 from scenewright.errors import InputError
 from scenewright.export.ground import ground_mesh
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
 from scenewright.geometry import GLTF_TO_SCENE, SCENE_TO_GLTF, object_matrix
-from scenewright.gltf import keep_materials, mesh_materials
+from scenewright.gltf import keep_materials
 from scenewright.scene import Scene, SceneObject
 
 log = logging.getLogger(__name__)
@@ -53,13 +53,14 @@ def _asset_paths(scene: Scene, folder: SceneFolder) -> dict[str, Path]:
     return paths
 
 
-def _add_object(target: trimesh.Scene, obj: SceneObject, path: Path, materials: dict[str, dict]) -> None:
+def _add_object(
+    target: trimesh.Scene, obj: SceneObject, path: Path, materials: dict[str, dict], store: AssetMeshes
+) -> None:
     """Hang the asset's meshes under the object's node; ``materials`` learns each new mesh's
     material as the asset file wrote it (trimesh's copy is rounded and loses extensions)."""
-    data = path.read_bytes()
     try:
-        asset = parse_glb(data)
-        source = mesh_materials(data)
+        parsed = store.parsed(path)
+        asset, source = parsed.asset, parsed.materials()
     except ValueError as exc:
         raise InputError(f"cannot assemble object {obj.id!r}: its asset {path} is broken ({exc})") from None
     target.graph.update(frame_to=obj.id, frame_from=target.graph.base_frame, matrix=node_matrix(obj))
@@ -105,14 +106,18 @@ def _describe_nodes(scene: Scene, materials: dict[str, dict]):
     return postprocess
 
 
-def build_scene(scene: Scene, folder: SceneFolder) -> tuple[trimesh.Scene, dict[str, dict]]:
+def build_scene(
+    scene: Scene, folder: SceneFolder, meshes: AssetMeshes | None = None
+) -> tuple[trimesh.Scene, dict[str, dict]]:
     """The scene graph of ``scene.glb`` (a node per object, named by id, and the ground) and the
-    assets' exact glTF materials by mesh name, which trimesh's own export would round."""
+    assets' exact glTF materials by mesh name, which trimesh's own export would round.
+    ``meshes`` holds the assets the caller has parsed already."""
     paths = _asset_paths(scene, folder)
+    store = meshes if meshes is not None else AssetMeshes()
     glb = trimesh.Scene()
     materials: dict[str, dict] = {}
     for obj in scene.objects:
-        _add_object(glb, obj, paths[obj.id], materials)
+        _add_object(glb, obj, paths[obj.id], materials, store)
     texture = folder.ground_texture(scene)
     glb.add_geometry(
         ground_mesh(scene.objects, scene.bounds, texture), geom_name=GROUND_NODE, node_name=GROUND_NODE
@@ -125,9 +130,9 @@ def glb_bytes(glb: trimesh.Scene, scene: Scene, materials: dict[str, dict]) -> b
     return trimesh.exchange.gltf.export_glb(glb, tree_postprocessor=_describe_nodes(scene, materials))
 
 
-def assemble(scene: Scene, folder: SceneFolder) -> Path:
+def assemble(scene: Scene, folder: SceneFolder, meshes: AssetMeshes | None = None) -> Path:
     """Write ``scene.glb`` (metres, +Y up) from the objects' assets and poses; return its path."""
-    glb, materials = build_scene(scene, folder)
+    glb, materials = build_scene(scene, folder, meshes)
     data = glb_bytes(glb, scene, materials)
     log.info("assembled %d objects into %s", len(scene.objects), folder.glb)
     return write_atomic(folder.glb, data)

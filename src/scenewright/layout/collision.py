@@ -2,8 +2,10 @@
 
 The broad phase compares world bounding boxes (of the size box, grown to the mesh's extent
 when a mesh pokes out of it) for many candidate poses at once. Pairs whose boxes overlap by
-more than :data:`TOUCH` on every axis go to fcl: each mesh becomes one BVH model, built once
-per mesh and cached, and only its transform changes per candidate; an object without a mesh
+more than :data:`TOUCH` on every axis go to fcl: each mesh becomes one BVH model, built the
+first time a pair with it reaches fcl (most never do: building all of them up front cost more
+than the whole search on a sparse scene) and cached per mesh, and only its transform changes
+per candidate; an object without a mesh
 collides as its oriented size box. Boxes that only touch never collide, and a pair linked by
 an ``on`` constraint (resting contact) is exempt. fcl tests a mesh's triangles, not the solid
 they close, so an object wholly inside a mesh (a crate inside a building, a box inside a
@@ -94,7 +96,10 @@ class CollisionWorld:
         #: Whether the shape is exactly the (tilted, turned) size box.
         self.is_box = np.zeros(n, dtype=bool)
         self.meshes: list[trimesh.Trimesh | None] = []
-        self.shapes: list[fcl.CollisionObject] = []
+        #: fcl objects, made on first use by :meth:`_shape`; ``None`` until then.
+        self.shapes: list[fcl.CollisionObject | None] = [None] * n
+        #: Each object's last pose as (rotation, translation of the shape's origin).
+        self.poses: list[tuple[np.ndarray, np.ndarray]] = [(np.eye(3), np.zeros(3))] * n
         for i, o in enumerate(objects):
             half = np.array(o.size.tuple()) / 2.0
             mesh = meshes.get(o.id)
@@ -106,12 +111,9 @@ class CollisionWorld:
                 self.offset[i] = (0.0, 0.0, -half[2])
                 bounds = np.asarray(mesh.bounds) + self.offset[i]
                 half = np.maximum(half, np.abs(bounds).max(axis=0))
-                geom = _bvh(mesh)
             else:
-                geom = fcl.Box(*np.maximum(np.array(o.size.tuple()) - 2 * TOUCH, TOUCH))
                 self.is_box[i] = True
             self.local_half[i] = half
-            self.shapes.append(fcl.CollisionObject(geom, fcl.Transform()))
         index = {x: i for i, x in enumerate(self.ids)}
         self.exempt = np.zeros((n, n), dtype=bool)
         for pair in exempt:
@@ -146,9 +148,23 @@ class CollisionWorld:
         self.tilt[i], self.upright[i], self.offset[i] = np.eye(3), True, 0.0
         self.local_half[i] = (radius, radius, half_z)
 
+    def _shape(self, i: int) -> fcl.CollisionObject:
+        """``i``'s fcl object at its last pose, built now if no pair needed it before."""
+        shape = self.shapes[i]
+        if shape is None:
+            mesh = self.meshes[i]
+            if mesh is not None:
+                geom = _bvh(mesh)
+            else:
+                geom = fcl.Box(*np.maximum(2 * self.local_half[i] - 2 * TOUCH, TOUCH))
+            shape = self.shapes[i] = fcl.CollisionObject(geom, fcl.Transform(*self.poses[i]))
+        return shape
+
     def _pose(self, i: int, centre: np.ndarray, yaw: float) -> None:
         r = _yaw_rotation(self.tilt[i], yaw)
-        self.shapes[i].setTransform(fcl.Transform(r, np.asarray(centre, dtype=float) + r @ self.offset[i]))
+        self.poses[i] = (r, np.asarray(centre, dtype=float) + r @ self.offset[i])
+        if self.shapes[i] is not None:
+            self.shapes[i].setTransform(fcl.Transform(*self.poses[i]))
 
     def place(self, i: int, centre: np.ndarray, yaw: float) -> None:
         lo, hi = self.boxes(i, np.asarray(centre, dtype=float)[None], np.array([yaw]))
@@ -184,7 +200,7 @@ class CollisionWorld:
             if not posed:
                 self._pose(i, centre, yaw)
                 posed = True
-            if fcl.collide(self.shapes[i], self.shapes[j], fcl.CollisionRequest(), fcl.CollisionResult()):
+            if fcl.collide(self._shape(i), self._shape(int(j)), fcl.CollisionRequest(), fcl.CollisionResult()):
                 hits.append(int(j))
             elif self.has_mesh[i] or self.has_mesh[j]:  # boxes alone are solid to fcl
                 if box is None:
@@ -202,12 +218,11 @@ class CollisionWorld:
         mesh = self.meshes[outer]
         if mesh is None:
             return False  # a box is solid to fcl: it has already seen this
-        shape = self.shapes[inner]
-        point = shape.getTranslation()
+        rotation, point = self.poses[inner]
         if self.meshes[inner] is not None:  # a vertex: a mesh's origin may lie outside it
-            point = shape.getRotation() @ self.meshes[inner].vertices[0] + point
-        frame = self.shapes[outer]
-        local = frame.getRotation().T @ (point - frame.getTranslation())
+            point = rotation @ self.meshes[inner].vertices[0] + point
+        frame, origin = self.poses[outer]
+        local = frame.T @ (point - origin)
         return _winding_number(mesh, local) > 0.5
 
 

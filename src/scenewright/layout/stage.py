@@ -52,7 +52,8 @@ def arrange(
     rounds: int = 3,
     time_limit: float = 10.0,
 ) -> Scene:
-    """Solve the layout of ``scene``'s objects, revising constraints up to ``rounds`` times."""
+    """Solve the layout of ``scene``'s objects, revising constraints up to ``rounds`` times
+    (the caller saves the document)."""
     reference = folder.reference()
     constraints = list(scene.constraints)
     if not constraints:
@@ -85,5 +86,4 @@ def arrange(
     scene.objects = [solved[obj.id] for obj in scene.objects]
     scene.constraints = list(best.constraints)
     scene.layout = best.report
-    folder.save(scene)
     return scene

@@ -24,7 +24,9 @@ import subprocess
 import sys
 import tempfile
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -32,17 +34,36 @@ from scenewright.errors import BackendError, InputError, MissingExtra
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder, as_folder
 from scenewright.geometry import object_matrix, world_box
-from scenewright.render.views import VIEWS
+from scenewright.render.views import VIEWS, object_weights
 from scenewright.scene import Scene
 from scenewright.settings import Settings
+
+if TYPE_CHECKING:
+    from scenewright.assets.load import AssetMeshes
 
 log = logging.getLogger(__name__)
 
 DEFAULT_VIEWS = tuple(VIEWS)
-#: Samples for a clean denoised 1280×720 preview in well under a minute on two cores.
-DEFAULT_SAMPLES = 16
-DRAFT_RESOLUTION = (256, 144)
-DRAFT_SAMPLES = 4
+
+
+@dataclass(frozen=True)
+class Preview:
+    """A render quality: picture size, Cycles samples per pixel (before the denoiser), the
+    light-path bounces each ray may take (total, diffuse, glossy), and OpenImageDenoise's
+    quality (FAST, BALANCED or HIGH)."""
+
+    resolution: tuple[int, int]
+    samples: int
+    bounces: tuple[int, int, int]
+    denoise: str
+
+
+#: The render qualities ``--preview`` names; docs/rendering.md tells how they were chosen.
+PREVIEWS = {
+    "draft": Preview((480, 270), 2, (2, 1, 1), "FAST"),
+    "default": Preview((1280, 720), 2, (3, 1, 1), "BALANCED"),
+    "final": Preview((1920, 1080), 64, (8, 4, 4), "HIGH"),
+}
 DEFAULT_TIMEOUT = 900.0
 METADATA = "renders.json"
 
@@ -74,8 +95,23 @@ def object_corners(scene: Scene) -> list[list[float]]:
     """
     if not scene.objects:
         raise InputError("the scene has no objects to render; add some with `scenewright edit`")
-    corners = [(_UNIT_BOX * [*obj.size.tuple(), 1.0]) @ object_matrix(obj).T for obj in scene.objects]
-    return np.concatenate(corners)[:, :3].tolist()
+    return np.concatenate(list(box_corners(scene).values())).tolist()
+
+
+def box_corners(scene: Scene) -> dict[str, np.ndarray]:
+    """Each object's eight posed box corners (8×3) by id."""
+    return {obj.id: ((_UNIT_BOX * [*obj.size.tuple(), 1.0]) @ object_matrix(obj).T)[:, :3] for obj in scene.objects}
+
+
+def view_weights(scene: Scene) -> dict[str, float]:
+    """How much showing each object matters to the view choice (see
+    :func:`scenewright.render.views.object_weights`): its size and the relations it is in."""
+    relations = {obj.id: 0 for obj in scene.objects}
+    for c in scene.constraints:
+        for end in (c.source, c.target):
+            if end in relations:
+                relations[end] += 1
+    return object_weights({obj.id: obj.size.tuple() for obj in scene.objects}, relations)
 
 
 def _ground_texture(scene: Scene, folder: SceneFolder) -> str | None:
@@ -84,16 +120,18 @@ def _ground_texture(scene: Scene, folder: SceneFolder) -> str | None:
     return next((str(p.resolve()) for p in candidates if p.is_file()), None)
 
 
-def check_renderable(scene: Scene, folder: SceneFolder) -> None:
+def check_renderable(scene: Scene, folder: SceneFolder, meshes: AssetMeshes | None = None) -> None:
     """Refuse a folder whose assets or ``scene.glb`` are missing, empty or corrupt: a render of
-    it would show something other than the scene, or nothing at all."""
-    from scenewright.assets.load import asset_problem
+    it would show something other than the scene, or nothing at all. ``meshes`` holds the
+    assets the caller has parsed already."""
+    from scenewright.assets.load import AssetMeshes
     from scenewright.assets.normalise import check_glb
 
+    store = meshes if meshes is not None else AssetMeshes()
     broken = [
         f"{obj.id} ({problem})"
         for obj in scene.objects
-        if obj.asset is not None and (problem := asset_problem(obj, folder))
+        if obj.asset is not None and (problem := store.problem(obj, folder))
     ]
     if not folder.glb.is_file():
         broken.append(f"{folder.glb.name} (missing)")
@@ -129,25 +167,36 @@ def render(
     *,
     views: Sequence[str] = DEFAULT_VIEWS,
     keep_all: bool = False,
-    resolution: tuple[int, int] = (1280, 720),
-    samples: int = DEFAULT_SAMPLES,
+    preview: str = "default",
+    resolution: tuple[int, int] | None = None,
+    samples: int | None = None,
     draft: bool = False,
     transparent: bool = False,
     timeout: float = DEFAULT_TIMEOUT,
     max_pixels: int = Settings.max_render_pixels,
     max_samples: int = Settings.max_render_samples,
+    meshes: AssetMeshes | None = None,
 ) -> list[Path]:
-    """Render the scene from the candidate views; return the chosen view first (all when ``keep_all``)."""
+    """Render the scene from the candidate views; return the chosen view first (all when ``keep_all``).
+
+    ``preview`` names a quality of :data:`PREVIEWS` (``draft=True`` is ``preview="draft"``);
+    ``resolution`` and ``samples`` override its size and samples.
+    """
     folder = as_folder(folder)
     unknown = [v for v in views if v not in VIEWS]
     if unknown or not views:
         raise InputError(f"unknown view(s) {unknown or views!r}; views are {', '.join(VIEWS)}")
     if draft:
-        resolution, samples = DRAFT_RESOLUTION, DRAFT_SAMPLES
+        preview = "draft"
+    if preview not in PREVIEWS:
+        raise InputError(f"unknown preview quality {preview!r}; choose {', '.join(PREVIEWS)}")
+    quality = PREVIEWS[preview]
+    resolution = tuple(resolution) if resolution is not None else quality.resolution
+    samples = samples if samples is not None else quality.samples
     check_render_size(resolution, samples, max_pixels, max_samples)
     if not folder.glb.is_file():
         raise InputError(f"{folder.glb} does not exist; build the scene with `scenewright generate` first")
-    check_renderable(scene, folder)
+    check_renderable(scene, folder, meshes)
     if importlib.util.find_spec("bpy") is None:
         raise MissingExtra("Rendering", "render", "bpy")
     low, high = scene_bounds(scene)
@@ -158,6 +207,8 @@ def render(
             "ids": [obj.id for obj in scene.objects],
             "bounds": [low, high],
             "frame": frame,
+            "boxes": {oid: box.tolist() for oid, box in box_corners(scene).items()},
+            "weights": view_weights(scene),
             "style": scene.style,
             "ground_texture": _ground_texture(scene, folder),
             "ground_kind": scene.ground.kind,
@@ -165,6 +216,8 @@ def render(
             "keep_all": keep_all,
             "resolution": [int(resolution[0]), int(resolution[1])],
             "samples": int(samples),
+            "bounces": list(quality.bounces),
+            "denoise_quality": quality.denoise,
             "denoise": True,
             "transparent": transparent,
             "out_dir": str(Path(tmp) / "renders"),
@@ -182,7 +235,8 @@ def render(
         if view not in result["images"] and stale.exists():
             stale.unlink()
     result["images"] = {v: folder.relative(Path(p)) for v, p in result["images"].items()}
-    result.update(resolution=job["resolution"], samples=job["samples"], draft=draft, transparent=transparent)
+    result.update(resolution=job["resolution"], samples=job["samples"], preview=preview, draft=preview == "draft",
+                  transparent=transparent)
     write_atomic(folder.renders / METADATA, json.dumps(result, indent=2) + "\n")
     log.info("rendered %s in %.1f s (best view %s)", [p.name for p in images], result["total_seconds"], result["best"])
     return images
@@ -192,13 +246,14 @@ def render_again(scene: Scene, folder: SceneFolder | str | Path) -> list[Path]:
     """Refresh the previews as the last render made them (size, samples, one view or all), so
     they show the scene as it is now, e.g. after an edit."""
     info = render_info(folder) or {}
+    preview = info.get("preview") if info.get("preview") in PREVIEWS else ("draft" if info.get("draft") else "default")
     return render(
         scene,
         folder,
         keep_all=len(info.get("images", {})) > 1,
-        resolution=tuple(info.get("resolution", (1280, 720))),
-        samples=int(info.get("samples", DEFAULT_SAMPLES)),
-        draft=bool(info.get("draft", False)),
+        preview=preview,
+        resolution=tuple(info.get("resolution", PREVIEWS[preview].resolution)),
+        samples=int(info.get("samples", PREVIEWS[preview].samples)),
         transparent=bool(info.get("transparent", False)),
     )
 

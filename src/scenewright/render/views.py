@@ -113,10 +113,73 @@ def visibility(index_image: np.ndarray, ids: Sequence[str]) -> dict[str, int]:
 #: An object counts as well shown in a view when it has at least this share of the pixels it
 #: has in the view that shows it most (less means it is mostly hidden behind others).
 WELL_SHOWN = 0.25
+#: An object counts as seen at all only with at least this share of the pixels its box would
+#: cover unhidden in that view: a few dozen pixels of a console behind a spaceship are not it.
+SEEN_SHARE = 0.08
+#: ... and at least this share of the whole frame (a speck is not a view of anything).
+SEEN_FRAME = 0.0001
 
 
-def best_view(visible: Mapping[str, Mapping[str, int]]) -> str:
-    """The view showing the most objects, then the most of them well, then the most evenly.
+def projected_area(corners: Sequence[Sequence[float]], camera: np.ndarray, resolution: Sequence[int]) -> float:
+    """Pixels the silhouette of a box (its eight ``corners``) covers in a camera's picture, hidden
+    or not: the area of the convex hull of the projected corners. 0 when it is behind the camera."""
+    width, height = resolution
+    tan_w, tan_h = half_fov_tangents(width / height)
+    rel = np.asarray(corners, float) - camera[:3, 3]
+    depth = -(rel @ camera[:3, 2])
+    if np.any(depth <= 1e-6):
+        return 0.0
+    u = (rel @ camera[:3, 0]) / depth / tan_w * (width / 2.0)
+    v = (rel @ camera[:3, 1]) / depth / tan_h * (height / 2.0)
+    return _hull_area(np.column_stack((u, v)))
+
+
+def _hull_area(points: np.ndarray) -> float:
+    """Area of the convex hull of 2-D points (monotone chain, then the shoelace formula)."""
+    pts = sorted(map(tuple, np.round(points, 9)))
+    if len(pts) < 3:
+        return 0.0
+
+    def half(seq):
+        out: list[tuple[float, float]] = []
+        for p in seq:
+            while len(out) >= 2 and (out[-1][0] - out[-2][0]) * (p[1] - out[-2][1]) - (out[-1][1] - out[-2][1]) * (p[0] - out[-2][0]) <= 0:
+                out.pop()
+            out.append(p)
+        return out
+
+    hull = np.array(half(pts)[:-1] + half(pts[::-1])[:-1])
+    x, y = hull[:, 0], hull[:, 1]
+    return float(abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))) / 2.0)
+
+
+def object_weights(sizes: Mapping[str, Sequence[float]], relations: Mapping[str, int]) -> dict[str, float]:
+    """How much showing each object matters: larger objects and those more related to others
+    (the table the chairs face, the barn the animals stand by) weigh more, a vase less.
+
+    Size is the cube root of the box volume over the scene's median, held to [0.5, 3] so one
+    hangar-sized ship does not outweigh everything; each relation adds half of that again.
+    """
+    typical = {i: float(np.prod(np.maximum(s, 1e-3))) ** (1.0 / 3.0) for i, s in sizes.items()}
+    middle = float(np.median(list(typical.values()))) if typical else 1.0
+    return {
+        i: float(np.clip(t / middle, 0.5, 3.0)) * (1.0 + 0.5 * relations.get(i, 0)) for i, t in typical.items()
+    }
+
+
+def best_view(
+    visible: Mapping[str, Mapping[str, int]],
+    expected: Mapping[str, Mapping[str, float]] | None = None,
+    weights: Mapping[str, float] | None = None,
+    frame_pixels: int = 0,
+) -> str:
+    """The view showing the most of what matters, then the most of it well, then the most evenly.
+
+    An object is seen in a view when it has at least :data:`SEEN_SHARE` of the pixels its box
+    would cover there unhidden (``expected``, from :func:`projected_area`) and
+    :data:`SEEN_FRAME` of the ``frame_pixels``; without them any pixel counts. The first key
+    sums the ``weights`` (:func:`object_weights`; 1 each without them) of the objects seen,
+    the second those well shown (:data:`WELL_SHOWN` of their best view's pixels).
 
     "Evenly" is the geometric mean of each shown object's share of the view's object pixels.
     Raw pixel counts, the former last key, reward whichever view happens to sit closest to
@@ -129,13 +192,21 @@ def best_view(visible: Mapping[str, Mapping[str, int]]) -> str:
     order = list(visible)
     ids = {object_id for counts in visible.values() for object_id in counts}
     most = {i: max(visible[v].get(i, 0) for v in order) for i in ids}
+    weight = {i: (weights or {}).get(i, 1.0) for i in ids}
+
+    def seen(view: str, object_id: str, pixels: int) -> bool:
+        if pixels <= 0 or pixels < SEEN_FRAME * frame_pixels:
+            return False
+        if expected is None or expected.get(view, {}).get(object_id) is None:
+            return True
+        return pixels >= SEEN_SHARE * expected[view][object_id]
 
     def key(view: str):
-        counts = visible[view]
-        shown = np.array([n for n in counts.values() if n > 0], float)
-        well = sum(1 for i, n in counts.items() if n > 0 and n >= WELL_SHOWN * most[i])
+        counts = {i: n for i, n in visible[view].items() if seen(view, i, n)}
+        shown = np.array(list(counts.values()), float)
+        well = sum(weight[i] for i, n in counts.items() if n >= WELL_SHOWN * most[i])
         # Rounded so that equal shares tie exactly and fall to the paper's order.
         evenness = round(float(np.mean(np.log(shown / shown.sum()))), 9) if len(shown) else -math.inf
-        return (len(shown), well, evenness, -order.index(view))
+        return (round(sum(weight[i] for i in counts), 9), round(well, 9), evenness, -order.index(view))
 
     return max(order, key=key)

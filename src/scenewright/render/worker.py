@@ -4,10 +4,12 @@ Run as ``python -m scenewright.render.worker job.json``; it reads the job, rende
 writes the result JSON the job names. Running it in its own process means a Blender crash
 (or Blender's global state) never reaches the pipeline.
 
-Per view it first renders a one-sample object-index pass — every object's material replaced
-by an emission of its ``pass_index`` (index = R + 256·G, exact because the view transform is
-Raw and dithering is off) — counts the pixels of each object, then renders the chosen views
-with Cycles, denoised.
+Per view it first renders a one-sample object-index pass at a quarter of the picture's width
+and height — every object's material replaced by an emission of its ``pass_index`` (index =
+R + 256·G, exact because the view transform is Raw and dithering is off) — counts the pixels
+of each object against the pixels its box would cover unhidden, chooses the view (see
+:func:`scenewright.render.views.best_view`), then renders the chosen views with Cycles,
+denoised by OpenImageDenoise.
 """
 
 from __future__ import annotations
@@ -31,6 +33,7 @@ from scenewright.render.views import (
     SENSOR_MM,
     best_view,
     camera_matrix,
+    projected_area,
     visibility,
 )
 
@@ -242,8 +245,14 @@ def configure(job: dict) -> None:
     scene.render.image_settings.color_depth = "8"
 
 
+#: The object-index pass is rendered this many times smaller on each side than the preview: it
+#: only counts pixels per object to choose the view, and costs a sixteenth of a full-size pass.
+INDEX_SCALE = 4
+
+
 def render_index(path: Path, override) -> None:
     scene = bpy.context.scene
+    scene.render.resolution_percentage = 100 // INDEX_SCALE
     layer = scene.view_layers[0]
     saved = (scene.view_settings.view_transform, scene.view_settings.look, scene.render.film_transparent)
     layer.material_override = override
@@ -259,6 +268,7 @@ def render_index(path: Path, override) -> None:
     scene.render.filepath = str(path)
     bpy.ops.render.render(write_still=True)
     layer.material_override = None
+    scene.render.resolution_percentage = 100
     scene.view_settings.view_transform, scene.view_settings.look, scene.render.film_transparent = saved
 
 
@@ -268,12 +278,22 @@ def render_beauty(path: Path, job: dict, transform: str) -> None:
     scene.cycles.use_adaptive_sampling = True
     scene.cycles.adaptive_threshold = 0.05
     # Previews of opaque furniture gain little past a few bounces; each costs time on a CPU.
-    scene.cycles.max_bounces = 4
-    scene.cycles.diffuse_bounces = 2
-    scene.cycles.glossy_bounces = 2
+    total, diffuse, glossy = job.get("bounces", (4, 2, 2))
+    scene.cycles.max_bounces = total
+    scene.cycles.diffuse_bounces = diffuse
+    scene.cycles.glossy_bounces = glossy
+    scene.cycles.transmission_bounces = min(total, 4)
+    scene.cycles.transparent_max_bounces = 4
+    # Caustics are noise in a preview of opaque things, and filter glossy blurs what is left.
+    scene.cycles.caustics_reflective = scene.cycles.caustics_refractive = False
+    scene.cycles.blur_glossy = 1.0
     scene.cycles.use_denoising = job["denoise"]
     if job["denoise"]:
         scene.cycles.denoiser = "OPENIMAGEDENOISE"
+        # Albedo and normal guide the denoiser, so edges and textures stay crisp at few samples.
+        scene.cycles.denoising_input_passes = "RGB_ALBEDO_NORMAL"
+        scene.cycles.denoising_prefilter = "ACCURATE"
+        scene.cycles.denoising_quality = job.get("denoise_quality", "HIGH")
     scene.render.dither_intensity = 1.0
     scene.render.film_transparent = job["transparent"]
     scene.view_settings.view_transform = transform
@@ -285,7 +305,7 @@ def render_beauty(path: Path, job: dict, transform: str) -> None:
 
 
 def run(job: dict) -> dict:
-    started = time.perf_counter()
+    started, started_cpu = time.perf_counter(), time.process_time()
     _clear()
     configure(job)
     ids: list[str] = job["ids"]
@@ -302,29 +322,44 @@ def run(job: dict) -> dict:
     out = Path(job["out_dir"])
     out.mkdir(parents=True, exist_ok=True)
     visible: dict[str, dict[str, int]] = {}
+    expected: dict[str, dict[str, float]] = {}
+    frame_pixels = 0
+    index_started = time.process_time()
     with tempfile.TemporaryDirectory(prefix="scenewright-index-") as tmp:
         for view in job["views"]:
             camera.matrix_world = Matrix(camera_matrix(view, job["frame"], width / height).tolist())
             index_png = Path(tmp) / f"{view}.png"
             render_index(index_png, override)
-            visible[view] = visibility(np.asarray(Image.open(index_png).convert("RGBA")), ids)
-    best = best_view(visible)
+            image = np.asarray(Image.open(index_png).convert("RGBA"))
+            visible[view] = visibility(image, ids)
+            matrix = camera_matrix(view, job["frame"], width / height)
+            size = (image.shape[1], image.shape[0])
+            expected[view] = {oid: projected_area(box, matrix, size) for oid, box in job.get("boxes", {}).items()}
+            frame_pixels = image.shape[0] * image.shape[1]
+    index_cpu = round(time.process_time() - index_started, 3)
+    best = best_view(visible, expected or None, job.get("weights"), frame_pixels)
     chosen = list(job["views"]) if job["keep_all"] else [best]
     chosen.sort(key=lambda v: v != best)
-    images, seconds = {}, {}
+    images, seconds, cpu = {}, {}, {}
     for view in chosen:
         camera.matrix_world = Matrix(camera_matrix(view, job["frame"], width / height).tolist())
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), time.process_time()
         path = out / f"{view}.png"
         render_beauty(path, job, transform)
         images[view], seconds[view] = str(path), round(time.perf_counter() - t0, 3)
+        cpu[view] = round(time.process_time() - c0, 3)
     return {
         "best": best,
         "images": images,
         "visible": visible,
         "missing": missing,
         "render_seconds": seconds,
+        # CPU seconds (all threads) per view and for the whole worker: what a loaded machine
+        # does not inflate, so previews can be compared across runs.
+        "render_cpu_seconds": cpu,
+        "index_cpu_seconds": index_cpu,
         "total_seconds": round(time.perf_counter() - started, 3),
+        "total_cpu_seconds": round(time.process_time() - started_cpu, 3),
         "blender": bpy.app.version_string,
         "denoiser": "OPENIMAGEDENOISE" if job["denoise"] else None,
     }

@@ -17,6 +17,7 @@ from pathlib import Path
 import trimesh
 
 from scenewright.assets import asset_mesh
+from scenewright.assets.load import AssetMeshes
 from scenewright.backends import Backends
 from scenewright.editing import EditPlan, apply_edit, entries, redo, run_plan, undo
 from scenewright.editing.apply import STAGE, riders
@@ -62,6 +63,8 @@ class Session:
         self.settings = settings
         self.lock = threading.RLock()
         self._meshes: dict[Path, trimesh.Trimesh] = {}
+        #: Assets parsed once for every edit of the session (the editing module keeps none).
+        self.assets = AssetMeshes()
         self._stamp: tuple[int, int] | None = None
         self.scene = self.reload()
 
@@ -115,7 +118,8 @@ class Session:
         """A language edit, exactly as ``scenewright edit`` makes it."""
         with self._writing():
             self.reload()
-            apply_edit(self.scene, self.folder, instruction, backends=self.backends, settings=self.settings)
+            apply_edit(self.scene, self.folder, instruction, backends=self.backends, settings=self.settings,
+                       meshes=self.assets)
             self.reload()
             return [e for e in entries(self.folder) if e.active][-1]
 
@@ -182,11 +186,12 @@ class Session:
                             yaw=dropped.yaw if abs(dropped.yaw - obj.yaw) > 1e-6 else None)
             instruction = f"drag {object_id} to ({p.x:.2f}, {p.y:.2f}), yaw {dropped.yaw:.0f}°"
             try:
-                edit = run_plan(scene, self.folder, plan, backends=self.backends, settings=self.settings)
+                edit = run_plan(scene, self.folder, plan, backends=self.backends, settings=self.settings,
+                                meshes=self.assets)
             except InfeasibleLayout as exc:  # what rides on it does not fit there
                 return DragResult(False, f"{exc}; {object_id} stays where it was")
             edit.scene.record(STAGE, f"move {object_id}: {instruction}", backend="studio", changes=edit.changes)
             number = commit(self.folder, edit.scene, edit.files, instruction=instruction, operation="move",
-                            focus=object_id, changes=edit.changes)
+                            focus=object_id, changes=edit.changes, meshes=self.assets)
             self.reload()
             return DragResult(True, f"edit {number}: {instruction}{snapped}")
