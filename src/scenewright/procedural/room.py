@@ -86,12 +86,20 @@ def room_meshes(room: Room, style: str) -> list[tuple[str, trimesh.Trimesh]]:
     wall_look = _worded(room.wall_material, "wall", resolved)
     for i in range(len(room.floor)):
         meshes.append((f"room/wall_{i}", _coloured(_wall(room, outline, i, holes[i]), "wall", wall_look)))
-    counts = {"door": 0, "window": 0}
-    for k, opening in enumerate(room.openings):
-        name = f"room/{opening.kind}_{counts[opening.kind]}"
-        counts[opening.kind] += 1
+    for k, (name, opening) in enumerate(zip(opening_nodes(room), room.openings, strict=True)):
         meshes += [(f"{name}/{part}", mesh) for part, mesh in _fittings(room, opening, holes[opening.wall][k], resolved)]
     return meshes
+
+
+def opening_nodes(room: Room) -> list[str]:
+    """The node of each opening, in the order of :attr:`Room.openings`: ``room/door_0``,
+    ``room/window_0``, ... (numbered per kind); its meshes are named under it."""
+    counts = {"door": 0, "window": 0}
+    names = []
+    for opening in room.openings:
+        names.append(f"room/{opening.kind}_{counts[opening.kind]}")
+        counts[opening.kind] += 1
+    return names
 
 
 # Outline --------------------------------------------------------------------------------

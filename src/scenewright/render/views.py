@@ -12,6 +12,9 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
+from scenewright.procedural.room import opening_nodes
+from scenewright.scene import Room
+
 #: view name → (azimuth of the camera around the scene in degrees, 0 = in front (−Y) and
 #: counter-clockwise seen from above, so −90 = from the left; elevation in degrees).
 VIEWS: dict[str, tuple[float, float]] = {
@@ -139,3 +142,21 @@ def best_view(visible: Mapping[str, Mapping[str, int]]) -> str:
         return (len(shown), well, evenness, -order.index(view))
 
     return max(order, key=key)
+
+
+def cut_away(room: Room, name: str) -> list[str]:
+    """The room's nodes a view leaves out so the room shows from outside: the ceiling, and
+    every wall whose inside faces away from the camera (the walls between the camera and the
+    room), with the doors and windows in them. A wall seen edge-on stays. Names as in
+    :func:`scenewright.procedural.room.room_meshes`; a door or window is hidden by its group node.
+    """
+    toward = view_direction(name)[:2]
+    hidden = ["room/ceiling"]
+    near = set()
+    for i, ((x0, y0), (x1, y1)) in enumerate(room.walls):
+        inward = np.array([y0 - y1, x1 - x0]) / math.hypot(x1 - x0, y1 - y0)
+        if inward @ toward < -1e-6:
+            near.add(i)
+            hidden.append(f"room/wall_{i}")
+    hidden += [node for node, opening in zip(opening_nodes(room), room.openings, strict=True) if opening.wall in near]
+    return hidden
