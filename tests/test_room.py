@@ -354,3 +354,69 @@ def test_every_view_of_a_room_shows_every_object(tmp_path):
     image = np.asarray(Image.open(folder.renders / "front.png").convert("RGB"), float)
     assert image.std() > 5
 
+
+
+# Simulation exports -----------------------------------------------------------------------
+def test_mujoco_collides_the_walls_as_boxes_and_the_doorway_stays_open(tmp_path):
+    mujoco = pytest.importorskip("mujoco", reason="loading MJCF needs the 'sim' extra (mujoco)")
+    from scenewright.cli import main
+    from scenewright.procedural.room import wall_boxes
+
+    scene, folder = _room_scene(tmp_path)
+    assert main(["export", str(folder.root), "--format", "mjcf"]) == 0
+    model = mujoco.MjModel.from_xml_path(str(folder.simulation / "mjcf" / "scene.xml"))
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    boxes = wall_boxes(scene.room)
+    for name, _, extents in boxes:
+        geom = model.geom(name)
+        assert geom.type[0] == mujoco.mjtGeom.mjGEOM_BOX and geom.bodyid[0] == 0  # static, in the world
+        np.testing.assert_allclose(geom.size, extents / 2.0, rtol=1e-5)
+    assert model.geom("room/wall_0").contype[0] == 0  # the visual mesh does not collide
+    room, hit = scene.room, np.array([-1], dtype=np.int32)
+    inward, door = wall_normal(room, 0), opening_centre(room, 0)
+    collision_only = np.array([0, 0, 0, 1, 0, 0], dtype=np.uint8)
+
+    def ray(start) -> str | None:
+        distance = mujoco.mj_ray(model, data, np.asarray(start, float), -inward, collision_only, 1, -1, hit)
+        return None if distance < 0 else model.geom(int(hit[0])).name
+
+    assert ray(door + 0.5 * inward) is None
+    assert ray(door + 0.5 * inward + [1.2, 0.0, 0.0]).startswith("room/wall_0/box_")
+
+
+def test_usd_holds_the_room_with_static_wall_colliders(tmp_path):
+    pytest.importorskip("pxr", reason="USD export needs the 'sim' extra (usd-core)")
+    from pxr import Usd, UsdGeom, UsdPhysics
+
+    from scenewright.cli import main
+    from scenewright.procedural.room import wall_boxes
+
+    scene, folder = _room_scene(tmp_path)
+    assert main(["export", str(folder.root), "--format", "usd"]) == 0
+    stage = Usd.Stage.Open(str(folder.simulation / "scene.usd"))
+    room = stage.GetPrimAtPath("/World/room")
+    colliders = [p for p in Usd.PrimRange(room) if p.HasAPI(UsdPhysics.CollisionAPI)]
+    assert len(colliders) == len(wall_boxes(scene.room))
+    assert not any(p.HasAPI(UsdPhysics.RigidBodyAPI) for p in Usd.PrimRange(room))
+    visual = {p.GetName() for p in Usd.PrimRange(room) if p.IsA(UsdGeom.Mesh)}
+    assert {"floor", "ceiling", "wall_0", "door_0_leaf", "window_0_glass"} <= visual
+    cache = UsdGeom.BBoxCache(Usd.TimeCode.Default(), [UsdGeom.Tokens.default_, UsdGeom.Tokens.guide])
+    back = cache.ComputeWorldBound(stage.GetPrimAtPath("/World/room/collision/wall_2_box_0")).ComputeAlignedRange()
+    assert back.GetMin()[1] == pytest.approx(3.0, abs=1e-5) and back.GetMax()[1] == pytest.approx(3.0 + T, abs=1e-5)
+
+
+@pytest.mark.node
+@pytest.mark.parametrize("engine", ["godot", "unreal"])
+def test_glb_physics_gives_every_wall_box_colliders_and_stays_valid(tmp_path, engine):
+    from scenewright.cli import main
+    from scenewright.procedural.room import wall_boxes
+
+    scene, folder = _room_scene(tmp_path)
+    out = tmp_path / f"{engine}.glb"
+    assert main(["export", str(folder.root), "-f", "glb-physics", "--engine", engine, "--out", str(out)]) == 0
+    assert_valid(out)
+    nodes = trimesh.load_scene(out).graph.nodes
+    prefix, suffix = ("room_wall_", "-convcolonly") if engine == "godot" else ("UCX_room_wall_", "")
+    walls = [n for n in nodes if n.startswith(prefix) and n.endswith(suffix)]
+    assert len(walls) == len(wall_boxes(scene.room))
