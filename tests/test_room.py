@@ -420,3 +420,27 @@ def test_glb_physics_gives_every_wall_box_colliders_and_stays_valid(tmp_path, en
     prefix, suffix = ("room_wall_", "-convcolonly") if engine == "godot" else ("UCX_room_wall_", "")
     walls = [n for n in nodes if n.startswith(prefix) and n.endswith(suffix)]
     assert len(walls) == len(wall_boxes(scene.room))
+
+
+def test_the_studio_draws_the_room_without_its_ceiling(tmp_path):
+    pytest.importorskip("viser", reason="viser is not installed (the studio extra: make install-studio)")
+    import socket
+
+    from scenewright.backends import Backends
+    from scenewright.settings import Settings
+    from scenewright.studio import Session
+    from scenewright.studio.server import Studio
+
+    scene, folder = _room_scene(tmp_path)
+    settings = Settings()
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        port = sock.getsockname()[1]
+    studio = Studio(Session(folder, backends=Backends.from_settings(settings), settings=settings), port=port)
+    try:
+        drawn = {name.removeprefix("__") for name in studio._nodes if name.startswith("__room/")}
+        expected = {name for name, _ in room_meshes(scene.room, scene.style)} - {"room/ceiling"}
+        assert drawn == expected
+        assert "__ground" not in studio._nodes
+    finally:
+        studio.stop()

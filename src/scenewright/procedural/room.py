@@ -206,11 +206,10 @@ def _floor(room: Room, outline: np.ndarray, style: Style) -> trimesh.Trimesh:
     return mesh
 
 
-def _wall(room: Room, outline: np.ndarray, i: int, holes: dict) -> trimesh.Trimesh:
-    """Wall ``i`` as one closed surface with its openings cut through (see the module doc)."""
-    a, along, inward, length = _frame(room, i)
-    n = len(room.floor)
-    start, end = np.append(outline[i], 0.0), np.append(outline[(i + 1) % n], 0.0)
+def _grid(room: Room, i: int, holes: dict) -> tuple[list[float], list[float], np.ndarray]:
+    """Wall ``i``'s elevation cut at every opening edge: the cut positions along it and up it,
+    and which cells are solid (the rest are openings)."""
+    length = room.wall_length(i)
     us = sorted({0.0, length, *(h[j] for h in holes.values() for j in (0, 1))})
     zs = sorted({0.0, room.height, *(min(h[j], room.height) for h in holes.values() for j in (2, 3))})
     solid = np.ones((len(us) - 1, len(zs) - 1), dtype=bool)
@@ -218,6 +217,15 @@ def _wall(room: Room, outline: np.ndarray, i: int, holes: dict) -> trimesh.Trime
         for iz in range(len(zs) - 1):
             u, z = (us[iu] + us[iu + 1]) / 2.0, (zs[iz] + zs[iz + 1]) / 2.0
             solid[iu, iz] = not any(h[0] < u < h[1] and h[2] < z < h[3] for h in holes.values())
+    return us, zs, solid
+
+
+def _wall(room: Room, outline: np.ndarray, i: int, holes: dict) -> trimesh.Trimesh:
+    """Wall ``i`` as one closed surface with its openings cut through (see the module doc)."""
+    a, along, inward, _ = _frame(room, i)
+    n = len(room.floor)
+    start, end = np.append(outline[i], 0.0), np.append(outline[(i + 1) % n], 0.0)
+    us, zs, solid = _grid(room, i, holes)
 
     def outer(iu: int) -> np.ndarray:
         """Where the line through inner point ``us[iu]``, across the wall, meets the outer face."""
@@ -269,6 +277,42 @@ def _wall(room: Room, outline: np.ndarray, i: int, holes: dict) -> trimesh.Trime
     mesh = trimesh.Trimesh(np.array(vertices), np.array(faces), process=False)
     mesh.merge_vertices()  # the cells share their corners: one closed surface
     return mesh
+
+
+def wall_boxes(room: Room) -> list[tuple[str, np.ndarray, np.ndarray]]:
+    """The walls as boxes for simulators, which collide boxes best: per wall, one box per
+    solid run of its elevation grid, so the openings stay open. Each is (name, pose, extents):
+    ``room/wall_<i>/box_<k>``, a 4×4 scene-frame pose of its centre (x along the wall, y
+    inward, z up) and its full extents. At a corner the boxes run on to the outer corner, so
+    nothing slips through; neighbouring walls' boxes overlap there, which static colliders may.
+    """
+    outline = _outer_outline(room.floor)
+    holes = _holes(room, outline)
+    n = len(room.floor)
+    boxes = []
+    for i in range(n):
+        a, along, inward, length = _frame(room, i)
+        us, zs, solid = _grid(room, i, holes[i])
+        first = len(boxes)
+        ends = list(us)
+        ends[0] = min(0.0, float((outline[i] - a[:2]) @ along[:2]))
+        ends[-1] = max(length, float((outline[(i + 1) % n] - a[:2]) @ along[:2]))
+        for iu in range(solid.shape[0]):
+            iz = 0
+            while iz < solid.shape[1]:
+                if not solid[iu, iz]:
+                    iz += 1
+                    continue
+                top = iz
+                while top < solid.shape[1] and solid[iu, top]:
+                    top += 1
+                u0, u1, z0, z1 = ends[iu], ends[iu + 1], zs[iz], zs[top]
+                pose = np.eye(4)
+                pose[:3, 0], pose[:3, 1], pose[:3, 2] = along, inward, UP
+                pose[:3, 3] = a + (u0 + u1) / 2.0 * along - WALL_THICKNESS / 2.0 * inward + (z0 + z1) / 2.0 * UP
+                boxes.append((f"room/wall_{i}/box_{len(boxes) - first}", pose, np.array([u1 - u0, WALL_THICKNESS, z1 - z0])))
+                iz = top
+    return boxes
 
 
 # Fittings -------------------------------------------------------------------------------
