@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import hashlib
 import logging
+from functools import lru_cache
 
 import numpy as np
 import trimesh
@@ -194,11 +195,17 @@ def _prism(poly: np.ndarray, z0: float, z1: float) -> trimesh.Trimesh:
     return trimesh.Trimesh(vertices, faces, process=False)
 
 
+@lru_cache(maxsize=16)
+def _floor_image(kind: str, style: str) -> Image.Image:
+    """The floor's texture tile, drawn once per kind and style (it costs most of a room's
+    build time, and editing a scene rebuilds its room often)."""
+    seed = int.from_bytes(hashlib.sha256(f"{kind} {style}".encode()).digest()[:4], "little")
+    return Image.fromarray(ground_texture(kind, style, seed, FLOOR_TEXTURE_PIXELS), "RGB")
+
+
 def _floor(room: Room, outline: np.ndarray, style: Style) -> trimesh.Trimesh:
     mesh = _prism(outline, -FLOOR_THICKNESS, 0.0)
-    kind = normalise_kind(room.floor_material)
-    seed = int.from_bytes(hashlib.sha256(f"{kind} {style.name}".encode()).digest()[:4], "little")
-    image = Image.fromarray(ground_texture(kind, style.name, seed, FLOOR_TEXTURE_PIXELS), "RGB")
+    image = _floor_image(normalise_kind(room.floor_material), style.name)
     material = trimesh.visual.material.PBRMaterial(
         name="floor", baseColorTexture=image, metallicFactor=0.0, roughnessFactor=0.8
     )
