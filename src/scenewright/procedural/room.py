@@ -2,7 +2,7 @@
 
 Everything is built in the scene frame (+Z up, metres) from the :class:`~scenewright.scene.Room`
 of the document; :func:`room_meshes` is the one entry point (export, renderer, simulation and
-editor all draw the same room). The conventions (docs/rooms.md):
+editor all draw the same room). The conventions:
 
 - The floor polygon is the *inside* of the room: each wall is a slab of
   :data:`WALL_THICKNESS` standing outside its edge, so the wall's inner face is the wall line
