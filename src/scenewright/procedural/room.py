@@ -1,8 +1,9 @@
 """The meshes of a room: floor, ceiling, walls with real openings, door and window fittings.
 
 Everything is built in the scene frame (+Z up, metres) from the :class:`~scenewright.scene.Room`
-of the document; :func:`room_meshes` is the one entry point (export, renderer, simulation and
-editor all draw the same room). The conventions:
+of the document; :func:`room_meshes` gives every mesh (export, renderer, simulation and
+editor all draw the same room) and :func:`wall_boxes` the walls as boxes for simulators'
+colliders. The conventions:
 
 - The floor polygon is the *inside* of the room: each wall is a slab of
   :data:`WALL_THICKNESS` standing outside its edge, so the wall's inner face is the wall line
