@@ -10,10 +10,12 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
-from scenewright.procedural.room import opening_nodes
-from scenewright.scene import Room
+if TYPE_CHECKING:
+    from scenewright.scene import Room
 
 #: view name → (azimuth of the camera around the scene in degrees, 0 = in front (−Y) and
 #: counter-clockwise seen from above, so −90 = from the left; elevation in degrees).
@@ -150,6 +152,8 @@ def cut_away(room: Room, name: str) -> list[str]:
     room), with the doors and windows in them. A wall seen edge-on stays. Names as in
     :func:`scenewright.procedural.room.room_meshes`; a door or window is hidden by its group node.
     """
+    from scenewright.procedural.room import opening_nodes
+
     toward = view_direction(name)[:2]
     hidden = ["room/ceiling"]
     near = set()
