@@ -228,6 +228,22 @@ def test_any_rectangle_with_openings_gives_closed_walls_with_holes_through(width
     assert sum(meshes[f"room/wall_{i}"].volume for i in range(4)) == pytest.approx(band, rel=1e-6)
 
 
+@settings(max_examples=20, deadline=None)
+@given(sides=st.integers(3, 9), radius=st.floats(2.0, 6.0), turn=st.floats(0.0, 2 * np.pi))
+def test_the_walls_of_any_regular_room_close_every_corner_without_overlap(sides, radius, turn):
+    angles = turn + 2 * np.pi * np.arange(sides) / sides
+    room = Room(floor=[(radius * np.cos(a), radius * np.sin(a)) for a in angles])
+    meshes = _meshes(room)
+    side = 2 * radius * np.sin(np.pi / sides)
+    area = sides * radius**2 * np.sin(2 * np.pi / sides) / 2
+    # The floor grown outward by T with mitred corners: area + perimeter·T + T²·Σ tan(turn/2).
+    grown = area + sides * side * T + T**2 * sides * np.tan(np.pi / sides)
+    walls = [meshes[f"room/wall_{i}"] for i in range(sides)]
+    assert all(w.is_watertight and w.volume > 0 for w in walls)
+    assert sum(w.volume for w in walls) == pytest.approx((grown - area) * room.height, rel=1e-9)
+    assert meshes["room/floor"].volume == pytest.approx(grown * FLOOR_THICKNESS, rel=1e-9)
+
+
 def test_each_view_cuts_away_the_ceiling_and_the_walls_nearer_the_camera():
     room = _room()  # walls: 0 front (−y), 1 right, 2 back, 3 left; window_1 is on the left wall
     assert cut_away(room, "front") == ["room/ceiling", "room/wall_0", "room/door_0"]
