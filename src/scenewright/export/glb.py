@@ -22,7 +22,6 @@ from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
 from scenewright.geometry import GLTF_TO_SCENE, SCENE_TO_GLTF, object_matrix
 from scenewright.gltf import keep_materials, mesh_materials
-from scenewright.procedural.room import GLTF_MATERIAL, room_meshes
 from scenewright.scene import Scene, SceneObject
 
 log = logging.getLogger(__name__)
@@ -83,6 +82,8 @@ def _add_room(target: trimesh.Scene, scene: Scene, materials: dict[str, dict]) -
     """The room's meshes under a ``room`` node, each a node of its own named as
     :func:`~scenewright.procedural.room.room_meshes` names it; a door's or window's parts
     hang under a node for the opening (``room/door_0``), so it selects as one thing."""
+    from scenewright.procedural.room import GLTF_MATERIAL, room_meshes  # only scenes with a room pay its import
+
     target.graph.update(frame_to=ROOM_NODE, frame_from=target.graph.base_frame, matrix=np.eye(4))
     for name, mesh in room_meshes(scene.room, scene.style):
         parent = ROOM_NODE

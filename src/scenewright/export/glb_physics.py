@@ -21,7 +21,6 @@ from scenewright.export.ground import ground_extent
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
 from scenewright.geometry import SCENE_TO_GLTF
-from scenewright.procedural.room import wall_boxes
 from scenewright.scene import Scene
 
 ENGINES = ("godot", "unreal")
@@ -51,6 +50,8 @@ def write_glb_physics(
         for k, hull in enumerate(pieces[obj.id].hulls):
             _add(glb, hull, collider_name(engine, obj.id, k), obj.id)
     if scene.room is not None:
+        from scenewright.procedural.room import wall_boxes
+
         for name, pose, extents in wall_boxes(scene.room):
             wall, box = name.rsplit("/", 1)
             owner = wall.replace("/", "_")

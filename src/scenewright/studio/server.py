@@ -15,7 +15,6 @@ import trimesh
 from scenewright.errors import MissingExtra, ScenewrightError
 from scenewright.export.ground import ground_mesh
 from scenewright.geometry import GLTF_TO_SCENE, object_matrix
-from scenewright.procedural.room import room_meshes
 from scenewright.scene import Scene, SceneObject
 from scenewright.studio.panel import object_panel
 from scenewright.studio.session import Session, inside
@@ -129,6 +128,8 @@ class Studio:
         """The ground, or the room when the scene has one: its floor, walls, doors and
         windows, without the ceiling, so the view from above sees in."""
         if scene.room is not None:
+            from scenewright.procedural.room import room_meshes
+
             for name, mesh in room_meshes(scene.room, scene.style):
                 if name != "room/ceiling":
                     self._nodes[f"__{name}"] = self.server.scene.add_mesh_trimesh(f"/{name}", mesh)
