@@ -27,6 +27,7 @@ from scenewright.scene import Scene, SceneObject
 log = logging.getLogger(__name__)
 
 GROUND_NODE = "ground"
+ROOM_NODE = "room"
 #: glTF bufferView targets: vertex attributes and triangle indices.
 ARRAY_BUFFER = 34962
 ELEMENT_ARRAY_BUFFER = 34963
@@ -78,6 +79,26 @@ def _add_object(
         )
 
 
+def _add_room(target: trimesh.Scene, scene: Scene, materials: dict[str, dict]) -> None:
+    """The room's meshes under a ``room`` node, each a node of its own named as
+    :func:`~scenewright.procedural.room.room_meshes` names it; a door's or window's parts
+    hang under a node for the opening (``room/door_0``), so it selects as one thing."""
+    from scenewright.procedural.room import GLTF_MATERIAL, room_meshes  # only scenes with a room pay its import
+
+    target.graph.update(frame_to=ROOM_NODE, frame_from=target.graph.base_frame, matrix=np.eye(4))
+    for name, mesh in room_meshes(scene.room, scene.style):
+        parent = ROOM_NODE
+        if name.count("/") == 2:
+            parent = name.rsplit("/", 1)[0]
+            if parent not in target.graph.nodes:
+                target.graph.update(frame_to=parent, frame_from=ROOM_NODE, matrix=np.eye(4))
+        gltf = mesh.copy()
+        gltf.apply_transform(SCENE_TO_GLTF)
+        if GLTF_MATERIAL in mesh.metadata:
+            materials[name] = mesh.metadata[GLTF_MATERIAL]
+        target.add_geometry(gltf, geom_name=name, node_name=name, parent_node_name=parent)
+
+
 def _mark_buffer_targets(tree: dict) -> None:
     """Say which buffer views hold vertices and which indices, as engines prefer to be told."""
     for mesh in tree.get("meshes", []):
@@ -109,15 +130,19 @@ def _describe_nodes(scene: Scene, materials: dict[str, dict]):
 def build_scene(
     scene: Scene, folder: SceneFolder, meshes: AssetMeshes | None = None
 ) -> tuple[trimesh.Scene, dict[str, dict]]:
-    """The scene graph of ``scene.glb`` (a node per object, named by id, and the ground) and the
-    assets' exact glTF materials by mesh name, which trimesh's own export would round.
-    ``meshes`` holds the assets the caller has parsed already."""
+    """The scene graph of ``scene.glb`` (a node per object, named by id, and the ground, or the
+    room when the scene has one: its floor is the ground then) and the assets' exact glTF
+    materials by mesh name, which trimesh's own export would round. ``meshes`` holds the
+    assets the caller has parsed already."""
     paths = _asset_paths(scene, folder)
     store = meshes if meshes is not None else AssetMeshes()
     glb = trimesh.Scene()
     materials: dict[str, dict] = {}
     for obj in scene.objects:
         _add_object(glb, obj, paths[obj.id], materials, store)
+    if scene.room is not None:
+        _add_room(glb, scene, materials)
+        return glb, materials
     texture = folder.ground_texture(scene)
     glb.add_geometry(
         ground_mesh(scene.objects, scene.bounds, texture), geom_name=GROUND_NODE, node_name=GROUND_NODE

@@ -5,7 +5,8 @@ collision shape and is not drawn (``-colonly`` for a concave one). Unreal reads 
 meshes as the convex collision of the static mesh ``<mesh>`` (import the object's meshes
 combined, so that the static mesh carries the object's id). The two naming schemes would
 draw each other's colliders, so one file follows one engine. Each object's convex pieces
-hang under its node, so they move with it; the ground gets a thin box.
+hang under its node, so they move with it; the ground gets a thin box, and a room's walls
+one box per solid piece (openings stay open) under each wall's node.
 """
 
 from __future__ import annotations
@@ -48,7 +49,15 @@ def write_glb_physics(
     for obj in scene.objects:
         for k, hull in enumerate(pieces[obj.id].hulls):
             _add(glb, hull, collider_name(engine, obj.id, k), obj.id)
-    lo, hi = ground_extent(scene.objects, scene.bounds)
+    if scene.room is not None:
+        from scenewright.procedural.room import wall_boxes
+
+        for name, pose, extents in wall_boxes(scene.room):
+            wall, box = name.rsplit("/", 1)
+            owner = wall.replace("/", "_")
+            _add(glb, trimesh.creation.box(extents=extents, transform=pose),
+                 collider_name(engine, owner, int(box.removeprefix("box_"))), wall)
+    lo, hi = ground_extent(scene.objects, scene.bounds, scene.room)
     ground = trimesh.creation.box(extents=(*(hi - lo), GROUND_THICKNESS))
     ground.apply_translation((*((lo + hi) / 2.0), -GROUND_THICKNESS / 2.0))
     _add(glb, ground, collider_name(engine, GROUND_COLLIDER, 0), None)

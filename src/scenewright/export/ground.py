@@ -18,7 +18,7 @@ from PIL import Image
 
 from scenewright.geometry import SCENE_TO_GLTF, world_box
 from scenewright.gltf import srgb_to_linear
-from scenewright.scene import SceneObject
+from scenewright.scene import Room, SceneObject
 
 log = logging.getLogger(__name__)
 
@@ -35,10 +35,11 @@ PLAIN_COLOUR = (*srgb_to_linear((0.5, 0.5, 0.5)), 1.0)
 
 
 def ground_extent(
-    objects: Sequence[SceneObject], bounds: tuple[float, float] | None
+    objects: Sequence[SceneObject], bounds: tuple[float, float] | None, room: Room | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
-    """(min xy, max xy) in the scene frame that the ground must cover, margin included."""
-    corners = []
+    """(min xy, max xy) in the scene frame that the ground must cover (the room too, when
+    there is one), margin included."""
+    corners = [np.asarray(room.floor, dtype=float)] if room is not None else []
     for obj in objects:
         lo, hi = world_box(obj)
         corners += [lo[:2], hi[:2]]
@@ -48,7 +49,7 @@ def ground_extent(
     if not corners:
         half = np.full(2, EMPTY_HALF_EXTENT)
         return -half, half
-    pts = np.array(corners)
+    pts = np.vstack(corners)
     lo, hi = pts.min(axis=0), pts.max(axis=0)
     margin = MARGIN_METRES + MARGIN_SHARE * float((hi - lo).max())
     return lo - margin, hi + margin

@@ -4,7 +4,9 @@ Each object is a body named by its id at its pose (the asset frame's origin is t
 bottom centre). A dynamic object has a free joint and its mass, centre of mass and inertia from
 :mod:`scenewright.export.physics`; a static one is welded to the world. Visual geoms (group 2)
 are the asset's meshes with their colours and never collide; collision geoms (group 3) are the
-convex pieces, which MuJoCo collides as they are. Meshes go to ``meshes/`` as binary STL.
+convex pieces, which MuJoCo collides as they are. A room's meshes are visual geoms of the
+world, and its walls collide as static boxes (one per solid piece, so openings stay open).
+Meshes go to ``meshes/`` as binary STL.
 """
 
 from __future__ import annotations
@@ -18,7 +20,7 @@ from scipy.spatial.transform import Rotation
 
 from scenewright.export.colliders import Collider
 from scenewright.export.physics import inertia_matrix
-from scenewright.export.visual import object_parts
+from scenewright.export.visual import object_parts, room_parts
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
 from scenewright.geometry import object_matrix
@@ -53,6 +55,20 @@ def _pose(matrix: np.ndarray) -> tuple[str, str]:
     return _numbers(matrix[:3, 3]), _numbers((w, x, y, z))
 
 
+def _room(scene: Scene, world: ET.Element, assets: ET.Element, files: dict[str, bytes]) -> None:
+    from scenewright.procedural.room import wall_boxes
+
+    for part in room_parts(scene.room, scene.style):
+        name = part.name
+        files[f"{MESH_DIR}/{name.replace('/', '_')}.stl"] = part.mesh.export(file_type="stl")
+        ET.SubElement(assets, "mesh", name=name, file=f"{name.replace('/', '_')}.stl", inertia="shell")
+        ET.SubElement(world, "geom", {"class": "visual", "name": name, "mesh": name, "rgba": _numbers(part.look.colour)})
+    for name, pose, extents in wall_boxes(scene.room):
+        pos, quat = _pose(pose)
+        ET.SubElement(world, "geom", {"class": "collision", "name": name, "type": "box", "size": _numbers(extents / 2.0),
+                                      "pos": pos, "quat": quat, "friction": f"{FLOOR_FRICTION} 0.005 0.0001"})
+
+
 def build_mjcf(scene: Scene, folder: SceneFolder, pieces: dict[str, Collider]) -> Mjcf:
     """The MJCF of ``scene``: every object needs its physics record (``ensure_physics``)."""
     root = ET.Element("mujoco", model="scenewright")
@@ -72,6 +88,8 @@ def build_mjcf(scene: Scene, folder: SceneFolder, pieces: dict[str, Collider]) -
     ET.SubElement(world, "geom", name="floor", type="plane", size="0 0 0.05", material="floor",
                   friction=f"{FLOOR_FRICTION} 0.005 0.0001")
     files: dict[str, bytes] = {}
+    if scene.room is not None:
+        _room(scene, world, assets, files)
     for obj in scene.objects:
         physics = obj.physics
         assert physics is not None, f"{obj.id} has no physics record; call ensure_physics first"

@@ -1,7 +1,9 @@
 """USD with UsdPhysics: what Isaac Sim, Omniverse and usdview open, one prim per object.
 
 The stage is Z-up in metres and kilograms (the scene frame as it is). ``/World`` holds a
-physics scene, the ground (a static box collider whose top is z = 0) and one Xform per object,
+physics scene, the ground (a static box collider whose top is z = 0), the room when there is
+one (``room/``: its meshes under ``visual/``, static box colliders for the walls under
+``collision/``, openings left open) and one Xform per object,
 named by its id (made a valid USD name when the id is not; the id itself is kept in the prim's
 ``scenewright:id`` attribute). Under each object: ``visual/`` meshes bound to
 UsdPreviewSurface materials, and ``collision/`` convex pieces (CollisionAPI, convex-hull
@@ -23,13 +25,14 @@ from scenewright.errors import MissingExtra
 from scenewright.export.colliders import Collider
 from scenewright.export.ground import ground_extent
 from scenewright.export.physics import inertia_matrix
-from scenewright.export.visual import Look, object_parts
+from scenewright.export.visual import Look, object_parts, room_parts
 from scenewright.folder import SceneFolder
 from scenewright.geometry import object_matrix
 from scenewright.scene import Scene
 
 WORLD = "/World"
 GROUND = "ground"
+ROOM = "room"
 GROUND_FRICTION = 0.8
 GROUND_THICKNESS = 0.1
 GROUND_COLOUR = (0.5, 0.5, 0.48)
@@ -47,7 +50,7 @@ def prim_names(ids: list[str]) -> dict[str, str]:
     """Object id → a unique valid USD prim name (ids may hold '-' and '.', which USD names may not)."""
     _, _, Tf, *_ = load_pxr()
     names: dict[str, str] = {}
-    taken = {GROUND, "PhysicsScene", "Looks"}
+    taken = {GROUND, ROOM, "PhysicsScene", "Looks"}
     for oid in ids:
         name = Tf.MakeValidIdentifier(oid)
         base, n = name, 1
@@ -145,8 +148,26 @@ def _object(w: _Writer, path: str, obj, folder: SceneFolder, piece: Collider) ->
     mass.CreatePrincipalAxesAttr(Gf.Quatf(float(qw), float(x), float(y), float(z)))
 
 
+def _room(w: _Writer, scene: Scene) -> None:
+    from scenewright.procedural.room import wall_boxes
+
+    Tf = load_pxr()[2]
+    for part in room_parts(scene.room, scene.style):
+        mesh = w.mesh(f"{WORLD}/{ROOM}/visual/{Tf.MakeValidIdentifier(part.name.removeprefix('room/'))}", part.mesh)
+        w.bind(mesh, w.material(part.look))
+    material = w.physics_material(f"{WORLD}/{ROOM}/physics_material", GROUND_FRICTION)
+    for name, pose, extents in wall_boxes(scene.room):
+        cube = w.UsdGeom.Cube.Define(w.stage, f"{WORLD}/{ROOM}/collision/{Tf.MakeValidIdentifier(name.removeprefix('room/'))}")
+        cube.CreateSizeAttr(1.0)
+        cube.AddTransformOp().Set(_matrix(w.Gf, pose))
+        cube.AddScaleOp().Set(w.Gf.Vec3f(*map(float, extents)))
+        cube.CreatePurposeAttr(w.UsdGeom.Tokens.guide)
+        w.UsdPhysics.CollisionAPI.Apply(cube.GetPrim())
+        w.bind(cube, material, "physics")
+
+
 def _ground(w: _Writer, scene: Scene) -> None:
-    lo, hi = ground_extent(scene.objects, scene.bounds)
+    lo, hi = ground_extent(scene.objects, scene.bounds, scene.room)
     cube = w.UsdGeom.Cube.Define(w.stage, f"{WORLD}/{GROUND}")
     cube.CreateSizeAttr(1.0)
     centre = ((lo + hi) / 2.0).tolist()
@@ -175,6 +196,8 @@ def write_usd(scene: Scene, folder: SceneFolder, pieces: dict[str, Collider], pa
     for obj in scene.objects:
         _object(writer, f"{WORLD}/{names[obj.id]}", obj, folder, pieces[obj.id])
     _ground(writer, scene)
+    if scene.room is not None:
+        _room(writer, scene)
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     # USD picks the file format from the extension, so the temporary file keeps it.

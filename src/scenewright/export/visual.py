@@ -80,6 +80,14 @@ def object_parts(obj, folder) -> list[Part]:
     return visual_parts(folder.resolve(obj.asset).read_bytes())
 
 
+def room_parts(room, style: str) -> list[Part]:
+    """The room's meshes (:func:`scenewright.procedural.room.room_meshes`) with their looks,
+    in the scene frame; parts are named as the meshes are."""
+    from scenewright.procedural.room import room_meshes
+
+    return [Part(name=name, mesh=mesh, look=_look(mesh)) for name, mesh in room_meshes(room, style)]
+
+
 def visual_parts(glb: bytes) -> list[Part]:
     """Each mesh of a normalised asset in the scene-frame asset frame, with its look."""
     scene = parse_glb(glb)

@@ -184,7 +184,7 @@ class Model:
                 surface = self.style.surface(role, self.neon)
             mesh = trimesh.Trimesh(part.vertices, part.faces, vertex_normals=part.normals, process=False)
             self.materials[role] = gltf_material(role, surface)
-            mesh.visual = trimesh.visual.TextureVisuals(material=_pbr(self.materials[role]))
+            mesh.visual = trimesh.visual.TextureVisuals(material=pbr_material(self.materials[role]))
             scene.add_geometry(mesh, geom_name=role, node_name=role)
         return scene
 
@@ -221,7 +221,7 @@ def gltf_material(name: str, s: Surface) -> dict:
     return material
 
 
-def _pbr(material: dict) -> PBRMaterial:
+def pbr_material(material: dict) -> PBRMaterial:
     """trimesh's copy of a glTF material (its base colour rounded to 8 bits)."""
     pbr = material["pbrMetallicRoughness"]
     return PBRMaterial(

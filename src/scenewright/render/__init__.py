@@ -34,7 +34,7 @@ from scenewright.errors import BackendError, InputError, MissingExtra
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder, as_folder
 from scenewright.geometry import object_matrix, world_box
-from scenewright.render.views import VIEWS, object_weights
+from scenewright.render.views import VIEWS, cut_away, object_weights
 from scenewright.scene import Scene
 from scenewright.settings import Settings
 
@@ -79,6 +79,10 @@ def scene_bounds(scene: Scene) -> tuple[list[float], list[float]]:
         width, depth = scene.bounds
         low = np.minimum(low, [-width / 2.0, -depth / 2.0, 0.0])
         high = np.maximum(high, [width / 2.0, depth / 2.0, 0.0])
+    if scene.room is not None:
+        floor = np.asarray(scene.room.floor, float)
+        low[:2] = np.minimum(low[:2], floor.min(axis=0))
+        high[:2] = np.maximum(high[:2], floor.max(axis=0))
     low[2] = min(low[2], 0.0)
     return low.tolist(), high.tolist()
 
@@ -118,6 +122,26 @@ def _ground_texture(scene: Scene, folder: SceneFolder) -> str | None:
     named = folder.ground_texture(scene)
     candidates = [named, folder.ground_image] if named is not None else [folder.ground_image]
     return next((str(p.resolve()) for p in candidates if p.is_file()), None)
+
+
+#: With a room, the worker's ground lies this far under the floor slab's underside.
+ROOM_GROUND_GAP = 0.01
+
+
+def _ground_and_room(scene: Scene, folder: SceneFolder, views: Sequence[str]) -> dict:
+    """The worker's ground, and per view the room nodes it leaves out. A room's floor is the
+    ground inside; outside it the worker's ground is plain and sits under the floor slab, so
+    the two never fight for the same pixels."""
+    if scene.room is None:
+        return {"ground_texture": _ground_texture(scene, folder), "ground_kind": scene.ground.kind}
+    from scenewright.procedural.room import FLOOR_THICKNESS
+
+    return {
+        "ground_texture": None,
+        "ground_kind": "",
+        "ground_z": -FLOOR_THICKNESS - ROOM_GROUND_GAP,
+        "hidden": {view: cut_away(scene.room, view) for view in views},
+    }
 
 
 def check_renderable(scene: Scene, folder: SceneFolder, meshes: AssetMeshes | None = None) -> None:
@@ -210,8 +234,7 @@ def render(
             "boxes": {oid: box.tolist() for oid, box in box_corners(scene).items()},
             "weights": view_weights(scene),
             "style": scene.style,
-            "ground_texture": _ground_texture(scene, folder),
-            "ground_kind": scene.ground.kind,
+            **_ground_and_room(scene, folder, views),
             "views": list(views),
             "keep_all": keep_all,
             "resolution": [int(resolution[0]), int(resolution[1])],

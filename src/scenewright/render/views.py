@@ -10,7 +10,12 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 
+from typing import TYPE_CHECKING
+
 import numpy as np
+
+if TYPE_CHECKING:
+    from scenewright.scene import Room
 
 #: view name → (azimuth of the camera around the scene in degrees, 0 = in front (−Y) and
 #: counter-clockwise seen from above, so −90 = from the left; elevation in degrees).
@@ -210,3 +215,23 @@ def best_view(
         return (round(sum(weight[i] for i in counts), 9), round(well, 9), evenness, -order.index(view))
 
     return max(order, key=key)
+
+
+def cut_away(room: Room, name: str) -> list[str]:
+    """The room's nodes a view leaves out so the room shows from outside: the ceiling, and
+    every wall whose inside faces away from the camera (the walls between the camera and the
+    room), with the doors and windows in them. A wall seen edge-on stays. Names as in
+    :func:`scenewright.procedural.room.room_meshes`; a door or window is hidden by its group node.
+    """
+    from scenewright.procedural.room import opening_nodes
+
+    toward = view_direction(name)[:2]
+    hidden = ["room/ceiling"]
+    near = set()
+    for i, ((x0, y0), (x1, y1)) in enumerate(room.walls):
+        inward = np.array([y0 - y1, x1 - x0]) / math.hypot(x1 - x0, y1 - y0)
+        if inward @ toward < -1e-6:
+            near.add(i)
+            hidden.append(f"room/wall_{i}")
+    hidden += [node for node, opening in zip(opening_nodes(room), room.openings, strict=True) if opening.wall in near]
+    return hidden

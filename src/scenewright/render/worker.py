@@ -98,7 +98,7 @@ def _material(name: str):
     return mat, mat.node_tree.nodes, mat.node_tree.links
 
 
-def add_ground(low, high, texture: str | None, kind: str, horizon) -> None:
+def add_ground(low, high, texture: str | None, kind: str, horizon, z: float = 0.0) -> None:
     """A ground reaching far past the scene that fades into the sky's colour as it recedes.
 
     A ground a few scene sizes wide ended at a hard edge with a band of the world's colour
@@ -112,7 +112,7 @@ def add_ground(low, high, texture: str | None, kind: str, horizon) -> None:
     cx, cy = (low[0] + high[0]) / 2.0, (low[1] + high[1]) / 2.0
     reach = max(high[0] - low[0], high[1] - low[1], 8.0) / 2.0
     half = reach * 60.0
-    verts = [(cx - half, cy - half, 0.0), (cx + half, cy - half, 0.0), (cx + half, cy + half, 0.0), (cx - half, cy + half, 0.0)]
+    verts = [(cx - half, cy - half, z), (cx + half, cy - half, z), (cx + half, cy + half, z), (cx - half, cy + half, z)]
     mesh = bpy.data.meshes.new("ground")
     mesh.from_pydata(verts, [], [(0, 1, 2, 3)])
     uv = mesh.uv_layers.new(name="UVMap")
@@ -138,7 +138,7 @@ def add_ground(low, high, texture: str | None, kind: str, horizon) -> None:
     distance = nodes.new("ShaderNodeVectorMath")
     distance.operation = "DISTANCE"
     links.new(nodes.new("ShaderNodeTexCoord").outputs["Object"], distance.inputs[0])
-    distance.inputs[1].default_value = (cx, cy, 0.0)
+    distance.inputs[1].default_value = (cx, cy, z)
     fade = nodes.new("ShaderNodeMapRange")
     fade.interpolation_type = "SMOOTHSTEP"
     fade.inputs["From Min"].default_value = reach * 3.0
@@ -157,6 +157,15 @@ def add_ground(low, high, texture: str | None, kind: str, horizon) -> None:
     # must not spend light samples on the huge plane as if it were a lamp.
     mat.cycles.emission_sampling = "NONE"
     mesh.materials.append(mat)
+
+
+def cut_away(names: set[str]) -> None:
+    """Leave the named room nodes (and what hangs under them) out of the next render, bring back the rest."""
+    for obj in bpy.context.scene.objects:
+        node, hide = obj, False
+        while node is not None and not hide:
+            hide, node = node.name in names, node.parent
+        obj.hide_render = hide
 
 
 def add_lighting(style: str, low, high) -> str:
@@ -314,7 +323,8 @@ def run(job: dict) -> dict:
     missing = [object_id for object_id, meshes in parts.items() if not meshes]
     world_colour, world_strength = LIGHTING.get(job["style"], LIGHTING["realistic"])[:2]
     horizon = tuple(c * world_strength for c in world_colour)
-    add_ground(low, high, job.get("ground_texture"), job.get("ground_kind", ""), horizon)
+    add_ground(low, high, job.get("ground_texture"), job.get("ground_kind", ""), horizon, job.get("ground_z", 0.0))
+    hidden = {view: set(names) for view, names in job.get("hidden", {}).items()}
     transform = add_lighting(job["style"], low, high)
     width, height = job["resolution"]
     camera = add_camera(width / height)
@@ -328,6 +338,7 @@ def run(job: dict) -> dict:
     with tempfile.TemporaryDirectory(prefix="scenewright-index-") as tmp:
         for view in job["views"]:
             camera.matrix_world = Matrix(camera_matrix(view, job["frame"], width / height).tolist())
+            cut_away(hidden.get(view, set()))
             index_png = Path(tmp) / f"{view}.png"
             render_index(index_png, override)
             image = np.asarray(Image.open(index_png).convert("RGBA"))
@@ -343,6 +354,7 @@ def run(job: dict) -> dict:
     images, seconds, cpu = {}, {}, {}
     for view in chosen:
         camera.matrix_world = Matrix(camera_matrix(view, job["frame"], width / height).tolist())
+        cut_away(hidden.get(view, set()))
         t0, c0 = time.perf_counter(), time.process_time()
         path = out / f"{view}.png"
         render_beauty(path, job, transform)

@@ -15,7 +15,7 @@ import trimesh
 from scenewright.errors import MissingExtra, ScenewrightError
 from scenewright.export.ground import ground_mesh
 from scenewright.geometry import GLTF_TO_SCENE, object_matrix
-from scenewright.scene import SceneObject
+from scenewright.scene import Scene, SceneObject
 from scenewright.studio.panel import object_panel
 from scenewright.studio.session import Session, inside
 
@@ -116,6 +116,24 @@ class Studio:
         for handle in self._nodes.values():
             handle.remove()
         self._nodes.clear()
+        self._draw_ground(scene)
+        for obj in scene.objects:
+            self._nodes[obj.id] = self._add_object(obj)
+        self.history.content = self._history_markdown()
+        if self.selected is not None and self.selected not in {o.id for o in scene.objects}:
+            self.selected = None
+        self._select(self.selected)
+
+    def _draw_ground(self, scene: Scene) -> None:
+        """The ground, or the room when the scene has one: its floor, walls, doors and
+        windows, without the ceiling, so the view from above sees in."""
+        if scene.room is not None:
+            from scenewright.procedural.room import room_meshes
+
+            for name, mesh in room_meshes(scene.room, scene.style):
+                if name != "room/ceiling":
+                    self._nodes[f"__{name}"] = self.server.scene.add_mesh_trimesh(f"/{name}", mesh)
+            return
         texture = None
         if scene.ground.texture:
             path = inside(self.session.folder, scene.ground.texture)
@@ -123,12 +141,6 @@ class Studio:
         ground = ground_mesh(scene.objects, scene.bounds, texture)
         ground.apply_transform(GLTF_TO_SCENE)
         self._nodes["__ground"] = self.server.scene.add_mesh_trimesh("/ground", ground)
-        for obj in scene.objects:
-            self._nodes[obj.id] = self._add_object(obj)
-        self.history.content = self._history_markdown()
-        if self.selected is not None and self.selected not in {o.id for o in scene.objects}:
-            self.selected = None
-        self._select(self.selected)
 
     def _add_object(self, obj: SceneObject):
         data = self.session.asset_bytes(obj)
