@@ -28,6 +28,7 @@ import threading
 import time
 from collections.abc import Callable, Sequence
 from concurrent.futures import ThreadPoolExecutor
+from contextlib import AbstractContextManager, nullcontext
 from dataclasses import dataclass
 from typing import Any
 
@@ -117,6 +118,9 @@ class Hunyuan3D:
         self._cond = threading.Condition()
         self._health_lock = threading.Lock()
         self._cancelled = threading.Event()
+        #: Held around each job attempt, given the server's URL and its slots: a batch puts its
+        #: limit shared by all workers here (scenewright.batch.limits); alone, nothing.
+        self.job_gate: Callable[[str, int], AbstractContextManager[Any]] = lambda url, slots: nullcontext()
         self._client = limited_client(
             timeout, max_download_bytes, limits=httpx.Limits(max_connections=len(urls) * concurrency * 2 + 4)
         )
@@ -188,7 +192,8 @@ class Hunyuan3D:
         while (server := self._acquire(tried)) is not None:
             failure: str | None = "interrupted by an unexpected error"
             try:
-                glb = self._run(server, request, progress)
+                with self.job_gate(server.url, server.slots):
+                    glb = self._run(server, request, progress)
                 failure = None
                 return glb
             except JobFailed as exc:
