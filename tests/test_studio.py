@@ -20,9 +20,9 @@ from scenewright.layout import check
 from scenewright.scene import Constraint, Vec3
 from scenewright.settings import Settings
 from scenewright.studio import Session, inside, object_panel
+from scenewright.studio.bench import CHROMIUM, CHROMIUM_ARGS, drag_from_page, tiled_scene
 from scenewright.studio.session import DragProbe
 
-CHROMIUM = Path("/usr/bin/chromium")
 
 
 def session(folder) -> Session:
@@ -140,7 +140,7 @@ def browser():
     with playwright.sync_playwright() as p:
         launched = p.chromium.launch(
             executable_path=str(CHROMIUM),
-            args=["--headless=new", "--use-angle=swiftshader", "--enable-unsafe-swiftshader"],
+            args=list(CHROMIUM_ARGS),
         )
         yield launched
         launched.close()
@@ -192,6 +192,18 @@ def test_editor_in_the_browser(folder, browser, tmp_path):
         page.get_by_text("scene.json changed on disk; reloaded").wait_for(timeout=30_000)
         page.get_by_text("floor_lamp_1 left of sofa_1: held").wait_for(timeout=15_000)
         assert "(undone)" not in page.inner_text("body")
+
+        # Drag the armchair's gizmo from the page (the messages viser's client sends while a gizmo
+        # is dragged): released, it is one more edit, and every constraint holds.
+        studio.select("armchair_1")
+        before = folder.load().get("armchair_1").position
+        drag_from_page(page, studio, count=30, rate=30.0, step=-0.02)
+        page.get_by_text("edit 2: drag armchair_1").wait_for(timeout=60_000)
+        history = entries(folder)
+        assert len(history) == 2 and history[-1].operation == "move" and history[-1].focus == "armchair_1"
+        after = folder.load()
+        assert after.get("armchair_1").position != before
+        assert all(check(c.relation, after.get(c.source), after.get(c.target)) for c in after.constraints)
     finally:
         studio.stop()
 
@@ -306,3 +318,13 @@ def test_the_render_button_renders_under_the_lock_and_shows_the_images(studio):
     assert len(studio._preview_images) == len(studio.session.previews()) >= 1
     assert (folder.renders / "renders.json").is_file()
     assert not entries(folder)
+
+
+def test_the_benchmark_scene_tiles_a_scene_with_its_meshes_and_relations(folder, tmp_path):
+    scene = folder.load()
+    large = tiled_scene(folder, tmp_path / "large", 2 * len(scene.objects) + 3)
+    tiled = large.load()
+    assert len(tiled.objects) == len({o.id for o in tiled.objects}) == 2 * len(scene.objects) + 3
+    assert len(tiled.constraints) >= 2 * len(scene.constraints)
+    assert all(check(c.relation, tiled.get(c.source), tiled.get(c.target)) for c in tiled.constraints)
+    assert large.glb.is_file() and all(inside(large, o.asset).is_file() for o in tiled.objects if o.asset)
