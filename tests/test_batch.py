@@ -209,6 +209,7 @@ def test_ray_local_mode_gives_identical_scene_documents(fresh, tmp_path):
 # --- reading prompts -------------------------------------------------------------------------
 
 
+@pytest.mark.slow
 def test_jsonl_bad_lines_are_named_by_number_and_skipped_or_refused(tmp_path, capsys):
     path = tmp_path / "prompts.jsonl"
     path.write_text(
