@@ -18,7 +18,6 @@ browser test does. Two figures answer the editor's targets:
 
 from __future__ import annotations
 
-import logging
 import shutil
 import socket
 import statistics
@@ -30,11 +29,10 @@ from typing import Any
 
 from scenewright.errors import InputError, MissingExtra
 from scenewright.folder import SceneFolder
-from scenewright.pipeline import writing
+from scenewright.integrity import assemble_recorded
 from scenewright.scene import Constraint, Vec3
 from scenewright.settings import Settings
 
-log = logging.getLogger(__name__)
 
 CHROMIUM = Path("/usr/bin/chromium")
 CHROMIUM_ARGS = ("--headless=new", "--use-angle=swiftshader", "--enable-unsafe-swiftshader")
@@ -169,9 +167,8 @@ def tiled_scene(source: SceneFolder, root: Path, count: int) -> SceneFolder:
         "layout": None,
     })
     folder = SceneFolder(root)
+    assemble_recorded(tiled, folder)
     folder.save(tiled)
-    with writing(folder, 60.0):  # assembles scene.glb, as every command that writes would
-        pass
     return folder
 
 
