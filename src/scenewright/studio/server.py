@@ -394,12 +394,13 @@ class Studio:
     def _watch(self) -> None:
         """Follow edits made outside the editor (the CLI) by polling scene.json's stamp."""
         while not self._stop.wait(POLL_SECONDS):
-            if self.session.changed_on_disk():
-                with self.session.lock:
-                    try:
-                        self.session.reload()
-                    except ScenewrightError as exc:  # half-written by hand: say so, keep the last good one
-                        self.status.content = f"**scene.json is not readable:** {exc}"
-                        continue
-                self.status.content = "scene.json changed on disk; reloaded"
-                self.draw()
+            with self.session.lock:  # not in the middle of the editor's own edit, which rereads it after
+                if not self.session.changed_on_disk():
+                    continue
+                try:
+                    self.session.reload()
+                except ScenewrightError as exc:  # half-written by hand: say so, keep the last good one
+                    self.status.content = f"**scene.json is not readable:** {exc}"
+                    continue
+            self.status.content = "scene.json changed on disk; reloaded"
+            self.draw()
