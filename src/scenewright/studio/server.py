@@ -255,6 +255,9 @@ class Studio:
             except ScenewrightError as exc:  # e.g. an asset that no longer reads
                 log.warning("could not check the dragged pose: %s", exc)
                 continue
+            except Exception:  # noqa: BLE001 - the checker outlives one bad pose; the drag itself goes on
+                log.exception("checking the dragged pose failed")
+                continue
             with self._drawing:
                 if number == self._drag_number and self.selected == pose[0]:
                     self._show_check(found)
