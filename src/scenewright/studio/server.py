@@ -317,10 +317,11 @@ class Studio:
 
     def start_render(self, draft: bool) -> threading.Thread | None:
         """Render the previews on a thread of its own; the panel shows its progress and the images."""
-        if self.session.rendering.is_set():
-            self.render_status.content = "a render is already running"
-            return None
-        self.render_button.disabled = True
+        with self._drawing:  # two quick clicks start one render
+            if self.session.rendering.is_set() or self.render_button.disabled:
+                self.render_status.content = "a render is already running"
+                return None
+            self.render_button.disabled = True
         thread = threading.Thread(target=self._render, args=(draft,), name="studio-render", daemon=True)
         thread.start()
         return thread

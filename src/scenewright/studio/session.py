@@ -110,8 +110,8 @@ class DragProbe:
         near = idx[self.world.overlaps(idx, self.world.lo[i : i + 1], self.world.hi[i : i + 1])[0]]
         colliding = sorted(self.world.ids[j] for j in self.world.colliders(i, centre, yaw, near))
         violated, partners = [], []
+        pose = {**self.others, self.object_id: moved}
         for c in self.constraints:
-            pose = {**self.others, self.object_id: moved}
             state = constraint_state(c, pose[c.source], pose[c.target])
             if not state.held:
                 violated.append(state)
@@ -134,6 +134,7 @@ class Session:
         self.lock = threading.RLock()
         #: Set while the previews render (see :meth:`render`).
         self.rendering = threading.Event()
+        self._one_render = threading.Lock()
         self._meshes: dict[Path, trimesh.Trimesh] = {}
         self._stamp: tuple[int, int] | None = None
         self.scene = self.reload()
@@ -192,7 +193,7 @@ class Session:
         editor's own edits are refused meanwhile rather than left waiting for the lock."""
         from scenewright.render import render
 
-        if self.rendering.is_set():
+        if not self._one_render.acquire(blocking=False):
             raise FolderBusy("a render is already running")
         self.rendering.set()
         try:
@@ -201,6 +202,7 @@ class Session:
                               max_samples=self.settings.max_render_samples)
         finally:
             self.rendering.clear()
+            self._one_render.release()
 
     def previews(self) -> list[Path]:
         """The preview images in the folder, the chosen view first (none before a render)."""
