@@ -52,7 +52,7 @@ demo: $(DEMO_STAMP)
 test: install tools
 	$(BIN)/python -m pytest -n 2 -q
 
-bench: install
+bench: install chromium
 	@mkdir -p bench-results
 	$(BIN)/scenewright bench layout --sizes 15,50,100 --seeds 20 --json | tee bench-results/layout.json
 	$(BIN)/scenewright bench layout --hard --seeds 10 --json | tee bench-results/layout-hard.json
@@ -66,6 +66,7 @@ bench: install
 	$(BIN)/scenewright bench parse --json | tee bench-results/parse.json
 	for b in 1 2 3; do $(BIN)/scenewright bench pipeline --prompts benchmarks/prompts-fresh-$$b --json > bench-results/fresh-$$b.json; done
 	$(BIN)/scenewright bench batch --json | tee bench-results/batch.json
+	$(BIN)/scenewright bench studio --json | tee bench-results/studio.json
 	$(BIN)/scenewright bench physics --json | tee bench-results/physics.json
 	$(BIN)/python benchmarks/procedural.py | tee bench-results/procedural.json
 	$(BIN)/python benchmarks/speed.py --baseline $(SPEED_BASELINE) --render | tee bench-results/speed.json

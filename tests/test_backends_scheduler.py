@@ -165,7 +165,8 @@ def test_stage_records_which_server_built_each_asset_and_what_failed(tmp_path):
     (failed,) = event.data["failed_attempts"]
     assert failed["server"] == flaky.url and "CUDA out of memory" in failed["error"]
     assert event.data["built_by"][failed["object"]] == good.url
-    # the record survives the document's round trip
+    # the record survives the document's round trip (the stage's caller saves it)
+    folder.save(scene)
     again = SceneFolder(tmp_path).load()
     assert [e for e in again.provenance if e.stage == "assets"][-1].data["failed_attempts"] == [failed]
 

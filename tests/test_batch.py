@@ -209,6 +209,7 @@ def test_ray_local_mode_gives_identical_scene_documents(fresh, tmp_path):
 # --- reading prompts -------------------------------------------------------------------------
 
 
+@pytest.mark.slow
 def test_jsonl_bad_lines_are_named_by_number_and_skipped_or_refused(tmp_path, capsys):
     path = tmp_path / "prompts.jsonl"
     path.write_text(
@@ -237,6 +238,13 @@ def test_jsonl_bad_lines_are_named_by_number_and_skipped_or_refused(tmp_path, ca
     err = " ".join(capsys.readouterr().err.split())
     assert "6 lines cannot be used: line 2: not valid JSON" in err and "Traceback" not in err
     assert not (tmp_path / "out").exists()
+    # Without --strict the bad lines are named and skipped, the good ones made, the record lists them.
+    assert main(["batch", str(path), "--out", str(tmp_path / "out"), "--workers", "1", "--no-render"]) == 0
+    err = " ".join(capsys.readouterr().err.split())
+    assert f"skipped {path}:2: not valid JSON" in err and f"skipped {path}:7:" in err and "Traceback" not in err
+    record = json.loads((tmp_path / "out" / "batch.json").read_text())
+    assert [p["line"] for p in record["skipped_lines"]] == [2, 3, 4, 5, 6, 7]
+    assert record["totals"]["done"] == 2 and (tmp_path / "out" / "corner" / "scene_graph.json").is_file()
 
 
 def test_text_ids_are_stable_and_seeds_multiply_entries(tmp_path):

@@ -21,6 +21,7 @@ import logging
 import threading
 import time
 from collections.abc import Callable, Sequence
+from contextlib import AbstractContextManager, nullcontext
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -108,6 +109,9 @@ class ServerPool:
         self._waiting: list[_Job] = []
         #: request id → every attempt, in order (kept across calls, read by the asset stage).
         self.attempts: dict[str, list[Attempt]] = {}
+        #: Held around each job attempt, given the server's URL and its slots: a batch puts its
+        #: limit shared by all workers here (scenewright.batch.limits); alone, nothing.
+        self.job_gate: Callable[[str, int], AbstractContextManager[Any]] = lambda url, slots: nullcontext()
 
     # -- what subclasses supply ---------------------------------------------------------
 
@@ -193,7 +197,8 @@ class ServerPool:
             started = time.monotonic()
             failure: str | None = "interrupted by an unexpected error"
             try:
-                glb = self._run(server, request, progress)
+                with self.job_gate(server.url, server.slots):
+                    glb = self._run(server, request, progress)
                 failure = None
                 return glb
             except JobFailed as exc:

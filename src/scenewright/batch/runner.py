@@ -29,7 +29,7 @@ from pathlib import Path
 from typing import Any
 
 from scenewright.batch.entries import Entry, Problem
-from scenewright.batch.limits import ActorSlots, FileSlots, SlotTable
+from scenewright.batch.limits import ActorSlots, FileSlots, Limits, SlotTable
 from scenewright.batch.record import Record
 from scenewright.batch.worker import Job, Outcome, finished_outcome, init_worker, outcome, run_scene
 from scenewright.errors import InputError, MissingExtra
@@ -76,14 +76,17 @@ def run_batch(
     render: bool = True,
     ray: RayOptions | None = None,
     remote_limit: int | None = None,
+    requests_per_minute: int | None = None,
     problems: Sequence[Problem] = (),
     source: str = "",
     on_outcome: OnOutcome | None = None,
 ) -> Record:
     """Make every entry's scene under ``out/<id>``; returns the record (also on disk).
 
-    ``remote_limit`` is the number of requests in flight to any one remote model server
-    across all workers (default ``settings.image_concurrency``). A KeyboardInterrupt stops
+    ``remote_limit`` is the number of requests in flight to any one OpenAI-compatible server
+    across all workers (default ``settings.image_concurrency``); a Hunyuan3D server takes
+    ``settings.mesh_concurrency`` jobs from all workers together; ``requests_per_minute`` spaces
+    the requests to each server (None: no such limit). A KeyboardInterrupt stops
     the batch cleanly: the record says ``interrupted`` and the call returns normally.
     """
     out = Path(out)
@@ -96,6 +99,10 @@ def run_batch(
     workers = workers or (ray.num_cpus if ray and ray.num_cpus else default_workers())
     if workers < 1:
         raise InputError(f"--workers must be at least 1, got {workers}")
+    if remote_limit is not None and remote_limit < 1:
+        raise InputError(f"--remote-limit must be at least 1, got {remote_limit}")
+    if requests_per_minute is not None and requests_per_minute < 1:
+        raise InputError(f"--requests-per-minute must be at least 1, got {requests_per_minute}")
     limit = remote_limit or settings.image_concurrency
     record = Record(out, entries, problems, source=source, executor="ray" if ray else "local", workers=workers)
     start = time.perf_counter()
@@ -121,10 +128,10 @@ def run_batch(
         return record
     try:
         if ray is None:
-            slots = FileSlots(out.absolute() / ".limits", limit)
-            _run_local([replace(j, slots=slots) for j in jobs], workers, arrived, record)
+            limits = Limits(FileSlots(out.absolute() / ".limits"), limit, requests_per_minute)
+            _run_local([replace(j, limits=limits) for j in jobs], workers, arrived, record)
         else:
-            _run_ray(jobs, ray, workers, limit, arrived, record)
+            _run_ray(jobs, ray, workers, limit, requests_per_minute, arrived, record)
     except KeyboardInterrupt:  # between two waits; the workers had the signal too and stop
         record.interrupted = True
     finally:
@@ -218,7 +225,10 @@ def _crashed(job: Job, reason: str) -> Outcome:
 
 # --- Ray --------------------------------------------------------------------------------------
 
-def _run_ray(jobs: list[Job], options: RayOptions, workers: int, limit: int, arrived: OnOutcome, record: Record) -> None:
+def _run_ray(
+    jobs: list[Job], options: RayOptions, workers: int, limit: int, per_minute: int | None, arrived: OnOutcome,
+    record: Record,
+) -> None:
     ray = import_ray()
     started_here = not ray.is_initialized()
     if started_here:
@@ -229,10 +239,10 @@ def _run_ray(jobs: list[Job], options: RayOptions, workers: int, limit: int, arr
             kwargs["num_cpus"] = options.num_cpus or workers
         ray.init(**kwargs)
     try:
-        table = ray.remote(num_cpus=0)(SlotTable).remote(limit)
-        slots = ActorSlots(table, limit)
+        table = ray.remote(num_cpus=0)(SlotTable).remote()
+        limits = Limits(ActorSlots(table), limit, per_minute)
         task = ray.remote(num_cpus=options.cpus_per_scene, num_gpus=options.gpus_per_scene, max_retries=1)(run_scene)
-        refs = {task.remote(replace(job, slots=slots)): job for job in jobs}
+        refs = {task.remote(replace(job, limits=limits)): job for job in jobs}
         waiting = list(refs)
         try:
             while waiting:

@@ -44,13 +44,14 @@ def init_worker(log_level: int = logging.WARNING) -> None:
 
 @dataclass(frozen=True)
 class Job:
-    """What a worker needs: the entry, the batch folder, settings, and the shared limit."""
+    """What a worker needs: the entry, the batch folder, settings, and the limits shared by all
+    workers (a :class:`~scenewright.batch.limits.Limits`)."""
 
     entry: Entry
     out: Path
     settings: Settings
     render: bool = True
-    slots: Any = None
+    limits: Any = None
 
 
 @dataclass
@@ -158,10 +159,10 @@ def run_scene(job: Job) -> Outcome:
     try:
         settings = entry.settings(job.settings)
         backends = backends_from_settings(settings)
-        if job.slots is not None:
+        if job.limits is not None:
             from scenewright.batch.limits import share_limit
 
-            share_limit(backends, job.slots)
+            share_limit(backends, job.limits)
         folder = SceneFolder(root)
         scene = generate(
             entry.text,

@@ -67,7 +67,12 @@ def batch_command(
     remote_limit: Annotated[
         int | None,
         typer.Option("--remote-limit", min=1, help="Requests in flight per remote model server, across all workers "
-                     "(default: image_concurrency)."),
+                     "(default: image_concurrency; Hunyuan3D servers take mesh_concurrency jobs each)."),
+    ] = None,
+    requests_per_minute: Annotated[
+        int | None,
+        typer.Option("--requests-per-minute", min=1, help="Requests started per minute per remote server, across "
+                     "all workers, spaced evenly (default: no limit)."),
     ] = None,
     gpus_per_scene: Annotated[
         float, typer.Option("--gpus-per-scene", min=0.0, help="GPUs each Ray task declares (renders, local models).")
@@ -128,7 +133,7 @@ def batch_command(
 
         record = run_batch(
             entries, out, settings=settings, workers=workers, render=not no_render, ray=ray,
-            remote_limit=remote_limit, problems=problems, source=str(prompts), on_outcome=arrived,
+            remote_limit=remote_limit, requests_per_minute=requests_per_minute, problems=problems, source=str(prompts), on_outcome=arrived,
         )
     t = record.totals()
     console = Console(soft_wrap=True, highlight=False)

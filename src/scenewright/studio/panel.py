@@ -6,7 +6,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from scenewright.layout.relations import check, describe, violation
-from scenewright.scene import Scene
+from scenewright.scene import Constraint, Scene, SceneObject
 
 
 @dataclass(frozen=True)
@@ -51,17 +51,18 @@ class ObjectPanel:
         return "\n".join(lines)
 
 
+def constraint_state(constraint: Constraint, source: SceneObject, target: SceneObject) -> ConstraintState:
+    """Whether ``constraint`` holds between these poses of its two objects, and by how much it misses."""
+    held = check(constraint.relation, source, target)
+    miss = "" if held else describe(constraint.relation, violation(constraint.relation, source, target))
+    return ConstraintState(str(constraint), held, miss)
+
+
 def object_panel(scene: Scene, object_id: str) -> ObjectPanel:
     """The panel of ``object_id`` (an :class:`InputError` naming the known ids when absent)."""
     obj = scene.get(object_id)
-    states = []
-    for c in scene.constraints:
-        if object_id not in (c.source, c.target):
-            continue
-        source, target = scene.get(c.source), scene.get(c.target)
-        held = check(c.relation, source, target)
-        miss = "" if held else describe(c.relation, violation(c.relation, source, target))
-        states.append(ConstraintState(str(c), held, miss))
+    states = [constraint_state(c, scene.get(c.source), scene.get(c.target))
+              for c in scene.constraints if object_id in (c.source, c.target)]
     unplaced = None
     if scene.layout is not None:
         unplaced = next((u.reason + (f" ({u.nearest_miss})" if u.nearest_miss else "")

@@ -3,11 +3,18 @@
 The page is viser's prebuilt client: no JavaScript is built here. Every button calls the
 :class:`~scenewright.studio.session.Session`, and the 3D view is redrawn from the document
 after each change and whenever scene.json changes on disk.
+
+While an object is dragged, each gizmo update only moves its node; checking the pose (the
+collision and relation checks of :class:`~scenewright.studio.session.DragProbe`) runs on a
+thread of its own on the latest pose, at most every ``CHECK_SECONDS``, so a slow check never
+holds the drag back. Renders run on a thread too, reporting their progress in the panel.
 """
 
 from __future__ import annotations
 
+import logging
 import threading
+import time
 
 import numpy as np
 import trimesh
@@ -16,13 +23,21 @@ from scenewright.errors import MissingExtra, ScenewrightError
 from scenewright.export.ground import ground_mesh
 from scenewright.geometry import GLTF_TO_SCENE, object_matrix
 from scenewright.scene import Scene, SceneObject
-from scenewright.studio.panel import object_panel
-from scenewright.studio.session import Session, inside
+from scenewright.studio.session import DragCheck, DragProbe, Session, inside
 
+log = logging.getLogger(__name__)
 
 #: How often scene.json's modification time is looked at, seconds.
 POLL_SECONDS = 0.5
+#: Least time between two checks of the dragged pose, seconds (at most ten a second).
+CHECK_SECONDS = 0.1
 HIGHLIGHT = (255, 170, 0)
+#: The dragged object's outline where it fits, and where it does not.
+FITS = (60, 200, 90)
+MISFITS = (230, 40, 40)
+#: Outlines of the objects it collides with, and of the other objects of constraints it breaks.
+COLLIDING = (230, 40, 40)
+VIOLATED = (190, 70, 230)
 
 
 def _viser():
@@ -60,6 +75,16 @@ class Studio:
         self._nodes: dict[str, object] = {}
         self._gizmo = None
         self._outline = None
+        self._marks: dict[str, object] = {}
+        #: The latest pose under the pointer (object id, x, y, yaw) waiting to be checked.
+        self._pose: tuple[str, float, float, float] | None = None
+        self._probe: DragProbe | None = None
+        #: Counts drags; a check of an earlier drag is dropped instead of drawn.
+        self._drag_number = 0
+        self._check_wanted = threading.Event()
+        #: Checks run (for the benchmark: how many the throttle let through).
+        self.checks_run = 0
+        self._preview_images: list[object] = []
         self._stop = threading.Event()
         #: GUI callbacks and the disk watcher redraw from their own threads.
         self._drawing = threading.RLock()
@@ -70,6 +95,7 @@ class Studio:
         self.status = gui.add_markdown("Click an object to select it.")
         with gui.add_folder("Object"):
             self.panel = gui.add_markdown("_nothing selected_")
+            self.checks = gui.add_markdown("")
         with gui.add_folder("Edit"):
             self.instruction = gui.add_text("Instruction", initial_value="", hint="move the lamp next to the sofa")
             apply = gui.add_button("Apply edit")
@@ -78,13 +104,23 @@ class Studio:
             download = gui.add_button("Download GLB")
         with gui.add_folder("History"):
             self.history = gui.add_markdown("")
+        self._previews = gui.add_folder("Previews")
+        with self._previews:
+            self.draft = gui.add_checkbox("Draft (fast, noisy)", initial_value=False)
+            self.render_button = gui.add_button("Re-render previews")
+            self.render_status = gui.add_markdown("")
         apply.on_click(lambda _: self.submit(self.instruction.value))
         undo.on_click(lambda _: self._run(self.session.undo, "undid"))
         redo.on_click(lambda _: self._run(self.session.redo, "redid"))
         download.on_click(self._download)
+        self.render_button.on_click(lambda _: self.start_render(self.draft.value))
         self.draw()
-        self._watcher = threading.Thread(target=self._watch, name="studio-watch", daemon=True)
-        self._watcher.start()
+        self._show_previews()
+        self.status.content = f"{len(self.session.scene.objects)} objects loaded. Click an object to select it."
+        self._threads = [threading.Thread(target=self._watch, name="studio-watch", daemon=True),
+                         threading.Thread(target=self._check_drags, name="studio-drag-check", daemon=True)]
+        for thread in self._threads:
+            thread.start()
 
     @property
     def url(self) -> str:
@@ -92,6 +128,7 @@ class Studio:
 
     def stop(self) -> None:
         self._stop.set()
+        self._check_wanted.set()
         self.server.stop()
 
     def _aim_camera(self) -> None:
@@ -172,6 +209,7 @@ class Studio:
             if handle is not None:
                 handle.remove()
         self._outline = self._gizmo = None
+        self._end_checks()
         self.selected = object_id
         if object_id is None:
             self.panel.content = "_nothing selected_"
@@ -189,30 +227,160 @@ class Studio:
         self._gizmo.on_update(self._dragged)
 
     def _dragged(self, event) -> None:
-        """Move the object with the gizmo; on release commit it as one edit."""
+        """Move the object with the gizmo and have the pose checked; on release commit it as one edit."""
         if self.selected is None:
             return
         obj = self.session.scene.get(self.selected)
-        x, y, _ = event.target.position
+        x, y, _ = (float(v) for v in event.target.position)
         yaw = _yaw_of(event.target.wxyz)
-        moved = obj.model_copy(update={"position": obj.position.model_copy(update={"x": float(x), "y": float(y)}),
-                                       "rotation": obj.rotation.model_copy(update={"z": yaw})})
-        node = self._nodes.get(obj.id)
-        if node is not None:
-            node.wxyz, node.position = (_pose(object_matrix(moved) @ GLTF_TO_SCENE) if obj.asset is not None
-                                        else (_yaw_quaternion(yaw), moved.position.tuple()))
+        self.move_node(obj, x, y, yaw)
         if event.phase == "end":
-            self.drag(obj.id, float(x), float(y), yaw)
-        else:  # which of its constraints the pose under the pointer breaks (boxes only: cheap enough per update)
-            trial = self.session.scene.model_copy(update={
-                "objects": [moved if o.id == obj.id else o for o in self.session.scene.objects]})
-            self.panel.content = object_panel(trial, obj.id).markdown()
+            self.drag(obj.id, x, y, yaw)
+        else:
+            self.want_check(obj.id, x, y, yaw)
+
+    def move_node(self, obj: SceneObject, x: float, y: float, yaw: float) -> None:
+        """Show ``obj`` at (x, y) turned to ``yaw`` (the document is not changed)."""
+        node = self._nodes.get(obj.id)
+        if node is None:
+            return
+        moved = obj.model_copy(update={"position": obj.position.model_copy(update={"x": x, "y": y}),
+                                       "rotation": obj.rotation.model_copy(update={"z": yaw})})
+        node.wxyz, node.position = (_pose(object_matrix(moved) @ GLTF_TO_SCENE) if obj.asset is not None
+                                    else (_yaw_quaternion(yaw), moved.position.tuple()))
+
+    def want_check(self, object_id: str, x: float, y: float, yaw: float) -> None:
+        """Ask for the pose under the pointer to be checked (the latest one wins)."""
+        self._pose = (object_id, x, y, yaw)
+        self._check_wanted.set()
+
+    def _check_drags(self) -> None:
+        while not self._stop.is_set():
+            self._check_wanted.wait()
+            self._check_wanted.clear()
+            pose, number = self._pose, self._drag_number
+            if pose is None or self._stop.is_set():
+                continue
+            started = time.monotonic()
+            try:
+                found = self._check(pose)
+            except ScenewrightError as exc:  # e.g. an asset that no longer reads
+                log.warning("could not check the dragged pose: %s", exc)
+                continue
+            except Exception:  # noqa: BLE001 - the checker outlives one bad pose; the drag itself goes on
+                log.exception("checking the dragged pose failed")
+                continue
+            with self._drawing:
+                if number == self._drag_number and self.selected == pose[0]:
+                    self._show_check(found)
+            self.checks_run += 1
+            self._stop.wait(max(0.0, CHECK_SECONDS - (time.monotonic() - started)))
+
+    def _check(self, pose: tuple[str, float, float, float]) -> DragCheck:
+        object_id, x, y, yaw = pose
+        with self.session.lock:
+            scene = self.session.scene
+            probe = self._probe
+            if probe is None or probe.object_id != object_id or probe.scene is not scene:
+                probe = self._probe = DragProbe(scene, object_id, self.session.meshes(scene))
+        return probe.check(x, y, yaw)
+
+    def _show_check(self, found: DragCheck) -> None:
+        """Outline what the dragged pose runs into, and list it in the panel."""
+        if self._outline is not None:
+            self._outline.color = FITS if found.fits else MISFITS
+        wanted = {oid: VIOLATED for oid in found.partners}
+        wanted.update({oid: COLLIDING for oid in found.colliding})  # a collision outweighs a relation
+        for oid in [k for k in self._marks if k not in wanted]:
+            self._marks.pop(oid).remove()
+        scene = self.session.scene
+        for oid, colour in wanted.items():
+            if oid in self._marks and self._marks[oid].color == colour:
+                continue
+            if oid in self._marks:
+                self._marks.pop(oid).remove()
+            other = scene.get(oid)
+            self._marks[oid] = self.server.scene.add_box(
+                f"/checks/{oid}", color=colour, dimensions=other.size.tuple(), wireframe=True,
+                wxyz=_yaw_quaternion(other.yaw), position=other.position.tuple())
+        self.checks.content = "**while dragging:** " + found.markdown()
+
+    def _end_checks(self) -> None:
+        """Forget the drag's check: its outlines go, a check still running is not drawn."""
+        self._drag_number += 1
+        self._pose = None
+        for handle in self._marks.values():
+            handle.remove()
+        self._marks.clear()
+        self.checks.content = ""
 
     def drag(self, object_id: str, x: float, y: float, yaw: float) -> str:
-        result = self.session.drag(object_id, x, y, yaw)
-        self.status.content = result.message
+        with self._drawing:
+            self._end_checks()
+        try:
+            message = self.session.drag(object_id, x, y, yaw).message
+        except ScenewrightError as exc:  # the folder is busy (a render, another command)
+            message = f"**not done:** {exc}"
+        self.status.content = message
         self.draw()
-        return result.message
+        return message
+
+    # --- previews --------------------------------------------------------------------------
+
+    def start_render(self, draft: bool) -> threading.Thread | None:
+        """Render the previews on a thread of its own; the panel shows its progress and the images."""
+        with self._drawing:  # two quick clicks start one render
+            if self.session.rendering.is_set() or self.render_button.disabled:
+                self.render_status.content = "a render is already running"
+                return None
+            self.render_button.disabled = True
+        thread = threading.Thread(target=self._render, args=(draft,), name="studio-render", daemon=True)
+        thread.start()
+        return thread
+
+    def _render(self, draft: bool) -> None:
+        started = time.monotonic()
+        done = threading.Event()
+
+        def tick() -> None:
+            while not done.wait(1.0):
+                self.render_status.content = f"rendering{' a draft' if draft else ''} with Blender… " \
+                                             f"{time.monotonic() - started:.0f} s"
+
+        self.render_status.content = f"rendering{' a draft' if draft else ''} with Blender…"
+        ticker = threading.Thread(target=tick, name="studio-render-tick", daemon=True)
+        ticker.start()
+        try:
+            paths = self.session.render(draft=draft)
+        except ScenewrightError as exc:  # no Blender (the render extra), a busy folder, a failed render
+            message = f"**render not done:** {exc}"
+        else:
+            message = f"rendered {len(paths)} preview(s) in {time.monotonic() - started:.0f} s"
+        finally:
+            done.set()
+            ticker.join()
+            self.render_button.disabled = False
+        self.render_status.content = message
+        self._show_previews()
+
+    def _show_previews(self) -> None:
+        """The folder's preview images in the panel, the chosen view first."""
+        try:
+            paths = self.session.previews()
+        except ScenewrightError as exc:
+            self.render_status.content = f"**previews not shown:** {exc}"
+            return
+        from PIL import Image
+
+        with self._drawing:
+            for handle in self._preview_images:
+                handle.remove()
+            self._preview_images = []
+            for path in paths:
+                with Image.open(path) as image:
+                    pixels = np.asarray(image.convert("RGB"))
+                with self._previews:
+                    self._preview_images.append(self.server.gui.add_image(pixels, label=path.stem, format="jpeg"))
 
     def submit(self, instruction: str) -> str:
         return self._run(lambda: self.session.edit(instruction), "edit")
@@ -242,12 +410,13 @@ class Studio:
     def _watch(self) -> None:
         """Follow edits made outside the editor (the CLI) by polling scene.json's stamp."""
         while not self._stop.wait(POLL_SECONDS):
-            if self.session.changed_on_disk():
-                with self.session.lock:
-                    try:
-                        self.session.reload()
-                    except ScenewrightError as exc:  # half-written by hand: say so, keep the last good one
-                        self.status.content = f"**scene.json is not readable:** {exc}"
-                        continue
-                self.status.content = "scene.json changed on disk; reloaded"
-                self.draw()
+            with self.session.lock:  # not in the middle of the editor's own edit, which rereads it after
+                if not self.session.changed_on_disk():
+                    continue
+                try:
+                    self.session.reload()
+                except ScenewrightError as exc:  # half-written by hand: say so, keep the last good one
+                    self.status.content = f"**scene.json is not readable:** {exc}"
+                    continue
+            self.status.content = "scene.json changed on disk; reloaded"
+            self.draw()
