@@ -96,6 +96,28 @@ def _stage_note(progress: Progress | None, stage: str) -> Callable[[str], None]:
     return (lambda message: progress(stage, message)) if progress else (lambda message: None)
 
 
+def _room_option(scene: Scene) -> str:
+    """The ``--room`` a scene was generated with (recorded when it was made), for a resumed run
+    that analyses again; scenes made before rooms existed had none."""
+    for event in scene.provenance:
+        if event.stage == "generate" and event.message == "new scene":
+            return str(event.data.get("room", "none"))
+    return "none"
+
+
+def _decide_room(scene: Scene, vlm, option: str) -> None:
+    """Give ``scene`` its room (or none) under ``--room`` ``option``, once its objects are known."""
+    from scenewright.analysis.parser.room import parse_room_option, room_for
+
+    proposed = bool(getattr(vlm, "proposes_rooms", False))
+    scene.room = room_for(scene.text, scene.objects, parse_room_option(option),
+                          getattr(vlm, "last_room", None) if proposed else None, proposed)
+    if scene.room is not None:
+        (x0, y0), (x1, y1) = scene.room.floor[0], scene.room.floor[2]
+        scene.record("analyze", f"room {abs(x1 - x0):g} x {abs(y1 - y0):g} m, {scene.room.height:g} m high, "
+                     f"{len(scene.room.openings)} openings", room=option, walls=len(scene.room.floor))
+
+
 def run_stages(
     scene: Scene,
     folder: SceneFolder,
@@ -104,8 +126,13 @@ def run_stages(
     settings: Settings,
     render: bool = True,
     progress: Progress | None = None,
+    room: str | None = None,
 ) -> Scene:
-    """Run every stage of ``scene`` that is not done yet; save the document after each."""
+    """Run every stage of ``scene`` that is not done yet; save the document after each.
+
+    ``room`` is the ``--room`` choice, applied when the analysis runs (default: the one the
+    scene was made with)."""
+    from scenewright.analysis.composition.walls import room_constraints
     cache = RequestCache(settings.cache_dir)
     scene.backends = backends.names()
     pending = _pending(scene, folder)
@@ -117,6 +144,7 @@ def run_stages(
         note("started")
         if stage == "analyze":
             analyze(scene, folder, backends.vlm, backends.images, note)
+            _decide_room(scene, backends.vlm, room or _room_option(scene))
         elif stage == "assets":
             generate_assets(scene, folder, backends.meshes, cache, note, max_faces=settings.max_faces)
         elif stage == "layout":
@@ -127,6 +155,7 @@ def run_stages(
                 load_meshes(scene, folder),
                 rounds=settings.feedback_rounds,
                 time_limit=settings.time_limit,
+                furnish=room_constraints,
             )
         elif stage == "export":
             path = assemble_recorded(scene, folder)
@@ -168,9 +197,17 @@ def generate(
     seed: int = 0,
     render: bool = True,
     progress: Progress | None = None,
+    room: str | None = "auto",
 ) -> Scene:
-    """Make the scene ``text`` describes in ``folder``; resume it when the folder holds it already."""
+    """Make the scene ``text`` describes in ``folder``; resume it when the folder holds it already.
+
+    ``room``: ``auto`` (a room when the text is indoor, docs/rooms.md), ``none``, or the floor
+    as ``WxD`` or ``WxDxH`` metres."""
+    from scenewright.analysis.parser.room import parse_room_option
+
     folder = _as_folder(folder)
+    room = room or "auto"
+    parse_room_option(room)  # bad input fails before the folder is touched
     text = text.strip()
     if not text:
         raise InputError(
@@ -192,11 +229,12 @@ def generate(
             log.info("resuming %s (done: %s)", folder.root, ", ".join(scene.done) or "nothing")
         else:
             scene = candidate
-            scene.record("generate", "new scene", style=scene.style, seed=seed, backends=backends.names())
+            scene.record("generate", "new scene", style=scene.style, seed=seed, backends=backends.names(), room=room)
             folder.save(scene)
         try:
             return run_stages(
-                scene, folder, backends=backends, settings=settings, render=render, progress=progress
+                scene, folder, backends=backends, settings=settings, render=render, progress=progress,
+                room=room if fresh else None,
             )
         except InputError:
             if fresh and not scene.objects:

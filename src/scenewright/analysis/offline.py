@@ -15,8 +15,9 @@ from typing import TYPE_CHECKING
 from scenewright.analysis.arrange import Composition, compose
 from scenewright.analysis.parser import ParsedScene, parse_scene
 from scenewright.analysis.parser.language import check_english
+from scenewright.analysis.parser.room import wall_phrases
 from scenewright.errors import BackendError, InputError
-from scenewright.scene import Constraint, Event, LayoutReport, SceneObject
+from scenewright.scene import ROOM_RELATIONS, ROOM_TARGET, Constraint, Event, LayoutReport, SceneObject
 
 if TYPE_CHECKING:
     from scenewright.editing.plan import EditPlan
@@ -27,9 +28,12 @@ if TYPE_CHECKING:
 _RELAX: dict[str, str | None] = {
     "left of": "near", "right of": "near", "in front of": "near", "behind": "near", "side of": "near",
     "near": None, "far": None, "face to": None, "above": None, "on": None,
+    # A wall-mounted or hanging thing keeps its wall or ceiling: without it, it would stand on the floor.
+    "in corner": "against wall", "against wall": None, "on wall": "on wall", "on ceiling": "on ceiling",
 }  # fmt: skip
 #: Which relation gives way first when the report names no failed relation.
-_PRIORITY = ("far", "face to", "near", "side of", "left of", "right of", "in front of", "behind", "above", "on")
+_PRIORITY = ("far", "face to", "near", "side of", "left of", "right of", "in front of", "behind", "in corner",
+             "against wall", "above", "on", "on wall", "on ceiling")
 
 NO_OBJECT = "no object recognised in the text; name things like 'a sofa', 'two trees', 'a lamp on the desk'"
 #: The default of ``Settings.max_objects``.
@@ -108,6 +112,9 @@ class OfflineVLM:
         for r in self.composition(text).relations:
             if r.source in ids and r.target in ids:
                 out.append(Constraint(relation=r.relation, source=ids[r.source], target=ids[r.target]))
+        for r in wall_phrases(parsed):  # "against the back wall": relations to the room, if it has one
+            if r.source in ids:
+                out.append(Constraint(relation=r.relation, source=ids[r.source], target=r.target))
         return out
 
     def find_redundant(self, objects: Sequence[SceneObject], images: Mapping[str, bytes]) -> dict[str, str]:
@@ -152,8 +159,12 @@ def relax_constraints(constraints: Sequence[Constraint], report: LayoutReport) -
                 revised.append(c)
                 continue
             relaxed = _RELAX[c.relation]
+            if c.relation in ROOM_RELATIONS and c.target != ROOM_TARGET and c.relation != "on ceiling":
+                relaxed, target = c.relation, ROOM_TARGET  # one wall -> any wall
+            else:
+                target = c.target
             if relaxed is not None:
-                revised.append(Constraint(relation=relaxed, source=c.source, target=c.target))
+                revised.append(Constraint(relation=relaxed, source=c.source, target=target))
         out = revised
     unique: dict[tuple[str, str, str], Constraint] = {}
     for c in out:

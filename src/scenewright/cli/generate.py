@@ -115,6 +115,10 @@ def generate_command(
         typer.Option("--export", help="Also export for simulators: usd | mjcf | glb-physics (repeatable)."),
     ] = None,
     max_objects: MaxObjectsOption = None,
+    room: Annotated[
+        str,
+        typer.Option("--room", help="The room: auto (indoor text gets one), none, or the floor as WxD or WxDxH metres."),
+    ] = "auto",
 ) -> None:
     """Turn TEXT into a scene folder: scene.json, one asset per object, scene.glb, previews."""
     from scenewright.backends import Backends
@@ -131,8 +135,11 @@ def generate_command(
         raise InputError(
             f"give exactly one of TEXT, --example or --resume DIR (got {', '.join(given) or 'none'})"
         )
-    if resume_dir is not None and (out is not None or style is not None):
-        raise InputError("--resume takes the scene folder itself and keeps its style; drop --out and --style")
+    if resume_dir is not None and (out is not None or style is not None or room != "auto"):
+        raise InputError("--resume takes the scene folder itself and keeps its style and room; drop --out, --style and --room")
+    from scenewright.analysis.parser.room import parse_room_option
+
+    parse_room_option(room)  # exit 2 naming the value, before any work
     if resume_dir is None and out is None:
         raise InputError("--out DIR is required: the folder to write the scene into")
     check_seed(seed)
@@ -178,16 +185,35 @@ def generate_command(
                 seed=seed,
                 render=not no_render,
                 progress=report,
+                room=room,
             )
     _summary(Console(soft_wrap=True), folder, scene)
     for path in export_formats(folder.root, export, config=config) if export else ():
         typer.echo(f"  exported     {path}")
+    if scene.layout is not None and scene.layout.room:
+        Console(stderr=True, soft_wrap=True).print(f"[yellow]room: {safe('; '.join(scene.layout.room))}[/yellow]")
     if scene.layout is not None and scene.layout.unplaced:
-        lines = "; ".join(f"{u.id} ({u.reason})" for u in scene.layout.unplaced)
+        lines = "; ".join(f"{u.id} ({u.reason}{': ' + u.nearest_miss if u.nearest_miss else ''})"
+                          for u in scene.layout.unplaced)
         raise InfeasibleLayout(
             f"{len(scene.layout.unplaced)} objects could not be placed and stay at their initial "
-            f"positions: {lines}. The scene is written; move them with `scenewright edit`."
+            f"positions: {lines}.{_room_shortfall(scene)} The scene is written; move them with `scenewright edit`."
         )
+
+
+def _room_shortfall(scene: Scene) -> str:
+    """How much floor the objects need beyond what the room has, when that is why they do not fit."""
+    if scene.room is None:
+        return ""
+    from scenewright.analysis.parser.room import COVERAGE, floor_area
+    from scenewright.layout.room import RoomShape
+
+    need, _ = floor_area(scene.objects)
+    have = RoomShape(scene.room).area
+    if need <= COVERAGE * have * 1.5:
+        return ""
+    return (f" The floor objects cover {need:.1f} m² of a {have:.1f} m² room ({need / have:.0%}); "
+            f"a room of about {need / COVERAGE:.0f} m² fits them with walking space (--room WxD).")
 
 
 @bench_app.command("pipeline")
