@@ -232,3 +232,27 @@ def problems(room: Room, objects: Sequence[SceneObject], floor_ids: set[str] | N
     if unreachable:
         out.append(f"no walking path from a door reaches {', '.join(unreachable)}")
     return out
+
+
+#: Directions (x, y) of the room's sides as a viewer at the front sees them (DESIGN frames: +Y back).
+SIDES = {"back": (0.0, 1.0), "front": (0.0, -1.0), "left": (-1.0, 0.0), "right": (1.0, 0.0)}
+
+
+def wall_facing(room: Room, side: str) -> int:
+    """The wall on ``side`` (back, front, left, right) of ``room``: the one whose outward normal
+    points most that way (the longest among equals), so "the back wall" of an L-shaped room is
+    its wall furthest along +Y."""
+    if side not in SIDES:
+        raise ValueError(f"unknown side {side!r}; sides are {', '.join(SIDES)}")
+    direction = np.array(SIDES[side])
+    best, key = 0, None
+    for i, ((x0, y0), (x1, y1)) in enumerate(room.walls):
+        d = np.array([x1 - x0, y1 - y0])
+        length = float(np.linalg.norm(d))
+        outward = np.array([d[1], -d[0]]) / length  # right of a CCW edge: outside
+        # Most outward that way first; then the one furthest that way; then the longest.
+        mid = np.array([(x0 + x1) / 2.0, (y0 + y1) / 2.0])
+        rank = (round(float(outward @ direction), 6), round(float(mid @ direction), 6), length)
+        if key is None or rank > key:
+            best, key = i, rank
+    return best

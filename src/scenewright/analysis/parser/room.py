@@ -192,7 +192,7 @@ def build_room(request: RoomRequest, objects: Sequence[SceneObject], size: tuple
             width, depth = max(width, usual_w * request.scale), max(depth, usual_d * request.scale)
         width, depth = math.ceil(width * 10) / 10, math.ceil(depth * 10) / 10
     room = Room.rectangle(width, depth, height)
-    return room.model_copy(update={"openings": place_openings(room, request.openings)})
+    return Room.model_validate({**room.model_dump(), "openings": place_openings(room, request.openings)})
 
 
 def place_openings(room: Room, wanted: Sequence[tuple[str, str | None, int]]) -> list[Opening]:
