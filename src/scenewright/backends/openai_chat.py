@@ -25,7 +25,18 @@ from pydantic import BaseModel, ConfigDict, WithJsonSchema
 from scenewright.backends import prompts
 from scenewright.backends.structured import ChatClient, InvalidAnswer, json_text, model_name, user_message
 from scenewright.errors import InputError
-from scenewright.scene import MAX_ID_CHARS, RELATION_TYPES, Constraint, Event, SceneObject, Vec3
+from scenewright.scene import (
+    MAX_ID_CHARS,
+    MAX_ROOM_HEIGHT,
+    MIN_ROOM_HEIGHT,
+    MIN_WALL,
+    RELATION_TYPES,
+    Constraint,
+    Event,
+    Room,
+    SceneObject,
+    Vec3,
+)
 
 if TYPE_CHECKING:
     from scenewright.editing.plan import EditPlan
@@ -83,8 +94,22 @@ class ProposedObject(_Answer):
     visual_description: str
 
 
+class ProposedOpening(_Answer):
+    kind: Literal["door", "window"]
+    wall: Literal["front", "back", "left", "right"]
+
+
+class ProposedRoom(_Answer):
+    width: float
+    depth: float
+    height: float
+    openings: list[ProposedOpening]
+
+
 class ObjectsAnswer(_Answer):
     objects: list[ProposedObject]
+    #: The room around an indoor scene; null for an open one (docs/rooms.md).
+    room: ProposedRoom | None = None
 
 
 class RedundantImage(_Answer):
@@ -164,6 +189,10 @@ class OpenAIChatVLM:
         self.chat = ChatClient(model, settings, client)
         #: Provenance events for what the last call repaired or dropped in the model's answer.
         self.last_repairs: list[Event] = []
+        #: The room the last objects answer proposed (None: an open scene); the pipeline takes
+        #: it for ``--room auto`` since this backend proposes rooms.
+        self.last_room: Room | None = None
+        self.proposes_rooms = True
 
     @classmethod
     def from_spec(cls, argument: str, settings: Settings) -> OpenAIChatVLM:
@@ -200,6 +229,7 @@ class OpenAIChatVLM:
             objects = self._objects_from(answer.objects, low, high)
             if not objects:
                 raise InvalidAnswer("the list has no usable object; list the objects the description names")
+            self.last_room = _room_from(answer.room)
             return objects
 
         return self.chat.ask("scene_objects", messages, ObjectsAnswer, check)
@@ -337,7 +367,7 @@ class OpenAIChatVLM:
         duplicates and cycles; each drop is recorded."""
         from scenewright.layout import clean_constraints
 
-        kept, dropped = clean_constraints(objects, raw)
+        kept, dropped = clean_constraints(objects, raw, self.last_room)
         for item in dropped:
             self._repaired(task, f"dropped a constraint: {item.reason}", constraint=item.constraint)
         return kept
@@ -444,3 +474,23 @@ def _objects_text(objects: Sequence[SceneObject]) -> str:
         f"- {o.id}: {o.name}, {_size_text(o)}" + (f", {o.visual_description}" if o.visual_description else "")
         for o in objects
     )
+
+
+def _room_from(proposed: ProposedRoom | None) -> Room | None:
+    """The proposed room as a document room, validated like the rest of the answer: a floor or
+    height out of range is an invalid answer the model is asked to correct. Doors and windows
+    go on the walls it names, spread along them (at least one door)."""
+    if proposed is None:
+        return None
+    from scenewright.analysis.parser.room import place_openings
+
+    w, d, h = proposed.width, proposed.depth, proposed.height
+    if not all(math.isfinite(v) for v in (w, d, h)) or not (MIN_WALL <= min(w, d) and max(w, d) <= 200):
+        raise InvalidAnswer(f"room: width and depth must be from {MIN_WALL:g} to 200 m, got {w:g} x {d:g}")
+    if not MIN_ROOM_HEIGHT <= h <= MAX_ROOM_HEIGHT:
+        raise InvalidAnswer(f"room: height must be from {MIN_ROOM_HEIGHT:g} to {MAX_ROOM_HEIGHT:g} m, got {h:g}")
+    room = Room.rectangle(w, d, h)
+    wanted = [(o.kind, o.wall, 1) for o in proposed.openings]
+    if not any(kind == "door" for kind, _, _ in wanted):
+        wanted.append(("door", None, 1))
+    return Room.model_validate({**room.model_dump(), "openings": place_openings(room, wanted)})

@@ -195,51 +195,10 @@ def generate_command(
     if scene.layout is not None and scene.layout.unplaced:
         lines = "; ".join(f"{u.id} ({u.reason}{': ' + u.nearest_miss if u.nearest_miss else ''})"
                           for u in scene.layout.unplaced)
+        room = "".join(f" {line}." for line in scene.layout.room if " do not fit: " in line)
         raise InfeasibleLayout(
             f"{len(scene.layout.unplaced)} objects could not be placed and stay at their initial "
-            f"positions: {lines}.{_room_shortfall(scene)} The scene is written; move them with `scenewright edit`."
+            f"positions: {lines}.{room} The scene is written; move them with `scenewright edit`."
         )
 
 
-def _room_shortfall(scene: Scene) -> str:
-    """How much floor the objects need beyond what the room has, when that is why they do not fit."""
-    if scene.room is None:
-        return ""
-    from scenewright.analysis.parser.room import COVERAGE, floor_area
-    from scenewright.layout.room import RoomShape
-
-    need, _ = floor_area(scene.objects)
-    have = RoomShape(scene.room).area
-    if need <= COVERAGE * have * 1.5:
-        return ""
-    return (f" The floor objects cover {need:.1f} m² of a {have:.1f} m² room ({need / have:.0%}); "
-            f"a room of about {need / COVERAGE:.0f} m² fits them with walking space (--room WxD).")
-
-
-@bench_app.command("pipeline")
-def bench_pipeline(
-    prompts: Annotated[
-        Path | None, typer.Option("--prompts", help="Folder of annotated prompt files (default: benchmarks/prompts).")
-    ] = None,
-    limit: Annotated[int | None, typer.Option("--limit", help="Use only the first N prompts.")] = None,
-    details: Annotated[bool, typer.Option("--details", help="Add per-prompt figures, misses and times.")] = False,
-    json_output: Annotated[bool, typer.Option("--json", help="Print JSON (the only output format).")] = True,
-) -> None:
-    """`generate --no-render` (offline, no cache) per annotated prompt: the final layouts scored
-    against the text (relations realised, supports right, spread), the parse's figures, and seconds."""
-    from scenewright.analysis.bench import load_prompts
-    from scenewright.backends import Backends
-    from scenewright.evaluation.bench import run_row, summarise_runs
-    from scenewright.pipeline import generate
-
-    chosen = load_prompts(prompts)[:limit]
-    settings = build_settings()
-    settings.cache_dir = None
-    backends = Backends.from_settings(settings)
-    rows = []
-    with tempfile.TemporaryDirectory(prefix="scenewright-bench-") as tmp:
-        for prompt in chosen:
-            start = time.perf_counter()
-            scene = generate(prompt.text, Path(tmp) / prompt.id, backends=backends, settings=settings, render=False)
-            rows.append(run_row(prompt, scene, time.perf_counter() - start))
-    typer.echo(json.dumps(summarise_runs(rows, details=details), indent=1 if details else None))

@@ -43,6 +43,9 @@ REACH = 0.25
 CELL = 0.1
 #: m, an object whose bottom is higher than this stands in no one's way.
 HEAD_ROOM = 1.9
+#: The largest share of the floor the floor objects may cover and leave room to walk: rooms
+#: sized around their objects use it, and a room too small says how much floor is missing by it.
+COVERAGE = 0.35
 #: m, an object whose bottom is lower than this stands on the floor (a floor object); one no
 #: taller than this (a rug) is walked over.
 FLOOR = 0.05
@@ -95,6 +98,7 @@ class RoomShape:
                             np.stack([d, np.stack([-d[:, 1], d[:, 0]], axis=1)], axis=1))
         self.lo, self.hi = pts.min(axis=0), pts.max(axis=0)
         self.strips = [(o, *_strip(room, o, corridors)) for o in room.openings]
+        self._cells: tuple[np.ndarray, np.ndarray] | None = None
 
     @property
     def area(self) -> float:
@@ -161,20 +165,32 @@ class RoomShape:
         """Floor objects an agent cannot walk to from any door, and the doors it cannot step
         through (their indices in ``room.openings``). ``floor_ids`` limits which objects must be
         reached (default: those standing on the floor)."""
-        boxes = _boxes(objects) if objects else None
-        if not any(o.kind == "door" for o in self.room.openings):
+        if not objects:
+            return [], self.stuck_doors(None)
+        boxes = _boxes(objects)
+        if floor_ids is None:
+            reach = boxes.lo[:, 2] < FLOOR
+        else:
+            reach = np.array([o.id in floor_ids for o in objects])
+        missed, stuck = self.walk(boxes, reach)
+        return [objects[i].id for i in missed], stuck
+
+    def stuck_doors(self, boxes: Boxes | None) -> list[int]:
+        return self.walk(boxes, None)[1]
+
+    def walk(self, boxes: Boxes | None, reach: np.ndarray | None) -> tuple[list[int], list[int]]:
+        """The walkability check on world boxes: indices of the boxes marked in ``reach`` that no
+        agent position reachable from a door lies near, and the doors it cannot step through."""
+        doors = [(k, o) for k, o in enumerate(self.room.openings) if o.kind == "door"]
+        if not doors:
             return [], []  # a room with no door: nothing to walk in from (problems() says so)
-        xs = np.arange(self.lo[0] + CELL / 2, self.hi[0], CELL)
-        ys = np.arange(self.lo[1] + CELL / 2, self.hi[1], CELL)
-        grid = np.stack(np.meshgrid(xs, ys, indexing="ij"), axis=-1)
-        free = self.contains(grid) & (self._to_boundary(grid) >= AGENT_RADIUS)
-        if boxes is not None:
+        grid, free = self._grid()
+        if boxes is not None and len(boxes.lo):
             standing = (boxes.lo[:, 2] < HEAD_ROOM) & (boxes.hi[:, 2] > FLOOR)
             c, h, x = _rectangle(boxes[standing])
             if len(c):
                 near = _to_rectangle(grid.reshape(1, -1, 2), c, h, x).min(axis=0).reshape(free.shape)
-                free &= near >= AGENT_RADIUS
-        doors = [(k, o) for k, o in enumerate(self.room.openings) if o.kind == "door"]
+                free = free & (near >= AGENT_RADIUS)
         labels, _ = ndimage.label(free)
         reached: set[int] = set()
         stuck: list[int] = []
@@ -187,23 +203,25 @@ class RoomShape:
             if not found:
                 stuck.append(k)
             reached |= found
-        if not objects:
+        if boxes is None or reach is None or not reach.any():
             return [], stuck
-        walkable = np.isin(labels, sorted(reached)) if reached else np.zeros_like(free)
-        points = grid[walkable]
-        ids = floor_ids if floor_ids is not None else {o.id for o, low in zip(objects, boxes.lo[:, 2] < FLOOR) if low}
-        out = []
-        for i, o in enumerate(objects):
-            if o.id not in ids:
-                continue
-            if not len(points):
-                out.append(o.id)
-                continue
-            c, h, x = _rectangle(boxes[i])
-            gap = _to_rectangle(points[None], c[None], h[None], x[None]).min()
-            if gap > AGENT_RADIUS + REACH + CELL:
-                out.append(o.id)
-        return out, stuck
+        points = grid[np.isin(labels, sorted(reached))] if reached else np.zeros((0, 2))
+        wanted = np.flatnonzero(reach)
+        if not len(points):
+            return [int(i) for i in wanted], stuck
+        c, h, x = _rectangle(boxes[wanted])
+        gap = _to_rectangle(points[None], c, h, x).min(axis=-1)
+        return [int(i) for i, g in zip(wanted, gap) if g > AGENT_RADIUS + REACH + CELL], stuck
+
+    def _grid(self) -> tuple[np.ndarray, np.ndarray]:
+        """Cell centres (nx, ny, 2) over the floor's extent, and which of them an agent may
+        stand on with no wall nearer than its radius (cached: the room does not change)."""
+        if self._cells is None:
+            xs = np.arange(self.lo[0] + CELL / 2, self.hi[0], CELL)
+            ys = np.arange(self.lo[1] + CELL / 2, self.hi[1], CELL)
+            grid = np.stack(np.meshgrid(xs, ys, indexing="ij"), axis=-1)
+            self._cells = (grid, self.contains(grid) & (self._to_boundary(grid) >= AGENT_RADIUS))
+        return self._cells
 
 
 def _boxes(objects: Sequence[SceneObject]) -> Boxes:
@@ -256,3 +274,18 @@ def wall_facing(room: Room, side: str) -> int:
         if key is None or rank > key:
             best, key = i, rank
     return best
+
+
+def shortfall(room: Room, footprint: float, unplaced: Sequence[str]) -> str | None:
+    """Why ``unplaced`` objects do not fit, when the floor is the reason: the floor objects'
+    ``footprint`` (m²) against the room's floor, and how much more floor would hold them with
+    walking space (:data:`COVERAGE`); None when nothing is unplaced."""
+    if not unplaced:
+        return None
+    have = RoomShape(room).area
+    more = footprint / COVERAGE - have
+    sentence = (f"{', '.join(unplaced)} do not fit: the floor objects cover {footprint:.1f} m² of the "
+                f"{have:.1f} m² floor ({footprint / have:.0%})")
+    if more > 0:
+        sentence += f"; about {more:.1f} m² more floor ({footprint / COVERAGE:.0f} m² in all) would hold them with room to walk"
+    return sentence

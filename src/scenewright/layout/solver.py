@@ -57,7 +57,7 @@ from scenewright.layout import relations as rel
 from scenewright.layout.collision import CollisionWorld, colliding_pairs, resting_pairs
 from scenewright.layout.constraints import clean_constraints, topological_order
 from scenewright.layout.relations import Boxes, RoomTarget, footprint_half, half_extents, rotated_half, tilt_matrix
-from scenewright.layout.room import RoomShape
+from scenewright.layout.room import RoomShape, shortfall
 from scenewright.layout.room import problems as room_problems
 from scenewright.scene import ROOM_RELATIONS, Constraint, LayoutReport, Room, SceneObject, UnplacedObject, Vec3
 
@@ -90,6 +90,9 @@ FLUSH_GAP = 1e-3
 #: given up: in a crowded room the nearest thousands may all collide (a blanket among the
 #: furniture of a bathroom), and each check costs a narrow phase; the wider set comes next.
 NARROW_CHECKS = 600
+#: Poses of one floor object that may be rejected for cutting a walking path in a room before
+#: the next free one is taken all the same (the repair pass and the report take it from there).
+WALK_REJECTS = 12
 #: Yaws tried for an object whose orientation nothing fixes, besides the model's.
 AXIS_YAWS = (0.0, 90.0, 180.0, 270.0)
 
@@ -171,6 +174,8 @@ class _Node:
     wide: bool = False  # drawn from the wide set, after the usual one ran out
     narrow: int = 0  # mesh-level checks made for it so far
     narrow_cap: int = 0  # the most it may make (0: no limit)
+    walk_rejects: int = 0  # poses rejected for cutting the walking paths
+    walk_base: int | None = None  # objects out of reach (and doors stuck) without it
 
 
 class _Search:
@@ -555,6 +560,34 @@ class _Search:
         over = (np.maximum(boxes.hi[:, :2] - hi, 0.0) + np.maximum(lo - boxes.lo[:, :2], 0.0)).max(axis=1)
         return over if self.room is None else np.maximum(over, self.room.misfit(boxes))
 
+    def on_floor(self, i: int) -> bool:
+        """Whether object ``i`` stands on the floor: no ``on``/``above`` or mounting places it."""
+        up = ("on", "above")
+        return not any(c.relation in up for c, _ in self.items[i].own) and not any(
+            c.relation in ("on wall", "on ceiling") for c, _ in self.items[i].walls)
+
+    def cuts_path(self, i: int, node: _Node) -> bool:
+        """Whether ``i`` where it was just put leaves more floor objects out of an agent's reach
+        from the doors (or more doors walled in) than without it; always False once the node
+        has rejected :data:`WALK_REJECTS` poses, or for what does not stand on the floor."""
+        if self.room is None or node.walk_rejects >= WALK_REJECTS or not self.on_floor(i):
+            return False
+        placed = np.flatnonzero(self.placed)
+        boxes = Boxes(self.lo[placed], self.hi[placed], self.yaw[placed],
+                      np.stack([self.items[j].foot for j in placed]))
+        floor = np.array([self.on_floor(j) and self.lo[j, 2] < 0.05 for j in placed])
+
+        def lost(mask: np.ndarray) -> int:
+            missed, stuck = self.room.walk(boxes[mask], floor[mask])
+            return len(missed) + len(stuck)
+
+        if node.walk_base is None:
+            node.walk_base = lost(placed != i)
+        if lost(np.ones(len(placed), dtype=bool)) <= node.walk_base:
+            return False
+        node.walk_rejects += 1
+        return True
+
     def misfit_detail(self, box: Boxes) -> str:
         """Where one box stands that :meth:`inside` does not allow, and by how much."""
         lo, hi = self.area
@@ -749,7 +782,7 @@ def solve(
             search, report = _walkable(search, report, objects, cleaned, meshes, bounds, fixed, keep_yaw, seed,
                                        start, time_limit, node_limit, room)
     if room is not None:
-        report.room = _room_report(search, objects, use_solver)
+        report.room = _room_report(search, report, objects, use_solver)
     report.dropped = dropped
     report.seconds = round(_cpu() - start, 4)
     placed = set(report.placed)
@@ -858,6 +891,8 @@ def _dfs(
                 search.place_at(node, k)
                 count += 1
                 verdict = "ok" if limited else search.forward_check(i, node)
+                if verdict == "ok" and not limited and search.cuts_path(i, node):
+                    verdict = "walk"
                 search.take(i)
                 if verdict == "ok":
                     break
@@ -1034,12 +1069,16 @@ def _make_walkable(search: _Search, report: LayoutReport) -> int:
     return len(stuck)
 
 
-def _room_report(search: _Search, objects: Sequence[SceneObject], use_solver: bool) -> list[str]:
+def _room_report(search: _Search, report: LayoutReport, objects: Sequence[SceneObject], use_solver: bool) -> list[str]:
     """What is wrong with the layout in its room (:func:`scenewright.layout.room.problems`), and
     each room relation that does not hold."""
     posed = _posed_objects(search) if use_solver else list(objects)
     floor = _floor_ids(search) if use_solver else None
     out = room_problems(search.room.room, posed, floor)
+    footprint = sum(4.0 * float(np.prod(search.items[i].foot)) for i in search.items if search.on_floor(i))
+    lacking = shortfall(search.room.room, footprint, [u.id for u in report.unplaced])
+    if lacking:
+        out.insert(0, lacking)
     by_id = {o.id: o for o in posed}
     for i, item in search.items.items():
         o = by_id.get(item.obj.id)

@@ -28,6 +28,7 @@ from typing import Sequence
 from scenewright.analysis.catalogue import load_catalogue
 from scenewright.analysis.parser.model import ParsedRelation, ParsedScene
 from scenewright.errors import InputError
+from scenewright.layout.room import COVERAGE
 from scenewright.scene import MAX_ROOM_HEIGHT, MIN_ROOM_HEIGHT, MIN_WALL, Opening, Room, SceneObject
 
 #: Walls of a room made by :meth:`Room.rectangle`, by the side of the room they stand on.
@@ -51,8 +52,6 @@ PLACE_SIZES: dict[str, tuple[float, float]] = {
 _SMALL = ("small", "tiny", "cosy", "cozy", "compact", "little", "cramped", "narrow")
 _LARGE = ("large", "big", "spacious", "huge", "grand", "vast", "open-plan", "open plan", "airy", "wide")
 SMALL_SCALE, LARGE_SCALE = 0.8, 1.3
-#: Largest share of the floor the floor objects may cover when the room is sized around them.
-COVERAGE = 0.35
 #: m, a walking lane beside the longest object.
 LANE = 0.9
 DEFAULT_HEIGHT = 2.7
