@@ -279,10 +279,10 @@ def wall_facing(room: Room, side: str) -> int:
 def shortfall(room: Room, footprint: float, unplaced: Sequence[str]) -> str | None:
     """Why ``unplaced`` objects do not fit, when the floor is the reason: the floor objects'
     ``footprint`` (m²) against the room's floor, and how much more floor would hold them with
-    walking space (:data:`COVERAGE`); None when nothing is unplaced."""
-    if not unplaced:
-        return None
+    walking space (:data:`COVERAGE`); None when nothing is unplaced or the floor is not short."""
     have = RoomShape(room).area
+    if not unplaced or footprint <= COVERAGE * have:
+        return None  # nothing left out, or not for want of floor
     more = footprint / COVERAGE - have
     sentence = (f"{', '.join(unplaced)} do not fit: the floor objects cover {footprint:.1f} m² of the "
                 f"{have:.1f} m² floor ({footprint / have:.0%})")

@@ -30,7 +30,7 @@ def room_constraints(objects: Sequence[SceneObject], constraints: Sequence[Const
     mounted |= {o.id: ("on ceiling", CEILING_TARGET) for o in objects if o.category in CEILING_THINGS}
     out: list[Constraint] = []
     for c in constraints:
-        if c.source in mounted and c.relation == "above" and not own[c.source] & set(ROOM_RELATIONS):
+        if c.source in mounted and c.relation == "above":
             c = Constraint(relation="near", source=c.source, target=c.target)
         out.append(c)
     for o in objects:

@@ -29,6 +29,7 @@ from scenewright.analysis.catalogue import load_catalogue
 from scenewright.analysis.parser.model import ParsedRelation, ParsedScene
 from scenewright.errors import InputError
 from scenewright.layout.room import COVERAGE
+from scenewright.layout.room import FLOOR as FLAT
 from scenewright.scene import MAX_ROOM_HEIGHT, MIN_ROOM_HEIGHT, MIN_WALL, Opening, Room, SceneObject
 
 #: Walls of a room made by :meth:`Room.rectangle`, by the side of the room they stand on.
@@ -54,6 +55,8 @@ _LARGE = ("large", "big", "spacious", "huge", "grand", "vast", "open-plan", "ope
 SMALL_SCALE, LARGE_SCALE = 0.8, 1.3
 #: m, a walking lane beside the longest object.
 LANE = 0.9
+#: How much larger than the floor the objects need a room may grow to keep a lane round their groups.
+GROWTH = 1.35
 DEFAULT_HEIGHT = 2.7
 DOOR = (0.9, 2.1)  # width, height
 WINDOW = (1.2, 1.2, 0.9)  # width, height, sill
@@ -165,8 +168,8 @@ def floor_area(objects: Sequence[SceneObject]) -> tuple[float, float]:
     area, longest = 0.0, 0.0
     for o in objects:
         entry = catalogue.get(o.category) if o.category else None
-        if entry is not None and entry.rests != "ground":
-            continue
+        if (entry is not None and entry.rests != "ground") or o.size.z <= FLAT:
+            continue  # hung, standing on something, or walked over (a rug)
         area += o.size.x * o.size.y
         longest = max(longest, o.size.x, o.size.y)
     return area, longest
@@ -189,9 +192,25 @@ def build_room(request: RoomRequest, objects: Sequence[SceneObject], size: tuple
         if request.place in PLACE_SIZES:
             usual_w, usual_d = PLACE_SIZES[request.place]
             width, depth = max(width, usual_w * request.scale), max(depth, usual_d * request.scale)
+        # Room to walk around the composed groups (a table with its chairs), up to a limit: the
+        # first poses are spread for open ground, and a room that follows them all is a hall.
+        (x0, y0), (x1, y1) = _extent(objects)
+        width = min(max(width, x1 - x0 + 2 * LANE), GROWTH * width)
+        depth = min(max(depth, y1 - y0 + 2 * LANE), GROWTH * depth)
         width, depth = math.ceil(width * 10) / 10, math.ceil(depth * 10) / 10
     room = Room.rectangle(width, depth, height)
     return Room.model_validate({**room.model_dump(), "openings": place_openings(room, request.openings)})
+
+
+def _extent(objects: Sequence[SceneObject]) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The plan rectangle, centred at the origin, that holds the objects' first poses: a room
+    around the composed groups (a table with its chairs) keeps a lane around them."""
+    reach = [(abs(o.position.x) + max(o.size.x, o.size.y) / 2, abs(o.position.y) + max(o.size.x, o.size.y) / 2)
+             for o in objects]
+    if not reach:
+        return (0.0, 0.0), (0.0, 0.0)
+    hx, hy = max(r[0] for r in reach), max(r[1] for r in reach)
+    return (-hx, -hy), (hx, hy)
 
 
 def place_openings(room: Room, wanted: Sequence[tuple[str, str | None, int]]) -> list[Opening]:
