@@ -92,7 +92,7 @@ FLUSH_GAP = 1e-3
 NARROW_CHECKS = 600
 #: Poses of one floor object that may be rejected for cutting a walking path in a room before
 #: the next free one is taken all the same (the repair pass and the report take it from there).
-WALK_REJECTS = 12
+WALK_REJECTS = 40
 #: Yaws tried for an object whose orientation nothing fixes, besides the model's.
 AXIS_YAWS = (0.0, 90.0, 180.0, 270.0)
 
