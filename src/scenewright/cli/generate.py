@@ -202,3 +202,34 @@ def generate_command(
         )
 
 
+@bench_app.command("pipeline")
+def bench_pipeline(
+    prompts: Annotated[
+        Path | None, typer.Option("--prompts", help="Folder of annotated prompt files (default: benchmarks/prompts).")
+    ] = None,
+    limit: Annotated[int | None, typer.Option("--limit", help="Use only the first N prompts.")] = None,
+    details: Annotated[bool, typer.Option("--details", help="Add per-prompt figures, misses and times.")] = False,
+    json_output: Annotated[bool, typer.Option("--json", help="Print JSON (the only output format).")] = True,
+    room: Annotated[str, typer.Option("--room", help="The room of every prompt: auto, none, or WxD[xH].")] = "auto",
+) -> None:
+    """`generate --no-render` (offline, no cache) per annotated prompt: the final layouts scored
+    against the text (relations realised, supports right, spread), the parse's figures, and seconds."""
+    from scenewright.analysis.bench import load_prompts
+    from scenewright.analysis.parser.room import parse_room_option
+    from scenewright.backends import Backends
+    from scenewright.evaluation.bench import run_row, summarise_runs
+    from scenewright.pipeline import generate
+
+    parse_room_option(room)
+    chosen = load_prompts(prompts)[:limit]
+    settings = build_settings()
+    settings.cache_dir = None
+    backends = Backends.from_settings(settings)
+    rows = []
+    with tempfile.TemporaryDirectory(prefix="scenewright-bench-") as tmp:
+        for prompt in chosen:
+            start = time.perf_counter()
+            scene = generate(prompt.text, Path(tmp) / prompt.id, backends=backends, settings=settings, render=False,
+                             room=room)
+            rows.append(run_row(prompt, scene, time.perf_counter() - start))
+    typer.echo(json.dumps(summarise_runs(rows, details=details), indent=1 if details else None))
