@@ -177,3 +177,14 @@ def test_wall_things_placed_against_random_walls_hold_against_wall(case):
         if c.source in placed:
             assert check_room("against wall", placed[c.source], room)
     assert RoomShape(room).outside_by(_boxes(list(placed.values()))).max(initial=0) <= SLACK
+
+
+def test_without_the_solver_room_relations_are_audited():
+    room = door_room()
+    objects = [box("bed", 0, 0, 1.6, 2.1, 0.6), box("mirror", 0, 0, 0.6, 0.04, 0.9)]
+    constraints = [Constraint(relation="against wall", source="bed", target="wall_2"),
+                   Constraint(relation="on wall", source="mirror", target="room")]
+    result = solve(objects, constraints, room=room, use_solver=False)
+    assert {u.id for u in result.report.unplaced} == {"bed", "mirror"}
+    assert all("violates" in u.reason for u in result.report.unplaced)
+    assert any("does not hold" in line for line in result.report.room)

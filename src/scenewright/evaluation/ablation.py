@@ -45,5 +45,5 @@ def without_solver(
     scene: Scene, initial: list[SceneObject], meshes: Mapping[str, trimesh.Trimesh] | None = None
 ) -> Scene:
     """A copy of ``scene`` whose layout is the initial one, as ``solve(use_solver=False)`` keeps it."""
-    result = solve(initial, scene.constraints, meshes=meshes, bounds=scene.bounds, use_solver=False)
+    result = solve(initial, scene.constraints, meshes=meshes, bounds=scene.bounds, use_solver=False, room=scene.room)
     return scene.model_copy(update={"objects": result.objects, "layout": result.report})

@@ -974,7 +974,10 @@ def _audit(search: _Search, objects, constraints, meshes) -> LayoutReport:
     by_id = {o.id: o for o in objects}
     placed, unplaced = [], []
     for o in objects:
-        failed = [c for c in constraints if c.source == o.id and not rel.check(c.relation, o, by_id[c.target])]
+        failed = [c for c in constraints if c.source == o.id and c.relation not in ROOM_RELATIONS
+                  and not rel.check(c.relation, o, by_id[c.target])]
+        failed += [c for c, target in search.items[search.index[o.id]].walls
+                   if not rel.holds(c.relation, Boxes.of(o), target)]
         problems = []
         if failed:
             problems.append("initial pose violates " + "; ".join(f"'{c}'" for c in failed))
