@@ -98,11 +98,11 @@ def _stage_note(progress: Progress | None, stage: str) -> Callable[[str], None]:
 
 def _room_option(scene: Scene) -> str:
     """The ``--room`` a scene was generated with (recorded when it was made), for a resumed run
-    that analyses again; scenes made before rooms existed had none."""
+    that analyses again; ``auto``, the default, when nothing recorded one (a first save cut short)."""
     for event in scene.provenance:
         if event.stage == "generate" and event.message == "new scene":
-            return str(event.data.get("room", "none"))
-    return "none"
+            return str(event.data.get("room", "auto"))
+    return "auto"
 
 
 def _decide_room(scene: Scene, vlm, option: str) -> None:
