@@ -7,7 +7,7 @@ from scenewright.evaluation import evaluate_scene
 from scenewright.evaluation.annotations import parse_prompt
 from scenewright.evaluation.room import room_metrics
 from scenewright.evaluation.stated import stated
-from scenewright.scene import Constraint, Opening, Room, Scene, SceneObject, Vec3
+from scenewright.scene import Opening, Room, Scene, SceneObject, Vec3
 
 
 def _obj(oid, category, x, y, z, size, yaw=0.0):

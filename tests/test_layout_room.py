@@ -9,8 +9,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from scenewright.layout import solve
-from scenewright.layout.relations import Boxes, check_room
-from scenewright.layout.room import SLACK, RoomShape, _boxes, problems, wall_facing
+from scenewright.layout.relations import check_room
+from scenewright.layout.room import SLACK, RoomShape, boxes_of, problems, wall_facing
 from scenewright.scene import Constraint, Opening, Room, SceneObject, Vec3
 
 L_SHAPE = [(0.0, 0.0), (5.0, 0.0), (5.0, 2.5), (2.5, 2.5), (2.5, 5.0), (0.0, 5.0)]
@@ -32,7 +32,7 @@ def door_room(width: float = 4.0, depth: float = 5.0) -> Room:
 
 def test_outside_by_measures_how_far_a_footprint_pokes_through_a_wall():
     shape = RoomShape(Room.rectangle(4, 5))
-    out = shape.outside_by(_boxes([box("in", 0, 0), box("poke", 1.8, 0), box("far", 10, 10)]))
+    out = shape.outside_by(boxes_of([box("in", 0, 0), box("poke", 1.8, 0), box("far", 10, 10)]))
     assert out[0] == 0
     assert out[1] == pytest.approx(0.3)
     assert out[2] > 10
@@ -42,7 +42,7 @@ def test_a_box_over_the_inner_corner_of_an_l_shape_is_outside_though_its_corners
     shape = RoomShape(Room(floor=L_SHAPE))
     # It straddles the inner corner at (2.5, 2.5) with its centre on the floor: only the corner
     # (2.8, 2.8) is off it, and the walls meeting there poke 0.3 m into it.
-    out = shape.outside_by(_boxes([box("corner", 2.3, 2.3, 1.0, 1.0), box("arm", 1.0, 4.0), box("turned", 1.2, 1.2, 1.2, 0.4, yaw=45)]))
+    out = shape.outside_by(boxes_of([box("corner", 2.3, 2.3, 1.0, 1.0), box("arm", 1.0, 4.0), box("turned", 1.2, 1.2, 1.2, 0.4, yaw=45)]))
     assert out[0] == pytest.approx(0.3, abs=1e-6)
     assert out[1] == 0 and out[2] == 0
 
@@ -57,7 +57,7 @@ def test_door_strip_blocks_floor_things_and_window_strip_only_what_rises_past_th
         box("wardrobe_at_window", 0.0, 2.2, 1.2, 0.6, 2.0),
         box("lamp_over_door", -1.6, door_y, 0.5, 0.5, 0.4, z=2.4),
     ]
-    blocking = shape.blocking(_boxes(objects))
+    blocking = shape.blocking(boxes_of(objects))
     assert blocking[0] > 0 and blocking[2] > 0
     assert blocking[1] == 0 and blocking[3] == 0
     said = problems(room, objects)
@@ -162,7 +162,7 @@ def test_every_object_the_solver_places_lies_inside_the_floor(case, seed):
     result = solve(objects, [], room=room, seed=seed, time_limit=5.0)
     placed = [o for o in result.objects if o.id in set(result.report.placed)]
     assert len(placed) == len(objects)
-    out = RoomShape(room).outside_by(_boxes(placed))
+    out = RoomShape(room).outside_by(boxes_of(placed))
     assert np.all(out <= SLACK), dict(zip([o.id for o in placed], out))
 
 
@@ -176,7 +176,7 @@ def test_wall_things_placed_against_random_walls_hold_against_wall(case):
     for c in constraints:
         if c.source in placed:
             assert check_room("against wall", placed[c.source], room)
-    assert RoomShape(room).outside_by(_boxes(list(placed.values()))).max(initial=0) <= SLACK
+    assert RoomShape(room).outside_by(boxes_of(list(placed.values()))).max(initial=0) <= SLACK
 
 
 def test_without_the_solver_room_relations_are_audited():

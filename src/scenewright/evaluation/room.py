@@ -15,7 +15,7 @@ import numpy as np
 
 from scenewright.analysis.parser.room import CEILING_THINGS, WALL_THINGS
 from scenewright.layout.relations import Boxes, RoomTarget, holds
-from scenewright.layout.room import FLOOR, SLACK, RoomShape, _boxes
+from scenewright.layout.room import FLOOR, SLACK, RoomShape, boxes_of
 from scenewright.scene import Scene
 
 
@@ -46,7 +46,7 @@ def room_metrics(scene: Scene) -> RoomMetrics | None:
     objects = scene.objects
     if not objects:
         return out
-    boxes = _boxes(objects)
+    boxes = boxes_of(objects)
     out.outside = [o.id for o, by in zip(objects, shape.outside_by(boxes)) if by > SLACK]
     out.blocked_openings = [f"{o.kind} {k} on wall_{o.wall}: {', '.join(ids)}" for k, o, ids in shape.blocked_openings(objects)]
     mounted = {c.source: c.relation for c in scene.constraints if c.relation in ("on wall", "on ceiling")}

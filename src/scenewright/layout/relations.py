@@ -47,7 +47,7 @@ from typing import Callable
 import numpy as np
 
 from scenewright.geometry import front_direction, rotation_matrix, world_box
-from scenewright.scene import CEILING_TARGET, RELATION_TYPES, ROOM_RELATIONS, ROOM_TARGET, Room, SceneObject, Vec3, room_target
+from scenewright.scene import RELATION_TYPES, ROOM_RELATIONS, ROOM_TARGET, Room, SceneObject, Vec3, room_target
 
 BUFFER = 0.1  # m, relative relations
 NEAR = 2.0  # m, horizontal gap

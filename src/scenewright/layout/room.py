@@ -152,7 +152,7 @@ class RoomShape:
         """Each opening whose clear strip an object stands in: (index, opening, those ids)."""
         if not objects:
             return []
-        boxes = _boxes(objects)
+        boxes = boxes_of(objects)
         out = []
         for k, (opening, rect, bottom, top) in enumerate(self.strips):
             band = (boxes.lo[:, 2] < top - EPS) & (boxes.hi[:, 2] > bottom + EPS)
@@ -167,7 +167,7 @@ class RoomShape:
         reached (default: those standing on the floor)."""
         if not objects:
             return [], self.stuck_doors(None)
-        boxes = _boxes(objects)
+        boxes = boxes_of(objects)
         if floor_ids is None:
             reach = boxes.lo[:, 2] < FLOOR
         else:
@@ -224,7 +224,8 @@ class RoomShape:
         return self._cells
 
 
-def _boxes(objects: Sequence[SceneObject]) -> Boxes:
+def boxes_of(objects: Sequence[SceneObject]) -> Boxes:
+    """The objects' world boxes with their footprints, stacked for the measures above."""
     parts = [Boxes.of(o) for o in objects]
     return Boxes(np.stack([b.lo for b in parts]), np.stack([b.hi for b in parts]),
                  np.array([float(b.yaw) for b in parts]), np.stack([b.foot for b in parts]))
@@ -236,7 +237,7 @@ def problems(room: Room, objects: Sequence[SceneObject], floor_ids: set[str] | N
     shape = RoomShape(room)
     out = []
     if objects:
-        outside = shape.outside_by(_boxes(objects))
+        outside = shape.outside_by(boxes_of(objects))
         for o, by in zip(objects, outside):
             if by > SLACK:
                 out.append(f"{o.id} is outside the room by {by:.2f} m")
