@@ -39,7 +39,7 @@ def test_objects_request_carries_strict_schema_and_reference_image(openai_server
     fmt = body["response_format"]
     assert fmt["type"] == "json_schema" and fmt["json_schema"]["strict"] is True
     schema = fmt["json_schema"]["schema"]
-    assert schema["additionalProperties"] is False and schema["required"] == ["objects"]
+    assert schema["additionalProperties"] is False and schema["required"] == ["objects", "room"]
     item = schema["$defs"]["ProposedObject"]
     assert set(item["required"]) == {"id", "name", "position", "rotation", "size", "visual_description"}
     (url,) = request.image_urls

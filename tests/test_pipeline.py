@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import io
 import json
 from collections import Counter
@@ -264,10 +265,10 @@ class FeedbackVLM:
         self.give_up = give_up
         self.reports = []
 
-    def write_constraints(self, text, objects, reference):
+    def write_constraints(self, text, objects, reference, room=None):
         return Answer([Constraint(relation="far", source="sofa_1", target="table_1")])
 
-    def revise_constraints(self, text, objects, constraints, report, reference):
+    def revise_constraints(self, text, objects, constraints, report, reference, room=None):
         self.reports.append(report)
         if self.give_up:
             return Answer(list(constraints))
@@ -364,12 +365,19 @@ def test_a_remote_model_run_does_not_run_the_offline_parser(tmp_path, monkeypatc
 
     settings = _settings()
     real = backends_from_settings(settings)
-    vlm = Counting(real.vlm)
-    vlm.name = "remote-model"  # stands in for a remote model; it answers with the offline one's answers
 
     def refuse(text):
         raise AssertionError("the offline parser ran for a remote model's scene")
 
+    # Stands in for a remote model: it answers with the offline one's answers, and proposes the
+    # room (here: none) with its objects, as a remote model does.
+    class Proposing(Counting):
+        def describe_objects(self, *args):
+            self.calls["describe_objects"] += 1
+            return dataclasses.replace(self.inner.describe_objects(*args), room=None, proposes_room=True)
+
+    vlm = Proposing(real.vlm)
+    vlm.name = "remote-model"
     monkeypatch.setattr(parser, "parse_scene", refuse)
     scene = generate(
         "A cartoon park on green grass: an oak tree with a bench in front of it.", tmp_path / "p",

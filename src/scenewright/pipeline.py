@@ -18,6 +18,7 @@ from pathlib import Path
 
 from pydantic import ValidationError
 
+from scenewright.analysis.composition.walls import room_constraints
 from scenewright.analysis.stage import analyze
 from scenewright.assets import generate_assets
 from scenewright.assets.load import AssetMeshes
@@ -52,6 +53,8 @@ class Run:
     saver: DocumentSaver
     #: Preview quality of the render stage (see :data:`scenewright.render.PREVIEWS`).
     preview: str = "default"
+    #: The ``--room`` choice the analysis applies when it reads the objects.
+    room: str = "auto"
     note: Callable[[str], None] = lambda message: None
     meshes: AssetMeshes = field(default_factory=AssetMeshes)
 
@@ -68,7 +71,8 @@ class Stage:
 
 
 def _analyze(run: Run) -> bool:
-    analyze(run.scene, run.folder, run.backends.vlm, run.backends.images, run.note, checkpoint=run.saver.checkpoint)
+    analyze(run.scene, run.folder, run.backends.vlm, run.backends.images, run.note, checkpoint=run.saver.checkpoint,
+            room=run.room)
     return True
 
 
@@ -88,6 +92,7 @@ def _layout(run: Run) -> bool:
         run.meshes.of(run.scene, run.folder),
         rounds=run.settings.feedback_rounds,
         time_limit=run.settings.time_limit,
+        furnish=room_constraints,
     )
     return True
 
@@ -148,6 +153,15 @@ def writing(folder: SceneFolder, timeout: float) -> Iterator[SceneFolder]:
         yield folder
 
 
+def _room_option(scene: Scene) -> str:
+    """The ``--room`` a scene was generated with (recorded when it was made), for a resumed run
+    that analyses again; ``auto``, the default, when nothing recorded one (a first save cut short)."""
+    for event in scene.provenance:
+        if event.stage == "generate" and event.message == "new scene":
+            return str(event.data.get("room", "auto"))
+    return "auto"
+
+
 def run_stages(
     scene: Scene,
     folder: SceneFolder,
@@ -157,15 +171,17 @@ def run_stages(
     render: bool = True,
     preview: str = "default",
     progress: Progress | None = None,
+    room: str | None = None,
 ) -> Scene:
     """Run every stage of ``scene`` that is not done yet; save the document after each.
 
     This is the one place a run saves its document: once per stage, also when a stage stops
     with an error or Ctrl-C (what it finished is kept), and at the checkpoints a long stage
-    asks for (see :class:`~scenewright.folder.DocumentSaver`).
+    asks for (see :class:`~scenewright.folder.DocumentSaver`). ``room`` is the ``--room``
+    choice, applied when the objects are read (default: the one the scene was made with).
     """
     scene.backends = backends.names()
-    run = Run(scene, folder, backends, settings, DocumentSaver(folder, scene), preview)
+    run = Run(scene, folder, backends, settings, DocumentSaver(folder, scene), preview, room or _room_option(scene))
     pending = _pending(run)
     scene.done = [s for s in scene.done if s not in {stage.name for stage in pending}]
     for stage in pending:
@@ -221,9 +237,17 @@ def generate(
     render: bool = True,
     preview: str = "default",
     progress: Progress | None = None,
+    room: str | None = "auto",
 ) -> Scene:
-    """Make the scene ``text`` describes in ``folder``; resume it when the folder holds it already."""
+    """Make the scene ``text`` describes in ``folder``; resume it when the folder holds it already.
+
+    ``room``: ``auto`` (a room when the text is indoor, docs/rooms.md), ``none``, or the floor
+    as ``WxD`` or ``WxDxH`` metres."""
+    from scenewright.analysis.parser.room import parse_room_option
+
     folder = as_folder(folder)
+    room = room or "auto"
+    parse_room_option(room)  # bad input fails before the folder is touched
     text = text.strip()
     if not text:
         raise InputError(
@@ -245,12 +269,12 @@ def generate(
             log.info("resuming %s (done: %s)", folder.root, ", ".join(scene.done) or "nothing")
         else:
             scene = candidate
-            scene.record("generate", "new scene", style=scene.style, seed=seed, backends=backends.names())
+            scene.record("generate", "new scene", style=scene.style, seed=seed, backends=backends.names(), room=room)
             folder.save(scene)
         try:
             return run_stages(
                 scene, folder, backends=backends, settings=settings, render=render, preview=preview,
-                progress=progress,
+                progress=progress, room=room if fresh else None,
             )
         except InputError:
             if fresh and not scene.objects:

@@ -39,11 +39,33 @@ RELATION_TYPES: dict[str, str] = {
     "on": "vertical",
     "above": "vertical",
     "face to": "rotation",
+    # Relations to the room (an indoor scene's walls and ceiling), not to another object: their
+    # targets are the reserved ids below. Geometry in :mod:`scenewright.layout.relations` too.
+    "against wall": "room",
+    "in corner": "room",
+    "on wall": "room",
+    "on ceiling": "room",
 }
 Relation = Literal[
-    "left of", "right of", "in front of", "behind", "side of", "near", "far", "on", "above", "face to"
+    "left of", "right of", "in front of", "behind", "side of", "near", "far", "on", "above", "face to",
+    "against wall", "in corner", "on wall", "on ceiling",
 ]
-RelationType = Literal["relative", "distance", "vertical", "rotation"]
+RelationType = Literal["relative", "distance", "vertical", "rotation", "room"]
+#: The relations whose target is the room rather than an object.
+ROOM_RELATIONS = ("against wall", "in corner", "on wall", "on ceiling")
+#: Reserved target ids of the room relations: ``room`` means any wall (the ceiling for ``on
+#: ceiling``), ``wall_<i>`` wall ``i`` of :attr:`Room.walls`, ``ceiling`` the ceiling.
+ROOM_TARGET, CEILING_TARGET, WALL_PREFIX = "room", "ceiling", "wall_"
+_WALL_TARGET = re.compile(r"^wall_(\d{1,3})$")
+
+
+def room_target(target: str) -> int | str | None:
+    """What a reserved target id names: a wall index, ``"room"``, ``"ceiling"``; None when it is
+    no reserved id (an object's id)."""
+    if target in (ROOM_TARGET, CEILING_TARGET):
+        return target
+    m = _WALL_TARGET.match(target)
+    return int(m.group(1)) if m else None
 
 #: Styles every backend understands; free text is accepted and mapped by each backend.
 STYLES = ("realistic", "cartoon", "low-poly", "cyberpunk", "steampunk", "anime")
@@ -402,6 +424,9 @@ class LayoutReport(_Model):
     nodes: int = 0
     seconds: float = 0.0
     solver: bool = True
+    #: What the room check found wrong with the final layout (a blocked door, an object no one
+    #: can walk to from a door), one sentence each; empty without a room or when all is well.
+    room: list[str] = Field(default_factory=list)
 
     @property
     def complete(self) -> bool:

@@ -43,7 +43,11 @@ def _reference(scene: Scene, folder: SceneFolder, images: ImageGenerator) -> byt
     return data
 
 
-def _objects(scene: Scene, vlm: VisionLanguageModel, reference: bytes | None) -> None:
+def _objects(scene: Scene, vlm: VisionLanguageModel, reference: bytes | None, room: str) -> None:
+    """The objects, and the room they stand in (decided with them, so that a resumed run that
+    finds the objects finds their room too)."""
+    from scenewright.analysis.parser.room import parse_room_option, room_for
+
     answer = vlm.describe_objects(scene.text, scene.style, reference)
     scene.provenance += answer.repairs  # what the model's answer needed repaired
     objects = answer.value
@@ -57,6 +61,11 @@ def _objects(scene: Scene, vlm: VisionLanguageModel, reference: bytes | None) ->
     scene.record(
         STAGE, f"found {len(objects)} objects", step="objects", backend=vlm.name, ids=[o.id for o in objects]
     )
+    scene.room = room_for(scene.text, objects, parse_room_option(room), answer.room, answer.proposes_room)
+    if scene.room is not None:
+        xs, ys = [p[0] for p in scene.room.floor], [p[1] for p in scene.room.floor]
+        scene.record(STAGE, f"room {max(xs) - min(xs):g} x {max(ys) - min(ys):g} m, {scene.room.height:g} m high, "
+                     f"{len(scene.room.openings)} openings", step="room", room=room, walls=len(scene.room.floor))
 
 
 def _object_images(
@@ -121,14 +130,16 @@ def analyze(
     progress: Callable[[str], None] | None = None,
     *,
     checkpoint: Callable[[], None] = lambda: None,
+    room: str = "auto",
 ) -> Scene:
-    """Fill ``scene`` with its objects, their images and the ground texture, offering a
-    ``checkpoint`` after each step (the caller saves; see :class:`~scenewright.folder.DocumentSaver`)."""
+    """Fill ``scene`` with its objects, their room (``room`` is the ``--room`` choice, see
+    docs/rooms.md), their images and the ground texture, offering a ``checkpoint`` after each
+    step (the caller saves; see :class:`~scenewright.folder.DocumentSaver`)."""
     _note(progress, "reference image")
     reference = _reference(scene, folder, images)
     if not scene.objects:
         _note(progress, "reading the objects from the text")
-        _objects(scene, vlm, reference)
+        _objects(scene, vlm, reference, room)
         checkpoint()
     _note(progress, f"object images for {len(scene.objects)} objects")
     _object_images(scene, folder, images, reference, progress)

@@ -17,8 +17,9 @@ from scenewright.analysis.parser import ParsedScene, parse_scene
 from scenewright.analysis.parser.language import check_english
 from scenewright.core.protocols import Answer
 from scenewright.core.relations import BINDING
+from scenewright.analysis.parser.room import wall_phrases
 from scenewright.errors import BackendError, InputError
-from scenewright.scene import Constraint, Event, LayoutReport, SceneObject
+from scenewright.scene import ROOM_RELATIONS, ROOM_TARGET, Constraint, Event, LayoutReport, Room, SceneObject
 
 if TYPE_CHECKING:
     from scenewright.core.plan import EditPlan
@@ -29,6 +30,8 @@ if TYPE_CHECKING:
 _RELAX: dict[str, str | None] = {
     "left of": "near", "right of": "near", "in front of": "near", "behind": "near", "side of": "near",
     "near": None, "far": None, "face to": None, "above": None, "on": None,
+    # A wall-mounted or hanging thing keeps its wall or ceiling: without it, it would stand on the floor.
+    "in corner": "against wall", "against wall": None, "on wall": "on wall", "on ceiling": "on ceiling",
 }  # fmt: skip
 #: Which relation gives way first when the report names no failed relation.
 
@@ -95,7 +98,7 @@ class OfflineVLM:
         return Answer([o.model_copy(deep=True) for o in self.composition(text).objects], tuple(repairs))
 
     def write_constraints(
-        self, text: str, objects: Sequence[SceneObject], reference: bytes | None
+        self, text: str, objects: Sequence[SceneObject], reference: bytes | None, room: Room | None = None
     ) -> Answer[list[Constraint]]:
         parsed = self.parse(text)
         repairs = tuple(
@@ -107,6 +110,9 @@ class OfflineVLM:
         for r in self.composition(text).relations:
             if r.source in ids and r.target in ids:
                 out.append(Constraint(relation=r.relation, source=ids[r.source], target=ids[r.target]))
+        for r in wall_phrases(parsed) if room is not None else ():  # "against the back wall"
+            if r.source in ids:
+                out.append(Constraint(relation=r.relation, source=ids[r.source], target=r.target))
         return Answer(out, repairs)
 
     def find_redundant(
@@ -122,6 +128,7 @@ class OfflineVLM:
         constraints: Sequence[Constraint],
         report: LayoutReport,
         reference: bytes | None,
+        room: Room | None = None,
     ) -> Answer[list[Constraint]]:
         return Answer(relax_constraints(constraints, report))
 
@@ -151,8 +158,12 @@ def relax_constraints(constraints: Sequence[Constraint], report: LayoutReport) -
                 revised.append(c)
                 continue
             relaxed = _RELAX[c.relation]
+            if c.relation in ROOM_RELATIONS and c.target != ROOM_TARGET and c.relation != "on ceiling":
+                relaxed, target = c.relation, ROOM_TARGET  # one wall -> any wall
+            else:
+                target = c.target
             if relaxed is not None:
-                revised.append(Constraint(relation=relaxed, source=c.source, target=c.target))
+                revised.append(Constraint(relation=relaxed, source=c.source, target=target))
         out = revised
     unique: dict[tuple[str, str, str], Constraint] = {}
     for c in out:

@@ -28,7 +28,18 @@ from scenewright.core.protocols import Answer
 from scenewright.core.relations import INVERSE
 from scenewright.backends.structured import ChatClient, InvalidAnswer, json_text, model_name, user_message
 from scenewright.errors import InputError
-from scenewright.scene import MAX_ID_CHARS, RELATION_TYPES, Constraint, Event, SceneObject, Vec3
+from scenewright.scene import (
+    MAX_ID_CHARS,
+    MAX_ROOM_HEIGHT,
+    MIN_ROOM_HEIGHT,
+    MIN_WALL,
+    RELATION_TYPES,
+    Constraint,
+    Event,
+    Room,
+    SceneObject,
+    Vec3,
+)
 
 if TYPE_CHECKING:
     from scenewright.scene import LayoutReport, Scene
@@ -73,8 +84,22 @@ class ProposedObject(_Answer):
     visual_description: str
 
 
+class ProposedOpening(_Answer):
+    kind: Literal["door", "window"]
+    wall: Literal["front", "back", "left", "right"]
+
+
+class ProposedRoom(_Answer):
+    width: float
+    depth: float
+    height: float
+    openings: list[ProposedOpening]
+
+
 class ObjectsAnswer(_Answer):
     objects: list[ProposedObject]
+    #: The room around an indoor scene; null for an open one (docs/rooms.md).
+    room: ProposedRoom | None = None
 
 
 class RedundantImage(_Answer):
@@ -186,7 +211,7 @@ class OpenAIChatVLM:
             objects = self._objects_from(answer.objects, low, high, repairs)
             if not objects:
                 raise InvalidAnswer("the list has no usable object; list the objects the description names")
-            return Answer(objects, tuple(repairs))
+            return Answer(objects, tuple(repairs), room=_room_from(answer.room), proposes_room=True)
 
         return self.chat.ask("scene_objects", messages, ObjectsAnswer, check)
 
@@ -273,13 +298,13 @@ class OpenAIChatVLM:
     # --- layout ---------------------------------------------------------------------------
 
     def write_constraints(
-        self, text: str, objects: Sequence[SceneObject], reference: bytes | None
+        self, text: str, objects: Sequence[SceneObject], reference: bytes | None, room: Room | None = None
     ) -> Answer[list[Constraint]]:
         messages = [
             {"role": "system", "content": prompts.CONSTRAINTS_SYSTEM},
             user_message(prompts.write_constraints(text, _objects_text(objects)), [reference] if reference else []),
         ]
-        return self._ask_constraints("spatial_constraints", messages, objects)
+        return self._ask_constraints("spatial_constraints", messages, objects, room)
 
     def revise_constraints(
         self,
@@ -288,6 +313,7 @@ class OpenAIChatVLM:
         constraints: Sequence[Constraint],
         report: LayoutReport,
         reference: bytes | None,
+        room: Room | None = None,
     ) -> Answer[list[Constraint]]:
         from scenewright.layout import feedback_text
 
@@ -297,14 +323,14 @@ class OpenAIChatVLM:
             {"role": "system", "content": prompts.CONSTRAINTS_SYSTEM},
             user_message(prompt, [reference] if reference else []),
         ]
-        return self._ask_constraints("revised_constraints", messages, objects)
+        return self._ask_constraints("revised_constraints", messages, objects, room)
 
     def _ask_constraints(
-        self, task: str, messages: list, objects: Sequence[SceneObject]
+        self, task: str, messages: list, objects: Sequence[SceneObject], room: Room | None
     ) -> Answer[list[Constraint]]:
         def check(answer: ConstraintsAnswer) -> Answer[list[Constraint]]:
             repairs: list[Event] = []
-            kept = self._cleaned(repairs, task, self._matched(answer.constraints, objects), objects)
+            kept = self._cleaned(repairs, task, self._matched(answer.constraints, objects), objects, room)
             return Answer(kept, tuple(repairs))
 
         return self.chat.ask(task, messages, ConstraintsAnswer, check)
@@ -322,12 +348,20 @@ class OpenAIChatVLM:
             for item in proposed
         ]
 
-    def _cleaned(self, repairs: list[Event], task: str, raw: Sequence[dict[str, str]], objects: Sequence[SceneObject]) -> list[Constraint]:
+    def _cleaned(
+        self,
+        repairs: list[Event],
+        task: str,
+        raw: Sequence[dict[str, str]],
+        objects: Sequence[SceneObject],
+        room: Room | None = None,
+    ) -> list[Constraint]:
         """The layout engine's cleaning drops unknown relations and ids, self references,
-        duplicates and cycles; each drop is recorded."""
+        duplicates and cycles, and relations to a part of the room the scene lacks; each drop
+        is recorded."""
         from scenewright.layout import clean_constraints
 
-        kept, dropped = clean_constraints(objects, raw)
+        kept, dropped = clean_constraints(objects, raw, room)
         for item in dropped:
             self._repaired(repairs, task, f"dropped a constraint: {item.reason}", constraint=item.constraint)
         return kept
@@ -431,3 +465,23 @@ def _objects_text(objects: Sequence[SceneObject]) -> str:
         f"- {o.id}: {o.name}, {_size_text(o)}" + (f", {o.visual_description}" if o.visual_description else "")
         for o in objects
     )
+
+
+def _room_from(proposed: ProposedRoom | None) -> Room | None:
+    """The proposed room as a document room, validated like the rest of the answer: a floor or
+    height out of range is an invalid answer the model is asked to correct. Doors and windows
+    go on the walls it names, spread along them (at least one door)."""
+    if proposed is None:
+        return None
+    from scenewright.analysis.parser.room import place_openings
+
+    w, d, h = proposed.width, proposed.depth, proposed.height
+    if not all(math.isfinite(v) for v in (w, d, h)) or not (MIN_WALL <= min(w, d) and max(w, d) <= 200):
+        raise InvalidAnswer(f"room: width and depth must be from {MIN_WALL:g} to 200 m, got {w:g} x {d:g}")
+    if not MIN_ROOM_HEIGHT <= h <= MAX_ROOM_HEIGHT:
+        raise InvalidAnswer(f"room: height must be from {MIN_ROOM_HEIGHT:g} to {MAX_ROOM_HEIGHT:g} m, got {h:g}")
+    room = Room.rectangle(w, d, h)
+    wanted = [(o.kind, o.wall, 1) for o in proposed.openings]
+    if not any(kind == "door" for kind, _, _ in wanted):
+        wanted.append(("door", None, 1))
+    return Room.model_validate({**room.model_dump(), "openings": place_openings(room, wanted)})

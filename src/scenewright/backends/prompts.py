@@ -23,7 +23,12 @@ RELATIONS = """Relations (the source is the object being placed, the target is t
 - "near": at most 2 m between the two boxes, horizontally. "far": more than 8 m apart.
 - "on": source rests on the target's top surface. "above": source hangs at least 2 m over the target without touching it.
 - "face to": source turns so its front points at the target.
-Every object stands on the ground unless it is the source of "on" or "above"; do not write a constraint for standing on the ground."""
+In a scene with a room, four relations have a part of the room as their target instead of an object: "room" (any wall), "wall_0", "wall_1", "wall_2", "wall_3" (the front, right, back and left walls) or "ceiling":
+- "against wall": source stands with its back to the wall (beds, wardrobes, bookshelves, sofas, counters).
+- "in corner": source stands against a wall, in a corner of the room.
+- "on wall": source hangs on the wall, off the floor (mirrors, paintings, wall TVs, clocks, wall shelves).
+- "on ceiling": source hangs from the ceiling (ceiling fans, chandeliers, pendant lamps).
+Every object stands on the ground unless it is the source of "on", "above", "on wall" or "on ceiling"; do not write a constraint for standing on the ground."""
 
 
 # --- images -------------------------------------------------------------------------------
@@ -83,7 +88,9 @@ Rules:
 - Every object the text names, each one separately when the text gives a count ("three chairs" is three objects).
 - Whole objects only: never list a part (a handle, a leg, a window, a cushion) as its own object.
 - No background: walls, floors, ceilings, ground, grass, sky, roads, water surfaces, terrain and curtains are not objects.
-- Keep to the main objects; skip clutter the text does not mention."""
+- Keep to the main objects; skip clutter the text does not mention.
+
+Also give the room: when the scene is indoors (a bedroom, a kitchen, a shop, any room inside a building), its rectangular floor centred at the origin, width along x and depth along y in metres, big enough for every object with space to walk, its ceiling height, and its doors and windows, each on one wall (front is the viewer's side, -Y); at least one door. Every object then lies inside the room. For an outdoor or open scene, the room is null."""
 
 
 REDUNDANT_SYSTEM = (

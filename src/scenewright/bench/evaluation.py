@@ -99,13 +99,18 @@ def summarise_runs(rows: list[dict], *, details: bool = False) -> dict:
     return result
 
 
-def run_pipeline_bench(prompts: Path | None, limit: int | None, details: bool, settings: Settings) -> dict:
+def run_pipeline_bench(
+    prompts: Path | None, limit: int | None, details: bool, settings: Settings, room: str = "auto"
+) -> dict:
     """`generate --no-render` (offline, no cache) per annotated prompt: the final layouts scored
-    against the text (relations realised, supports right, spread), the parse's figures, and seconds."""
+    against the text (relations realised, supports right, spread), the parse's figures, and seconds.
+    ``room`` is every prompt's ``--room`` (``none`` measures what the rooms cost)."""
+    from scenewright.analysis.parser.room import parse_room_option
     from scenewright.bench.analysis import load_prompts
     from scenewright.backends import backends_from_settings
     from scenewright.pipeline import generate
 
+    parse_room_option(room)
     chosen = load_prompts(prompts)[:limit]
     settings.cache_dir = None
     backends = backends_from_settings(settings)
@@ -113,7 +118,8 @@ def run_pipeline_bench(prompts: Path | None, limit: int | None, details: bool, s
     with tempfile.TemporaryDirectory(prefix="scenewright-bench-") as tmp:
         for prompt in chosen:
             start = time.perf_counter()
-            scene = generate(prompt.text, Path(tmp) / prompt.id, backends=backends, settings=settings, render=False)
+            scene = generate(prompt.text, Path(tmp) / prompt.id, backends=backends, settings=settings, render=False,
+                             room=room)
             rows.append(run_row(prompt, scene, time.perf_counter() - start))
     return summarise_runs(rows, details=details)
 

@@ -64,13 +64,14 @@ def bench_pipeline(
     prompts: PromptsOption = None,
     limit: Annotated[int | None, typer.Option("--limit", help="Use only the first N prompts.")] = None,
     details: Annotated[bool, typer.Option("--details", help="Add per-prompt figures, misses and times.")] = False,
+    room: Annotated[str, typer.Option("--room", help="The room of every prompt: auto, none, or WxD[xH].")] = "auto",
     as_json: JsonOption = True,
 ) -> None:
     """`generate --no-render` (offline, no cache) per annotated prompt: the final layouts scored
     against the text (relations realised, supports right, spread), the parse's figures, and seconds."""
     from scenewright.bench.evaluation import run_pipeline_bench
 
-    emit(run_pipeline_bench(prompts, limit, details, build_settings()), as_json, indent=1 if details else None)
+    emit(run_pipeline_bench(prompts, limit, details, build_settings(), room), as_json, indent=1 if details else None)
 
 
 @bench_app.command("parse")

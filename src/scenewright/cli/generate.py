@@ -109,6 +109,10 @@ def generate_command(
         typer.Option("--export", help="Also export for simulators: usd | mjcf | glb-physics (repeatable)."),
     ] = None,
     max_objects: MaxObjectsOption = None,
+    room: Annotated[
+        str,
+        typer.Option("--room", help="The room: auto (indoor text gets one), none, or the floor as WxD or WxDxH metres."),
+    ] = "auto",
 ) -> None:
     """Turn TEXT into a scene folder: scene.json, one asset per object, scene.glb, previews."""
     from scenewright.backends import backends_from_settings
@@ -125,8 +129,11 @@ def generate_command(
         raise InputError(
             f"give exactly one of TEXT, --example or --resume DIR (got {', '.join(given) or 'none'})"
         )
-    if resume_dir is not None and (out is not None or style is not None):
-        raise InputError("--resume takes the scene folder itself and keeps its style; drop --out and --style")
+    if resume_dir is not None and (out is not None or style is not None or room != "auto"):
+        raise InputError("--resume takes the scene folder itself and keeps its style and room; drop --out, --style and --room")
+    from scenewright.analysis.parser.room import parse_room_option
+
+    parse_room_option(room)  # exit 2 naming the value, before any work
     if resume_dir is None and out is None:
         raise InputError("--out DIR is required: the folder to write the scene into")
     check_seed(seed)
@@ -178,13 +185,18 @@ def generate_command(
                 render=not no_render,
                 preview=preview,
                 progress=report,
+                room=room,
             )
     _summary(Console(soft_wrap=True), folder, scene)
     for path in export_formats(folder.root, export, config=config) if export else ():
         typer.echo(f"  exported     {path}")
+    if scene.layout is not None and scene.layout.room:
+        Console(stderr=True, soft_wrap=True).print(f"[yellow]room: {safe('; '.join(scene.layout.room))}[/yellow]")
     if scene.layout is not None and scene.layout.unplaced:
-        lines = "; ".join(f"{u.id} ({u.reason})" for u in scene.layout.unplaced)
+        lines = "; ".join(f"{u.id} ({u.reason}{': ' + u.nearest_miss if u.nearest_miss else ''})"
+                          for u in scene.layout.unplaced)
+        room = "".join(f" {line}." for line in scene.layout.room if " do not fit: " in line)
         raise InfeasibleLayout(
             f"{len(scene.layout.unplaced)} objects could not be placed and stay at their initial "
-            f"positions: {lines}. The scene is written; move them with `scenewright edit`."
+            f"positions: {lines}.{room} The scene is written; move them with `scenewright edit`."
         )

@@ -12,7 +12,7 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from scenewright.scene import Constraint, Vec3
 
-Operation = Literal["move", "add", "delete", "replace"]
+Operation = Literal["move", "add", "delete", "replace", "room"]
 
 
 class NewObject(BaseModel):
@@ -24,6 +24,19 @@ class NewObject(BaseModel):
     category: str | None = None
     visual_description: str = ""
     size: Vec3 | None = None
+
+
+class RoomEdit(BaseModel):
+    """What a ``room`` edit changes: the floor's size, or a door or window added on a side."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    #: New floor (width, depth) in metres; the room stays a rectangle centred where it was.
+    size: tuple[float, float] | None = None
+    height: float | None = None
+    #: A door or window to add, on the wall facing ``side`` (back, front, left, right; None: any).
+    opening: Literal["door", "window"] | None = None
+    side: Literal["back", "front", "left", "right"] | None = None
 
 
 class EditPlan(BaseModel):
@@ -40,3 +53,5 @@ class EditPlan(BaseModel):
     #: Shift the focus from where it stands, in metres in the scene frame (+X right, +Y back),
     #: when a move names no other object ("move the sofa to the left", "1 m forward").
     offset: Vec3 | None = None
+    #: For a ``room`` edit (its focus is ``room``): what changes in the room.
+    room: RoomEdit | None = None

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Generic, Protocol, TypeVar, runtime_checkable
 
 from scenewright.core.plan import EditPlan
-from scenewright.scene import Constraint, Event, SceneObject, Vec3
+from scenewright.scene import Constraint, Event, Room, SceneObject, Vec3
 
 if TYPE_CHECKING:
     from scenewright.scene import LayoutReport, Scene
@@ -33,6 +33,11 @@ class Answer(Generic[T]):
 
     value: T
     repairs: tuple[Event, ...] = ()
+    #: ``describe_objects`` of a model that proposes rooms (``proposes_room``): the room it
+    #: proposed for the scene, None for an open scene. A backend that does not propose rooms
+    #: leaves the room to the offline reading of the text (docs/rooms.md).
+    room: Room | None = None
+    proposes_room: bool = False
 
 
 @runtime_checkable
@@ -45,9 +50,10 @@ class VisionLanguageModel(Protocol):
         """Objects of the scene with initial position, rotation, size and visual description."""
 
     def write_constraints(
-        self, text: str, objects: Sequence[SceneObject], reference: bytes | None
+        self, text: str, objects: Sequence[SceneObject], reference: bytes | None, room: Room | None = None
     ) -> Answer[list[Constraint]]:
-        """Spatial constraints between the objects (source is the object placed)."""
+        """Spatial constraints between the objects (source is the object placed), and to the
+        ``room``'s walls and ceiling when the scene has one."""
 
     def find_redundant(
         self, objects: Sequence[SceneObject], images: Mapping[str, bytes]
@@ -61,6 +67,7 @@ class VisionLanguageModel(Protocol):
         constraints: Sequence[Constraint],
         report: LayoutReport,
         reference: bytes | None,
+        room: Room | None = None,
     ) -> Answer[list[Constraint]]:
         """New constraints after the solver's ``report`` on the last ones (the paper's feedback loop)."""
 

@@ -1,4 +1,4 @@
-"""The relation vocabulary: the ten relations' names and types, their limits, their priority and
+"""The relation vocabulary: the relations' names and types, their limits, their priority and
 their inverses, each written once (docs/architecture.md, "Relations").
 
 The geometry that checks a relation and proposes places for it is :mod:`scenewright.layout.relations`;
@@ -24,15 +24,17 @@ FACE_DEGREES = 10.0
 
 #: Solver priority by relation type: the first relation of an object in this order generates
 #: its candidates (vertical ones fix height and footprint, relative ones a side, the rest last).
+#: The room relations rank with "on"/"above": a wall, corner or ceiling fixes a place as firmly
+#: (a lamp on a desk against the wall is placed on the desk, which is placed at the wall).
 PRIORITY: dict[str, int] = {
-    relation: {"vertical": 0, "relative": 1, "distance": 2, "rotation": 2}[kind]
+    relation: {"vertical": 0, "room": 0, "relative": 1, "distance": 2, "rotation": 2}[kind]
     for relation, kind in RELATION_TYPES.items()
 }
 
 #: The relations from the most binding to the least, within the priority groups above: what a
 #: relaxation gives up last comes first.
 BINDING: tuple[str, ...] = (
-    "on", "above", "behind", "in front of", "right of", "left of", "side of", "near", "face to", "far",
+    "on ceiling", "on wall", "on", "above", "against wall", "in corner", "behind", "in front of", "right of", "left of", "side of", "near", "face to", "far",
 )
 
 #: relation → the relation that says the same with source and target swapped.

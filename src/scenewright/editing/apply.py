@@ -35,7 +35,20 @@ from scenewright.errors import InfeasibleLayout, InputError
 from scenewright.folder import SceneFolder
 from scenewright.geometry import world_box, yaw_towards
 from scenewright.layout import break_cycles, check, colliding_pairs, feedback_text, solve
-from scenewright.scene import Constraint, RemovedObject, Scene, SceneObject, Vec3, describe_validation_error
+from scenewright.layout.constraints import room_problem
+from scenewright.layout.relations import check_room
+from scenewright.layout.room import wall_facing
+from scenewright.scene import (
+    ROOM_RELATIONS,
+    Constraint,
+    Opening,
+    RemovedObject,
+    Room,
+    Scene,
+    SceneObject,
+    Vec3,
+    describe_validation_error,
+)
 from scenewright.settings import Settings
 
 log = logging.getLogger(__name__)
@@ -113,6 +126,8 @@ def run_plan(
         _move(edit, folder, settings)
     elif plan.operation == "replace":
         _replace(edit, folder, backends, settings)
+    elif plan.operation == "room":
+        _room(edit, folder, settings)
     else:
         _add(edit, folder, backends, settings)
     return edit
@@ -122,6 +137,12 @@ def validate_plan(scene: Scene, plan: EditPlan) -> EditPlan:
     """Check a planner's answer like any model answer: one focus, the only source, never a target."""
     ids = {o.id for o in scene.objects}
     known = ", ".join(f"{o.id} ({o.name})" for o in scene.objects) or "none"
+    if plan.operation == "room":
+        if scene.room is None:
+            raise InputError("this scene has no room to change (it stands on open ground)")
+        if plan.room is None or (plan.room.size is None and plan.room.height is None and plan.room.opening is None):
+            raise InputError("a 'room' edit must say what changes: its size, its height, or a door or window to add")
+        return plan
     if plan.operation == "add":
         if plan.new_object is None:
             raise InputError(f"an 'add' edit needs the new object's name; got none for {plan.focus!r}")
@@ -141,7 +162,10 @@ def validate_plan(scene: Scene, plan: EditPlan) -> EditPlan:
             raise InputError(f"constraint '{c}' has source {c.source!r}; an edit may only place its focus {plan.focus!r}")
         if c.target == plan.focus:
             raise InputError(f"constraint '{c}' uses the focus {plan.focus!r} as its target; it must be the source only")
-        if c.target not in ids:
+        wrong = room_problem(c, scene.room, ids)
+        if wrong is not None:
+            raise InputError(wrong)
+        if c.target not in ids and c.relation not in ROOM_RELATIONS:
             raise InputError(f"constraint '{c}' names {c.target!r}, which the scene does not have; objects: {known}")
     if plan.yaw is not None and not math.isfinite(plan.yaw):
         raise InputError(f"the edit turns {plan.focus} to yaw {plan.yaw}; a yaw must be a finite number of degrees")
@@ -220,6 +244,7 @@ def _place(
         fixed=[o.id for o in objects if o.id not in placing],
         time_limit=settings.time_limit,
         seed=edit.scene.seed,
+        room=edit.scene.room,
     )
     edit.seconds_solving += result.report.seconds
     unplaced = [u for u in result.report.unplaced if u.id in placing]
@@ -234,11 +259,18 @@ def _place(
         obj.position, obj.rotation = solved[oid].position, solved[oid].rotation
 
 
+def holds(scene: Scene, c: Constraint) -> bool:
+    """Whether constraint ``c`` holds in ``scene``: between two objects, or to the room."""
+    if c.relation in ROOM_RELATIONS:
+        return scene.room is not None and check_room(c.relation, scene.get(c.source), scene.room, c.target)
+    return check(c.relation, scene.get(c.source), scene.get(c.target))
+
+
 def _anchor(scene: Scene, obj: SceneObject, constraints: list[Constraint]) -> None:
     """Start ``obj``'s search at its first target, since the solver tries candidates nearest the
     start first: "next to the sofa" then ends up beside the sofa, not just anywhere to its side.
     ``far`` keeps the current start, to stay as close to where the object was as it allows."""
-    target = next((c.target for c in constraints if c.relation not in ("far", "face to")), None)
+    target = next((c.target for c in constraints if c.relation not in ("far", "face to", *ROOM_RELATIONS)), None)
     if target is not None:
         p = scene.get(target).position
         obj.position = Vec3(x=p.x, y=p.y, z=obj.position.z)
@@ -254,7 +286,7 @@ def _prune(edit: _Edit, moved: list[str]) -> None:
     scene, kept = edit.scene, []
     moved_set = set(moved)
     for c in scene.constraints:
-        if (c.source in moved_set or c.target in moved_set) and not check(c.relation, scene.get(c.source), scene.get(c.target)):
+        if (c.source in moved_set or c.target in moved_set) and not holds(scene, c):
             edit.changes.append(f"dropped '{c}': it no longer holds after the edit")
             continue
         kept.append(c)
@@ -366,7 +398,7 @@ def _move(edit: _Edit, folder: SceneFolder, settings: Settings) -> None:
     if plan.offset is not None:
         _shift(edit, focus, before, carried, meshes)
         return
-    in_place = not placing and all(check(c.relation, focus, scene.get(c.target)) for c in mine)
+    in_place = not placing and all(holds(scene, c) for c in mine)
     if in_place:
         _carry(scene, carried, before, focus)
         hits = _collisions(scene, [focus.id, *carried], meshes)
@@ -453,7 +485,7 @@ def _replace(edit: _Edit, folder: SceneFolder, backends: Backends, settings: Set
     if plan.yaw is not None:
         focus.rotation = Vec3(x=focus.rotation.x, y=focus.rotation.y, z=plan.yaw)
     _carry(scene, carried, before, focus)
-    fits = not _collisions(scene, [focus.id], meshes) and all(check(c.relation, focus, scene.get(c.target)) for c in mine)
+    fits = not _collisions(scene, [focus.id], meshes) and all(holds(scene, c) for c in mine)
     if not fits:
         edit.changes.append(f"re-placed {focus.id}: " + ("as asked" if placing else "it no longer fitted where it was"))
         placed_from = focus.model_copy(deep=True)
@@ -461,7 +493,7 @@ def _replace(edit: _Edit, folder: SceneFolder, backends: Backends, settings: Set
         _place(edit, [focus.id], mine, meshes, settings, leave_out=carried)
         _carry(scene, carried, placed_from, focus)
     unsettled = [oid for oid in carried if not all(
-        check(c.relation, scene.get(c.source), scene.get(c.target)) for c in scene.constraints if c.source == oid
+        holds(scene, c) for c in scene.constraints if c.source == oid
     ) or _collisions(scene, [oid], meshes)]
     if unsettled:
         _place(edit, unsettled, [c for c in scene.constraints if c.source in unsettled], meshes, settings)
@@ -492,6 +524,10 @@ def _add(edit: _Edit, folder: SceneFolder, backends: Backends, settings: Setting
         position=Vec3(z=size.z / 2),
         rotation=Vec3(z=plan.yaw or 0.0),
     )
+    if scene.room is not None:  # a mirror hangs on a wall, a wardrobe stands against one
+        from scenewright.analysis.composition.walls import room_constraints
+
+        plan = plan.model_copy(update={"constraints": room_constraints([obj], plan.constraints)})
     _anchor(scene, obj, list(plan.constraints))
     scene.objects.append(obj)
     mesh = _stage_asset(edit, obj, folder, backends, settings)
@@ -502,3 +538,92 @@ def _add(edit: _Edit, folder: SceneFolder, backends: Backends, settings: Setting
     p = obj.position
     edit.changes.append(f"added {obj.id} ({obj.name}) at ({p.x:.2f}, {p.y:.2f}, {p.z:.2f})")
     edit.changes += [f"added '{c}'" for c in plan.constraints]
+
+
+def _room(edit: _Edit, folder: SceneFolder, settings: Settings) -> None:
+    """Resize the room or add a door or window to it; objects no longer where the room allows
+    (outside it, in an opening's clear strip, a room relation broken) are solved again inside,
+    with everything else fixed. A resize re-solves every object, since the walls moved."""
+    scene, change = edit.scene, edit.plan.room
+    assert scene.room is not None and change is not None
+    old = scene.room
+    if change.size is not None or change.height is not None:
+        (x0, y0), (x1, y1) = np.min(old.floor, axis=0), np.max(old.floor, axis=0)
+        width, depth = change.size if change.size is not None else (x1 - x0, y1 - y0)
+        height = change.height or old.height
+        try:
+            room = Room.rectangle(width, depth, height, floor_material=old.floor_material,
+                                  wall_material=old.wall_material, ceiling_material=old.ceiling_material)
+        except ValidationError as exc:
+            raise InputError(f"a {width:g} x {depth:g} m room, {height:g} m high: {describe_validation_error(exc)}") from None
+        # Openings keep their wall (by side) and their place along it, as a share of its length.
+        kept = []
+        for o in old.openings:
+            (ax, ay), (bx, by) = old.walls[o.wall]
+            normal = np.array([by - ay, -(bx - ax)])
+            side = max(("back", "front", "left", "right"),
+                       key=lambda s: float(normal @ np.array({"back": (0, 1), "front": (0, -1), "left": (-1, 0), "right": (1, 0)}[s])))
+            wall = wall_facing(room, side)
+            share = o.offset / old.wall_length(o.wall)
+            length = room.wall_length(wall)
+            offset = min(max(share * length, o.width / 2 + 0.05), length - o.width / 2 - 0.05)
+            height_ = min(o.height, room.height - o.sill - 0.1)
+            if offset - o.width / 2 >= 0 and height_ > 0.3:
+                kept.append(o.model_copy(update={"wall": wall, "offset": offset, "height": height_}))
+        scene.room = Room.model_validate({**room.model_dump(), "openings": kept})
+        moving = [o.id for o in scene.objects]
+        edit.changes.append(f"the room is now {width:g} x {depth:g} m, {height:g} m high")
+    else:
+        scene.room = _with_opening(old, change.opening, change.side)
+        added = scene.room.openings[-1]
+        edit.changes.append(f"added a {added.kind} on wall_{added.wall}, {added.width:g} m wide, "
+                            f"centred {added.offset:.2f} m along it")
+        moving = _misplaced(scene)
+    if moving:
+        meshes = _meshes(edit, folder, {})
+        _place(edit, moving, [c for c in scene.constraints if c.source in moving], meshes, settings)
+        edit.changes.append(f"re-placed {', '.join(moving)} in the room")
+    _prune(edit, moving)
+
+
+def _misplaced(scene: Scene) -> list[str]:
+    """Objects the room does not allow where they stand: outside it, in a door's or window's
+    clear strip, or with a room relation that no longer holds."""
+    from scenewright.layout.relations import Boxes
+    from scenewright.layout.room import RoomShape
+
+    assert scene.room is not None
+    shape = RoomShape(scene.room)
+    out = []
+    for o in scene.objects:
+        box = Boxes.of(o)[None]
+        broken = any(not holds(scene, c) for c in scene.constraints if c.source == o.id and c.relation in ROOM_RELATIONS)
+        if shape.misfit(box)[0] > 0 or broken:
+            out.append(o.id)
+    return out
+
+
+def _with_opening(room: Room, kind: str, side: str | None) -> Room:
+    """``room`` with a door or window added on the wall on ``side`` (else the wall with the most
+    free length), at the middle of the widest free stretch of it; InputError when none fits."""
+    width = 0.9 if kind == "door" else 1.2
+    walls = [wall_facing(room, side)] if side else sorted(range(len(room.walls)), key=room.wall_length, reverse=True)
+    best = None
+    for wall in walls:
+        length = room.wall_length(wall)
+        taken = sorted((o.offset - o.width / 2 - 0.15, o.offset + o.width / 2 + 0.15) for o in room.openings if o.wall == wall)
+        start = 0.15
+        for lo, hi in [*taken, (length - 0.15, length)]:
+            if lo - start >= width and (best is None or lo - start > best[2]):
+                best = (wall, (start + lo) / 2, lo - start)
+            start = max(start, hi)
+        if best is not None and side:
+            break
+    if best is None:
+        where = f"the {side} wall" if side else "any wall"
+        raise InputError(f"no room for a {width:g} m wide {kind} on {where}: its openings leave no free stretch that wide")
+    wall, offset, _ = best
+    opening = (Opening(kind="door", wall=wall, offset=offset, width=width, height=min(2.1, room.height - 0.2))
+               if kind == "door" else
+               Opening(kind="window", wall=wall, offset=offset, width=width, height=min(1.2, room.height - 1.2), sill=0.9))
+    return Room.model_validate({**room.model_dump(), "openings": [*room.openings, opening]})

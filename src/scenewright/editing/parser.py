@@ -22,10 +22,12 @@ from functools import lru_cache
 
 from scenewright.core.catalogue import Category, load_catalogue, lookup, singular, words
 from scenewright.analysis.parser import relation_phrases
+from scenewright.analysis.parser.room import CEILING_THINGS, WALL_THINGS
 from scenewright.analysis.parser.words import ORDINALS
-from scenewright.core.plan import EditPlan, NewObject
+from scenewright.core.plan import EditPlan, NewObject, RoomEdit
 from scenewright.errors import InputError
-from scenewright.scene import Constraint, Scene, SceneObject, Vec3
+from scenewright.layout.room import wall_facing
+from scenewright.scene import CEILING_TARGET, ROOM_TARGET, Constraint, Scene, SceneObject, Vec3
 
 _POLITE = ("please", "kindly", "can you", "could you", "would you", "will you", "can we", "could we",
            "i want you to", "i'd like you to", "i would like you to", "i need you to", "let's", "let", "lets",
@@ -292,6 +294,68 @@ def _constraints(scene: Scene, focus: SceneObject | None, focus_id: str, text: s
     return out
 
 
+#: A place in the room rather than by an object: "against the left wall", "in the corner",
+#: "on the back wall", "from the ceiling".
+_ROOM_PHRASE = re.compile(
+    r"\b(?:(?:up |flush |right |back )?(against|along|onto|on|to|by|next to|in|into|from|under|below|at)\s+)"
+    r"(?:the |a |one |that )?(?:(back|rear|far|front|left|right)(?:[- ]hand)?\s+)?(?:(side)\s+)?(walls?|corner|ceiling)\b"
+)
+_ROOM_SIDES = {"back": "back", "rear": "back", "far": "back", "front": "front", "left": "left", "right": "right"}
+
+
+def _room_constraint(scene: Scene, focus_id: str, category: str | None, match: re.Match[str]) -> Constraint:
+    """The room relation a room phrase asks for: a wall thing (or "on"/"onto" a wall) hangs on
+    it, anything else stands against it; "in the corner" and "from the ceiling" likewise."""
+    if scene.room is None:
+        raise InputError(
+            f"{match.group(0)!r}: this scene has no room (it stands on open ground); give it one with "
+            "'make the room 4 by 5 metres', or place it relative to an object"
+        )
+    word, side, what = match.group(1), match.group(2), match.group(4)
+    if what == "ceiling":
+        return Constraint(relation="on ceiling", source=focus_id, target=CEILING_TARGET)
+    target = f"wall_{wall_facing(scene.room, _ROOM_SIDES[side])}" if side else ROOM_TARGET
+    if what == "corner":
+        return Constraint(relation="in corner", source=focus_id, target=ROOM_TARGET)
+    mounted = category in WALL_THINGS or category in CEILING_THINGS or word in ("on", "onto")
+    return Constraint(relation="on wall" if mounted else "against wall", source=focus_id, target=target)
+
+
+def _without_room_phrase(scene: Scene, focus_id: str, category: str | None, text: str) -> tuple[str, list[Constraint]]:
+    """``text`` with its room phrase cut out, and the room relation it asked for (if any)."""
+    m = _ROOM_PHRASE.search(text)
+    if m is None:
+        return text, []
+    return text[: m.start()] + " " + text[m.end():], [_room_constraint(scene, focus_id, category, m)]
+
+
+_ROOM_SIZE = re.compile(
+    r"^(?:make|resize|change|set|enlarge|shrink|grow)\s+(?:the\s+)?room\s+(?:size\s+)?(?:to\s+|into\s+)?(?:be\s+)?"
+    r"(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)?\s*(?:by|x|×)\s*(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)?"
+    r"(?:\s*(?:by|x|×)\s*(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)?(?:\s+(?:high|tall))?)?\s*$"
+)
+_ROOM_OPENING = re.compile(
+    r"^(?:add|put|cut|insert|make|open|create)\s+(?:a|an|one|another|a new|an extra)\s+(window|door|doorway)"
+    r"(?:\s+(?:on|in|into|to)\s+(?:the\s+)?(back|rear|far|front|left|right)(?:[- ]hand)?(?:\s+side)?(?:\s+wall)?)?\s*$"
+)
+
+
+def _plan_room(scene: Scene, text: str) -> EditPlan | None:
+    """A change to the room itself: its size, or a door or window added; None for anything else."""
+    size, opening = _ROOM_SIZE.match(text), _ROOM_OPENING.match(text)
+    if size is None and opening is None:
+        return None
+    if scene.room is None:
+        raise InputError("this scene has no room (it stands on open ground); generate it with --room WxD or --room auto")
+    if size is not None:
+        height = float(size.group(3)) if size.group(3) else None
+        return EditPlan(operation="room", focus="room",
+                        room=RoomEdit(size=(float(size.group(1)), float(size.group(2))), height=height))
+    kind = "door" if opening.group(1).startswith("door") else "window"
+    side = _ROOM_SIDES[opening.group(2)] if opening.group(2) else None
+    return EditPlan(operation="room", focus="room", room=RoomEdit(opening=kind, side=side))
+
+
 def _split_target(rest: str, separators: Sequence[str]) -> tuple[str, str] | None:
     for sep in separators:
         m = re.search(rf"(?<![\w]){re.escape(sep)}(?![\w])", rest)
@@ -366,7 +430,7 @@ def plan_edit_offline(scene: Scene, instruction: str) -> EditPlan:
     if not scene.objects and not text.startswith(_ADD):
         raise InputError("the scene has no objects; the only edit possible is to add one, e.g. 'add a sofa'")
     _single_edit_check(text)
-    plan = _plan_imperative(scene, text)
+    plan = _plan_room(scene, text) or _plan_imperative(scene, text)
     if plan is None:  # a wish or a statement: read as the command it amounts to
         imperative = _imperative(text)
         plan = _plan_imperative(scene, _strip_lead(imperative)) if imperative is not None else None
@@ -532,12 +596,15 @@ def _plan_add(scene: Scene, rest: str) -> EditPlan:
     _count_check(rest)
     phrases = _find_phrases(rest)
     noun = _first_clause(rest[: phrases[0].start] if phrases else rest).strip()
+    room = _ROOM_PHRASE.search(rest)
+    if room is not None and (not phrases or room.start() <= phrases[0].start):
+        noun = _first_clause(rest[: room.start()]).strip()
     new = _new_object(scene, noun)
     focus_id = fresh_id(scene, new.category or "object")
-    placement = rest[phrases[0].start:] if phrases else ""
-    return EditPlan(
-        operation="add", focus=focus_id, new_object=new, constraints=_constraints(scene, None, focus_id, placement)
-    )
+    placement = rest[min([p.start for p in phrases] + ([room.start()] if room else [])):] if phrases or room else ""
+    placement, walls = _without_room_phrase(scene, focus_id, new.category, placement)
+    constraints = walls + (_constraints(scene, None, focus_id, placement) if _find_phrases(placement) else [])
+    return EditPlan(operation="add", focus=focus_id, new_object=new, constraints=constraints)
 
 
 #: "to the left", "back", "forwards": a move relative to where the object stands (scene frame).
@@ -598,6 +665,14 @@ _TURN_AROUND = re.compile(r"\b(?:around|round|about)\b|\b(?:by\s+)?(-?\d+(?:\.\d
 
 
 def _plan_move(scene: Scene, rest: str, *, turning: bool = False, small: bool = False) -> EditPlan:
+    room = None if turning else _ROOM_PHRASE.search(rest)
+    if room is not None:  # "move the bed against the left wall", "hang the clock on the back wall"
+        reference = _FILLERS.sub(" ", rest[: room.start()])
+        reference = re.sub(r"\b(?:so it|so that it|to|over|back|away|up|down)\s*$", "", reference.strip())
+        focus = resolve(scene, reference, role="object to move")
+        remainder, walls = _without_room_phrase(scene, focus.id, focus.category, rest[room.start():])
+        return EditPlan(operation="move", focus=focus.id,
+                        constraints=walls + (_constraints(scene, focus, focus.id, remainder) if _find_phrases(remainder) else []))
     turn = _TURN_AROUND.search(rest) if turning else None
     if turn is not None:  # "by 90 degrees" is a turn, not a place ("by" also means "near")
         rest = f"{rest[:turn.start()]} {rest[turn.end():]}".strip()

@@ -25,6 +25,7 @@ from scenewright.evaluation.composition import spread
 from scenewright.evaluation.judge import judge, psa
 from scenewright.evaluation.perceptual import ClipScorer
 from scenewright.evaluation.physical import physical
+from scenewright.evaluation.room import room_metrics
 from scenewright.evaluation.spatial import spatial
 from scenewright.evaluation.stated import stated
 from scenewright.files import check_image
@@ -65,6 +66,8 @@ class SceneMetrics:
     unavailable: dict[str, str] = field(default_factory=dict)
     #: the MuJoCo settle check (:mod:`scenewright.evaluation.stability`), when it could run
     stability: dict | None = None
+    #: how the layout sits in its room (:mod:`scenewright.evaluation.room`); None without a room
+    room: dict | None = None
 
     @property
     def collision_free(self) -> bool:
@@ -104,6 +107,8 @@ def evaluate_scene(
         spread=ratio,
         ground_objects=ground,
     )
+    in_room = room_metrics(scene)
+    metrics.room = None if in_room is None else in_room.to_dict()
     if annotation is not None:
         metrics.annotation = annotation.id
         metrics.stated = stated(scene, annotation).to_dict()

@@ -45,5 +45,5 @@ def without_solver(
     scene: Scene, initial: list[SceneObject], meshes: Mapping[str, trimesh.Trimesh] | None = None
 ) -> Scene:
     """A copy of ``scene`` whose layout is the initial one, judged by :func:`~scenewright.layout.audit`."""
-    result = audit(initial, scene.constraints, meshes=meshes, bounds=scene.bounds)
+    result = audit(initial, scene.constraints, meshes=meshes, bounds=scene.bounds, room=scene.room)
     return scene.model_copy(update={"objects": result.objects, "layout": result.report})

@@ -23,7 +23,7 @@ import numpy as np
 from scenewright.evaluation.annotations import GROUND, UNCHECKED_SUPPORTS, Prompt, assign_keys
 from scenewright.geometry import world_box
 from scenewright.layout import check
-from scenewright.layout.relations import Boxes, holds
+from scenewright.layout.relations import Boxes, RoomTarget, holds
 from scenewright.scene import Scene, SceneObject
 
 #: Metres a bottom may sit from z = 0 and still stand on the ground (as the physical metrics).
@@ -80,7 +80,8 @@ class Stated:
     relations: int = 0
     supports_right: int = 0
     supports_checked: int = 0
-    #: wall / ceiling / air → how many objects the annotation puts there (not checked)
+    #: wall / ceiling / air → how many objects the annotation puts there unchecked (air always;
+    #: wall and ceiling in a scene without a room)
     supports_skipped: dict[str, int] = field(default_factory=dict)
     not_realised: list[str] = field(default_factory=list)
     wrong_supports: list[str] = field(default_factory=list)
@@ -145,15 +146,22 @@ def stated(scene: Scene, prompt: Prompt) -> Stated:
         else:
             result.not_realised.append(_why(f"{source} | between | {first} | {second}", found, source, first, second))
     resting = supports(scene.objects)
+    room = None if scene.room is None else RoomTarget.of(scene.room)
     for key, objects in found.items():
         wanted = prompt.support_of(key)
         for obj in objects:
-            if wanted in UNCHECKED_SUPPORTS:
+            # With a room, a wall or the ceiling is a support like any other; "air" stays unchecked.
+            if wanted in UNCHECKED_SUPPORTS and (room is None or wanted not in ROOM_SUPPORTS):
                 result.supports_skipped[wanted] = result.supports_skipped.get(wanted, 0) + 1
                 continue
             result.supports_checked += 1
             bottom, hosts = resting[obj.id]
-            if wanted == GROUND:
+            if wanted in ROOM_SUPPORTS:
+                right = bool(holds(ROOM_SUPPORTS[wanted], Boxes.of(obj), room))
+                if not right:
+                    result.wrong_supports.append(f"{obj.id}: wants the {wanted}, is not {ROOM_SUPPORTS[wanted]}")
+                    continue
+            elif wanted == GROUND:
                 right = on_ground(bottom, hosts)
             else:
                 right = any(h.id in hosts for h in found[wanted])
@@ -163,6 +171,10 @@ def stated(scene: Scene, prompt: Prompt) -> Stated:
                 actual = ", ".join(hosts) if hosts else f"bottom at {bottom:.2f} m"
                 result.wrong_supports.append(f"{obj.id}: wants {wanted}, rests on {actual}")
     return result
+
+
+#: Supports an annotation may name that a room provides, and the relation that checks each.
+ROOM_SUPPORTS = {"wall": "on wall", "ceiling": "on ceiling"}
 
 
 def _why(label: str, found: Mapping[str, list[SceneObject]], *keys: str) -> str:

@@ -22,7 +22,15 @@ from typing import Any, Callable, Collection, Iterable, Mapping, Sequence
 from pydantic import ValidationError
 
 from scenewright.core.relations import PRIORITY
-from scenewright.scene import Constraint, DroppedConstraint, SceneObject, describe_validation_error
+from scenewright.scene import (
+    ROOM_RELATIONS,
+    Constraint,
+    DroppedConstraint,
+    Room,
+    SceneObject,
+    describe_validation_error,
+    room_target,
+)
 
 log = logging.getLogger(__name__)
 
@@ -31,10 +39,32 @@ def _as_dict(c: Constraint | Mapping[str, Any]) -> dict[str, Any]:
     return c.model_dump() if isinstance(c, Constraint) else dict(c)
 
 
+def room_problem(c: Constraint, room: Room | None, ids: Collection[str]) -> str | None:
+    """Why a constraint's room side is wrong (None when it is right): a room relation must name
+    the room (``room``, ``ceiling``, ``wall_<i>``) of a scene that has one, and only room
+    relations may."""
+    named = room_target(c.target) if c.target not in ids else None
+    if c.relation not in ROOM_RELATIONS:
+        return None if named is None else f"'{c}': only {', '.join(ROOM_RELATIONS)} relate to the room"
+    if room is None:
+        return f"'{c}' needs a room, and this scene has none (an open scene; try --room auto or WxD)"
+    walls = len(room.floor)
+    ceiling = c.relation == "on ceiling"
+    if isinstance(named, int):
+        fits = not ceiling and named < walls
+    else:
+        fits = named == "room" or (named == "ceiling" and ceiling)
+    if not fits:
+        return (f"'{c}': the target of '{c.relation}' must be "
+                + ("'ceiling' or 'room'" if c.relation == "on ceiling" else f"'room' or one of wall_0 .. wall_{walls - 1}"))
+    return None
+
+
 def clean_constraints(
-    objects: Sequence[SceneObject], constraints: Iterable[Constraint | Mapping[str, Any]]
+    objects: Sequence[SceneObject], constraints: Iterable[Constraint | Mapping[str, Any]], room: Room | None = None
 ) -> tuple[list[Constraint], list[DroppedConstraint]]:
-    """Valid, unique, acyclic constraints in input order, and every dropped one with why."""
+    """Valid, unique, acyclic constraints in input order, and every dropped one with why.
+    Room relations are kept when ``room`` is given and they name a part of it."""
     ids = {o.id for o in objects}
     kept: list[Constraint] = []
     dropped: list[DroppedConstraint] = []
@@ -57,8 +87,11 @@ def clean_constraints(
         else:
             drop(raw, f"a constraint must be an object with relation, source and target, got {raw!r}")
             continue
-        unknown = [x for x in (c.source, c.target) if x not in ids]
-        if unknown:
+        wrong = room_problem(c, room, ids)
+        unknown = [x for x in (c.source, c.target) if x not in ids and not (x == c.target and c.relation in ROOM_RELATIONS)]
+        if wrong is not None:
+            drop(c, wrong)
+        elif unknown:
             names = ", ".join(map(repr, unknown))
             drop(c, f"'{c}' names unknown object {names}; objects are: {', '.join(sorted(ids))}")
         elif c.source == c.target:

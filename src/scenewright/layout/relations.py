@@ -23,6 +23,19 @@ Decisions where the table leaves room:
 - ``face to``: the source's front (−Y at yaw 0, :func:`geometry.front_direction`) is within
   ±10° of the direction from the source's centre to the target's centre, in plan. A source
   whose centre coincides with the target's in plan faces nothing.
+
+The four room relations (docs/rooms.md) have the room as their target, named by a reserved id
+(:func:`scenewright.scene.room_target`): ``room`` (any wall; the ceiling for ``on ceiling``),
+``wall_<i>`` (one wall) or ``ceiling``. Their target is a :class:`RoomTarget`, not a box:
+
+- ``against wall``: the source's back (+Y at yaw 0) is within 2 cm of the wall's line (never
+  through it), its front within ±10° of the wall's inward normal, and its footprint along
+  the wall within the wall's ends.
+- ``in corner``: against a wall, and a side within 2 cm of the wall that meets it at a convex
+  corner (an L-shaped room's inner corner is no corner to stand in).
+- ``on wall``: as ``against wall``, and mounted: its bottom at least 0.3 m above the floor and its
+  top under the ceiling (a mirror, a painting, a TV, a clock, a wall shelf).
+- ``on ceiling``: its top within 2 cm under the ceiling (hanging from it: fans, chandeliers).
 """
 
 from __future__ import annotations
@@ -35,8 +48,17 @@ import numpy as np
 
 from scenewright.core.relations import ABOVE, BUFFER, FACE_DEGREES, FAR, NEAR, ON_GAP
 from scenewright.geometry import front_direction, rotation_matrix, world_box
-from scenewright.scene import RELATION_TYPES, SceneObject, Vec3
+from scenewright.scene import RELATION_TYPES, ROOM_RELATIONS, ROOM_TARGET, Room, SceneObject, Vec3, room_target
 
+#: m, how far a back may stand off its wall (and a top below the ceiling) and still touch it.
+WALL_GAP = 0.02
+#: m, the lowest a wall-mounted object's bottom may hang.
+MOUNT_MIN = 0.3
+#: m, the gap the candidate generators leave between an object and its wall or ceiling.
+FLUSH = 0.001
+#: Centre heights (m) tried for a wall-mounted object, preferred first: eye level, then lower
+#: (a TV, a mirror over a basin) and higher (a clock, a shelf over a desk).
+MOUNT_HEIGHTS = (1.5, 1.25, 1.8)
 #: Slack for floating-point round-off only, so that limits hold exactly at the limit.
 EPS = 1e-9
 
@@ -218,8 +240,10 @@ _VIOLATION: dict[str, Callable[[Boxes, Boxes], np.ndarray]] = {
 }
 
 
-def holds(relation: str, src: Boxes, tgt: Boxes) -> np.ndarray:
+def holds(relation: str, src: Boxes, tgt: Boxes | RoomTarget) -> np.ndarray:
     """Whether ``relation`` holds for every (broadcast) source/target box pair."""
+    if relation in ROOM_RELATIONS:
+        return _room_miss(relation, src, tgt) <= EPS
     if relation == "far":  # strict: the gap must exceed 8 m
         return _plan_gap(src, tgt) > FAR
     if relation == "on":
@@ -229,7 +253,10 @@ def holds(relation: str, src: Boxes, tgt: Boxes) -> np.ndarray:
     return _VIOLATION[relation](src, tgt) <= EPS
 
 
-def violations(relation: str, src: Boxes, tgt: Boxes) -> np.ndarray:
+def violations(relation: str, src: Boxes, tgt: Boxes | RoomTarget) -> np.ndarray:
+    if relation in ROOM_RELATIONS:
+        miss = _room_miss(relation, src, tgt)
+        return np.where(miss <= EPS, 0.0, np.maximum(miss, EPS))
     if relation == "far":
         return np.where(holds("far", src, tgt), 0.0, np.maximum(FAR - _plan_gap(src, tgt), EPS))
     return np.where(holds(relation, src, tgt), 0.0, np.maximum(_VIOLATION[relation](src, tgt), EPS))
@@ -271,6 +298,8 @@ def _region(relation: str, half: np.ndarray, t: Boxes | None) -> list[tuple[np.n
     or is contained by (far) their rounded region; the exact checks filter afterwards.
     """
     inf = np.inf
+    if isinstance(t, RoomTarget):  # "on ceiling": anywhere under it
+        return [(t.lo + half[:2], t.hi - half[:2])]
     if relation == "face to" or t is None:  # any position can face the target
         return [(np.array([-inf, -inf]), np.array([inf, inf]))]
     tlo, thi = t.lo[:2], t.hi[:2]
@@ -353,11 +382,163 @@ def source_heights(relation: str, half_z: float, target: Boxes, initial_z: float
     ``on`` has one; ``above`` starts at the initial height or the lowest allowed one, and
     offers a few higher levels so two hanging objects can share a footprint.
     """
+    if isinstance(target, RoomTarget):
+        return room_heights(relation, half_z, target)
     top = float(target.hi[2])
     if relation == "on":
         return np.array([top + half_z])
     if relation == "above":
         return max(initial_z, top + ABOVE + half_z) + np.array([0.0, 0.3, 0.7, 1.2])
+    return None
+
+
+# --- the room relations ----------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class RoomTarget:
+    """The walls a room relation may use and the ceiling, as arrays over those walls.
+
+    ``start``/``direction``/``normal`` (k, 2): each wall's first corner, unit direction and
+    inward unit normal; ``length`` (k,); for ``in corner``, the walls meeting it at its start
+    and end corners (``before``/``after``: start (k, 2) and inward normal (k, 2)) and whether
+    each of those corners is convex. ``lo``/``hi`` bound the floor; ``height`` is the ceiling.
+    """
+
+    index: np.ndarray
+    start: np.ndarray
+    direction: np.ndarray
+    normal: np.ndarray
+    length: np.ndarray
+    before: tuple[np.ndarray, np.ndarray]
+    after: tuple[np.ndarray, np.ndarray]
+    convex: tuple[np.ndarray, np.ndarray]
+    lo: np.ndarray
+    hi: np.ndarray
+    height: float
+
+    @classmethod
+    def of(cls, room: Room, target: str = ROOM_TARGET) -> RoomTarget:
+        """The walls ``target`` names in ``room`` (every wall for ``room`` and ``ceiling``)."""
+        named = room_target(target)
+        if named is None:
+            raise ValueError(f"{target!r} names no part of the room; use 'room', 'ceiling' or 'wall_<i>'")
+        n = len(room.floor)
+        if isinstance(named, int) and named >= n:
+            raise ValueError(f"{target!r}: the room has walls wall_0 .. wall_{n - 1}")
+        pts = np.asarray(room.floor, dtype=float)
+        start, end = pts, np.roll(pts, -1, axis=0)
+        vec = end - start
+        length = np.linalg.norm(vec, axis=1)
+        direction = vec / length[:, None]
+        normal = np.stack([-direction[:, 1], direction[:, 0]], axis=1)  # left of a CCW edge: inside
+        prev, nxt = np.roll(np.arange(n), 1), np.roll(np.arange(n), -1)
+        turn = direction[prev, 0] * direction[:, 1] - direction[prev, 1] * direction[:, 0]
+        convex_start = turn > EPS  # the corner at each wall's start
+        keep = np.arange(n) if not isinstance(named, int) else np.array([named])
+        return cls(
+            index=keep, start=start[keep], direction=direction[keep], normal=normal[keep], length=length[keep],
+            before=(start[prev][keep], normal[prev][keep]), after=(start[nxt][keep], normal[nxt][keep]),
+            convex=(convex_start[keep], convex_start[nxt][keep]),
+            lo=pts.min(axis=0), hi=pts.max(axis=0), height=float(room.height),
+        )
+
+
+def wall_yaw(normal: np.ndarray) -> np.ndarray:
+    """The yaw (degrees) at which an object's front points along ``normal`` (..., 2)."""
+    return np.degrees(np.arctan2(normal[..., 0], -normal[..., 1]))
+
+
+def _reach(b: Boxes, direction: np.ndarray) -> np.ndarray:
+    """How far each footprint reaches from its centre along ``direction`` (broadcast (..., 2))."""
+    _, half, axes = _rectangle(b)
+    return np.sum(np.abs(np.einsum("...ij,...j->...i", axes, direction)) * half, axis=-1)
+
+
+def _off_line(b: Boxes, start: np.ndarray, normal: np.ndarray) -> np.ndarray:
+    """How far a line (through ``start``, inward ``normal``) is from touching each footprint:
+    0 within :data:`WALL_GAP` of it; the overshoot when the footprint crosses it."""
+    gap = np.sum((b.centre[..., :2] - start) * normal, axis=-1) - _reach(b, normal)
+    return np.maximum(0.0, gap - WALL_GAP) + np.maximum(0.0, -gap)
+
+
+def _wall_miss(src: Boxes, room: RoomTarget, corner: bool) -> np.ndarray:
+    """Per source box, the least miss over the target's walls of standing back to one of them
+    (in a corner of it, with ``corner``). Shape: the source boxes' leading shape."""
+    b = Boxes(src.lo[..., None, :], src.hi[..., None, :], np.asarray(src.yaw)[..., None],
+              None if src.foot is None else np.asarray(src.foot)[..., None, :])
+    miss = _off_line(b, room.start, room.normal)
+    front = np.moveaxis(front_direction(np.asarray(b.yaw, dtype=float)), 0, -1)
+    cos = np.clip(np.sum(front * room.normal, axis=-1), -1.0, 1.0)
+    miss = miss + 0.01 * np.maximum(0.0, np.degrees(np.arccos(cos)) - FACE_DEGREES)
+    along = np.sum((b.centre[..., :2] - room.start) * room.direction, axis=-1)
+    reach = _reach(b, room.direction)
+    miss = miss + np.maximum(0.0, reach - along) + np.maximum(0.0, along + reach - room.length)
+    if corner:
+        at_start = np.where(room.convex[0], _off_line(b, *room.before), np.inf)
+        at_end = np.where(room.convex[1], _off_line(b, *room.after), np.inf)
+        miss = miss + np.minimum(at_start, at_end)
+    return miss.min(axis=-1)
+
+
+def _room_miss(relation: str, src: Boxes, room: RoomTarget) -> np.ndarray:
+    if not isinstance(room, RoomTarget):
+        raise TypeError(f"'{relation}' relates an object to the room, not to another object")
+    if relation == "on ceiling":
+        top = src.hi[..., 2]
+        return np.maximum(0.0, room.height - top - WALL_GAP) + np.maximum(0.0, top - room.height)
+    miss = _wall_miss(src, room, corner=relation == "in corner")
+    if relation == "on wall":
+        miss = miss + np.maximum(0.0, MOUNT_MIN - src.lo[..., 2]) + np.maximum(0.0, src.hi[..., 2] - room.height)
+    return miss
+
+
+def check_room(relation: str, source: SceneObject, room: Room, target: str = ROOM_TARGET) -> bool:
+    """Whether ``source`` stands in a room relation to the part of ``room`` that ``target`` names."""
+    return bool(holds(_known(relation), Boxes.of(source), RoomTarget.of(room, target)))
+
+
+def room_violation(relation: str, source: SceneObject, room: Room, target: str = ROOM_TARGET) -> float:
+    """How far (m) ``source`` is from a room relation; 0 when it holds."""
+    return float(violations(_known(relation), Boxes.of(source), RoomTarget.of(room, target)))
+
+
+def propose_wall(
+    relation: str, foot: np.ndarray, room: RoomTarget, anchor: np.ndarray, spacing: float = 0.1
+) -> tuple[np.ndarray, np.ndarray]:
+    """Candidate centres (x, y) and yaws of a source standing back to a wall (``against wall``,
+    ``on wall``) or in a corner, nearest to ``anchor`` first. ``foot`` is the source's footprint
+    half extents in its own yaw frame: its back sits :data:`FLUSH` off the wall, facing in."""
+    anchor = np.asarray(anchor, dtype=float)[:2]
+    fx, fy = float(foot[0]), float(foot[1])
+    xy, yaws = [], []
+    for k in range(len(room.length)):
+        length = float(room.length[k])
+        if length < 2 * fx:
+            continue  # the wall is too short for it
+        if relation == "in corner":
+            ends = [(fx + FLUSH, room.convex[0][k]), (length - fx - FLUSH, room.convex[1][k])]
+            t = np.array([x for x, convex in ends if convex])
+        else:
+            to_anchor = float(np.dot(anchor - room.start[k], room.direction[k]))
+            t = np.append(np.arange(fx, length - fx + EPS, spacing), np.clip(to_anchor, fx, length - fx))
+        if not len(t):
+            continue
+        xy.append(room.start[k] + t[:, None] * room.direction[k] + (fy + FLUSH) * room.normal[k])
+        yaws.append(np.full(len(t), float(wall_yaw(room.normal[k]))))
+    if not xy:
+        return np.zeros((0, 2)), np.zeros(0)
+    xy, yaws = np.concatenate(xy), np.concatenate(yaws)
+    order = np.argsort(np.linalg.norm(xy - anchor, axis=1), kind="stable")
+    return xy[order], yaws[order]
+
+
+def room_heights(relation: str, half_z: float, room: RoomTarget) -> np.ndarray | None:
+    """Centre heights a room relation allows its source, preferred first (None: the ground rule)."""
+    if relation == "on ceiling":
+        return np.array([room.height - half_z - FLUSH])
+    if relation == "on wall":
+        low, high = MOUNT_MIN + half_z, room.height - FLUSH - half_z
+        return np.array(list(dict.fromkeys(round(float(np.clip(h, low, max(low, high))), 4) for h in MOUNT_HEIGHTS)))
     return None
 
 

@@ -57,8 +57,10 @@ from scenewright.core.relations import PRIORITY
 from scenewright.layout import relations as rel
 from scenewright.layout.collision import CollisionWorld, colliding_pairs, resting_pairs
 from scenewright.layout.constraints import clean_constraints, topological_order
-from scenewright.layout.relations import Boxes, footprint_half, half_extents, rotated_half, tilt_matrix
-from scenewright.scene import Constraint, LayoutReport, SceneObject, UnplacedObject, Vec3
+from scenewright.layout.relations import Boxes, RoomTarget, footprint_half, half_extents, rotated_half, tilt_matrix
+from scenewright.layout.room import RoomShape, shortfall
+from scenewright.layout.room import problems as room_problems
+from scenewright.scene import ROOM_RELATIONS, Constraint, LayoutReport, Room, SceneObject, UnplacedObject, Vec3
 
 log = logging.getLogger(__name__)
 
@@ -85,12 +87,28 @@ TURN_COST = 0.3
 CROWDED = 0.25
 #: Clearance (m) of a position flush against another object.
 FLUSH_GAP = 1e-3
+#: Mesh-level collision checks one search node may make before its remaining candidates are
+#: given up: in a crowded room the nearest thousands may all collide (a blanket among the
+#: furniture of a bathroom), and each check costs a narrow phase; the wider set comes next.
+NARROW_CHECKS = 600
+#: Poses of one floor object that may be rejected for cutting a walking path in a room before
+#: the next free one is taken all the same (the repair pass and the report take it from there).
+WALK_REJECTS = 40
 #: Yaws tried for an object whose orientation nothing fixes, besides the model's.
 AXIS_YAWS = (0.0, 90.0, 180.0, 270.0)
 
 
 def _cpu() -> float:
     return time.thread_time()
+
+
+def _area(bounds, room: RoomShape | None) -> tuple[np.ndarray, np.ndarray] | None:
+    """The rectangle (lo, hi) in plan that holds the bounds (centred at the origin) and the room."""
+    boxes = [] if bounds is None else [(-np.asarray(bounds, dtype=float) / 2.0, np.asarray(bounds, dtype=float) / 2.0)]
+    boxes += [] if room is None else [(room.lo, room.hi)]
+    if not boxes:
+        return None
+    return np.max([b[0] for b in boxes], axis=0), np.min([b[1] for b in boxes], axis=0)
 
 
 def _yaws_towards(src: np.ndarray, dst: np.ndarray) -> np.ndarray:
@@ -152,6 +170,7 @@ class _Item:
     own: list[tuple[Constraint, int]]  # this object is the source; (constraint, target)
     reverse: list[tuple[Constraint, int]]  # a fixed object is the source; (constraint, source)
     yaws: tuple[float, ...]  # yaws it may take when no facing decides
+    walls: list[tuple[Constraint, RoomTarget]] = field(default_factory=list)  # its room relations
 
 
 @dataclass
@@ -171,15 +190,22 @@ class _Node:
     forward_rejects: int = 0
     reject_allowance: int = FORWARD_REJECTS
     wide: bool = False  # drawn from the wide set, after the usual one ran out
+    narrow: int = 0  # mesh-level checks made for it so far
+    narrow_cap: int = 0  # the most it may make (0: no limit)
+    walk_rejects: int = 0  # poses rejected for cutting the walking paths
+    walk_base: int | None = None  # objects out of reach (and doors stuck) without it
 
 
 class _Search:
     """One search's state: the poses placed so far, their collision world, the candidates."""
 
-    def __init__(self, objects, constraints, meshes, bounds, fixed, seed, spread=0.0, keep_yaw=()):
+    def __init__(self, objects, constraints, meshes, bounds, fixed, seed, spread=0.0, keep_yaw=(), room=None,
+                 corridors=False):
         self.objects = list(objects)
         self.index = {o.id: i for i, o in enumerate(self.objects)}
-        self.bounds = None if bounds is None else np.asarray(bounds, dtype=float) / 2.0
+        self.room = None if room is None else RoomShape(room, corridors)
+        #: The rectangle (lo, hi) every footprint must stay in: the bounds, the room's extent.
+        self.area = _area(bounds, self.room)
         self.rng = np.random.default_rng(seed)
         self.meshes = meshes or {}
         self.world = CollisionWorld(self.objects, meshes, resting_pairs(constraints))
@@ -198,7 +224,12 @@ class _Search:
         self.fixed = {self.index[x] for x in fixed}
         own: dict[int, list] = {i: [] for i in range(n)}
         reverse: dict[int, list] = {i: [] for i in range(n)}
+        walls: dict[int, list] = {i: [] for i in range(n)}
         for c in constraints:
+            if c.relation in ROOM_RELATIONS:
+                if self.index[c.source] not in self.fixed:
+                    walls[self.index[c.source]].append((c, RoomTarget.of(room, c.target)))
+                continue
             s, t = self.index[c.source], self.index[c.target]
             if s not in self.fixed:
                 own[s].append((c, t))
@@ -212,7 +243,7 @@ class _Search:
             self.items[i] = _Item(
                 i, o, np.array(o.size.tuple()) / 2, tilt_matrix(o.rotation),
                 float(half_extents(o.size, o.rotation)[2]), footprint_half(o.size, o.rotation),
-                own[i], reverse[i], yaws,
+                own[i], reverse[i], yaws, walls[i],
             )
         #: Objects with a constraint on each object, for forward checking and re-checks.
         self.dependents: dict[int, list[int]] = {i: [] for i in range(n)}
@@ -304,7 +335,7 @@ class _Search:
         centres, yaws = poses.centres[good], poses.yaws[good]
         lo, hi = self.world.boxes(item.index, centres, yaws)
         return _Node(item, centres, yaws, lo, hi, self.world.neighbours(item.index),
-                     {f: y[good] for f, y in poses.turns.items()}, wide=wide)
+                     {f: y[good] for f, y in poses.turns.items()}, wide=wide, narrow_cap=NARROW_CHECKS)
 
     def feasible(self, item: _Item) -> bool:
         """Whether any candidate pose meets the object's constraints and the bounds: a sparse
@@ -330,10 +361,17 @@ class _Search:
         obj = item.obj
         own = self.active(item)
         anchor = self.anchor[item.index] if anchor is None else anchor
-        bounds = self.bounds if bounded else None
+        area = self.area if bounded else None
         ranked = sorted(own, key=lambda ct: PRIORITY[ct[0].relation])
         primary = ranked[0] if ranked else None
         relation, target = (primary[0].relation, self.box(primary[1])) if primary else ("face to", None)
+        # A room relation leads unless the object rests on another: a wall one fixes position
+        # and yaw, "on ceiling" fixes the height.
+        wall = next(((c, t) for c, t in item.walls if c.relation != "on ceiling"), None)
+        ceiling = next(((c, t) for c, t in item.walls if c.relation == "on ceiling"), None)
+        resting = primary is not None and relation in ("on", "above")
+        if ceiling is not None and not resting and primary is None:
+            relation, target = "on ceiling", ceiling[1]
         facing = next((t for c, t in ranked if c.relation == "face to"), None)
         waiting = next((t for c, t in item.own if c.relation == "face to" and not self.posed[t]), None)
         if facing is not None or waiting is not None:
@@ -341,6 +379,13 @@ class _Search:
         else:
             yaw_choices = item.yaws[:1] if density == "probe" else item.yaws
         xy_parts, yaw_parts, cost_parts = [], [], []
+        if wall is not None and not resting:
+            relation, target = wall[0].relation, wall[1]
+            spacing = {"probe": 0.4, "check": 0.2, "normal": 0.1, "wide": 0.05}[density]
+            xy, yaws = rel.propose_wall(relation, item.foot, target, anchor, spacing)
+            xy_parts, yaw_parts = [xy], [yaws]
+            cost_parts = [np.linalg.norm(xy - anchor[:2], axis=1)]
+            yaw_choices, facing = (), None  # the wall turns it
         for k, yaw in enumerate(yaw_choices):
             half = rotated_half(item.half, item.tilt, yaw)
             few = k > 0  # turned yaws get a sparser set
@@ -349,8 +394,8 @@ class _Search:
                          rel.propose(relation, half, target, anchor, self.rng, n=40, spacing=0.8)]
             elif density == "wide":
                 parts = [rel.propose(relation, half, target, anchor, self.rng, n=450 if few else 900, spacing=0.3)]
-                if bounds is not None:
-                    parts.append(self.rng.uniform(-bounds, bounds, size=(300 if few else 600, 2)))
+                if area is not None:
+                    parts.append(self.rng.uniform(*area, size=(300 if few else 600, 2)))
             else:
                 scale = 0.5 if density == "check" else 1.0
                 parts = [
@@ -362,9 +407,9 @@ class _Search:
             if density != "probe" and bounded and relation not in ("on", "above") and self.crowded():
                 parts.append(self.flush(item, half, anchor))
             xy = np.concatenate(parts)
-            if bounds is not None and np.all(bounds >= half[:2]):
+            if area is not None and np.all(area[1] - area[0] >= 2 * half[:2]):
                 # Pull outside points onto the bounds' edge: tight rooms need their walls and corners.
-                xy = np.clip(xy, -bounds + half[:2], bounds - half[:2])
+                xy = np.clip(xy, area[0] + half[:2], area[1] - half[:2])
             key = np.round(xy, 4) @ np.array([1.0, 1j])
             _, first = np.unique(key, return_index=True)
             xy = xy[np.sort(first)]
@@ -373,7 +418,9 @@ class _Search:
             cost_parts.append(np.linalg.norm(xy - anchor[:2], axis=1) + (TURN_COST if k else 0.0))
         xy, yaws, cost = np.concatenate(xy_parts), np.concatenate(yaw_parts), np.concatenate(cost_parts)
 
-        heights = rel.source_heights(relation, item.half_z, target, anchor[2]) if primary else None
+        heights = rel.source_heights(relation, item.half_z, target, anchor[2]) if target is not None else None
+        if ceiling is not None and not resting:
+            heights = rel.room_heights("on ceiling", item.half_z, ceiling[1])
         if heights is None:
             heights = np.array([item.half_z])  # the ground rule
         cost = cost[None] + np.abs(heights - heights[0])[:, None]
@@ -398,11 +445,12 @@ class _Search:
     def crowded(self) -> bool:
         """Whether the floor inside the bounds is so full that free positions are best found
         flush against what stands there (:data:`CROWDED` of it covered)."""
-        if self.bounds is None:
+        if self.area is None:
             return False
         ground = self.placed & (self.lo[:, 2] < 0.05)
         covered = np.prod(self.hi[ground, :2] - self.lo[ground, :2], axis=1).sum()
-        return covered > CROWDED * 4 * np.prod(self.bounds)
+        floor = self.room.area if self.room is not None else np.prod(self.area[1] - self.area[0])
+        return covered > CROWDED * floor
 
     def flush(self, item: _Item, half: np.ndarray, anchor: np.ndarray, near: int = 8) -> np.ndarray:
         """Positions flush against the walls and the nearest placed objects standing at its
@@ -416,7 +464,7 @@ class _Search:
             others = others[np.argsort(dist, kind="stable")[:near]]
         lo, hi = self.world.lo[others, :2], self.world.hi[others, :2]
         gap = half[:2] + FLUSH_GAP  # a hair apart: touching counts as a collision to some checkers
-        edges = np.concatenate([[-self.bounds + half[:2], self.bounds - half[:2]], hi + gap, lo - gap])
+        edges = np.concatenate([[self.area[0] + half[:2], self.area[1] - half[:2]], hi + gap, lo - gap])
         xs = np.append(edges[:, 0], anchor[0])
         ys = np.append(edges[:, 1], anchor[1])
         return np.stack(np.meshgrid(xs, ys), axis=-1).reshape(-1, 2)
@@ -430,6 +478,8 @@ class _Search:
         for c, t in item.own:
             if t != exclude and self.posed[t] and c.relation != "face to":
                 ok &= rel.holds(c.relation, boxes, self.box(t))
+        for c, t in item.walls:
+            ok &= rel.holds(c.relation, boxes, t)
         for s in self.dependents[f]:
             if s != exclude and self.posed[s]:
                 for c, t in self.items[s].own:
@@ -438,11 +488,15 @@ class _Search:
         return ok
 
     def inside(self, boxes: Boxes) -> np.ndarray:
-        if self.bounds is None:
+        """Whether each box stands inside the bounds and the room, clear of its openings."""
+        if self.area is None:
             return np.ones(boxes.lo.shape[0], dtype=bool)
-        return np.all(boxes.lo[:, :2] >= -self.bounds - rel.EPS, axis=1) & np.all(
-            boxes.hi[:, :2] <= self.bounds + rel.EPS, axis=1
+        ok = np.all(boxes.lo[:, :2] >= self.area[0] - rel.EPS, axis=1) & np.all(
+            boxes.hi[:, :2] <= self.area[1] + rel.EPS, axis=1
         )
+        if self.room is not None:
+            ok &= self.room.misfit(boxes) <= rel.EPS
+        return ok
 
     def pairs(self, item: _Item, turns=None, centres=None) -> list[tuple[Constraint, Boxes | None, Boxes | None]]:
         """The object's constraints with the other side's box: (constraint, target box, source box);
@@ -454,7 +508,7 @@ class _Search:
                 return self.box(t)
             return self.boxes_of(self.items[t], np.broadcast_to(self.pos[t], centres.shape), turns[t])
 
-        return [(c, target(t), None) for c, t in self.active(item)] + [
+        return [(c, target(t), None) for c, t in self.active(item)] + [(c, t, None) for c, t in item.walls] + [
             (c, None, self.box(s)) for c, s in item.reverse
         ]
 
@@ -467,8 +521,9 @@ class _Search:
         if never:
             return _Failure("no candidate position satisfies " + "; ".join(f"'{c}'" for c in never), never)
         if ok.any():
-            w, d = self.bounds * 2
-            reason = f"every position satisfying its constraints lies outside the {w:g} x {d:g} m bounds"
+            w, d = self.area[1] - self.area[0]
+            where = "room, or in a door's or window's clear strip" if self.room is not None else "bounds"
+            reason = f"every position satisfying its constraints lies outside the {w:g} x {d:g} m {where}"
         elif any(self.posed[f] for f in self.followers[item.index]):
             reason = "its constraints cannot all hold at once, with the objects facing it turned"
         else:
@@ -493,7 +548,7 @@ class _Search:
                 saved = self.followers[item.index]
                 self.followers[item.index] = []  # as the objects facing it stand
                 try:
-                    probe = replace(item, own=group, reverse=[])
+                    probe = replace(item, own=group, reverse=[], walls=[])
                     found = self.poses(probe, "wide", anchor=self.box(t).centre, bounded=False).ok.any()
                 finally:
                     self.followers[item.index] = saved
@@ -505,9 +560,10 @@ class _Search:
     def alone(self, item: _Item, constraint: Constraint) -> bool:
         """Whether ``constraint`` on its own has a candidate inside the bounds."""
         own = [(c, t) for c, t in item.own if c is constraint]
-        if not own:
+        walls = [(c, t) for c, t in item.walls if c is constraint]
+        if not own and not walls:
             return False  # another object's constraint on this one: no generator of its own
-        probe = replace(item, own=own, reverse=[])
+        probe = replace(item, own=own, reverse=[], walls=walls)
         saved, self.followers[item.index] = self.followers[item.index], []
         try:
             return self.feasible(probe)
@@ -515,8 +571,49 @@ class _Search:
             self.followers[item.index] = saved
 
     def outside_by(self, boxes: Boxes) -> np.ndarray:
-        over = np.maximum(boxes.hi[:, :2] - self.bounds, 0.0) + np.maximum(-self.bounds - boxes.lo[:, :2], 0.0)
-        return over.max(axis=1)
+        """How far (m) each box is from standing where :meth:`inside` allows."""
+        lo, hi = self.area
+        over = (np.maximum(boxes.hi[:, :2] - hi, 0.0) + np.maximum(lo - boxes.lo[:, :2], 0.0)).max(axis=1)
+        return over if self.room is None else np.maximum(over, self.room.misfit(boxes))
+
+    def on_floor(self, i: int) -> bool:
+        """Whether object ``i`` stands on the floor: no ``on``/``above`` or mounting places it."""
+        up = ("on", "above")
+        return not any(c.relation in up for c, _ in self.items[i].own) and not any(
+            c.relation in ("on wall", "on ceiling") for c, _ in self.items[i].walls)
+
+    def cuts_path(self, i: int, node: _Node) -> bool:
+        """Whether ``i`` where it was just put leaves more floor objects out of an agent's reach
+        from the doors (or more doors walled in) than without it; always False once the node
+        has rejected :data:`WALK_REJECTS` poses, or for what does not stand on the floor."""
+        if self.room is None or node.walk_rejects >= WALK_REJECTS or not self.on_floor(i):
+            return False
+        placed = np.flatnonzero(self.placed)
+        boxes = Boxes(self.lo[placed], self.hi[placed], self.yaw[placed],
+                      np.stack([self.items[j].foot for j in placed]))
+        floor = np.array([self.on_floor(j) and self.lo[j, 2] < 0.05 for j in placed])
+
+        def lost(mask: np.ndarray) -> int:
+            missed, stuck = self.room.walk(boxes[mask], floor[mask])
+            return len(missed) + len(stuck)
+
+        if node.walk_base is None:
+            node.walk_base = lost(placed != i)
+        if lost(np.ones(len(placed), dtype=bool)) <= node.walk_base:
+            return False
+        node.walk_rejects += 1
+        return True
+
+    def misfit_detail(self, box: Boxes) -> str:
+        """Where one box stands that :meth:`inside` does not allow, and by how much."""
+        lo, hi = self.area
+        over = float((np.maximum(box.hi[:, :2] - hi, 0.0) + np.maximum(lo - box.lo[:, :2], 0.0)).max())
+        if self.room is None:
+            return f"outside the bounds by {over:.2f} m"
+        out, strip = float(max(over, self.room.outside_by(box)[0])), float(self.room.blocking(box)[0])
+        parts = [f"outside the room by {out:.2f} m"] if out > 0 else []
+        parts += [f"in a door's or window's clear strip by {strip:.2f} m"] if strip > 0 else []
+        return "; ".join(parts)
 
     def next_free(self, node: _Node) -> int | None:
         """The next candidate of ``node`` that collides with nothing placed, if any."""
@@ -536,6 +633,10 @@ class _Search:
             blockers = self.world.colliders(i, node.centres[k], float(node.yaws[k]), touching)
             if not blockers:
                 return k
+            node.narrow += 1
+            if node.narrow_cap and node.narrow >= node.narrow_cap:
+                log.debug("%s: %d candidates collided; the rest are not tried", node.item.obj.id, node.narrow)
+                node.cursor = len(node.centres)
             node.conflict.update(blockers)
             node.blockers.update(blockers)
         return None
@@ -560,7 +661,7 @@ class _Search:
         for s in self.dependents[i]:
             item = self.items[s]
             known = self.active(item)
-            if self.posed[s] or (len(known) < 2 and self.bounds is None) or self.downstream(item):
+            if self.posed[s] or (len(known) < 2 and self.area is None) or self.downstream(item):
                 continue
             if self.feasible(replace(item, own=known)):
                 continue
@@ -611,7 +712,7 @@ class _Search:
         ]
         scale = [0.01 if c.relation == "face to" else 1.0 for c, _, _ in pairs]
         total = sum(m * w for m, w in zip(misses, scale)) if misses else np.zeros(len(centres))
-        if self.bounds is not None:
+        if self.area is not None:
             total = total + 1e3 * self.outside_by(boxes)
         for f, yaw in turns.items():  # a follower that cannot turn there misses its facing
             total = total + 1e3 * ~self.still_holds(f, yaw, exclude=i)
@@ -629,8 +730,8 @@ class _Search:
         detail = [
             f"'{c}' {rel.describe(c.relation, float(m[j]))}" for (c, _, _), m in zip(pairs, misses) if m[j] > 0
         ]
-        if self.bounds is not None and self.outside_by(boxes)[j] > 0:
-            detail.append(f"outside the bounds by {self.outside_by(boxes)[j]:.2f} m")
+        if self.area is not None and self.outside_by(boxes)[j] > 0:
+            detail.append(self.misfit_detail(boxes[j : j + 1]))
         if self.downstream(item):
             failure = replace(failure, inherent=True)
         for f in list(node.turns):
@@ -656,6 +757,7 @@ def solve(
     time_limit: float = 10.0,
     node_limit: int | None = None,
     seed: int = 0,
+    room: Room | None = None,
 ) -> LayoutResult:
     """Place every object the constraints allow, collision-free, inside ``bounds`` (W, D).
 
@@ -664,14 +766,22 @@ def solve(
     ``fixed`` ids keep their pose and count as placed; ``keep_yaw`` ids keep their yaw unless a
     ``face to`` turns them. ``node_limit`` caps the search work (default
     :data:`NODES_PER_OBJECT` per object), ``time_limit`` its CPU seconds.
+
+    With a ``room``, every object stays inside its floor polygon and out of the clear strips of
+    its doors and windows (:mod:`.room`), room relations hold like the others, and a repair
+    pass moves floor objects nobody can walk to; what stays wrong is in ``report.room``.
     """
     start = _cpu()
     objects, fixed = _checked(objects, fixed, bounds)
-    cleaned, dropped = clean_constraints(objects, constraints)
+    cleaned, dropped = clean_constraints(objects, constraints, room)
     if node_limit is None:
         node_limit = NODES_PER_OBJECT * len(objects) + 1000
     search, report = _restarts(objects, cleaned, meshes, bounds, fixed, keep_yaw, seed, start, time_limit,
-                               node_limit)
+                               node_limit, room)
+    if room is not None:
+        search, report = _walkable(search, report, objects, cleaned, meshes, bounds, fixed, keep_yaw, seed,
+                                   start, time_limit, node_limit, room)
+        report.room = _room_report(search, report, objects, solved=True)
     # An unplaced object the search left at its nearest miss has a pose too.
     posed = {u.id for u in report.unplaced if search.placed[search.index[u.id]]}
     return _result(objects, cleaned, dropped, search, report, posed, start)
@@ -684,14 +794,18 @@ def audit(
     meshes: Mapping[str, trimesh.Trimesh] | None = None,
     bounds: tuple[float, float] | None = None,
     fixed: Iterable[str] = (),
+    room: Room | None = None,
 ) -> LayoutResult:
     """The layout as it stands, judged without moving anything: which objects violate their
-    constraints, collide or leave the bounds (the ablation's layout "without the solver")."""
+    constraints, collide, leave the bounds or the ``room`` (the ablation's layout "without
+    the solver")."""
     start = _cpu()
     objects, fixed = _checked(objects, fixed, bounds)
-    cleaned, dropped = clean_constraints(objects, constraints)
-    search = _Search(objects, cleaned, meshes, bounds, fixed, 0)
+    cleaned, dropped = clean_constraints(objects, constraints, room)
+    search = _Search(objects, cleaned, meshes, bounds, fixed, 0, room=room)
     report = _audit(search, objects, cleaned, meshes)
+    if room is not None:
+        report.room = _room_report(search, report, objects, solved=False)
     return _result(objects, cleaned, dropped, search, report, set(), start)
 
 
@@ -742,7 +856,8 @@ def _result(
     return LayoutResult(solved, cleaned, report, posed)
 
 
-def _restarts(objects, constraints, meshes, bounds, fixed, keep_yaw, seed, start, time_limit, node_limit):
+def _restarts(objects, constraints, meshes, bounds, fixed, keep_yaw, seed, start, time_limit, node_limit, room=None,
+              corridors=False):
     """Run the search up to :data:`RESTARTS` times until one places everything; keep the best.
 
     Every run but the last has a node budget of :data:`ATTEMPT_NODES` per object; the last
@@ -758,7 +873,7 @@ def _restarts(objects, constraints, meshes, bounds, fixed, keep_yaw, seed, start
     trouble: set[int] = set()
     for attempt in range(RESTARTS):
         search = _Search(objects, constraints, meshes, bounds, fixed, seed + attempt, spread=0.15 * attempt,
-                         keep_yaw=keep_yaw)
+                         keep_yaw=keep_yaw, room=room, corridors=corridors)
         budget = node_limit - used
         if attempt < RESTARTS - 1:
             budget = min(budget, ATTEMPT_NODES * len(objects) + 100)
@@ -828,6 +943,8 @@ def _dfs(
                 search.place_at(node, k)
                 count += 1
                 verdict = "ok" if limited else search.forward_check(i, node)
+                if verdict == "ok" and not limited and search.cuts_path(i, node):
+                    verdict = "walk"
                 search.take(i)
                 if verdict == "ok":
                     break
@@ -909,17 +1026,119 @@ def _audit(search: _Search, objects, constraints, meshes) -> LayoutReport:
     by_id = {o.id: o for o in objects}
     placed, unplaced = [], []
     for o in objects:
-        failed = [c for c in constraints if c.source == o.id and not rel.check(c.relation, o, by_id[c.target])]
+        failed = [c for c in constraints if c.source == o.id and c.relation not in ROOM_RELATIONS
+                  and not rel.check(c.relation, o, by_id[c.target])]
+        failed += [c for c, target in search.items[search.index[o.id]].walls
+                   if not rel.holds(c.relation, Boxes.of(o), target)]
         problems = []
         if failed:
             problems.append("initial pose violates " + "; ".join(f"'{c}'" for c in failed))
         if o.id in collisions:
             problems.append(f"initial pose collides with {', '.join(collisions[o.id])}")
         lo, hi = world_box(o)
-        if search.bounds is not None and not search.inside(Boxes(lo[None], hi[None], np.array([o.yaw])))[0]:
-            problems.append("initial pose leaves the bounds")
+        if search.area is not None and not search.inside(Boxes.of(o)[None])[0]:
+            problems.append("initial pose leaves the " + ("room" if search.room is not None else "bounds"))
         if problems:
             unplaced.append(UnplacedObject(id=o.id, failed=failed, reason="; ".join(problems)))
         else:
             placed.append(o.id)
     return LayoutReport(placed=placed, unplaced=unplaced, nodes=0, solver=False)
+
+
+#: Candidate poses tried per object the repair pass moves, and objects it may move.
+REPAIR_TRIES = 24
+REPAIR_OBJECTS = 4
+
+
+def _posed_objects(search: _Search) -> list[SceneObject]:
+    """The objects at their current poses in the search (those with one)."""
+    out = []
+    for i, o in enumerate(search.objects):
+        if search.posed[i]:
+            out.append(o.model_copy(update={"position": Vec3.of(search.pos[i]),
+                                            "rotation": Vec3(x=o.rotation.x, y=o.rotation.y, z=float(search.yaw[i]))}))
+    return out
+
+
+def _floor_ids(search: _Search) -> set[str]:
+    """Objects that stand on the floor: not the source of ``on``/``above``, not hung or mounted."""
+    up = {"on", "above", "on wall", "on ceiling"}
+    return {o.id for i, o in enumerate(search.objects)
+            if search.posed[i] and not any(c.relation in up for c, _ in search.items[i].own + search.items[i].walls)
+            and search.lo[i, 2] < 0.05}
+
+
+def _walkable(search, report, objects, constraints, meshes, bounds, fixed, keep_yaw, seed, start, time_limit,
+              node_limit, room):
+    """The layout with floor objects reachable from a door, as far as the search can make it.
+
+    First the repair pass over the layout found; when something is still out of reach, the
+    search runs again with each door's strip run on to the middle of the floor (a corridor no
+    floor object may block) and the repair pass again, if the first search left half its time;
+    the better layout wins: fewer objects unplaced or out of reach, the first on a tie."""
+    left = _make_walkable(search, report)
+    if not left or _cpu() - start > time_limit / 2:
+        return search, report  # all reached, or no time for a second search
+    log.info("layout: %d objects out of reach; solving again with corridors from the doors", left)
+    again, second = _restarts(objects, constraints, meshes, bounds, fixed, keep_yaw, seed, start, time_limit,
+                              node_limit, room, corridors=True)
+    second.nodes += report.nodes
+    if len(second.unplaced) + _make_walkable(again, second) < len(report.unplaced) + left:
+        return again, second
+    report.nodes = second.nodes
+    return search, report
+
+
+def _make_walkable(search: _Search, report: LayoutReport) -> int:
+    """The repair pass: move each floor object no one can walk to (latest placed first), to the
+    nearest pose that meets its constraints and lets the agent reach everything reached before.
+    Objects others stand on or against stay: moving them would drag their dependents along.
+    Returns how many floor objects stay out of reach."""
+    floor = _floor_ids(search)
+    stuck, _ = search.room.unreachable(_posed_objects(search), floor)
+    moved = 0
+    for oid in reversed(stuck):
+        i = search.index[oid]
+        if moved >= REPAIR_OBJECTS or i in search.fixed or not search.placed[i]:
+            continue
+        if any(search.posed[s] for s in search.dependents[i]) or search.followers[i]:
+            continue
+        old = search.pos[i].copy(), float(search.yaw[i])
+        search.take(i)
+        node = search.candidates(search.items[i], wide=True)
+        fixed = False
+        for _ in range(REPAIR_TRIES if not isinstance(node, _Failure) else 0):
+            k = search.next_free(node)
+            if k is None:
+                break
+            search.place_at(node, k)
+            now, _ = search.room.unreachable(_posed_objects(search), floor)
+            if len(now) < len(stuck) and oid not in now:
+                stuck, fixed = now, True
+                break
+            search.take(i)
+        if not fixed:
+            search.put(i, *old)
+        moved += 1
+    log.debug("walkability repair: %d still unreachable", len(stuck))
+    return len(stuck)
+
+
+def _room_report(search: _Search, report: LayoutReport, objects: Sequence[SceneObject], solved: bool) -> list[str]:
+    """What is wrong with the layout in its room (:func:`scenewright.layout.room.problems`), and
+    each room relation that does not hold."""
+    posed = _posed_objects(search) if solved else list(objects)
+    floor = _floor_ids(search) if solved else None
+    out = room_problems(search.room.room, posed, floor)
+    footprint = sum(4.0 * float(np.prod(search.items[i].foot)) for i in search.items if search.on_floor(i))
+    lacking = shortfall(search.room.room, footprint, [u.id for u in report.unplaced])
+    if lacking:
+        out.insert(0, lacking)
+    by_id = {o.id: o for o in posed}
+    for i, item in search.items.items():
+        o = by_id.get(item.obj.id)
+        for c, target in item.walls:
+            if o is not None and not rel.holds(c.relation, Boxes.of(o), target):
+                miss = float(rel.violations(c.relation, Boxes.of(o), target))
+                out.append(f"'{c}' does not hold: {rel.describe(c.relation, miss)}")
+    return out

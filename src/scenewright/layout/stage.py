@@ -9,14 +9,17 @@ rounds wins, so a revision that makes things worse costs nothing.
 from __future__ import annotations
 
 import logging
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping, Sequence
 
 import trimesh
 
 from scenewright.core.protocols import VisionLanguageModel
 from scenewright.folder import SceneFolder
 from scenewright.layout import LayoutResult, solve
-from scenewright.scene import Scene
+from scenewright.scene import ROOM_RELATIONS, Constraint, Scene, SceneObject
+
+#: Adds the placement priors of a room to the constraints (objects, constraints) -> constraints.
+Furnish = Callable[[Sequence[SceneObject], Sequence[Constraint]], list[Constraint]]
 
 log = logging.getLogger(__name__)
 
@@ -40,6 +43,7 @@ def _record_round(scene: Scene, number: int, result: LayoutResult) -> None:
         unplaced=unplaced,
         nodes=report.nodes,
         seconds=round(report.seconds, 3),
+        **({"room": list(report.room)} if report.room else {}),
     )
 
 
@@ -51,16 +55,26 @@ def arrange(
     *,
     rounds: int = 3,
     time_limit: float = 10.0,
+    furnish: Furnish | None = None,
 ) -> Scene:
     """Solve the layout of ``scene``'s objects, revising constraints up to ``rounds`` times
-    (the caller saves the document)."""
+    (the caller saves the document).
+
+    In a room, ``furnish`` adds its placement priors to freshly written constraints; without
+    one, relations to a room are dropped (and recorded), since there are no walls to meet."""
     reference = folder.reference()
     constraints = list(scene.constraints)
     if not constraints:
-        answer = vlm.write_constraints(scene.text, scene.objects, reference)
+        answer = vlm.write_constraints(scene.text, scene.objects, reference, scene.room)
         scene.provenance += answer.repairs  # what the model's answer needed repaired
         constraints = answer.value
         scene.record(STAGE, f"wrote {len(constraints)} constraints", backend=vlm.name)
+        if scene.room is not None and furnish is not None:
+            constraints = furnish(scene.objects, constraints)
+    if scene.room is None and any(c.relation in ROOM_RELATIONS for c in constraints):
+        dropped = [str(c) for c in constraints if c.relation in ROOM_RELATIONS]
+        constraints = [c for c in constraints if c.relation not in ROOM_RELATIONS]
+        scene.record(STAGE, f"dropped {len(dropped)} relations to a room: the scene has none", dropped=dropped)
     scene.remember_initial_poses()  # the model's proposal, before any solve moves it (the ablation's layout)
     best: LayoutResult | None = None
     for number in range(rounds + 1):
@@ -71,6 +85,7 @@ def arrange(
             bounds=scene.bounds,
             time_limit=time_limit,
             seed=scene.seed,
+            room=scene.room,
         )
         _record_round(scene, number, result)
         if best is None or _score(result) > _score(best):
@@ -78,7 +93,9 @@ def arrange(
         if result.report.complete or number == rounds:
             break
         log.info("round %d left %d unplaced; asking for new constraints", number, len(result.report.unplaced))
-        answer = vlm.revise_constraints(scene.text, scene.objects, result.constraints, result.report, reference)
+        answer = vlm.revise_constraints(
+            scene.text, scene.objects, result.constraints, result.report, reference, scene.room
+        )
         scene.provenance += answer.repairs
         constraints = answer.value
     assert best is not None

@@ -1,0 +1,310 @@
+"""The room of an indoor scene, read from its text: size, height, doors and windows (docs/rooms.md).
+
+``read_room`` reads what the text says ("a 4 by 5 m bedroom", "a 4x5 metre room", "a small
+bathroom", "a large open-plan kitchen", "high ceilings", "a window on the left wall", "two
+doors"); ``build_room`` makes the :class:`~scenewright.scene.Room` from it and the objects:
+the stated size when there is one, else the floor the objects need with walking space (never
+smaller than the place's usual size, scaled by "small"/"large"); at least one door; windows
+where the text puts them, else one on the back wall. ``wall_phrases`` turns "against the back
+wall", "in the corner", "a mirror on the left wall" into room relations.
+
+Decisions where nothing is said:
+
+- Rooms built here are rectangles centred at the origin, walls listed front (−y, the viewer's
+  side), right, back, left: so "the back wall" is ``wall_2`` (:data:`RECTANGLE_WALLS`).
+- The floor objects may cover at most :data:`COVERAGE` of the floor; each side is at least the
+  longest object plus a walking lane on either side (:data:`LANE`).
+- The default door is on the left wall near the front corner (the renders look from the front,
+  so a door there stays visible); the default window is centred on the back wall.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from typing import Sequence
+
+from scenewright.core.catalogue import load_catalogue
+from scenewright.analysis.parser.model import ParsedRelation, ParsedScene
+from scenewright.errors import InputError
+from scenewright.layout.room import COVERAGE
+from scenewright.layout.room import FLOOR as FLAT
+from scenewright.scene import MAX_ROOM_HEIGHT, MIN_ROOM_HEIGHT, MIN_WALL, Opening, Room, SceneObject
+
+#: Walls of a room made by :meth:`Room.rectangle`, by the side of the room they stand on.
+RECTANGLE_WALLS = {"front": 0, "right": 1, "back": 2, "left": 3}
+_SIDE_WORDS = {"back": "back", "rear": "back", "far": "back", "left": "left", "right": "right", "front": "front",
+               "near": "front", "side": None}
+#: Usual floor (width, depth) in metres of the places people describe.
+PLACE_SIZES: dict[str, tuple[float, float]] = {
+    "bedroom": (3.6, 4.0), "bathroom": (2.4, 2.8), "kitchen": (3.6, 4.0), "office": (3.6, 4.0),
+    "living room": (4.5, 5.0), "lounge": (4.5, 5.0), "dining room": (4.0, 4.5), "library": (6.0, 7.0),
+    "classroom": (7.0, 8.0), "shop": (6.0, 7.0), "store": (6.0, 7.0), "bookstore": (6.0, 7.0),
+    "boutique": (5.0, 6.0), "cafe": (6.0, 7.0), "café": (6.0, 7.0), "restaurant": (8.0, 9.0), "bar": (6.0, 7.0),
+    "studio": (5.0, 6.0), "lab": (7.0, 8.0), "laboratory": (7.0, 8.0), "gym": (7.0, 8.0), "nursery": (3.5, 4.0),
+    "study": (3.5, 4.0), "den": (4.0, 4.5), "attic": (4.5, 5.0), "basement": (5.0, 6.0), "garage": (5.5, 6.0),
+    "workshop": (5.5, 6.5), "hallway": (2.0, 5.0), "corridor": (2.0, 6.0), "salon": (5.0, 6.0),
+    "bakery": (5.0, 6.0), "clinic": (4.0, 5.0), "room": (4.0, 4.5), "apartment": (5.0, 6.0),
+    "gallery": (7.0, 8.0), "chamber": (5.0, 6.0), "hall": (9.0, 10.0), "pantry": (2.0, 2.5),
+    "laundry room": (2.5, 3.0), "playroom": (4.0, 4.5), "kids room": (3.5, 4.0), "games room": (5.0, 5.5),
+    "conference room": (5.0, 7.0), "meeting room": (4.5, 6.0), "waiting room": (4.5, 5.5),
+}  # fmt: skip
+_SMALL = ("small", "tiny", "cosy", "cozy", "compact", "little", "cramped", "narrow")
+_LARGE = ("large", "big", "spacious", "huge", "grand", "vast", "open-plan", "open plan", "airy", "wide")
+SMALL_SCALE, LARGE_SCALE = 0.8, 1.3
+#: m, a walking lane beside the longest object.
+LANE = 0.9
+#: How much larger than the floor the objects need a room may grow to keep a lane round their groups.
+GROWTH = 1.35
+DEFAULT_HEIGHT = 2.7
+DOOR = (0.9, 2.1)  # width, height
+WINDOW = (1.2, 1.2, 0.9)  # width, height, sill
+_NUMBERS = {"a": 1, "an": 1, "one": 1, "single": 1, "two": 2, "twin": 2, "pair": 2, "three": 3, "four": 4,
+            "several": 3, "some": 2, "many": 4, "few": 2}
+_LENGTH = r"(\d+(?:\.\d+)?)\s*(m\b|metres?|meters?|ft\b|feet|foot)?"
+_SIZE = re.compile(_LENGTH + r"\s*(?:by|x|×|\*)\s*" + _LENGTH + r"(?:\s*(?:by|x|×|\*)\s*" + _LENGTH + r")?")
+_PLACES = sorted(PLACE_SIZES, key=len, reverse=True)
+_PLACE = re.compile(r"\b(" + "|".join(re.escape(p) for p in _PLACES) + r")s?\b")
+
+
+@dataclass(frozen=True)
+class RoomRequest:
+    """What a text says about its room; ``None`` fields say nothing."""
+
+    place: str | None = None
+    size: tuple[float, float] | None = None
+    height: float | None = None
+    scale: float = 1.0
+    #: Openings asked for: (kind, side or None, count).
+    openings: tuple[tuple[str, str | None, int], ...] = field(default_factory=tuple)
+
+
+def _metres(value: str, unit: str | None) -> float:
+    v = float(value)
+    return v * 0.3048 if unit and unit.startswith(("ft", "f")) else v
+
+
+def read_room(text: str) -> RoomRequest:
+    """What ``text`` says about its room (any text: whether it is indoor is the parse's call)."""
+    low = " ".join(text.lower().split())
+    place_match = _PLACE.search(low)
+    place = place_match.group(1) if place_match else None
+    size = height = None
+    for m in _SIZE.finditer(low):
+        after, before = low[m.end() : m.end() + 30], low[max(0, m.start() - 30) : m.start()]
+        # A size of the room: followed by a place word ("a 4 by 5 m bedroom") or after "room"
+        # ("a room of 4 x 5 metres", "the kitchen measures 3 by 4 m"), never an object's size.
+        if _PLACE.match(after.strip()) or re.search(r"\b(" + "|".join(map(re.escape, _PLACES)) + r")s?\b[^.,;]*$", before):
+            w, d = _metres(m.group(1), m.group(2) or m.group(4)), _metres(m.group(3), m.group(4) or m.group(2))
+            size = (w, d)
+            if m.group(5):
+                height = _metres(m.group(5), m.group(6) or m.group(4))
+            break
+    m = re.search(r"(\d+(?:\.\d+)?)\s*(m\b|metres?|meters?|ft\b|feet)[ -](?:high |tall )?ceilings?|ceilings?[^.,;]{0,20}?"
+                  r"(\d+(?:\.\d+)?)\s*(m\b|metres?|meters?|ft\b|feet)", low)
+    if height is None and m:
+        height = _metres(m.group(1) or m.group(3), m.group(2) or m.group(4))
+    elif height is None and re.search(r"\b(high|tall|lofty|vaulted|double-height)\s+ceilings?", low):
+        height = 3.4
+    elif height is None and re.search(r"\blow\s+ceilings?", low):
+        height = 2.4
+    scale = 1.0
+    if place_match:
+        lead = low[max(0, place_match.start() - 40) : place_match.start()]
+        lead = re.split(r"[.,;]", lead)[-1]
+        if any(re.search(rf"\b{re.escape(w)}\b", lead) for w in _LARGE):
+            scale = LARGE_SCALE
+        elif any(re.search(rf"\b{re.escape(w)}\b", lead) for w in _SMALL):
+            scale = SMALL_SCALE
+    return RoomRequest(place=place, size=size, height=height, scale=scale, openings=tuple(_openings(low)))
+
+
+def _openings(low: str) -> list[tuple[str, str | None, int]]:
+    """Doors and windows the text names, with the wall it puts them on and how many."""
+    out: list[tuple[str, str | None, int]] = []
+    pattern = re.compile(r"(?:\b([\w-]+)\s+)?(?:\b([\w-]+)\s+)?\b(windows?|doors?|doorways?|french doors)\b"
+                         r"((?:(?!\band\b|\bwith\b|,)[^.;]){0,40})")
+    for m in pattern.finditer(low):
+        words, noun, rest = (m.group(1), m.group(2)), m.group(3), m.group(4)
+        kind = "window" if noun.startswith("window") else "door"
+        if any(w in ("the", "its", "that", "this", "each", "every") for w in words) and any(k == kind for k, _, _ in out):
+            continue  # a reference to one already named
+        counted = [_NUMBERS[w] for w in words if w in _NUMBERS]
+        count = counted[-1] if counted else (2 if noun.endswith("s") and noun != "french doors" else 1)
+        side_m = re.search(r"\b(back|rear|far|left|right|front)(?:\s+|-)(?:hand\s+)?(?:side\s+)?wall\b|\bon the (left|right)\b", rest)
+        side = _SIDE_WORDS.get((side_m.group(1) or side_m.group(2))) if side_m else None
+        out.append((kind, side, min(count, 4)))
+    return out
+
+
+_ROOM_OPTION = re.compile(r"^\s*(\d+(?:\.\d+)?)\s*[x×]\s*(\d+(?:\.\d+)?)(?:\s*[x×]\s*(\d+(?:\.\d+)?))?\s*$")
+
+
+def parse_room_option(value: str | None) -> str | tuple[float, float, float | None]:
+    """``--room``'s value: ``"auto"``, ``"none"``, or (width, depth, height or None) in metres.
+
+    Raises InputError naming the value for anything else, or a room that cannot be one."""
+    if value is None:
+        return "auto"
+    v = value.strip().lower()
+    if v in ("auto", "none"):
+        return v
+    m = _ROOM_OPTION.match(v)
+    if not m:
+        raise InputError(f"--room {value!r}: give auto, none, or the floor as WxD or WxDxH in metres (e.g. 4x5 or 4x5x2.7)")
+    w, d = float(m.group(1)), float(m.group(2))
+    h = float(m.group(3)) if m.group(3) else None
+    if min(w, d) < MIN_WALL or max(w, d) > 200:
+        raise InputError(f"--room {value!r}: each side of the floor must be from {MIN_WALL:g} to 200 m")
+    if h is not None and not MIN_ROOM_HEIGHT <= h <= MAX_ROOM_HEIGHT:
+        raise InputError(f"--room {value!r}: the height must be from {MIN_ROOM_HEIGHT:g} to {MAX_ROOM_HEIGHT:g} m")
+    return (w, d, h)
+
+
+def floor_area(objects: Sequence[SceneObject]) -> tuple[float, float]:
+    """The footprint area of the objects that stand on the floor, and the longest side of one."""
+    catalogue = load_catalogue()
+    area, longest = 0.0, 0.0
+    for o in objects:
+        entry = catalogue.get(o.category) if o.category else None
+        if (entry is not None and entry.rests != "ground") or o.size.z <= FLAT:
+            continue  # hung, standing on something, or walked over (a rug)
+        area += o.size.x * o.size.y
+        longest = max(longest, o.size.x, o.size.y)
+    return area, longest
+
+
+def build_room(request: RoomRequest, objects: Sequence[SceneObject], size: tuple[float, float, float | None] | None = None) -> Room:
+    """The room for ``objects``: ``size`` (from ``--room``) or the stated one, else sized around
+    the objects' floor (see the module docstring), with the requested doors and windows."""
+    height = (size[2] if size else None) or request.height or DEFAULT_HEIGHT
+    height = min(max(height, MIN_ROOM_HEIGHT), MAX_ROOM_HEIGHT)
+    if size is not None:
+        width, depth = size[0], size[1]
+    elif request.size is not None:
+        width, depth = request.size
+    else:
+        area, longest = floor_area(objects)
+        need = max(area / COVERAGE, 6.0)
+        width = max(math.sqrt(need * 1.2), longest + 2 * LANE)
+        depth = max(need / width, longest + 2 * LANE, 2.4)
+        if request.place in PLACE_SIZES:
+            usual_w, usual_d = PLACE_SIZES[request.place]
+            width, depth = max(width, usual_w * request.scale), max(depth, usual_d * request.scale)
+        # Room to walk around the composed groups (a table with its chairs), up to a limit: the
+        # first poses are spread for open ground, and a room that follows them all is a hall.
+        (x0, y0), (x1, y1) = _extent(objects)
+        width = min(max(width, x1 - x0 + 2 * LANE), GROWTH * width)
+        depth = min(max(depth, y1 - y0 + 2 * LANE), GROWTH * depth)
+        width, depth = math.ceil(width * 10) / 10, math.ceil(depth * 10) / 10
+    room = Room.rectangle(width, depth, height)
+    return Room.model_validate({**room.model_dump(), "openings": place_openings(room, request.openings)})
+
+
+def _extent(objects: Sequence[SceneObject]) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The plan rectangle, centred at the origin, that holds the objects' first poses: a room
+    around the composed groups (a table with its chairs) keeps a lane around them."""
+    reach = [(abs(o.position.x) + max(o.size.x, o.size.y) / 2, abs(o.position.y) + max(o.size.x, o.size.y) / 2)
+             for o in objects]
+    if not reach:
+        return (0.0, 0.0), (0.0, 0.0)
+    hx, hy = max(r[0] for r in reach), max(r[1] for r in reach)
+    return (-hx, -hy), (hx, hy)
+
+
+def place_openings(room: Room, wanted: Sequence[tuple[str, str | None, int]]) -> list[Opening]:
+    """Doors and windows on the walls ``wanted`` names (else the defaults), spread along each
+    wall so none overlaps another; a wall too short for what it is given gets fewer."""
+    doors = [(side, n) for kind, side, n in wanted if kind == "door"] or [("left", 1)]
+    windows = [(side, n) for kind, side, n in wanted if kind == "window"] or [("back", 1)]
+    per_wall: dict[int, list[str]] = {}
+    for kind, asked in (("door", doors), ("window", windows)):
+        for side, n in asked:
+            wall = RECTANGLE_WALLS[side or ("left" if kind == "door" else "back")]
+            per_wall.setdefault(wall, []).extend([kind] * n)
+    out: list[Opening] = []
+    for wall, kinds in sorted(per_wall.items()):
+        length = room.wall_length(wall)
+        kinds = sorted(kinds, key=lambda k: k != "door")  # doors first: nearest the wall's start
+        widths = [DOOR[0] if k == "door" else min(WINDOW[0], length / 3) for k in kinds]
+        while kinds and sum(widths) + 0.3 * (len(kinds) + 1) > length:
+            kinds, widths = kinds[:-1], widths[:-1]
+        if not kinds:
+            continue
+        gap = (length - sum(widths)) / (len(kinds) + 1)
+        at = gap
+        if kinds == ["door"] and wall == RECTANGLE_WALLS["left"]:
+            at = length - 0.3 - widths[0]  # a lone door near the front corner (the left wall runs back to front)
+        for kind, width in zip(kinds, widths):
+            if kind == "door":
+                out.append(Opening(kind="door", wall=wall, offset=at + width / 2, width=width,
+                                   height=min(DOOR[1], room.height - 0.2)))
+            else:
+                sill = WINDOW[2]
+                out.append(Opening(kind="window", wall=wall, offset=at + width / 2, width=width,
+                                   height=max(0.3, min(WINDOW[1], room.height - sill - 0.3)), sill=sill))
+            at += width + gap
+    return out
+
+
+#: Categories hung on a wall, and hung from the ceiling, when the scene has a room.
+WALL_THINGS = frozenset({"picture_frame", "mirror", "wall_clock", "projector_screen"})
+CEILING_THINGS = frozenset({"ceiling_fan", "pendant_lamp"})
+_WALL_PHRASE = re.compile(r"\b(?:against|along|on|by|to|in|at|onto|from)\s+(?:the\s+|a\s+|one\s+)?(?:(back|rear|far|left|right|front)(?:[- ]hand)?\s+)?(wall|corner)s?\b")
+
+
+def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
+    """Room relations the text states: "against the (back) wall" → ``against wall``, "in the
+    corner" → ``in corner``, a wall thing "on the left wall" → ``on wall``. The side picks the
+    wall (:data:`RECTANGLE_WALLS`); no side means any wall (``room``). A thing is matched to the
+    phrase in its own sentence, after its name."""
+    low = " ".join(parsed.text.lower().split())
+    sentences = [(m.start(), m.end()) for m in re.finditer(r"[^.;!?]+", low)]
+    out = []
+    for o in parsed.objects:
+        name = o.name.lower().split()[-1] if o.name else o.category.replace("_", " ")
+        for s, e in sentences:
+            sentence = low[s:e]
+            found = re.search(rf"\b{re.escape(name)}s?\b", sentence)
+            if found is None:
+                continue
+            at = found.end()
+            phrase = _WALL_PHRASE.search(sentence, at)
+            if phrase is None or (o.anchor is None and o.category not in WALL_THINGS):
+                break
+            side, what = phrase.group(1), phrase.group(2)
+            target = f"wall_{RECTANGLE_WALLS[_SIDE_WORDS[side]]}" if side and _SIDE_WORDS.get(side) else "room"
+            if what == "corner":
+                relation = "in corner"
+            else:
+                relation = "on wall" if o.category in WALL_THINGS else "against wall"
+            out.append(ParsedRelation(source=o.id, relation=relation, target=target))
+            break
+    return out
+
+
+def room_for(
+    text: str,
+    objects: Sequence[SceneObject],
+    option: str | tuple[float, float, float | None] = "auto",
+    proposal: Room | None = None,
+    proposed: bool = False,
+) -> Room | None:
+    """The scene's room under ``--room`` ``option`` (:func:`parse_room_option`).
+
+    ``none``: no room. A size: that floor, with the doors and windows the text names. ``auto``:
+    the room a remote model proposed (``proposed``; its ``proposal`` may be None for an open
+    scene), else, when the parse reads the text as indoor, one built from the text around the
+    objects; an open-domain text stands on the ground plane.
+    """
+    from scenewright.analysis.parser import parse_scene  # the package imports this module
+
+    if option == "none":
+        return None
+    request = read_room(text)
+    if isinstance(option, tuple):
+        return build_room(request, objects, option)
+    if proposed:
+        return proposal
+    return build_room(request, objects) if parse_scene(text).indoor else None

@@ -1,0 +1,114 @@
+"""Reading the room from the text (analysis/parser/room.py): size, height, openings, sides,
+the --room option, rooms sized around their objects, room relations from wall phrases."""
+
+from __future__ import annotations
+
+import pytest
+
+from scenewright.analysis.parser import parse_scene
+from scenewright.analysis.parser.room import (
+    COVERAGE,
+    RECTANGLE_WALLS,
+    build_room,
+    floor_area,
+    parse_room_option,
+    place_openings,
+    read_room,
+    room_for,
+    wall_phrases,
+)
+from scenewright.errors import InputError
+from scenewright.layout.room import RoomShape
+from scenewright.scene import Room, SceneObject, Vec3
+
+
+@pytest.mark.parametrize(
+    "text, size, height",
+    [
+        ("a 4 by 5 m bedroom with a bed", (4.0, 5.0), None),
+        ("A 4x5 metre room with a desk", (4.0, 5.0), None),
+        ("the kitchen measures 3 by 4 m", (3.0, 4.0), None),
+        ("a living room 5 x 6 m with high ceilings", (5.0, 6.0), 3.4),
+        ("a 12 by 15 feet office", (12 * 0.3048, 15 * 0.3048), None),
+        ("a 2 by 1 m rug in a bedroom", None, None),  # the rug's size, not the room's
+        ("a room with a 3 m ceiling and a sofa", None, 3.0),
+    ],
+)
+def test_read_room_reads_the_stated_size_and_height(text, size, height):
+    got = read_room(text)
+    assert got.size == (pytest.approx(size) if size else None)
+    assert got.height == height
+
+
+def test_size_words_scale_the_place_and_only_the_place():
+    assert read_room("a small bathroom with a tub").scale < 1 < read_room("a large open-plan kitchen").scale
+    assert read_room("a kitchen with a small table").scale == 1.0
+
+
+def test_openings_with_their_walls_and_counts():
+    got = read_room("a large open-plan kitchen with two windows on the back wall and a door on the right wall")
+    assert got.openings == (("window", "back", 2), ("door", "right", 1))
+    # "the door" refers to the door already named; a plural with no count is two
+    assert read_room("a study with a door and a desk next to the door").openings == (("door", None, 1),)
+    assert read_room("a bedroom with large windows").openings == (("window", None, 2),)
+
+
+@pytest.mark.parametrize("value", ["0x5", "5x0", "4 by 5", "big", "4x5x30", "-4x5", "4x5x1"])
+def test_bad_room_options_name_the_value(value):
+    with pytest.raises(InputError, match=f"--room {value!r}"):
+        parse_room_option(value)
+
+
+def test_room_options():
+    assert parse_room_option(None) == "auto" and parse_room_option(" NONE ") == "none"
+    assert parse_room_option("4x5") == (4.0, 5.0, None)
+    assert parse_room_option("4.5×6x3") == (4.5, 6.0, 3.0)
+
+
+def _objects(*sizes):
+    return [SceneObject(id=f"o{k}", name="crate", category="crate", size=Vec3(x=x, y=y, z=z))
+            for k, (x, y, z) in enumerate(sizes)]
+
+
+def test_a_room_sized_around_its_objects_leaves_walking_space():
+    objects = _objects(*[(1.2, 0.8, 0.9)] * 8)
+    room = build_room(read_room("a storeroom full of crates"), objects)
+    area = RoomShape(room).area
+    need, longest = floor_area(objects)
+    assert need / area <= COVERAGE + 1e-9
+    assert min(room.wall_length(0), room.wall_length(1)) >= longest + 1.8
+    assert [o.kind for o in room.openings].count("door") >= 1
+
+
+def test_rugs_and_hung_things_take_no_floor():
+    rug = SceneObject(id="rug", name="rug", category="rug", size=Vec3(x=3, y=2, z=0.02))
+    mirror = SceneObject(id="m", name="mirror", category="mirror", size=Vec3(x=0.6, y=0.04, z=0.9))
+    assert floor_area([rug, mirror]) == (0.0, 0.0)
+
+
+def test_openings_default_to_a_door_and_a_back_window_and_never_overlap():
+    room = Room.rectangle(4, 5)
+    openings = place_openings(room, [])
+    assert {(o.kind, o.wall) for o in openings} == {("door", RECTANGLE_WALLS["left"]), ("window", RECTANGLE_WALLS["back"])}
+    crowded = place_openings(room, [("window", "back", 4), ("door", "back", 1)])
+    spans = sorted((o.offset - o.width / 2, o.offset + o.width / 2) for o in crowded if o.wall == 2)
+    assert all(a[1] <= b[0] for a, b in zip(spans, spans[1:]))
+    assert all(0 <= lo and hi <= room.wall_length(2) for lo, hi in spans)
+
+
+def test_room_for_follows_the_option_and_the_text():
+    objects = _objects((1, 1, 1))
+    assert room_for("a bedroom with a bed", objects, "none") is None
+    assert room_for("a park with a bench", objects, "auto") is None
+    assert room_for("a bedroom with a bed", objects, "auto") is not None
+    fixed = room_for("a park with a bench", objects, (3.0, 4.0, None))
+    assert (fixed.wall_length(0), fixed.wall_length(1), fixed.height) == (3.0, 4.0, 2.7)
+    assert room_for("a bedroom", objects, "auto", proposal=None, proposed=True) is None
+
+
+def test_wall_phrases_become_room_relations_with_their_wall():
+    parsed = parse_scene("A cosy bedroom. A bed stands against the back wall with a nightstand beside it. "
+                         "A wardrobe is in the corner. A painting hangs on the left wall.")
+    got = {(r.source, r.relation, r.target) for r in wall_phrases(parsed)}
+    assert got == {("bed_1", "against wall", "wall_2"), ("wardrobe_1", "in corner", "room"),
+                   ("picture_frame_1", "on wall", "wall_3")}

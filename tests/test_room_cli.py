@@ -1,0 +1,108 @@
+"""Rooms end to end through the CLI: ``generate --room``, the shipped indoor prompts in their
+rooms (read back from scene.json), a room too small, and editing the room (issue: rooms)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from scenewright.cli import main
+from scenewright.evaluation.room import room_metrics
+from scenewright.layout.relations import check_room
+from scenewright.scene import ROOM_RELATIONS, Scene
+
+PROMPTS = Path(__file__).resolve().parent.parent / "benchmarks" / "prompts"
+INDOOR = sorted(p for p in PROMPTS.glob("*.json") if json.loads(p.read_text())["domain"] == "indoor")
+BEDROOM = ("A cosy bedroom. A bed stands against the back wall with a nightstand beside it. "
+           "A wardrobe is in the corner. A painting hangs on the left wall. A ceiling fan.")
+
+
+def _scene(out: Path) -> Scene:
+    return Scene.from_json((out / "scene.json").read_text(encoding="utf-8"))
+
+
+def _assert_sits_in_its_room(scene: Scene) -> None:
+    assert scene.room is not None
+    metrics = room_metrics(scene)
+    assert metrics.outside == [] and metrics.blocked_openings == [] and metrics.stuck_doors == []
+    assert metrics.unreachable == []
+    assert metrics.not_on_wall == [] and metrics.not_on_ceiling == []
+    for c in scene.constraints:
+        if c.relation in ROOM_RELATIONS:
+            assert check_room(c.relation, scene.get(c.source), scene.room, c.target), str(c)
+
+
+@pytest.mark.parametrize("value", ["0x5", "4x", "tiny"])
+def test_a_bad_room_is_refused_naming_it(tmp_path, capsys, value):
+    out = tmp_path / "scene"
+    assert main(["generate", BEDROOM, "--out", str(out), "--no-render", "--room", value]) == 2
+    assert f"--room {value!r}" in capsys.readouterr().err.replace("\n", " ")
+    assert not out.exists()
+
+
+def test_the_room_option_decides(tmp_path):
+    park = "A park with a bench under a tree and a lamp post."
+    assert main(["generate", park, "--out", str(tmp_path / "park"), "--no-render"]) == 0
+    assert _scene(tmp_path / "park").room is None
+    assert main(["generate", BEDROOM, "--out", str(tmp_path / "none"), "--no-render", "--room", "none"]) == 0
+    bare = _scene(tmp_path / "none")
+    assert bare.room is None and not any(c.relation in ROOM_RELATIONS for c in bare.constraints)
+    assert main(["generate", park, "--out", str(tmp_path / "walled"), "--no-render", "--room", "9x8x3"]) == 0
+    walled = _scene(tmp_path / "walled")
+    assert (walled.room.wall_length(0), walled.room.wall_length(1), walled.room.height) == (9.0, 8.0, 3.0)
+
+
+def test_a_bedroom_gets_its_room_its_walls_and_its_ceiling(tmp_path):
+    out = tmp_path / "bedroom"
+    assert main(["generate", BEDROOM, "--out", str(out), "--no-render"]) == 0
+    scene = _scene(out)
+    _assert_sits_in_its_room(scene)
+    said = {str(c) for c in scene.constraints}
+    assert {"picture_frame_1 on wall wall_3", "ceiling_fan_1 on ceiling ceiling", "wardrobe_1 in corner room"} <= said
+
+
+def test_a_room_too_small_exits_3_with_the_scene_and_what_does_not_fit(tmp_path, capsys):
+    out = tmp_path / "cramped"
+    text = "A bedroom with a double bed, a wardrobe, a desk, a dresser, a sofa and a bookshelf."
+    assert main(["generate", text, "--out", str(out), "--no-render", "--room", "2.5x2.5"]) == 3
+    err = capsys.readouterr().err.replace("\n", " ")
+    assert "do not fit: the floor objects cover" in err and "m² more floor" in err
+    scene = _scene(out)
+    assert scene.layout.unplaced and "export" in scene.done  # the partial scene is written
+
+
+def test_editing_the_room_and_undoing_it(tmp_path):
+    out = tmp_path / "bedroom"
+    assert main(["generate", BEDROOM, "--out", str(out), "--no-render"]) == 0
+    before = _scene(out)
+    assert main(["edit", str(out), "make the room 5 by 6 metres"]) == 0
+    resized = _scene(out)
+    assert (resized.room.wall_length(0), resized.room.wall_length(1)) == (5.0, 6.0)
+    _assert_sits_in_its_room(resized)
+    assert main(["edit", str(out), "add a window on the right wall"]) == 0
+    windows = [o for o in _scene(out).room.openings if o.kind == "window"]
+    assert any(o.wall == 1 for o in windows) and len(windows) == len([o for o in resized.room.openings if o.kind == "window"]) + 1
+    assert main(["edit", str(out), "move the nightstand against the left wall"]) == 0
+    moved = _scene(out)
+    assert check_room("against wall", moved.get("nightstand_1"), moved.room, "wall_3")
+    for _ in range(3):
+        assert main(["undo", str(out)]) == 0
+    assert _scene(out).room == before.room
+
+
+def test_room_edits_on_an_open_scene_are_refused(tmp_path, capsys):
+    out = tmp_path / "park"
+    assert main(["generate", "A park with a bench and a tree.", "--out", str(out), "--no-render"]) == 0
+    assert main(["edit", str(out), "move the bench against the back wall"]) == 2
+    assert "has no room" in capsys.readouterr().err.replace("\n", " ")
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("prompt", INDOOR, ids=lambda p: p.stem)
+def test_every_shipped_indoor_prompt_sits_in_its_room(tmp_path, prompt):
+    text = json.loads(prompt.read_text(encoding="utf-8"))["text"]
+    out = tmp_path / prompt.stem
+    assert main(["generate", text, "--out", str(out), "--no-render"]) == 0
+    _assert_sits_in_its_room(_scene(out))
