@@ -144,7 +144,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         # one is the subject of a verb that looks like a noun ("pylons guard the altar")
         if nxt and nxt[0] == e and singular(words[-1]) == words[-1]:
             last = toks[nxt[1] - 1].text
-            if nxt[3] is not None and singular(last) != last:  # "a knight guards the gate": a verb
+            if singular(last) != last and _plural_is_verb(toks, s, nxt):  # "a knight guards the gate": a verb
                 raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])
                 nxt = None
         if nxt and nxt[0] == e and singular(words[-1]) == words[-1]:
@@ -179,6 +179,24 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         mention.guess, mention.modifier = entry, kind
         mentions.append(mention)
     return _alias_mentions(toks, mentions), places
+
+
+#: Words that open an object after a verb: "an astronaut plants a flag", "a knight guards the gate".
+_OBJECT_OPENERS = {"a", "an", "the", "his", "her", "its", "their", "it", "them", "some", "two", "three", "four"}
+
+
+def _plural_is_verb(toks: list[_Tok], s: int, nxt: tuple) -> bool:
+    """Whether the plural noun-like word right after the singular noun at ``s`` is its verb
+    ("an astronaut plants a flag") rather than the head of a compound ("two habitat domes
+    stand", "three fuel tanks"): an object follows it, or (for the open vocabulary) nothing
+    says it is a noun — a plural count before, or a verb after."""
+    end = nxt[1]
+    follow = toks[end].text if end < len(toks) else ""
+    if follow in _OBJECT_OPENERS or follow in _NUMBERS:
+        return True
+    if _counted_plural(toks, s) or _is_verb(follow) or follow in _FINITE:
+        return False
+    return nxt[3] is not None
 
 
 #: Vocabulary words that only restate what the catalogue noun before them is ("a menu board").
@@ -217,7 +235,9 @@ _INSIDE = {"in", "inside", "within", "into", "throughout"}
 def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     """A place word used as the setting: "inside a hangar", "a hangar with a spaceship" (when the
     with-part names things), not "a barn stands behind the pond"."""
-    if singular(toks[e - 1].text) not in load_vocabulary().places:
+    places = load_vocabulary().places
+    head = singular(toks[e - 1].text)
+    if head not in places and not (e >= 2 and f"{toks[e - 2].text} {head}" in places):
         return False
     j = s - 1
     while j >= 0 and s - j <= 4 and (toks[j].text in _DETERMINERS or (toks[j].text not in _STOP and toks[j].text[:1].isalpha())):

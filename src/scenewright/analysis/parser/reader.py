@@ -78,6 +78,14 @@ _KIND_RELATION = {"left": "left of", "right": "right of", "flank elliptic": "fla
 #: Seat shapes: what is "at" a desk or a table faces it from the front.
 _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
 
+#: After these, a phrase right after the target places the target: "a lamp on a table left of the
+#: sofa", "astronauts beside a lab bench to the right of the console", "sniffs at a cooler near the truck".
+_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at")
+#: Pronouns that name a person or an animal.
+_PERSONAL = ("him", "her", "himself", "herself")
+#: Categories and shapes of living things ("him", "her" name one of them).
+_LIVING = frozenset({"figure", "animal", "bird", "robot"})
+
 #: No phrase makes more objects than this ("a million chairs"): the object limit then refuses the text.
 MAX_COUNT = 10_000
 
@@ -358,7 +366,9 @@ class _Reader:
                 g = self._resolve(m, self.size_of.get(m.start, []))
                 return ([g] if g >= 0 else None), m.end
             w = toks[j].text
-            if w in ("it", "them", "itself", "themselves", "him", "her"):
+            if w in ("it", "them", "itself", "themselves", "him", "her", "himself", "herself") and not (
+                w == "her" and j + 1 in self.by_start
+            ):  # "beside her dog": a possessive, the dog is the target
                 return w, j + 1
             if w in ("each", "one") and j + 1 < ce and toks[j + 1].text in ("other", "another"):
                 return "each other", j + 2
@@ -397,6 +407,12 @@ class _Reader:
         k = cs
         while k < ce and toks[k].text in ("and", "or", "but", "then", "also", "so", "there", "is", "are"):
             k += 1
+        if k + 1 < ce and toks[k].text == "one" and k + 1 in self.rel_at and self.rel_at[k + 1].kind.startswith("flank"):
+            # "two speakers on the desk, one on each side of the console": the speakers flank it
+            plural = [g for g in [*self.history, *c.groups] if self.groups[g].count > 1]
+            if plural:
+                c.main = plural[-1:]
+                k += 1
         j = k
         # an adverb that opens a relation phrase is part of it ("Far from the house, ...")
         while j < ce and j not in self.rel_at and (toks[j].text in _DETERMINERS or toks[j].text in _ADVERBS):
@@ -461,6 +477,17 @@ class _Reader:
             k += 1
         self._close_with(c)
 
+    def _person(self, c: _Clause, srcs: list[int]) -> list[int]:
+        """Whom "him" / "her" names: the clause's own living subject, else the latest living
+        thing mentioned before."""
+        order = [*c.subjects, *c.main_groups, *reversed(c.groups), *reversed(self.history)]
+        return next(([g] for g in order if g not in srcs and self._living(g)), [])
+
+    def _living(self, g: int) -> bool:
+        """A person or an animal (catalogue dogs and horses too, guessed figures and animals)."""
+        category = self.groups[g].category
+        return category in _LIVING or self.catalogue[category].shape in _LIVING
+
     def _animate(self, *groups: int) -> bool:
         """People and animals: what comes "with" right after their target belongs to the target."""
         return bool(groups) and all(self.groups[g].category in ("figure", "animal", "bird") for g in groups)
@@ -493,7 +520,7 @@ class _Reader:
         # sources: the noun the phrase follows when nothing but adverbs lies between
         srcs: list[int]
         # "a globe on a side table to the right of the desk", "chairs around a table left of the sofa"
-        chained = (c.last_kind in ("on", "on top", "near", "around") or kind in ("on", "on top")) and kind not in (
+        chained = (c.last_kind in _CHAIN_KINDS or kind in ("on", "on top")) and kind not in (
             "face to", "flank", "around", "no relation"
         )  # fmt: skip
         if chained and isinstance(target, list) and target and c.last_target:
@@ -539,6 +566,9 @@ class _Reader:
             targets = self._pronoun("them", c, srcs, list(c.last_target))
             if targets:
                 self._per_each([s for s in srcs if s in c.groups], targets[0])
+        elif target in _PERSONAL:
+            # "a pirate stands behind the chest with a shovel beside him": the person, not the chest
+            targets = self._person(c, srcs)
         elif isinstance(target, str) and target != "each other":
             # "a bench in front of the swing, facing it": the clause's own last target first.
             prefer = list(c.last_target) or (list(prev_subject) if c.main and srcs == c.main else [])
