@@ -29,6 +29,7 @@ from scenewright.analysis.parser.words import (
     _HOLD,
     _HOLD_PAIRS,
     _NUMBERS,
+    _FINITE,
     _ORDINALS,
     _OWNER_PRONOUNS,
     _OWN_PLACE,
@@ -81,6 +82,10 @@ _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
 #: After these, a phrase right after the target places the target: "a lamp on a table left of the
 #: sofa", "astronauts beside a lab bench to the right of the console", "sniffs at a cooler near the truck".
 _CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at")
+#: Sides of a thing named by a possessive ("against its side"): the owner places.
+_OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
+#: Verbs that join a subject to what it is, not to a thing it acts on.
+_COPULAS = ("is", "are", "was", "were", "be", "has", "have", "had", "seems", "looks")
 #: Pronouns that name a person or an animal.
 _PERSONAL = ("him", "her", "himself", "herself")
 #: Categories and shapes of living things ("him", "her" name one of them).
@@ -385,6 +390,8 @@ class _Reader:
         owner = _OWNER_PRONOUNS.get(toks[pos].text) if pos < ce else None
         if owner and j > pos + 1:
             return owner, j  # "above its door": a part of its owner places by the owner itself
+        if owner and pos + 1 < ce and toks[pos + 1].text in _OWNER_PARTS:
+            return owner, pos + 2  # "piled against its side": by the owner
         return None, pos
 
     def _pronoun(self, word: str, c: _Clause, srcs: list[int], prefer: list[int]) -> list[int]:
@@ -434,6 +441,12 @@ class _Reader:
                 k += 1
                 continue
             if w == "with" or w in _HOLD or (w, nxt) in _HOLD_PAIRS or w in ("has", "have"):
+                if w in _HOLD and w.endswith("ing") and c.head is not None and c.wsub:
+                    # "with a small table beside them holding a teapot": the with-thing holds it
+                    c.head, c.wsub, c.hold, c.expect_new = list(c.wsub[-1:]), [], True, False
+                    k += 1
+                    last_event_end = k
+                    continue
                 c.head = [c.each] if c.each is not None else (c.main or list(prev_subject))
                 if w == "with" and c.last_target and c.last_target_end == k and self._animate(*c.head):
                     c.head = list(c.last_target)  # "a baker stands behind the counter with a tray on it"
@@ -463,7 +476,11 @@ class _Reader:
                     c.wsub = [g] if (c.expect_new or closed) else [*c.wsub, g]
                 else:
                     c.main_groups.append(g)
-                    c.main = [g] if c.expect_new else [*c.main, g]
+                    # "an astronaut plants a flag next to it": the verb's object takes what follows,
+                    # unless a person holds it ("a man reads a newspaper on the bench": he is on it)
+                    verb_object = self._object_of_verb(c, last_event_end, m.start)
+                    if not (verb_object and self._living(c.main[-1]) and self._small(g) and not c.expect_new):
+                        c.main = [g] if c.expect_new or verb_object else [*c.main, g]
                     if not c.verb_seen:
                         c.subjects.append(g)
                 c.expect_new = False
@@ -476,6 +493,17 @@ class _Reader:
                 continue
             k += 1
         self._close_with(c)
+
+    def _object_of_verb(self, c: _Clause, start: int, end: int) -> bool:
+        """Whether the noun at ``end`` is the object of a verb that follows the clause's subject
+        ("a porter pushes a cart", "an astronaut plants a flag"): a verb, and no list word, lies
+        between them."""
+        if not c.main:
+            return False
+        gap = [t.text for t in self.toks[start:end]]
+        if any(w in ("and", "or", ",", "with", "while") for w in gap):
+            return False
+        return any(_is_verb(w) and w not in _COPULAS for w in gap)
 
     def _person(self, c: _Clause, srcs: list[int]) -> list[int]:
         """Whom "him" / "her" names: the clause's own living subject, else the latest living
@@ -534,6 +562,7 @@ class _Reader:
                 _is_verb(toks[k].text)
                 for k in range(last_event_end, rel.start)
                 if k not in self.content_at and toks[k - 1].text != "of"
+                and (k - 1 not in self.content_at or toks[k].text in _FINITE)
             )
             if c.wsub and not closed and not c.expect_new:
                 srcs = list(c.wsub)
@@ -573,6 +602,9 @@ class _Reader:
             # "a bench in front of the swing, facing it": the clause's own last target first.
             prefer = list(c.last_target) or (list(prev_subject) if c.main and srcs == c.main else [])
             targets: list[int] | str = self._pronoun(target, c, srcs, prefer) if c.head is None else list(c.head)
+            if c.head is not None and all(self._living(h) for h in c.head):
+                # "a man on the bench, with his terrier asleep under it": "it" is no person
+                targets = self._pronoun(target, c, srcs + c.head, prefer)
             if c.head is not None and srcs == c.head:
                 targets = self._pronoun(target, c, srcs, prefer)
             elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
