@@ -159,6 +159,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         if entry is not None and s > 0 and (_is_verb(toks[s - 1].text) or (k > 0 and raw[k - 1][1] == s and not kind)):
             continue  # "two robots stand guard", "fox statues guard the path": a verb here
         follow = toks[e].text if e < n else ""
+        if e < n and toks[e].joined and (toks[e].text in _LIKENESS or toks[e].text.endswith("ing")):
+            continue  # "a mushroom-shaped lamp", "a goldfish-scooping stall": a look or a use, not a thing
         if entry is not None and singular(words[-1]) == words[-1] and _names_kind(toks, e):
             continue  # "a bear face", "a train compartment", "camel-hair tents": a kind, not a thing
         if follow in _VENUES or follow in vocabulary.places or (
@@ -199,6 +201,8 @@ def _plural_is_verb(toks: list[_Tok], s: int, nxt: tuple) -> bool:
     return nxt[3] is not None
 
 
+#: Words that make the noun hyphened before them a look ("mushroom-shaped", "star-patterned").
+_LIKENESS = {"shaped", "like", "style", "styled", "themed", "sized", "patterned", "print", "printed", "inspired"}
 #: Vocabulary words that only restate what the catalogue noun before them is ("a menu board").
 _KIND_WORDS = {"board", "panel", "screen", "machine", "device", "unit", "box", "container", "tool", "vehicle",
                "structure", "apparatus", "console", "gadget", "station", "post", "pole", "platform"}  # fmt: skip

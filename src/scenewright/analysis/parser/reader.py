@@ -84,6 +84,10 @@ _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
 _CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at")
 #: Sides of a thing named by a possessive ("against its side"): the owner places.
 _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
+#: Shapes that hold what they hold inside, out of the layout ("a greenhouse holds tomato plants").
+_ENCLOSURES = ("house", "building", "tent", "kiosk")
+#: What a thing is mounted on as a part of it ("lanterns on tall poles").
+_MOUNTS = ("pole", "stick", "mast", "stake", "spike")
 #: Verbs that join a subject to what it is, not to a thing it acts on.
 _COPULAS = ("is", "are", "was", "were", "be", "has", "have", "had", "seems", "looks")
 #: Pronouns that name a person or an animal.
@@ -287,6 +291,11 @@ class _Reader:
         holder = prev.category in _CONTENT_HEADS or prev.category in ("container", "tool")
         if w == "of" and prev.end == j and holder and not m.definite:
             return True  # "a vase of tulips", "a statue of a horse", "a tray of medicine bottles"
+        gap = [t.text for t in self.toks[prev.end : m.start]]
+        if gap and gap[0] in _HOLD and self.catalogue[prev.category].shape in _ENCLOSURES and len(gap) <= 4:
+            return True  # "a greenhouse holds tomato plants": inside it, as its contents
+        if w == "on" and j - prev.end <= 2 and singular(m.phrase.split()[-1].lower()) in _MOUNTS:
+            return True  # "a windsock on a tall pole", "a flag flutters on a pole": the pole is its part
         plant = self.catalogue[prev.category].shape in ("potted_plant", "bush", "flower_bed")
         return w == "in" and j - prev.end <= 2 and m.category in ("pot", "planter", "vase") and plant
 
@@ -655,8 +664,13 @@ class _Reader:
             return end
         hang = kind == "hanging from" or any(t.text in _HANG_VERBS for t in toks[max(0, rel.start - 3) : rel.start])
         if targets == "each other":
+            each_other = "face to" if kind == "face to" else "near"
             for s in srcs:
-                self.relations.append(("face to" if kind == "face to" else "near", s, s, None))
+                self.relations.append((each_other, s, s, None))
+            if len(srcs) == 2:  # "a goldfish stall and a takoyaki stall face each other": two groups
+                self._relate(each_other, srcs[1:], srcs[0])
+                if each_other == "face to":
+                    self._relate(each_other, srcs[:1], srcs[1])
             c.produced = True
             return end
         assert isinstance(targets, list)
