@@ -66,11 +66,17 @@ def test_phrase_families(text, expected):
     assert expected in rels(text)
 
 
-def test_rows_and_stacks_chain_the_group():
+def test_rows_and_stacks_are_formations():
     row = parse_scene("Three market stalls stand in a row.")
     assert {o.formation for o in row.objects} == {"row"} and not row.relations  # a row states no side
-    found = rels("Three crates are stacked beside the door of the barn.")
-    assert {("crate_2", "on", "crate_1"), ("crate_3", "on", "crate_2")} <= found
+    stack = parse_scene("Three crates are stacked beside the barn.")
+    assert {o.formation for o in stack.objects if o.category == "crate"} == {"stack"}
+    # the members above the first only rest on the one below: no relation of their own
+    assert {(r.source, r.relation, r.target) for r in stack.relations} == {("crate_1", "side of", "barn_1")}
+    rows = parse_scene("Ten folding chairs are set out in two rows facing the arch.")
+    assert {(o.formation, o.formation_lines) for o in rows.objects if o.category == "chair"} == {("rows", 2)}
+    assert {(o.formation, o.formation_lines) for o in parse_scene("Two rows of benches face the stage.").objects
+            if o.category == "bench"} == {("rows", 2)}  # fmt: skip
     # a shelf stacked with books holds them; it is no stack
     assert not any(r[1] == "on" and r[0].startswith("bookshelf") for r in rels("A bookshelf stacked with books."))
 

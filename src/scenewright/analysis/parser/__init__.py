@@ -113,7 +113,7 @@ def _parse_cached(text: str) -> ParsedScene:
     objects = [
         ParsedObject(
             i, g.category, g.name, g.description, g.size, g.index, g.guessed, g.rests,
-            reader.anchors.get(g.index), reader.formations.get(g.index),
+            reader.anchors.get(g.index), reader.formations.get(g.index), reader.lines.get(g.index),
         )
         for g in reader.groups
         for i in g.ids

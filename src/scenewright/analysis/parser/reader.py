@@ -70,7 +70,10 @@ class _Clause:
 
 
 #: Phrases that place a group in a formation rather than by a target.
-_FORMATIONS = ("row", "stack", "circle")
+_FORMATIONS = ("row", "rows", "stack", "circle")
+#: Quantity nouns that set their things out in a formation ("a row of stalls", "two rows of chairs").
+_FORMATION_NOUNS = {"row": "row", "line": "row", "rows": "rows", "lines": "rows", "stack": "stack",
+                    "stacks": "stack", "pile": "stack", "ring": "circle", "circle": "circle"}  # fmt: skip
 #: Phrase kinds that, with no object after them, name a part of the room ("along the back wall").
 _PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None, "foot of": None, "at": None}
 #: Phrase kinds read as one of the scene's relations whatever they join.
@@ -119,6 +122,8 @@ class _Reader:
         self.anchors: dict[int, str] = {}
         #: Group → the formation its members stand in (row, stack, circle).
         self.formations: dict[int, str] = {}
+        #: Group → how many rows its ``rows`` formation has ("in two rows").
+        self.lines: dict[int, int] = {}
 
     # ---- groups
 
@@ -150,7 +155,24 @@ class _Reader:
         g = _Group(len(self.groups), m.category, count, name, description, size, rests=rests)
         g.guessed = m.guess is not None
         self.groups.append(g)
+        self._formation_before(m, g)
         return g.index
+
+    def _formation_before(self, m: _Mention, g: _Group) -> None:
+        """"Two rows of chairs", "a stack of crates", "a ring of stones": the formation the
+        quantity noun before "of" names (a stack of small things is one thing, no formation)."""
+        j = m.start - 1 - len(m.adjectives)
+        if j < 1 or self.toks[j].text != "of" or g.count < 2:
+            return
+        formation = _FORMATION_NOUNS.get(self.toks[j - 1].text)
+        if formation is None:
+            return
+        count = _NUMBERS.get(self.toks[j - 2].text) if j >= 2 else None
+        if formation == "rows" and count == 1:
+            formation = "row"
+        self.formations.setdefault(g.index, formation)
+        if formation == "rows" and count:
+            self.lines.setdefault(g.index, count)
 
     def _resolve(self, m: _Mention, sizes: list[tuple[str, float]]) -> int:
         """A definite mention of something already present refers to it (by category, else by
@@ -588,9 +610,12 @@ class _Reader:
         if kind in _FORMATIONS or kind.startswith("anchor ") or (target is None and kind in _PLACE_KINDS):
             # "three stalls stand in a row", "a sofa against the wall", "a rug in the middle of the room"
             place = _PLACE_KINDS.get(kind) or self._anchor_after(rel.end, ce) if not kind.startswith("anchor ") else kind
+            lines = next((_NUMBERS[t.text] for t in toks[rel.start : rel.end] if t.text in _NUMBERS), None)
             for g in srcs or ([] if c.first else list(prev_subject)):
                 if kind in _FORMATIONS:
-                    self.formations.setdefault(g, kind)
+                    self.formations.setdefault(g, "row" if kind == "rows" and lines == 1 else kind)
+                    if kind == "rows" and lines:
+                        self.lines.setdefault(g, lines)
                 elif place:
                     self.anchors.setdefault(g, place.removeprefix("anchor "))
             return end
