@@ -57,6 +57,8 @@ class _Group:
     rests: str = "ground"
     #: Read through the open vocabulary, not the catalogue.
     guessed: bool = False
+    #: The text states its size ("a 3 m tall statue"): no rule resizes it.
+    sized: bool = False
 
 
 @lru_cache(maxsize=1)

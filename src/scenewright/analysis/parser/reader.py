@@ -19,7 +19,7 @@ from scenewright.analysis.parser.nouns import (
 from scenewright.analysis.parser.phrases import _Rel, _find_relations
 from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
 from scenewright.analysis.parser.tokens import _split, _tokenise
-from scenewright.analysis.parser.vocabulary import load_vocabulary, scaled
+from scenewright.analysis.parser.vocabulary import load_vocabulary, scaled, stretched
 from scenewright.analysis.parser.words import (
     _ADVERBS,
     _CONTENT_HEADS,
@@ -148,12 +148,13 @@ class _Reader:
             describing = describing[:-1]
         name = " ".join([*kind, name])
         description = " ".join([*describing, name, *m.post]).strip()
-        base = scaled(m.guess.size, describing) if m.guess is not None else cat.size
+        base = stretched(scaled(m.guess.size, describing) if m.guess is not None else cat.size, describing)
         size = _apply_sizes(base, sizes) if sizes else base
         rests = m.guess.rests if m.guess is not None else cat.rests
         count = min(max(1, m.count), MAX_COUNT)
         g = _Group(len(self.groups), m.category, count, name, description, size, rests=rests)
         g.guessed = m.guess is not None
+        g.sized = bool(sizes)
         self.groups.append(g)
         self._formation_before(m, g)
         return g.index
@@ -294,6 +295,9 @@ class _Reader:
             while j >= 0 and (toks[j].text in _DETERMINERS or toks[j].text in _NUMBERS or (
                 toks[j].text not in _STOP and toks[j].text[0].isalnum())) and m.start - j < 5:  # fmt: skip
                 j -= 1
+            if prev is not None and self._held_inside(m, prev):
+                m.content = chain = True
+                continue
             if j < 1 or prev is None:
                 chain = False
                 continue
@@ -304,6 +308,12 @@ class _Reader:
             m.content = content
             chain = content
 
+    def _held_inside(self, m: _Mention, prev: _Mention) -> bool:
+        """"A greenhouse holds tomato plants": what a building or a tent holds is inside it, its
+        contents rather than things of the layout."""
+        gap = [t.text for t in self.toks[prev.end : m.start]]
+        return bool(gap) and gap[0] in _HOLD and len(gap) <= 4 and self.catalogue[prev.category].shape in _ENCLOSURES
+
     def _is_content(self, m: _Mention, prev: _Mention, j: int) -> bool:
         w = self.toks[j].text
         if (self.toks[j - 1].text, w) in _CONTENT_MARKERS and j - prev.end <= 2:
@@ -313,9 +323,6 @@ class _Reader:
         holder = prev.category in _CONTENT_HEADS or prev.category in ("container", "tool")
         if w == "of" and prev.end == j and holder and not m.definite:
             return True  # "a vase of tulips", "a statue of a horse", "a tray of medicine bottles"
-        gap = [t.text for t in self.toks[prev.end : m.start]]
-        if gap and gap[0] in _HOLD and self.catalogue[prev.category].shape in _ENCLOSURES and len(gap) <= 4:
-            return True  # "a greenhouse holds tomato plants": inside it, as its contents
         if w == "on" and j - prev.end <= 2 and singular(m.phrase.split()[-1].lower()) in _MOUNTS:
             return True  # "a windsock on a tall pole", "a flag flutters on a pole": the pole is its part
         plant = self.catalogue[prev.category].shape in ("potted_plant", "bush", "flower_bed")

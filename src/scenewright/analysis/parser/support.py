@@ -5,6 +5,7 @@ things above the nearest large object. Marked ``inferred``.
 from __future__ import annotations
 
 from collections import Counter
+from dataclasses import replace
 
 from scenewright.analysis.parser.model import ParsedObject, ParsedRelation
 
@@ -126,6 +127,35 @@ _AREA_SLACK, _SIDE_SLACK = 2.0, 1.6
 _FLOOR_FURNITURE = {"sofa", "armchair", "bed", "wardrobe", "bookshelf", "office_chair", "piano", "fridge",
                     "stove", "counter", "desk", "table", "round_table", "coffee_table", "bathtub", "treadmill",
                     "dresser", "tv_stand", "school_desk", "dining_table"}  # fmt: skip
+
+
+#: A floor-standing thing the text puts on a table-like host is its tabletop kind: at most this
+#: share of the host's height ("two speakers on the desk" are desk speakers, not floor ones).
+_ON_TOP_HEIGHT = 0.6
+#: Hosts no taller than this are furniture one puts things on (a desk, a counter, a sideboard).
+_FURNITURE_HEIGHT = 1.3
+
+
+def fit_on_hosts(objects: list[ParsedObject], relations: list[ParsedRelation], catalogue, fixed: set[str]) -> list[ParsedObject]:
+    """Objects with every floor-standing thing stated ``on`` a general host scaled down to a
+    tabletop size (its proportions kept); sizes the text states (``fixed``) stay."""
+    by_id = {o.id: o for o in objects}
+    scale: dict[str, float] = {}
+    for r in relations:
+        if r.relation != "on" or r.source in fixed:
+            continue
+        thing, host = by_id[r.source], by_id[r.target]
+        if (thing.rests or catalogue[thing.category].rests) != "ground" or host.category not in _GENERAL_HOSTS:
+            continue
+        if host.size[2] > _FURNITURE_HEIGHT or thing.category in _FLOOR_FURNITURE:
+            continue
+        limit = _ON_TOP_HEIGHT * host.size[2]
+        if thing.size[2] > limit:
+            scale[thing.id] = min(scale.get(thing.id, 1.0), limit / thing.size[2])
+    return [
+        replace(o, size=tuple(round(v * scale[o.id], 4) for v in o.size)) if o.id in scale else o  # type: ignore[misc]
+        for o in objects
+    ]
 
 
 def can_hold(host: ParsedObject, thing: ParsedObject, catalogue) -> bool:
