@@ -158,6 +158,10 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         if s == e:
             continue
         kind, modifier = modifier, []
+        if kind and entry is not None and entry.category == "figure":
+            machine = match_phrase(tuple(kind))
+            if machine is not None and load_catalogue()[machine].shape == "robot":
+                cat, entry = machine, None  # "a robot bartender" is a robot that tends the bar
         if entry is not None and s > 0 and (_is_verb(toks[s - 1].text) or (k > 0 and raw[k - 1][1] == s and not kind)):
             continue  # "two robots stand guard", "fox statues guard the path": a verb here
         follow = toks[e].text if e < n else ""

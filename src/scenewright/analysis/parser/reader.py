@@ -87,6 +87,8 @@ _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
 _CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at")
 #: Sides of a thing named by a possessive ("against its side"): the owner places.
 _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
+#: Flat holders whose "of" things stand on them as objects ("a tray of bottles", "a pallet of tires").
+_FLAT_HOLDERS = ("plate", "pallet")
 #: Shapes that hold what they hold inside, out of the layout ("a greenhouse holds tomato plants").
 _ENCLOSURES = ("house", "building", "tent", "kiosk")
 #: What a thing is mounted on as a part of it ("lanterns on tall poles").
@@ -218,6 +220,8 @@ class _Reader:
         for m in mentions:
             _read_count(toks, m, prev_end)
             prev_end = m.end
+        #: (mention start, holder mention start): "a tray of bottles" puts the bottles on the tray.
+        self.held_of: list[tuple[int, int]] = []
         self._mark_contents(mentions)
         self.size_of: dict[int, list[tuple[str, float]]] = {}
         for s, e, dim, value in _read_sizes(toks):
@@ -267,6 +271,10 @@ class _Reader:
                 if c.main_groups:
                     prev_subject = c.main_groups[:1] if not c.main else c.main
                 self.history.extend(c.groups)
+        by_start = {m.start: m for m in mentions}
+        held = [("on", by_start[s].group, by_start[h].group, None) for s, h in self.held_of
+                if by_start[s].group >= 0 and by_start[h].group >= 0]  # fmt: skip
+        self.relations[:0] = held  # before any other support the list gave them
 
     def _read_looks(self, mentions: list[_Mention]) -> None:
         """Each noun's look written after it; a catalogue noun inside a "made of" look is its
@@ -320,9 +328,12 @@ class _Reader:
             return True  # "a bowl full of apples"
         if self._listed_content(m.start):
             return True  # "crates overflow with apples, pumpkins and carrots"
+        if w == "of" and prev.end == j and prev.category in _FLAT_HOLDERS and not m.definite:
+            self.held_of.append((m.start, prev.start))  # "a tray of medicine bottles": bottles on the tray
+            return False
         holder = prev.category in _CONTENT_HEADS or prev.category in ("container", "tool")
         if w == "of" and prev.end == j and holder and not m.definite:
-            return True  # "a vase of tulips", "a statue of a horse", "a tray of medicine bottles"
+            return True  # "a vase of tulips", "a statue of a horse", "a box of tools"
         if w == "on" and j - prev.end <= 2 and singular(m.phrase.split()[-1].lower()) in _MOUNTS:
             return True  # "a windsock on a tall pole", "a flag flutters on a pole": the pole is its part
         plant = self.catalogue[prev.category].shape in ("potted_plant", "bush", "flower_bed")
@@ -612,6 +623,11 @@ class _Reader:
                 c.head, c.wsub = None, []
         else:
             srcs = list(c.main)
+        if kind == "no relation" and c.head is not None and toks[rel.start].text.startswith(("toward", "heading")):
+            # "a forklift carries a pallet toward the rack": the with-part ends, the rack is no load
+            self._close_with(c)
+            c.head, c.wsub, c.expect_new = None, [], True
+            return end
         if kind == "no relation" or (kind == "stack" and end < ce and toks[end].text == "with"):
             return end  # "a shelf stacked with books": contents, no stack
         if kind in _FORMATIONS or kind.startswith("anchor ") or (target is None and kind in _PLACE_KINDS):
@@ -641,7 +657,9 @@ class _Reader:
             targets = self._person(c, srcs)
         elif isinstance(target, str) and target != "each other":
             # "a bench in front of the swing, facing it": the clause's own last target first.
-            prefer = list(c.last_target) or (list(prev_subject) if c.main and srcs == c.main else [])
+            # then the subject before ("a wagon waits behind the fountain, and a donkey is tied to
+            # a post next to it": the wagon)
+            prefer = [*c.last_target, *prev_subject] if c.last_target else (list(prev_subject) if c.main and srcs == c.main else [])
             targets: list[int] | str = self._pronoun(target, c, srcs, prefer) if c.head is None else list(c.head)
             if c.head is not None and all(self._living(h) for h in c.head):
                 # "a man on the bench, with his terrier asleep under it": "it" is no person
