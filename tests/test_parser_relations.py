@@ -208,3 +208,9 @@ def test_a_right_of_a_row_is_beside_its_end():
 def test_enclosures_hold_contents_and_poles_are_parts():
     parsed = parse_scene("A greenhouse holds tomato plants. A windsock on a tall pole stands by the hangar.")
     assert [o.category for o in parsed.objects if o.category not in ("greenhouse", "warehouse")] == ["panel"]
+
+
+def test_them_after_two_single_things_names_those_two():
+    found = rels("Lanterns line the path. A fish stall and a noodle stall face each other, and a girl stands between them.")
+    assert {("girl_1", "near", "market_stall_1"), ("girl_1", "near", "market_stall_2")} <= found
+    assert not any(t.startswith("lantern") for _, _, t in found)

@@ -447,6 +447,11 @@ class _Reader:
         """The group "it" / "them" names: the subject before (when this clause has its own) or
         the latest earlier mention, of the right number."""
         plural = word in ("them", "themselves")
+        # "a fish stall and a noodle stall face each other, and a girl stands between them": two
+        # single things of this clause, or of the subject before, are "them"
+        for pair in ([g for g in c.groups if g not in srcs], [g for g in prefer if g not in srcs]):
+            if plural and len(pair) >= 2 and all(self.groups[g].count == 1 for g in pair):
+                return pair[-2:]
         recent = [g for g in [*prefer, *reversed(self.history), *reversed(c.groups)] if g not in srcs]
         # a thing on the floor is not placed by a small thing on a table ("a nightstand with a lamp
         # on it. A rug lies in front of it": the nightstand)
