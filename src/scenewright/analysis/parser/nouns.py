@@ -413,7 +413,7 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             break
         if w == "of" and j > 0 and toks[j - 1].text in _QUANTITY:
             q = toks[j - 1].text
-            small = load_catalogue()[m.category].rests == "surface"
+            small = (m.guess.rests if m.guess is not None else load_catalogue()[m.category].rests) == "surface"
             count = 1 if q in ("stack", "pile") and small else _QUANTITY[q]
             counted = q in ("pair", "couple", "dozen")
             k = j - 2

@@ -73,7 +73,7 @@ class _Clause:
 _FORMATIONS = ("row", "rows", "stack", "circle")
 #: Quantity nouns that set their things out in a formation ("a row of stalls", "two rows of chairs").
 _FORMATION_NOUNS = {"row": "row", "line": "row", "rows": "rows", "lines": "rows", "stack": "stack",
-                    "stacks": "stack", "pile": "stack", "ring": "circle", "circle": "circle"}  # fmt: skip
+                    "ring": "circle", "circle": "circle"}  # fmt: skip
 #: Phrase kinds that, with no object after them, name a part of the room ("along the back wall").
 _PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None, "foot of": None, "at": None}
 #: Phrase kinds read as one of the scene's relations whatever they join.
