@@ -63,7 +63,8 @@ def slots(count: int, lines: int, width: float, depth: float) -> list[tuple[floa
 def ring(count: int, width: float, depth: float) -> list[tuple[float, float]]:
     """Centres of ``count`` places evenly round a ring wide enough for them, centred on the origin."""
     radius = max(count * (max(width, depth) + GAP) / (2 * math.pi), max(width, depth), RING_RADIUS)
-    return [(radius * math.cos(2 * math.pi * k / count), radius * math.sin(2 * math.pi * k / count)) for k in range(count)]
+    turns = [2 * math.pi * k / count for k in range(count)]
+    return [(radius * math.cos(a), radius * math.sin(a)) for a in turns]
 
 
 def arrange(layout: Layout) -> None:
@@ -79,7 +80,8 @@ def _arrange_group(layout: Layout, objs: list[ParsedObject]) -> None:
     if not all(layout.on_ground(i) for i in ids):
         return
     target = _common_target(layout.relations, ids)
-    own_units = all(u.root == i and not u.merged for u, i in zip(units, ids)) and len({id(u) for u in units}) == len(ids)
+    distinct = len({id(u) for u in units}) == len(ids)
+    own_units = distinct and all(u.root == i and not u.merged for u, i in zip(units, ids))
     if own_units:
         _set_out_units(layout, objs, units)
     elif len({id(u) for u in units}) == 1 and all(layout.with_load(i) == [i] for i in ids):

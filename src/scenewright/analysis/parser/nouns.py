@@ -150,7 +150,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
                 raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])
                 nxt = None
         if nxt and nxt[0] == e and singular(words[-1]) == words[-1]:
-            if not (nxt[3] is not None and entry is None and nxt[1] - nxt[0] == 1 and singular(toks[nxt[0]].text) in _KIND_WORDS):
+            kind_word = nxt[1] - nxt[0] == 1 and singular(toks[nxt[0]].text) in _KIND_WORDS
+            if not (nxt[3] is not None and entry is None and kind_word):
                 modifier += words
                 continue
             raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])  # "a chalkboard menu board": the board is the menu board

@@ -468,7 +468,8 @@ class _Reader:
         k = cs
         while k < ce and toks[k].text in ("and", "or", "but", "then", "also", "so", "there", "is", "are"):
             k += 1
-        if k + 1 < ce and toks[k].text == "one" and k + 1 in self.rel_at and self.rel_at[k + 1].kind.startswith("flank"):
+        one_a_side = k + 1 < ce and toks[k].text == "one" and k + 1 in self.rel_at
+        if one_a_side and self.rel_at[k + 1].kind.startswith("flank"):
             # "two speakers on the desk, one on each side of the console": the speakers flank it
             plural = [g for g in [*self.history, *c.groups] if self.groups[g].count > 1]
             if plural:
@@ -664,7 +665,8 @@ class _Reader:
             # "a bench in front of the swing, facing it": the clause's own last target first.
             # then the subject before ("a wagon waits behind the fountain, and a donkey is tied to
             # a post next to it": the wagon)
-            prefer = [*c.last_target, *prev_subject] if c.last_target else (list(prev_subject) if c.main and srcs == c.main else [])
+            own_subject = list(prev_subject) if c.main and srcs == c.main else []
+            prefer = [*c.last_target, *prev_subject] if c.last_target else own_subject
             targets: list[int] | str = self._pronoun(target, c, srcs, prefer) if c.head is None else list(c.head)
             if c.head is not None and all(self._living(h) for h in c.head):
                 # "a man on the bench, with his terrier asleep under it": "it" is no person

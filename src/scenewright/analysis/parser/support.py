@@ -136,7 +136,9 @@ _ON_TOP_HEIGHT = 0.6
 _FURNITURE_HEIGHT = 1.3
 
 
-def fit_on_hosts(objects: list[ParsedObject], relations: list[ParsedRelation], catalogue, fixed: set[str]) -> list[ParsedObject]:
+def fit_on_hosts(
+    objects: list[ParsedObject], relations: list[ParsedRelation], catalogue, fixed: set[str]
+) -> list[ParsedObject]:
     """Objects with every floor-standing thing stated ``on`` a general host scaled down to a
     tabletop size (its proportions kept); sizes the text states (``fixed``) stay."""
     by_id = {o.id: o for o in objects}
