@@ -214,3 +214,9 @@ def test_them_after_two_single_things_names_those_two():
     found = rels("Lanterns line the path. A fish stall and a noodle stall face each other, and a girl stands between them.")
     assert {("girl_1", "near", "market_stall_1"), ("girl_1", "near", "market_stall_2")} <= found
     assert not any(t.startswith("lantern") for _, _, t in found)
+
+
+def test_a_cart_piled_with_big_things_holds_them_and_small_ones_are_its_contents():
+    assert {("backpack_1", "on", "cart_1")} <= rels("A luggage cart piled with suitcases stands by the kiosk.")
+    parsed = parse_scene("A cart piled with apples stands by the gate. A bookshelf stacked with books.")
+    assert {o.category for o in parsed.objects} == {"cart", "arch", "bookshelf"}

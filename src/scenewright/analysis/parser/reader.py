@@ -87,6 +87,11 @@ _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
 _CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at")
 #: Sides of a thing named by a possessive ("against its side"): the owner places.
 _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
+#: "Piled with" on a cart or a table is a load of things standing on it when they are this big or
+#: bigger ("a cart piled with suitcases"); smaller ones ("piled with apples") stay its contents.
+_LOADS = {("piled", "with"), ("stacked", "with"), ("heaped", "with")}
+_LOAD_HOSTS = ("cart", "truck", "table", "round_table", "desk", "counter")
+_LOAD_SIZE = 0.3
 #: Flat holders whose "of" things stand on them as objects ("a tray of bottles", "a pallet of tires").
 _FLAT_HOLDERS = ("plate", "pallet")
 #: Shapes that hold what they hold inside, out of the layout ("a greenhouse holds tomato plants").
@@ -316,6 +321,9 @@ class _Reader:
             m.content = content
             chain = content
 
+    def _size(self, m: _Mention) -> tuple[float, float, float]:
+        return m.guess.size if m.guess is not None else self.catalogue[m.category].size
+
     def _held_inside(self, m: _Mention, prev: _Mention) -> bool:
         """"A greenhouse holds tomato plants": what a building or a tent holds is inside it, its
         contents rather than things of the layout."""
@@ -324,7 +332,10 @@ class _Reader:
 
     def _is_content(self, m: _Mention, prev: _Mention, j: int) -> bool:
         w = self.toks[j].text
-        if (self.toks[j - 1].text, w) in _CONTENT_MARKERS and j - prev.end <= 2:
+        marker = (self.toks[j - 1].text, w)
+        if marker in _LOADS and self.catalogue[prev.category].shape in _LOAD_HOSTS and max(self._size(m)) >= _LOAD_SIZE:
+            return False  # "a luggage cart piled with suitcases": they stand on the cart
+        if marker in _CONTENT_MARKERS and j - prev.end <= 2:
             return True  # "a bowl full of apples"
         if self._listed_content(m.start):
             return True  # "crates overflow with apples, pumpkins and carrots"
