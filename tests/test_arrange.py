@@ -254,3 +254,53 @@ def test_compositions_never_overlap_never_line_up_and_repeat_per_seed(parsed, se
     if len(ground_objects(made.objects)) >= 3:
         assert scene_spread(made.objects) >= MIN_SPREAD
     assert compose(parsed, seed).objects == made.objects
+
+
+# --- formations and anchors the text states ----------------------------------------------------
+
+
+def test_two_rows_of_chairs_facing_an_arch_stand_in_two_rows_in_front_of_it():
+    made = compose(parse_scene("A garden with a white arch. Ten folding chairs are set out in two rows facing the arch."))
+    o = _by_id(made.objects)
+    chairs = [v for k, v in o.items() if k.startswith("chair")]
+    arch = o["arch_1"]
+    rows = sorted({round(c.position.y, 2) for c in chairs})
+    assert len(rows) == 2 and all(sum(round(c.position.y, 2) == y for c in chairs) == 5 for y in rows)
+    assert all(c.position.y < arch.position.y for c in chairs)  # in front of it, where it looks
+    assert all(_faces(c, arch) for c in chairs)
+    assert not any(_plan_overlap(a, b) for i, a in enumerate(chairs) for b in chairs[i + 1 :])
+
+
+def test_a_stack_is_each_on_the_one_below_from_the_composition():
+    parsed = parse_scene("Three wooden crates are stacked beside the barn.")
+    made = compose(parsed)
+    chain = {(r.source, r.relation, r.target) for r in made.relations}
+    assert {("crate_2", "on", "crate_1"), ("crate_3", "on", "crate_2")} <= chain
+    o = _by_id(made.objects)
+    for r in made.relations:
+        assert rel.check(r.relation, o[r.source], o[r.target]), r
+
+
+def test_a_row_of_unrelated_things_stands_side_by_side_and_a_circle_faces_its_middle():
+    made = compose(parse_scene("A laundromat. Four washing machines stand in a row. A sofa stands nearby. "
+                               "A table and a lamp."))  # fmt: skip
+    machines = sorted((v for v in made.objects if v.id.startswith("washing")), key=lambda v: v.position.x)
+    assert len({round(m.position.y, 3) for m in machines}) == 1  # one straight row
+    assert all(_gap(a, b) < 0.5 for a, b in zip(machines, machines[1:]))  # side by side
+    ring = [v for v in compose(parse_scene("Six stools stand in a circle.")).objects]
+    centre = np.mean([[s.position.x, s.position.y] for s in ring], axis=0)
+    radii = [math.hypot(s.position.x - centre[0], s.position.y - centre[1]) for s in ring]
+    assert max(radii) - min(radii) < 1e-3 and min(radii) >= 0.99  # poses are rounded to 0.1 mm
+    for s in ring:
+        d = front_direction(s.rotation.z)
+        v = centre - np.array([s.position.x, s.position.y])
+        assert float(d @ v) / float(np.linalg.norm(v)) > 0.99
+
+
+def test_anchors_send_things_to_the_back_the_front_and_the_middle():
+    parsed = parse_scene("A hall. A sofa and a coffee table. An armchair. A rug lies in the middle of the room. "
+                         "A wardrobe stands at the back. A bench stands at the front.")  # fmt: skip
+    o = _by_id(compose(parsed).objects)
+    others = [v for k, v in o.items() if k not in ("wardrobe_1", "bench_1")]
+    assert all(o["wardrobe_1"].position.y > v.position.y for v in others)
+    assert all(o["bench_1"].position.y < v.position.y for v in others)

@@ -601,3 +601,49 @@ def test_low_wide_buildings_are_not_office_blocks():
     assert {o.category for o in parsed.objects} == {"warehouse"}
     width, depth, height = parsed.objects[0].size
     assert height < width and height < depth and height < load_catalogue()["building"].size[2]
+
+
+@pytest.mark.parametrize(
+    ("text", "names"),
+    [
+        # compounds read as one thing
+        ("A rocket stands on the landing pad.", {"rocket", "landing pad"}),
+        ("A cat sleeps on an air conditioning unit.", {"cat", "air conditioning unit"}),
+        ("A baker works at a worktable.", {"baker", "worktable"}),
+        ("A truck stands beside a pile of sand.", {"truck", "pile of sand"}),
+        # a plural after a noun is the head of a compound unless an object follows it
+        ("Two habitat domes stand side by side.", {"habitat dome"}),
+        ("An astronaut plants a flag.", {"astronaut", "flag"}),
+        ("A knight guards the gate.", {"knight", "gate"}),
+        # place words, of one or two words, set the scene
+        ("A busy construction site on a sunny day. A crane stands at the back.", {"crane"}),
+        ("Inside a village smithy, an anvil sits on a stump.", {"anvil", "stump"}),
+        # a noun hyphened to "shaped" or a use is a look
+        ("A mushroom-shaped lamp stands on the nightstand.", {"lamp", "nightstand"}),
+    ],
+)
+def test_compound_things_and_places(text, names):
+    assert {o.name for o in parse_scene(text).objects} == names
+
+
+@pytest.mark.parametrize(
+    ("text", "kind"),
+    [
+        ("A savannah enclosure at a city zoo. Giraffes graze by the road.", "dirt"),
+        ("A research outpost on Mars. A rocket stands on the landing pad.", "dirt"),
+        ("A rooftop garden in the city.", "concrete"),
+        ("A quiet park. A lorry waits on the road behind the gate.", "grass"),
+    ],
+)
+def test_the_setting_s_own_word_sets_the_ground(text, kind):
+    assert detect_ground(text, False) == kind
+
+
+def test_long_stretches_and_floor_things_on_a_desk_are_its_tabletop_kind():
+    parsed = parse_scene("A long desk. Two speakers stand on the desk. A 1.2 m tall vase stands on the table.")
+    by = {o.id: o for o in parsed.objects}
+    assert by["desk_1"].size[0] == pytest.approx(1.5 * load_catalogue()["desk"].size[0])
+    speaker = load_catalogue()["speaker"].size
+    assert by["speaker_1"].size[2] <= 0.6 * by["desk_1"].size[2] + 1e-9
+    assert by["speaker_1"].size[0] / by["speaker_1"].size[2] == pytest.approx(speaker[0] / speaker[2], rel=1e-3)
+    assert by["vase_1"].size[2] == pytest.approx(1.2)  # a stated size stays

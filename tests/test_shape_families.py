@@ -115,7 +115,7 @@ def test_a_round_mirror_is_round_in_any_box():
     [("camel", "animal"), ("three pigs", "animal"), ("dragon statue", "animal"), ("statue of a horse", "animal"),
      ("street musician", "figure"), ("man with a guitar", "figure"), ("fuel tanks", "tank"), ("ferris wheel", "structure"),
      ("anvil", "tool"), ("boxes", "container"), ("notice board", "panel"), ("golf cart", "vehicle"), ("parrot", "bird"),
-     ("horse cart", None), ("queen bed", None), ("hot dog stand", None), ("statue", None)],
+     ("horse cart", None), ("queen bed", None), ("hot dog stand", None), ("statue", None), ("bronze cannon", "tank")],
 )
 def test_a_name_s_head_noun_picks_the_family(name, family):
     assert family_of(name) == family
@@ -125,7 +125,7 @@ def test_a_name_s_head_noun_picks_the_family(name, family):
     ("name", "category", "shape"),
     [("camel", None, "camel_shape"), ("camel", "animal", "animal"), ("fuel tank", None, "tank"),
      ("street musician", "figure", "figure"), ("ferris wheel", None, "structure"), ("anvil", None, "tool"),
-     ("dragon statue", "statue", "statue"), ("tractor", None, "truck")],
+     ("dragon statue", "statue", "statue"), ("tractor", None, "truck"), ("cannon", None, "tank")],
 )
 def test_family_names_and_words_choose_the_shape(name, category, shape):
     expected = "animal" if shape == "camel_shape" else shape

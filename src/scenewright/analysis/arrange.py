@@ -21,7 +21,7 @@ import random
 from collections import defaultdict
 from dataclasses import dataclass
 
-from scenewright.analysis.composition import edges, groups, outdoor, packing, relational, roles
+from scenewright.analysis.composition import edges, formations, groups, outdoor, packing, relational, roles
 from scenewright.analysis.composition.lines import unline
 from scenewright.analysis.composition.units import Layout, Unit
 from scenewright.analysis.parser import ParsedRelation, ParsedScene
@@ -45,14 +45,20 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
     """The designed first layout of ``parsed``."""
     if not parsed.objects:
         return Composition([], list(parsed.relations))
-    layout = Layout(parsed.objects, share_supports(parsed))
+    layout = Layout(parsed.objects, share_supports(parsed) + formations.stack_relations(parsed.objects))
     _place_related(layout)
     for rule in GROUP_RULES:
         rule(layout)
-    storage, vehicles, natural, core = [], [], [], []
+    formations.arrange(layout)
+    storage, vehicles, natural, core, front = [], [], [], [], []
     for unit in layout.top_units():
         kind = layout.kind(unit.root)
-        if unit.turnable and not unit.partners and kind in roles.EDGE_STORAGE:
+        anchor = layout.by_id[unit.root].anchor
+        if anchor == "front":
+            front.append(unit)
+        elif anchor == "centre":
+            core.insert(0, unit)
+        elif unit.turnable and not unit.partners and (kind in roles.EDGE_STORAGE or anchor in edges.ANCHORED):
             storage.append(unit)
         elif unit.turnable and not unit.partners and kind in roles.VEHICLES:
             vehicles.append(unit)
@@ -60,8 +66,9 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
             natural.append(unit)
         else:
             core.append(unit)
-    packing.pack(layout, core)
+    packing.pack(layout, core, centred=sum(layout.by_id[u.root].anchor == "centre" for u in core))
     edges.along_edges(layout, storage)
+    edges.in_front(layout, front)
     outdoor.park(layout, vehicles)
     outdoor.scatter(layout, natural, random.Random(seed))
     unline(layout, layout.relations_hold)

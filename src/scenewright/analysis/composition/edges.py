@@ -21,6 +21,11 @@ CLEARANCE = 0.6
 EDGES = {"back": (0.0, (0.0, 1.0)), "left": (90.0, (-1.0, 0.0)), "right": (-90.0, (1.0, 0.0))}
 
 
+#: Anchors the text gives that send a thing to the edges ("against the wall", "in the corner",
+#: "at the back"); "at the back" keeps it on the back edge.
+ANCHORED = frozenset({"wall", "corner", "back"})
+
+
 def share(count: int, back_free: bool = True) -> list[str]:
     """Which edge each of ``count`` storage pieces goes to, in order; when a bed's head takes
     the back, the sides come first."""
@@ -35,7 +40,12 @@ def along_edges(layout: Layout, units: list[Unit]) -> None:
         return
     x0, y0, x1, y1 = bbox(layout.placed[i] for u in layout.settled for i in u.ids)
     cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-    edges = share(len(units), back_free=not any(layout.kind(u.root) in roles.BEDS for u in layout.settled))
+    back = [u for u in units if layout.by_id[u.root].anchor == "back"]
+    rest = [u for u in units if layout.by_id[u.root].anchor != "back"]
+    units = back + rest
+    edges = ["back"] * len(back) + share(
+        len(rest), back_free=not back and not any(layout.kind(u.root) in roles.BEDS for u in layout.settled)
+    )
     for edge in ("back", "left", "right"):
         row = [u for u, e in zip(units, edges) if e == edge]
         if not row:
@@ -57,3 +67,19 @@ def along_edges(layout: Layout, units: list[Unit]) -> None:
                 y = cy - along
             layout.move(u, x - p.x, y - p.y)
             layout.settle(u, (ox, oy))
+
+
+def in_front(layout: Layout, units: list[Unit]) -> None:
+    """Things the text puts at the front: side by side before everything already placed, on the
+    viewer's side."""
+    if not units:
+        return
+    prints = [layout.placed[i] for u in layout.settled for i in u.ids]
+    x0, y0, x1, _ = bbox(prints) if prints else (0.0, 0.0, 0.0, 0.0)
+    widths = [layout.box(u)[2] - layout.box(u)[0] for u in units]
+    start = (x0 + x1) / 2 - (sum(widths) + GAP * (len(units) - 1)) / 2
+    for u, width in zip(units, widths):
+        bx0, by0, bx1, by1 = layout.box(u)
+        layout.move(u, start + width / 2 - (bx0 + bx1) / 2, y0 - CLEARANCE - (by1 - by0) / 2 - (by0 + by1) / 2)
+        start += width + GAP
+        layout.settle(u, (0.0, -1.0))

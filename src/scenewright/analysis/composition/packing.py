@@ -83,8 +83,10 @@ def _grid(layout: Layout, units: list[Unit]) -> None:
         layout.move(unit, x - (b[0] + b[2]) / 2, y - (b[1] + b[3]) / 2)
 
 
-def pack(layout: Layout, units: list[Unit]) -> None:
-    """Set ``units`` out compactly around the origin (what is already placed stays)."""
+def pack(layout: Layout, units: list[Unit], centred: int = 0) -> None:
+    """Set ``units`` out compactly around the origin (what is already placed stays); the first
+    ``centred`` units (those the text puts in the middle) go down first, at the centre."""
+    centre = {id(u) for u in units[:centred]}
     by_group: dict[tuple[str, str], list[Unit]] = defaultdict(list)
     blocks: list[list[Unit]] = []
     for u in units:
@@ -103,7 +105,8 @@ def pack(layout: Layout, units: list[Unit]) -> None:
     def weight(block: list[Unit]):
         x0, y0, x1, y1 = _union(layout, block)
         count = sum(len(u.ids) for u in block)
-        return (-count, -(x1 - x0) * (y1 - y0), min(order[id(u)] for u in block))
+        middle = any(id(u) in centre for u in block)
+        return (not middle, -count, -(x1 - x0) * (y1 - y0), min(order[id(u)] for u in block))
 
     down: list[Box] = []
     for block in sorted(blocks, key=weight):

@@ -89,7 +89,7 @@ from scenewright.analysis.parser.model import ParsedObject, ParsedRelation, Pars
 from scenewright.analysis.parser.phrases import relation_phrases
 from scenewright.analysis.parser.reader import _Reader
 from scenewright.analysis.parser.style import GROUND_KINDS, _is_indoor, detect_ground, detect_style
-from scenewright.analysis.parser.support import _infer_support, repair_supports
+from scenewright.analysis.parser.support import _infer_support, fit_on_hosts, repair_supports
 
 __all__ = [
     "GROUND_KINDS", "ParsedObject", "ParsedRelation", "ParsedScene",
@@ -110,12 +110,14 @@ def parse_scene(text: str) -> ParsedScene:
     objects = [
         ParsedObject(
             i, g.category, g.name, g.description, g.size, g.index, g.guessed, g.rests,
-            reader.anchors.get(g.index), reader.formations.get(g.index),
+            reader.anchors.get(g.index), reader.formations.get(g.index), reader.lines.get(g.index),
         )
         for g in reader.groups
         for i in g.ids
     ]
-    stated, repairs = repair_supports(objects, _acyclic(_expand(reader), [o.id for o in objects]), catalogue)
+    expanded = _acyclic(_expand(reader), [o.id for o in objects])
+    objects = fit_on_hosts(objects, expanded, catalogue, {i for g in reader.groups if g.sized for i in g.ids})
+    stated, repairs = repair_supports(objects, expanded, catalogue)
     inferred = _infer_support(objects, stated, catalogue)
     relations = _acyclic(stated + inferred, [o.id for o in objects])
     indoor = _is_indoor([o.category for o in objects], text, catalogue, reader.places)

@@ -90,22 +90,13 @@ def _between(reader: _Reader, src: _Group, a: str, b: str) -> list[ParsedRelatio
     return out
 
 
-def _formations(reader: _Reader) -> list[ParsedRelation]:
-    """"Crates stacked": each on the one below. A row or a circle states no side, so it stays the
-    objects' ``formation`` for the arranger rather than a relation."""
-    out: list[ParsedRelation] = []
-    for g, formation in reader.formations.items():
-        ids = reader.groups[g].ids
-        if formation == "stack":
-            out += [ParsedRelation(ids[i], "on", ids[i - 1]) for i in range(1, len(ids))]
-    return out
-
-
 def _expand(reader: _Reader) -> list[ParsedRelation]:
+    """Group relations as object relations. A stack stands where its bottom stands: the others
+    only rest on the one below, which the composition writes from the ``stack`` formation (one
+    thing said once, not relations the text states between its members)."""
     out = _expand_relations(reader)
-    # a stack stands where its bottom stands: the rest only rest on the one below
     upper = {i for g, f in reader.formations.items() if f == "stack" for i in reader.groups[g].ids[1:]}
-    return _formations(reader) + [r for r in out if r.source not in upper]
+    return [r for r in out if r.source not in upper]
 
 
 def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
@@ -134,6 +125,9 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
             continue
         if instance is not None:
             tgt = replace(tgt, ids=[tgt.ids[instance]])
+        elif kind in ("left of", "right of") and reader.formations.get(t) == "row" and len(src.ids) < len(tgt.ids):
+            # "a change machine to the right of them" (a row): beside the row's end, not its first
+            tgt = replace(tgt, ids=[tgt.ids[-1] if kind == "right of" else tgt.ids[0]])
         pairs = _instance_pairs(src, tgt, paired)
         if kind == "opposite":
             for a, b in pairs:

@@ -26,8 +26,11 @@ class ParsedObject:
     #: The part of the room the text puts it in with no object to relate to: ``wall``,
     #: ``corner``, ``centre``, ``back`` or ``front`` ("a sofa against the wall").
     anchor: str | None = None
-    #: The formation its group stands in: ``row``, ``stack`` or ``circle`` ("three stalls in a row").
+    #: The formation its group stands in: ``row``, ``rows``, ``stack`` or ``circle`` ("three stalls
+    #: in a row", "ten chairs in two rows"); the composition sets it out.
     formation: str | None = None
+    #: How many rows a ``rows`` formation has, when the text says ("in two rows", "three rows of desks").
+    formation_lines: int | None = None
 
 
 @dataclass(frozen=True)

@@ -57,6 +57,8 @@ class _Group:
     rests: str = "ground"
     #: Read through the open vocabulary, not the catalogue.
     guessed: bool = False
+    #: The text states its size ("a 3 m tall statue"): no rule resizes it.
+    sized: bool = False
 
 
 @lru_cache(maxsize=1)
@@ -144,11 +146,12 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         # one is the subject of a verb that looks like a noun ("pylons guard the altar")
         if nxt and nxt[0] == e and singular(words[-1]) == words[-1]:
             last = toks[nxt[1] - 1].text
-            if nxt[3] is not None and singular(last) != last:  # "a knight guards the gate": a verb
+            if singular(last) != last and _plural_is_verb(toks, s, nxt):  # "a knight guards the gate": a verb
                 raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])
                 nxt = None
         if nxt and nxt[0] == e and singular(words[-1]) == words[-1]:
-            if not (nxt[3] is not None and entry is None and nxt[1] - nxt[0] == 1 and toks[nxt[0]].text in _KIND_WORDS):
+            kind_word = nxt[1] - nxt[0] == 1 and singular(toks[nxt[0]].text) in _KIND_WORDS
+            if not (nxt[3] is not None and entry is None and kind_word):
                 modifier += words
                 continue
             raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])  # "a chalkboard menu board": the board is the menu board
@@ -156,9 +159,15 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         if s == e:
             continue
         kind, modifier = modifier, []
+        if kind and entry is not None and entry.category == "figure":
+            machine = match_phrase(tuple(kind))
+            if machine is not None and load_catalogue()[machine].shape == "robot":
+                cat, entry = machine, None  # "a robot bartender" is a robot that tends the bar
         if entry is not None and s > 0 and (_is_verb(toks[s - 1].text) or (k > 0 and raw[k - 1][1] == s and not kind)):
             continue  # "two robots stand guard", "fox statues guard the path": a verb here
         follow = toks[e].text if e < n else ""
+        if e < n and toks[e].joined and (toks[e].text in _LIKENESS or toks[e].text.endswith("ing")):
+            continue  # "a mushroom-shaped lamp", "a goldfish-scooping stall": a look or a use, not a thing
         if entry is not None and singular(words[-1]) == words[-1] and _names_kind(toks, e):
             continue  # "a bear face", "a train compartment", "camel-hair tents": a kind, not a thing
         if follow in _VENUES or follow in vocabulary.places or (
@@ -181,6 +190,26 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
     return _alias_mentions(toks, mentions), places
 
 
+#: Words that open an object after a verb: "an astronaut plants a flag", "a knight guards the gate".
+_OBJECT_OPENERS = {"a", "an", "the", "his", "her", "its", "their", "it", "them", "some", "two", "three", "four"}
+
+
+def _plural_is_verb(toks: list[_Tok], s: int, nxt: tuple) -> bool:
+    """Whether the plural noun-like word right after the singular noun at ``s`` is its verb
+    ("an astronaut plants a flag") rather than the head of a compound ("two habitat domes
+    stand", "three fuel tanks"): an object follows it, or (for the open vocabulary) nothing
+    says it is a noun — a plural count before, or a verb after."""
+    end = nxt[1]
+    follow = toks[end].text if end < len(toks) else ""
+    if follow in _OBJECT_OPENERS or follow in _NUMBERS:
+        return True
+    if _counted_plural(toks, s) or _is_verb(follow) or follow in _FINITE:
+        return False
+    return nxt[3] is not None
+
+
+#: Words that make the noun hyphened before them a look ("mushroom-shaped", "star-patterned").
+_LIKENESS = {"shaped", "like", "style", "styled", "themed", "sized", "patterned", "print", "printed", "inspired"}
 #: Vocabulary words that only restate what the catalogue noun before them is ("a menu board").
 _KIND_WORDS = {"board", "panel", "screen", "machine", "device", "unit", "box", "container", "tool", "vehicle",
                "structure", "apparatus", "console", "gadget", "station", "post", "pole", "platform"}  # fmt: skip
@@ -217,7 +246,9 @@ _INSIDE = {"in", "inside", "within", "into", "throughout"}
 def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     """A place word used as the setting: "inside a hangar", "a hangar with a spaceship" (when the
     with-part names things), not "a barn stands behind the pond"."""
-    if singular(toks[e - 1].text) not in load_vocabulary().places:
+    places = load_vocabulary().places
+    head = singular(toks[e - 1].text)
+    if head not in places and not (e >= 2 and f"{toks[e - 2].text} {head}" in places):
         return False
     j = s - 1
     while j >= 0 and s - j <= 4 and (toks[j].text in _DETERMINERS or (toks[j].text not in _STOP and toks[j].text[:1].isalpha())):
@@ -383,7 +414,7 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             break
         if w == "of" and j > 0 and toks[j - 1].text in _QUANTITY:
             q = toks[j - 1].text
-            small = load_catalogue()[m.category].rests == "surface"
+            small = (m.guess.rests if m.guess is not None else load_catalogue()[m.category].rests) == "surface"
             count = 1 if q in ("stack", "pile") and small else _QUANTITY[q]
             counted = q in ("pair", "couple", "dozen")
             k = j - 2

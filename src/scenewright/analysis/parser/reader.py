@@ -19,7 +19,7 @@ from scenewright.analysis.parser.nouns import (
 from scenewright.analysis.parser.phrases import _Rel, _find_relations
 from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
 from scenewright.analysis.parser.tokens import _split, _tokenise
-from scenewright.analysis.parser.vocabulary import load_vocabulary, scaled
+from scenewright.analysis.parser.vocabulary import load_vocabulary, scaled, stretched
 from scenewright.analysis.parser.words import (
     _ADVERBS,
     _CONTENT_HEADS,
@@ -29,6 +29,7 @@ from scenewright.analysis.parser.words import (
     _HOLD,
     _HOLD_PAIRS,
     _NUMBERS,
+    _FINITE,
     _ORDINALS,
     _OWNER_PRONOUNS,
     _OWN_PLACE,
@@ -69,7 +70,10 @@ class _Clause:
 
 
 #: Phrases that place a group in a formation rather than by a target.
-_FORMATIONS = ("row", "stack", "circle")
+_FORMATIONS = ("row", "rows", "stack", "circle")
+#: Quantity nouns that set their things out in a formation ("a row of stalls", "two rows of chairs").
+_FORMATION_NOUNS = {"row": "row", "line": "row", "rows": "rows", "lines": "rows", "stack": "stack",
+                    "ring": "circle", "circle": "circle"}  # fmt: skip
 #: Phrase kinds that, with no object after them, name a part of the room ("along the back wall").
 _PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None, "foot of": None, "at": None}
 #: Phrase kinds read as one of the scene's relations whatever they join.
@@ -77,6 +81,29 @@ _KIND_RELATION = {"left": "left of", "right": "right of", "flank elliptic": "fla
                   "leaning on": "side of", "along": "side of"}  # fmt: skip
 #: Seat shapes: what is "at" a desk or a table faces it from the front.
 _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
+
+#: After these, a phrase right after the target places the target: "a lamp on a table left of the
+#: sofa", "astronauts beside a lab bench to the right of the console", "sniffs at a cooler near the truck".
+_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at")
+#: Sides of a thing named by a possessive ("against its side"): the owner places.
+_OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
+#: "Piled with" on a cart or a table is a load of things standing on it when they are this big or
+#: bigger ("a cart piled with suitcases"); smaller ones ("piled with apples") stay its contents.
+_LOADS = {("piled", "with"), ("stacked", "with"), ("heaped", "with")}
+_LOAD_HOSTS = ("cart", "truck", "table", "round_table", "desk", "counter")
+_LOAD_SIZE = 0.3
+#: Flat holders whose "of" things stand on them as objects ("a tray of bottles", "a pallet of tires").
+_FLAT_HOLDERS = ("plate", "pallet")
+#: Shapes that hold what they hold inside, out of the layout ("a greenhouse holds tomato plants").
+_ENCLOSURES = ("house", "building", "tent", "kiosk")
+#: What a thing is mounted on as a part of it ("lanterns on tall poles").
+_MOUNTS = ("pole", "stick", "mast", "stake", "spike")
+#: Verbs that join a subject to what it is, not to a thing it acts on.
+_COPULAS = ("is", "are", "was", "were", "be", "has", "have", "had", "seems", "looks")
+#: Pronouns that name a person or an animal.
+_PERSONAL = ("him", "her", "himself", "herself")
+#: Categories and shapes of living things ("him", "her" name one of them).
+_LIVING = frozenset({"figure", "animal", "bird", "robot"})
 
 #: No phrase makes more objects than this ("a million chairs"): the object limit then refuses the text.
 MAX_COUNT = 10_000
@@ -102,6 +129,8 @@ class _Reader:
         self.anchors: dict[int, str] = {}
         #: Group → the formation its members stand in (row, stack, circle).
         self.formations: dict[int, str] = {}
+        #: Group → how many rows its ``rows`` formation has ("in two rows").
+        self.lines: dict[int, int] = {}
 
     # ---- groups
 
@@ -126,14 +155,32 @@ class _Reader:
             describing = describing[:-1]
         name = " ".join([*kind, name])
         description = " ".join([*describing, name, *m.post]).strip()
-        base = scaled(m.guess.size, describing) if m.guess is not None else cat.size
+        base = stretched(scaled(m.guess.size, describing) if m.guess is not None else cat.size, describing)
         size = _apply_sizes(base, sizes) if sizes else base
         rests = m.guess.rests if m.guess is not None else cat.rests
         count = min(max(1, m.count), MAX_COUNT)
         g = _Group(len(self.groups), m.category, count, name, description, size, rests=rests)
         g.guessed = m.guess is not None
+        g.sized = bool(sizes)
         self.groups.append(g)
+        self._formation_before(m, g)
         return g.index
+
+    def _formation_before(self, m: _Mention, g: _Group) -> None:
+        """"Two rows of chairs", "a stack of crates", "a ring of stones": the formation the
+        quantity noun before "of" names (a stack of small things is one thing, no formation)."""
+        j = m.start - 1 - len(m.adjectives)
+        if j < 1 or self.toks[j].text != "of" or g.count < 2:
+            return
+        formation = _FORMATION_NOUNS.get(self.toks[j - 1].text)
+        if formation is None:
+            return
+        count = _NUMBERS.get(self.toks[j - 2].text) if j >= 2 else None
+        if formation == "rows" and count == 1:
+            formation = "row"
+        self.formations.setdefault(g.index, formation)
+        if formation == "rows" and count:
+            self.lines.setdefault(g.index, count)
 
     def _resolve(self, m: _Mention, sizes: list[tuple[str, float]]) -> int:
         """A definite mention of something already present refers to it (by category, else by
@@ -178,6 +225,8 @@ class _Reader:
         for m in mentions:
             _read_count(toks, m, prev_end)
             prev_end = m.end
+        #: (mention start, holder mention start): "a tray of bottles" puts the bottles on the tray.
+        self.held_of: list[tuple[int, int]] = []
         self._mark_contents(mentions)
         self.size_of: dict[int, list[tuple[str, float]]] = {}
         for s, e, dim, value in _read_sizes(toks):
@@ -227,6 +276,10 @@ class _Reader:
                 if c.main_groups:
                     prev_subject = c.main_groups[:1] if not c.main else c.main
                 self.history.extend(c.groups)
+        by_start = {m.start: m for m in mentions}
+        held = [("on", by_start[s].group, by_start[h].group, None) for s, h in self.held_of
+                if by_start[s].group >= 0 and by_start[h].group >= 0]  # fmt: skip
+        self.relations[:0] = held  # before any other support the list gave them
 
     def _read_looks(self, mentions: list[_Mention]) -> None:
         """Each noun's look written after it; a catalogue noun inside a "made of" look is its
@@ -255,6 +308,9 @@ class _Reader:
             while j >= 0 and (toks[j].text in _DETERMINERS or toks[j].text in _NUMBERS or (
                 toks[j].text not in _STOP and toks[j].text[0].isalnum())) and m.start - j < 5:  # fmt: skip
                 j -= 1
+            if prev is not None and self._held_inside(m, prev):
+                m.content = chain = True
+                continue
             if j < 1 or prev is None:
                 chain = False
                 continue
@@ -265,15 +321,32 @@ class _Reader:
             m.content = content
             chain = content
 
+    def _size(self, m: _Mention) -> tuple[float, float, float]:
+        return m.guess.size if m.guess is not None else self.catalogue[m.category].size
+
+    def _held_inside(self, m: _Mention, prev: _Mention) -> bool:
+        """"A greenhouse holds tomato plants": what a building or a tent holds is inside it, its
+        contents rather than things of the layout."""
+        gap = [t.text for t in self.toks[prev.end : m.start]]
+        return bool(gap) and gap[0] in _HOLD and len(gap) <= 4 and self.catalogue[prev.category].shape in _ENCLOSURES
+
     def _is_content(self, m: _Mention, prev: _Mention, j: int) -> bool:
         w = self.toks[j].text
-        if (self.toks[j - 1].text, w) in _CONTENT_MARKERS and j - prev.end <= 2:
+        marker = (self.toks[j - 1].text, w)
+        if marker in _LOADS and self.catalogue[prev.category].shape in _LOAD_HOSTS and max(self._size(m)) >= _LOAD_SIZE:
+            return False  # "a luggage cart piled with suitcases": they stand on the cart
+        if marker in _CONTENT_MARKERS and j - prev.end <= 2:
             return True  # "a bowl full of apples"
         if self._listed_content(m.start):
             return True  # "crates overflow with apples, pumpkins and carrots"
+        if w == "of" and prev.end == j and prev.category in _FLAT_HOLDERS and not m.definite:
+            self.held_of.append((m.start, prev.start))  # "a tray of medicine bottles": bottles on the tray
+            return False
         holder = prev.category in _CONTENT_HEADS or prev.category in ("container", "tool")
         if w == "of" and prev.end == j and holder and not m.definite:
-            return True  # "a vase of tulips", "a statue of a horse", "a tray of medicine bottles"
+            return True  # "a vase of tulips", "a statue of a horse", "a box of tools"
+        if w == "on" and j - prev.end <= 2 and singular(m.phrase.split()[-1].lower()) in _MOUNTS:
+            return True  # "a windsock on a tall pole", "a flag flutters on a pole": the pole is its part
         plant = self.catalogue[prev.category].shape in ("potted_plant", "bush", "flower_bed")
         return w == "in" and j - prev.end <= 2 and m.category in ("pot", "planter", "vase") and plant
 
@@ -358,7 +431,9 @@ class _Reader:
                 g = self._resolve(m, self.size_of.get(m.start, []))
                 return ([g] if g >= 0 else None), m.end
             w = toks[j].text
-            if w in ("it", "them", "itself", "themselves", "him", "her"):
+            if w in ("it", "them", "itself", "themselves", "him", "her", "himself", "herself") and not (
+                w == "her" and j + 1 in self.by_start
+            ):  # "beside her dog": a possessive, the dog is the target
                 return w, j + 1
             if w in ("each", "one") and j + 1 < ce and toks[j + 1].text in ("other", "another"):
                 return "each other", j + 2
@@ -375,12 +450,19 @@ class _Reader:
         owner = _OWNER_PRONOUNS.get(toks[pos].text) if pos < ce else None
         if owner and j > pos + 1:
             return owner, j  # "above its door": a part of its owner places by the owner itself
+        if owner and pos + 1 < ce and toks[pos + 1].text in _OWNER_PARTS:
+            return owner, pos + 2  # "piled against its side": by the owner
         return None, pos
 
     def _pronoun(self, word: str, c: _Clause, srcs: list[int], prefer: list[int]) -> list[int]:
         """The group "it" / "them" names: the subject before (when this clause has its own) or
         the latest earlier mention, of the right number."""
         plural = word in ("them", "themselves")
+        # "a fish stall and a noodle stall face each other, and a girl stands between them": two
+        # single things of this clause, or of the subject before, are "them"
+        for pair in ([g for g in c.groups if g not in srcs], [g for g in prefer if g not in srcs]):
+            if plural and len(pair) >= 2 and all(self.groups[g].count == 1 for g in pair):
+                return pair[-2:]
         recent = [g for g in [*prefer, *reversed(self.history), *reversed(c.groups)] if g not in srcs]
         # a thing on the floor is not placed by a small thing on a table ("a nightstand with a lamp
         # on it. A rug lies in front of it": the nightstand)
@@ -397,6 +479,13 @@ class _Reader:
         k = cs
         while k < ce and toks[k].text in ("and", "or", "but", "then", "also", "so", "there", "is", "are"):
             k += 1
+        one_a_side = k + 1 < ce and toks[k].text == "one" and k + 1 in self.rel_at
+        if one_a_side and self.rel_at[k + 1].kind.startswith("flank"):
+            # "two speakers on the desk, one on each side of the console": the speakers flank it
+            plural = [g for g in [*self.history, *c.groups] if self.groups[g].count > 1]
+            if plural:
+                c.main = plural[-1:]
+                k += 1
         j = k
         # an adverb that opens a relation phrase is part of it ("Far from the house, ...")
         while j < ce and j not in self.rel_at and (toks[j].text in _DETERMINERS or toks[j].text in _ADVERBS):
@@ -418,6 +507,12 @@ class _Reader:
                 k += 1
                 continue
             if w == "with" or w in _HOLD or (w, nxt) in _HOLD_PAIRS or w in ("has", "have"):
+                if w in _HOLD and w.endswith("ing") and c.head is not None and c.wsub:
+                    # "with a small table beside them holding a teapot": the with-thing holds it
+                    c.head, c.wsub, c.hold, c.expect_new = list(c.wsub[-1:]), [], True, False
+                    k += 1
+                    last_event_end = k
+                    continue
                 c.head = [c.each] if c.each is not None else (c.main or list(prev_subject))
                 if w == "with" and c.last_target and c.last_target_end == k and self._animate(*c.head):
                     c.head = list(c.last_target)  # "a baker stands behind the counter with a tray on it"
@@ -447,7 +542,11 @@ class _Reader:
                     c.wsub = [g] if (c.expect_new or closed) else [*c.wsub, g]
                 else:
                     c.main_groups.append(g)
-                    c.main = [g] if c.expect_new else [*c.main, g]
+                    # "an astronaut plants a flag next to it": the verb's object takes what follows,
+                    # unless a person holds it ("a man reads a newspaper on the bench": he is on it)
+                    verb_object = self._object_of_verb(c, last_event_end, m.start)
+                    if not (verb_object and self._living(c.main[-1]) and self._small(g) and not c.expect_new):
+                        c.main = [g] if c.expect_new or verb_object else [*c.main, g]
                     if not c.verb_seen:
                         c.subjects.append(g)
                 c.expect_new = False
@@ -460,6 +559,28 @@ class _Reader:
                 continue
             k += 1
         self._close_with(c)
+
+    def _object_of_verb(self, c: _Clause, start: int, end: int) -> bool:
+        """Whether the noun at ``end`` is the object of a verb that follows the clause's subject
+        ("a porter pushes a cart", "an astronaut plants a flag"): a verb, and no list word, lies
+        between them."""
+        if not c.main:
+            return False
+        gap = [t.text for t in self.toks[start:end]]
+        if any(w in ("and", "or", ",", "with", "while") for w in gap):
+            return False
+        return any(_is_verb(w) and w not in _COPULAS for w in gap)
+
+    def _person(self, c: _Clause, srcs: list[int]) -> list[int]:
+        """Whom "him" / "her" names: the clause's own living subject, else the latest living
+        thing mentioned before."""
+        order = [*c.subjects, *c.main_groups, *reversed(c.groups), *reversed(self.history)]
+        return next(([g] for g in order if g not in srcs and self._living(g)), [])
+
+    def _living(self, g: int) -> bool:
+        """A person or an animal (catalogue dogs and horses too, guessed figures and animals)."""
+        category = self.groups[g].category
+        return category in _LIVING or self.catalogue[category].shape in _LIVING
 
     def _animate(self, *groups: int) -> bool:
         """People and animals: what comes "with" right after their target belongs to the target."""
@@ -493,7 +614,7 @@ class _Reader:
         # sources: the noun the phrase follows when nothing but adverbs lies between
         srcs: list[int]
         # "a globe on a side table to the right of the desk", "chairs around a table left of the sofa"
-        chained = (c.last_kind in ("on", "on top", "near", "around") or kind in ("on", "on top")) and kind not in (
+        chained = (c.last_kind in _CHAIN_KINDS or kind in ("on", "on top")) and kind not in (
             "face to", "flank", "around", "no relation"
         )  # fmt: skip
         if chained and isinstance(target, list) and target and c.last_target:
@@ -507,6 +628,7 @@ class _Reader:
                 _is_verb(toks[k].text)
                 for k in range(last_event_end, rel.start)
                 if k not in self.content_at and toks[k - 1].text != "of"
+                and (k - 1 not in self.content_at or toks[k].text in _FINITE)
             )
             if c.wsub and not closed and not c.expect_new:
                 srcs = list(c.wsub)
@@ -518,14 +640,22 @@ class _Reader:
                 c.head, c.wsub = None, []
         else:
             srcs = list(c.main)
+        if kind == "no relation" and c.head is not None and toks[rel.start].text.startswith(("toward", "heading")):
+            # "a forklift carries a pallet toward the rack": the with-part ends, the rack is no load
+            self._close_with(c)
+            c.head, c.wsub, c.expect_new = None, [], True
+            return end
         if kind == "no relation" or (kind == "stack" and end < ce and toks[end].text == "with"):
             return end  # "a shelf stacked with books": contents, no stack
         if kind in _FORMATIONS or kind.startswith("anchor ") or (target is None and kind in _PLACE_KINDS):
             # "three stalls stand in a row", "a sofa against the wall", "a rug in the middle of the room"
             place = _PLACE_KINDS.get(kind) or self._anchor_after(rel.end, ce) if not kind.startswith("anchor ") else kind
+            lines = next((_NUMBERS[t.text] for t in toks[rel.start : rel.end] if t.text in _NUMBERS), None)
             for g in srcs or ([] if c.first else list(prev_subject)):
                 if kind in _FORMATIONS:
-                    self.formations.setdefault(g, kind)
+                    self.formations.setdefault(g, "row" if kind == "rows" and lines == 1 else kind)
+                    if kind == "rows" and lines:
+                        self.lines.setdefault(g, lines)
                 elif place:
                     self.anchors.setdefault(g, place.removeprefix("anchor "))
             return end
@@ -539,10 +669,19 @@ class _Reader:
             targets = self._pronoun("them", c, srcs, list(c.last_target))
             if targets:
                 self._per_each([s for s in srcs if s in c.groups], targets[0])
+        elif target in _PERSONAL:
+            # "a pirate stands behind the chest with a shovel beside him": the person, not the chest
+            targets = self._person(c, srcs)
         elif isinstance(target, str) and target != "each other":
             # "a bench in front of the swing, facing it": the clause's own last target first.
-            prefer = list(c.last_target) or (list(prev_subject) if c.main and srcs == c.main else [])
+            # then the subject before ("a wagon waits behind the fountain, and a donkey is tied to
+            # a post next to it": the wagon)
+            own_subject = list(prev_subject) if c.main and srcs == c.main else []
+            prefer = [*c.last_target, *prev_subject] if c.last_target else own_subject
             targets: list[int] | str = self._pronoun(target, c, srcs, prefer) if c.head is None else list(c.head)
+            if c.head is not None and all(self._living(h) for h in c.head):
+                # "a man on the bench, with his terrier asleep under it": "it" is no person
+                targets = self._pronoun(target, c, srcs + c.head, prefer)
             if c.head is not None and srcs == c.head:
                 targets = self._pronoun(target, c, srcs, prefer)
             elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
@@ -593,8 +732,13 @@ class _Reader:
             return end
         hang = kind == "hanging from" or any(t.text in _HANG_VERBS for t in toks[max(0, rel.start - 3) : rel.start])
         if targets == "each other":
+            each_other = "face to" if kind == "face to" else "near"
             for s in srcs:
-                self.relations.append(("face to" if kind == "face to" else "near", s, s, None))
+                self.relations.append((each_other, s, s, None))
+            if len(srcs) == 2:  # "a goldfish stall and a takoyaki stall face each other": two groups
+                self._relate(each_other, srcs[1:], srcs[0])
+                if each_other == "face to":
+                    self._relate(each_other, srcs[:1], srcs[1])
             c.produced = True
             return end
         assert isinstance(targets, list)

@@ -43,46 +43,68 @@ def detect_style(text: str, default: str = DEFAULT_STYLE) -> str:
     return best[2] if best else default
 
 
-_GROUND_WORDS = [
-    ("metal deck", ("metal deck", "metal floor", "steel deck", "landing pad", "spaceport", "space station",
-                    "spaceship deck", "metal grating", "starship", "platform deck", "metal plating")),
+#: Words for the ground itself, anywhere in the text: they name the floor ("a tiled floor", "on the sand").
+_GROUND_MATERIALS = [
+    ("metal deck", ("metal deck", "metal floor", "steel deck", "metal grating", "metal plating", "platform deck",
+                    "spaceship deck")),
     ("cobblestone", ("cobblestone", "cobblestones", "cobbled", "cobble")),
     ("gravel", ("gravel",)),
     ("snow", ("snow", "snowy", "snow covered", "frozen", "icy", "winter")),
-    ("sand", ("sand", "sandy", "beach", "desert", "dunes", "dune", "oasis")),
-    ("rubber", ("rubber ground", "rubber floor", "rubber mat", "rubber flooring", "gym floor", "gym")),
+    ("sand", ("sand", "sandy", "dunes", "dune")),
+    ("rubber", ("rubber ground", "rubber floor", "rubber mat", "rubber flooring", "gym floor")),
     ("marble", ("marble floor", "marble floors", "marble tiles", "marble flooring")),
-    ("tiles", ("tile", "tiles", "tiled", "bathroom", "kitchen", "laboratory", "lab", "spa")),
-    ("carpet", ("carpeted", "wall to wall carpet", "carpet floor", "bedroom", "nursery", "office", "conference")),
-    ("asphalt", ("asphalt", "tarmac", "road", "street", "alley", "alleyway", "parking", "highway", "city", "gas station")),
-    ("concrete", ("concrete", "pavement", "sidewalk", "station", "platform", "warehouse", "garage", "industrial",
-                  "dock", "harbour", "harbor", "pier", "hangar", "factory floor")),
-    ("wood floor", ("wooden floor", "wood floor", "hardwood", "parquet", "floorboards", "wooden deck",
-                    "plank", "room", "house", "cabin", "studio", "apartment", "cafe", "café", "bistro",
-                    "restaurant", "shop", "store", "boutique", "hall")),
-    ("stone", ("stone floor", "flagstone", "flagstones", "paved", "plaza", "courtyard", "castle", "temple")),
-    ("dirt", ("dirt", "mud", "muddy", "soil", "farm", "farmyard", "barnyard", "stable yard", "paddock", "dusty", "village", "campsite", "orchard", "trail",
-              "planet", "rocky", "crater", "martian", "wasteland")),
-    ("grass", ("grass", "grassy", "lawn", "meadow", "park", "garden", "field", "backyard", "yard", "forest")),
+    ("tiles", ("tile", "tiles", "tiled")),
+    ("carpet", ("carpeted", "wall to wall carpet", "carpet floor")),
+    ("asphalt", ("asphalt", "tarmac")),
+    ("concrete", ("concrete",)),
+    ("wood floor", ("wooden floor", "wood floor", "hardwood", "parquet", "floorboards", "wooden deck", "plank")),
+    ("stone", ("stone floor", "flagstone", "flagstones", "paved")),
+    ("dirt", ("dirt", "mud", "muddy", "soil")),
+    ("grass", ("grass", "grassy", "lawn")),
+]
+#: Words for places, and the ground each has: the setting's own word decides (the first one the
+#: description names, its opening sentence first), so "a savannah enclosure at a city zoo" is
+#: dirt, not the city's asphalt, and a landing pad further on does not floor a construction site.
+_GROUND_PLACES = [
+    ("metal deck", ("landing pad", "spaceport", "space station", "starship", "spaceship", "space ship")),
+    ("sand", ("beach", "desert", "oasis")),
+    ("rubber", ("gym",)),
+    ("tiles", ("bathroom", "kitchen", "laboratory", "lab", "spa", "laundromat", "hospital", "clinic", "pharmacy")),
+    ("carpet", ("bedroom", "nursery", "office", "conference")),
+    ("asphalt", ("road", "street", "alley", "alleyway", "parking", "highway", "city", "gas station")),
+    ("concrete", ("pavement", "sidewalk", "station", "platform", "warehouse", "garage", "industrial", "dock", "harbour",
+                  "harbor", "pier", "hangar", "factory floor", "factory", "rooftop", "roof")),
+    ("wood floor", ("room", "house", "cabin", "studio", "apartment", "cafe", "café", "bistro", "restaurant", "shop",
+                    "store", "boutique", "hall", "bakery", "tavern", "attic")),
+    ("stone", ("plaza", "courtyard", "castle", "temple", "cave", "cavern", "dungeon", "crypt", "smithy", "forge")),
+    ("dirt", ("farm", "farmyard", "barnyard", "stable yard", "paddock", "dusty", "village", "campsite", "orchard",
+              "trail", "planet", "rocky", "crater", "martian", "mars", "wasteland", "savannah", "savanna",
+              "construction site", "building site", "quarry", "enclosure", "ranch", "arena")),
+    ("grass", ("meadow", "park", "garden", "field", "backyard", "yard", "forest", "zoo", "airfield", "clearing",
+               "glade", "wedding", "picnic", "golf")),
 ]
 
 
 def detect_ground(text: str, indoor: bool) -> str:
-    """A ground kind from :data:`GROUND_KINDS`: an explicit floor word, else the place's word,
-    else wood floor indoors and grass outdoors."""
+    """A ground kind from :data:`GROUND_KINDS`: a word for the ground itself, else the setting's
+    place word (the first one named, the opening sentence first), else wood floor indoors and
+    grass outdoors."""
+    sentences = re.split(r"[.!?]", text.lower())
     low = " " + " ".join(re.findall(r"[a-zé]+", text.lower())) + " "
-    best: tuple[int, int, str] | None = None
-    for rank, (kind, words) in enumerate(_GROUND_WORDS):
-        for w in words:
-            pos = low.find(" " + w + " ")
-            if pos >= 0:
-                # Material words ("cobblestones", "tiles") outrank place words ("kitchen", "park").
-                explicit = 0 if rank < 7 or " " in w or w in ("tile", "tiles", "tiled", "concrete", "asphalt", "grass") else 1
-                key = (explicit, rank, kind)
+    opening = len(" " + " ".join(re.findall(r"[a-zé]+", sentences[0])) + " ") if sentences else 0
+    best: tuple[int, int, int, str] | None = None
+    for explicit, table in ((0, _GROUND_MATERIALS), (1, _GROUND_PLACES)):
+        for rank, (kind, words) in enumerate(table):
+            for w in words:
+                pos = low.find(" " + w + " ")
+                if pos < 0:
+                    continue
+                # materials by their order of precedence; places by where the text names them
+                key = (explicit, rank, pos, kind) if explicit == 0 else (explicit, int(pos >= opening), pos, kind)
                 if best is None or key < best:
                     best = key
     if best is not None:
-        return best[2]
+        return best[3]
     return "wood floor" if indoor else "grass"
 
 

@@ -5,6 +5,7 @@ things above the nearest large object. Marked ``inferred``.
 from __future__ import annotations
 
 from collections import Counter
+from dataclasses import replace
 
 from scenewright.analysis.parser.model import ParsedObject, ParsedRelation
 
@@ -27,7 +28,18 @@ _SUPPORT_PREFERENCE = {
     "radio": ("cabinet", "side_table", "dresser", "desk", "table"),
     "aquarium": ("cabinet", "dresser", "side_table", "counter", "table"),
     "magic_orb": ("pedestal", "altar", "table", "round_table", "desk"),
+    "candle": ("altar", "table", "round_table", "dining_table", "side_table", "nightstand", "fireplace"),
+    "vase": ("table", "side_table", "coffee_table", "round_table", "pedestal", "dresser", "nightstand"),
+    "pot": ("stove", "grill", "fireplace", "counter", "table"),
+    "books": ("desk", "side_table", "coffee_table", "nightstand", "table"),
 }
+#: Hosts anything small may be put on when the text says nothing; other hosts (an altar, a
+#: pedestal, a fireplace, a stove, a pier) only take what names them in its preferences.
+_GENERAL_HOSTS = frozenset({
+    "table", "round_table", "side_table", "coffee_table", "desk", "school_desk", "counter", "nightstand",
+    "dresser", "cabinet", "tv_stand", "lab_bench", "display_case", "picnic_table", "vanity", "filing_cabinet",
+    "control_panel", "dining_table",
+})  # fmt: skip
 
 
 def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation], catalogue) -> list[ParsedRelation]:
@@ -37,16 +49,25 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
     load: Counter[str] = Counter(r.target for r in relations if r.relation == "on")
     extra: list[ParsedRelation] = []
     supports = [o for o in objects if catalogue[o.category].support]
+    beside_ground = _beside_ground(objects, relations, catalogue)
+    # the members of a stack above its first rest on the one below (the composition says so)
+    first_of: dict[int, str] = {}
+    for o in objects:
+        first_of.setdefault(o.group, o.id)
+    stacked = {o.id for o in objects if o.formation == "stack" and first_of[o.group] != o.id}
     for obj in objects:
         rests = obj.rests or catalogue[obj.category].rests
-        if obj.id in placed_vertically:
+        if obj.id in placed_vertically or obj.id in stacked:
             continue
         if rests == "surface":
             prefs = _SUPPORT_PREFERENCE.get(obj.category, ())
             fitting = [
                 s for s in supports
                 if s.id != obj.id and s.size[0] >= obj.size[0] * 0.9 and s.size[1] >= obj.size[1] * 0.9
+                and (s.category in _GENERAL_HOSTS or s.category in prefs)
             ]  # fmt: skip
+            if obj.id in beside_ground:
+                continue  # "a mine cart next to a lantern": the lantern stands on the ground by it
             if not fitting:
                 continue
 
@@ -69,6 +90,32 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
     return extra
 
 
+_HORIZONTAL = ("side of", "near", "left of", "right of", "in front of", "behind")
+
+
+def _beside_ground(objects: list[ParsedObject], relations: list[ParsedRelation], catalogue) -> set[str]:
+    """Things the text sets beside something standing on the ground that holds nothing, a seat
+    aside: those stand on the ground too ("a cart waits next to a lantern")."""
+    by_id = {o.id: o for o in objects}
+
+    def grounded(o: ParsedObject) -> bool:
+        category = catalogue[o.category]
+        rests = o.rests or category.rests
+        return rests == "ground" and not category.support and category.shape not in _SEAT_SHAPES
+
+    out: set[str] = set()
+    for r in relations:
+        if r.relation in _HORIZONTAL and not r.inferred:
+            source, target = by_id[r.source], by_id[r.target]
+            if grounded(target):
+                out.add(source.id)
+            if grounded(source):
+                out.add(target.id)
+    return out
+
+
+_SEAT_SHAPES = ("chair", "armchair", "sofa", "bench", "stool", "office_chair", "bed")
+
 #: Hosts with no top to put things on: people and birds (a horse or a camel can carry a load).
 _NO_TOP = {"figure", "bird", "mannequin", "scarecrow"}
 #: A host this low is ground-like (a rug, a pond, a pallet, a blanket): anything may stand on it.
@@ -80,6 +127,37 @@ _AREA_SLACK, _SIDE_SLACK = 2.0, 1.6
 _FLOOR_FURNITURE = {"sofa", "armchair", "bed", "wardrobe", "bookshelf", "office_chair", "piano", "fridge",
                     "stove", "counter", "desk", "table", "round_table", "coffee_table", "bathtub", "treadmill",
                     "dresser", "tv_stand", "school_desk", "dining_table"}  # fmt: skip
+
+
+#: A floor-standing thing the text puts on a table-like host is its tabletop kind: at most this
+#: share of the host's height ("two speakers on the desk" are desk speakers, not floor ones).
+_ON_TOP_HEIGHT = 0.6
+#: Hosts no taller than this are furniture one puts things on (a desk, a counter, a sideboard).
+_FURNITURE_HEIGHT = 1.3
+
+
+def fit_on_hosts(
+    objects: list[ParsedObject], relations: list[ParsedRelation], catalogue, fixed: set[str]
+) -> list[ParsedObject]:
+    """Objects with every floor-standing thing stated ``on`` a general host scaled down to a
+    tabletop size (its proportions kept); sizes the text states (``fixed``) stay."""
+    by_id = {o.id: o for o in objects}
+    scale: dict[str, float] = {}
+    for r in relations:
+        if r.relation != "on" or r.source in fixed:
+            continue
+        thing, host = by_id[r.source], by_id[r.target]
+        if (thing.rests or catalogue[thing.category].rests) != "ground" or host.category not in _GENERAL_HOSTS:
+            continue
+        if host.size[2] > _FURNITURE_HEIGHT or thing.category in _FLOOR_FURNITURE:
+            continue
+        limit = _ON_TOP_HEIGHT * host.size[2]
+        if thing.size[2] > limit:
+            scale[thing.id] = min(scale.get(thing.id, 1.0), limit / thing.size[2])
+    return [
+        replace(o, size=tuple(round(v * scale[o.id], 4) for v in o.size)) if o.id in scale else o  # type: ignore[misc]
+        for o in objects
+    ]
 
 
 def can_hold(host: ParsedObject, thing: ParsedObject, catalogue) -> bool:

@@ -40,6 +40,8 @@ class Vocabulary:
     places: frozenset[str]
     adjectives: frozenset[str]
     size_words: dict[str, float]
+    #: Words that stretch one side of any thing ("a long desk" is wider): x, y, z factors.
+    shape_words: dict[str, tuple[float, float, float]]
     suffixes: tuple[tuple[str, str], ...]
     longest: int
     #: Phrases that beat the catalogue noun they end with ("arcade cabinet").
@@ -110,6 +112,7 @@ def _validate(raw: dict) -> Vocabulary:
         places=frozenset(lists["places"]),
         adjectives=frozenset(raw["adjectives"]),
         size_words={k: float(v) for k, v in raw["size_words"].items()},
+        shape_words={k: (float(v[0]), float(v[1]), float(v[2])) for k, v in raw.get("shape_words", {}).items()},
         suffixes=tuple(sorted(raw["suffixes"].items(), key=lambda kv: -len(kv[0]))),
         longest=max(len(k) for k in entries),
         overrides=frozenset(tuple(words(p)) for p in raw.get("over_catalogue", ())),
@@ -130,3 +133,14 @@ def scaled(size: tuple[float, float, float], adjectives: list[str]) -> tuple[flo
     for adjective in adjectives:
         factor *= table.get(adjective.lower(), 1.0)
     return (round(size[0] * factor, 4), round(size[1] * factor, 4), round(size[2] * factor, 4))
+
+
+def stretched(size: tuple[float, float, float], adjectives: list[str]) -> tuple[float, float, float]:
+    """``size`` with the sides the shape words among ``adjectives`` stretch ("a long table" is
+    wider than a table; "wide" too, "narrow" the other way)."""
+    x, y, z = size
+    table = load_vocabulary().shape_words
+    for adjective in adjectives:
+        fx, fy, fz = table.get(adjective.lower(), (1.0, 1.0, 1.0))
+        x, y, z = x * fx, y * fy, z * fz
+    return (round(x, 4), round(y, 4), round(z, 4))

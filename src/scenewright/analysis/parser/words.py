@@ -64,7 +64,8 @@ _FINITE = {"is", "are", "was", "were", "has", "have", "had", "stand", "sit", "li
 _ADVERBS = {"just", "right", "directly", "all", "both", "neatly", "slightly", "also", "then", "only", "far", "well"}
 _HOLD = {"holds", "hold", "holding", "carries", "carry", "carrying", "supports", "support", "supporting",
          "bears", "bearing", "displays", "displaying"}  # fmt: skip
-_HOLD_PAIRS = {("loaded", "with"), ("topped", "with"), ("set", "with"), ("laid", "with"), ("decorated", "with")}
+_HOLD_PAIRS = {("loaded", "with"), ("topped", "with"), ("set", "with"), ("laid", "with"), ("decorated", "with"),
+               ("piled", "with"), ("stacked", "with"), ("heaped", "with")}  # fmt: skip
 #: Words that start a with-thing's own placing ("with a till at one end and a computer ...").
 _OWN_PLACE = {"at", "in", "along", "against", "under", "inside"}
 #: Possessives whose noun, when no object, is a part of what the pronoun names ("its door").

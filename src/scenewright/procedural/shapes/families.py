@@ -49,6 +49,8 @@ FAMILY_WORDS: dict[str, tuple[str, ...]] = {
     "tank": (
         "tank", "fuel tank", "oil tank", "gas tank", "water tank", "propane tank", "tanker", "silo", "grain silo", "water tower",
         "boiler", "water heater", "cauldron", "cistern", "vat", "aquarium", "fish tank", "terrarium", "gas cylinder",
+        # a barrel lying on its mount: a cannon's shape, not a car's
+        "cannon", "howitzer", "mortar",
     ),
     "structure": (
         "ferris wheel", "big wheel", "observation wheel", "crane", "tower crane", "carousel", "merry-go-round", "stage",

@@ -1,0 +1,181 @@
+"""Formations the text states for a group: stacks, rows and rings ("three crates stacked",
+"ten chairs in two rows facing the arch", "four lanterns in a circle").
+
+The parser reads a formation as the group's ``formation`` (``stack``, ``row``, ``rows`` with
+``formation_lines`` rows, ``circle``) rather than as relations between its members, since the
+members are one thing said once. Here a stack becomes each member ``on`` the one below (relations
+the solver keeps), and a row or a ring becomes the members' first poses: side by side in as many
+rows as the text says, or evenly round a ring facing its middle. A formation whose members the
+text relates to one target ("facing the arch") is laid out in front of that target and turned
+to it; members that stand alone are set out together and move as one unit from then on. A
+formation is only applied where every relation touching its members still holds at the new
+poses.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import defaultdict
+
+from scenewright.analysis.composition.footprint import GAP
+from scenewright.analysis.composition.units import Layout, Unit
+from scenewright.analysis.parser import ParsedObject, ParsedRelation
+from scenewright.geometry import front_direction, yaw_towards
+
+#: Room between the rows of a formation: a seat's legroom, a walkway between stalls.
+ROW_GAP = 0.6
+#: The smallest ring: four stools "in a circle" still leave a middle to sit round.
+RING_RADIUS = 1.0
+
+
+def members(objects: list[ParsedObject]) -> dict[int, list[ParsedObject]]:
+    """Phrase group → its objects, for groups that stand in a formation with two or more members."""
+    by_group: dict[int, list[ParsedObject]] = defaultdict(list)
+    for o in objects:
+        if o.formation:
+            by_group[o.group].append(o)
+    return {g: objs for g, objs in by_group.items() if len(objs) > 1}
+
+
+def stack_relations(objects: list[ParsedObject]) -> list[ParsedRelation]:
+    """"Three crates stacked": each member on the one below it."""
+    out: list[ParsedRelation] = []
+    for objs in members(objects).values():
+        if objs[0].formation == "stack":
+            out += [ParsedRelation(objs[i].id, "on", objs[i - 1].id, inferred=True) for i in range(1, len(objs))]
+    return out
+
+
+def slots(count: int, lines: int, width: float, depth: float) -> list[tuple[float, float]]:
+    """Centres of ``count`` places ``width`` × ``depth`` in ``lines`` rows, the first row nearest
+    the front (−y), each row centred on x = 0 and the block centred on y = 0."""
+    lines = max(1, min(lines, count))
+    per = math.ceil(count / lines)
+    pitch_x, pitch_y = width + GAP, depth + ROW_GAP
+    out = []
+    for k in range(count):
+        row, col = divmod(k, per)
+        in_row = min(per, count - row * per)
+        out.append(((col - (in_row - 1) / 2) * pitch_x, (row - (lines - 1) / 2) * pitch_y))
+    return out
+
+
+def ring(count: int, width: float, depth: float) -> list[tuple[float, float]]:
+    """Centres of ``count`` places evenly round a ring wide enough for them, centred on the origin."""
+    radius = max(count * (max(width, depth) + GAP) / (2 * math.pi), max(width, depth), RING_RADIUS)
+    turns = [2 * math.pi * k / count for k in range(count)]
+    return [(radius * math.cos(a), radius * math.sin(a)) for a in turns]
+
+
+def arrange(layout: Layout) -> None:
+    """Rows and rings of every group the text puts in one (stacks are relations already)."""
+    for objs in members(layout.objects).values():
+        if objs[0].formation in ("row", "rows", "circle"):
+            _arrange_group(layout, objs)
+
+
+def _arrange_group(layout: Layout, objs: list[ParsedObject]) -> None:
+    ids = [o.id for o in objs]
+    units = [layout.unit_of[i] for i in ids]
+    if not all(layout.on_ground(i) for i in ids):
+        return
+    target = _common_target(layout.relations, ids)
+    distinct = len({id(u) for u in units}) == len(ids)
+    own_units = distinct and all(u.root == i and not u.merged for u, i in zip(units, ids))
+    if own_units:
+        _set_out_units(layout, objs, units)
+    elif len({id(u) for u in units}) == 1 and all(layout.with_load(i) == [i] for i in ids):
+        _set_out_in_unit(layout, objs, target)
+
+
+def _common_target(relations: list[ParsedRelation], ids: list[str]) -> str | None:
+    """What every member faces, if they all face one thing."""
+    faced = {r.target for r in relations if r.source in ids and r.relation == "face to"}
+    facing = {r.source for r in relations if r.source in ids and r.relation == "face to"}
+    return next(iter(faced)) if len(faced) == 1 and facing == set(ids) else None
+
+
+def _place_slots(objs: list[ParsedObject], turned: bool) -> list[tuple[float, float]]:
+    """Formation places for members; each turned on its own (toward a target) takes room for
+    any turn."""
+    width = max(o.size[0] for o in objs)
+    depth = max(o.size[1] for o in objs)
+    if turned:
+        width = depth = max(math.hypot(o.size[0], o.size[1]) for o in objs)
+    if objs[0].formation == "circle":
+        return ring(len(objs), width, depth)
+    return slots(len(objs), _lines(objs[0]), width, depth)
+
+
+def _lines(obj: ParsedObject) -> int:
+    """Rows of a formation: as many as the text says, two for "in rows", else one."""
+    return (obj.formation_lines or 2) if obj.formation == "rows" else 1
+
+
+def _set_out_in_unit(layout: Layout, objs: list[ParsedObject], target: str | None) -> None:
+    """Members that share one unit (they face one target): the formation in front of it, turned to it."""
+    ids = [o.id for o in objs]
+    before = {i: (layout.placed[i].x, layout.placed[i].y, layout.placed[i].yaw) for i in ids}
+    cx = sum(layout.placed[i].x for i in ids) / len(ids)
+    cy = sum(layout.placed[i].y for i in ids) / len(ids)
+    local = _place_slots(objs, turned=target is not None or objs[0].formation == "circle")
+    fx, fy = 0.0, -1.0  # the way the formation's first row looks: toward the viewer
+    if target is not None and objs[0].formation != "circle":
+        t = layout.placed[target]
+        # in front of the target, where it looks (an arch, a stage, a screen face the audience)
+        fx, fy = (-float(v) for v in front_direction(t.yaw))
+        depth = max(y for _, y in local) - min(y for _, y in local) + max(o.size[1] for o in objs)
+        reach = (max(t.w, t.d) + depth) / 2 + GAP + 0.6
+        cx, cy = t.x - fx * reach, t.y - fy * reach
+    rx, ry = -fy, fx
+    for o, (lx, ly) in zip(objs, local):
+        p = layout.placed[o.id]
+        # local −y (the first row) goes toward the target, local x along the rows
+        p.x, p.y = cx + lx * rx - ly * fx, cy + lx * ry - ly * fy
+        if objs[0].formation == "circle":
+            p.turn(round(yaw_towards((p.x, p.y), (cx, cy)), 3))
+        elif target is not None:
+            t = layout.placed[target]
+            p.turn(round(yaw_towards((p.x, p.y), (t.x, t.y)), 3))
+    unit = layout.unit_of[ids[0]]
+    others = [layout.placed[i] for i in unit.ids if i not in ids and layout.placed[i].h >= 0.1]
+    clear = all(not layout.placed[a].overlaps(q) for a in ids for q in others) and all(
+        not layout.placed[a].overlaps(layout.placed[b]) for k, a in enumerate(ids) for b in ids[k + 1 :]
+    )
+    if not (clear and layout.relations_hold(set(ids))):
+        for i, (x, y, yaw) in before.items():
+            layout.placed[i].x, layout.placed[i].y = x, y
+            layout.placed[i].turn(yaw)
+
+
+def _set_out_units(layout: Layout, objs: list[ParsedObject], units: list[Unit]) -> None:
+    """Members that are each their own unit (with whatever rests on them or was joined to them):
+    set out in the formation round the first one's place, then joined into one unit."""
+    boxes = [layout.box(u) for u in units]
+    width = max(b[2] - b[0] for b in boxes)
+    depth = max(b[3] - b[1] for b in boxes)
+    formation = objs[0].formation
+    if formation == "circle":
+        local = ring(len(units), width, depth)
+    elif _lines(objs[0]) == 1:  # one row: each as wide as it is ("six washing machines in a row")
+        widths = [b[2] - b[0] for b in boxes]
+        edges = [sum(widths[:k]) + GAP * k for k in range(len(widths))]
+        local = [(x + w / 2, 0.0) for x, w in zip(edges, widths)]
+    else:
+        local = slots(len(units), _lines(objs[0]), width, depth)
+    first = layout.placed[units[0].root]
+    ox, oy = first.x - local[0][0], first.y - local[0][1]
+    for unit, box, (lx, ly) in zip(units, boxes, local):
+        if formation == "circle" and unit.turnable:
+            root = layout.placed[unit.root]
+            layout.turn(unit, round(yaw_towards((ox + lx, oy + ly), (ox, oy)), 3) if (lx, ly) != (0, 0) else root.yaw)
+            box = layout.box(unit)
+        layout.move(unit, ox + lx - (box[0] + box[2]) / 2, oy + ly - (box[1] + box[3]) / 2)
+    host = units[0]
+    for unit in units[1:]:
+        host.ids.extend(unit.ids)
+        host.partners.append(unit.root)
+        unit.merged = True
+        for i in unit.ids:
+            layout.unit_of[i] = host
+    host.turnable = False
