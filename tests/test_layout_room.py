@@ -8,7 +8,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from scenewright.layout import solve
+from scenewright.layout import audit, solve
 from scenewright.layout.relations import check_room
 from scenewright.layout.room import SLACK, RoomShape, boxes_of, problems, wall_facing
 from scenewright.scene import Constraint, Opening, Room, SceneObject, Vec3
@@ -184,7 +184,7 @@ def test_without_the_solver_room_relations_are_audited():
     objects = [box("bed", 0, 0, 1.6, 2.1, 0.6), box("mirror", 0, 0, 0.6, 0.04, 0.9)]
     constraints = [Constraint(relation="against wall", source="bed", target="wall_2"),
                    Constraint(relation="on wall", source="mirror", target="room")]
-    result = solve(objects, constraints, room=room, use_solver=False)
+    result = audit(objects, constraints, room=room)
     assert {u.id for u in result.report.unplaced} == {"bed", "mirror"}
     assert all("violates" in u.reason for u in result.report.unplaced)
     assert any("does not hold" in line for line in result.report.room)

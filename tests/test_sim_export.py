@@ -58,7 +58,9 @@ def test_every_object_is_one_usd_prim_with_physics(exported, prompt_id):
     ground = world.GetChild("ground")
     assert set(bodies) == {o.id for o in scene.objects}
     colliding = [p for p in world.GetChildren() if any(d.HasAPI(UsdPhysics.CollisionAPI) for d in Usd.PrimRange(p))]
-    assert len(colliding) == len(scene.objects) + 1 and ground.HasAPI(UsdPhysics.CollisionAPI)
+    # The objects, the ground and, in a room, the room (its walls collide as static boxes).
+    expected = len(scene.objects) + 1 + (scene.room is not None)
+    assert len(colliding) == expected and ground.HasAPI(UsdPhysics.CollisionAPI)
     for obj in scene.objects:
         prim = bodies[obj.id]
         hulls = [d for d in Usd.PrimRange(prim) if d.HasAPI(UsdPhysics.CollisionAPI)]
@@ -112,7 +114,13 @@ def test_glb_physics_names_colliders_for_godot_or_unreal(exported, tmp_path):
     out = tmp_path / "unreal.glb"
     assert main(["export", str(folder.root), "-f", "glb-physics", "--engine", "unreal", "--out", str(out)]) == 0
     unreal = trimesh.load(out, force="scene")
-    assert sum(n.startswith("UCX_") for n in unreal.graph.nodes) == sum(o.physics.hulls for o in scene.objects) + 1
+    # A collider per hull, one for the ground and, in a room, one per solid piece of its walls.
+    walls = 0
+    if scene.room is not None:
+        from scenewright.procedural.room import wall_boxes
+
+        walls = len(wall_boxes(scene.room))
+    assert sum(n.startswith("UCX_") for n in unreal.graph.nodes) == sum(o.physics.hulls for o in scene.objects) + 1 + walls
     assert not any("convcolonly" in n for n in unreal.graph.nodes)
 
 
