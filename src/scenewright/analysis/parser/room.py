@@ -254,6 +254,11 @@ CEILING_THINGS = frozenset({"ceiling_fan", "pendant_lamp"})
 _WALL_PHRASE = re.compile(r"\b(?:against|along|on|by|to|in|at|onto|from)\s+(?:the\s+|a\s+|one\s+)?(?:(back|rear|far|left|right|front)(?:[- ]hand)?\s+)?(wall|corner)s?\b")
 
 
+def _head(o) -> str:
+    """The word a thing is named by in the text (the last of its name)."""
+    return o.name.lower().split()[-1] if o.name else o.category.replace("_", " ")
+
+
 def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
     """Room relations the text states: "against the (back) wall" → ``against wall``, "in the
     corner" → ``in corner``, a wall thing "on the left wall" → ``on wall``. The side picks the
@@ -261,9 +266,10 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
     phrase in its own sentence, after its name."""
     low = " ".join(parsed.text.lower().split())
     sentences = [(m.start(), m.end()) for m in re.finditer(r"[^.;!?]+", low)]
+    names = {_head(o) for o in parsed.objects}
     out = []
     for o in parsed.objects:
-        name = o.name.lower().split()[-1] if o.name else o.category.replace("_", " ")
+        name = _head(o)
         for s, e in sentences:
             sentence = low[s:e]
             found = re.search(rf"\b{re.escape(name)}s?\b", sentence)
@@ -271,7 +277,15 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
                 continue
             at = found.end()
             phrase = _WALL_PHRASE.search(sentence, at)
-            if phrase is None or (o.anchor is None and o.category not in WALL_THINGS):
+            if phrase is None:
+                break
+            # The phrase places this thing when the parse anchored it to a wall, when it is a wall
+            # thing, or when no other thing is named between the two ("a wardrobe stands against
+            # the right wall"; not "a desk with a lamp by the wall").
+            between = sentence[at:phrase.start()]
+            if o.anchor is None and o.category not in WALL_THINGS and any(
+                re.search(rf"\b{re.escape(other)}s?\b", between) for other in names if other != name
+            ):
                 break
             side, what = phrase.group(1), phrase.group(2)
             target = f"wall_{RECTANGLE_WALLS[_SIDE_WORDS[side]]}" if side and _SIDE_WORDS.get(side) else "room"

@@ -180,7 +180,9 @@ def bed(m: Model) -> None:
     m.main = "fabric"
     frame_top = 0.3 * m.sz
     head_t = 0.06 * m.sy
-    m.box("wood", (-m.sx / 2, -m.sy / 2, 0.05 * m.sz), (m.sx / 2, m.sy / 2 - head_t, frame_top))
+    # The frame runs from the footboard to the headboard, touching both: overlapping coplanar
+    # faces render black in Cycles.
+    m.box("wood", (-m.sx / 2, -m.sy / 2 + head_t * 0.7, 0.05 * m.sz), (m.sx / 2, m.sy / 2 - head_t, frame_top))
     m.legs("wood", 0.0, 0, 0.06 * m.sz, m.thick(0.04))
     m.box("wood", (-m.sx / 2, m.sy / 2 - head_t, 0), (m.sx / 2, m.sy / 2, m.sz))
     m.box("wood", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, -m.sy / 2 + head_t * 0.7, 0.42 * m.sz))

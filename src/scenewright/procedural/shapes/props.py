@@ -56,8 +56,11 @@ def rug(m: Model) -> None:
         m.lathe("fabric", [(0.5, 0), (0.5, m.sz)], scale=(m.sx - 2 * border, m.sy - 2 * border))
         return
     m.box("cushion", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, 0.6 * m.sz), rounded=0.0)
-    m.box("fabric", (-m.sx / 2 + border, -m.sy / 2 + border, 0), (m.sx / 2 - border, m.sy / 2 - border, m.sz), rounded=0.0)
-    m.box("accent", (-m.sx / 4, -m.sy / 4, 0), (m.sx / 4, m.sy / 4, m.sz * 1.0), rounded=0.0)
+    # Each layer stands a little above the one around it: coplanar tops render as a black patch
+    # in Cycles (the two faces shadow each other).
+    m.box("fabric", (-m.sx / 2 + border, -m.sy / 2 + border, 0), (m.sx / 2 - border, m.sy / 2 - border, 0.85 * m.sz),
+          rounded=0.0)
+    m.box("accent", (-m.sx / 4, -m.sy / 4, 0), (m.sx / 4, m.sy / 4, m.sz), rounded=0.0)
 
 
 def _screen_panel(m: Model, z0: float, z1: float, depth: float) -> None:
