@@ -286,3 +286,24 @@ def test_the_readme_loader_reads_every_scene(fresh, capsys):
     exec(LOADER, {"BATCH": str(out)})
     printed = capsys.readouterr().out.splitlines()
     assert len(printed) == 11 and all("(" in line for line in printed)
+
+
+def test_a_jsonl_entry_chooses_its_room(tmp_path):
+    path = tmp_path / "prompts.jsonl"
+    path.write_text(
+        '{"id": "open", "text": "a bedroom with a bed and a wardrobe", "room": "none"}\n'
+        '{"id": "sized", "text": "a bedroom with a bed and a wardrobe", "room": "4x5"}\n'
+        '{"id": "bad", "text": "a bedroom with a bed", "room": "0x5"}\n'
+        '{"id": "odd", "text": "a bedroom with a bed", "room": 4}\n'
+    )
+    entries, problems = read_entries(path)
+    assert [(e.id, e.room) for e in entries] == [("open", "none"), ("sized", "4x5")]
+    reasons = {p.line: p.reason for p in problems}
+    assert "room '0x5'" in reasons[3] and "'room' must be a string" in reasons[4]
+    record = run_batch(entries, tmp_path / "out", settings=Settings(cache_dir=None), workers=1, render=False)
+    assert record.totals()["done"] == 2
+    open_scene = json.loads((tmp_path / "out" / "open" / "scene.json").read_text())
+    sized = json.loads((tmp_path / "out" / "sized" / "scene.json").read_text())
+    assert open_scene["room"] is None
+    xs, ys = zip(*sized["room"]["floor"])
+    assert (max(xs) - min(xs), max(ys) - min(ys)) == (4.0, 5.0)

@@ -3,8 +3,9 @@
 A text file holds one description a line (blank lines and ``#`` comments skipped); its ids
 come from the text itself (first words + a short hash), so they survive reordering and
 appending lines, which is what lets a re-run find the scenes it already made. A JSONL line
-is an object with ``id`` and ``text`` and optionally ``style``, ``seed`` and backend
-overrides (the keys of :data:`OVERRIDES`, checked as a config file's are).
+is an object with ``id`` and ``text`` and optionally ``style``, ``seed``, ``room`` (as
+``generate --room``: auto, none, WxD or WxDxH) and backend overrides (the keys of
+:data:`OVERRIDES`, checked as a config file's are).
 
 A line that cannot be used is a :class:`Problem` naming its line number and what is wrong;
 the caller skips it or, in strict mode, refuses the file.
@@ -18,12 +19,13 @@ import re
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
+from scenewright.analysis.parser.room import parse_room_option
 from scenewright.errors import InputError
 from scenewright.settings import Settings, apply
 
 #: Settings keys a JSONL entry may override for its own scene.
 OVERRIDES = ("vlm", "images", "meshes", "base_url", "reasoning_effort", "feedback_rounds", "max_faces", "time_limit")
-KEYS = ("id", "text", "style", "seed", *OVERRIDES)
+KEYS = ("id", "text", "style", "seed", "room", *OVERRIDES)
 #: Ids become folder names: letters, digits, '_', '-', '.', not starting with '.'.
 _ID = re.compile(r"^[A-Za-z0-9_\-][A-Za-z0-9_\-.]{0,99}$")
 _WORD = re.compile(r"[a-z0-9]+")
@@ -39,6 +41,8 @@ class Entry:
     style: str | None = None
     #: ``None``: not given (the scene uses seed 0, or each of ``--seeds``).
     seed: int | None = None
+    #: ``generate --room``: auto (the default), none, WxD or WxDxH metres.
+    room: str = "auto"
     overrides: dict[str, object] = field(default_factory=dict)
 
     def settings(self, base: Settings) -> Settings:
@@ -96,6 +100,13 @@ def _json_entry(number: int, raw: str) -> Entry:
     style = data.get("style")
     if style is not None and (not isinstance(style, str) or not style.strip()):
         raise ValueError(f"'style' must be a non-empty string, got {style!r}")
+    room = data.get("room", "auto")
+    if not isinstance(room, str):
+        raise ValueError(f"'room' must be a string (auto, none, WxD or WxDxH metres), got {room!r}")
+    try:
+        parse_room_option(room)
+    except InputError as exc:
+        raise ValueError(str(exc).removeprefix("--")) from None
     overrides = {k: data[k] for k in OVERRIDES if k in data}
     try:
         apply(Settings(), overrides, "entry")  # checked now, applied per scene
@@ -107,6 +118,7 @@ def _json_entry(number: int, raw: str) -> Entry:
         line=number,
         style=style.strip() if style else None,
         seed=_seed(data["seed"]) if "seed" in data else None,
+        room=room,
         overrides=overrides,
     )
 

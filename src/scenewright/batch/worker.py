@@ -173,6 +173,7 @@ def run_scene(job: Job) -> Outcome:
             seed=entry.seed or 0,
             render=job.render,
             progress=progress,
+            room=entry.room,
         )
         metrics = _metrics(scene, folder)
         graph = scene_graph(scene, scene_id=entry.id, metrics=metrics)
