@@ -19,7 +19,7 @@ from scenewright.layout import check
 from scenewright.scene import Constraint, Vec3
 from scenewright.settings import Settings
 from scenewright.studio import Session, inside, object_panel
-from scenewright.studio.bench import CHROMIUM, CHROMIUM_ARGS, drag_from_page, tiled_scene
+from scenewright.bench.studio import CHROMIUM, CHROMIUM_ARGS, drag_from_page, tiled_scene
 from scenewright.studio.session import DragProbe
 
 

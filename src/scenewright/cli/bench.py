@@ -188,3 +188,22 @@ def bench_batch(
     from scenewright.bench.batch import run_batch_bench
 
     emit(run_batch_bench(scenes, workers, ray, build_settings()), as_json)
+
+
+@bench_app.command("studio")
+def bench_studio(
+    objects: Annotated[int, typer.Option("--objects", min=1, help="Objects of the large scene the drag is timed on.")] = 100,
+    seconds: Annotated[float, typer.Option("--seconds", min=0.5, help="How long the drag lasts.")] = 5.0,
+    rate: Annotated[float, typer.Option("--rate", min=1.0, help="Gizmo updates the page sends per second.")] = 60.0,
+    as_json: JsonOption = True,
+) -> None:
+    """Initial load of the demo scene and drag updates per second on a large scene, in headless
+    chromium (software WebGL); with a bare viser page's load and the load average for scale."""
+    import contextlib
+    import sys
+
+    from scenewright.bench.studio import run
+
+    with contextlib.redirect_stdout(sys.stderr):  # viser's banners: stdout carries the figures only
+        result = run(objects=objects, seconds=seconds, rate=rate)
+    emit(result, as_json)

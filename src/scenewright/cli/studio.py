@@ -1,10 +1,7 @@
-"""``scenewright studio``: open a scene folder in the browser editor; ``bench studio``: how it keeps up."""
+"""``scenewright studio``: open a scene folder in the browser editor."""
 
 from __future__ import annotations
 
-import contextlib
-import json
-import sys
 import time
 from pathlib import Path
 from typing import Annotated
@@ -12,7 +9,7 @@ from typing import Annotated
 import typer
 from rich.console import Console
 
-from scenewright.cli.app import app, bench_app
+from scenewright.cli.app import app
 from scenewright.cli.options import (
     ApiKeyEnvOption,
     BaseUrlOption,
@@ -66,19 +63,3 @@ def studio_command(
         pass
     finally:
         studio.stop()
-
-
-@bench_app.command("studio")
-def bench_studio(
-    objects: Annotated[int, typer.Option("--objects", min=1, help="Objects of the large scene the drag is timed on.")] = 100,
-    seconds: Annotated[float, typer.Option("--seconds", min=0.5, help="How long the drag lasts.")] = 5.0,
-    rate: Annotated[float, typer.Option("--rate", min=1.0, help="Gizmo updates the page sends per second.")] = 60.0,
-    json_output: Annotated[bool, typer.Option("--json", help="Print JSON (the only output format).")] = True,
-) -> None:
-    """Initial load of the demo scene and drag updates per second on a large scene, in headless
-    chromium (software WebGL); with a bare viser page's load and the load average for scale."""
-    from scenewright.studio.bench import run
-
-    with contextlib.redirect_stdout(sys.stderr):  # viser's banners: stdout carries the JSON only
-        result = run(objects=objects, seconds=seconds, rate=rate)
-    typer.echo(json.dumps(result))

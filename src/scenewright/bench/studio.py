@@ -128,12 +128,12 @@ def free_port() -> int:
 
 def demo_scene(root: Path, settings: Settings) -> SceneFolder:
     """The bundled example scene (``make demo``), offline, without renders."""
-    from scenewright.backends import Backends
+    from scenewright.backends import backends_from_settings
     from scenewright.pipeline import generate
 
     text = (resources.files("scenewright") / "data" / "examples" / "living_room.txt").read_text(encoding="utf-8")
     folder = SceneFolder(root)
-    generate(text, folder, backends=Backends.from_settings(settings), settings=settings, render=False)
+    generate(text, folder, backends=backends_from_settings(settings), settings=settings, render=False)
     return folder
 
 
@@ -175,10 +175,10 @@ def tiled_scene(source: SceneFolder, root: Path, count: int) -> SceneFolder:
 
 
 def _session(folder: SceneFolder, settings: Settings):
-    from scenewright.backends import Backends
+    from scenewright.backends import backends_from_settings
     from scenewright.studio.session import Session
 
-    return Session(folder, backends=Backends.from_settings(settings), settings=settings)
+    return Session(folder, backends=backends_from_settings(settings), settings=settings)
 
 
 def measure_load(browser, folder: SceneFolder, settings: Settings) -> dict[str, Any]:
