@@ -382,7 +382,12 @@ class _Reader:
             joined = bool(out) and any(
                 self.toks[k].text in ("and", "or") for k in (*range(out[-1][0] + 1, out[-1][1]), *range(cs + 1, first_rel))
             )
-            if goes_on or (places and out and joined and self._is_list(*out[-1], strict=True)):
+            # "an oil lamp and a teapot, and a clockwork automaton waits beside it": a list that
+            # "and" already closed ends there; the next "and" opens a clause of its own
+            closed = bool(out) and self.toks[cs].text in ("and", "or") and any(
+                self.toks[k].text in ("and", "or") for k in range(out[-1][0] + 1, out[-1][1])
+            )
+            if goes_on or (places and out and joined and not closed and self._is_list(*out[-1], strict=True)):
                 out[-1] = (out[-1][0], ce)
                 continue
             out.append((cs, ce))
@@ -392,6 +397,8 @@ class _Reader:
         """The clause ends inside the "with" part of a noun before it: nothing placed after."""
         toks = self.toks
         last = max((k for k in range(cs + 1, ce) if toks[k].text == "with" or toks[k].text in _HOLD), default=None)
+        if last is not None and last <= cs + 1 and not any(k in self.rel_at for k in range(last, ce)):
+            return True  # "..., cluttered with a microscope, an oil lamp and a teapot": the noun before's list
         if last is None or not any(cs <= k and m.end <= last for k, m in self.by_start.items()):
             return False  # "a market square with three stalls, ...": the place's list, not a thing's
         return not any(k in self.rel_at for k in range(last, ce))
