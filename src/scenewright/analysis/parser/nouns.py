@@ -158,6 +158,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             e = nxt[1]
         if s == e:
             continue
+        if _adverb_here(toks, s, e):
+            continue  # "the shrine stands well behind the gate": an adverb, not a well
         kind, modifier = modifier, []
         if kind and entry is not None and entry.category == "figure":
             machine = match_phrase(tuple(kind))
@@ -188,6 +190,23 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         mention.guess, mention.modifier = entry, kind
         mentions.append(mention)
     return _alias_mentions(toks, mentions), places
+
+
+#: Nouns that are also adverbs of degree or place, read as such when bare before a preposition.
+_ADVERB_NOUNS = {"well", "way", "far", "right", "just", "back"}
+_ADVERB_FOLLOWERS = {"behind", "away", "back", "above", "below", "beyond", "off", "over", "past", "ahead", "out",
+                     "inside", "outside", "in", "into", "before", "under", "beneath", "apart", "clear", "up", "down"}  # fmt: skip
+
+
+def _adverb_here(toks: list[_Tok], s: int, e: int) -> bool:
+    """A one-word noun with no determiner, number or adjective of its own, right before a
+    preposition: "stands well behind the gate", "set way back from the road"."""
+    if e - s != 1 or toks[s].text not in _ADVERB_NOUNS or e >= len(toks) or toks[e].text not in _ADVERB_FOLLOWERS:
+        return False
+    before = toks[s - 1].text if s > 0 else "."
+    if not before[:1].isalpha():
+        return True
+    return before not in _DETERMINERS and before not in _NUMBERS and not load_vocabulary().is_adjective(before)
 
 
 #: Words that open an object after a verb: "an astronaut plants a flag", "a knight guards the gate".

@@ -606,8 +606,8 @@ class _Reader:
             if g in c.wsub_related:
                 continue
             for h in c.head:
-                if h == g:
-                    continue
+                if h == g or any(r[1] == g and r[2] == h for r in self.relations):
+                    continue  # "with a stone lantern beside it": placed by the head, not on it
                 rests = self.groups[g].rests
                 if c.hold or (rests == "surface" and self.catalogue[self.groups[h].category].support):
                     self._relate("on", [g], h)
@@ -819,10 +819,12 @@ class _Reader:
         if kind == "at":  # "an office chair at each desk": pulled up to it, facing it
             seat = self.catalogue[src.category].shape in _SEATS
             return "at seat" if seat and (target.support or target.shape in ("desk", "table", "counter")) else "near"
-        if kind in ("foot of", "head of"):  # "a chest at the foot of the bed": its front, the headboard its back
+        if kind == "foot of":  # "a chest at the foot of the bed", "a box at the foot of its steps": its front
+            return "in front of"
+        if kind == "head of":  # the headboard is a bed's back
             if target.shape in ("bed", "sofa", "bench"):
-                return "in front of" if kind == "foot of" else "behind"
-            if kind == "head of" and target.support:
+                return "behind"
+            if target.support:
                 return "left of"  # the head of a table is one of its ends
             return "near"
         if kind == "hanging from":  # from a beam or a shelf: above it; from a tall tree: beside it
