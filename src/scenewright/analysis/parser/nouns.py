@@ -275,8 +275,17 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     if j >= 0 and toks[j].text in _INSIDE:
         return True
     # "on the top floor of a converted warehouse": a part of the place holds the scene
-    if j > 0 and toks[j].text == "of" and toks[j - 1].text in ("floor", "top", "edge", "roof", "corner", "end", "back"):
+    if j > 0 and toks[j].text == "of" and toks[j - 1].text in (
+        "floor", "top", "edge", "roof", "corner", "end", "back", "middle", "centre", "center", "rear"
+    ):  # fmt: skip
         return True
+    # a sentence that only names the place ("An anime-style ramen shop late at night.")
+    if j < 0 or toks[j].text in (".", "!", "?"):
+        k = e
+        while k < len(toks) and toks[k].text not in (".", "!", "?") and not _is_verb(toks[k].text):
+            k += 1
+        if k >= len(toks) or toks[k].text in (".", "!", "?"):
+            return True
     # the description opens with the place ("A cyberpunk hangar on the edge of the city, late at night.")
     opening = j < 0 or (toks[j].text in (".", "!", "?") and j == s - 1)
     follow = toks[e].text if e < len(toks) else "."
