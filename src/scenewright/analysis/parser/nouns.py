@@ -158,6 +158,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             e = nxt[1]
         if s == e:
             continue
+        if _role_after_as(toks, s):
+            continue  # "four logs around it as seats", "a crate used as a table": a use, not a thing
         if _adverb_here(toks, s, e):
             continue  # "the shrine stands well behind the gate": an adverb, not a well
         kind, modifier = modifier, []
@@ -207,6 +209,17 @@ def _adverb_here(toks: list[_Tok], s: int, e: int) -> bool:
     if not before[:1].isalpha():
         return True
     return before not in _DETERMINERS and before not in _NUMBERS and not load_vocabulary().is_adjective(before)
+
+
+def _role_after_as(toks: list[_Tok], s: int) -> bool:
+    """The noun at ``s`` names what another thing serves as ("as seats", "as a table"), not
+    "as well as a lamp" or "such as a lamp"."""
+    j = s - 1
+    while j >= 0 and s - j <= 3 and toks[j].text != "as" and (
+        toks[j].text in ("a", "an", "the") or load_vocabulary().is_adjective(toks[j].text)
+    ):
+        j -= 1
+    return j >= 1 and toks[j].text == "as" and toks[j - 1].text not in ("well", "such", "same")
 
 
 #: Words that open an object after a verb: "an astronaut plants a flag", "a knight guards the gate".
@@ -280,7 +293,7 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     ):  # fmt: skip
         return True
     # a sentence that only names the place ("An anime-style ramen shop late at night.")
-    if j < 0 or toks[j].text in (".", "!", "?"):
+    if later and (j < 0 or toks[j].text in (".", "!", "?")):
         k = e
         while k < len(toks) and toks[k].text not in (".", "!", "?") and not _is_verb(toks[k].text):
             k += 1

@@ -691,6 +691,11 @@ class _Reader:
                 targets = self._pronoun(target, c, srcs + c.head, prefer)
             if c.head is not None and srcs == c.head:
                 targets = self._pronoun(target, c, srcs, prefer)
+            elif c.head is not None and target == "it" and all(self.groups[h].count > 1 for h in c.head):
+                # "two tents, with a campfire in front of them and four logs around it": "it" is
+                # no plural head but the single thing named last
+                single = [g for g in reversed(c.groups) if g not in srcs and self.groups[g].count == 1]
+                targets = single[:1] or targets
             elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
                 targets = c.wsub_before[-1:]  # "... and a computer beside it": beside the till
         elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
