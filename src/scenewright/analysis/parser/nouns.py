@@ -8,7 +8,7 @@ from functools import lru_cache
 
 from scenewright.core.catalogue import load_catalogue, match_phrase, phrase_index, singular
 from scenewright.analysis.parser.tokens import _Tok
-from scenewright.analysis.parser.vocabulary import Entry, load_vocabulary
+from scenewright.analysis.parser.vocabulary import GENERIC, Entry, load_vocabulary
 from scenewright.analysis.parser.words import (
     _DEFINITE,
     _DETERMINERS,
@@ -160,6 +160,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue
         if _role_after_as(toks, s):
             continue  # "four logs around it as seats", "a crate used as a table": a use, not a thing
+        if _gerund_here(toks, s, e):
+            continue  # "two children are building a snowman": a verb, not a building
         if _adverb_here(toks, s, e):
             continue  # "the shrine stands well behind the gate": an adverb, not a well
         kind, modifier = modifier, []
@@ -188,6 +190,12 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a stone path", "a glass roof": an adjective here
         if s > 0 and toks[s - 1].text in _PROJECTED and cat not in _SHOWS_PROJECTION:
             cat, entry = "hologram", None  # "holographic koi" are light, not fish: place and size them as one
+        if singular(words[-1]) == "one" and mentions and (entry is None or entry.category == GENERIC):
+            # "a tall pine tree ..., with a few smaller ones": more of the thing named before
+            # (the sentence's subject, not the landmark it stands by)
+            stop = max((k for k in range(s) if toks[k].text in (".", "!", "?")), default=-1)
+            same = [m for m in mentions if m.start > stop]
+            cat, entry = (same or mentions)[0 if same else -1].category, (same or mentions)[0 if same else -1].guess
         mention = _Mention(cat, " ".join(t.orig for t in toks[s:e]), s, e, 1, False, False)
         mention.guess, mention.modifier = entry, kind
         mentions.append(mention)
@@ -215,11 +223,27 @@ def _role_after_as(toks: list[_Tok], s: int) -> bool:
     """The noun at ``s`` names what another thing serves as ("as seats", "as a table"), not
     "as well as a lamp" or "such as a lamp"."""
     j = s - 1
-    while j >= 0 and s - j <= 3 and toks[j].text != "as" and (
-        toks[j].text in ("a", "an", "the") or load_vocabulary().is_adjective(toks[j].text)
+    while j >= 0 and s - j <= 3 and toks[j].text not in ("as", "to", "by") and toks[j].text[:1].isalpha() and (
+        toks[j].text in ("a", "an", "the", "her", "his", "their") or toks[j].text not in _STOP
     ):
         j -= 1
+    if j >= 1 and (toks[j - 1].text, toks[j].text) in _ABSENT_OWNER:
+        return True  # "a bedroom belonging to a teenage girl": the owner is not in the scene
     return j >= 1 and toks[j].text == "as" and toks[j - 1].text not in ("well", "such", "same")
+
+
+#: Word pairs after which a noun names an owner, not a thing of the scene.
+_ABSENT_OWNER = {("belonging", "to"), ("belongs", "to"), ("owned", "by"), ("run", "by")}
+
+
+def _gerund_here(toks: list[_Tok], s: int, e: int) -> bool:
+    """A one-word "-ing" noun used as a verb: "two children are building a snowman" (no
+    determiner, number or adjective before it, an object after it)."""
+    w = toks[s].text
+    if e - s != 1 or not w.endswith("ing") or s == 0 or e >= len(toks) or toks[e].text not in _OBJECT_OPENERS:
+        return False
+    before = toks[s - 1].text
+    return before not in _DETERMINERS and before not in _NUMBERS and not load_vocabulary().is_adjective(before)
 
 
 #: Words that open an object after a verb: "an astronaut plants a flag", "a knight guards the gate".
