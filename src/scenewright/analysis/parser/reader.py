@@ -461,7 +461,7 @@ class _Reader:
             return owner, pos + 2  # "piled against its side": by the owner
         return None, pos
 
-    def _pronoun(self, word: str, c: _Clause, srcs: list[int], prefer: list[int]) -> list[int]:
+    def _pronoun(self, word: str, c: _Clause, srcs: list[int], prefer: list[int], kind: str = "") -> list[int]:
         """The group "it" / "them" names: the subject before (when this clause has its own) or
         the latest earlier mention, of the right number."""
         plural = word in ("them", "themselves")
@@ -473,7 +473,8 @@ class _Reader:
         recent = [g for g in [*prefer, *reversed(self.history), *reversed(c.groups)] if g not in srcs]
         # a thing on the floor is not placed by a small thing on a table ("a nightstand with a lamp
         # on it. A rug lies in front of it": the nightstand)
-        big = bool(srcs) and not self._small(*srcs)
+        # (above a small thing is fine: "a register on the counter, and a hologram floats above it")
+        big = bool(srcs) and not self._small(*srcs) and kind not in ("above", "over")
         for fits in ((lambda g: not (big and self._small(g))), (lambda g: True)):
             for g in recent:
                 if (self.groups[g].count > 1) == plural and fits(g):
@@ -685,7 +686,7 @@ class _Reader:
             # a post next to it": the wagon)
             own_subject = list(prev_subject) if c.main and srcs == c.main else []
             prefer = [*c.last_target, *prev_subject] if c.last_target else own_subject
-            targets: list[int] | str = self._pronoun(target, c, srcs, prefer) if c.head is None else list(c.head)
+            targets: list[int] | str = self._pronoun(target, c, srcs, prefer, kind) if c.head is None else list(c.head)
             if c.head is not None and all(self._living(h) for h in c.head):
                 # "a man on the bench, with his terrier asleep under it": "it" is no person
                 targets = self._pronoun(target, c, srcs + c.head, prefer)
@@ -742,7 +743,7 @@ class _Reader:
             self._one_a_side(srcs)  # also beside what is no object: "on each side of the elevator"
         if not srcs or not targets:
             return end
-        hang = kind == "hanging from" or any(t.text in _HANG_VERBS for t in toks[max(0, rel.start - 3) : rel.start])
+        hang = kind == "hanging from" or self._hung_before(rel.start)
         if targets == "each other":
             each_other = "face to" if kind == "face to" else "near"
             for s in srcs:
@@ -804,6 +805,16 @@ class _Reader:
             if self.groups[s].count == 1 and s not in self.history:
                 self.groups[s].count = 2
 
+    def _hung_before(self, pos: int) -> bool:
+        """A hanging verb earlier in the same clause part ("three lanterns hang from the ceiling
+        over the counter": the over is hung, not a tree leaning over)."""
+        k = pos - 1
+        while k >= 0 and pos - k <= 8 and self.toks[k].text not in (",", ".", ";", "and", "while"):
+            if self.toks[k].text in _HANG_VERBS:
+                return True
+            k -= 1
+        return False
+
     def _relate(self, kind: str, srcs: list[int], target: int, hang: bool = False, instance=None) -> None:
         for s in srcs:
             resolved = self._kind(kind, s, target, hang)
@@ -814,7 +825,8 @@ class _Reader:
     def _kind(self, kind: str, s: int, t: int, hang: bool = False) -> str:
         src = self.groups[s]
         if kind == "over":
-            return "above" if hang or src.rests == "hanging" else "near"  # a tree leaning over a pond
+            # a tree leaning over a pond stands by it; a lamp or a lantern over a table hangs above it
+            return "above" if hang or src.rests in ("hanging", "surface") else "near"
         if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not hang:
             return "near"  # a tree "above" a pond cannot float: read it as near
         if kind == "under":
