@@ -96,6 +96,8 @@ _LOAD_SIZE = 0.3
 _FLAT_HOLDERS = ("plate", "pallet")
 #: Shapes that hold what they hold inside, out of the layout ("a greenhouse holds tomato plants").
 _ENCLOSURES = ("house", "building", "tent", "kiosk")
+#: Shapes one sits or floats *in* and is then on ("in the tub", "in the canoe").
+_VESSELS = ("bathtub", "boat", "bed", "cart", "basket", "crate", "pond", "sandbox")
 #: What a thing is mounted on as a part of it ("lanterns on tall poles").
 _MOUNTS = ("pole", "stick", "mast", "stake", "spike")
 #: Verbs that join a subject to what it is, not to a thing it acts on.
@@ -690,6 +692,11 @@ class _Reader:
             if c.head is not None and all(self._living(h) for h in c.head):
                 # "a man on the bench, with his terrier asleep under it": "it" is no person
                 targets = self._pronoun(target, c, srcs + c.head, prefer)
+            below = [r[2] for r in self.relations if c.head and r[1] in c.head and r[0] == "above"]
+            if below and all(self.groups[h].rests == "hanging" for h in c.head) and not any(
+                self.groups[g].rests == "hanging" for g in srcs
+            ):  # "a chandelier hangs above the table, with a bench on either side of it": the table
+                targets = below[-1:]
             if c.head is not None and srcs == c.head:
                 targets = self._pronoun(target, c, srcs, prefer)
             elif c.head is not None and target == "it" and all(self.groups[h].count > 1 for h in c.head):
@@ -844,6 +851,9 @@ class _Reader:
             if target.support:
                 return "left of"  # the head of a table is one of its ends
             return "near"
+        if kind == "in":  # "a man in a rocking chair", "a duck floats in the tub": on it
+            holds = target.shape in _SEATS or target.support or target.shape in _VESSELS
+            return "on" if holds and target.shape not in _ENCLOSURES and target.size[2] <= 2.5 else "no relation"
         if kind == "hanging from":  # from a beam or a shelf: above it; from a tall tree: beside it
             return "above" if target.size[2] <= 2.5 else "near"
         if kind == "centre of":  # "a vase in the middle of the table": on it; else near it
