@@ -139,6 +139,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
     mentions: list[_Mention] = []
     places: list[str] = []
     modifier: list[str] = []
+    part_end: int | None = None  # where an opening "the bridge of" ends: its owner is the setting too
     for k, (s, e, cat, entry) in enumerate(raw):
         nxt = raw[k + 1] if k + 1 < len(raw) else None
         words = [t.text for t in toks[s:e]]
@@ -185,6 +186,11 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         ):  # "an abandoned factory floor with a conveyor belt"
             places.append(" ".join(words))
             continue
+        if _part_of_vessel(toks, s, e) or (part_end is not None and _owner_of_part(toks, part_end, s)):
+            # "The bridge of a small cargo spaceship, ...": the bridge and the ship are the setting
+            places.append(" ".join(words))
+            part_end = e if part_end is None else None
+            continue
         qualifies = follow[:1].isalpha() and follow not in _STOP and not _is_verb(follow)
         if len(words) == 1 and words[0] in _MODIFIER_NOUNS and qualifies and not follow.endswith(("ed", "ing")):
             continue  # "a stone path", "a glass roof": an adjective here
@@ -217,6 +223,26 @@ def _adverb_here(toks: list[_Tok], s: int, e: int) -> bool:
     if not before[:1].isalpha():
         return True
     return before not in _DETERMINERS and before not in _NUMBERS and not load_vocabulary().is_adjective(before)
+
+
+#: Parts of a vessel or a building that are a setting when the text opens with "the X of a Y".
+_PLACE_PARTS = {"bridge", "deck", "cockpit", "hold", "cabin", "interior", "inside", "galley", "hull", "flight deck"}
+
+
+def _part_of_vessel(toks: list[_Tok], s: int, e: int) -> bool:
+    """The description opens with "The bridge of a ...", "The cockpit of an old plane"."""
+    j = s - 1
+    while j >= 0 and (toks[j].text in _DETERMINERS or load_vocabulary().is_adjective(toks[j].text)):
+        j -= 1
+    opening = j < 0 or toks[j].text in (".", "!", "?")
+    return opening and " ".join(t.text for t in toks[s:e]) in _PLACE_PARTS and e < len(toks) and toks[e].text == "of"
+
+
+def _owner_of_part(toks: list[_Tok], part_end: int, s: int) -> bool:
+    """The noun at ``s`` is the owner in "the bridge of a small cargo spaceship"."""
+    return toks[part_end].text == "of" and s - part_end <= 5 and all(
+        t.text[:1].isalpha() and t.text not in (",", "with") for t in toks[part_end + 1 : s]
+    )
 
 
 def _role_after_as(toks: list[_Tok], s: int) -> bool:

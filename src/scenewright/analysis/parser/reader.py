@@ -202,7 +202,14 @@ class _Reader:
             # "the teacher's desk" is not one of the school desks, nor "the teacher's bench" a lab table
             owned = any(t.text.endswith("'s") for t in self.toks[max(0, m.start - 1) : m.end - 1])
             if owned and found is not None and singular(self.groups[found].name.split()[-1]) != head:
-                found = None
+                # "the captain's chair" again, after two crew seats: the captain's chair named before
+                owner = next(t.text for t in self.toks[max(0, m.start - 1) : m.end - 1] if t.text.endswith("'s"))
+                found = next(
+                    (g.index for g in reversed(self.groups)
+                     if g.category == m.category and singular(g.name.split()[-1]) == head
+                     and owner in g.description.lower().split()),
+                    None,
+                )  # fmt: skip
             if found is None and not owned:
                 found = next(
                     (g.index for g in reversed(self.groups) if g.name.split()[-1].endswith(head)), None
