@@ -306,3 +306,13 @@ def test_bath_things_and_other_new_words():
     assert ("rug", "bath mat") in found
     found = objects("Behind the bar counter, the innkeeper pours ale. A moose head is mounted above the fireplace.")
     assert ("figure", "innkeeper") in found and ("panel", "moose head") in found
+
+
+def test_a_part_of_a_building_or_vehicle_places_by_its_owner():
+    text = "A snowy log cabin. A snowmobile is parked to the right of the cabin. A satellite dish is mounted on the roof."
+    assert ("pylon_1", "on", "house_1") in rels(text)
+    text = "Two pumps stand in front of the shop. A pickup truck waits. A sign flickers on the shop's roof, and a soda machine hums beside its door."
+    found = rels(text)
+    assert {("sign_1", "on", "shop_1"), ("vending_machine_1", "side of", "shop_1")} <= found
+    text = "Two tents stand side by side. A pickup truck is parked behind the tents with two kayaks on its roof."
+    assert ("boat_1", "on", "truck_1") in rels(text)

@@ -96,6 +96,10 @@ _LOAD_SIZE = 0.3
 _FLAT_HOLDERS = ("plate", "pallet")
 #: Shapes that hold what they hold inside, out of the layout ("a greenhouse holds tomato plants").
 _ENCLOSURES = ("house", "building", "tent", "kiosk")
+#: Vehicles with a roof and doors of their own.
+_ROOFED_VEHICLES = ("car", "truck", "bus", "vehicle")
+#: Parts of a building that place a thing by the building itself when nothing else is named.
+_BUILDING_PARTS = ("roof", "rooftop", "porch", "step", "doorstep", "chimney", "eave", "gable", "veranda", "facade", "door", "doorway")
 #: Shapes one sits or floats *in* and is then on ("in the tub", "in the canoe").
 _VESSELS = ("bathtub", "boat", "bed", "cart", "basket", "crate", "pond", "sandbox")
 #: What a thing is mounted on as a part of it ("lanterns on tall poles").
@@ -463,12 +467,39 @@ class _Reader:
                 j += 1
                 continue
             break
+        building = self._building_of_part(pos, j)
+        if building is not None:
+            return [building], j  # "mounted on the roof", "beside its door", "on the shop's roof"
         owner = _OWNER_PRONOUNS.get(toks[pos].text) if pos < ce else None
         if owner and j > pos + 1:
             return owner, j  # "above its door": a part of its owner places by the owner itself
         if owner and pos + 1 < ce and toks[pos + 1].text in _OWNER_PARTS:
             return owner, pos + 2  # "piled against its side": by the owner
         return None, pos
+
+    def _building_of_part(self, pos: int, end: int) -> int | None:
+        """The building (or vehicle) a part of one names when no thing is named ("on the roof",
+        "beside its door", "at the foot of the porch steps"): the one whose name the possessive
+        gives, else the latest one mentioned."""
+        words = [t.text for t in self.toks[pos:end]]
+        if not any(singular(w) in _BUILDING_PARTS for w in words):
+            return None
+        # one named in this sentence first ("a truck is parked behind the tents with two kayaks
+        # on its roof"), then earlier buildings, then earlier vehicles
+        stop = max((k for k in range(pos) if self.toks[k].text in (".", "!", "?")), default=-1)
+        here = {m.group for k, m in self.by_start.items() if stop < k < pos and m.group >= 0}
+        shapes = [self.catalogue[g.category].shape for g in self.groups]
+        latest = range(len(self.groups) - 1, -1, -1)
+        buildings = [
+            *(g for g in latest if g in here and shapes[g] in (*_ENCLOSURES, *_ROOFED_VEHICLES)),
+            *(g for g in latest if shapes[g] in _ENCLOSURES),
+            *(g for g in latest if shapes[g] in _ROOFED_VEHICLES),
+        ]
+        named = [w[:-2] for w in words if w.endswith("'s")]
+        for g in buildings:
+            if not named or singular(named[0]) == singular(self.groups[g].name.split()[-1]):
+                return g
+        return None
 
     def _pronoun(self, word: str, c: _Clause, srcs: list[int], prefer: list[int], kind: str = "") -> list[int]:
         """The group "it" / "them" names: the subject before (when this clause has its own) or
