@@ -316,3 +316,10 @@ def test_a_part_of_a_building_or_vehicle_places_by_its_owner():
     assert {("sign_1", "on", "shop_1"), ("vending_machine_1", "side of", "shop_1")} <= found
     text = "Two tents stand side by side. A pickup truck is parked behind the tents with two kayaks on its roof."
     assert ("boat_1", "on", "truck_1") in rels(text)
+
+
+def test_hung_from_the_ceiling_is_hanging():
+    parsed = parse_scene("A long counter stands at the back. Three paper lanterns hang from the ceiling over the counter.")
+    assert {o.rests for o in parsed.objects if o.category == "lantern"} == {"hanging"}
+    parsed = parse_scene("A table stands in the yard. A lantern sits on the table.")
+    assert {o.rests for o in parsed.objects if o.category == "lantern"} == {"surface"}

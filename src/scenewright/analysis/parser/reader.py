@@ -96,6 +96,8 @@ _LOAD_SIZE = 0.3
 _FLAT_HOLDERS = ("plate", "pallet")
 #: Shapes that hold what they hold inside, out of the layout ("a greenhouse holds tomato plants").
 _ENCLOSURES = ("house", "building", "tent", "kiosk")
+#: Where a hung thing hangs from indoors.
+_CEILING_WORDS = ("ceiling", "ceilings", "beam", "beams", "rafter", "rafters")
 #: Vehicles with a roof and doors of their own.
 _ROOFED_VEHICLES = ("car", "truck", "bus", "vehicle")
 #: Parts of a building that place a thing by the building itself when nothing else is named.
@@ -789,6 +791,10 @@ class _Reader:
         if not srcs or not targets:
             return end
         hang = kind == "hanging from" or self._hung_before(rel.start)
+        if hang and kind in ("above", "over", "hanging from") and self._from_ceiling(rel.start):
+            for g in srcs:  # "three paper lanterns hang from the ceiling over the counter": hung, not set down
+                if self.groups[g].rests == "surface":
+                    self.groups[g].rests = "hanging"
         if targets == "each other":
             each_other = "face to" if kind == "face to" else "near"
             for s in srcs:
@@ -859,6 +865,13 @@ class _Reader:
                 return True
             k -= 1
         return False
+
+    def _from_ceiling(self, pos: int) -> bool:
+        """"From the ceiling" (or a beam, the rafters) earlier in the clause part, or right here."""
+        k = pos - 1
+        while k >= 0 and pos - k <= 8 and self.toks[k].text not in (",", ".", ";", "and", "while"):
+            k -= 1
+        return any(self.toks[i].text in _CEILING_WORDS for i in range(k + 1, min(pos + 4, len(self.toks))))
 
     def _relate(self, kind: str, srcs: list[int], target: int, hang: bool = False, instance=None) -> None:
         for s in srcs:
