@@ -323,3 +323,9 @@ def test_hung_from_the_ceiling_is_hanging():
     assert {o.rests for o in parsed.objects if o.category == "lantern"} == {"hanging"}
     parsed = parse_scene("A table stands in the yard. A lantern sits on the table.")
     assert {o.rests for o in parsed.objects if o.category == "lantern"} == {"surface"}
+
+
+def test_the_fire_is_the_fireplace_or_the_campfire():
+    found = rels("A dragon sleeps in front of the fireplace, and a bard plays a lute on a stool next to the fire.")
+    assert {("stool_1", "side of", "fireplace_1"), ("bard_1", "on", "stool_1")} <= found
+    assert ("tent_1", "near", "campfire_1") in rels("A campfire burns on the beach. A tent stands near the fire.")

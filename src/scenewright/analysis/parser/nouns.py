@@ -439,7 +439,11 @@ def _alias_mentions(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention
             nxt += 1
         word = singular(t.text)
         if word not in heads and len(word) >= 4:
-            compound = next((c for w, c in compounds.items() if w.endswith(word)), None)
+            # "the fire" is the campfire, or the fireplace ("a stool next to the fire")
+            compound = next(
+                (c for w, c in compounds.items() if w.endswith(word) or (w.startswith(word) and w[len(word) :] == "place")),
+                None,
+            )
             if compound is not None:
                 heads[word] = compound
         if i in taken or not t.text[0].isalpha() or word not in heads:
