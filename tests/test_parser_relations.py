@@ -329,3 +329,7 @@ def test_the_fire_is_the_fireplace_or_the_campfire():
     found = rels("A dragon sleeps in front of the fireplace, and a bard plays a lute on a stool next to the fire.")
     assert {("stool_1", "side of", "fireplace_1"), ("bard_1", "on", "stool_1")} <= found
     assert ("tent_1", "near", "campfire_1") in rels("A campfire burns on the beach. A tent stands near the fire.")
+
+
+def test_past_it_is_near_it():
+    assert ("tumbleweed_1", "near", "cactus_1") in rels("A tall saguaro grows by the road, and a tumbleweed rolls past it.")
