@@ -24,7 +24,7 @@ Decisions worth knowing:
   ("inside a warehouse", "a hangar with a spaceship", "a farmhouse kitchen") and is no object.
 - ``between A and B`` → right of one and left of the other (front/behind when the pair stands
   front to back) and near both; a seat ``at`` a desk or table → in front of it, facing it;
-  ``at the foot of`` a bed → in front of it, ``at the head of`` → behind it (a table's head is
+  ``at the foot of`` anything → in front of it, ``at the head of`` a bed → behind it (a table's head is
   an end); ``hanging from`` → above (near a tall host); ``leaning on`` / ``along`` → side of;
   ``in a row`` / ``stacked`` → each right of / on the one before; ``against the wall``, ``in
   the corner``, ``in the middle of the room``, ``at the back`` name no object and become the
@@ -68,8 +68,15 @@ Decisions worth knowing:
   of apples" and "a statue of a horse" hold contents, not objects; "a stone path", "a pine
   forest", "a throne hall" name no object; "a potted palm" is a potted plant, "a round
   table" a round table.
-- ``over`` means ``above`` after a hanging verb (hang, hover, float...), else ``near``; ``X under Y``
-  puts Y ``on`` X when X is flat (a rug under a table), else X ``near`` Y.
+- ``over`` means ``above`` after a hanging verb (hang, hover, float...) anywhere earlier in the
+  clause part or for a small (tabletop or hanging) thing, else ``near`` (a tree leaning over a
+  pond); a tabletop thing hung "from the ceiling" hangs. ``X under Y`` puts Y ``on`` X when X is
+  flat (a rug under a table), else X ``near`` Y.
+- ``in`` a seat, a tub, a boat or on a surface → ``on`` it ("a man in a rocking chair", "a duck
+  floats in the tub"); in anything else (a tent, a field) it places nothing.
+- A part of a building or a vehicle that is no object ("on the roof", "beside its door", "the
+  shop's roof", "the porch steps") places by its owner: one named in the same sentence, else the
+  latest building, else the latest vehicle.
 - Vague counts: a pair / a couple / both → 2; a few / several / some / a bare plural → 3;
   many / lots of → 5; ``each with a lamp``, ``every desk has a lamp`` and ``each surrounded by
   two chairs`` give that many per object of the group, placed by their own one.

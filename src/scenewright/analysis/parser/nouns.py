@@ -8,7 +8,7 @@ from functools import lru_cache
 
 from scenewright.core.catalogue import load_catalogue, match_phrase, phrase_index, singular
 from scenewright.analysis.parser.tokens import _Tok
-from scenewright.analysis.parser.vocabulary import Entry, load_vocabulary
+from scenewright.analysis.parser.vocabulary import GENERIC, Entry, load_vocabulary
 from scenewright.analysis.parser.words import (
     _DEFINITE,
     _DETERMINERS,
@@ -139,6 +139,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
     mentions: list[_Mention] = []
     places: list[str] = []
     modifier: list[str] = []
+    part_end: int | None = None  # where an opening "the bridge of" ends: its owner is the setting too
     for k, (s, e, cat, entry) in enumerate(raw):
         nxt = raw[k + 1] if k + 1 < len(raw) else None
         words = [t.text for t in toks[s:e]]
@@ -158,6 +159,12 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             e = nxt[1]
         if s == e:
             continue
+        if _role_after_as(toks, s):
+            continue  # "four logs around it as seats", "a crate used as a table": a use, not a thing
+        if _gerund_here(toks, s, e):
+            continue  # "two children are building a snowman": a verb, not a building
+        if _adverb_here(toks, s, e):
+            continue  # "the shrine stands well behind the gate": an adverb, not a well
         kind, modifier = modifier, []
         if kind and entry is not None and entry.category == "figure":
             machine = match_phrase(tuple(kind))
@@ -179,15 +186,90 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         ):  # "an abandoned factory floor with a conveyor belt"
             places.append(" ".join(words))
             continue
+        if _part_of_vessel(toks, s, e) or (part_end is not None and _owner_of_part(toks, part_end, s)):
+            # "The bridge of a small cargo spaceship, ...": the bridge and the ship are the setting
+            places.append(" ".join(words))
+            part_end = e if part_end is None else None
+            continue
         qualifies = follow[:1].isalpha() and follow not in _STOP and not _is_verb(follow)
         if len(words) == 1 and words[0] in _MODIFIER_NOUNS and qualifies and not follow.endswith(("ed", "ing")):
             continue  # "a stone path", "a glass roof": an adjective here
         if s > 0 and toks[s - 1].text in _PROJECTED and cat not in _SHOWS_PROJECTION:
             cat, entry = "hologram", None  # "holographic koi" are light, not fish: place and size them as one
+        if singular(words[-1]) == "one" and mentions and (entry is None or entry.category == GENERIC):
+            # "a tall pine tree ..., with a few smaller ones": more of the thing named before
+            # (the sentence's subject, not the landmark it stands by)
+            stop = max((k for k in range(s) if toks[k].text in (".", "!", "?")), default=-1)
+            same = [m for m in mentions if m.start > stop]
+            cat, entry = (same or mentions)[0 if same else -1].category, (same or mentions)[0 if same else -1].guess
         mention = _Mention(cat, " ".join(t.orig for t in toks[s:e]), s, e, 1, False, False)
         mention.guess, mention.modifier = entry, kind
         mentions.append(mention)
     return _alias_mentions(toks, mentions), places
+
+
+#: Nouns that are also adverbs of degree or place, read as such when bare before a preposition.
+_ADVERB_NOUNS = {"well", "way", "far", "right", "just", "back"}
+_ADVERB_FOLLOWERS = {"behind", "away", "back", "above", "below", "beyond", "off", "over", "past", "ahead", "out",
+                     "inside", "outside", "in", "into", "before", "under", "beneath", "apart", "clear", "up", "down"}  # fmt: skip
+
+
+def _adverb_here(toks: list[_Tok], s: int, e: int) -> bool:
+    """A one-word noun with no determiner, number or adjective of its own, right before a
+    preposition: "stands well behind the gate", "set way back from the road"."""
+    if e - s != 1 or toks[s].text not in _ADVERB_NOUNS or e >= len(toks) or toks[e].text not in _ADVERB_FOLLOWERS:
+        return False
+    before = toks[s - 1].text if s > 0 else "."
+    if not before[:1].isalpha():
+        return True
+    return before not in _DETERMINERS and before not in _NUMBERS and not load_vocabulary().is_adjective(before)
+
+
+#: Parts of a vessel or a building that are a setting when the text opens with "the X of a Y".
+_PLACE_PARTS = {"bridge", "deck", "cockpit", "hold", "cabin", "interior", "inside", "galley", "hull", "flight deck"}
+
+
+def _part_of_vessel(toks: list[_Tok], s: int, e: int) -> bool:
+    """The description opens with "The bridge of a ...", "The cockpit of an old plane"."""
+    j = s - 1
+    while j >= 0 and (toks[j].text in _DETERMINERS or load_vocabulary().is_adjective(toks[j].text)):
+        j -= 1
+    opening = j < 0 or toks[j].text in (".", "!", "?")
+    return opening and " ".join(t.text for t in toks[s:e]) in _PLACE_PARTS and e < len(toks) and toks[e].text == "of"
+
+
+def _owner_of_part(toks: list[_Tok], part_end: int, s: int) -> bool:
+    """The noun at ``s`` is the owner in "the bridge of a small cargo spaceship"."""
+    return toks[part_end].text == "of" and s - part_end <= 5 and all(
+        t.text[:1].isalpha() and t.text not in (",", "with") for t in toks[part_end + 1 : s]
+    )
+
+
+def _role_after_as(toks: list[_Tok], s: int) -> bool:
+    """The noun at ``s`` names what another thing serves as ("as seats", "as a table"), not
+    "as well as a lamp" or "such as a lamp"."""
+    j = s - 1
+    while j >= 0 and s - j <= 3 and toks[j].text not in ("as", "to", "by") and toks[j].text[:1].isalpha() and (
+        toks[j].text in ("a", "an", "the", "her", "his", "their") or toks[j].text not in _STOP
+    ):
+        j -= 1
+    if j >= 1 and (toks[j - 1].text, toks[j].text) in _ABSENT_OWNER:
+        return True  # "a bedroom belonging to a teenage girl": the owner is not in the scene
+    return j >= 1 and toks[j].text == "as" and toks[j - 1].text not in ("well", "such", "same")
+
+
+#: Word pairs after which a noun names an owner, not a thing of the scene.
+_ABSENT_OWNER = {("belonging", "to"), ("belongs", "to"), ("owned", "by"), ("run", "by")}
+
+
+def _gerund_here(toks: list[_Tok], s: int, e: int) -> bool:
+    """A one-word "-ing" noun used as a verb: "two children are building a snowman" (no
+    determiner, number or adjective before it, an object after it)."""
+    w = toks[s].text
+    if e - s != 1 or not w.endswith("ing") or s == 0 or e >= len(toks) or toks[e].text not in _OBJECT_OPENERS:
+        return False
+    before = toks[s - 1].text
+    return before not in _DETERMINERS and before not in _NUMBERS and not load_vocabulary().is_adjective(before)
 
 
 #: Words that open an object after a verb: "an astronaut plants a flag", "a knight guards the gate".
@@ -256,8 +338,17 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     if j >= 0 and toks[j].text in _INSIDE:
         return True
     # "on the top floor of a converted warehouse": a part of the place holds the scene
-    if j > 0 and toks[j].text == "of" and toks[j - 1].text in ("floor", "top", "edge", "roof", "corner", "end", "back"):
+    if j > 0 and toks[j].text == "of" and toks[j - 1].text in (
+        "floor", "top", "edge", "roof", "corner", "end", "back", "middle", "centre", "center", "rear"
+    ):  # fmt: skip
         return True
+    # a sentence that only names the place ("An anime-style ramen shop late at night.")
+    if later and (j < 0 or toks[j].text in (".", "!", "?")):
+        k = e
+        while k < len(toks) and toks[k].text not in (".", "!", "?") and not _is_verb(toks[k].text):
+            k += 1
+        if k >= len(toks) or toks[k].text in (".", "!", "?"):
+            return True
     # the description opens with the place ("A cyberpunk hangar on the edge of the city, late at night.")
     opening = j < 0 or (toks[j].text in (".", "!", "?") and j == s - 1)
     follow = toks[e].text if e < len(toks) else "."
@@ -348,7 +439,11 @@ def _alias_mentions(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention
             nxt += 1
         word = singular(t.text)
         if word not in heads and len(word) >= 4:
-            compound = next((c for w, c in compounds.items() if w.endswith(word)), None)
+            # "the fire" is the campfire, or the fireplace ("a stool next to the fire")
+            compound = next(
+                (c for w, c in compounds.items() if w.endswith(word) or (w.startswith(word) and w[len(word) :] == "place")),
+                None,
+            )
             if compound is not None:
                 heads[word] = compound
         if i in taken or not t.text[0].isalpha() or word not in heads:

@@ -96,6 +96,14 @@ _LOAD_SIZE = 0.3
 _FLAT_HOLDERS = ("plate", "pallet")
 #: Shapes that hold what they hold inside, out of the layout ("a greenhouse holds tomato plants").
 _ENCLOSURES = ("house", "building", "tent", "kiosk")
+#: Where a hung thing hangs from indoors.
+_CEILING_WORDS = ("ceiling", "ceilings", "beam", "beams", "rafter", "rafters")
+#: Vehicles with a roof and doors of their own.
+_ROOFED_VEHICLES = ("car", "truck", "bus", "vehicle")
+#: Parts of a building that place a thing by the building itself when nothing else is named.
+_BUILDING_PARTS = ("roof", "rooftop", "porch", "step", "doorstep", "chimney", "eave", "gable", "veranda", "facade", "door", "doorway")
+#: Shapes one sits or floats *in* and is then on ("in the tub", "in the canoe").
+_VESSELS = ("bathtub", "boat", "bed", "cart", "basket", "crate", "pond", "sandbox")
 #: What a thing is mounted on as a part of it ("lanterns on tall poles").
 _MOUNTS = ("pole", "stick", "mast", "stake", "spike")
 #: Verbs that join a subject to what it is, not to a thing it acts on.
@@ -200,7 +208,14 @@ class _Reader:
             # "the teacher's desk" is not one of the school desks, nor "the teacher's bench" a lab table
             owned = any(t.text.endswith("'s") for t in self.toks[max(0, m.start - 1) : m.end - 1])
             if owned and found is not None and singular(self.groups[found].name.split()[-1]) != head:
-                found = None
+                # "the captain's chair" again, after two crew seats: the captain's chair named before
+                owner = next(t.text for t in self.toks[max(0, m.start - 1) : m.end - 1] if t.text.endswith("'s"))
+                found = next(
+                    (g.index for g in reversed(self.groups)
+                     if g.category == m.category and singular(g.name.split()[-1]) == head
+                     and owner in g.description.lower().split()),
+                    None,
+                )  # fmt: skip
             if found is None and not owned:
                 found = next(
                     (g.index for g in reversed(self.groups) if g.name.split()[-1].endswith(head)), None
@@ -382,7 +397,12 @@ class _Reader:
             joined = bool(out) and any(
                 self.toks[k].text in ("and", "or") for k in (*range(out[-1][0] + 1, out[-1][1]), *range(cs + 1, first_rel))
             )
-            if goes_on or (places and out and joined and self._is_list(*out[-1], strict=True)):
+            # "an oil lamp and a teapot, and a clockwork automaton waits beside it": a list that
+            # "and" already closed ends there; the next "and" opens a clause of its own
+            closed = bool(out) and self.toks[cs].text in ("and", "or") and any(
+                self.toks[k].text in ("and", "or") for k in range(out[-1][0] + 1, out[-1][1])
+            )
+            if goes_on or (places and out and joined and not closed and self._is_list(*out[-1], strict=True)):
                 out[-1] = (out[-1][0], ce)
                 continue
             out.append((cs, ce))
@@ -392,6 +412,8 @@ class _Reader:
         """The clause ends inside the "with" part of a noun before it: nothing placed after."""
         toks = self.toks
         last = max((k for k in range(cs + 1, ce) if toks[k].text == "with" or toks[k].text in _HOLD), default=None)
+        if last is not None and last <= cs + 1 and not any(k in self.rel_at for k in range(last, ce)):
+            return True  # "..., cluttered with a microscope, an oil lamp and a teapot": the noun before's list
         if last is None or not any(cs <= k and m.end <= last for k, m in self.by_start.items()):
             return False  # "a market square with three stalls, ...": the place's list, not a thing's
         return not any(k in self.rel_at for k in range(last, ce))
@@ -447,6 +469,9 @@ class _Reader:
                 j += 1
                 continue
             break
+        building = self._building_of_part(pos, j)
+        if building is not None:
+            return [building], j  # "mounted on the roof", "beside its door", "on the shop's roof"
         owner = _OWNER_PRONOUNS.get(toks[pos].text) if pos < ce else None
         if owner and j > pos + 1:
             return owner, j  # "above its door": a part of its owner places by the owner itself
@@ -454,7 +479,31 @@ class _Reader:
             return owner, pos + 2  # "piled against its side": by the owner
         return None, pos
 
-    def _pronoun(self, word: str, c: _Clause, srcs: list[int], prefer: list[int]) -> list[int]:
+    def _building_of_part(self, pos: int, end: int) -> int | None:
+        """The building (or vehicle) a part of one names when no thing is named ("on the roof",
+        "beside its door", "at the foot of the porch steps"): the one whose name the possessive
+        gives, else the latest one mentioned."""
+        words = [t.text for t in self.toks[pos:end]]
+        if not any(singular(w) in _BUILDING_PARTS for w in words):
+            return None
+        # one named in this sentence first ("a truck is parked behind the tents with two kayaks
+        # on its roof"), then earlier buildings, then earlier vehicles
+        stop = max((k for k in range(pos) if self.toks[k].text in (".", "!", "?")), default=-1)
+        here = {m.group for k, m in self.by_start.items() if stop < k < pos and m.group >= 0}
+        shapes = [self.catalogue[g.category].shape for g in self.groups]
+        latest = range(len(self.groups) - 1, -1, -1)
+        buildings = [
+            *(g for g in latest if g in here and shapes[g] in (*_ENCLOSURES, *_ROOFED_VEHICLES)),
+            *(g for g in latest if shapes[g] in _ENCLOSURES),
+            *(g for g in latest if shapes[g] in _ROOFED_VEHICLES),
+        ]
+        named = [w[:-2] for w in words if w.endswith("'s")]
+        for g in buildings:
+            if not named or singular(named[0]) == singular(self.groups[g].name.split()[-1]):
+                return g
+        return None
+
+    def _pronoun(self, word: str, c: _Clause, srcs: list[int], prefer: list[int], kind: str = "") -> list[int]:
         """The group "it" / "them" names: the subject before (when this clause has its own) or
         the latest earlier mention, of the right number."""
         plural = word in ("them", "themselves")
@@ -466,7 +515,8 @@ class _Reader:
         recent = [g for g in [*prefer, *reversed(self.history), *reversed(c.groups)] if g not in srcs]
         # a thing on the floor is not placed by a small thing on a table ("a nightstand with a lamp
         # on it. A rug lies in front of it": the nightstand)
-        big = bool(srcs) and not self._small(*srcs)
+        # (above a small thing is fine: "a register on the counter, and a hologram floats above it")
+        big = bool(srcs) and not self._small(*srcs) and kind not in ("above", "over")
         for fits in ((lambda g: not (big and self._small(g))), (lambda g: True)):
             for g in recent:
                 if (self.groups[g].count > 1) == plural and fits(g):
@@ -599,8 +649,8 @@ class _Reader:
             if g in c.wsub_related:
                 continue
             for h in c.head:
-                if h == g:
-                    continue
+                if h == g or any(r[1] == g and r[2] == h for r in self.relations):
+                    continue  # "with a stone lantern beside it": placed by the head, not on it
                 rests = self.groups[g].rests
                 if c.hold or (rests == "surface" and self.catalogue[self.groups[h].category].support):
                     self._relate("on", [g], h)
@@ -678,12 +728,22 @@ class _Reader:
             # a post next to it": the wagon)
             own_subject = list(prev_subject) if c.main and srcs == c.main else []
             prefer = [*c.last_target, *prev_subject] if c.last_target else own_subject
-            targets: list[int] | str = self._pronoun(target, c, srcs, prefer) if c.head is None else list(c.head)
+            targets: list[int] | str = self._pronoun(target, c, srcs, prefer, kind) if c.head is None else list(c.head)
             if c.head is not None and all(self._living(h) for h in c.head):
                 # "a man on the bench, with his terrier asleep under it": "it" is no person
                 targets = self._pronoun(target, c, srcs + c.head, prefer)
+            below = [r[2] for r in self.relations if c.head and r[1] in c.head and r[0] == "above"]
+            if below and all(self.groups[h].rests == "hanging" for h in c.head) and not any(
+                self.groups[g].rests == "hanging" for g in srcs
+            ):  # "a chandelier hangs above the table, with a bench on either side of it": the table
+                targets = below[-1:]
             if c.head is not None and srcs == c.head:
                 targets = self._pronoun(target, c, srcs, prefer)
+            elif c.head is not None and target == "it" and all(self.groups[h].count > 1 for h in c.head):
+                # "two tents, with a campfire in front of them and four logs around it": "it" is
+                # no plural head but the single thing named last
+                single = [g for g in reversed(c.groups) if g not in srcs and self.groups[g].count == 1]
+                targets = single[:1] or targets
             elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
                 targets = c.wsub_before[-1:]  # "... and a computer beside it": beside the till
         elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
@@ -730,7 +790,11 @@ class _Reader:
             self._one_a_side(srcs)  # also beside what is no object: "on each side of the elevator"
         if not srcs or not targets:
             return end
-        hang = kind == "hanging from" or any(t.text in _HANG_VERBS for t in toks[max(0, rel.start - 3) : rel.start])
+        hang = kind == "hanging from" or self._hung_before(rel.start)
+        if hang and kind in ("above", "over", "hanging from") and self._from_ceiling(rel.start):
+            for g in srcs:  # "three paper lanterns hang from the ceiling over the counter": hung, not set down
+                if self.groups[g].rests == "surface":
+                    self.groups[g].rests = "hanging"
         if targets == "each other":
             each_other = "face to" if kind == "face to" else "near"
             for s in srcs:
@@ -792,6 +856,23 @@ class _Reader:
             if self.groups[s].count == 1 and s not in self.history:
                 self.groups[s].count = 2
 
+    def _hung_before(self, pos: int) -> bool:
+        """A hanging verb earlier in the same clause part ("three lanterns hang from the ceiling
+        over the counter": the over is hung, not a tree leaning over)."""
+        k = pos - 1
+        while k >= 0 and pos - k <= 8 and self.toks[k].text not in (",", ".", ";", "and", "while"):
+            if self.toks[k].text in _HANG_VERBS:
+                return True
+            k -= 1
+        return False
+
+    def _from_ceiling(self, pos: int) -> bool:
+        """"From the ceiling" (or a beam, the rafters) earlier in the clause part, or right here."""
+        k = pos - 1
+        while k >= 0 and pos - k <= 8 and self.toks[k].text not in (",", ".", ";", "and", "while"):
+            k -= 1
+        return any(self.toks[i].text in _CEILING_WORDS for i in range(k + 1, min(pos + 4, len(self.toks))))
+
     def _relate(self, kind: str, srcs: list[int], target: int, hang: bool = False, instance=None) -> None:
         for s in srcs:
             resolved = self._kind(kind, s, target, hang)
@@ -802,7 +883,8 @@ class _Reader:
     def _kind(self, kind: str, s: int, t: int, hang: bool = False) -> str:
         src = self.groups[s]
         if kind == "over":
-            return "above" if hang or src.rests == "hanging" else "near"  # a tree leaning over a pond
+            # a tree leaning over a pond stands by it; a lamp or a lantern over a table hangs above it
+            return "above" if hang or src.rests in ("hanging", "surface") else "near"
         if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not hang:
             return "near"  # a tree "above" a pond cannot float: read it as near
         if kind == "under":
@@ -812,12 +894,17 @@ class _Reader:
         if kind == "at":  # "an office chair at each desk": pulled up to it, facing it
             seat = self.catalogue[src.category].shape in _SEATS
             return "at seat" if seat and (target.support or target.shape in ("desk", "table", "counter")) else "near"
-        if kind in ("foot of", "head of"):  # "a chest at the foot of the bed": its front, the headboard its back
+        if kind == "foot of":  # "a chest at the foot of the bed", "a box at the foot of its steps": its front
+            return "in front of"
+        if kind == "head of":  # the headboard is a bed's back
             if target.shape in ("bed", "sofa", "bench"):
-                return "in front of" if kind == "foot of" else "behind"
-            if kind == "head of" and target.support:
+                return "behind"
+            if target.support:
                 return "left of"  # the head of a table is one of its ends
             return "near"
+        if kind == "in":  # "a man in a rocking chair", "a duck floats in the tub": on it
+            holds = target.shape in _SEATS or target.support or target.shape in _VESSELS
+            return "on" if holds and target.shape not in _ENCLOSURES and target.size[2] <= 2.5 else "no relation"
         if kind == "hanging from":  # from a beam or a shelf: above it; from a tall tree: beside it
             return "above" if target.size[2] <= 2.5 else "near"
         if kind == "centre of":  # "a vase in the middle of the table": on it; else near it
