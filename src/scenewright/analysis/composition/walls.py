@@ -28,6 +28,8 @@ def room_constraints(objects: Sequence[SceneObject], constraints: Sequence[Const
     kinds = {o.id: roles.kind(o.category) if o.category else None for o in objects}
     mounted = {o.id: ("on wall", ROOM_TARGET) for o in objects if o.category in WALL_THINGS}
     mounted |= {o.id: ("on ceiling", CEILING_TARGET) for o in objects if o.category in CEILING_THINGS}
+    # What the text itself hangs on a wall or from the ceiling ("a lantern hangs from the ceiling").
+    mounted |= {c.source: (c.relation, c.target) for c in constraints if c.relation in ("on wall", "on ceiling")}
     out: list[Constraint] = []
     for c in constraints:
         if c.source in mounted and c.relation == "above":

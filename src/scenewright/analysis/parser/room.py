@@ -30,7 +30,7 @@ from scenewright.analysis.parser.model import ParsedRelation, ParsedScene
 from scenewright.errors import InputError
 from scenewright.layout.room import COVERAGE
 from scenewright.layout.room import FLOOR as FLAT
-from scenewright.scene import MAX_ROOM_HEIGHT, MIN_ROOM_HEIGHT, MIN_WALL, Opening, Room, SceneObject
+from scenewright.scene import CEILING_TARGET, MAX_ROOM_HEIGHT, MIN_ROOM_HEIGHT, MIN_WALL, Opening, Room, SceneObject
 
 #: Walls of a room made by :meth:`Room.rectangle`, by the side of the room they stand on.
 RECTANGLE_WALLS = {"front": 0, "right": 1, "back": 2, "left": 3}
@@ -251,7 +251,16 @@ def place_openings(room: Room, wanted: Sequence[tuple[str, str | None, int]]) ->
 #: Categories hung on a wall, and hung from the ceiling, when the scene has a room.
 WALL_THINGS = frozenset({"picture_frame", "mirror", "wall_clock", "projector_screen"})
 CEILING_THINGS = frozenset({"ceiling_fan", "pendant_lamp"})
-_WALL_PHRASE = re.compile(r"\b(?:against|along|on|by|to|in|at|onto|from)\s+(?:the\s+|a\s+|one\s+)?(?:(back|rear|far|left|right|front)(?:[- ]hand)?\s+)?(wall|corner)s?\b")
+_WALL_PHRASE = re.compile(r"\b(against|along|on|by|to|in|at|onto|from)\s+(?:the\s+|a\s+|one\s+)?(?:(back|rear|far|left|right|front)(?:[- ]hand)?\s+)?(wall|corner)s?\b")
+#: "hangs from the ceiling", "suspended from the ceiling", "on the ceiling".
+_CEILING_PHRASE = re.compile(r"\b(?:(?:hang|hangs|hanging|hung|suspended|dangles|dangling|swings?)\s+(?:\w+\s+){0,2}?from|on)\s+the\s+ceiling\b")
+#: Verbs that put a thing *on* a wall rather than against it.
+_MOUNTED = re.compile(r"\b(?:hang|hangs|hanging|hung|mounted|fixed|pinned|nailed|fastened)\b")
+
+
+def _names_between(text: str, names: set[str], own: str) -> bool:
+    """Whether ``text`` names a thing other than ``own``."""
+    return any(re.search(rf"\b{re.escape(other)}s?\b", text) for other in names if other != own)
 
 
 def _head(o) -> str:
@@ -261,7 +270,8 @@ def _head(o) -> str:
 
 def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
     """Room relations the text states: "against the (back) wall" → ``against wall``, "in the
-    corner" → ``in corner``, a wall thing "on the left wall" → ``on wall``. The side picks the
+    corner" → ``in corner``, a thing on, hung or mounted on "the left wall" → ``on wall``, a
+    thing hanging from the ceiling → ``on ceiling``. The side picks the
     wall (:data:`RECTANGLE_WALLS`); no side means any wall (``room``). A thing is matched to the
     phrase in its own sentence, after its name."""
     low = " ".join(parsed.text.lower().split())
@@ -276,6 +286,10 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
             if found is None:
                 continue
             at = found.end()
+            ceiling = _CEILING_PHRASE.search(sentence, at)
+            if ceiling is not None and not _names_between(sentence[at:ceiling.start()], names, name):
+                out.append(ParsedRelation(source=o.id, relation="on ceiling", target=CEILING_TARGET))
+                break
             phrase = _WALL_PHRASE.search(sentence, at)
             if phrase is None:
                 break
@@ -283,16 +297,16 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
             # thing, or when no other thing is named between the two ("a wardrobe stands against
             # the right wall"; not "a desk with a lamp by the wall").
             between = sentence[at:phrase.start()]
-            if o.anchor is None and o.category not in WALL_THINGS and any(
-                re.search(rf"\b{re.escape(other)}s?\b", between) for other in names if other != name
-            ):
+            if o.anchor is None and o.category not in WALL_THINGS and _names_between(between, names, name):
                 break
-            side, what = phrase.group(1), phrase.group(2)
+            preposition, side, what = phrase.group(1), phrase.group(2), phrase.group(3)
             target = f"wall_{RECTANGLE_WALLS[_SIDE_WORDS[side]]}" if side and _SIDE_WORDS.get(side) else "room"
             if what == "corner":
                 relation = "in corner"
+            elif o.category in WALL_THINGS or preposition in ("on", "onto") or _MOUNTED.search(between):
+                relation = "on wall"  # a thing on a wall, or hung or mounted there, is fixed to it
             else:
-                relation = "on wall" if o.category in WALL_THINGS else "against wall"
+                relation = "against wall"
             out.append(ParsedRelation(source=o.id, relation=relation, target=target))
             break
     return out
