@@ -32,7 +32,7 @@ from urllib.parse import urlsplit
 from scenewright.assets.normalise import check_glb
 from scenewright.core.protocols import MeshRequest
 from scenewright.backends.scheduler import JobFailed, Server, ServerPool, server_urls
-from scenewright.errors import BackendError, InputError, MissingExtra
+from scenewright.errors import InputError, MissingExtra
 from scenewright.settings import Settings
 
 try:
@@ -202,14 +202,6 @@ class Gradio(ServerPool):
 
     def close(self) -> None:
         self._client.close()
-
-    def _check_requests(self, requests: Sequence[MeshRequest]) -> None:
-        imageless = [r.id for r in requests if r.image is None]
-        if imageless:
-            raise BackendError(
-                f"the {self.recipe.name} Gradio app builds meshes from object images, and these objects have none: "
-                f"{', '.join(imageless)}. Configure an image backend (e.g. --images openai:gpt-image-1)"
-            )
 
     # -- the protocol ---------------------------------------------------------------------
 

@@ -31,7 +31,7 @@ from typing import Any
 from scenewright.assets.normalise import check_glb
 from scenewright.backends.scheduler import JobFailed, Server, ServerPool, server_urls
 from scenewright.core.protocols import MeshRequest
-from scenewright.errors import BackendError, InputError, MissingExtra
+from scenewright.errors import InputError, MissingExtra
 from scenewright.settings import Settings
 
 try:
@@ -109,15 +109,6 @@ class Hunyuan3D(ServerPool):
 
     def close(self) -> None:
         self._client.close()
-
-    def _check_requests(self, requests: Sequence[MeshRequest]) -> None:
-        imageless = [r.id for r in requests if r.image is None]
-        if imageless:
-            raise BackendError(
-                "Hunyuan3D builds meshes from object images, and these objects have none: "
-                f"{', '.join(imageless)}. Configure an image backend (e.g. --images openai:gpt-image-1) "
-                "or use --meshes procedural"
-            )
 
     def _health(self, server: Server) -> tuple[str | None, str | None]:
         """(what is wrong with the server or None, its worker id)."""

@@ -17,7 +17,7 @@ from __future__ import annotations
 import base64
 import logging
 import os
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from typing import Any
 
 from scenewright.assets.normalise import check_glb
@@ -101,14 +101,6 @@ class Meshy(ServerPool):
 
     def close(self) -> None:
         self._client.close()
-
-    def _check_requests(self, requests: Sequence[MeshRequest]) -> None:
-        imageless = [r.id for r in requests if r.image is None]
-        if imageless:
-            raise BackendError(
-                "Meshy image-to-3D builds meshes from object images, and these objects have none: "
-                f"{', '.join(imageless)}. Configure an image backend (e.g. --images openai:gpt-image-1)"
-            )
 
     def _health(self, server: Server) -> tuple[str | None, str | None]:
         return None, None  # a hosted API: the first task says whether the key and the service work

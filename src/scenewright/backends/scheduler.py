@@ -124,7 +124,15 @@ class ServerPool:
         raise NotImplementedError
 
     def _check_requests(self, requests: Sequence[MeshRequest]) -> None:
-        """Raise BackendError for requests this backend cannot build at all."""
+        """Refuse requests this backend cannot build at all: image-to-3D services need the
+        object's image, so a run with no image backend fails before any job is sent."""
+        imageless = [r.id for r in requests if r.image is None]
+        if imageless:
+            raise BackendError(
+                f"{self.label} builds meshes from object images, and these objects have none: "
+                f"{', '.join(imageless)}. Configure an image backend (e.g. --images openai:gpt-image-1) "
+                "or use --meshes procedural"
+            )
 
     # -- the MeshGenerator protocol -------------------------------------------------------
 
