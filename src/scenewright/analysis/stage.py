@@ -17,11 +17,13 @@ from scenewright.core.protocols import ImageGenerator, VisionLanguageModel
 from scenewright.errors import InputError
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
-from scenewright.scene import RemovedObject, Scene
+from scenewright.scene import RemovedObject, Scene, Vec3
 
 log = logging.getLogger(__name__)
 
 STAGE = "analyze"
+#: m, the least gap left between the tallest object and the ceiling.
+CEILING_CLEARANCE = 0.1
 #: Provenance step that marks the redundancy check as done (its output may be "nothing removed").
 REDUNDANCY_STEP = "redundant"
 
@@ -63,9 +65,26 @@ def _objects(scene: Scene, vlm: VisionLanguageModel, reference: bytes | None, ro
     )
     scene.room = room_for(scene.text, objects, parse_room_option(room), answer.room, answer.proposes_room)
     if scene.room is not None:
+        _fit_under_ceiling(scene)
         xs, ys = [p[0] for p in scene.room.floor], [p[1] for p in scene.room.floor]
         scene.record(STAGE, f"room {max(xs) - min(xs):g} x {max(ys) - min(ys):g} m, {scene.room.height:g} m high, "
                      f"{len(scene.room.openings)} openings", step="room", room=room, walls=len(scene.room.floor))
+
+
+def _fit_under_ceiling(scene: Scene) -> None:
+    """Scale down, proportions kept, every object taller than the room: a thing the text puts
+    in a room stands in it (a "cat tree" read as a 6 m tree, a statue sized for a square)."""
+    assert scene.room is not None
+    limit = scene.room.height - CEILING_CLEARANCE
+    shrunk = {}
+    for obj in scene.objects:
+        if obj.size.z > limit:
+            k = limit / obj.size.z
+            obj.size = Vec3(x=obj.size.x * k, y=obj.size.y * k, z=limit)
+            shrunk[obj.id] = round(k, 3)
+    if shrunk:
+        scene.record(STAGE, f"scaled {len(shrunk)} objects down to fit under the {scene.room.height:g} m ceiling",
+                     step="room", scaled=shrunk)
 
 
 def _object_images(
