@@ -37,8 +37,6 @@ from scenewright.settings import Settings
 
 try:
     import httpx
-
-    from scenewright.backends.http import limited_client
 except ImportError:  # the remote extra; Gradio.__init__ says how to install it
     httpx = None  # type: ignore[assignment]
 
@@ -167,15 +165,13 @@ class Gradio(ServerPool):
     ):
         if httpx is None:
             raise MissingExtra("the Gradio mesh backend", "remote", "httpx")
-        super().__init__(urls, concurrency=concurrency, max_failures=max_failures, reprobe_interval=reprobe_interval)
+        super().__init__(urls, concurrency=concurrency, max_failures=max_failures, reprobe_interval=reprobe_interval,
+                         timeout=timeout, max_download_bytes=max_download_bytes)
         self.recipe = recipe
         self.seed = seed
         self.job_timeout = job_timeout
         self.params = {**recipe.as_params(), "seed": seed}
         self._prefix: dict[str, str] = {}
-        self._client = limited_client(
-            timeout, max_download_bytes, limits=httpx.Limits(max_connections=len(urls) * concurrency * 2 + 4)
-        )
 
     @classmethod
     def from_spec(cls, argument: str, settings: Settings) -> Gradio:
@@ -200,8 +196,6 @@ class Gradio(ServerPool):
             timeout=settings.timeout, max_download_bytes=settings.max_download_bytes, **extra,
         )
 
-    def close(self) -> None:
-        self._client.close()
 
     # -- the protocol ---------------------------------------------------------------------
 

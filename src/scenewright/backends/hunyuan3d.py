@@ -36,8 +36,6 @@ from scenewright.settings import Settings
 
 try:
     import httpx
-
-    from scenewright.backends.http import limited_client
 except ImportError:  # the remote extra; Hunyuan3D.__init__ says how to install it
     httpx = None  # type: ignore[assignment]
 
@@ -86,14 +84,12 @@ class Hunyuan3D(ServerPool):
             raise InputError(
                 f"unknown hunyuan3d parameters {sorted(unknown)}; valid ones: {', '.join(DEFAULT_PARAMS)}"
             )
-        super().__init__(urls, concurrency=concurrency, max_failures=max_failures, reprobe_interval=reprobe_interval)
+        super().__init__(urls, concurrency=concurrency, max_failures=max_failures, reprobe_interval=reprobe_interval,
+                         timeout=timeout, max_download_bytes=max_download_bytes)
         self.params = {**DEFAULT_PARAMS, **(params or {})}
         self.job_timeout = job_timeout
         self.poll_interval = poll_interval
         self.health_interval = health_interval
-        self._client = limited_client(
-            timeout, max_download_bytes, limits=httpx.Limits(max_connections=len(urls) * concurrency * 2 + 4)
-        )
 
     @classmethod
     def from_spec(cls, argument: str, settings: Settings) -> Hunyuan3D:
@@ -107,8 +103,6 @@ class Hunyuan3D(ServerPool):
             max_download_bytes=settings.max_download_bytes, **tuning,
         )
 
-    def close(self) -> None:
-        self._client.close()
 
     def _health(self, server: Server) -> tuple[str | None, str | None]:
         """(what is wrong with the server or None, its worker id)."""

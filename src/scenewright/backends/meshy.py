@@ -30,8 +30,6 @@ from scenewright.settings import Settings
 
 try:
     import httpx
-
-    from scenewright.backends.http import limited_client
 except ImportError:  # the remote extra; Meshy.__init__ says how to install it
     httpx = None  # type: ignore[assignment]
 
@@ -70,13 +68,13 @@ class Meshy(ServerPool):
         # One "server"; a failure there fails the job (no other server to move to), and after
         # three in a row (a spent quota, an outage) the API rests for a minute before the
         # next task is sent, instead of being asked for every asset.
-        super().__init__([base_url], concurrency=concurrency, max_failures=3, reprobe_interval=60.0)
+        super().__init__([base_url], concurrency=concurrency, max_failures=3, reprobe_interval=60.0, timeout=timeout,
+                         max_download_bytes=max_download_bytes)
         self.key = key
         self.params = {**DEFAULT_PARAMS, **(params or {})}
         self.tasks = cache or RequestCache(None)
         self.job_timeout = job_timeout
         self.poll_interval = poll_interval
-        self._client = limited_client(timeout, max_download_bytes)
 
     @classmethod
     def from_spec(cls, argument: str, settings: Settings) -> Meshy:
@@ -99,8 +97,6 @@ class Meshy(ServerPool):
                    cache=RequestCache(settings.cache_dir), timeout=settings.timeout,
                    max_download_bytes=settings.max_download_bytes, **tuning)
 
-    def close(self) -> None:
-        self._client.close()
 
     def _health(self, server: Server) -> tuple[str | None, str | None]:
         return None, None  # a hosted API: the first task says whether the key and the service work

@@ -93,6 +93,8 @@ class ServerPool:
         concurrency: int = 1,
         max_failures: int = 3,
         reprobe_interval: float = 60.0,
+        timeout: float = 120.0,
+        max_download_bytes: int | None = None,
     ):
         if not urls:
             raise InputError(f"the {self.name} mesh backend needs at least one server URL")
@@ -103,6 +105,10 @@ class ServerPool:
         self.servers = [Server(url=u.rstrip("/"), slots=concurrency) for u in urls]
         self.max_failures = max_failures
         self.reprobe_interval = reprobe_interval
+        # One HTTP client for every server, bounded in time and size, with a connection for
+        # each job slot (a job polls while the next one submits).
+        self.timeout, self.max_download_bytes = timeout, max_download_bytes
+        self._http = None
         self._cond = threading.Condition()
         self._health_lock = threading.Lock()
         self._cancelled = threading.Event()
@@ -144,6 +150,26 @@ class ServerPool:
     #: The asset stage hands every request over at once (each waits in the shared queue), so
     #: a server that frees a slot always finds the next job waiting; the slots bound the work.
     concurrency = 1 << 16
+
+    @property
+    def _client(self):
+        """The servers' HTTP client, made on first use (so a pool that never calls out, as in
+        the scheduler's own tests, needs no HTTP library)."""
+        if self._http is None:
+            import httpx
+
+            from scenewright.backends.http import limited_client
+            from scenewright.settings import Settings
+
+            self._http = limited_client(
+                self.timeout, self.max_download_bytes or Settings.max_download_bytes,
+                limits=httpx.Limits(max_connections=sum(s.slots for s in self.servers) * 2 + 4),
+            )
+        return self._http
+
+    def close(self) -> None:
+        if self._http is not None:
+            self._http.close()
 
     def cancel(self) -> None:
         """Stop for good (the run was interrupted): waiting jobs are never sent, and running
