@@ -106,3 +106,28 @@ def test_every_shipped_indoor_prompt_sits_in_its_room(tmp_path, prompt):
     out = tmp_path / prompt.stem
     assert main(["generate", text, "--out", str(out), "--no-render"]) == 0
     _assert_sits_in_its_room(_scene(out))
+
+
+@pytest.mark.parametrize("text", [
+    "The bridge of a small cargo spaceship, with a huge curved window at the front looking out on a ringed planet. "
+    "The captain's chair sits in the middle facing the window, with a control console on each side of it.",
+    "Inside a village smithy, a heavy iron anvil sits on a tree stump, with a wooden bucket beside it.",
+    "A low-poly goblin cave. A tall stone altar stands in the middle, and two rocks lie beside it, next to a mine cart.",
+    "A garage workshop. A lamp hangs from the ceiling over a workbench.",
+])
+def test_an_interior_named_by_its_setting_gets_a_room(tmp_path, text):
+    """The setting decides, not a planet seen through the window or a village the smithy is in."""
+    out = tmp_path / "scene"
+    assert main(["generate", text, "--out", str(out), "--no-render"]) == 0
+    assert _scene(out).room is not None
+
+
+@pytest.mark.parametrize("text", [
+    "A campsite in a pine forest. A campfire crackles inside a ring of stones, next to a tent.",
+    "A pirate ship's deck at sea: a cannon stands by the rail and barrels sit near the mast.",
+    "A village square with a fountain, a bench and a lamp post; a shop window glows behind the bench.",
+])
+def test_an_open_scene_gets_no_room(tmp_path, text):
+    out = tmp_path / "scene"
+    assert main(["generate", text, "--out", str(out), "--no-render"]) == 0
+    assert _scene(out).room is None

@@ -116,19 +116,36 @@ _INDOOR_PLACES = {"hangar", "warehouse", "factory", "garage", "workshop", "libra
                   "bar", "arcade", "mall", "station", "hospital", "clinic", "nursery", "school", "kitchen", "bedroom"}  # fmt: skip
 
 
+#: A clause that looks out of the setting: the places it names are seen, not stood in ("a window
+#: looking out on a ringed planet", "a view of the sea").
+_VIEW = re.compile(r"\b(?:looking out|looks out|look out|overlooking|overlooks|views? (?:of|over|across|onto)|"
+                   r"out of the windows?|through the windows?)\b[^.;,]*")
+#: Words that put the scene inside something: a ceiling, the text opening "inside a ...", the
+#: bridge or cockpit of a vessel, a cave (fresh batches: a smithy, a spaceship's bridge, a cave).
+_INSIDE = re.compile(r"\bceilings?\b|^\W*(?:inside|in the interior of|within)\b|\binterior of\b|"
+                     r"\b(?:bridge|cockpit|hold|cabin|galley|engine room) of (?:a|an|the|our|his|her|their)\b[^.;,]*"
+                     r"\b(?:ship|spaceship|starship|spacecraft|vessel|submarine|airship|boat|yacht|station)\b")
+
+
 def _is_indoor(categories: list[str], text: str, catalogue, places: list[str] = ()) -> bool:
+    """Whether the scene stands inside (and so gets a room, docs/rooms.md): the objects' tags,
+    the places the reader found, and place words vote, those of the opening sentence (where a
+    text sets its scene: "A low-poly goblin cave.") twice; a ceiling, an opening "inside a ..."
+    or the bridge of a ship weigh like a place; places only seen through a window do not count."""
     low = text.lower()
+    setting = _VIEW.sub(" ", low)
+    opening = re.split(r"[.!?]", setting, maxsplit=1)[0]
     votes = 0
     for name in categories:
         tags = catalogue[name].tags
         votes += ("indoor" in tags) - ("outdoor" in tags)
     votes += 3 * sum(1 for p in places if p.split()[-1] in _INDOOR_PLACES)
+    votes += 3 * len(_INSIDE.findall(low))
     for word in ("room", "kitchen", "bedroom", "bathroom", "office", "classroom", "lab", "apartment", "studio",
-                 "café", "cafe", "shop", "store", "boutique", "gallery", "hall", "interior", "indoors"):
-        if re.search(rf"\b{word}\b", low):
-            votes += 2
+                 "café", "cafe", "shop", "store", "boutique", "gallery", "hall", "interior", "indoors", "smithy",
+                 "cave", "cavern"):
+        votes += 2 * (bool(re.search(rf"\b{word}\b", setting)) + bool(re.search(rf"\b{word}\b", opening)))
     for word in ("street", "park", "garden", "square", "market", "beach", "forest", "yard", "outdoor", "harbour",
                  "harbor", "village", "desert", "planet", "courtyard", "playground", "campsite", "field"):
-        if re.search(rf"\b{word}\b", low):
-            votes -= 2
+        votes -= 2 * (bool(re.search(rf"\b{word}\b", setting)) + bool(re.search(rf"\b{word}\b", opening)))
     return votes > 0
