@@ -188,3 +188,64 @@ def test_without_the_solver_room_relations_are_audited():
     assert {u.id for u in result.report.unplaced} == {"bed", "mirror"}
     assert all("violates" in u.reason for u in result.report.unplaced)
     assert any("does not hold" in line for line in result.report.room)
+
+
+def _plain_walk(room: Room, boxes, reach):
+    """The walkability check written out plainly, for comparison: every footprint's distance to
+    every grid cell of the whole room, nothing kept between calls."""
+    from scipy import ndimage
+
+    from scenewright.layout.relations import _rectangle, _to_rectangle
+    from scenewright.layout.room import AGENT_RADIUS, CELL, FLOOR, HEAD_ROOM, REACH, _strip
+
+    shape = RoomShape(room)
+    grid, free = shape._grid()
+    standing = (boxes.lo[:, 2] < HEAD_ROOM) & (boxes.hi[:, 2] > FLOOR)
+    for c, h, x in zip(*_rectangle(boxes[standing])):
+        free = free & (_to_rectangle(grid, c, h, x) >= AGENT_RADIUS)
+    labels, _ = ndimage.label(free)
+    reached, stuck = set(), []
+    for k, o in enumerate(room.openings):
+        if o.kind != "door":
+            continue
+        rect, _, _ = _strip(room, o)
+        local = np.einsum("...j,ij->...i", grid - rect.centre[0], rect.axes[0])
+        found = set(np.unique(labels[free & np.all(np.abs(local) <= rect.half[0] + 1e-9, axis=-1)])) - {0}
+        stuck += [] if found else [k]
+        reached |= found
+    walked = np.isin(labels, sorted(reached))
+    limit = AGENT_RADIUS + REACH + CELL
+    missed = [int(i) for i in np.flatnonzero(reach)
+              if not np.any(_to_rectangle(grid, *(a[i] for a in _rectangle(boxes)))[walked] <= limit)]
+    return missed, stuck
+
+
+@st.composite
+def walk_cases(draw):
+    width, depth = draw(st.floats(2.5, 7.0)), draw(st.floats(2.5, 7.0))
+    room = Room.rectangle(width, depth)
+    doors = [Opening(kind="door", wall=w, offset=draw(st.floats(0.5, 2.0)), width=0.9, height=2.1)
+             for w in draw(st.lists(st.integers(0, 3), min_size=1, max_size=2, unique=True))]
+    room = Room.model_validate({**room.model_dump(), "openings": doors})
+    layouts = []
+    for _ in range(draw(st.integers(1, 4))):  # several layouts through one room shape
+        n = draw(st.integers(1, 9))
+        objects = [box(f"o{k}", draw(st.floats(-width / 2, width / 2)), draw(st.floats(-depth / 2, depth / 2)),
+                       draw(st.floats(0.2, 2.5)), draw(st.floats(0.2, 1.2)), draw(st.sampled_from([0.02, 0.8, 2.0])),
+                       yaw=draw(st.sampled_from([0.0, 30.0, 90.0, 135.0])))
+                   for k in range(n)]
+        layouts.append(objects)
+    return room, layouts
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(walk_cases())
+def test_the_kept_walkability_check_answers_as_the_plain_one(case):
+    """The room shape keeps each footprint's grid cells between calls (the solver asks about
+    the same placed objects with every pose it tries): its answers are the plain check's."""
+    room, layouts = case
+    shape = RoomShape(room)
+    for objects in layouts + layouts[::-1]:
+        boxes = boxes_of(objects)
+        reach = boxes.lo[:, 2] < 0.05
+        assert shape.walk(boxes, reach) == _plain_walk(room, boxes, reach)

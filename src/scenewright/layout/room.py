@@ -43,6 +43,8 @@ REACH = 0.25
 CELL = 0.1
 #: m, an object whose bottom is higher than this stands in no one's way.
 HEAD_ROOM = 1.9
+#: Footprints whose grid cells a room shape keeps (:meth:`RoomShape._cells_near`): a few MB.
+NEAR_CACHE = 20000
 #: The largest share of the floor the floor objects may cover and leave room to walk: rooms
 #: sized around their objects use it, and a room too small says how much floor is missing by it.
 COVERAGE = 0.35
@@ -99,6 +101,8 @@ class RoomShape:
         self.lo, self.hi = pts.min(axis=0), pts.max(axis=0)
         self.strips = [(o, *_strip(room, o, corridors)) for o in room.openings]
         self._cells: tuple[np.ndarray, np.ndarray] | None = None
+        self._door_cells: list[np.ndarray] | None = None
+        self._near: dict[tuple[bytes, float, bool], tuple[tuple[slice, slice], np.ndarray]] = {}
 
     @property
     def area(self) -> float:
@@ -188,45 +192,62 @@ class RoomShape:
         if boxes is not None and len(boxes.lo):
             standing = (boxes.lo[:, 2] < HEAD_ROOM) & (boxes.hi[:, 2] > FLOOR)
             blocked = np.zeros(free.shape, dtype=bool)
-            for window, d in self._distances(grid, *_rectangle(boxes[standing]), AGENT_RADIUS):
-                blocked[window] |= d < AGENT_RADIUS
+            for window, cells in self._cells_near(boxes[standing], AGENT_RADIUS, strict=True):
+                blocked[window] |= cells
             free = free & ~blocked
         labels, _ = ndimage.label(free)
         reached: set[int] = set()
         stuck: list[int] = []
-        for k, opening in doors:
-            rect, _, _ = _strip(self.room, opening)
-            # The agent steps in through the door: its first free cells lie in the door's strip.
-            local = np.einsum("...j,ij->...i", grid - rect.centre[0], rect.axes[0])
-            mouth = free & np.all(np.abs(local) <= rect.half[0] + EPS, axis=-1)
-            found = set(np.unique(labels[mouth])) - {0}
+        for k, mouth in enumerate(self._mouths(doors)):
+            found = set(np.unique(labels[free & mouth])) - {0}
             if not found:
-                stuck.append(k)
+                stuck.append(doors[k][0])
             reached |= found
         if boxes is None or reach is None or not reach.any():
             return [], stuck
         walked = np.isin(labels, sorted(reached)) if reached else np.zeros(free.shape, dtype=bool)
         wanted = np.flatnonzero(reach)
-        limit = AGENT_RADIUS + REACH + CELL
-        missed = [
-            int(i)
-            for i, (window, d) in zip(wanted, self._distances(grid, *_rectangle(boxes[wanted]), limit))
-            if not np.any(d[walked[window]] <= limit)
-        ]
-        return missed, stuck
+        return [int(i) for i, (window, cells) in zip(wanted, self._cells_near(boxes[wanted], AGENT_RADIUS + REACH + CELL))
+                if not np.any(walked[window] & cells)], stuck
 
-    def _distances(self, grid: np.ndarray, centre, half, axes, margin: float):
-        """For each footprint rectangle, the window of grid cells that may lie within
-        ``margin`` of it and those cells' distances to it. A window covers the rectangle's
-        circumscribed circle grown by ``margin``: the cost follows the objects' size, not the
-        room's (a whole-grid distance per object made a 60-object room take half a minute)."""
-        reach = np.linalg.norm(half, axis=-1) + margin + CELL
+    def _mouths(self, doors: list[tuple[int, Opening]]) -> list[np.ndarray]:
+        """For each door, the grid cells of its strip: the agent steps in through the door, so
+        its first free cells lie there (cached with the grid: the room does not change)."""
+        if self._door_cells is None:
+            grid, _ = self._grid()
+            self._door_cells = []
+            for _, opening in doors:
+                rect, _, _ = _strip(self.room, opening)
+                local = np.einsum("...j,ij->...i", grid - rect.centre[0], rect.axes[0])
+                self._door_cells.append(np.all(np.abs(local) <= rect.half[0] + EPS, axis=-1))
+        return self._door_cells
+
+    def _cells_near(self, boxes: Boxes, margin: float, strict: bool = False):
+        """For each box's footprint, a window of grid cells and which of them lie within
+        ``margin`` of it (nearer than it, when ``strict``).
+
+        A window covers the footprint's circumscribed circle grown by ``margin``: the cost follows
+        the objects' size, not the room's (a whole-grid distance per object made a 60-object room
+        take half a minute). Each footprint's cells are kept, keyed by its exact pose: the solver
+        asks about the same placed objects again with every pose it tries for the next one, so
+        only the new pose costs a distance computation (issue #18: 120 objects in a room)."""
+        grid, _ = self._grid()
+        centre, half, axes = _rectangle(boxes)
+        keys = np.concatenate([centre, half, axes.reshape(len(centre), 4)], axis=1)
         size = np.array(grid.shape[:2])
-        for c, h, x, r in zip(centre, half, axes, reach):
-            first = np.clip(np.floor((c - r - self.lo) / CELL).astype(int), 0, size)
-            last = np.clip(np.ceil((c + r - self.lo) / CELL).astype(int) + 1, 0, size)
-            window = (slice(first[0], last[0]), slice(first[1], last[1]))
-            yield window, _to_rectangle(grid[window], c, h, x)
+        for c, h, x, key in zip(centre, half, axes, keys):
+            known = self._near.get((key.tobytes(), margin, strict))
+            if known is None:
+                r = float(np.linalg.norm(h)) + margin + CELL
+                first = np.clip(np.floor((c - r - self.lo) / CELL).astype(int), 0, size)
+                last = np.clip(np.ceil((c + r - self.lo) / CELL).astype(int) + 1, 0, size)
+                window = (slice(first[0], last[0]), slice(first[1], last[1]))
+                d = _to_rectangle(grid[window], c, h, x)
+                known = (window, d < margin if strict else d <= margin)
+                if len(self._near) >= NEAR_CACHE:
+                    self._near.clear()
+                self._near[(key.tobytes(), margin, strict)] = known
+            yield known
 
     def _grid(self) -> tuple[np.ndarray, np.ndarray]:
         """Cell centres (nx, ny, 2) over the floor's extent, and which of them an agent may
@@ -241,6 +262,8 @@ class RoomShape:
 
 def boxes_of(objects: Sequence[SceneObject]) -> Boxes:
     """The objects' world boxes with their footprints, stacked for the measures above."""
+    if not objects:
+        return Boxes(np.zeros((0, 3)), np.zeros((0, 3)), np.zeros(0), np.zeros((0, 2)))
     parts = [Boxes.of(o) for o in objects]
     return Boxes(np.stack([b.lo for b in parts]), np.stack([b.hi for b in parts]),
                  np.array([float(b.yaw) for b in parts]), np.stack([b.foot for b in parts]))
