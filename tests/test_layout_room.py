@@ -249,3 +249,17 @@ def test_the_kept_walkability_check_answers_as_the_plain_one(case):
         boxes = boxes_of(objects)
         reach = boxes.lo[:, 2] < 0.05
         assert shape.walk(boxes, reach) == _plain_walk(room, boxes, reach)
+
+
+def test_resized_stretches_any_floor_and_keeps_each_opening_on_its_wall_at_its_share():
+    from scenewright.layout.room import resized
+
+    room = Room.model_validate({"floor": L_SHAPE, "openings": [
+        Opening(kind="door", wall=0, offset=1.0, width=0.9, height=2.1),
+        Opening(kind="window", wall=4, offset=2.0, width=1.0, height=1.2, sill=0.9)]})
+    big = resized(room, 10.0, 7.5, 3.0)
+    assert big.floor == [(-2.5, -1.25), (7.5, -1.25), (7.5, 2.5), (2.5, 2.5), (2.5, 6.25), (-2.5, 6.25)]
+    assert big.height == 3.0
+    assert [(o.wall, o.offset) for o in big.openings] == [(0, 2.0), (4, pytest.approx(4.0))]
+    small = resized(room, 2.0, 2.0)  # the window's wall is 1 m now: it no longer fits
+    assert [o.kind for o in small.openings] == ["door"]

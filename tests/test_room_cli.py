@@ -131,3 +131,27 @@ def test_an_open_scene_gets_no_room(tmp_path, text):
     out = tmp_path / "scene"
     assert main(["generate", text, "--out", str(out), "--no-render"]) == 0
     assert _scene(out).room is None
+
+
+CRAMPED = json.loads((PROMPTS.parent / "prompts-fresh-4" / "02_inventor_study.json").read_text(encoding="utf-8"))["text"]
+
+
+def test_a_room_we_sized_grows_until_every_floor_object_is_reached(tmp_path):
+    """fresh-4's 'cramped' study: in the room sized from the text a clock and a globe were out
+    of every walking path; the text fixes no size, so the room grows and the layout is solved again."""
+    out = tmp_path / "study"
+    assert main(["generate", CRAMPED, "--out", str(out), "--no-render"]) == 0
+    scene = _scene(out)
+    _assert_sits_in_its_room(scene)
+    first = next(e for e in scene.provenance if e.data.get("step") == "room")
+    grew = [e for e in scene.provenance if e.data.get("step") == "grow room"]
+    assert grew and "grew the room" in grew[-1].message
+    assert scene.room.wall_length(0) > float(first.message.split()[1])  # "room 4.4 x 4.4 m, ..."
+
+
+def test_a_room_the_user_sized_is_not_grown(tmp_path):
+    out = tmp_path / "study"
+    main(["generate", CRAMPED, "--out", str(out), "--no-render", "--room", "3x3"])
+    scene = _scene(out)
+    assert (scene.room.wall_length(0), scene.room.wall_length(1)) == (3.0, 3.0)
+    assert not any(e.data.get("step") == "grow room" for e in scene.provenance)

@@ -85,6 +85,9 @@ def _assets(run: Run) -> bool:
 
 
 def _layout(run: Run) -> bool:
+    from scenewright.analysis.parser.room import sized_freely
+
+    option = next((e.data.get("room") for e in reversed(run.scene.provenance) if e.data.get("step") == "room"), None)
     arrange(
         run.scene,
         run.folder,
@@ -93,6 +96,7 @@ def _layout(run: Run) -> bool:
         rounds=run.settings.feedback_rounds,
         time_limit=run.settings.time_limit,
         furnish=room_constraints,
+        grow=isinstance(option, str) and sized_freely(option, run.scene.text),
     )
     return True
 

@@ -37,7 +37,7 @@ from scenewright.geometry import world_box, yaw_towards
 from scenewright.layout import break_cycles, check, colliding_pairs, feedback_text, solve
 from scenewright.layout.constraints import room_problem
 from scenewright.layout.relations import check_room
-from scenewright.layout.room import wall_facing
+from scenewright.layout.room import resized, wall_facing
 from scenewright.scene import (
     ROOM_RELATIONS,
     Constraint,
@@ -552,25 +552,10 @@ def _room(edit: _Edit, folder: SceneFolder, settings: Settings) -> None:
         width, depth = change.size if change.size is not None else (x1 - x0, y1 - y0)
         height = change.height or old.height
         try:
-            room = Room.rectangle(width, depth, height, floor_material=old.floor_material,
-                                  wall_material=old.wall_material, ceiling_material=old.ceiling_material)
+            room = resized(old, width, depth, height)
         except ValidationError as exc:
             raise InputError(f"a {width:g} x {depth:g} m room, {height:g} m high: {describe_validation_error(exc)}") from None
-        # Openings keep their wall (by side) and their place along it, as a share of its length.
-        kept = []
-        for o in old.openings:
-            (ax, ay), (bx, by) = old.walls[o.wall]
-            normal = np.array([by - ay, -(bx - ax)])
-            side = max(("back", "front", "left", "right"),
-                       key=lambda s: float(normal @ np.array({"back": (0, 1), "front": (0, -1), "left": (-1, 0), "right": (1, 0)}[s])))
-            wall = wall_facing(room, side)
-            share = o.offset / old.wall_length(o.wall)
-            length = room.wall_length(wall)
-            offset = min(max(share * length, o.width / 2 + 0.05), length - o.width / 2 - 0.05)
-            height_ = min(o.height, room.height - o.sill - 0.1)
-            if offset - o.width / 2 >= 0 and height_ > 0.3:
-                kept.append(o.model_copy(update={"wall": wall, "offset": offset, "height": height_}))
-        scene.room = Room.model_validate({**room.model_dump(), "openings": kept})
+        scene.room = room
         moving = [o.id for o in scene.objects]
         edit.changes.append(f"the room is now {width:g} x {depth:g} m, {height:g} m high")
     else:

@@ -269,6 +269,15 @@ def boxes_of(objects: Sequence[SceneObject]) -> Boxes:
                  np.array([float(b.yaw) for b in parts]), np.stack([b.foot for b in parts]))
 
 
+def access_problems(room: Room, objects: Sequence[SceneObject]) -> list[str]:
+    """The :func:`problems` a larger floor can cure: all but a missing door."""
+    return [p for p in problems(room, objects) if p != NO_DOOR]
+
+
+#: The sentence :func:`problems` says of a room without a door.
+NO_DOOR = "the room has no door"
+
+
 def problems(room: Room, objects: Sequence[SceneObject], floor_ids: set[str] | None = None) -> list[str]:
     """What is wrong with ``objects`` in ``room``, one sentence each: objects outside it,
     openings blocked, doors nobody can step through, floor objects nobody can walk to."""
@@ -282,13 +291,34 @@ def problems(room: Room, objects: Sequence[SceneObject], floor_ids: set[str] | N
     for k, opening, ids in shape.blocked_openings(objects):
         out.append(f"{opening.kind} {k} on wall_{opening.wall} is blocked by {', '.join(ids)}")
     if not any(o.kind == "door" for o in room.openings):
-        out.append("the room has no door")
+        out.append(NO_DOOR)
     unreachable, stuck = shape.unreachable(objects, floor_ids)
     for k in stuck:
         out.append(f"door {k} on wall_{room.openings[k].wall} opens onto no free floor")
     if unreachable:
         out.append(f"no walking path from a door reaches {', '.join(unreachable)}")
     return out
+
+
+def resized(room: Room, width: float, depth: float, height: float | None = None) -> Room:
+    """``room`` with its floor stretched to ``width`` x ``depth`` m (its plan extent; about its
+    middle, so an L stays an L) and ``height`` high. Each opening keeps its wall and its place
+    along it as a share of the wall's length, nudged in from the ends; one that no longer fits
+    its wall is dropped. Raises pydantic's ValidationError for a room that cannot be."""
+    pts = np.asarray(room.floor, dtype=float)
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    middle, scale = (lo + hi) / 2.0, np.array([width, depth]) / (hi - lo)
+    floor = [(float(x), float(y)) for x, y in np.round(middle + (pts - middle) * scale, 6)]
+    height = room.height if height is None else height
+    bare = Room.model_validate({**room.model_dump(), "floor": floor, "height": height, "openings": []})
+    kept = []
+    for o in room.openings:
+        length = bare.wall_length(o.wall)
+        offset = min(max(o.offset / room.wall_length(o.wall) * length, o.width / 2 + 0.05), length - o.width / 2 - 0.05)
+        tall = min(o.height, height - o.sill - 0.1)
+        if offset - o.width / 2 >= 0 and tall > 0.3:
+            kept.append(o.model_copy(update={"offset": offset, "height": tall}))
+    return Room.model_validate({**bare.model_dump(), "openings": kept})
 
 
 #: Directions (x, y) of the room's sides as a viewer at the front sees them (DESIGN frames: +Y back).

@@ -11,11 +11,13 @@ from __future__ import annotations
 import logging
 from collections.abc import Callable, Mapping, Sequence
 
+import numpy as np
 import trimesh
 
 from scenewright.core.protocols import VisionLanguageModel
 from scenewright.folder import SceneFolder
 from scenewright.layout import LayoutResult, solve
+from scenewright.layout.room import access_problems, resized
 from scenewright.scene import ROOM_RELATIONS, Constraint, Scene, SceneObject
 
 #: Adds the placement priors of a room to the constraints (objects, constraints) -> constraints.
@@ -24,11 +26,45 @@ Furnish = Callable[[Sequence[SceneObject], Sequence[Constraint]], list[Constrain
 log = logging.getLogger(__name__)
 
 STAGE = "layout"
+#: How much each side of a room nobody sized grows when its layout leaves something out of reach.
+GROW_STEP = 1.15
+#: How many times it may grow (1.15³ ≈ 1.5 times as long and wide).
+GROW_STEPS = 3
 
 
 def _score(result: LayoutResult) -> tuple[int, int]:
     """More objects placed is better; among equals, more of the model's constraints kept."""
     return (len(result.report.placed), len(result.constraints))
+
+
+def _grown(scene: Scene, best: LayoutResult, meshes: Mapping[str, trimesh.Trimesh], time_limit: float) -> LayoutResult:
+    """``best``, or the layout of its constraints in the room grown by :data:`GROW_STEP` per side
+    (up to :data:`GROW_STEPS` times) until every object is placed, inside, reachable, and no
+    door or window is blocked; the room grows with it. The fewest problems win, the smaller
+    room on a tie (docs/rooms.md)."""
+    assert scene.room is not None
+
+    def trouble(result: LayoutResult, room) -> tuple[int, int]:
+        placed = [o for o in result.objects if o.id in result.report.placed]
+        return len(result.report.unplaced), len(access_problems(room, placed))
+
+    room, score = scene.room, trouble(best, scene.room)
+    bigger = room
+    for _ in range(GROW_STEPS):
+        if score == (0, 0):
+            break
+        (x0, y0), (x1, y1) = np.min(bigger.floor, axis=0), np.max(bigger.floor, axis=0)
+        bigger = resized(bigger, round((x1 - x0) * GROW_STEP, 1), round((y1 - y0) * GROW_STEP, 1))
+        result = solve(scene.objects, best.constraints, meshes=meshes, bounds=scene.bounds, time_limit=time_limit,
+                       seed=scene.seed, room=bigger)
+        if trouble(result, bigger) < score:
+            best, room, score = result, bigger, trouble(result, bigger)
+    if room is not scene.room:
+        (x0, y0), (x1, y1) = np.min(room.floor, axis=0), np.max(room.floor, axis=0)
+        scene.record(STAGE, f"grew the room to {x1 - x0:g} x {y1 - y0:g} m to place every object within reach",
+                     step="grow room", floor=[list(p) for p in room.floor])
+        scene.room = room
+    return best
 
 
 def _record_round(scene: Scene, number: int, result: LayoutResult) -> None:
@@ -56,12 +92,15 @@ def arrange(
     rounds: int = 3,
     time_limit: float = 10.0,
     furnish: Furnish | None = None,
+    grow: bool = False,
 ) -> Scene:
     """Solve the layout of ``scene``'s objects, revising constraints up to ``rounds`` times
     (the caller saves the document).
 
     In a room, ``furnish`` adds its placement priors to freshly written constraints; without
-    one, relations to a room are dropped (and recorded), since there are no walls to meet."""
+    one, relations to a room are dropped (and recorded), since there are no walls to meet.
+    With ``grow`` (a room nobody gave a size), a layout that leaves objects unplaced or out
+    of reach, or a door blocked, is solved again in a larger room (docs/rooms.md)."""
     reference = folder.reference()
     constraints = list(scene.constraints)
     if not constraints:
@@ -99,6 +138,8 @@ def arrange(
         scene.provenance += answer.repairs
         constraints = answer.value
     assert best is not None
+    if grow and scene.room is not None:
+        best = _grown(scene, best, meshes, time_limit)
     solved = {obj.id: obj for obj in best.objects}
     scene.objects = [solved[obj.id] for obj in scene.objects]
     scene.constraints = list(best.constraints)

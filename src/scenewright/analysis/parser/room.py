@@ -336,3 +336,9 @@ def room_for(
     if proposed:
         return proposal
     return build_room(request, objects) if parse_scene(text).indoor else None
+
+
+def sized_freely(option: str, text: str) -> bool:
+    """Whether a room may be grown to fit its objects: ``--room auto`` and a ``text`` that
+    states no size (the size was ours, or a model's guess), not one the user fixed."""
+    return option == "auto" and read_room(text).size is None
