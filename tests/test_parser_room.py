@@ -112,3 +112,27 @@ def test_wall_phrases_become_room_relations_with_their_wall():
     got = {(r.source, r.relation, r.target) for r in wall_phrases(parsed)}
     assert got == {("bed_1", "against wall", "wall_2"), ("wardrobe_1", "in corner", "room"),
                    ("picture_frame_1", "on wall", "wall_3")}
+
+
+@pytest.mark.parametrize("text, floor, walls, ceiling", [
+    ("A kitchen with white tiled walls and a stone floor.", "stone", "white tiled", None),
+    ("A bar with brick walls, a wooden floor and a concrete ceiling.", "wood floor", "brick", "concrete"),
+    ("A bedroom. A bed stands against the back wall; a fan hangs from the ceiling.", "carpet", None, None),
+    ("The kitchen wall holds a clock.", "tiles", None, None),
+])
+def test_room_materials_are_read_from_the_words_before_floor_walls_and_ceiling(text, floor, walls, ceiling):
+    request = read_room(text)
+    assert (request.floor_material, request.wall_material, request.ceiling_material) == (floor, walls, ceiling)
+
+
+def test_an_l_shaped_room_keeps_the_rectangle_s_walls_front_right_back_left():
+    from scenewright.analysis.parser.room import build_room
+    from scenewright.layout.room import RoomShape, wall_facing
+
+    request = read_room("An L-shaped living room with two windows on the back wall and a door on the right wall.")
+    assert request.shape == "L"
+    room = build_room(request, [])
+    assert len(room.floor) == 6
+    assert [wall_facing(room, side) for side in ("front", "right", "back", "left")] == [0, 1, 2, 3]
+    assert sorted((o.kind, o.wall) for o in room.openings) == [("door", 1), ("window", 2), ("window", 2)]
+    assert RoomShape(room).area >= 4.5 * 5.0 * 0.99  # the living room's usual floor, the notch cut out

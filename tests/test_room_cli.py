@@ -155,3 +155,21 @@ def test_a_room_the_user_sized_is_not_grown(tmp_path):
     scene = _scene(out)
     assert (scene.room.wall_length(0), scene.room.wall_length(1)) == (3.0, 3.0)
     assert not any(e.data.get("step") == "grow room" for e in scene.provenance)
+
+
+def test_the_text_s_floor_wall_and_ceiling_materials_reach_the_room(tmp_path):
+    out = tmp_path / "bar"
+    text = "A small bar with red brick walls, a stone floor and a concrete ceiling. A stool stands by the counter."
+    assert main(["generate", text, "--out", str(out), "--no-render"]) == 0
+    room = _scene(out).room
+    assert (room.floor_material, room.wall_material, room.ceiling_material) == ("stone", "red brick", "concrete")
+
+
+def test_an_l_shaped_room_from_the_text(tmp_path):
+    out = tmp_path / "living"
+    text = "An L-shaped living room with a sofa, a coffee table, an armchair and a bookshelf against the back wall."
+    assert main(["generate", text, "--out", str(out), "--no-render"]) == 0
+    scene = _scene(out)
+    assert len(scene.room.floor) == 6
+    _assert_sits_in_its_room(scene)
+    assert check_room("against wall", scene.get("bookshelf_1"), scene.room, "wall_2")

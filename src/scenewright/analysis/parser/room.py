@@ -27,6 +27,7 @@ from typing import Sequence
 
 from scenewright.core.catalogue import load_catalogue
 from scenewright.analysis.parser.model import ParsedRelation, ParsedScene
+from scenewright.analysis.parser.style import detect_ground
 from scenewright.errors import InputError
 from scenewright.layout.room import COVERAGE
 from scenewright.layout.room import FLOOR as FLAT
@@ -78,6 +79,12 @@ class RoomRequest:
     scale: float = 1.0
     #: Openings asked for: (kind, side or None, count).
     openings: tuple[tuple[str, str | None, int], ...] = field(default_factory=tuple)
+    #: The floor's, the walls' and the ceiling's material words ("brick", "white tiled"), or None.
+    floor_material: str | None = None
+    wall_material: str | None = None
+    ceiling_material: str | None = None
+    #: "L" for an L-shaped room ("an L-shaped living room"), else None: a rectangle.
+    shape: str | None = None
 
 
 def _metres(value: str, unit: str | None) -> float:
@@ -117,7 +124,46 @@ def read_room(text: str) -> RoomRequest:
             scale = LARGE_SCALE
         elif any(re.search(rf"\b{re.escape(w)}\b", lead) for w in _SMALL):
             scale = SMALL_SCALE
-    return RoomRequest(place=place, size=size, height=height, scale=scale, openings=tuple(_openings(low)))
+    materials = {noun: _surface_words(low, noun) for noun in ("floor", "wall", "ceiling")}
+    # The floor's kind (a ground texture): from its own words, else from the place ("a kitchen":
+    # tiles), never from what the walls or ceiling are made of ("white tiled walls").
+    rest = low
+    for noun in ("wall", "ceiling"):
+        if materials[noun]:
+            rest = re.sub(rf"\b{re.escape(materials[noun])}\s+(?:{_SURFACE_NOUNS[noun]})\b", " ", rest)
+    materials["floor"] = detect_ground(f"{materials['floor']} floor" if materials["floor"] else rest, True)
+    shape = "L" if re.search(r"\bl[- ]shaped\b|\bl[- ]shape\b", low) else None
+    return RoomRequest(place=place, size=size, height=height, scale=scale, openings=tuple(_openings(low)),
+                       floor_material=materials["floor"], wall_material=materials["wall"],
+                       ceiling_material=materials["ceiling"], shape=shape)
+
+
+#: Words that say what a floor, wall or ceiling is made of or how it looks: a phrase before the
+#: noun becomes the room's material only with one of them ("brick walls", "a white tiled wall";
+#: not "the back wall", "the kitchen wall"). The geometry reads the phrase (procedural/room.py).
+_SURFACE_WORDS = frozenset("""
+    wood wooden oak pine walnut maple cherry teak hardwood parquet plank planked timber log bamboo cork
+    brick bricks stone marble granite slate concrete cement tile tiles tiled terracotta mosaic plaster
+    plastered stucco painted wallpapered wallpaper panelled paneled whitewashed glass mirrored metal
+    steel iron copper brass chrome aluminium aluminum carpet carpeted rubber linoleum vinyl velvet fabric
+    white black grey gray red green blue yellow orange purple pink brown beige cream ivory teal turquoise
+    navy olive golden gold silver dark light pale bright pastel rustic polished rough bare exposed
+""".split())
+_SURFACE_NOUNS = {"floor": r"floors?|flooring", "wall": r"walls?", "ceiling": r"ceilings?"}
+
+
+def _surface_words(low: str, noun: str) -> str | None:
+    """The material words right before the first ``noun`` that has some ("red brick walls" →
+    "red brick"), or None."""
+    for m in re.finditer(rf"((?:[a-z-]+\s+){{1,3}})(?:{_SURFACE_NOUNS[noun]})\b", low):
+        words: list[str] = []
+        for w in reversed(m.group(1).split()):
+            if w not in _SURFACE_WORDS and not (w.endswith("-tiled") or w.endswith("-panelled")):
+                break
+            words.insert(0, w)
+        if words:
+            return " ".join(words)
+    return None
 
 
 def _openings(low: str) -> list[tuple[str, str | None, int]]:
@@ -197,9 +243,28 @@ def build_room(request: RoomRequest, objects: Sequence[SceneObject], size: tuple
         (x0, y0), (x1, y1) = _extent(objects)
         width = min(max(width, x1 - x0 + 2 * LANE), GROWTH * width)
         depth = min(max(depth, y1 - y0 + 2 * LANE), GROWTH * depth)
+        if request.shape == "L":  # the same floor with the notch cut out
+            width, depth = width / math.sqrt(1 - NOTCH**2), depth / math.sqrt(1 - NOTCH**2)
         width, depth = math.ceil(width * 10) / 10, math.ceil(depth * 10) / 10
-    room = Room.rectangle(width, depth, height)
+    materials = {**({"floor_material": request.floor_material} if request.floor_material else {}),
+                 **({"wall_material": request.wall_material} if request.wall_material else {}),
+                 **({"ceiling_material": request.ceiling_material} if request.ceiling_material else {})}
+    room = l_shaped(width, depth, height, **materials) if request.shape == "L" else Room.rectangle(width, depth, height, **materials)
     return Room.model_validate({**room.model_dump(), "openings": place_openings(room, request.openings)})
+
+
+#: The share of each side an L-shaped room's notch takes.
+NOTCH = 0.4
+
+
+def l_shaped(width: float, depth: float, height: float = DEFAULT_HEIGHT, **fields) -> Room:
+    """An L: the ``width`` x ``depth`` rectangle centred at the origin, less a notch of
+    :data:`NOTCH` of each side at its front-left corner. Walls 0..3 are then the front, right,
+    back and left walls as in a rectangle (:data:`RECTANGLE_WALLS`, so "the back wall" means the
+    same), walls 4 and 5 the notch's."""
+    w, d = width / 2.0, depth / 2.0
+    nx, ny = -w + NOTCH * width, -d + NOTCH * depth
+    return Room(floor=[(nx, -d), (w, -d), (w, d), (-w, d), (-w, ny), (nx, ny)], height=height, **fields)
 
 
 def _extent(objects: Sequence[SceneObject]) -> tuple[tuple[float, float], tuple[float, float]]:
