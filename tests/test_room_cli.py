@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 
 from scenewright.cli import main
+from scenewright.geometry import world_box
 from scenewright.evaluation.room import room_metrics
 from scenewright.layout.relations import check_room
 from scenewright.scene import ROOM_RELATIONS, Scene
@@ -29,6 +30,7 @@ def _assert_sits_in_its_room(scene: Scene) -> None:
     assert metrics.outside == [] and metrics.blocked_openings == [] and metrics.stuck_doors == []
     assert metrics.unreachable == []
     assert metrics.not_on_wall == [] and metrics.not_on_ceiling == []
+    assert [o.id for o in scene.objects if world_box(o)[1][2] > scene.room.height + 0.005] == []  # under the ceiling
     for c in scene.constraints:
         if c.relation in ROOM_RELATIONS:
             assert check_room(c.relation, scene.get(c.source), scene.room, c.target), str(c)
@@ -173,3 +175,15 @@ def test_an_l_shaped_room_from_the_text(tmp_path):
     assert len(scene.room.floor) == 6
     _assert_sits_in_its_room(scene)
     assert check_room("against wall", scene.get("bookshelf_1"), scene.room, "wall_2")
+
+
+def test_a_thing_stacked_on_a_tall_thing_stays_under_the_ceiling(tmp_path):
+    out = tmp_path / "low"
+    text = ("A bedroom with a low ceiling. A tall wardrobe stands against the left wall with a big potted plant "
+            "and a suitcase on top of it.")
+    assert main(["generate", text, "--out", str(out), "--no-render"]) == 0
+    scene = _scene(out)
+    assert scene.room.height == 2.4
+    _assert_sits_in_its_room(scene)
+    scaled = next(e for e in scene.provenance if e.data.get("scaled"))
+    assert "potted_plant_1" in scaled.data["scaled"]

@@ -24,6 +24,8 @@ log = logging.getLogger(__name__)
 STAGE = "analyze"
 #: m, the least gap left between the tallest object and the ceiling.
 CEILING_CLEARANCE = 0.1
+#: m, the least height a thing stacked under the ceiling keeps (a host filling the room leaves none).
+MIN_STACKED = 0.1
 #: Provenance step that marks the redundancy check as done (its output may be "nothing removed").
 REDUNDANCY_STEP = "redundant"
 
@@ -72,16 +74,29 @@ def _objects(scene: Scene, vlm: VisionLanguageModel, reference: bytes | None, ro
 
 
 def _fit_under_ceiling(scene: Scene) -> None:
-    """Scale down, proportions kept, every object taller than the room: a thing the text puts
-    in a room stands in it (a "cat tree" read as a 6 m tree, a statue sized for a square)."""
+    """Scale down, proportions kept, every object taller than the room, and every thing stacked
+    on another that would reach past the ceiling on it: a thing the text puts in a room stands
+    in it (a "cat tree" read as a 6 m tree; a plant on top of a wardrobe under a low ceiling).
+    A thing is stacked when its first pose stands on another's top (within 2 cm, over it)."""
     assert scene.room is not None
-    limit = scene.room.height - CEILING_CLEARANCE
+    ceiling = scene.room.height - CEILING_CLEARANCE
+    first = {o.id: (o.position.z - o.size.z / 2, o.position.z + o.size.z / 2) for o in scene.objects}
+    tops: dict[str, float] = {}  # each object's top once fitted, lowest first
     shrunk = {}
-    for obj in scene.objects:
+    for obj in sorted(scene.objects, key=lambda o: first[o.id][0]):
+        bottom = first[obj.id][0]
+        host = next((scene.get(h) for h in tops if bottom > 0.02 and abs(first[h][1] - bottom) < 0.02
+                     and abs(obj.position.x - scene.get(h).position.x) <= scene.get(h).size.x / 2 + 0.01
+                     and abs(obj.position.y - scene.get(h).position.y) <= scene.get(h).size.y / 2 + 0.01), None)
+        base = tops[host.id] if host is not None else 0.0
+        limit = max(ceiling - base, MIN_STACKED)
         if obj.size.z > limit:
             k = limit / obj.size.z
             obj.size = Vec3(x=obj.size.x * k, y=obj.size.y * k, z=limit)
             shrunk[obj.id] = round(k, 3)
+        if host is not None:
+            obj.position = obj.position.model_copy(update={"z": base + obj.size.z / 2})
+        tops[obj.id] = (base if host is not None else max(bottom, 0.0)) + obj.size.z
     if shrunk:
         scene.record(STAGE, f"scaled {len(shrunk)} objects down to fit under the {scene.room.height:g} m ceiling",
                      step="room", scaled=shrunk)
