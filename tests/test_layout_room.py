@@ -263,3 +263,12 @@ def test_resized_stretches_any_floor_and_keeps_each_opening_on_its_wall_at_its_s
     assert [(o.wall, o.offset) for o in big.openings] == [(0, 2.0), (4, pytest.approx(4.0))]
     small = resized(room, 2.0, 2.0)  # the window's wall is 1 m now: it no longer fits
     assert [o.kind for o in small.openings] == ["door"]
+
+
+def test_a_box_past_the_ceiling_misfits_and_is_reported():
+    room = door_room()
+    shape = RoomShape(room)
+    objects = [box("under", 0, 0, sz=1.0, z=2.1), box("through", 1, 1, sz=1.0, z=2.5)]
+    assert list(shape.above_ceiling(boxes_of(objects))) == [0.0, pytest.approx(0.3)]
+    assert shape.misfit(boxes_of(objects))[1] == pytest.approx(0.3)
+    assert "through reaches 0.30 m above the ceiling" in problems(room, objects)

@@ -22,6 +22,8 @@ from scenewright.scene import Scene
 @dataclass
 class RoomMetrics:
     outside: list[str] = field(default_factory=list)
+    #: objects whose top is above the ceiling (a thing stacked on a tall one, a hung thing 2 m "above")
+    above_ceiling: list[str] = field(default_factory=list)
     #: "door 0 on wall_3: sofa_1, ..." for each opening whose clear strip something stands in
     blocked_openings: list[str] = field(default_factory=list)
     #: doors the agent cannot step in through (their index in room.openings)
@@ -48,6 +50,7 @@ def room_metrics(scene: Scene) -> RoomMetrics | None:
         return out
     boxes = boxes_of(objects)
     out.outside = [o.id for o, by in zip(objects, shape.outside_by(boxes)) if by > SLACK]
+    out.above_ceiling = [o.id for o, by in zip(objects, shape.above_ceiling(boxes)) if by > 0]
     out.blocked_openings = [f"{o.kind} {k} on wall_{o.wall}: {', '.join(ids)}" for k, o, ids in shape.blocked_openings(objects)]
     mounted = {c.source: c.relation for c in scene.constraints if c.relation in ("on wall", "on ceiling")}
     wall = [o for o in objects if mounted.get(o.id) == "on wall" or (o.id not in mounted and o.category in WALL_THINGS)]

@@ -148,9 +148,14 @@ class RoomShape:
             worst = np.maximum(worst, np.where(band, self._penetration(boxes, rect)[..., 0], 0.0))
         return np.where(worst > SLACK, worst, 0.0)
 
+    def above_ceiling(self, boxes: Boxes) -> np.ndarray:
+        """How far (m) each box reaches past the ceiling (0 under it)."""
+        over = boxes.hi[..., 2] - self.room.height
+        return np.where(over > SLACK, over, 0.0)
+
     def misfit(self, boxes: Boxes) -> np.ndarray:
-        """Containment and clear openings together (m): 0 where a box may stand."""
-        return np.maximum(self.outside_by(boxes), self.blocking(boxes))
+        """Containment (under the ceiling too) and clear openings together (m): 0 where a box may stand."""
+        return np.maximum(np.maximum(self.outside_by(boxes), self.above_ceiling(boxes)), self.blocking(boxes))
 
     def blocked_openings(self, objects: Sequence[SceneObject]) -> list[tuple[int, Opening, list[str]]]:
         """Each opening whose clear strip an object stands in: (index, opening, those ids)."""
@@ -288,6 +293,9 @@ def problems(room: Room, objects: Sequence[SceneObject], floor_ids: set[str] | N
         for o, by in zip(objects, outside):
             if by > SLACK:
                 out.append(f"{o.id} is outside the room by {by:.2f} m")
+        for o, by in zip(objects, shape.above_ceiling(boxes_of(objects))):
+            if by > 0:
+                out.append(f"{o.id} reaches {by:.2f} m above the ceiling")
     for k, opening, ids in shape.blocked_openings(objects):
         out.append(f"{opening.kind} {k} on wall_{opening.wall} is blocked by {', '.join(ids)}")
     if not any(o.kind == "door" for o in room.openings):

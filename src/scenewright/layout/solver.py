@@ -613,6 +613,8 @@ class _Search:
         out, strip = float(max(over, self.room.outside_by(box)[0])), float(self.room.blocking(box)[0])
         parts = [f"outside the room by {out:.2f} m"] if out > 0 else []
         parts += [f"in a door's or window's clear strip by {strip:.2f} m"] if strip > 0 else []
+        up = float(self.room.above_ceiling(box)[0])
+        parts += [f"above the ceiling by {up:.2f} m"] if up > 0 else []
         return "; ".join(parts)
 
     def next_free(self, node: _Node) -> int | None:

@@ -314,8 +314,8 @@ def place_openings(room: Room, wanted: Sequence[tuple[str, str | None, int]]) ->
 
 
 #: Categories hung on a wall, and hung from the ceiling, when the scene has a room.
-WALL_THINGS = frozenset({"picture_frame", "mirror", "wall_clock", "projector_screen"})
-CEILING_THINGS = frozenset({"ceiling_fan", "pendant_lamp"})
+WALL_THINGS = frozenset({"picture_frame", "mirror", "wall_clock", "projector_screen", "lifebuoy"})
+CEILING_THINGS = frozenset({"ceiling_fan", "pendant_lamp", "punching_bag"})
 _WALL_PHRASE = re.compile(r"\b(against|along|on|by|to|in|at|onto|from)\s+(?:the\s+|a\s+|one\s+)?(?:(back|rear|far|left|right|front)(?:[- ]hand)?\s+)?(wall|corner)s?\b")
 #: "hangs from the ceiling", "suspended from the ceiling", "on the ceiling".
 _CEILING_PHRASE = re.compile(r"\b(?:(?:hang|hangs|hanging|hung|suspended|dangles|dangling|swings?)\s+(?:\w+\s+){0,2}?from|on)\s+the\s+ceiling\b")
