@@ -23,12 +23,13 @@ from typing import TYPE_CHECKING, Annotated, Any, Literal
 from pydantic import BaseModel, ConfigDict, WithJsonSchema
 
 from scenewright.backends import prompts
-from scenewright.core.plan import EditPlan, NewObject
+from scenewright.core.plan import EditPlan, NewObject, RoomEdit
 from scenewright.core.protocols import Answer
 from scenewright.core.relations import INVERSE
 from scenewright.backends.structured import ChatClient, InvalidAnswer, json_text, model_name, user_message
 from scenewright.errors import InputError
 from scenewright.scene import (
+    ROOM_TARGET,
     MAX_ID_CHARS,
     MAX_ROOM_HEIGHT,
     MIN_ROOM_HEIGHT,
@@ -118,13 +119,24 @@ class ProposedNewObject(_Answer):
     size: Vec3 | None
 
 
+class ProposedRoomEdit(_Answer):
+    """A ``room`` edit: a new floor size and height (null: unchanged), or a door or window to add."""
+
+    width: float | None
+    depth: float | None
+    height: float | None
+    opening: Literal["door", "window"] | None
+    side: Literal["back", "front", "left", "right"] | None
+
+
 class EditAnswer(_Answer):
-    operation: Literal["move", "add", "delete", "replace"]
+    operation: Literal["move", "add", "delete", "replace", "room"]
     focus: str
     constraints: list[ProposedConstraint]
     new_object: ProposedNewObject | None
     yaw: float | None
     offset: Vec3 | None = None  # strict schemas list it as required; older answers may omit it
+    room: ProposedRoomEdit | None = None  # likewise; docs/rooms.md
 
 
 _LENGTH = re.compile(
@@ -378,13 +390,15 @@ class OpenAIChatVLM:
         )
         messages = [
             {"role": "system", "content": prompts.EDIT_SYSTEM},
-            user_message(prompts.plan_edit(objects_text, instruction)),
+            user_message(prompts.plan_edit(objects_text, instruction, _room_text(scene.room))),
         ]
         known = {o.id for o in scene.objects}
         by_snake = {snake_id(i): i for i in known}
 
         def check(answer: EditAnswer) -> Answer[EditPlan]:
             repairs: list[Event] = []
+            if answer.operation == "room":
+                return Answer(self._room_plan(scene, answer.room), ())
             focus = answer.focus if answer.focus in known else by_snake.get(snake_id(answer.focus), answer.focus)
             if answer.operation == "add":
                 # An id the scene already uses is replaced by editing.validate_plan, constraints and all.
@@ -415,6 +429,25 @@ class OpenAIChatVLM:
             return Answer(plan, tuple(repairs))
 
         return self.chat.ask("edit_plan", messages, EditAnswer, check)
+
+    @staticmethod
+    def _room_plan(scene: Scene, change: ProposedRoomEdit | None) -> EditPlan:
+        """The plan of a ``room`` answer, checked as the rule-based planner's is (editing.validate_plan):
+        a size needs both sides, and the room must exist and something must change."""
+        from scenewright.editing.apply import validate_plan
+
+        if change is not None and (change.width is None) != (change.depth is None):
+            raise InvalidAnswer("a room resize needs both width and depth in metres (or both null)")
+        room = None
+        if change is not None:
+            size = (change.width, change.depth) if change.width is not None and change.depth is not None else None
+            if size is not None and not all(math.isfinite(v) and v > 0 for v in size):
+                raise InvalidAnswer(f"room width and depth must be positive metres, got {size}")
+            room = RoomEdit(size=size, height=change.height, opening=change.opening, side=change.side)
+        try:
+            return validate_plan(scene, EditPlan(operation="room", focus=ROOM_TARGET, room=room))
+        except InputError as exc:
+            raise InvalidAnswer(str(exc)) from None
 
     def _focus_constraints(
         self,
@@ -454,6 +487,22 @@ class OpenAIChatVLM:
             user_message(prompts.judge(text, criterion), [image]),
         ]
         return self.chat.ask_text(f"judge_{criterion}", messages, parse_score)
+
+
+def _room_text(room: Room | None) -> str | None:
+    """The room as the edit prompt shows it: its floor, height and openings by side; None outdoors."""
+    if room is None:
+        return None
+    from scenewright.layout.room import SIDES
+
+    xs, ys = [p[0] for p in room.floor], [p[1] for p in room.floor]
+    sides = {}
+    for i, ((x0, y0), (x1, y1)) in enumerate(room.walls):
+        out = (y1 - y0, -(x1 - x0))  # a wall's outward normal: right of its counter-clockwise run
+        sides[i] = max(SIDES, key=lambda s: SIDES[s][0] * out[0] + SIDES[s][1] * out[1])
+    openings = ", ".join(f"a {o.kind} on the {sides[o.wall]} wall" for o in room.openings) or "no openings"
+    return (f"{max(xs) - min(xs):g} m wide (x) by {max(ys) - min(ys):g} m deep (y), {room.height:g} m high, "
+            f"{len(room.floor)} walls; {openings}")
 
 
 def _size_text(obj: SceneObject) -> str:

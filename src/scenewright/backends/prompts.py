@@ -169,20 +169,23 @@ EDIT_SYSTEM = (
 )
 
 
-def plan_edit(objects_text: str, instruction: str) -> str:
+def plan_edit(objects_text: str, instruction: str, room_text: str | None = None) -> str:
+    room = (f"\nThe room: {room_text}\n" if room_text else "\nThe scene has no room (open ground).\n")
+    room_op = (' or "room" (change the room itself: its size or height, or add a door or window)' if room_text else "")
     return f"""Objects in the scene (id: name, position, yaw, size):
 {objects_text}
-
+{room}
 Instruction:
 {instruction.strip()}
 
 Decide the one edit it asks for:
-- operation: "move" (place an existing object elsewhere or turn it), "add" (a new object), "delete" (remove one), or "replace" (change an object into something else or restyle it).
-- focus: the id of the one object the edit changes, exactly as listed; for "add", a new unused snake_case id for the new object.
+- operation: "move" (place an existing object elsewhere or turn it), "add" (a new object), "delete" (remove one), or "replace" (change an object into something else or restyle it){room_op}.
+- focus: the id of the one object the edit changes, exactly as listed; for "add", a new unused snake_case id for the new object; for "room", "room".
 - constraints: where the focus goes, only for "move", "add" and "replace" when it asks for a new place. The focus is the source of every constraint and never a target; targets are listed ids.
 - new_object: for "add" and "replace", the new object's name, category word, one-sentence look and, when the instruction says so, its size in metres (else null); null for "move" and "delete".
 - yaw: a new yaw in degrees when the instruction asks only to turn the object; else null.
 - offset: for a "move" that names no other object ("a bit to the left", "1 m back"), the shift from where the focus stands in metres (x right, y back, z up; 0.5 m when no distance is said) with no placing constraints; else null.
+- room: for "room" only (else null): the new floor width and depth in metres (both, or both null), the new ceiling height (or null), and a door or window to add with the wall's side (back, front, left, right; null: any) (or nulls).
 
 {RELATIONS}"""
 
