@@ -20,8 +20,8 @@ from scenewright.layout import LayoutResult, solve
 from scenewright.layout.room import access_problems, resized
 from scenewright.scene import ROOM_RELATIONS, Constraint, Scene, SceneObject
 
-#: Adds the placement priors of a room to the constraints (objects, constraints) -> constraints.
-Furnish = Callable[[Sequence[SceneObject], Sequence[Constraint]], list[Constraint]]
+#: Adds the placement priors of a room to the constraints (objects, constraints, ceiling height) -> constraints.
+Furnish = Callable[[Sequence[SceneObject], Sequence[Constraint], float], list[Constraint]]
 
 log = logging.getLogger(__name__)
 
@@ -109,7 +109,7 @@ def arrange(
         constraints = answer.value
         scene.record(STAGE, f"wrote {len(constraints)} constraints", backend=vlm.name)
         if scene.room is not None and furnish is not None:
-            constraints = furnish(scene.objects, constraints)
+            constraints = furnish(scene.objects, constraints, scene.room.height)
     if scene.room is None and any(c.relation in ROOM_RELATIONS for c in constraints):
         dropped = [str(c) for c in constraints if c.relation in ROOM_RELATIONS]
         constraints = [c for c in constraints if c.relation not in ROOM_RELATIONS]
