@@ -41,7 +41,7 @@ def _grown(scene: Scene, best: LayoutResult, meshes: Mapping[str, trimesh.Trimes
     """``best``, or the layout of its constraints in the room grown by :data:`GROW_STEP` per side
     (up to :data:`GROW_STEPS` times) until every object is placed, inside, reachable, and no
     door or window is blocked; the room grows with it. The fewest problems win, the smaller
-    room on a tie (docs/rooms.md)."""
+    room on a tie (docs/rooms.md). The growing shares one layout's ``time_limit`` among its solves."""
     assert scene.room is not None
 
     def trouble(result: LayoutResult, room) -> tuple[int, int]:
@@ -55,8 +55,8 @@ def _grown(scene: Scene, best: LayoutResult, meshes: Mapping[str, trimesh.Trimes
             break
         (x0, y0), (x1, y1) = np.min(bigger.floor, axis=0), np.max(bigger.floor, axis=0)
         bigger = resized(bigger, round((x1 - x0) * GROW_STEP, 1), round((y1 - y0) * GROW_STEP, 1))
-        result = solve(scene.objects, best.constraints, meshes=meshes, bounds=scene.bounds, time_limit=time_limit,
-                       seed=scene.seed, room=bigger)
+        result = solve(scene.objects, best.constraints, meshes=meshes, bounds=scene.bounds,
+                       time_limit=time_limit / GROW_STEPS, seed=scene.seed, room=bigger)
         if trouble(result, bigger) < score:
             best, room, score = result, bigger, trouble(result, bigger)
     if room is not scene.room:
