@@ -61,7 +61,8 @@ def _grown(scene: Scene, best: LayoutResult, meshes: Mapping[str, trimesh.Trimes
             best, room, score = result, bigger, trouble(result, bigger)
     if room is not scene.room:
         (x0, y0), (x1, y1) = np.min(room.floor, axis=0), np.max(room.floor, axis=0)
-        scene.record(STAGE, f"grew the room to {x1 - x0:g} x {y1 - y0:g} m to place every object within reach",
+        left = "every object placed and within reach" if score == (0, 0) else f"{sum(score)} problems left"
+        scene.record(STAGE, f"grew the room to {x1 - x0:g} x {y1 - y0:g} m: {left}",
                      step="grow room", floor=[list(p) for p in room.floor])
         scene.room = room
     return best
