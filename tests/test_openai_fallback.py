@@ -209,7 +209,7 @@ def test_backends_check_tells_an_ignored_schema(openai_server, workdir, capsys):
 
 def test_compact_schema_spells_every_field_enum_and_null():
     text = compact_schema(EditAnswer)
-    assert text.startswith('{"operation": "move" | "add" | "delete" | "replace", "focus": string')
+    assert text.startswith('{"operation": "move" | "add" | "delete" | "replace" | "room", "focus": string')
     assert '"new_object": {"name": string, "category": string | null' in text
     assert '"yaw": number | null' in text
     assert '"relation": "left of" | "right of"' in compact_schema(ConstraintsAnswer)
