@@ -1,7 +1,8 @@
 """Stored assets as meshes in the scene-frame asset frame, for the solver, export and evaluation.
 
 Parsing a GLB costs more than anything else a stage does with it, and a run reads every
-asset in three stages (checking it, laying it out, assembling ``scene.glb``). An
+asset in three stages (checking it, laying it out, assembling ``scene.glb``, which copies
+the file's bytes and parses nothing: :mod:`scenewright.export.glb`). An
 :class:`AssetMeshes` made by the run and handed to each stage parses every file once: the
 asset stage hands over the bytes it has just written, the later stages find them parsed.
 It lives as long as its owner keeps it (a run, an edit, a studio session), never in the
@@ -12,67 +13,53 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-import numpy as np
-import trimesh
-
-from scenewright.assets.normalise import parse_glb
 from scenewright.errors import InputError
 from scenewright.folder import SceneFolder
 from scenewright.geometry import GLTF_TO_SCENE
-from scenewright.gltf import mesh_materials
+from scenewright.gltf import Glb, glb_triangles
 from scenewright.scene import Scene, SceneObject
 
-
-def scene_mesh(asset: trimesh.Scene) -> trimesh.Trimesh:
-    """The triangles of a parsed asset as one mesh in the scene frame, geometry only.
-
-    The same vertices and faces, in the same order, as trimesh's ``to_mesh`` followed by the
-    frame change, without merging the materials and textures, which no geometric user needs
-    and which cost five times the parse.
-    """
-    vertices, faces, count = [], [], 0
-    for node in asset.graph.nodes_geometry:
-        matrix, name = asset.graph[node]
-        geom = asset.geometry[name]
-        transform = GLTF_TO_SCENE @ matrix
-        vertices.append(trimesh.transform_points(np.asarray(geom.vertices, dtype=float), transform))
-        tri = np.asarray(geom.faces, dtype=np.int64)
-        if np.linalg.det(transform[:3, :3]) < 0:  # a mirroring node turns the winding over
-            tri = tri[:, ::-1]
-        faces.append(tri + count)
-        count += len(geom.vertices)
-    return trimesh.Trimesh(np.concatenate(vertices), np.concatenate(faces), process=False)
+if TYPE_CHECKING:
+    import trimesh
 
 
 def asset_mesh(glb: bytes) -> trimesh.Trimesh:
-    """One mesh, bottom at z = 0, front −Y, from a normalised GLB (``ValueError`` when unreadable)."""
-    return scene_mesh(parse_glb(glb))
+    """One mesh, bottom at z = 0, front −Y, from a normalised GLB (``ValueError`` saying why it
+    is unreadable or holds no triangles).
+
+    The triangles are read straight from the file's accessors (:func:`~scenewright.gltf.glb_triangles`):
+    the solver, export and evaluation need geometry only, and a mesh library's loader builds
+    materials, textures and a scene graph first, which cost several times the read.
+    """
+    import numpy as np
+    import trimesh
+
+    from scenewright.assets.normalise import check_glb
+
+    problem = check_glb(glb)
+    if problem:
+        raise ValueError(problem)
+    vertices, faces = glb_triangles(Glb.parse(glb))
+    if not len(faces):
+        raise ValueError("the GLB holds no triangles")
+    if not np.isfinite(vertices).all():
+        raise ValueError("the GLB has non-finite vertex coordinates")
+    vertices = vertices @ GLTF_TO_SCENE[:3, :3].T + GLTF_TO_SCENE[:3, 3]
+    return trimesh.Trimesh(vertices, faces, process=False)
 
 
 @dataclass
 class ParsedAsset:
-    """One asset file, parsed: its glTF-frame scene as stored and its bytes; its scene-frame mesh
-    and its exact glTF materials (for :mod:`scenewright.export.glb`) are made on first use."""
+    """One asset file: its bytes and its scene-frame mesh (:func:`asset_mesh`)."""
 
-    asset: trimesh.Scene
     data: bytes
-    _mesh: trimesh.Trimesh | None = None
-
-    @property
-    def mesh(self) -> trimesh.Trimesh:
-        if self._mesh is None:
-            self._mesh = scene_mesh(self.asset)
-        return self._mesh
-
-    def materials(self) -> dict[str, dict]:
-        """The file's own material of each mesh by name (``ValueError`` when its JSON is not plain
-        glTF JSON); trimesh's copy is rounded and loses extensions."""
-        return mesh_materials(self.data)
+    mesh: trimesh.Trimesh
 
 
 def _parse(data: bytes) -> ParsedAsset:
-    return ParsedAsset(asset=parse_glb(data), data=data)
+    return ParsedAsset(data=data, mesh=asset_mesh(data))
 
 
 class AssetMeshes:
@@ -85,6 +72,7 @@ class AssetMeshes:
 
     def __init__(self) -> None:
         self._parsed: dict[tuple[str, int, int], ParsedAsset | str] = {}
+        self._data: dict[tuple[str, int, int], bytes] = {}
 
     @staticmethod
     def _key(path: Path) -> tuple[str, int, int]:
@@ -97,13 +85,24 @@ class AssetMeshes:
         self._parsed[self._key(path)] = parsed
         return parsed
 
+    def data(self, path: Path) -> bytes:
+        """The asset file's bytes, read once (``FileNotFoundError`` when gone); not parsed, for
+        what copies them (``scene.glb`` is spliced from them)."""
+        key = self._key(path)
+        found = self._parsed.get(key)
+        if isinstance(found, ParsedAsset):
+            return found.data
+        if key not in self._data:
+            self._data[key] = path.read_bytes()
+        return self._data[key]
+
     def parsed(self, path: Path) -> ParsedAsset:
         """The asset file at ``path`` (``FileNotFoundError`` when gone, ``ValueError`` saying why
         it is not a usable GLB)."""
         key = self._key(path)
         if key not in self._parsed:
             try:
-                self._parsed[key] = _parse(path.read_bytes())
+                self._parsed[key] = _parse(self._data.pop(key, None) or path.read_bytes())
             except ValueError as exc:
                 self._parsed[key] = str(exc)
         found = self._parsed[key]
