@@ -11,8 +11,8 @@ import trimesh
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from scenewright.assets import asset_mesh, normalise
-from scenewright.assets.normalise import check_glb, parse_glb, to_glb
+from scenewright.assets import asset_mesh
+from scenewright.assets.normalise import check_glb, normalise, parse_glb, to_glb
 from scenewright.errors import BackendError
 from scenewright.geometry import object_matrix
 from scenewright.scene import SceneObject, Vec3
@@ -105,7 +105,7 @@ def test_y_up_becomes_z_up_and_front_faces_minus_y():
     assert len(nose) and np.all(np.abs(nose[:, 0]) <= 0.2 + 1e-6)
     # Placed at yaw 90 the front turns toward +X (front_direction(90) = (1, 0)).
     obj = SceneObject(id="robot_1", name="robot", size=size, rotation=Vec3(z=90.0), position=Vec3(z=2.0))
-    placed = mesh.copy().apply_transform(object_matrix(obj))
+    placed = mesh.to_trimesh().apply_transform(object_matrix(obj))
     assert placed.bounds[1][0] == pytest.approx(1.5) and placed.bounds[0][0] == pytest.approx(-1.5)
     nose = placed.vertices[placed.vertices[:, 0] > 0.6]
     assert len(nose) and np.all(np.abs(nose[:, 1]) <= 0.2 + 1e-6)

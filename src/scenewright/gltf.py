@@ -41,6 +41,24 @@ def srgb_to_linear(values: Iterable[float]) -> tuple[float, ...]:
     return tuple(out)
 
 
+def check_glb(data: bytes) -> str | None:
+    """Why ``data`` is not a complete binary glTF 2.0 file, or ``None`` when it is one.
+
+    Servers answer 200 with an HTML error page or a truncated body often enough that the
+    header is worth checking before anything is stored.
+    """
+    if len(data) < 12:
+        return f"{len(data)} bytes, too short for a GLB"
+    magic, version, length = struct.unpack("<4sII", data[:12])
+    if magic != b"glTF":
+        return f"data starts with {data[:4]!r}, not the glTF magic"
+    if version != 2:
+        return f"glTF container version {version}, expected 2"
+    if length != len(data):
+        return f"header declares {length} bytes but {len(data)} arrived (truncated?)"
+    return None
+
+
 @dataclass(frozen=True)
 class Glb:
     """A binary glTF as its JSON tree and its binary chunk."""

@@ -15,17 +15,54 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+import numpy as np
+
 from scenewright.errors import InputError
 from scenewright.folder import SceneFolder
 from scenewright.geometry import GLTF_TO_SCENE
-from scenewright.gltf import Glb, glb_triangles
+from scenewright.gltf import Glb, check_glb, glb_triangles
 from scenewright.scene import Scene, SceneObject
 
 if TYPE_CHECKING:
     import trimesh
 
 
-def asset_mesh(glb: bytes) -> trimesh.Trimesh:
+class AssetMesh:
+    """An asset's triangles in the scene-frame asset frame (bottom at z = 0, front −Y): all the
+    solver, the collision checks and the editor ask of a mesh, without a mesh library's import
+    (scipy and networkx come with it) on the path of every edit. :meth:`to_trimesh` gives the
+    full mesh to what needs more (collision hulls)."""
+
+    __slots__ = ("vertices", "faces", "_bounds", "__weakref__")
+
+    def __init__(self, vertices: np.ndarray, faces: np.ndarray) -> None:
+        self.vertices = np.asarray(vertices, dtype=float)
+        self.faces = np.asarray(faces, dtype=np.int64)
+        self._bounds: np.ndarray | None = None
+
+    @property
+    def bounds(self) -> np.ndarray:
+        """(min corner, max corner) of the vertices."""
+        if self._bounds is None:
+            self._bounds = np.array([self.vertices.min(axis=0), self.vertices.max(axis=0)])
+        return self._bounds
+
+    @property
+    def extents(self) -> np.ndarray:
+        return self.bounds[1] - self.bounds[0]
+
+    @property
+    def triangles(self) -> np.ndarray:
+        """(faces, 3 corners, xyz)."""
+        return self.vertices[self.faces]
+
+    def to_trimesh(self) -> trimesh.Trimesh:
+        import trimesh
+
+        return trimesh.Trimesh(self.vertices, self.faces, process=False)
+
+
+def asset_mesh(glb: bytes) -> AssetMesh:
     """One mesh, bottom at z = 0, front −Y, from a normalised GLB (``ValueError`` saying why it
     is unreadable or holds no triangles).
 
@@ -33,11 +70,6 @@ def asset_mesh(glb: bytes) -> trimesh.Trimesh:
     the solver, export and evaluation need geometry only, and a mesh library's loader builds
     materials, textures and a scene graph first, which cost several times the read.
     """
-    import numpy as np
-    import trimesh
-
-    from scenewright.assets.normalise import check_glb
-
     problem = check_glb(glb)
     if problem:
         raise ValueError(problem)
@@ -46,8 +78,7 @@ def asset_mesh(glb: bytes) -> trimesh.Trimesh:
         raise ValueError("the GLB holds no triangles")
     if not np.isfinite(vertices).all():
         raise ValueError("the GLB has non-finite vertex coordinates")
-    vertices = vertices @ GLTF_TO_SCENE[:3, :3].T + GLTF_TO_SCENE[:3, 3]
-    return trimesh.Trimesh(vertices, faces, process=False)
+    return AssetMesh(vertices @ GLTF_TO_SCENE[:3, :3].T + GLTF_TO_SCENE[:3, 3], faces)
 
 
 @dataclass
@@ -55,7 +86,7 @@ class ParsedAsset:
     """One asset file: its bytes and its scene-frame mesh (:func:`asset_mesh`)."""
 
     data: bytes
-    mesh: trimesh.Trimesh
+    mesh: AssetMesh
 
 
 def _parse(data: bytes) -> ParsedAsset:
@@ -124,10 +155,10 @@ class AssetMeshes:
             return f"its asset {obj.asset} is not a usable GLB ({exc})"
         return None
 
-    def of(self, scene: Scene, folder: SceneFolder, skip: frozenset[str] | set[str] = frozenset()) -> dict[str, trimesh.Trimesh]:
+    def of(self, scene: Scene, folder: SceneFolder, skip: frozenset[str] | set[str] = frozenset()) -> dict[str, AssetMesh]:
         """Each object's asset mesh by id; objects without an asset (boxes stand in) and those in
         ``skip`` are left out. A missing or broken file is an InputError saying how to mend it."""
-        meshes: dict[str, trimesh.Trimesh] = {}
+        meshes: dict[str, AssetMesh] = {}
         for obj in scene.objects:
             path = folder.asset_of(obj)
             if path is None or obj.id in skip:
@@ -144,6 +175,6 @@ class AssetMeshes:
         return meshes
 
 
-def load_meshes(scene: Scene, folder: SceneFolder, store: AssetMeshes | None = None) -> dict[str, trimesh.Trimesh]:
+def load_meshes(scene: Scene, folder: SceneFolder, store: AssetMeshes | None = None) -> dict[str, AssetMesh]:
     """Each object's asset by id (see :meth:`AssetMeshes.of`), parsed by ``store`` when given."""
     return (store or AssetMeshes()).of(scene, folder)
