@@ -10,6 +10,10 @@ trimesh keeps a material's base colour as 8-bit integers and drops material exte
 again (normalised, then assembled into the scene) would lose its exact factors and its
 glass. :func:`mesh_materials` reads the materials a GLB gives its meshes, and
 :func:`keep_materials` writes them back into the glTF tree trimesh is about to export.
+
+The GLB container itself is read here too (:class:`Glb`, :func:`check_glb`), with the
+triangles a file draws (:func:`glb_triangles`): the solver and the editor need nothing more
+of a stored asset, and reading them needs numpy only, not a mesh library's import.
 """
 
 from __future__ import annotations
