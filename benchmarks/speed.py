@@ -33,9 +33,24 @@ SIZES = (15, 30, 60, 120)
 MOVE = "move the armchair_1 to the left of the bookshelf_2"
 
 
+def environment(src: Path) -> dict[str, str]:
+    """The environment a run of ``src`` gets: its sources first, and bytecode read from the
+    caches :func:`compiled` wrote (any value of ``PYTHONDONTWRITEBYTECODE``, "0" too, would
+    leave a tree that was never compiled compiling every module on every start)."""
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    return {**env, "PYTHONPATH": str(src)}
+
+
+def compiled(src: Path) -> Path:
+    """``src`` with its bytecode written, as an installed package has it and a user's first run
+    leaves it: both columns then start from cached bytecode."""
+    subprocess.run([sys.executable, "-m", "compileall", "-q", str(src)], check=True, capture_output=True)
+    return src
+
+
 def timed(command: list[str], src: Path, cwd: Path) -> dict[str, float]:
     """Wall and CPU seconds of one process (with its children) running ``command``."""
-    env = {**os.environ, "PYTHONPATH": str(src), "PYTHONDONTWRITEBYTECODE": "0"}
+    env = environment(src)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     done = subprocess.run(command, cwd=cwd, env=env, capture_output=True, text=True)
@@ -60,7 +75,7 @@ def heavy_imports(src: Path) -> list[str]:
         "import json, sys, scenewright, scenewright.cli\n"
         f"print(json.dumps(sorted({{m.split('.')[0] for m in sys.modules}} & set({HEAVY!r}))))"
     )
-    out = subprocess.run([sys.executable, "-c", code], env={**os.environ, "PYTHONPATH": str(src)},
+    out = subprocess.run([sys.executable, "-c", code], env=environment(src),
                          capture_output=True, text=True, check=True)
     return json.loads(out.stdout)
 
@@ -88,7 +103,7 @@ def render_cpu(src: Path, scene: Path, work: Path, preview: str | None) -> dict[
         shutil.rmtree(copy, ignore_errors=True)
 
 
-def measure(sources: dict[str, Path], repeats: int, work: Path, render: bool) -> dict:
+def measure(sources: dict[str, Path], repeats: int, work: Path, render: bool, sizes: tuple[int, ...] = SIZES) -> dict:
     runs: dict[str, dict[str, list]] = {name: {} for name in sources}
 
     def add(name: str, key: str, value: dict[str, float]) -> None:
@@ -98,7 +113,7 @@ def measure(sources: dict[str, Path], repeats: int, work: Path, render: bool) ->
     for rep in range(repeats):
         for name, src in sources.items():  # interleaved: both versions see the same machine load
             add(name, "help", timed(scenewright("--help"), src, work))
-            for n in SIZES:
+            for n in sizes:
                 out = work / f"{name}-{n}-{rep}"
                 add(name, f"generate_{n}", timed(scenewright("generate", TEXT.format(k=n // 5), "--out", str(out),
                                                                "--no-render"), src, work))
@@ -106,7 +121,7 @@ def measure(sources: dict[str, Path], repeats: int, work: Path, render: bool) ->
                     scenes[name][n] = out
                 else:
                     shutil.rmtree(out, ignore_errors=True)
-            for n in (15, 60):
+            for n in [n for n in (15, 60) if n in sizes]:
                 copy = work / f"{name}-edit-{n}-{rep}"
                 shutil.copytree(scenes[name][n], copy)
                 add(name, f"edit_move_{n}", timed(scenewright("edit", str(copy), MOVE), src, work))
@@ -115,9 +130,10 @@ def measure(sources: dict[str, Path], repeats: int, work: Path, render: bool) ->
     for name, src in sources.items():
         figures = {key: median(values) for key, values in runs[name].items()}
         figures["heavy_modules_on_import"] = heavy_imports(src)
-        figures["generate_slope_cpu"] = slope([(n, figures[f"generate_{n}"]["cpu"]) for n in SIZES])
-        figures["generate_slope_wall"] = slope([(n, figures[f"generate_{n}"]["wall"]) for n in SIZES])
-        if render:
+        if len(sizes) > 1:
+            figures["generate_slope_cpu"] = slope([(n, figures[f"generate_{n}"]["cpu"]) for n in sizes])
+            figures["generate_slope_wall"] = slope([(n, figures[f"generate_{n}"]["wall"]) for n in sizes])
+        if render and 15 in sizes:  # the render times the 15-object scene
             # One render per version (a before-render is a minute of CPU): the 15-object scene,
             # each version's own default preview, best view only.
             figures["render_default_15"] = {
@@ -141,9 +157,17 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--baseline", help="git revision to measure side by side (the 'before' column)")
     parser.add_argument("--repeats", type=int, default=3, help="runs per figure; medians are reported")
     parser.add_argument("--render", action="store_true", help="also time a default preview render (needs bpy)")
+    parser.add_argument("--sizes", default=",".join(map(str, SIZES)),
+                        help="object counts to generate (multiples of 5; the edits use 15 and 60 when listed)")
     args = parser.parse_args(argv)
     if args.repeats < 1:
         parser.error("--repeats must be at least 1")
+    try:
+        sizes = tuple(int(n) for n in args.sizes.split(","))
+    except ValueError:
+        parser.error(f"--sizes takes numbers separated by commas, got {args.sizes!r}")
+    if not sizes or any(n < 5 or n % 5 for n in sizes):
+        parser.error("--sizes: each count must be a positive multiple of 5 (five kinds of furniture)")
     with tempfile.TemporaryDirectory(prefix="scenewright-speed-") as tmp:
         work = Path(tmp)
         sources = {}
@@ -153,11 +177,11 @@ def main(argv: list[str] | None = None) -> int:
             archive = subprocess.run(["git", "-C", str(ROOT), "archive", args.baseline, "src"],
                                      capture_output=True, check=True).stdout
             subprocess.run(["tar", "-x", "-C", str(before)], input=archive, check=True)
-            sources["before"] = before / "src"
-        sources["after"] = ROOT / "src"
+            sources["before"] = compiled(before / "src")
+        sources["after"] = compiled(ROOT / "src")
         result = {"baseline": args.baseline, "repeats": args.repeats, "cpus": os.cpu_count(),
                   "load_average": [round(x, 2) for x in os.getloadavg()],
-                  **measure(sources, args.repeats, work, args.render)}
+                  **measure(sources, args.repeats, work, args.render, sizes)}
     print(json.dumps(result, indent=1))
     return 0
 

@@ -141,4 +141,4 @@ def _loaded_after(statement: str) -> set[str]:
 def test_importing_the_edit_plan_loads_neither_the_solver_nor_a_stage():
     loaded = _loaded_after("import scenewright.core.plan")
     assert "scenewright.core.plan" in loaded
-    assert {package_of(m) for m in loaded} <= {"<root>", "core", "scene", "errors", "files", "version"}
+    assert {package_of(m) for m in loaded} <= {"<root>", "core", "scene", "settings", "errors", "files", "version"}

@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 import trimesh
 
-from scenewright.assets import asset_mesh, generate_assets, normalise
+from scenewright.assets import asset_mesh, generate_assets
 from scenewright.backends.library import AssetLibrary, infer_index
-from scenewright.assets.normalise import to_glb
+from scenewright.assets.normalise import normalise, to_glb
 from scenewright.backends import MeshRequest, create_backend
 from scenewright.cache import RequestCache
 from scenewright.errors import BackendError, InputError

@@ -106,12 +106,12 @@ def test_ctrl_c_during_the_meshes_exits_130_at_once_keeping_what_finished(tmp_pa
 
 
 def test_ctrl_c_prints_how_to_resume_and_exits_130(tmp_path, monkeypatch, capsys):
-    from scenewright import pipeline
+    from scenewright.layout import stage
 
     def interrupted(*args, **kwargs):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(pipeline, "arrange", interrupted)
+    monkeypatch.setattr(stage, "arrange", interrupted)  # the pipeline's layout stage looks it up when it runs
     out = tmp_path / "scene"
     assert main(["generate", TEXT, "--out", str(out), "--no-render"]) == 130
     err = " ".join(capsys.readouterr().err.split())

@@ -4,9 +4,11 @@ as named in the assembled scene.glb, glass transmits, material words set the sur
 from __future__ import annotations
 
 import copy
+import io
 
 import numpy as np
 import pytest
+import trimesh
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -145,3 +147,52 @@ def test_normalised_assets_keep_their_exact_materials(caplog):
     with caplog.at_level("WARNING"):
         plain = json_chunk(to_glb(asset, source=b"glTF\x02\x00\x00\x00 not json"))
     assert "unreadable" in caplog.text and "extensions" not in plain["materials"][0]
+
+
+# Reading triangles straight from a GLB (what the solver and export need of an asset) ---------
+def _glb_with(primitive_mode: int, indices: list[int], node: dict, parent: dict | None = None) -> bytes:
+    from scenewright.export.splice import GlbWriter
+
+    out = GlbWriter("test")
+    points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0], [0, 2, 0]], dtype=float)
+    position = out.accessor(points, "VEC3")
+    index = out.accessor(np.array(indices), "SCALAR")
+    mesh = out.add("meshes", {"primitives": [{"attributes": {"POSITION": position}, "indices": index,
+                                             "mode": primitive_mode}]})
+    holder = out.node("holder")
+    out.tree["nodes"][holder].update(parent or {})
+    child = out.node("child", parent=holder)
+    out.tree["nodes"][child].update(node, mesh=mesh)
+    return out.to_bytes()
+
+
+def test_triangles_follow_node_transforms_and_primitive_modes():
+    from scenewright.gltf import Glb, glb_triangles
+
+    turn = [0.0, 0.0, np.sin(np.pi / 4), np.cos(np.pi / 4)]  # 90° about z
+    data = _glb_with(4, [0, 1, 2, 1, 3, 2], {"translation": [1.0, 0.0, 0.0], "rotation": turn, "scale": [2, 2, 2]},
+                     parent={"matrix": np.eye(4).reshape(-1).tolist()})
+    vertices, faces = glb_triangles(Glb.parse(data))
+    loaded = trimesh.load_scene(io.BytesIO(data), file_type="glb").to_mesh()
+    np.testing.assert_allclose(np.sort(vertices, axis=0), np.sort(loaded.vertices, axis=0), atol=1e-9)
+    np.testing.assert_allclose(vertices[1], [1.0, 2.0, 0.0], atol=1e-9)  # (1,0,0) scaled, turned, moved
+    assert faces.tolist() == [[0, 1, 2], [1, 3, 2]]
+    assert glb_triangles(Glb.parse(_glb_with(5, [0, 1, 2, 3, 4], {})))[1].tolist() == [[0, 1, 2], [2, 1, 3], [2, 3, 4]]
+    assert glb_triangles(Glb.parse(_glb_with(6, [0, 1, 2, 3], {})))[1].tolist() == [[0, 1, 2], [0, 2, 3]]
+    mirrored = glb_triangles(Glb.parse(_glb_with(4, [0, 1, 2], {"scale": [-1, 1, 1]})))[1]
+    assert mirrored.tolist() == [[2, 1, 0]], "a mirroring node turns the winding over"
+
+
+def test_triangles_of_a_file_that_refers_to_what_it_lacks_are_a_value_error():
+    from scenewright.gltf import Glb, glb_triangles
+
+    glb = Glb.parse(_glb_with(4, [0, 1, 7], {}))
+    with pytest.raises(ValueError, match="vertex"):
+        glb_triangles(glb)
+    glb.tree["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 9
+    with pytest.raises(ValueError, match="does not hold"):
+        glb_triangles(glb)
+    glb.tree["accessors"][0]["count"] = 10_000
+    glb.tree["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 0
+    with pytest.raises(ValueError, match="runs past"):
+        glb_triangles(glb)

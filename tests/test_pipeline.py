@@ -333,24 +333,29 @@ def test_a_run_saves_the_document_once_per_stage_and_parses_each_asset_once(tmp_
 
     load = importlib.import_module("scenewright.assets.load")
     normalise = importlib.import_module("scenewright.assets.normalise")  # the package exports a function of that name
-    saves, parses = [], []
-    real_save, real_parse = SceneFolder.save, normalise.parse_glb
+    saves, parses, reads = [], [], []
+    real_save, real_parse, real_read = SceneFolder.save, normalise.parse_glb, load.glb_triangles
     monkeypatch.setattr(SceneFolder, "save", lambda self, scene: saves.append(list(scene.done)) or real_save(self, scene))
 
     def counted(data):
         parses.append(len(data))
         return real_parse(data)
 
+    def counted_read(glb):
+        reads.append(glb)
+        return real_read(glb)
+
     monkeypatch.setattr(normalise, "parse_glb", counted)
-    monkeypatch.setattr(load, "parse_glb", counted)
+    monkeypatch.setattr(load, "glb_triangles", counted_read)
     settings = _settings()
     scene = generate(TEXT, tmp_path / "s", backends=backends_from_settings(settings), settings=settings, render=False)
     # The new document, then once after each of the four stages.
     assert saves == [[], ["analyze"], ["analyze", "assets"], ["analyze", "assets", "layout"],
                      ["analyze", "assets", "layout", "export"]]
-    # Each asset: the backend's answer once (to normalise it) and the stored file once (kept for
-    # the checks, the solver and the export).
-    assert len(parses) == 2 * len(scene.objects)
+    # Each asset: the backend's answer parsed once (to normalise it) and the stored file's
+    # triangles read once (kept for the checks and the solver; the export copies its bytes).
+    assert len(parses) == len(scene.objects)
+    assert len(reads) == len(scene.objects)
 
 
 def test_the_stage_table_names_each_stage_once_in_order():

@@ -1,8 +1,8 @@
 """scenewright: text in, an editable, styled, collision-free 3D scene out.
 
 The stage functions a library user calls are re-exported here and imported on first use
-(PEP 562 module ``__getattr__``), so ``import scenewright`` loads the document and the errors
-only; trimesh, scipy, fcl, Blender and the network are paid for by what runs
+(PEP 562 module ``__getattr__``), so ``import scenewright`` loads the errors only; the document
+model (pydantic), trimesh, scipy, fcl, Blender and the network are paid for by what runs
 (docs/architecture.md, "Layers")::
 
     from pathlib import Path
@@ -23,11 +23,14 @@ import importlib
 from typing import TYPE_CHECKING, Any
 
 from scenewright.errors import BackendError, InfeasibleLayout, InputError, ScenewrightError
-from scenewright.scene import Constraint, Scene, SceneObject, Vec3
 from scenewright.version import __version__
 
 #: name → module that defines it, imported when the name is first read.
 _LAZY = {
+    "Constraint": "scenewright.scene",
+    "Scene": "scenewright.scene",
+    "SceneObject": "scenewright.scene",
+    "Vec3": "scenewright.scene",
     "generate": "scenewright.pipeline",
     "resume": "scenewright.pipeline",
     "analyze": "scenewright.analysis.stage",
@@ -62,17 +65,14 @@ if TYPE_CHECKING:
     from scenewright.layout.solver import audit, solve
     from scenewright.layout.stage import arrange
     from scenewright.pipeline import generate, resume
+    from scenewright.scene import Constraint, Scene, SceneObject, Vec3
     from scenewright.settings import Settings
 
 __all__ = [
     "BackendError",
-    "Constraint",
     "InfeasibleLayout",
     "InputError",
-    "Scene",
-    "SceneObject",
     "ScenewrightError",
-    "Vec3",
     "__version__",
     *_LAZY,
 ]

@@ -20,11 +20,14 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath, PureWindowsPath
+from typing import TYPE_CHECKING
 
 from scenewright.errors import InputError
 from scenewright.files import check_image
 from scenewright.lock import LOCK_NAME
-from scenewright.scene import Scene, SceneObject
+
+if TYPE_CHECKING:  # the document model (pydantic) is loaded by what reads a document, not by paths
+    from scenewright.scene import Scene, SceneObject
 
 #: Sub-folders scenewright writes into; a link in their place would send writes elsewhere.
 SUBFOLDERS = ("images", "images/objects", "assets", "renders", "history")
@@ -205,6 +208,8 @@ class SceneFolder:
                 "create one with `scenewright generate TEXT --out DIR`"
             )
         self.check()
+        from scenewright.scene import Scene
+
         return Scene.load(self.document)
 
     def save(self, scene: Scene) -> Path:

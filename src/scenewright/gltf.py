@@ -10,6 +10,10 @@ trimesh keeps a material's base colour as 8-bit integers and drops material exte
 again (normalised, then assembled into the scene) would lose its exact factors and its
 glass. :func:`mesh_materials` reads the materials a GLB gives its meshes, and
 :func:`keep_materials` writes them back into the glTF tree trimesh is about to export.
+
+The GLB container itself is read here too (:class:`Glb`, :func:`check_glb`), with the
+triangles a file draws (:func:`glb_triangles`): the solver and the editor need nothing more
+of a stored asset, and reading them needs numpy only, not a mesh library's import.
 """
 
 from __future__ import annotations
@@ -18,11 +22,17 @@ import copy
 import json
 import struct
 from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass
+
+import numpy as np
 
 #: Material fields that hold plain values (no texture references), at the top level and
 #: inside ``pbrMetallicRoughness``.
 _FIELDS = ("name", "emissiveFactor", "alphaMode", "alphaCutoff", "doubleSided")
 _PBR_FIELDS = ("baseColorFactor", "metallicFactor", "roughnessFactor")
+#: GLB chunk types.
+JSON_CHUNK = 0x4E4F534A
+BIN_CHUNK = 0x004E4942
 
 
 def srgb_to_linear(values: Iterable[float]) -> tuple[float, ...]:
@@ -33,6 +43,181 @@ def srgb_to_linear(values: Iterable[float]) -> tuple[float, ...]:
         c = min(1.0, max(0.0, float(value)))
         out.append(c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4)
     return tuple(out)
+
+
+def check_glb(data: bytes) -> str | None:
+    """Why ``data`` is not a complete binary glTF 2.0 file, or ``None`` when it is one.
+
+    Servers answer 200 with an HTML error page or a truncated body often enough that the
+    header is worth checking before anything is stored.
+    """
+    if len(data) < 12:
+        return f"{len(data)} bytes, too short for a GLB"
+    magic, version, length = struct.unpack("<4sII", data[:12])
+    if magic != b"glTF":
+        return f"data starts with {data[:4]!r}, not the glTF magic"
+    if version != 2:
+        return f"glTF container version {version}, expected 2"
+    if length != len(data):
+        return f"header declares {length} bytes but {len(data)} arrived (truncated?)"
+    return None
+
+
+@dataclass(frozen=True)
+class Glb:
+    """A binary glTF as its JSON tree and its binary chunk."""
+
+    tree: dict
+    binary: bytes
+
+    @classmethod
+    def parse(cls, data: bytes) -> Glb:
+        """Split GLB bytes (``ValueError`` saying what is wrong when they are no usable GLB)."""
+        if len(data) < 20 or data[:4] != b"glTF":
+            raise ValueError("not a binary glTF (GLB) file")
+        version, length = struct.unpack_from("<II", data, 4)
+        if version != 2:
+            raise ValueError(f"glTF version {version}; only 2 is read")
+        if length > len(data):
+            raise ValueError(f"cut short: the header says {length} bytes, the file has {len(data)}")
+        chunks, offset = {}, 12
+        while offset + 8 <= length:
+            size, kind = struct.unpack_from("<II", data, offset)
+            if offset + 8 + size > length:
+                raise ValueError("a chunk runs past the end of the file")
+            chunks.setdefault(kind, data[offset + 8 : offset + 8 + size])
+            offset += 8 + size
+        if JSON_CHUNK not in chunks:
+            raise ValueError("no JSON chunk")
+        try:
+            tree = json.loads(chunks[JSON_CHUNK])
+        except (UnicodeDecodeError, json.JSONDecodeError) as exc:
+            raise ValueError(f"its JSON chunk does not parse ({exc})") from None
+        if not isinstance(tree, dict):
+            raise ValueError("its JSON chunk is not an object")
+        return cls(tree, chunks.get(BIN_CHUNK, b""))
+
+    def roots(self) -> list[int]:
+        """The nodes of the default scene."""
+        scenes = self.tree.get("scenes") or [{}]
+        return list(scenes[self.tree.get("scene", 0)].get("nodes", []))
+
+    def find(self, name: str) -> int | None:
+        """The index of the first node called ``name``."""
+        for i, node in enumerate(self.tree.get("nodes", [])):
+            if node.get("name") == name:
+                return i
+        return None
+
+
+_COMPONENTS = {5120: np.int8, 5121: np.uint8, 5122: np.int16, 5123: np.uint16, 5125: np.uint32, 5126: np.float32}
+_WIDTHS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT2": 4, "MAT3": 9, "MAT4": 16}
+#: Primitive modes: triangles, triangle strip, triangle fan (points and lines hold no surface).
+_TRIANGLES, _STRIP, _FAN = 4, 5, 6
+
+
+def _node_matrix(node: dict) -> np.ndarray:
+    """A node's local transform (its ``matrix``, else translation @ rotation @ scale)."""
+    if "matrix" in node:
+        return np.asarray(node["matrix"], dtype=float).reshape(4, 4).T
+    x, y, z, w = node.get("rotation", (0.0, 0.0, 0.0, 1.0))
+    rotation = np.array([
+        [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+        [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+        [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
+    ])
+    out = np.eye(4)
+    out[:3, :3] = rotation * np.asarray(node.get("scale", (1.0, 1.0, 1.0)), dtype=float)
+    out[:3, 3] = node.get("translation", (0.0, 0.0, 0.0))
+    return out
+
+
+def _read(glb: Glb, view_index: int, offset: int, component: int, kind: str, count: int) -> np.ndarray:
+    """``count`` elements of ``kind`` from a buffer view, as a (count, width) array."""
+    dtype = np.dtype(_COMPONENTS[component]).newbyteorder("<")
+    width = _WIDTHS[kind]
+    view = glb.tree["bufferViews"][view_index]
+    stride = view.get("byteStride") or dtype.itemsize * width
+    start = view.get("byteOffset", 0) + offset
+    end = start + (count - 1) * stride + dtype.itemsize * width if count else start
+    if end > view.get("byteOffset", 0) + view["byteLength"] or end > len(glb.binary):
+        raise ValueError(f"an accessor runs past buffer view {view_index}")
+    return np.ndarray((count, width), dtype=dtype, buffer=glb.binary, offset=start,
+                      strides=(stride, dtype.itemsize)).copy()
+
+
+def _accessor(glb: Glb, k: int) -> np.ndarray:
+    """Accessor ``k`` as a (count, width) array (normalised integers scaled to 0..1 or -1..1)."""
+    spec = glb.tree["accessors"][k]
+    component, kind, count = spec["componentType"], spec["type"], spec["count"]
+    if "bufferView" in spec:
+        out = _read(glb, spec["bufferView"], spec.get("byteOffset", 0), component, kind, count)
+    else:
+        out = np.zeros((count, _WIDTHS[kind]), dtype=_COMPONENTS[component])
+    sparse = spec.get("sparse")
+    if sparse:
+        indices, values, n = sparse["indices"], sparse["values"], sparse["count"]
+        where = _read(glb, indices["bufferView"], indices.get("byteOffset", 0), indices["componentType"], "SCALAR", n)
+        out[where[:, 0].astype(np.int64)] = _read(glb, values["bufferView"], values.get("byteOffset", 0),
+                                                  component, kind, n)
+    if spec.get("normalized") and out.dtype.kind in "iu":
+        return np.maximum(out / np.iinfo(out.dtype).max, -1.0)
+    return out
+
+
+def _faces(indices: np.ndarray, mode: int) -> np.ndarray:
+    if mode == _TRIANGLES:
+        return indices[: len(indices) // 3 * 3].reshape(-1, 3)
+    k = np.arange(max(len(indices) - 2, 0))
+    if mode == _STRIP:  # every other triangle turns the other way round
+        order = np.where(k[:, None] % 2 == 0, [0, 1, 2], [1, 0, 2]) + k[:, None]
+        return indices[order]
+    return np.column_stack([np.full(len(k), indices[0]), indices[k + 1], indices[k + 2]])  # a fan
+
+
+def glb_triangles(glb: Glb) -> tuple[np.ndarray, np.ndarray]:
+    """Every triangle the default scene draws, as (vertices in the file's frame, faces): each
+    mesh under each node that uses it, moved by the node's world transform; a mirroring node's
+    triangles turned over, so they still face out. ``ValueError`` when the JSON refers to
+    something the file does not hold."""
+    vertices, faces, count = [], [], 0
+    tree = glb.tree
+    try:
+        stack = [(k, np.eye(4)) for k in reversed(glb.roots())]
+        seen = 0
+        while stack:
+            k, parent = stack.pop()
+            seen += 1
+            if seen > len(tree.get("nodes", [])) * 4 + 16:
+                raise ValueError("its node tree has a cycle")
+            node = tree["nodes"][k]
+            world = parent @ _node_matrix(node)
+            stack += [(child, world) for child in reversed(node.get("children", []))]
+            if "mesh" not in node:
+                continue
+            flip = np.linalg.det(world[:3, :3]) < 0
+            for primitive in tree["meshes"][node["mesh"]]["primitives"]:
+                mode = primitive.get("mode", _TRIANGLES)
+                if mode not in (_TRIANGLES, _STRIP, _FAN) or "POSITION" not in primitive["attributes"]:
+                    continue
+                points = _accessor(glb, primitive["attributes"]["POSITION"])[:, :3].astype(float)
+                if "indices" in primitive:
+                    index = _accessor(glb, primitive["indices"])[:, 0].astype(np.int64)
+                else:
+                    index = np.arange(len(points), dtype=np.int64)
+                if len(index) and (index.min() < 0 or index.max() >= len(points)):
+                    raise ValueError("a triangle names a vertex its mesh does not have")
+                tri = _faces(index, mode)
+                if flip:
+                    tri = tri[:, ::-1]
+                vertices.append(points @ world[:3, :3].T + world[:3, 3])
+                faces.append(tri + count)
+                count += len(points)
+    except (KeyError, IndexError, TypeError) as exc:
+        raise ValueError(f"its glTF JSON refers to something it does not hold ({type(exc).__name__}: {exc})") from None
+    if not vertices:
+        return np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64)
+    return np.concatenate(vertices), np.concatenate(faces)
 
 
 def json_chunk(glb: bytes) -> dict:

@@ -18,18 +18,13 @@ from pathlib import Path
 
 from pydantic import ValidationError
 
-from scenewright.analysis.composition.walls import room_constraints
-from scenewright.analysis.stage import analyze
-from scenewright.assets import generate_assets
 from scenewright.assets.load import AssetMeshes
-from scenewright.assets.stage import needs_asset
 from scenewright.backends import Backends
 from scenewright.cache import RequestCache
 from scenewright.editing.history import recover
 from scenewright.errors import InputError, MissingExtra
 from scenewright.folder import DocumentSaver, SceneFolder, as_folder
 from scenewright.integrity import assemble_recorded, finish_first_save, glb_matches, rebuild_glb, remove_temporaries
-from scenewright.layout.stage import arrange
 from scenewright.lock import LOCK_NAME, locked
 from scenewright.scene import Scene, describe_validation_error
 from scenewright.settings import Settings
@@ -70,13 +65,19 @@ class Stage:
     present: Callable[[Run], bool]
 
 
+# Each stage imports its module when it runs: a command that only holds the folder (``writing``)
+# or resumes past a stage does not pay for the reader, the mesh library or the solver.
 def _analyze(run: Run) -> bool:
+    from scenewright.analysis.stage import analyze
+
     analyze(run.scene, run.folder, run.backends.vlm, run.backends.images, run.note, checkpoint=run.saver.checkpoint,
             room=run.room)
     return True
 
 
 def _assets(run: Run) -> bool:
+    from scenewright.assets.stage import generate_assets
+
     generate_assets(
         run.scene, run.folder, run.backends.meshes, RequestCache(run.settings.cache_dir), run.note,
         max_faces=run.settings.max_faces, store=run.meshes, checkpoint=run.saver.checkpoint,
@@ -84,8 +85,16 @@ def _assets(run: Run) -> bool:
     return True
 
 
+def _assets_present(run: Run) -> bool:
+    from scenewright.assets.stage import needs_asset
+
+    return not any(needs_asset(o, run.folder, run.meshes) for o in run.scene.objects)
+
+
 def _layout(run: Run) -> bool:
+    from scenewright.analysis.composition.walls import room_constraints
     from scenewright.analysis.parser.room import sized_freely
+    from scenewright.layout.stage import arrange
 
     option = next((e.data.get("room") for e in reversed(run.scene.provenance) if e.data.get("step") == "room"), None)
     arrange(
@@ -125,7 +134,7 @@ def _render(run: Run) -> bool:
 #: there; when a stage has to run again, every later stage runs again too.
 PIPELINE: tuple[Stage, ...] = (
     Stage("analyze", _analyze, lambda r: bool(r.scene.objects) and r.folder.ground_image.is_file()),
-    Stage("assets", _assets, lambda r: not any(needs_asset(o, r.folder, r.meshes) for o in r.scene.objects)),
+    Stage("assets", _assets, _assets_present),
     Stage("layout", _layout, lambda r: r.scene.layout is not None),
     Stage("export", _export, lambda r: glb_matches(r.scene, r.folder) if r.scene.glb_sha256 is not None
           else r.folder.glb.is_file()),

@@ -22,6 +22,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_valida
 
 from scenewright.errors import InputError
 from scenewright.files import write_atomic
+from scenewright.settings import MAX_SEED, STYLES  # noqa: F401  (defined there so the CLI need not load pydantic)
 
 #: Version 2 added ``room``; :func:`migrate` brings older documents up to date.
 SCHEMA_VERSION = 2
@@ -67,8 +68,6 @@ def room_target(target: str) -> int | str | None:
     m = _WALL_TARGET.match(target)
     return int(m.group(1)) if m else None
 
-#: Styles every backend understands; free text is accepted and mapped by each backend.
-STYLES = ("realistic", "cartoon", "low-poly", "cyberpunk", "steampunk", "anime")
 DEFAULT_STYLE = "realistic"
 
 _ID = re.compile(r"^[A-Za-z0-9_\-.]+$")
@@ -85,8 +84,6 @@ MAX_NAME_CHARS = 200
 MAX_DESCRIPTION_CHARS = 2_000
 MAX_TEXT_CHARS = 20_000
 MAX_STYLE_CHARS = 40
-#: Seeds feed numpy's generator, which takes 0 .. 2**32 - 1.
-MAX_SEED = 2**32 - 1
 _STYLE = re.compile(r"^[A-Za-z0-9][A-Za-z0-9 _\-]*$")
 
 

@@ -24,6 +24,14 @@ def default_cache_dir(environ: Mapping[str, str]) -> Path:
     return Path(base) / "scenewright"
 
 
+#: Styles every backend understands; free text is accepted and mapped by each backend. The
+#: document model (:mod:`scenewright.scene`) checks against them; they live here, with the other
+#: plain values, so a command's help can list them without loading the document model.
+STYLES = ("realistic", "cartoon", "low-poly", "cyberpunk", "steampunk", "anime")
+#: Seeds feed numpy's generator, which takes 0 .. 2**32 - 1.
+MAX_SEED = 2**32 - 1
+
+
 @dataclass
 class Settings:
     #: Backend specs, ``name[:argument]``: ``offline``, ``openai:o3``, ``hunyuan3d:http://a:8081,...``.

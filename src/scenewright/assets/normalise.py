@@ -12,37 +12,18 @@ from __future__ import annotations
 
 import io
 import logging
-import struct
 
 import numpy as np
 import trimesh
 
 from scenewright.errors import BackendError, MissingExtra
-from scenewright.gltf import keep_materials, mesh_materials
+from scenewright.gltf import check_glb, keep_materials, mesh_materials  # check_glb: also the backends'
 from scenewright.scene import Vec3
 
 log = logging.getLogger(__name__)
 
 #: A footprint side never written smaller than this (a flat picture still needs a positive size).
 MIN_SIDE = 0.001
-
-
-def check_glb(data: bytes) -> str | None:
-    """Why ``data`` is not a complete binary glTF 2.0 file, or ``None`` when it is one.
-
-    Servers answer 200 with an HTML error page or a truncated body often enough that the
-    header is worth checking before anything is stored.
-    """
-    if len(data) < 12:
-        return f"{len(data)} bytes, too short for a GLB"
-    magic, version, length = struct.unpack("<4sII", data[:12])
-    if magic != b"glTF":
-        return f"data starts with {data[:4]!r}, not the glTF magic"
-    if version != 2:
-        return f"glTF container version {version}, expected 2"
-    if length != len(data):
-        return f"header declares {length} bytes but {len(data)} arrived (truncated?)"
-    return None
 
 
 def parse_glb(data: bytes) -> trimesh.Scene:

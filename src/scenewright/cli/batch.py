@@ -26,7 +26,7 @@ from scenewright.cli.options import (
     build_settings,
 )
 from scenewright.errors import InputError
-from scenewright.scene import STYLES
+from scenewright.settings import STYLES
 
 EXIT_SOME_FAILED = 1
 EXIT_INTERRUPTED = 130

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 from rich.console import Console
@@ -31,7 +31,10 @@ from scenewright.cli.options import (
 from scenewright.errors import InfeasibleLayout, InputError
 from scenewright.examples import example_text
 from scenewright.folder import SceneFolder
-from scenewright.scene import STYLES, Scene
+from scenewright.settings import STYLES
+
+if TYPE_CHECKING:
+    from scenewright.scene import Scene
 
 #: The bundled text ``--example`` generates (``make demo``).
 

@@ -14,8 +14,8 @@ from typing import Annotated
 import typer
 
 from scenewright.errors import InputError
-from scenewright.scene import MAX_SEED
-from scenewright.settings import DEFAULT_CONFIG, Settings, apply, default_cache_dir, load_config
+
+from scenewright.settings import DEFAULT_CONFIG, MAX_SEED, Settings, apply, default_cache_dir, load_config
 
 VlmOption = Annotated[str | None, typer.Option("--vlm", help="Vision-language backend: offline | openai:MODEL.")]
 ImagesOption = Annotated[str | None, typer.Option("--images", help="Image backend: offline | openai:MODEL.")]

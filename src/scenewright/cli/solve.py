@@ -5,22 +5,22 @@ from __future__ import annotations
 import json
 import logging
 from pathlib import Path
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
-from pydantic import ValidationError
 from rich.console import Console
 
 from scenewright.cli.app import app
 from scenewright.cli.options import check_seed
 from scenewright.errors import InfeasibleLayout, InputError
 from scenewright.files import write_atomic
-from scenewright.scene import SceneObject, describe_validation_error
+
+if TYPE_CHECKING:
+    from scenewright.scene import SceneObject
 
 log = logging.getLogger(__name__)
 #: Metres a footprint may span (20 km: any scene, never an overflow).
 MAX_BOUNDS = 20_000.0
-_FIELDS = set(SceneObject.model_fields)
 
 
 def _read_json(path: Path) -> Any:
@@ -36,6 +36,11 @@ def _read_json(path: Path) -> Any:
 
 def load_objects(path: Path) -> tuple[list[dict], list[SceneObject]]:
     """The paper's object-properties file: ``{"items": [...]}``; raw items and objects."""
+    from pydantic import ValidationError  # the document model is loaded by the command, not by --help
+
+    from scenewright.scene import SceneObject, describe_validation_error
+
+    fields = set(SceneObject.model_fields)
     data = _read_json(path)
     if not isinstance(data, dict) or not isinstance(data.get("items"), list):
         raise InputError(f'{path}: expected an object with an "items" list, as {{"items": [{{"id": ...}}]}}')
@@ -43,13 +48,13 @@ def load_objects(path: Path) -> tuple[list[dict], list[SceneObject]]:
     for k, item in enumerate(data["items"]):
         if not isinstance(item, dict):
             raise InputError(f"{path}: items[{k}] must be an object, got {item!r}")
-        extra = sorted(set(item) - _FIELDS)
+        extra = sorted(set(item) - fields)
         if extra:
             log.warning("%s: items[%d]: ignoring unknown fields %s", path, k, ", ".join(extra))
         if "size" not in item:
             raise InputError(f"{path}: items[{k}].size: missing; every item needs id, name and size")
         try:
-            objects.append(SceneObject.model_validate({f: v for f, v in item.items() if f in _FIELDS}))
+            objects.append(SceneObject.model_validate({f: v for f, v in item.items() if f in fields}))
         except ValidationError as exc:
             raise InputError(f"{path}: items[{k}]: {describe_validation_error(exc)}") from None
         raw.append(item)

@@ -21,11 +21,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
-import trimesh
 from pydantic import ValidationError
 
-from scenewright.assets import asset_mesh, generate_assets
-from scenewright.assets.load import AssetMeshes
+from scenewright.assets.load import AssetMesh, AssetMeshes, asset_mesh
 from scenewright.core.protocols import Backends
 from scenewright.cache import RequestCache
 from scenewright.editing.history import commit
@@ -216,7 +214,7 @@ def _carry(scene: Scene, ids: list[str], before: SceneObject, after: SceneObject
         obj.rotation = Vec3(x=obj.rotation.x, y=obj.rotation.y, z=(obj.yaw + turn + 180.0) % 360.0 - 180.0)
 
 
-def _meshes(edit: _Edit, folder: SceneFolder, staged: dict[str, trimesh.Trimesh]) -> dict[str, trimesh.Trimesh]:
+def _meshes(edit: _Edit, folder: SceneFolder, staged: dict[str, AssetMesh]) -> dict[str, AssetMesh]:
     """The stored meshes of every object, with the ones built by this edit in their place."""
     return {**edit.assets.of(edit.scene, folder, skip=set(staged)), **staged}
 
@@ -225,7 +223,7 @@ def _place(
     edit: _Edit,
     ids: list[str],
     constraints: list[Constraint],
-    meshes: dict[str, trimesh.Trimesh],
+    meshes: dict[str, AssetMesh],
     settings: Settings,
     *,
     leave_out: list[str] = (),
@@ -276,7 +274,7 @@ def _anchor(scene: Scene, obj: SceneObject, constraints: list[Constraint]) -> No
         obj.position = Vec3(x=p.x, y=p.y, z=obj.position.z)
 
 
-def _collisions(scene: Scene, ids: list[str], meshes: dict[str, trimesh.Trimesh]) -> list[tuple[str, str]]:
+def _collisions(scene: Scene, ids: list[str], meshes: dict[str, AssetMesh]) -> list[tuple[str, str]]:
     moved = set(ids)
     return [p for p in colliding_pairs(scene.objects, meshes, scene.constraints) if moved & set(p)]
 
@@ -293,11 +291,13 @@ def _prune(edit: _Edit, moved: list[str]) -> None:
     scene.constraints = kept
 
 
-def _stage_asset(edit: _Edit, obj: SceneObject, folder: SceneFolder, backends: Backends, settings: Settings) -> trimesh.Trimesh:
+def _stage_asset(edit: _Edit, obj: SceneObject, folder: SceneFolder, backends: Backends, settings: Settings) -> AssetMesh:
     """Build ``obj``'s asset in a scratch folder and stage it under a content-addressed name.
 
     Sets ``obj.asset``, ``obj.image`` and the size the mesh came out at; returns the mesh.
     """
+    from scenewright.assets.stage import generate_assets  # a move or delete needs no new mesh
+
     scene = edit.scene
     reference = folder.reference()
     with tempfile.TemporaryDirectory(prefix="scenewright-edit-") as tmp:
@@ -429,7 +429,7 @@ def _moved(edit: _Edit, focus: SceneObject, carried: list[str]) -> None:
     _prune(edit, [focus.id, *carried])
 
 
-def _shift(edit: _Edit, focus: SceneObject, before: SceneObject, carried: list[str], meshes: dict[str, trimesh.Trimesh]) -> None:
+def _shift(edit: _Edit, focus: SceneObject, before: SceneObject, carried: list[str], meshes: dict[str, AssetMesh]) -> None:
     """Shift the focus by the plan's offset, exactly: the instruction gave the step, so a step
     that collides or leaves the scene's bounds is refused, not bent into another place. Its
     constraints that no longer hold are dropped."""

@@ -1,36 +1,45 @@
-"""Assemble ``scene.glb``: every object as its own named node, the ground as another.
+"""Assemble ``scene.glb``: every object as its own named node, the ground or the room as another.
 
 Each object's node is named by its id and carries the pose, so Blender, Godot and Unreal
-show one selectable, movable object per id; the asset's meshes hang under it unchanged.
+show one selectable, movable object per id; the asset's nodes hang under it unchanged.
 Assets are stored in glTF convention, so the pose (solved in the scene frame) is conjugated
 into glTF frame: ``SCENE_TO_GLTF @ object_matrix(obj) @ GLTF_TO_SCENE``.
+
+The file is put together at the glTF level (:mod:`scenewright.export.splice`): each asset's
+meshes, exact materials and encoded textures are copied from its GLB, not decoded and encoded
+again, so a move costs new node matrices and a copy of bytes. A room's meshes and its floor
+texture take a mesh library and image encoding to make; they are made once and, while the
+room and style stay as they were, taken over from the ``scene.glb`` the document records
+(its ``room`` node carries the key of what it was made from).
 """
 
 from __future__ import annotations
 
+import hashlib
+import io
+import json
 import logging
 from pathlib import Path
 
 import numpy as np
-import trimesh
 
 from scenewright.assets.load import AssetMeshes
-from scenewright.version import __version__
 from scenewright.errors import InputError
-from scenewright.export.ground import ground_mesh
+from scenewright.export.ground import PLAIN_COLOUR, ground_plane
+from scenewright.export.splice import ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, Glb, GlbWriter
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
 from scenewright.geometry import GLTF_TO_SCENE, SCENE_TO_GLTF, object_matrix
-from scenewright.gltf import keep_materials
 from scenewright.scene import Scene, SceneObject
+from scenewright.version import __version__
 
 log = logging.getLogger(__name__)
 
 GROUND_NODE = "ground"
 ROOM_NODE = "room"
-#: glTF bufferView targets: vertex attributes and triangle indices.
-ARRAY_BUFFER = 34962
-ELEMENT_ARRAY_BUFFER = 34963
+#: Bumped when the room's meshes or materials are made differently, so a ``scene.glb`` written
+#: before does not hand its room on.
+ROOM_FORMAT = 1
 
 
 def node_matrix(obj: SceneObject) -> np.ndarray:
@@ -54,37 +63,55 @@ def _asset_paths(scene: Scene, folder: SceneFolder) -> dict[str, Path]:
     return paths
 
 
-def _add_object(
-    target: trimesh.Scene, obj: SceneObject, path: Path, materials: dict[str, dict], store: AssetMeshes
-) -> None:
-    """Hang the asset's meshes under the object's node; ``materials`` learns each new mesh's
-    material as the asset file wrote it (trimesh's copy is rounded and loses extensions)."""
+def _add_object(out: GlbWriter, obj: SceneObject, path: Path, store: AssetMeshes) -> None:
+    """Copy the asset's node trees under a new node for the object, named ``<id>/<node>``."""
     try:
-        parsed = store.parsed(path)
-        asset, source = parsed.asset, parsed.materials()
+        asset = Glb.parse(store.data(path))
+        node = out.node(obj.id, matrix=node_matrix(obj), extras={"name": obj.name, "category": obj.category})
+        out.splice(asset, asset.roots(), parent=node, prefix=obj.id)
     except ValueError as exc:
         raise InputError(f"cannot assemble object {obj.id!r}: its asset {path} is broken ({exc})") from None
-    target.graph.update(frame_to=obj.id, frame_from=target.graph.base_frame, matrix=node_matrix(obj))
-    for node in asset.graph.nodes_geometry:
-        transform, geometry_name = asset.graph[node]
-        name = f"{obj.id}/{node}"
-        if geometry_name in source:
-            materials[name] = source[geometry_name]
-        target.add_geometry(
-            asset.geometry[geometry_name],
-            geom_name=name,
-            node_name=name,
-            parent_node_name=obj.id,
-            transform=transform,
-        )
 
 
-def _add_room(target: trimesh.Scene, scene: Scene, materials: dict[str, dict]) -> None:
-    """The room's meshes under a ``room`` node, each a node of its own named as
-    :func:`~scenewright.procedural.room.room_meshes` names it; a door's or window's parts
-    hang under a node for the opening (``room/door_0``), so it selects as one thing."""
-    from scenewright.procedural.room import GLTF_MATERIAL, room_meshes  # only scenes with a room pay its import
+def room_key(scene: Scene) -> str:
+    """What the room's part of ``scene.glb`` is made from: the room, the style, the code."""
+    made_from = {"room": scene.room.model_dump(mode="json") if scene.room else None, "style": scene.style,
+                 "version": __version__, "format": ROOM_FORMAT}
+    return hashlib.sha256(json.dumps(made_from, sort_keys=True).encode()).hexdigest()[:32]
 
+
+def _recorded_room(scene: Scene, folder: SceneFolder, key: str) -> Glb | None:
+    """The ``scene.glb`` on disk when it is the one the document records and its room was made
+    from ``key``; ``None`` otherwise (first assembly, a changed room, a file that does not match)."""
+    if scene.glb_sha256 is None:
+        return None
+    try:
+        data = folder.glb.read_bytes()
+    except OSError:
+        return None
+    if hashlib.sha256(data).hexdigest() != scene.glb_sha256:
+        return None
+    try:
+        glb = Glb.parse(data)
+    except ValueError:
+        return None
+    index = glb.find(ROOM_NODE)
+    if index is None or glb.tree["nodes"][index].get("extras", {}).get("room") != key:
+        return None
+    return glb
+
+
+def room_glb(scene: Scene) -> bytes:
+    """The room's meshes as a GLB of their own: a ``room`` node, each mesh a node under it named
+    as :func:`~scenewright.procedural.room.room_meshes` names it; a door's or window's parts hang
+    under a node for the opening (``room/door_0``), so it selects as one thing."""
+    import trimesh  # only a new or changed room pays for the mesh library
+
+    from scenewright.gltf import keep_materials
+    from scenewright.procedural.room import GLTF_MATERIAL, room_meshes
+
+    target = trimesh.Scene()
+    materials: dict[str, dict] = {}
     target.graph.update(frame_to=ROOM_NODE, frame_from=target.graph.base_frame, matrix=np.eye(4))
     for name, mesh in room_meshes(scene.room, scene.style):
         parent = ROOM_NODE
@@ -97,67 +124,82 @@ def _add_room(target: trimesh.Scene, scene: Scene, materials: dict[str, dict]) -
         if GLTF_MATERIAL in mesh.metadata:
             materials[name] = mesh.metadata[GLTF_MATERIAL]
         target.add_geometry(gltf, geom_name=name, node_name=name, parent_node_name=parent)
+    return trimesh.exchange.gltf.export_glb(target, tree_postprocessor=keep_materials(materials))
 
 
-def _mark_buffer_targets(tree: dict) -> None:
-    """Say which buffer views hold vertices and which indices, as engines prefer to be told."""
-    for mesh in tree.get("meshes", []):
-        for primitive in mesh["primitives"]:
-            for accessor in primitive["attributes"].values():
-                tree["bufferViews"][tree["accessors"][accessor]["bufferView"]]["target"] = ARRAY_BUFFER
-            if "indices" in primitive:
-                view = tree["accessors"][primitive["indices"]]["bufferView"]
-                tree["bufferViews"][view]["target"] = ELEMENT_ARRAY_BUFFER
+def _add_room(out: GlbWriter, scene: Scene, folder: SceneFolder) -> None:
+    key = room_key(scene)
+    source = _recorded_room(scene, folder, key)
+    if source is None:
+        source = Glb.parse(room_glb(scene))
+    else:
+        log.info("room taken over from %s", folder.glb)
+    [index] = out.splice(source, [source.find(ROOM_NODE)])
+    out.tree["nodes"][index]["extras"] = {"room": key}
 
 
-def _describe_nodes(scene: Scene, materials: dict[str, dict]):
-    """A glTF tree hook that names the generator, tags each object node with its record and
-    gives each mesh its asset's exact material."""
-    extras = {obj.id: {"name": obj.name, "category": obj.category} for obj in scene.objects}
-    keep = keep_materials(materials)
+def _image(path: Path) -> tuple[bytes, str]:
+    """The texture file's bytes as glTF takes them (PNG or JPEG as they are; WebP, which core
+    glTF does not take, as PNG)."""
+    data = path.read_bytes()
+    if data.startswith(b"\x89PNG\r\n\x1a\n"):
+        return data, "image/png"
+    if data.startswith(b"\xff\xd8\xff"):
+        return data, "image/jpeg"
+    from PIL import Image
 
-    def postprocess(tree: dict) -> None:
-        keep(tree)
-        tree["asset"]["generator"] = f"scenewright {__version__}"
-        for node in tree.get("nodes", []):
-            if node.get("name") in extras:
-                node["extras"] = extras[node["name"]]
-        _mark_buffer_targets(tree)
-
-    return postprocess
+    buffer = io.BytesIO()
+    with Image.open(io.BytesIO(data)) as image:
+        image.save(buffer, "PNG")
+    return buffer.getvalue(), "image/png"
 
 
-def build_scene(
-    scene: Scene, folder: SceneFolder, meshes: AssetMeshes | None = None
-) -> tuple[trimesh.Scene, dict[str, dict]]:
-    """The scene graph of ``scene.glb`` (a node per object, named by id, and the ground, or the
-    room when the scene has one: its floor is the ground then) and the assets' exact glTF
-    materials by mesh name, which trimesh's own export would round. ``meshes`` holds the
-    assets the caller has parsed already."""
+def _add_ground(out: GlbWriter, scene: Scene, folder: SceneFolder) -> None:
+    """The ground plane of :func:`~scenewright.export.ground.ground_plane`, its texture file
+    embedded as it is (or a plain colour when the file is missing)."""
+    vertices, faces, uv = ground_plane(scene.objects, scene.bounds)
+    texture = folder.ground_texture(scene)
+    pbr: dict = {}
+    if texture is not None and texture.is_file():
+        data, mime = _image(texture)
+        image = out.image(data, mime)
+        pbr["baseColorTexture"] = {"index": out.add("textures", {"source": image})}
+    else:
+        if texture is not None:
+            log.warning("ground texture %s is missing; the ground gets a plain colour", texture)
+        pbr["baseColorFactor"] = list(PLAIN_COLOUR)
+    pbr.update(metallicFactor=0.0, roughnessFactor=0.9)
+    material = out.add("materials", {"name": GROUND_NODE, "pbrMetallicRoughness": pbr, "doubleSided": False})
+    flipped = np.column_stack([uv[:, 0], 1.0 - uv[:, 1]])  # glTF's V runs down the image
+    attributes = {
+        "POSITION": out.accessor(vertices, "VEC3", ARRAY_BUFFER),
+        "NORMAL": out.accessor(np.tile([0.0, 1.0, 0.0], (len(vertices), 1)), "VEC3", ARRAY_BUFFER),
+        "TEXCOORD_0": out.accessor(flipped, "VEC2", ARRAY_BUFFER),
+    }
+    indices = out.accessor(faces, "SCALAR", ELEMENT_ARRAY_BUFFER)
+    mesh = out.add("meshes", {"name": GROUND_NODE, "primitives": [
+        {"attributes": attributes, "indices": indices, "mode": 4, "material": material}]})
+    out.tree["nodes"][out.node(GROUND_NODE)]["mesh"] = mesh
+
+
+def scene_glb(scene: Scene, folder: SceneFolder, meshes: AssetMeshes | None = None) -> GlbWriter:
+    """The glTF of ``scene.glb`` (a node per object, named by id, and the ground, or the room
+    when the scene has one: its floor is the ground then), ready for more nodes or its bytes.
+    ``meshes`` holds the asset files the caller has read already."""
     paths = _asset_paths(scene, folder)
     store = meshes if meshes is not None else AssetMeshes()
-    glb = trimesh.Scene()
-    materials: dict[str, dict] = {}
+    out = GlbWriter(f"scenewright {__version__}")
     for obj in scene.objects:
-        _add_object(glb, obj, paths[obj.id], materials, store)
+        _add_object(out, obj, paths[obj.id], store)
     if scene.room is not None:
-        _add_room(glb, scene, materials)
-        return glb, materials
-    texture = folder.ground_texture(scene)
-    glb.add_geometry(
-        ground_mesh(scene.objects, scene.bounds, texture), geom_name=GROUND_NODE, node_name=GROUND_NODE
-    )
-    return glb, materials
-
-
-def glb_bytes(glb: trimesh.Scene, scene: Scene, materials: dict[str, dict]) -> bytes:
-    """The binary glTF of a graph from :func:`build_scene`, its object nodes tagged."""
-    return trimesh.exchange.gltf.export_glb(glb, tree_postprocessor=_describe_nodes(scene, materials))
+        _add_room(out, scene, folder)
+    else:
+        _add_ground(out, scene, folder)
+    return out
 
 
 def assemble(scene: Scene, folder: SceneFolder, meshes: AssetMeshes | None = None) -> Path:
     """Write ``scene.glb`` (metres, +Y up) from the objects' assets and poses; return its path."""
-    glb, materials = build_scene(scene, folder, meshes)
-    data = glb_bytes(glb, scene, materials)
+    data = scene_glb(scene, folder, meshes).to_bytes()
     log.info("assembled %d objects into %s", len(scene.objects), folder.glb)
     return write_atomic(folder.glb, data)

@@ -16,8 +16,9 @@ from pathlib import Path
 import trimesh
 
 from scenewright.export.colliders import Collider
-from scenewright.export.glb import build_scene, glb_bytes
+from scenewright.export.glb import scene_glb
 from scenewright.export.ground import ground_extent
+from scenewright.export.splice import Glb, GlbWriter
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
 from scenewright.geometry import SCENE_TO_GLTF
@@ -34,31 +35,43 @@ def collider_name(engine: str, owner: str, k: int) -> str:
     return f"UCX_{owner}_{k:02d}"
 
 
-def _add(glb: trimesh.Scene, mesh: trimesh.Trimesh, name: str, parent: str | None) -> None:
-    gltf = mesh.copy()
-    gltf.apply_transform(SCENE_TO_GLTF)  # pieces are in the scene-frame asset frame
-    gltf.visual = trimesh.visual.ColorVisuals(gltf)
-    kwargs = {"parent_node_name": parent} if parent else {}
-    glb.add_geometry(gltf, geom_name=name, node_name=name, **kwargs)
+def _add(out: GlbWriter, pieces: list[tuple[str, trimesh.Trimesh]], parent: str | None) -> None:
+    """The collision meshes (scene-frame asset frame) as nodes under the node ``parent``."""
+    if not pieces:
+        return
+    glb = trimesh.Scene()
+    for name, mesh in pieces:
+        gltf = mesh.copy()
+        gltf.apply_transform(SCENE_TO_GLTF)
+        gltf.visual = trimesh.visual.ColorVisuals(gltf)
+        glb.add_geometry(gltf, geom_name=name, node_name=name)
+    part = Glb.parse(trimesh.exchange.gltf.export_glb(glb))
+    out.splice(part, part.roots(), parent=None if parent is None else _node(out, parent))
+
+
+def _node(out: GlbWriter, name: str) -> int:
+    return next(i for i, node in enumerate(out.tree["nodes"]) if node.get("name") == name)
 
 
 def write_glb_physics(
     scene: Scene, folder: SceneFolder, pieces: dict[str, Collider], path: Path, engine: str = "godot"
 ) -> Path:
-    glb, materials = build_scene(scene, folder)
+    out = scene_glb(scene, folder)
     for obj in scene.objects:
-        for k, hull in enumerate(pieces[obj.id].hulls):
-            _add(glb, hull, collider_name(engine, obj.id, k), obj.id)
+        _add(out, [(collider_name(engine, obj.id, k), hull) for k, hull in enumerate(pieces[obj.id].hulls)], obj.id)
     if scene.room is not None:
         from scenewright.procedural.room import wall_boxes
 
+        walls: dict[str, list[tuple[str, trimesh.Trimesh]]] = {}
         for name, pose, extents in wall_boxes(scene.room):
             wall, box = name.rsplit("/", 1)
             owner = wall.replace("/", "_")
-            _add(glb, trimesh.creation.box(extents=extents, transform=pose),
-                 collider_name(engine, owner, int(box.removeprefix("box_"))), wall)
+            walls.setdefault(wall, []).append((collider_name(engine, owner, int(box.removeprefix("box_"))),
+                                               trimesh.creation.box(extents=extents, transform=pose)))
+        for wall, boxes in walls.items():
+            _add(out, boxes, wall)
     lo, hi = ground_extent(scene.objects, scene.bounds, scene.room)
     ground = trimesh.creation.box(extents=(*(hi - lo), GROUND_THICKNESS))
     ground.apply_translation((*((lo + hi) / 2.0), -GROUND_THICKNESS / 2.0))
-    _add(glb, ground, collider_name(engine, GROUND_COLLIDER, 0), None)
-    return write_atomic(path, glb_bytes(glb, scene, materials))
+    _add(out, [(collider_name(engine, GROUND_COLLIDER, 0), ground)], None)
+    return write_atomic(path, out.to_bytes())

@@ -13,8 +13,6 @@ from collections.abc import Sequence
 from pathlib import Path
 
 import numpy as np
-import trimesh
-from PIL import Image
 
 from scenewright.geometry import SCENE_TO_GLTF, world_box
 from scenewright.gltf import srgb_to_linear
@@ -55,17 +53,26 @@ def ground_extent(
     return lo - margin, hi + margin
 
 
-def ground_mesh(
-    objects: Sequence[SceneObject], bounds: tuple[float, float] | None, texture: Path | None
-) -> trimesh.Trimesh:
-    """A two-triangle plane at scene z = 0, in glTF frame (+Y up), with a PBR material."""
+def ground_plane(
+    objects: Sequence[SceneObject], bounds: tuple[float, float] | None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The ground's vertices in glTF frame (+Y up), its two triangles and its UVs in texture
+    copies (V up, as a mesh library holds them; glTF's V runs down)."""
     (x0, y0), (x1, y1) = ground_extent(objects, bounds)
     scene_xy = np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]])
     scene_pts = np.column_stack([scene_xy, np.zeros(4), np.ones(4)])
     vertices = (scene_pts @ SCENE_TO_GLTF.T)[:, :3]
     # Counter-clockwise seen from above (scene +Z), so the face normal points up (glTF +Y).
     faces = np.array([[0, 1, 2], [0, 2, 3]])
-    uv = scene_xy / TILE_METRES
+    return vertices, faces, scene_xy / TILE_METRES
+
+
+def ground_mesh(objects: Sequence[SceneObject], bounds: tuple[float, float] | None, texture: Path | None):
+    """The plane of :func:`ground_plane` as a trimesh mesh with a PBR material (the editor's)."""
+    import trimesh
+    from PIL import Image
+
+    vertices, faces, uv = ground_plane(objects, bounds)
     if texture is not None and texture.is_file():
         image = Image.open(io.BytesIO(texture.read_bytes()))
         image.load()

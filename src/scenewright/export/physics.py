@@ -238,7 +238,7 @@ def ensure_physics(
         raw = cache.get(CACHE_KIND, hull_key)
         if raw is None:
             try:
-                raw = collider(mesh if mesh is not None else asset_mesh(glb), use_coacd=use_coacd).to_bytes()
+                raw = collider(mesh if mesh is not None else asset_mesh(glb).to_trimesh(), use_coacd=use_coacd).to_bytes()
             except ValueError as exc:
                 raise InputError(f"object {obj.id!r}: no collision shape from its asset {obj.asset}: {exc}") from None
             cache.put(CACHE_KIND, hull_key, raw)

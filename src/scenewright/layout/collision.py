@@ -23,15 +23,17 @@ are treated as immutable once handed in.
 from __future__ import annotations
 
 import weakref
-from typing import Iterable, Mapping, Sequence
+from typing import TYPE_CHECKING, Iterable, Mapping, Sequence
 
 import fcl
 import numpy as np
-import trimesh
 
 from scenewright.geometry import rotation_matrix
 from scenewright.layout.relations import rotated_half, tilt_matrix
 from scenewright.scene import Constraint, SceneObject, Vec3
+
+if TYPE_CHECKING:  # any mesh with vertices, faces, bounds and triangles will do (an asset's AssetMesh)
+    import trimesh
 
 #: Overlap (m) below which two boxes are touching, not colliding: float round-off only, so a
 #: pose the solver accepts never intersects by any independent check.
