@@ -24,6 +24,7 @@ from scenewright.export.ground import ground_mesh
 from scenewright.geometry import GLTF_TO_SCENE, object_matrix
 from scenewright.scene import Scene, SceneObject
 from scenewright.studio.session import DragCheck, DragProbe, Session, inside
+from scenewright.studio.view import view_glb
 
 log = logging.getLogger(__name__)
 
@@ -35,6 +36,9 @@ HIGHLIGHT = (255, 170, 0)
 #: The dragged object's outline where it fits, and where it does not.
 FITS = (60, 200, 90)
 MISFITS = (230, 40, 40)
+#: The hemisphere light standing in for viser's environment map in the plain view: light
+#: from above, a warm bounce from below, so faces turned away from the sun are not black.
+SKY, BOUNCE = (235, 240, 255), (120, 105, 90)
 #: Outlines of the objects it collides with, and of the other objects of constraints it breaks.
 COLLIDING = (230, 40, 40)
 VIOLATED = (190, 70, 230)
@@ -88,6 +92,9 @@ class Studio:
         self._stop = threading.Event()
         #: GUI callbacks and the disk watcher redraw from their own threads.
         self._drawing = threading.RLock()
+        self._sky = self.server.scene.add_light_hemisphere("/lights/sky", sky_color=SKY, ground_color=BOUNCE,
+                                                           intensity=1.2)
+        self.light_view(detailed=False)
         gui = self.server.gui
         gui.configure_theme(control_width="large", show_logo=False)
         gui.main_panel.dock_right()
@@ -102,6 +109,10 @@ class Studio:
             undo = gui.add_button("Undo")
             redo = gui.add_button("Redo")
             download = gui.add_button("Download GLB")
+        with gui.add_folder("View", expand_by_default=False):
+            detailed = gui.add_checkbox("Environment light and shadows", initial_value=False,
+                                        hint="slow to draw without a graphics card")
+        detailed.on_update(lambda _: self.light_view(detailed=detailed.value))
         with gui.add_folder("History"):
             self.history = gui.add_markdown("")
         self._previews = gui.add_folder("Previews")
@@ -130,6 +141,19 @@ class Studio:
         self._stop.set()
         self._check_wanted.set()
         self.server.stop()
+
+    def light_view(self, *, detailed: bool) -> None:
+        """Plain light (the default) or viser's environment map and shadows.
+
+        Sent before the scene so the page compiles its shaders once. viser's own default, an
+        HDR environment map and a shadow-casting sun, keeps the canvas nearly transparent until
+        the map is prefiltered and then fades it in over five frames, and every shadow draws
+        the scene three more times; in software WebGL (no graphics card) that is seconds before
+        anything shows, so it is offered as a choice, not the start (figures in docs/studio.md).
+        """
+        self.server.scene.configure_environment_map("city" if detailed else None)
+        self.server.scene.configure_default_lights(True, cast_shadow=detailed)
+        self._sky.visible = not detailed
 
     def _aim_camera(self) -> None:
         """Start the view above the front of the scene, looking at its middle."""
@@ -186,7 +210,7 @@ class Studio:
                                                wxyz=_yaw_quaternion(obj.yaw), position=obj.position.tuple())
         else:
             wxyz, position = _pose(object_matrix(obj) @ GLTF_TO_SCENE)
-            handle = self.server.scene.add_glb(f"/objects/{obj.id}", data, wxyz=wxyz, position=position)
+            handle = self.server.scene.add_glb(f"/objects/{obj.id}", view_glb(data), wxyz=wxyz, position=position)
         handle.on_click(lambda _event, oid=obj.id: self.select(oid))
         return handle
 
