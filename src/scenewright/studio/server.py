@@ -70,7 +70,8 @@ def _yaw_of(wxyz) -> float:
 class Studio:
     """A viser server showing one :class:`Session`; ``select``/``submit``/… are what the GUI calls."""
 
-    def __init__(self, session: Session, *, host: str = "127.0.0.1", port: int = 8080) -> None:
+    def __init__(self, session: Session, *, host: str = "127.0.0.1", port: int = 8080,
+                 detailed_light: bool = False) -> None:
         viser = _viser()
         self.session = session
         self.server = viser.ViserServer(host=host, port=port, verbose=False)
@@ -94,7 +95,7 @@ class Studio:
         self._drawing = threading.RLock()
         self._sky = self.server.scene.add_light_hemisphere("/lights/sky", sky_color=SKY, ground_color=BOUNCE,
                                                            intensity=1.2)
-        self.light_view(detailed=False)
+        self.light_view(detailed=detailed_light)
         gui = self.server.gui
         gui.configure_theme(control_width="large", show_logo=False)
         gui.main_panel.dock_right()
@@ -110,7 +111,7 @@ class Studio:
             redo = gui.add_button("Redo")
             download = gui.add_button("Download GLB")
         with gui.add_folder("View", expand_by_default=False):
-            detailed = gui.add_checkbox("Environment light and shadows", initial_value=False,
+            detailed = gui.add_checkbox("Environment light and shadows", initial_value=detailed_light,
                                         hint="slow to draw without a graphics card")
         detailed.on_update(lambda _: self.light_view(detailed=detailed.value))
         with gui.add_folder("History"):
