@@ -365,3 +365,26 @@ def test_the_view_glb_drops_transmission_and_keeps_everything_else():
     assert view_glb(plain) is plain
     assert view_glb(b"not a glb at all") == b"not a glb at all"
 
+
+
+def test_the_view_mesh_carries_face_normals_and_keeps_its_texture_coordinates():
+    import io
+    import struct
+
+    import numpy as np
+    import trimesh
+
+    from scenewright.studio.view import view_mesh
+
+    box = trimesh.creation.box((2.0, 1.0, 0.5))
+    box.visual = trimesh.visual.TextureVisuals(uv=np.random.default_rng(0).random((len(box.vertices), 2)))
+    view = view_mesh(box)
+    assert len(view.vertices) == 3 * len(box.faces)
+    assert np.allclose(view.vertex_normals, np.repeat(box.face_normals, 3, axis=0))
+    assert np.allclose(view.visual.uv, box.visual.uv[box.faces.reshape(-1)])
+    assert len(box.vertices) == 8  # the original is left alone
+    data = io.BytesIO()
+    view.export(data, file_type="glb")
+    length = struct.unpack_from("<I", data.getvalue(), 12)[0]
+    attributes = json.loads(data.getvalue()[20 : 20 + length])["meshes"][0]["primitives"][0]["attributes"]
+    assert {"POSITION", "NORMAL", "TEXCOORD_0"} <= set(attributes)

@@ -24,7 +24,7 @@ from scenewright.export.ground import ground_mesh
 from scenewright.geometry import GLTF_TO_SCENE, object_matrix
 from scenewright.scene import Scene, SceneObject
 from scenewright.studio.session import DragCheck, DragProbe, Session, inside
-from scenewright.studio.view import view_glb
+from scenewright.studio.view import view_glb, view_mesh
 
 log = logging.getLogger(__name__)
 
@@ -194,7 +194,7 @@ class Studio:
 
             for name, mesh in room_meshes(scene.room, scene.style):
                 if name != "room/ceiling":
-                    self._nodes[f"__{name}"] = self.server.scene.add_mesh_trimesh(f"/{name}", mesh)
+                    self._nodes[f"__{name}"] = self.server.scene.add_mesh_trimesh(f"/{name}", view_mesh(mesh))
             return
         texture = None
         if scene.ground.texture:
@@ -202,7 +202,7 @@ class Studio:
             texture = path if path.is_file() else None
         ground = ground_mesh(scene.objects, scene.bounds, texture)
         ground.apply_transform(GLTF_TO_SCENE)
-        self._nodes["__ground"] = self.server.scene.add_mesh_trimesh("/ground", ground)
+        self._nodes["__ground"] = self.server.scene.add_mesh_trimesh("/ground", view_mesh(ground))
 
     def _add_object(self, obj: SceneObject):
         data = self.session.asset_bytes(obj)

@@ -1,4 +1,4 @@
-"""What the editor sends the browser for an asset: the GLB with what costs most to draw taken out.
+"""What the editor sends the browser: meshes with what costs most to draw taken out.
 
 The editor is for placing things, so it drops what only changes how light passes through a
 surface: ``KHR_materials_transmission`` (and ``KHR_materials_volume``, which needs it). three.js
@@ -7,12 +7,19 @@ frame and compiles every other material again for that pass; in software WebGL t
 the first frame of the demo scene (docs/studio.md). The material keeps its colour and its alpha
 blend, so glass still looks like glass; the asset on disk, the render and the download are
 unchanged.
+
+Each material variant is a shader program the page compiles, 0.2–0.5 s each in software WebGL,
+so the room and the ground are sent with their faces' normals (:func:`view_mesh`): without
+normals three.js shades them flat, a variant of its own, while with them they share the
+objects' program and still look flat.
 """
 
 from __future__ import annotations
 
 import json
 import struct
+
+import trimesh
 
 #: Extensions whose effect only a second render pass can draw.
 DROPPED = ("KHR_materials_transmission", "KHR_materials_volume")
@@ -51,3 +58,12 @@ def view_glb(data: bytes) -> bytes:
     text += b" " * (-len(text) % 4)  # chunks stay 4-byte aligned, padded with spaces (glTF 2.0 §4.4.3)
     rest = data[20 + length :]
     return struct.pack("<III", _MAGIC, 2, 12 + 8 + len(text) + len(rest)) + struct.pack("<II", len(text), _JSON) + text + rest
+
+
+def view_mesh(mesh: trimesh.Trimesh) -> trimesh.Trimesh:
+    """A copy of ``mesh`` whose vertices each belong to one face and carry its normal, which
+    the GLB export then includes (texture coordinates stay with their vertices)."""
+    view = mesh.copy()
+    view.unmerge_vertices()
+    view.vertex_normals = view.face_normals[:, None, :].repeat(3, axis=1).reshape(-1, 3)
+    return view
