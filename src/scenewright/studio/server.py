@@ -157,14 +157,22 @@ class Studio:
         self._sky.visible = not detailed
 
     def _aim_camera(self) -> None:
-        """Start the view above the front of the scene, looking at its middle."""
+        """Start the view above the front of the scene, looking at its middle; in a room, high
+        enough that the line of sight to the middle clears the front wall."""
         scene = self.session.scene
         points = np.array([o.position.tuple() for o in scene.objects] or [(0.0, 0.0, 0.0)])
+        if scene.room is not None:
+            points = np.vstack([points, [(x, y, 0.0) for x, y in scene.room.floor]])
         centre = (points.min(axis=0) + points.max(axis=0)) / 2
         reach = max(float(np.ptp(points[:, :2], axis=0).max()), 2.0)
+        back, height = 1.2 * reach, 0.9 * reach
+        if scene.room is not None:  # closer in, as a room's walls frame what matters
+            back = 0.6 * reach
+            inside_depth = max(float(centre[1] - points[:, 1].min()), 0.5)  # middle to the front wall
+            height = max(height, 1.15 * scene.room.height * (back + inside_depth) / inside_depth)
         camera = self.server.initial_camera
         camera.look_at = (float(centre[0]), float(centre[1]), 0.0)
-        camera.position = (float(centre[0]), float(centre[1]) - 1.2 * reach, 0.9 * reach)
+        camera.position = (float(centre[0]), float(centre[1]) - back, height)
 
     # --- drawing ---------------------------------------------------------------------------
 
