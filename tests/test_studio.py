@@ -329,3 +329,62 @@ def test_the_benchmark_scene_tiles_a_scene_with_its_meshes_and_relations(folder,
     assert len(tiled.constraints) >= 2 * len(scene.constraints)
     assert all(check(c.relation, tiled.get(c.source), tiled.get(c.target)) for c in tiled.constraints)
     assert large.glb.is_file() and all(inside(large, o.asset).is_file() for o in tiled.objects if o.asset)
+
+
+def test_the_view_glb_drops_transmission_and_keeps_everything_else():
+    import struct
+
+    from scenewright.studio.view import view_glb
+
+    def glb(document: dict, binary: bytes = b"\x01\x02\x03\x04") -> bytes:
+        text = json.dumps(document).encode()
+        text += b" " * (-len(text) % 4)
+        body = struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(binary), 0x004E4942) + binary
+        return struct.pack("<III", 0x46546C67, 2, 12 + len(body)) + body
+
+    def document_of(data: bytes) -> dict:
+        magic, version, total = struct.unpack_from("<III", data, 0)
+        assert (magic, version, total) == (0x46546C67, 2, len(data))
+        length = struct.unpack_from("<I", data, 12)[0]
+        assert length % 4 == 0
+        return json.loads(data[20 : 20 + length])
+
+    glass = {"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_materials_transmission", "KHR_materials_volume"],
+             "materials": [{"name": "glass", "alphaMode": "BLEND", "doubleSided": True,
+                            "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.9, 0.9, 0.35]},
+                            "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0},
+                                           "KHR_materials_volume": {}}},
+                           {"name": "wood"}]}
+    viewed = view_glb(glb(glass))
+    found = document_of(viewed)
+    assert "extensionsUsed" not in found and "extensions" not in found["materials"][0]
+    assert found["materials"][0]["alphaMode"] == "BLEND"
+    assert found["materials"][0]["pbrMetallicRoughness"] == glass["materials"][0]["pbrMetallicRoughness"]
+    assert viewed.endswith(b"\x01\x02\x03\x04")  # the binary chunk is untouched
+    plain = glb({"asset": {"version": "2.0"}, "materials": [{"name": "wood"}]})
+    assert view_glb(plain) is plain
+    assert view_glb(b"not a glb at all") == b"not a glb at all"
+
+
+
+def test_the_view_mesh_carries_face_normals_and_keeps_its_texture_coordinates():
+    import io
+    import struct
+
+    import numpy as np
+    import trimesh
+
+    from scenewright.studio.view import view_mesh
+
+    box = trimesh.creation.box((2.0, 1.0, 0.5))
+    box.visual = trimesh.visual.TextureVisuals(uv=np.random.default_rng(0).random((len(box.vertices), 2)))
+    view = view_mesh(box)
+    assert len(view.vertices) == 3 * len(box.faces)
+    assert np.allclose(view.vertex_normals, np.repeat(box.face_normals, 3, axis=0))
+    assert np.allclose(view.visual.uv, box.visual.uv[box.faces.reshape(-1)])
+    assert len(box.vertices) == 8  # the original is left alone
+    data = io.BytesIO()
+    view.export(data, file_type="glb")
+    length = struct.unpack_from("<I", data.getvalue(), 12)[0]
+    attributes = json.loads(data.getvalue()[20 : 20 + length])["meshes"][0]["primitives"][0]["attributes"]
+    assert {"POSITION", "NORMAL", "TEXCOORD_0"} <= set(attributes)

@@ -3,9 +3,13 @@
 Debian's chromium is driven by Playwright with software WebGL (SwiftShader), as the studio's
 browser test does. Two figures answer the editor's targets:
 
-- **load**: from opening the page until it shows the whole demo scene. ``page_ready_s`` is
-  until the page has every object (the "N objects loaded" status comes after them in viser's
-  ordered stream); ``page_drawn_s`` until it has drawn two more frames after that.
+- **load**: from opening the URL until the whole demo scene is drawn and answers clicks
+  (``drawn_s``: the first frame with every object, fully opaque, after which the page compiles
+  no shader and uploads no texture), with the steps on the way: the HTML received, viser's
+  client code decoded and started, the WebSocket open (server clock), the first message, the
+  scene's messages handled (the "N objects loaded" status comes after the objects in viser's
+  ordered stream), the first frame. A first visit (fresh browser context) and the median of
+  reloads; the same for the environment light, and a bare viser page for scale.
   ``server_start_s`` is what ``scenewright studio`` does before it prints the URL.
 - **drag**: on a 100-object scene, a second WebSocket in the page (in a Web Worker, as viser's
   own is) sends the gizmo's messages (drag start, updates at ``rate`` a second, end) exactly
@@ -103,11 +107,106 @@ async ([sender, job]) => {
 }
 """
 
-#: Seconds until the page has drawn two more frames (the first whole one after the data).
-_FRAMES = """
-() => new Promise((ok) => { const t0 = performance.now();
-  requestAnimationFrame(() => requestAnimationFrame(() => ok((performance.now() - t0) / 1000))); })
+#: Installed in every page before viser's client runs: marks the client's start-up steps and
+#: records, for each frame the page draws, its draw calls, the canvas's opacity (viser keeps it
+#: at 5 % while an environment map loads) and whether it compiled a shader program or uploaded
+#: a texture (what makes a frame slow in software WebGL). Times are ms since navigation start.
+_WATCH = r"""
+(() => {
+  const T = (window.__studioLoad = {marks: {}, frames: []});
+  const mark = (k) => { if (!(k in T.marks)) T.marks[k] = performance.now(); };
+  const append = Element.prototype.appendChild;
+  Element.prototype.appendChild = function (child) {
+    if (child && child.tagName === "SCRIPT" && child.type === "module") mark("client_code_decoded");
+    return append.call(this, child);
+  };
+  const NativeWorker = window.Worker;
+  window.Worker = function (...args) {
+    mark("client_started");
+    const worker = new NativeWorker(...args);
+    worker.addEventListener("message", () => mark("first_message"));
+    return worker;
+  };
+  window.Worker.prototype = NativeWorker.prototype;
+  let tick = 0, tickTime = -1, frame = null;
+  const raf = window.requestAnimationFrame;
+  window.requestAnimationFrame = (cb) => raf((ts) => { if (ts !== tickTime) { tickTime = ts; tick++; } return cb(ts); });
+  const current = (gl) => {
+    if (!frame || frame.tick !== tick) {
+      frame = {tick, start: performance.now(), end: 0, draws: 0, work: false,
+               opacity: gl.canvas.style ? gl.canvas.style.opacity : ""};
+      T.frames.push(frame);
+    }
+    return frame;
+  };
+  const P = WebGL2RenderingContext.prototype;
+  for (const f of ["drawElements", "drawArrays", "drawElementsInstanced", "drawArraysInstanced"]) {
+    const native = P[f];
+    P[f] = function (...a) { const r = native.apply(this, a); const fr = current(this); fr.draws++; fr.end = performance.now(); return r; };
+  }
+  for (const f of ["linkProgram", "texImage2D", "texStorage2D", "compressedTexImage2D"]) {
+    const native = P[f];
+    P[f] = function (...a) { const r = native.apply(this, a); current(this).work = true; return r; };
+  }
+  new MutationObserver((records) => {
+    for (const m of records) {
+      const node = m.type === "characterData" ? m.target : null;
+      const texts = node ? [node.textContent] : [...m.addedNodes].map((n) => n.textContent);
+      if (texts.some((t) => t && t.includes("objects loaded"))) mark("scene_messages_handled");
+    }
+  }).observe(document, {childList: true, subtree: true, characterData: true});
+})();
 """
+
+#: Whether the page has settled: a second since the scene's messages were handled, and the
+#: last two frames compiled nothing, uploaded nothing and drew the canvas fully opaque.
+_SETTLED = """
+() => { const T = window.__studioLoad, f = T.frames, h = T.marks.scene_messages_handled;
+  if (h === undefined || performance.now() - h < 1000 || f.length < 2) return false;
+  return f.slice(-2).every((x) => !x.work && (x.opacity === "" || x.opacity === "1")); }
+"""
+
+_REPORT = """
+() => ({origin: performance.timeOrigin, marks: window.__studioLoad.marks, frames: window.__studioLoad.frames,
+        nav: performance.getEntriesByType("navigation")[0].toJSON()})
+"""
+
+
+def load_stages(report: dict[str, Any], connected: float | None) -> dict[str, Any]:
+    """Seconds from opening the URL to each step of the load (see :func:`measure_load`).
+
+    ``drawn_s`` is the end of the first frame drawn fully opaque with as many draw calls as the
+    settled page draws, after which no frame compiled a shader or uploaded a texture: from then
+    on the whole scene is on the screen, lit as it stays, and answers clicks.
+    """
+    s = 1000.0
+    frames = [f for f in report["frames"] if f["draws"]]
+    settled = frames[-1]["draws"] if frames else 0
+    last_work = max((i for i, f in enumerate(frames) if f["work"]), default=-1)
+    drawn = next((f for i, f in enumerate(frames) if i >= last_work and f["draws"] >= settled
+                  and f["opacity"] in ("", "1")), None)
+    marks = report["marks"]
+    stages = {"html_received_s": report["nav"]["responseEnd"] / s,
+              **{f"{k}_s": marks[k] / s for k in ("client_code_decoded", "client_started", "first_message") if k in marks},
+              "websocket_open_s": connected - report["origin"] / s if connected is not None else None,
+              "scene_messages_handled_s": marks["scene_messages_handled"] / s,
+              "first_frame_s": frames[0]["start"] / s if frames else None,
+              "drawn_s": drawn["end"] / s if drawn else None,
+              "frames_until_drawn": frames.index(drawn) + 1 if drawn else None,
+              "slowest_frame_s": max((f["end"] - f["start"]) / s for f in frames) if frames else None}
+    return {k: (round(v, 3) if isinstance(v, float) else v) for k, v in stages.items()}
+
+
+def load_page(context, url: str, connected: list[float]) -> dict[str, Any]:
+    """Open ``url`` in a new page of ``context`` and time its load (``connected`` receives the
+    server's clock when the page's WebSocket opens)."""
+    page = context.new_page()
+    try:
+        page.goto(url)
+        page.wait_for_function(_SETTLED, polling=100, timeout=180_000)
+        return load_stages(page.evaluate(_REPORT), connected[0] if connected else None)
+    finally:
+        page.close()
 
 
 def _playwright():
@@ -181,24 +280,42 @@ def _session(folder: SceneFolder, settings: Settings):
     return Session(folder, backends=backends_from_settings(settings), settings=settings)
 
 
-def measure_load(browser, folder: SceneFolder, settings: Settings) -> dict[str, Any]:
+def measure_load(browser, folder: SceneFolder, settings: Settings, *, runs: int = 3,
+                 detailed_light: bool = False) -> dict[str, Any]:
+    """The load as a user feels it: from opening the URL until the whole scene is drawn and
+    answers clicks (``drawn_s``, see :func:`load_stages`), with the steps in between.
+
+    The first load is in a fresh browser context (nothing cached: a user's first visit); the
+    next ``runs`` open the page again in the same context (a reload; the browser keeps what it
+    caches). Each load gets a new editor, as ``scenewright studio`` is started anew.
+    """
     from scenewright.studio.server import Studio
 
-    start = time.perf_counter()
-    studio = Studio(_session(folder, settings), port=free_port())
-    server_start = time.perf_counter() - start
+    loads, server_starts = [], []
+    context = browser.new_context(viewport={"width": 1280, "height": 800})
+    context.add_init_script(_WATCH)
     try:
-        page = browser.new_page(viewport={"width": 1280, "height": 800})
-        start = time.perf_counter()
-        page.goto(studio.url)
-        page.get_by_text(f"{len(studio.session.scene.objects)} objects loaded").wait_for(timeout=120_000)
-        ready = time.perf_counter() - start
-        drawn = ready + page.evaluate(_FRAMES)
-        page.close()
+        for _ in range(runs + 1):
+            start = time.perf_counter()
+            studio = Studio(_session(folder, settings), port=free_port(), detailed_light=detailed_light)
+            server_starts.append(time.perf_counter() - start)
+            connected: list[float] = []
+            studio.server.on_client_connect(lambda _client: connected.append(time.time()))
+            try:
+                loads.append(load_page(context, studio.url, connected))
+            finally:
+                studio.stop()
     finally:
-        studio.stop()
-    return {"objects": len(studio.session.scene.objects), "server_start_s": round(server_start, 3),
-            "page_ready_s": round(ready, 3), "page_drawn_s": round(drawn, 3)}
+        context.close()
+    warm = loads[1:]
+    drawn = [x["drawn_s"] for x in warm if x["drawn_s"] is not None]
+    return {"objects": len(studio.session.scene.objects),
+            "server_start_s": round(statistics.median(server_starts), 3),
+            "drawn_s_median": round(statistics.median(drawn), 3) if drawn else None,
+            "drawn_s_runs": [x["drawn_s"] for x in warm],
+            "first_visit": loads[0],
+            "reload_median": {k: round(statistics.median(v), 3) for k in warm[0]
+                              if (v := [x[k] for x in warm if isinstance(x.get(k), (int, float))])}}
 
 
 def drag_from_page(page, studio, *, count: int, rate: float, step: float = STEP) -> dict[str, Any]:
@@ -274,26 +391,32 @@ def measure_drag(browser, folder: SceneFolder, settings: Settings, *, seconds: f
     }
 
 
-def measure_empty(browser) -> dict[str, Any]:
-    """The same load of a bare viser page (one line of text): what the browser costs by itself."""
+def measure_empty(browser, *, runs: int = 3) -> dict[str, Any]:
+    """The same loads of a bare viser page (one line of text): what the browser costs by itself."""
     import viser
 
-    server = viser.ViserServer(host="127.0.0.1", port=free_port(), verbose=False)
-    server.gui.add_markdown("0 objects loaded")
+    loads = []
+    context = browser.new_context(viewport={"width": 1280, "height": 800})
+    context.add_init_script(_WATCH)
     try:
-        page = browser.new_page(viewport={"width": 1280, "height": 800})
-        start = time.perf_counter()
-        page.goto(f"http://127.0.0.1:{server.get_port()}")
-        page.get_by_text("0 objects loaded").wait_for(timeout=120_000)
-        ready = time.perf_counter() - start
-        drawn = ready + page.evaluate(_FRAMES)
-        page.close()
+        for _ in range(runs + 1):
+            server = viser.ViserServer(host="127.0.0.1", port=free_port(), verbose=False)
+            server.gui.add_markdown("0 objects loaded")
+            connected: list[float] = []
+            server.on_client_connect(lambda _client: connected.append(time.time()))
+            try:
+                loads.append(load_page(context, f"http://127.0.0.1:{server.get_port()}", connected))
+            finally:
+                server.stop()
     finally:
-        server.stop()
-    return {"page_ready_s": round(ready, 3), "page_drawn_s": round(drawn, 3)}
+        context.close()
+    warm = loads[1:]
+    return {"first_visit": loads[0],
+            "reload_median": {k: round(statistics.median(v), 3) for k in warm[0]
+                              if (v := [x[k] for x in warm if isinstance(x.get(k), (int, float))])}}
 
 
-def run(*, objects: int = 100, seconds: float = 5.0, rate: float = 60.0) -> dict[str, Any]:
+def run(*, objects: int = 100, seconds: float = 5.0, rate: float = 60.0, runs: int = 3) -> dict[str, Any]:
     """Both measurements; the scenes are made offline in a temporary folder."""
     import os
 
@@ -306,9 +429,10 @@ def run(*, objects: int = 100, seconds: float = 5.0, rate: float = 60.0) -> dict
         with sync_playwright() as p:
             browser = p.chromium.launch(executable_path=str(CHROMIUM), args=list(CHROMIUM_ARGS))
             try:
-                empty = measure_empty(browser)
-                load = measure_load(browser, demo, settings)
-                large_load = measure_load(browser, large, settings)
+                empty = measure_empty(browser, runs=runs)
+                load = measure_load(browser, demo, settings, runs=runs)
+                detailed = measure_load(browser, demo, settings, runs=runs, detailed_light=True)
+                large_load = measure_load(browser, large, settings, runs=runs)
                 drag = measure_drag(browser, large, settings, seconds=seconds, rate=rate)
             finally:
                 browser.close()
@@ -316,6 +440,7 @@ def run(*, objects: int = 100, seconds: float = 5.0, rate: float = 60.0) -> dict
         "browser": f"chromium headless, SwiftShader ({CHROMIUM})",
         "load_empty_viser_page": empty,
         "load_demo": load,
+        "load_demo_environment_light": detailed,
         "load_large": large_load,
         "drag": drag,
         "targets": {"drag_updates_per_second": 20, "demo_load_s": 3.0},

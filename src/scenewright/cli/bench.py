@@ -195,6 +195,7 @@ def bench_studio(
     objects: Annotated[int, typer.Option("--objects", min=1, help="Objects of the large scene the drag is timed on.")] = 100,
     seconds: Annotated[float, typer.Option("--seconds", min=0.5, help="How long the drag lasts.")] = 5.0,
     rate: Annotated[float, typer.Option("--rate", min=1.0, help="Gizmo updates the page sends per second.")] = 60.0,
+    runs: Annotated[int, typer.Option("--runs", min=1, help="Reloads timed after each first visit.")] = 3,
     as_json: JsonOption = True,
 ) -> None:
     """Initial load of the demo scene and drag updates per second on a large scene, in headless
@@ -205,5 +206,5 @@ def bench_studio(
     from scenewright.bench.studio import run
 
     with contextlib.redirect_stdout(sys.stderr):  # viser's banners: stdout carries the figures only
-        result = run(objects=objects, seconds=seconds, rate=rate)
+        result = run(objects=objects, seconds=seconds, rate=rate, runs=runs)
     emit(result, as_json)

@@ -24,6 +24,7 @@ from scenewright.export.ground import ground_mesh
 from scenewright.geometry import GLTF_TO_SCENE, object_matrix
 from scenewright.scene import Scene, SceneObject
 from scenewright.studio.session import DragCheck, DragProbe, Session, inside
+from scenewright.studio.view import view_glb, view_mesh
 
 log = logging.getLogger(__name__)
 
@@ -35,6 +36,9 @@ HIGHLIGHT = (255, 170, 0)
 #: The dragged object's outline where it fits, and where it does not.
 FITS = (60, 200, 90)
 MISFITS = (230, 40, 40)
+#: The hemisphere light standing in for viser's environment map in the plain view: light
+#: from above, a warm bounce from below, so faces turned away from the sun are not black.
+SKY, BOUNCE = (235, 240, 255), (120, 105, 90)
 #: Outlines of the objects it collides with, and of the other objects of constraints it breaks.
 COLLIDING = (230, 40, 40)
 VIOLATED = (190, 70, 230)
@@ -66,7 +70,8 @@ def _yaw_of(wxyz) -> float:
 class Studio:
     """A viser server showing one :class:`Session`; ``select``/``submit``/… are what the GUI calls."""
 
-    def __init__(self, session: Session, *, host: str = "127.0.0.1", port: int = 8080) -> None:
+    def __init__(self, session: Session, *, host: str = "127.0.0.1", port: int = 8080,
+                 detailed_light: bool = False) -> None:
         viser = _viser()
         self.session = session
         self.server = viser.ViserServer(host=host, port=port, verbose=False)
@@ -88,6 +93,9 @@ class Studio:
         self._stop = threading.Event()
         #: GUI callbacks and the disk watcher redraw from their own threads.
         self._drawing = threading.RLock()
+        self._sky = self.server.scene.add_light_hemisphere("/lights/sky", sky_color=SKY, ground_color=BOUNCE,
+                                                           intensity=1.2)
+        self.light_view(detailed=detailed_light)
         gui = self.server.gui
         gui.configure_theme(control_width="large", show_logo=False)
         gui.main_panel.dock_right()
@@ -102,6 +110,10 @@ class Studio:
             undo = gui.add_button("Undo")
             redo = gui.add_button("Redo")
             download = gui.add_button("Download GLB")
+        with gui.add_folder("View", expand_by_default=False):
+            detailed = gui.add_checkbox("Environment light and shadows", initial_value=detailed_light,
+                                        hint="slow to draw without a graphics card")
+        detailed.on_update(lambda _: self.light_view(detailed=detailed.value))
         with gui.add_folder("History"):
             self.history = gui.add_markdown("")
         self._previews = gui.add_folder("Previews")
@@ -131,15 +143,36 @@ class Studio:
         self._check_wanted.set()
         self.server.stop()
 
+    def light_view(self, *, detailed: bool) -> None:
+        """Plain light (the default) or viser's environment map and shadows.
+
+        Sent before the scene so the page compiles its shaders once. viser's own default, an
+        HDR environment map and a shadow-casting sun, keeps the canvas nearly transparent until
+        the map is prefiltered and then fades it in over five frames, and every shadow draws
+        the scene three more times; in software WebGL (no graphics card) that is seconds before
+        anything shows, so it is offered as a choice, not the start (figures in docs/studio.md).
+        """
+        self.server.scene.configure_environment_map("city" if detailed else None)
+        self.server.scene.configure_default_lights(True, cast_shadow=detailed)
+        self._sky.visible = not detailed
+
     def _aim_camera(self) -> None:
-        """Start the view above the front of the scene, looking at its middle."""
+        """Start the view above the front of the scene, looking at its middle; in a room, high
+        enough that the line of sight to the middle clears the front wall."""
         scene = self.session.scene
         points = np.array([o.position.tuple() for o in scene.objects] or [(0.0, 0.0, 0.0)])
+        if scene.room is not None:
+            points = np.vstack([points, [(x, y, 0.0) for x, y in scene.room.floor]])
         centre = (points.min(axis=0) + points.max(axis=0)) / 2
         reach = max(float(np.ptp(points[:, :2], axis=0).max()), 2.0)
+        back, height = 1.2 * reach, 0.9 * reach
+        if scene.room is not None:  # closer in, as a room's walls frame what matters
+            back = 0.6 * reach
+            inside_depth = max(float(centre[1] - points[:, 1].min()), 0.5)  # middle to the front wall
+            height = max(height, 1.15 * scene.room.height * (back + inside_depth) / inside_depth)
         camera = self.server.initial_camera
         camera.look_at = (float(centre[0]), float(centre[1]), 0.0)
-        camera.position = (float(centre[0]), float(centre[1]) - 1.2 * reach, 0.9 * reach)
+        camera.position = (float(centre[0]), float(centre[1]) - back, height)
 
     # --- drawing ---------------------------------------------------------------------------
 
@@ -169,7 +202,7 @@ class Studio:
 
             for name, mesh in room_meshes(scene.room, scene.style):
                 if name != "room/ceiling":
-                    self._nodes[f"__{name}"] = self.server.scene.add_mesh_trimesh(f"/{name}", mesh)
+                    self._nodes[f"__{name}"] = self.server.scene.add_mesh_trimesh(f"/{name}", view_mesh(mesh))
             return
         texture = None
         if scene.ground.texture:
@@ -177,7 +210,7 @@ class Studio:
             texture = path if path.is_file() else None
         ground = ground_mesh(scene.objects, scene.bounds, texture)
         ground.apply_transform(GLTF_TO_SCENE)
-        self._nodes["__ground"] = self.server.scene.add_mesh_trimesh("/ground", ground)
+        self._nodes["__ground"] = self.server.scene.add_mesh_trimesh("/ground", view_mesh(ground))
 
     def _add_object(self, obj: SceneObject):
         data = self.session.asset_bytes(obj)
@@ -186,7 +219,7 @@ class Studio:
                                                wxyz=_yaw_quaternion(obj.yaw), position=obj.position.tuple())
         else:
             wxyz, position = _pose(object_matrix(obj) @ GLTF_TO_SCENE)
-            handle = self.server.scene.add_glb(f"/objects/{obj.id}", data, wxyz=wxyz, position=position)
+            handle = self.server.scene.add_glb(f"/objects/{obj.id}", view_glb(data), wxyz=wxyz, position=position)
         handle.on_click(lambda _event, oid=obj.id: self.select(oid))
         return handle
 
