@@ -22,7 +22,6 @@ from dataclasses import dataclass
 from typing import Sequence
 
 import numpy as np
-from scipy import ndimage
 
 from scenewright.layout.relations import EPS, Boxes, _rectangle, _separation, _to_rectangle
 from scenewright.scene import Opening, Room, SceneObject
@@ -200,6 +199,8 @@ class RoomShape:
             for window, cells in self._cells_near(boxes[standing], AGENT_RADIUS, strict=True):
                 blocked[window] |= cells
             free = free & ~blocked
+        from scipy import ndimage  # a third of a second to import; only a room's walking check needs it
+
         labels, _ = ndimage.label(free)
         reached: set[int] = set()
         stuck: list[int] = []
