@@ -358,3 +358,15 @@ def test_a_singular_part_transform_is_refused():
 
     with pytest.raises(ValueError, match="singular"):
         inverse3(np.diag([1.0, 0.0, 1.0]))
+
+
+def test_cat_tree_top_platform_is_the_top_of_its_box():
+    """The solver rests ``on`` things at the host box's top; a cat tree's widest platform is
+    there, so cats put on it lie on carpet, not on a post tip."""
+    model = Model((0.6, 0.6, 1.6), resolve_style("realistic"), np.random.default_rng(0), name="cat tree")
+    SHAPES["pillar"](model)
+    verts = np.concatenate([p.vertices for parts in model.parts.values() for p in parts])
+    top = verts[verts[:, 2] > verts[:, 2].max() - 1e-6]
+    span = top[:, :2].max(axis=0) - top[:, :2].min(axis=0)
+    assert (span >= 0.5).all()
+    assert "marble" not in model.parts  # not drawn as a column
