@@ -12,7 +12,7 @@ from scenewright.core.catalogue import (
 )
 
 #: Categories allowed past 5 m because the real thing is that big (catalogue module docstring).
-LARGE = {"barn", "building", "bus", "chapel", "crane", "flagpole", "food_truck", "greenhouse", "house", "lighthouse",
+LARGE = {"barn", "building", "bus", "crane", "flagpole", "food_truck", "greenhouse", "house", "lighthouse",
          "palm_tree", "pier", "pine_tree", "rocket", "shipping_container", "spaceship", "tower", "tree", "tree_house", "truck",
          "warehouse", "windmill", "structure"}  # fmt: skip
 

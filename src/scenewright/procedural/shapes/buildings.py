@@ -217,30 +217,9 @@ def _crane(m: Model) -> None:
     m.torus("flower_alt", (hook_x, 0, 0.45 * H - 0.2 * mast), 0.2 * mast, 0.06 * mast, axis="y", arc=1.5 * np.pi, fraction=0.5)
 
 
-def _dish(m: Model) -> None:
-    """A satellite dish: a bowl tilted up toward the sky on a short mast with its feed arm."""
-    m.main = "metal"
-    W, H = min(m.sx, m.sy) / 2, m.sz
-    mast = 0.35 * H
-    m.post("dark_metal", 0, 0.1 * W, 0, mast, 0.06 * W)
-    tilt = np.radians(40.0)
-    # The bowl about its own axis, then turned back by the tilt so it faces up and forward.
-    bowl = P.lathe([(0.02 * W, 0.0), (0.55 * W, 0.08 * H), (0.95 * W, 0.25 * H), (0.9 * W, 0.27 * H), (0.0, 0.06 * H)],
-                   m.segments())
-    turn = np.array([[1, 0, 0], [0, np.cos(tilt), -np.sin(tilt)], [0, np.sin(tilt), np.cos(tilt)]])
-    centre = np.array([0.0, 0.0, mast])
-    m.add("metal", P.transform(bowl, P.affine(turn, centre)))
-    feed = centre + turn @ np.array([0.0, 0.0, 0.6 * H])
-    m.cylinder("dark_metal", centre + turn @ np.array([0.0, 0.0, 0.05 * H]), feed, 0.02 * W, fraction=0.3)
-    m.ball("dark_plastic", feed, (0.06 * W,) * 3, fraction=0.4)
-
-
 def tower(m: Model) -> None:
     if m.named("crane"):
         _crane(m)
-        return
-    if m.named("satellite dish", "dish"):
-        _dish(m)
         return
     if m.named("pylon", "transmission tower", "radio tower", "antenna") or m.has("steel", "lattice", "service tower", "launch tower"):
         _lattice_tower(m)
