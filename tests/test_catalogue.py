@@ -13,7 +13,7 @@ from scenewright.core.catalogue import (
 
 #: Categories allowed past 5 m because the real thing is that big (catalogue module docstring).
 LARGE = {"barn", "building", "bus", "crane", "flagpole", "food_truck", "greenhouse", "house", "lighthouse",
-         "palm_tree", "pier", "pine_tree", "rocket", "shipping_container", "spaceship", "tower", "tree", "truck",
+         "palm_tree", "pier", "pine_tree", "rocket", "shipping_container", "spaceship", "tower", "tree", "tree_house", "truck",
          "warehouse", "windmill", "structure"}  # fmt: skip
 
 
@@ -139,3 +139,24 @@ def test_validation_names_the_bad_field():
         _validate({**entry, "shape": "generic", "size": [1, 0, 1]}, set())
     with pytest.raises(ValueError, match="appears twice"):
         _validate({**entry, "shape": "generic"}, {"thing"})
+
+
+@pytest.mark.parametrize(
+    ("phrase", "category", "tallest"),
+    [
+        ("tall cat tree", "cat_tree", 2.0),  # furniture, not a 6 m tree
+        ("scratching post", "scratching_post", 1.0),
+        ("Christmas tree", "christmas_tree", 2.5),  # a room's tree, not a 7 m pine
+        ("bird bath", "bird_bath", 1.0),  # not a 3 m fountain
+        ("dog bed", "pet_bed", 0.4),  # not a person's bed
+        ("coat tree", "coat_rack", 2.0),
+        ("tree house", "tree_house", 8.0),
+        ("oak tree", "tree", 8.0),  # the head's own category where no compound claims the phrase
+    ],
+)
+def test_compound_nouns_name_their_own_thing(phrase, category, tallest):
+    """A modifier that turns the head noun into another thing ("cat tree", "bird bath") is a
+    phrase of that thing's category, so the longest match, not the head, picks shape and size."""
+    found = lookup(phrase.split(" ", 1)[1] if phrase.startswith("tall ") else phrase)
+    assert found is not None and found.name == category
+    assert found.size[2] <= tallest

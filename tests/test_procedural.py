@@ -17,6 +17,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from scenewright.backends import MeshRequest, create_backend
+from scenewright.core.catalogue import load_catalogue
 from scenewright.errors import InputError
 from scenewright.geometry import GLTF_TO_SCENE
 from scenewright.procedural import SHAPES
@@ -358,3 +359,40 @@ def test_a_singular_part_transform_is_refused():
 
     with pytest.raises(ValueError, match="singular"):
         inverse3(np.diag([1.0, 0.0, 1.0]))
+
+
+def test_cat_tree_top_platform_is_the_top_of_its_box():
+    """The solver rests ``on`` things at the host box's top; a cat tree's widest platform is
+    there, so cats put on it lie on carpet, not on a post tip."""
+    model = Model((0.6, 0.6, 1.6), resolve_style("realistic"), np.random.default_rng(0), name="cat tree")
+    SHAPES["pillar"](model)
+    verts = np.concatenate([p.vertices for parts in model.parts.values() for p in parts])
+    top = verts[verts[:, 2] > verts[:, 2].max() - 1e-6]
+    span = top[:, :2].max(axis=0) - top[:, :2].min(axis=0)
+    assert (span >= 0.5).all()
+    assert "marble" not in model.parts  # not drawn as a column
+
+
+@pytest.mark.parametrize("style", ["realistic", "cartoon", "low-poly"])
+@pytest.mark.parametrize("category", sorted(c.name for c in load_catalogue().values() if c.rest_height))
+def test_rest_height_is_where_the_mesh_has_its_seat(category, style):
+    """A category's ``rest_height`` (the seat under a backrest, the mattress under a headboard)
+    is an upward surface of its mesh near the footprint's middle, at that share of its height,
+    fitted to the box as :meth:`Model.finish` fits it."""
+    entry = load_catalogue()[category]
+    model = Model(entry.size, resolve_style(style), np.random.default_rng(0), name=entry.label)
+    SHAPES[entry.shape](model)
+    parts = [p for ps in model.parts.values() for p in ps]
+    verts = np.concatenate([p.vertices for p in parts])
+    lo, hi = verts.min(axis=0), verts.max(axis=0)
+    size = np.array(entry.size)
+    heights = []
+    for part in parts:
+        tri = (part.vertices[part.faces] - lo) * size / (hi - lo)
+        normal = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+        up = normal[:, 2] > 0.95 * np.linalg.norm(normal, axis=1)
+        centre = tri.mean(axis=1)
+        middle = (np.abs(centre[:, 0] - size[0] / 2) < 0.3 * size[0]) & (np.abs(centre[:, 1] - size[1] / 2) < 0.3 * size[1])
+        heights += list(centre[up & middle, 2] / size[2])
+    assert heights, "no upward surface near the middle"
+    assert min(heights, key=lambda h: abs(h - entry.rest_height)) == pytest.approx(entry.rest_height, abs=0.04)

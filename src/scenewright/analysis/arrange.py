@@ -19,9 +19,9 @@ from __future__ import annotations
 
 import random
 from collections import defaultdict
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
-from scenewright.analysis.composition import edges, formations, groups, outdoor, packing, relational, roles
+from scenewright.analysis.composition import edges, formations, groups, outdoor, packing, posture, relational, roles
 from scenewright.analysis.composition.lines import unline
 from scenewright.analysis.composition.units import Layout, Unit
 from scenewright.analysis.parser import ParsedRelation, ParsedScene
@@ -45,6 +45,7 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
     """The designed first layout of ``parsed``."""
     if not parsed.objects:
         return Composition([], list(parsed.relations))
+    parsed = replace(parsed, objects=posture.pose(parsed))  # people sit and lie as the text says
     layout = Layout(parsed.objects, share_supports(parsed) + formations.stack_relations(parsed.objects))
     _place_related(layout)
     for rule in GROUP_RULES:

@@ -58,6 +58,9 @@ class Category:
     #: A shape family of the open vocabulary (``animal``, ``machine``...): reached through
     #: ``data/vocabulary.json`` from the words it covers, never by its own name as a phrase.
     family: bool = False
+    #: Share of its height where a thing put on it rests, when that is below its top: a seat
+    #: under a backrest, a mattress under a headboard. The procedural mesh has its surface there.
+    rest_height: float | None = None
 
     @property
     def indoor(self) -> bool:
@@ -112,6 +115,9 @@ def _validate(entry: dict, seen: set[str]) -> Category:
     size = tuple(float(v) for v in entry["size"])
     if len(size) != 3 or min(size) <= 0:
         raise ValueError(f"catalogue: {name!r} needs three positive sizes, got {entry['size']}")
+    rest_height = entry.get("rest_height")
+    if rest_height is not None and not 0 < float(rest_height) <= 1:
+        raise ValueError(f"catalogue: {name!r} rest_height {rest_height!r} is a share of its height, in (0, 1]")
     return Category(
         name=name,
         synonyms=tuple(entry.get("synonyms", ())),
@@ -121,6 +127,7 @@ def _validate(entry: dict, seen: set[str]) -> Category:
         tags=tuple(entry.get("tags", ())),
         support=bool(entry.get("support", False)),
         family=bool(entry.get("family", False)),
+        rest_height=None if rest_height is None else float(rest_height),
     )
 
 

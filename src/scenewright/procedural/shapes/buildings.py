@@ -221,7 +221,7 @@ def tower(m: Model) -> None:
     if m.named("crane"):
         _crane(m)
         return
-    if m.named("pylon", "transmission tower", "radio tower", "antenna"):
+    if m.named("pylon", "transmission tower", "radio tower", "antenna") or m.has("steel", "lattice", "service tower", "launch tower"):
         _lattice_tower(m)
         return
     if m.named("lighthouse"):

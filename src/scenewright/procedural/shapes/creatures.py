@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from scenewright.analysis.composition.posture import SIT_HEIGHT, posture_in
 from scenewright.procedural import parts as P
 from scenewright.procedural.builder import Model
 
@@ -329,6 +330,74 @@ def bird(m: Model) -> None:
 
 
 def figure(m: Model) -> None:
+    """A person facing −Y, standing, or sitting or lying when the description says so (the
+    composition writes the pose the text gives, ``analysis/composition/posture.py``)."""
+    posture = None if m.named("scarecrow", "mannequin", "dress form", "dummy") else posture_in(m.text)
+    if posture is None:
+        _standing(m)
+        return
+    # Draw the standing person at the size the pose was folded from, then fold it.
+    w, d, h = m.sx, m.sy, m.sz
+    standing = (w, _DEPTH * h / SIT_HEIGHT, h / SIT_HEIGHT) if posture == "sitting" else (w, h, d)
+    inner = Model(standing, m.style, m.rng, main=m.main, name=m.name)
+    inner.text = m.text
+    _standing(inner)
+    fold = _sit if posture == "sitting" else _lie
+    for role, parts in inner.parts.items():
+        for part in parts:
+            m.add(role, fold(part, inner))
+    m.main = inner.main
+
+
+#: A standing person's depth as a share of their height (the catalogue's figure: 0.3 of 1.75 m).
+_DEPTH = 0.17
+
+
+def _sit(part: P.Part, m: Model) -> P.Part:
+    """Fold a standing part into sitting with knees up: above the hips it moves down and back
+    (the seat at the bottom of the box), below them the thigh turns forward and up to the knee
+    and the shin down to the floor in front, each leg section turning with its bone."""
+    H = m.sz
+    hip, knee = 0.48 * H, 0.25 * H
+    thigh, shin = hip - knee, knee
+    rise = np.radians(30.0)
+    knee_at = np.array([0.0, -thigh * np.cos(rise), thigh * np.sin(rise)])
+    drop = np.arcsin(min(1.0, knee_at[2] / shin))
+    v, n = part.vertices.copy(), part.normals.copy()
+    legs = v[:, 2] < hip
+    t = hip - v[legs, 2]  # how far down the leg from the hip
+    upper = t <= thigh
+
+    def turn(angle: float, points: np.ndarray) -> np.ndarray:
+        c, s_ = np.cos(angle), np.sin(angle)
+        return np.stack([points[:, 0], c * points[:, 1] - s_ * points[:, 2], s_ * points[:, 1] + c * points[:, 2]], axis=1)
+
+    # Standing, the leg runs along −z; the thigh turns it to point forward and up (−y, +z),
+    # the shin forward and down. A rotation about x by φ takes −z to (0, sin φ, −cos φ).
+    thigh_turn = -(np.pi / 2 + rise)
+    shin_turn = -(np.pi / 2 - drop)
+    local = np.stack([v[legs, 0], v[legs, 1], -t], axis=1)
+    out = np.empty_like(local)
+    out[upper] = turn(thigh_turn, local[upper])
+    below = local[~upper].copy()
+    below[:, 2] += thigh
+    out[~upper] = turn(shin_turn, below) + knee_at
+    v[legs] = out
+    n[legs] = np.where(upper[:, None], turn(thigh_turn, n[legs]), turn(shin_turn, n[legs]))
+    v[~legs, 2] -= hip
+    back = 0.35 * m.sy
+    v[~legs, 1] += back
+    v[legs, 1] += back
+    return P.Part(v, part.faces, n)
+
+
+def _lie(part: P.Part, m: Model) -> P.Part:
+    """Lay a standing part on its back, head toward +Y (the back of the box), face up."""
+    turn = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
+    return P.transform(part, P.affine(turn, (0.0, 0.0, 0.0)))
+
+
+def _standing(m: Model) -> None:
     """A standing person facing −Y, and the figures the name makes of one: a musician with
     an instrument, a knight in armour, a wizard, a chef, an astronaut, a scarecrow, a
     mannequin on its stand, an alien."""

@@ -83,12 +83,14 @@ def armchair(m: Model) -> None:
     arm = m.thick(0.15, 0.22 * m.sx)
     seat_z = 0.45 * m.sz
     back_t = 0.22 * m.sy
-    m.box("fabric", (-m.sx / 2, -m.sy / 2, leg_h), (m.sx / 2, m.sy / 2, seat_z - 0.1 * m.sz))
-    m.box("cushion", (-m.sx / 2 + arm, -m.sy / 2, seat_z - 0.1 * m.sz), (m.sx / 2 - arm, m.sy / 2 - back_t, seat_z))
+    # Base, back and arms meet face to face, never overlapping: coplanar faces of two parts
+    # z-fight into a black band in Cycles (tests/test_procedural_coplanar.py).
+    m.box("fabric", (-m.sx / 2 + arm, -m.sy / 2, leg_h), (m.sx / 2 - arm, m.sy / 2 - back_t, seat_z - 0.1 * m.sz))
+    m.box("cushion", (-m.sx / 2 + arm, -m.sy / 2 + 0.01 * m.sy, seat_z - 0.1 * m.sz), (m.sx / 2 - arm, m.sy / 2 - back_t, seat_z))
     m.box("fabric", (-m.sx / 2, m.sy / 2 - back_t, leg_h), (m.sx / 2, m.sy / 2, m.sz))
     for s in (-1, 1):
         x0, x1 = sorted((s * m.sx / 2, s * (m.sx / 2 - arm)))
-        m.box("fabric", (x0, -m.sy / 2, leg_h), (x1, m.sy / 2 - back_t * 0.5, 0.68 * m.sz))
+        m.box("fabric", (x0, -m.sy / 2, leg_h), (x1, m.sy / 2 - back_t, 0.68 * m.sz))
     m.legs("dark_wood", 0.04, 0, leg_h + 0.01, m.thick(0.025))
 
 
@@ -133,8 +135,9 @@ def sofa(m: Model) -> None:
     arm = m.thick(0.18, 0.15 * m.sx)
     back_t = 0.22 * m.sy
     base_top = 0.4 * m.sz
-    m.box("fabric", (-m.sx / 2, -m.sy / 2, leg_h), (m.sx / 2, m.sy / 2, base_top))
-    m.box("fabric", (-m.sx / 2, m.sy / 2 - back_t, base_top), (m.sx / 2, m.sy / 2, m.sz))
+    # Base, back and arms meet face to face (see armchair).
+    m.box("fabric", (-m.sx / 2, -m.sy / 2, leg_h), (m.sx / 2, m.sy / 2 - back_t, base_top))
+    m.box("fabric", (-m.sx / 2, m.sy / 2 - back_t, leg_h), (m.sx / 2, m.sy / 2, m.sz))
     for s in (-1, 1):
         x0, x1 = sorted((s * m.sx / 2, s * (m.sx / 2 - arm)))
         m.box("fabric", (x0, -m.sy / 2, base_top), (x1, m.sy / 2 - back_t, 0.65 * m.sz))

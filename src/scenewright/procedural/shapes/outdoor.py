@@ -15,6 +15,15 @@ def tree(m: Model) -> None:
     trunk_top = m.vary(0.35, 0.45) * m.sz
     r = m.thick(0.06 * min(m.sx, m.sy), 0.12 * min(m.sx, m.sy))
     m.lathe("bark", [(1.6 * r, 0), (r, 0.1 * m.sz), (0.8 * r, trunk_top + 0.15 * m.sz)])
+    if m.named("tree house", "treehouse"):
+        # A hut on a deck where the trunk forks, half in the canopy, its door toward the viewer.
+        floor, hut = trunk_top - 0.05 * m.sz, 0.22 * m.sz
+        m.box("wood", (-0.3 * m.sx, -0.42 * m.sy, floor), (0.3 * m.sx, 0.2 * m.sy, floor + 0.03 * m.sz))
+        m.box("wall", (-0.22 * m.sx, -0.35 * m.sy, floor + 0.03 * m.sz), (0.22 * m.sx, 0.12 * m.sy, floor + hut))
+        m.box("dark_wood", (-0.05 * m.sx, -0.36 * m.sy, floor + 0.03 * m.sz), (0.05 * m.sx, -0.35 * m.sy, floor + 0.7 * hut))
+        m.extrude("roof", [(-0.4 * m.sy, floor + hut), (0.17 * m.sy, floor + hut), (-0.115 * m.sy, floor + 1.5 * hut)],
+                  "x", -0.26 * m.sx, 0.26 * m.sx)
+        m.beam("wood", (0.15 * m.sx, -0.45 * m.sy, 0), (0.15 * m.sx, -0.42 * m.sy, floor), 0.04 * m.sx, 0.02 * m.sy)
     canopy_h = m.sz - trunk_top
     blobs = int(m.rng.integers(4, 7))
     m.ball("leaf", (0, 0, trunk_top + 0.55 * canopy_h), (0.33 * m.sx, 0.33 * m.sy, 0.4 * canopy_h))
@@ -352,7 +361,33 @@ def well(m: Model) -> None:
     m.extrude("roof", [(-m.sy / 2, roof_z), (m.sy / 2, roof_z), (0, m.sz)], "x", -m.sx / 2, m.sx / 2)
 
 
+def _cat_tree(m: Model) -> None:
+    """A cat tree: carpeted platforms on sisal posts over a base board, the widest platform on
+    top at the full height, so a cat put ``on`` it lies on the carpet (a scratching post is one
+    post with a small top)."""
+    m.main = "fabric"
+    base = 0.05 * m.sz
+    m.box("fabric", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, base))
+    post_r = m.thick(0.06, 0.18 * min(m.sx, m.sy))
+    deck = max(0.03, 0.04 * m.sz)
+    if m.named("scratching post", "scratch post", "scratcher"):
+        m.post("paper", 0, 0, base, m.sz - deck, post_r)
+        m.box("fabric", (-0.3 * m.sx, -0.3 * m.sy, m.sz - deck), (0.3 * m.sx, 0.3 * m.sy, m.sz))
+        return
+    # Two posts up to a middle deck to one side, one post from there up to the top platform.
+    mid = 0.5 * m.sz
+    for x, y in ((-0.25 * m.sx, -0.2 * m.sy), (0.25 * m.sx, 0.2 * m.sy)):
+        m.post("paper", x, y, base, mid - deck, post_r)
+    m.box("fabric", (-m.sx / 2, -m.sy / 2 + 0.1 * m.sy, mid - deck), (0.1 * m.sx, m.sy / 2, mid))
+    m.post("paper", -0.2 * m.sx, 0.1 * m.sy, mid, m.sz - deck, post_r)
+    m.box("fabric", (-m.sx / 2, -m.sy / 2, m.sz - deck), (m.sx / 2, m.sy / 2, m.sz))
+    m.ball("cushion", (0.3 * m.sx, -0.3 * m.sy, 0.3 * m.sz), (0.07 * m.sx,) * 3, fraction=0.4)
+
+
 def pillar(m: Model) -> None:
+    if m.named("cat tree", "cat tower", "cat condo", "cat climber", "scratching post", "scratch post", "scratcher"):
+        _cat_tree(m)
+        return
     m.main = "marble"
     base = 0.08 * m.sz
     m.box("marble", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, base))

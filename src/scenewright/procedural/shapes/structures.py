@@ -162,9 +162,26 @@ def _truss(m: Model) -> None:
     m.box("accent", (-0.3 * W, -legs - bar, 0.86 * H), (0.3 * W, -legs, H - 2 * bar), rounded=0.0)
 
 
+def _pad(m: Model) -> None:
+    """A launch or landing pad: a concrete slab with a painted ring and cross, flat on top so
+    what stands on it stands on the slab."""
+    m.main = "concrete"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    paint = min(0.02, 0.1 * H)
+    m.box("concrete", (-W, -D, 0), (W, D, H - paint), rounded=0.0)
+    r, band = 0.38 * min(m.sx, m.sy), 0.03 * min(m.sx, m.sy)
+    for k in range(24):  # the ring, as short straight strips
+        a0, a1 = 2 * np.pi * k / 24, 2 * np.pi * (k + 1) / 24
+        m.beam("yellow_paint", (r * np.cos(a0), r * np.sin(a0), H - paint / 2), (r * np.cos(a1), r * np.sin(a1), H - paint / 2),
+               band, paint)
+    m.box("yellow_paint", (-0.6 * r, -band / 2, H - paint), (0.6 * r, band / 2, H), rounded=0.0)
+    m.box("yellow_paint", (-band / 2, -0.6 * r, H - paint), (-band / 2 + band, -band / 2, H), rounded=0.0)
+    m.box("yellow_paint", (-band / 2, band / 2, H - paint), (-band / 2 + band, 0.6 * r, H), rounded=0.0)
+
+
 def structure(m: Model) -> None:
     """A large open structure; its name picks it: ferris wheel, windmill, crane, carousel,
-    stage, scaffold; else a truss gantry."""
+    stage, scaffold, launch pad; else a truss gantry."""
     variants = (
         (("ferris wheel", "big wheel", "observation wheel", "wheel"), _ferris_wheel),
         (("windmill", "wind turbine"), _windmill),
@@ -172,6 +189,7 @@ def structure(m: Model) -> None:
         (("carousel", "merry-go-round", "merry go round", "roundabout"), _carousel),
         (("stage", "bandstand", "podium", "platform"), _stage),
         (("scaffold", "scaffolding"), _scaffold),
+        (("launch pad", "landing pad", "helipad", "pad"), _pad),
     )
     for words, build in variants:
         if m.named(*words):

@@ -1,0 +1,103 @@
+"""How a person rests: standing, sitting or lying, from what the text says of them.
+
+The reader records no posture, so it is read here from two things the parse does hold: the
+host a person is put ``on`` (a seat or a cushion → sitting; a bed, a rug, a blanket → lying)
+and the verbs of the sentence that names them ("sits", "dozes", "is asleep", "lies"). A
+posed person keeps the standing size the catalogue gave their kind, folded to the pose's box
+(:func:`posed_size`), and the pose word joins their description, where the figure generator
+reads it (``procedural/shapes/creatures.py``), so the mesh and its box agree.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+
+from scenewright.analysis.composition import roles
+from scenewright.analysis.parser import ParsedObject, ParsedScene
+
+POSTURES = ("sitting", "lying")
+#: Words of a description that pose its figure; the first of each list is the one written.
+POSTURE_WORDS: dict[str, tuple[str, ...]] = {
+    "sitting": ("sitting", "seated", "sits", "sit", "sat", "dozes", "dozing", "perched", "squatting", "kneeling"),
+    "lying": ("lying", "lies", "lie", "lay", "reclining", "sprawled", "sleeping on", "asleep on"),
+}
+#: Hosts a person lies on, and hosts a person sits on besides the seats of :mod:`.roles`.
+LYING_HOSTS = frozenset({"bed", "crib", "rug", "picnic_blanket", "hammock", "pet_bed", "bath_mat", "mat", "sun_lounger"})
+SITTING_HOSTS = roles.SEATS | frozenset({"cushion", "swing", "log", "rock", "stairs", "bean_bag", "pouf", "kotatsu"})
+#: Shares of the standing height a sitting person's box takes in depth and height (knees up,
+#: seat at the box's bottom), as the figure generator folds a standing person.
+SIT_DEPTH = 0.52
+SIT_HEIGHT = 0.56
+_FIGURES = frozenset({"figure"})
+
+
+def _mentions(text: str, words) -> bool:
+    return any(re.search(rf"\b{re.escape(w)}\b", text) for w in words)
+
+
+def posture_in(text: str) -> str | None:
+    """The posture a description's words give, or ``None`` (standing)."""
+    text = text.lower()
+    for posture in POSTURES:
+        if _mentions(text, POSTURE_WORDS[posture]):
+            return posture
+    return None
+
+
+def _sentence_of(parsed: ParsedScene, obj: ParsedObject) -> str:
+    """The first sentence of the text that names the object (its name's last word)."""
+    head = obj.name.lower().split()[-1] if obj.name.strip() else obj.category
+    for sentence in re.split(r"(?<=[.!?;])\s+", parsed.text):
+        if re.search(rf"\b{re.escape(head)}s?\b", sentence.lower()):
+            return sentence
+    return ""
+
+
+def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
+    """Sitting, lying or ``None`` for a person of the parse; ``None`` for anything else.
+
+    The host decides first (a person on a bed lies, on a chair sits, whatever the verb);
+    with no host, or a host of neither kind, the sentence's verbs do ("a boy sits at the
+    kotatsu"); "asleep"/"sleeps" alone is lying unless the host is a seat ("dozes in the
+    armchair" sits).
+    """
+    if obj.category not in _FIGURES:
+        return None
+    by_id = {o.id: o for o in parsed.objects}
+    hosts = [by_id[r.target].category for r in parsed.relations if r.source == obj.id and r.relation == "on" and r.target in by_id]
+    if any(h in LYING_HOSTS for h in hosts):
+        return "lying"
+    if any(h in SITTING_HOSTS for h in hosts):
+        return "sitting"
+    sentence = _sentence_of(parsed, obj).lower()
+    found = posture_in(sentence)
+    if found:
+        return found
+    if _mentions(sentence, ("asleep", "sleeps", "sleeping", "naps", "napping")):
+        return "lying"
+    return None
+
+
+def posed_size(size: tuple[float, float, float], posture: str | None) -> tuple[float, float, float]:
+    """The box of a person of standing ``size`` in ``posture``."""
+    w, d, h = size
+    if posture == "sitting":
+        return (w, round(SIT_DEPTH * h, 3), round(SIT_HEIGHT * h, 3))
+    if posture == "lying":  # on the back along the depth, head to the back
+        return (w, h, d)
+    return size
+
+
+def pose(parsed: ParsedScene) -> list[ParsedObject]:
+    """The parse's objects with every person put in the posture the text gives them: the
+    pose's box, and the pose word added to the description when it does not say it."""
+    posed = []
+    for obj in parsed.objects:
+        posture = posture_of(parsed, obj)
+        if posture is None:
+            posed.append(obj)
+            continue
+        description = obj.description if posture_in(obj.description) == posture else f"{obj.description}, {posture}"
+        posed.append(replace(obj, size=posed_size(obj.size, posture), description=description))
+    return posed

@@ -1,0 +1,63 @@
+"""People sit and lie as the text says, in a box that fits the pose, and the mesh agrees."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from scenewright.analysis.arrange import compose
+from scenewright.analysis.composition.posture import posed_size, posture_in, posture_of
+from scenewright.analysis.parser import parse_scene
+from scenewright.procedural.builder import Model
+from scenewright.procedural.shapes import SHAPES
+from scenewright.procedural.style import resolve_style
+
+
+def _figure(text: str, name: str):
+    parsed = parse_scene(text)
+    return parsed, next(o for o in parsed.objects if o.name.endswith(name))
+
+
+@pytest.mark.parametrize(
+    ("text", "name", "posture"),
+    [
+        ("A young woman sits on the sofa with a laptop on her knees.", "woman", "sitting"),
+        ("An old wizard dozes in a patched armchair by the fireplace.", "wizard", "sitting"),
+        ("A boy and a girl sit across from each other at the kotatsu.", "boy", "sitting"),
+        ("A man lies on a picnic blanket under a tree.", "man", "lying"),
+        ("A knight stands guard beside the gate.", "knight", None),
+        ("A chef stirs a pot on the stove.", "chef", None),
+    ],
+)
+def test_posture_read_from_host_and_verbs(text, name, posture):
+    parsed, person = _figure(text, name)
+    assert posture_of(parsed, person) == posture
+
+
+def test_only_people_are_posed():
+    parsed = parse_scene("A cat sits on the sofa.")
+    assert all(posture_of(parsed, o) is None for o in parsed.objects)
+
+
+def test_composition_gives_the_pose_its_box_and_word():
+    composed = compose(parse_scene("A young woman sits on a park bench."))
+    woman = next(o for o in composed.objects if o.name.endswith("woman"))
+    standing = next(o for o in parse_scene("A young woman stands.").objects if o.name.endswith("woman"))
+    assert posture_in(woman.visual_description) == "sitting"
+    assert woman.size.z == pytest.approx(posed_size(standing.size, "sitting")[2])
+    assert woman.size.z < 0.7 * standing.size[2]
+
+
+@pytest.mark.parametrize("posture", ["sitting", "lying"])
+def test_figure_mesh_fills_the_posed_box(posture):
+    """Folded from a standing person, the mesh's own extents are the posed box's shape, so
+    fitting it to the box does not stretch the person."""
+    size = posed_size((0.5, 0.3, 1.75), posture)
+    model = Model(size, resolve_style("realistic"), np.random.default_rng(0), name="woman", description=posture)
+    SHAPES["figure"](model)
+    verts = np.concatenate([p.vertices for parts in model.parts.values() for p in parts])
+    extent = verts.max(axis=0) - verts.min(axis=0)
+    assert extent / np.array(size) == pytest.approx(np.ones(3), rel=0.2)  # a standing one fills 0.82 of its depth
+    if posture == "sitting":  # the seat is the lowest part, under the body, not the feet in front
+        low = verts[verts[:, 2] < verts[:, 2].min() + 0.02]
+        assert low[:, 1].max() > verts[:, 1].min() + 0.3 * extent[1]
