@@ -124,7 +124,9 @@ def parse_scene(text: str) -> ParsedScene:
     ]
     expanded = _acyclic(_expand(reader), [o.id for o in objects])
     objects = fit_on_hosts(objects, expanded, catalogue, {i for g in reader.groups if g.sized for i in g.ids})
-    stated, repairs = repair_supports(objects, expanded, catalogue)
+    by_group = {g.index: g.ids for g in reader.groups}
+    carried = frozenset((a, b) for s, t in reader.carried for a in by_group[s] for b in by_group[t])
+    stated, repairs = repair_supports(objects, expanded, catalogue, carried)
     inferred = _infer_support(objects, stated, catalogue)
     relations = _acyclic(stated + inferred, [o.id for o in objects])
     indoor = _is_indoor([o.category for o in objects], text, catalogue, reader.places)

@@ -255,6 +255,8 @@ def _role_after_as(toks: list[_Tok], s: int) -> bool:
         j -= 1
     if j >= 1 and (toks[j - 1].text, toks[j].text) in _ABSENT_OWNER:
         return True  # "a bedroom belonging to a teenage girl": the owner is not in the scene
+    if j >= 1 and toks[j].text == "for" and not any(t.text in _DETERMINERS or t.text in _NUMBERS for t in toks[j + 1 : s]):
+        return True  # "a bench for parents", "a fridge for vaccines": whom or what it serves, no thing here
     return j >= 1 and toks[j].text == "as" and toks[j - 1].text not in ("well", "such", "same")
 
 

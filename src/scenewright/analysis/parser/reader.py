@@ -83,8 +83,9 @@ _KIND_RELATION = {"left": "left of", "right": "right of", "flank elliptic": "fla
 _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
 
 #: After these, a phrase right after the target places the target: "a lamp on a table left of the
-#: sofa", "astronauts beside a lab bench to the right of the console", "sniffs at a cooler near the truck".
-_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at")
+#: sofa", "astronauts beside a lab bench to the right of the console", "sniffs at a cooler near the
+#: truck", "dozes in an armchair by the fire" (the armchair is by the fire).
+_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in")
 #: Sides of a thing named by a possessive ("against its side"): the owner places.
 _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
 #: "Piled with" on a cart or a table is a load of things standing on it when they are this big or
@@ -110,6 +111,8 @@ _MOUNTS = ("pole", "stick", "mast", "stake", "spike")
 _COPULAS = ("is", "are", "was", "were", "be", "has", "have", "had", "seems", "looks")
 #: Pronouns that name a person or an animal.
 _PERSONAL = ("him", "her", "himself", "herself")
+#: Possessives of people and the pronoun that names their owner ("at his feet" → him).
+_PERSON_POSSESSIVES = {"his": "him", "her": "her", "their": "them living", "my": "him", "your": "him"}
 #: Categories and shapes of living things ("him", "her" name one of them).
 _LIVING = frozenset({"figure", "animal", "bird", "robot"})
 
@@ -131,6 +134,10 @@ class _Reader:
         self.history: list[int] = []  # groups in the order earlier clauses mentioned them
         self.instance: dict[int, int | None] = {}  # mention start → instance it names
         self._target_start = -1
+        #: The body part the last target was read from names this relation to its person, if any.
+        self._body_part: str | None = None
+        #: (thing, person) groups where the text puts the thing on a part of the person.
+        self.carried: set[tuple[int, int]] = set()
         #: Place words that set the scene rather than stand in it ("a hangar with a spaceship").
         self.places: list[str] = []
         #: Group → the part of the room the text puts it in (wall, corner, centre, back, front).
@@ -442,6 +449,10 @@ class _Reader:
     def _target_at(self, pos: int, ce: int) -> tuple[list[int] | str | None, int]:
         """The noun phrase (or pronoun) right after a relation phrase, and where it ends."""
         toks = self.toks
+        self._body_part = None
+        body = self._body_part_at(pos, ce, self.by_start)
+        if body is not None:
+            return body
         j = pos
         while j < ce and j - pos < 6:
             if j in self.by_start:
@@ -478,6 +489,26 @@ class _Reader:
         if owner and pos + 1 < ce and toks[pos + 1].text in _OWNER_PARTS:
             return owner, pos + 2  # "piled against its side": by the owner
         return None, pos
+
+    def _body_part_at(self, pos: int, ce: int, starts) -> tuple[str, int] | None:
+        """"on her knees", "at his feet", "in their arms": a part of a person places by the
+        person ("her" → the woman); the part's relation (carried on, or near) is kept for
+        :meth:`_relation`."""
+        toks = self.toks
+        k = pos
+        while k < ce and toks[k].text in ("one", "of", "both"):
+            k += 1  # "on one of her knees"
+        if k + 1 >= ce or toks[k].text not in _PERSON_POSSESSIVES:
+            return None
+        j = k + 1
+        while j < ce - 1 and j - k <= 2 and load_vocabulary().is_adjective(toks[j].text):
+            j += 1  # "at her tiny feet"
+        part = toks[j].text if j < ce else ""
+        relation = load_vocabulary().body_parts.get(part)
+        if relation is None or j in starts:  # "on her back porch": a thing named, not a part
+            return None
+        self._body_part = relation
+        return _PERSON_POSSESSIVES[toks[k].text], j + 1
 
     def _building_of_part(self, pos: int, end: int) -> int | None:
         """The building (or vehicle) a part of one names when no thing is named ("on the roof",
@@ -621,11 +652,22 @@ class _Reader:
             return False
         return any(_is_verb(w) and w not in _COPULAS for w in gap)
 
-    def _person(self, c: _Clause, srcs: list[int]) -> list[int]:
-        """Whom "him" / "her" names: the clause's own living subject, else the latest living
-        thing mentioned before."""
-        order = [*c.subjects, *c.main_groups, *reversed(c.groups), *reversed(self.history)]
-        return next(([g] for g in order if g not in srcs and self._living(g)), [])
+    def _person(self, c: _Clause, srcs: list[int], word: str) -> list[int]:
+        """Whom "him" / "her" (or "their" before a body part) names: the clause's own living
+        subject, else the latest living thing mentioned before, of a sex the pronoun agrees
+        with ("her" is not the dad) and, for "their", several."""
+        # "..., with his cat at his feet": the with-part's owner before the things it lists
+        order = [*c.subjects, *(c.head or []), *c.main_groups, *reversed(c.groups), *reversed(self.history)]
+        vocabulary = load_vocabulary()
+
+        def fits(g: int) -> bool:
+            group = self.groups[g]
+            return (
+                g not in srcs and self._living(g) and vocabulary.agrees(word, group.name.split()[-1])
+                and (word != "them living" or group.count > 1)
+            )  # fmt: skip
+
+        return next(([g] for g in order if fits(g)), [])
 
     def _living(self, g: int) -> bool:
         """A person or an animal (catalogue dogs and horses too, guessed figures and animals)."""
@@ -660,6 +702,9 @@ class _Reader:
         toks = self.toks
         kind = rel.kind
         target, end = self._target_at(rel.end, ce)
+        body = self._body_part  # "on her knees", "at his feet": by the person, as the part says
+        if body == "near" or (body == "on" and kind in ("on", "on top", "in")):
+            kind = body
         between = [t.text for t in toks[last_event_end : rel.start]]
         # sources: the noun the phrase follows when nothing but adverbs lies between
         srcs: list[int]
@@ -719,9 +764,9 @@ class _Reader:
             targets = self._pronoun("them", c, srcs, list(c.last_target))
             if targets:
                 self._per_each([s for s in srcs if s in c.groups], targets[0])
-        elif target in _PERSONAL:
+        elif target in _PERSONAL or target == "them living":
             # "a pirate stands behind the chest with a shovel beside him": the person, not the chest
-            targets = self._person(c, srcs)
+            targets = self._person(c, srcs, target)
         elif isinstance(target, str) and target != "each other":
             # "a bench in front of the swing, facing it": the clause's own last target first.
             # then the subject before ("a wagon waits behind the fountain, and a donkey is tied to
@@ -796,12 +841,13 @@ class _Reader:
                 if self.groups[g].rests == "surface":
                     self.groups[g].rests = "hanging"
         if targets == "each other":
-            each_other = "face to" if kind == "face to" else "near"
+            # "face each other", "sit across from each other" (in front of and facing, each way)
+            each_other = kind if kind in ("face to", "opposite") else "near"
             for s in srcs:
                 self.relations.append((each_other, s, s, None))
             if len(srcs) == 2:  # "a goldfish stall and a takoyaki stall face each other": two groups
                 self._relate(each_other, srcs[1:], srcs[0])
-                if each_other == "face to":
+                if each_other in ("face to", "opposite"):
                     self._relate(each_other, srcs[:1], srcs[1])
             c.produced = True
             return end
@@ -812,6 +858,8 @@ class _Reader:
             self._per_each([s for s in srcs if s in c.groups], targets[0])
         for t in targets:
             self._relate(kind, srcs, t, hang, instance)
+            if body == "on":  # a person holds nothing on top, but carries what is on a knee or an arm
+                self.carried.update((s, t) for s in srcs)
         c.produced = True
         c.rels = [(kind, targets)]
         c.last_kind = "between" if rel.kind == "between" else kind  # "between two trees to the left of"
@@ -827,8 +875,8 @@ class _Reader:
         k = start
         while k < len(self.toks) and k - start < 4:
             w = self.toks[k].text
-            if k in starts or w in ("it", "them"):
-                return True
+            if k in starts or w in ("it", "them") or (k == start and self._body_part_at(k, len(self.toks), starts)):
+                return True  # "at each desk", "at it", "at his feet"
             if not (w in _DETERMINERS or w in ("each", "every") or (w[:1].isalpha() and w not in _STOP)):
                 return False
             k += 1
@@ -903,7 +951,8 @@ class _Reader:
                 return "left of"  # the head of a table is one of its ends
             return "near"
         if kind == "in":  # "a man in a rocking chair", "a duck floats in the tub": on it
-            holds = target.shape in _SEATS or target.support or target.shape in _VESSELS
+            vessel = target.shape in _VESSELS or self.groups[t].category in _VESSELS
+            holds = target.shape in _SEATS or target.support or vessel
             return "on" if holds and target.shape not in _ENCLOSURES and target.size[2] <= 2.5 else "no relation"
         if kind == "hanging from":  # from a beam or a shelf: above it; from a tall tree: beside it
             return "above" if target.size[2] <= 2.5 else "near"
