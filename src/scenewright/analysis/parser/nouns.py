@@ -161,6 +161,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue
         if _role_after_as(toks, s):
             continue  # "four logs around it as seats", "a crate used as a table": a use, not a thing
+        if e + 1 < n and toks[e].text == "in" and toks[e + 1].text in _MEASURES:
+            continue  # "a room six tatami mats in size", "two cars in length": a measure, not things
         if _gerund_here(toks, s, e):
             continue  # "two children are building a snowman": a verb, not a building
         if _adverb_here(toks, s, e):
@@ -260,6 +262,8 @@ def _role_after_as(toks: list[_Tok], s: int) -> bool:
     return j >= 1 and toks[j].text == "as" and toks[j - 1].text not in ("well", "such", "same")
 
 
+#: After "in", what makes the noun before a unit of measure ("six tatami mats in size").
+_MEASURES = {"size", "length", "width", "area", "diameter", "height", "depth", "breadth", "span"}
 #: Word pairs after which a noun names an owner, not a thing of the scene.
 _ABSENT_OWNER = {("belonging", "to"), ("belongs", "to"), ("owned", "by"), ("run", "by")}
 

@@ -136,6 +136,8 @@ class _Reader:
         self._target_start = -1
         #: The body part the last target was read from names this relation to its person, if any.
         self._body_part: str | None = None
+        #: The part word of the last target read through its owner ("its back" → "back").
+        self._part: str | None = None
         #: (thing, person) groups where the text puts the thing on a part of the person.
         self.carried: set[tuple[int, int]] = set()
         #: Place words that set the scene rather than stand in it ("a hangar with a spaceship").
@@ -258,6 +260,7 @@ class _Reader:
         taken = {k for m in mentions for k in range(m.start, m.end)}
         starts = {m.start for m in mentions}
         self.rel_at = {r.start: r for r in _find_relations(toks, taken) if r.kind != "at" or self._names_thing(r.end, starts)}
+        self._rows_then_with(mentions)
         self._read_looks(mentions)
         self.by_start = {m.start: m for m in mentions if not m.content}
         self.content_at = {k for m in mentions if m.content for k in range(m.start, m.end)}
@@ -302,6 +305,17 @@ class _Reader:
         held = [("on", by_start[s].group, by_start[h].group, None) for s, h in self.held_of
                 if by_start[s].group >= 0 and by_start[h].group >= 0]  # fmt: skip
         self.relations[:0] = held  # before any other support the list gave them
+
+    def _rows_then_with(self, mentions: list[_Mention]) -> None:
+        """"Two food trucks are parked side by side with three picnic tables in front of them":
+        after several things, "side by side" is their row and the "with" opens their with-part;
+        after one thing ("a bench side by side with a table") it is beside the next."""
+        for start, rel in list(self.rel_at.items()):
+            if [t.text for t in self.toks[start : rel.end]] != ["side", "by", "side", "with"]:
+                continue
+            before = [m for m in mentions if m.end <= start and start - m.end <= 5]
+            if before and _is_plural(self.toks, before[-1]):
+                self.rel_at[start] = _Rel("row", start, start + 3)
 
     def _read_looks(self, mentions: list[_Mention]) -> None:
         """Each noun's look written after it; a catalogue noun inside a "made of" look is its
@@ -449,17 +463,20 @@ class _Reader:
     def _target_at(self, pos: int, ce: int) -> tuple[list[int] | str | None, int]:
         """The noun phrase (or pronoun) right after a relation phrase, and where it ends."""
         toks = self.toks
-        self._body_part = None
+        self._body_part = self._part = None
         body = self._body_part_at(pos, ce, self.by_start)
         if body is not None:
             return body
+        # "on one of its branches": the part of one owner, as "on its branch"
+        lead = pos + 2 if [t.text for t in toks[pos : pos + 2]] == ["one", "of"] else pos
         j = pos
         while j < ce and j - pos < 6:
             if j in self.by_start:
                 m = self.by_start[j]
                 self._target_start = m.start
-                owner = _OWNER_PRONOUNS.get(toks[pos].text) if pos < ce else None
+                owner = _OWNER_PRONOUNS.get(toks[lead].text) if lead < ce else None
                 if owner and m.group < 0 and not any(g.category == m.category for g in self.groups):
+                    self._part = singular(toks[m.end - 1].text)
                     return owner, m.end  # "pumpkins on its counter": the stall's own counter is the stall
                 g = self._resolve(m, self.size_of.get(m.start, []))
                 return ([g] if g >= 0 else None), m.end
@@ -472,6 +489,8 @@ class _Reader:
                 return "each other", j + 2
             if w in ("each", "every") and j + 1 < ce and toks[j + 1].text == "one":
                 return "each one", j + 2  # "a chair in front of each one": one per member
+            if w == "one" and j > pos and toks[j - 1].text not in _NUMBERS and (j + 1 >= ce or toks[j + 1].text != "of"):
+                return "that one", j + 1  # "at the foot of the tallest one": one of a group named before
             # a noun, not a verb, after a determiner or a count ("its walls", "two rows of")
             after_determiner = j > pos and (toks[j - 1].text in _DETERMINERS or toks[j - 1].text in _NUMBERS)
             if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
@@ -483,11 +502,13 @@ class _Reader:
         building = self._building_of_part(pos, j)
         if building is not None:
             return [building], j  # "mounted on the roof", "beside its door", "on the shop's roof"
-        owner = _OWNER_PRONOUNS.get(toks[pos].text) if pos < ce else None
-        if owner and j > pos + 1:
+        owner = _OWNER_PRONOUNS.get(toks[lead].text) if lead < ce else None
+        if owner and j > lead + 1:
+            self._part = singular(toks[j - 1].text)
             return owner, j  # "above its door": a part of its owner places by the owner itself
-        if owner and pos + 1 < ce and toks[pos + 1].text in _OWNER_PARTS:
-            return owner, pos + 2  # "piled against its side": by the owner
+        if owner and lead + 1 < ce and toks[lead + 1].text in _OWNER_PARTS:
+            self._part = toks[lead + 1].text
+            return owner, lead + 2  # "piled against its side": by the owner
         return None, pos
 
     def _body_part_at(self, pos: int, ce: int, starts) -> tuple[str, int] | None:
@@ -652,6 +673,29 @@ class _Reader:
             return False
         return any(_is_verb(w) and w not in _COPULAS for w in gap)
 
+    def _part_owner(self, part: str | None, targets: list[int], candidates: list[int], srcs: list[int]) -> list[int]:
+        """The owner of a part named with "its" ("an owl perched on its back"): what the pronoun
+        resolved to when that can have the part, else the latest candidate that can (the
+        armchair, not the fireplace named after it)."""
+        owners = load_vocabulary().part_owners.get(part or "")
+        if not owners or not targets:
+            return targets
+
+        def has(g: int) -> bool:
+            category = self.groups[g].category
+            return category in owners or self.catalogue[category].shape in owners
+
+        if any(has(t) for t in targets):
+            return targets
+        return next(([g] for g in candidates if g not in srcs and has(g)), targets)
+
+    def _one_of(self, c: _Clause, srcs: list[int], prev_subject: list[int]) -> list[int]:
+        """The group "the tallest one", "the nearest one" picks from: the subject of this clause
+        or the one before when it is several ("three stalls ..., and a drone hovers above the
+        nearest one"), else the latest group of several mentioned."""
+        order = [*c.subjects, *prev_subject, *reversed(c.groups), *reversed(self.history)]
+        return next(([g] for g in order if g not in srcs and self.groups[g].count > 1), [])
+
     def _person(self, c: _Clause, srcs: list[int], word: str) -> list[int]:
         """Whom "him" / "her" (or "their" before a body part) names: the clause's own living
         subject, else the latest living thing mentioned before, of a sex the pronoun agrees
@@ -702,7 +746,7 @@ class _Reader:
         toks = self.toks
         kind = rel.kind
         target, end = self._target_at(rel.end, ce)
-        body = self._body_part  # "on her knees", "at his feet": by the person, as the part says
+        body, part = self._body_part, self._part  # "on her knees": by the person, as the part says
         if body == "near" or (body == "on" and kind in ("on", "on top", "in")):
             kind = body
         between = [t.text for t in toks[last_event_end : rel.start]]
@@ -753,6 +797,8 @@ class _Reader:
                         self.lines.setdefault(g, lines)
                 elif place:
                     self.anchors.setdefault(g, place.removeprefix("anchor "))
+            if kind.startswith("anchor ") and toks[rel.end - 1].text != "of":
+                return rel.end  # "In the centre a huge spellbook floats ...": the noun after is the subject
             return end
         if kind in ("its left", "its right") and target is None:
             kind, target = ("left of" if kind == "its left" else "right of"), "it"
@@ -764,6 +810,8 @@ class _Reader:
             targets = self._pronoun("them", c, srcs, list(c.last_target))
             if targets:
                 self._per_each([s for s in srcs if s in c.groups], targets[0])
+        elif target == "that one":
+            targets = self._one_of(c, srcs, prev_subject)
         elif target in _PERSONAL or target == "them living":
             # "a pirate stands behind the chest with a shovel beside him": the person, not the chest
             targets = self._person(c, srcs, target)
@@ -791,6 +839,7 @@ class _Reader:
                 targets = single[:1] or targets
             elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
                 targets = c.wsub_before[-1:]  # "... and a computer beside it": beside the till
+            targets = self._part_owner(part, targets, [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)], srcs)
         elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
             # "a bed with a nightstand on either side": a with-thing's side is its head's
             owner = list(c.head) if c.head is not None and srcs == c.wsub else []

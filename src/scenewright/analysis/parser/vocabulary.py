@@ -52,6 +52,8 @@ class Vocabulary:
     #: Body parts after "his"/"her"/"their": the relation they give to that person
     #: (``on``: "a laptop on her knees"; ``near``: "a dog at his feet").
     body_parts: dict[str, str] = field(default_factory=dict)
+    #: Part word → the categories or shapes that have such a part ("its back": a seat's).
+    part_owners: dict[str, frozenset[str]] = field(default_factory=dict)
 
     def agrees(self, pronoun: str, head: str) -> bool:
         """Whether "she"/"her" or "he"/"him"/"his" can name a thing whose name ends in ``head``:
@@ -139,6 +141,7 @@ def _validate(raw: dict) -> Vocabulary:
             **{w: "on" for w in people.get("body_parts_on", ())},
             **{w: "near" for w in people.get("body_parts_near", ())},
         },
+        part_owners={k: frozenset(v) for k, v in raw.get("part_owners", {}).items() if k != "about"},
     )
 
 
