@@ -104,7 +104,7 @@ _ROOFED_VEHICLES = ("car", "truck", "bus", "vehicle")
 #: Parts of a building that place a thing by the building itself when nothing else is named.
 _BUILDING_PARTS = ("roof", "rooftop", "porch", "step", "doorstep", "chimney", "eave", "gable", "veranda", "facade", "door", "doorway")
 #: Shapes one sits or floats *in* and is then on ("in the tub", "in the canoe").
-_VESSELS = ("bathtub", "boat", "bed", "cart", "basket", "crate", "pond", "sandbox")
+_VESSELS = ("bathtub", "boat", "bed", "cart", "basket", "crate", "pond", "sandbox", "hammock")
 #: What a thing is mounted on as a part of it ("lanterns on tall poles").
 _MOUNTS = ("pole", "stick", "mast", "stake", "spike")
 #: Verbs that join a subject to what it is, not to a thing it acts on.
@@ -686,7 +686,7 @@ class _Reader:
             return category in owners or self.catalogue[category].shape in owners
 
         if any(has(t) for t in targets):
-            return targets
+            return [t for t in targets if has(t)]  # "a bookcase and a piano ..., on its lid": the piano
         return next(([g] for g in candidates if g not in srcs and has(g)), targets)
 
     def _one_of(self, c: _Clause, srcs: list[int], prev_subject: list[int]) -> list[int]:
