@@ -399,3 +399,23 @@ def test_a_measure_and_a_use_name_no_things():
     assert "yoga_mat" not in [o.category for o in parsed.objects]
     parsed = parse_scene("A hallway with a coat rack for visitors and a chair.")
     assert sorted(o.category for o in parsed.objects) == ["chair", "coat_rack"]
+
+
+def test_peoples_things_after_their_are_things_one_each():
+    parsed = parse_scene("Three cyclists rest on their bicycles beside a fountain.")
+    assert [o.category for o in parsed.objects].count("bicycle") == 3
+    assert ("cyclist_1", "on", "bicycle_1") in rels(parsed.text)
+    # a thing's "their" still names its part: the roofs are the stalls'
+    assert ("lantern_1", "on", "market_stall_1") in rels("Three stalls stand in a row with lanterns on their roofs.")
+
+
+def test_a_describing_word_gives_way_to_a_longer_thing_inside_it():
+    parsed = parse_scene("A glowing crystal ball rests on the desk.")
+    assert [o.category for o in parsed.objects] == ["magic_orb", "desk"]
+
+
+def test_a_hologram_of_a_thing_shows_it_and_a_launch_site_is_a_place():
+    assert [o.category for o in parse_scene("A hologram of a whale drifts above the plaza fountain.").objects] == [
+        "hologram", "fountain",
+    ]  # fmt: skip
+    assert [o.category for o in parse_scene("A rocket launch site with a tall rocket.").objects] == ["rocket"]

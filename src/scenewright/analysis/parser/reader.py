@@ -475,6 +475,11 @@ class _Reader:
                 m = self.by_start[j]
                 self._target_start = m.start
                 owner = _OWNER_PRONOUNS.get(toks[lead].text) if lead < ce else None
+                people = self._people_own() if owner == "them" else None
+                if people is not None:  # "two teenagers sit on their motorbikes": people's things are things,
+                    owner = None  # one each when the text gives no count
+                    if m.group < 0 and not m.counted and _is_plural(toks, m):
+                        m.count = self.groups[people].count
                 if owner and m.group < 0 and not any(g.category == m.category for g in self.groups):
                     self._part = singular(toks[m.end - 1].text)
                     return owner, m.end  # "pumpkins on its counter": the stall's own counter is the stall
@@ -510,6 +515,13 @@ class _Reader:
             self._part = toks[lead + 1].text
             return owner, lead + 2  # "piled against its side": by the owner
         return None, pos
+
+    def _people_own(self) -> int | None:
+        """The group "their" most likely names when it is people or animals: the latest group
+        of several, when living (what such owners have is a thing of its own, not a part like a
+        roof)."""
+        several = [g.index for g in self.groups if g.count > 1]
+        return several[-1] if several and self._living(several[-1]) else None
 
     def _body_part_at(self, pos: int, ce: int, starts) -> tuple[str, int] | None:
         """"on her knees", "at his feet", "in their arms": a part of a person places by the
