@@ -419,3 +419,15 @@ def test_a_hologram_of_a_thing_shows_it_and_a_launch_site_is_a_place():
         "hologram", "fountain",
     ]  # fmt: skip
     assert [o.category for o in parse_scene("A rocket launch site with a tall rocket.").objects] == ["rocket"]
+
+
+def test_a_fronted_place_moves_what_the_subject_floats_above_or_stands_on():
+    found = rels("To the left of the sofa, a lamp stands on a small side table.")
+    assert {("side_table_1", "left of", "sofa_1"), ("table_lamp_1", "on", "side_table_1")} <= found
+    assert ("table_lamp_1", "left of", "sofa_1") not in found
+
+
+def test_a_tall_thing_on_the_wall_can_be_above():
+    found = rels("Above the sofa, a tall shelf on the back wall holds plants.")
+    assert ("bookshelf_1", "above", "sofa_1") in found
+    assert ("pine_tree_1", "near", "pond_1") in rels("A tall pine stands above the pond.")

@@ -76,6 +76,8 @@ _FORMATION_NOUNS = {"row": "row", "line": "row", "rows": "rows", "lines": "rows"
                     "ring": "circle", "circle": "circle"}  # fmt: skip
 #: Phrase kinds that, with no object after them, name a part of the room ("along the back wall").
 _PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None, "foot of": None, "at": None}
+#: Phrase kinds that place a thing on the ground beside another (not on it, not above it).
+_GROUND_KINDS = ("left of", "right of", "in front of", "behind", "side of", "near", "far", "left", "right")
 #: Phrase kinds read as one of the scene's relations whatever they join.
 _KIND_RELATION = {"left": "left of", "right": "right of", "flank elliptic": "flank", "hanging from": "above",
                   "leaning on": "side of", "along": "side of"}  # fmt: skip
@@ -93,6 +95,8 @@ _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", 
 _LOADS = {("piled", "with"), ("stacked", "with"), ("heaped", "with")}
 _LOAD_HOSTS = ("cart", "truck", "table", "round_table", "desk", "counter")
 _LOAD_SIZE = 0.3
+#: Things that show what follows their "of", even a definite one ("a statue of the king").
+_DEPICTIONS = ("statue", "hologram", "picture_frame", "sign", "billboard")
 #: Flat holders whose "of" things stand on them as objects ("a tray of bottles", "a pallet of tires").
 _FLAT_HOLDERS = ("plate", "pallet")
 #: Shapes that hold what they hold inside, out of the layout ("a greenhouse holds tomato plants").
@@ -261,6 +265,8 @@ class _Reader:
         starts = {m.start for m in mentions}
         self.rel_at = {r.start: r for r in _find_relations(toks, taken) if r.kind != "at" or self._names_thing(r.end, starts)}
         self._rows_then_with(mentions)
+        #: Mentions the text puts on a wall ("a luggage rack on the wall"): hung, so "above" holds.
+        self.on_wall = {m.start for m in mentions if self._on_wall_after(m.end)}
         self._read_looks(mentions)
         self.by_start = {m.start: m for m in mentions if not m.content}
         self.content_at = {k for m in mentions if m.content for k in range(m.start, m.end)}
@@ -270,6 +276,7 @@ class _Reader:
             last_rels: list[tuple[str, list[int]]] = []
             for ci, (cs, ce) in enumerate(self._merge_lists(sentence)):
                 c = _Clause(first=ci == 0)
+                before = len(self.relations)
                 self._clause(c, cs, ce, prev_subject)
                 if c.fronted:
                     srcs = c.main_groups
@@ -280,7 +287,7 @@ class _Reader:
                             if each:  # "beside every table stand two chairs"
                                 self._per_each(srcs[:1], targets[0])
                             for t in targets:
-                                self._relate(kind, srcs, t)
+                                self._relate(kind, self._beneath(kind, srcs, before), t)
                         c.rels = [(kind, targets) for kind, targets, _ in c.fronted]
                     else:
                         pending = [(kind, targets) for kind, targets, _ in c.fronted]
@@ -289,7 +296,7 @@ class _Reader:
                     subjects = c.subjects or c.main_groups[:1]
                     for kind, targets in pending:
                         for t in targets:
-                            self._relate(kind, subjects, t)
+                            self._relate(kind, self._beneath(kind, subjects, before), t)
                     pending = []
                 elif not c.produced and c.groups and last_rels and self._is_list(cs, ce, strict=True):
                     # "On the desk there is a lamp, a laptop and a mug": the list shares the relation
@@ -305,6 +312,28 @@ class _Reader:
         held = [("on", by_start[s].group, by_start[h].group, None) for s, h in self.held_of
                 if by_start[s].group >= 0 and by_start[h].group >= 0]  # fmt: skip
         self.relations[:0] = held  # before any other support the list gave them
+
+    def _on_wall_after(self, end: int) -> bool:
+        """"... on the wall", "mounted on the back wall", "hangs on a wall" right after a noun."""
+        words = [t.text for t in self.toks[end : end + 6]]
+        k = 1 if words[:1] and words[0] in _HANG_VERBS else 0
+        if words[k : k + 1] != ["on"]:
+            return False
+        for w in words[k + 1 : k + 5]:
+            if w in ("wall", "walls"):
+                return True
+            if not w[:1].isalpha():
+                return False
+        return False
+
+    def _beneath(self, kind: str, subjects: list[int], since: int) -> list[int]:
+        """What a fronted phrase of the ground ("Behind the chair, ...") places: each subject,
+        or what the subject floats above or stands on in its own clause ("a hologram floats
+        above a round table": the table is behind the chair)."""
+        if kind not in _GROUND_KINDS:
+            return subjects
+        under = {r[1]: r[2] for r in self.relations[since:] if r[0] in ("on", "above") and r[2] not in subjects}
+        return list(dict.fromkeys(under.get(g, g) for g in subjects))
 
     def _rows_then_with(self, mentions: list[_Mention]) -> None:
         """"Two food trucks are parked side by side with three picnic tables in front of them":
@@ -379,8 +408,8 @@ class _Reader:
             self.held_of.append((m.start, prev.start))  # "a tray of medicine bottles": bottles on the tray
             return False
         holder = prev.category in _CONTENT_HEADS or prev.category in ("container", "tool")
-        if w == "of" and prev.end == j and holder and not m.definite:
-            return True  # "a vase of tulips", "a statue of a horse", "a box of tools"
+        if w == "of" and prev.end == j and holder and (not m.definite or prev.category in _DEPICTIONS):
+            return True  # "a vase of tulips", "a statue of a horse", "a hologram of the star map"
         if w == "on" and j - prev.end <= 2 and singular(m.phrase.split()[-1].lower()) in _MOUNTS:
             return True  # "a windsock on a tall pole", "a flag flutters on a pole": the pole is its part
         plant = self.catalogue[prev.category].shape in ("potted_plant", "bush", "flower_bed")
@@ -994,8 +1023,9 @@ class _Reader:
         if kind == "over":
             # a tree leaning over a pond stands by it; a lamp or a lantern over a table hangs above it
             return "above" if hang or src.rests in ("hanging", "surface") else "near"
-        if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not hang:
-            return "near"  # a tree "above" a pond cannot float: read it as near
+        walled = any(m.group == s for k, m in self.by_start.items() if k in self.on_wall)
+        if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not (hang or walled):
+            return "near"  # a tree "above" a pond cannot float: read it as near (a rack on the wall can hang)
         if kind == "under":
             tgt = self.catalogue[self.groups[t].category]
             return "under flat" if self.groups[s].size[2] < 0.1 and tgt.size[2] < 1.5 else "near"
