@@ -33,7 +33,7 @@ Decisions worth knowing:
   stands on no other piece; a thing at most about the host's size); otherwise ``side of``, and
   the repair is listed in ``ParsedScene.repairs``.
 
-- ``beside`` / ``next to`` / ``alongside`` → ``side of``; ``near`` / ``close to`` / ``by`` →
+- ``beside`` / ``next to`` / ``alongside`` / ``leans against`` → ``side of``; ``near`` / ``close to`` / ``by`` →
   ``near``; ``opposite`` / ``across from`` → ``in front of`` + ``face to``; ``flanked by`` and
   ``on either side of`` → one flanker ``left of`` and one ``right of`` (one thing named "on each
   side of" is two, one a side, even beside a door that is no object); ``around`` /
@@ -72,11 +72,26 @@ Decisions worth knowing:
   clause part or for a small (tabletop or hanging) thing, else ``near`` (a tree leaning over a
   pond); a tabletop thing hung "from the ceiling" hangs. ``X under Y`` puts Y ``on`` X when X is
   flat (a rug under a table), else X ``near`` Y.
-- ``in`` a seat, a tub, a boat or on a surface → ``on`` it ("a man in a rocking chair", "a duck
-  floats in the tub"); in anything else (a tent, a field) it places nothing.
+- ``in`` a seat, a tub, a boat, a basket, a sandbox or on a surface → ``on`` it ("a man in a
+  rocking chair", "a duck floats in the tub"), and a phrase right after places the seat ("dozes in
+  an armchair by the fire"); in anything else (a tent, a field) it places nothing.
 - A part of a building or a vehicle that is no object ("on the roof", "beside its door", "the
   shop's roof", "the porch steps") places by its owner: one named in the same sentence, else the
   latest building, else the latest vehicle.
+- People: "he"/"him"/"his" and "she"/"her" name a person of that sex (``people`` in
+  ``data/vocabulary.json``), the clause's subject or a with-part's owner first; a body part after
+  a person's possessive places by the person ("a laptop on her knees" → on her, and the repair
+  leaves it there; "a dog at his feet" → near him). "Their" of people names their own things, one
+  each ("two teenagers on their motorbikes"); of things, a part ("lanterns on their roofs").
+- A part named with "its" belongs to what has such a part (``part_owners``: "an owl on its
+  back" is on the armchair, not on the fireplace named after it); "one of its branches" is its
+  branch. "The tallest one" / "the nearest one" is one of the group named before.
+- "Across from each other" / "opposite each other" → in front of + face to, one way (the other
+  would close a cycle). A fronted ground phrase ("Behind the chair, a hologram floats above a
+  round table") places what the subject floats above or stands on. "Side by side with" after
+  several things is their row and opens their with-part.
+- "A bench for parents", "six tatami mats in size" name no things; "a glowing crystal ball" is a
+  crystal ball (a phrase opening with a describing word gives way to a longer thing inside it).
 - Vague counts: a pair / a couple / both → 2; a few / several / some / a bare plural → 3;
   many / lots of → 5; ``each with a lamp``, ``every desk has a lamp`` and ``each surrounded by
   two chairs`` give that many per object of the group, placed by their own one.
@@ -124,7 +139,9 @@ def parse_scene(text: str) -> ParsedScene:
     ]
     expanded = _acyclic(_expand(reader), [o.id for o in objects])
     objects = fit_on_hosts(objects, expanded, catalogue, {i for g in reader.groups if g.sized for i in g.ids})
-    stated, repairs = repair_supports(objects, expanded, catalogue)
+    by_group = {g.index: g.ids for g in reader.groups}
+    carried = frozenset((a, b) for s, t in reader.carried for a in by_group[s] for b in by_group[t])
+    stated, repairs = repair_supports(objects, expanded, catalogue, carried)
     inferred = _infer_support(objects, stated, catalogue)
     relations = _acyclic(stated + inferred, [o.id for o in objects])
     indoor = _is_indoor([o.category for o in objects], text, catalogue, reader.places)

@@ -119,9 +119,11 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
     for kind, s, t, instance in reader.relations:
         src, tgt = groups[s], groups[t]
         paired = (s, t) in reader.pair_each or (t, s) in reader.pair_each
-        if s == t:  # "facing each other": the later ones face the first
+        if s == t:  # "facing each other", "across from each other": the later ones face the first
             if kind == "face to" and len(src.ids) > 1:
                 out += [ParsedRelation(i, "face to", src.ids[0]) for i in src.ids[1:]]
+            if kind == "opposite" and len(src.ids) > 1:
+                out += [ParsedRelation(i, r, src.ids[0]) for i in src.ids[1:] for r in ("in front of", "face to")]
             continue
         if instance is not None:
             tgt = replace(tgt, ids=[tgt.ids[instance]])

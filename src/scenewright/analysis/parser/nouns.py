@@ -130,6 +130,13 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
     i = 0
     while i < n:
         found = _match_at(toks, i)
+        if found and vocabulary.is_adjective(toks[i].text):
+            # "a glowing crystal ball": a phrase that opens with a describing word ("glowing
+            # crystal") gives way to a longer thing that starts inside it ("crystal ball")
+            longer = next((j for j in range(i + 1, found[0]) if (_match_at(toks, j) or (0,))[0] > found[0]), None)
+            if longer is not None:
+                i = longer
+                continue
         if found:
             raw.append((i, *found))
             i = found[0]
@@ -161,6 +168,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue
         if _role_after_as(toks, s):
             continue  # "four logs around it as seats", "a crate used as a table": a use, not a thing
+        if e + 1 < n and toks[e].text == "in" and toks[e + 1].text in _MEASURES:
+            continue  # "a room six tatami mats in size", "two cars in length": a measure, not things
         if _gerund_here(toks, s, e):
             continue  # "two children are building a snowman": a verb, not a building
         if _adverb_here(toks, s, e):
@@ -177,10 +186,11 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a mushroom-shaped lamp", "a goldfish-scooping stall": a look or a use, not a thing
         if entry is not None and singular(words[-1]) == words[-1] and _names_kind(toks, e):
             continue  # "a bear face", "a train compartment", "camel-hair tents": a kind, not a thing
-        if follow in _VENUES or follow in vocabulary.places or (
+        follow_two = f"{follow} {toks[e + 1].text}" if e + 1 < n else ""
+        if follow in _VENUES or follow in vocabulary.places or follow_two in vocabulary.places or (
             follow and singular(follow) in _VENUES and len(words) == 1
         ):
-            continue  # "a throne hall", "a flower shop", "a farmhouse kitchen": the place, not the thing
+            continue  # "a throne hall", "a farmhouse kitchen", "a rocket launch site": the place, not the thing
         if _is_place(toks, s, e, raw[k + 1 :]) or (
             follow in ("floor", "interior", "grounds") and singular(words[-1]) in vocabulary.places
         ):  # "an abandoned factory floor with a conveyor belt"
@@ -255,9 +265,13 @@ def _role_after_as(toks: list[_Tok], s: int) -> bool:
         j -= 1
     if j >= 1 and (toks[j - 1].text, toks[j].text) in _ABSENT_OWNER:
         return True  # "a bedroom belonging to a teenage girl": the owner is not in the scene
+    if j >= 1 and toks[j].text == "for" and not any(t.text in _DETERMINERS or t.text in _NUMBERS for t in toks[j + 1 : s]):
+        return True  # "a bench for parents", "a fridge for vaccines": whom or what it serves, no thing here
     return j >= 1 and toks[j].text == "as" and toks[j - 1].text not in ("well", "such", "same")
 
 
+#: After "in", what makes the noun before a unit of measure ("six tatami mats in size").
+_MEASURES = {"size", "length", "width", "area", "diameter", "height", "depth", "breadth", "span"}
 #: Word pairs after which a noun names an owner, not a thing of the scene.
 _ABSENT_OWNER = {("belonging", "to"), ("belongs", "to"), ("owned", "by"), ("run", "by")}
 

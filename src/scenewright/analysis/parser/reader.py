@@ -76,6 +76,8 @@ _FORMATION_NOUNS = {"row": "row", "line": "row", "rows": "rows", "lines": "rows"
                     "ring": "circle", "circle": "circle"}  # fmt: skip
 #: Phrase kinds that, with no object after them, name a part of the room ("along the back wall").
 _PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None, "foot of": None, "at": None}
+#: Phrase kinds that place a thing on the ground beside another (not on it, not above it).
+_GROUND_KINDS = ("left of", "right of", "in front of", "behind", "side of", "near", "far", "left", "right")
 #: Phrase kinds read as one of the scene's relations whatever they join.
 _KIND_RELATION = {"left": "left of", "right": "right of", "flank elliptic": "flank", "hanging from": "above",
                   "leaning on": "side of", "along": "side of"}  # fmt: skip
@@ -83,8 +85,9 @@ _KIND_RELATION = {"left": "left of", "right": "right of", "flank elliptic": "fla
 _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
 
 #: After these, a phrase right after the target places the target: "a lamp on a table left of the
-#: sofa", "astronauts beside a lab bench to the right of the console", "sniffs at a cooler near the truck".
-_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at")
+#: sofa", "astronauts beside a lab bench to the right of the console", "sniffs at a cooler near the
+#: truck", "dozes in an armchair by the fire" (the armchair is by the fire).
+_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in")
 #: Sides of a thing named by a possessive ("against its side"): the owner places.
 _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
 #: "Piled with" on a cart or a table is a load of things standing on it when they are this big or
@@ -92,6 +95,8 @@ _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", 
 _LOADS = {("piled", "with"), ("stacked", "with"), ("heaped", "with")}
 _LOAD_HOSTS = ("cart", "truck", "table", "round_table", "desk", "counter")
 _LOAD_SIZE = 0.3
+#: Things that show what follows their "of", even a definite one ("a statue of the king").
+_DEPICTIONS = ("statue", "hologram", "picture_frame", "sign", "billboard")
 #: Flat holders whose "of" things stand on them as objects ("a tray of bottles", "a pallet of tires").
 _FLAT_HOLDERS = ("plate", "pallet")
 #: Shapes that hold what they hold inside, out of the layout ("a greenhouse holds tomato plants").
@@ -103,13 +108,15 @@ _ROOFED_VEHICLES = ("car", "truck", "bus", "vehicle")
 #: Parts of a building that place a thing by the building itself when nothing else is named.
 _BUILDING_PARTS = ("roof", "rooftop", "porch", "step", "doorstep", "chimney", "eave", "gable", "veranda", "facade", "door", "doorway")
 #: Shapes one sits or floats *in* and is then on ("in the tub", "in the canoe").
-_VESSELS = ("bathtub", "boat", "bed", "cart", "basket", "crate", "pond", "sandbox")
+_VESSELS = ("bathtub", "boat", "bed", "cart", "basket", "crate", "pond", "sandbox", "hammock")
 #: What a thing is mounted on as a part of it ("lanterns on tall poles").
 _MOUNTS = ("pole", "stick", "mast", "stake", "spike")
 #: Verbs that join a subject to what it is, not to a thing it acts on.
 _COPULAS = ("is", "are", "was", "were", "be", "has", "have", "had", "seems", "looks")
 #: Pronouns that name a person or an animal.
 _PERSONAL = ("him", "her", "himself", "herself")
+#: Possessives of people and the pronoun that names their owner ("at his feet" → him).
+_PERSON_POSSESSIVES = {"his": "him", "her": "her", "their": "them living", "my": "him", "your": "him"}
 #: Categories and shapes of living things ("him", "her" name one of them).
 _LIVING = frozenset({"figure", "animal", "bird", "robot"})
 
@@ -131,6 +138,12 @@ class _Reader:
         self.history: list[int] = []  # groups in the order earlier clauses mentioned them
         self.instance: dict[int, int | None] = {}  # mention start → instance it names
         self._target_start = -1
+        #: The body part the last target was read from names this relation to its person, if any.
+        self._body_part: str | None = None
+        #: The part word of the last target read through its owner ("its back" → "back").
+        self._part: str | None = None
+        #: (thing, person) groups where the text puts the thing on a part of the person.
+        self.carried: set[tuple[int, int]] = set()
         #: Place words that set the scene rather than stand in it ("a hangar with a spaceship").
         self.places: list[str] = []
         #: Group → the part of the room the text puts it in (wall, corner, centre, back, front).
@@ -251,6 +264,9 @@ class _Reader:
         taken = {k for m in mentions for k in range(m.start, m.end)}
         starts = {m.start for m in mentions}
         self.rel_at = {r.start: r for r in _find_relations(toks, taken) if r.kind != "at" or self._names_thing(r.end, starts)}
+        self._rows_then_with(mentions)
+        #: Mentions the text puts on a wall ("a luggage rack on the wall"): hung, so "above" holds.
+        self.on_wall = {m.start for m in mentions if self._on_wall_after(m.end)}
         self._read_looks(mentions)
         self.by_start = {m.start: m for m in mentions if not m.content}
         self.content_at = {k for m in mentions if m.content for k in range(m.start, m.end)}
@@ -260,6 +276,7 @@ class _Reader:
             last_rels: list[tuple[str, list[int]]] = []
             for ci, (cs, ce) in enumerate(self._merge_lists(sentence)):
                 c = _Clause(first=ci == 0)
+                before = len(self.relations)
                 self._clause(c, cs, ce, prev_subject)
                 if c.fronted:
                     srcs = c.main_groups
@@ -270,7 +287,7 @@ class _Reader:
                             if each:  # "beside every table stand two chairs"
                                 self._per_each(srcs[:1], targets[0])
                             for t in targets:
-                                self._relate(kind, srcs, t)
+                                self._relate(kind, self._beneath(kind, srcs, before), t)
                         c.rels = [(kind, targets) for kind, targets, _ in c.fronted]
                     else:
                         pending = [(kind, targets) for kind, targets, _ in c.fronted]
@@ -279,7 +296,7 @@ class _Reader:
                     subjects = c.subjects or c.main_groups[:1]
                     for kind, targets in pending:
                         for t in targets:
-                            self._relate(kind, subjects, t)
+                            self._relate(kind, self._beneath(kind, subjects, before), t)
                     pending = []
                 elif not c.produced and c.groups and last_rels and self._is_list(cs, ce, strict=True):
                     # "On the desk there is a lamp, a laptop and a mug": the list shares the relation
@@ -295,6 +312,39 @@ class _Reader:
         held = [("on", by_start[s].group, by_start[h].group, None) for s, h in self.held_of
                 if by_start[s].group >= 0 and by_start[h].group >= 0]  # fmt: skip
         self.relations[:0] = held  # before any other support the list gave them
+
+    def _on_wall_after(self, end: int) -> bool:
+        """"... on the wall", "mounted on the back wall", "hangs on a wall" right after a noun."""
+        words = [t.text for t in self.toks[end : end + 6]]
+        k = 1 if words[:1] and words[0] in _HANG_VERBS else 0
+        if words[k : k + 1] != ["on"]:
+            return False
+        for w in words[k + 1 : k + 5]:
+            if w in ("wall", "walls"):
+                return True
+            if not w[:1].isalpha():
+                return False
+        return False
+
+    def _beneath(self, kind: str, subjects: list[int], since: int) -> list[int]:
+        """What a fronted phrase of the ground ("Behind the chair, ...") places: each subject,
+        or what the subject floats above or stands on in its own clause ("a hologram floats
+        above a round table": the table is behind the chair)."""
+        if kind not in _GROUND_KINDS:
+            return subjects
+        under = {r[1]: r[2] for r in self.relations[since:] if r[0] in ("on", "above") and r[2] not in subjects}
+        return list(dict.fromkeys(under.get(g, g) for g in subjects))
+
+    def _rows_then_with(self, mentions: list[_Mention]) -> None:
+        """"Two food trucks are parked side by side with three picnic tables in front of them":
+        after several things, "side by side" is their row and the "with" opens their with-part;
+        after one thing ("a bench side by side with a table") it is beside the next."""
+        for start, rel in list(self.rel_at.items()):
+            if [t.text for t in self.toks[start : rel.end]] != ["side", "by", "side", "with"]:
+                continue
+            before = [m for m in mentions if m.end <= start and start - m.end <= 5]
+            if before and _is_plural(self.toks, before[-1]):
+                self.rel_at[start] = _Rel("row", start, start + 3)
 
     def _read_looks(self, mentions: list[_Mention]) -> None:
         """Each noun's look written after it; a catalogue noun inside a "made of" look is its
@@ -358,8 +408,8 @@ class _Reader:
             self.held_of.append((m.start, prev.start))  # "a tray of medicine bottles": bottles on the tray
             return False
         holder = prev.category in _CONTENT_HEADS or prev.category in ("container", "tool")
-        if w == "of" and prev.end == j and holder and not m.definite:
-            return True  # "a vase of tulips", "a statue of a horse", "a box of tools"
+        if w == "of" and prev.end == j and holder and (not m.definite or prev.category in _DEPICTIONS):
+            return True  # "a vase of tulips", "a statue of a horse", "a hologram of the star map"
         if w == "on" and j - prev.end <= 2 and singular(m.phrase.split()[-1].lower()) in _MOUNTS:
             return True  # "a windsock on a tall pole", "a flag flutters on a pole": the pole is its part
         plant = self.catalogue[prev.category].shape in ("potted_plant", "bush", "flower_bed")
@@ -442,13 +492,25 @@ class _Reader:
     def _target_at(self, pos: int, ce: int) -> tuple[list[int] | str | None, int]:
         """The noun phrase (or pronoun) right after a relation phrase, and where it ends."""
         toks = self.toks
+        self._body_part = self._part = None
+        body = self._body_part_at(pos, ce, self.by_start)
+        if body is not None:
+            return body
+        # "on one of its branches": the part of one owner, as "on its branch"
+        lead = pos + 2 if [t.text for t in toks[pos : pos + 2]] == ["one", "of"] else pos
         j = pos
         while j < ce and j - pos < 6:
             if j in self.by_start:
                 m = self.by_start[j]
                 self._target_start = m.start
-                owner = _OWNER_PRONOUNS.get(toks[pos].text) if pos < ce else None
+                owner = _OWNER_PRONOUNS.get(toks[lead].text) if lead < ce else None
+                people = self._people_own() if owner == "them" else None
+                if people is not None:  # "two teenagers sit on their motorbikes": people's things are things,
+                    owner = None  # one each when the text gives no count
+                    if m.group < 0 and not m.counted and _is_plural(toks, m):
+                        m.count = self.groups[people].count
                 if owner and m.group < 0 and not any(g.category == m.category for g in self.groups):
+                    self._part = singular(toks[m.end - 1].text)
                     return owner, m.end  # "pumpkins on its counter": the stall's own counter is the stall
                 g = self._resolve(m, self.size_of.get(m.start, []))
                 return ([g] if g >= 0 else None), m.end
@@ -461,6 +523,8 @@ class _Reader:
                 return "each other", j + 2
             if w in ("each", "every") and j + 1 < ce and toks[j + 1].text == "one":
                 return "each one", j + 2  # "a chair in front of each one": one per member
+            if w == "one" and j > pos and toks[j - 1].text not in _NUMBERS and (j + 1 >= ce or toks[j + 1].text != "of"):
+                return "that one", j + 1  # "at the foot of the tallest one": one of a group named before
             # a noun, not a verb, after a determiner or a count ("its walls", "two rows of")
             after_determiner = j > pos and (toks[j - 1].text in _DETERMINERS or toks[j - 1].text in _NUMBERS)
             if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
@@ -472,12 +536,41 @@ class _Reader:
         building = self._building_of_part(pos, j)
         if building is not None:
             return [building], j  # "mounted on the roof", "beside its door", "on the shop's roof"
-        owner = _OWNER_PRONOUNS.get(toks[pos].text) if pos < ce else None
-        if owner and j > pos + 1:
+        owner = _OWNER_PRONOUNS.get(toks[lead].text) if lead < ce else None
+        if owner and j > lead + 1:
+            self._part = singular(toks[j - 1].text)
             return owner, j  # "above its door": a part of its owner places by the owner itself
-        if owner and pos + 1 < ce and toks[pos + 1].text in _OWNER_PARTS:
-            return owner, pos + 2  # "piled against its side": by the owner
+        if owner and lead + 1 < ce and toks[lead + 1].text in _OWNER_PARTS:
+            self._part = toks[lead + 1].text
+            return owner, lead + 2  # "piled against its side": by the owner
         return None, pos
+
+    def _people_own(self) -> int | None:
+        """The group "their" most likely names when it is people or animals: the latest group
+        of several, when living (what such owners have is a thing of its own, not a part like a
+        roof)."""
+        several = [g.index for g in self.groups if g.count > 1]
+        return several[-1] if several and self._living(several[-1]) else None
+
+    def _body_part_at(self, pos: int, ce: int, starts) -> tuple[str, int] | None:
+        """"on her knees", "at his feet", "in their arms": a part of a person places by the
+        person ("her" → the woman); the part's relation (carried on, or near) is kept for
+        :meth:`_relation`."""
+        toks = self.toks
+        k = pos
+        while k < ce and toks[k].text in ("one", "of", "both"):
+            k += 1  # "on one of her knees"
+        if k + 1 >= ce or toks[k].text not in _PERSON_POSSESSIVES:
+            return None
+        j = k + 1
+        while j < ce - 1 and j - k <= 2 and load_vocabulary().is_adjective(toks[j].text):
+            j += 1  # "at her tiny feet"
+        part = toks[j].text if j < ce else ""
+        relation = load_vocabulary().body_parts.get(part)
+        if relation is None or j in starts:  # "on her back porch": a thing named, not a part
+            return None
+        self._body_part = relation
+        return _PERSON_POSSESSIVES[toks[k].text], j + 1
 
     def _building_of_part(self, pos: int, end: int) -> int | None:
         """The building (or vehicle) a part of one names when no thing is named ("on the roof",
@@ -621,11 +714,45 @@ class _Reader:
             return False
         return any(_is_verb(w) and w not in _COPULAS for w in gap)
 
-    def _person(self, c: _Clause, srcs: list[int]) -> list[int]:
-        """Whom "him" / "her" names: the clause's own living subject, else the latest living
-        thing mentioned before."""
-        order = [*c.subjects, *c.main_groups, *reversed(c.groups), *reversed(self.history)]
-        return next(([g] for g in order if g not in srcs and self._living(g)), [])
+    def _part_owner(self, part: str | None, targets: list[int], candidates: list[int], srcs: list[int]) -> list[int]:
+        """The owner of a part named with "its" ("an owl perched on its back"): what the pronoun
+        resolved to when that can have the part, else the latest candidate that can (the
+        armchair, not the fireplace named after it)."""
+        owners = load_vocabulary().part_owners.get(part or "")
+        if not owners or not targets:
+            return targets
+
+        def has(g: int) -> bool:
+            category = self.groups[g].category
+            return category in owners or self.catalogue[category].shape in owners
+
+        if any(has(t) for t in targets):
+            return [t for t in targets if has(t)]  # "a bookcase and a piano ..., on its lid": the piano
+        return next(([g] for g in candidates if g not in srcs and has(g)), targets)
+
+    def _one_of(self, c: _Clause, srcs: list[int], prev_subject: list[int]) -> list[int]:
+        """The group "the tallest one", "the nearest one" picks from: the subject of this clause
+        or the one before when it is several ("three stalls ..., and a drone hovers above the
+        nearest one"), else the latest group of several mentioned."""
+        order = [*c.subjects, *prev_subject, *reversed(c.groups), *reversed(self.history)]
+        return next(([g] for g in order if g not in srcs and self.groups[g].count > 1), [])
+
+    def _person(self, c: _Clause, srcs: list[int], word: str) -> list[int]:
+        """Whom "him" / "her" (or "their" before a body part) names: the clause's own living
+        subject, else the latest living thing mentioned before, of a sex the pronoun agrees
+        with ("her" is not the dad) and, for "their", several."""
+        # "..., with his cat at his feet": the with-part's owner before the things it lists
+        order = [*c.subjects, *(c.head or []), *c.main_groups, *reversed(c.groups), *reversed(self.history)]
+        vocabulary = load_vocabulary()
+
+        def fits(g: int) -> bool:
+            group = self.groups[g]
+            return (
+                g not in srcs and self._living(g) and vocabulary.agrees(word, group.name.split()[-1])
+                and (word != "them living" or group.count > 1)
+            )  # fmt: skip
+
+        return next(([g] for g in order if fits(g)), [])
 
     def _living(self, g: int) -> bool:
         """A person or an animal (catalogue dogs and horses too, guessed figures and animals)."""
@@ -660,6 +787,9 @@ class _Reader:
         toks = self.toks
         kind = rel.kind
         target, end = self._target_at(rel.end, ce)
+        body, part = self._body_part, self._part  # "on her knees": by the person, as the part says
+        if body == "near" or (body == "on" and kind in ("on", "on top", "in")):
+            kind = body
         between = [t.text for t in toks[last_event_end : rel.start]]
         # sources: the noun the phrase follows when nothing but adverbs lies between
         srcs: list[int]
@@ -708,6 +838,8 @@ class _Reader:
                         self.lines.setdefault(g, lines)
                 elif place:
                     self.anchors.setdefault(g, place.removeprefix("anchor "))
+            if kind.startswith("anchor ") and toks[rel.end - 1].text != "of":
+                return rel.end  # "In the centre a huge spellbook floats ...": the noun after is the subject
             return end
         if kind in ("its left", "its right") and target is None:
             kind, target = ("left of" if kind == "its left" else "right of"), "it"
@@ -719,9 +851,11 @@ class _Reader:
             targets = self._pronoun("them", c, srcs, list(c.last_target))
             if targets:
                 self._per_each([s for s in srcs if s in c.groups], targets[0])
-        elif target in _PERSONAL:
+        elif target == "that one":
+            targets = self._one_of(c, srcs, prev_subject)
+        elif target in _PERSONAL or target == "them living":
             # "a pirate stands behind the chest with a shovel beside him": the person, not the chest
-            targets = self._person(c, srcs)
+            targets = self._person(c, srcs, target)
         elif isinstance(target, str) and target != "each other":
             # "a bench in front of the swing, facing it": the clause's own last target first.
             # then the subject before ("a wagon waits behind the fountain, and a donkey is tied to
@@ -746,6 +880,7 @@ class _Reader:
                 targets = single[:1] or targets
             elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
                 targets = c.wsub_before[-1:]  # "... and a computer beside it": beside the till
+            targets = self._part_owner(part, targets, [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)], srcs)
         elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
             # "a bed with a nightstand on either side": a with-thing's side is its head's
             owner = list(c.head) if c.head is not None and srcs == c.wsub else []
@@ -796,12 +931,13 @@ class _Reader:
                 if self.groups[g].rests == "surface":
                     self.groups[g].rests = "hanging"
         if targets == "each other":
-            each_other = "face to" if kind == "face to" else "near"
+            # "face each other", "sit across from each other" (in front of and facing, each way)
+            each_other = kind if kind in ("face to", "opposite") else "near"
             for s in srcs:
                 self.relations.append((each_other, s, s, None))
             if len(srcs) == 2:  # "a goldfish stall and a takoyaki stall face each other": two groups
                 self._relate(each_other, srcs[1:], srcs[0])
-                if each_other == "face to":
+                if each_other in ("face to", "opposite"):
                     self._relate(each_other, srcs[:1], srcs[1])
             c.produced = True
             return end
@@ -812,6 +948,8 @@ class _Reader:
             self._per_each([s for s in srcs if s in c.groups], targets[0])
         for t in targets:
             self._relate(kind, srcs, t, hang, instance)
+            if body == "on":  # a person holds nothing on top, but carries what is on a knee or an arm
+                self.carried.update((s, t) for s in srcs)
         c.produced = True
         c.rels = [(kind, targets)]
         c.last_kind = "between" if rel.kind == "between" else kind  # "between two trees to the left of"
@@ -827,8 +965,8 @@ class _Reader:
         k = start
         while k < len(self.toks) and k - start < 4:
             w = self.toks[k].text
-            if k in starts or w in ("it", "them"):
-                return True
+            if k in starts or w in ("it", "them") or (k == start and self._body_part_at(k, len(self.toks), starts)):
+                return True  # "at each desk", "at it", "at his feet"
             if not (w in _DETERMINERS or w in ("each", "every") or (w[:1].isalpha() and w not in _STOP)):
                 return False
             k += 1
@@ -885,8 +1023,9 @@ class _Reader:
         if kind == "over":
             # a tree leaning over a pond stands by it; a lamp or a lantern over a table hangs above it
             return "above" if hang or src.rests in ("hanging", "surface") else "near"
-        if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not hang:
-            return "near"  # a tree "above" a pond cannot float: read it as near
+        walled = any(m.group == s for k, m in self.by_start.items() if k in self.on_wall)
+        if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not (hang or walled):
+            return "near"  # a tree "above" a pond cannot float: read it as near (a rack on the wall can hang)
         if kind == "under":
             tgt = self.catalogue[self.groups[t].category]
             return "under flat" if self.groups[s].size[2] < 0.1 and tgt.size[2] < 1.5 else "near"
@@ -903,7 +1042,8 @@ class _Reader:
                 return "left of"  # the head of a table is one of its ends
             return "near"
         if kind == "in":  # "a man in a rocking chair", "a duck floats in the tub": on it
-            holds = target.shape in _SEATS or target.support or target.shape in _VESSELS
+            vessel = target.shape in _VESSELS or self.groups[t].category in _VESSELS
+            holds = target.shape in _SEATS or target.support or vessel
             return "on" if holds and target.shape not in _ENCLOSURES and target.size[2] <= 2.5 else "no relation"
         if kind == "hanging from":  # from a beam or a shelf: above it; from a tall tree: beside it
             return "above" if target.size[2] <= 2.5 else "near"

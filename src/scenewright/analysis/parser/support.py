@@ -175,15 +175,18 @@ def can_hold(host: ParsedObject, thing: ParsedObject, catalogue) -> bool:
 
 
 def repair_supports(
-    objects: list[ParsedObject], relations: list[ParsedRelation], catalogue
+    objects: list[ParsedObject], relations: list[ParsedRelation], catalogue,
+    carried: frozenset[tuple[str, str]] = frozenset(),
 ) -> tuple[list[ParsedRelation], list[str]]:
     """Each ``on`` whose host cannot hold the thing becomes ``side of`` (what the text most
-    likely meant: "a dinosaur skeleton on a barrel" stands beside it), with a note of the repair."""
+    likely meant: "a dinosaur skeleton on a barrel" stands beside it), with a note of the repair.
+    What the text puts on a part of a person (``carried``: "a laptop on her knees") stays on them."""
     by_id = {o.id: o for o in objects}
     out: list[ParsedRelation] = []
     notes: list[str] = []
     for r in relations:
-        if r.relation == "on" and not can_hold(by_id[r.target], by_id[r.source], catalogue):
+        held = (r.source, r.target) in carried
+        if r.relation == "on" and not held and not can_hold(by_id[r.target], by_id[r.source], catalogue):
             notes.append(f"{r.source} on {r.target}: {r.target} cannot hold it; placed beside it instead")
             r = ParsedRelation(r.source, "side of", r.target, r.inferred)
         out.append(r)

@@ -11,7 +11,7 @@ without turning "a sunny afternoon" into an object. Objects read this way are *g
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import lru_cache
 from importlib import resources
 
@@ -46,6 +46,24 @@ class Vocabulary:
     longest: int
     #: Phrases that beat the catalogue noun they end with ("arcade cabinet").
     overrides: frozenset[tuple[str, ...]] = frozenset()
+    #: Person words "she"/"her" and "he"/"him" can name ("grandmother", "wizard").
+    female: frozenset[str] = frozenset()
+    male: frozenset[str] = frozenset()
+    #: Body parts after "his"/"her"/"their": the relation they give to that person
+    #: (``on``: "a laptop on her knees"; ``near``: "a dog at his feet").
+    body_parts: dict[str, str] = field(default_factory=dict)
+    #: Part word → the categories or shapes that have such a part ("its back": a seat's).
+    part_owners: dict[str, frozenset[str]] = field(default_factory=dict)
+
+    def agrees(self, pronoun: str, head: str) -> bool:
+        """Whether "she"/"her" or "he"/"him"/"his" can name a thing whose name ends in ``head``:
+        a person word of the other sex cannot; any other word can."""
+        w = head.lower()
+        if pronoun in ("her", "hers", "herself", "she"):
+            return w not in self.male
+        if pronoun in ("him", "his", "himself", "he"):
+            return w not in self.female
+        return True
 
     def over_catalogue(self, tokens: tuple[str, ...]) -> bool:
         return tokens in self.overrides or (*tokens[:-1], singular(tokens[-1])) in self.overrides
@@ -102,6 +120,7 @@ def _validate(raw: dict) -> Vocabulary:
         rests = spec[4] if len(spec) > 4 else catalogue[name].rests
         entries[tuple(words(phrase))] = Entry(name, (float(size[0]), float(size[1]), float(size[2])), rests)
     lists = raw["not_things"]
+    people = raw.get("people", {})
     not_things = frozenset(w for kind in lists.values() for w in kind)
     for family in raw["suffixes"].values():
         if family not in catalogue:
@@ -116,6 +135,13 @@ def _validate(raw: dict) -> Vocabulary:
         suffixes=tuple(sorted(raw["suffixes"].items(), key=lambda kv: -len(kv[0]))),
         longest=max(len(k) for k in entries),
         overrides=frozenset(tuple(words(p)) for p in raw.get("over_catalogue", ())),
+        female=frozenset(people.get("female", ())),
+        male=frozenset(people.get("male", ())),
+        body_parts={
+            **{w: "on" for w in people.get("body_parts_on", ())},
+            **{w: "near" for w in people.get("body_parts_near", ())},
+        },
+        part_owners={k: frozenset(v) for k, v in raw.get("part_owners", {}).items() if k != "about"},
     )
 
 

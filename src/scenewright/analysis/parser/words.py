@@ -49,7 +49,7 @@ _DIMENSIONS = {"wide": "x", "width": "x", "across": "x", "long": "long", "length
 #: Containers and depictions: what follows their "of" is content or subject, not an object.
 _CONTENT_HEADS = {"vase", "bowl", "basket", "plate", "bottle", "cup", "pot", "crate", "cart", "statue",
                   "picture_frame", "planter", "sign", "billboard", "shop_shelf", "bookshelf", "flask",
-                  "barrel", "shipping_container", "flower_bed", "cauldron", "sandbox"}  # fmt: skip
+                  "barrel", "shipping_container", "flower_bed", "cauldron", "sandbox", "hologram"}  # fmt: skip
 _CONTENT_MARKERS = {("full", "of"), ("filled", "with"), ("packed", "with"), ("overflowing", "with"),
                     ("covered", "in"), ("covered", "with"), ("stacked", "with"), ("heaped", "with"),
                     ("stocked", "with"), ("lined", "with"), ("piled", "with"), ("overflow", "with")}  # fmt: skip
