@@ -730,6 +730,9 @@ class _Search:
         detail = [
             f"'{c}' {rel.describe(c.relation, float(m[j]))}" for (c, _, _), m in zip(pairs, misses) if m[j] > 0
         ]
+        # The report names every constraint this pose leaves unmet, besides those that explained
+        # the failure: the ones it misses, and the facings of objects that cannot turn to it.
+        missed = [c for (c, _, _), m in zip(pairs, misses) if m[j] > 0]
         if self.area is not None and self.outside_by(boxes)[j] > 0:
             detail.append(self.misfit_detail(boxes[j : j + 1]))
         if self.downstream(item):
@@ -738,12 +741,15 @@ class _Search:
             if not self.still_holds(f, node.turns[f][k : k + 1], exclude=i)[0]:
                 del node.turns[f]  # it stays as it is, not facing this object
                 detail.append(f"'{self.objects[f].id} face to {obj.id}' not met: it cannot turn there")
+                missed += [c for c, t in self.items[f].own if t == i and c.relation == "face to"]
         self.place_at(node, k)
         if not detail:
             return None, node.cursor  # the wider set found a pose that meets everything
         self.missed.add(i)
         nearest = f"placed at ({p[0]:.2f}, {p[1]:.2f}, {p[2]:.2f}): " + "; ".join(detail)
-        return replace(failure, nearest=nearest), node.cursor
+        named = {c.key() for c in failure.failed}
+        failed = failure.failed + [c for c in missed if c.key() not in named]
+        return replace(failure, failed=failed, nearest=nearest), node.cursor
 
 
 def solve(
