@@ -94,6 +94,9 @@ NARROW_CHECKS = 600
 #: Poses of one floor object that may be rejected for cutting a walking path in a room before
 #: the next free one is taken all the same (the repair pass and the report take it from there).
 WALK_REJECTS = 40
+#: Relations of one side that a turn can break: checked on the box an object sweeps turning
+#: while it waits to face an object placed after it.
+SWEPT = ("left of", "right of", "in front of", "behind", "side of")
 #: Yaws tried for an object whose orientation nothing fixes, besides the model's.
 AXIS_YAWS = (0.0, 90.0, 180.0, 270.0)
 
@@ -433,14 +436,23 @@ class _Search:
 
         # An object facing this one turns to face each candidate: relations to it are to it turned.
         turns = {f: _yaws_towards(self.pos[f][:2], centres[:, :2]) for f in self.followers[item.index] if self.posed[f]}
+        # One that will turn to face an object placed later may take any yaw then: its one-sided
+        # relations and the bounds must hold for the box it sweeps turning, or a pose flush
+        # against its target leaves it no room to turn (two chairs facing each other on one
+        # side of a table).
+        swept = None
+        if waiting is not None:
+            reach = float(np.hypot(*item.foot))
+            swept = Boxes.at(centres, np.array([reach, reach, item.half_z]), yaws)
         sat = [
-            rel.holds(c.relation, boxes, tb) if tb is not None else rel.holds(c.relation, sb, boxes)
+            rel.holds(c.relation, swept if swept is not None and c.relation in SWEPT else boxes, tb)
+            if tb is not None else rel.holds(c.relation, sb, boxes)
             for c, tb, sb in self.pairs(item, turns, centres)
         ]
         ok = np.logical_and.reduce(sat) if sat else np.ones(len(xy), dtype=bool)
         for f, y in turns.items():  # and its own relations must survive the turn
             ok &= self.still_holds(f, y, exclude=item.index)
-        return _Poses(centres, yaws, boxes, sat, ok, self.inside(boxes), turns)
+        return _Poses(centres, yaws, boxes, sat, ok, self.inside(boxes if swept is None else swept), turns)
 
     def crowded(self) -> bool:
         """Whether the floor inside the bounds is so full that free positions are best found
