@@ -9,8 +9,8 @@ from hypothesis import strategies as st
 from scenewright.layout import audit, check, colliding_pairs, feedback_text, solve
 from scenewright.bench.layout import independent_collisions
 from scenewright.testing.problems import hard_problem, planted_problem
-from scenewright.layout.relations import Boxes
-from scenewright.scene import Constraint, SceneObject, Vec3
+from scenewright.layout.relations import Boxes, check_room
+from scenewright.scene import Constraint, Room, SceneObject, Vec3
 
 
 def box(oid, x=0.0, y=0.0, z=None, size=(1.0, 1.0, 1.0), yaw=0.0):
@@ -53,7 +53,7 @@ def test_ground_default_and_vertical_relations():
     t, cp, lp = result.objects
     assert t.position.z == pytest.approx(0.375)  # nothing puts the table anywhere but the ground
     assert check("on", cp, t) and check("above", lp, t)
-    assert lp.position.z - 0.15 - 0.75 >= 2.0 - 1e-9
+    assert lp.position.z - 0.375 >= 2.0 - 1e-9 and lp.position.z - 0.15 > 0.75
 
 
 def test_face_to_turns_the_source_and_other_yaws_are_kept():
@@ -274,3 +274,40 @@ def test_the_layout_does_not_depend_on_machine_load():
         hog.kill()
         hog.wait()
     assert loaded.objects == idle.objects and loaded.report.nodes == idle.report.nodes
+
+
+def _room_case(table_size, lamp_size, relation):
+    room = Room.rectangle(5.0, 6.0)
+    table = box("table", 1.0, -1.0, size=table_size)
+    lamp = box("lamp", -1.5, 2.0, z=1.0, size=lamp_size)
+    cons = [c(relation, "lamp", "table"), {"relation": "on ceiling", "source": "lamp", "target": "ceiling"}]
+    return room, solve([table, lamp], cons, room=room, seed=0)
+
+
+def test_a_lamp_hung_from_the_ceiling_above_a_table_hangs_over_it():
+    room, result = _room_case((1.2, 0.8, 0.75), (0.4, 0.4, 0.4), "above")
+    assert result.report.complete, result.report
+    table, lamp = result.objects
+    assert check("above", lamp, table) and check_room("on ceiling", lamp, room, "ceiling")
+
+
+def test_a_lamp_hung_from_the_ceiling_near_a_table_hangs_over_it():
+    room, result = _room_case((1.2, 0.8, 0.75), (0.4, 0.4, 0.4), "near")
+    table, lamp = result.objects
+    assert check_room("on ceiling", lamp, room, "ceiling")
+    assert check("above", lamp, table)  # started from the table's centre, not its own guess
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.floats(0.4, 2.0), st.floats(0.4, 2.0), st.floats(0.3, 1.2), st.floats(0.1, 0.8), st.floats(0.1, 0.6))
+def test_hung_above_holds_whenever_the_ceiling_leaves_room_for_it(tx, ty, tz, lxy, lz):
+    room, result = _room_case((tx, ty, tz), (lxy, lxy, lz), "above")
+    table, lamp = result.objects
+    # Hung from the 2.7 m ceiling its centre is at 2.7 - lz / 2: above holds iff that is 2 m over
+    # the table's centre and its bottom clears the table's top.
+    feasible = 2.7 - lz / 2 - tz / 2 >= 2.0 and 2.7 - lz > tz + 0.002
+    assert result.report.complete == feasible, result.report
+    if feasible:
+        assert check("above", lamp, table) and check_room("on ceiling", lamp, room, "ceiling")
+    else:
+        assert {f.relation for u in result.report.unplaced for f in u.failed} & {"above", "on ceiling"}

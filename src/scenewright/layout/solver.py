@@ -363,18 +363,23 @@ class _Search:
         """
         obj = item.obj
         own = self.active(item)
-        anchor = self.anchor[item.index] if anchor is None else anchor
         area = self.area if bounded else None
         ranked = sorted(own, key=lambda ct: PRIORITY[ct[0].relation])
         primary = ranked[0] if ranked else None
         relation, target = (primary[0].relation, self.box(primary[1])) if primary else ("face to", None)
         # A room relation leads unless the object rests on another: a wall one fixes position
-        # and yaw, "on ceiling" fixes the height.
+        # and yaw, "on ceiling" fixes the height (and "above" then only the plan position).
         wall = next(((c, t) for c, t in item.walls if c.relation != "on ceiling"), None)
         ceiling = next(((c, t) for c, t in item.walls if c.relation == "on ceiling"), None)
-        resting = primary is not None and relation in ("on", "above")
+        resting = primary is not None and relation == "on"
         if ceiling is not None and not resting and primary is None:
             relation, target = "on ceiling", ceiling[1]
+        if anchor is None:
+            anchor = self.anchor[item.index]
+            if ceiling is not None and relation == "near":
+                # A thing hung near another hangs over it first (a lamp over its table), as a
+                # designer would hang it: its candidates spread from the target's centre.
+                anchor = np.append(target.centre[:2], anchor[2])
         facing = next((t for c, t in ranked if c.relation == "face to"), None)
         waiting = next((t for c, t in item.own if c.relation == "face to" and not self.posed[t]), None)
         if facing is not None or waiting is not None:
