@@ -311,3 +311,19 @@ def test_hung_above_holds_whenever_the_ceiling_leaves_room_for_it(tx, ty, tz, lx
         assert check("above", lamp, table) and check_room("on ceiling", lamp, room, "ceiling")
     else:
         assert {f.relation for u in result.report.unplaced for f in u.failed} & {"above", "on ceiling"}
+
+
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.floats(2.5, 5.0), st.floats(-3.0, 3.0), st.floats(-4.0, 4.0), st.floats(-4.0, 4.0), st.integers(0, 100))
+def test_a_thing_right_of_one_and_left_of_another_stands_in_their_gap(dx, dy, ax, ay, seed):
+    # The reader writes "a bin between the machine and the stall" as right of one, left of the
+    # other and near both; the bin's own first guess (ax, ay) may be anywhere.
+    from scenewright.evaluation.stated import between
+
+    objects = [box("a", -dx / 2, -dy / 2, size=(0.8, 0.8, 1.0)), box("b", dx / 2, dy / 2, size=(0.8, 0.8, 1.0)),
+               box("bin", ax, ay, size=(0.4, 0.4, 0.6))]
+    cons = [c("right of", "bin", "a"), c("left of", "bin", "b"), c("near", "bin", "a"), c("near", "bin", "b")]
+    result = solve(objects, cons, bounds=(12.0, 12.0), fixed=["a", "b"], seed=seed)
+    assert result.report.complete
+    by = {o.id: o for o in result.objects}
+    assert between(by["bin"], by["a"], by["b"])

@@ -97,6 +97,8 @@ WALK_REJECTS = 40
 #: Relations of one side that a turn can break: checked on the box an object sweeps turning
 #: while it waits to face an object placed after it.
 SWEPT = ("left of", "right of", "in front of", "behind", "side of")
+#: The one-sided relations that put an object between two targets when it has both of a pair.
+OPPOSITE = ("right of", "left of", "in front of", "behind")
 #: Yaws tried for an object whose orientation nothing fixes, besides the model's.
 AXIS_YAWS = (0.0, 90.0, 180.0, 270.0)
 
@@ -376,10 +378,13 @@ class _Search:
             relation, target = "on ceiling", ceiling[1]
         if anchor is None:
             anchor = self.anchor[item.index]
+            gap = self.gap_between(own)
             if ceiling is not None and relation == "near":
                 # A thing hung near another hangs over it first (a lamp over its table), as a
                 # designer would hang it: its candidates spread from the target's centre.
                 anchor = np.append(target.centre[:2], anchor[2])
+            elif gap is not None:
+                anchor = np.append(gap, anchor[2])
         facing = next((t for c, t in ranked if c.relation == "face to"), None)
         waiting = next((t for c, t in item.own if c.relation == "face to" and not self.posed[t]), None)
         if facing is not None or waiting is not None:
@@ -458,6 +463,20 @@ class _Search:
         for f, y in turns.items():  # and its own relations must survive the turn
             ok &= self.still_holds(f, y, exclude=item.index)
         return _Poses(centres, yaws, boxes, sat, ok, self.inside(boxes if swept is None else swept), turns)
+
+    def gap_between(self, own: list[tuple[Constraint, int]]) -> np.ndarray | None:
+        """The midpoint (x, y) of two targets the object must stand on opposite sides of (right
+        of one, left of the other; in front of one, behind the other), if any: a thing between
+        two others, whose candidates then spread from the middle of the gap rather than from
+        anywhere the two half-planes meet."""
+        sides = {}
+        for c, t in own:
+            if c.relation in OPPOSITE:
+                sides.setdefault(c.relation, t)
+        for a, b in (("right of", "left of"), ("in front of", "behind")):
+            if a in sides and b in sides and sides[a] != sides[b]:
+                return (self.box(sides[a]).centre[:2] + self.box(sides[b]).centre[:2]) / 2.0
+        return None
 
     def crowded(self) -> bool:
         """Whether the floor inside the bounds is so full that free positions are best found
