@@ -314,10 +314,12 @@ def test_hung_above_holds_whenever_the_ceiling_leaves_room_for_it(tx, ty, tz, lx
 
 
 @settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(st.floats(2.5, 5.0), st.floats(-3.0, 3.0), st.floats(-4.0, 4.0), st.floats(-4.0, 4.0), st.integers(0, 100))
+@given(st.floats(2.5, 4.0), st.floats(-2.0, 2.0), st.floats(-4.0, 4.0), st.floats(-4.0, 4.0), st.integers(0, 100))
 def test_a_thing_right_of_one_and_left_of_another_stands_in_their_gap(dx, dy, ax, ay, seed):
     # The reader writes "a bin between the machine and the stall" as right of one, left of the
-    # other and near both; the bin's own first guess (ax, ay) may be anywhere.
+    # other and near both; the bin's own first guess (ax, ay) may be anywhere. (The pair stands
+    # close enough that the middle of the gap is within 2 m of both: farther apart, near + near
+    # cannot both hold.)
     from scenewright.evaluation.stated import between
 
     objects = [box("a", -dx / 2, -dy / 2, size=(0.8, 0.8, 1.0)), box("b", dx / 2, dy / 2, size=(0.8, 0.8, 1.0)),
