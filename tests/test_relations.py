@@ -83,16 +83,28 @@ def test_stacked_on_chain():
     assert violation("on", cup, table) == pytest.approx(0.05 - 0.002)
 
 
-def test_above_is_measured_bottom_to_top_with_footprint_overlap():
-    lamp = box("lamp", size=(0.4, 0.4, 0.3), z=1.0 + 2.0 + 0.15)
+def test_above_is_measured_centre_to_centre_without_contact_and_with_footprint_overlap():
+    # T's centre is at 0.5 m: "positioned 2 m above" it puts the source's centre at 2.5 m.
+    lamp = box("lamp", size=(0.4, 0.4, 0.3), z=0.5 + 2.0)
     assert check("above", lamp, T)
-    low = box("lamp", size=(0.4, 0.4, 0.3), z=1.0 + 1.99 + 0.15)
+    low = box("lamp", size=(0.4, 0.4, 0.3), z=0.5 + 1.99)
     assert not check("above", low, T)
     assert violation("above", low, T) == pytest.approx(0.01)
     aside = box("lamp", size=(0.4, 0.4, 0.3), x=0.8, z=3.5)
     assert not check("above", aside, T)
     overlapping = box("lamp", size=(0.4, 0.4, 0.3), x=0.69, z=3.5)
     assert check("above", overlapping, T)
+    # A pendant lamp under a 2.7 m ceiling over a 0.75 m table: above it.
+    table = box("table", size=(1.2, 0.8, 0.75))
+    assert check("above", box("lamp", size=(0.4, 0.4, 0.4), z=2.7 - 0.2), table)
+
+
+def test_above_never_touches_its_target():
+    tall = box("tall", size=(1.0, 1.0, 3.0))  # centre 1.5 m, top 3 m
+    resting = box("lamp", size=(0.4, 0.4, 1.0), z=3.0 + 0.5)  # centre 2 m higher, bottom on its top
+    assert not check("above", resting, tall) and check("on", resting, tall)
+    assert violation("above", resting, tall) == pytest.approx(0.002)
+    assert check("above", box("lamp", size=(0.4, 0.4, 1.0), z=3.0 + 0.51), tall)
 
 
 @pytest.mark.parametrize("angle", range(0, 360, 45))
@@ -144,7 +156,7 @@ def test_proposed_candidates_satisfy_their_relation(relation, tx, ty, sx, sy, ty
     size = Vec3(x=sx, y=sy, z=0.3)
     half = half_extents(size, Vec3())
     pts = propose(relation, half, target, np.array([ax, ay]), np.random.default_rng(seed))
-    z = {"on": 0.7 + 0.15, "above": 0.7 + 2.0 + 0.15}.get(relation, 0.15)
+    z = {"on": 0.7 + 0.15, "above": 0.35 + 2.0}.get(relation, 0.15)
     cands = Boxes.at(np.column_stack([pts, np.full(len(pts), z)]), half, np.zeros(len(pts)))
     ok = holds(relation, cands, target)
     if relation == "near":  # a bounding rectangle: most, not all, candidates hold

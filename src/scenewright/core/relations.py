@@ -19,7 +19,7 @@ BUFFER = 0.1  # m, relative relations
 NEAR = 2.0  # m, horizontal gap
 FAR = 8.0  # m, horizontal gap
 ON_GAP = 0.002  # m, clearance for "on"
-ABOVE = 2.0  # m, bottom of source to top of target
+ABOVE = 2.0  # m, centre of source over centre of target (not touching it)
 FACE_DEGREES = 10.0
 
 #: Solver priority by relation type: the first relation of an object in this order generates

@@ -94,6 +94,11 @@ NARROW_CHECKS = 600
 #: Poses of one floor object that may be rejected for cutting a walking path in a room before
 #: the next free one is taken all the same (the repair pass and the report take it from there).
 WALK_REJECTS = 40
+#: Relations of one side that a turn can break: checked on the box an object sweeps turning
+#: while it waits to face an object placed after it.
+SWEPT = ("left of", "right of", "in front of", "behind", "side of")
+#: The one-sided relations that put an object between two targets when it has both of a pair.
+OPPOSITE = ("right of", "left of", "in front of", "behind")
 #: Yaws tried for an object whose orientation nothing fixes, besides the model's.
 AXIS_YAWS = (0.0, 90.0, 180.0, 270.0)
 
@@ -360,18 +365,26 @@ class _Search:
         """
         obj = item.obj
         own = self.active(item)
-        anchor = self.anchor[item.index] if anchor is None else anchor
         area = self.area if bounded else None
         ranked = sorted(own, key=lambda ct: PRIORITY[ct[0].relation])
         primary = ranked[0] if ranked else None
         relation, target = (primary[0].relation, self.box(primary[1])) if primary else ("face to", None)
         # A room relation leads unless the object rests on another: a wall one fixes position
-        # and yaw, "on ceiling" fixes the height.
+        # and yaw, "on ceiling" fixes the height (and "above" then only the plan position).
         wall = next(((c, t) for c, t in item.walls if c.relation != "on ceiling"), None)
         ceiling = next(((c, t) for c, t in item.walls if c.relation == "on ceiling"), None)
-        resting = primary is not None and relation in ("on", "above")
+        resting = primary is not None and relation == "on"
         if ceiling is not None and not resting and primary is None:
             relation, target = "on ceiling", ceiling[1]
+        if anchor is None:
+            anchor = self.anchor[item.index]
+            gap = self.gap_between(own)
+            if ceiling is not None and relation == "near":
+                # A thing hung near another hangs over it first (a lamp over its table), as a
+                # designer would hang it: its candidates spread from the target's centre.
+                anchor = np.append(target.centre[:2], anchor[2])
+            elif gap is not None:
+                anchor = np.append(gap, anchor[2])
         facing = next((t for c, t in ranked if c.relation == "face to"), None)
         waiting = next((t for c, t in item.own if c.relation == "face to" and not self.posed[t]), None)
         if facing is not None or waiting is not None:
@@ -433,14 +446,37 @@ class _Search:
 
         # An object facing this one turns to face each candidate: relations to it are to it turned.
         turns = {f: _yaws_towards(self.pos[f][:2], centres[:, :2]) for f in self.followers[item.index] if self.posed[f]}
+        # One that will turn to face an object placed later may take any yaw then: its one-sided
+        # relations and the bounds must hold for the box it sweeps turning, or a pose flush
+        # against its target leaves it no room to turn (two chairs facing each other on one
+        # side of a table).
+        swept = None
+        if waiting is not None:
+            reach = float(np.hypot(*item.foot))
+            swept = Boxes.at(centres, np.array([reach, reach, item.half_z]), yaws)
         sat = [
-            rel.holds(c.relation, boxes, tb) if tb is not None else rel.holds(c.relation, sb, boxes)
+            rel.holds(c.relation, swept if swept is not None and c.relation in SWEPT else boxes, tb)
+            if tb is not None else rel.holds(c.relation, sb, boxes)
             for c, tb, sb in self.pairs(item, turns, centres)
         ]
         ok = np.logical_and.reduce(sat) if sat else np.ones(len(xy), dtype=bool)
         for f, y in turns.items():  # and its own relations must survive the turn
             ok &= self.still_holds(f, y, exclude=item.index)
-        return _Poses(centres, yaws, boxes, sat, ok, self.inside(boxes), turns)
+        return _Poses(centres, yaws, boxes, sat, ok, self.inside(boxes if swept is None else swept), turns)
+
+    def gap_between(self, own: list[tuple[Constraint, int]]) -> np.ndarray | None:
+        """The midpoint (x, y) of two targets the object must stand on opposite sides of (right
+        of one, left of the other; in front of one, behind the other), if any: a thing between
+        two others, whose candidates then spread from the middle of the gap rather than from
+        anywhere the two half-planes meet."""
+        sides = {}
+        for c, t in own:
+            if c.relation in OPPOSITE:
+                sides.setdefault(c.relation, t)
+        for a, b in (("right of", "left of"), ("in front of", "behind")):
+            if a in sides and b in sides and sides[a] != sides[b]:
+                return (self.box(sides[a]).centre[:2] + self.box(sides[b]).centre[:2]) / 2.0
+        return None
 
     def crowded(self) -> bool:
         """Whether the floor inside the bounds is so full that free positions are best found
@@ -732,6 +768,9 @@ class _Search:
         detail = [
             f"'{c}' {rel.describe(c.relation, float(m[j]))}" for (c, _, _), m in zip(pairs, misses) if m[j] > 0
         ]
+        # The report names every constraint this pose leaves unmet, besides those that explained
+        # the failure: the ones it misses, and the facings of objects that cannot turn to it.
+        missed = [c for (c, _, _), m in zip(pairs, misses) if m[j] > 0]
         if self.area is not None and self.outside_by(boxes)[j] > 0:
             detail.append(self.misfit_detail(boxes[j : j + 1]))
         if self.downstream(item):
@@ -740,12 +779,15 @@ class _Search:
             if not self.still_holds(f, node.turns[f][k : k + 1], exclude=i)[0]:
                 del node.turns[f]  # it stays as it is, not facing this object
                 detail.append(f"'{self.objects[f].id} face to {obj.id}' not met: it cannot turn there")
+                missed += [c for c, t in self.items[f].own if t == i and c.relation == "face to"]
         self.place_at(node, k)
         if not detail:
             return None, node.cursor  # the wider set found a pose that meets everything
         self.missed.add(i)
         nearest = f"placed at ({p[0]:.2f}, {p[1]:.2f}, {p[2]:.2f}): " + "; ".join(detail)
-        return replace(failure, nearest=nearest), node.cursor
+        named = {c.key() for c in failure.failed}
+        failed = failure.failed + [c for c in missed if c.key() not in named]
+        return replace(failure, failed=failed, nearest=nearest), node.cursor
 
 
 def solve(
