@@ -1,13 +1,13 @@
-"""The offline image generator: no pictures of the scene, procedural ground textures."""
+"""The offline image generator: no pictures of the scene, procedural ground textures.
+
+The texture code (PIL, scipy) is imported when a ground is drawn, not by every command that
+creates the backends."""
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
 from scenewright.errors import InputError
-from scenewright.procedural.meshes import seed_of
-from scenewright.procedural.style import resolve_style
-from scenewright.procedural.textures import ground_texture, normalise_kind, png_bytes
 from scenewright.scene import SceneObject
 from scenewright.settings import Settings
 
@@ -38,6 +38,10 @@ class ProceduralImages:
 
     def ground_texture(self, text: str, style: str, kind: str, reference: bytes | None) -> bytes:
         """A seamless 512×512 PNG of the ground kind (or of what the text says the ground is)."""
+        from scenewright.procedural.meshes import seed_of
+        from scenewright.procedural.style import resolve_style
+        from scenewright.procedural.textures import ground_texture, normalise_kind, png_bytes
+
         texture_kind = normalise_kind(kind, text)
         style_name = resolve_style(style).name
         image = ground_texture(texture_kind, style_name, seed_of(f"{texture_kind}|{style_name}|{text}"))

@@ -1,4 +1,8 @@
-"""The offline mesh backend: a styled parametric model per request (:mod:`scenewright.procedural`)."""
+"""The offline mesh backend: a styled parametric model per request (:mod:`scenewright.procedural`).
+
+The generators (and trimesh under them) are imported when a mesh is asked for: every command
+creates its backends, and an edit that moves things never builds one.
+"""
 
 from __future__ import annotations
 
@@ -9,7 +13,6 @@ import numpy as np
 
 from scenewright.core.protocols import MeshRequest
 from scenewright.errors import BackendError, InputError
-from scenewright.procedural.meshes import build_glb, choose_shape, code_fingerprint, seed_of
 from scenewright.settings import Settings
 
 log = logging.getLogger(__name__)
@@ -25,6 +28,8 @@ class ProceduralMeshes:
     @property
     def params(self) -> dict[str, str]:
         """What else decides the output (part of the asset cache key): the generators' code."""
+        from scenewright.procedural.meshes import code_fingerprint
+
         return {"code": code_fingerprint()}
 
     def cancel(self) -> None:
@@ -39,6 +44,8 @@ class ProceduralMeshes:
     def generate(
         self, requests: Sequence[MeshRequest], progress: Callable[[str], None] | None = None
     ) -> dict[str, bytes]:
+        from scenewright.procedural.meshes import build_glb, choose_shape, seed_of
+
         results: dict[str, bytes] = {}
         failures: list[str] = []
         for request in requests:

@@ -46,10 +46,9 @@ import logging
 import time
 from collections import Counter
 from dataclasses import dataclass, field, replace
-from typing import Iterable, Mapping, Sequence
+from typing import TYPE_CHECKING, Iterable, Mapping, Sequence
 
 import numpy as np
-import trimesh
 
 from scenewright.errors import InputError
 from scenewright.geometry import world_box
@@ -61,6 +60,9 @@ from scenewright.layout.relations import Boxes, RoomTarget, footprint_half, half
 from scenewright.layout.room import RoomShape, shortfall
 from scenewright.layout.room import problems as room_problems
 from scenewright.scene import ROOM_RELATIONS, Constraint, LayoutReport, Room, SceneObject, UnplacedObject, Vec3
+
+if TYPE_CHECKING:  # meshes are only handed on to the collision world, which needs no mesh library
+    import trimesh
 
 log = logging.getLogger(__name__)
 
