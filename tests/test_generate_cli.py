@@ -213,6 +213,10 @@ def test_bench_pipeline_prints_one_json_object(tmp_path, capsys):
     assert stated > 0 and result["relations_realised"] == round(realised / stated, 4)
     assert result["complete_layouts"] == sum(r["complete"] for r in rows)
     assert all(r["objects"] > 0 and r["relations_realised"] <= r["relations_stated"] for r in rows)
+    # both are indoor prompts: each has a room, and the room figures count their rows
+    assert all(r["domain"] == "indoor" and r["room"]["has_room"] for r in rows)
+    assert result["rooms"]["indoor_with_room"] == "2/2" and result["rooms"]["outdoor_with_room"] == 0
+    assert result["rooms"]["outside"] == sum(len(r["room"].get("outside", ())) for r in rows)
 
 
 def test_incomplete_layout_is_written_then_reported_with_exit_3(tmp_path, capsys, monkeypatch):

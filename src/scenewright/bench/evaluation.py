@@ -18,6 +18,7 @@ from pathlib import Path
 from scenewright.bench.analysis import parse_figures, ratio, score_prompt
 from scenewright.evaluation.annotations import Prompt
 from scenewright.evaluation.composition import LINE, in_a_line, spread
+from scenewright.evaluation.room import room_metrics
 from scenewright.evaluation.stated import stated
 from scenewright.scene import Scene
 from scenewright.settings import Settings
@@ -27,6 +28,28 @@ PAPER_GROUPS = {"indoor": "indoor", "outdoor": "open-domain"}
 
 #: Scenes with at least this many objects are reported apart (the speed target is for 15).
 LARGE_SCENE = 12
+
+#: What a room's layout must not have (docs/rooms.md), counted per scene and summed.
+ROOM_PROBLEMS = ("outside", "above_ceiling", "blocked_openings", "stuck_doors", "unreachable", "not_on_wall", "not_on_ceiling")
+
+
+def room_row(scene: Scene) -> dict:
+    """Whether the scene got a room, and the objects (or openings) of each room problem."""
+    metrics = room_metrics(scene)
+    if metrics is None:
+        return {"has_room": False}
+    found = metrics.to_dict()
+    return {"has_room": True, **{k: found[k] for k in ROOM_PROBLEMS if found[k]}}
+
+
+def room_figures(rows: list[dict]) -> dict:
+    """Indoor prompts with a room, outdoor prompts with one, and each problem summed over the rooms."""
+    indoor = [r for r in rows if r["domain"] == "indoor"]
+    return {
+        "indoor_with_room": f"{sum(r['room']['has_room'] for r in indoor)}/{len(indoor)}",
+        "outdoor_with_room": sum(r["room"]["has_room"] for r in rows if r["domain"] != "indoor"),
+        **{k: sum(len(r["room"].get(k, ())) for r in rows) for k in ROOM_PROBLEMS},
+    }
 
 
 def layout_row(scene: Scene, prompt: Prompt) -> dict:
@@ -71,6 +94,7 @@ def run_row(prompt: Prompt, scene: Scene, seconds: float) -> dict:
         "objects": len(scene.objects),
         "complete": scene.layout.complete if scene.layout is not None else False,
         **layout_row(scene, prompt),
+        "room": room_row(scene),
         "parse": score_prompt(prompt),
     }
 
@@ -89,6 +113,7 @@ def summarise_runs(rows: list[dict], *, details: bool = False) -> dict:
         f"median_seconds_{LARGE_SCENE}plus_objects": round(statistics.median(large), 3) if large else None,
         f"scenes_{LARGE_SCENE}plus_objects": len(large),
         "complete_layouts": sum(r["complete"] for r in rows),
+        "rooms": room_figures(rows),
         "slowest": [
             {k: r[k] for k in ("id", "seconds", "objects", "complete")}
             for r in sorted(rows, key=lambda r: -r["seconds"])[:3]
@@ -103,8 +128,8 @@ def run_pipeline_bench(
     prompts: Path | None, limit: int | None, details: bool, settings: Settings, room: str = "auto"
 ) -> dict:
     """`generate --no-render` (offline, no cache) per annotated prompt: the final layouts scored
-    against the text (relations realised, supports right, spread), the parse's figures, and seconds.
-    ``room`` is every prompt's ``--room`` (``none`` measures what the rooms cost)."""
+    against the text (relations realised, supports right, spread), the rooms' problems, the parse's
+    figures, and seconds. ``room`` is every prompt's ``--room`` (``none`` measures what the rooms cost)."""
     from scenewright.analysis.parser.room import parse_room_option
     from scenewright.bench.analysis import load_prompts
     from scenewright.backends import backends_from_settings
