@@ -120,10 +120,12 @@ def generate_command(
     """Turn TEXT into a scene folder: scene.json, one asset per object, scene.glb, previews."""
     from scenewright.backends import backends_from_settings
     from scenewright.cli.export import export_formats
-    from scenewright.export.sim import check_format
 
-    for fmt in export or ():
-        check_format(fmt)  # before the run, not after it
+    if export:  # the simulator exporters pull in trimesh and scipy: only for a run that asks for them
+        from scenewright.export.sim import check_format
+
+        for fmt in export:
+            check_format(fmt)  # before the run, not after it
     from scenewright.pipeline import generate, resume
 
     sources = (("TEXT", text is not None), ("--example", example), ("--resume", resume_dir is not None))
