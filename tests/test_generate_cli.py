@@ -249,3 +249,19 @@ def test_max_faces_simplifies_every_asset(tmp_path):
     assert whole.keys() == reduced.keys() and min(whole.values()) > 800
     # A box cannot lose faces and stay a box, so shelves of many boards keep more than asked.
     assert all(reduced[oid] < 0.6 * whole[oid] for oid in whole)
+
+
+def test_a_person_on_a_sofa_sits_on_its_seat(tmp_path):
+    """The figure rests at the sofa's seat (its catalogue rest height), not on the backrest, and
+    the scorer counts that as resting on the sofa."""
+    from scenewright.core.catalogue import load_catalogue
+    from scenewright.evaluation.stated import supports
+
+    out = tmp_path / "sit"
+    assert main(["generate", "A young woman sits on a grey sofa.", "--out", str(out), "--no-render"]) == 0
+    scene = SceneFolder(out).load()
+    woman, sofa = (next(o for o in scene.objects if o.category == c) for c in ("figure", "sofa"))
+    seat = sofa.position.z - sofa.size.z / 2 + load_catalogue()["sofa"].rest_height * sofa.size.z
+    assert abs(woman.position.z - woman.size.z / 2 - seat) <= 0.002
+    assert seat < sofa.position.z + sofa.size.z / 2 - 0.2  # well below the backrest's top
+    assert supports(scene.objects)[woman.id][1] == [sofa.id]

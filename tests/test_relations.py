@@ -209,3 +209,32 @@ def test_a_turned_object_is_near_by_its_footprint_not_its_world_box():
     assert not check("near", beam, T)
     assert violation("near", beam, T) == pytest.approx(2.5 * np.sqrt(2) - 0.1 - 2.0)
     assert check("near", box("s", 3.0, 3.0, size=(4.0, 0.2, 1.0), yaw=45), T)  # along the diagonal: 1.54 m
+
+
+def test_on_a_seat_rests_on_its_cushions_not_its_backrest():
+    """A sofa's catalogue ``rest_height`` (a share of its height) is its top for ``on``: the
+    check, the violation and the solver's candidate height all use it; other things keep their top."""
+    from scenewright.core.catalogue import load_catalogue
+    from scenewright.layout.relations import rest_share, source_heights
+
+    sofa = box("sofa", size=(2.1, 0.9, 0.85)).model_copy(update={"category": "sofa"})
+    seat = 0.85 * load_catalogue()["sofa"].rest_height
+    assert rest_share(sofa) == pytest.approx(seat / 0.85) and rest_share(T) == 1.0
+    person = box("p", size=(0.4, 0.6, 0.7), z=seat + 0.35)
+    assert check("on", person, sofa) and violation("on", person, sofa) == 0.0
+    on_backrest = box("p", size=(0.4, 0.6, 0.7), z=0.85 + 0.35)
+    assert not check("on", on_backrest, sofa)
+    assert violation("on", on_backrest, sofa) == pytest.approx(0.85 - seat - 0.002, abs=1e-6)
+    assert source_heights("on", 0.35, Boxes.of(sofa), 0.0) == pytest.approx([seat + 0.35])
+    assert source_heights("on", 0.35, Boxes.of(T), 0.0) == pytest.approx([1.35])
+
+
+@settings(max_examples=60, deadline=None)
+@given(share=st.floats(0.2, 1.0), height=st.floats(0.3, 2.0), yaw=st.floats(0, 360), dx=st.floats(-0.4, 0.4))
+def test_on_rests_at_the_share_of_the_host_height(share, height, yaw, dx):
+    host = Boxes.at(np.array([0.0, 0.0, height / 2]), np.array([0.5, 0.5, height / 2]), yaw, rest=share)
+    rest = share * height
+    src = Boxes.at(np.array([dx, 0.0, rest + 0.2]), np.array([0.1, 0.1, 0.2]), 0.0)
+    assert holds("on", src, host)
+    sunk = Boxes.at(np.array([dx, 0.0, rest + 0.2 - 0.01]), np.array([0.1, 0.1, 0.2]), 0.0)
+    assert not holds("on", sunk, host)

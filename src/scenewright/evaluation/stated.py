@@ -23,7 +23,7 @@ import numpy as np
 from scenewright.evaluation.annotations import GROUND, UNCHECKED_SUPPORTS, Prompt, assign_keys
 from scenewright.geometry import world_box
 from scenewright.layout import check
-from scenewright.layout.relations import Boxes, RoomTarget, holds
+from scenewright.layout.relations import Boxes, RoomTarget, holds, rest_share
 from scenewright.scene import Scene, SceneObject
 
 #: Metres a bottom may sit from z = 0 and still stand on the ground (as the physical metrics).
@@ -42,7 +42,8 @@ def supports(objects: Sequence[SceneObject]) -> dict[str, tuple[float, list[str]
     lo = np.array([c[0] for c in corners])
     hi = np.array([c[1] for c in corners])
     yaw = np.array([o.yaw for o in objects], dtype=float)
-    on = holds("on", Boxes(lo[:, None], hi[:, None], yaw[:, None]), Boxes(lo[None], hi[None], yaw[None]))
+    rest = np.array([rest_share(o) for o in objects])
+    on = holds("on", Boxes(lo[:, None], hi[:, None], yaw[:, None]), Boxes(lo[None], hi[None], yaw[None], rest=rest[None]))
     np.fill_diagonal(on, False)
     return {o.id: (float(lo[i, 2]), [objects[j].id for j in np.flatnonzero(on[i])]) for i, o in enumerate(objects)}
 

@@ -17,7 +17,9 @@ Decisions where the table leaves room:
   an object turns. Overlapping footprints have gap 0. ``near`` holds at gap ≤ 2 m, ``far`` at
   gap > 8 m. Collision works on the same turned shapes (:mod:`.collision`).
 - ``on``: the source's bottom is within 2 mm of the target's top (either side) and their
-  true footprints overlap with positive area.
+  true footprints overlap with positive area. A seat's or a bed's "top" for ``on`` is where a
+  thing put on it rests (:func:`rest_share`: the seat under the backrest, the mattress under the
+  headboard), not the top of its box; a person on a sofa sits on the cushions.
 - ``above``: the source is *positioned* at least 2 m above the target, as the table has it:
   its centre (an object's position, docs/architecture.md) at least 2 m higher than the
   target's; it does not touch the target (its bottom clears the target's top by more than the
@@ -51,6 +53,7 @@ from typing import Callable
 
 import numpy as np
 
+from scenewright.core.catalogue import load_catalogue
 from scenewright.core.relations import ABOVE, BUFFER, FACE_DEGREES, FAR, NEAR, ON_GAP
 from scenewright.geometry import front_direction, rotation_matrix, world_box
 from scenewright.scene import RELATION_TYPES, ROOM_RELATIONS, ROOM_TARGET, Room, SceneObject, Vec3, room_target
@@ -70,35 +73,55 @@ ABOVE_CLEARANCE = 0.05
 EPS = 1e-9
 
 
+def rest_share(obj: SceneObject) -> float:
+    """Share of ``obj``'s height where a thing put on it rests: 1 (its top) unless its catalogue
+    category says lower (``rest_height``: a seat under its backrest, a mattress under its headboard;
+    the procedural mesh has its surface there)."""
+    category = load_catalogue().get(obj.category) if obj.category else None
+    return category.rest_height if category is not None and category.rest_height else 1.0
+
+
 @dataclass(frozen=True)
 class Boxes:
     """World boxes (``lo``/``hi`` corners, shape (..., 3)), yaws (degrees, shape (...)) and
     footprints: half extents (..., 2) of the plan rectangle in the object's yaw frame. Without
-    ``foot`` the footprint is the world box's own (an axis-aligned shape)."""
+    ``foot`` the footprint is the world box's own (an axis-aligned shape). ``rest`` (shape (...)
+    or scalar, :func:`rest_share`) is the share of each box's height where things put on it rest;
+    None is the top."""
 
     lo: np.ndarray
     hi: np.ndarray
     yaw: np.ndarray
     foot: np.ndarray | None = None
+    rest: np.ndarray | float | None = None
 
     @property
     def centre(self) -> np.ndarray:
         return (self.lo + self.hi) / 2.0
 
+    @property
+    def top(self) -> np.ndarray:
+        """The height a thing put ``on`` each box rests at."""
+        if self.rest is None:
+            return self.hi[..., 2]
+        return self.lo[..., 2] + np.asarray(self.rest) * (self.hi[..., 2] - self.lo[..., 2])
+
     @classmethod
-    def at(cls, centre: np.ndarray, half: np.ndarray, yaw, foot: np.ndarray | None = None) -> Boxes:
+    def at(cls, centre: np.ndarray, half: np.ndarray, yaw, foot: np.ndarray | None = None, rest=None) -> Boxes:
         centre = np.asarray(centre, dtype=float)
-        return cls(centre - half, centre + half, np.asarray(yaw, dtype=float), foot)
+        return cls(centre - half, centre + half, np.asarray(yaw, dtype=float), foot, rest)
 
     @classmethod
     def of(cls, obj: SceneObject) -> Boxes:
         lo, hi = world_box(obj)
-        return cls(lo, hi, np.asarray(obj.yaw, dtype=float), footprint_half(obj.size, obj.rotation))
+        return cls(lo, hi, np.asarray(obj.yaw, dtype=float), footprint_half(obj.size, obj.rotation), rest_share(obj))
 
     def __getitem__(self, k) -> Boxes:
         """The boxes selected by an index or mask over the leading axis."""
-        return Boxes(self.lo[k], self.hi[k], np.broadcast_to(self.yaw, self.lo.shape[:-1])[k],
-                     None if self.foot is None else np.broadcast_to(self.foot, self.lo.shape[:-1] + (2,))[k])
+        shape = self.lo.shape[:-1]
+        return Boxes(self.lo[k], self.hi[k], np.broadcast_to(self.yaw, shape)[k],
+                     None if self.foot is None else np.broadcast_to(self.foot, shape + (2,))[k],
+                     None if self.rest is None else np.broadcast_to(self.rest, shape)[k])
 
 
 def half_extents(size: Vec3, rotation: Vec3, yaws=None) -> np.ndarray:
@@ -225,7 +248,7 @@ def _behind_miss(s, t):
 
 
 def _on_miss(s, t):
-    dz = np.maximum(0.0, np.abs(s.lo[..., 2] - t.hi[..., 2]) - ON_GAP)
+    dz = np.maximum(0.0, np.abs(s.lo[..., 2] - t.top) - ON_GAP)
     return dz + _footprint_miss(s, t)
 
 
@@ -260,7 +283,7 @@ def holds(relation: str, src: Boxes, tgt: Boxes | RoomTarget) -> np.ndarray:
     if relation == "far":  # strict: the gap must exceed 8 m
         return _plan_gap(src, tgt) > FAR
     if relation == "on":
-        return (np.abs(src.lo[..., 2] - tgt.hi[..., 2]) <= ON_GAP + EPS) & _footprint_overlap(src, tgt)
+        return (np.abs(src.lo[..., 2] - tgt.top) <= ON_GAP + EPS) & _footprint_overlap(src, tgt)
     if relation == "above":
         clear = src.lo[..., 2] - tgt.hi[..., 2] > ON_GAP + EPS
         return (_rise(src, tgt) >= ABOVE - EPS) & clear & _footprint_overlap(src, tgt)
@@ -400,7 +423,7 @@ def source_heights(relation: str, half_z: float, target: Boxes, initial_z: float
         return room_heights(relation, half_z, target)
     top = float(target.hi[2])
     if relation == "on":
-        return np.array([top + half_z])
+        return np.array([float(target.top) + half_z])
     if relation == "above":
         lowest = max(float(target.lo[2] + target.hi[2]) / 2.0 + ABOVE, top + half_z + ABOVE_CLEARANCE)
         return max(initial_z, lowest) + np.array([0.0, 0.3, 0.7, 1.2])

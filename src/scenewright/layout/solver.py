@@ -56,7 +56,15 @@ from scenewright.core.relations import PRIORITY
 from scenewright.layout import relations as rel
 from scenewright.layout.collision import CollisionWorld, colliding_pairs, resting_pairs
 from scenewright.layout.constraints import clean_constraints, topological_order
-from scenewright.layout.relations import Boxes, RoomTarget, footprint_half, half_extents, rotated_half, tilt_matrix
+from scenewright.layout.relations import (
+    Boxes,
+    RoomTarget,
+    footprint_half,
+    half_extents,
+    rest_share,
+    rotated_half,
+    tilt_matrix,
+)
 from scenewright.layout.room import RoomShape, shortfall
 from scenewright.layout.room import problems as room_problems
 from scenewright.scene import ROOM_RELATIONS, Constraint, LayoutReport, Room, SceneObject, UnplacedObject, Vec3
@@ -174,6 +182,7 @@ class _Item:
     tilt: np.ndarray  # rotation without yaw
     half_z: float
     foot: np.ndarray  # footprint half extents in its own yaw frame
+    rest: float  # share of its height where things put on it rest (relations.rest_share)
     own: list[tuple[Constraint, int]]  # this object is the source; (constraint, target)
     reverse: list[tuple[Constraint, int]]  # a fixed object is the source; (constraint, source)
     yaws: tuple[float, ...]  # yaws it may take when no facing decides
@@ -249,7 +258,7 @@ class _Search:
             yaws = (o.yaw,) if facing or o.id in keep or i in self.fixed else self._yaw_options(o)
             self.items[i] = _Item(
                 i, o, np.array(o.size.tuple()) / 2, tilt_matrix(o.rotation),
-                float(half_extents(o.size, o.rotation)[2]), footprint_half(o.size, o.rotation),
+                float(half_extents(o.size, o.rotation)[2]), footprint_half(o.size, o.rotation), rest_share(o),
                 own[i], reverse[i], yaws, walls[i],
             )
         #: Objects with a constraint on each object, for forward checking and re-checks.
@@ -326,10 +335,10 @@ class _Search:
         return any(t in self.missed for _, t in item.own)
 
     def box(self, i: int) -> Boxes:
-        return Boxes(self.lo[i], self.hi[i], self.yaw[i], self.items[i].foot)
+        return Boxes(self.lo[i], self.hi[i], self.yaw[i], self.items[i].foot, self.items[i].rest)
 
     def boxes_of(self, item: _Item, centres: np.ndarray, yaws: np.ndarray) -> Boxes:
-        return Boxes.at(centres, rotated_half(item.half, item.tilt, yaws), yaws, item.foot)
+        return Boxes.at(centres, rotated_half(item.half, item.tilt, yaws), yaws, item.foot, item.rest)
 
     # --- candidates ----------------------------------------------------------------------
 
