@@ -114,6 +114,16 @@ def test_wall_phrases_become_room_relations_with_their_wall():
                    ("picture_frame_1", "on wall", "wall_3")}
 
 
+def test_a_wall_thing_does_not_take_the_corner_of_the_next_clause():
+    """A mirror is a wall thing, and a wall phrase after another thing still hangs it ("a mirror
+    above the basin on the left wall"); a corner phrase there belongs to the thing named before it."""
+    parsed = parse_scene("A small gym. A big mirror hangs above the bench press, and a fan stands in the corner. "
+                         "A clock over the door on the right wall.")
+    got = {(r.source, r.relation, r.target) for r in wall_phrases(parsed)}
+    assert ("fan_1", "in corner", "room") in got and ("wall_clock_1", "on wall", "wall_1") in got
+    assert not any(source == "mirror_1" for source, _, _ in got)
+
+
 @pytest.mark.parametrize("text, floor, walls, ceiling", [
     ("A kitchen with white tiled walls and a stone floor.", "stone", "white tiled", None),
     ("A bar with brick walls, a wooden floor and a concrete ceiling.", "wood floor", "brick", "concrete"),

@@ -359,12 +359,14 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
             if phrase is None:
                 break
             # The phrase places this thing when the parse anchored it to a wall, when it is a wall
-            # thing, or when no other thing is named between the two ("a wardrobe stands against
-            # the right wall"; not "a desk with a lamp by the wall").
+            # thing and the phrase names a wall, or when no other thing is named between the two
+            # ("a wardrobe stands against the right wall"; not "a desk with a lamp by the wall",
+            # nor "a mirror hangs above the rack, and a fan stands in the corner").
             between = sentence[at:phrase.start()]
-            if o.anchor is None and o.category not in WALL_THINGS and _names_between(between, names, name):
-                break
             preposition, side, what = phrase.group(1), phrase.group(2), phrase.group(3)
+            wall_thing = o.category in WALL_THINGS and what == "wall"
+            if o.anchor is None and not wall_thing and _names_between(between, names, name):
+                break
             target = f"wall_{RECTANGLE_WALLS[_SIDE_WORDS[side]]}" if side and _SIDE_WORDS.get(side) else "room"
             if what == "corner":
                 relation = "in corner"
