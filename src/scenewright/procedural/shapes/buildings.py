@@ -11,6 +11,8 @@ from scenewright.procedural.builder import Model
 def _windows(m: Model, x0, x1, z0, z1, y: float, facing: int, floors: int, along: str = "x") -> None:
     """A grid of glass panes with sills on one wall (``along`` the wall's axis)."""
     width = x1 - x0
+    if width <= 0:  # a wall narrower than a pane with its margins keeps none (panes would turn inside out)
+        return
     floors = min(floors, 15)
     # Wide panes on big facades keep a tower inside the face budget (about 48 panes per wall).
     cols = min(10, max(1, int(width / 2.2)), max(1, 48 // floors))
@@ -47,7 +49,8 @@ def building(m: Model) -> None:
     _windows(m, -m.sy / 2 + 0.5, m.sy / 2 - 0.5, 0, top, m.sx / 2 - inset, 1, floors, along="y")
     door = min(1.8, 0.3 * m.sx)
     m.box("glass", (-door / 2, -m.sy / 2 + 0.02, 0), (door / 2, -m.sy / 2 + inset, min(2.5, 0.8 * fh)), rounded=0.0)
-    m.box("accent", (-m.sx / 2 + 0.3, -m.sy / 2, min(2.7, 0.85 * fh)), (m.sx / 2 - 0.3, -m.sy / 2 + inset, min(3.0, 0.95 * fh)))
+    # The awning reaches into the wall, so its back face is not in the plane of the sills'.
+    m.box("accent", (-m.sx / 2 + 0.3, -m.sy / 2, min(2.7, 0.85 * fh)), (m.sx / 2 - 0.3, -m.sy / 2 + 1.5 * inset, min(3.0, 0.95 * fh)))
 
 
 def house(m: Model) -> None:
@@ -96,12 +99,14 @@ def market_stall(m: Model) -> None:
     m.box("wood", (-m.sx / 2 + post, -m.sy / 2 + 0.12 * m.sy, 0), (m.sx / 2 - post, -m.sy / 2 + 0.45 * m.sy, counter))
     for x in (-m.sx / 2 + post / 2, m.sx / 2 - post / 2):
         m.box("wood", (x - post / 2, -m.sy / 2 + 0.1 * m.sy, 0), (x + post / 2, -m.sy / 2 + 0.1 * m.sy + post, front_top))
-        m.box("wood", (x - post / 2, m.sy / 2 - post, 0), (x + post / 2, m.sy / 2, back_top))
+        m.box("wood", (x - post / 2, m.sy / 2 - post - 0.01 * m.sy, 0), (x + post / 2, m.sy / 2 - 0.01 * m.sy, back_top))
+    # The awning overhangs the posts a little at the sides (and at the back, where the back
+    # posts stand in from the edge): posts flush with its edges would share its end faces.
     stripes = min(16, max(4, int(m.sx / 0.35)))
-    w = m.sx / stripes
+    w = 1.02 * m.sx / stripes
     for i in range(stripes):
         role = "canvas" if i % 2 == 0 else "canvas_alt"
-        x0 = -m.sx / 2 + i * w
+        x0 = -0.51 * m.sx + i * w
         m.extrude(role, [(-m.sy / 2, front_top - 0.06 * m.sz), (-m.sy / 2, front_top), (m.sy / 2, back_top), (m.sy / 2, back_top - 0.03)],
                   "x", x0, x0 + w)
     goods = min(12, max(3, int(m.sx / 0.3)))
@@ -176,10 +181,13 @@ def _lattice_tower(m: Model) -> None:
         z0, z1 = top * i / levels, top * (i + 1) / levels
         for (ax, ay), (bx, by) in zip(corners, corners[1:] + corners[:1]):
             m.beam("metal", corner(ax, ay, z0), corner(bx, by, z1), bar * 0.6)
-            m.beam("metal", corner(ax, ay, z1), corner(bx, by, z1), bar * 0.6)
+            # Rings stop inside the legs: rings meeting at a corner would share top and bottom.
+            a, b = corner(ax, ay, z1), corner(bx, by, z1)
+            inward = 0.3 * bar * (b - a) / np.linalg.norm(b - a)
+            m.beam("metal", a + inward, b - inward, bar * 0.6)
     m.beam("metal", corner(0, 0, top), (0, 0, m.sz), bar)
     for z in (0.78 * m.sz, 0.9 * m.sz):
-        m.beam("metal", (-m.sx / 2, 0, z), (m.sx / 2, 0, z), bar)
+        m.beam("metal", (-m.sx / 2, 0, z), (m.sx / 2, 0, z), 0.8 * bar)
         for s in (-1, 1):
             m.post("ceramic", s * 0.45 * m.sx, 0, z - 0.04 * m.sz, z, bar * 0.8, fraction=0.4)
 
@@ -204,13 +212,13 @@ def _crane(m: Model) -> None:
     m.box("concrete", (x0 - 1.5 * mast, -min(D, 1.5 * mast), 0), (x0 + 1.5 * mast, min(D, 1.5 * mast), 0.03 * H))
     jib_z = top + 0.02 * H
     m.beam("paint", (x0, 0, jib_z), (W, 0, jib_z), 0.6 * mast, 0.5 * mast)
-    m.beam("paint", (-W, 0, jib_z), (x0, 0, jib_z), 0.6 * mast, 0.5 * mast)
+    m.beam("paint", (-W + 0.05 * m.sx, 0, jib_z), (x0, 0, jib_z), 0.6 * mast, 0.5 * mast)
     m.box("concrete", (-W, -0.4 * mast, jib_z - 0.8 * mast), (-W + 0.12 * m.sx, 0.4 * mast, jib_z + 0.25 * mast))
     peak = np.array([x0, 0.0, H])
-    m.beam("paint", (x0, 0, jib_z), peak, 0.5 * mast)
+    m.beam("paint", (x0, 0, jib_z), peak, 0.45 * mast)
     m.beam("dark_metal", peak, (W - 0.02 * m.sx, 0, jib_z + 0.2 * mast), 0.1 * bar + 0.005)
     m.beam("dark_metal", peak, (-W + 0.05 * m.sx, 0, jib_z + 0.2 * mast), 0.1 * bar + 0.005)
-    m.box("glass", (x0 + 0.5 * mast, -0.6 * mast, top - 1.2 * mast), (x0 + 1.5 * mast, 0.6 * mast, top))
+    m.box("glass", (x0 + 0.5 * mast, -0.6 * mast, top - 1.2 * mast), (x0 + 1.5 * mast, 0.6 * mast, top - 0.1 * mast))
     hook_x = x0 + 0.6 * (W - x0)
     m.box("dark_metal", (hook_x - 0.3 * mast, -0.3 * mast, jib_z - 0.5 * mast), (hook_x + 0.3 * mast, 0.3 * mast, jib_z - 0.25 * mast))
     m.beam("dark_metal", (hook_x, 0, jib_z - 0.3 * mast), (hook_x, 0, 0.45 * H), 0.08 * bar + 0.004)

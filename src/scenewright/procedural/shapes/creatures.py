@@ -211,9 +211,16 @@ def _features(m: Model, kind: str, coat: str, head, hw, hr, snout, snout_len, bo
                 p = shoulder + t * (head - shoulder)
                 m.ball(spots, p + (0.2 * hw, -0.2 * hr, 0), (0.2 * hw, 0.3 * hr, 0.4 * hr), fraction=0.3)
     if m.named("zebra", "tiger"):
+        # Stripes are hoops over the back, each fitted to the body's cross-section where it
+        # sits (an ellipse narrowing toward the ends), apart from one another along it.
+        # about y: local x → x, local y → z, local z → −y (the builder's y-axis arc)
+        about_y = np.array([[1, 0, 0], [0, 0, -1], [0, 1, 0]], float)
         for k in range(7):
-            y = body_y + (-0.8 + 1.6 * k / 6) * half
-            m.torus("fur_dark", (0, y, body_z), 0.98 * gz, 0.06 * gz, axis="x", arc=np.pi, fraction=0.5)
+            t = -0.8 + 1.6 * k / 6
+            fit = np.sqrt(1 - t * t)
+            hoop = P.torus(1.0, 0.08, m.segments(0.5), m.segments(0.5, 4), np.pi)
+            scale = np.diag([fit * bw, 0.05 * half / 0.08, fit * gz])
+            m.add("fur_dark", P.transform(hoop, P.affine(scale @ about_y, (0, body_y + t * half, body_z))))
     if m.named("horse", "pony", "zebra", "unicorn", "stallion", "mare", "donkey", "mule"):
         m.beam("fur_dark", shoulder + (0, 0.3 * hr, 0.5 * gz), head + (0, 0.4 * hr, 0.8 * hr), 0.25 * hw, 0.3 * hr)
         if m.named("unicorn"):
@@ -528,7 +535,7 @@ def _held(m: Model, W, D, H, hands, arm_r, hip_z, shoulder_z, knight: bool, robe
         body = np.array([0.15 * W, -0.85 * D, 0.5 * H])
         waist = body + (-0.8 * lower, 0, 0.6 * lower)
         m.cylinder("wood", body + (0, 0.12 * D, 0), body + (0, -0.12 * D, 0), lower, fraction=0.7)
-        m.cylinder("wood", waist + (0, 0.12 * D, 0), waist + (0, -0.12 * D, 0), upper, fraction=0.7)
+        m.cylinder("wood", waist + (0, 0.1 * D, 0), waist + (0, -0.1 * D, 0), upper, fraction=0.7)
         m.cylinder("dark_plastic", waist + (0.2 * lower, -0.13 * D, -0.2 * lower), waist + (0.2 * lower, -0.14 * D, -0.2 * lower),
                    0.35 * upper, fraction=0.5)
         m.beam("dark_wood", waist + (-0.6 * upper, -0.05 * D, 0.4 * upper), left + (-0.2 * W, 0, 0.05 * H), 0.12 * upper, 0.05 * D)

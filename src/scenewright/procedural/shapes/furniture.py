@@ -15,8 +15,11 @@ def table(m: Model) -> None:
     m.box("wood", (-m.sx / 2, -m.sy / 2, m.sz - t), (m.sx / 2, m.sy / 2, m.sz))
     apron = min(0.1, 0.15 * m.sz)
     inset = 0.04 * min(m.sx, m.sy)
-    m.box("wood", (-m.sx / 2 + inset, -m.sy / 2 + inset, m.sz - t - apron), (m.sx / 2 - inset, m.sy / 2 - inset, m.sz - t))
-    m.legs("wood", inset, 0, m.sz - t, leg, square=not m.has("round leg"))
+    # The apron sits half a leg inside the legs' outer faces and the legs end inside the top,
+    # so no face of one lies in a face of another (tests/test_procedural_coplanar.py).
+    a = inset + 0.5 * leg
+    m.box("wood", (-m.sx / 2 + a, -m.sy / 2 + a, m.sz - t - apron), (m.sx / 2 - a, m.sy / 2 - a, m.sz - t))
+    m.legs("wood", inset, 0, m.sz - t / 2, leg, square=not m.has("round leg"))
 
 
 def round_table(m: Model) -> None:
@@ -55,12 +58,14 @@ def desk(m: Model) -> None:
     leg = m.thick(0.025)
     for y in (-m.sy / 2 + 0.04, m.sy / 2 - 0.04):
         m.box("wood", (-m.sx / 2 + 0.02, y - leg, 0), (-m.sx / 2 + 0.02 + 2 * leg, y + leg, top))
-    m.box("wood", (-m.sx / 2 + 0.03, m.sy / 2 - 0.05, top * 0.35), (x0, m.sy / 2 - 0.03, top))
+    # The modesty panel runs from the back leg's side, not through it (their tops would coincide).
+    m.box("wood", (-m.sx / 2 + 0.02 + 2 * leg, m.sy / 2 - 0.05, top * 0.35), (x0, m.sy / 2 - 0.03, top))
 
 
-def _chair_frame(m: Model, seat_z: float) -> None:
+def _chair_frame(m: Model, seat_z: float, seat_t: float) -> None:
+    """Legs end halfway up the seat board of thickness ``seat_t`` (not flush with its top)."""
     leg = m.thick(0.022, 0.12 * min(m.sx, m.sy))
-    m.legs("wood", 0.02 * m.sx, 0, seat_z, leg, square=True)
+    m.legs("wood", 0.02 * m.sx, 0, seat_z - seat_t / 2, leg, square=True)
     hx = m.sx / 2 - 0.02 * m.sx - leg
     yb = m.sy / 2 - leg
     for x in (-hx, hx):
@@ -74,7 +79,7 @@ def chair(m: Model) -> None:
     t = m.thick(0.04, 0.1 * m.sz)
     m.box("wood", (-m.sx / 2, -m.sy / 2, seat_z - t), (m.sx / 2, m.sy / 2, seat_z))
     m.box("cushion", (-m.sx / 2 + 0.03, -m.sy / 2 + 0.02, seat_z), (m.sx / 2 - 0.03, m.sy / 2 - 0.08, seat_z + t * 0.8))
-    _chair_frame(m, seat_z)
+    _chair_frame(m, seat_z, t)
 
 
 def armchair(m: Model) -> None:
@@ -165,9 +170,12 @@ def bench(m: Model) -> None:
         m.box("wood", (-m.sx / 2, y0, seat_z - t), (m.sx / 2, y0 + w, seat_z))
     frame = m.thick(0.05, 0.15 * m.sx)
     for x in (-m.sx / 2 + 0.1 * m.sx, m.sx / 2 - 0.1 * m.sx - frame):
-        m.box("dark_metal", (x, -m.sy / 2 + 0.02, 0), (x + frame, -m.sy / 2 + 0.02 + frame, seat_z - t))
-        m.box("dark_metal", (x, depth - m.sy / 2 - frame - 0.02, 0), (x + frame, depth - m.sy / 2 - 0.02, seat_z - t))
-        m.box("dark_metal", (x, -m.sy / 2 + 0.02, seat_z - t - frame), (x + frame, depth - m.sy / 2 - 0.02, seat_z - t))
+        # The legs end inside the rail, which is a little wider than they are.
+        leg_top = seat_z - t - frame / 2
+        m.box("dark_metal", (x, -m.sy / 2 + 0.02, 0), (x + frame, -m.sy / 2 + 0.02 + frame, leg_top))
+        m.box("dark_metal", (x, depth - m.sy / 2 - frame - 0.02, 0), (x + frame, depth - m.sy / 2 - 0.02, leg_top))
+        m.box("dark_metal", (x - 0.1 * frame, -m.sy / 2 + 0.01, seat_z - t - frame),
+              (x + 1.1 * frame, depth - m.sy / 2 - 0.01, seat_z - t))
         if seat_z < m.sz:
             m.beam("dark_metal", (x + frame / 2, depth - m.sy / 2 - 0.05, seat_z - t), (x + frame / 2, m.sy / 2 - frame / 2, m.sz),
                    frame, frame)
@@ -286,15 +294,18 @@ def bathtub(m: Model) -> None:
     wall = m.thick(0.07, 0.2 * min(m.sx, m.sy))
     feet = m.has("claw", "vintage", "victorian") or m.style.name == "steampunk"
     z0 = 0.12 * m.sz if feet else 0.0
-    m.box("ceramic", (-m.sx / 2, -m.sy / 2, z0), (m.sx / 2, m.sy / 2, z0 + 0.12 * m.sz))
+    # Floor and walls butt edge to edge (the end walls run between the side walls), never
+    # overlapping: overlapping boxes share their top and outer faces.
+    m.box("ceramic", (-m.sx / 2 + wall, -m.sy / 2 + wall, z0), (m.sx / 2 - wall, m.sy / 2 - wall, z0 + 0.12 * m.sz))
     for lo, hi in (((-m.sx / 2, -m.sy / 2), (-m.sx / 2 + wall, m.sy / 2)), ((m.sx / 2 - wall, -m.sy / 2), (m.sx / 2, m.sy / 2)),
-                   ((-m.sx / 2, -m.sy / 2), (m.sx / 2, -m.sy / 2 + wall)), ((-m.sx / 2, m.sy / 2 - wall), (m.sx / 2, m.sy / 2))):
+                   ((-m.sx / 2 + wall, -m.sy / 2), (m.sx / 2 - wall, -m.sy / 2 + wall)),
+                   ((-m.sx / 2 + wall, m.sy / 2 - wall), (m.sx / 2 - wall, m.sy / 2))):
         m.box("ceramic", (*lo, z0), (*hi, m.sz))
     m.box("water", (-m.sx / 2 + wall, -m.sy / 2 + wall, z0 + 0.12 * m.sz), (m.sx / 2 - wall, m.sy / 2 - wall, 0.7 * m.sz), rounded=0.0)
     if feet:
         m.legs("brass", 0.08, 0, z0 + 0.02, m.thick(0.04))
     m.post("chrome", 0, m.sy / 2 - wall / 2, m.sz, m.sz + 0.01, 0.02)
-    m.beam("chrome", (0, m.sy / 2 - wall / 2, m.sz - 0.005), (0, m.sy / 2 - wall - 0.08, m.sz - 0.005), 0.03, 0.03)
+    m.beam("chrome", (0, m.sy / 2 - wall / 2, m.sz - 0.01), (0, m.sy / 2 - wall - 0.08, m.sz - 0.01), 0.03, 0.03)
 
 
 def toilet(m: Model) -> None:
@@ -374,7 +385,7 @@ def fridge(m: Model) -> None:
     x = m.sx / 2 - 0.08
     m.beam("chrome", (x, -m.sy / 2 + 0.02, split - 0.45 * split), (x, -m.sy / 2 + 0.02, split - 0.1), 0.025, 0.04)
     m.beam("chrome", (x, -m.sy / 2 + 0.02, split + 0.05), (x, -m.sy / 2 + 0.02, split + 0.22 * (m.sz - split) + 0.1), 0.025, 0.04)
-    m.box("dark_plastic", (-m.sx / 2 + 0.03, -m.sy / 2 + 0.05, 0), (m.sx / 2 - 0.03, m.sy / 2, 0.05))
+    m.box("dark_plastic", (-m.sx / 2 + 0.03, -m.sy / 2 + 0.05, 0), (m.sx / 2 - 0.03, m.sy / 2 - 0.01, 0.05))
 
 
 def piano(m: Model) -> None:

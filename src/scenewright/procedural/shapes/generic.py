@@ -13,7 +13,8 @@ def _guitar(m: Model) -> None:
     t = 0.8 * m.sy
     lo = 0.3 * m.sz
     m.cylinder("wood", (0, -t / 2, 0.2 * m.sz), (0, t / 2, 0.2 * m.sz), 0.22 * m.sz * min(1.0, m.sx / (0.44 * m.sz)), fraction=1)
-    m.cylinder("wood", (0, -t / 2, 0.42 * m.sz), (0, t / 2, 0.42 * m.sz), 0.16 * m.sz * min(1.0, m.sx / (0.44 * m.sz)), fraction=1)
+    # The upper bout a little thinner than the lower: their overlapping faces would share a plane.
+    m.cylinder("wood", (0, -0.45 * t, 0.42 * m.sz), (0, 0.45 * t, 0.42 * m.sz), 0.16 * m.sz * min(1.0, m.sx / (0.44 * m.sz)), fraction=1)
     m.cylinder("dark_plastic", (0, -t / 2 - 0.005, 0.3 * m.sz), (0, -t / 2, 0.3 * m.sz), 0.06 * m.sz, fraction=0.6)
     m.box("dark_wood", (-0.03 * m.sx, -0.1 * m.sy, lo), (0.03 * m.sx, 0.1 * m.sy, 0.88 * m.sz))
     m.box("dark_wood", (-0.06 * m.sx, -0.1 * m.sy, 0.88 * m.sz), (0.06 * m.sx, 0.15 * m.sy, m.sz))

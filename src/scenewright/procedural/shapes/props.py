@@ -249,9 +249,11 @@ def trash_can(m: Model) -> None:
 def _chest(m: Model) -> None:
     lid = 0.35 * m.sz
     m.box("wood", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, m.sz - lid))
-    m.cylinder("wood", (-m.sx / 2, 0, m.sz - lid), (m.sx / 2, 0, m.sz - lid), m.sy / 2)
+    # The lid overhangs the body a little (its ends would lie in the body's sides) and the
+    # bands run up into it (their tops would lie in the body's top).
+    m.cylinder("wood", (-0.51 * m.sx, 0, m.sz - lid), (0.51 * m.sx, 0, m.sz - lid), m.sy / 2)
     for x in (-0.4 * m.sx, 0.4 * m.sx):
-        m.box("brass", (x - 0.03 * m.sx, -m.sy / 2 - 0.005, 0), (x + 0.03 * m.sx, m.sy / 2 + 0.005, m.sz - lid))
+        m.box("brass", (x - 0.03 * m.sx, -m.sy / 2 - 0.005, 0), (x + 0.03 * m.sx, m.sy / 2 + 0.005, m.sz - lid + 0.02 * m.sz))
         m.torus("brass", (x, 0, m.sz - lid), m.sy / 2, 0.015 * m.sz, axis="x", arc=np.pi)
     m.box("gold", (-0.06 * m.sx, -m.sy / 2 - 0.02, m.sz - lid - 0.12 * m.sz), (0.06 * m.sx, -m.sy / 2, m.sz - lid + 0.02 * m.sz))
 

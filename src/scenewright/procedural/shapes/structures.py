@@ -26,7 +26,8 @@ def _ferris_wheel(m: Model) -> None:
         m.torus("metal", hub + (0, y, 0), 0.55 * R, bar, axis="y", fraction=0.8)
         for k in range(spokes):
             a = 2 * np.pi * k / spokes
-            m.beam("metal", hub + (0, y, 0), hub + (np.cos(a) * R, y, np.sin(a) * R), bar)
+            # Spokes cross at the hub: each a hair thicker than the last, so no two share a side.
+            m.beam("metal", hub + (0, y, 0), hub + (np.cos(a) * R, y, np.sin(a) * R), bar * (1 + 0.02 * k))
     m.cylinder("dark_metal", hub + (0, -0.7 * D, 0), hub + (0, 0.7 * D, 0), 0.05 * R, fraction=0.5)
     for s in (-1, 1):
         for y in (-0.75 * D, 0.75 * D):
@@ -93,20 +94,22 @@ def _stage(m: Model) -> None:
     W, D, H = m.sx / 2, m.sy / 2, m.sz
     deck = min(0.2 * H, 0.4 * D) + 0.05
     m.box("dark_wood", (-W, -D, 0), (W, D, deck))
-    m.box("dark_plastic", (-W, -D - 0.001, 0), (W, -D + 0.01 * D, deck), rounded=0.0)
+    m.box("dark_plastic", (-W - 0.001, -D - 0.001, 0), (W + 0.001, -D + 0.01 * D, 0.97 * deck), rounded=0.0)
     steps = 3
-    for k in range(steps):
+    for k in range(steps):  # one tread each, side by side (nested blocks would share their sides)
         h = deck * (k + 1) / (steps + 1)
-        m.box("dark_wood", (0.55 * W, -D - (steps - k) * 0.06 * D, 0), (0.8 * W, -D, h))
+        m.box("dark_wood", (0.55 * W, -D - (steps - k) * 0.06 * D, 0), (0.8 * W, -D - (steps - k - 1) * 0.06 * D, h))
     m.box("canvas", (-0.95 * W, 0.85 * D, deck), (0.95 * W, D, 0.85 * H))
     post = 0.015 * m.sx + 0.03
+    # Posts run from inside the deck to the middle of the truss; the side rails hang a little
+    # lower than the front and back ones, so rails crossing at a corner share no face.
     for x in (-W + post, W - post):
         for y in (-0.8 * D, 0.9 * D):
-            m.post("dark_metal", x, y, deck, H, post, fraction=0.4)
+            m.post("dark_metal", x, y, 0.9 * deck, H - post, post, fraction=0.4)
     for y in (-0.8 * D, 0.9 * D):
         m.beam("dark_metal", (-W, y, H - post), (W, y, H - post), 2 * post)
     for x in (-W, W):
-        m.beam("dark_metal", (x, -0.8 * D, H - post), (x, 0.9 * D, H - post), 2 * post)
+        m.beam("dark_metal", (x, -0.8 * D, H - 1.1 * post), (x, 0.9 * D, H - 1.1 * post), 2 * post)
     for k in range(6):
         x = -0.8 * W + k * 0.32 * W
         m.cylinder("dark_plastic", (x, -0.8 * D, H - 2 * post), (x, -0.85 * D, H - 5 * post), 1.2 * post, fraction=0.4)
@@ -130,10 +133,11 @@ def _scaffold(m: Model) -> None:
             m.box("dark_wood", (x - 3 * tube, y - 2 * tube, 0), (x + 3 * tube, y + 2 * tube, 0.01 * H))
     for j in range(1, lifts + 1):
         z = H * j / lifts - tube
+        # Ledgers a little thinner than the standards they cross (equal tubes share facets).
         for y in ys:
-            m.cylinder("metal", (-W, y, z), (W, y, z), tube, fraction=0.3)
+            m.cylinder("metal", (-W, y, z), (W, y, z), 0.8 * tube, fraction=0.3)
         for x in xs:
-            m.cylinder("metal", (x, -D, z), (x, D, z), tube, fraction=0.3)
+            m.cylinder("metal", (x, -D, z), (x, D, z), 0.8 * tube, fraction=0.3)
         m.box("wood", (-W + tube, -D + 2 * tube, z + tube), (W - tube, D - 2 * tube, z + tube + 0.04))
     for i in range(bays):
         m.beam("metal", (xs[i], -D + tube, 0.05 * H), (xs[i + 1], -D + tube, H - tube), 0.8 * tube)
@@ -147,8 +151,8 @@ def _truss(m: Model) -> None:
     legs = min(0.25 * W, D)
     for x0 in (-W + legs, W - legs):
         corners = [(x0 - legs, -legs), (x0 + legs, -legs), (x0 + legs, legs), (x0 - legs, legs)]
-        for x, y in corners:
-            m.beam("metal", (x, y, 0), (x, y, H), bar)
+        for x, y in corners:  # legs a little thinner than the chords they meet
+            m.beam("metal", (x, y, 0), (x, y, H), 0.9 * bar)
         for k in range(4):
             z0, z1 = H * k / 4, H * (k + 1) / 4
             for (ax, ay), (bx, by) in zip(corners, corners[1:] + corners[:1]):
@@ -158,7 +162,7 @@ def _truss(m: Model) -> None:
             m.beam("metal", (-W, y, z), (W, y, z), bar)
         for k in range(8):
             x0, x1 = -W + 2 * W * k / 8, -W + 2 * W * (k + 1) / 8
-            m.beam("metal", (x0, y, 0.85 * H), (x1, y, H - bar), 0.6 * bar)
+            m.beam("metal", (x0, y, 0.85 * H), (x1, y, H - bar), 0.5 * bar)
     m.box("accent", (-0.3 * W, -legs - bar, 0.86 * H), (0.3 * W, -legs, H - 2 * bar), rounded=0.0)
 
 
@@ -247,15 +251,17 @@ def panel(m: Model) -> None:
             cx = m.vary(-0.7, 0.7) * W
             cz = board_lo + m.vary(0.2, 0.8) * (H - board_lo)
             w, h = m.vary(0.1, 0.2) * m.sx, m.vary(0.1, 0.25) * (H - board_lo)
-            m.box(("paper", "canvas_alt", "flower_alt")[k % 3], (cx - w / 2, -0.5 * t - 0.006, cz - h / 2), (cx + w / 2, -0.5 * t - 0.004, cz + h / 2),
+            # Each note a millimetre proud of the one before: notes that overlap would share a face.
+            front = -0.5 * t - 0.006 - 0.001 * k
+            m.box(("paper", "canvas_alt", "flower_alt")[k % 3], (cx - w / 2, front, cz - h / 2), (cx + w / 2, front + 0.002, cz + h / 2),
                   rounded=0.0)
-            m.ball("accent", (cx, -0.5 * t - 0.008, cz + 0.4 * h), (0.01 * m.sx,) * 3, fraction=0.3)
+            m.ball("accent", (cx, front - 0.002, cz + 0.4 * h), (0.01 * m.sx,) * 3, fraction=0.3)
     else:
         m.box("accent", (-0.7 * W, -0.5 * t - 0.006, board_lo + 0.6 * (H - board_lo)), (0.7 * W, -0.5 * t - 0.004, board_lo + 0.8 * (H - board_lo)),
               rounded=0.0)
     leg = min(0.06 * W, 0.4 * D) + 0.01
     for x in (-0.8 * W, 0.8 * W):
-        m.box("dark_wood" if notice else "dark_metal", (x - leg, -0.5 * t, 0), (x + leg, 0.5 * t + leg, board_lo + 0.1 * (H - board_lo)))
+        m.box("dark_wood" if notice else "dark_metal", (x - leg, -0.3 * t, 0), (x + leg, 0.5 * t + leg, board_lo + 0.1 * (H - board_lo)))
         m.box("dark_wood" if notice else "dark_metal", (x - 1.5 * leg, -D, 0), (x + 1.5 * leg, D, 0.03 * H))
 
 
@@ -265,7 +271,6 @@ def _box(m: Model) -> None:
     W, D, H = m.sx / 2, m.sy / 2, m.sz
     m.box("fur_light", (-W, -D, 0), (W, D, H), rounded=0.01 * min(m.sx, m.sy, m.sz))
     m.box("paper", (-0.12 * W, -1.005 * D, 0.7 * H), (0.12 * W, 1.005 * D, 1.003 * H), rounded=0.0)
-    m.box("paper", (-0.12 * W, -1.005 * D, 0.7 * H), (0.12 * W, -D, H), rounded=0.0)
     m.box("canvas_alt", (0.3 * W, -1.004 * D, 0.2 * H), (0.8 * W, -D, 0.45 * H), rounded=0.0)
     m.box("fur_dark", (-W, -0.01 * D, 0.997 * H), (W, 0.01 * D, 1.001 * H), rounded=0.0)
 
@@ -294,7 +299,7 @@ def _sack(m: Model) -> None:
     r = 0.5
     m.lathe("canvas_alt", [(0.0, 0.0), (0.38 * r * 2, 0.02 * m.sz), (0.48 * r * 2, 0.3 * m.sz), (0.42 * r * 2, 0.65 * m.sz),
                            (0.15 * r * 2, 0.8 * m.sz), (0.1 * r * 2, 0.84 * m.sz)], scale=(m.sx, m.sy))
-    m.lathe("bark", [(0.11, 0.78 * m.sz), (0.11, 0.84 * m.sz)], scale=(m.sx, m.sy), fraction=0.5)
+    m.lathe("bark", [(0.11, 0.78 * m.sz), (0.11, 0.85 * m.sz)], scale=(m.sx, m.sy), fraction=0.5)
     m.ball("canvas_alt", (0.05 * m.sx, 0, 0.9 * m.sz), (0.18 * m.sx, 0.16 * m.sy, 0.1 * m.sz), fraction=0.5)
     m.box("accent", (-0.15 * m.sx, -0.47 * m.sy, 0.3 * m.sz), (0.15 * m.sx, -0.45 * m.sy, 0.5 * m.sz), rounded=0.0)
 

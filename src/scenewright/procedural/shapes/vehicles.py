@@ -25,11 +25,15 @@ def car(m: Model) -> None:
             (L, body_hi - 0.05 * m.sz), (L - 0.05 * m.sy, body_hi), (-L + 0.08 * m.sy, body_hi), (-L, body_hi - 0.1 * m.sz)]
     tw = 0.03 * m.sx
     m.extrude("paint", side, "x", -m.sx / 2 + tw, m.sx / 2 - tw)
-    cabin = [(-L + 0.3 * m.sy, body_hi), (L - 0.12 * m.sy, body_hi), (L - 0.2 * m.sy, m.sz), (-L + 0.45 * m.sy, m.sz)]
+    # The glass ends halfway up the roof, which is a little wider than it: their tops and
+    # ends would otherwise lie in one plane (tests/test_procedural_coplanar.py).
+    f = (0.98 * m.sz - body_hi) / (m.sz - body_hi)
+    cabin = [(-L + 0.3 * m.sy, body_hi), (L - 0.12 * m.sy, body_hi), (L - (0.12 + 0.08 * f) * m.sy, 0.98 * m.sz),
+             (-L + (0.3 + 0.15 * f) * m.sy, 0.98 * m.sz)]
     m.extrude("glass", cabin, "x", -m.sx / 2 + 0.08 * m.sx, m.sx / 2 - 0.08 * m.sx)
     roof = [(-L + 0.44 * m.sy, m.sz - 0.04 * m.sz), (L - 0.21 * m.sy, m.sz - 0.04 * m.sz), (L - 0.2 * m.sy, m.sz),
             (-L + 0.45 * m.sy, m.sz)]
-    m.extrude("paint", roof, "x", -m.sx / 2 + 0.08 * m.sx, m.sx / 2 - 0.08 * m.sx)
+    m.extrude("paint", roof, "x", -m.sx / 2 + 0.07 * m.sx, m.sx / 2 - 0.07 * m.sx)
     for y in (-L + 0.2 * m.sy, L - 0.2 * m.sy):
         for s in (-1, 1):
             _wheel(m, s * m.sx / 2, y, wr, 0.13 * m.sx, s)
@@ -114,23 +118,25 @@ def bicycle(m: Model) -> None:
         _motorcycle(m)
         return
     m.main = "paint"
-    r = min(0.32 * m.sy, 0.36 * m.sz)
+    r = min(0.25 * m.sy, 0.36 * m.sz)  # two wheels, never overlapping
     tube = m.thick(0.018, 0.2 * m.sx)
     yf, yr = -m.sy / 2 + r, m.sy / 2 - r
     for y in (yf, yr):
         m.torus("rubber", (0, y, r), r - 0.02, 0.02, axis="x")
         for k in range(6):
             a = np.pi * k / 6
+            # Spokes (and frame tubes) all lie in one plane and cross: each a hair thicker than
+            # the last, so their sides never lie in one plane.
             m.beam("chrome", (0, y - np.cos(a) * (r - 0.03), r - np.sin(a) * (r - 0.03)),
-                   (0, y + np.cos(a) * (r - 0.03), r + np.sin(a) * (r - 0.03)), 0.004)
+                   (0, y + np.cos(a) * (r - 0.03), r + np.sin(a) * (r - 0.03)), 0.004 * (1 + 0.1 * k))
     crank = np.array([0, 0.05 * m.sy, r])
     seat = np.array([0, yr - 0.1 * m.sy, 0.85 * m.sz])
     head = np.array([0, yf + 0.12 * m.sy, 0.82 * m.sz])
-    for a, b in ((crank, seat), (crank, head), (seat, head), (crank, (0, yr, r)), (seat, (0, yr, r)),
-                 (head, (0, yf, r))):
-        m.beam("paint", a, b, tube)
+    for k, (a, b) in enumerate(((crank, seat), (crank, head), (seat, head), (crank, (0, yr, r)), (seat, (0, yr, r)),
+                                (head, (0, yf, r)))):
+        m.beam("paint", a, b, tube * (1 + 0.05 * k))
     m.box("leather", seat + (-0.06, -0.1, 0), seat + (0.06, 0.08, 0.05))
-    m.beam("chrome", head, head + (0, -0.03, 0.13 * m.sz), tube)
+    m.beam("chrome", head, head + (0, -0.03, 0.13 * m.sz), 0.8 * tube)
     m.cylinder("dark_plastic", head + (-m.sx / 2, -0.03, 0.14 * m.sz), head + (m.sx / 2, -0.03, 0.14 * m.sz), 0.015,
                fraction=0.4)
     m.cylinder("dark_metal", crank + (-0.04, 0, 0), crank + (0.04, 0, 0), 0.08, fraction=0.6)
@@ -150,7 +156,7 @@ def boat(m: Model) -> None:
     m.add("paint", P.flatten(hull))
     planks = P.prism([(x * 0.94, y * 0.96) for x, y in deck], 0.02 * m.sz + 0.01)
     m.add("wood", P.flatten(P.transform(planks, P.affine(np.eye(3), (0, 0, hull_h - 0.01)))))
-    m.box("canvas_alt", (-0.5 * m.sx - 0.005, -0.05 * L, 0.92 * hull_h), (0.5 * m.sx + 0.005, L, hull_h), rounded=0.0)
+    m.box("canvas_alt", (-0.5 * m.sx - 0.005, -0.05 * L, 0.92 * hull_h), (0.5 * m.sx + 0.005, L, 0.98 * hull_h), rounded=0.0)
     if sail:
         m.post("wood", 0, -0.1 * L, hull_h, m.sz, 0.02 * m.sx + 0.01, fraction=0.4)
         m.extrude("canvas_alt", [(-0.08 * L, hull_h + 0.1 * m.sz), (0.8 * L, hull_h + 0.1 * m.sz), (-0.08 * L, 0.97 * m.sz)],
@@ -164,11 +170,14 @@ def boat(m: Model) -> None:
 def cart(m: Model) -> None:
     wr = 0.35 * m.sz
     bed_z = 0.5 * m.sz
-    m.box("wood", (-0.35 * m.sx, -0.1 * m.sy, bed_z), (0.35 * m.sx, m.sy / 2, bed_z + 0.06))
+    # The side boards run full length; the bed and the end boards fit between them, edge to
+    # edge, so no two boards share a face.
+    x0, x1 = -0.35 * m.sx + 0.04, 0.35 * m.sx - 0.04
+    m.box("wood", (x0, -0.1 * m.sy + 0.04, bed_z), (x1, m.sy / 2 - 0.04, bed_z + 0.06))
     for x in (-0.35 * m.sx, 0.35 * m.sx - 0.04):
         m.box("wood", (x, -0.1 * m.sy, bed_z), (x + 0.04, m.sy / 2, m.sz))
-    m.box("wood", (-0.35 * m.sx, m.sy / 2 - 0.04, bed_z), (0.35 * m.sx, m.sy / 2, m.sz))
-    m.box("wood", (-0.35 * m.sx, -0.1 * m.sy, bed_z), (0.35 * m.sx, -0.1 * m.sy + 0.04, m.sz * 0.9))
+    m.box("wood", (x0, m.sy / 2 - 0.04, bed_z), (x1, m.sy / 2, m.sz))
+    m.box("wood", (x0, -0.1 * m.sy, bed_z), (x1, -0.1 * m.sy + 0.04, m.sz * 0.9))
     if m.has("apple", "fruit", "vegetable", "flower", "melon", "pumpkin"):
         role = "flower_alt" if m.has("pumpkin", "orange", "lemon") else "flower"
         s = 0.08 * min(m.sx, m.sy)
@@ -182,7 +191,7 @@ def cart(m: Model) -> None:
         for k in range(4):
             a = np.pi * k / 4
             m.beam("dark_wood", (x, 0.2 * m.sy - np.cos(a) * wr, wr - np.sin(a) * wr),
-                   (x, 0.2 * m.sy + np.cos(a) * wr, wr + np.sin(a) * wr), 0.025)
+                   (x, 0.2 * m.sy + np.cos(a) * wr, wr + np.sin(a) * wr), 0.025 * (1 + 0.1 * k))
         m.beam("wood", (s * 0.3 * m.sx, -0.1 * m.sy, bed_z + 0.03), (s * 0.25 * m.sx, -m.sy / 2, bed_z - 0.05), 0.05)
     m.cylinder("dark_metal", (-m.sx / 2, 0.2 * m.sy, wr), (m.sx / 2, 0.2 * m.sy, wr), 0.025, fraction=0.4)
     m.post("wood", 0, -0.05 * m.sy, 0, bed_z, 0.03)
@@ -260,16 +269,18 @@ def _tractor(m: Model) -> None:
         m.torus("paint", (s * 0.85 * W, yr, rear), 1.05 * rear, 0.06 * rear, axis="x", arc=np.pi, fraction=0.6)
     m.box("paint", (-0.35 * W, yf - 0.6 * front, 0.7 * front), (0.35 * W, yr - 0.3 * rear, 1.05 * rear))
     m.box("dark_metal", (-0.3 * W, yf - 0.65 * front, 0.9 * front), (0.3 * W, yf - 0.6 * front, 1.0 * rear), rounded=0.0)
+    # Pillars stand centred on the cab's glass edges and reach into the body and the roof.
     m.box("dark_metal", (-0.5 * W, yr - 0.5 * rear, 0.6 * rear), (0.5 * W, L - 0.05 * m.sy, 1.15 * rear))
     cab_lo, cab_hi = 1.15 * rear, H - 0.04 * H
     m.box("glass", (-0.5 * W, yr - 0.6 * rear, cab_lo), (0.5 * W, L - 0.08 * m.sy, cab_hi), rounded=0.0)
-    for x in (-0.5 * W, 0.48 * W):
-        for y in (yr - 0.6 * rear, L - 0.1 * m.sy):
-            m.box("dark_metal", (x, y, cab_lo), (x + 0.02 * W, y + 0.02 * m.sy, cab_hi), rounded=0.0)
+    for x in (-0.5 * W, 0.5 * W):
+        for y in (yr - 0.6 * rear, L - 0.08 * m.sy):
+            m.box("dark_metal", (x - 0.01 * W, y - 0.01 * m.sy, cab_lo - 0.02 * H), (x + 0.01 * W, y + 0.01 * m.sy, cab_hi + 0.02 * H),
+                  rounded=0.0)
     m.box("paint", (-0.55 * W, yr - 0.65 * rear, cab_hi), (0.55 * W, L - 0.05 * m.sy, H))
     m.post("dark_metal", 0.2 * W, yf + 0.3 * front, 1.0 * rear, 0.95 * H, 0.03 * m.sx + 0.01, fraction=0.4)
     for s in (-1, 1):
-        m.box("light", (s * 0.25 * W - 0.06 * W, yf - 0.62 * front, 0.85 * rear), (s * 0.25 * W + 0.06 * W, yf - 0.6 * front, 0.95 * rear),
+        m.box("light", (s * 0.25 * W - 0.06 * W, yf - 0.67 * front, 0.85 * rear), (s * 0.25 * W + 0.06 * W, yf - 0.62 * front, 0.95 * rear),
               rounded=0.0)
 
 
@@ -293,13 +304,13 @@ def _forklift(m: Model) -> None:
     for x in (-0.3 * W, 0.3 * W):
         m.box("metal", (x - 0.05 * W, -L, 0.02 * H), (x + 0.05 * W, mast_y - 0.06 * m.sy, 0.04 * H), rounded=0.0)
     guard = 0.9 * H
-    for x in (-0.75 * W, 0.75 * W):
+    for x in (-0.72 * W, 0.72 * W):
         for y in (mast_y + 0.08 * m.sy, L - 0.22 * m.sy):
-            m.beam("dark_metal", (x, y, 0.42 * H), (x, y, guard), 0.04 * m.sx + 0.01)
+            m.beam("dark_metal", (x, y, 0.4 * H), (x, y, guard), 0.04 * m.sx + 0.01)
     for k in range(4):
         x = -0.75 * W + k * 0.5 * W
         m.beam("dark_metal", (x, mast_y + 0.08 * m.sy, guard), (x, L - 0.22 * m.sy, guard), 0.03 * m.sx + 0.01)
-    m.box("light", (0.5 * W, mast_y + 0.03 * m.sy, guard - 0.05 * H), (0.7 * W, mast_y + 0.06 * m.sy, guard), rounded=0.0)
+    m.box("light", (0.5 * W, mast_y + 0.03 * m.sy, guard - 0.06 * H), (0.7 * W, mast_y + 0.06 * m.sy, guard - 0.01 * H), rounded=0.0)
 
 
 def _golf_cart(m: Model) -> None:
@@ -317,7 +328,7 @@ def _golf_cart(m: Model) -> None:
     roof = 0.95 * H
     for x in (-0.8 * W, 0.8 * W):
         for y in (-L + 0.27 * m.sy, 0.35 * m.sy):
-            m.post("metal", x, y, 0.3 * H, roof, 0.02 * m.sx + 0.005, fraction=0.3)
+            m.post("metal", x, y, 0.25 * H, (roof + H) / 2, 0.02 * m.sx + 0.005, fraction=0.3)
     m.box("fur_white", (-0.9 * W, -L + 0.2 * m.sy, roof), (0.9 * W, 0.45 * m.sy, H))
     m.box("glass", (-0.8 * W, -L + 0.26 * m.sy, 0.45 * H), (0.8 * W, -L + 0.27 * m.sy, roof), rounded=0.0)
     m.cylinder("dark_plastic", (0.3 * W, -L + 0.3 * m.sy, 0.5 * H), (0.3 * W, -L + 0.25 * m.sy, 0.55 * H), 0.15 * W, fraction=0.4)
@@ -333,12 +344,15 @@ def _battle_tank(m: Model) -> None:
         x0, x1 = sorted((s * W, s * 0.65 * W))
         m.extrude("rubber", [(-L, 0.5 * track_h), (-L + 0.1 * m.sy, 0), (L - 0.08 * m.sy, 0), (L, 0.5 * track_h), (L - 0.04 * m.sy, track_h),
                              (-L + 0.04 * m.sy, track_h)], "x", x0, x1)
+        # Road wheels never overlap (their faces would share a plane): on a short hull they shrink.
+        step = 0.7 * m.sy / 5
         for k in range(6):
-            y = -L + 0.15 * m.sy + k * 0.7 * m.sy / 5
-            m.cylinder("dark_metal", (s * W * 1.001, y, 0.35 * track_h), (s * W * 1.02, y, 0.35 * track_h), 0.3 * track_h, fraction=0.4)
+            y = -L + 0.15 * m.sy + k * step
+            m.cylinder("dark_metal", (s * W * 1.001, y, 0.35 * track_h), (s * W * 1.02, y, 0.35 * track_h),
+                       min(0.3 * track_h, 0.48 * step), fraction=0.4)
     m.extrude("olive_paint", [(-L + 0.05 * m.sy, 0.35 * track_h), (L, 0.35 * track_h), (L, 0.6 * H), (-0.2 * L, 0.6 * H), (-L, 1.1 * track_h)],
               "x", -0.65 * W, 0.65 * W)
-    m.box("olive_paint", (-W, -L + 0.1 * m.sy, track_h), (W, L, 1.1 * track_h), rounded=0.0)
+    m.box("olive_paint", (-W, -L + 0.1 * m.sy, track_h), (W, 0.98 * L, 1.1 * track_h), rounded=0.0)
     m.lathe("olive_paint", [(0.5, 0.6 * H), (0.42, 0.85 * H), (0.0, 0.87 * H)], centre=(0, 0.1 * m.sy, 0), scale=(0.9 * W, 0.55 * L))
     m.cylinder("olive_paint", (0, -0.2 * L, 0.74 * H), (0, -L, 0.76 * H), 0.05 * H, fraction=0.5)
     m.cylinder("dark_metal", (0, -L, 0.76 * H), (0, -L - 0.001, 0.76 * H), 0.04 * H, fraction=0.4)
@@ -349,7 +363,7 @@ def _locomotive(m: Model) -> None:
     """A steam locomotive: a boiler on a frame, a chimney, a cab, large driving wheels."""
     m.main = "dark_metal"
     W, L, H = m.sx / 2, m.sy / 2, m.sz
-    wr = 0.2 * H
+    wr = min(0.2 * H, 0.48 * 0.35 * L)  # driving wheels never overlap
     for k in range(3):
         y = -0.25 * L + k * 0.35 * L
         for s in (-1, 1):
@@ -366,7 +380,7 @@ def _locomotive(m: Model) -> None:
     m.box("glass", (-1.001 * W, 0.45 * L, 0.6 * H), (1.001 * W, 0.8 * L, 0.8 * H), rounded=0.0)
     m.box("dark_metal", (-1.05 * W, 0.3 * L, 0.9 * H), (1.05 * W, L, 0.95 * H))
     m.extrude("dark_metal", [(-L, 0.0), (-0.85 * L, 0.0), (-0.85 * L, 0.8 * wr), (-L, 0.8 * wr)], "x", -0.7 * W, 0.7 * W)
-    m.box("light", (-0.2 * W, -0.99 * L, 1.3 * wr + 1.6 * br), (0.2 * W, -0.95 * L, 1.3 * wr + 1.9 * br))
+    m.box("light", (-0.2 * W, -0.99 * L, 1.3 * wr + 1.6 * br), (0.2 * W, -0.96 * L, 1.3 * wr + 1.9 * br))
 
 
 def vehicle(m: Model) -> None:
