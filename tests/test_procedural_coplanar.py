@@ -105,16 +105,6 @@ def shared_faces(parts: list[P.Part]) -> list[tuple[int, int, tuple, float]]:
 
 #: Styles that change how parts meet: plain boxes, rounded edges, flat shading with chunky parts.
 STYLES = ("realistic", "cartoon", "low-poly")
-#: Shapes still drawn with shared faces somewhere (xfail, strict: fixing one fails its case
-#: until it leaves this list). The armchair and the sofa are fixed; these are not yet.
-KNOWN_SHARED: frozenset[str] = frozenset({
-    "animal", "bathtub", "bench", "bicycle", "boat", "building", "cabinet", "car", "cart", "chair",
-    "container", "crate", "desk", "figure", "fountain", "fridge", "generic", "hydrant", "lamp_post",
-    "machine", "market_stall", "panel", "picture_frame", "sign", "slide", "structure", "swing",
-    "table", "tank", "tool", "tower", "truck", "vehicle", "whiteboard",
-})
-
-
 def _cases() -> dict[str, list[str]]:
     """Shape → the names it is drawn under: its own, every catalogue name that uses it, every family word."""
     cases: dict[str, set[str]] = {shape: {shape.replace("_", " ")} for shape in SHAPES}
@@ -149,11 +139,7 @@ def test_finds_a_shared_face():
 CASES = _cases()
 
 
-@pytest.mark.parametrize(
-    "shape",
-    [pytest.param(shape, marks=pytest.mark.xfail(strict=True, reason="shares faces")) if shape in KNOWN_SHARED else shape
-     for shape in CASES],
-)
+@pytest.mark.parametrize("shape", list(CASES))
 def test_no_part_shares_a_face_with_another(shape):
     problems = []
     for style in STYLES:

@@ -6,6 +6,7 @@ import numpy as np
 
 from scenewright.procedural import parts as P
 from scenewright.procedural.builder import Model
+from scenewright.procedural.shapes.frames import ring
 
 
 def _windows(m: Model, x0, x1, z0, z1, y: float, facing: int, floors: int, along: str = "x") -> None:
@@ -181,10 +182,7 @@ def _lattice_tower(m: Model) -> None:
         z0, z1 = top * i / levels, top * (i + 1) / levels
         for (ax, ay), (bx, by) in zip(corners, corners[1:] + corners[:1]):
             m.beam("metal", corner(ax, ay, z0), corner(bx, by, z1), bar * 0.6)
-            # Rings stop inside the legs: rings meeting at a corner would share top and bottom.
-            a, b = corner(ax, ay, z1), corner(bx, by, z1)
-            inward = 0.3 * bar * (b - a) / np.linalg.norm(b - a)
-            m.beam("metal", a + inward, b - inward, bar * 0.6)
+        ring(m, "metal", [corner(x, y, z1) for x, y in corners], bar * 0.6)
     m.beam("metal", corner(0, 0, top), (0, 0, m.sz), bar)
     for z in (0.78 * m.sz, 0.9 * m.sz):
         m.beam("metal", (-m.sx / 2, 0, z), (m.sx / 2, 0, z), 0.8 * bar)
@@ -267,9 +265,9 @@ def whiteboard(m: Model) -> None:
     m.box("metal", (-m.sx / 2, y, z0), (m.sx / 2, y + d, m.sz))
     m.box("ceramic", (-m.sx / 2 + 0.03, y - 0.003, z0 + 0.03), (m.sx / 2 - 0.03, y, m.sz - 0.03), rounded=0.0)
     m.box("metal", (-0.4 * m.sx, y - 0.06, z0 + 0.01), (0.4 * m.sx, y, z0 + 0.03))
-    for i, role in enumerate(("book_a", "book_b", "dark_plastic")):
-        m.cylinder(role, (-0.3 * m.sx + i * 0.05, y - 0.03, z0 + 0.04), (-0.3 * m.sx + i * 0.05 + 0.11, y - 0.03, z0 + 0.04), 0.008,
-                   fraction=0.3)
+    for i, role in enumerate(("book_a", "book_b", "dark_plastic")):  # markers side by side on the tray, not through each other
+        m.cylinder(role, (-0.3 * m.sx + i * 0.05, y - 0.015 - 0.02 * i, z0 + 0.04),
+                   (-0.3 * m.sx + i * 0.05 + 0.11, y - 0.015 - 0.02 * i, z0 + 0.04), 0.008, fraction=0.3)
     if standing:
         for s in (-1, 1):
             x = s * (m.sx / 2 - 0.03)

@@ -8,6 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from scenewright.procedural.builder import Model
+from scenewright.procedural.shapes.frames import ring
 from scenewright.procedural.shapes.vehicles import _battle_tank
 
 
@@ -32,14 +33,19 @@ def _arcade(m: Model) -> None:
     m.main = "paint"
     W, D, H = m.sx / 2, m.sy / 2, m.sz
     side = 0.08 * W
+    # Each side panel in three convex pieces (body, marquee hood, control deck): an extrusion's
+    # caps are fans from the outline's mean, which fold over on a notched outline.
+    pieces = ([(-0.2 * D, 0), (D, 0), (D, H), (-0.1 * D, H), (-0.1 * D, 0.6 * H), (-0.2 * D, 0.42 * H)],
+              [(-0.1 * D, H), (-0.5 * D, H), (-0.5 * D, 0.85 * H), (-0.1 * D, 0.8 * H)],
+              [(-D, 0.45 * H), (-0.2 * D, 0.42 * H), (-0.1 * D, 0.6 * H), (-D, 0.52 * H)])
     for s in (-1, 1):
         x0, x1 = sorted((s * W, s * (W - side)))
-        m.extrude("paint", [(-0.2 * D, 0), (D, 0), (D, H), (-0.5 * D, H), (-0.5 * D, 0.85 * H), (-0.1 * D, 0.8 * H),
-                            (-0.1 * D, 0.6 * H), (-D, 0.52 * H), (-D, 0.45 * H), (-0.2 * D, 0.42 * H)], "x", x0, x1)
+        for outline in pieces:
+            m.extrude("paint", outline, "x", x0, x1)
     m.box("dark_plastic", (-W + side, -0.2 * D, 0), (W - side, D, 0.42 * H))
     m.box("dark_plastic", (-W + side, -0.1 * D, 0.6 * H), (W - side, D, 0.85 * H))
     m.extrude("screen", [(-0.1 * D, 0.6 * H), (-0.45 * D, 0.84 * H), (-0.42 * D, 0.845 * H), (-0.07 * D, 0.605 * H)], "x",
-              -W + side, W - side)
+              -W + side + 0.002, W - side - 0.002)  # its ends clear the panels (the box behind it meets them)
     m.extrude("dark_plastic", [(-D, 0.45 * H), (-0.2 * D, 0.42 * H), (-0.1 * D, 0.6 * H), (-D, 0.52 * H)], "x", -W + side, W - side)
     m.box("light", (-W + side, -0.5 * D, 0.87 * H), (W - side, -0.45 * D, 0.97 * H), rounded=0.0)
     m.post("dark_metal", -0.4 * W, -0.7 * D, 0.5 * H, 0.56 * H, 0.03 * W, fraction=0.3)
@@ -57,9 +63,15 @@ def _console(m: Model) -> None:
     desk = 0.55 * H
     m.box("metal", (-W, -0.4 * D, 0), (W, D, desk))
     m.box("dark_metal", (-W, -D, 0.02 * H), (W, -0.4 * D, 0.06 * H), rounded=0.0)
-    m.extrude("metal", [(-D, desk), (D, desk), (D, 0.72 * H), (-0.4 * D, desk + 0.02 * H)], "x", -W, W)
-    m.extrude("dark_plastic", [(-0.9 * D, desk + 0.005 * H), (0.9 * D, desk + 0.005 * H), (0.9 * D, 0.705 * H),
-                               (-0.4 * D, desk + 0.025 * H)], "x", -0.95 * W, 0.95 * W)
+    # The sloped top and its front lip as two convex outlines (a fan over the notched whole folds).
+    m.extrude("metal", [(-0.4 * D, desk), (D, desk), (D, 0.72 * H), (-0.4 * D, desk + 0.02 * H)], "x", -W, W)
+    m.extrude("metal", [(-D, desk), (-0.4 * D, desk), (-0.4 * D, desk + 0.02 * H)], "x", -W, W)
+    def slope(y: float) -> float:
+        return desk + 0.02 * H + (y + 0.4 * D) * (0.72 * H - desk - 0.02 * H) / (1.4 * D)
+
+    # The dark control surface lies on the slope (its underside on the slope's face, facing away).
+    m.extrude("dark_plastic", [(-0.25 * D, slope(-0.25 * D)), (0.9 * D, slope(0.9 * D)), (0.9 * D, slope(0.9 * D) + 0.01 * H),
+                               (-0.25 * D, slope(-0.25 * D) + 0.01 * H)], "x", -0.95 * W, 0.95 * W)
     _buttons(m, -0.9 * W, -0.1 * W, desk + 0.03 * H, -0.4 * D, 5, 0.02 * H)
     m.box("dark_plastic", (-0.8 * W, 0.6 * D, 0.72 * H), (0.8 * W, D, H))
     screens = max(1, min(3, int(round(m.sx / max(0.5, 0.6 * m.sz)))))
@@ -78,11 +90,11 @@ def _engine(m: Model) -> None:
     for s in (-1, 1):
         m.box("dark_metal", (-W, s * 0.8 * D - 0.1 * D, 0), (W, s * 0.8 * D + 0.1 * D, skid))
     m.box("dark_metal", (-0.9 * W, -0.75 * D, skid), (0.9 * W, 0.75 * D, skid + 0.04 * H))
-    m.box("paint", (-0.55 * W, -0.6 * D, skid), (0.35 * W, 0.6 * D, 0.62 * H))
+    m.box("paint", (-0.55 * W, -0.6 * D, skid + 0.04 * H), (0.35 * W, 0.6 * D, 0.62 * H))  # on the plate, not through it
     for k in range(3):
         x = -0.4 * W + 0.3 * W * k
         m.box("metal", (x - 0.1 * W, -0.45 * D, 0.62 * H), (x + 0.1 * W, 0.45 * D, 0.72 * H))
-    m.box("dark_metal", (0.4 * W, -0.7 * D, skid), (W, 0.7 * D, 0.7 * H))
+    m.box("dark_metal", (0.4 * W, -0.7 * D, skid + 0.04 * H), (W, 0.7 * D, 0.7 * H))
     _vents(m, 0.45 * W, 0.95 * W, 0.15 * H, 0.65 * H, -0.7 * D, 8)
     m.cylinder("metal", (-0.75 * W, -0.4 * D, skid), (-0.75 * W, 0.4 * D, skid), 0.01 * H)
     m.cylinder("paint", (-0.55 * W, 0.0, 0.82 * H), (0.35 * W, 0.0, 0.82 * H), min(0.1 * H, 0.4 * D), fraction=0.7)
@@ -117,9 +129,9 @@ def _printer(m: Model) -> None:
     W, D, H = m.sx / 2, m.sy / 2, m.sz
     if m.named("3d printer"):
         m.box("dark_plastic", (-W, -D, 0), (W, D, 0.12 * H))
-        for x in (-W, W - 0.08 * W):
-            for y in (-D, D - 0.08 * D):
-                m.box("dark_metal", (x, y, 0), (x + 0.08 * W, y + 0.08 * D, H))
+        for x in (-0.99 * W, 0.91 * W):  # posts between base and top, standing in from their sides
+            for y in (-0.99 * D, 0.91 * D):
+                m.box("dark_metal", (x, y, 0.12 * H), (x + 0.08 * W, y + 0.08 * D, 0.92 * H))
         m.box("dark_metal", (-W, -D, 0.92 * H), (W, D, H))
         m.box("metal", (-0.6 * W, -0.6 * D, 0.25 * H), (0.6 * W, 0.6 * D, 0.28 * H), rounded=0.0)
         m.box("accent", (-0.2 * W, -0.2 * D, 0.28 * H), (0.2 * W, 0.2 * D, 0.45 * H))
@@ -212,12 +224,13 @@ def _horizontal_tank(m: Model) -> None:
         foot = centre + s * 0.55 * L * axis
         lo = foot - 0.06 * L * axis - 0.9 * r * across
         hi = foot + 0.06 * L * axis + 0.9 * r * across
-        m.box("concrete", (lo[0], lo[1], 0), (hi[0], hi[1], cz - 0.6 * r))
+        inset = 0.05 * (hi - lo)  # the saddle overhangs its plinth (flush sides would coincide)
+        m.box("concrete", (lo[0] + inset[0], lo[1] + inset[1], 0), (hi[0] - inset[0], hi[1] - inset[1], cz - 0.6 * r))
         m.box("dark_metal", (lo[0], lo[1], cz - 0.62 * r), (hi[0], hi[1], cz - 0.4 * r))
     for t in (-0.3, 0.3):
         m.torus("accent", centre + t * L * axis, 1.01 * r, 0.03 * r, axis="x" if along_x else "y", fraction=0.6)
     m.cylinder("dark_metal", centre + (0, 0, 0.9 * r), centre + (0, 0, r + 0.08 * m.sz), 0.2 * r, fraction=0.5)
-    m.cylinder("metal", centre + (0, 0, r + 0.07 * m.sz), centre + (0, 0, r + 0.08 * m.sz), 0.25 * r, fraction=0.5)
+    m.cylinder("metal", centre + (0, 0, r + 0.07 * m.sz), centre + (0, 0, r + 0.09 * m.sz), 0.25 * r, fraction=0.5)
     ladder = centre - 0.3 * L * axis - 1.02 * r * across
     for k in range(2):
         off = (k - 0.5) * 0.1 * L * axis
@@ -255,8 +268,7 @@ def _water_tower(m: Model) -> None:
     for z in (0.2 * legs_top, 0.6 * legs_top):
         k = 0.4 - 0.08 * z / legs_top
         corners = [(-k, -k), (k, -k), (k, k), (-k, k)]
-        for (ax, ay), (bx, by) in zip(corners, corners[1:] + corners[:1]):
-            m.beam("dark_metal", (ax * m.sx, ay * m.sy, z), (bx * m.sx, by * m.sy, z), 0.015 * min(m.sx, m.sy) + 0.01)
+        ring(m, "dark_metal", [(x * m.sx, y * m.sy, z) for x, y in corners], 0.015 * min(m.sx, m.sy) + 0.01)
     m.lathe("wood", [(r, legs_top), (r, 0.85 * m.sz)], scale=(m.sx, m.sy))
     for z in (0.62, 0.72, 0.82):
         m.lathe("dark_metal", [(r * 1.01, z * m.sz), (r * 1.01, z * m.sz + 0.01 * m.sz)], scale=(m.sx, m.sy), fraction=0.7)
@@ -270,7 +282,7 @@ def _boiler(m: Model) -> None:
     m.lathe("dark_metal", [(r * 1.02, 0), (r * 1.02, 0.06 * m.sz)], scale=(m.sx, m.sy))
     for s in (-1, 1):
         m.cylinder("copper", (s * 0.35 * m.sx, 0, 0.7 * m.sz), (s * 0.5 * m.sx, 0, 0.7 * m.sz), 0.04 * min(m.sx, m.sz), fraction=0.4)
-        m.cylinder("copper", (s * 0.5 * m.sx, 0, 0.7 * m.sz), (s * 0.5 * m.sx, 0, 0.1 * m.sz), 0.04 * min(m.sx, m.sz), fraction=0.4)
+        m.cylinder("copper", (s * 0.5 * m.sx, 0, 0.7 * m.sz), (s * 0.5 * m.sx, 0, 0.1 * m.sz), 0.036 * min(m.sx, m.sz), fraction=0.4)
     m.cylinder("copper", (0, 0, 0.95 * m.sz), (0, 0, m.sz), 0.06 * min(m.sx, m.sy), fraction=0.4)
     m.cylinder("ceramic", (0, -0.4 * m.sy, 0.55 * m.sz), (0, -0.5 * m.sy, 0.55 * m.sz), 0.1 * m.sx, fraction=0.5)
     m.box("flame", (-0.12 * m.sx, -0.42 * m.sy, 0.1 * m.sz), (0.12 * m.sx, -0.38 * m.sy, 0.2 * m.sz), rounded=0.0)
@@ -303,8 +315,10 @@ def _aquarium(m: Model) -> None:
     m.main = "glass"
     W, D, H = m.sx / 2, m.sy / 2, m.sz
     m.box("dark_metal", (-W, -D, 0), (W, D, 0.05 * H), rounded=0.0)
-    m.box("water", (-0.97 * W, -0.95 * D, 0.05 * H), (0.97 * W, 0.95 * D, 0.88 * H), rounded=0.0)
-    m.box("stone", (-0.96 * W, -0.94 * D, 0.05 * H), (0.96 * W, 0.94 * D, 0.12 * H), rounded=0.0)
+    # Gravel sunk a little into the base, water on the gravel: three bottoms in the glass's
+    # plane would fight.
+    m.box("water", (-0.97 * W, -0.95 * D, 0.12 * H), (0.97 * W, 0.95 * D, 0.88 * H), rounded=0.0)
+    m.box("stone", (-0.96 * W, -0.94 * D, 0.045 * H), (0.96 * W, 0.94 * D, 0.12 * H), rounded=0.0)
     m.box("glass", (-W, -D, 0.05 * H), (W, D, 0.95 * H), rounded=0.0)
     m.box("dark_metal", (-W, -D, 0.95 * H), (W, D, H), rounded=0.0)
     for k in range(3):
@@ -345,8 +359,8 @@ def _anvil(m: Model) -> None:
     m.box("dark_metal", (-0.25 * W, -0.4 * D, 0.5 * H), (0.25 * W, 0.4 * D, 0.75 * H))
     m.box("dark_metal", (-0.6 * W, -0.55 * D, 0.75 * H), (0.6 * W, 0.55 * D, H))
     m.cylinder("dark_metal", (0.55 * W, 0, 0.9 * H), (W, 0, 0.97 * H), min(0.12 * H, 0.5 * D), 0.0, fraction=0.6)
-    m.box("dark_metal", (-W, -0.3 * D, 0.85 * H), (-0.55 * W, 0.3 * D, H))
-    m.box("metal", (-0.58 * W, -0.53 * D, 0.999 * H), (0.58 * W, 0.53 * D, H), rounded=0.0)
+    m.box("dark_metal", (-W, -0.3 * D, 0.85 * H), (-0.6 * W, 0.3 * D, H))
+    m.box("metal", (-0.58 * W, -0.53 * D, H), (0.58 * W, 0.53 * D, 1.003 * H), rounded=0.0)  # the steel face on top
 
 
 def _hammer(m: Model) -> None:
@@ -354,14 +368,14 @@ def _hammer(m: Model) -> None:
     m.main = "wood"
     W, D, H = m.sx / 2, m.sy / 2, m.sz
     r = 0.3 * H
-    m.cylinder("wood", (-W, 0.2 * D, r), (0.6 * W, 0.2 * D, r), r, 0.8 * r, fraction=0.5)
+    m.cylinder("wood", (-0.95 * W, 0.2 * D, r), (0.6 * W, 0.2 * D, r), r, 0.8 * r, fraction=0.5)  # its end inside the grip
     if m.named("axe", "hatchet"):
         m.extrude("metal", [(-D, 0.0), (0.5 * D, 0.2 * H), (0.5 * D, 0.8 * H), (-D, H)], "x", 0.55 * W, 0.85 * W)
     elif m.named("mallet", "gavel"):
         m.cylinder("wood", (0.75 * W, -D, 0.5 * H), (0.75 * W, D, 0.5 * H), 0.25 * W, fraction=0.6)
     else:
         m.box("metal", (0.55 * W, -D, 0.05 * H), (0.85 * W, D, 0.95 * H))
-        m.extrude("metal", [(0.55 * W, 0.2 * H), (W, 0.4 * H), (W, 0.6 * H), (0.55 * W, 0.8 * H)], "y", 0.0, D)
+        m.extrude("metal", [(0.6 * W, 0.2 * H), (W, 0.4 * H), (W, 0.6 * H), (0.6 * W, 0.8 * H)], "y", 0.0, 0.9 * D)
     m.cylinder("rubber", (-W, 0.2 * D, r), (-0.6 * W, 0.2 * D, r), 1.15 * r, fraction=0.5)
 
 
@@ -378,7 +392,7 @@ def _toolbox(m: Model) -> None:
     W, D, H = m.sx / 2, m.sy / 2, m.sz
     m.box("paint", (-W, -D, 0), (W, D, 0.75 * H))
     m.box("paint", (-W, -D, 0.77 * H), (W, D, 0.85 * H))
-    m.box("dark_metal", (-W, -1.01 * D, 0.74 * H), (W, 1.01 * D, 0.78 * H), rounded=0.0)
+    m.box("dark_metal", (-1.005 * W, -1.01 * D, 0.74 * H), (1.005 * W, 1.01 * D, 0.78 * H), rounded=0.0)
     for s in (-1, 1):
         m.box("metal", (s * 0.2 * W - 0.08 * W, -1.03 * D, 0.6 * H), (s * 0.2 * W + 0.08 * W, -D, 0.8 * H), rounded=0.0)
         m.post("dark_metal", s * 0.45 * W, 0, 0.85 * H, H, 0.04 * min(W, D) + 0.004, fraction=0.3)

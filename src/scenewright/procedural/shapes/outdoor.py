@@ -165,9 +165,10 @@ def fountain(m: Model) -> None:
     m.lathe("stone", [(r, 0), (r, wall), (r * 0.9, wall), (r * 0.9, 0.06 * m.sz), (0, 0.06 * m.sz)], scale=(m.sx, m.sy))
     m.lathe("water", [(r * 0.9, 0.05 * m.sz), (r * 0.9, wall * 0.8)], scale=(m.sx, m.sy))
     pr = 0.06 * min(m.sx, m.sy)
-    m.lathe("stone", [(pr * 1.6, 0.05 * m.sz), (pr, 0.15 * m.sz), (pr, 0.55 * m.sz), (pr * 1.2, 0.6 * m.sz)])
+    # The pedestal rises from inside the basin floor and the bowl's water stops below its rim.
+    m.lathe("stone", [(pr * 1.6, 0.04 * m.sz), (pr, 0.15 * m.sz), (pr, 0.55 * m.sz), (pr * 1.2, 0.6 * m.sz)])
     m.lathe("stone", [(0.1, 0.58 * m.sz), (0.3, 0.68 * m.sz), (0.28, 0.7 * m.sz)], scale=(m.sx, m.sy))
-    m.lathe("water", [(0.27, 0.69 * m.sz), (0.27, 0.7 * m.sz)], scale=(m.sx, m.sy))
+    m.lathe("water", [(0.27, 0.69 * m.sz), (0.27, 0.695 * m.sz)], scale=(m.sx, m.sy))
     m.lathe("stone", [(pr * 0.8, 0.68 * m.sz), (pr * 0.6, 0.85 * m.sz), (pr, 0.88 * m.sz), (pr * 0.3, 0.93 * m.sz)])
     m.lathe("water", [(pr * 0.5, 0.9 * m.sz), (pr * 0.35, m.sz)], fraction=0.5)
 
@@ -221,7 +222,8 @@ def _traffic_light(m: Model) -> None:
     m.box("dark_metal", (-0.5 * r, -0.5 * r, 0.7 * m.sz), (0.5 * r, 0.4 * r, m.sz))
     for k, role in enumerate(("accent", "flower_alt", "leaf")):
         z = m.sz - (k + 0.5) * 0.3 * m.sz / 3
-        m.cylinder(role, (0, -0.5 * r, z), (0, -0.52 * r, z), 0.3 * r, fraction=0.5)
+        # Lamps set into the housing and never touching one another (their faces would coincide).
+        m.cylinder(role, (0, -0.45 * r, z), (0, -0.52 * r, z), min(0.3 * r, 0.045 * m.sz), fraction=0.5)
         m.box("dark_metal", (-0.35 * r, -r, z + 0.3 * r), (0.35 * r, -0.5 * r, z + 0.35 * r))
 
 
@@ -242,7 +244,7 @@ def lamp_post(m: Model) -> None:
     m.main = "dark_metal"
     r = min(m.sx, m.sy) / 2
     m.lathe("dark_metal", [(0.6 * r, 0), (0.6 * r, 0.05 * m.sz), (0.25 * r, 0.12 * m.sz)])
-    m.post("dark_metal", 0, 0, 0.1 * m.sz, 0.86 * m.sz, m.thick(0.1 * r, 0.2 * r))
+    m.post("dark_metal", 0, 0, 0.1 * m.sz, 0.86 * m.sz - 0.005, m.thick(0.1 * r, 0.2 * r))
     lz = 0.86 * m.sz
     lh = 0.1 * m.sz
     m.lathe("dark_metal", [(0.25 * r, lz - 0.01), (0.4 * r, lz)], fraction=0.5)
@@ -257,7 +259,9 @@ def _tombstone(m: Model) -> None:
     m.main = "stone"
     r = m.sx / 2
     m.box("stone", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, m.sz - r))
-    m.cylinder("stone", (0, -m.sy / 2, m.sz - r), (0, m.sy / 2, m.sz - r), r)
+    # A half-round top on the slab (a whole cylinder's lower half would share the slab's faces).
+    arch = [(r * np.cos(a), m.sz - r + r * np.sin(a)) for a in np.linspace(0, np.pi, m.segments(0.5) + 1)]
+    m.extrude("stone", arch, "y", -m.sy / 2, m.sy / 2)
     m.box("dark_plastic", (-0.25 * m.sx, -m.sy / 2 - 0.003, 0.5 * m.sz), (0.25 * m.sx, -m.sy / 2, 0.55 * m.sz), rounded=0.0)
 
 def sign(m: Model) -> None:
@@ -339,7 +343,7 @@ def hydrant(m: Model) -> None:
     m.lathe("paint", [(0.7 * r, 0), (0.7 * r, 0.06 * m.sz), (0.5 * r, 0.08 * m.sz), (0.5 * r, 0.75 * m.sz),
                       (0.6 * r, 0.78 * m.sz), (0.45 * r, 0.92 * m.sz), (0.1 * r, m.sz)])
     z = 0.55 * m.sz
-    m.cylinder("paint", (-m.sx / 2, 0, z), (m.sx / 2, 0, z), 0.2 * r, fraction=0.5)
+    m.cylinder("paint", (-m.sx / 2 + 0.02, 0, z), (m.sx / 2 - 0.02, 0, z), 0.2 * r, fraction=0.5)  # ends inside the caps
     m.cylinder("metal", (0, 0, z), (0, -m.sy / 2, z), 0.28 * r, fraction=0.5)
     m.cylinder("metal", (-m.sx / 2, 0, z), (-m.sx / 2 + 0.04, 0, z), 0.24 * r, fraction=0.5)
     m.cylinder("metal", (m.sx / 2 - 0.04, 0, z), (m.sx / 2, 0, z), 0.24 * r, fraction=0.5)
@@ -442,8 +446,8 @@ def swing(m: Model) -> None:
     top = m.sz - leg
     for s in (-1, 1):
         x = s * (m.sx / 2 - leg)
-        for ys in (-1, 1):
-            m.cylinder("paint", (x, ys * (m.sy / 2 - leg), 0), (x, 0, top), leg, fraction=0.5)
+        for ys in (-1, 1):  # the legs of an A meet at the top: one a little thinner, or their sides coincide
+            m.cylinder("paint", (x, ys * (m.sy / 2 - leg), 0), (x, 0, top), leg * (1 if ys < 0 else 0.92), fraction=0.5)
     m.cylinder("paint", (-m.sx / 2, 0, top), (m.sx / 2, 0, top), leg, fraction=0.5)
     seats = 2 if m.sx > 1.8 else 1
     for i in range(seats):
@@ -467,12 +471,12 @@ def slide(m: Model) -> None:
         m.cylinder("metal", (-w, y, z), (w, y, z), 0.015, fraction=0.3)
     m.box("accent", (-m.sx / 2, back - 0.25 * m.sy, deck - 0.05), (m.sx / 2, back, deck))
     for x in (-m.sx / 2, m.sx / 2 - 0.05):
-        m.box("metal", (x, back - 0.25 * m.sy, 0), (x + 0.05, back - 0.2 * m.sy, deck))
+        m.box("metal", (x, back - 0.25 * m.sy, 0), (x + 0.05, back - 0.2 * m.sy, deck - 0.05))  # up to the platform
         m.box("metal", (x, back - 0.25 * m.sy, deck), (x + 0.05, back, m.sz))
     start = back - 0.25 * m.sy
     chute = [(start, deck), (start, deck + 0.12), (-m.sy / 2, 0.12), (-m.sy / 2, 0.0), (-m.sy / 2 + 0.2, 0.0)]
     m.extrude("paint", chute, "x", -0.3 * m.sx, 0.3 * m.sx)
-    for x in (-0.3 * m.sx, 0.3 * m.sx - 0.04):
+    for x in (-0.3 * m.sx - 0.04, 0.3 * m.sx):  # side walls outside the chute, not overlapping it
         m.extrude("paint", [(start, deck), (start, deck + 0.25), (-m.sy / 2, 0.3), (-m.sy / 2, 0.05)], "x", x, x + 0.04)
 
 

@@ -229,10 +229,13 @@ def picture_frame(m: Model) -> None:
     m.box("wood", (-m.sx / 2 + f, y0, m.sz - f), (m.sx / 2 - f, y1, m.sz))
     yc = y0 + 0.4 * (y1 - y0)
     m.box("canvas_alt", (-m.sx / 2 + f, yc, f), (m.sx / 2 - f, y1, m.sz - f), rounded=0.0)
-    for role in ("book_b", "book_c", "flower_alt"):
+    for k, role in enumerate(("book_b", "book_c", "flower_alt")):
         cx, cz = m.vary(-0.25, 0.25) * m.sx, m.vary(0.3, 0.7) * m.sz
         w, h = m.vary(0.1, 0.3) * m.sx, m.vary(0.1, 0.3) * m.sz
-        m.box(role, (cx - w / 2, yc - 0.002, cz - h / 2), (cx + w / 2, yc, cz + h / 2), rounded=0.0)
+        # Each patch of paint a little proud of the one before: overlapping patches in one
+        # plane would fight.
+        front = yc - 0.002 * (k + 1)
+        m.box(role, (cx - w / 2, front, cz - h / 2), (cx + w / 2, front + 0.002, cz + h / 2), rounded=0.0)
 
 
 def trash_can(m: Model) -> None:
