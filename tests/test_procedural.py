@@ -328,12 +328,67 @@ def test_khronos_validator_finds_no_errors(tmp_path, shape, style):
         ("generic", "dog", "fur"), ("generic", "spaceship", "glass"), ("tower", "lighthouse", "light"),
         ("rock", "campfire", "flame"), ("barrel", "log", "bark"), ("crate", "treasure chest", "gold"),
         ("lamp_post", "traffic light", "flower_alt"), ("statue", "snowman", "ceramic"),
+        ("crate", "hay bale", "straw"), ("crate", "shipping container", "paint"), ("truck", "forklift tractor", "yellow_paint"),
     ],
 )
 def test_names_pick_variants_within_a_shape(shape, name, role):
     variant = build_model(shape, (1.0, 1.0, 1.5), "realistic", 1, name=name)
     plain = build_model(shape, (1.0, 1.0, 1.5), "realistic", 1, name=shape)
     assert role in variant.geometry and set(variant.geometry) != set(plain.geometry)
+
+
+def test_the_object_s_own_word_picks_the_variant_before_its_category_s():
+    """The builder's name is the object's name then its category's: a forklift filed under
+    tractors is drawn as a forklift, a plain tractor as a tractor."""
+    forklift = build_model("truck", (2.0, 3.5, 2.5), "realistic", 1, name="forklift tractor")
+    tractor = build_model("truck", (2.0, 3.5, 2.5), "realistic", 1, name="tractor")
+    assert "yellow_paint" in forklift.geometry and "yellow_paint" not in tractor.geometry
+
+
+def test_tiger_stripes_are_hoops_round_its_body():
+    """Each stripe crosses the back from side to side (wider across than along the body),
+    on an orange coat."""
+    model = Model((0.8, 2.0, 1.0), resolve_style("realistic"), np.random.default_rng(0), name="tiger")
+    SHAPES["animal"](model)
+    assert model.main == "fur_orange" and len(model.parts["fur_dark"]) >= 7
+    for stripe in model.parts["fur_dark"]:
+        extent = np.ptp(stripe.vertices, axis=0)
+        assert extent[0] > 3 * extent[1]
+
+
+def test_a_picnic_table_has_a_bench_along_each_side():
+    model = Model((1.8, 1.5, 0.75), resolve_style("realistic"), np.random.default_rng(0), name="picnic table")
+    SHAPES["table"](model)
+    seats = [p for p in model.parts["wood"] if abs(p.vertices[:, 2].max() - 0.45) < 0.02 and np.ptp(p.vertices[:, 0]) > 1.5]
+    assert sorted(np.sign(p.vertices[:, 1].mean()) for p in seats) == [-1, 1]
+
+
+def test_every_extruded_outline_is_star_shaped_about_its_mean(monkeypatch):
+    """An extrusion's caps are fans from the outline's mean (parts.prism): a notched outline
+    (the arcade cabinet's side) folds them over, a dark patch in renders. Generators split
+    such outlines into convex pieces."""
+    from scenewright.procedural import parts
+
+    checked, folded = [], []
+    real = parts.prism
+
+    def prism(polygon, depth):
+        poly = np.asarray(polygon, float)
+        centre, following = poly.mean(axis=0), np.roll(poly, -1, axis=0)
+        turns = (poly[:, 0] - centre[0]) * (following[:, 1] - centre[1]) - (poly[:, 1] - centre[1]) * (following[:, 0] - centre[0])
+        checked.append(len(poly))
+        if (turns > 1e-12).any() and (turns < -1e-12).any():
+            folded.append(poly.round(3).tolist())
+        return real(polygon, depth)
+
+    monkeypatch.setattr(parts, "prism", prism)
+    for shape, names in (("machine", ("arcade", "console", "machine")), ("vehicle", ("car", "tractor", "spaceship")),
+                         ("table", ("picnic table",)), ("sign", ("tombstone", "sign")), ("boat", ("boat",))):
+        for name in names:
+            for style in ("realistic", "low-poly"):
+                SHAPES[shape](Model((1.0, 0.8, 1.2), resolve_style(style), np.random.default_rng(0), name=name))
+    assert checked, "no outline was extruded: the check saw nothing"
+    assert not folded, folded[:3]
 
 
 def test_a_description_alone_does_not_change_what_an_object_is():

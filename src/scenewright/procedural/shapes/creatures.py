@@ -59,7 +59,8 @@ ANIMALS: tuple[tuple[tuple[str, ...], Build], ...] = (
      Build("fur", 0.47, 0.14, 0.32, 0.92, 0.93, 0.07, 1.8, 0.07, "small", "hang", 0.9, 0.3)),
     (("deer", "reindeer", "elk", "moose", "stag", "antelope", "gazelle"),
      Build("fur", 0.5, 0.14, 0.3, 0.9, 0.7, 0.08, 1.0, 0.06, "antlers", "up", 0.8)),
-    (("lion", "lioness", "tiger", "leopard", "cheetah", "panther", "jaguar", "puma", "cougar"),
+    (("tiger",), Build("fur_orange", 0.4, 0.17, 0.32, 0.85, 0.74, 0.14, 0.45, 0.1, "small", "long")),  # orange under its stripes
+    (("lion", "lioness", "leopard", "cheetah", "panther", "jaguar", "puma", "cougar"),
      Build("fur_light", 0.4, 0.17, 0.32, 0.85, 0.74, 0.14, 0.45, 0.1, "small", "long")),
     (("bear", "panda"), Build("fur", 0.3, 0.26, 0.32, 0.85, 0.62, 0.15, 0.45, 0.13, "round", "none", 1.1)),
     (("fox", "wolf", "coyote", "jackal"), Build("fur_orange", 0.4, 0.15, 0.3, 0.85, 0.8, 0.12, 0.8, 0.08, "pointy", "bushy")),

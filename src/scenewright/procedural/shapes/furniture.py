@@ -9,7 +9,29 @@ from scenewright.procedural.shapes.machines import machine, tank
 from scenewright.procedural.shapes.structures import structure
 
 
+def _picnic_table(m: Model) -> None:
+    """A picnic table: a plank top over the middle, a bench along each long side, both
+    carried by A-frame legs at the ends and a crossbar under the benches."""
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    t = m.thick(0.04, 0.1 * H)
+    seat = 0.6 * H
+    leg = m.thick(0.05, 0.06 * min(m.sx, m.sy))
+    m.box("wood", (-W, -0.55 * D, H - t), (W, 0.55 * D, H))
+    for s in (-1, 1):
+        y0, y1 = sorted((s * 0.68 * D, s * D))
+        m.box("wood", (-0.95 * W, y0, seat - t), (0.95 * W, y1, seat))
+    for x in (-0.7 * W, 0.7 * W):
+        for s in (-1, 1):  # slanted legs with level feet; those of one A stop short of each other
+            yb, yt = s * 0.9 * D, s * 0.12 * D
+            m.extrude("wood", [(yb - leg / 2, 0), (yb + leg / 2, 0), (yt + leg / 2, H - t / 2), (yt - leg / 2, H - t / 2)],
+                      "x", x - leg / 2, x + leg / 2)
+        m.box("wood", (x - 0.35 * leg, -0.96 * D, seat - t - 0.06 * H), (x + 0.35 * leg, 0.96 * D, seat - t))
+
+
 def table(m: Model) -> None:
+    if m.named("picnic"):
+        _picnic_table(m)
+        return
     t = m.thick(0.04, 0.2 * m.sz)
     leg = m.thick(0.03)
     m.box("wood", (-m.sx / 2, -m.sy / 2, m.sz - t), (m.sx / 2, m.sy / 2, m.sz))

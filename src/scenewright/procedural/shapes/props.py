@@ -260,10 +260,61 @@ def _chest(m: Model) -> None:
         m.torus("brass", (x, 0, m.sz - lid), m.sy / 2, 0.015 * m.sz, axis="x", arc=np.pi)
     m.box("gold", (-0.06 * m.sx, -m.sy / 2 - 0.02, m.sz - lid - 0.12 * m.sz), (0.06 * m.sx, -m.sy / 2, m.sz - lid + 0.02 * m.sz))
 
+def _bale(m: Model) -> None:
+    """A bale of hay or straw: a straw block, its edges rounded, bound by two cords."""
+    m.main = "straw"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.box("straw", (-W, -D, 0), (W, D, H), rounded=0.08 * min(m.sx, m.sy, m.sz))
+    for x in (-0.5 * W, 0.5 * W):
+        m.box("bark", (x - 0.015 * m.sx, -1.01 * D, 0.0), (x + 0.015 * m.sx, 1.01 * D, 1.01 * H), rounded=0.0)
+
+
+def _shipping_container(m: Model) -> None:
+    """A steel shipping container along y: ribbed sides, corner posts, double doors at the
+    front (its end toward −Y, the side a viewer is shown)."""
+    m.main = "paint"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.box("paint", (-W, -D, 0), (W, D, H), rounded=0.0)
+    ribs = max(4, int(m.sy / 0.3))
+    for k in range(ribs):
+        y = -D + (k + 0.5) * m.sy / ribs
+        for s in (-1, 1):  # corrugation: ribs standing proud of each long side
+            x0, x1 = sorted((s * W, s * (W + 0.01 * m.sx)))
+            m.box("paint", (x0, y - 0.2 * m.sy / ribs, 0.05 * H), (x1, y + 0.2 * m.sy / ribs, 0.95 * H), rounded=0.0)
+    post = 0.04 * min(m.sx, m.sz)
+    for x in (-W - 0.005, W - post + 0.005):
+        for y in (-D - 0.005, D - post + 0.005):
+            m.box("dark_metal", (x, y, -0.0), (x + post, y + post, H + 0.005), rounded=0.0)
+    for x in (-0.5 * W, -0.2 * W, 0.2 * W, 0.5 * W):  # the doors' locking bars
+        m.beam("dark_metal", (x, -D - 0.01, 0.05 * H), (x, -D - 0.01, 0.95 * H), 0.02 * m.sx)
+    m.box("dark_metal", (-0.003 * m.sx, -D - 0.005, 0.03 * H), (0.003 * m.sx, -D, 0.97 * H), rounded=0.0)
+
+
+def _pallet(m: Model) -> None:
+    """A wooden pallet: deck boards across three runners, bottom boards under them."""
+    m.main = "wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    runner = 0.1 * m.sx
+    for k in range(3):
+        x = -W + k * (m.sx - runner) / 2
+        m.box("wood", (x, -D, 0.2 * H), (x + runner, D, 0.78 * H))
+    boards = 7
+    w = m.sy / (boards + (boards - 1) * 0.5)
+    for k in range(boards):
+        y = -D + k * 1.5 * w
+        m.box("wood", (-W, y, 0.78 * H), (W, y + w, H))
+    for y in (-D, -w / 2, D - w):
+        m.box("wood", (-W, y, 0), (W, y + w, 0.2 * H))
+
+
 def crate(m: Model) -> None:
-    if m.named("chest", "treasure"):
-        _chest(m)
-        return
+    """A wooden crate, or what the catalogue files with crates and draws its own way: a
+    treasure chest, a bale of hay, a shipping container, a pallet."""
+    for words, build in ((("chest", "treasure"), _chest), (("hay", "straw", "haystack"), _bale),
+                         (("shipping container", "cargo container"), _shipping_container), (("pallet",), _pallet)):
+        if m.named(*words):
+            build(m)
+            return
     b = m.thick(0.06, 0.15 * min(m.sx, m.sy, m.sz))
     m.box("wood", (-m.sx / 2 + b * 0.3, -m.sy / 2 + b * 0.3, b * 0.3), (m.sx / 2 - b * 0.3, m.sy / 2 - b * 0.3, m.sz - b * 0.3))
     hx, hy, hz = m.sx / 2, m.sy / 2, m.sz

@@ -396,10 +396,12 @@ def vehicle(m: Model) -> None:
         (("spaceship", "spacecraft", "starship", "drone", "quadcopter", "jet", "airplane", "plane", "aircraft", "ufo",
           "shuttle", "helicopter", "rocket ship"), craft),
     )
-    for words, build in variants:
-        if m.named(*words):
-            build(m)
-            return
+    # The variant whose word comes first in the name wins: a name is the object's own words,
+    # then its category's ("forklift tractor" is a forklift).
+    found = [(m.name.find(word), build) for words, build in variants for word in words if m.named(word)]
+    if found:
+        min(found, key=lambda pair: pair[0])[1](m)
+        return
     car(m)
 
 
