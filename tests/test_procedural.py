@@ -329,6 +329,7 @@ def test_khronos_validator_finds_no_errors(tmp_path, shape, style):
         ("rock", "campfire", "flame"), ("barrel", "log", "bark"), ("crate", "treasure chest", "gold"),
         ("lamp_post", "traffic light", "flower_alt"), ("statue", "snowman", "ceramic"),
         ("crate", "hay bale", "straw"), ("crate", "shipping container", "paint"), ("truck", "forklift tractor", "yellow_paint"),
+        ("rug", "pond", "water"), ("rug", "swimming pool", "water"), ("vehicle", "hot air balloon vehicle", "flower_alt"),
     ],
 )
 def test_names_pick_variants_within_a_shape(shape, name, role):
@@ -343,6 +344,17 @@ def test_the_object_s_own_word_picks_the_variant_before_its_category_s():
     forklift = build_model("truck", (2.0, 3.5, 2.5), "realistic", 1, name="forklift tractor")
     tractor = build_model("truck", (2.0, 3.5, 2.5), "realistic", 1, name="tractor")
     assert "yellow_paint" in forklift.geometry and "yellow_paint" not in tractor.geometry
+
+
+def test_a_balloon_is_widest_high_up_over_a_small_basket():
+    """Not a car: the envelope's widest ring is in its upper half, the basket under it small."""
+    model = Model((6.0, 6.0, 9.0), resolve_style("realistic"), np.random.default_rng(0), name="hot air balloon vehicle")
+    SHAPES["vehicle"](model)
+    envelope = model.parts["paint"][0].vertices
+    widest = envelope[np.argmax(np.linalg.norm(envelope[:, :2], axis=1)), 2]
+    assert widest > 0.5 * 9.0 and "glass" not in model.parts and "rubber" not in model.parts
+    basket = model.parts["wood"][0].vertices
+    assert np.ptp(basket[:, 0]) < 0.3 * 6.0 and abs(basket[:, 2].min()) < 1e-9
 
 
 def test_tiger_stripes_are_hoops_round_its_body():

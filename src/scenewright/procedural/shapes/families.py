@@ -73,6 +73,7 @@ FAMILY_WORDS: dict[str, tuple[str, ...]] = {
         "army tank", "battle tank", "military tank", "panzer", "locomotive", "train", "steam engine", "carriage", "chariot",
         "spaceship", "spacecraft", "starship", "drone", "quadcopter", "jet", "airplane", "plane", "aircraft", "ufo",
         "helicopter", "jeep", "suv", "pickup", "minivan", "ambulance", "fire engine", "police car", "limousine",
+        "hot air balloon",
     ),
 }
 

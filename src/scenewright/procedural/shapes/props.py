@@ -48,7 +48,29 @@ def pendant_lamp(m: Model) -> None:
     m.ball("light", (0, 0, 0.12 * shade_h), (0.3 * r, 0.3 * r, 0.3 * r), fraction=0.6)
 
 
+def _water(m: Model) -> None:
+    """Water in the ground: a pond or puddle is an oval of water in a stone rim, a pool a
+    rectangle of water in a concrete coping, an ice rink white ice inside low boards."""
+    rink = m.named("rink")
+    m.main = "ceramic" if rink else "water"
+    if not (rink or m.named("pool")):
+        # The rim: up its outside, across its top, down its inside (a ring, open in the middle).
+        m.lathe("stone", [(0.5, 0), (0.5, m.sz), (0.44, m.sz), (0.44, 0)], scale=(m.sx, m.sy))
+        m.lathe("water", [(0.45, 0), (0.45, 0.6 * m.sz)], scale=(m.sx, m.sy))
+        return
+    rim, edge = ("plastic", 0.03 * min(m.sx, m.sy)) if rink else ("concrete", 0.06 * min(m.sx, m.sy))
+    W, D = m.sx / 2, m.sy / 2
+    # The long sides run full length, the ends fit between them: edge to edge, no shared face.
+    for lo, hi in (((-W, -D), (-W + edge, D)), ((W - edge, -D), (W, D)),
+                   ((-W + edge, -D), (W - edge, -D + edge)), ((-W + edge, D - edge), (W - edge, D))):
+        m.box(rim, (*lo, 0), (*hi, m.sz), rounded=0.0)
+    m.box("ceramic" if rink else "water", (-W + edge, -D + edge, 0), (W - edge, D - edge, 0.6 * m.sz), rounded=0.0)
+
+
 def rug(m: Model) -> None:
+    if m.named("pond", "pool", "puddle", "rink"):
+        _water(m)
+        return
     m.main = "fabric"
     border = 0.06 * min(m.sx, m.sy)
     if m.has("round", "circular", "oval"):

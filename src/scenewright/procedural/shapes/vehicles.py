@@ -383,6 +383,24 @@ def _locomotive(m: Model) -> None:
     m.box("light", (-0.2 * W, -0.99 * L, 1.3 * wr + 1.6 * br), (0.2 * W, -0.96 * L, 1.3 * wr + 1.9 * br))
 
 
+def _balloon(m: Model) -> None:
+    """A hot air balloon at rest: a striped envelope over a wicker basket on four ropes."""
+    m.main = "paint"
+    H = m.sz
+    heights = np.array([0.36, 0.5, 0.72, 0.88, 0.97, 1.0]) * H
+    radii = np.array([0.1, 0.3, 0.5, 0.45, 0.3, 0.0])
+    m.lathe("paint", list(zip(radii, heights)), scale=(m.sx, m.sy))
+    for z0, z1 in ((0.55, 0.62), (0.75, 0.82)):  # bands a hair outside the envelope
+        zs = np.linspace(z0, z1, 3) * H
+        m.lathe("flower_alt", [(1.01 * float(np.interp(z, heights, radii)), z) for z in zs], scale=(m.sx, m.sy))
+    m.box("wood", (-0.1 * m.sx, -0.1 * m.sy, 0), (0.1 * m.sx, 0.1 * m.sy, 0.12 * H))
+    m.cylinder("dark_metal", (0, 0, 0.2 * H), (0, 0, 0.26 * H), 0.04 * m.sx, fraction=0.5)
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            m.beam("dark_wood", (sx * 0.09 * m.sx, sy * 0.09 * m.sy, 0.11 * H), (sx * 0.07 * m.sx, sy * 0.07 * m.sy, 0.37 * H),
+                   0.01 * m.sx)
+
+
 def vehicle(m: Model) -> None:
     """A vehicle the catalogue does not know: tractor, forklift, golf cart, cart, battle
     tank, locomotive, or a flying craft (drone, spaceship); else a car."""
@@ -392,6 +410,7 @@ def vehicle(m: Model) -> None:
         (("golf cart", "buggy", "gokart", "go-kart", "kart", "rickshaw"), _golf_cart),
         (("army tank", "battle tank", "military tank", "panzer", "armored", "armoured", "tank"), _battle_tank),
         (("locomotive", "train", "engine car", "steam engine"), _locomotive),
+        (("hot air balloon", "balloon"), _balloon),
         (("cart", "wagon", "carriage", "wheelbarrow", "trolley", "chariot"), cart),
         (("spaceship", "spacecraft", "starship", "drone", "quadcopter", "jet", "airplane", "plane", "aircraft", "ufo",
           "shuttle", "helicopter", "rocket ship"), craft),
