@@ -105,6 +105,8 @@ def shared_faces(parts: list[P.Part]) -> list[tuple[int, int, tuple, float]]:
 
 #: Styles that change how parts meet: plain boxes, rounded edges, flat shading with chunky parts.
 STYLES = ("realistic", "cartoon", "low-poly")
+
+
 def _cases() -> dict[str, list[str]]:
     """Shape → the names it is drawn under: its own, every catalogue name that uses it, every family word."""
     cases: dict[str, set[str]] = {shape: {shape.replace("_", " ")} for shape in SHAPES}

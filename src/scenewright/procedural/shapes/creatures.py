@@ -213,8 +213,8 @@ def _features(m: Model, kind: str, coat: str, head, hw, hr, snout, snout_len, bo
                 m.ball(spots, p + (0.2 * hw, -0.2 * hr, 0), (0.2 * hw, 0.3 * hr, 0.4 * hr), fraction=0.3)
     if m.named("zebra", "tiger"):
         # Stripes are hoops over the back, each fitted to the body's cross-section where it
-        # sits (an ellipse narrowing toward the ends), apart from one another along it.
-        # about y: local x → x, local y → z, local z → −y (the builder's y-axis arc)
+        # sits (an ellipse narrowing toward the ends), apart from one another along it. The
+        # hoop turns about y as the builder's y-axis arcs do: from +X over +Z to −X.
         about_y = np.array([[1, 0, 0], [0, 0, -1], [0, 1, 0]], float)
         for k in range(7):
             t = -0.8 + 1.6 * k / 6
