@@ -42,7 +42,10 @@ _WORD = re.compile(r"[^\W_]+(?:['’][^\W\d_]+)?")  # letters of any script: "ca
 #: Plurals that the suffix rules below would get wrong.
 _IRREGULAR = {"cacti": "cactus", "mice": "mouse", "geese": "goose", "people": "person", "children": "child",
               "taxis": "taxi", "buses": "bus", "octopuses": "octopus", "walruses": "walrus", "cactuses": "cactus",
-              "thermoses": "thermos", "canvases": "canvas", "lenses": "lens", "atlases": "atlas"}
+              "thermoses": "thermos", "canvases": "canvas", "lenses": "lens", "atlases": "atlas",
+              "canvas": "canvas", "atlas": "atlas", "oxen": "ox"}
+#: Plurals in -men ("women", "firemen"); not "specimen" or "omen", which end so in the singular.
+_MEN = ("women", "smen", "emen", "ymen")
 _KEEP_S = ("ss", "us", "is", "ous", "ics")
 
 
@@ -89,6 +92,8 @@ def singular(word: str) -> str:
     """The singular of an English plural noun, by the common suffix rules."""
     if word in _IRREGULAR:
         return _IRREGULAR[word]
+    if word == "men" or word.endswith(_MEN):
+        return word[:-3] + "man"
     if len(word) <= 3 or not word.endswith("s") or word.endswith(_KEEP_S):
         return word
     if word.endswith("ies"):

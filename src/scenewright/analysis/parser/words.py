@@ -47,7 +47,7 @@ _UNITS = {
 _DIMENSIONS = {"wide": "x", "width": "x", "across": "x", "long": "long", "length": "long", "deep": "y",
                "depth": "y", "tall": "z", "high": "z", "height": "z", "diameter": "d"}  # fmt: skip
 #: Containers and depictions: what follows their "of" is content or subject, not an object.
-_CONTENT_HEADS = {"vase", "bowl", "basket", "plate", "bottle", "cup", "pot", "crate", "cart", "statue",
+_CONTENT_HEADS = {"vase", "bowl", "basket", "bucket", "plate", "bottle", "cup", "pot", "crate", "cart", "statue",
                   "picture_frame", "planter", "sign", "billboard", "shop_shelf", "bookshelf", "flask",
                   "barrel", "shipping_container", "flower_bed", "cauldron", "sandbox", "hologram"}  # fmt: skip
 _CONTENT_MARKERS = {("full", "of"), ("filled", "with"), ("packed", "with"), ("overflowing", "with"),
