@@ -44,8 +44,9 @@ _IRREGULAR = {"cacti": "cactus", "mice": "mouse", "geese": "goose", "people": "p
               "taxis": "taxi", "buses": "bus", "octopuses": "octopus", "walruses": "walrus", "cactuses": "cactus",
               "thermoses": "thermos", "canvases": "canvas", "lenses": "lens", "atlases": "atlas",
               "canvas": "canvas", "atlas": "atlas", "oxen": "ox"}
-#: Plurals in -men ("women", "firemen"); not "specimen" or "omen", which end so in the singular.
-_MEN = ("women", "smen", "emen", "ymen")
+#: Singular nouns in -men; other words in -men are plurals of -man ("women", "fishermen").
+_SINGULAR_MEN = {"specimen", "omen", "abdomen", "stamen", "regimen", "hymen", "semen", "lumen", "amen", "acumen",
+                 "albumen", "bitumen", "germen", "yemen"}  # fmt: skip
 _KEEP_S = ("ss", "us", "is", "ous", "ics")
 
 
@@ -92,7 +93,7 @@ def singular(word: str) -> str:
     """The singular of an English plural noun, by the common suffix rules."""
     if word in _IRREGULAR:
         return _IRREGULAR[word]
-    if word == "men" or word.endswith(_MEN):
+    if word.endswith("men") and word not in _SINGULAR_MEN:
         return word[:-3] + "man"
     if len(word) <= 3 or not word.endswith("s") or word.endswith(_KEEP_S):
         return word

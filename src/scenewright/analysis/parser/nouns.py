@@ -324,7 +324,12 @@ def _plural_is_verb(toks: list[_Tok], s: int, nxt: tuple) -> bool:
     follow = toks[end].text if end < len(toks) else ""
     if follow in _OBJECT_OPENERS or follow in _NUMBERS:
         return True
-    if _counted_plural(toks, s) or _is_verb(follow) or follow in _FINITE:
+    if _counted_plural(toks, s):
+        return False
+    person = load_vocabulary().match(tuple(t.text for t in toks[s : nxt[0]]))
+    if person is not None and person.category == "figure":
+        return True  # "the baker slides loaves into the oven": a person names no kind of slide
+    if _is_verb(follow) or follow in _FINITE:
         return False
     return nxt[3] is not None
 
@@ -470,7 +475,7 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             continue  # "a sunny afternoon", "a pair of", "a sense of calm"
         entry = vocabulary.guess(word)
         if entry.category == GENERIC:
-            entry = vocabulary.guess_agent(word, _verb_after(toks, head + 1)) or entry  # "four pickers are working"
+            entry = vocabulary.guess_agent(word, _acts_as_person(toks, head + 1)) or entry  # "four pickers work"
         out.append((head, head + 1, entry.category, entry))
         covered.add(head)
     return out
@@ -480,11 +485,18 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
 _AUXILIARIES = {"is", "are", "was", "were", "has", "have", "been", "be", "busily", "quietly", "still"}
 
 
-def _verb_after(toks: list[_Tok], k: int) -> str:
-    """The first word after ``k`` that is not an auxiliary: the verb of a subject ending there."""
+def _acts_as_person(toks: list[_Tok], k: int) -> bool:
+    """Whether the subject ending at ``k`` does what people do: a person verb ("a picker is
+    working", "a welder kneels"), or a deed done to a thing ("a farrier is shoeing a horse")."""
+    start = k
     while k < len(toks) and toks[k].text in _AUXILIARIES:
         k += 1
-    return toks[k].text if k < len(toks) else ""
+    if k >= len(toks):
+        return False
+    verb = toks[k].text
+    if verb in load_vocabulary().person_verbs:
+        return True
+    return k > start and verb.endswith("ing") and k + 1 < len(toks) and toks[k + 1].text in _DETERMINERS
 
 
 def _participle(word: str) -> bool:

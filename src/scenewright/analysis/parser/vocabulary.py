@@ -119,13 +119,13 @@ class Vocabulary:
         category = catalogue[GENERIC]
         return Entry(GENERIC, category.size, category.rests)
 
-    def guess_agent(self, head: str, verb: str) -> Entry | None:
-        """A person for an agent noun nobody listed that does what people do ("four pickers are
-        working", "a welder kneels"); None when the word or the verb says nothing of that ("a
-        heater hums")."""
+    def guess_agent(self, head: str, acts: bool) -> Entry | None:
+        """A person for an agent noun nobody listed when the text has it do what people do
+        (``acts``: "four pickers are working"); None for any other word, or when it only hums or
+        stands ("a heater hums")."""
         one = singular(head.lower())
         agent = one.endswith(_AGENT_ENDINGS) and len(one) - 2 >= _MIN_STEM
-        return self._family("figure") if agent and verb.lower() in self.person_verbs else None
+        return self._family("figure") if agent and acts else None
 
     @staticmethod
     def _family(family: str) -> Entry:
