@@ -630,6 +630,10 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             break
         adjectives.insert(0, t.orig)
         j -= 1
+    if count is None and j >= 1 and (toks[j - 1].text, toks[j].text) in _CROWDED:
+        # "a grandstand packed with cheering peasants": a crowd ("full of goldfish": a plural
+        # that looks singular, since a bare singular thing is never what a place is full of)
+        count = _VAGUE["many"]
     if count is None:
         count = 3 if plural else 1
     if m.category == "books" and not counted:
@@ -639,6 +643,9 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
     m.count, m.counted, m.adjectives = count, counted, adjectives
 
 
+#: Markers after which a bare plural is a crowd ("packed with fans", "full of goldfish").
+_CROWDED = {("packed", "with"), ("crowded", "with"), ("full", "of"), ("filled", "with"), ("teeming", "with"),
+            ("swarming", "with"), ("thronged", "with"), ("crammed", "with")}  # fmt: skip
 #: Participles that describe the look of the noun before them ("painted red", "made of steel").
 _LOOK_PARTICIPLES = {"glowing", "gleaming", "shining", "painted", "covered", "made", "coated", "upholstered",
                      "carved", "lacquered", "varnished", "dyed", "tinted", "trimmed", "wrapped", "draped",
