@@ -174,6 +174,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         if e + 1 < n and toks[e].text == "in" and toks[e + 1].text in _MEASURES:
             continue  # "a room six tatami mats in size", "two cars in length": a measure, not things
         if toks[s].joined and e - s == 1 and _names_kind(toks, e):
+            modifier = []
             continue  # "a block-building game": half of a hyphened modifier, not a building
         if _gerund_here(toks, s, e):
             continue  # "two children are building a snowman": a verb, not a building
@@ -600,7 +601,7 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         if w == "of" and j > 0 and toks[j - 1].text in _QUANTITY:
             q = toks[j - 1].text
             small = (m.guess.rests if m.guess is not None else load_catalogue()[m.category].rests) == "surface"
-            pair = q == "pair" and toks[m.end - 1].text in load_vocabulary().pair_nouns  # "a pair of shears"
+            pair = q in ("pair", "pairs") and toks[m.end - 1].text in load_vocabulary().pair_nouns  # "a pair of shears"
             count = 1 if (q in ("stack", "pile") and small) or pair else _QUANTITY[q]
             counted = q in ("pair", "couple", "dozen")
             k = j - 2
