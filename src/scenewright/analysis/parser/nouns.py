@@ -407,9 +407,11 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     if e < len(toks) and toks[e].text in _PLACE_OPENERS:
         starts = {r[0] for r in later}
         k = e + 1
-        while k < len(toks) and toks[k].text not in (".", "!", "?", ";") and not _verb_word(toks[k].text):
+        while k < len(toks) and toks[k].text not in (".", "!", "?", ";"):
             if k in starts:
                 return True  # the with-part names a thing: the place holds the scene
+            if _verb_word(toks[k].text):
+                break
             k += 1
     return False
 
