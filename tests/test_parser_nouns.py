@@ -137,3 +137,21 @@ def test_every_guessed_thing_has_a_size_and_a_family():
     for o in parse_scene(text).objects:
         assert min(o.size) > 0
         assert o.category in catalogue
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "A chalk board reading 'Fresh Fish Today' stands by the door.",
+        'A banner saying "Home of the Lions" hangs above the gate.',
+        "A shop sign that says ‘Lamps and Clocks’ hangs over the window.",
+    ],
+)
+def test_words_in_quotation_marks_are_written_not_things(text):
+    got = {o.category for o in parse_scene(text).objects}
+    assert not got & {"fish", "animal", "lion", "floor_lamp", "table_lamp", "wall_clock", "clock"}, got
+
+
+def test_an_apostrophe_opens_no_quotation():
+    got = objects("The boys' bikes lean on the fence, and a dog sleeps on the lawn.")
+    assert any(c == "dog" for c, _ in got)

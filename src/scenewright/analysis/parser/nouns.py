@@ -130,6 +130,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
     raw: list[tuple[int, int, str, Entry | None]] = []
     i = 0
     while i < n:
+        if toks[i].quoted:
+            i += 1
+            continue  # "a sign reading 'Fresh Fish'": the words on the sign
         found = _match_at(toks, i)
         quantity = found is not None and found[2] is not None and "of" in (t.text for t in toks[i : found[0]])
         if found and (vocabulary.is_adjective(toks[i].text) or quantity):
@@ -469,7 +472,7 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             j += 1
             if plural and singular(x) != x:
                 break  # "three zorbs glow": the plural noun ends the phrase
-        if head is None or any(k in covered for k in range(i + 1, head + 1)):
+        if head is None or any(k in covered for k in range(i + 1, head + 1)) or toks[head].quoted:
             continue
         if j < n and j in covered:
             continue  # the words before a known noun are its adjectives ("a shiny [robot]")
