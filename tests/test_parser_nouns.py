@@ -155,3 +155,11 @@ def test_words_in_quotation_marks_are_written_not_things(text):
 def test_an_apostrophe_opens_no_quotation():
     got = objects("The boys' bikes lean on the fence, and a dog sleeps on the lawn.")
     assert any(c == "dog" for c, _ in got)
+
+
+def test_plurals_in_ves_and_compounds_in_man():
+    assert [singular(w) for w in ("hives", "knives", "shelves", "wolves", "olives")] == [
+        "hive", "knife", "shelf", "wolf", "olive",
+    ]  # fmt: skip
+    got = {o.name.split()[-1].lower(): o.category for o in parse_scene("Two linesmen wait by three hives.").objects}
+    assert got.get("linesman") == "figure" and "hive" in got, got

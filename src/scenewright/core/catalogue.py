@@ -44,6 +44,10 @@ _IRREGULAR = {"cacti": "cactus", "mice": "mouse", "geese": "goose", "people": "p
               "taxis": "taxi", "buses": "bus", "octopuses": "octopus", "walruses": "walrus", "cactuses": "cactus",
               "thermoses": "thermos", "canvases": "canvas", "lenses": "lens", "atlases": "atlas",
               "canvas": "canvas", "atlas": "atlas", "oxen": "ox"}
+#: Plurals in -ves of nouns in -f or -fe other than those in -lf ("knives"); the rest drop the s ("hives").
+_F_PLURALS = {"knives": "knife", "wives": "wife", "lives": "life", "leaves": "leaf", "loaves": "loaf",
+              "thieves": "thief", "sheaves": "sheaf", "scarves": "scarf", "hooves": "hoof", "wharves": "wharf",
+              "valves": "valve"}  # fmt: skip
 #: Singular nouns in -men; other words in -men are plurals of -man ("women", "fishermen").
 _SINGULAR_MEN = {"specimen", "omen", "abdomen", "stamen", "regimen", "hymen", "semen", "lumen", "amen", "acumen",
                  "albumen", "bitumen", "germen", "yemen"}  # fmt: skip
@@ -100,7 +104,9 @@ def singular(word: str) -> str:
     if word.endswith("ies"):
         return word[:-3] + "y"
     if word.endswith("ves") and word not in ("eaves",):
-        return word[:-3] + "f"
+        if word in _F_PLURALS:
+            return _F_PLURALS[word]
+        return word[:-3] + "f" if word.endswith("lves") else word[:-1]  # shelves, wolves; but hives, olives
     if word.endswith(("ches", "shes", "xes", "sses", "zes")):
         return word[:-2]
     return word[:-1]
