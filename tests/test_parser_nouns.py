@@ -163,3 +163,10 @@ def test_plurals_in_ves_and_compounds_in_man():
     ]  # fmt: skip
     got = {o.name.split()[-1].lower(): o.category for o in parse_scene("Two draymen wait by three hives.").objects}
     assert got.get("drayman") == "figure" and "hive" in got, got
+
+
+def test_nouns_in_ie_keep_their_spelling_and_new_creatures_get_a_family():
+    assert [singular(w) for w in ("pixies", "cookies", "puppies")] == ["pixie", "cookie", "puppy"]
+    got = {o.name.split()[-1].lower(): o for o in parse_scene("Two pixies circle a grey mare by the barge.").objects}
+    assert got["pixie"].category == "figure" and got["mare"].category == "horse" and got["barge"].category == "boat"
+    assert got["barge"].size[1] > got["mare"].size[1] > got["pixie"].size[1]

@@ -48,6 +48,10 @@ _IRREGULAR = {"cacti": "cactus", "mice": "mouse", "geese": "goose", "people": "p
 _F_PLURALS = {"knives": "knife", "wives": "wife", "lives": "life", "leaves": "leaf", "loaves": "loaf",
               "thieves": "thief", "sheaves": "sheaf", "scarves": "scarf", "hooves": "hoof", "wharves": "wharf",
               "valves": "valve"}  # fmt: skip
+#: Nouns in -ie, whose plural the -ies → -y rule would get wrong ("pixies" are no "pixy").
+_IE_NOUNS = {"pixie", "zombie", "cookie", "movie", "hippie", "brownie", "magpie", "smoothie", "selfie", "genie",
+             "rookie", "hoodie", "birdie", "beanie", "auntie", "collie", "goalie", "budgie", "pie", "tie", "lie",
+             "bootie", "walkie", "talkie", "techie", "yuppie", "sweetie", "boogie", "calorie", "prairie", "lassie"}  # fmt: skip
 #: Singular nouns in -men; other words in -men are plurals of -man ("women", "fishermen").
 _SINGULAR_MEN = {"specimen", "omen", "abdomen", "stamen", "regimen", "hymen", "semen", "lumen", "amen", "acumen",
                  "albumen", "bitumen", "germen", "yemen"}  # fmt: skip
@@ -102,7 +106,7 @@ def singular(word: str) -> str:
     if len(word) <= 3 or not word.endswith("s") or word.endswith(_KEEP_S):
         return word
     if word.endswith("ies"):
-        return word[:-3] + "y"
+        return word[:-1] if word[:-1] in _IE_NOUNS else word[:-3] + "y"
     if word.endswith("ves") and word not in ("eaves",):
         if word in _F_PLURALS:
             return _F_PLURALS[word]
