@@ -170,3 +170,15 @@ def test_nouns_in_ie_keep_their_spelling_and_new_creatures_get_a_family():
     got = {o.name.split()[-1].lower(): o for o in parse_scene("Two pixies circle a grey mare by the barge.").objects}
     assert got["pixie"].category == "figure" and got["mare"].category == "horse" and got["barge"].category == "boat"
     assert got["barge"].size[1] > got["mare"].size[1] > got["pixie"].size[1]
+
+
+@pytest.mark.parametrize(
+    "text, category, count",
+    [
+        ("Two long rows of vending machines face each other, six in each row.", "vending_machine", 12),
+        ("Three stacks of crates, four in each stack, stand by the door.", "crate", 12),
+        ("A row of chairs, five to a row, faces the stage.", "chair", 5),
+    ],
+)
+def test_a_count_per_row_multiplies_the_rows(text, category, count):
+    assert sum(o.category == category for o in parse_scene(text).objects) == count

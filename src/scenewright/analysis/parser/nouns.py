@@ -621,6 +621,10 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
                 k
             ].text not in ("a", "an", "one"):
                 count = max(count, 4)
+            each = _per_unit(toks, m.end)
+            if each is not None:  # "two long rows of arcade machines, five in each row"
+                units = _units_before(toks, j - 2)
+                count, counted = each * (units if units is not None else 1 if q in _QUANTITY_ONE else 2), True
             break
         if w in ("a", "an", "another"):
             count, counted = 1, True
@@ -647,6 +651,33 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
     if plural and count == 1 and counted and not m.each and toks[max(m.start - 1, 0)].text not in ("a", "an"):
         count = 2
     m.count, m.counted, m.adjectives = count, counted, adjectives
+
+
+#: Quantity nouns that name one unit ("a row of", "a stack of"); their plurals name several.
+_QUANTITY_ONE = {"row", "line", "stack", "pile", "set", "group", "cluster", "ring", "circle", "pair", "couple"}
+#: Unit nouns a "N in each ..." phrase counts by.
+_UNIT_NOUNS = {"row", "line", "column", "stack", "pile", "group", "cluster", "ring", "circle", "set", "rank", "tier"}
+
+
+def _per_unit(toks: list[_Tok], end: int) -> int | None:
+    """The count in ", five in each row" after a noun phrase, in its sentence ("two rows of
+    machines face each other, five in each row"), else None."""
+    k = end
+    while k < len(toks) and toks[k].text not in (".", "!", "?", ";"):
+        words = [t.text for t in toks[k : k + 4]]
+        if (k == end or toks[k - 1].text == ",") and len(words) == 4 and words[0] in _NUMBERS and words[1] in (
+            "in", "per", "to"
+        ) and words[2] in ("each", "every", "a") and singular(words[3]) in _UNIT_NOUNS:  # fmt: skip
+            return _NUMBERS[words[0]]
+        k += 1
+    return None
+
+
+def _units_before(toks: list[_Tok], k: int) -> int | None:
+    """The number before "rows of" across a few describing words ("two long rows of"), else None."""
+    while k >= 0 and toks[k].text not in _NUMBERS and toks[k].text not in _STOP and toks[k].text[:1].isalpha():
+        k -= 1
+    return _NUMBERS[toks[k].text] if k >= 0 and toks[k].text in _NUMBERS else None
 
 
 #: Markers after which a bare plural is a crowd ("packed with fans", "full of goldfish").
