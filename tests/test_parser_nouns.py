@@ -182,3 +182,9 @@ def test_nouns_in_ie_keep_their_spelling_and_new_creatures_get_a_family():
 )
 def test_a_count_per_row_multiplies_the_rows(text, category, count):
     assert sum(o.category == category for o in parse_scene(text).objects) == count
+
+
+def test_clothing_held_in_the_hands_is_a_thing():
+    got = names("The old sailor waits by the mast with his cap in his hands.")
+    assert "cap" in got, got
+    assert "cap" not in names("The old sailor in a cap waits by the mast.")

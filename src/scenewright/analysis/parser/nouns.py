@@ -448,12 +448,13 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
     n = len(toks)
     for i, t in enumerate(toks):
         w = t.text
-        counter = w in ("a", "an", "another") or w in _NUMBERS or w in _VAGUE or w.isdigit() or (
+        owner = w in _OWNERS  # only for a thing held: "his hat in his hands"
+        counter = owner or w in ("a", "an", "another") or w in _NUMBERS or w in _VAGUE or w.isdigit() or (
             w == "of" and i > 0 and toks[i - 1].text in _QUANTITY
         )
         if not counter or w == "one" and i + 1 < n and toks[i + 1].text in ("of", "another", "other"):
             continue
-        plural = w not in ("a", "an", "another", "one") and not (w.isdigit() and int(w) == 1)
+        plural = w not in ("a", "an", "another", "one", *_OWNERS) and not (w.isdigit() and int(w) == 1)
         j = i + 1
         if w == "a" and j < n and toks[j].text in ("few", "couple", "pair", "dozen"):
             continue  # the count of a phrase read by its own rules
@@ -477,8 +478,11 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         if j < n and j in covered:
             continue  # the words before a known noun are its adjectives ("a shiny [robot]")
         word = toks[head].text
-        if not vocabulary.is_thing_word(word) or word in _QUANTITY or (j < n and toks[j].text == "of"):
-            continue  # "a sunny afternoon", "a pair of", "a sense of calm"
+        held = _held(toks, head)
+        if owner and not held:
+            continue
+        if not (vocabulary.is_thing_word(word) or held) or word in _QUANTITY or (j < n and toks[j].text == "of"):
+            continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"
         entry = vocabulary.guess(word)
         if entry.category == GENERIC:
             entry = vocabulary.guess_agent(word, _acts_as_person(toks, head + 1)) or entry  # "four pickers work"
@@ -503,6 +507,20 @@ def _acts_as_person(toks: list[_Tok], k: int) -> bool:
     if verb in load_vocabulary().person_verbs:
         return True
     return k > start and verb.endswith("ing") and k + 1 < len(toks) and toks[k + 1].text in _DETERMINERS
+
+
+#: Possessives that open a held thing's phrase.
+_OWNERS = ("his", "her", "their")
+#: Body parts that hold what is named right before "in his/her/their ...".
+_HOLDING_PARTS = {"hand", "hands", "arms", "grip", "fist", "lap"}
+
+
+def _held(toks: list[_Tok], head: int) -> bool:
+    """Clothing held, not worn: "his hat in his hands", "a scarf in her lap"."""
+    if toks[head].text not in load_vocabulary().clothing:
+        return False
+    words = [t.text for t in toks[head + 1 : head + 4]]
+    return len(words) == 3 and words[0] == "in" and words[1] in _DEFINITE and words[2] in _HOLDING_PARTS
 
 
 def _participle(word: str) -> bool:

@@ -65,6 +65,8 @@ class Vocabulary:
     person_verbs: frozenset[str] = frozenset()
     #: Plural nouns that name one thing ("a pair of shears" is one pair).
     pair_nouns: frozenset[str] = frozenset()
+    #: What people wear: no object while worn, a thing when held ("his hat in his hands").
+    clothing: frozenset[str] = frozenset()
 
     def agrees(self, pronoun: str, head: str) -> bool:
         """Whether "she"/"her" or "he"/"him"/"his" can name a thing whose name ends in ``head``:
@@ -169,6 +171,7 @@ def _validate(raw: dict) -> Vocabulary:
         part_owners={k: frozenset(v) for k, v in raw.get("part_owners", {}).items() if k != "about"},
         person_verbs=frozenset(raw.get("person_verbs", ())),
         pair_nouns=frozenset(raw.get("pair_nouns", ())),
+        clothing=frozenset(lists.get("clothing", ())),
     )
 
 
