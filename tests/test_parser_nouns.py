@@ -188,3 +188,11 @@ def test_clothing_held_in_the_hands_is_a_thing():
     got = names("The old sailor waits by the mast with his cap in his hands.")
     assert "cap" in got, got
     assert "cap" not in names("The old sailor in a cap waits by the mast.")
+
+
+def test_big_things_stacked_on_shelves_are_objects_small_ones_contents():
+    got = Counter(o.category for o in parse_scene("Steel racks stacked with crates line the wall.").objects)
+    assert got["crate"] >= 2
+    assert Counter(o.category for o in parse_scene("A bookshelf stacked with books stands by the bed.").objects)[
+        "books"
+    ] == 0

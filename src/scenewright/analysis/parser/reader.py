@@ -93,7 +93,7 @@ _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", 
 #: "Piled with" on a cart or a table is a load of things standing on it when they are this big or
 #: bigger ("a cart piled with suitcases"); smaller ones ("piled with apples") stay its contents.
 _LOADS = {("piled", "with"), ("stacked", "with"), ("heaped", "with")}
-_LOAD_HOSTS = ("cart", "truck", "table", "round_table", "desk", "counter")
+_LOAD_HOSTS = ("cart", "truck", "table", "round_table", "desk", "counter", "bookshelf", "shop_shelf")
 _LOAD_SIZE = 0.3
 #: Things that show what follows their "of", even a definite one ("a statue of the king").
 _DEPICTIONS = ("statue", "hologram", "picture_frame", "sign", "billboard")
