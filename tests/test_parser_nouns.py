@@ -196,3 +196,8 @@ def test_big_things_stacked_on_shelves_are_objects_small_ones_contents():
     assert Counter(o.category for o in parse_scene("A bookshelf stacked with books stands by the bed.").objects)[
         "books"
     ] == 0
+
+
+def test_a_preposition_after_a_noun_names_no_kind_of_it():
+    got = names("A porter pushes a wheelchair past the lockers, and a kiosk stands beyond the gate.")
+    assert "wheelchair" in got and "kiosk" in got, got

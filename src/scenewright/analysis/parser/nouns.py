@@ -19,6 +19,7 @@ from scenewright.analysis.parser.words import (
     _VAGUE,
     _FINITE,
     _PLANT_SHAPES,
+    _PREPOSITIONS,
     _is_verb,
 )
 
@@ -358,6 +359,8 @@ def _names_kind(toks: list[_Tok], e: int) -> bool:
         return False
     t = toks[e]
     w = t.text
+    if w in _PREPOSITIONS:
+        return False  # "pushes a wheelchair past the chairs"
     if t.joined or (w in load_vocabulary().not_things and singular(w) == w and w not in _FINITE):
         return True  # "camel-hair tents", "a bear face"
     if w in _IRREGULAR_PARTICIPLES:

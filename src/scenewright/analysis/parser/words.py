@@ -23,6 +23,9 @@ _DETERMINERS = {"a", "an", "the", "this", "that", "these", "those", "its", "thei
                 "your", "another", "each", "every", "any", "other", "one", "all"}  # fmt: skip
 _DEFINITE = {"the", "this", "that", "these", "those", "its", "their", "his", "her", "our", "my", "your"}
 _PRONOUNS = {"it", "them", "itself", "themselves", "one"}
+#: Less common prepositions: they end a noun phrase and name no kind of the noun before ("a wheelchair past the door").
+_PREPOSITIONS = {"past", "beyond", "among", "amongst", "amid", "amidst", "via", "within", "without", "alongside",
+                 "during", "until", "despite", "except", "aboard", "astride"}  # fmt: skip
 #: Words that end a noun phrase when reading backwards for adjectives.
 _STOP = (
     set(_NUMBERS) | set(_VAGUE) | _DETERMINERS | _PRONOUNS
@@ -38,6 +41,7 @@ _STOP = (
         "beneath", "underneath", "close", "far", "away", "front", "back",
         "side", "sides", "middle", "centre", "center", "corner", "edge", "end", "top", "bottom",
     }
+    | _PREPOSITIONS
 )  # fmt: skip
 _UNITS = {
     "m": 1.0, "meter": 1.0, "meters": 1.0, "metre": 1.0, "metres": 1.0, "cm": 0.01,
