@@ -171,3 +171,19 @@ def test_an_opening_place_or_a_part_of_one_is_the_setting():
 
 def test_a_participle_after_a_thing_is_no_kind():
     assert "ferris wheel" in objects("A huge ferris wheel strung with coloured bulbs turns slowly.")
+
+
+@pytest.mark.parametrize(
+    "word, family",
+    [("lutenist", "figure"), ("custodian", "figure"), ("mountaineer", "figure"), ("gator", GENERIC), ("list", GENERIC)],
+)
+def test_trade_endings_give_people_and_short_stems_give_nothing(word, family):
+    assert load_vocabulary().guess(word).category == family
+
+
+def test_an_agent_noun_is_a_person_only_when_it_acts_like_one():
+    vocabulary = load_vocabulary()
+    assert vocabulary.guess_agent("gleaners", True).category == "figure"
+    assert vocabulary.guess_agent("dehumidifier", False) is None
+    assert vocabulary.guess_agent("blorp", True) is None  # no agent ending
+    assert "shovels" in vocabulary.person_verbs and "stands" not in vocabulary.person_verbs

@@ -42,7 +42,19 @@ _WORD = re.compile(r"[^\W_]+(?:['’][^\W\d_]+)?")  # letters of any script: "ca
 #: Plurals that the suffix rules below would get wrong.
 _IRREGULAR = {"cacti": "cactus", "mice": "mouse", "geese": "goose", "people": "person", "children": "child",
               "taxis": "taxi", "buses": "bus", "octopuses": "octopus", "walruses": "walrus", "cactuses": "cactus",
-              "thermoses": "thermos", "canvases": "canvas", "lenses": "lens", "atlases": "atlas"}
+              "thermoses": "thermos", "canvases": "canvas", "lenses": "lens", "atlases": "atlas",
+              "canvas": "canvas", "atlas": "atlas", "oxen": "ox"}
+#: Plurals in -ves of nouns in -f or -fe other than those in -lf ("knives"); the rest drop the s ("hives").
+_F_PLURALS = {"knives": "knife", "wives": "wife", "lives": "life", "leaves": "leaf", "loaves": "loaf",
+              "thieves": "thief", "sheaves": "sheaf", "scarves": "scarf", "hooves": "hoof", "wharves": "wharf",
+              "valves": "valve"}  # fmt: skip
+#: Nouns in -ie, whose plural the -ies → -y rule would get wrong ("pixies" are no "pixy").
+_IE_NOUNS = {"pixie", "zombie", "cookie", "movie", "hippie", "brownie", "magpie", "smoothie", "selfie", "genie",
+             "rookie", "hoodie", "birdie", "beanie", "auntie", "collie", "goalie", "budgie", "pie", "tie", "lie",
+             "bootie", "walkie", "talkie", "techie", "yuppie", "sweetie", "boogie", "calorie", "prairie", "lassie"}  # fmt: skip
+#: Singular nouns in -men; other words in -men are plurals of -man ("women", "fishermen").
+_SINGULAR_MEN = {"specimen", "omen", "abdomen", "stamen", "regimen", "hymen", "semen", "lumen", "amen", "acumen",
+                 "albumen", "bitumen", "germen", "yemen"}  # fmt: skip
 _KEEP_S = ("ss", "us", "is", "ous", "ics")
 
 
@@ -89,12 +101,16 @@ def singular(word: str) -> str:
     """The singular of an English plural noun, by the common suffix rules."""
     if word in _IRREGULAR:
         return _IRREGULAR[word]
+    if word.endswith("men") and word not in _SINGULAR_MEN:
+        return word[:-3] + "man"
     if len(word) <= 3 or not word.endswith("s") or word.endswith(_KEEP_S):
         return word
     if word.endswith("ies"):
-        return word[:-3] + "y"
+        return word[:-1] if word[:-1] in _IE_NOUNS else word[:-3] + "y"
     if word.endswith("ves") and word not in ("eaves",):
-        return word[:-3] + "f"
+        if word in _F_PLURALS:
+            return _F_PLURALS[word]
+        return word[:-3] + "f" if word.endswith("lves") else word[:-1]  # shelves, wolves; but hives, olives
     if word.endswith(("ches", "shes", "xes", "sses", "zes")):
         return word[:-2]
     return word[:-1]

@@ -18,6 +18,8 @@ from scenewright.analysis.parser.words import (
     _UNITS,
     _VAGUE,
     _FINITE,
+    _PLANT_SHAPES,
+    _PREPOSITIONS,
     _is_verb,
 )
 
@@ -129,10 +131,15 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
     raw: list[tuple[int, int, str, Entry | None]] = []
     i = 0
     while i < n:
+        if toks[i].quoted:
+            i += 1
+            continue  # "a sign reading 'Fresh Fish'": the words on the sign
         found = _match_at(toks, i)
-        if found and vocabulary.is_adjective(toks[i].text):
+        quantity = found is not None and found[2] is not None and "of" in (t.text for t in toks[i : found[0]])
+        if found and (vocabulary.is_adjective(toks[i].text) or quantity):
             # "a glowing crystal ball": a phrase that opens with a describing word ("glowing
-            # crystal") gives way to a longer thing that starts inside it ("crystal ball")
+            # crystal") gives way to a longer thing that starts inside it ("crystal ball"), and so
+            # does a measure of stuff ("a pile of hay") to a thing ("a pile of hay bales")
             longer = next((j for j in range(i + 1, found[0]) if (_match_at(toks, j) or (0,))[0] > found[0]), None)
             if longer is not None:
                 i = longer
@@ -170,11 +177,15 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "four logs around it as seats", "a crate used as a table": a use, not a thing
         if e + 1 < n and toks[e].text == "in" and toks[e + 1].text in _MEASURES:
             continue  # "a room six tatami mats in size", "two cars in length": a measure, not things
+        if toks[s].joined and e - s == 1 and _names_kind(toks, e):
+            modifier = []
+            continue  # "a block-building game": half of a hyphened modifier, not a building
         if _gerund_here(toks, s, e):
             continue  # "two children are building a snowman": a verb, not a building
         if _adverb_here(toks, s, e):
             continue  # "the shrine stands well behind the gate": an adverb, not a well
         kind, modifier = modifier, []
+        cat, entry = _kind_of_plant(kind, cat, entry)
         if kind and entry is not None and entry.category == "figure":
             machine = match_phrase(tuple(kind))
             if machine is not None and load_catalogue()[machine].shape == "robot":
@@ -196,6 +207,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         ):  # "an abandoned factory floor with a conveyor belt"
             places.append(" ".join(words))
             continue
+        if " ".join(words) in places and s > 0 and toks[s - 1].text in _DEFINITE:
+            continue  # "the middle of the cabin" after "The captain's cabin of a ship": the setting again
         if _part_of_vessel(toks, s, e) or (part_end is not None and _owner_of_part(toks, part_end, s)):
             # "The bridge of a small cargo spaceship, ...": the bridge and the ship are the setting
             places.append(" ".join(words))
@@ -216,6 +229,21 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         mention.guess, mention.modifier = entry, kind
         mentions.append(mention)
     return _alias_mentions(toks, mentions), places
+
+
+#: Categories that name any plant of their kind, so the kind before them says which ("a cypress tree").
+_GENERIC_PLANTS = {"tree", "bush"}
+
+
+def _kind_of_plant(kind: list[str], cat: str, entry: Entry | None) -> tuple[str, Entry | None]:
+    """"a cypress tree" is the catalogue's cypress (a conifer), not any tree: a plant word
+    before a generic plant noun names the plant."""
+    if not kind or cat not in _GENERIC_PLANTS:
+        return cat, entry
+    named = match_phrase(tuple(kind))
+    if named is None or named == cat or load_catalogue()[named].shape not in _PLANT_SHAPES:
+        return cat, entry
+    return named, None
 
 
 #: Nouns that are also adverbs of degree or place, read as such when bare before a preposition.
@@ -242,7 +270,9 @@ _PLACE_PARTS = {"bridge", "deck", "cockpit", "hold", "cabin", "interior", "insid
 def _part_of_vessel(toks: list[_Tok], s: int, e: int) -> bool:
     """The description opens with "The bridge of a ...", "The cockpit of an old plane"."""
     j = s - 1
-    while j >= 0 and (toks[j].text in _DETERMINERS or load_vocabulary().is_adjective(toks[j].text)):
+    while j >= 0 and (
+        toks[j].text in _DETERMINERS or load_vocabulary().is_adjective(toks[j].text) or toks[j].text.endswith("'s")
+    ):  # "The captain's cabin of a sailing ship"
         j -= 1
     opening = j < 0 or toks[j].text in (".", "!", "?")
     return opening and " ".join(t.text for t in toks[s:e]) in _PLACE_PARTS and e < len(toks) and toks[e].text == "of"
@@ -299,7 +329,12 @@ def _plural_is_verb(toks: list[_Tok], s: int, nxt: tuple) -> bool:
     follow = toks[end].text if end < len(toks) else ""
     if follow in _OBJECT_OPENERS or follow in _NUMBERS:
         return True
-    if _counted_plural(toks, s) or _is_verb(follow) or follow in _FINITE:
+    if _counted_plural(toks, s):
+        return False
+    person = load_vocabulary().match(tuple(t.text for t in toks[s : nxt[0]]))
+    if person is not None and person.category == "figure":
+        return True  # "the baker slides loaves into the oven": a person names no kind of slide
+    if _is_verb(follow) or follow in _FINITE:
         return False
     return nxt[3] is not None
 
@@ -324,6 +359,8 @@ def _names_kind(toks: list[_Tok], e: int) -> bool:
         return False
     t = toks[e]
     w = t.text
+    if w in _PREPOSITIONS:
+        return False  # "pushes a wheelchair past the chairs"
     if t.joined or (w in load_vocabulary().not_things and singular(w) == w and w not in _FINITE):
         return True  # "camel-hair tents", "a bear face"
     if w in _IRREGULAR_PARTICIPLES:
@@ -337,6 +374,8 @@ def _names_kind(toks: list[_Tok], e: int) -> bool:
 #: Words that open the setting's contents after a place word ("a hangar with...", "a hangar where...").
 _PLACE_OPENERS = {"with", "where", "full", "filled", "housing", "containing", "holding", "packed", "crammed"}
 _INSIDE = {"in", "inside", "within", "into", "throughout"}
+#: Words a place phrase may have before its noun ("a bright cartoon-style pet shop").
+_PLACE_WORDS = 6
 
 
 def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
@@ -347,19 +386,22 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     if head not in places and not (e >= 2 and f"{toks[e - 2].text} {head}" in places):
         return False
     j = s - 1
-    while j >= 0 and s - j <= 4 and (toks[j].text in _DETERMINERS or (toks[j].text not in _STOP and toks[j].text[:1].isalpha())):
+    while j >= 0 and s - j <= _PLACE_WORDS and (
+        toks[j].text in _DETERMINERS or (toks[j].text not in _STOP and toks[j].text[:1].isalpha())
+    ):
         j -= 1
     if j >= 0 and toks[j].text in _INSIDE:
         return True
     # "on the top floor of a converted warehouse": a part of the place holds the scene
     if j > 0 and toks[j].text == "of" and toks[j - 1].text in (
-        "floor", "top", "edge", "roof", "corner", "end", "back", "middle", "centre", "center", "rear"
+        "floor", "top", "edge", "roof", "corner", "end", "back", "middle", "centre", "center", "rear", "interior",
+        "inside",
     ):  # fmt: skip
         return True
     # a sentence that only names the place ("An anime-style ramen shop late at night.")
     if later and (j < 0 or toks[j].text in (".", "!", "?")):
         k = e
-        while k < len(toks) and toks[k].text not in (".", "!", "?") and not _is_verb(toks[k].text):
+        while k < len(toks) and toks[k].text not in (".", "!", "?") and not _verb_word(toks[k].text):
             k += 1
         if k >= len(toks) or toks[k].text in (".", "!", "?"):
             return True
@@ -371,11 +413,20 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     if e < len(toks) and toks[e].text in _PLACE_OPENERS:
         starts = {r[0] for r in later}
         k = e + 1
-        while k < len(toks) and toks[k].text not in (".", "!", "?", ";") and not _is_verb(toks[k].text):
+        while k < len(toks) and toks[k].text not in (".", "!", "?", ";"):
             if k in starts:
                 return True  # the with-part names a thing: the place holds the scene
+            if _verb_word(toks[k].text):
+                break
             k += 1
     return False
+
+
+def _verb_word(word: str) -> bool:
+    """A verb, not a plural the vocabulary knows as a noun ("with chunky outlines and candy colours")."""
+    if not _is_verb(word) or word in _FINITE or singular(word) in _FINITE:
+        return _is_verb(word)
+    return singular(word) not in load_vocabulary().not_things
 
 
 def later_before(later: list, toks: list[_Tok], e: int) -> bool:
@@ -400,12 +451,13 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
     n = len(toks)
     for i, t in enumerate(toks):
         w = t.text
-        counter = w in ("a", "an", "another") or w in _NUMBERS or w in _VAGUE or w.isdigit() or (
+        owner = w in _OWNERS  # only for a thing held: "his hat in his hands"
+        counter = owner or w in ("a", "an", "another") or w in _NUMBERS or w in _VAGUE or w.isdigit() or (
             w == "of" and i > 0 and toks[i - 1].text in _QUANTITY
         )
         if not counter or w == "one" and i + 1 < n and toks[i + 1].text in ("of", "another", "other"):
             continue
-        plural = w not in ("a", "an", "another", "one") and not (w.isdigit() and int(w) == 1)
+        plural = w not in ("a", "an", "another", "one", *_OWNERS) and not (w.isdigit() and int(w) == 1)
         j = i + 1
         if w == "a" and j < n and toks[j].text in ("few", "couple", "pair", "dozen"):
             continue  # the count of a phrase read by its own rules
@@ -416,21 +468,67 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
                 break
             if j > i + 1 and not plural and _is_verb(x):
                 break
+            ends = j + 1 >= n or toks[j + 1].text in _STOP or not toks[j + 1].text[:1].isalpha()
+            if head is not None and _participle(x) and ends and not vocabulary.is_adjective(toks[head].text):
+                break  # "a low ledge watching, ...", "a tarp strung between two trees": its verb, not
+                # a "home recording studio"
             head = j
             j += 1
             if plural and singular(x) != x:
                 break  # "three zorbs glow": the plural noun ends the phrase
-        if head is None or any(k in covered for k in range(i + 1, head + 1)):
+        if head is None or any(k in covered for k in range(i + 1, head + 1)) or toks[head].quoted:
             continue
         if j < n and j in covered:
             continue  # the words before a known noun are its adjectives ("a shiny [robot]")
         word = toks[head].text
-        if not vocabulary.is_thing_word(word) or word in _QUANTITY or (j < n and toks[j].text == "of"):
-            continue  # "a sunny afternoon", "a pair of", "a sense of calm"
+        held = _held(toks, head)
+        if owner and not held:
+            continue
+        if not (vocabulary.is_thing_word(word) or held) or word in _QUANTITY or (j < n and toks[j].text == "of"):
+            continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"
         entry = vocabulary.guess(word)
+        if entry.category == GENERIC:
+            entry = vocabulary.guess_agent(word, _acts_as_person(toks, head + 1)) or entry  # "four pickers work"
         out.append((head, head + 1, entry.category, entry))
         covered.add(head)
     return out
+
+
+#: Verbs that only carry the verb after them ("a picker is working").
+_AUXILIARIES = {"is", "are", "was", "were", "has", "have", "been", "be", "busily", "quietly", "still"}
+
+
+def _acts_as_person(toks: list[_Tok], k: int) -> bool:
+    """Whether the subject ending at ``k`` does what people do: a person verb ("a picker is
+    working", "a welder kneels"), or a deed done to a thing ("a farrier is shoeing a horse")."""
+    start = k
+    while k < len(toks) and toks[k].text in _AUXILIARIES:
+        k += 1
+    if k >= len(toks):
+        return False
+    verb = toks[k].text
+    if verb in load_vocabulary().person_verbs:
+        return True
+    return k > start and verb.endswith("ing") and k + 1 < len(toks) and toks[k + 1].text in _DETERMINERS
+
+
+#: Possessives that open a held thing's phrase.
+_OWNERS = ("his", "her", "their")
+#: Body parts that hold what is named right before "in his/her/their ...".
+_HOLDING_PARTS = {"hand", "hands", "arms", "grip", "fist", "lap"}
+
+
+def _held(toks: list[_Tok], head: int) -> bool:
+    """Clothing held, not worn: "his hat in his hands", "a scarf in her lap"."""
+    if toks[head].text not in load_vocabulary().clothing:
+        return False
+    words = [t.text for t in toks[head + 1 : head + 4]]
+    return len(words) == 3 and words[0] == "in" and words[1] in _DEFINITE and words[2] in _HOLDING_PARTS
+
+
+def _participle(word: str) -> bool:
+    """A verb form that follows a noun to say what it does or how it is set ("watching", "strung")."""
+    return word.endswith(("ing", "ed")) or word in _IRREGULAR_PARTICIPLES
 
 
 def _alias_mentions(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention]:
@@ -472,9 +570,14 @@ def _alias_mentions(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention
 
 
 def _is_plural(toks: list[_Tok], m: _Mention) -> bool:
-    last = toks[m.end - 1].text
+    words = [t.text for t in toks[m.start : m.end]]
+    if "of" in words[1:]:
+        words = words[: words.index("of", 1)]  # "bottles of wine": the measure is the head
+    last = words[-1]
     if m.guess is not None and tuple(t.text for t in toks[m.start : m.end]) in load_vocabulary().entries:
         return False  # "a triceratops" is listed as it is written
+    if last in load_vocabulary().pair_nouns:
+        return False  # "shears" are one pair
     return singular(last) != last or last in ("people", "cacti", "shelves", "benches", "glasses")
 
 
@@ -524,7 +627,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         if w == "of" and j > 0 and toks[j - 1].text in _QUANTITY:
             q = toks[j - 1].text
             small = (m.guess.rests if m.guess is not None else load_catalogue()[m.category].rests) == "surface"
-            count = 1 if q in ("stack", "pile") and small else _QUANTITY[q]
+            pair = q in ("pair", "pairs") and toks[m.end - 1].text in load_vocabulary().pair_nouns  # "a pair of shears"
+            count = 1 if (q in ("stack", "pile") and small) or pair else _QUANTITY[q]
             counted = q in ("pair", "couple", "dozen")
             k = j - 2
             if k >= 0 and toks[k].text in _NUMBERS:  # "two pairs of", "three stacks of"
@@ -538,6 +642,10 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
                 k
             ].text not in ("a", "an", "one"):
                 count = max(count, 4)
+            each = _per_unit(toks, m.end)
+            if each is not None:  # "two long rows of arcade machines, five in each row"
+                units = _units_before(toks, j - 2)
+                count, counted = each * (units if units is not None else 1 if q in _QUANTITY_ONE else 2), True
             break
         if w in ("a", "an", "another"):
             count, counted = 1, True
@@ -553,6 +661,10 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             break
         adjectives.insert(0, t.orig)
         j -= 1
+    if count is None and j >= 1 and (toks[j - 1].text, toks[j].text) in _CROWDED:
+        # "a grandstand packed with cheering peasants": a crowd ("full of goldfish": a plural
+        # that looks singular, since a bare singular thing is never what a place is full of)
+        count = _VAGUE["many"]
     if count is None:
         count = 3 if plural else 1
     if m.category == "books" and not counted:
@@ -562,6 +674,36 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
     m.count, m.counted, m.adjectives = count, counted, adjectives
 
 
+#: Quantity nouns that name one unit ("a row of", "a stack of"); their plurals name several.
+_QUANTITY_ONE = {"row", "line", "stack", "pile", "set", "group", "cluster", "ring", "circle", "pair", "couple"}
+#: Unit nouns a "N in each ..." phrase counts by.
+_UNIT_NOUNS = {"row", "line", "column", "stack", "pile", "group", "cluster", "ring", "circle", "set", "rank", "tier"}
+
+
+def _per_unit(toks: list[_Tok], end: int) -> int | None:
+    """The count in ", five in each row" after a noun phrase, in its sentence ("two rows of
+    machines face each other, five in each row"), else None."""
+    k = end
+    while k < len(toks) and toks[k].text not in (".", "!", "?", ";"):
+        words = [t.text for t in toks[k : k + 4]]
+        if (k == end or toks[k - 1].text == ",") and len(words) == 4 and words[0] in _NUMBERS and words[1] in (
+            "in", "per", "to"
+        ) and words[2] in ("each", "every", "a") and singular(words[3]) in _UNIT_NOUNS:  # fmt: skip
+            return _NUMBERS[words[0]]
+        k += 1
+    return None
+
+
+def _units_before(toks: list[_Tok], k: int) -> int | None:
+    """The number before "rows of" across a few describing words ("two long rows of"), else None."""
+    while k >= 0 and toks[k].text not in _NUMBERS and toks[k].text not in _STOP and toks[k].text[:1].isalpha():
+        k -= 1
+    return _NUMBERS[toks[k].text] if k >= 0 and toks[k].text in _NUMBERS else None
+
+
+#: Markers after which a bare plural is a crowd ("packed with fans", "full of goldfish").
+_CROWDED = {("packed", "with"), ("crowded", "with"), ("full", "of"), ("filled", "with"), ("teeming", "with"),
+            ("swarming", "with"), ("thronged", "with"), ("crammed", "with")}  # fmt: skip
 #: Participles that describe the look of the noun before them ("painted red", "made of steel").
 _LOOK_PARTICIPLES = {"glowing", "gleaming", "shining", "painted", "covered", "made", "coated", "upholstered",
                      "carved", "lacquered", "varnished", "dyed", "tinted", "trimmed", "wrapped", "draped",

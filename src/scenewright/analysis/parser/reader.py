@@ -93,7 +93,7 @@ _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", 
 #: "Piled with" on a cart or a table is a load of things standing on it when they are this big or
 #: bigger ("a cart piled with suitcases"); smaller ones ("piled with apples") stay its contents.
 _LOADS = {("piled", "with"), ("stacked", "with"), ("heaped", "with")}
-_LOAD_HOSTS = ("cart", "truck", "table", "round_table", "desk", "counter")
+_LOAD_HOSTS = ("cart", "truck", "table", "round_table", "desk", "counter", "bookshelf", "shop_shelf")
 _LOAD_SIZE = 0.3
 #: Things that show what follows their "of", even a definite one ("a statue of the king").
 _DEPICTIONS = ("statue", "hologram", "picture_frame", "sign", "billboard")
@@ -400,10 +400,12 @@ class _Reader:
         marker = (self.toks[j - 1].text, w)
         if marker in _LOADS and self.catalogue[prev.category].shape in _LOAD_HOSTS and max(self._size(m)) >= _LOAD_SIZE:
             return False  # "a luggage cart piled with suitcases": they stand on the cart
+        alive = self._lives(m.category) or m.category == "fish"
         if marker in _CONTENT_MARKERS and j - prev.end <= 2:
-            return True  # "a bowl full of apples"
+            # "a bowl full of apples"; but "a tank full of goldfish", "a stand packed with fans" are there
+            return not alive
         if self._listed_content(m.start):
-            return True  # "crates overflow with apples, pumpkins and carrots"
+            return not alive  # "crates overflow with apples, pumpkins and carrots"
         if w == "of" and prev.end == j and prev.category in _FLAT_HOLDERS and not m.definite:
             self.held_of.append((m.start, prev.start))  # "a tray of medicine bottles": bottles on the tray
             return False
@@ -756,7 +758,9 @@ class _Reader:
 
     def _living(self, g: int) -> bool:
         """A person or an animal (catalogue dogs and horses too, guessed figures and animals)."""
-        category = self.groups[g].category
+        return self._lives(self.groups[g].category)
+
+    def _lives(self, category: str) -> bool:
         return category in _LIVING or self.catalogue[category].shape in _LIVING
 
     def _animate(self, *groups: int) -> bool:

@@ -9,7 +9,10 @@ from dataclasses import dataclass
 
 
 #: Letters of any script, so an accented word ("café", "Stühle") stays one word.
-_TOKEN = re.compile(r"\d+(?:\.\d+)?|[^\W\d_]+(?:['’][^\W\d_]+)?|[.,;:!?()\"]|[-–—]")
+_TOKEN = re.compile(r"\d+(?:\.\d+)?|[^\W\d_]+(?:['’][^\W\d_]+)?|[.,;:!?()\"“”]|['‘’]|[-–—]")
+#: Marks that open or close a quotation; single ones only where no apostrophe can be meant.
+_DOUBLE_QUOTES = '"“”'
+_SINGLE_QUOTES = "'‘’"
 
 
 @dataclass
@@ -17,14 +20,28 @@ class _Tok:
     text: str  # lowercase
     orig: str
     joined: bool  # hyphen-joined to the previous word ("three-tiered")
+    #: Inside quotation marks: the words written on a thing ("a sign reading 'Fresh Fish'"), no things.
+    quoted: bool = False
 
 
 def _tokenise(text: str) -> list[_Tok]:
     toks: list[_Tok] = []
     hyphen = False
     prev_end = -1
+    quoting = False
     for m in _TOKEN.finditer(text):
         s = m.group(0)
+        if s in _SINGLE_QUOTES or s in _DOUBLE_QUOTES:
+            before = text[m.start() - 1] if m.start() else " "
+            after = text[m.end()] if m.end() < len(text) else " "
+            if not quoting and (before.isspace() or before == "(") and after.isalnum():
+                quoting = True  # "a sign reading 'Open'": opens; "the dogs' bowls" does not
+            elif quoting and not before.isspace():
+                quoting = False
+            if s in _SINGLE_QUOTES:
+                prev_end = m.end()
+                continue
+            s = '"'
         if s in "-–" and m.start() == prev_end:
             hyphen = True
             prev_end = m.end()
@@ -34,7 +51,9 @@ def _tokenise(text: str) -> list[_Tok]:
         joined = hyphen and m.start() == prev_end
         hyphen = False
         prev_end = m.end()
-        toks.append(_Tok(s.lower().replace("’", "'"), s, joined))
+        toks.append(_Tok(s.lower().replace("’", "'"), s, joined, quoting and s != '"'))
+        if s in (".", "!", "?"):
+            quoting = False  # a quotation nobody closed ends with its sentence
     return toks
 
 

@@ -19,6 +19,13 @@ from scenewright.core.catalogue import load_catalogue, singular, words
 
 #: The family a thing nobody listed falls back to.
 GENERIC = "thing"
+#: Endings of nouns that name a person doing a trade or a study ("florist", "optician", "musketeer").
+_PERSON_ENDINGS = ("ist", "ian", "eer")
+#: Endings of agent nouns: a person when the text has them do what people do ("a picker is working"),
+#: a tool or a machine otherwise ("a heater", "a tractor").
+_AGENT_ENDINGS = ("er", "or", "ant", "ent")
+#: Letters a word keeps before an ending for the ending to tell its family ("gator" is no machine).
+_MIN_STEM = 3
 #: Endings of English adjectives ("rusty", "glowing", "magical", "robotic", "woollen").
 _ADJECTIVE_ENDINGS = ("ly", "ous", "ful", "ish", "less", "able", "ible", "ive", "ed", "est", "y", "ing", "al", "ic",
                       "en", "ern", "ar", "ant", "ent", "ese", "ian")  # fmt: skip
@@ -54,6 +61,12 @@ class Vocabulary:
     body_parts: dict[str, str] = field(default_factory=dict)
     #: Part word → the categories or shapes that have such a part ("its back": a seat's).
     part_owners: dict[str, frozenset[str]] = field(default_factory=dict)
+    #: What people do: an agent noun nobody listed that does one of these is a person.
+    person_verbs: frozenset[str] = frozenset()
+    #: Plural nouns that name one thing ("a pair of shears" is one pair).
+    pair_nouns: frozenset[str] = frozenset()
+    #: What people wear: no object while worn, a thing when held ("his hat in his hands").
+    clothing: frozenset[str] = frozenset()
 
     def agrees(self, pronoun: str, head: str) -> bool:
         """Whether "she"/"her" or "he"/"him"/"his" can name a thing whose name ends in ``head``:
@@ -101,11 +114,25 @@ class Vocabulary:
         catalogue = load_catalogue()
         one = singular(head.lower())
         for suffix, family in self.suffixes:
-            if one.endswith(suffix) and one != suffix:
-                category = catalogue[family]
-                return Entry(family, category.size, category.rests)
+            if one.endswith(suffix) and len(one) - len(suffix) >= _MIN_STEM:
+                return self._family(family)
+        if one.endswith(_PERSON_ENDINGS) and len(one) - 3 >= _MIN_STEM:
+            return self._family("figure")  # "a florist", "two technicians", "a puppeteer"
         category = catalogue[GENERIC]
         return Entry(GENERIC, category.size, category.rests)
+
+    def guess_agent(self, head: str, acts: bool) -> Entry | None:
+        """A person for an agent noun nobody listed when the text has it do what people do
+        (``acts``: "four pickers are working"); None for any other word, or when it only hums or
+        stands ("a heater hums")."""
+        one = singular(head.lower())
+        agent = one.endswith(_AGENT_ENDINGS) and len(one) - 2 >= _MIN_STEM
+        return self._family("figure") if agent and acts else None
+
+    @staticmethod
+    def _family(family: str) -> Entry:
+        category = load_catalogue()[family]
+        return Entry(family, category.size, category.rests)
 
 
 def _validate(raw: dict) -> Vocabulary:
@@ -142,6 +169,9 @@ def _validate(raw: dict) -> Vocabulary:
             **{w: "near" for w in people.get("body_parts_near", ())},
         },
         part_owners={k: frozenset(v) for k, v in raw.get("part_owners", {}).items() if k != "about"},
+        person_verbs=frozenset(raw.get("person_verbs", ())),
+        pair_nouns=frozenset(raw.get("pair_nouns", ())),
+        clothing=frozenset(lists.get("clothing", ())),
     )
 
 

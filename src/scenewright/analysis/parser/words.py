@@ -14,7 +14,7 @@ _NUMBERS = {
 _VAGUE = {"few": 3, "several": 3, "some": 3, "various": 3, "many": 5, "numerous": 5, "multiple": 3, "both": 2}
 #: Nouns that count or arrange what follows "of" ("a row of lamps", "stacks of crates").
 _QUANTITY = {
-    "pair": 2, "couple": 2, "row": 3, "rows": 5, "line": 3, "set": 3, "group": 3, "cluster": 3,
+    "pair": 2, "pairs": 4, "couple": 2, "row": 3, "rows": 5, "line": 3, "set": 3, "group": 3, "cluster": 3,
     "stack": 3, "stacks": 4, "pile": 3, "piles": 4, "bunch": 3, "handful": 3, "collection": 3,
     "coils": 3, "coil": 1, "ring": 4, "circle": 4, "lot": 5, "lots": 5, "plenty": 5, "dozens": 12,
     "series": 3, "trio": 3, "clusters": 5, "grove": 4, "patch": 1,
@@ -23,6 +23,9 @@ _DETERMINERS = {"a", "an", "the", "this", "that", "these", "those", "its", "thei
                 "your", "another", "each", "every", "any", "other", "one", "all"}  # fmt: skip
 _DEFINITE = {"the", "this", "that", "these", "those", "its", "their", "his", "her", "our", "my", "your"}
 _PRONOUNS = {"it", "them", "itself", "themselves", "one"}
+#: Less common prepositions: they end a noun phrase and name no kind of the noun before ("a wheelchair past the door").
+_PREPOSITIONS = {"past", "beyond", "among", "amongst", "amid", "amidst", "via", "within", "without", "alongside",
+                 "during", "until", "despite", "except", "aboard", "astride"}  # fmt: skip
 #: Words that end a noun phrase when reading backwards for adjectives.
 _STOP = (
     set(_NUMBERS) | set(_VAGUE) | _DETERMINERS | _PRONOUNS
@@ -38,6 +41,7 @@ _STOP = (
         "beneath", "underneath", "close", "far", "away", "front", "back",
         "side", "sides", "middle", "centre", "center", "corner", "edge", "end", "top", "bottom",
     }
+    | _PREPOSITIONS
 )  # fmt: skip
 _UNITS = {
     "m": 1.0, "meter": 1.0, "meters": 1.0, "metre": 1.0, "metres": 1.0, "cm": 0.01,
@@ -47,7 +51,7 @@ _UNITS = {
 _DIMENSIONS = {"wide": "x", "width": "x", "across": "x", "long": "long", "length": "long", "deep": "y",
                "depth": "y", "tall": "z", "high": "z", "height": "z", "diameter": "d"}  # fmt: skip
 #: Containers and depictions: what follows their "of" is content or subject, not an object.
-_CONTENT_HEADS = {"vase", "bowl", "basket", "plate", "bottle", "cup", "pot", "crate", "cart", "statue",
+_CONTENT_HEADS = {"vase", "bowl", "basket", "bucket", "plate", "bottle", "cup", "pot", "crate", "cart", "statue",
                   "picture_frame", "planter", "sign", "billboard", "shop_shelf", "bookshelf", "flask",
                   "barrel", "shipping_container", "flower_bed", "cauldron", "sandbox", "hologram"}  # fmt: skip
 _CONTENT_MARKERS = {("full", "of"), ("filled", "with"), ("packed", "with"), ("overflowing", "with"),
