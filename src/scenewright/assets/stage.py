@@ -21,7 +21,7 @@ from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor, as_completed
 
 from scenewright.assets.load import AssetMeshes
-from scenewright.assets.normalise import normalise, to_glb
+from scenewright.assets.normalise import stored_glb
 from scenewright.core.protocols import MeshGenerator, MeshRequest
 from scenewright.cache import RequestCache, request_key
 from scenewright.errors import BackendError, InputError
@@ -118,11 +118,10 @@ def generate_assets(
     def store(oid: str, glb: bytes) -> None:
         obj = scene.get(oid)
         try:
-            asset, size = normalise(glb, obj.size, name=oid, backend=meshes.name, max_faces=max_faces)
+            data, size = stored_glb(glb, obj.size, name=oid, backend=meshes.name, max_faces=max_faces)
         except BackendError as exc:
             failures[oid] = str(exc)
             return
-        data = to_glb(asset, source=glb)
         path = write_atomic(folder.asset(oid), data)
         parsed.add(path, data)
         obj.asset = folder.relative(path)
