@@ -74,10 +74,33 @@ def _in_convention(glb: bytes, size: Vec3, max_faces: int | None) -> Vec3 | None
     return Vec3(x=max(float(hi[0] - lo[0]), MIN_SIDE), y=max(float(hi[2] - lo[2]), MIN_SIDE), z=size.z)
 
 
+def mesh_library():
+    """trimesh, imported with Ctrl-C held back until the import is done: trimesh wraps its
+    optional imports in ``except BaseException``, so a Ctrl-C landing during its import was
+    swallowed and the run went on waiting for its jobs."""
+    import sys
+    import threading
+
+    if "trimesh" in sys.modules or threading.current_thread() is not threading.main_thread():
+        import trimesh
+
+        return trimesh
+    import signal
+
+    caught: list[int] = []
+    previous = signal.signal(signal.SIGINT, lambda number, frame: caught.append(number))
+    try:
+        import trimesh
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    if caught:
+        raise KeyboardInterrupt
+    return trimesh
+
+
 def parse_glb(data: bytes) -> trimesh.Scene:
     """The triangle meshes of a GLB as a scene; ``ValueError`` saying why when there are none."""
-    import trimesh
-
+    trimesh = mesh_library()
     problem = check_glb(data)
     if problem:
         raise ValueError(problem)
