@@ -51,8 +51,8 @@ COVERAGE = 0.35
 #: Up to this many floor objects, a floor :data:`COVERAGE` covered leaves each within reach:
 #: the walls and a few aisles serve them all. Beyond it the share that must stand away from the
 #: walls, each with an aisle of its own, grows like √n (see :func:`floor_needed`). Measured on
-#: ``benchmarks/speed.py``'s showroom: 60 floor objects were all reached at about COVERAGE,
-#: 120 only after the room had grown twice, to about a third of it.
+#: ``benchmarks/speed.py``'s showroom (docs/rooms.md): 60 floor objects were all reached at
+#: about COVERAGE, 120 only after the room had grown twice, to about a third of it.
 WALL_SERVED = 40
 #: m, an object whose bottom is lower than this stands on the floor (a floor object); one no
 #: taller than this (a rug) is walked over.
