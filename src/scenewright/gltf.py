@@ -14,6 +14,8 @@ glass. :func:`mesh_materials` reads the materials a GLB gives its meshes, and
 The GLB container itself is read here too (:class:`Glb`, :func:`check_glb`), with the
 triangles a file draws (:func:`glb_triangles`): the solver and the editor need nothing more
 of a stored asset, and reading them needs numpy only, not a mesh library's import.
+:class:`GltfWriter` writes a GLB from arrays for the same reason: the procedural objects and the
+room are built as arrays, and going through a mesh library to write them cost its import.
 """
 
 from __future__ import annotations
