@@ -272,3 +272,29 @@ def test_a_box_past_the_ceiling_misfits_and_is_reported():
     assert list(shape.above_ceiling(boxes_of(objects))) == [0.0, pytest.approx(0.3)]
     assert shape.misfit(boxes_of(objects))[1] == pytest.approx(0.3)
     assert "through reaches 0.30 m above the ceiling" in problems(room, objects)
+
+
+def test_a_room_for_many_floor_objects_leaves_more_floor_to_walk_per_object():
+    from scenewright.layout.room import COVERAGE, WALL_SERVED, floor_needed
+
+    # Up to the objects the walls serve, the floor is the footprint at COVERAGE ...
+    assert floor_needed(10.0, WALL_SERVED) == pytest.approx(10.0 / COVERAGE)
+    assert floor_needed(3.0, 5) == pytest.approx(3.0 / COVERAGE)
+    # ... beyond, each object gets more floor, like √n: four times the objects, twice the share.
+    per_object = [floor_needed(0.5 * n, n) / n for n in (WALL_SERVED, 2 * WALL_SERVED, 4 * WALL_SERVED)]
+    assert per_object[0] < per_object[1] < per_object[2]
+    assert per_object[2] == pytest.approx(2.0 * per_object[0])
+
+
+def test_a_room_sized_for_many_floor_objects_gives_each_more_floor():
+    from scenewright.analysis.parser.room import build_room, read_room
+    from scenewright.layout.room import COVERAGE, WALL_SERVED
+
+    def sofas(n):
+        return [SceneObject(id=f"sofa_{k}", name="sofa", category="sofa", size=Vec3(x=2.0, y=0.9, z=0.85))
+                for k in range(n)]
+
+    n = 3 * WALL_SERVED
+    room = RoomShape(build_room(read_room(f"a showroom with {n} sofas"), sofas(n)))
+    covered = n * 2.0 * 0.9 / room.area
+    assert covered <= COVERAGE * (WALL_SERVED / n) ** 0.5 + 1e-9

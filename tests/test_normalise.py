@@ -189,3 +189,36 @@ def test_asset_mesh_is_trimesh_to_mesh_in_the_scene_frame(mirror):
         return out
 
     assert len(got.faces) == len(expected.faces) and oriented(got) == oriented(expected)
+
+
+def test_a_glb_in_the_convention_is_stored_as_it_came():
+    from scenewright.assets.normalise import stored_glb
+    from scenewright.procedural.meshes import build_glb
+
+    glb = build_glb("sofa", (2.0, 0.9, 0.85), "realistic", 1)
+    data, size = stored_glb(glb, Vec3(x=2.0, y=0.9, z=0.85), name="sofa_1", backend="procedural")
+    assert data == glb
+    assert size.tuple() == pytest.approx((2.0, 0.9, 0.85), abs=1e-6)
+    # Asked for another height, it is rescaled as any backend's mesh is.
+    data, size = stored_glb(glb, Vec3(x=2.0, y=0.9, z=1.7), name="sofa_1", backend="procedural")
+    assert data != glb
+    assert size.tuple() == pytest.approx((4.0, 1.8, 1.7), abs=1e-5)
+
+
+def test_building_and_storing_a_procedural_asset_and_a_room_needs_no_mesh_library():
+    import subprocess
+    import sys
+
+    code = (
+        "import sys\n"
+        "from scenewright.assets.normalise import stored_glb\n"
+        "from scenewright.export.glb import room_glb\n"
+        "from scenewright.procedural.meshes import build_glb\n"
+        "from scenewright.scene import Room, Scene, Vec3\n"
+        "glb = build_glb('chair', (0.5, 0.5, 0.9), 'cartoon', 3)\n"
+        "stored_glb(glb, Vec3(x=0.5, y=0.5, z=0.9), name='chair_1', backend='procedural')\n"
+        "room_glb(Scene(text='a room', room=Room.rectangle(4.0, 3.0, 2.7)))\n"
+        "print(sorted({m.split('.')[0] for m in sys.modules} & {'trimesh', 'networkx'}))\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "[]"

@@ -333,28 +333,36 @@ def test_a_run_saves_the_document_once_per_stage_and_parses_each_asset_once(tmp_
 
     load = importlib.import_module("scenewright.assets.load")
     normalise = importlib.import_module("scenewright.assets.normalise")  # the package exports a function of that name
-    saves, parses, reads = [], [], []
+    saves, parses, checks, reads = [], [], [], []
     real_save, real_parse, real_read = SceneFolder.save, normalise.parse_glb, load.glb_triangles
+    real_check = normalise.glb_triangles
     monkeypatch.setattr(SceneFolder, "save", lambda self, scene: saves.append(list(scene.done)) or real_save(self, scene))
 
     def counted(data):
         parses.append(len(data))
         return real_parse(data)
 
+    def counted_check(glb):
+        checks.append(glb)
+        return real_check(glb)
+
     def counted_read(glb):
         reads.append(glb)
         return real_read(glb)
 
     monkeypatch.setattr(normalise, "parse_glb", counted)
+    monkeypatch.setattr(normalise, "glb_triangles", counted_check)
     monkeypatch.setattr(load, "glb_triangles", counted_read)
     settings = _settings()
     scene = generate(TEXT, tmp_path / "s", backends=backends_from_settings(settings), settings=settings, render=False)
     # The new document, then once after each of the four stages.
     assert saves == [[], ["analyze"], ["analyze", "assets"], ["analyze", "assets", "layout"],
                      ["analyze", "assets", "layout", "export"]]
-    # Each asset: the backend's answer parsed once (to normalise it) and the stored file's
-    # triangles read once (kept for the checks and the solver; the export copies its bytes).
-    assert len(parses) == len(scene.objects)
+    # Each asset: the backend's answer read once (the procedural meshes are built to their
+    # box, so it is stored as it came: no mesh-library parse) and the stored file's triangles
+    # read once (kept for the checks and the solver; the export copies its bytes).
+    assert len(checks) == len(scene.objects)
+    assert parses == []
     assert len(reads) == len(scene.objects)
 
 

@@ -14,6 +14,8 @@ glass. :func:`mesh_materials` reads the materials a GLB gives its meshes, and
 The GLB container itself is read here too (:class:`Glb`, :func:`check_glb`), with the
 triangles a file draws (:func:`glb_triangles`): the solver and the editor need nothing more
 of a stored asset, and reading them needs numpy only, not a mesh library's import.
+:class:`GltfWriter` writes a GLB from arrays for the same reason: the procedural objects and the
+room are built as arrays, and going through a mesh library to write them cost its import.
 """
 
 from __future__ import annotations
@@ -297,3 +299,130 @@ def keep_materials(by_mesh: Mapping[str, dict]) -> Callable[[dict], None]:
             tree["extensionsUsed"] = sorted(used)
 
     return postprocess
+
+
+#: The order a node's fields are written in, whichever way the node was made (copied from an
+#: asset, or from an earlier ``scene.glb``), so the same scene always gives the same bytes.
+_NODE_FIELDS = ("name", "children", "mesh", "matrix", "translation", "rotation", "scale", "extras", "extensions")
+#: glTF bufferView targets: vertex attributes and triangle indices.
+ARRAY_BUFFER = 34962
+ELEMENT_ARRAY_BUFFER = 34963
+
+
+class GltfWriter:
+    """One GLB under construction from arrays: nodes, meshes, materials, images."""
+
+    def __init__(self, generator: str) -> None:
+        self.tree: dict = {"asset": {"version": "2.0", "generator": generator}, "scene": 0,
+                           "scenes": [{"nodes": []}]}
+        self._binary = bytearray()
+        self._extensions: dict[str, set[str]] = {"extensionsUsed": set(), "extensionsRequired": set()}
+
+    def _list(self, key: str) -> list:
+        return self.tree.setdefault(key, [])
+
+    def _append(self, key: str, item: dict) -> int:
+        items = self._list(key)
+        items.append(item)
+        return len(items) - 1
+
+    def node(self, name: str, parent: int | None = None, matrix: np.ndarray | None = None,
+             extras: dict | None = None) -> int:
+        """A new node (a child of ``parent``, else a root of the scene); its index."""
+        node: dict = {"name": name}
+        if matrix is not None and not np.allclose(matrix, np.eye(4), rtol=0.0, atol=0.0):
+            node["matrix"] = [float(x) for x in np.asarray(matrix, dtype=float).T.reshape(-1)]
+        if extras is not None:
+            node["extras"] = extras
+        index = self._append("nodes", node)
+        self._attach(index, parent)
+        return index
+
+    def _attach(self, index: int, parent: int | None) -> None:
+        if parent is None:
+            self.tree["scenes"][0]["nodes"].append(index)
+        else:
+            self.tree["nodes"][parent].setdefault("children", []).append(index)
+
+    def data(self, payload: bytes, phase: int = 0) -> int:
+        """``payload`` appended to the binary chunk as a new buffer view, starting at an offset
+        that is ``phase`` past a multiple of 4 (the alignment its accessors were written for)."""
+        while len(self._binary) % 4 != phase % 4:
+            self._binary.append(0)
+        view = {"buffer": 0, "byteOffset": len(self._binary), "byteLength": len(payload)}
+        self._binary += payload
+        return self._append("bufferViews", view)
+
+    def accessor(self, array: np.ndarray, kind: str, target: int | None = None) -> int:
+        """A new accessor holding ``array`` (float32 vectors or uint32 indices), with min/max."""
+        if kind == "SCALAR":
+            values = np.ascontiguousarray(array, dtype=np.uint32).reshape(-1)
+            component, low, high = 5125, [int(values.min())], [int(values.max())]
+        else:
+            values = np.ascontiguousarray(array, dtype=np.float32)
+            component = 5126
+            low, high = values.min(axis=0).tolist(), values.max(axis=0).tolist()
+        view = self.data(values.tobytes())
+        if target is not None:
+            self.tree["bufferViews"][view]["target"] = target
+        return self._append("accessors", {"bufferView": view, "componentType": component, "count": len(values),
+                                          "type": kind, "min": low, "max": high})
+
+    def mesh(self, name: str, vertices: np.ndarray, faces: np.ndarray, material: int,
+             normals: np.ndarray | None = None, uv: np.ndarray | None = None, parent: int | None = None) -> int:
+        """A node called ``name`` drawing one triangle mesh (glTF frame; ``uv`` with V running
+        down the image, as glTF has it) in ``material``; the node's index."""
+        attributes = {"POSITION": self.accessor(vertices, "VEC3", ARRAY_BUFFER)}
+        if normals is not None:
+            attributes["NORMAL"] = self.accessor(normals, "VEC3", ARRAY_BUFFER)
+        if uv is not None:
+            attributes["TEXCOORD_0"] = self.accessor(uv, "VEC2", ARRAY_BUFFER)
+        indices = self.accessor(faces, "SCALAR", ELEMENT_ARRAY_BUFFER)
+        mesh = self.add("meshes", {"name": name, "primitives": [
+            {"attributes": attributes, "indices": indices, "mode": 4, "material": material}]})
+        node = self.node(name, parent)
+        self.tree["nodes"][node]["mesh"] = mesh
+        return node
+
+    def material(self, material: dict) -> int:
+        """``material`` (glTF JSON, exact) as a new material, its extensions declared used."""
+        self._extensions["extensionsUsed"].update(material.get("extensions", {}))
+        return self.add("materials", copy.deepcopy(material))
+
+    def image(self, payload: bytes, mime: str) -> int:
+        return self._append("images", {"bufferView": self.data(payload), "mimeType": mime})
+
+    def add(self, item: str, value: dict) -> int:
+        """A new top-level entry (a material, texture, mesh) written as given; its index."""
+        return self._append(item, value)
+
+    def to_bytes(self) -> bytes:
+        """The GLB: buffer views marked as vertices or indices, extensions listed, chunks padded."""
+        tree = self.tree
+        for key, names in self._extensions.items():
+            if names:
+                tree[key] = sorted(names)
+        _mark_buffer_targets(tree)
+        rank = {key: i for i, key in enumerate(_NODE_FIELDS)}
+        tree["nodes"] = [dict(sorted(n.items(), key=lambda kv: rank.get(kv[0], len(rank)))) for n in tree.get("nodes", [])]
+        binary = bytes(self._binary) + b"\0" * (-len(self._binary) % 4)
+        if binary:
+            tree["buffers"] = [{"byteLength": len(binary)}]
+        text = json.dumps(tree, separators=(",", ":")).encode("utf-8")
+        text += b" " * (-len(text) % 4)
+        chunks = struct.pack("<II", len(text), JSON_CHUNK) + text
+        if binary:
+            chunks += struct.pack("<II", len(binary), BIN_CHUNK) + binary
+        return struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks
+
+
+
+def _mark_buffer_targets(tree: dict) -> None:
+    """Say which buffer views hold vertices and which indices, as engines prefer to be told."""
+    for mesh in tree.get("meshes", []):
+        for primitive in mesh["primitives"]:
+            for accessor in primitive["attributes"].values():
+                tree["bufferViews"][tree["accessors"][accessor]["bufferView"]]["target"] = ARRAY_BUFFER
+            if "indices" in primitive:
+                view = tree["accessors"][primitive["indices"]]["bufferView"]
+                tree["bufferViews"][view]["target"] = ELEMENT_ARRAY_BUFFER

@@ -6,28 +6,101 @@ glTF axes (+Y up, front +Z), footprint centred at the origin, bottom at y = 0, h
 to the object's requested height. Like the paper, the rescale is uniform and uses the
 height only, so a generated sofa keeps its proportions and the document learns its real
 width and depth from the mesh.
+
+A GLB that is in the convention already (the procedural generator builds each object to its
+box) is stored as it came, read with numpy alone: re-baking it would move no vertex by more
+than float32 rounding, and would cost the mesh library's import (most of a small scene's run).
 """
 
 from __future__ import annotations
 
 import io
 import logging
+from typing import TYPE_CHECKING
 
 import numpy as np
-import trimesh
 
 from scenewright.errors import BackendError, MissingExtra
-from scenewright.gltf import check_glb, keep_materials, mesh_materials  # check_glb: also the backends'
+from scenewright.gltf import Glb, check_glb, glb_triangles, keep_materials, mesh_materials  # check_glb: also the backends'
 from scenewright.scene import Vec3
+
+if TYPE_CHECKING:
+    import trimesh
 
 log = logging.getLogger(__name__)
 
 #: A footprint side never written smaller than this (a flat picture still needs a positive size).
 MIN_SIDE = 0.001
+#: Relative to the height: how far a GLB may be off the convention (float32 rounding of a
+#: mesh built to its box) and still be stored as it came.
+IN_CONVENTION = 1e-6
+
+
+def stored_glb(
+    glb: bytes, size: Vec3, *, name: str, backend: str, max_faces: int | None = None
+) -> tuple[bytes, Vec3]:
+    """The asset's GLB in the convention and its new size (as :func:`normalise` and
+    :func:`to_glb` make them); a GLB in the convention already is kept byte for byte."""
+    kept = _in_convention(glb, size, max_faces)
+    if kept is not None:
+        return glb, kept
+    scene, new_size = normalise(glb, size, name=name, backend=backend, max_faces=max_faces)
+    return to_glb(scene, source=glb), new_size
+
+
+def _in_convention(glb: bytes, size: Vec3, max_faces: int | None) -> Vec3 | None:
+    """The size of a GLB that needs no normalising: one self-contained buffer, triangles only,
+    centred on the footprint, standing on y = 0 and ``size.z`` tall (within
+    :data:`IN_CONVENTION`), no more faces than ``max_faces``; else ``None``."""
+    if check_glb(glb) is not None:
+        return None
+    try:
+        parsed = Glb.parse(glb)
+        tree = parsed.tree
+        if any("uri" in item for key in ("buffers", "images") for item in tree.get(key, [])):
+            return None
+        if any(p.get("mode", 4) != 4 for mesh in tree.get("meshes", []) for p in mesh.get("primitives", [])):
+            return None  # points and lines are dropped by normalising
+        vertices, faces = glb_triangles(parsed)
+    except (ValueError, KeyError, TypeError, AttributeError):
+        return None
+    if not len(faces) or not np.isfinite(vertices).all() or (max_faces is not None and len(faces) > max_faces):
+        return None
+    lo, hi = vertices.min(axis=0), vertices.max(axis=0)
+    slack = IN_CONVENTION * max(size.z, 1e-9)
+    off = max(abs(hi[1] - lo[1] - size.z), abs(lo[1]), abs(lo[0] + hi[0]) / 2.0, abs(lo[2] + hi[2]) / 2.0)
+    if not off <= slack:
+        return None
+    return Vec3(x=max(float(hi[0] - lo[0]), MIN_SIDE), y=max(float(hi[2] - lo[2]), MIN_SIDE), z=size.z)
+
+
+def mesh_library():
+    """trimesh, imported with Ctrl-C held back until the import is done: trimesh wraps its
+    optional imports in ``except BaseException``, so a Ctrl-C landing during its import was
+    swallowed and the run went on waiting for its jobs."""
+    import sys
+    import threading
+
+    if "trimesh" in sys.modules or threading.current_thread() is not threading.main_thread():
+        import trimesh
+
+        return trimesh
+    import signal
+
+    caught: list[int] = []
+    previous = signal.signal(signal.SIGINT, lambda number, frame: caught.append(number))
+    try:
+        import trimesh
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    if caught:
+        raise KeyboardInterrupt
+    return trimesh
 
 
 def parse_glb(data: bytes) -> trimesh.Scene:
     """The triangle meshes of a GLB as a scene; ``ValueError`` saying why when there are none."""
+    trimesh = mesh_library()
     problem = check_glb(data)
     if problem:
         raise ValueError(problem)
@@ -85,6 +158,8 @@ def baked(scene: trimesh.Scene, transform: np.ndarray) -> trimesh.Scene:
     Scene-graph transforms are not used because trimesh snaps a node matrix that is close
     to the identity to exactly the identity, which loses a rescale by 0.99999.
     """
+    import trimesh
+
     out = trimesh.Scene()
     for node in scene.graph.nodes_geometry:
         matrix, name = scene.graph[node]
@@ -102,6 +177,8 @@ def reduce_faces(scene: trimesh.Scene, max_faces: int) -> None:
     a textured or vertex-coloured one keeps its look as colours sampled from the nearest
     original vertex.
     """
+    import trimesh
+
     total = sum(len(g.faces) for g in scene.geometry.values())
     if total <= max_faces:
         return

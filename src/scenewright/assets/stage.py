@@ -21,7 +21,7 @@ from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor, as_completed
 
 from scenewright.assets.load import AssetMeshes
-from scenewright.assets.normalise import normalise, to_glb
+from scenewright.assets.normalise import mesh_library, stored_glb
 from scenewright.core.protocols import MeshGenerator, MeshRequest
 from scenewright.cache import RequestCache, request_key
 from scenewright.errors import BackendError, InputError
@@ -114,15 +114,18 @@ def generate_assets(
              len(todo), len(raw), len(missing), meshes.name)
 
     failures: dict[str, str] = {}
+    if not getattr(meshes, "in_convention", False):
+        # Its meshes will need normalising with the mesh library: import it before any job
+        # runs, so a Ctrl-C while jobs run is never held up by that import.
+        mesh_library()
 
     def store(oid: str, glb: bytes) -> None:
         obj = scene.get(oid)
         try:
-            asset, size = normalise(glb, obj.size, name=oid, backend=meshes.name, max_faces=max_faces)
+            data, size = stored_glb(glb, obj.size, name=oid, backend=meshes.name, max_faces=max_faces)
         except BackendError as exc:
             failures[oid] = str(exc)
             return
-        data = to_glb(asset, source=glb)
         path = write_atomic(folder.asset(oid), data)
         parsed.add(path, data)
         obj.asset = folder.relative(path)

@@ -24,6 +24,9 @@ class ProceduralMeshes:
     name = "procedural"
     #: Building is CPU-bound Python; threads would only queue on the interpreter lock.
     concurrency = 1
+    #: Each mesh is built to its box in the stored asset convention, so storing it needs no
+    #: mesh library (:func:`scenewright.assets.normalise.stored_glb`).
+    in_convention = True
 
     @property
     def params(self) -> dict[str, str]:

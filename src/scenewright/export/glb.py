@@ -26,7 +26,7 @@ import numpy as np
 from scenewright.assets.load import AssetMeshes
 from scenewright.errors import InputError
 from scenewright.export.ground import PLAIN_COLOUR, ground_plane
-from scenewright.export.splice import ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, Glb, GlbWriter
+from scenewright.export.splice import Glb, GlbWriter
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
 from scenewright.geometry import GLTF_TO_SCENE, SCENE_TO_GLTF, object_matrix
@@ -104,27 +104,28 @@ def _recorded_room(scene: Scene, folder: SceneFolder, key: str) -> Glb | None:
 def room_glb(scene: Scene) -> bytes:
     """The room's meshes as a GLB of their own: a ``room`` node, each mesh a node under it named
     as :func:`~scenewright.procedural.room.room_meshes` names it; a door's or window's parts hang
-    under a node for the opening (``room/door_0``), so it selects as one thing."""
-    import trimesh  # only a new or changed room pays for the mesh library
+    under a node for the opening (``room/door_0``), so it selects as one thing. Written from
+    the meshes' arrays, each with its exact material; the floor's texture as PNG."""
+    from scenewright.procedural.room import room_geometry
 
-    from scenewright.gltf import keep_materials
-    from scenewright.procedural.room import GLTF_MATERIAL, room_meshes
-
-    target = trimesh.Scene()
-    materials: dict[str, dict] = {}
-    target.graph.update(frame_to=ROOM_NODE, frame_from=target.graph.base_frame, matrix=np.eye(4))
-    for name, mesh in room_meshes(scene.room, scene.style):
-        parent = ROOM_NODE
-        if name.count("/") == 2:
-            parent = name.rsplit("/", 1)[0]
-            if parent not in target.graph.nodes:
-                target.graph.update(frame_to=parent, frame_from=ROOM_NODE, matrix=np.eye(4))
-        gltf = mesh.copy()
-        gltf.apply_transform(SCENE_TO_GLTF)
-        if GLTF_MATERIAL in mesh.metadata:
-            materials[name] = mesh.metadata[GLTF_MATERIAL]
-        target.add_geometry(gltf, geom_name=name, node_name=name, parent_node_name=parent)
-    return trimesh.exchange.gltf.export_glb(target, tree_postprocessor=keep_materials(materials))
+    out = GlbWriter(f"scenewright {__version__}")
+    groups = {ROOM_NODE: out.node(ROOM_NODE)}
+    for name, mesh in room_geometry(scene.room, scene.style):
+        parent = name.rsplit("/", 1)[0] if name.count("/") == 2 else ROOM_NODE
+        if parent not in groups:
+            groups[parent] = out.node(parent, groups[ROOM_NODE])
+        material = dict(mesh.material)
+        uv = None
+        if mesh.image is not None:
+            buffer = io.BytesIO()
+            mesh.image.save(buffer, "PNG", compress_level=1)  # a fifth of the time of the default level
+            texture = out.add("textures", {"source": out.image(buffer.getvalue(), "image/png")})
+            material["pbrMetallicRoughness"] = {**material.get("pbrMetallicRoughness", {}),
+                                                "baseColorTexture": {"index": texture}}
+            uv = np.column_stack([mesh.uv[:, 0], 1.0 - mesh.uv[:, 1]])  # glTF's V runs down the image
+        vertices = mesh.vertices @ SCENE_TO_GLTF[:3, :3].T
+        out.mesh(name, vertices, mesh.faces, out.material(material), uv=uv, parent=groups[parent])
+    return out.to_bytes()
 
 
 def _add_room(out: GlbWriter, scene: Scene, folder: SceneFolder) -> None:
@@ -171,15 +172,7 @@ def _add_ground(out: GlbWriter, scene: Scene, folder: SceneFolder) -> None:
     pbr.update(metallicFactor=0.0, roughnessFactor=0.9)
     material = out.add("materials", {"name": GROUND_NODE, "pbrMetallicRoughness": pbr, "doubleSided": False})
     flipped = np.column_stack([uv[:, 0], 1.0 - uv[:, 1]])  # glTF's V runs down the image
-    attributes = {
-        "POSITION": out.accessor(vertices, "VEC3", ARRAY_BUFFER),
-        "NORMAL": out.accessor(np.tile([0.0, 1.0, 0.0], (len(vertices), 1)), "VEC3", ARRAY_BUFFER),
-        "TEXCOORD_0": out.accessor(flipped, "VEC2", ARRAY_BUFFER),
-    }
-    indices = out.accessor(faces, "SCALAR", ELEMENT_ARRAY_BUFFER)
-    mesh = out.add("meshes", {"name": GROUND_NODE, "primitives": [
-        {"attributes": attributes, "indices": indices, "mode": 4, "material": material}]})
-    out.tree["nodes"][out.node(GROUND_NODE)]["mesh"] = mesh
+    out.mesh(GROUND_NODE, vertices, faces, material, normals=np.tile([0.0, 1.0, 0.0], (len(vertices), 1)), uv=flipped)
 
 
 def scene_glb(scene: Scene, folder: SceneFolder, meshes: AssetMeshes | None = None) -> GlbWriter:

@@ -17,20 +17,9 @@ other files is refused (``ValueError``), since ``scene.glb`` must stand alone.
 from __future__ import annotations
 
 import copy
-import json
-import struct
 from collections.abc import Iterable
 
-import numpy as np
-
-from scenewright.gltf import BIN_CHUNK, JSON_CHUNK, Glb
-
-#: The order a node's fields are written in, whichever way the node was made (copied from an
-#: asset, or from an earlier ``scene.glb``), so the same scene always gives the same bytes.
-_NODE_FIELDS = ("name", "children", "mesh", "matrix", "translation", "rotation", "scale", "extras", "extensions")
-#: glTF bufferView targets: vertex attributes and triangle indices.
-ARRAY_BUFFER = 34962
-ELEMENT_ARRAY_BUFFER = 34963
+from scenewright.gltf import ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, Glb, GltfWriter
 
 __all__ = ["ARRAY_BUFFER", "ELEMENT_ARRAY_BUFFER", "Glb", "GlbWriter"]
 
@@ -51,71 +40,9 @@ def _remap_textures(value, textures: dict[int, int], under_texture: bool = False
     return value
 
 
-class GlbWriter:
-    """One GLB under construction: nodes made here, node trees copied in from other GLBs."""
-
-    def __init__(self, generator: str) -> None:
-        self.tree: dict = {"asset": {"version": "2.0", "generator": generator}, "scene": 0,
-                           "scenes": [{"nodes": []}]}
-        self._binary = bytearray()
-        self._extensions: dict[str, set[str]] = {"extensionsUsed": set(), "extensionsRequired": set()}
-
-    def _list(self, key: str) -> list:
-        return self.tree.setdefault(key, [])
-
-    def _append(self, key: str, item: dict) -> int:
-        items = self._list(key)
-        items.append(item)
-        return len(items) - 1
-
-    def node(self, name: str, parent: int | None = None, matrix: np.ndarray | None = None,
-             extras: dict | None = None) -> int:
-        """A new node (a child of ``parent``, else a root of the scene); its index."""
-        node: dict = {"name": name}
-        if matrix is not None and not np.allclose(matrix, np.eye(4), rtol=0.0, atol=0.0):
-            node["matrix"] = [float(x) for x in np.asarray(matrix, dtype=float).T.reshape(-1)]
-        if extras is not None:
-            node["extras"] = extras
-        index = self._append("nodes", node)
-        self._attach(index, parent)
-        return index
-
-    def _attach(self, index: int, parent: int | None) -> None:
-        if parent is None:
-            self.tree["scenes"][0]["nodes"].append(index)
-        else:
-            self.tree["nodes"][parent].setdefault("children", []).append(index)
-
-    def data(self, payload: bytes, phase: int = 0) -> int:
-        """``payload`` appended to the binary chunk as a new buffer view, starting at an offset
-        that is ``phase`` past a multiple of 4 (the alignment its accessors were written for)."""
-        while len(self._binary) % 4 != phase % 4:
-            self._binary.append(0)
-        view = {"buffer": 0, "byteOffset": len(self._binary), "byteLength": len(payload)}
-        self._binary += payload
-        return self._append("bufferViews", view)
-
-    def accessor(self, array: np.ndarray, kind: str, target: int | None = None) -> int:
-        """A new accessor holding ``array`` (float32 vectors or uint32 indices), with min/max."""
-        if kind == "SCALAR":
-            values = np.ascontiguousarray(array, dtype=np.uint32).reshape(-1)
-            component, low, high = 5125, [int(values.min())], [int(values.max())]
-        else:
-            values = np.ascontiguousarray(array, dtype=np.float32)
-            component = 5126
-            low, high = values.min(axis=0).tolist(), values.max(axis=0).tolist()
-        view = self.data(values.tobytes())
-        if target is not None:
-            self.tree["bufferViews"][view]["target"] = target
-        return self._append("accessors", {"bufferView": view, "componentType": component, "count": len(values),
-                                          "type": kind, "min": low, "max": high})
-
-    def image(self, payload: bytes, mime: str) -> int:
-        return self._append("images", {"bufferView": self.data(payload), "mimeType": mime})
-
-    def add(self, item: str, value: dict) -> int:
-        """A new top-level entry (a material, texture, mesh) written as given; its index."""
-        return self._append(item, value)
+class GlbWriter(GltfWriter):
+    """One GLB under construction: nodes made here (:class:`~scenewright.gltf.GltfWriter`),
+    node trees copied in from other GLBs."""
 
     def splice(self, source: Glb, roots: Iterable[int], parent: int | None = None,
                prefix: str | None = None) -> list[int]:
@@ -237,26 +164,6 @@ class GlbWriter:
             self._extensions[key].update(tree.get(key, []))
         return made
 
-    def to_bytes(self) -> bytes:
-        """The GLB: buffer views marked as vertices or indices, extensions listed, chunks padded."""
-        tree = self.tree
-        for key, names in self._extensions.items():
-            if names:
-                tree[key] = sorted(names)
-        _mark_buffer_targets(tree)
-        rank = {key: i for i, key in enumerate(_NODE_FIELDS)}
-        tree["nodes"] = [dict(sorted(n.items(), key=lambda kv: rank.get(kv[0], len(rank)))) for n in tree.get("nodes", [])]
-        binary = bytes(self._binary) + b"\0" * (-len(self._binary) % 4)
-        if binary:
-            tree["buffers"] = [{"byteLength": len(binary)}]
-        text = json.dumps(tree, separators=(",", ":")).encode("utf-8")
-        text += b" " * (-len(text) % 4)
-        chunks = struct.pack("<II", len(text), JSON_CHUNK) + text
-        if binary:
-            chunks += struct.pack("<II", len(binary), BIN_CHUNK) + binary
-        return struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks
-
-
 def _texture_indices(value, under_texture: bool = False) -> list[int]:
     """Every texture a material refers to, in the order its JSON names them."""
     found: list[int] = []
@@ -270,14 +177,3 @@ def _texture_indices(value, under_texture: bool = False) -> list[int]:
         for item in value:
             found += _texture_indices(item)
     return found
-
-
-def _mark_buffer_targets(tree: dict) -> None:
-    """Say which buffer views hold vertices and which indices, as engines prefer to be told."""
-    for mesh in tree.get("meshes", []):
-        for primitive in mesh["primitives"]:
-            for accessor in primitive["attributes"].values():
-                tree["bufferViews"][tree["accessors"][accessor]["bufferView"]]["target"] = ARRAY_BUFFER
-            if "indices" in primitive:
-                view = tree["accessors"][primitive["indices"]]["bufferView"]
-                tree["bufferViews"][view]["target"] = ELEMENT_ARRAY_BUFFER

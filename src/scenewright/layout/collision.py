@@ -68,8 +68,21 @@ def _winding_number(mesh: trimesh.Trimesh, point: np.ndarray) -> float:
     return float(np.arctan2(det, div).sum() / (2.0 * np.pi))
 
 
-def _yaw_rotation(tilt: np.ndarray, yaw: float) -> np.ndarray:
-    return rotation_matrix(Vec3(z=yaw)) @ tilt
+#: Turns about z by yaw (degrees), kept: the solver tries the same few yaws for thousands of
+#: candidate poses, and building each matrix anew was a sixth of a dense layout's time.
+_TURNS: dict[float, np.ndarray] = {}
+_TURNS_KEPT = 4096
+
+
+def _yaw_rotation(tilt: np.ndarray | None, yaw: float) -> np.ndarray:
+    """The turn by ``yaw`` after ``tilt`` (``None``: upright, no tilt); read-only, shared."""
+    turn = _TURNS.get(yaw)
+    if turn is None:
+        if len(_TURNS) >= _TURNS_KEPT:
+            _TURNS.clear()
+        turn = _TURNS[yaw] = rotation_matrix(Vec3(z=yaw))
+        turn.flags.writeable = False
+    return turn if tilt is None else turn @ tilt
 
 
 def resting_pairs(constraints: Iterable[Constraint]) -> set[frozenset[str]]:
@@ -91,6 +104,8 @@ class CollisionWorld:
         #: Each object's rotation without its yaw; the solver turns objects about z only.
         self.tilt = [tilt_matrix(o.rotation) for o in objects]
         self.upright = [bool(np.allclose(t, np.eye(3))) for t in self.tilt]
+        #: Exactly untilted: its pose's rotation is the turn alone (the same floats as turn @ I).
+        self.plain = [bool(np.array_equal(t, np.eye(3))) for t in self.tilt]
         self.local_half = np.zeros((n, 3))
         #: Translation from the box centre to the shape's origin, in the object's own frame.
         self.offset = np.zeros((n, 3))
@@ -147,7 +162,7 @@ class CollisionWorld:
         half_z = float(np.max(np.abs(points[:, 2])))
         self.shapes[i] = fcl.CollisionObject(fcl.Cylinder(radius, 2 * max(half_z - TOUCH, TOUCH)), fcl.Transform())
         self.meshes[i], self.has_mesh[i], self.is_box[i] = None, False, False
-        self.tilt[i], self.upright[i], self.offset[i] = np.eye(3), True, 0.0
+        self.tilt[i], self.upright[i], self.plain[i], self.offset[i] = np.eye(3), True, True, 0.0
         self.local_half[i] = (radius, radius, half_z)
 
     def _shape(self, i: int) -> fcl.CollisionObject:
@@ -163,7 +178,7 @@ class CollisionWorld:
         return shape
 
     def _pose(self, i: int, centre: np.ndarray, yaw: float) -> None:
-        r = _yaw_rotation(self.tilt[i], yaw)
+        r = _yaw_rotation(None if self.plain[i] else self.tilt[i], yaw)
         self.poses[i] = (r, np.asarray(centre, dtype=float) + r @ self.offset[i])
         if self.shapes[i] is not None:
             self.shapes[i].setTransform(fcl.Transform(*self.poses[i]))
@@ -193,6 +208,7 @@ class CollisionWorld:
         """Which of the broad-phase ``candidates`` object ``i`` really collides with at this pose."""
         hits = []
         posed = False
+        request = fcl.CollisionRequest()
         aligned = self._aligned(i, yaw)
         box = None
         for j in candidates:
@@ -202,7 +218,7 @@ class CollisionWorld:
             if not posed:
                 self._pose(i, centre, yaw)
                 posed = True
-            if fcl.collide(self._shape(i), self._shape(int(j)), fcl.CollisionRequest(), fcl.CollisionResult()):
+            if fcl.collide(self._shape(i), self._shape(int(j)), request, fcl.CollisionResult()):
                 hits.append(int(j))
             elif self.has_mesh[i] or self.has_mesh[j]:  # boxes alone are solid to fcl
                 if box is None:

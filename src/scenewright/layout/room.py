@@ -18,6 +18,7 @@ The solver, editing and evaluation all measure a layout against its room here (d
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Sequence
 
@@ -47,6 +48,12 @@ NEAR_CACHE = 20000
 #: The largest share of the floor the floor objects may cover and leave room to walk: rooms
 #: sized around their objects use it, and a room too small says how much floor is missing by it.
 COVERAGE = 0.35
+#: Up to this many floor objects, a floor :data:`COVERAGE` covered leaves each within reach:
+#: the walls and a few aisles serve them all. Beyond it the share that must stand away from the
+#: walls, each with an aisle of its own, grows like √n (see :func:`floor_needed`). Measured on
+#: ``benchmarks/speed.py``'s showroom (docs/rooms.md): 60 floor objects were all reached at
+#: about COVERAGE, 120 only after the room had grown twice, to about a third of it.
+WALL_SERVED = 40
 #: m, an object whose bottom is lower than this stands on the floor (a floor object); one no
 #: taller than this (a rug) is walked over.
 FLOOR = 0.05
@@ -264,6 +271,15 @@ class RoomShape:
             grid = np.stack(np.meshgrid(xs, ys, indexing="ij"), axis=-1)
             self._cells = (grid, self.contains(grid) & (self._to_boundary(grid) >= AGENT_RADIUS))
         return self._cells
+
+
+def floor_needed(footprint: float, count: int) -> float:
+    """The floor (m²) that ``count`` floor objects covering ``footprint`` m² need to be placed
+    with every one within reach: ``footprint / COVERAGE`` for up to :data:`WALL_SERVED` of
+    them, more beyond. A room's wall length grows with its side, √area, while the objects grow
+    with its area, so the share of them a wall can serve falls like 1/√n and the rest need
+    aisles: without this a dense room was solved, found unreachable and solved again, grown."""
+    return footprint / COVERAGE * max(1.0, math.sqrt(count / WALL_SERVED))
 
 
 def boxes_of(objects: Sequence[SceneObject]) -> Boxes:

@@ -10,15 +10,18 @@ from __future__ import annotations
 
 import logging
 from collections.abc import Callable, Mapping, Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
-import trimesh
 
 from scenewright.core.protocols import VisionLanguageModel
 from scenewright.folder import SceneFolder
 from scenewright.layout import LayoutResult, solve
 from scenewright.layout.room import access_problems, resized
 from scenewright.scene import ROOM_RELATIONS, Constraint, Scene, SceneObject
+
+if TYPE_CHECKING:  # the meshes are an asset's AssetMesh: the collision world needs no mesh library
+    import trimesh
 
 #: Adds the placement priors of a room to the constraints (objects, constraints, ceiling height) -> constraints.
 Furnish = Callable[[Sequence[SceneObject], Sequence[Constraint], float], list[Constraint]]

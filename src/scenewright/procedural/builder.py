@@ -12,15 +12,18 @@ from __future__ import annotations
 import re
 from collections import defaultdict
 from collections.abc import Mapping
+from typing import TYPE_CHECKING
 
 import numpy as np
-import trimesh
-from trimesh.visual.material import PBRMaterial
 
 from scenewright.geometry import SCENE_TO_GLTF
-from scenewright.gltf import srgb_to_linear
+from scenewright.gltf import GltfWriter, srgb_to_linear
 from scenewright.procedural import parts as P
 from scenewright.procedural.style import NEON_ROLES, NEONS, Style, Surface
+
+if TYPE_CHECKING:
+    import trimesh
+    from trimesh.visual.material import PBRMaterial
 
 
 #: Rotations taking a part drawn about local +Z to one about the named axis. Local x and y
@@ -155,9 +158,10 @@ class Model:
                 self.add(role or own, P.transform(part, offset))
 
     # Output ------------------------------------------------------------------------------
-    def finish(self, described: Mapping[str, Surface] | None = None) -> trimesh.Scene:
-        """Fit to the box, shade, convert to glTF and attach one PBR material per role;
-        ``described`` holds the surfaces the description asked for, by role."""
+    def fitted(self, described: Mapping[str, Surface] | None = None) -> list[tuple[str, P.Part]]:
+        """Fit to the box, shade, convert to glTF: one part per role, in glTF axes, each
+        role's exact PBR material in :attr:`materials`; ``described`` holds the surfaces the
+        description asked for, by role."""
         described = described or {}
         if not self.parts:
             raise ValueError("a generator drew nothing")
@@ -173,7 +177,7 @@ class Model:
         if self.style.neon and not NEON_ROLES.intersection(roles):
             merged["trim"] = P.transform(self._trim(), np.linalg.inv(place))
             roles.append("trim")
-        scene = trimesh.Scene()
+        out = []
         for role in roles:
             part = P.drop_degenerate(P.transform(merged[role], fit))
             if self.style.flat:
@@ -182,8 +186,26 @@ class Model:
                 surface = self.style.restyle(described[role], "described", self.neon)
             else:
                 surface = self.style.surface(role, self.neon)
-            mesh = trimesh.Trimesh(part.vertices, part.faces, vertex_normals=part.normals, process=False)
             self.materials[role] = gltf_material(role, surface)
+            out.append((role, part))
+        return out
+
+    def glb(self, described: Mapping[str, Surface] | None = None) -> bytes:
+        """The fitted object as GLB bytes: a node, mesh and exact material per role, written
+        from the arrays (no mesh library: building an asset must not cost its import)."""
+        out = GltfWriter("scenewright procedural")
+        for role, part in self.fitted(described):
+            out.mesh(role, part.vertices, part.faces, out.material(self.materials[role]), normals=part.normals)
+        return out.to_bytes()
+
+    def finish(self, described: Mapping[str, Surface] | None = None) -> trimesh.Scene:
+        """:meth:`fitted` as a trimesh scene, one node and PBR material per role (trimesh's
+        copy rounds the base colour to 8 bits; :attr:`materials` keeps it exact)."""
+        import trimesh
+
+        scene = trimesh.Scene()
+        for role, part in self.fitted(described):
+            mesh = trimesh.Trimesh(part.vertices, part.faces, vertex_normals=part.normals, process=False)
             mesh.visual = trimesh.visual.TextureVisuals(material=pbr_material(self.materials[role]))
             scene.add_geometry(mesh, geom_name=role, node_name=role)
         return scene
@@ -223,6 +245,8 @@ def gltf_material(name: str, s: Surface) -> dict:
 
 def pbr_material(material: dict) -> PBRMaterial:
     """trimesh's copy of a glTF material (its base colour rounded to 8 bits)."""
+    from trimesh.visual.material import PBRMaterial
+
     pbr = material["pbrMetallicRoughness"]
     return PBRMaterial(
         name=material["name"],

@@ -14,17 +14,20 @@ import re
 from functools import cache
 from pathlib import Path
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-import trimesh
 
 from scenewright.core.catalogue import load_catalogue, lookup
 from scenewright.errors import InputError
-from scenewright.gltf import keep_materials
 from scenewright.procedural.builder import Model
 from scenewright.procedural.material import described_surfaces
 from scenewright.procedural.shapes import SHAPES
 from scenewright.procedural.shapes.families import FAMILY_WORDS
 from scenewright.procedural.style import resolve_style
+
+if TYPE_CHECKING:
+    import trimesh
 
 
 #: Words of an object's name → shape, for names the catalogue does not know as a whole ("oak
@@ -97,20 +100,21 @@ def build_model(
     """The styled object as a glTF-convention scene: one node and PBR material per part role.
     ``name`` (the object's name and category) picks variants within a shape: a lighthouse
     among towers, a dog for the generic shape."""
-    return _finished(shape, size, style, seed, description, name)[0]
+    model, described = _drawn(shape, size, style, seed, description, name)
+    return model.finish(described)
 
 
-def _finished(shape: str, size, style: str, seed: int, description: str, name: str) -> tuple[trimesh.Scene, Model]:
+def _drawn(shape: str, size, style: str, seed: int, description: str, name: str) -> tuple[Model, dict]:
+    """The model with its parts drawn, and the surfaces its description asks for by role."""
     if shape not in SHAPES:
         raise InputError(f"unknown shape {shape!r}; shapes are: {', '.join(sorted(SHAPES))}")
     resolved = resolve_style(style)
     model = Model(size, resolved, np.random.default_rng(seed), name=name, description=description)
     SHAPES[shape](model)
-    scene = model.finish(described_surfaces(f"{name} {description}", model.main, model.parts.keys(), resolved.base))
-    return scene, model
+    return model, described_surfaces(f"{name} {description}", model.main, model.parts.keys(), resolved.base)
 
 
 def build_glb(shape: str, size, style: str, seed: int, description: str = "", name: str = "") -> bytes:
-    """The object as GLB bytes, its materials exact (trimesh's own copy rounds colours to 8 bits)."""
-    scene, model = _finished(shape, size, style, seed, description, name)
-    return scene.export(file_type="glb", include_normals=True, tree_postprocessor=keep_materials(model.materials))
+    """The object as GLB bytes, its materials exact."""
+    model, described = _drawn(shape, size, style, seed, description, name)
+    return model.glb(described)

@@ -14,7 +14,6 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
-from scipy.spatial import ConvexHull
 
 
 @dataclass
@@ -146,6 +145,8 @@ def _octant_directions(detail: int) -> np.ndarray:
 
 def _hull(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Convex hull faces (into ``points``) wound outward, and the vertices they use."""
+    from scipy.spatial import ConvexHull  # built once per detail level (cached), not on import
+
     hull = ConvexHull(points)
     faces = hull.simplices.copy()
     tri = points[faces]

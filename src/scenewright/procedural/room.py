@@ -29,10 +29,11 @@ from __future__ import annotations
 
 import hashlib
 import logging
+from dataclasses import dataclass, field
 from functools import lru_cache
+from typing import TYPE_CHECKING
 
 import numpy as np
-import trimesh
 from PIL import Image
 
 from scenewright.procedural.builder import gltf_material, pbr_material
@@ -40,6 +41,9 @@ from scenewright.procedural.material import described_surfaces
 from scenewright.procedural.style import Style, Surface, resolve_style
 from scenewright.procedural.textures import ground_texture, normalise_kind
 from scenewright.scene import Opening, Room
+
+if TYPE_CHECKING:
+    import trimesh
 
 log = logging.getLogger(__name__)
 
@@ -67,6 +71,36 @@ GLTF_MATERIAL = "gltf_material"
 UP = np.array([0.0, 0.0, 1.0])
 
 
+@dataclass
+class RoomMesh:
+    """One mesh of the room as arrays (scene frame): the GLB writer needs no mesh library, and
+    :meth:`to_trimesh` gives the renderer, editor and simulators theirs."""
+
+    vertices: np.ndarray
+    faces: np.ndarray
+    #: The exact glTF material; the floor's names no texture (its ``image`` is the texture).
+    material: dict = field(default_factory=dict)
+    #: Texture coordinates (V up the image, as trimesh has them) and the texture, for the floor.
+    uv: np.ndarray | None = None
+    image: Image.Image | None = None
+
+    def to_trimesh(self) -> trimesh.Trimesh:
+        import trimesh
+
+        mesh = trimesh.Trimesh(self.vertices, self.faces, process=False)
+        if self.image is not None:
+            pbr = self.material["pbrMetallicRoughness"]
+            material = trimesh.visual.material.PBRMaterial(
+                name=self.material["name"], baseColorTexture=self.image,
+                metallicFactor=pbr["metallicFactor"], roughnessFactor=pbr["roughnessFactor"],
+            )
+            mesh.visual = trimesh.visual.TextureVisuals(uv=self.uv, material=material)
+        else:
+            mesh.visual = trimesh.visual.TextureVisuals(material=pbr_material(self.material))
+            mesh.metadata[GLTF_MATERIAL] = self.material
+        return mesh
+
+
 def room_meshes(room: Room, style: str) -> list[tuple[str, trimesh.Trimesh]]:
     """The room as named meshes in the scene frame, each with its material.
 
@@ -77,6 +111,11 @@ def room_meshes(room: Room, style: str) -> list[tuple[str, trimesh.Trimesh]]:
     except the floor (which is textured) carries its exact glTF material in
     ``mesh.metadata["gltf_material"]``.
     """
+    return [(name, mesh.to_trimesh()) for name, mesh in room_geometry(room, style)]
+
+
+def room_geometry(room: Room, style: str) -> list[tuple[str, RoomMesh]]:
+    """The meshes of :func:`room_meshes` as arrays, in the same order and under the same names."""
     resolved = resolve_style(style)
     outline = _outer_outline(room.floor)
     holes = _holes(room, outline)
@@ -186,14 +225,14 @@ def _ear_clip(poly: np.ndarray) -> np.ndarray:
     return np.array(triangles, dtype=np.int64)
 
 
-def _prism(poly: np.ndarray, z0: float, z1: float) -> trimesh.Trimesh:
+def _prism(poly: np.ndarray, z0: float, z1: float) -> RoomMesh:
     """A closed slab over a counter-clockwise polygon, from ``z0`` up to ``z1``."""
     n = len(poly)
     vertices = np.vstack([np.column_stack([poly, np.full(n, z0)]), np.column_stack([poly, np.full(n, z1)])])
     cap = _ear_clip(poly)
     sides = [f for i in range(n) for f in ((i, (i + 1) % n, n + (i + 1) % n), (i, n + (i + 1) % n, n + i))]
     faces = np.vstack([cap[:, ::-1], cap + n, np.array(sides)])
-    return trimesh.Trimesh(vertices, faces, process=False)
+    return RoomMesh(vertices, faces)
 
 
 @lru_cache(maxsize=16)
@@ -204,13 +243,11 @@ def _floor_image(kind: str, style: str) -> Image.Image:
     return Image.fromarray(ground_texture(kind, style, seed, FLOOR_TEXTURE_PIXELS), "RGB")
 
 
-def _floor(room: Room, outline: np.ndarray, style: Style) -> trimesh.Trimesh:
+def _floor(room: Room, outline: np.ndarray, style: Style) -> RoomMesh:
     mesh = _prism(outline, -FLOOR_THICKNESS, 0.0)
-    image = _floor_image(normalise_kind(room.floor_material), style.name)
-    material = trimesh.visual.material.PBRMaterial(
-        name="floor", baseColorTexture=image, metallicFactor=0.0, roughnessFactor=0.8
-    )
-    mesh.visual = trimesh.visual.TextureVisuals(uv=mesh.vertices[:, :2] / FLOOR_TILE_METRES, material=material)
+    mesh.image = _floor_image(normalise_kind(room.floor_material), style.name)
+    mesh.material = {"name": "floor", "pbrMetallicRoughness": {"metallicFactor": 0.0, "roughnessFactor": 0.8}}
+    mesh.uv = mesh.vertices[:, :2] / FLOOR_TILE_METRES
     return mesh
 
 
@@ -228,7 +265,7 @@ def _grid(room: Room, i: int, holes: dict) -> tuple[list[float], list[float], np
     return us, zs, solid
 
 
-def _wall(room: Room, outline: np.ndarray, i: int, holes: dict) -> trimesh.Trimesh:
+def _wall(room: Room, outline: np.ndarray, i: int, holes: dict) -> RoomMesh:
     """Wall ``i`` as one closed surface with its openings cut through (see the module doc)."""
     a, along, inward, _ = _frame(room, i)
     n = len(room.floor)
@@ -282,9 +319,18 @@ def _wall(room: Room, outline: np.ndarray, i: int, holes: dict) -> trimesh.Trime
                 quad([inner_v(iu, iz), inner_v(iu + 1, iz), outer_v(iu + 1, iz), outer_v(iu, iz)], -UP)
             if iz == rows - 1 or not solid[iu, iz + 1]:
                 quad([inner_v(iu, iz + 1), inner_v(iu + 1, iz + 1), outer_v(iu + 1, iz + 1), outer_v(iu, iz + 1)], UP)
-    mesh = trimesh.Trimesh(np.array(vertices), np.array(faces), process=False)
-    mesh.merge_vertices()  # the cells share their corners: one closed surface
-    return mesh
+    return _merged(np.array(vertices), np.array(faces))  # the cells share their corners: one closed surface
+
+
+def _merged(vertices: np.ndarray, faces: np.ndarray) -> RoomMesh:
+    """The mesh with the vertices that sit at one point (to 1e-8 m) made one, in the order
+    they first appear."""
+    key = np.round(vertices, 8) + 0.0  # + 0.0: -0.0 and 0.0 are one point
+    _, first, inverse = np.unique(key, axis=0, return_index=True, return_inverse=True)
+    order = np.argsort(first)
+    rank = np.empty_like(order)
+    rank[order] = np.arange(len(order))
+    return RoomMesh(vertices[first[order]], rank[inverse.reshape(-1)][faces])
 
 
 def wall_boxes(room: Room) -> list[tuple[str, np.ndarray, np.ndarray]]:
@@ -324,23 +370,25 @@ def wall_boxes(room: Room) -> list[tuple[str, np.ndarray, np.ndarray]]:
 
 
 # Fittings -------------------------------------------------------------------------------
-def _boxes(room: Room, wall: int, spans) -> trimesh.Trimesh:
+#: A unit box's corners and its triangles, wound outward.
+_BOX_CORNERS = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]], float)
+_BOX_FACES = np.array([[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4],
+                       [1, 2, 6], [1, 6, 5], [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 4, 7]])
+
+
+def _boxes(room: Room, wall: int, spans) -> RoomMesh:
     """Boxes given in wall coordinates (u along the wall, s inward from its line, z up)."""
     a, along, inward, _ = _frame(room, wall)
-    frame = np.eye(4)
-    frame[:3, 0], frame[:3, 1], frame[:3, 2], frame[:3, 3] = along, inward, UP, a
-    boxes = []
-    for lo, hi in spans:
+    frame = np.column_stack([along, inward, UP])  # a proper rotation: windings stay outward
+    vertices, faces = [], []
+    for k, (lo, hi) in enumerate(spans):
         lo, hi = np.asarray(lo, float), np.asarray(hi, float)
-        box = trimesh.creation.box(extents=hi - lo)
-        box.apply_translation((lo + hi) / 2.0)
-        boxes.append(box)
-    mesh = trimesh.util.concatenate(boxes)
-    mesh.apply_transform(frame)
-    return mesh
+        vertices.append((lo + _BOX_CORNERS * (hi - lo)) @ frame.T + a)
+        faces.append(_BOX_FACES + 8 * k)
+    return RoomMesh(np.concatenate(vertices), np.concatenate(faces))
 
 
-def _casing(room: Room, o: Opening, hole, width: float) -> trimesh.Trimesh:
+def _casing(room: Room, o: Opening, hole, width: float) -> RoomMesh:
     u0, u1, z0, z1 = hole
     s0, s1 = -WALL_THICKNESS - CASING_PROUD, CASING_PROUD
     top = min(z1 + width, room.height)
@@ -352,7 +400,7 @@ def _casing(room: Room, o: Opening, hole, width: float) -> trimesh.Trimesh:
     return _boxes(room, o.wall, spans)
 
 
-def _fittings(room: Room, o: Opening, hole, style: Style) -> list[tuple[str, trimesh.Trimesh]]:
+def _fittings(room: Room, o: Opening, hole, style: Style) -> list[tuple[str, RoomMesh]]:
     u0, u1, z0, z1 = hole
     casing = _coloured(_casing(room, o, hole, CASING_WIDTH[o.kind]), f"{o.kind} frame", style.surface("plastic"))
     if o.kind == "window":
@@ -380,10 +428,8 @@ def _worded(words: str, role: str, style: Style) -> Surface:
     return style.restyle(described, role) if described is not None else style.surface(role)
 
 
-def _coloured(mesh: trimesh.Trimesh, name: str, surface: Surface) -> trimesh.Trimesh:
-    material = gltf_material(name, surface)
-    mesh.visual = trimesh.visual.TextureVisuals(material=pbr_material(material))
-    mesh.metadata[GLTF_MATERIAL] = material
+def _coloured(mesh: RoomMesh, name: str, surface: Surface) -> RoomMesh:
+    mesh.material = gltf_material(name, surface)
     return mesh
 
 

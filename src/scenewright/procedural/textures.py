@@ -14,7 +14,6 @@ from collections.abc import Callable
 
 import numpy as np
 from PIL import Image
-from scipy.spatial import cKDTree
 
 log = logging.getLogger(__name__)
 
@@ -81,6 +80,8 @@ def cells(
         count = k * k
         g = (np.stack(np.meshgrid(np.arange(k), np.arange(k)), axis=-1).reshape(-1, 2) + 0.5) / k
         sites = (g + rng.uniform(-jitter, jitter, (count, 2)) / k) % 1.0
+    from scipy.spatial import cKDTree  # only the cell textures (stones, cobbles) need it
+
     tree = cKDTree(sites, boxsize=1.0)
     g = (np.arange(n) + 0.5) / n
     gy, gx = np.meshgrid(g, g, indexing="ij")

@@ -12,7 +12,8 @@ Decisions where nothing is said:
 
 - Rooms built here are rectangles centred at the origin, walls listed front (−y, the viewer's
   side), right, back, left: so "the back wall" is ``wall_2`` (:data:`RECTANGLE_WALLS`).
-- The floor objects may cover at most :data:`COVERAGE` of the floor; each side is at least the
+- The floor objects may cover at most :data:`COVERAGE` of the floor (less when there are many:
+  :func:`~scenewright.layout.room.floor_needed`); each side is at least the
   longest object plus a walking lane on either side (:data:`LANE`).
 - The default door is on the left wall near the front corner (the renders look from the front,
   so a door there stays visible); the default window is centred on the back wall.
@@ -29,7 +30,7 @@ from scenewright.core.catalogue import load_catalogue
 from scenewright.analysis.parser.model import ParsedRelation, ParsedScene
 from scenewright.analysis.parser.style import detect_ground
 from scenewright.errors import InputError
-from scenewright.layout.room import COVERAGE
+from scenewright.layout.room import COVERAGE, floor_needed
 from scenewright.layout.room import FLOOR as FLAT
 from scenewright.scene import CEILING_TARGET, MAX_ROOM_HEIGHT, MIN_ROOM_HEIGHT, MIN_WALL, Opening, Room, SceneObject
 
@@ -208,17 +209,22 @@ def parse_room_option(value: str | None) -> str | tuple[float, float, float | No
     return (w, d, h)
 
 
-def floor_area(objects: Sequence[SceneObject]) -> tuple[float, float]:
-    """The footprint area of the objects that stand on the floor, and the longest side of one."""
+def floor_objects(objects: Sequence[SceneObject]) -> list[SceneObject]:
+    """The objects that stand on the floor: not hung, not on something, not walked over (a rug)."""
     catalogue = load_catalogue()
-    area, longest = 0.0, 0.0
+    out = []
     for o in objects:
         entry = catalogue.get(o.category) if o.category else None
         if (entry is not None and entry.rests != "ground") or o.size.z <= FLAT:
-            continue  # hung, standing on something, or walked over (a rug)
-        area += o.size.x * o.size.y
-        longest = max(longest, o.size.x, o.size.y)
-    return area, longest
+            continue
+        out.append(o)
+    return out
+
+
+def floor_area(objects: Sequence[SceneObject]) -> tuple[float, float]:
+    """The footprint area of the objects that stand on the floor, and the longest side of one."""
+    floor = floor_objects(objects)
+    return sum(o.size.x * o.size.y for o in floor), max((max(o.size.x, o.size.y) for o in floor), default=0.0)
 
 
 def build_room(request: RoomRequest, objects: Sequence[SceneObject], size: tuple[float, float, float | None] | None = None) -> Room:
@@ -232,7 +238,7 @@ def build_room(request: RoomRequest, objects: Sequence[SceneObject], size: tuple
         width, depth = request.size
     else:
         area, longest = floor_area(objects)
-        need = max(area / COVERAGE, 6.0)
+        need = max(floor_needed(area, len(floor_objects(objects))), 6.0)
         width = max(math.sqrt(need * 1.2), longest + 2 * LANE)
         depth = max(need / width, longest + 2 * LANE, 2.4)
         if request.place in PLACE_SIZES:
