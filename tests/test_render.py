@@ -418,6 +418,31 @@ def test_preview_qualities_grow_from_draft_to_final_and_unknown_ones_are_refused
         render(scene, folder, preview="ultra")
 
 
+def test_each_preview_quality_reaches_the_worker_with_its_denoiser_settings(tmp_path, monkeypatch):
+    import scenewright.render as rendering
+
+    class Stop(Exception):
+        pass
+
+    jobs = []
+
+    def worker(job_path, result_path, timeout):
+        jobs.append(json.loads(Path(job_path).read_text()))
+        raise Stop
+
+    monkeypatch.setattr(importlib.util, "find_spec", lambda name, *a: object())
+    monkeypatch.setattr(rendering, "_run_worker", worker)
+    scene, folder = small_scene(tmp_path)
+    for preview in PREVIEWS:
+        with pytest.raises(Stop):
+            render(scene, folder, preview=preview)
+    assert [(j["denoise_quality"], j["denoise_prefilter"], j["samples"]) for j in jobs] == [
+        (q.denoise, q.prefilter, q.samples) for q in PREVIEWS.values()
+    ]
+    # Only the final quality denoises the albedo and normal guides as well.
+    assert [j["denoise_prefilter"] for j in jobs] == ["FAST", "FAST", "ACCURATE"]
+
+
 def test_generate_refuses_an_unknown_preview_before_it_starts(tmp_path, capsys):
     from scenewright.cli import main
 
