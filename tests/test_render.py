@@ -42,24 +42,32 @@ has_bpy = importlib.util.find_spec("bpy") is not None
 
 def small_scene(tmp_path) -> tuple[Scene, SceneFolder]:
     """Three boxes and a ground node, exported the way the pipeline's scene.glb is laid out."""
+    return box_folder(
+        tmp_path,
+        Scene(
+            text="a table with a chair in front of it and a lamp to the right",
+            objects=[
+                SceneObject(id="table_1", name="table", position=Vec3(x=0, y=0, z=0.4), size=Vec3(x=1.4, y=0.8, z=0.8)),
+                SceneObject(id="chair_1", name="chair", position=Vec3(x=-1.2, y=-1.0, z=0.45), size=Vec3(x=0.5, y=0.5, z=0.9)),
+                SceneObject(
+                    id="lamp_1", name="lamp", position=Vec3(x=1.5, y=0.3, z=0.8), rotation=Vec3(z=30), size=Vec3(x=0.3, y=0.3, z=1.6)
+                ),
+            ],
+        ),
+    )
+
+
+def box_folder(tmp_path, scene: Scene) -> tuple[Scene, SceneFolder]:
+    """A scene folder whose scene.glb holds each object as a coloured box of its size and pose."""
     folder = SceneFolder(tmp_path / "scene")
     folder.create()
-    scene = Scene(
-        text="a table with a chair in front of it and a lamp to the right",
-        objects=[
-            SceneObject(id="table_1", name="table", position=Vec3(x=0, y=0, z=0.4), size=Vec3(x=1.4, y=0.8, z=0.8)),
-            SceneObject(id="chair_1", name="chair", position=Vec3(x=-1.2, y=-1.0, z=0.45), size=Vec3(x=0.5, y=0.5, z=0.9)),
-            SceneObject(
-                id="lamp_1", name="lamp", position=Vec3(x=1.5, y=0.3, z=0.8), rotation=Vec3(z=30), size=Vec3(x=0.3, y=0.3, z=1.6)
-            ),
-        ],
-    )
     glb = trimesh.Scene()
+    colours = [[200, 80, 60, 255], [60, 120, 200, 255], [230, 200, 70, 255]]
     for i, obj in enumerate(scene.objects):
         box = trimesh.creation.box(extents=obj.size.tuple())
         box.apply_translation([0, 0, obj.size.z / 2])
         box.apply_transform(SCENE_TO_GLTF)  # stored like an asset: glTF convention
-        box.visual.face_colors = [[200, 80, 60, 255], [60, 120, 200, 255], [230, 200, 70, 255]][i]
+        box.visual.face_colors = colours[i % len(colours)]
         glb.add_geometry(box, node_name=obj.id, geom_name=obj.id, transform=SCENE_TO_GLTF @ object_matrix(obj) @ GLTF_TO_SCENE)
     ground = trimesh.creation.box(extents=(8, 8, 0.01))
     ground.apply_transform(SCENE_TO_GLTF)
@@ -202,6 +210,29 @@ def test_draft_render_shows_every_object_in_its_index_pass(tmp_path):
     image = np.asarray(Image.open(best_render(folder)).convert("RGB"))
     assert image.shape == (*PREVIEWS["draft"].resolution[::-1], 3)
     assert image.std() > 5  # a picture, not a flat fill
+
+
+@pytest.mark.blender
+@pytest.mark.skipif(not has_bpy, reason="needs the render extra (bpy)")
+def test_the_view_choice_passes_over_a_view_where_a_big_object_hides_a_small_one(tmp_path):
+    # A tall, wide screen stands in front (−Y) of a crate: from the front and from the front-left
+    # the screen hides it; from the right both stand side by side. The worker's index passes
+    # must see that, and the choice must take the view that shows both.
+    scene, folder = box_folder(
+        tmp_path,
+        Scene(
+            text="a crate behind a screen",
+            objects=[
+                SceneObject(id="screen_1", name="screen", position=Vec3(x=0, y=-0.5, z=1.5), size=Vec3(x=4, y=0.4, z=3)),
+                SceneObject(id="crate_1", name="crate", position=Vec3(x=0, y=0.5, z=0.25), size=Vec3(x=0.5, y=0.5, z=0.5)),
+            ],
+        ),
+    )
+    render(scene, folder, draft=True)
+    info = render_info(folder)
+    assert info["best"] == "right", info["visible"]
+    assert info["visible"]["front"]["crate_1"] == 0 and info["visible"]["right"]["crate_1"] > 0
+    assert all(info["visible"][view]["screen_1"] > 0 for view in VIEWS)
 
 
 @pytest.mark.blender
@@ -385,6 +416,31 @@ def test_preview_qualities_grow_from_draft_to_final_and_unknown_ones_are_refused
     scene, folder = small_scene(tmp_path)
     with pytest.raises(InputError, match="draft, default, final"):
         render(scene, folder, preview="ultra")
+
+
+def test_each_preview_quality_reaches_the_worker_with_its_denoiser_settings(tmp_path, monkeypatch):
+    import scenewright.render as rendering
+
+    class Stop(Exception):
+        pass
+
+    jobs = []
+
+    def worker(job_path, result_path, timeout):
+        jobs.append(json.loads(Path(job_path).read_text()))
+        raise Stop
+
+    monkeypatch.setattr(importlib.util, "find_spec", lambda name, *a: object())
+    monkeypatch.setattr(rendering, "_run_worker", worker)
+    scene, folder = small_scene(tmp_path)
+    for preview in PREVIEWS:
+        with pytest.raises(Stop):
+            render(scene, folder, preview=preview)
+    assert [(j["denoise_quality"], j["denoise_prefilter"], j["samples"]) for j in jobs] == [
+        (q.denoise, q.prefilter, q.samples) for q in PREVIEWS.values()
+    ]
+    # Only the final quality denoises the albedo and normal guides as well.
+    assert [j["denoise_prefilter"] for j in jobs] == ["FAST", "FAST", "ACCURATE"]
 
 
 def test_generate_refuses_an_unknown_preview_before_it_starts(tmp_path, capsys):

@@ -8,6 +8,7 @@ import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
 
+import numpy as np
 import pytest
 
 from editing_scenes import RulePlanner, snapshot
@@ -388,3 +389,32 @@ def test_the_view_mesh_carries_face_normals_and_keeps_its_texture_coordinates():
     length = struct.unpack_from("<I", data.getvalue(), 12)[0]
     attributes = json.loads(data.getvalue()[20 : 20 + length])["meshes"][0]["primitives"][0]["attributes"]
     assert {"POSITION", "NORMAL", "TEXCOORD_0"} <= set(attributes)
+
+
+def test_a_room_opens_from_outside_its_front_wall_which_is_drawn_see_through(folder):
+    """The opening camera stands outside the room in front of its front wall and above it,
+    looking in; that wall (between camera and room) is see-through so what stands against it
+    shows, and every other wall is solid."""
+    pytest.importorskip("viser", reason="viser is not installed (the studio extra: make install-studio)")
+    from scenewright.scene import Room
+    from scenewright.studio.server import NEAR_WALL_OPACITY, Studio, near_walls
+
+    scene = folder.load()
+    xy = np.array([o.position.tuple()[:2] for o in scene.objects])
+    (x0, y0), (x1, y1) = xy.min(axis=0) - 1.0, xy.max(axis=0) + 1.0
+    scene.room = Room(floor=[(x0, y0), (x1, y0), (x1, y1), (x0, y1)], height=2.7)
+    folder.save(scene)
+    assert near_walls(scene) == {"room/wall_0"}  # the wall along y = y0, the front
+    studio = Studio(session(folder), port=_free_port())
+    try:
+        front = studio._nodes["__room/wall_0"]
+        assert front.opacity == pytest.approx(NEAR_WALL_OPACITY)
+        walls = [name for name in studio._nodes if name.startswith("__room/wall_")]
+        assert len(walls) == 4
+        assert all(getattr(studio._nodes[name], "opacity", None) is None for name in walls if name != "__room/wall_0")
+        camera = studio.server.initial_camera
+        x, y, z = camera.position
+        assert x0 < x < x1 and y < y0 - 0.1 and z > scene.room.height  # outside, before and above the front wall
+        assert y0 < camera.look_at[1] < y1  # looking into the room
+    finally:
+        studio.stop()

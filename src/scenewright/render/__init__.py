@@ -49,20 +49,22 @@ DEFAULT_VIEWS = tuple(VIEWS)
 @dataclass(frozen=True)
 class Preview:
     """A render quality: picture size, Cycles samples per pixel (before the denoiser), the
-    light-path bounces each ray may take (total, diffuse, glossy), and OpenImageDenoise's
-    quality (FAST, BALANCED or HIGH)."""
+    light-path bounces each ray may take (total, diffuse, glossy), OpenImageDenoise's quality
+    (FAST, BALANCED or HIGH), and how its albedo and normal guides are cleaned first (FAST takes
+    them as they are, ACCURATE denoises each of them too: two more denoiser runs)."""
 
     resolution: tuple[int, int]
     samples: int
     bounces: tuple[int, int, int]
     denoise: str
+    prefilter: str
 
 
 #: The render qualities ``--preview`` names; docs/rendering.md tells how they were chosen.
 PREVIEWS = {
-    "draft": Preview((480, 270), 2, (2, 1, 1), "FAST"),
-    "default": Preview((1280, 720), 2, (3, 1, 1), "BALANCED"),
-    "final": Preview((1920, 1080), 64, (8, 4, 4), "HIGH"),
+    "draft": Preview((480, 270), 2, (2, 1, 1), "FAST", "FAST"),
+    "default": Preview((1280, 720), 2, (3, 1, 1), "BALANCED", "FAST"),
+    "final": Preview((1920, 1080), 64, (8, 4, 4), "HIGH", "ACCURATE"),
 }
 DEFAULT_TIMEOUT = 900.0
 METADATA = "renders.json"
@@ -241,6 +243,7 @@ def render(
             "samples": int(samples),
             "bounces": list(quality.bounces),
             "denoise_quality": quality.denoise,
+            "denoise_prefilter": quality.prefilter,
             "denoise": True,
             "transparent": transparent,
             "out_dir": str(Path(tmp) / "renders"),

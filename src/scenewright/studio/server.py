@@ -44,6 +44,32 @@ COLLIDING = (230, 40, 40)
 VIOLATED = (190, 70, 230)
 
 
+#: How opaque the walls between the opening view and the room are drawn.
+NEAR_WALL_OPACITY = 0.18
+#: The view the editor opens on: from the front, as :meth:`Studio._aim_camera` places it.
+OPENING_VIEW = "front"
+
+
+def near_walls(scene: Scene) -> set[str]:
+    """The room's walls (and the doors and windows in them) between the opening view and the
+    room, by node name: the ones the render's front view leaves out. Drawn solid they hide
+    everything standing against them (a TV stand at the front wall) from a camera that looks
+    over them; drawn see-through the room reads from outside and still shows where they are."""
+    if scene.room is None:
+        return set()
+    from scenewright.render.views import cut_away
+
+    return set(cut_away(scene.room, OPENING_VIEW)) - {"room/ceiling"}
+
+
+def _surface_colour(mesh: trimesh.Trimesh) -> tuple[int, int, int]:
+    """The sRGB colour (0-255) of a room mesh's glTF material's base colour, which is linear."""
+    from scenewright.procedural.room import GLTF_MATERIAL
+
+    linear = mesh.metadata.get(GLTF_MATERIAL, {}).get("pbrMetallicRoughness", {}).get("baseColorFactor", (0.8,) * 3)
+    return tuple(int(round(255 * min(max(c, 0.0), 1.0) ** (1 / 2.2))) for c in linear[:3])
+
+
 def _viser():
     try:
         import viser
@@ -196,12 +222,20 @@ class Studio:
 
     def _draw_ground(self, scene: Scene) -> None:
         """The ground, or the room when the scene has one: its floor, walls, doors and
-        windows, without the ceiling, so the view from above sees in."""
+        windows, without the ceiling, so the view from above sees in. The walls between the
+        opening view and the room are see-through (:func:`near_walls`)."""
         if scene.room is not None:
             from scenewright.procedural.room import room_meshes
 
+            near = near_walls(scene)
             for name, mesh in room_meshes(scene.room, scene.style):
-                if name != "room/ceiling":
+                if name == "room/ceiling":
+                    continue
+                if name in near or name.rsplit("/", 1)[0] in near:
+                    self._nodes[f"__{name}"] = self.server.scene.add_mesh_simple(
+                        f"/{name}", mesh.vertices, mesh.faces, color=_surface_colour(mesh), opacity=NEAR_WALL_OPACITY,
+                        cast_shadow=False)
+                else:
                     self._nodes[f"__{name}"] = self.server.scene.add_mesh_trimesh(f"/{name}", view_mesh(mesh))
             return
         texture = None
