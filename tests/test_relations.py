@@ -64,14 +64,17 @@ def test_near_and_far_measure_the_horizontal_gap():
     assert violation("far", box("s", x=5.0), T) == pytest.approx(4.0)
 
 
-def test_on_needs_contact_within_2mm_and_footprint_overlap():
+def test_on_needs_contact_within_2mm_and_the_centre_over_the_host():
     assert check("on", box("s", z=1.0 + 0.5 + 0.0019), T)
     assert check("on", box("s", z=1.0 + 0.5 - 0.0019), T)
     assert not check("on", box("s", z=1.0 + 0.5 + 0.0021), T)
-    assert check("on", box("s", x=0.99, z=1.5), T)  # overlaps by 1 cm
+    assert check("on", box("s", x=0.49, z=1.5), T)  # overhangs by 49 cm, its centre still over T
+    assert not check("on", box("s", x=0.9, z=1.5), T)  # overlaps by 10 cm: it would tip off
     assert not check("on", box("s", x=1.0, z=1.5), T)  # only touches edge to edge
-    assert not check("on", box("s", x=1.5, z=1.5), T)
-    assert violation("on", box("s", x=1.5, z=1.5), T) == pytest.approx(0.5)
+    assert violation("on", box("s", x=1.5, z=1.5), T) == pytest.approx(1.0)  # centre 1 m past T's edge
+    turned = box("t", size=(2.0, 0.4, 1.0), yaw=90.0)  # its long side along y
+    assert check("on", box("s", y=0.9, z=1.5, size=(0.2, 0.2, 1.0)), turned)
+    assert not check("on", box("s", x=0.3, z=1.5, size=(0.2, 0.2, 1.0)), turned)
 
 
 def test_stacked_on_chain():

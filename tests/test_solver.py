@@ -213,11 +213,14 @@ def test_hard_problems_keep_every_constraint_the_report_does_not_name(n, seed):
     assert independent_collisions(kept, p.meshes, result.constraints) == []
 
 
-def test_an_unplaced_objects_report_names_the_facing_it_leaves_unmet():
-    # Found by hypothesis: chair_4a, placed first, cannot turn to face chair_4b where chair_4b ends
-    # up; that facing was only in the prose of the nearest miss, not among the failed constraints.
+def test_an_unplaced_objects_report_names_every_constraint_it_leaves_unmet():
+    # Found by hypothesis: an object that could not turn to face its partner had that facing only in
+    # the prose of the nearest miss, not among the failed constraints. A planted contradiction (the
+    # last object both left and right of the first) makes sure something is left unmet.
     p = hard_problem(5, 209)
-    result = solve(p.objects, p.constraints, meshes=p.meshes, bounds=p.bounds, seed=209)
+    first, last = p.constraints[0].target, p.objects[-1].id
+    conflict = [Constraint(relation=r, source=last, target=first) for r in ("left of", "right of")]
+    result = solve(p.objects, [*p.constraints, *conflict], meshes=p.meshes, bounds=p.bounds, seed=209)
     named = {f.key() for u in result.report.unplaced for f in u.failed}
     by = {o.id: o for o in result.objects}
     unmet = [con for con in result.constraints if not check(con.relation, by[con.source], by[con.target])]

@@ -16,8 +16,11 @@ Decisions where the table leaves room:
   tilted box's extent in its own yaw frame), not the world boxes, which grow by up to 41 % when
   an object turns. Overlapping footprints have gap 0. ``near`` holds at gap ≤ 2 m, ``far`` at
   gap > 8 m. Collision works on the same turned shapes (:mod:`.collision`).
-- ``on``: the source's bottom is within 2 mm of the target's top (either side) and their
-  true footprints overlap with positive area. A seat's or a bed's "top" for ``on`` is where a
+- ``on``: the source's bottom is within 2 mm of the target's top (either side) and the
+  source's centre stands over the target's true footprint. The paper's table asks only that the
+  footprints overlap; a thing resting on a sliver of its host's corner meets that and would fall
+  off it (an aquarium hanging off the end of a cabinet), so the centre of mass must be over the
+  support, as a physics settle would ask. A seat's or a bed's "top" for ``on`` is where a
   thing put on it rests (:func:`rest_share`: the seat under the backrest, the mattress under the
   headboard), not the top of its box; a person on a sofa sits on the cushions.
 - ``above``: the source is *positioned* at least 2 m above the target, as the table has it:
@@ -215,6 +218,11 @@ def _footprint_overlap(a: Boxes, b: Boxes) -> np.ndarray:
     return _separation(*_rectangle(a), *_rectangle(b)) < -EPS
 
 
+def _centre_off(a: Boxes, b: Boxes) -> np.ndarray:
+    """How far ``a``'s centre lies outside ``b``'s footprint in plan (0 over it)."""
+    return _to_rectangle(a.centre[..., None, :2], *_rectangle(b))[..., 0]
+
+
 def _footprint_miss(a: Boxes, b: Boxes) -> np.ndarray:
     """How far the footprints are from overlapping (the plan gap; 0 when they overlap)."""
     return np.where(_footprint_overlap(a, b), 0.0, np.maximum(_plan_gap(a, b), EPS))
@@ -249,7 +257,7 @@ def _behind_miss(s, t):
 
 def _on_miss(s, t):
     dz = np.maximum(0.0, np.abs(s.lo[..., 2] - t.top) - ON_GAP)
-    return dz + _footprint_miss(s, t)
+    return dz + _centre_off(s, t)
 
 
 def _rise(s, t):
@@ -283,7 +291,7 @@ def holds(relation: str, src: Boxes, tgt: Boxes | RoomTarget) -> np.ndarray:
     if relation == "far":  # strict: the gap must exceed 8 m
         return _plan_gap(src, tgt) > FAR
     if relation == "on":
-        return (np.abs(src.lo[..., 2] - tgt.top) <= ON_GAP + EPS) & _footprint_overlap(src, tgt)
+        return (np.abs(src.lo[..., 2] - tgt.top) <= ON_GAP + EPS) & (_centre_off(src, tgt) <= EPS)
     if relation == "above":
         clear = src.lo[..., 2] - tgt.hi[..., 2] > ON_GAP + EPS
         return (_rise(src, tgt) >= ABOVE - EPS) & clear & _footprint_overlap(src, tgt)
