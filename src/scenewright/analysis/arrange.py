@@ -21,7 +21,7 @@ import random
 from collections import defaultdict
 from dataclasses import dataclass, replace
 
-from scenewright.analysis.composition import edges, formations, groups, outdoor, packing, posture, relational, roles
+from scenewright.analysis.composition import edges, formations, groups, hosts, outdoor, packing, posture, relational, roles
 from scenewright.analysis.composition.lines import unline
 from scenewright.analysis.composition.units import Layout, Unit
 from scenewright.analysis.parser import ParsedRelation, ParsedScene
@@ -46,6 +46,7 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
     if not parsed.objects:
         return Composition([], list(parsed.relations))
     parsed = replace(parsed, objects=posture.pose(parsed))  # people sit and lie as the text says
+    parsed = replace(parsed, objects=hosts.lengthen(parsed))  # a cabinet long enough for two aquariums
     layout = Layout(parsed.objects, share_supports(parsed) + formations.stack_relations(parsed.objects))
     _place_related(layout)
     for rule in GROUP_RULES:

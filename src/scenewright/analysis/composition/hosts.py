@@ -1,0 +1,47 @@
+"""Hosts long enough for what the text puts on them.
+
+A catalogue size is one piece of furniture of its kind: a cabinet 0.9 m wide. "Two big
+aquariums sit on a long low cabinet" needs 2 m of it; left at 0.9 m, one aquarium finds no
+place (the ``on`` relation wants its centre over the cabinet) and the solver's feedback drops
+it. Furniture that comes in any length (tables, counters, cabinets, desks, benches) is
+lengthened along its width to hold side by side what stands on it, as a designer would pick a
+longer sideboard; other hosts keep their size, and what does not fit is the solver's to report.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from dataclasses import replace
+
+from scenewright.analysis.parser import ParsedObject, ParsedScene
+from scenewright.core.catalogue import load_catalogue
+
+#: Procedural shapes that are drawn well at any width.
+STRETCHABLE = frozenset({"table", "counter", "cabinet", "desk", "bench"})
+#: Space left between two things standing side by side on a host, and at its ends (m).
+GAP = 0.05
+#: No host is lengthened past this many metres (a banquet table, a shop counter).
+LONGEST = 4.0
+
+
+def lengthen(parsed: ParsedScene) -> list[ParsedObject]:
+    """The parse's objects, each stretchable host as wide as the widths of what is ``on`` it
+    side by side, in as many rows as its depth takes (never narrower than it was, never past
+    :data:`LONGEST`)."""
+    catalogue = load_catalogue()
+    by_id = {o.id: o for o in parsed.objects}
+    loads: dict[str, list[ParsedObject]] = defaultdict(list)
+    for r in parsed.relations:
+        if r.relation == "on" and r.source in by_id and r.target in by_id:
+            loads[r.target].append(by_id[r.source])
+    out = []
+    for o in parsed.objects:
+        entry = catalogue.get(o.category)
+        on = loads.get(o.id, [])
+        if entry is not None and entry.shape in STRETCHABLE and len(on) > 1:
+            rows = max(1, int(o.size[1] // max(s.size[1] + GAP for s in on)))  # a deep table holds rows
+            need = (sum(s.size[0] + GAP for s in on) + GAP) / rows
+            width = max(o.size[0], min(need, LONGEST))
+            o = replace(o, size=(width, *o.size[1:]))
+        out.append(o)
+    return out
