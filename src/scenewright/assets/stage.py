@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import logging
 from collections.abc import Callable
-from concurrent.futures import ThreadPoolExecutor, as_completed
+from concurrent.futures import ThreadPoolExecutor, as_completed, wait
 
 from scenewright.assets.load import AssetMeshes
 from scenewright.assets.normalise import mesh_library, stored_glb
@@ -32,6 +32,10 @@ from scenewright.scene import Scene, SceneObject
 log = logging.getLogger(__name__)
 
 CACHE_KIND = "meshes"
+#: Seconds a Ctrl-C waits for the request threads: a job its server has just finished is
+#: handed over by its thread a moment later (a queueing backend may already have sent the next
+#: one), and once cancelled the others end within a poll interval.
+HANDOVER_SECONDS = 2.0
 
 
 def needs_asset(obj: SceneObject, folder: SceneFolder, store: AssetMeshes) -> bool:
@@ -165,6 +169,7 @@ def generate_assets(
         # backend can), and meshes that finished meanwhile are kept: they are paid for.
         pool.shutdown(wait=False, cancel_futures=True)
         meshes.cancel()
+        wait(futures, timeout=HANDOVER_SECONDS)
         for future, oid in futures.items():
             if oid not in stored and future.done() and not future.cancelled() and future.exception() is None:
                 glb = future.result().get(oid)
