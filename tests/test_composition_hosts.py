@@ -39,3 +39,11 @@ def test_hosts_that_do_not_stretch_keep_their_size_and_none_passes_the_cap():
     counter = obj("counter_1", "counter", (2.0, 0.65, 0.92))
     crates = [obj(f"crate_{i}", "crate", (0.6, 0.6, 0.4)) for i in range(12)]
     assert lengthen(scene([counter, *crates], [on(c.id, "counter_1") for c in crates]))[0].size[0] == LONGEST
+
+
+def test_a_host_the_catalogue_does_not_know_is_as_wide_as_its_load():
+    sill = ParsedObject(id="sill_1", category="thing", name="sill", description="stone sill", size=(0.6, 0.6, 0.6),
+                        group=0, guessed=True)
+    pigeons = [obj(f"pigeon_{i}", "bird", (0.3, 0.3, 0.3)) for i in range(3)]
+    out = {o.id: o for o in lengthen(scene([sill, *pigeons], [on(p.id, "sill_1") for p in pigeons]))}
+    assert out["sill_1"].size[0] >= 3 * 0.3 + 0.2

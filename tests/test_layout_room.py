@@ -8,7 +8,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from scenewright.layout import audit, solve
+from scenewright.layout import audit, check, solve
 from scenewright.layout.relations import check_room
 from scenewright.layout.room import SLACK, RoomShape, boxes_of, problems, wall_facing
 from scenewright.scene import Constraint, Opening, Room, SceneObject, Vec3
@@ -298,3 +298,18 @@ def test_a_room_sized_for_many_floor_objects_gives_each_more_floor():
     room = RoomShape(build_room(read_room(f"a showroom with {n} sofas"), sofas(n)))
     covered = n * 2.0 * 0.9 / room.area
     assert covered <= COVERAGE * (WALL_SERVED / n) ** 0.5 + 1e-9
+
+
+def test_a_thing_on_the_wall_above_one_against_it_hangs_over_it_at_the_height_above_asks():
+    room = Room.rectangle(4.0, 3.0, 3.3)
+    objects = [box("dresser", 0, 0, 1.2, 0.5, 1.4), box("frame", 1, 1, 0.6, 0.04, 0.5, z=1.5)]
+    constraints = [
+        Constraint(relation="against wall", source="dresser", target="room"),
+        Constraint(relation="on wall", source="frame", target="room"),
+        Constraint(relation="above", source="frame", target="dresser"),
+    ]
+    result = solve(objects, constraints, room=room, seed=3)
+    assert result.report.unplaced == []
+    by_id = {o.id: o for o in result.objects}
+    assert check("above", by_id["frame"], by_id["dresser"])
+    assert check_room("on wall", by_id["frame"], room, "room")

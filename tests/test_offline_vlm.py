@@ -214,3 +214,13 @@ def test_constraints_keep_what_the_composition_added(vlm):
     objects = vlm.describe_objects(text, "realistic", None).value
     constraints = {(c.source, c.relation, c.target) for c in vlm.write_constraints(text, objects, None).value}
     assert ("coffee_table_1", "on", "rug_1") in constraints  # the rug was laid under the coffee table
+
+
+def test_revision_keeps_a_support_while_a_side_of_it_gives_way():
+    # "a kettle on the shelf, beside it": both fail together; the side goes first.
+    constraints = [C("on", "kettle", "shelf"), C("side of", "kettle", "shelf")]
+    report = LayoutReport(unplaced=[UnplacedObject(id="kettle", failed=list(constraints), reason="cannot all hold")])
+    once = relax_constraints(constraints, report)
+    assert [c.key() for c in once] == [("on", "kettle", "shelf"), ("near", "kettle", "shelf")]
+    alone = LayoutReport(unplaced=[UnplacedObject(id="kettle", failed=[once[0]], reason="top too small")])
+    assert [c.key() for c in relax_constraints(once, alone)] == [("near", "kettle", "shelf")]

@@ -32,6 +32,8 @@ from scenewright.scene import Room, SceneObject, Vec3
         ("a 12 by 15 feet office", (12 * 0.3048, 15 * 0.3048), None),
         ("a 2 by 1 m rug in a bedroom", None, None),  # the rug's size, not the room's
         ("a room with a 3 m ceiling and a sofa", None, 3.0),
+        ("a small, low-ceilinged attic with a cot", None, 2.4),
+        ("a high-ceilinged gallery with two statues", None, 3.4),
     ],
 )
 def test_read_room_reads_the_stated_size_and_height(text, size, height):
@@ -146,3 +148,13 @@ def test_an_l_shaped_room_keeps_the_rectangle_s_walls_front_right_back_left():
     assert [wall_facing(room, side) for side in ("front", "right", "back", "left")] == [0, 1, 2, 3]
     assert sorted((o.kind, o.wall) for o in room.openings) == [("door", 1), ("window", 2), ("window", 2)]
     assert RoomShape(room).area >= 4.5 * 5.0 * 0.99  # the living room's usual floor, the notch cut out
+
+
+def test_a_ceiling_may_be_raised_only_where_nobody_gave_a_height():
+    from scenewright.analysis.parser.room import tall_freely
+
+    assert tall_freely("auto", "a workshop with a pegboard above the bench")
+    assert tall_freely("4x5", "a workshop with a pegboard above the bench")
+    assert not tall_freely("4x5x2.6", "a workshop")
+    assert not tall_freely("auto", "a low-ceilinged workshop")
+    assert not tall_freely("none", "a workshop")

@@ -311,6 +311,60 @@ def test_feedback_loop_is_bounded_and_keeps_the_best_round(tmp_path):
     assert not scene.layout.complete and scene.layout.unplaced[0].id == "sofa_1"
 
 
+class FixedVLM:
+    """Writes the constraints it was given and revises nothing."""
+
+    name = "stand-in"
+
+    def __init__(self, constraints):
+        self.constraints = constraints
+
+    def write_constraints(self, text, objects, reference, room=None):
+        return Answer(list(self.constraints))
+
+    def revise_constraints(self, text, objects, constraints, report, reference, room=None):
+        return Answer(list(constraints))
+
+
+def _crates(tmp_path, room, n: int) -> tuple[Scene, SceneFolder]:
+    folder = SceneFolder(tmp_path / "crates")
+    folder.create()
+    crates = [SceneObject(id=f"crate_{i}", name="crate", size=Vec3(x=0.9, y=0.9, z=0.9), position=Vec3(z=0.45))
+              for i in range(n)]
+    return Scene(text="crates", objects=crates, room=room), folder
+
+
+def test_a_room_nobody_sized_grows_until_everything_is_placed_and_reached(tmp_path):
+    from scenewright.layout.room import problems
+    from scenewright.scene import Opening, Room
+
+    room = Room.model_validate({**Room.rectangle(2.4, 2.4).model_dump(),
+                                "openings": [Opening(kind="door", wall=3, offset=1.2, width=0.8, height=2.0)]})
+    scene, folder = _crates(tmp_path, room, 5)
+    arrange(scene, folder, FixedVLM([]), {}, rounds=0, time_limit=2.0, grow=True)
+    grew = [e for e in scene.provenance if e.data.get("step") == "grow room"]
+    assert grew and scene.room.wall_length(0) > 2.4
+    assert scene.layout.complete and problems(scene.room, scene.objects) == []
+
+
+def test_a_ceiling_nobody_gave_a_height_is_raised_for_what_hangs_above_another(tmp_path):
+    from scenewright.layout import check
+    from scenewright.scene import Room
+
+    scene, folder = _crates(tmp_path, Room.rectangle(4.0, 4.0, 2.5), 1)
+    scene.objects.append(SceneObject(id="sign_1", name="sign", size=Vec3(x=0.6, y=0.05, z=0.4), position=Vec3(z=1.5)))
+    said = [Constraint(relation="above", source="sign_1", target="crate_0"),
+            Constraint(relation="on wall", source="sign_1", target="room"),
+            Constraint(relation="against wall", source="crate_0", target="room")]
+
+    def lift(objects, constraints, height):
+        return 3.0
+
+    arrange(scene, folder, FixedVLM(said), {}, rounds=0, time_limit=2.0, lift=lift)
+    assert scene.room.height == 3.0 and any(e.data.get("step") == "raise ceiling" for e in scene.provenance)
+    assert check("above", scene.get("sign_1"), scene.get("crate_0"))
+
+
 def test_arrange_records_the_proposed_poses_once_before_solving(tmp_path):
     scene, folder = _room(tmp_path)
     scene.get("sofa_1").position = Vec3(x=0.3, z=0.4)  # inside the table: the solver has to move it

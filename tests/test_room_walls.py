@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
-from scenewright.analysis.composition.walls import room_constraints
+import pytest
+
+from scenewright.analysis.composition.walls import ceiling_for, room_constraints
 from scenewright.scene import Constraint, SceneObject, Vec3
 
 
@@ -10,15 +12,72 @@ def _o(oid: str, category: str, z: float) -> SceneObject:
     return SceneObject(id=oid, name=category, category=category, size=Vec3(x=0.5, y=0.5, z=z))
 
 
-def test_a_thing_above_another_that_would_pass_the_ceiling_hangs_from_it_near_its_target():
+def test_a_thing_above_another_that_would_pass_the_ceiling_hangs_from_it_over_its_target():
     objects = [_o("lantern_1", "lantern", 0.4), _o("desk_1", "desk", 0.75), _o("mirror_1", "mirror", 0.8),
                _o("sink_1", "sink", 0.9), _o("lamp_1", "pendant_lamp", 0.3), _o("rug_1", "rug", 0.02),
-               _o("drone_1", "drone", 0.2)]
+               _o("drone_1", "drone", 0.2), _o("kite_1", "kite", 0.4), _o("wardrobe_1", "wardrobe", 1.9)]
     said = [Constraint(relation="above", source=s, target=t)
-            for s, t in (("lantern_1", "desk_1"), ("mirror_1", "sink_1"), ("drone_1", "rug_1"))]
+            for s, t in (("lantern_1", "desk_1"), ("mirror_1", "sink_1"), ("drone_1", "rug_1"), ("kite_1", "wardrobe_1"))]
     got = {str(c) for c in room_constraints(objects, said, 2.7)}
-    assert {"lantern_1 on ceiling ceiling", "lantern_1 near desk_1"} <= got
-    assert "lantern_1 above desk_1" not in got
+    # Hung from the ceiling, its centre still 2 m over the desk's (0.375 + 2 + 0.2 <= 2.7): "above" holds there.
+    assert {"lantern_1 on ceiling ceiling", "lantern_1 above desk_1"} <= got
+    # Over a 1.9 m wardrobe no ceiling of 2.7 m leaves room for the paper's "above": near it.
+    assert {"kite_1 on ceiling ceiling", "kite_1 near wardrobe_1"} <= got
     assert {"mirror_1 near sink_1", "mirror_1 on wall room"} <= got  # mounted: the wall gives the height
     assert "drone_1 above rug_1" in got  # 0.02 + 2 + 0.2 m fits under 2.7 m
     assert "lantern_1 above desk_1" in {str(c) for c in room_constraints(objects, said, 4.0)}
+
+
+def test_a_thing_on_the_wall_above_another_keeps_above_and_puts_what_it_hangs_over_at_a_wall():
+    objects = [_o("picture_frame_1", "picture_frame", 0.4), _o("dresser_1", "dresser", 0.8),
+               _o("radio_1", "radio", 0.25), _o("sideboard_1", "table", 0.8), _o("wall_clock_1", "wall_clock", 0.3)]
+    said = [Constraint(relation="above", source="picture_frame_1", target="dresser_1"),
+            Constraint(relation="on", source="radio_1", target="sideboard_1"),
+            Constraint(relation="above", source="wall_clock_1", target="radio_1")]
+    got = {str(c) for c in room_constraints(objects, said, 3.2)}
+    assert {"picture_frame_1 above dresser_1", "picture_frame_1 on wall room", "dresser_1 against wall room"} <= got
+    # Over a thing standing on a table, the table is what goes to the wall.
+    assert {"wall_clock_1 above radio_1", "sideboard_1 against wall room"} <= got
+    assert "radio_1 against wall room" not in got
+    # Under a low ceiling the wall gives the height and the target the place.
+    low = {str(c) for c in room_constraints(objects, said, 2.4)}
+    assert {"picture_frame_1 near dresser_1", "wall_clock_1 near radio_1"} <= low
+
+
+def test_a_ceiling_nobody_sized_is_raised_for_what_hangs_above_another_up_to_a_limit():
+    objects = [_o("picture_frame_1", "picture_frame", 0.4), _o("wardrobe_1", "wardrobe", 2.0),
+               _o("kite_1", "kite", 0.5), _o("tree_1", "tree", 6.0)]
+    said = [Constraint(relation="above", source="picture_frame_1", target="wardrobe_1")]
+    # Its centre 2 m over the wardrobe's (1 m), its top 0.2 m higher, a hair under the ceiling: 3.25 m.
+    assert ceiling_for(objects, said, 2.7) == pytest.approx(3.25)
+    assert ceiling_for(objects, said, 3.5) == 3.5  # never lowered
+    over_tree = [Constraint(relation="above", source="kite_1", target="tree_1")]
+    assert ceiling_for(objects, over_tree, 2.7) == 2.7  # past TALLEST: left to the other rules
+
+
+def test_above_a_thing_on_the_wall_is_near_it_and_raises_no_ceiling():
+    objects = [_o("picture_frame_1", "picture_frame", 0.4), _o("mirror_1", "mirror", 0.8)]
+    said = [Constraint(relation="above", source="picture_frame_1", target="mirror_1")]
+    assert "picture_frame_1 near mirror_1" in {str(c) for c in room_constraints(objects, said, 3.4)}
+    assert ceiling_for(objects, said, 2.7) == 2.7
+
+
+def test_storage_beside_a_thing_goes_to_a_wall_but_between_two_stands_in_their_gap():
+    objects = [_o("bookshelf_1", "bookshelf", 1.9), _o("sofa_1", "sofa", 0.85), _o("dresser_1", "dresser", 0.8),
+               _o("bed_1", "bed", 0.6), _o("desk_1", "desk", 0.75)]
+    said = [Constraint(relation="left of", source="bookshelf_1", target="sofa_1"),
+            Constraint(relation="right of", source="dresser_1", target="bed_1"),
+            Constraint(relation="left of", source="dresser_1", target="desk_1")]
+    got = {str(c) for c in room_constraints(objects, said, 2.7)}
+    assert "bookshelf_1 against wall room" in got
+    assert "dresser_1 against wall room" not in got
+
+
+def test_what_stands_on_a_thing_hung_above_another_counts_toward_the_ceiling():
+    objects = [_o("shelf_1", "shop_shelf", 0.4), _o("sofa_1", "sofa", 0.8), _o("trunk_1", "crate", 0.5)]
+    said = [Constraint(relation="above", source="shelf_1", target="sofa_1"),
+            Constraint(relation="on wall", source="shelf_1", target="room"),
+            Constraint(relation="on", source="trunk_1", target="shelf_1")]
+    # The shelf's top at 0.4 + 2 + 0.2 = 2.6 m, and the trunk on it 0.5 m higher.
+    assert ceiling_for(objects, said, 2.7) == pytest.approx(3.15)
+    assert "shelf_1 near sofa_1" in {str(c) for c in room_constraints(objects, said, 2.9)}

@@ -332,3 +332,36 @@ def test_a_thing_right_of_one_and_left_of_another_stands_in_their_gap(dx, dy, ax
     assert result.report.complete
     by = {o.id: o for o in result.objects}
     assert between(by["bin"], by["a"], by["b"])
+
+
+def _between(source, first, second):
+    from scenewright.evaluation.stated import between
+
+    return between(source, first, second)
+
+
+def test_a_thing_between_two_stands_on_the_line_joining_them():
+    # The kennel stands well back of the shed: right of one and left of the other holds anywhere
+    # in a band, but only on the line between them does a viewer see the crate between the two.
+    objects = [box("shed", -4.0, 0.0, size=(3.0, 2.5, 2.2)), box("kennel", 1.5, 3.0, size=(0.3, 0.3, 0.5)),
+               box("crate", 0.0, -3.0, size=(0.8, 0.6, 0.5)), box("post", -1.25, 1.5, size=(0.3, 0.3, 1.0))]
+    constraints = [Constraint(relation=r, source="crate", target=t)
+                   for r, t in (("right of", "shed"), ("left of", "kennel"), ("near", "shed"), ("near", "kennel"))]
+    result = solve(objects, constraints, seed=3, fixed={"shed", "kennel", "post"})  # a post in the middle of the gap
+    by_id = {o.id: o for o in result.objects}
+    assert result.report.unplaced == []
+    assert _between(by_id["crate"], by_id["shed"], by_id["kennel"])
+
+
+def test_the_second_end_of_a_between_leaves_the_gap_on_the_side_the_relations_ask():
+    # First poses with the tractor right of the barn; three hay bales must stand right of the tractor
+    # and left of the barn, so the tractor has to end up left of the barn, a bale's width apart.
+    objects = [box("barn", 0.0, 0.0, size=(6.0, 5.0, 4.0)), box("tractor", 6.0, 0.0, size=(1.8, 3.0, 2.0))] + [
+        box(f"bale_{i}", 3.0, 4.0 + i, size=(1.2, 1.0, 1.0)) for i in range(3)]
+    constraints = [Constraint(relation=r, source=f"bale_{i}", target=t)
+                   for i in range(3) for r, t in (("right of", "tractor"), ("left of", "barn"))]
+    result = solve(objects, constraints, seed=4)
+    by_id = {o.id: o for o in result.objects}
+    assert result.report.unplaced == []
+    assert all(check(c.relation, by_id[c.source], by_id[c.target]) for c in constraints)
+    assert by_id["tractor"].position.x < by_id["barn"].position.x

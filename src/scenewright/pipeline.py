@@ -92,8 +92,8 @@ def _assets_present(run: Run) -> bool:
 
 
 def _layout(run: Run) -> bool:
-    from scenewright.analysis.composition.walls import room_constraints
-    from scenewright.analysis.parser.room import sized_freely
+    from scenewright.analysis.composition.walls import ceiling_for, room_constraints
+    from scenewright.analysis.parser.room import sized_freely, tall_freely
     from scenewright.layout.stage import arrange
 
     option = next((e.data.get("room") for e in reversed(run.scene.provenance) if e.data.get("step") == "room"), None)
@@ -106,6 +106,7 @@ def _layout(run: Run) -> bool:
         time_limit=run.settings.time_limit,
         furnish=room_constraints,
         grow=isinstance(option, str) and sized_freely(option, run.scene.text),
+        lift=ceiling_for if isinstance(option, str) and tall_freely(option, run.scene.text) else None,
     )
     return True
 

@@ -141,13 +141,21 @@ class OfflineVLM:
         raise BackendError("judging renders needs a remote vision-language model: --vlm openai:MODEL")
 
 
+#: Relations that say what a thing stands on or hangs from: when they fail together with others
+#: ("a radio on the counter" and "beside the counter"), the others give way first, and these
+#: only in a later round if they still fail alone.
+_SUPPORTING = frozenset({"on", "above", "on wall", "on ceiling"})
+
+
 def relax_constraints(constraints: Sequence[Constraint], report: LayoutReport) -> list[Constraint]:
     """The constraints with every failed relation of each unplaced object relaxed one step
-    (a side → near, anything else dropped); where the report names no failed relation (the
-    object collided everywhere), its lowest-priority relation is dropped instead."""
+    (a side → near, anything else dropped), its supports (:data:`_SUPPORTING`) only when nothing
+    else failed with them; where the report names no failed relation (the object collided
+    everywhere), its lowest-priority relation is dropped instead."""
     out = list(constraints)
     for unplaced in report.unplaced:
         failed = {c.key() for c in unplaced.failed}
+        failed = {k for k in failed if k[0] not in _SUPPORTING} or failed
         if not failed:
             own = [c for c in out if c.source == unplaced.id]
             if own:

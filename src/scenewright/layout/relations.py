@@ -421,6 +421,14 @@ def propose(
     return pts[order]
 
 
+def lowest_above(half_z: float, target_lo: float, target_hi: float) -> float:
+    """The lowest centre height at which a source ``half_z`` half high is ``above`` a target
+    standing from ``target_lo`` to ``target_hi``: its centre :data:`ABOVE` over the target's,
+    and its bottom :data:`ABOVE_CLEARANCE` clear of the target's top. A ceiling lower than this
+    plus ``half_z`` leaves no room for the relation."""
+    return max((target_lo + target_hi) / 2.0 + ABOVE, target_hi + half_z + ABOVE_CLEARANCE)
+
+
 def source_heights(relation: str, half_z: float, target: Boxes, initial_z: float) -> np.ndarray | None:
     """Centre heights a vertical relation allows its source, preferred first (None: not vertical).
 
@@ -433,7 +441,7 @@ def source_heights(relation: str, half_z: float, target: Boxes, initial_z: float
     if relation == "on":
         return np.array([float(target.top) + half_z])
     if relation == "above":
-        lowest = max(float(target.lo[2] + target.hi[2]) / 2.0 + ABOVE, top + half_z + ABOVE_CLEARANCE)
+        lowest = lowest_above(half_z, float(target.lo[2]), top)
         return max(initial_z, lowest) + np.array([0.0, 0.3, 0.7, 1.2])
     return None
 
@@ -586,6 +594,17 @@ def room_heights(relation: str, half_z: float, room: RoomTarget) -> np.ndarray |
         low, high = MOUNT_MIN + half_z, room.height - FLUSH - half_z
         return np.array(list(dict.fromkeys(round(float(np.clip(h, low, max(low, high))), 4) for h in MOUNT_HEIGHTS)))
     return None
+
+
+def mounted_above_heights(half_z: float, room: RoomTarget, target: Boxes) -> np.ndarray | None:
+    """Centre heights, lowest first, for a thing on a wall ``above`` a target (a clock over a
+    cabinet against that wall): from the lowest that holds up to its top under the ceiling; None
+    when the ceiling is too low for it."""
+    lowest = lowest_above(half_z, float(target.lo[2]), float(target.hi[2]))
+    highest = room.height - FLUSH - half_z
+    if lowest > highest + EPS:
+        return None
+    return np.unique(np.minimum(lowest + np.array([0.0, 0.15, 0.3, 0.6]), highest))
 
 
 def describe(relation: str, miss: float) -> str:

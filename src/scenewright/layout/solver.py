@@ -52,7 +52,7 @@ import numpy as np
 
 from scenewright.errors import InputError
 from scenewright.geometry import world_box
-from scenewright.core.relations import PRIORITY
+from scenewright.core.relations import BUFFER, PRIORITY
 from scenewright.layout import relations as rel
 from scenewright.layout.collision import CollisionWorld, colliding_pairs, resting_pairs
 from scenewright.layout.constraints import clean_constraints, topological_order
@@ -109,6 +109,11 @@ WALK_REJECTS = 40
 SWEPT = ("left of", "right of", "in front of", "behind", "side of")
 #: The one-sided relations that put an object between two targets when it has both of a pair.
 OPPOSITE = ("right of", "left of", "in front of", "behind")
+#: m, room left in a gap for a thing still to be placed between two others beyond its own width
+#: and the buffers, so it is not held to one exact spot.
+GAP_SLACK = 0.5
+#: Shares of the way from one target to the other tried for a thing between them.
+GAP_STEPS = np.linspace(0.05, 0.95, 37)
 #: Yaws tried for an object whose orientation nothing fixes, besides the model's.
 AXIS_YAWS = (0.0, 90.0, 180.0, 270.0)
 
@@ -124,6 +129,26 @@ def _area(bounds, room: RoomShape | None) -> tuple[np.ndarray, np.ndarray] | Non
     if not boxes:
         return None
     return np.max([b[0] for b in boxes], axis=0), np.min([b[1] for b in boxes], axis=0)
+
+
+def _opposite_pair(own: Sequence[tuple[Constraint, int]]) -> tuple[int, int] | None:
+    """The two targets an object must stand on opposite sides of (right of one and left of the
+    other; in front of one and behind the other), if any: it stands between them."""
+    sides: dict[str, int] = {}
+    for c, t in own:
+        if c.relation in OPPOSITE:
+            sides.setdefault(c.relation, t)
+    for a, b in (("right of", "left of"), ("in front of", "behind")):
+        if a in sides and b in sides and sides[a] != sides[b]:
+            return sides[a], sides[b]
+    return None
+
+
+def _off_segment(points: np.ndarray, ends: np.ndarray) -> np.ndarray:
+    """Distance from each of ``points`` (k, 2) to the segment between ``ends`` (2, 2)."""
+    d = ends[1] - ends[0]
+    t = np.clip((points - ends[0]) @ d / max(float(d @ d), 1e-12), 0.0, 1.0)
+    return np.linalg.norm(points - (ends[0] + t[:, None] * d), axis=1)
 
 
 def _yaws_towards(src: np.ndarray, dst: np.ndarray) -> np.ndarray:
@@ -387,15 +412,16 @@ class _Search:
         resting = primary is not None and relation == "on"
         if ceiling is not None and not resting and primary is None:
             relation, target = "on ceiling", ceiling[1]
+        ends = self.gap_between(own)
         if anchor is None:
             anchor = self.anchor[item.index]
-            gap = self.gap_between(own)
             if ceiling is not None and relation == "near":
                 # A thing hung near another hangs over it first (a lamp over its table), as a
                 # designer would hang it: its candidates spread from the target's centre.
                 anchor = np.append(target.centre[:2], anchor[2])
-            elif gap is not None:
-                anchor = np.append(gap, anchor[2])
+            elif ends is not None:
+                anchor = np.append(ends.mean(axis=0), anchor[2])
+            anchor = self.leave_gap(item, anchor)
         facing = next((t for c, t in ranked if c.relation == "face to"), None)
         waiting = next((t for c, t in item.own if c.relation == "face to" and not self.posed[t]), None)
         if facing is not None or waiting is not None:
@@ -430,6 +456,8 @@ class _Search:
                 ]
             if density != "probe" and bounded and relation not in ("on", "above") and self.crowded():
                 parts.append(self.flush(item, half, anchor))
+            if ends is not None and density != "probe":
+                parts.append(ends[0] + GAP_STEPS[:, None] * (ends[1] - ends[0]))  # on the line between the two
             xy = np.concatenate(parts)
             if area is not None and np.all(area[1] - area[0] >= 2 * half[:2]):
                 # Pull outside points onto the bounds' edge: tight rooms need their walls and corners.
@@ -439,12 +467,20 @@ class _Search:
             xy = xy[np.sort(first)]
             xy_parts.append(xy)
             yaw_parts.append(np.full(len(xy), yaw))
-            cost_parts.append(np.linalg.norm(xy - anchor[:2], axis=1) + (TURN_COST if k else 0.0))
+            cost = np.linalg.norm(xy - anchor[:2], axis=1) + (TURN_COST if k else 0.0)
+            if ends is not None:  # in the gap, not beside it: off the line between the two costs double
+                cost = cost + 2.0 * _off_segment(xy, ends)
+            cost_parts.append(cost)
         xy, yaws, cost = np.concatenate(xy_parts), np.concatenate(yaw_parts), np.concatenate(cost_parts)
 
         heights = rel.source_heights(relation, item.half_z, target, anchor[2]) if target is not None else None
         if ceiling is not None and not resting:
             heights = rel.room_heights("on ceiling", item.half_z, ceiling[1])
+        over = next((t for c, t in own if c.relation == "above"), None)
+        if wall is not None and not resting and wall[0].relation == "on wall" and over is not None:
+            # On a wall above a thing standing at it (a clock over a cabinet): the height "above" asks.
+            mounted = rel.mounted_above_heights(item.half_z, wall[1], self.box(over))
+            heights = heights if mounted is None else mounted
         if heights is None:
             heights = np.array([item.half_z])  # the ground rule
         cost = cost[None] + np.abs(heights - heights[0])[:, None]
@@ -476,18 +512,39 @@ class _Search:
         return _Poses(centres, yaws, boxes, sat, ok, self.inside(boxes if swept is None else swept), turns)
 
     def gap_between(self, own: list[tuple[Constraint, int]]) -> np.ndarray | None:
-        """The midpoint (x, y) of two targets the object must stand on opposite sides of (right
+        """The centres (2, 2) of two targets the object must stand on opposite sides of (right
         of one, left of the other; in front of one, behind the other), if any: a thing between
-        two others, whose candidates then spread from the middle of the gap rather than from
-        anywhere the two half-planes meet."""
-        sides = {}
-        for c, t in own:
-            if c.relation in OPPOSITE:
-                sides.setdefault(c.relation, t)
-        for a, b in (("right of", "left of"), ("in front of", "behind")):
-            if a in sides and b in sides and sides[a] != sides[b]:
-                return (self.box(sides[a]).centre[:2] + self.box(sides[b]).centre[:2]) / 2.0
-        return None
+        two others, whose candidates then spread from the middle of the gap and keep to the line
+        joining the two (where a viewer sees it between them) rather than anywhere the two
+        half-planes meet."""
+        pair = _opposite_pair(own)
+        return None if pair is None else np.stack([self.box(pair[0]).centre[:2], self.box(pair[1]).centre[:2]])
+
+    def leave_gap(self, item: _Item, anchor: np.ndarray) -> np.ndarray:
+        """``anchor`` moved, where it must be, to the side of the gap that an object still to be
+        placed between this one and a placed one needs ("a boulder right of the truck and left
+        of the hut": the truck stands left of the hut, a boulder's width and both buffers apart),
+        so the search starts where that gap can open rather than on the wrong side of the other."""
+        anchor = np.array(anchor, dtype=float)
+        half = float(np.max(item.foot))
+        for s in self.dependents[item.index]:
+            if self.posed[s]:
+                continue
+            sides = {}
+            for c, t in self.items[s].own:
+                if c.relation in OPPOSITE:
+                    sides.setdefault(c.relation, t)
+            other = self.items[s]
+            need = 2 * BUFFER + GAP_SLACK + 2 * rotated_half(other.half, other.tilt, other.obj.yaw)  # as the model turned it
+            for axis, low, high in ((0, "right of", "left of"), (1, "behind", "in front of")):
+                a, b = sides.get(low), sides.get(high)
+                if a is None or b is None or a == b:
+                    continue
+                if item.index == a and self.posed[b]:
+                    anchor[axis] = min(anchor[axis], self.lo[b, axis] - need[axis] - half)
+                elif item.index == b and self.posed[a]:
+                    anchor[axis] = max(anchor[axis], self.hi[a, axis] + need[axis] + half)
+        return anchor
 
     def crowded(self) -> bool:
         """Whether the floor inside the bounds is so full that free positions are best found
@@ -958,7 +1015,9 @@ def _dfs(
     others, larger footprints go first.
     """
     free = [o.id for i, o in enumerate(search.objects) if i not in search.fixed]
-    rank = {o.id: (i not in first, -o.size.x * o.size.y) for i, o in enumerate(search.objects)}
+    # Among ready objects, a thing between two others comes first, before others take its gap.
+    rank = {o.id: (i not in first, _opposite_pair(search.items[i].own) is None, -o.size.x * o.size.y)
+            for i, o in enumerate(search.objects)}
     own = [c for item in search.items.values() for c, _ in item.own]
     order = [search.index[x] for x in topological_order(free, own, key=rank.get)]
     search.follow(order)

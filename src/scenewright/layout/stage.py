@@ -25,6 +25,8 @@ if TYPE_CHECKING:  # the meshes are an asset's AssetMesh: the collision world ne
 
 #: Adds the placement priors of a room to the constraints (objects, constraints, ceiling height) -> constraints.
 Furnish = Callable[[Sequence[SceneObject], Sequence[Constraint], float], list[Constraint]]
+#: The ceiling height a room needs for its constraints (objects, constraints, ceiling height) -> height.
+Lift = Callable[[Sequence[SceneObject], Sequence[Constraint], float], float]
 
 log = logging.getLogger(__name__)
 
@@ -97,6 +99,7 @@ def arrange(
     time_limit: float = 10.0,
     furnish: Furnish | None = None,
     grow: bool = False,
+    lift: Lift | None = None,
 ) -> Scene:
     """Solve the layout of ``scene``'s objects, revising constraints up to ``rounds`` times
     (the caller saves the document).
@@ -104,7 +107,8 @@ def arrange(
     In a room, ``furnish`` adds its placement priors to freshly written constraints; without
     one, relations to a room are dropped (and recorded), since there are no walls to meet.
     With ``grow`` (a room nobody gave a size), a layout that leaves objects unplaced or out
-    of reach, or a door blocked, is solved again in a larger room (docs/rooms.md)."""
+    of reach, or a door blocked, is solved again in a larger room (docs/rooms.md). ``lift`` (for a
+    room nobody gave a height) raises the ceiling to what the fresh constraints need first."""
     reference = folder.reference()
     constraints = list(scene.constraints)
     if not constraints:
@@ -112,6 +116,13 @@ def arrange(
         scene.provenance += answer.repairs  # what the model's answer needed repaired
         constraints = answer.value
         scene.record(STAGE, f"wrote {len(constraints)} constraints", backend=vlm.name)
+        if scene.room is not None and lift is not None:
+            height = lift(scene.objects, constraints, scene.room.height)
+            if height > scene.room.height:
+                (x0, y0), (x1, y1) = np.min(scene.room.floor, axis=0), np.max(scene.room.floor, axis=0)
+                scene.room = resized(scene.room, float(x1 - x0), float(y1 - y0), height)
+                scene.record(STAGE, f"raised the ceiling to {height:g} m for what hangs above another",
+                             step="raise ceiling", height=height)
         if scene.room is not None and furnish is not None:
             constraints = furnish(scene.objects, constraints, scene.room.height)
     if scene.room is None and any(c.relation in ROOM_RELATIONS for c in constraints):

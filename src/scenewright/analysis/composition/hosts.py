@@ -5,7 +5,9 @@ aquariums sit on a long low cabinet" needs 2 m of it; left at 0.9 m, one aquariu
 place (the ``on`` relation wants its centre over the cabinet) and the solver's feedback drops
 it. Furniture that comes in any length (tables, counters, cabinets, desks, benches) is
 lengthened along its width to hold side by side what stands on it, as a designer would pick a
-longer sideboard; other hosts keep their size, and what does not fit is the solver's to report.
+longer sideboard. A thing the catalogue does not know ("a concrete ledge") has a guessed size,
+not one piece of furniture's: it is lengthened the same way, as wide as what the text puts on
+it. Other hosts keep their size, and what does not fit is the solver's to report.
 """
 
 from __future__ import annotations
@@ -38,7 +40,7 @@ def lengthen(parsed: ParsedScene) -> list[ParsedObject]:
     for o in parsed.objects:
         entry = catalogue.get(o.category)
         on = loads.get(o.id, [])
-        if entry is not None and entry.shape in STRETCHABLE and len(on) > 1:
+        if (o.guessed or (entry is not None and entry.shape in STRETCHABLE)) and len(on) > 1:
             rows = max(1, int(o.size[1] // max(s.size[1] + GAP for s in on)))  # a deep table holds rows
             need = (sum(s.size[0] + GAP for s in on) + GAP) / rows
             width = max(o.size[0], min(need, LONGEST))

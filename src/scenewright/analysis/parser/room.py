@@ -113,9 +113,9 @@ def read_room(text: str) -> RoomRequest:
                   r"(\d+(?:\.\d+)?)\s*(m\b|metres?|meters?|ft\b|feet)", low)
     if height is None and m:
         height = _metres(m.group(1) or m.group(3), m.group(2) or m.group(4))
-    elif height is None and re.search(r"\b(high|tall|lofty|vaulted|double-height)\s+ceilings?", low):
+    elif height is None and re.search(r"\b(high|tall|lofty|vaulted|double-height)[\s-]+ceil(?:ings?|inged)\b", low):
         height = 3.4
-    elif height is None and re.search(r"\blow\s+ceilings?", low):
+    elif height is None and re.search(r"\blow[\s-]+ceil(?:ings?|inged)\b", low):
         height = 2.4
     scale = 1.0
     if place_match:
@@ -409,6 +409,15 @@ def room_for(
     if proposed:
         return proposal
     return build_room(request, objects) if parse_scene(text).indoor else None
+
+
+def tall_freely(option: str, text: str) -> bool:
+    """Whether a room's ceiling may be raised for what hangs in it: ``--room`` gave no height
+    (``auto``, or a floor without one) and the ``text`` states none."""
+    if option == "none":
+        return False
+    parsed = parse_room_option(option)
+    return (parsed == "auto" or (isinstance(parsed, tuple) and parsed[2] is None)) and read_room(text).height is None
 
 
 def sized_freely(option: str, text: str) -> bool:
