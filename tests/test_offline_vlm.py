@@ -224,3 +224,12 @@ def test_revision_keeps_a_support_while_a_side_of_it_gives_way():
     assert [c.key() for c in once] == [("on", "kettle", "shelf"), ("near", "kettle", "shelf")]
     alone = LayoutReport(unplaced=[UnplacedObject(id="kettle", failed=[once[0]], reason="top too small")])
     assert [c.key() for c in relax_constraints(once, alone)] == [("near", "kettle", "shelf")]
+
+
+def test_a_support_only_inferred_gives_way_to_a_side_the_text_states():
+    vlm = OfflineVLM()
+    text = "A toaster stands beside a small round table in the kitchen."
+    assert any(r.relation == "on" and r.inferred for r in vlm.composition(text).relations)  # the reader's guess
+    objects = vlm.describe_objects(text, "realistic", None).value
+    written = {str(c) for c in vlm.write_constraints(text, objects, None).value}
+    assert written == {"toaster_1 side of round_table_1"}

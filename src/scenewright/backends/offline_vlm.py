@@ -107,7 +107,13 @@ class OfflineVLM:
         )
         ids = _match_ids(parsed, objects)
         out: list[Constraint] = []
-        for r in self.composition(text).relations:
+        relations = self.composition(text).relations
+        # A support the reader only inferred gives way to a side the text states to the same
+        # thing ("a coffee machine stands beside a small table": not on it).
+        beside = {(r.source, r.target) for r in relations if r.relation in _SIDES and not r.inferred}
+        for r in relations:
+            if r.relation == "on" and r.inferred and (r.source, r.target) in beside:
+                continue
             if r.source in ids and r.target in ids:
                 out.append(Constraint(relation=r.relation, source=ids[r.source], target=ids[r.target]))
         for r in wall_phrases(parsed) if room is not None else ():  # "against the back wall"
@@ -141,6 +147,8 @@ class OfflineVLM:
         raise BackendError("judging renders needs a remote vision-language model: --vlm openai:MODEL")
 
 
+#: Relations that set a thing beside another.
+_SIDES = frozenset({"left of", "right of", "in front of", "behind", "side of"})
 #: Relations that say what a thing stands on or hangs from: when they fail together with others
 #: ("a radio on the counter" and "beside the counter"), the others give way first, and these
 #: only in a later round if they still fail alone.
