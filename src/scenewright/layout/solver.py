@@ -131,16 +131,17 @@ def _area(bounds, room: RoomShape | None) -> tuple[np.ndarray, np.ndarray] | Non
     return np.max([b[0] for b in boxes], axis=0), np.min([b[1] for b in boxes], axis=0)
 
 
-def _opposite_pair(own: Sequence[tuple[Constraint, int]]) -> tuple[int, int] | None:
+def _opposite_pair(own: Sequence[tuple[Constraint, int]]) -> tuple[int, int, int] | None:
     """The two targets an object must stand on opposite sides of (right of one and left of the
-    other; in front of one and behind the other), if any: it stands between them."""
+    other; behind one and in front of the other), if any: it stands between them. Returned as
+    (the one at the low end, the one at the high end, the world axis between them)."""
     sides: dict[str, int] = {}
     for c, t in own:
         if c.relation in OPPOSITE:
             sides.setdefault(c.relation, t)
-    for a, b in (("right of", "left of"), ("in front of", "behind")):
-        if a in sides and b in sides and sides[a] != sides[b]:
-            return sides[a], sides[b]
+    for axis, (low, high) in enumerate((("right of", "left of"), ("behind", "in front of"))):
+        if low in sides and high in sides and sides[low] != sides[high]:
+            return sides[low], sides[high], axis
     return None
 
 
@@ -528,22 +529,17 @@ class _Search:
         anchor = np.array(anchor, dtype=float)
         half = float(np.max(item.foot))
         for s in self.dependents[item.index]:
-            if self.posed[s]:
+            pair = None if self.posed[s] else _opposite_pair(self.items[s].own)
+            if pair is None:
                 continue
-            sides = {}
-            for c, t in self.items[s].own:
-                if c.relation in OPPOSITE:
-                    sides.setdefault(c.relation, t)
+            low, high, axis = pair
             other = self.items[s]
-            need = 2 * BUFFER + GAP_SLACK + 2 * rotated_half(other.half, other.tilt, other.obj.yaw)  # as the model turned it
-            for axis, low, high in ((0, "right of", "left of"), (1, "behind", "in front of")):
-                a, b = sides.get(low), sides.get(high)
-                if a is None or b is None or a == b:
-                    continue
-                if item.index == a and self.posed[b]:
-                    anchor[axis] = min(anchor[axis], self.lo[b, axis] - need[axis] - half)
-                elif item.index == b and self.posed[a]:
-                    anchor[axis] = max(anchor[axis], self.hi[a, axis] + need[axis] + half)
+            width = 2 * rotated_half(other.half, other.tilt, other.obj.yaw)[axis]  # as the model turned it
+            need = 2 * BUFFER + GAP_SLACK + width
+            if item.index == low and self.posed[high]:
+                anchor[axis] = min(anchor[axis], self.lo[high, axis] - need - half)
+            elif item.index == high and self.posed[low]:
+                anchor[axis] = max(anchor[axis], self.hi[low, axis] + need + half)
         return anchor
 
     def crowded(self) -> bool:
@@ -1015,9 +1011,7 @@ def _dfs(
     others, larger footprints go first.
     """
     free = [o.id for i, o in enumerate(search.objects) if i not in search.fixed]
-    # Among ready objects, a thing between two others comes first, before others take its gap.
-    rank = {o.id: (i not in first, _opposite_pair(search.items[i].own) is None, -o.size.x * o.size.y)
-            for i, o in enumerate(search.objects)}
+    rank = {o.id: (i not in first, -o.size.x * o.size.y) for i, o in enumerate(search.objects)}
     own = [c for item in search.items.values() for c, _ in item.own]
     order = [search.index[x] for x in topological_order(free, own, key=rank.get)]
     search.follow(order)
