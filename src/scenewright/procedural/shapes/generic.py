@@ -1,4 +1,5 @@
-"""The fallback shape: soft things, instruments, pumpkins, balls and ramps (things with no family),
+"""The fallback shape: soft things, instruments, pumpkins, balls, ramps, goals and
+chimneys (things with no family),
 the family a name calls (animals, craft, figures...), and a plain plinthed block for a name
 with no hint at all."""
 
@@ -70,8 +71,31 @@ def _ball(m: Model) -> None:
     m.torus("accent", (0, 0, r), 1.0 * r, 0.06 * r, axis="x", fraction=0.8)
 
 
+def _goal(m: Model) -> None:
+    """A football goal: two posts and a crossbar at the front, the net sloping back to the
+    ground, stanchions holding it out."""
+    m.main = "plastic"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    post = 0.05 * H + 0.01
+    for x in (-W + post, W - post):
+        m.post("plastic", x, -D + post, 0, H - post, post, fraction=0.5)
+        m.beam("metal", (x, -D + post, H - post), (x, D - post, 0.02 * H), 0.5 * post)
+    m.cylinder("plastic", (-W, -D + post, H - post), (W, -D + post, H - post), post, fraction=0.5)
+    m.extrude("canvas_alt", [(-D + 1.6 * post, H - 1.6 * post), (-D + 1.5 * post, 0.0), (D - post, 0.0)], "x", -W + 2 * post, W - 2 * post)
+    m.cylinder("metal", (-W + post, D - post, 0.5 * post), (W - post, D - post, 0.5 * post), 0.5 * post, fraction=0.4)
+
+
+def _chimney(m: Model) -> None:
+    """A free-standing chimney stack: a brick column with a corbelled cap and a pot on top."""
+    m.main = "brick"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.box("brick", (-0.8 * W, -0.8 * D, 0), (0.8 * W, 0.8 * D, 0.9 * H))
+    m.box("stone", (-W, -D, 0.9 * H), (W, D, 0.94 * H))
+    m.cylinder("ceramic", (0, 0, 0.94 * H), (0, 0, H), 0.35 * min(W, D), 0.3 * min(W, D), fraction=0.5)
+
+
 def generic(m: Model) -> None:
-    """Soft things, instruments, pumpkins, balls and ramps by name; else the family the name calls (a horse the
+    """Soft things, instruments, pumpkins, balls, ramps, goals and chimneys by name; else the family the name calls (a horse the
     catalogue files here is an animal); only a name with no hint at all gets the block."""
     variants = (
         (("guitar", "violin", "cello"), _guitar),
@@ -81,6 +105,8 @@ def generic(m: Model) -> None:
         (("pumpkin", "gourd", "squash", "melon", "watermelon"), _pumpkin),
         (("ball", "bowling ball", "football", "beach ball", "basketball", "soccer ball"), _ball),
         (("ramp", "skate ramp"), structures._ramp),
+        (("goal", "goalpost", "goal post"), _goal),
+        (("chimney", "smokestack", "chimney stack"), _chimney),
     )
     for words, build in variants:
         if m.named(*words):

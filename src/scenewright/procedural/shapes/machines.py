@@ -203,6 +203,44 @@ def _periscope(m: Model) -> None:
     m.box("glass", (-0.5 * r, 0.1 * D - r * 1.05, 0.95 * H), (0.5 * r, 0.1 * D - r * 0.95, 0.99 * H), rounded=0.0)
 
 
+def _claw_machine(m: Model) -> None:
+    """A claw crane game: a cabinet with a control deck and prize chute, a glass case of
+    prizes on top with the claw hanging from its gantry, a lit header."""
+    m.main = "paint"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    base, case = 0.4 * H, 0.88 * H
+    m.box("paint", (-W, -D, 0), (W, D, base))
+    m.box("dark_plastic", (-0.5 * W, -1.02 * D, 0.1 * H), (-0.1 * W, -D, 0.25 * H), rounded=0.0)
+    m.box("dark_plastic", (-W, -1.2 * D, base - 0.06 * H), (W, -D, base), rounded=0.0)
+    m.post("dark_metal", 0.4 * W, -1.1 * D, base, base + 0.08 * H, 0.03 * W, fraction=0.3)
+    m.ball("accent", (0.4 * W, -1.1 * D, base + 0.09 * H), (0.06 * W,) * 3, fraction=0.4)
+    for k, x in enumerate(np.linspace(-0.7 * W, 0.7 * W, 5)):
+        for j, y in enumerate((-0.5 * D, 0.3 * D)):
+            m.ball(("flower", "flower_alt", "leaf", "book_b")[(k + j) % 4], (x, y, base + 0.07 * H), (0.15 * W, 0.2 * D, 0.07 * H),
+                   fraction=0.4)
+    m.box("glass", (-0.97 * W, -0.97 * D, base), (0.97 * W, 0.97 * D, case), rounded=0.0)
+    m.box("light", (-W, -D, case), (W, D, H))
+    m.post("metal", 0.1 * W, 0, 0.62 * H, 0.99 * case, 0.01 * W + 0.003, fraction=0.3)
+    for k in range(3):
+        a = 2 * np.pi * k / 3
+        m.beam("metal", (0.1 * W, 0, 0.62 * H), (0.1 * W + 0.12 * W * np.cos(a), 0.12 * D * np.sin(a), 0.55 * H), 0.02 * W)
+
+
+def _sewing_machine(m: Model) -> None:
+    """A sewing machine: a bed plate, a pillar and an arm reaching over to the needle head,
+    a hand wheel at the back end."""
+    m.main = "paint"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.box("paint", (-W, -D, 0), (W, D, 0.2 * H))
+    m.box("paint", (0.45 * W, -0.5 * D, 0.2 * H), (0.85 * W, 0.5 * D, 0.75 * H))
+    m.box("paint", (-0.8 * W, -0.45 * D, 0.75 * H), (0.9 * W, 0.45 * D, H))
+    m.box("paint", (-0.8 * W, -0.4 * D, 0.45 * H), (-0.55 * W, 0.4 * D, 0.75 * H))
+    m.post("chrome", -0.68 * W, -0.2 * D, 0.22 * H, 0.45 * H, 0.015 * W + 0.002, fraction=0.3)
+    m.box("chrome", (-0.5 * W, -0.6 * D, 0.2 * H), (0.1 * W, 0.2 * D, 0.21 * H), rounded=0.0)
+    m.cylinder("dark_metal", (0.9 * W, 0, 0.75 * H), (W, 0, 0.75 * H), 0.2 * H, fraction=0.6)
+    m.box("gold", (-0.3 * W, -0.46 * D, 0.82 * H), (0.4 * W, -0.45 * D, 0.92 * H), rounded=0.0)
+
+
 def _ball_return(m: Model) -> None:
     """A bowling ball return: a rounded hood over the lift, a rail track of balls in front."""
     m.main = "plastic"
@@ -220,7 +258,7 @@ def _ball_return(m: Model) -> None:
 def machine(m: Model) -> None:
     """A boxy machine; its name picks the build: arcade cabinet, console or terminal,
     generator or engine, compressor, printer, washing machine, server rack, furnace,
-    periscope, bowling ball return."""
+    periscope, bowling ball return, claw crane game, sewing machine."""
     variants = (
         (("arcade", "pinball", "slot machine", "jukebox", "game cabinet"), _arcade),
         (("console", "terminal", "control panel", "control desk", "dashboard", "workstation", "switchboard", "cockpit"),
@@ -232,6 +270,8 @@ def machine(m: Model) -> None:
         (("server", "mainframe", "rack", "supercomputer"), _server),
         (("furnace", "kiln", "forge", "smelter", "foundry"), _furnace),
         (("periscope",), _periscope),
+        (("claw machine", "claw crane", "crane game", "prize machine"), _claw_machine),
+        (("sewing machine",), _sewing_machine),
         (("ball return",), _ball_return),
     )
     for words, build in variants:
@@ -752,6 +792,42 @@ def _till(m: Model) -> None:
     m.box("screen", (0.2 * W, 0.65 * D, 0.85 * H), (0.8 * W, 0.85 * D, H), rounded=0.0)
 
 
+def _compass(m: Model) -> None:
+    """A ship's compass: a round brass case with a glass face over the card and its needle."""
+    m.main = "brass"
+    r = 0.5 * min(m.sx, m.sy)
+    H = m.sz
+    m.lathe("brass", [(0.0, 0.0), (r, 0.0), (r, 0.7 * H), (0.85 * r, 0.8 * H), (0.0, 0.8 * H)])
+    m.lathe("paper", [(0.84 * r, 0.8 * H), (0.84 * r, 0.82 * H), (0.0, 0.82 * H)])
+    m.beam("accent", (0, -0.7 * r, 0.84 * H), (0, 0.0, 0.84 * H), 0.1 * r, 0.02 * H)
+    m.beam("dark_metal", (0, 0.0, 0.845 * H), (0, 0.7 * r, 0.845 * H), 0.1 * r, 0.02 * H)
+    m.lathe("glass", [(0.86 * r, 0.82 * H), (0.86 * r, H), (0.0, H)])
+
+
+def _shears(m: Model) -> None:
+    """Shears or scissors lying open: two blades crossing at a pivot, a ring handle on each."""
+    m.main = "chrome"
+    f = _Along(m)
+    L, A, B = f.L, f.A, f.B
+    pivot = 0.55 * L
+    for s, b in ((-1, -0.3 * B), (1, 0.3 * B)):
+        m.beam("chrome", f.p(0.0, s * 0.5 * A, b), f.p(pivot, -s * 0.05 * A, b), 0.3 * A, 0.35 * B)
+        m.beam("chrome", f.p(pivot, -s * 0.05 * A, b), f.p(0.78 * L, -s * 0.45 * A, b), 0.15 * A, 0.3 * B)
+        m.torus("dark_plastic", f.p(0.88 * L, -s * 0.5 * A, b), 0.1 * L, 0.12 * min(A, B) + 0.002, axis=f.ring, fraction=0.5)
+    m.cylinder("brass", f.p(pivot, 0, -0.8 * B), f.p(pivot, 0, 0.8 * B), 0.1 * A, fraction=0.4)
+
+
+def _tape_measure(m: Model) -> None:
+    """A tape measure: a round case with a belt clip, the tape's end and hook drawn out."""
+    m.main = "yellow_paint"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    r = min(W, 0.5 * H)
+    m.cylinder("yellow_paint", (0, -0.8 * D, r), (0, 0.8 * D, r), r, fraction=0.7)
+    m.cylinder("dark_plastic", (0, -0.81 * D, r), (0, -0.8 * D, r), 0.5 * r, fraction=0.6)
+    m.box("metal", (-0.6 * r, -0.5 * D, 0.0), (0.95 * W, 0.5 * D, 0.05 * H), rounded=0.0)
+    m.box("dark_metal", (0.95 * W, -0.55 * D, 0.0), (W, 0.55 * D, 0.15 * H), rounded=0.0)
+
+
 def _power_tool(m: Model) -> None:
     """A power tool held like a pistol (drill, impact wrench, wheel gun): a body with a nose
     and socket, a grip, a battery foot."""
@@ -769,7 +845,8 @@ def tool(m: Model) -> None:
     """A small object by its name: an anvil on its stump, a hammer, axe, pickaxe or mallet, a
     wrench, a long-handled tool (shovel, fork, rake, broom, golf club), a sword, a lens, papers
     or a scroll, a telescope, a traffic cone, a trophy, a radio, a weathervane, a skateboard,
-    a tyre, a microscope, a skull, a till, a power tool, a gadget; else a toolbox. The variant named first
+    a tyre, a microscope, a skull, a till, a power tool, a compass, shears, a tape measure, a
+    gadget; else a toolbox. The variant named first
     wins ("radio scanner" is a radio)."""
     variants = (
         (("anvil",), _anvil),
@@ -790,6 +867,9 @@ def tool(m: Model) -> None:
         (("tyre", "tire", "spare tyre", "spare tire"), _tyre),
         (("microscope",), _microscope),
         (("wheel gun", "impact wrench", "drill", "nail gun", "power tool"), _power_tool),
+        (("compass",), _compass),
+        (("shears", "scissors", "secateurs", "clippers"), _shears),
+        (("tape measure", "measuring tape"), _tape_measure),
         (("skull",), _skull),
         (("cash register", "till", "register"), _till),
         (("toolbox", "tool box", "tool chest", "toolkit", "kit"), _toolbox),

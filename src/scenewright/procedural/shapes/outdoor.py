@@ -325,7 +325,23 @@ def sign(m: Model) -> None:
     m.box("concrete", (0.2 * m.sx, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, 0.03), rounded=0.0)
 
 
+def _ladder(m: Model) -> None:
+    """A ladder standing upright: two rails and evenly spaced rungs between them."""
+    m.main = "wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    rail = min(0.12 * W, 0.8 * D)
+    for x in (-W + rail, W - rail):
+        m.box("wood", (x - rail, -rail, 0), (x + rail, rail, H))
+    rungs = max(3, int(H / 0.3))
+    for k in range(1, rungs + 1):
+        m.cylinder("dark_wood", (-W + 2 * rail, 0, H * k / (rungs + 1)), (W - 2 * rail, 0, H * k / (rungs + 1)), 0.6 * rail,
+                   fraction=0.4)
+
+
 def fence(m: Model) -> None:
+    if m.named("ladder", "stepladder", "step ladder"):
+        _ladder(m)
+        return
     post = m.thick(0.08, 0.4 * m.sy)
     count = min(40, max(2, int(round(m.sx / 1.5)) + 1))
     xs = np.linspace(-m.sx / 2 + post / 2, m.sx / 2 - post / 2, count)

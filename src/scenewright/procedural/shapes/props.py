@@ -470,9 +470,37 @@ def _creel(m: Model) -> None:
     m.torus("canvas_alt", (0, -0.86 * D, base + 0.45 * rise), 0.3 * min(W, rise), 0.6 * hoop, axis="y", fraction=0.5)
     m.box("brick", (-0.25 * W, -0.3 * D, base), (0.25 * W, 0.3 * D, base + 0.15 * H))
 
+def _pan(m: Model) -> None:
+    """A frying pan or wok: a shallow dish with a long handle out to one side."""
+    m.main = "dark_metal"
+    r = min(0.35 * m.sx, 0.5 * m.sy)
+    cx = -m.sx / 2 + r
+    m.lathe("dark_metal", [(0.0, 0.0), (0.8 * r, 0.0), (r, m.sz), (0.95 * r, m.sz), (0.76 * r, 0.1 * m.sz), (0.0, 0.1 * m.sz)],
+            centre=(cx, 0, 0))
+    m.beam("dark_wood", (cx + 0.98 * r, 0, 0.8 * m.sz), (m.sx / 2, 0, 0.95 * m.sz), 0.15 * r, 0.12 * r)
+
+
+def _teapot(m: Model) -> None:
+    """A teapot or kettle: a round body with a lid and knob, a spout and a handle."""
+    m.main = "ceramic"
+    W, H = m.sx / 2, m.sz
+    r = min(0.6 * W, 0.5 * m.sy)
+    m.lathe("ceramic", [(0.0, 0.0), (0.8 * r, 0.0), (r, 0.35 * H), (0.8 * r, 0.7 * H), (0.5 * r, 0.75 * H), (0.0, 0.75 * H)])
+    m.lathe("ceramic", [(0.52 * r, 0.74 * H), (0.45 * r, 0.82 * H), (0.0, 0.84 * H)])
+    m.ball("accent", (0, 0, 0.88 * H), (0.12 * r, 0.12 * r, 0.06 * H), fraction=0.4)
+    m.cylinder("ceramic", (-0.8 * r, 0, 0.3 * H), (-W, 0, 0.7 * H), 0.18 * r, 0.08 * r, fraction=0.5)
+    m.torus("ceramic", (0.9 * r + 0.12 * H, 0, 0.4 * H), 0.15 * H, 0.06 * r, axis="y", fraction=0.5)
+
+
 def bowl(m: Model) -> None:
     if m.named("lobster pot", "crab pot", "creel", "fish trap", "eel trap"):
         _creel(m)
+        return
+    if m.named("frying pan", "pan", "wok", "skillet", "saucepan"):
+        _pan(m)
+        return
+    if m.named("teapot", "tea pot", "kettle"):
+        _teapot(m)
         return
     if m.named("cauldron"):
         _cauldron(m)

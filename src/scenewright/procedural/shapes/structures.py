@@ -1,7 +1,7 @@
 """Large open structures, upright panels and containers the catalogue does not know one by
 one: a ferris wheel, crane, carousel, stage, scaffold, grandstand, siege engine or skate
 ramp; a screen, banner or notice board; a box, trunk, suitcase, backpack, sack, basket, cool
-box, cage or pen. Fronts face −Y."""
+box, cage, pen or hatbox. Fronts face −Y."""
 
 from __future__ import annotations
 
@@ -480,10 +480,18 @@ def _spool(m: Model) -> None:
     m.lathe("paper", [(0.2, m.sz), (0.2, 1.005 * m.sz), (0.0, 1.005 * m.sz)], scale=(m.sx, m.sy), fraction=0.6)
 
 
+def _hatbox(m: Model) -> None:
+    """A hatbox: a round box with a lid a little wider, a ribbon round it."""
+    m.main = "paper"
+    m.lathe("paper", [(0.0, 0.0), (0.47, 0.0), (0.47, 0.85 * m.sz), (0.0, 0.85 * m.sz)], scale=(m.sx, m.sy))
+    m.lathe("canvas_alt", [(0.0, 0.8 * m.sz), (0.5, 0.8 * m.sz), (0.5, m.sz), (0.0, m.sz)], scale=(m.sx, m.sy))
+    m.lathe("accent", [(0.475, 0.35 * m.sz), (0.475, 0.45 * m.sz)], scale=(m.sx, m.sy), fraction=0.7)
+
+
 def container(m: Model) -> None:
     """Something that holds things: a cardboard box, a treasure chest, a travel trunk, a
     suitcase, a backpack, a sack, a basket, a cool box, a cage, a pen, a lobster pot, a
-    spool; else a box. The variant named first wins ("ice chest cooler" is a cool box)."""
+    spool, a hatbox; else a box. The variant named first wins ("ice chest cooler" is a cool box)."""
     variants = (
         (("chest", "treasure", "coffer"), _chest),
         (("trunk", "footlocker"), _trunk),
@@ -496,6 +504,7 @@ def container(m: Model) -> None:
         (("pen", "playpen", "play pen", "corral"), _pen),
         (("lobster pot", "crab pot", "creel", "fish trap"), _creel),
         (("spool", "reel", "bobbin", "cable drum"), _spool),
+        (("hatbox", "hat box"), _hatbox),
     )
     build = m.first_named(variants)
     if build is _chest:
