@@ -12,6 +12,7 @@ from collections import defaultdict
 
 import numpy as np
 import pytest
+from test_procedural import FAMILIES, VARIANTS
 
 from scenewright.core.catalogue import load_catalogue
 from scenewright.procedural import parts as P
@@ -108,12 +109,17 @@ STYLES = ("realistic", "cartoon", "low-poly")
 
 
 def _cases() -> dict[str, list[str]]:
-    """Shape → the names it is drawn under: its own, every catalogue name that uses it, every family word."""
+    """Shape → the names it is drawn under: its own, every catalogue name that uses it, every
+    family word, every name the shape tests pick a variant by."""
     cases: dict[str, set[str]] = {shape: {shape.replace("_", " ")} for shape in SHAPES}
     for category in load_catalogue().values():
         cases[category.shape].add(category.label)
     for family, words in FAMILY_WORDS.items():
         cases[family].update(words)
+    for family, names in FAMILIES.items():
+        cases[family].update(names)
+    for shape, name, _ in VARIANTS:
+        cases[shape].add(name)
     return {shape: sorted(names) for shape, names in sorted(cases.items())}
 
 

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 from test_procedural import FAMILIES, assert_fills, base_colours, load, scene_frame
 
+from scenewright.analysis.parser import parse_scene
 from scenewright.procedural.meshes import build_glb, build_model, choose_shape
 from scenewright.procedural.shapes.families import FAMILY_WORDS, family_of
 from scenewright.scene import STYLES
@@ -138,3 +139,34 @@ def test_the_generic_shape_follows_any_hint_in_the_name():
     assert "wing" in build_model("generic", (3, 4, 2), "realistic", 1, name="dragon").geometry
     block = build_model("generic", (1, 1, 1), "realistic", 1, name="thingamajig")
     assert set(block.geometry) == {"plastic", "dark_plastic", "accent"}
+
+
+@pytest.mark.parametrize(
+    ("noun", "shape"),
+    [("zeppelin", "vehicle"), ("ore cart", "cart"), ("outcrop", "rock"), ("anthill", "rock"), ("bleachers", "structure"),
+     ("catapult", "structure"), ("spyglass", "tool"), ("magnifier", "tool"), ("manuscript", "tool"), ("golf club", "tool"),
+     ("rucksack", "container"), ("cool box", "container"), ("record player", "tool"), ("playpen", "container"),
+     ("marionette", "figure"), ("bass drum", "barrel"), ("gourd", "generic")],
+)
+def test_a_read_noun_reaches_the_shape_that_draws_it(noun, shape):
+    """From the text: what the reader files a noun as (a catalogue category or a family)
+    picks the shape, and the shape's variant for that name (the tests above) draws it."""
+    obj = parse_scene(f"There is a {noun} by the old wall.").objects[0]
+    assert choose_shape(obj.name, obj.category) == shape, (obj.name, obj.category)
+
+
+def test_a_hand_tool_lies_along_its_long_side():
+    """A hammer filed 0.1 m wide and 0.35 m long is drawn along its length, head in front;
+    standing, a rake has its head at the bottom."""
+    hammer = scene_frame(build_model("tool", (0.1, 0.35, 0.08), "realistic", 1, name="hammer"))
+    assert np.ptp(hammer["wood"].vertices[:, 1]) > 3 * np.ptp(hammer["wood"].vertices[:, 0])
+    assert hammer["metal"].vertices[:, 1].max() < hammer["rubber"].vertices[:, 1].min()
+    rake = scene_frame(build_model("tool", (0.4, 0.1, 1.5), "realistic", 1, name="rake"))
+    assert rake["metal"].vertices[:, 2].max() < 0.2 * 1.5
+
+
+def test_seats_of_a_grandstand_rise_to_the_back():
+    stand = scene_frame(build_model("structure", (12, 6, 4), "realistic", 1, name="bleachers"))
+    seats = np.concatenate([stand[role].vertices for role in ("paint", "accent")])
+    front, back = seats[seats[:, 1] < 0], seats[seats[:, 1] > 1]
+    assert back[:, 2].max() > front[:, 2].max() + 0.5

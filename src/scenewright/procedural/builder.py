@@ -108,6 +108,14 @@ class Model:
         """Whether the object *is* one of these (its name or category), not merely described with it."""
         return _mentions(self.name, words)
 
+    def first_named(self, variants):
+        """The build of the variant whose word comes first in the name, or ``None``: a name is
+        the object's own words, then its category's ("forklift tractor" is a forklift, "ice
+        chest cooler" a cooler)."""
+        found = [(match.start(), k) for k, (words, _) in enumerate(variants) for w in words
+                 if (match := re.search(rf"\b{re.escape(w)}(?:e?s)?\b", self.name))]
+        return variants[min(found)[1]][1] if found else None
+
     def lathe(self, role: str, profile, centre=(0.0, 0.0, 0.0), scale=(1.0, 1.0), fraction: float = 1.0) -> None:
         part = P.lathe(profile, self.segments(fraction))
         self.add(role, P.transform(part, P.affine(np.diag([scale[0], scale[1], 1.0]), centre)))

@@ -81,7 +81,34 @@ def house(m: Model) -> None:
     m.box("brick", (cx - 0.06 * m.sx, 0.1 * m.sy, 0.6 * m.sz), (cx + 0.06 * m.sx, 0.2 * m.sy, 0.97 * m.sz))
 
 
+def _puppet_booth(m: Model) -> None:
+    """A puppet booth: a tall striped canvas box, a stage opening at the top framed by
+    curtains, a gable with a painted sign."""
+    m.main = "canvas"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    stage = 0.55 * H
+    stripes = 6
+    for k in range(stripes):
+        x0 = -W + 2 * W * k / stripes
+        m.box("canvas" if k % 2 == 0 else "canvas_alt", (x0, -D, 0), (x0 + 2 * W / stripes, D, stage), rounded=0.0)
+    m.box("wood", (-1.02 * W, -1.05 * D, stage), (1.02 * W, 1.02 * D, stage + 0.04 * H))
+    for x in (-W, 0.8 * W):
+        m.box("wood", (x, -D, stage + 0.04 * H), (x + 0.2 * W, D, 0.85 * H), rounded=0.0)
+    m.box("dark_plastic", (-0.8 * W, 0.7 * D, stage + 0.04 * H), (0.8 * W, D, 0.85 * H), rounded=0.0)
+    for s in (-1, 1):
+        for k in range(3):
+            x = s * (0.72 - 0.08 * k) * W
+            m.cylinder("fabric", (x, -0.85 * D, stage + (0.05 + 0.005 * k) * H), (x, -0.85 * D, (0.84 - 0.005 * k) * H), 0.06 * W,
+                       fraction=0.5)  # folds of different lengths: equal ones would share their ends
+    m.box("wood", (-1.02 * W, -D, 0.85 * H), (1.02 * W, D, 0.88 * H))
+    m.extrude("accent", [(-1.02 * W, 0.88 * H), (1.02 * W, 0.88 * H), (0.0, H)], "y", -D, -0.8 * D)
+    m.box("paper", (-0.3 * W, -1.01 * D, 0.9 * H), (0.3 * W, -D, 0.95 * H), rounded=0.0)
+
+
 def kiosk(m: Model) -> None:
+    if m.named("puppet booth", "puppet theatre", "puppet theater", "punch and judy"):
+        _puppet_booth(m)
+        return
     m.main = "paint"
     roof = 0.85 * m.sz
     m.box("paint", (-m.sx / 2 + 0.1, -m.sy / 2 + 0.15, 0), (m.sx / 2 - 0.1, m.sy / 2 - 0.1, roof))

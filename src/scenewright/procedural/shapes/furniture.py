@@ -395,9 +395,25 @@ def _vending_machine(m: Model) -> None:
     m.box("dark_plastic", (-0.4 * m.sx, -m.sy / 2 + 0.005, 0.08 * m.sz), (0.1 * m.sx, -m.sy / 2 + 0.02, 0.2 * m.sz), rounded=0.0)
     m.box("light", (-m.sx / 2 + 0.02, -m.sy / 2 + 0.005, 0.94 * m.sz), (m.sx / 2 - 0.02, -m.sy / 2 + 0.02, 0.98 * m.sz), rounded=0.0)
 
+def _water_cooler(m: Model) -> None:
+    """A water cooler: a cabinet with two taps over a drip tray, a blue bottle upside down on top."""
+    m.main = "plastic"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    body = 0.68 * H
+    m.box("plastic", (-W, -D, 0), (W, D, body))
+    m.box("dark_plastic", (-0.6 * W, -1.02 * D, 0.35 * body), (0.6 * W, -D, 0.4 * body), rounded=0.0)
+    for x, role in ((-0.3 * W, "accent"), (0.3 * W, "book_b")):
+        m.box(role, (x - 0.08 * W, -1.1 * D, 0.62 * body), (x + 0.08 * W, -D, 0.7 * body), rounded=0.0)
+    m.lathe("glass", [(0.08, body), (0.08, body + 0.04 * H), (0.42, body + 0.1 * H), (0.42, 0.96 * H), (0.3, H), (0.0, H)],
+            scale=(m.sx, m.sy))
+
+
 def fridge(m: Model) -> None:
     if m.named("vending machine", "arcade", "atm"):
         _vending_machine(m)
+        return
+    if m.named("water cooler", "water dispenser"):
+        _water_cooler(m)
         return
     m.main = "metal"
     m.box("metal", (-m.sx / 2, -m.sy / 2 + 0.04, 0), (m.sx / 2, m.sy / 2, m.sz))

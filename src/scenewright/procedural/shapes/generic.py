@@ -1,10 +1,14 @@
-"""The fallback shape: soft things and instruments the catalogue files under ``generic``,
+"""The fallback shape: soft things, instruments, pumpkins, balls, ramps, goals and
+chimneys (things with no family),
 the family a name calls (animals, craft, figures...), and a plain plinthed block for a name
 with no hint at all."""
 
 from __future__ import annotations
 
+import numpy as np
+
 from scenewright.procedural.builder import Model
+from scenewright.procedural.shapes import structures
 from scenewright.procedural.shapes.families import FAMILIES, family_of
 
 
@@ -42,14 +46,67 @@ def _lifebuoy(m: Model) -> None:
     m.torus("paint", (0, 0, r), 0.75 * r, 0.25 * r, axis="y")
 
 
+def _pumpkin(m: Model) -> None:
+    """A pumpkin (or gourd, melon): ribbed lobes round a core, a woody stalk and a leaf."""
+    m.main = "flower_alt"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    lobes = 8
+    for k in range(lobes):
+        a = 2 * np.pi * k / lobes
+        m.ball("flower_alt", (0.45 * W * np.cos(a), 0.45 * D * np.sin(a), 0.45 * H), (0.55 * W, 0.55 * D, 0.45 * H), fraction=0.6)
+    m.ball("flower_alt", (0, 0, 0.45 * H), (0.7 * W, 0.7 * D, 0.47 * H), fraction=0.6)
+    m.cylinder("bark", (0, 0, 0.85 * H), (0.05 * W, 0.02 * D, H), 0.08 * W, 0.06 * W, fraction=0.4)
+    m.leaf("leaf", (0.05 * W, 0, 0.9 * H), (0.45 * W, 0.2 * D, 0.88 * H), 0.12 * W, 0.02 * H)
+
+
+def _ball(m: Model) -> None:
+    """A ball: a sphere with a contrasting band, or a bowling ball's three finger holes."""
+    m.main = "paint"
+    r = min(m.sx, m.sy, m.sz) / 2
+    m.ball("paint", (0, 0, r), (r, r, r))
+    if m.named("bowling ball"):
+        for dx, dz in ((-0.2, 0.55), (0.2, 0.55), (0.0, 0.25)):
+            m.ball("dark_plastic", (dx * r, -0.93 * r, r + dz * r), (0.12 * r, 0.1 * r, 0.12 * r), fraction=0.4)
+        return
+    m.torus("accent", (0, 0, r), 1.0 * r, 0.06 * r, axis="x", fraction=0.8)
+
+
+def _goal(m: Model) -> None:
+    """A football goal: two posts and a crossbar at the front, the net sloping back to the
+    ground, stanchions holding it out."""
+    m.main = "plastic"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    post = 0.05 * H + 0.01
+    for x in (-W + post, W - post):
+        m.post("plastic", x, -D + post, 0, H - post, post, fraction=0.5)
+        m.beam("metal", (x, -D + post, H - post), (x, D - post, 0.02 * H), 0.5 * post)
+    m.cylinder("plastic", (-W, -D + post, H - post), (W, -D + post, H - post), post, fraction=0.5)
+    m.extrude("canvas_alt", [(-D + 1.6 * post, H - 1.6 * post), (-D + 1.5 * post, 0.0), (D - post, 0.0)], "x", -W + 2 * post, W - 2 * post)
+    m.cylinder("metal", (-W + post, D - post, 0.5 * post), (W - post, D - post, 0.5 * post), 0.5 * post, fraction=0.4)
+
+
+def _chimney(m: Model) -> None:
+    """A free-standing chimney stack: a brick column with a corbelled cap and a pot on top."""
+    m.main = "brick"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.box("brick", (-0.8 * W, -0.8 * D, 0), (0.8 * W, 0.8 * D, 0.9 * H))
+    m.box("stone", (-W, -D, 0.9 * H), (W, D, 0.94 * H))
+    m.cylinder("ceramic", (0, 0, 0.94 * H), (0, 0, H), 0.35 * min(W, D), 0.3 * min(W, D), fraction=0.5)
+
+
 def generic(m: Model) -> None:
-    """Soft things and instruments by name; else the family the name calls (a horse the
+    """Soft things, instruments, pumpkins, balls, ramps, goals and chimneys by name; else the family the name calls (a horse the
     catalogue files here is an animal); only a name with no hint at all gets the block."""
     variants = (
         (("guitar", "violin", "cello"), _guitar),
         (("cushion", "pillow", "pouf"), _cushion),
         (("curtain", "drape"), _curtain),
         (("lifebuoy", "life ring", "tyre", "tire"), _lifebuoy),
+        (("pumpkin", "gourd", "squash", "melon", "watermelon"), _pumpkin),
+        (("ball", "bowling ball", "football", "beach ball", "basketball", "soccer ball"), _ball),
+        (("ramp", "skate ramp"), structures._ramp),
+        (("goal", "goalpost", "goal post"), _goal),
+        (("chimney", "smokestack", "chimney stack"), _chimney),
     )
     for words, build in variants:
         if m.named(*words):

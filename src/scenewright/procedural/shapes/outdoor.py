@@ -143,19 +143,61 @@ def _campfire(m: Model) -> None:
         m.cylinder("bark", (d[0], d[1], 0.05 * m.sz), (-d[0], -d[1], 0.2 * m.sz), 0.05 * min(m.sx, m.sy), fraction=0.5)
     m.lathe("flame", [(0.2 * min(m.sx, m.sy), 0.1 * m.sz), (0.1 * min(m.sx, m.sy), 0.5 * m.sz), (0.0, m.sz)], fraction=0.5)
 
-def rock(m: Model) -> None:
-    if m.named("campfire", "bonfire", "fire pit"):
-        _campfire(m)
-        return
-    m.main = "stone"
+def _lump(m: Model, role: str, centre=(0.0, 0.0, 0.0), radii=(1.0, 1.0, 1.0), floor: float = -0.35) -> None:
+    """A lumpy faceted boulder: a sphere with random waves on it, its bottom cut flat at
+    ``floor`` (in units of its radius)."""
     part = P.sphere((0, 0, 0), (1, 1, 1), max(6, m.segments(0.45)))
     d = part.vertices
     waves = m.rng.normal(size=(5, 3))
     phase = m.rng.uniform(0, 2 * np.pi, 5)
     bump = 1 + 0.18 * np.sin(d @ waves.T * 2 + phase).sum(axis=1) / 2.2
     verts = d * bump[:, None]
-    verts[:, 2] = np.maximum(verts[:, 2], -0.35)
-    m.add("stone", P.flatten(P.Part(verts, part.faces, part.normals)))
+    verts[:, 2] = np.maximum(verts[:, 2], floor)
+    m.add(role, P.flatten(P.Part(verts * np.asarray(radii) + np.asarray(centre), part.faces, part.normals)))
+
+
+def _outcrop(m: Model) -> None:
+    """A rocky outcrop (a kopje, a tor): great rounded boulders heaped on a low rock base,
+    tufts of grass between them."""
+    m.main = "stone"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    _lump(m, "stone", (0, 0, 0), (W, D, 0.35 * H), floor=0.0)
+    for k in range(7):
+        a = 2 * np.pi * k / 7 + m.vary(-0.3, 0.3)
+        reach = 0.25 + 0.3 * (k % 2)
+        r = m.vary(0.22, 0.32)
+        _lump(m, "stone", (reach * W * np.cos(a), reach * D * np.sin(a), 0.25 * H + r * H * 0.3), (r * W, r * D, r * H * 0.9))
+    _lump(m, "stone", (0.05 * W, -0.05 * D, 0.65 * H), (0.3 * W, 0.28 * D, 0.35 * H))
+    for k in range(5):
+        a = 2 * np.pi * k / 5 + 0.4
+        m.ball("leaf", (0.7 * W * np.cos(a), 0.7 * D * np.sin(a), 0.12 * H), (0.1 * W, 0.1 * D, 0.08 * H), fraction=0.4)
+
+
+def _mound(m: Model) -> None:
+    """A termite mound or anthill: a lumpy cone of earth, spires rising from its shoulders."""
+    m.main = "soil"
+    H = m.sz
+    _lump(m, "soil", (0, 0, 0.2 * H), (0.5 * m.sx, 0.5 * m.sy, 0.25 * H), floor=-0.8)
+    m.lathe("soil", [(0.42, 0.0), (0.32, 0.3 * H), (0.18, 0.7 * H), (0.06, 0.95 * H), (0.0, H)], scale=(m.sx, m.sy))
+    if m.sz > max(m.sx, m.sy):
+        for k, (a, top) in enumerate(((0.3, 0.7), (2.4, 0.55), (4.2, 0.62))):
+            x, y = 0.16 * m.sx * np.cos(a), 0.16 * m.sy * np.sin(a)
+            m.lathe("soil", [(0.1, 0.2 * H), (0.05, top * H), (0.0, (top + 0.05) * H)], centre=(x, y, 0), scale=(m.sx, m.sy))
+
+
+def rock(m: Model) -> None:
+    """A boulder; by its name a campfire, a rocky outcrop, a termite mound or anthill."""
+    variants = (
+        (("campfire", "bonfire", "fire pit"), _campfire),
+        (("kopje", "koppie", "outcrop", "tor", "rock formation"), _outcrop),
+        (("termite mound", "termite hill", "anthill", "ant hill", "mound"), _mound),
+    )
+    build = m.first_named(variants)
+    if build is not None:
+        build(m)
+        return
+    m.main = "stone"
+    _lump(m, "stone")
 
 
 def fountain(m: Model) -> None:
@@ -283,7 +325,23 @@ def sign(m: Model) -> None:
     m.box("concrete", (0.2 * m.sx, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, 0.03), rounded=0.0)
 
 
+def _ladder(m: Model) -> None:
+    """A ladder standing upright: two rails and evenly spaced rungs between them."""
+    m.main = "wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    rail = min(0.12 * W, 0.8 * D)
+    for x in (-W + rail, W - rail):
+        m.box("wood", (x - rail, -rail, 0), (x + rail, rail, H))
+    rungs = max(3, int(H / 0.3))
+    for k in range(1, rungs + 1):
+        m.cylinder("dark_wood", (-W + 2 * rail, 0, H * k / (rungs + 1)), (W - 2 * rail, 0, H * k / (rungs + 1)), 0.6 * rail,
+                   fraction=0.4)
+
+
 def fence(m: Model) -> None:
+    if m.named("ladder", "stepladder", "step ladder"):
+        _ladder(m)
+        return
     post = m.thick(0.08, 0.4 * m.sy)
     count = min(40, max(2, int(round(m.sx / 1.5)) + 1))
     xs = np.linspace(-m.sx / 2 + post / 2, m.sx / 2 - post / 2, count)

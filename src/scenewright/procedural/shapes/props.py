@@ -353,7 +353,32 @@ def crate(m: Model) -> None:
 
 
 
+def _drum(m: Model) -> None:
+    """A big drum (taiko, bass drum) on its side in a wooden stand: a barrel body, a skin at
+    each end fixed by a ring of tacks."""
+    m.main = "wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    r = min(D, 0.42 * H)
+    cz = H - r
+    m.cylinder("wood", (-0.85 * W, 0, cz), (0.0, 0, cz), 0.88 * r, r, fraction=0.8)
+    m.cylinder("wood", (0.0, 0, cz), (0.85 * W, 0, cz), r, 0.88 * r, fraction=0.8)
+    for s in (-1, 1):
+        m.cylinder("hide", (s * 0.85 * W, 0, cz), (s * 0.86 * W, 0, cz), 0.86 * r, fraction=0.8)
+        m.torus("brass", (s * 0.8 * W, 0, cz), 0.88 * r, 0.03 * r, axis="x", fraction=0.6)
+    for y in (-0.6 * D, 0.6 * D):
+        m.beam("dark_wood", (-0.7 * W, y, 0), (-0.3 * W, y, cz - 0.7 * r), 0.12 * r)
+        m.beam("dark_wood", (0.7 * W, y, 0), (0.3 * W, y, cz - 0.7 * r), 0.12 * r)
+    m.box("dark_wood", (-0.6 * W, -0.7 * D, cz - 0.98 * r), (0.6 * W, 0.7 * D, cz - 0.85 * r))
+
+
+#: Words that make a drum an instrument: a plain "drum" among barrels is an oil drum.
+_INSTRUMENT_DRUMS = ("taiko", "bass", "war", "snare", "kettle", "tom", "ceremonial", "festival", "temple", "marching")
+
+
 def barrel(m: Model) -> None:
+    if m.named("drum") and m.has(*_INSTRUMENT_DRUMS):
+        _drum(m)
+        return
     if m.named("log", "trunk"):
         r = min(m.sy, m.sz) / 2
         m.cylinder("bark", (-m.sx / 2, 0, r), (m.sx / 2, 0, r), r, fraction=0.6)
@@ -426,7 +451,57 @@ def _basket(m: Model) -> None:
     m.lathe("canvas", [(0.47, 0.56 * m.sz), (0.5, 0.64 * m.sz), (0.3, 0.6 * m.sz)], scale=(m.sx, m.sy), fraction=0.7)
 
 
+def _creel(m: Model) -> None:
+    """A lobster or crab pot: wooden hoops arched along a slatted base, rope lines running
+    over them, a funnel mouth at the front and a brick for weight inside."""
+    m.main = "wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    base = 0.08 * H
+    for x in (-0.8 * W, 0.0, 0.8 * W):
+        m.box("wood", (x - 0.12 * W, -D, 0), (x + 0.12 * W, D, base))
+    hoop = 0.025 * min(m.sx, m.sy, m.sz) + 0.004
+    rise = H - base - hoop
+    for y in (-0.85 * D, -0.3 * D, 0.3 * D, 0.85 * D):
+        m.torus("dark_wood", (0, y, base), 0.95 * W, hoop, axis="y", arc=np.pi, fraction=0.6)
+    for k in range(1, 8):
+        a = np.pi * k / 8
+        x, z = 0.95 * W * np.cos(a), base + 0.95 * W * np.sin(a) * rise / (0.95 * W)
+        m.cylinder("canvas_alt", (x, -0.9 * D, z), (x, 0.9 * D, z), 0.5 * hoop, fraction=0.3)
+    m.torus("canvas_alt", (0, -0.86 * D, base + 0.45 * rise), 0.3 * min(W, rise), 0.6 * hoop, axis="y", fraction=0.5)
+    m.box("brick", (-0.25 * W, -0.3 * D, base), (0.25 * W, 0.3 * D, base + 0.15 * H))
+
+def _pan(m: Model) -> None:
+    """A frying pan or wok: a shallow dish with a long handle out to one side."""
+    m.main = "dark_metal"
+    r = min(0.35 * m.sx, 0.5 * m.sy)
+    cx = -m.sx / 2 + r
+    m.lathe("dark_metal", [(0.0, 0.0), (0.8 * r, 0.0), (r, m.sz), (0.95 * r, m.sz), (0.76 * r, 0.1 * m.sz), (0.0, 0.1 * m.sz)],
+            centre=(cx, 0, 0))
+    m.beam("dark_wood", (cx + 0.98 * r, 0, 0.8 * m.sz), (m.sx / 2, 0, 0.95 * m.sz), 0.15 * r, 0.12 * r)
+
+
+def _teapot(m: Model) -> None:
+    """A teapot or kettle: a round body with a lid and knob, a spout and a handle."""
+    m.main = "ceramic"
+    W, H = m.sx / 2, m.sz
+    r = min(0.6 * W, 0.5 * m.sy)
+    m.lathe("ceramic", [(0.0, 0.0), (0.8 * r, 0.0), (r, 0.35 * H), (0.8 * r, 0.7 * H), (0.5 * r, 0.75 * H), (0.0, 0.75 * H)])
+    m.lathe("ceramic", [(0.52 * r, 0.74 * H), (0.45 * r, 0.82 * H), (0.0, 0.84 * H)])
+    m.ball("accent", (0, 0, 0.88 * H), (0.12 * r, 0.12 * r, 0.06 * H), fraction=0.4)
+    m.cylinder("ceramic", (-0.8 * r, 0, 0.3 * H), (-W, 0, 0.7 * H), 0.18 * r, 0.08 * r, fraction=0.5)
+    m.torus("ceramic", (0.9 * r + 0.12 * H, 0, 0.4 * H), 0.15 * H, 0.06 * r, axis="y", fraction=0.5)
+
+
 def bowl(m: Model) -> None:
+    if m.named("lobster pot", "crab pot", "creel", "fish trap", "eel trap"):
+        _creel(m)
+        return
+    if m.named("frying pan", "pan", "wok", "skillet", "saucepan"):
+        _pan(m)
+        return
+    if m.named("teapot", "tea pot", "kettle"):
+        _teapot(m)
+        return
     if m.named("cauldron"):
         _cauldron(m)
         return

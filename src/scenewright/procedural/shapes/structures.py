@@ -1,6 +1,7 @@
 """Large open structures, upright panels and containers the catalogue does not know one by
-one: a ferris wheel, crane, carousel, stage or scaffold; a screen, banner or notice board;
-a box, trunk, sack or basket. Fronts face −Y."""
+one: a ferris wheel, crane, carousel, stage, scaffold, grandstand, siege engine or skate
+ramp; a screen, banner or notice board; a box, trunk, suitcase, backpack, sack, basket, cool
+box, cage, pen or hatbox. Fronts face −Y."""
 
 from __future__ import annotations
 
@@ -8,7 +9,7 @@ import numpy as np
 
 from scenewright.procedural.builder import Model
 from scenewright.procedural.shapes.buildings import _crane, _windmill
-from scenewright.procedural.shapes.props import _basket, _chest
+from scenewright.procedural.shapes.props import _basket, _chest, _creel
 
 
 def _ferris_wheel(m: Model) -> None:
@@ -183,9 +184,82 @@ def _pad(m: Model) -> None:
     m.box("yellow_paint", (-band / 2, band / 2, H - paint), (-band / 2 + band, 0.6 * r, H), rounded=0.0)
 
 
+def _grandstand(m: Model) -> None:
+    """A grandstand: rows of seats on tiers rising to the back, under a roof on posts.
+    Each tier is its own slab, front to back (nested blocks would share their sides)."""
+    m.main = "concrete"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    rows = max(3, min(10, int(m.sy / 0.8)))
+    top = 0.55 * H
+    depth = 1.8 * D / rows
+    for k in range(rows):
+        y0, z = -D + k * depth, top * (k + 1) / rows
+        m.box("concrete", (-W, y0, 0), (W, y0 + depth, z), rounded=0.0)
+        m.box("paint" if k % 2 else "accent", (-0.96 * W, y0 + 0.35 * depth, z), (0.96 * W, y0 + 0.75 * depth, z + 0.12 * top / rows * 3))
+    m.box("concrete", (-W, -D + rows * depth, 0), (W, D, top + 0.05 * H), rounded=0.0)  # the back wall
+    post = 0.012 * m.sx + 0.04
+    for x in np.linspace(-0.97 * W, 0.97 * W, max(2, min(6, int(m.sx / 6) + 2))):
+        m.post("dark_metal", x, 0.93 * D, top + 0.05 * H, 0.97 * H, post, fraction=0.4)
+    m.extrude("roof", [(-0.4 * D, 0.9 * H), (0.98 * D, 0.95 * H), (0.98 * D, H), (-0.4 * D, 0.92 * H)], "x", -1.02 * W, 1.02 * W)
+    for x in np.linspace(-0.8 * W, 0.8 * W, 3):
+        m.beam("dark_metal", (x, 0.93 * D, 0.75 * H), (x, -0.2 * D, 0.89 * H), 0.8 * post)
+
+
+def _trebuchet(m: Model) -> None:
+    """A siege engine: a timber base, an A-frame on each side carrying an axle, a long
+    throwing arm with a counterweight box on its short end (a catapult's arm, a cup)."""
+    m.main = "wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    t = 0.03 * max(m.sy, m.sz) + 0.02
+    axle_z = 0.55 * H
+    for x in (-0.8 * W, 0.8 * W):
+        m.beam("dark_wood", (x, -D, t / 2), (x, D, t / 2), t)
+        for y, w in ((-0.45 * D, 0.8 * t), (0.45 * D, 0.7 * t)):  # legs of two widths: their sides meet at the top
+            m.beam("wood", (x, y, t), (x, 0.0, axle_z), w)
+    for y in (-0.8 * D, 0.8 * D):
+        m.beam("dark_wood", (-0.8 * W + 0.55 * t, y, 0.45 * t), (0.8 * W - 0.55 * t, y, 0.45 * t), 0.85 * t)
+    m.cylinder("dark_metal", (-0.85 * W, 0, axle_z), (0.85 * W, 0, axle_z), 0.35 * t, fraction=0.5)
+    if m.named("catapult", "ballista", "mangonel", "onager"):
+        tip = np.array([0.0, -0.6 * D, 0.95 * H])
+        m.beam("wood", (0, 0.5 * D, 0.3 * H), tip, 0.7 * t)
+        m.lathe("wood", [(0.0, 0.0), (0.18 * W, 0.0), (0.22 * W, 0.08 * H), (0.18 * W, 0.08 * H), (0.0, 0.02 * H)], centre=tip)
+        return
+    tip, heel = np.array([0.0, -0.95 * D, H]), np.array([0.0, 0.35 * D, 0.35 * H])
+    m.beam("wood", heel, tip, 0.6 * t)
+    m.box("dark_wood", (-0.3 * W, heel[1] - 0.12 * D, heel[2] - 0.25 * H), (0.3 * W, heel[1] + 0.12 * D, heel[2] - 0.02 * H))
+    m.box("stone", (-0.25 * W, heel[1] - 0.1 * D, heel[2] - 0.04 * H), (0.25 * W, heel[1] + 0.1 * D, heel[2] + 0.005 * H))
+    m.beam("canvas_alt", tip, tip + (0, 0.05 * D, -0.3 * H), 0.15 * t)
+    m.ball("canvas_alt", tip + (0, 0.05 * D, -0.3 * H), (0.4 * t,) * 3, fraction=0.4)
+
+
+def _ramp(m: Model) -> None:
+    """A skate ramp across the width: a curved transition up to a deck with a metal coping,
+    at both ends for a half pipe. The curve is a row of thin slabs (one concave outline
+    would fold)."""
+    m.main = "wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    both = m.named("half pipe", "halfpipe", "half-pipe")
+    deck = 0.12 * W
+    run = (0.4 if both else 0.8) * W
+    steps = max(6, m.segments(0.5))
+    for s in ((-1, 1) if both else (1,)):
+        wall = s * (W - deck)
+        for k in range(steps):
+            a0, a1 = np.pi / 2 * k / steps, np.pi / 2 * (k + 1) / steps
+            x0, x1 = wall - s * run * (1 - np.sin(a0)), wall - s * run * (1 - np.sin(a1))
+            z0, z1 = H * (1 - np.cos(a0)), H * (1 - np.cos(a1))
+            lo, hi = sorted((x0, x1))
+            low, high = (z0, z1) if s > 0 else (z1, z0)
+            m.extrude("wood", [(lo, 0.0), (hi, 0.0), (hi, high), (lo, low)], "y", -D, D)
+        x0, x1 = sorted((wall, s * W))
+        m.box("dark_wood", (x0, -D, 0), (x1, D, H), rounded=0.0)
+        m.cylinder("metal", (wall - s * 0.01 * W, -1.01 * D, H), (wall - s * 0.01 * W, 1.01 * D, H), 0.02 * H + 0.01, fraction=0.4)
+    if both:
+        m.box("wood", (-W + deck + run, -D, 0), (W - deck - run, D, 0.01 * H), rounded=0.0)
+
 def structure(m: Model) -> None:
     """A large open structure; its name picks it: ferris wheel, windmill, crane, carousel,
-    stage, scaffold, launch pad; else a truss gantry."""
+    stage, scaffold, launch pad, grandstand, siege engine, skate ramp; else a truss gantry."""
     variants = (
         (("ferris wheel", "big wheel", "observation wheel", "wheel"), _ferris_wheel),
         (("windmill", "wind turbine"), _windmill),
@@ -194,6 +268,9 @@ def structure(m: Model) -> None:
         (("stage", "bandstand", "podium", "platform"), _stage),
         (("scaffold", "scaffolding"), _scaffold),
         (("launch pad", "landing pad", "helipad", "pad"), _pad),
+        (("grandstand", "bleachers", "stands", "tribune", "spectator stand", "viewing stand"), _grandstand),
+        (("trebuchet", "catapult", "ballista", "mangonel", "onager", "siege engine"), _trebuchet),
+        (("half pipe", "halfpipe", "half-pipe", "quarter pipe", "skate ramp", "ramp"), _ramp),
     )
     for words, build in variants:
         if m.named(*words):
@@ -304,22 +381,135 @@ def _sack(m: Model) -> None:
     m.box("accent", (-0.15 * m.sx, -0.47 * m.sy, 0.3 * m.sz), (0.15 * m.sx, -0.45 * m.sy, 0.5 * m.sz), rounded=0.0)
 
 
+def _backpack(m: Model) -> None:
+    """A backpack standing on its base: a padded body rounded on top, a front pocket, a
+    top handle and two shoulder straps down its back."""
+    m.main = "fabric"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.box("fabric", (-W, -0.7 * D, 0), (W, 0.8 * D, 0.8 * H), rounded=0.3 * min(W, D))
+    m.ball("fabric", (0, 0.05 * D, 0.78 * H), (0.98 * W, 0.74 * D, 0.2 * H), fraction=0.6)
+    m.box("canvas_alt", (-0.75 * W, -D, 0.08 * H), (0.75 * W, -0.65 * D, 0.45 * H), rounded=0.25 * min(W, D))
+    m.box("dark_plastic", (-0.5 * W, -0.92 * D, 0.44 * H), (0.5 * W, -0.86 * D, 0.47 * H), rounded=0.0)
+    for s in (-1, 1):
+        m.beam("canvas_alt", (s * 0.45 * W, 0.85 * D, 0.85 * H), (s * 0.55 * W, 0.9 * D, 0.15 * H), 0.14 * W, 0.08 * D)
+    m.torus("canvas_alt", (0, 0.1 * D, 0.96 * H), 0.2 * W, 0.03 * H, axis="y", arc=np.pi, fraction=0.4)
+
+
+def _suitcase(m: Model) -> None:
+    """A suitcase standing upright: a hard shell with ribs, a zip seam, corner wheels and a
+    pull handle."""
+    m.main = "plastic"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    wheel = 0.05 * H
+    body = 0.85 * H
+    m.box("plastic", (-W, -D, wheel), (W, D, body), rounded=0.15 * min(W, D))
+    m.box("dark_plastic", (-1.01 * W, -0.03 * D, wheel + 0.02 * H), (1.01 * W, 0.03 * D, body - 0.02 * H), rounded=0.0)
+    for x in (-0.5 * W, 0.0, 0.5 * W):
+        m.box("plastic", (x - 0.05 * W, -1.02 * D, wheel + 0.05 * H), (x + 0.05 * W, -0.9 * D, body - 0.05 * H), rounded=0.0)
+    for x in (-0.75 * W, 0.75 * W):
+        for y in (-0.7 * D, 0.7 * D):
+            m.cylinder("rubber", (x - 0.08 * W, y, 0.5 * wheel), (x + 0.08 * W, y, 0.5 * wheel), 0.5 * wheel, fraction=0.4)
+    for x in (-0.4 * W, 0.4 * W):
+        m.box("metal", (x - 0.04 * W, 0.7 * D, body), (x + 0.04 * W, 0.85 * D, 0.98 * H), rounded=0.0)
+    m.box("dark_plastic", (-0.5 * W, 0.65 * D, 0.97 * H), (0.5 * W, 0.9 * D, H))
+
+
+def _cooler(m: Model) -> None:
+    """A cool box: a plastic tub with a white lid, a drain plug and a carry handle that
+    folds over the lid."""
+    m.main = "paint"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.box("paint", (-W, -D, 0), (W, D, 0.78 * H), rounded=0.08 * min(W, D, H))
+    m.box("plastic", (-1.02 * W, -1.02 * D, 0.78 * H), (1.02 * W, 1.02 * D, 0.9 * H), rounded=0.05 * min(W, D, H))
+    m.cylinder("dark_plastic", (0.7 * W, -D, 0.1 * H), (0.7 * W, -1.04 * D, 0.1 * H), 0.05 * H, fraction=0.4)
+    for s in (-1, 1):
+        m.box("dark_plastic", (s * 1.0 * W - 0.04 * W, -0.3 * D, 0.6 * H), (s * 1.0 * W + 0.04 * W, 0.3 * D, 0.7 * H), rounded=0.0)
+    m.torus("dark_plastic", (0, 0, 0.9 * H), 0.96 * W, 0.02 * min(W, H) + 0.005, axis="y", arc=np.pi, fraction=0.5)
+
+
+def _birdcage(m: Model) -> None:
+    """A bird cage: a round base, wire bars, a domed top with a hanging ring, a perch."""
+    m.main = "brass"
+    r = 0.5
+    scale = (m.sx, m.sy)
+    base = 0.08 * m.sz
+    wall = 0.72 * m.sz
+    m.lathe("dark_wood", [(r, 0.0), (r, base)], scale=scale, fraction=0.7)
+    bar = 0.008 * min(m.sx, m.sy) + 0.002
+    bars = 16
+    for k in range(bars):
+        a = 2 * np.pi * k / bars
+        x, y = 0.47 * m.sx * np.cos(a), 0.47 * m.sy * np.sin(a)
+        m.post("brass", x, y, base, wall, bar, fraction=0.3)
+    for z in (0.3 * m.sz, wall):
+        m.torus("brass", (0, 0, z), 0.47 * min(m.sx, m.sy), 1.5 * bar, fraction=0.7)
+    dome = 0.47 * min(m.sx, m.sy)
+    for axis in ("x", "y"):
+        m.torus("brass", (0, 0, wall), dome, bar, axis=axis, arc=np.pi, fraction=0.5)
+    m.torus("brass", (0, 0, wall + dome + 0.05 * m.sx), 0.05 * m.sx, bar, axis="x", fraction=0.4)
+    m.cylinder("wood", (-0.4 * m.sx, 0, 0.4 * m.sz), (0.4 * m.sx, 0, 0.4 * m.sz), 1.5 * bar, fraction=0.3)
+
+
+def _pen(m: Model) -> None:
+    """An open pen: wire mesh panels on posts round a square, no top."""
+    m.main = "metal"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    post = 0.01 * max(m.sx, m.sy) + 0.01
+    wire = 0.4 * post
+    corners = [(-W + post, -D + post), (W - post, -D + post), (W - post, D - post), (-W + post, D - post)]
+    for x, y in corners:
+        m.post("dark_metal", x, y, 0, H, post, fraction=0.4)
+    for (ax, ay), (bx, by) in zip(corners, corners[1:] + corners[:1]):
+        length = float(np.hypot(bx - ax, by - ay))
+        for z in (0.05 * H, 0.5 * H, 0.97 * H):
+            m.beam("metal", (ax, ay, z), (bx, by, z), wire)
+        for k in range(1, max(3, int(length / 0.1))):
+            t = k / max(3, int(length / 0.1))
+            x, y = ax + t * (bx - ax), ay + t * (by - ay)
+            m.post("metal", x, y, 0.0, 0.97 * H, 0.5 * wire, fraction=0.3)
+    m.box("brass", (W - 2.5 * post, -D + 2 * post, 0.45 * H), (W - 1.5 * post, -D + 3 * post, 0.55 * H), rounded=0.0)  # the latch
+
+
+def _spool(m: Model) -> None:
+    """A spool or reel: thread wound on a core between two flanges, standing on one."""
+    m.main = "fabric"
+    flange = 0.08 * m.sz
+    m.lathe("wood", [(0.5, 0.0), (0.5, flange), (0.0, flange)], scale=(m.sx, m.sy), fraction=0.8)
+    m.lathe("fabric", [(0.38, flange), (0.4, 0.5 * m.sz), (0.38, m.sz - flange)], scale=(m.sx, m.sy), fraction=0.8)
+    m.lathe("wood", [(0.5, m.sz - flange), (0.5, m.sz), (0.0, m.sz)], scale=(m.sx, m.sy), fraction=0.8)
+    m.lathe("paper", [(0.2, m.sz), (0.2, 1.005 * m.sz), (0.0, 1.005 * m.sz)], scale=(m.sx, m.sy), fraction=0.6)
+
+
+def _hatbox(m: Model) -> None:
+    """A hatbox: a round box with a lid a little wider, a ribbon round it."""
+    m.main = "paper"
+    m.lathe("paper", [(0.0, 0.0), (0.47, 0.0), (0.47, 0.85 * m.sz), (0.0, 0.85 * m.sz)], scale=(m.sx, m.sy))
+    m.lathe("canvas_alt", [(0.0, 0.8 * m.sz), (0.5, 0.8 * m.sz), (0.5, m.sz), (0.0, m.sz)], scale=(m.sx, m.sy))
+    m.lathe("accent", [(0.475, 0.35 * m.sz), (0.475, 0.45 * m.sz)], scale=(m.sx, m.sy), fraction=0.7)
+
+
 def container(m: Model) -> None:
     """Something that holds things: a cardboard box, a treasure chest, a travel trunk, a
-    sack, a basket; else a box."""
+    suitcase, a backpack, a sack, a basket, a cool box, a cage, a pen, a lobster pot, a
+    spool, a hatbox; else a box. The variant named first wins ("ice chest cooler" is a cool box)."""
     variants = (
         (("chest", "treasure", "coffer"), _chest),
-        (("trunk", "footlocker", "suitcase", "luggage"), _trunk),
+        (("trunk", "footlocker"), _trunk),
+        (("suitcase", "luggage", "travel case", "wheelie case"), _suitcase),
+        (("backpack", "rucksack", "knapsack", "schoolbag", "school bag", "daypack"), _backpack),
         (("sack", "bag", "sandbag", "pouch"), _sack),
         (("basket", "hamper"), _basket),
+        (("cooler", "cool box", "coolbox", "ice chest", "ice box"), _cooler),
+        (("cage", "birdcage", "bird cage"), _birdcage),
+        (("pen", "playpen", "play pen", "corral"), _pen),
+        (("lobster pot", "crab pot", "creel", "fish trap"), _creel),
+        (("spool", "reel", "bobbin", "cable drum"), _spool),
+        (("hatbox", "hat box"), _hatbox),
     )
-    for words, build in variants:
-        if m.named(*words):
-            if build is _chest:
-                m.main = "wood"
-            build(m)
-            return
-    _box(m)
+    build = m.first_named(variants)
+    if build is _chest:
+        m.main = "wood"
+    (build or _box)(m)
 
 
 SHAPES = {"structure": structure, "panel": panel, "container": container}

@@ -168,6 +168,9 @@ def boat(m: Model) -> None:
 
 
 def cart(m: Model) -> None:
+    if m.named("minecart", "mine cart", "mine car", "ore cart", "ore car"):
+        _minecart(m)
+        return
     wr = 0.35 * m.sz
     bed_z = 0.5 * m.sz
     # The side boards run full length; the bed and the end boards fit between them, edge to
@@ -401,6 +404,110 @@ def _balloon(m: Model) -> None:
                    0.01 * m.sx)
 
 
+def _helicopter(m: Model) -> None:
+    """A helicopter: a rounded cabin with a glazed nose, a tail boom with a fin and tail
+    rotor, a main rotor on a mast, landing skids."""
+    m.main = "paint"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    skid = 0.12 * H
+    cz = skid + 0.32 * H
+    m.ball("paint", (0, -0.35 * L, cz), (0.75 * W, 0.35 * L, 0.3 * H))
+    m.ball("glass", (0, -0.55 * L, cz + 0.05 * H), (0.6 * W, 0.17 * L, 0.2 * H), fraction=0.6)
+    m.cylinder("paint", (0, -0.1 * L, cz + 0.05 * H), (0, 0.9 * L, cz + 0.12 * H), 0.12 * H, 0.05 * H, fraction=0.6)
+    m.extrude("accent", [(0.78 * L, cz + 0.1 * H), (0.95 * L, cz + 0.12 * H), (L, cz + 0.4 * H), (0.9 * L, cz + 0.38 * H)],
+              "x", -0.02 * W, 0.02 * W)
+    m.cylinder("dark_metal", (0.03 * W, 0.92 * L, cz + 0.2 * H), (0.15 * W, 0.92 * L, cz + 0.2 * H), 0.12 * H, fraction=0.5)
+    top = cz + 0.3 * H
+    m.post("dark_metal", 0, -0.3 * L, top - 0.05 * H, 0.95 * H, 0.05 * W, fraction=0.4)
+    m.box("dark_metal", (-0.05 * W, -L, 0.95 * H), (0.05 * W, 0.45 * L, H), rounded=0.0)
+    m.box("dark_metal", (-W, -0.33 * L, 0.955 * H), (W, -0.27 * L, 0.995 * H), rounded=0.0)
+    for s in (-1, 1):
+        m.cylinder("metal", (s * 0.8 * W, -0.8 * L, 0.5 * skid), (s * 0.8 * W, 0.1 * L, 0.5 * skid), 0.4 * skid, fraction=0.4)
+        for y in (-0.55 * L, -0.1 * L):
+            m.beam("metal", (s * 0.8 * W, y, 0.5 * skid), (s * 0.4 * W, y, cz - 0.2 * H), 0.3 * skid)
+
+
+def _airship(m: Model) -> None:
+    """An airship: a long envelope with tail fins, a gondola slung under it, propellers."""
+    m.main = "canvas"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    cz = 0.62 * H
+    m.ball("canvas", (0, 0, cz), (W, L, 0.38 * H))
+    m.extrude("accent", [(0.55 * L, cz), (L, cz), (L, cz + 0.42 * H), (0.8 * L, cz + 0.3 * H)], "x", -0.03 * W, 0.03 * W)
+    m.extrude("accent", [(0.55 * L, cz), (0.8 * L, cz - 0.3 * H), (L, cz - 0.42 * H), (L, cz)], "x", -0.03 * W, 0.03 * W)
+    m.box("accent", (-W, 0.75 * L, cz - 0.02 * H), (W, 0.98 * L, cz + 0.02 * H), rounded=0.0)
+    m.box("wood", (-0.25 * W, -0.35 * L, 0.05 * H), (0.25 * W, 0.15 * L, 0.24 * H))
+    m.box("glass", (-0.26 * W, -0.3 * L, 0.14 * H), (0.26 * W, 0.1 * L, 0.2 * H), rounded=0.0)
+    for y in (-0.3 * L, 0.1 * L):
+        for s in (-1, 1):
+            m.beam("dark_metal", (s * 0.2 * W, y, 0.24 * H), (s * 0.35 * W, y, 0.3 * H), 0.01 * m.sy + 0.01)
+    for s in (-1, 1):
+        m.cylinder("dark_metal", (s * 0.3 * W, 0.1 * L, 0.17 * H), (s * 0.45 * W, 0.2 * L, 0.17 * H), 0.04 * H, fraction=0.4)
+        m.box("wood", (s * 0.45 * W - 0.01 * W, 0.2 * L, 0.05 * H), (s * 0.45 * W + 0.01 * W, 0.21 * L, 0.29 * H), rounded=0.0)
+
+
+def _submarine(m: Model) -> None:
+    """A submarine: a long round hull with rounded ends, a conning tower with a periscope,
+    hydroplanes, a rudder and a propeller."""
+    m.main = "dark_metal"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    r = min(W, 0.32 * H)
+    cz = r
+    m.cylinder("dark_metal", (0, -0.75 * L, cz), (0, 0.7 * L, cz), r, fraction=0.8)
+    m.ball("dark_metal", (0, -0.75 * L, cz), (r, 0.25 * L, r), fraction=0.8)
+    m.cylinder("dark_metal", (0, 0.7 * L, cz), (0, 0.95 * L, cz), r, 0.2 * r, fraction=0.8)
+    m.extrude("paint", [(-0.3 * L, cz + 0.9 * r), (-0.05 * L, cz + 0.9 * r), (-0.08 * L, 0.8 * H), (-0.28 * L, 0.8 * H)],
+              "x", -0.3 * W, 0.3 * W)
+    m.post("metal", 0, -0.2 * L, 0.78 * H, H, 0.04 * W, fraction=0.4)
+    m.box("metal", (-0.05 * W, -0.25 * L, 0.95 * H), (0.05 * W, -0.18 * L, H - 0.01 * H), rounded=0.0)
+    m.box("dark_metal", (-0.95 * W, -0.25 * L, 0.62 * H - 0.02 * H), (0.95 * W, -0.12 * L, 0.62 * H), rounded=0.0)
+    m.box("dark_metal", (-W, 0.8 * L, cz - 0.03 * r), (W, 0.9 * L, cz + 0.03 * r), rounded=0.0)
+    m.extrude("dark_metal", [(0.82 * L, cz - 0.9 * r), (0.92 * L, cz - 0.9 * r), (0.92 * L, cz + 0.9 * r), (0.82 * L, cz + 0.9 * r)],
+              "x", -0.02 * W, 0.02 * W)
+    m.cylinder("brass", (0, 0.95 * L, cz), (0, L, cz), 0.5 * r, fraction=0.5)
+
+
+def _minecart(m: Model) -> None:
+    """A mine cart: a steel tub wider at the top, on four small wheels on two rails, heaped
+    with ore when the text fills it."""
+    m.main = "dark_metal"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    rail = 0.05 * H
+    wr = min(0.17 * H, 0.4 * L)  # the two wheels of a side never overlap
+    for s in (-1, 1):
+        m.box("metal", (s * 0.6 * W - 0.04 * W, -L, 0), (s * 0.6 * W + 0.04 * W, L, rail), rounded=0.0)
+        for y in (-0.45 * L, 0.45 * L):
+            m.cylinder("dark_metal", (s * 0.6 * W, y, rail + wr), (s * 0.75 * W, y, rail + wr), wr, fraction=0.6)
+    for y in (-0.85 * L, -0.3 * L, 0.3 * L, 0.85 * L):
+        m.box("dark_wood", (-W, y - 0.06 * L, -0.001 * H), (W, y + 0.06 * L, 0.6 * rail), rounded=0.0)
+    floor = rail + 1.3 * wr
+    m.extrude("dark_metal", [(-0.7 * L, floor), (0.7 * L, floor), (0.9 * L, 0.8 * H), (-0.9 * L, 0.8 * H)], "x", -0.8 * W, 0.8 * W)
+    m.box("metal", (-0.84 * W, -0.92 * L, 0.8 * H), (0.84 * W, 0.92 * L, 0.85 * H), rounded=0.0)
+    for y in (-0.4 * L, 0.4 * L):
+        m.box("metal", (-0.81 * W, y - 0.04 * L, floor + 0.1 * H), (0.81 * W, y + 0.04 * L, 0.79 * H), rounded=0.0)
+    if m.has("ore", "coal", "gold", "gem", "rock", "stone", "full", "loaded"):
+        role = "crystal" if m.has("glowing", "gem", "crystal", "gold") else "stone"
+        for i in range(3):
+            for j in range(4):
+                c = (-0.5 * W + 0.5 * W * i, -0.6 * L + 0.4 * L * j, 0.85 * H + 0.05 * H * ((i + j) % 2))
+                m.ball(role, c, (0.22 * W, 0.2 * L, 0.12 * H), fraction=0.4)
+
+
+def _pram(m: Model) -> None:
+    """A pram: a deep body with a folding hood, on a chassis of four wheels, a push handle."""
+    m.main = "fabric"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    wr = 0.16 * H
+    for s in (-1, 1):
+        for y in (-0.6 * L, 0.6 * L):
+            m.cylinder("rubber", (s * 0.85 * W, y, wr), (s * W, y, wr), wr, fraction=0.6)
+        m.beam("metal", (s * 0.8 * W, -0.6 * L, wr), (s * 0.8 * W, 0.6 * L, wr), 0.02 * H)
+        m.beam("metal", (s * 0.75 * W, 0.6 * L, wr), (s * 0.7 * W, L, 0.95 * H), 0.02 * H)
+    m.cylinder("dark_plastic", (-0.75 * W, L, 0.95 * H), (0.75 * W, L, 0.95 * H), 0.025 * H, fraction=0.4)
+    m.box("fabric", (-0.7 * W, -0.7 * L, 0.35 * H), (0.7 * W, 0.6 * L, 0.62 * H), rounded=0.3 * min(W, 0.3 * H))
+    m.ball("canvas_alt", (0, 0.3 * L, 0.62 * H), (0.72 * W, 0.35 * L, 0.3 * H), fraction=0.6)
+
+
 def vehicle(m: Model) -> None:
     """A vehicle the catalogue does not know: tractor, forklift, golf cart, cart, battle
     tank, locomotive, or a flying craft (drone, spaceship); else a car."""
@@ -411,17 +518,17 @@ def vehicle(m: Model) -> None:
         (("army tank", "battle tank", "military tank", "panzer", "armored", "armoured", "tank"), _battle_tank),
         (("locomotive", "train", "engine car", "steam engine"), _locomotive),
         (("hot air balloon", "balloon"), _balloon),
-        (("cart", "wagon", "carriage", "wheelbarrow", "trolley", "chariot"), cart),
+        (("minecart", "mine cart", "mine car", "ore cart", "ore car"), _minecart),
+        (("cart", "wagon", "carriage", "wheelbarrow", "trolley", "chariot", "trailer"), cart),
+        (("pram", "stroller", "pushchair", "baby carriage", "perambulator"), _pram),
+        (("helicopter", "chopper", "gyrocopter"), _helicopter),
+        (("airship", "blimp", "zeppelin", "dirigible"), _airship),
+        (("submarine", "u-boat", "sub"), _submarine),
         (("spaceship", "spacecraft", "starship", "drone", "quadcopter", "jet", "airplane", "plane", "aircraft", "ufo",
-          "shuttle", "helicopter", "rocket ship"), craft),
+          "shuttle", "rocket ship"), craft),
     )
-    # The variant whose word comes first in the name wins: a name is the object's own words,
-    # then its category's ("forklift tractor" is a forklift).
-    found = [(m.name.find(word), build) for words, build in variants for word in words if m.named(word)]
-    if found:
-        min(found, key=lambda pair: pair[0])[1](m)
-        return
-    car(m)
+    build = m.first_named(variants)
+    (build or car)(m)
 
 
 SHAPES = {
