@@ -267,3 +267,9 @@ def test_a_noun_ending_in_s_after_a_determiner_is_no_verb():
 def test_a_flock_or_a_herd_is_many():
     got = objects("A herd of goats grazes by the wall, and a flock of geese waddles past.")
     assert got[("animal", "goat")] >= 5 and got[("bird", "goose")] >= 5, got
+
+
+def test_bare_plurals_that_open_a_sentence_as_its_subject_are_things():
+    got = objects("Paper lanternlets and soda glimmerjars clutter the desk. Rows of sheds run down the hill.")
+    assert got[("thing", "lanternlet")] == 3 and got[("thing", "glimmerjar")] == 3, got
+    assert not any(word == "row" for _, word in got)

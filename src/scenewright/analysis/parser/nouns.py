@@ -507,7 +507,39 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             # subject that opens a clause standing somewhere ("The periscope rises in the middle")
         out.append((head, head + 1, entry.category, entry))
         covered.add(head)
+    out += _bare_subjects(toks, covered)
     return out + _unknown_heads(toks, raw, covered)
+
+
+def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
+    """Bare plurals nobody listed that open a sentence as its subject ("Noodle cartons and soda
+    cans litter the floor"): no count, but a verb (or "and" and another such plural) follows."""
+    vocabulary = load_vocabulary()
+    out: list = []
+    n = len(toks)
+    for k in range(n):
+        after_and = k > 0 and toks[k - 1].text == "and" and bool(out) and out[-1][1] == k - 1
+        if not (k == 0 or toks[k - 1].text in (".", "!", "?", ";") or after_and):
+            continue
+        j, head = k, None
+        while j < n and j - k < 4 and j not in covered and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+            j += 1
+            if singular(toks[j - 1].text) != toks[j - 1].text:
+                head = j - 1  # the plural ends the phrase
+                break
+        after = toks[j].text if j < n else "."
+        verb = after[:1].isalpha() and (after not in _STOP or after in _FINITE)
+        # a listed noun there is a verb when an object follows it ("cans litter the floor")
+        verb = verb and (j not in covered or (j + 1 < n and toks[j + 1].text in _OBJECT_OPENERS))
+        if head is None or toks[head].quoted or not (after == "and" or verb):
+            continue
+        word = toks[head].text
+        if not vocabulary.is_thing_word(word) or _participle(word) or word in _QUANTITY:
+            continue
+        entry = _guess(toks, head, toks[k:head])
+        out.append((head, head + 1, entry.category, entry))
+        covered.add(head)
+    return out
 
 
 def _opens_phrase(toks: list[_Tok], k: int) -> bool:
