@@ -478,3 +478,15 @@ def test_each_of_them_is_one_per_member():
 def test_her_names_a_person_before_an_animal():
     found = rels("A potter kneels by the wheel while her dog sleeps in a crate beside her.")
     assert ("crate_1", "side of", "potter_1") in found, found
+
+
+def test_each_before_a_place_gives_every_member_its_own_target():
+    parsed = parse_scene("Three archers wait by the wall, each on a wooden crate.")
+    assert sum(o.category == "crate" for o in parsed.objects) == 3
+    found = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert {("archer_1", "on", "crate_1"), ("archer_2", "on", "crate_2"), ("archer_3", "on", "crate_3")} <= found
+
+
+def test_them_names_the_people_not_the_seats_they_sit_on():
+    found = rels("Two clerks sit at the desk, each on a tall stool. Across from them, a porter waits.")
+    assert ("porter_1", "in front of", "clerk_1") in found, found

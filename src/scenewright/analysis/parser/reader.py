@@ -74,6 +74,8 @@ class _Clause:
     wsub_before: list[int] = field(default_factory=list)
     #: The group "each"/"every" distributes over: its with-parts and flankers come once per member.
     each: int | None = None
+    #: The group whose members each have their own target of the next placing ("each in a seat").
+    each_own: int | None = None
 
 
 #: Phrases that place a group in a formation rather than by a target.
@@ -647,7 +649,13 @@ class _Reader:
         # on it. A rug lies in front of it": the nightstand)
         # (above a small thing is fine: "a register on the counter, and a hologram floats above it")
         big = bool(srcs) and not self._small(*srcs) and kind not in ("above", "over")
-        for fits in ((lambda g: not (big and self._small(g))), (lambda g: True)):
+        # the people on seats, not the seats ("two helmsmen, each in a seat. Across from them, ...")
+        sat_on = {r[2] for r in self.relations if r[0] == "on" and self._person_at(r[1]) and r[1] in recent}
+        for fits in (
+            (lambda g: not (big and self._small(g)) and g not in sat_on),
+            (lambda g: not (big and self._small(g))),
+            (lambda g: True),
+        ):
             for g in recent:
                 if (self.groups[g].count > 1) == plural and fits(g):
                     return [g]
@@ -684,6 +692,11 @@ class _Reader:
                 plural = [g for g in [*self.history, *c.groups] if self.groups[g].count > 1]
                 if plural:
                     c.each = plural[-1]
+                k += 1
+                continue
+            members = c.main or list(prev_subject)
+            if w == "each" and k + 1 in self.rel_at and members and self.groups[members[-1]].count > 1:
+                c.each_own = members[-1]  # "two helmsmen sit ..., each in a steel seat": a seat each
                 k += 1
                 continue
             holder = c.main or list(prev_subject)  # ", peering through a loupe": the subject before
@@ -1020,6 +1033,11 @@ class _Reader:
         assert isinstance(targets, list)
         instance = self.instance.get(self._target_start) if isinstance(target, list) else None
         tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
+        if c.each_own is not None and tm is not None and not tm.definite and not tm.each:
+            srcs = [c.each_own]
+            for t in targets:
+                self._per_each([t], c.each_own)
+            c.each_own = None
         if tm is not None and tm.each:  # "a candle on every table": one per table
             self._per_each([s for s in srcs if s in c.groups], targets[0])
         for t in targets:
