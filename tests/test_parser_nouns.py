@@ -273,3 +273,11 @@ def test_bare_plurals_that_open_a_sentence_as_its_subject_are_things():
     got = objects("Paper lanternlets and soda glimmerjars clutter the desk. Rows of sheds run down the hill.")
     assert got[("thing", "lanternlet")] == 3 and got[("thing", "glimmerjar")] == 3, got
     assert not any(word == "row" for _, word in got)
+
+
+def test_a_compound_written_open_is_the_closed_one():
+    assert objects("A book case stands by the wall.") == Counter({("bookshelf", "case"): 1})
+
+
+def test_a_known_noun_in_a_hyphened_look_does_not_hide_the_thing():
+    assert objects("A fox-shaped glimmerlamp hangs above the door.") == Counter({("thing", "glimmerlamp"): 1})

@@ -98,7 +98,8 @@ def _match_at(toks: list[_Tok], i: int) -> tuple[int, str, Entry | None] | None:
         words = tuple(t.text for t in toks[i : i + length])
         if any(not w[0].isalpha() for w in words):
             continue
-        cat = match_phrase(words)
+        # "a cork board" is the catalogue's corkboard: a compound written open or closed
+        cat = match_phrase(words) or (match_phrase(("".join(words),)) if length == 2 else None)
         if cat:
             return i + length, cat, None
         entry = vocabulary.match(words)
@@ -470,8 +471,13 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         if w == "a" and j < n and toks[j].text in ("few", "couple", "pair", "dozen"):
             continue  # the count of a phrase read by its own rules
         head = None
+        looks: set[int] = set()  # "a whale-shaped weathervane": a known noun in a hyphened look
         while j < n and j - i <= 5:
             x = toks[j].text
+            if j in covered and j + 1 < n and toks[j + 1].joined and toks[j + 1].text in _LIKENESS:
+                looks.add(j)
+                j += 1
+                continue
             if j in covered or not x[:1].isalpha() or x in _STOP:
                 break
             if j > i + 1 and not plural and _is_verb(x):
@@ -484,7 +490,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             j += 1
             if plural and singular(x) != x:
                 break  # "three zorbs glow": the plural noun ends the phrase
-        if head is None or any(k in covered for k in range(i + 1, head + 1)) or toks[head].quoted:
+        known = any(k in covered and k not in looks for k in range(i + 1, head + 1)) if head is not None else False
+        if head is None or known or toks[head].quoted:
             continue
         if j < n and j in covered:
             continue  # the words before a known noun are its adjectives ("a shiny [robot]")
