@@ -490,3 +490,8 @@ def test_each_before_a_place_gives_every_member_its_own_target():
 def test_them_names_the_people_not_the_seats_they_sit_on():
     found = rels("Two clerks sit at the desk, each on a tall stool. Across from them, a porter waits.")
     assert ("porter_1", "in front of", "clerk_1") in found, found
+
+
+def test_at_each_end_of_a_thing_is_one_at_either_end():
+    found = rels("A long table fills the hall, and a candelabrum stands at either end of it.")
+    assert {("candelabrum_1", "left of", "table_1"), ("candelabrum_2", "right of", "table_1")} <= found, found
