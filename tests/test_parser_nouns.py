@@ -201,3 +201,83 @@ def test_big_things_stacked_on_shelves_are_objects_small_ones_contents():
 def test_a_preposition_after_a_noun_names_no_kind_of_it():
     got = names("A porter pushes a wheelchair past the lockers, and a kiosk stands beyond the gate.")
     assert "wheelchair" in got and "kiosk" in got, got
+
+
+@pytest.mark.parametrize(
+    "text, person",
+    [
+        ("The elderly locksmith kneels by the front door.", "locksmith"),  # definite, -smith
+        ("The young dressmaker sits at the window.", "dressmaker"),  # definite, -maker
+        ("A cheerful cashier hums by the till.", "cashier"),  # a mood only people have
+        ("A drover whistles while a courier waves from the gate.", "courier"),  # a verb only people do
+        ("A radar operator hunches over the console.", "operator"),  # a person verb beats "-ator"
+        ("Their abbot, a thin old man with a grey beard, prays by the altar.", "abbot"),  # an apposition
+    ],
+)
+def test_role_nouns_the_catalogue_lacks_are_people(text, person):
+    found = {o.name.split()[-1].lower(): o for o in parse_scene(text).objects}
+    assert person in found and found[person].category == "figure", found
+
+
+def test_a_definite_noun_nobody_listed_is_read_only_as_a_person():
+    assert not parse_scene("The far end of the yard is quiet, and the gloom settles.").objects
+
+
+def test_an_apposition_renames_and_adds_no_object():
+    got = objects("The ferryman, a stooped old man with a white moustache, waits by the jetty.")
+    assert got == Counter({("figure", "ferryman"): 1, ("pier", "jetty"): 1})
+    # "its owner" only says whose: the person the apposition names is kept instead
+    got = objects("A kiln stands in the yard, and its owner, a young woman in an apron, sits beside it.")
+    assert got[("figure", "woman")] == 1 and not got[("figure", "owner")]
+
+
+def test_a_list_that_names_the_kinds_of_a_counted_plural_adds_nothing():
+    got = objects("Three toy figures, a pirate, a diver and a clown, stand on the windowsill.")
+    assert sum(n for (category, _), n in got.items() if category == "figure") == 3
+    # no closing comma: a list of things of its own
+    assert objects("Two stools, a table and a lamp stand in the room.")[("table_lamp", "lamp")] == 1
+
+
+def test_a_noun_before_a_catalogue_head_names_its_kind_but_not_its_category():
+    assert names("A bowling lane ends at a croquet cart.") >= {"croquet cart"}
+    found = parse_scene("A kitchen table, an oak table and a wooden table stand in the hall.").objects
+    assert [o.category for o in found] == ["table"] * 3
+
+
+def test_a_known_noun_before_an_unknown_one_is_its_modifier():
+    found = {o.name: o for o in parse_scene("A hose reel sits by the wall, next to a barrel winch.").objects}
+    assert {"hose reel", "barrel winch"} <= set(found), found
+    # a verb after a plural subject is no head: "three ducks paddle"
+    assert "duck paddle" not in names("Three ducks paddle across the pond.")
+
+
+def test_a_counted_place_word_is_a_row_of_things():
+    got = objects("A small velodrome with six tracks side by side, and a bench stands in front of every track.")
+    assert got[("thing", "track")] == 6 and got[("bench", "bench")] == 6
+
+
+def test_a_definite_noun_nobody_listed_that_opens_a_placed_clause_is_a_thing():
+    assert objects("The quern sits on the table.")[("thing", "quern")] == 1
+
+
+def test_a_noun_ending_in_s_after_a_determiner_is_no_verb():
+    assert "news van" in names("A news van waits by the gate.")
+
+
+def test_a_flock_or_a_herd_is_many():
+    got = objects("A herd of goats grazes by the wall, and a flock of geese waddles past.")
+    assert got[("animal", "goat")] >= 5 and got[("bird", "goose")] >= 5, got
+
+
+def test_bare_plurals_that_open_a_sentence_as_its_subject_are_things():
+    got = objects("Paper lanternlets and soda glimmerjars clutter the desk. Rows of sheds run down the hill.")
+    assert got[("thing", "lanternlet")] == 3 and got[("thing", "glimmerjar")] == 3, got
+    assert not any(word == "row" for _, word in got)
+
+
+def test_a_compound_written_open_is_the_closed_one():
+    assert objects("A book case stands by the wall.") == Counter({("bookshelf", "case"): 1})
+
+
+def test_a_known_noun_in_a_hyphened_look_does_not_hide_the_thing():
+    assert objects("A fox-shaped glimmerlamp hangs above the door.") == Counter({("thing", "glimmerlamp"): 1})

@@ -2,6 +2,8 @@
 
 Every case here was read wrong (or not at all) by the reader before the parser was split."""
 
+from collections import Counter
+
 import pytest
 
 from scenewright.analysis.parser import parse_scene
@@ -125,8 +127,9 @@ def test_with_after_a_persons_target_belongs_to_the_target():
     assert ("plate_1", "on", "counter_1") in found and ("baker_1", "behind", "counter_1") in found
 
 
-def test_what_a_person_holds_is_beside_them():
-    assert rels("A brave knight stands at the entrance, holding a shield.") == {("shield_1", "side of", "knight_1")}
+def test_what_a_person_holds_is_carried_by_them():
+    # held things are on their holder (the convention of the fresh-5..7 annotations), not beside them
+    assert rels("A brave knight stands at the entrance, holding a shield.") == {("shield_1", "on", "knight_1")}
 
 
 def test_between_two_rows_of_a_plant():
@@ -431,3 +434,64 @@ def test_a_tall_thing_on_the_wall_can_be_above():
     found = rels("Above the sofa, a tall shelf on the back wall holds plants.")
     assert ("bookshelf_1", "above", "sofa_1") in found
     assert ("pine_tree_1", "near", "pond_1") in rels("A tall pine stands above the pond.")
+
+
+@pytest.mark.parametrize(
+    "text, thing, holder",
+    [
+        ("A shepherd with a crook stands by the gate.", "crook_1", "shepherd_1"),  # "with" and a small thing
+        ("A juggler brandishes a torch beside the fountain.", "torch_1", "juggler_1"),  # a hand verb
+        ("A lady sips from a teacup near the piano.", "cup_1", "lady_1"),  # a verb pair
+        ("A sailor sits on a crate, squinting through a spyglass.", "spyglass_1", "sailor_1"),  # the subject before
+        ("A woman waits by the flag with her mallet.", "mallet_1", "woman_1"),  # "with his": in hand
+    ],
+)
+def test_a_thing_in_hand_is_carried_by_its_holder(text, thing, holder):
+    assert (thing, "on", holder) in rels(text)
+
+
+def test_the_holder_keeps_the_place_and_a_horse_is_no_load():
+    found = rels("A groom with his whip stands beside the stable.")
+    assert ("groom_1", "side of", "barn_1") in found and ("whip_1", "on", "groom_1") in found
+    found = rels("A stable boy is holding a pony by the bridle.")
+    assert not any(r == "on" for s, r, t in found if s == "horse_1")
+
+
+def test_a_thing_in_hand_comes_once_per_holder():
+    parsed = parse_scene("Four porters with trolleys wait by the door.")
+    assert sum(o.name == "trolley" for o in parsed.objects) == 4
+    parsed = parse_scene("Two buses stand at the kerb, and a driver with a lantern waits beside each of them.")
+    counts = Counter(o.category for o in parsed.objects)
+    assert counts["figure"] == 2 and counts["lantern"] == 2, counts
+
+
+def test_a_thing_placed_on_its_own_is_not_in_hand():
+    found = rels("A clerk stands at the desk, with a stapler beside it.")
+    assert ("stapler_1", "on", "clerk_1") not in found
+
+
+def test_each_of_them_is_one_per_member():
+    parsed = parse_scene("Four easels stand in a row, and a stool stands in front of each of them.")
+    assert sum(o.category == "stool" for o in parsed.objects) == 4
+
+
+def test_her_names_a_person_before_an_animal():
+    found = rels("A potter kneels by the wheel while her dog sleeps in a crate beside her.")
+    assert ("crate_1", "side of", "potter_1") in found, found
+
+
+def test_each_before_a_place_gives_every_member_its_own_target():
+    parsed = parse_scene("Three archers wait by the wall, each on a wooden crate.")
+    assert sum(o.category == "crate" for o in parsed.objects) == 3
+    found = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert {("archer_1", "on", "crate_1"), ("archer_2", "on", "crate_2"), ("archer_3", "on", "crate_3")} <= found
+
+
+def test_them_names_the_people_not_the_seats_they_sit_on():
+    found = rels("Two clerks sit at the desk, each on a tall stool. Across from them, a porter waits.")
+    assert ("porter_1", "in front of", "clerk_1") in found, found
+
+
+def test_at_each_end_of_a_thing_is_one_at_either_end():
+    found = rels("A long table fills the hall, and a candelabrum stands at either end of it.")
+    assert {("candelabrum_1", "left of", "table_1"), ("candelabrum_2", "right of", "table_1")} <= found, found

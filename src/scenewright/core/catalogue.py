@@ -43,7 +43,7 @@ _WORD = re.compile(r"[^\W_]+(?:['’][^\W\d_]+)?")  # letters of any script: "ca
 _IRREGULAR = {"cacti": "cactus", "mice": "mouse", "geese": "goose", "people": "person", "children": "child",
               "taxis": "taxi", "buses": "bus", "octopuses": "octopus", "walruses": "walrus", "cactuses": "cactus",
               "thermoses": "thermos", "canvases": "canvas", "lenses": "lens", "atlases": "atlas",
-              "canvas": "canvas", "atlas": "atlas", "oxen": "ox"}
+              "canvas": "canvas", "atlas": "atlas", "oxen": "ox", "axes": "axe", "pickaxes": "pickaxe"}
 #: Plurals in -ves of nouns in -f or -fe other than those in -lf ("knives"); the rest drop the s ("hives").
 _F_PLURALS = {"knives": "knife", "wives": "wife", "lives": "life", "leaves": "leaf", "loaves": "loaf",
               "thieves": "thief", "sheaves": "sheaf", "scarves": "scarf", "hooves": "hoof", "wharves": "wharf",

@@ -13,11 +13,15 @@ from scenewright.analysis.parser.words import (
     _DEFINITE,
     _DETERMINERS,
     _NUMBERS,
+    _ORDINALS,
     _QUANTITY,
     _STOP,
     _UNITS,
     _VAGUE,
     _FINITE,
+    _HAND_VERBS,
+    _HANG_VERBS,
+    _HOLD,
     _PLANT_SHAPES,
     _PREPOSITIONS,
     _is_verb,
@@ -94,7 +98,8 @@ def _match_at(toks: list[_Tok], i: int) -> tuple[int, str, Entry | None] | None:
         words = tuple(t.text for t in toks[i : i + length])
         if any(not w[0].isalpha() for w in words):
             continue
-        cat = match_phrase(words)
+        # "a cork board" is the catalogue's corkboard: a compound written open or closed
+        cat = match_phrase(words) or (match_phrase(("".join(words),)) if length == 2 else None)
         if cat:
             return i + length, cat, None
         entry = vocabulary.match(words)
@@ -190,7 +195,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             machine = match_phrase(tuple(kind))
             if machine is not None and load_catalogue()[machine].shape == "robot":
                 cat, entry = machine, None  # "a robot bartender" is a robot that tends the bar
-        if entry is not None and s > 0 and (_is_verb(toks[s - 1].text) or (k > 0 and raw[k - 1][1] == s and not kind)):
+        verb_before = s > 0 and _is_verb(toks[s - 1].text) and not _opens_phrase(toks, s - 1)  # not "a news helicopter"
+        if entry is not None and (verb_before or (k > 0 and raw[k - 1][1] == s and not kind)):
             continue  # "two robots stand guard", "fox statues guard the path": a verb here
         follow = toks[e].text if e < n else ""
         if e < n and toks[e].joined and (toks[e].text in _LIKENESS or toks[e].text.endswith("ing")):
@@ -444,26 +450,34 @@ def later_before(later: list, toks: list[_Tok], e: int) -> bool:
 
 def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None]]) -> list:
     """Noun phrases whose head neither the catalogue nor the vocabulary knows ("a zorbulator",
-    "three glimmerwings"): counted phrases only, and only heads that can name a thing."""
+    "three glimmerwings"): counted phrases only, and only heads that can name a thing; after
+    "the" or a possessive, only a person ("the old watchmaker sits") or a thing in hand ("with
+    his putter")."""
     vocabulary = load_vocabulary()
     covered = {k for s, e, _, _ in raw for k in range(s, e)}
     out = []
     n = len(toks)
     for i, t in enumerate(toks):
         w = t.text
-        owner = w in _OWNERS  # only for a thing held: "his hat in his hands"
-        counter = owner or w in ("a", "an", "another") or w in _NUMBERS or w in _VAGUE or w.isdigit() or (
+        owner = w in _OWNERS  # only for a thing held ("his hat in his hands") or a person ("their sensei, ...")
+        definite = owner or w == "the"  # only for a person ("the old watchmaker sits ...")
+        counter = definite or w in ("a", "an", "another") or w in _NUMBERS or w in _VAGUE or w.isdigit() or (
             w == "of" and i > 0 and toks[i - 1].text in _QUANTITY
         )
         if not counter or w == "one" and i + 1 < n and toks[i + 1].text in ("of", "another", "other"):
             continue
-        plural = w not in ("a", "an", "another", "one", *_OWNERS) and not (w.isdigit() and int(w) == 1)
+        plural = w not in ("a", "an", "another", "one", "the", *_OWNERS) and not (w.isdigit() and int(w) == 1)
         j = i + 1
         if w == "a" and j < n and toks[j].text in ("few", "couple", "pair", "dozen"):
             continue  # the count of a phrase read by its own rules
         head = None
+        looks: set[int] = set()  # "a whale-shaped weathervane": a known noun in a hyphened look
         while j < n and j - i <= 5:
             x = toks[j].text
+            if j in covered and j + 1 < n and toks[j + 1].joined and toks[j + 1].text in _LIKENESS:
+                looks.add(j)
+                j += 1
+                continue
             if j in covered or not x[:1].isalpha() or x in _STOP:
                 break
             if j > i + 1 and not plural and _is_verb(x):
@@ -476,44 +490,184 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             j += 1
             if plural and singular(x) != x:
                 break  # "three zorbs glow": the plural noun ends the phrase
-        if head is None or any(k in covered for k in range(i + 1, head + 1)) or toks[head].quoted:
+        known = any(k in covered and k not in looks for k in range(i + 1, head + 1)) if head is not None else False
+        if head is None or known or toks[head].quoted:
             continue
         if j < n and j in covered:
             continue  # the words before a known noun are its adjectives ("a shiny [robot]")
         word = toks[head].text
-        held = _held(toks, head)
-        if owner and not held:
-            continue
-        if not (vocabulary.is_thing_word(word) or held) or word in _QUANTITY or (j < n and toks[j].text == "of"):
+        held = _held(toks, head) or (owner and _in_hand(toks, i) and vocabulary.is_thing_word(word))
+        if held:
+            definite = False
+        # "eight lanes side by side": a setting is never counted, so a counted place is a row of things
+        one = singular(word)
+        counted_place = _NUMBERS.get(w, 0) > 1 and one != word and one in vocabulary.places and one not in _VENUES
+        if not (vocabulary.is_thing_word(word) or held or counted_place) or word in _QUANTITY or (
+            j < n and toks[j].text == "of"
+        ):
             continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"
-        entry = vocabulary.guess(word)
-        if entry.category == GENERIC:
-            entry = vocabulary.guess_agent(word, _acts_as_person(toks, head + 1)) or entry  # "four pickers work"
+        entry = _guess(toks, head, toks[max(i - 1, 0) : head])
+        opening = i == 0 or not toks[i - 1].text[:1].isalpha()
+        placed = w == "the" and opening and j < n and toks[j].text in _PLACING_VERBS
+        if definite and entry.category != "figure" and not placed:
+            continue  # "the far end", "her turn": after "the" or "her", only a person is read, or a
+            # subject that opens a clause standing somewhere ("The periscope rises in the middle")
+        out.append((head, head + 1, entry.category, entry))
+        covered.add(head)
+    out += _bare_subjects(toks, covered)
+    return out + _unknown_heads(toks, raw, covered)
+
+
+def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
+    """Bare plurals nobody listed that open a sentence as its subject ("Noodle cartons and soda
+    cans litter the floor"): no count, but a verb (or "and" and another such plural) follows."""
+    vocabulary = load_vocabulary()
+    out: list = []
+    n = len(toks)
+    for k in range(n):
+        after_and = k > 0 and toks[k - 1].text == "and" and bool(out) and out[-1][1] == k - 1
+        if not (k == 0 or toks[k - 1].text in (".", "!", "?", ";") or after_and):
+            continue
+        j, head = k, None
+        while j < n and j - k < 4 and j not in covered and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+            j += 1
+            if singular(toks[j - 1].text) != toks[j - 1].text:
+                head = j - 1  # the plural ends the phrase
+                break
+        after = toks[j].text if j < n else "."
+        verb = after[:1].isalpha() and (after not in _STOP or after in _FINITE)
+        # a listed noun there is a verb when an object follows it ("cans litter the floor")
+        verb = verb and (j not in covered or (j + 1 < n and toks[j + 1].text in _OBJECT_OPENERS))
+        if head is None or toks[head].quoted or not (after == "and" or verb):
+            continue
+        word = toks[head].text
+        if not vocabulary.is_thing_word(word) or _participle(word) or word in _QUANTITY:
+            continue
+        entry = _guess(toks, head, toks[k:head])
         out.append((head, head + 1, entry.category, entry))
         covered.add(head)
     return out
+
+
+def _opens_phrase(toks: list[_Tok], k: int) -> bool:
+    """The word at ``k`` is inside a noun phrase's opening: a determiner, a count or a describing
+    word stands right before it ("a [golf] cart", "two small [ball] returns"), not a noun whose
+    verb it is ("robots [sell] orbs")."""
+    before = toks[k - 1].text if k > 0 else ""
+    return (
+        before in _DETERMINERS or before in _NUMBERS or before in _VAGUE or before == "of"
+        or load_vocabulary().is_adjective(before)
+    )  # fmt: skip
+
+
+#: Verbs that place their subject: a definite noun nobody listed before one is a thing of the scene.
+_PLACING_VERBS = _HANG_VERBS | {"stands", "sits", "lies", "rises", "rests", "leans", "waits", "towers", "looms"}
+
+
+def _unknown_heads(toks: list[_Tok], raw: list, covered: set[int]) -> list:
+    """A known noun right before a noun nobody listed names that noun's kind ("a ball return",
+    "a wheel gun", "a horse trough"): the unknown noun is the thing, the known one its modifier."""
+    vocabulary = load_vocabulary()
+    out = []
+    for s, e, _, _ in raw:
+        k = e
+        if e - s != 1 or k >= len(toks) or k in covered or toks[k].quoted or toks[k].joined or toks[s].joined:
+            continue
+        word, known = toks[k].text, toks[s].text
+        if singular(known) != known or word in _STOP or word in _FINITE or _is_verb(word) or _participle(word):
+            continue
+        if word in _ADVERB_NOUNS or word in _ORDINALS:
+            continue  # "the counter right next to the till", "the stall left of the gate"
+        verb = word in _HANG_VERBS or word in vocabulary.person_verbs  # "holographic koi swim"
+        if verb or not _opens_phrase(toks, s) or (_counted_plural(toks, s) and singular(word) == word):
+            continue  # "robots sell orbs", "three koi swim": a verb after its subject
+        if not vocabulary.is_thing_word(word) or vocabulary.is_adjective(word) or word in _QUANTITY:
+            continue
+        after = toks[k + 1].text if k + 1 < len(toks) else "."
+        if k + 1 not in covered and after[:1].isalpha() and after not in _STOP and not _is_verb(after):
+            continue  # a longer phrase than two nouns: left to the other rules
+        entry = _guess(toks, k, toks[max(s - 3, 0) : k])
+        out.append((k, k + 1, entry.category, entry))
+        covered.add(k)
+    return out
+
+
+def _guess(toks: list[_Tok], head: int, before: list[_Tok]) -> Entry:
+    """What a noun nobody listed names, by its ending and by what the text has it do: "four
+    pickers work", "a bored attendant", "a marshal waves", "their sensei, an old man, ..."; a
+    person verb beats an ending that looks like a machine's ("a sonar operator hunches"). The
+    verb after a "with" thing is its owner's ("a mechanic with a wheel gun kneels")."""
+    vocabulary = load_vocabulary()
+    word = toks[head].text
+    entry = vocabulary.guess(word)
+    if any(t.text == "with" for t in before):
+        return entry
+    human = _does_what_people_do(toks, head + 1) or _person_apposition(toks, head + 1)
+    moody = any(t.text in vocabulary.moods for t in before)
+    if entry.category == GENERIC or (human and entry.category == "machine"):
+        entry = vocabulary.guess_agent(word, moody or _acts_as_person(toks, head + 1), human) or entry
+    return entry
 
 
 #: Verbs that only carry the verb after them ("a picker is working").
 _AUXILIARIES = {"is", "are", "was", "were", "has", "have", "been", "be", "busily", "quietly", "still"}
 
 
-def _acts_as_person(toks: list[_Tok], k: int) -> bool:
-    """Whether the subject ending at ``k`` does what people do: a person verb ("a picker is
-    working", "a welder kneels"), or a deed done to a thing ("a farrier is shoeing a horse")."""
+def _verb_after(toks: list[_Tok], k: int) -> tuple[str, int] | None:
+    """The verb after the subject ending at ``k`` (auxiliaries skipped) and where it stands."""
     start = k
     while k < len(toks) and toks[k].text in _AUXILIARIES:
         k += 1
-    if k >= len(toks):
+    return (toks[k].text, k - start) if k < len(toks) else None
+
+
+def _acts_as_person(toks: list[_Tok], k: int) -> bool:
+    """Whether the subject ending at ``k`` does what people do: a person verb ("a picker is
+    working", "a welder kneels"), or a deed done to a thing ("a farrier is shoeing a horse")."""
+    found = _verb_after(toks, k)
+    if found is None:
         return False
-    verb = toks[k].text
+    verb, skipped = found
     if verb in load_vocabulary().person_verbs:
         return True
-    return k > start and verb.endswith("ing") and k + 1 < len(toks) and toks[k + 1].text in _DETERMINERS
+    k += skipped
+    return skipped > 0 and verb.endswith("ing") and k + 1 < len(toks) and toks[k + 1].text in _DETERMINERS
+
+
+def _does_what_people_do(toks: list[_Tok], k: int) -> bool:
+    """A person verb animals do not share follows the subject ending at ``k`` ("a marshal waves")."""
+    found = _verb_after(toks, k)
+    vocabulary = load_vocabulary()
+    return found is not None and found[0] in vocabulary.person_verbs and found[0] not in vocabulary.animal_verbs
+
+
+#: Words an apposition may open with before the person it names ("their sensei, a tiny old man, ...").
+_APPOSITION_OPENERS = {"a", "an", "the"}
+
+
+def _person_apposition(toks: list[_Tok], k: int) -> bool:
+    """A comma after the noun ending at ``k`` opens a phrase naming a person ("the keeper, an
+    old woman in an oilskin, ..."): the noun names that person."""
+    if k + 2 >= len(toks) or toks[k].text != "," or toks[k + 1].text not in _APPOSITION_OPENERS:
+        return False
+    vocabulary = load_vocabulary()
+    for t in toks[k + 2 : k + 7]:
+        if t.text in vocabulary.male or t.text in vocabulary.female or t.text in ("person", "figure"):
+            return True
+        if not t.text[:1].isalpha() or t.text in _STOP:
+            return False
+    return False
 
 
 #: Possessives that open a held thing's phrase.
 _OWNERS = ("his", "her", "their")
+def _in_hand(toks: list[_Tok], owner: int) -> bool:
+    """The possessive at ``owner`` opens a thing someone holds: "with his putter", "clutching
+    her umbrella"."""
+    before = toks[owner - 1].text if owner > 0 else ""
+    return before == "with" or before in _HOLD or before in _HAND_VERBS
+
+
 #: Body parts that hold what is named right before "in his/her/their ...".
 _HOLDING_PARTS = {"hand", "hands", "arms", "grip", "fist", "lap"}
 
@@ -569,6 +723,47 @@ def _alias_mentions(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention
     return sorted(mentions + extra, key=lambda m: m.start)
 
 
+def _mark_appositions(toks: list[_Tok], mentions: list[_Mention]) -> None:
+    """Noun phrases that only rename the one before are no objects of their own: a person after
+    a person's comma ("the puppeteer, a round-faced woman, kneels"; the other way round after a
+    word like "owner"), and the kinds of a counted
+    plural, one each, closed by a comma ("two hand puppets, a crocodile and a policeman, lie ...")."""
+    for k, m in enumerate(mentions):
+        if m.end >= len(toks) or toks[m.end].text != ",":
+            continue
+        later = [x for x in mentions[k + 1 :] if not x.content]
+        if _is_plural(toks, m):
+            kinds = later[: m.count] if m.counted and len(later) >= m.count >= 2 else []
+            renamed = kinds and all(
+                _renames(toks, kinds[i - 1].end if i else m.end, x.start, i > 0) for i, x in enumerate(kinds)
+            )
+            if renamed and kinds[-1].end < len(toks) and toks[kinds[-1].end].text == ",":
+                for x in kinds:
+                    x.content = True
+        elif _person_mention(m) and later and _person_mention(later[0]) and _renames(toks, m.end, later[0].start):
+            # the role is the name ("the keeper, an old woman"); a word that only says whose
+            # ("its owner, a girl in goggles") gives way to the person
+            relational = singular(m.phrase.split()[-1].lower()) in load_vocabulary().relational
+            (m if relational else later[0]).content = True
+
+
+def _person_mention(m: _Mention) -> bool:
+    """A person: a figure of the catalogue or of the open vocabulary."""
+    return load_catalogue()[m.category].shape == "figure"
+
+
+def _renames(toks: list[_Tok], start: int, end: int, listed: bool = False) -> bool:
+    """Only a comma (or, in a list, "and"), "a"/"an" and describing words lie between ``start``
+    and ``end``: "…, a tiny old [man]", "… and a [policeman]"."""
+    words = [t.text for t in toks[start:end]]
+    joins = ([","], [",", "and"], ["and"]) if listed else ([","],)
+    for join in joins:
+        rest = words[len(join) :]
+        if words[: len(join)] == join and rest and rest[0] in ("a", "an"):
+            return all(w not in _STOP and (w[:1].isalpha() or w == "-") for w in rest[1:])
+    return False
+
+
 def _is_plural(toks: list[_Tok], m: _Mention) -> bool:
     words = [t.text for t in toks[m.start : m.end]]
     if "of" in words[1:]:
@@ -604,8 +799,9 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         w = t.text
         if w in _NUMBERS and not toks[j + 1].joined:
             count, counted = _NUMBERS[w], True
-            # "above one bench", "between every two benches": of those already there, if any
-            m.definite = w == "one" or (j > 0 and toks[j - 1].text in ("every", "each"))
+            # "above one bench", "between every two benches", "the two nearest benches": of those
+            # already there, if any
+            m.definite = w == "one" or (j > 0 and toks[j - 1].text in ("every", "each", *_DEFINITE))
             break
         if toks[j + 1].joined and adjectives:  # "three-tiered", "red-and-white": one adjective
             adjectives[0] = f"{t.orig}-{adjectives[0]}"

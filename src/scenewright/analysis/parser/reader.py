@@ -12,6 +12,8 @@ from scenewright.analysis.parser.nouns import (
     _Mention,
     _find_mentions,
     _is_plural,
+    _mark_appositions,
+    _opens_phrase,
     _position_adjective,
     _post_description,
     _read_count,
@@ -25,6 +27,8 @@ from scenewright.analysis.parser.words import (
     _CONTENT_HEADS,
     _CONTENT_MARKERS,
     _DETERMINERS,
+    _HAND_PAIRS,
+    _HAND_VERBS,
     _HANG_VERBS,
     _HOLD,
     _HOLD_PAIRS,
@@ -48,6 +52,9 @@ class _Clause:
     head: list[int] | None = None  # what a "with" part hangs from
     wsub: list[int] = field(default_factory=list)
     hold: bool = False
+    #: The with-things are in a person's hands ("with his putter", "waves a flag"): carried by
+    #: the holder, who keeps the clause's next placing.
+    hand: bool = False
     wsub_related: set[int] = field(default_factory=set)
     last_target: list[int] = field(default_factory=list)
     last_target_end: int = -1
@@ -67,6 +74,8 @@ class _Clause:
     wsub_before: list[int] = field(default_factory=list)
     #: The group "each"/"every" distributes over: its with-parts and flankers come once per member.
     each: int | None = None
+    #: The group whose members each have their own target of the next placing ("each in a seat").
+    each_own: int | None = None
 
 
 #: Phrases that place a group in a formation rather than by a target.
@@ -117,6 +126,8 @@ _COPULAS = ("is", "are", "was", "were", "be", "has", "have", "had", "seems", "lo
 _PERSONAL = ("him", "her", "himself", "herself")
 #: Possessives of people and the pronoun that names their owner ("at his feet" → him).
 _PERSON_POSSESSIVES = {"his": "him", "her": "her", "their": "them living", "my": "him", "your": "him"}
+#: The longest side (m) of a thing a person has in hand when the text says "with" ("a wheel gun").
+_HANDHELD_SIZE = 1.0
 #: Categories and shapes of living things ("him", "her" name one of them).
 _LIVING = frozenset({"figure", "animal", "bird", "robot"})
 
@@ -161,6 +172,7 @@ class _Reader:
             m.category = "round_table"
         if adjectives & {"potted", "pot"} and self.catalogue[m.category].shape in _PLANT_SHAPES:
             m.category, m.guess = "potted_plant", None  # "a potted palm" is a house plant, not a 6 m tree
+        vocabulary = load_vocabulary()
         cat: Category = self.catalogue[m.category]
         name = m.phrase.lower()
         if _is_plural(self.toks, m):
@@ -170,9 +182,15 @@ class _Reader:
         describing = [a.lower() for a in m.adjectives]
         if kind and describing[-len(kind) :] == kind:
             describing = describing[: -len(kind)]
-        vocabulary = load_vocabulary()
-        if m.guess is not None and not kind and describing and not vocabulary.is_adjective(describing[-1]):
-            kind = describing[-1:]  # "a street musician": the noun before names its kind
+        last = describing[-1] if describing else ""
+        # a material makes a likeness of a living thing: its name keeps it ("a rubber chicken")
+        likeness = last in vocabulary.materials and self._lives(m.category)
+        kind_here = _opens_phrase(self.toks, m.start - 1) if m.guess is None else True
+        if not kind and last and kind_here and not vocabulary.is_adjective(last) and (
+            m.guess is not None or last not in vocabulary.not_things or likeness
+        ):  # "a street musician", "a golf cart", "a taiko drum": the noun before names its kind
+            # (a material, a place or a time before a catalogue thing does not: "an oak table")
+            kind = describing[-1:]
             describing = describing[:-1]
         name = " ".join([*kind, name])
         description = " ".join([*describing, name, *m.post]).strip()
@@ -184,6 +202,9 @@ class _Reader:
         g.guessed = m.guess is not None
         g.sized = bool(sizes)
         self.groups.append(g)
+        default = 3 if _is_plural(self.toks, m) else 1  # what an uncounted phrase gets
+        if (m.counted and m.count > 1) or (not m.counted and m.count != default):  # "three", "many"
+            self.numbered.add(g.index)
         self._formation_before(m, g)
         return g.index
 
@@ -255,7 +276,12 @@ class _Reader:
             prev_end = m.end
         #: (mention start, holder mention start): "a tray of bottles" puts the bottles on the tray.
         self.held_of: list[tuple[int, int]] = []
+        #: (thing, person): a thing in its holder's hands ("a miner with a pickaxe").
+        self.in_hand: list[tuple[int, int]] = []
+        #: Groups whose count the text gives by a number or a vague word ("three", "a few").
+        self.numbered: set[int] = set()
         self._mark_contents(mentions)
+        _mark_appositions(toks, mentions)
         self.size_of: dict[int, list[tuple[str, float]]] = {}
         for s, e, dim, value in _read_sizes(toks):
             owner = self._size_owner(mentions, s, e)
@@ -312,6 +338,14 @@ class _Reader:
         held = [("on", by_start[s].group, by_start[h].group, None) for s, h in self.held_of
                 if by_start[s].group >= 0 and by_start[h].group >= 0]  # fmt: skip
         self.relations[:0] = held  # before any other support the list gave them
+        self._one_per_holder()
+
+    def _one_per_holder(self) -> None:
+        """"Three miners with pickaxes", "a mechanic with a wheel gun kneels beside each car": a
+        thing in hand comes once per holder, unless the text counts it ("two men with one ladder")."""
+        for g, h in self.in_hand:
+            if g not in self.numbered and self.groups[h].count > 1:
+                self.groups[g].count = self.groups[h].count
 
     def _on_wall_after(self, end: int) -> bool:
         """"... on the wall", "mounted on the back wall", "hangs on a wall" right after a noun."""
@@ -525,6 +559,9 @@ class _Reader:
                 return "each other", j + 2
             if w in ("each", "every") and j + 1 < ce and toks[j + 1].text == "one":
                 return "each one", j + 2  # "a chair in front of each one": one per member
+            of_them = [t.text for t in toks[j + 1 : j + 3]] in (["of", "them"], ["of", "these"], ["of", "those"])
+            if w == "each" and of_them:
+                return "each one", j + 3  # "a clock hangs above each of them": as "each one"
             if w == "one" and j > pos and toks[j - 1].text not in _NUMBERS and (j + 1 >= ce or toks[j + 1].text != "of"):
                 return "that one", j + 1  # "at the foot of the tallest one": one of a group named before
             # a noun, not a verb, after a determiner or a count ("its walls", "two rows of")
@@ -612,7 +649,13 @@ class _Reader:
         # on it. A rug lies in front of it": the nightstand)
         # (above a small thing is fine: "a register on the counter, and a hologram floats above it")
         big = bool(srcs) and not self._small(*srcs) and kind not in ("above", "over")
-        for fits in ((lambda g: not (big and self._small(g))), (lambda g: True)):
+        # the people on seats, not the seats ("two helmsmen, each in a seat. Across from them, ...")
+        sat_on = {r[2] for r in self.relations if r[0] == "on" and self._person_at(r[1]) and r[1] in recent}
+        for fits in (
+            (lambda g: not (big and self._small(g)) and g not in sat_on),
+            (lambda g: not (big and self._small(g))),
+            (lambda g: True),
+        ):
             for g in recent:
                 if (self.groups[g].count > 1) == plural and fits(g):
                     return [g]
@@ -651,7 +694,14 @@ class _Reader:
                     c.each = plural[-1]
                 k += 1
                 continue
-            if w == "with" or w in _HOLD or (w, nxt) in _HOLD_PAIRS or w in ("has", "have"):
+            members = c.main or list(prev_subject)
+            if w == "each" and k + 1 in self.rel_at and members and self.groups[members[-1]].count > 1:
+                c.each_own = members[-1]  # "two helmsmen sit ..., each in a steel seat": a seat each
+                k += 1
+                continue
+            holder = c.main or list(prev_subject)  # ", peering through a loupe": the subject before
+            hand = (w in _HAND_VERBS or (w, nxt) in _HAND_PAIRS) and bool(holder) and self._person_at(holder[-1])
+            if w == "with" or w in _HOLD or (w, nxt) in _HOLD_PAIRS or w in ("has", "have") or hand:
                 if w in _HOLD and w.endswith("ing") and c.head is not None and c.wsub:
                     # "with a small table beside them holding a teapot": the with-thing holds it
                     c.head, c.wsub, c.hold, c.expect_new = list(c.wsub[-1:]), [], True, False
@@ -659,11 +709,14 @@ class _Reader:
                     last_event_end = k
                     continue
                 c.head = [c.each] if c.each is not None else (c.main or list(prev_subject))
-                if w == "with" and c.last_target and c.last_target_end == k and self._animate(*c.head):
+                mine = nxt in _PERSON_POSSESSIVES  # "by the flag with his mallet": his, not the flag's
+                if w == "with" and c.last_target and c.last_target_end == k and self._animate(*c.head) and not mine:
                     c.head = list(c.last_target)  # "a baker stands behind the counter with a tray on it"
                 c.wsub, c.expect_new = [], False
-                c.hold = w in _HOLD or (w, nxt) in _HOLD_PAIRS
-                k += 2 if (w, nxt) in _HOLD_PAIRS else 1
+                # "with his putter": a possessive after "with" says the person has it in hand
+                hand = hand or (w == "with" and mine and all(self._person_at(h) for h in c.head))
+                c.hold, c.hand = w in _HOLD or (w, nxt) in _HOLD_PAIRS or hand, hand
+                k += 2 if (w, nxt) in _HOLD_PAIRS or (w, nxt) in _HAND_PAIRS else 1
                 last_event_end = k
                 continue
             if k in self.by_start:
@@ -684,6 +737,13 @@ class _Reader:
                     if c.wsub and any(w in _OWN_PLACE for w in gap):  # "a till at one end and a computer"
                         self._close_with(c)
                         c.wsub_before, closed = list(c.wsub), True
+                    if c.hand and c.wsub and any(w in _STOP and w not in ("and", "or") for w in gap):
+                        # "waves a flag from a gantry": what is in hand is the noun right after
+                        self._close_with(c)
+                        c.head, c.wsub, c.hand, c.hold = None, [], False, False
+                        c.main_groups.append(g)
+                        last_event_end = m.end
+                        continue
                     c.wsub = [g] if (c.expect_new or closed) else [*c.wsub, g]
                 else:
                     c.main_groups.append(g)
@@ -754,7 +814,10 @@ class _Reader:
                 and (word != "them living" or group.count > 1)
             )  # fmt: skip
 
-        return next(([g] for g in order if fits(g)), [])
+        # "her dachshund naps in a hatbox beside her": a person before an animal the text calls "her"
+        return next(([g] for g in order if fits(g) and self._person_at(g)), []) or next(
+            ([g] for g in order if fits(g)), []
+        )
 
     def _living(self, g: int) -> bool:
         """A person or an animal (catalogue dogs and horses too, guessed figures and animals)."""
@@ -766,6 +829,16 @@ class _Reader:
     def _animate(self, *groups: int) -> bool:
         """People and animals: what comes "with" right after their target belongs to the target."""
         return bool(groups) and all(self.groups[g].category in ("figure", "animal", "bird") for g in groups)
+
+    def _person_at(self, g: int) -> bool:
+        """A person (a figure of the catalogue or a guessed one), who can have things in hand."""
+        return self.catalogue[self.groups[g].category].shape == "figure"
+
+    def _handheld(self, g: int) -> bool:
+        """A thing a person carries with them: no living thing, and one that stands on tables or
+        is small enough to hold ("a pickaxe", "a clipboard"), not "a man with a ladder"."""
+        group = self.groups[g]
+        return not self._living(g) and (group.rests == "surface" or max(group.size) <= _HANDHELD_SIZE)
 
     def _small(self, *groups: int) -> bool:
         """All of these stand on surfaces (tabletop things)."""
@@ -783,9 +856,16 @@ class _Reader:
                 if h == g or any(r[1] == g and r[2] == h for r in self.relations):
                     continue  # "with a stone lantern beside it": placed by the head, not on it
                 rests = self.groups[g].rests
-                if c.hold or (rests == "surface" and self.catalogue[self.groups[h].category].support):
+                # "a miner with a pickaxe", "waves a flag" (a horse held by the reins is no load)
+                held = self._person_at(h) and not self._living(g) and (c.hand or self._handheld(g))
+                if held and not c.hand and any(r[1] == g for r in self.relations):
+                    continue  # "a clerk at the counter, with a radio beside it": placed on its own
+                if c.hold or held or (rests == "surface" and self.catalogue[self.groups[h].category].support):
                     self._relate("on", [g], h)
                     c.produced = True
+                    if held or (c.hold and self._person_at(h) and not self._living(g)):
+                        self.in_hand.append((g, h))
+                        self.carried.add((g, h))
 
     def _relation(self, c: _Clause, rel: _Rel, ce: int, prev_subject, starts_with_rel, last_event_end) -> int:
         toks = self.toks
@@ -814,7 +894,9 @@ class _Reader:
                 if k not in self.content_at and toks[k - 1].text != "of"
                 and (k - 1 not in self.content_at or toks[k].text in _FINITE)
             )
-            if c.wsub and not closed and not c.expect_new:
+            # "a dad with his putter beside the windmill": what is in hand goes where its holder is
+            in_hand = c.hand and target not in _PERSONAL and kind in _GROUND_KINDS
+            if c.wsub and not closed and not c.expect_new and not in_hand:
                 srcs = list(c.wsub)
                 if kind in ("on", "above", "over", "on top", "under"):
                     c.wsub_related.update(srcs)
@@ -852,6 +934,9 @@ class _Reader:
             target = "it" if c.head is not None else None
             rel = replace(rel, elliptic=True)
         if target == "each one":
+            if all(g in self.history for g in srcs) and any(g not in self.history for g in c.main):
+                # "a register on the counter in front of each of them": one register each, not a counter
+                srcs = [g for g in c.main if g not in self.history]
             targets = self._pronoun("them", c, srcs, list(c.last_target))
             if targets:
                 self._per_each([s for s in srcs if s in c.groups], targets[0])
@@ -948,6 +1033,11 @@ class _Reader:
         assert isinstance(targets, list)
         instance = self.instance.get(self._target_start) if isinstance(target, list) else None
         tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
+        if c.each_own is not None and tm is not None and not tm.definite and not tm.each:
+            srcs = [c.each_own]
+            for t in targets:
+                self._per_each([t], c.each_own)
+            c.each_own = None
         if tm is not None and tm.each:  # "a candle on every table": one per table
             self._per_each([s for s in srcs if s in c.groups], targets[0])
         for t in targets:

@@ -19,8 +19,9 @@ from scenewright.core.catalogue import load_catalogue, singular, words
 
 #: The family a thing nobody listed falls back to.
 GENERIC = "thing"
-#: Endings of nouns that name a person doing a trade or a study ("florist", "optician", "musketeer").
-_PERSON_ENDINGS = ("ist", "ian", "eer")
+#: Endings of nouns that name a person doing a trade or a study ("florist", "optician", "musketeer",
+#: "watchmaker", "locksmith", "shipwright"): one word, so "coffee maker" stays a machine.
+_PERSON_ENDINGS = ("ist", "ian", "eer", "maker", "smith", "wright")
 #: Endings of agent nouns: a person when the text has them do what people do ("a picker is working"),
 #: a tool or a machine otherwise ("a heater", "a tractor").
 _AGENT_ENDINGS = ("er", "or", "ant", "ent")
@@ -63,6 +64,15 @@ class Vocabulary:
     part_owners: dict[str, frozenset[str]] = field(default_factory=dict)
     #: What people do: an agent noun nobody listed that does one of these is a person.
     person_verbs: frozenset[str] = frozenset()
+    #: Moods and looks only people have ("a bored attendant"): an agent noun with one is a person.
+    moods: frozenset[str] = frozenset()
+    #: What things are made of ("rubber", "brass"): before a living thing, a likeness's name ("a rubber chicken").
+    materials: frozenset[str] = frozenset()
+    #: Person words that say whose someone is ("its owner", "her friend"), not who: an apposition
+    #: after one names the person ("its owner, a girl in goggles" is the girl).
+    relational: frozenset[str] = frozenset()
+    #: Person verbs animals do too: alone they make no person of an unknown noun.
+    animal_verbs: frozenset[str] = frozenset()
     #: Plural nouns that name one thing ("a pair of shears" is one pair).
     pair_nouns: frozenset[str] = frozenset()
     #: What people wear: no object while worn, a thing when held ("his hat in his hands").
@@ -116,18 +126,20 @@ class Vocabulary:
         for suffix, family in self.suffixes:
             if one.endswith(suffix) and len(one) - len(suffix) >= _MIN_STEM:
                 return self._family(family)
-        if one.endswith(_PERSON_ENDINGS) and len(one) - 3 >= _MIN_STEM:
-            return self._family("figure")  # "a florist", "two technicians", "a puppeteer"
+        ending = next((e for e in _PERSON_ENDINGS if one.endswith(e)), None)
+        if ending is not None and len(one) - len(ending) >= _MIN_STEM:
+            return self._family("figure")  # "a florist", "two technicians", "a puppeteer", "a watchmaker"
         category = catalogue[GENERIC]
         return Entry(GENERIC, category.size, category.rests)
 
-    def guess_agent(self, head: str, acts: bool) -> Entry | None:
-        """A person for an agent noun nobody listed when the text has it do what people do
-        (``acts``: "four pickers are working"); None for any other word, or when it only hums or
-        stands ("a heater hums")."""
+    def guess_agent(self, head: str, acts: bool, human: bool = False) -> Entry | None:
+        """A person for a noun nobody listed when the text has it do what people do: an agent
+        noun that acts (``acts``: "four pickers are working", "a picker sleeps"), or any noun
+        that does what only people do (``human``: "a marshal waves", "their sensei, an old
+        man, ..."); None otherwise ("a heater hums", "a tanuki sleeps")."""
         one = singular(head.lower())
         agent = one.endswith(_AGENT_ENDINGS) and len(one) - 2 >= _MIN_STEM
-        return self._family("figure") if agent and acts else None
+        return self._family("figure") if (agent and acts) or human else None
 
     @staticmethod
     def _family(family: str) -> Entry:
@@ -170,8 +182,12 @@ def _validate(raw: dict) -> Vocabulary:
         },
         part_owners={k: frozenset(v) for k, v in raw.get("part_owners", {}).items() if k != "about"},
         person_verbs=frozenset(raw.get("person_verbs", ())),
+        animal_verbs=frozenset(raw.get("animal_verbs", ())),
+        moods=frozenset(people.get("moods", ())),
+        relational=frozenset(people.get("relational", ())),
         pair_nouns=frozenset(raw.get("pair_nouns", ())),
         clothing=frozenset(lists.get("clothing", ())),
+        materials=frozenset(lists.get("materials", ())),
     )
 
 

@@ -17,7 +17,8 @@ _QUANTITY = {
     "pair": 2, "pairs": 4, "couple": 2, "row": 3, "rows": 5, "line": 3, "set": 3, "group": 3, "cluster": 3,
     "stack": 3, "stacks": 4, "pile": 3, "piles": 4, "bunch": 3, "handful": 3, "collection": 3,
     "coils": 3, "coil": 1, "ring": 4, "circle": 4, "lot": 5, "lots": 5, "plenty": 5, "dozens": 12,
-    "series": 3, "trio": 3, "clusters": 5, "grove": 4, "patch": 1,
+    "series": 3, "trio": 3, "clusters": 5, "grove": 4, "patch": 1, "flock": 6, "herd": 6, "flocks": 12,
+    "herds": 12,
 }  # fmt: skip
 _DETERMINERS = {"a", "an", "the", "this", "that", "these", "those", "its", "their", "his", "her", "our", "my",
                 "your", "another", "each", "every", "any", "other", "one", "all"}  # fmt: skip
@@ -70,6 +71,14 @@ _HOLD = {"holds", "hold", "holding", "carries", "carry", "carrying", "supports",
          "bears", "bearing", "displays", "displaying"}  # fmt: skip
 _HOLD_PAIRS = {("loaded", "with"), ("topped", "with"), ("set", "with"), ("laid", "with"), ("decorated", "with"),
                ("piled", "with"), ("stacked", "with"), ("heaped", "with")}  # fmt: skip
+#: Verbs whose object a person has in hand ("waves a flag", "sips from a glass", "peering through
+#: a loupe"): the thing is carried by its holder, as with "holds".
+_HAND_VERBS = {"waves", "waving", "wields", "wielding", "brandishes", "brandishing", "clutches", "clutching",
+               "grips", "gripping", "clasps", "clasping", "swinging", "twirls", "twirling", "raises",
+               "raising"}  # fmt: skip
+_HAND_PAIRS = {("sips", "from"), ("sipping", "from"), ("drinks", "from"), ("drinking", "from"), ("peers", "through"),
+               ("peering", "through"), ("looks", "through"), ("looking", "through"), ("squints", "through"),
+               ("squinting", "through")}  # fmt: skip
 #: Words that start a with-thing's own placing ("with a till at one end and a computer ...").
 _OWN_PLACE = {"at", "in", "along", "against", "under", "inside"}
 #: Possessives whose noun, when no object, is a part of what the pronoun names ("its door").
