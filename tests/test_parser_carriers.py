@@ -47,6 +47,15 @@ def test_a_posture_verbs_it_names_the_seat_not_the_nearer_subject():
     assert not any(r[0] == "sailor_1" and r[2] == "bookshelf_1" for r in found)
 
 
+def test_a_posture_verbs_them_names_several_seats_one_each():
+    found = rels("Two armchairs stand by the shelves, and two boys doze in them.")
+    assert {("boy_1", "on", "armchair_1"), ("boy_2", "on", "armchair_2")} <= found
+
+
+def test_in_a_tower_is_inside_it_not_on_top():
+    assert not any(r[0] == "keeper_1" for r in rels("A keeper sits in the lighthouse."))
+
+
 def test_an_animals_it_is_what_stands_on_the_ground_not_a_hung_lamp():
     found = rels("A chandelier hangs from the ceiling above the table, and a cat naps on it.")
     assert ("cat_1", "on", "table_1") in found

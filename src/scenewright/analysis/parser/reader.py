@@ -790,7 +790,7 @@ class _Reader:
             return [t for t in targets if has(t)]  # "a bookcase and a piano ..., on its lid": the piano
         return next(([g] for g in candidates if g not in srcs and has(g)), targets)
 
-    def _seat(self, c: _Clause, srcs: list[int], prefer: list[int], pos: int) -> list[int]:
+    def _seat(self, c: _Clause, srcs: list[int], prefer: list[int], pos: int, plural: bool = False) -> list[int]:
         """What a person or an animal who sits, lies or stands "in it" / "on it" is on: the
         nearest thing named in this sentence or the one before that can hold them, when the
         clause has a posture verb. A person's is a carrier ("a bookcase stands beside an
@@ -800,7 +800,8 @@ class _Reader:
             return []
         holds = self._carrier if all(self._is_person(g) for g in srcs) else self._grounded
         recent = [*prefer, *reversed(self.history[self._recent_from :]), *reversed(c.groups)]
-        return next(([g] for g in recent if g not in srcs and holds(g) and not self._living(g)), [])
+        fits = (g for g in recent if (self.groups[g].count > 1) == plural and g not in srcs)
+        return next(([g] for g in fits if holds(g) and not self._living(g)), [])
 
     def _verb_before(self, pos: int, test) -> bool:
         """A verb that passes ``test`` earlier in the same clause part ("dozes in it")."""
@@ -1045,8 +1046,8 @@ class _Reader:
             elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
                 targets = c.wsub_before[-1:]  # "... and a computer beside it": beside the till
             targets = self._part_owner(part, targets, [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)], srcs)
-            if c.head is None and target == "it" and part is None and kind in ("in", "on", "from"):
-                targets = self._seat(c, srcs, prefer, rel.start) or targets
+            if c.head is None and target in ("it", "them") and part is None and kind in ("in", "on", "from"):
+                targets = self._seat(c, srcs, prefer, rel.start, target == "them") or targets
         elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
             # "a bed with a nightstand on either side": a with-thing's side is its head's
             owner = list(c.head) if c.head is not None and srcs == c.wsub else []
@@ -1219,8 +1220,8 @@ class _Reader:
                 return "left of"  # the head of a table is one of its ends
             return "near"
         if kind == "in":  # "a man in a rocking chair", "a duck floats in the tub", "children in the bus": on it
-            if target.shape in _ENCLOSURES:
-                return "no relation"
+            if target.shape in _ENCLOSURES or target.shape == "tower":
+                return "no relation"  # in a tent, in the lighthouse: inside it, out of the layout
             if self._living(s) and self._carrier(t):
                 return "on"
             holds = target.shape in _SEATS or target.support or self._carrier(t, _VESSEL_KINDS)
