@@ -99,3 +99,11 @@ def test_people_and_animals_perch_on_hosts_smaller_than_they_are():
     found = {(r.source, r.relation, r.target) for r in parsed.relations}
     assert {("dog_1", "on", "stool_1"), ("lynx_1", "on", "rock_1")} <= found
     assert not parsed.repairs
+
+
+def test_a_cage_hung_from_the_ceiling_hangs_and_holds_its_bird():
+    parsed = parse_scene("A small cage with a canary inside hangs from the ceiling above the desk.")
+    cage = next(o for o in parsed.objects if o.id == "cage_1")
+    assert cage.rests == "hanging"
+    assert ("canary_1", "on", "cage_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert not parsed.repairs

@@ -117,6 +117,9 @@ _COPULAS = ("is", "are", "was", "were", "be", "has", "have", "had", "seems", "lo
 #: A perch no taller than this, and this many times a thing's footprint, is a platform whose middle
 #: the thing stands on ("a throne in the centre of the stage").
 _PLATFORM_HEIGHT, _PLATFORM_AREA = 3.5, 4.0
+#: A thing that stands on the ground but is no bigger than this hangs when the text hangs it from
+#: the ceiling ("a birdcage hangs from the ceiling above the counter").
+_HUNG_SIDE = 1.2
 #: Pronouns that name a person or an animal.
 _PERSONAL = ("him", "her", "himself", "herself")
 #: Possessives of people and the pronoun that names their owner ("at his feet" → him).
@@ -1095,7 +1098,8 @@ class _Reader:
         hang = kind == "hanging from" or self._hung_before(rel.start)
         if hang and kind in ("above", "over", "hanging from") and self._from_ceiling(rel.start):
             for g in srcs:  # "three paper lanterns hang from the ceiling over the counter": hung, not set down
-                if self.groups[g].rests == "surface":
+                rests, size = self.groups[g].rests, self.groups[g].size
+                if rests == "surface" or (rests == "ground" and max(size) <= _HUNG_SIDE):  # a birdcage too
                     self.groups[g].rests = "hanging"
         if targets == "each other":
             # "face each other", "sit across from each other" (in front of and facing, each way)
