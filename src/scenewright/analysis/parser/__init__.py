@@ -30,8 +30,10 @@ Decisions worth knowing:
   the corner``, ``in the middle of the room``, ``at the back`` name no object and become the
   object's ``anchor`` for the arranger.
 - ``on`` only onto a host that can hold the thing (flat hosts hold anything; floor furniture
-  stands on no other piece; a thing at most about the host's size); otherwise ``side of``, and
-  the repair is listed in ``ParsedScene.repairs``.
+  stands on no other piece; a thing at most about the host's size; a person or an animal on any
+  host at least a stool's size; a hung container only what fits in it); otherwise ``side of``,
+  and the repair is listed in ``ParsedScene.repairs``. A small thing hung from the ceiling hangs
+  ("a birdcage hangs from the ceiling").
 
 - ``beside`` / ``next to`` / ``alongside`` / ``leans against`` → ``side of``; ``near`` / ``close to`` / ``by`` →
   ``near``; ``opposite`` / ``across from`` → ``in front of`` + ``face to``; ``flanked by`` and
