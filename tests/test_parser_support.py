@@ -21,6 +21,10 @@ def obj(id_: str, category: str, size, rests=None) -> ParsedObject:
         (obj("armchair", "armchair", (0.85, 0.85, 0.95)), obj("desk", "desk", (1.4, 0.7, 0.75)), False),
         (obj("skeleton", "dinosaur_skeleton", (4.5, 1.5, 3.0)), obj("barrel", "barrel", (0.6, 0.6, 0.9)), False),
         (obj("cup", "cup", (0.1, 0.1, 0.1)), obj("lamp", "pendant_lamp", (0.5, 0.5, 0.5), "hanging"), False),
+        # people and animals sit and perch on what is smaller than they are, but not on a vase
+        (obj("porter", "figure", (0.6, 0.6, 1.8)), obj("stool", "stool", (0.4, 0.4, 0.75)), True),
+        (obj("lynx", "animal", (0.5, 1.9, 1.0)), obj("mound", "thing", (0.6, 0.6, 0.6)), True),
+        (obj("girl", "figure", (0.5, 0.3, 1.75)), obj("vase", "vase", (0.2, 0.2, 0.35)), False),
     ],
 )
 def test_can_hold(thing, host, ok):

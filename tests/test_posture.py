@@ -27,6 +27,9 @@ def _figure(text: str, name: str):
         ("A man lies on a picnic blanket under a tree.", "man", "lying"),
         ("A knight stands guard beside the gate.", "knight", None),
         ("A chef stirs a pot on the stove.", "chef", None),
+        # riders sit on a vehicle or an animal unless the text has them stand on it
+        ("A soldier on horseback waits by the tent.", "soldier", "sitting"),
+        ("A van stops by the gate, and a boy stands on its bonnet.", "boy", None),
     ],
 )
 def test_posture_read_from_host_and_verbs(text, name, posture):

@@ -15,13 +15,12 @@ from dataclasses import replace
 
 from scenewright.analysis.composition import roles
 from scenewright.analysis.parser import ParsedObject, ParsedScene
+from scenewright.analysis.parser.vocabulary import load_vocabulary
 
 POSTURES = ("sitting", "lying")
-#: Words of a description that pose its figure; the first of each list is the one written.
-POSTURE_WORDS: dict[str, tuple[str, ...]] = {
-    "sitting": ("sitting", "seated", "sits", "sit", "sat", "dozes", "dozing", "perched", "squatting", "kneeling"),
-    "lying": ("lying", "lies", "lie", "lay", "reclining", "sprawled", "sleeping on", "asleep on"),
-}
+#: Words of a description that pose its figure (``postures`` in ``data/vocabulary.json``, which
+#: the reader shares); the first of each list is the one written.
+POSTURE_WORDS: dict[str, tuple[str, ...]] = {p: load_vocabulary().postures[p] for p in POSTURES}
 #: Hosts a person lies on, and hosts a person sits on besides the seats of :mod:`.roles`.
 LYING_HOSTS = frozenset({"bed", "crib", "rug", "picnic_blanket", "hammock", "pet_bed", "bath_mat", "mat", "sun_lounger"})
 SITTING_HOSTS = roles.SEATS | frozenset({"cushion", "swing", "log", "rock", "stairs", "bean_bag", "pouf", "kotatsu"})
@@ -60,7 +59,8 @@ def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
     The host decides first (a person on a bed lies, on a chair sits, whatever the verb);
     with no host, or a host of neither kind, the sentence's verbs do ("a boy sits at the
     kotatsu"); "asleep"/"sleeps" alone is lying unless the host is a seat ("dozes in the
-    armchair" sits).
+    armchair" sits). On a vehicle or a ridden animal a person sits unless the sentence has
+    them stand ("standing on its bonnet").
     """
     if obj.category not in _FIGURES:
         return None
@@ -71,6 +71,10 @@ def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
     if any(h in SITTING_HOSTS for h in hosts):
         return "sitting"
     sentence = _sentence_of(parsed, obj).lower()
+    vocabulary = load_vocabulary()
+    if any(vocabulary.carries(h, h, ("vehicles", "mounts")) for h in hosts):
+        # riders sit ("a soldier on horseback", "children in the bus") unless they stand on it
+        return None if _mentions(sentence, vocabulary.postures["standing"]) else posture_in(sentence) or "sitting"
     found = posture_in(sentence)
     if found:
         return found

@@ -30,8 +30,10 @@ Decisions worth knowing:
   the corner``, ``in the middle of the room``, ``at the back`` name no object and become the
   object's ``anchor`` for the arranger.
 - ``on`` only onto a host that can hold the thing (flat hosts hold anything; floor furniture
-  stands on no other piece; a thing at most about the host's size); otherwise ``side of``, and
-  the repair is listed in ``ParsedScene.repairs``.
+  stands on no other piece; a thing at most about the host's size; a person or an animal on any
+  host at least a stool's size; a hung container only what fits in it); otherwise ``side of``,
+  and the repair is listed in ``ParsedScene.repairs``. A small thing hung from the ceiling hangs
+  ("a birdcage hangs from the ceiling").
 
 - ``beside`` / ``next to`` / ``alongside`` / ``leans against`` → ``side of``; ``near`` / ``close to`` / ``by`` →
   ``near``; ``opposite`` / ``across from`` → ``in front of`` + ``face to``; ``flanked by`` and
@@ -72,9 +74,21 @@ Decisions worth knowing:
   clause part or for a small (tabletop or hanging) thing, else ``near`` (a tree leaning over a
   pond); a tabletop thing hung "from the ceiling" hangs. ``X under Y`` puts Y ``on`` X when X is
   flat (a rug under a table), else X ``near`` Y.
-- ``in`` a seat, a tub, a boat, a basket, a sandbox or on a surface → ``on`` it ("a man in a
-  rocking chair", "a duck floats in the tub"), and a phrase right after places the seat ("dozes in
-  an armchair by the fire"); in anything else (a tent, a field) it places nothing.
+- ``in`` a seat, a vehicle, a container or on a surface → ``on`` it ("a man in a rocking chair", "a
+  duck floats in the tub", "a rabbit in a cage"), and a person or an animal is on every
+  carrier it is in ("children in the bus", "fans in the stand"; ``carriers`` in
+  ``data/vocabulary.json``); a phrase right after places the seat ("dozes in an armchair by the
+  fire"); in anything else (a tent, a field) it places nothing. ``from`` a carrier after a verb one
+  does from where one is (``lookout_verbs``: "a heron watches from a rock", "waves from the tower")
+  → ``on`` it. A person's "in it" / "on it" after a posture verb (``postures``) is the nearest
+  carrier of this sentence or the one before ("a bookcase stands beside an armchair, and a
+  sailor dozes in it"), and "it" names no person; one who "sits on a stool at the counter" is
+  ``near`` the counter too, one who "sits on a crate across from it" faces it herself, "rides" /
+  "riding" a thing is ``on`` it; "the water" is the latest pond's (``part_owners``); living
+  things a carrier is "packed with" or "full of" are on it and no subject of its verb; "each in a
+  seat" and "riders on horseback" give one seat, one horse apiece; "a woman sits ..., her cat
+  beside her chair" sits on her chair; a rider put on something else puts the mount there ("a kid
+  on a bike at the top of the ramp").
 - A part of a building or a vehicle that is no object ("on the roof", "beside its door", "the
   shop's roof", "the porch steps") places by its owner: one named in the same sentence, else the
   latest building, else the latest vehicle.

@@ -96,7 +96,7 @@ _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
 #: After these, a phrase right after the target places the target: "a lamp on a table left of the
 #: sofa", "astronauts beside a lab bench to the right of the console", "sniffs at a cooler near the
 #: truck", "dozes in an armchair by the fire" (the armchair is by the fire).
-_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in")
+_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in", "from")
 #: Sides of a thing named by a possessive ("against its side"): the owner places.
 _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
 #: "Piled with" on a cart or a table is a load of things standing on it when they are this big or
@@ -116,12 +116,19 @@ _CEILING_WORDS = ("ceiling", "ceilings", "beam", "beams", "rafter", "rafters")
 _ROOFED_VEHICLES = ("car", "truck", "bus", "vehicle")
 #: Parts of a building that place a thing by the building itself when nothing else is named.
 _BUILDING_PARTS = ("roof", "rooftop", "porch", "step", "doorstep", "chimney", "eave", "gable", "veranda", "facade", "door", "doorway")
-#: Shapes one sits or floats *in* and is then on ("in the tub", "in the canoe").
-_VESSELS = ("bathtub", "boat", "bed", "cart", "basket", "crate", "pond", "sandbox", "hammock")
+#: Carriers anything smaller is on when it is *in* them ("in the tub", "in the canoe", "a broom in the
+#: bucket"); a person or an animal is on every kind of carrier it is in ("fans in the stand").
+_VESSEL_KINDS = ("seats", "vehicles", "containers")
 #: What a thing is mounted on as a part of it ("lanterns on tall poles").
 _MOUNTS = ("pole", "stick", "mast", "stake", "spike")
 #: Verbs that join a subject to what it is, not to a thing it acts on.
 _COPULAS = ("is", "are", "was", "were", "be", "has", "have", "had", "seems", "looks")
+#: A perch no taller than this, and this many times a thing's footprint, is a platform whose middle
+#: the thing stands on ("a throne in the centre of the stage").
+_PLATFORM_HEIGHT, _PLATFORM_AREA = 3.5, 4.0
+#: A thing that stands on the ground but is no bigger than this hangs when the text hangs it from
+#: the ceiling ("a birdcage hangs from the ceiling above the counter").
+_HUNG_SIDE = 1.2
 #: Pronouns that name a person or an animal.
 _PERSONAL = ("him", "her", "himself", "herself")
 #: Possessives of people and the pronoun that names their owner ("at his feet" → him).
@@ -153,6 +160,11 @@ class _Reader:
         self._body_part: str | None = None
         #: The part word of the last target read through its owner ("its back" → "back").
         self._part: str | None = None
+        #: That part is one a person or an animal stands or perches on ("from the barn's roof").
+        self._perch_part = False
+        #: Where the sentence before this one starts in ``history``: a posture verb's "in it"
+        #: looks for a seat no further back.
+        self._recent_from = 0
         #: (thing, person) groups where the text puts the thing on a part of the person.
         self.carried: set[tuple[int, int]] = set()
         #: Place words that set the scene rather than stand in it ("a hangar with a spaceship").
@@ -280,6 +292,9 @@ class _Reader:
         self.in_hand: list[tuple[int, int]] = []
         #: Groups whose count the text gives by a number or a vague word ("three", "a few").
         self.numbered: set[int] = set()
+        #: Starts of living things a holder is full of ("packed with laughing children"): aboard it,
+        #: no subject of the clause's verb.
+        self.aboard: set[int] = set()
         self._mark_contents(mentions)
         _mark_appositions(toks, mentions)
         self.size_of: dict[int, list[tuple[str, float]]] = {}
@@ -289,14 +304,21 @@ class _Reader:
                 self.size_of.setdefault(owner, []).append((dim, value))
         taken = {k for m in mentions for k in range(m.start, m.end)}
         starts = {m.start for m in mentions}
-        self.rel_at = {r.start: r for r in _find_relations(toks, taken) if r.kind != "at" or self._names_thing(r.end, starts)}
+        # "from" places only after a verb one does from where one is ("a heron watches from a rock");
+        # "pulls a rope from the barrel" names where the rope comes from
+        self.rel_at = {
+            r.start: r for r in _find_relations(toks, taken)
+            if (r.kind != "at" or self._names_thing(r.end, starts)) and (r.kind != "from" or self._verb_before(r.start, self._lookout))
+        }  # fmt: skip
         self._rows_then_with(mentions)
         #: Mentions the text puts on a wall ("a luggage rack on the wall"): hung, so "above" holds.
         self.on_wall = {m.start for m in mentions if self._on_wall_after(m.end)}
         self._read_looks(mentions)
         self.by_start = {m.start: m for m in mentions if not m.content}
         self.content_at = {k for m in mentions if m.content for k in range(m.start, m.end)}
+        sentence_from = 0
         for sentence in _split(toks):
+            self._recent_from, sentence_from = sentence_from, len(self.history)
             prev_subject: list[int] = []
             pending: list[tuple[str, list[int]]] = []
             last_rels: list[tuple[str, list[int]]] = []
@@ -326,9 +348,11 @@ class _Reader:
                     pending = []
                 elif not c.produced and c.groups and last_rels and self._is_list(cs, ce, strict=True):
                     # "On the desk there is a lamp, a laptop and a mug": the list shares the relation
+                    # (not what a thing is full of: "..., each packed with children")
+                    listed = [g for g in c.groups if all(self.by_start[s].group != g for s in self.aboard if s in self.by_start)]
                     for kind, targets in last_rels:
                         for t in targets:
-                            self._relate(kind, c.groups, t)
+                            self._relate(kind, listed, t)
                     c.rels = last_rels
                 last_rels = c.rels or last_rels
                 if c.main_groups:
@@ -414,6 +438,7 @@ class _Reader:
                 chain = False
                 continue
             gap = [t.text for t in toks[prev.end : j + 1]]
+            self._each_full(m, mentions[:k], j)
             content = self._is_content(m, prev, j) or (
                 chain and prev.content and not (m.counted or m.definite) and all(g in ("and", ",", "or") for g in gap)
             )
@@ -436,7 +461,11 @@ class _Reader:
             return False  # "a luggage cart piled with suitcases": they stand on the cart
         alive = self._lives(m.category) or m.category == "fish"
         if marker in _CONTENT_MARKERS and j - prev.end <= 2:
-            # "a bowl full of apples"; but "a tank full of goldfish", "a stand packed with fans" are there
+            # "a bowl full of apples"; but "a tank full of guppies", "a stand packed with fans" are
+            # there, on what holds them
+            if alive and self._holds_living(prev):
+                self.held_of.append((m.start, prev.start))
+                self.aboard.add(m.start)
             return not alive
         if self._listed_content(m.start):
             return not alive  # "crates overflow with apples, pumpkins and carrots"
@@ -450,6 +479,28 @@ class _Reader:
             return True  # "a windsock on a tall pole", "a flag flutters on a pole": the pole is its part
         plant = self.catalogue[prev.category].shape in ("potted_plant", "bush", "flower_bed")
         return w == "in" and j - prev.end <= 2 and m.category in ("pot", "planter", "vase") and plant
+
+    def _each_full(self, m: _Mention, before: list[_Mention], j: int) -> None:
+        """"Three baskets by the stove, each of them full of kittens": living things each of
+        several holders is full of stand on those holders (the latest several named)."""
+        toks = self.toks
+        if j < 1 or (toks[j - 1].text, toks[j].text) not in _CONTENT_MARKERS:
+            return
+        k = j - 2
+        while k >= 0 and toks[k].text in ("of", "them", "these", "those"):
+            k -= 1
+        if k < 0 or toks[k].text != "each" or not (self._lives(m.category) or m.category == "fish"):
+            return
+        several = [h for h in before if h.end <= k and _is_plural(toks, h) and self._holds_living(h)]
+        if several:
+            self.held_of.append((m.start, several[-1].start))
+            self.aboard.add(m.start)
+
+    def _holds_living(self, holder: _Mention) -> bool:
+        """What people or animals it is full of stand on: a carrier ("a stand packed with
+        fans", "a boat full of children") or a thing with a top."""
+        name = holder.phrase
+        return self.catalogue[holder.category].support or load_vocabulary().carries(holder.category, name)
 
     def _listed_content(self, start: int) -> bool:
         """Whether the noun at ``start`` is in a list of bare nouns that a content marker opens
@@ -574,6 +625,7 @@ class _Reader:
             break
         building = self._building_of_part(pos, j)
         if building is not None:
+            self._part = next(singular(t.text) for t in toks[pos:j] if singular(t.text) in _BUILDING_PARTS)
             return [building], j  # "mounted on the roof", "beside its door", "on the shop's roof"
         owner = _OWNER_PRONOUNS.get(toks[lead].text) if lead < ce else None
         if owner and j > lead + 1:
@@ -582,6 +634,9 @@ class _Reader:
         if owner and lead + 1 < ce and toks[lead + 1].text in _OWNER_PARTS:
             self._part = toks[lead + 1].text
             return owner, lead + 2  # "piled against its side": by the owner
+        if lead < ce and toks[lead].text == "the" and j == lead + 2 and singular(toks[lead + 1].text) in load_vocabulary().part_owners:
+            self._part = singular(toks[lead + 1].text)
+            return "the part", j  # "lies in the water": the water of the pond named before
         return None, pos
 
     def _people_own(self) -> int | None:
@@ -651,13 +706,15 @@ class _Reader:
         big = bool(srcs) and not self._small(*srcs) and kind not in ("above", "over")
         # the people on seats, not the seats ("two helmsmen, each in a seat. Across from them, ...")
         sat_on = {r[2] for r in self.relations if r[0] == "on" and self._person_at(r[1]) and r[1] in recent}
+        # "it" names no person ("a fisherman sits in his boat, and a gull perches on its bow": the boat)
+        person = (lambda g: self.groups[g].category == "figure") if not plural else (lambda g: False)
         for fits in (
             (lambda g: not (big and self._small(g)) and g not in sat_on),
             (lambda g: not (big and self._small(g))),
             (lambda g: True),
         ):
             for g in recent:
-                if (self.groups[g].count > 1) == plural and fits(g):
+                if (self.groups[g].count > 1) == plural and fits(g) and not person(g):
                     return [g]
         # "them" after two single things ("an armchair ... a bookcase ..., between them")
         return list(dict.fromkeys(recent))[:2] if plural else []
@@ -688,7 +745,9 @@ class _Reader:
             # "each surrounded by two chairs": the passive flankers come once per member too
             each_passive = k + 1 in self.rel_at and self.rel_at[k + 1].kind in ("flanked by", "surrounded by")
             each_hold = (nxt, toks[k + 2].text if k + 2 < ce else "") in _HOLD_PAIRS
-            if w == "each" and (each_part or each_passive or each_hold):
+            # "four pilots sit at the console, each in a leather seat": a seat apiece
+            each_seat = k + 1 in self.rel_at and self.rel_at[k + 1].kind in ("in", "on", "at")
+            if w == "each" and (each_part or each_passive or each_hold or each_seat):
                 plural = [g for g in [*self.history, *c.groups] if self.groups[g].count > 1]
                 if plural:
                     c.each = plural[-1]
@@ -731,7 +790,9 @@ class _Reader:
                 if m.each and c.head is None and not c.verb_seen:
                     c.each = g  # "every desk has a lamp": a lamp per desk
                 c.groups.append(g)
-                if c.head is not None:
+                if m.start in self.aboard:
+                    pass  # "a bus full of children waits": the bus waits
+                elif c.head is not None:
                     gap = [t.text for t in toks[last_event_end : m.start]]
                     closed = any(_is_verb(w) for w in gap)
                     if c.wsub and any(w in _OWN_PLACE for w in gap):  # "a till at one end and a computer"
@@ -781,16 +842,49 @@ class _Reader:
         resolved to when that can have the part, else the latest candidate that can (the
         armchair, not the fireplace named after it)."""
         owners = load_vocabulary().part_owners.get(part or "")
-        if not owners or not targets:
+        if not owners:
             return targets
 
         def has(g: int) -> bool:
             category = self.groups[g].category
             return category in owners or self.catalogue[category].shape in owners
 
-        if any(has(t) for t in targets):
+        if targets and any(has(t) for t in targets):
             return [t for t in targets if has(t)]  # "a bookcase and a piano ..., on its lid": the piano
         return next(([g] for g in candidates if g not in srcs and has(g)), targets)
+
+    def _seat(self, c: _Clause, srcs: list[int], prefer: list[int], pos: int, plural: bool = False) -> list[int]:
+        """What a person or an animal who sits, lies or stands "in it" / "on it" is on: the
+        nearest thing named in this sentence or the one before that can hold them, when the
+        clause has a posture verb. A person's is a carrier ("a bookcase stands beside an
+        armchair, and a sailor dozes in it": the armchair); an animal's anything standing on the
+        ground ("a lamp hangs above the table, and a cat naps on it": the table)."""
+        if not srcs or not all(self._living(g) for g in srcs) or not self._verb_before(pos, self._posture):
+            return []
+        holds = self._carrier if all(self._is_person(g) for g in srcs) else self._grounded
+        recent = [*prefer, *reversed(self.history[self._recent_from :]), *reversed(c.groups)]
+        fits = (g for g in recent if (self.groups[g].count > 1) == plural and g not in srcs)
+        return next(([g] for g in fits if holds(g) and not self._living(g)), [])
+
+    def _verb_before(self, pos: int, test) -> bool:
+        """A verb that passes ``test`` earlier in the same clause part ("dozes in it")."""
+        k = pos - 1
+        while k >= 0 and pos - k <= 8 and self.toks[k].text not in (",", ".", ";", "and", "while"):
+            if test(self.toks[k].text):
+                return True
+            k -= 1
+        return False
+
+    @staticmethod
+    def _posture(word: str) -> bool:
+        """A verb of sitting, lying or standing ("slouches", "perched", "stands")."""
+        return load_vocabulary().is_posture_verb(word)
+
+    @staticmethod
+    def _lookout(word: str) -> bool:
+        """A verb one does from where one sits or stands ("watches", "waves"), or a posture."""
+        vocabulary = load_vocabulary()
+        return word in vocabulary.lookout_verbs or vocabulary.is_posture_verb(word)
 
     def _one_of(self, c: _Clause, srcs: list[int], prev_subject: list[int]) -> list[int]:
         """The group "the tallest one", "the nearest one" picks from: the subject of this clause
@@ -825,6 +919,55 @@ class _Reader:
 
     def _lives(self, category: str) -> bool:
         return category in _LIVING or self.catalogue[category].shape in _LIVING
+
+    def _carrier(self, g: int, kinds: tuple[str, ...] | None = None) -> bool:
+        """Something a person or an animal sits, stands or rides on, or is carried in (``carriers``
+        in ``data/vocabulary.json``), of these kinds (all when None)."""
+        return load_vocabulary().carries(self.groups[g].category, self.groups[g].name, kinds)
+
+    def _platform(self, g: int, thing: int) -> bool:
+        """A perch one stands things in the middle of (a stand, a stage, a pier): low enough
+        to climb and many times the thing's footprint."""
+        host, size = self.groups[g], self.groups[thing].size
+        low = host.size[2] <= _PLATFORM_HEIGHT
+        return self._carrier(g, ("perches",)) and low and host.size[0] * host.size[1] >= _PLATFORM_AREA * size[0] * size[1]
+
+    def _seat_owner(self, c: _Clause, srcs: list[int], m: _Mention) -> int | None:
+        """Who sits on a seat named with a person's possessive ("an old woman sits knitting,
+        her cat beside her chair": her chair is the one she sits on), when the sentence
+        has someone sit and that person rests on nothing else yet."""
+        toks = self.toks
+        j = m.start - len(m.adjectives) - 1
+        if j < 0 or toks[j].text not in _PERSON_POSSESSIVES or m.group < 0 or not self._carrier(m.group, ("seats",)):
+            return None
+        owner = self._person(c, srcs, _PERSON_POSSESSIVES[toks[j].text])
+        if not owner or any(r[0] == "on" and r[1] == owner[0] for r in self.relations):
+            return None
+        sitting = load_vocabulary().postures.get("sitting", ())
+        k = j
+        while k >= 0 and toks[k].text not in (".", "!", "?"):
+            if toks[k].text in sitting:
+                return owner[0]
+            k -= 1
+        return None
+
+    def _ridden(self, g: int, host: int) -> int:
+        """What a rider put on something else is on: "a kid on a bike waits at the top of the
+        ramp" puts the bike on the ramp, the kid stays on the bike."""
+        rides = (r[2] for r in self.relations if r[0] == "on" and r[1] == g and r[2] != host)
+        return next((v for v in rides if self._living(g) and self._carrier(v, ("vehicles", "mounts"))), g)
+
+    def _bare(self, m: _Mention) -> bool:
+        """A singular noun with no determiner, count or describing word ("on horseback")."""
+        return not (m.definite or m.counted or m.adjectives or _is_plural(self.toks, m))
+
+    def _grounded(self, g: int) -> bool:
+        """Stands on the ground (no tabletop thing, nothing hung)."""
+        return self.groups[g].rests == "ground"
+
+    def _is_person(self, g: int) -> bool:
+        """A person, not an animal: what a seat, not a desk, carries."""
+        return self.catalogue[self.groups[g].category].shape == "figure"
 
     def _animate(self, *groups: int) -> bool:
         """People and animals: what comes "with" right after their target belongs to the target."""
@@ -872,6 +1015,7 @@ class _Reader:
         kind = rel.kind
         target, end = self._target_at(rel.end, ce)
         body, part = self._body_part, self._part  # "on her knees": by the person, as the part says
+        self._perch_part = part in load_vocabulary().carriers.get("perches", ())
         if body == "near" or (body == "on" and kind in ("on", "on top", "in")):
             kind = body
         between = [t.text for t in toks[last_event_end : rel.start]]
@@ -884,7 +1028,19 @@ class _Reader:
         if chained and isinstance(target, list) and target and c.last_target:
             # "a lamp on the table next to a teapot": what stands by a small thing is its peer, not the table
             chained = not self._small(target[0]) or self._small(c.last_target[0])
+        seated: list[int] = []  # "a clerk sits on a stool at the counter": he is at it too
+        facing: list[int] = []  # "she sits on a crate across from it": she faces it, not the crate
+        # "bent over a client who sits in the chair": the relative clause's subject
+        relative = bool(c.last_target) and c.last_target_end == last_event_end and between[:1] in (["who"], ["which"])
         if chained and c.last_target and c.last_target_end == last_event_end and all(b in _ADVERBS for b in between):
+            srcs = list(c.last_target)
+            subjects = c.main or list(prev_subject)
+            sitters = [r[1] for r in self.relations if r[0] == "on" and r[2] in srcs and r[1] in subjects and self._living(r[1])]
+            if kind == "at":
+                seated = sitters
+            elif kind in ("opposite", "face to"):
+                facing = sitters
+        elif relative and c.head is None:
             srcs = list(c.last_target)
         elif c.head is not None:
             # contents are no verbs: "a cart with a bowl of apples on it" keeps the bowl as the source
@@ -906,6 +1062,9 @@ class _Reader:
                 c.head, c.wsub = None, []
         else:
             srcs = list(c.main)
+        if kind == "from" and not any(self._living(g) for g in srcs):
+            # "a guard waves a flag from the tower": the one who waves is up there
+            srcs = [g for g in c.subjects if self._living(g)] or srcs
         if kind == "no relation" and c.head is not None and toks[rel.start].text.startswith(("toward", "heading")):
             # "a forklift carries a pallet toward the rack": the with-part ends, the rack is no load
             self._close_with(c)
@@ -933,6 +1092,8 @@ class _Reader:
             kind = "on"
             target = "it" if c.head is not None else None
             rel = replace(rel, elliptic=True)
+        if kind == "in" and target is None and toks[rel.start].text == "inside" and c.head is not None:
+            target = "it"  # "a cage with a rabbit inside": inside the with-part's head
         if target == "each one":
             if all(g in self.history for g in srcs) and any(g not in self.history for g in c.main):
                 # "a register on the counter in front of each of them": one register each, not a counter
@@ -942,6 +1103,9 @@ class _Reader:
                 self._per_each([s for s in srcs if s in c.groups], targets[0])
         elif target == "that one":
             targets = self._one_of(c, srcs, prev_subject)
+        elif target == "the part":  # "in the water": the latest thing that has such a part
+            candidates = [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)]
+            targets = self._part_owner(part, [], [*candidates, *reversed(range(len(self.groups)))], srcs)
         elif target in _PERSONAL or target == "them living":
             # "a pirate stands behind the chest with a shovel beside him": the person, not the chest
             targets = self._person(c, srcs, target)
@@ -970,6 +1134,8 @@ class _Reader:
             elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
                 targets = c.wsub_before[-1:]  # "... and a computer beside it": beside the till
             targets = self._part_owner(part, targets, [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)], srcs)
+            if c.head is None and target in ("it", "them") and part is None and kind in ("in", "on", "from"):
+                targets = self._seat(c, srcs, prefer, rel.start, target == "them") or targets
         elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
             # "a bed with a nightstand on either side": a with-thing's side is its head's
             owner = list(c.head) if c.head is not None and srcs == c.wsub else []
@@ -1017,7 +1183,8 @@ class _Reader:
         hang = kind == "hanging from" or self._hung_before(rel.start)
         if hang and kind in ("above", "over", "hanging from") and self._from_ceiling(rel.start):
             for g in srcs:  # "three paper lanterns hang from the ceiling over the counter": hung, not set down
-                if self.groups[g].rests == "surface":
+                rests, size = self.groups[g].rests, self.groups[g].size
+                if rests == "surface" or (rests == "ground" and max(size) <= _HUNG_SIDE):  # a birdcage too
                     self.groups[g].rests = "hanging"
         if targets == "each other":
             # "face each other", "sit across from each other" (in front of and facing, each way)
@@ -1040,8 +1207,17 @@ class _Reader:
             c.each_own = None
         if tm is not None and tm.each:  # "a candle on every table": one per table
             self._per_each([s for s in srcs if s in c.groups], targets[0])
+        elif tm is not None and c.each is not None and c.each in srcs and not tm.definite and tm.count <= 1:
+            self._per_each(targets, c.each)  # "each in a leather seat": one seat apiece
+        elif tm is not None and kind == "on" and self._bare(tm) and len(srcs) == 1 and self._living(srcs[0]):
+            self._per_each(targets, srcs[0])  # "two soldiers on horseback": a horse each
+        sitter = self._seat_owner(c, srcs, tm) if tm is not None else None
+        if sitter is not None:
+            self._relate("on", [sitter], targets[0], instance=instance)
+        srcs = facing or srcs
         for t in targets:
             self._relate(kind, srcs, t, hang, instance)
+            self._relate("near", seated, t)
             if body == "on":  # a person holds nothing on top, but carries what is on a knee or an arm
                 self.carried.update((s, t) for s in srcs)
         c.produced = True
@@ -1108,6 +1284,8 @@ class _Reader:
     def _relate(self, kind: str, srcs: list[int], target: int, hang: bool = False, instance=None) -> None:
         for s in srcs:
             resolved = self._kind(kind, s, target, hang)
+            if resolved == "on":
+                s = self._ridden(s, target)
             if s == target or resolved == "no relation":
                 continue
             self.relations.append((resolved, s, target, instance))
@@ -1135,12 +1313,19 @@ class _Reader:
             if target.support:
                 return "left of"  # the head of a table is one of its ends
             return "near"
-        if kind == "in":  # "a man in a rocking chair", "a duck floats in the tub": on it
-            vessel = target.shape in _VESSELS or self.groups[t].category in _VESSELS
-            holds = target.shape in _SEATS or target.support or vessel
-            return "on" if holds and target.shape not in _ENCLOSURES and target.size[2] <= 2.5 else "no relation"
+        if kind == "in":  # "a man in a rocking chair", "a duck floats in the tub", "children in the bus": on it
+            if target.shape in _ENCLOSURES or target.shape == "tower":
+                return "no relation"  # in a tent, in the lighthouse: inside it, out of the layout
+            if self._living(s) and self._carrier(t):
+                return "on"
+            holds = target.shape in _SEATS or target.support or self._carrier(t, _VESSEL_KINDS)
+            return "on" if holds and target.size[2] <= 2.5 else "no relation"
+        if kind == "from":  # "a heron watches from a rock", "a guard waves from the tower": on it
+            return "on" if self._living(s) and (self._carrier(t) or self._perch_part) else "no relation"
         if kind == "hanging from":  # from a beam or a shelf: above it; from a tall tree: beside it
             return "above" if target.size[2] <= 2.5 else "near"
-        if kind == "centre of":  # "a vase in the middle of the table": on it; else near it
-            return "on" if src.rests == "surface" and target.support else "near"
+        if kind == "centre of":  # "a vase in the middle of the table", "a throne in the centre of the stage": on it
+            if src.rests == "surface" and target.support:
+                return "on"
+            return "on" if self._platform(t, s) else "near"
         return _KIND_RELATION.get(kind, kind)

@@ -8,6 +8,7 @@ from collections import Counter
 from dataclasses import replace
 
 from scenewright.analysis.parser.model import ParsedObject, ParsedRelation
+from scenewright.analysis.parser.vocabulary import load_vocabulary
 
 
 _SUPPORT_PREFERENCE = {
@@ -123,6 +124,10 @@ FLAT_HOST = 0.3
 #: How much larger than its host a thing may be and still rest on it (footprint, longest side):
 #: a statue overhangs its plinth, a bird its bollard.
 _AREA_SLACK, _SIDE_SLACK = 2.0, 1.6
+#: People and animals sit, stand and perch on things smaller than themselves (a man on a stool,
+#: a lynx on a mound, a dog on a low stool): any host whose top is a stool's or wider.
+_PERCH_SIDE = 0.35
+_LIVING_SHAPES = ("figure", "animal", "bird")
 #: Furniture that stands on the floor, never on another piece ("a sofa on the desk" is beside it).
 _FLOOR_FURNITURE = {"sofa", "armchair", "bed", "wardrobe", "bookshelf", "office_chair", "piano", "fridge",
                     "stove", "counter", "desk", "table", "round_table", "coffee_table", "bathtub", "treadmill",
@@ -161,11 +166,19 @@ def fit_on_hosts(
 
 
 def can_hold(host: ParsedObject, thing: ParsedObject, catalogue) -> bool:
-    """Whether ``thing`` can rest on ``host``: hosts that hang hold nothing; a flat host holds
-    anything; otherwise the thing must be about the host's size or smaller."""
-    if (host.rests or catalogue[host.category].rests) == "hanging" or host.category in _NO_TOP:
+    """Whether ``thing`` can rest on ``host``: hosts that hang hold nothing but what fits in a
+    hung container; a flat host holds
+    anything; a person or an animal sits or stands on any host at least a stool's size;
+    otherwise the thing must be about the host's size or smaller."""
+    if host.category in _NO_TOP:
         return False  # what a knight holds is beside him, not on him
+    if (host.rests or catalogue[host.category].rests) == "hanging":
+        # a hung container holds what fits in it (a parrot in a birdcage); other hung things nothing
+        inside = load_vocabulary().carries(host.category, host.name, ("containers",))
+        return inside and thing.size[0] <= host.size[0] and thing.size[1] <= host.size[1]
     if host.size[2] <= FLAT_HOST:
+        return True
+    if catalogue[thing.category].shape in _LIVING_SHAPES and max(host.size[:2]) >= _PERCH_SIDE:
         return True
     if thing.category in _FLOOR_FURNITURE:
         return False

@@ -77,6 +77,28 @@ class Vocabulary:
     pair_nouns: frozenset[str] = frozenset()
     #: What people wear: no object while worn, a thing when held ("his hat in his hands").
     clothing: frozenset[str] = frozenset()
+    #: Kind (seats, vehicles, mounts, perches, containers) → the categories, shapes, families
+    #: and head words of things a person or an animal is on when it is in or on them.
+    carriers: dict[str, frozenset[str]] = field(default_factory=dict)
+    #: Posture (sitting, lying, standing) → the words that give it ("dozes", "lies").
+    postures: dict[str, tuple[str, ...]] = field(default_factory=dict)
+    #: What one does from where one is: "a heron watches from a rock" puts the heron on the rock
+    #: ("pulls a rope from the barrel" does not).
+    lookout_verbs: frozenset[str] = frozenset()
+
+    def carries(self, category: str, name: str, kinds: tuple[str, ...] | None = None) -> bool:
+        """Whether a thing of ``category`` named ``name`` is one of the ``kinds`` of carriers
+        (all kinds when None): by its category, its catalogue shape or its head noun."""
+        shape = load_catalogue()[category].shape
+        head = singular(name.lower().split()[-1]) if name.strip() else ""
+        return any(
+            category in self.carriers[k] or shape in self.carriers[k] or head in self.carriers[k]
+            for k in (kinds or tuple(self.carriers))
+        )
+
+    def is_posture_verb(self, word: str) -> bool:
+        """A verb of sitting, lying or standing ("dozes", "perched", "stands")."""
+        return any(word in words for words in self.postures.values())
 
     def agrees(self, pronoun: str, head: str) -> bool:
         """Whether "she"/"her" or "he"/"him"/"his" can name a thing whose name ends in ``head``:
@@ -188,6 +210,9 @@ def _validate(raw: dict) -> Vocabulary:
         pair_nouns=frozenset(raw.get("pair_nouns", ())),
         clothing=frozenset(lists.get("clothing", ())),
         materials=frozenset(lists.get("materials", ())),
+        carriers={k: frozenset(v) for k, v in raw.get("carriers", {}).items() if k != "about"},
+        postures={k: tuple(v) for k, v in raw.get("postures", {}).items() if k != "about"},
+        lookout_verbs=frozenset(raw.get("lookout_verbs", ())),
     )
 
 

@@ -1,0 +1,109 @@
+"""People and animals on or in what carries them: seats, vehicles, ridden animals, perches and
+containers ("in" read as "on", as the annotations read it), "from" a perch, a posture verb's
+"in it", living things a holder is full of, a seat apiece."""
+
+import pytest
+
+from scenewright.analysis.parser import parse_scene
+
+
+def rels(text: str) -> set[tuple[str, str, str]]:
+    return {(r.source, r.relation, r.target) for r in parse_scene(text).relations if not r.inferred}
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # a living thing in a vehicle, a seat, a container, a bed: on it
+        ("A bus with four children in it waits by the school gate.", ("child_4", "on", "bus_1")),
+        ("A rabbit sleeps in a wicker basket by the fire.", ("rabbit_1", "on", "basket_1")),
+        ("A small cage with a white rabbit inside stands on the counter.", ("rabbit_1", "on", "cage_1")),
+        ("A nurse talks to an old patient who lies in the bed by the window.", ("patient_1", "on", "bed_1")),
+        # the relative clause's subject is the noun it follows, not the sentence's subject
+        ("A barber stands on a mat, bent over a sleepy client who sits in the chair.", ("client_1", "on", "chair_1")),
+        # "the water" is the water of the pond named before
+        ("Two swans glide across a wide pond. A duck swims in the water.", ("bird_1", "on", "pond_1")),
+        # a part of a vehicle places by the vehicle, not by the nearer barn
+        ("A tractor stands by the barn, and a boy sits on its bonnet.", ("boy_1", "on", "tractor_1")),
+        # "from" a perch after a verb one does from where one is
+        ("A heron watches the pond from a flat rock.", ("heron_1", "on", "rock_1")),
+        # a platform's middle holds what stands in it
+        ("A grandstand faces the pitch, and the mayor sits on a throne in the centre of it.", ("throne_1", "on", "grandstand_1")),
+        # "rides" puts the rider on what is ridden
+        ("A farmer rides a tractor across the field, and his dog runs beside it.", ("farmer_1", "on", "tractor_1")),
+        # "its" names no person: the boat's bow, not the fisherman's
+        ("An old fisherman sits in his boat by the jetty, and a gull perches on its bow.", ("gull_1", "on", "boat_1")),
+        # a sitting person's own seat is the one they sit on
+        ("An old woman sits knitting by the fire, her cat curled beside her chair.", ("woman_1", "on", "chair_1")),
+    ],
+)
+def test_on_what_carries_them(text, expected):
+    assert expected in rels(text)
+
+
+def test_a_posture_verbs_it_names_the_seat_not_the_nearer_subject():
+    found = rels("A bookcase stands beside an armchair, and an old sailor dozes in it.")
+    assert ("sailor_1", "on", "armchair_1") in found
+    assert not any(r[0] == "sailor_1" and r[2] == "bookshelf_1" for r in found)
+
+
+def test_a_posture_verbs_them_names_several_seats_one_each():
+    found = rels("Two armchairs stand by the shelves, and two boys doze in them.")
+    assert {("boy_1", "on", "armchair_1"), ("boy_2", "on", "armchair_2")} <= found
+
+
+def test_in_a_tower_is_inside_it_not_on_top():
+    assert not any(r[0] == "keeper_1" for r in rels("A keeper sits in the lighthouse."))
+
+
+def test_an_animals_it_is_what_stands_on_the_ground_not_a_hung_lamp():
+    found = rels("A chandelier hangs from the ceiling above the table, and a cat naps on it.")
+    assert ("cat_1", "on", "table_1") in found
+
+
+def test_from_after_a_verb_of_taking_places_nobody():
+    found = rels("A sailor pulls a rope from the barrel.")
+    assert not any(r[0] == "sailor_1" and r[1] == "on" for r in found)
+
+
+def test_living_things_a_holder_is_full_of_are_on_it_and_no_subject():
+    found = rels("A rowing boat packed with laughing children drifts past the pier.")
+    assert {(f"child_{i}", "on", "boat_1") for i in (1, 2, 3)} <= found
+    assert not any(r[0].startswith("child") and r[2] == "pier_1" for r in found)
+    found = rels("Three baskets sit by the stove, each of them full of kittens.")
+    assert {("cat_1", "on", "basket_1"), ("cat_2", "on", "basket_2"), ("cat_3", "on", "basket_3")} <= found
+
+
+def test_a_seat_apiece():
+    parsed = parse_scene("Four pilots sit at the console, each in a leather seat.")
+    assert [o.category for o in parsed.objects].count("chair") == 4
+    assert {(f"pilot_{i}", "on", f"chair_{i}") for i in (1, 2, 3, 4)} <= rels(parsed.text)
+    parsed = parse_scene("Two riders on horseback wait by the gate.")
+    assert [o.category for o in parsed.objects].count("horse") == 2
+    assert {("rider_1", "on", "horse_1"), ("rider_2", "on", "horse_2")} <= rels(parsed.text)
+
+
+def test_seated_at_a_counter_the_sitter_is_at_it_too():
+    found = rels("A clerk sits on a high stool at the counter.")
+    assert {("clerk_1", "on", "stool_1"), ("clerk_1", "near", "counter_1"), ("stool_1", "in front of", "counter_1")} <= found
+
+
+def test_seated_across_from_a_thing_the_sitter_faces_it():
+    found = rels("A robot stands in the middle, and a boy sits on an old crate across from it.")
+    assert {("boy_1", "on", "crate_1"), ("boy_1", "in front of", "robot_1"), ("boy_1", "face to", "robot_1")} <= found
+    assert not any(r[0] == "crate_1" and r[2] == "robot_1" for r in found)
+
+
+def test_people_and_animals_perch_on_hosts_smaller_than_they_are():
+    parsed = parse_scene("A big dog stands on a low stool. A lynx crouches on a boulder.")
+    found = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert {("dog_1", "on", "stool_1"), ("lynx_1", "on", "rock_1")} <= found
+    assert not parsed.repairs
+
+
+def test_a_cage_hung_from_the_ceiling_hangs_and_holds_its_bird():
+    parsed = parse_scene("A small cage with a canary inside hangs from the ceiling above the desk.")
+    cage = next(o for o in parsed.objects if o.id == "cage_1")
+    assert cage.rests == "hanging"
+    assert ("canary_1", "on", "cage_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert not parsed.repairs
