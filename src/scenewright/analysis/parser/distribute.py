@@ -152,6 +152,9 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
         elif kind == "under flat":
             for a, b in pairs:
                 out.append(ParsedRelation(b, "on", a))
+        elif kind == "under hung":  # "chairs under a ceiling fan": the fan above them
+            for a, b in pairs:
+                out.append(ParsedRelation(b, "above", a))
         elif kind in ("left of", "right of", "in front of", "behind", "side of", "near", "far", "on", "above", "face to"):
             out += [ParsedRelation(a, kind, b) for a, b in pairs]
     return out

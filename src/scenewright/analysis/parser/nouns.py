@@ -604,8 +604,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         w = t.text
         if w in _NUMBERS and not toks[j + 1].joined:
             count, counted = _NUMBERS[w], True
-            # "above one bench", "between every two benches": of those already there, if any
-            m.definite = w == "one" or (j > 0 and toks[j - 1].text in ("every", "each"))
+            # "above one bench", "between every two benches", "the two nearest benches": of those already there, if any
+            m.definite = w == "one" or (j > 0 and toks[j - 1].text in ("every", "each", "the", "these", "those"))
             break
         if toks[j + 1].joined and adjectives:  # "three-tiered", "red-and-white": one adjective
             adjectives[0] = f"{t.orig}-{adjectives[0]}"
