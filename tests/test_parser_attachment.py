@@ -1,6 +1,6 @@
 """Relation phrases and what they attach to: ordinals and pronouns after "between", things under
 what hangs, sides named by a possessive, fronted pronouns, participles and relatives, people on
-seats, where-clauses."""
+seats, where-clauses, side by side."""
 
 from scenewright.analysis.parser import parse_scene
 
@@ -84,6 +84,10 @@ def test_where_puts_what_it_names_near_the_place_before():
     assert ("man_1", "near", "rope_barrier_1") in found
     # a where-clause that places its subject itself adds nothing
     assert ("cat_1", "near", "kiosk_1") not in rels("A kiosk stands by the road, where a cat sleeps on a bench.")
+
+
+def test_side_by_side_puts_each_beside_the_one_before():
+    assert ("truck_2", "side of", "truck_1") in rels("Two vans are parked side by side.")
 
 
 def test_a_noun_after_an_article_is_no_relation_phrase():

@@ -103,8 +103,8 @@ Decisions worth knowing:
   placed them, latest first), and chains like any phrase ("On a mound behind the giraffes, ...");
   "it" never names a person, a thing never names what it sits on or in, and what a living thing
   watches is a living thing first. A where-clause's subjects placed nowhere else are ``near`` the
-  place before "where". A phrase word right after an article is the noun's own ("a border
-  guard").
+  place before "where". "Side by side" also puts each of a group beside the one before. A phrase
+  word right after an article is the noun's own ("a border guard").
 - "A bench for parents", "six tatami mats in size" name no things; "a glowing crystal ball" is a
   crystal ball (a phrase opening with a describing word gives way to a longer thing inside it).
 - Vague counts: a pair / a couple / both → 2; a few / several / some / a bare plural → 3;

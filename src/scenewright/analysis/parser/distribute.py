@@ -124,6 +124,8 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
                 out += [ParsedRelation(i, "face to", src.ids[0]) for i in src.ids[1:]]
             if kind == "opposite" and len(src.ids) > 1:
                 out += [ParsedRelation(i, r, src.ids[0]) for i in src.ids[1:] for r in ("in front of", "face to")]
+            if kind == "side of":  # "side by side": each beside the one before
+                out += [ParsedRelation(b, "side of", a) for a, b in zip(src.ids, src.ids[1:])]
             continue
         if instance is not None:
             tgt = replace(tgt, ids=[tgt.ids[instance]])

@@ -930,9 +930,12 @@ class _Reader:
             # "three stalls stand in a row", "a sofa against the wall", "a rug in the middle of the room"
             place = _PLACE_KINDS.get(kind) or self._anchor_after(rel.end, ce) if not kind.startswith("anchor ") else kind
             lines = next((_NUMBERS[t.text] for t in toks[rel.start : rel.end] if t.text in _NUMBERS), None)
+            abreast = any(t.text in ("side", "next", "beside") for t in toks[rel.start : rel.end])
             for g in srcs or ([] if c.first else list(prev_subject)):
                 if kind in _FORMATIONS:
                     self.formations.setdefault(g, "row" if kind == "rows" and lines == 1 else kind)
+                    if abreast and self.groups[g].count > 1:  # "two helmsmen sit side by side": each beside the next
+                        self.relations.append(("side of", g, g, None))
                     if kind == "rows" and lines:
                         self.lines.setdefault(g, lines)
                 elif place:
