@@ -149,3 +149,12 @@ def test_at_the_nearest_one_is_at_one_of_the_group():
 def test_what_a_with_person_wears_is_no_verb():
     found = rels("A cat sleeps on a crate. A kiosk stands by the road, with a vendor in overalls behind it.")
     assert ("vendor_1", "behind", "kiosk_1") in found
+
+
+def test_each_of_them_gives_one_each_to_the_new_thing():
+    found = rels("Three vans wait in front of the shed, and a driver kneels beside each of them.")
+    assert {("driver_1", "side of", "truck_1"), ("driver_3", "side of", "truck_3")} <= found
+    text = "A long desk runs across the room with two nurses sitting behind it, and there's a phone on the desk in front of each of them."
+    parsed = parse_scene(text)
+    assert [o.category for o in parsed.objects].count("desk") == 1
+    assert {("telephone_1", "in front of", "nurse_1"), ("telephone_2", "in front of", "nurse_2")} <= rels(text)

@@ -72,6 +72,8 @@ class _Clause:
     finite: bool = False
     #: ``finite`` as it stood when the last target was read.
     target_after_verb: bool = False
+    #: What the last phrase placed ("a register on the counter ...": the register).
+    last_srcs: list[int] = field(default_factory=list)
     #: Thing → what this clause put it on or in: no "it" of its own ("a parrot in a cage watches it").
     supports: dict[int, list[int]] = field(default_factory=dict)
 
@@ -585,6 +587,8 @@ class _Reader:
                 return "each other", j + 2
             if w in ("each", "every") and j + 1 < ce and toks[j + 1].text == "one":
                 return "each one", j + 2  # "a chair in front of each one": one per member
+            if w == "each" and [t.text for t in toks[j + 1 : j + 3]] == ["of", "them"]:
+                return "each one", j + 3  # "a mechanic kneels beside each of them"
             if w == "one" and j > pos and toks[j - 1].text not in _NUMBERS and (j + 1 >= ce or toks[j + 1].text != "of"):
                 return "that one", j + 1  # "at the foot of the tallest one": one of a group named before
             # a noun, not a verb, after a determiner or a count ("its walls", "two rows of")
@@ -898,6 +902,11 @@ class _Reader:
             rider = c.main or ([] if c.first else list(prev_subject))
             if self._rider_placed(c, rider, kind):
                 srcs = list(rider)  # "he sits on a stool at the workbench": he is at it, on his stool
+            each = target == "each one" or (
+                isinstance(target, list) and getattr(self.by_start.get(self._target_start), "each", False)
+            )
+            if each and c.last_srcs and all(t in self.history for t in c.last_target):
+                srcs = list(c.last_srcs)  # "a register on the counter in front of each of them": one each, not the counter
         elif c.last_target and c.last_target_end == last_event_end and self._describes(between, c.target_after_verb):
             srcs = list(c.last_target)  # "a lorry idling at the barrier", "a lamp that hangs above the bar"
         elif c.head is not None:
@@ -953,8 +962,8 @@ class _Reader:
             rel = replace(rel, elliptic=True)
         if target == "each one":
             targets = self._pronoun("them", c, srcs, list(c.last_target))
-            if targets:
-                self._per_each([s for s in srcs if s in c.groups], targets[0])
+            if targets:  # one per member for what this clause brings in, not for "the counter" named before
+                self._per_each([s for s in srcs if s in c.groups and s not in self.history], targets[0])
         elif target == "that one":
             targets = self._one_of(c, srcs, prev_subject)
         elif target in _PERSONAL or target == "them living":
@@ -1071,6 +1080,7 @@ class _Reader:
         if kind in ("on", "in", "on top"):
             for s in srcs:
                 c.supports.setdefault(s, []).extend(targets)
+        c.last_srcs = list(srcs)
         c.last_kind = "between" if rel.kind == "between" else kind  # "between two trees to the left of"
         if isinstance(target, list):
             c.last_target, c.last_target_end = targets, end
