@@ -158,3 +158,13 @@ def test_each_of_them_gives_one_each_to_the_new_thing():
     parsed = parse_scene(text)
     assert [o.category for o in parsed.objects].count("desk") == 1
     assert {("telephone_1", "in front of", "nurse_1"), ("telephone_2", "in front of", "nurse_2")} <= rels(text)
+
+
+def test_from_a_seat_or_a_roof_is_on_it():
+    found = rels("A ginger cat watches her from a stool beside the counter.")
+    assert {("cat_1", "on", "stool_1"), ("stool_1", "side of", "counter_1")} <= found
+    found = rels("A small hut stands by the road, and a crow watches everything from the hut's roof.")
+    assert ("bird_1", "on", "house_1") in found or any(s.startswith("crow") and r == "on" for s, r, _ in found)
+    assert rels("A man sips from a glass.") == set()
+    found = rels("Three stalls stand in a row. Steam rises from a food cart next to the first stall.")
+    assert ("cart_1", "side of", "market_stall_1") in found

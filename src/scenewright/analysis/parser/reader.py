@@ -96,7 +96,7 @@ _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
 #: After these, a phrase right after the target places the target: "a lamp on a table left of the
 #: sofa", "astronauts beside a lab bench to the right of the console", "sniffs at a cooler near the
 #: truck", "dozes in an armchair by the fire" (the armchair is by the fire).
-_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in")
+_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in", "from")
 #: Sides of a thing named by a possessive ("against its side"): the owner places.
 _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
 #: "Piled with" on a cart or a table is a load of things standing on it when they are this big or
@@ -126,6 +126,8 @@ _COPULAS = ("is", "are", "was", "were", "be", "has", "have", "had", "seems", "lo
 _PERSONAL = ("him", "her", "himself", "herself")
 #: Possessives of people and the pronoun that names their owner ("at his feet" → him).
 _PERSON_POSSESSIVES = {"his": "him", "her": "her", "their": "them living", "my": "him", "your": "him"}
+#: Shapes one can watch or wave "from" standing on them (besides seats and surfaces).
+_FROM_HOSTS = ("structure", "rock", "stage", "tower", "platform")
 #: Depth (m) at most of a board or a frame that hangs or leans rather than stands.
 _THIN = 0.12
 #: Words that open a relative clause about the noun before them.
@@ -885,6 +887,8 @@ class _Reader:
             group, ordinals, end = pair
             target, self._target_start = [group], -1
         body, part = self._body_part, self._part  # "on her knees": by the person, as the part says
+        if kind == "from" and ({t.text for t in toks[rel.end : end]} & {"roof", "rooftop", "top"} or part in ("roof", "top")):
+            kind = "on"  # "a crow watches everything from the hut's roof": on the hut
         if body == "near" or (body == "on" and kind in ("on", "on top", "in")):
             kind = body
         between = [t.text for t in toks[last_event_end : rel.start]]
@@ -1045,6 +1049,11 @@ class _Reader:
                 return end
             if not c.first and not c.unknown_subject:
                 srcs = list(prev_subject)
+            elif kind == "from" and isinstance(target, list) and targets:
+                # "steam rises from a food cart next to the stall": steam is no thing, the cart is placed
+                c.main = c.main_groups = list(targets)
+                c.last_target, c.last_target_end, c.last_kind = list(targets), end, kind
+                return end
         if kind in ("flank", "flank elliptic") and not toks[rel.start].text.startswith("flank"):
             self._one_a_side(srcs)  # also beside what is no object: "on each side of the elevator"
         hang = kind == "hanging from" or self._hung_before(rel.start)
@@ -1260,6 +1269,8 @@ class _Reader:
             return "on" if holds and target.shape not in _ENCLOSURES and target.size[2] <= 2.5 else "no relation"
         if kind == "hanging from":  # from a beam or a shelf: above it; from a tall tree: beside it
             return "above" if target.size[2] <= 2.5 else "near"
+        if kind == "from":  # "a cat watches her from a stool", "waves from a platform": on what one can be on
+            return "on" if target.support or target.shape in (*_SEATS, *_FROM_HOSTS) else "no relation"
         if kind == "centre of":  # "a vase in the middle of the table": on it; else near it
             return "on" if src.rests == "surface" and target.support else "near"
         return _KIND_RELATION.get(kind, kind)
