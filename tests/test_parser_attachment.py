@@ -168,3 +168,8 @@ def test_from_a_seat_or_a_roof_is_on_it():
     assert rels("A man sips from a glass.") == set()
     found = rels("Three stalls stand in a row. Steam rises from a food cart next to the first stall.")
     assert ("cart_1", "side of", "market_stall_1") in found
+
+
+def test_a_description_goes_on_past_a_place_that_is_no_thing():
+    found = rels("A scarecrow stands in the field, and a robin is perched on a spade stuck in the soil beside it.")
+    assert {("robin_1", "on", "spade_1"), ("spade_1", "side of", "scarecrow_1")} <= found

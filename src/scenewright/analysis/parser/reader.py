@@ -844,9 +844,8 @@ class _Reader:
         return self._lives(self.groups[g].category)
 
     def _human(self, g: int) -> bool:
-        """A person, whom "it" never names (an animal it can)."""
-        category = self.groups[g].category
-        return category == "figure" or self.catalogue[category].shape == "figure"
+        """A person, whom "it" never names (an animal, a scarecrow or a mannequin it can)."""
+        return self.groups[g].category == "figure"
 
     def _lives(self, category: str) -> bool:
         return category in _LIVING or self.catalogue[category].shape in _LIVING
@@ -913,6 +912,12 @@ class _Reader:
                 srcs = list(c.last_srcs)  # "a register on the counter in front of each of them": one each, not the counter
         elif c.last_target and c.last_target_end == last_event_end and self._describes(between, c.target_after_verb):
             srcs = list(c.last_target)  # "a lorry idling at the barrier", "a lamp that hangs above the bar"
+            if target is None:  # "a fork stuck in the soil beside it": the description goes on
+                k = end
+                while k < ce and k not in self.rel_at and k not in self.by_start and toks[k].text not in (",", "and"):
+                    k += 1
+                c.last_target_end = k
+                return k
         elif c.head is not None:
             # contents are no verbs: "a cart with a bowl of apples on it" keeps the bowl as the source
             closed = any(
