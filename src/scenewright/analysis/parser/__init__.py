@@ -104,7 +104,10 @@ Decisions worth knowing:
   "it" never names a person, a thing never names what it sits on or in, and what a living thing
   watches is a living thing first. A where-clause's subjects placed nowhere else are ``near`` the
   place before "where". "Side by side" also puts each of a group beside the one before. A phrase
-  word right after an article is the noun's own ("a border guard").
+  word right after an article is the noun's own ("a border guard"). *From* a seat, a structure,
+  a rock, a surface or a roof is ``on`` it ("a cat watches her from a stool"), from anything
+  else nothing; "beside each of them" is one per member, and "a register on the counter in front
+  of each of them" gives out registers, not counters.
 - "A bench for parents", "six tatami mats in size" name no things; "a glowing crystal ball" is a
   crystal ball (a phrase opening with a describing word gives way to a longer thing inside it).
 - Vague counts: a pair / a couple / both → 2; a few / several / some / a bare plural → 3;
