@@ -173,3 +173,8 @@ def test_from_a_seat_or_a_roof_is_on_it():
 def test_a_description_goes_on_past_a_place_that_is_no_thing():
     found = rels("A scarecrow stands in the field, and a robin is perched on a spade stuck in the soil beside it.")
     assert {("robin_1", "on", "spade_1"), ("spade_1", "side of", "scarecrow_1")} <= found
+
+
+def test_a_subordinate_clause_does_not_share_the_relation_before():
+    found = rels("A boy stands in front of the mirror while the barber, a thin man with a comb, cuts his hair.")
+    assert ("barber_1", "in front of", "mirror_1") not in found

@@ -18,7 +18,7 @@ from scenewright.analysis.parser.nouns import (
 )
 from scenewright.analysis.parser.phrases import _Rel, _find_relations
 from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
-from scenewright.analysis.parser.tokens import _split, _tokenise
+from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _split, _tokenise
 from scenewright.analysis.parser.vocabulary import load_vocabulary, scaled, stretched
 from scenewright.analysis.parser.words import (
     _ADVERBS,
@@ -303,7 +303,9 @@ class _Reader:
             clauses = self._merge_lists(sentence)
             for ci, (cs, ce) in enumerate(clauses):
                 # "and the guide, standing on its bonnet, ...": a subject its participle goes on with
-                apposed = ci + 1 < len(clauses) and toks[clauses[ci + 1][0]].text.endswith("ing")
+                # ("while the tailor, a thin man ..., measures": a clause of its own, whose verb comes later)
+                standalone = ci + 1 < len(clauses) and toks[clauses[ci + 1][0]].text.endswith("ing")
+                standalone = standalone or (cs > 0 and toks[cs - 1].text in _CLAUSE_WORDS)
                 # a clause after a semicolon opens like a sentence ("...; behind it, three cars wait")
                 c = _Clause(first=ci == 0 or toks[cs - 1].text in (";", ":"))
                 before = len(self.relations)
@@ -328,7 +330,7 @@ class _Reader:
                         for t in targets:
                             self._relate(kind, self._beneath(kind, subjects, before), t)
                     pending = []
-                elif not c.produced and c.groups and last_rels and not apposed and self._is_list(cs, ce, strict=True):
+                elif not c.produced and c.groups and last_rels and not standalone and self._is_list(cs, ce, strict=True):
                     # "On the desk there is a lamp, a laptop and a mug": the list shares the relation
                     for kind, targets in last_rels:
                         for t in targets:
