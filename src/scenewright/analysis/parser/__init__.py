@@ -104,6 +104,24 @@ Decisions worth knowing:
   would close a cycle). A fronted ground phrase ("Behind the chair, a hologram floats above a
   round table") places what the subject floats above or stands on. "Side by side with" after
   several things is their row and opens their with-part.
+- Attachment: a relative or a participle right after a target describes the target ("a lorry
+  idling at the barrier", "a ring light that hangs from the ceiling"; before the subject's own
+  verb a participle stays the subject's); a person on a seat is what *at*, *across from*,
+  *facing* and, after a seat, *between* / *under* place ("sits on a stool at the workbench"),
+  while *beside* / *near* place the seat; "with" right after the second end of *between* is that
+  end's. X *under* a thing that hangs, is hung, is on a wall or is a thin board → that thing
+  ``above`` X ("chairs under a ceiling fan"). "Between the first and second van", "the two
+  nearest benches" are members of the group named before; "to her left", "at its foot", "on the
+  nurse's right" name a side of the possessor. A phrase opening a sentence, or a clause after a
+  semicolon, names with "it"/"them" what the clause before was about (its subjects, then what
+  placed them, latest first), and chains like any phrase ("On a mound behind the giraffes, ...");
+  "it" never names a person, a thing never names what it sits on or in, and what a living thing
+  watches is a living thing first. A where-clause's subjects placed nowhere else are ``near`` the
+  place before "where". "Side by side" also puts each of a group beside the one before. A phrase
+  word right after an article is the noun's own ("a border guard"). *From* a seat, a structure,
+  a rock, a surface or a roof is ``on`` it ("a cat watches her from a stool"), from anything
+  else nothing; "beside each of them" is one per member, and "a register on the counter in front
+  of each of them" gives out registers, not counters.
 - "A bench for parents", "six tatami mats in size" name no things; "a glowing crystal ball" is a
   crystal ball (a phrase opening with a describing word gives way to a longer thing inside it).
 - Vague counts: a pair / a couple / both → 2; a few / several / some / a bare plural → 3;

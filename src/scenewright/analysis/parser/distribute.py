@@ -124,6 +124,8 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
                 out += [ParsedRelation(i, "face to", src.ids[0]) for i in src.ids[1:]]
             if kind == "opposite" and len(src.ids) > 1:
                 out += [ParsedRelation(i, r, src.ids[0]) for i in src.ids[1:] for r in ("in front of", "face to")]
+            if kind == "side of":  # "side by side": each beside the one before
+                out += [ParsedRelation(b, "side of", a) for a, b in zip(src.ids, src.ids[1:])]
             continue
         if instance is not None:
             tgt = replace(tgt, ids=[tgt.ids[instance]])
@@ -152,6 +154,9 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
         elif kind == "under flat":
             for a, b in pairs:
                 out.append(ParsedRelation(b, "on", a))
+        elif kind == "under hung":  # "chairs under a ceiling fan": the fan above them
+            for a, b in pairs:
+                out.append(ParsedRelation(b, "above", a))
         elif kind in ("left of", "right of", "in front of", "behind", "side of", "near", "far", "on", "above", "face to"):
             out += [ParsedRelation(a, kind, b) for a, b in pairs]
     return out

@@ -14,7 +14,7 @@ from importlib import resources
 
 from scenewright.analysis.parser.sizes import _NUM_WORD
 from scenewright.analysis.parser.tokens import _Tok
-from scenewright.analysis.parser.words import _STOP, _UNITS, _is_verb
+from scenewright.analysis.parser.words import _DEFINITE, _STOP, _UNITS, _is_verb
 from scenewright.core.relations import FAR, NEAR
 
 
@@ -98,12 +98,17 @@ def _qualifies_noun(toks: list[_Tok], end: int, kind: str) -> bool:
     return w[0].isalpha() and w not in _STOP and not _is_verb(w)
 
 
+#: Words that open a noun phrase: a phrase word right after one is a noun's own word ("a border
+#: guard", "the past"), no relation ("her" and "that" also stand before verbs and prepositions).
+_ARTICLES = (_DEFINITE - {"her", "that"}) | {"a", "an", "another"}
+
+
 def _find_relations(toks: list[_Tok], taken: set[int]) -> list[_Rel]:
     table = _phrase_table()
     rels: list[_Rel] = []
     i = 0
     while i < len(toks):
-        if i in taken:
+        if i in taken or (i > 0 and toks[i - 1].text in _ARTICLES):
             i += 1
             continue
         hit = _distance_at(toks, i)

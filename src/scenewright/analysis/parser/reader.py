@@ -20,7 +20,7 @@ from scenewright.analysis.parser.nouns import (
 )
 from scenewright.analysis.parser.phrases import _Rel, _find_relations
 from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
-from scenewright.analysis.parser.tokens import _split, _tokenise
+from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _split, _tokenise
 from scenewright.analysis.parser.vocabulary import load_vocabulary, scaled, stretched
 from scenewright.analysis.parser.words import (
     _ADVERBS,
@@ -76,6 +76,15 @@ class _Clause:
     each: int | None = None
     #: The group whose members each have their own target of the next placing ("each in a seat").
     each_own: int | None = None
+    #: The subject's own verb has come ("a guard waves at ..."), so a participle after a target
+    #: describes the target ("... at a lorry idling at the barrier").
+    finite: bool = False
+    #: ``finite`` as it stood when the last target was read.
+    target_after_verb: bool = False
+    #: What the last phrase placed ("a register on the counter ...": the register).
+    last_srcs: list[int] = field(default_factory=list)
+    #: Thing → what this clause put it on or in: no "it" of its own ("a parrot in a cage watches it").
+    supports: dict[int, list[int]] = field(default_factory=dict)
 
 
 #: Phrases that place a group in a formation rather than by a target.
@@ -126,15 +135,22 @@ _COPULAS = ("is", "are", "was", "were", "be", "has", "have", "had", "seems", "lo
 #: A perch no taller than this, and this many times a thing's footprint, is a platform whose middle
 #: the thing stands on ("a throne in the centre of the stage").
 _PLATFORM_HEIGHT, _PLATFORM_AREA = 3.5, 4.0
-#: A thing that stands on the ground but is no bigger than this hangs when the text hangs it from
-#: the ceiling ("a birdcage hangs from the ceiling above the counter").
-_HUNG_SIDE = 1.2
 #: Pronouns that name a person or an animal.
 _PERSONAL = ("him", "her", "himself", "herself")
 #: Possessives of people and the pronoun that names their owner ("at his feet" → him).
 _PERSON_POSSESSIVES = {"his": "him", "her": "her", "their": "them living", "my": "him", "your": "him"}
 #: The longest side (m) of a thing a person has in hand when the text says "with" ("a wheel gun").
 _HANDHELD_SIZE = 1.0
+#: Depth (m) at most of a board or a frame that hangs or leans rather than stands.
+_THIN = 0.12
+#: Words that open a relative clause about the noun before them.
+_RELATIVES = ("that", "which", "who")
+#: Past participles that do not end in -ed ("a tarp strung between two trees").
+_PARTICIPLES = ("strung", "hung", "slung", "built", "set", "laid", "held", "spread", "drawn", "stuck", "bent", "kept")
+#: Phrase kinds that name a side of what their possessive names ("to her left") and its relation.
+_OWN_SIDES = {"its left": "left of", "its right": "right of", "its foot": "foot of"}
+#: The pronoun a possessive in such a phrase stands for.
+_POSSESSED = {**_OWNER_PRONOUNS, **_PERSON_POSSESSIVES}
 #: Categories and shapes of living things ("him", "her" name one of them).
 _LIVING = frozenset({"figure", "animal", "bird", "robot"})
 
@@ -175,6 +191,9 @@ class _Reader:
         self.formations: dict[int, str] = {}
         #: Group → how many rows its ``rows`` formation has ("in two rows").
         self.lines: dict[int, int] = {}
+        #: What the clause before was about: its subjects, then what they were placed by, latest
+        #: first; a phrase opening the next one with "it"/"them" names one of these first.
+        self.topic: list[int] = []
 
     # ---- groups
 
@@ -268,6 +287,8 @@ class _Reader:
                 )
             if found is not None:
                 m.group = found
+                if m.counted and _is_plural(self.toks, m) and self.groups[found].count < m.count:
+                    self.groups[found].count = m.count  # "the two nearest benches" after "a bench": two at least
                 if not _is_plural(self.toks, m) and self.groups[found].count > 1 and not m.each:
                     adj = [a.lower() for a in m.adjectives]
                     self.instance[m.start] = next((_ORDINALS[a] for a in adj if a in _ORDINALS), 0)
@@ -322,8 +343,14 @@ class _Reader:
             prev_subject: list[int] = []
             pending: list[tuple[str, list[int]]] = []
             last_rels: list[tuple[str, list[int]]] = []
-            for ci, (cs, ce) in enumerate(self._merge_lists(sentence)):
-                c = _Clause(first=ci == 0)
+            clauses = self._merge_lists(sentence)
+            for ci, (cs, ce) in enumerate(clauses):
+                # "and the guide, standing on its bonnet, ...": a subject its participle goes on with
+                # ("while the tailor, a thin man ..., measures": a clause of its own, whose verb comes later)
+                standalone = ci + 1 < len(clauses) and toks[clauses[ci + 1][0]].text.endswith("ing")
+                standalone = standalone or (cs > 0 and toks[cs - 1].text in _CLAUSE_WORDS)
+                # a clause after a semicolon opens like a sentence ("...; behind it, three cars wait")
+                c = _Clause(first=ci == 0 or toks[cs - 1].text in (";", ":"))
                 before = len(self.relations)
                 self._clause(c, cs, ce, prev_subject)
                 if c.fronted:
@@ -346,7 +373,7 @@ class _Reader:
                         for t in targets:
                             self._relate(kind, self._beneath(kind, subjects, before), t)
                     pending = []
-                elif not c.produced and c.groups and last_rels and self._is_list(cs, ce, strict=True):
+                elif not c.produced and c.groups and last_rels and not standalone and self._is_list(cs, ce, strict=True):
                     # "On the desk there is a lamp, a laptop and a mug": the list shares the relation
                     # (not what a thing is full of: "..., each packed with children")
                     listed = [g for g in c.groups if all(self.by_start[s].group != g for s in self.aboard if s in self.by_start)]
@@ -354,9 +381,14 @@ class _Reader:
                         for t in targets:
                             self._relate(kind, listed, t)
                     c.rels = last_rels
+                self._where(cs, c, before)
                 last_rels = c.rels or last_rels
                 if c.main_groups:
                     prev_subject = c.main_groups[:1] if not c.main else c.main
+                about = c.subjects or c.main_groups  # "In the centre stands a workbench; on it ..."
+                if about:
+                    placed_by = [r[2] for r in self.relations[before:] if r[1] in about]
+                    self.topic = list(dict.fromkeys([*about, *reversed(placed_by)]))
                 self.history.extend(c.groups)
         by_start = {m.start: m for m in mentions}
         held = [("on", by_start[s].group, by_start[h].group, None) for s, h in self.held_of
@@ -370,6 +402,31 @@ class _Reader:
         for g, h in self.in_hand:
             if g not in self.numbered and self.groups[h].count > 1:
                 self.groups[g].count = self.groups[h].count
+
+    def _where(self, cs: int, c: _Clause, since: int) -> None:
+        """"... next to the ticket booth, where an attendant waits": what a where-clause names and
+        places nowhere else is near the place before "where" (the last thing named before it)."""
+        if cs < 1 or self.toks[cs - 1].text != "where":
+            return
+        # the subjects up to their verb ("a mother pushing a pram": the pram is hers)
+        verb = next(
+            (k for k in range(cs, len(self.toks)) if k not in self.by_start and k not in self.content_at
+             and (_is_verb(self.toks[k].text) or self.toks[k].text.endswith("ing"))),
+            len(self.toks),
+        )  # fmt: skip
+        named = {m.group for m in self.by_start.values() if m.start < verb}
+        subjects = [g for g in c.subjects or c.main_groups[:1] if g in named]
+        if not subjects or any(r[1] in subjects for r in self.relations[since:]):
+            return
+        # the noun right before, else, for people, the last thing named shortly before ("a barrier
+        # guides the queue, where two men wait": the queue is no thing, the barrier is)
+        before = [m for m in self.by_start.values() if cs - 10 <= m.start and m.end < cs and m.group >= 0]
+        last = max(before, key=lambda m: m.end) if before else None
+        gap = [t.text for t in self.toks[last.end : cs - 1]] if last is not None else []
+        people = all(self._living(g) for g in subjects)
+        place = last.group if last is not None and (people or all(w == "," for w in gap)) else None
+        if place is not None and place not in subjects:
+            self._relate("near", subjects, place)
 
     def _on_wall_after(self, end: int) -> bool:
         """"... on the wall", "mounted on the back wall", "hangs on a wall" right after a noun."""
@@ -387,10 +444,14 @@ class _Reader:
     def _beneath(self, kind: str, subjects: list[int], since: int) -> list[int]:
         """What a fronted phrase of the ground ("Behind the chair, ...") places: each subject,
         or what the subject floats above or stands on in its own clause ("a hologram floats
-        above a round table": the table is behind the chair)."""
+        above a round table": the table is behind the chair). A person stays what it places: "Behind
+        it, a sergeant on a swivel chair types" puts the sergeant behind, the chair comes along."""
         if kind not in _GROUND_KINDS:
             return subjects
-        under = {r[1]: r[2] for r in self.relations[since:] if r[0] in ("on", "above") and r[2] not in subjects}
+        under = {
+            r[1]: r[2] for r in self.relations[since:]
+            if r[0] in ("on", "above") and r[2] not in subjects and not self._living(r[1])
+        }  # fmt: skip
         return list(dict.fromkeys(under.get(g, g) for g in subjects))
 
     def _rows_then_with(self, mentions: list[_Mention]) -> None:
@@ -700,21 +761,30 @@ class _Reader:
             if plural and len(pair) >= 2 and all(self.groups[g].count == 1 for g in pair):
                 return pair[-2:]
         recent = [g for g in [*prefer, *reversed(self.history), *reversed(c.groups)] if g not in srcs]
+        if not plural:  # "it" is never a person ("a guard waves at a lorry; behind it, ...")
+            recent = [g for g in recent if not self._human(g)] or recent
         # a thing on the floor is not placed by a small thing on a table ("a nightstand with a lamp
         # on it. A rug lies in front of it": the nightstand)
         # (above a small thing is fine: "a register on the counter, and a hologram floats above it")
+        # (one standing on its own is: "a pirate skull grins over the hole, and a windmill stands in front of it")
         big = bool(srcs) and not self._small(*srcs) and kind not in ("above", "over")
         # the people on seats, not the seats ("two helmsmen, each in a seat. Across from them, ...")
         sat_on = {r[2] for r in self.relations if r[0] == "on" and self._person_at(r[1]) and r[1] in recent}
-        # "it" names no person ("a fisherman sits in his boat, and a gull perches on its bow": the boat)
-        person = (lambda g: self.groups[g].category == "figure") if not plural else (lambda g: False)
+        tabletop = {r[1] for r in self.relations if r[0] in ("on", "above")}
+
+        def aside(g: int) -> bool:
+            return big and self._small(g) and g in tabletop
+
+        # what a living thing watches is first a living thing ("a fox sits on the drum, watching them")
+        watcher = kind == "face to" and bool(srcs) and all(self._living(g) for g in srcs)
         for fits in (
-            (lambda g: not (big and self._small(g)) and g not in sat_on),
-            (lambda g: not (big and self._small(g))),
+            (lambda g: not aside(g) and g not in sat_on and (not watcher or self._living(g))),
+            (lambda g: not aside(g) and g not in sat_on),
+            (lambda g: not aside(g)),
             (lambda g: True),
-        ):
+        ):  # fmt: skip
             for g in recent:
-                if (self.groups[g].count > 1) == plural and fits(g) and not person(g):
+                if (self.groups[g].count > 1) == plural and fits(g):
                     return [g]
         # "them" after two single things ("an armchair ... a bookcase ..., between them")
         return list(dict.fromkeys(recent))[:2] if plural else []
@@ -769,8 +839,10 @@ class _Reader:
                     continue
                 c.head = [c.each] if c.each is not None else (c.main or list(prev_subject))
                 mine = nxt in _PERSON_POSSESSIVES  # "by the flag with his mallet": his, not the flag's
-                if w == "with" and c.last_target and c.last_target_end == k and self._animate(*c.head) and not mine:
-                    c.head = list(c.last_target)  # "a baker stands behind the counter with a tray on it"
+                if w == "with" and c.last_target and c.last_target_end == k and not mine and (
+                    self._animate(*c.head) or c.last_kind == "between"
+                ):  # "a baker stands behind the counter with a tray on it", "between a drum and a shelf with cups on it"
+                    c.head = list(c.last_target[-1:] if c.last_kind == "between" else c.last_target)
                 c.wsub, c.expect_new = [], False
                 # "with his putter": a possessive after "with" says the person has it in hand
                 hand = hand or (w == "with" and mine and all(self._person_at(h) for h in c.head))
@@ -819,6 +891,7 @@ class _Reader:
                 last_event_end = m.end
                 continue
             c.verb_seen = c.verb_seen or k in self.rel_at or _is_verb(w)
+            c.finite = c.finite or _is_verb(w)
             if k in self.rel_at:
                 k = self._relation(c, self.rel_at[k], ce, prev_subject, starts_with_rel, last_event_end)
                 last_event_end = k
@@ -917,6 +990,10 @@ class _Reader:
         """A person or an animal (catalogue dogs and horses too, guessed figures and animals)."""
         return self._lives(self.groups[g].category)
 
+    def _human(self, g: int) -> bool:
+        """A person, whom "it" never names (an animal, a scarecrow or a mannequin it can)."""
+        return self.groups[g].category == "figure"
+
     def _lives(self, category: str) -> bool:
         return category in _LIVING or self.catalogue[category].shape in _LIVING
 
@@ -1013,7 +1090,14 @@ class _Reader:
     def _relation(self, c: _Clause, rel: _Rel, ce: int, prev_subject, starts_with_rel, last_event_end) -> int:
         toks = self.toks
         kind = rel.kind
-        target, end = self._target_at(rel.end, ce)
+        # "To her left a globe sits": the possessive is the target, the noun after the subject
+        target, end = self._target_at(rel.end, ce) if kind not in _OWN_SIDES else (None, rel.end)
+        if kind in ("on", "at") and target is None and (side := self._owners_side(rel.end, ce)) is not None:
+            kind, target, end = side  # "a cart is on the artist's right": right of the artist
+        ordinals: tuple[int, int] | None = None  # "between the first and second car": two of one group
+        if kind == "between" and target is None and (pair := self._ordinal_pair(rel.end, ce)) is not None:
+            group, ordinals, end = pair
+            target, self._target_start = [group], -1
         body, part = self._body_part, self._part  # "on her knees": by the person, as the part says
         self._perch_part = part in load_vocabulary().carriers.get("perches", ())
         if body == "near" or (body == "on" and kind in ("on", "on top", "in")):
@@ -1028,26 +1112,31 @@ class _Reader:
         if chained and isinstance(target, list) and target and c.last_target:
             # "a lamp on the table next to a teapot": what stands by a small thing is its peer, not the table
             chained = not self._small(target[0]) or self._small(c.last_target[0])
-        seated: list[int] = []  # "a clerk sits on a stool at the counter": he is at it too
-        facing: list[int] = []  # "she sits on a crate across from it": she faces it, not the crate
-        # "bent over a client who sits in the chair": the relative clause's subject
-        relative = bool(c.last_target) and c.last_target_end == last_event_end and between[:1] in (["who"], ["which"])
         if chained and c.last_target and c.last_target_end == last_event_end and all(b in _ADVERBS for b in between):
             srcs = list(c.last_target)
-            subjects = c.main or list(prev_subject)
-            sitters = [r[1] for r in self.relations if r[0] == "on" and r[2] in srcs and r[1] in subjects and self._living(r[1])]
-            if kind == "at":
-                seated = sitters
-            elif kind in ("opposite", "face to"):
-                facing = sitters
-        elif relative and c.head is None:
-            srcs = list(c.last_target)
+            rider = c.main or ([] if c.first else list(prev_subject))
+            if self._rider_placed(c, rider, kind):
+                srcs = list(rider)  # "he sits on a stool at the workbench": he is at it, on his stool
+            each = target == "each one" or (
+                isinstance(target, list) and getattr(self.by_start.get(self._target_start), "each", False)
+            )
+            if each and c.last_srcs and all(t in self.history for t in c.last_target):
+                srcs = list(c.last_srcs)  # "a register on the counter in front of each of them": one each, not the counter
+        elif c.last_target and c.last_target_end == last_event_end and self._describes(between, c.target_after_verb):
+            srcs = list(c.last_target)  # "a lorry idling at the barrier", "a lamp that hangs above the bar"
+            if target is None:  # "a fork stuck in the soil beside it": the description goes on
+                k = end
+                while k < ce and k not in self.rel_at and k not in self.by_start and toks[k].text not in (",", "and"):
+                    k += 1
+                c.last_target_end = k
+                return k
         elif c.head is not None:
             # contents are no verbs: "a cart with a bowl of apples on it" keeps the bowl as the source
             closed = any(
                 _is_verb(toks[k].text)
-                for k in range(last_event_end, rel.start)
-                if k not in self.content_at and toks[k - 1].text != "of"
+                for k in range(last_event_end, rel.start + 1)  # "with parrots inside hangs from": its own verb
+                if k not in self.content_at and toks[k - 1].text not in ("of", "in")  # "a farmer in dungarees"
+                and toks[k - 1].text not in _DETERMINERS
                 and (k - 1 not in self.content_at or toks[k].text in _FINITE)
             )
             # "a dad with his putter beside the windmill": what is in hand goes where its holder is
@@ -1076,9 +1165,12 @@ class _Reader:
             # "three stalls stand in a row", "a sofa against the wall", "a rug in the middle of the room"
             place = _PLACE_KINDS.get(kind) or self._anchor_after(rel.end, ce) if not kind.startswith("anchor ") else kind
             lines = next((_NUMBERS[t.text] for t in toks[rel.start : rel.end] if t.text in _NUMBERS), None)
+            abreast = any(t.text in ("side", "next", "beside") for t in toks[rel.start : rel.end])
             for g in srcs or ([] if c.first else list(prev_subject)):
                 if kind in _FORMATIONS:
                     self.formations.setdefault(g, "row" if kind == "rows" and lines == 1 else kind)
+                    if abreast and self.groups[g].count > 1:  # "two helmsmen sit side by side": each beside the next
+                        self.relations.append(("side of", g, g, None))
                     if kind == "rows" and lines:
                         self.lines.setdefault(g, lines)
                 elif place:
@@ -1086,8 +1178,10 @@ class _Reader:
             if kind.startswith("anchor ") and toks[rel.end - 1].text != "of":
                 return rel.end  # "In the centre a huge spellbook floats ...": the noun after is the subject
             return end
-        if kind in ("its left", "its right") and target is None:
-            kind, target = ("left of" if kind == "its left" else "right of"), "it"
+        if kind in _OWN_SIDES and target is None:
+            # "to its left", "to her left", "at its foot": the side of what the possessive names
+            owner = next(t.text for t in toks[rel.start : rel.end] if t.text in _POSSESSED)
+            kind, target = _OWN_SIDES[kind], _POSSESSED[owner]
         if kind == "on top" and target is None:
             kind = "on"
             target = "it" if c.head is not None else None
@@ -1099,8 +1193,8 @@ class _Reader:
                 # "a register on the counter in front of each of them": one register each, not a counter
                 srcs = [g for g in c.main if g not in self.history]
             targets = self._pronoun("them", c, srcs, list(c.last_target))
-            if targets:
-                self._per_each([s for s in srcs if s in c.groups], targets[0])
+            if targets:  # one per member for what this clause brings in, not for "the counter" named before
+                self._per_each([s for s in srcs if s in c.groups and s not in self.history], targets[0])
         elif target == "that one":
             targets = self._one_of(c, srcs, prev_subject)
         elif target == "the part":  # "in the water": the latest thing that has such a part
@@ -1109,13 +1203,21 @@ class _Reader:
         elif target in _PERSONAL or target == "them living":
             # "a pirate stands behind the chest with a shovel beside him": the person, not the chest
             targets = self._person(c, srcs, target)
+            if not targets and target == "them living":  # "to their left" of things: them
+                targets = self._pronoun("them", c, srcs, list(c.last_target))
         elif isinstance(target, str) and target != "each other":
             # "a bench in front of the swing, facing it": the clause's own last target first.
             # then the subject before ("a wagon waits behind the fountain, and a donkey is tied to
             # a post next to it": the wagon)
             own_subject = list(prev_subject) if c.main and srcs == c.main else []
             prefer = [*c.last_target, *prev_subject] if c.last_target else own_subject
-            targets: list[int] | str = self._pronoun(target, c, srcs, prefer, kind) if c.head is None else list(c.head)
+            if not srcs and c.first and starts_with_rel:
+                prefer = list(self.topic)  # "Behind them, five soldiers sit": them of the sentence before
+            who = srcs or ([] if c.first else list(prev_subject))  # "..., watching them": the subject before
+            own = [t for s in who for t in c.supports.get(s, [])]
+            targets: list[int] | str = (
+                list(c.head) if c.head is not None else self._pronoun(target, c, who + own, prefer, kind)
+            )
             if c.head is not None and all(self._living(h) for h in c.head):
                 # "a man on the bench, with his terrier asleep under it": "it" is no person
                 targets = self._pronoun(target, c, srcs + c.head, prefer)
@@ -1136,6 +1238,7 @@ class _Reader:
             targets = self._part_owner(part, targets, [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)], srcs)
             if c.head is None and target in ("it", "them") and part is None and kind in ("in", "on", "from"):
                 targets = self._seat(c, srcs, prefer, rel.start, target == "them") or targets
+            targets = self._peer(kind, srcs, targets, c)
         elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
             # "a bed with a nightstand on either side": a with-thing's side is its head's
             owner = list(c.head) if c.head is not None and srcs == c.wsub else []
@@ -1173,19 +1276,25 @@ class _Reader:
             if starts_with_rel and c.first and not c.produced and isinstance(targets, list) and targets:
                 tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
                 c.fronted.append((kind, targets, tm is not None and tm.each))
+                if isinstance(target, list):  # "On a mound behind the giraffes, ...": the mound is behind them
+                    c.last_target, c.last_target_end, c.last_kind = targets, end, kind
                 return end
             if not c.first and not c.unknown_subject:
                 srcs = list(prev_subject)
+            elif kind == "from" and isinstance(target, list) and targets:
+                # "steam rises from a food cart next to the stall": steam is no thing, the cart is placed
+                c.main = c.main_groups = list(targets)
+                c.last_target, c.last_target_end, c.last_kind = list(targets), end, kind
+                return end
         if kind in ("flank", "flank elliptic") and not toks[rel.start].text.startswith("flank"):
             self._one_a_side(srcs)  # also beside what is no object: "on each side of the elevator"
-        if not srcs or not targets:
-            return end
         hang = kind == "hanging from" or self._hung_before(rel.start)
         if hang and kind in ("above", "over", "hanging from") and self._from_ceiling(rel.start):
             for g in srcs:  # "three paper lanterns hang from the ceiling over the counter": hung, not set down
-                rests, size = self.groups[g].rests, self.groups[g].size
-                if rests == "surface" or (rests == "ground" and max(size) <= _HUNG_SIDE):  # a birdcage too
+                if self.groups[g].rests != "hanging" and not self._living(g):  # also "a birdcage hangs from the ceiling"
                     self.groups[g].rests = "hanging"
+        if not srcs or not targets:
+            return end
         if targets == "each other":
             # "face each other", "sit across from each other" (in front of and facing, each way)
             each_other = kind if kind in ("face to", "opposite") else "near"
@@ -1214,21 +1323,87 @@ class _Reader:
         sitter = self._seat_owner(c, srcs, tm) if tm is not None else None
         if sitter is not None:
             self._relate("on", [sitter], targets[0], instance=instance)
-        srcs = facing or srcs
         for t in targets:
-            self._relate(kind, srcs, t, hang, instance)
-            self._relate("near", seated, t)
+            for one in ordinals or (instance,):
+                self._relate(kind, srcs, t, hang, one)
             if body == "on":  # a person holds nothing on top, but carries what is on a knee or an arm
                 self.carried.update((s, t) for s in srcs)
         c.produced = True
         c.rels = [(kind, targets)]
+        if kind in ("on", "in", "on top"):
+            for s in srcs:
+                c.supports.setdefault(s, []).extend(targets)
+        c.last_srcs = list(srcs)
         c.last_kind = "between" if rel.kind == "between" else kind  # "between two trees to the left of"
         if isinstance(target, list):
             c.last_target, c.last_target_end = targets, end
+            c.target_after_verb = c.finite
         else:
             c.last_target, c.last_target_end = [], -1
         c.expect_new = True
         return end
+
+    def _owners_side(self, pos: int, ce: int) -> tuple[str, list[int], int] | None:
+        """"(on) the artist's right": right of the latest thing of that name, and where it ends."""
+        toks = self.toks
+        k = pos + (pos < ce and toks[pos].text == "the")
+        if k + 1 >= ce or not toks[k].text.endswith("'s") or toks[k + 1].text not in ("left", "right"):
+            return None
+        head = singular(toks[k].text[:-2])
+        owner = next((g.index for g in reversed(self.groups) if singular(g.name.split()[-1]) == head), None)
+        return None if owner is None else (f"{toks[k + 1].text} of", [owner], k + 2)
+
+    def _ordinal_pair(self, pos: int, ce: int) -> tuple[int, tuple[int, int], int] | None:
+        """"(between) the first and second ramp", "the first and the last car": the group the noun
+        names back, the two ordinals, and where the noun ends."""
+        toks = self.toks
+        k = pos + (pos < ce and toks[pos].text == "the")
+        if k + 2 >= ce or toks[k].text not in _ORDINALS or toks[k + 1].text != "and":
+            return None
+        j = k + 2 + (toks[k + 2].text == "the")
+        if j >= ce or toks[j].text not in _ORDINALS:
+            return None
+        m = next((self.by_start[i] for i in range(j + 1, min(ce, j + 4)) if i in self.by_start), None)
+        if m is None:
+            return None
+        m.definite = True  # "the first and second car": the cars named before
+        group = self._resolve(m, [])
+        if group < 0:
+            return None
+        return group, (_ORDINALS[toks[k].text], _ORDINALS[toks[j].text]), m.end
+
+    def _peer(self, kind: str, srcs: list[int], targets: list[int], c: _Clause) -> list[int]:
+        """A small thing beside "it", where "it" came out as a host with a small thing just
+        named on it, stands by that thing ("a computer on the counter, with a radio beside it")."""
+        beside = kind in ("side of", "near", "left of", "right of")
+        if not beside or not srcs or len(targets) != 1 or not self._small(*srcs):
+            return targets
+        recent = [*self.history[-3:], *c.groups]  # this clause, or the one just before the "with"
+        on_it = [r[1] for r in self.relations if r[0] == "on" and r[2] == targets[0] and r[1] in recent]
+        peers = [g for g in on_it if g not in srcs and self._small(g)]
+        return peers[-1:] or targets
+
+    def _rider_placed(self, c: _Clause, rider: list[int], kind: str) -> bool:
+        """Whether a phrase after "a person sits on X" places the person, not X: where the person
+        works or faces ("sits on a stool at a workbench", "on a bathtub across from it"), and
+        after a seat, what the person sits between or under ("in folding chairs between them").
+        Beside, near, in front of place the seat ("a bard sits on a stool beside the fire")."""
+        if c.last_kind not in ("on", "in", "on top") or not rider or not all(self._living(g) for g in rider):
+            return False
+        seat = all(self.catalogue[self.groups[g].category].shape in _SEATS for g in c.last_target)
+        return kind in ("opposite", "at", "face to") or (seat and kind in ("between", "under"))
+
+    @staticmethod
+    def _describes(words: list[str], after_verb: bool) -> bool:
+        """Whether the words between a target and the next phrase open a description of the target:
+        a relative pronoun ("a customer who lies back in the chair"), or a participle once the
+        subject has its own verb ("a guard waves at a lorry idling at the barrier"; but "a dog on
+        the rug sleeping by the fire" is the dog's)."""
+        if not words or any(w in (",", "and", "or", "with", "while") for w in words):
+            return False
+        if words[0] in _RELATIVES:
+            return True
+        return after_verb and (words[0].endswith(("ing", "ed")) or words[0] in _PARTICIPLES)
 
     def _names_thing(self, start: int, starts: set[int]) -> bool:
         """A noun phrase of a thing follows ("at each desk"), not a time or a part ("at one end")."""
@@ -1237,6 +1412,10 @@ class _Reader:
             w = self.toks[k].text
             if k in starts or w in ("it", "them") or (k == start and self._body_part_at(k, len(self.toks), starts)):
                 return True  # "at each desk", "at it", "at his feet"
+            if k == start and w in _OWNER_PRONOUNS and k + 1 < len(self.toks) and self.toks[k + 1].text.isalpha():
+                return True  # "queuing at its window": by its owner
+            if w == "one" and k > start + 1:
+                return True  # "playing at the nearest one": one of a group
             if not (w in _DETERMINERS or w in ("each", "every") or (w[:1].isalpha() and w not in _STOP)):
                 return False
             k += 1
@@ -1281,6 +1460,21 @@ class _Reader:
             k -= 1
         return any(self.toks[i].text in _CEILING_WORDS for i in range(k + 1, min(pos + 4, len(self.toks))))
 
+    def _overhead(self, g: int) -> bool:
+        """Whether a thing hangs or is fixed to a wall, so what stands under it is below it: it
+        hangs, the text hangs it ("a ring light that hangs from the ceiling") or puts it on a
+        wall, or it is a board or a frame, too thin to stand on its own."""
+        group = self.groups[g]
+        if group.rests == "hanging" or (group.size[1] <= _THIN and group.size[2] >= 2 * _THIN):
+            return True
+        for k, m in self.by_start.items():
+            if m.group != g:
+                continue
+            after = [t.text for t in self.toks[m.end : m.end + 3]]
+            if k in self.on_wall or any(w in _HANG_VERBS for w in after[after[:1] in (["that"], ["which"]) :][:1]):
+                return True
+        return False
+
     def _relate(self, kind: str, srcs: list[int], target: int, hang: bool = False, instance=None) -> None:
         for s in srcs:
             resolved = self._kind(kind, s, target, hang)
@@ -1298,6 +1492,8 @@ class _Reader:
         walled = any(m.group == s for k, m in self.by_start.items() if k in self.on_wall)
         if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not (hang or walled):
             return "near"  # a tree "above" a pond cannot float: read it as near (a rack on the wall can hang)
+        if kind == "under" and self._overhead(t):
+            return "under hung"  # "chairs under a ceiling fan": the fan hangs above them
         if kind == "under":
             tgt = self.catalogue[self.groups[t].category]
             return "under flat" if self.groups[s].size[2] < 0.1 and tgt.size[2] < 1.5 else "near"

@@ -58,7 +58,7 @@ _CONTENT_HEADS = {"vase", "bowl", "basket", "bucket", "plate", "bottle", "cup", 
 _CONTENT_MARKERS = {("full", "of"), ("filled", "with"), ("packed", "with"), ("overflowing", "with"),
                     ("covered", "in"), ("covered", "with"), ("stacked", "with"), ("heaped", "with"),
                     ("stocked", "with"), ("lined", "with"), ("piled", "with"), ("overflow", "with")}  # fmt: skip
-_HANG_VERBS = {"hang", "hangs", "hanging", "hung", "hover", "hovers", "hovering", "float", "floats",
+_HANG_VERBS = {"hang", "hangs", "hanging", "hung", "strung", "hover", "hovers", "hovering", "float", "floats",
                "floating", "suspended", "dangle", "dangles", "dangling", "fly", "flies", "flying",
                "soar", "soars", "soaring", "glow", "glows", "drift", "drifts", "mounted", "swing",
                "swings", "swim", "swims", "swimming"}  # fmt: skip

@@ -1,0 +1,180 @@
+"""Relation phrases and what they attach to: ordinals and pronouns after "between", things under
+what hangs, sides named by a possessive, fronted pronouns, participles and relatives, people on
+seats, where-clauses, side by side."""
+
+from scenewright.analysis.parser import parse_scene
+
+
+def rels(text: str) -> set[tuple[str, str, str]]:
+    return {(r.source, r.relation, r.target) for r in parse_scene(text).relations if not r.inferred}
+
+
+def test_between_two_ordinals_of_one_group():
+    found = rels("Three vans wait in front of the shed. A pump stands between the first and second van.")
+    assert {("pump_1", "near", "truck_1"), ("pump_1", "near", "truck_2")} <= found
+    assert [o.category for o in parse_scene("Three vans wait. A pump stands between the first and second van.").objects].count("truck") == 3
+
+
+def test_between_them_after_a_person_in_seats_is_the_group_before():
+    found = rels("Two benches stand by the fence, and a row of parents sits in folding chairs between them.")
+    assert {("parent_1", "near", "bench_1"), ("parent_1", "near", "bench_2"), ("parent_1", "on", "chair_1")} <= found
+    assert not any(s.startswith("chair") and t.startswith("bench") for s, _, t in found)
+
+
+def test_under_a_hanging_or_thin_thing_puts_it_above():
+    assert ("lantern_1", "above", "table_1") in rels("A table stands under a lantern that hangs from the ceiling.")
+    assert ("ceiling_fan_1", "above", "sofa_1") in rels("A sofa stands against the wall under a ceiling fan.")
+    assert ("whiteboard_1", "above", "desk_1") in rels("A desk stands under a notice board.")
+    # a tree stands on its own: what is under it is near it
+    assert ("bench_1", "near", "tree_1") in rels("A bench stands under an oak tree.")
+
+
+def test_a_participle_or_relative_after_a_target_describes_the_target():
+    found = rels("A porter waves at a van idling at the gate.")
+    assert {("porter_1", "face to", "truck_1"), ("truck_1", "near", "arch_1")} <= found
+    assert ("porter_1", "near", "arch_1") not in found
+    found = rels("A long table stands under a net strung between two palm trees.")
+    net = {("fishing_net_1", "near", "palm_tree_1"), ("fishing_net_1", "near", "palm_tree_2")}
+    assert net | {("fishing_net_1", "above", "table_1")} <= found
+    assert ("patient_1", "on", "bed_1") in rels("A nurse bends over a patient who lies back in the bed.")
+    # before the subject's own verb the participle is the subject's
+    assert ("dog_1", "near", "fireplace_1") in rels("A dog on the rug sleeping near the fireplace.")
+
+
+def test_possessive_sides_and_feet():
+    assert ("globe_1", "left of", "woman_1") in rels("A woman stands by the telescope. To her left a globe stands.")
+    assert ("bench_1", "in front of", "statue_1") in rels("A statue stands in the park with a bench at its foot.")
+    found = rels("Two obelisks stand in the square, each with a barrel at its base.")
+    assert {("barrel_1", "in front of", "obelisk_1"), ("barrel_2", "in front of", "obelisk_2")} <= found
+
+
+def test_a_fronted_pronoun_names_what_the_sentence_before_was_about():
+    found = rels("Two cannons stand side by side, each with a pile of barrels at its foot. Behind them, four sailors sit.")
+    assert ("sailor_1", "behind", "cannon_1") in found
+    assert not any(s.startswith("sailor") and t.startswith("barrel") for s, _, t in found)
+    # "it" is no person: the van the guard waves at
+    found = rels("A guard stands by the gate and waves at a van; behind it, two cars wait.")
+    assert ("car_1", "behind", "truck_1") in found
+
+
+def test_a_person_on_a_seat_works_and_faces_from_it():
+    found = rels("The old potter sits on a stool at a workbench in the corner.")
+    assert {("potter_1", "on", "stool_1"), ("potter_1", "near", "lab_bench_1")} <= found
+    found = rels("A boy sits on an upturned crate across from the robot.")
+    assert {("boy_1", "in front of", "robot_1"), ("boy_1", "face to", "robot_1")} <= found
+    # beside places the seat, as before
+    assert ("stool_1", "side of", "fireplace_1") in rels("A bard sits on a stool beside the fireplace.")
+
+
+def test_a_person_in_a_fronted_place_stays_the_subject():
+    found = rels("A counter stands across the room. Behind it, a clerk on a swivel chair reads.")
+    assert ("clerk_1", "behind", "counter_1") in found
+
+
+def test_a_small_thing_beside_it_stands_by_the_small_thing_on_the_host():
+    found = rels("A desk stands by the wall. A clerk types at a laptop on the desk, with a phone beside it.")
+    assert ("telephone_1", "side of", "laptop_1") in found
+
+
+def test_where_puts_what_it_names_near_the_place_before():
+    found = rels("A kiosk stands by the gate, where two tourists in hats are waiting.")
+    assert {("tourist_1", "near", "arch_1"), ("tourist_2", "near", "arch_1")} <= found
+    # the noun before "where" is no thing: the last thing named before it
+    found = rels("A rope barrier guides the queue, where an old man waits.")
+    assert ("man_1", "near", "rope_barrier_1") in found
+    # a where-clause that places its subject itself adds nothing
+    assert ("cat_1", "near", "kiosk_1") not in rels("A kiosk stands by the road, where a cat sleeps on a bench.")
+
+
+def test_side_by_side_puts_each_beside_the_one_before():
+    assert ("truck_2", "side of", "truck_1") in rels("Two vans are parked side by side.")
+
+
+def test_a_noun_after_an_article_is_no_relation_phrase():
+    found = rels("A border guard stands by the gate.")
+    assert found == {("border_guard_1", "near", "arch_1")}
+
+
+def test_waving_and_staring_face_the_target():
+    assert ("boy_1", "face to", "truck_1") in rels("A boy waves at a passing van.")
+    assert ("cat_1", "face to", "bird_1") in rels("A cat stares at a bird on the fence.")
+
+
+def test_a_with_part_after_between_belongs_to_the_second_end():
+    found = rels("A cart stands between a well and a table with two bowls on it.")
+    assert ("bowl_1", "on", "table_1") in found
+
+
+def test_a_watcher_watches_the_living_and_not_what_it_sits_in():
+    found = rels("Two boys play in the yard. A crate with apples on it stands by the gate. A dog sits on a barrel, watching them.")
+    assert ("dog_1", "face to", "boy_1") in found
+    found = rels("A dog sleeps under the table, and a canary in a birdcage hanging from the ceiling watches it.")
+    assert ("canary_1", "face to", "dog_1") in found or ("bird_1", "face to", "dog_1") in found
+
+
+def test_between_the_two_nearest_of_a_group_named_before():
+    found = rels("Four kiosks stand in a row. A bin sits between the two nearest kiosks.")
+    assert {("trash_can_1", "near", "kiosk_1"), ("trash_can_1", "near", "kiosk_2")} <= found
+    assert [o.category for o in parse_scene("Four kiosks stand in a row. A bin sits between the two nearest kiosks.").objects].count("kiosk") == 4
+
+
+def test_a_side_of_a_named_owner():
+    found = rels("The nurse stands by the bed. A trolley with two bottles on it is on the nurse's right.")
+    assert ("shopping_cart_1", "right of", "nurse_1") in found
+
+
+def test_a_fronted_phrase_chains_like_any_other():
+    found = rels("Three ponies graze. On a hay bale behind the ponies, a goose sits very still.")
+    assert ("hay_bale_1", "behind", "horse_1") in found
+    assert not any(s.startswith("goose") and t.startswith("horse") for s, _, t in found)
+
+
+def test_it_is_a_small_thing_standing_on_its_own_but_not_one_on_a_table():
+    found = rels("A big field. At the far end, a stone skull grins over the last hole, and a windmill stands in front of it.")
+    assert any(s == "windmill_1" and r == "in front of" and "skull" in t for s, r, t in found)
+    found = rels("A nightstand with a lamp on it stands in the corner. A rug lies in front of it.")
+    assert ("rug_1", "in front of", "nightstand_1") in found
+
+
+def test_at_a_part_of_its_owner_is_by_the_owner():
+    found = rels("A food van is parked by the fence, and two boys are queuing at its window.")
+    assert {("boy_1", "near", "truck_1"), ("boy_2", "near", "truck_1")} <= found
+
+
+def test_at_the_nearest_one_is_at_one_of_the_group():
+    found = rels("Three looms stand along the wall, and a weaver is working at the first one.")
+    assert ("weaver_1", "near", "loom_1") in found
+
+
+def test_what_a_with_person_wears_is_no_verb():
+    found = rels("A cat sleeps on a crate. A kiosk stands by the road, with a vendor in overalls behind it.")
+    assert ("vendor_1", "behind", "kiosk_1") in found
+
+
+def test_each_of_them_gives_one_each_to_the_new_thing():
+    found = rels("Three vans wait in front of the shed, and a driver kneels beside each of them.")
+    assert {("driver_1", "side of", "truck_1"), ("driver_3", "side of", "truck_3")} <= found
+    text = "A long desk runs across the room with two nurses sitting behind it, and there's a phone on the desk in front of each of them."
+    parsed = parse_scene(text)
+    assert [o.category for o in parsed.objects].count("desk") == 1
+    assert {("telephone_1", "in front of", "nurse_1"), ("telephone_2", "in front of", "nurse_2")} <= rels(text)
+
+
+def test_from_a_seat_or_a_roof_is_on_it():
+    found = rels("A ginger cat watches her from a stool beside the counter.")
+    assert {("cat_1", "on", "stool_1"), ("stool_1", "side of", "counter_1")} <= found
+    found = rels("A small hut stands by the road, and a crow watches everything from the hut's roof.")
+    assert ("bird_1", "on", "house_1") in found or any(s.startswith("crow") and r == "on" for s, r, _ in found)
+    assert rels("A man sips from a glass.") == set()
+    found = rels("Three stalls stand in a row. Steam rises from a food cart next to the first stall.")
+    assert ("cart_1", "side of", "market_stall_1") in found
+
+
+def test_a_description_goes_on_past_a_place_that_is_no_thing():
+    found = rels("A scarecrow stands in the field, and a robin is perched on a spade stuck in the soil beside it.")
+    assert {("robin_1", "on", "spade_1"), ("spade_1", "side of", "scarecrow_1")} <= found
+
+
+def test_a_subordinate_clause_does_not_share_the_relation_before():
+    found = rels("A boy stands in front of the mirror while the barber, a thin man with a comb, cuts his hair.")
+    assert ("barber_1", "in front of", "mirror_1") not in found
