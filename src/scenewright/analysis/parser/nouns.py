@@ -374,6 +374,8 @@ def _names_kind(toks: list[_Tok], e: int) -> bool:
 #: Words that open the setting's contents after a place word ("a hangar with...", "a hangar where...").
 _PLACE_OPENERS = {"with", "where", "full", "filled", "housing", "containing", "holding", "packed", "crammed"}
 _INSIDE = {"in", "inside", "within", "into", "throughout"}
+#: m, the least height of a building a scene can stand inside (a kennel is no setting).
+_STOREY = 2.2
 #: Words a place phrase may have before its noun ("a bright cartoon-style pet shop").
 _PLACE_WORDS = 6
 
@@ -383,7 +385,8 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     with-part names things), not "a barn stands behind the pond"."""
     places = load_vocabulary().places
     head = singular(toks[e - 1].text)
-    if head not in places and not (e >= 2 and f"{toks[e - 2].text} {head}" in places):
+    building = _enterable(toks, s, e)
+    if head not in places and not (e >= 2 and f"{toks[e - 2].text} {head}" in places) and not building:
         return False
     j = s - 1
     while j >= 0 and s - j <= _PLACE_WORDS and (
@@ -392,6 +395,8 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
         j -= 1
     if j >= 0 and toks[j].text in _INSIDE:
         return True
+    if building:
+        return False
     # "on the top floor of a converted warehouse": a part of the place holds the scene
     if j > 0 and toks[j].text == "of" and toks[j - 1].text in (
         "floor", "top", "edge", "roof", "corner", "end", "back", "middle", "centre", "center", "rear", "interior",
@@ -420,6 +425,16 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
                 break
             k += 1
     return False
+
+
+def _enterable(toks: list[_Tok], s: int, e: int) -> bool:
+    """A building people stand in, named in the opening sentence: "a forge in an old stone barn"
+    sets the scene inside the barn, where "a barn stands behind the pond" is a thing of the scene."""
+    if any(t.text in (".", "!", "?") for t in toks[:s]):
+        return False
+    name = match_phrase(tuple(t.text for t in toks[s:e]))
+    category = load_catalogue()[name] if name else None
+    return category is not None and category.shape == "house" and category.size[2] >= _STOREY
 
 
 def _verb_word(word: str) -> bool:
