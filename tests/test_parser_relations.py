@@ -115,9 +115,22 @@ def test_between_a_facing_pair_runs_front_to_back():
 
 
 def test_a_clause_opened_by_and_keeps_its_own_placing():
-    parsed = parse_scene("Two robots sell orbs from a cart, and three aliens wait in a line.")
+    parsed = parse_scene("Two robots sell three orbs from a cart, and three aliens wait in a line.")
     formations = {o.name: o.formation for o in parsed.objects}
     assert formations["alien"] == "row" and formations["robot"] is None and formations["orb"] is None
+
+
+@pytest.mark.parametrize(
+    ("text", "names"),
+    [
+        ("A farm stall selling pies stands by the gate.", {"stall", "gate"}),
+        ("A cart serving hot drinks, buns and cakes waits by the gate.", {"cart", "gate"}),
+        # a counted thing is there to be seen
+        ("A vendor sells three kites by the gate.", {"vendor", "kite", "gate"}),
+    ],
+)
+def test_what_is_sold_or_served_is_wares_not_things_of_the_layout(text, names):
+    assert {o.name.split()[-1] for o in parse_scene(text).objects} == names
 
 
 def test_with_after_a_persons_target_belongs_to_the_target():

@@ -26,6 +26,7 @@ from scenewright.analysis.parser.words import (
     _CONTENT_MARKERS,
     _DETERMINERS,
     _HANG_VERBS,
+    _WARES_VERBS,
     _HOLD,
     _HOLD_PAIRS,
     _NUMBERS,
@@ -373,7 +374,7 @@ class _Reader:
             while j >= 0 and (toks[j].text in _DETERMINERS or toks[j].text in _NUMBERS or (
                 toks[j].text not in _STOP and toks[j].text[0].isalnum())) and m.start - j < 5:  # fmt: skip
                 j -= 1
-            if prev is not None and self._held_inside(m, prev):
+            if (prev is not None and self._held_inside(m, prev)) or self._wares(m):
                 m.content = chain = True
                 continue
             if j < 1 or prev is None:
@@ -385,6 +386,19 @@ class _Reader:
             )
             m.content = content
             chain = content
+
+    def _wares(self, m: _Mention) -> bool:
+        """"A stall selling pies", "a cart serving hot drinks": a bare plural after a verb of
+        trade is what is sold, not things of the layout ("a vendor sells two balloons" are there)."""
+        head = m.phrase.split()[-1].lower()
+        if m.counted or singular(head) == head:
+            return False
+        k = m.start - 1  # back over describing words and a list of wares before ("pies, cakes and jams")
+        while k >= 0 and m.start - k <= 8 and self.toks[k].text not in _WARES_VERBS and (
+            self.toks[k].text in (",", "and", "or") or self.toks[k].text not in _STOP and self.toks[k].text[:1].isalpha()
+        ):
+            k -= 1
+        return k >= 0 and self.toks[k].text in _WARES_VERBS
 
     def _size(self, m: _Mention) -> tuple[float, float, float]:
         return m.guess.size if m.guess is not None else self.catalogue[m.category].size
