@@ -444,3 +444,17 @@ def test_a_tall_thing_on_the_wall_can_be_above():
     found = rels("Above the sofa, a tall shelf on the back wall holds plants.")
     assert ("bookshelf_1", "above", "sofa_1") in found
     assert ("pine_tree_1", "near", "pond_1") in rels("A tall pine stands above the pond.")
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("A porter pushes a luggage cart across the hall.", {("porter_1", "near", "cart_1")}),
+        ("An old farmer turns a heavy millstone.", {("farmer_1", "near", "millstone_1")}),
+        # a thing small enough to hold gives no place of its own; the clause's own relation wins
+        ("A man reads a newspaper on the bench.", {("man_1", "on", "bench_1")}),
+        ("A nurse wheels a gurney beside the desk.", {("gurney_1", "side of", "desk_1"), ("nurse_1", "near", "gurney_1")}),
+    ],
+)
+def test_whoever_acts_on_a_big_thing_stands_by_it(text, expected):
+    assert rels(text) == expected

@@ -68,6 +68,8 @@ class _Clause:
     wsub_before: list[int] = field(default_factory=list)
     #: The group "each"/"every" distributes over: its with-parts and flankers come once per member.
     each: int | None = None
+    #: (doers, thing) for a living subject acting on a thing too big to hold ("a porter pushes a cart").
+    deeds: list[tuple[list[int], int]] = field(default_factory=list)
 
 
 #: Phrases that place a group in a formation rather than by a target.
@@ -704,6 +706,8 @@ class _Reader:
                     # "an astronaut plants a flag next to it": the verb's object takes what follows,
                     # unless a person holds it ("a man reads a newspaper on the bench": he is on it)
                     verb_object = self._object_of_verb(c, last_event_end, m.start)
+                    if verb_object and self._living(c.main[-1]) and not self._small(g) and not c.expect_new:
+                        c.deeds.append((list(c.main), g))
                     if not (verb_object and self._living(c.main[-1]) and self._small(g) and not c.expect_new):
                         c.main = [g] if c.expect_new or verb_object else [*c.main, g]
                     if not c.verb_seen:
@@ -718,6 +722,14 @@ class _Reader:
                 continue
             k += 1
         self._close_with(c)
+        self._do_deeds(c)
+
+    def _do_deeds(self, c: _Clause) -> None:
+        """"A porter pushes a cart", "two engineers check the console": whoever acts on a thing
+        too big to hold stands by it, unless the clause already relates the two."""
+        for doers, thing in c.deeds:
+            free = [d for d in doers if not any({r[1], r[2]} == {d, thing} for r in self.relations)]
+            self._relate("near", free, thing)
 
     def _object_of_verb(self, c: _Clause, start: int, end: int) -> bool:
         """Whether the noun at ``end`` is the object of a verb that follows the clause's subject
