@@ -659,11 +659,14 @@ def test_long_stretches_and_floor_things_on_a_desk_are_its_tabletop_kind():
         ("A farm at dusk. A barn stands behind the pond and a cat sleeps in the barn.", False, {"barn", "pond", "cat"}),
         # a kennel is too low to hold a scene
         ("A puppy naps in a kennel.", False, {"puppy", "kennel"}),
+        # the owner of the room the text opens in is the setting too
+        ("The engine room of a rusty cargo starship: a reactor hums by a console.", True, {"reactor", "console"}),
+        ("A hall of mirrors with a clown.", True, {"mirror", "clown"}),
     ],
 )
 def test_a_building_the_opening_sentence_is_inside_sets_the_scene(text, indoor, names):
     parsed = parse_scene(text)
     assert parsed.indoor is indoor
     assert {o.name.split()[-1] for o in parsed.objects} == names
-    if indoor:  # the room takes the building's usual floor
+    if "barn" in text or "cabin" in text:  # the room takes the building's usual floor
         assert read_room(text).place in ("barn", "cabin")
