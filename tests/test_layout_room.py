@@ -298,3 +298,17 @@ def test_a_room_sized_for_many_floor_objects_gives_each_more_floor():
     room = RoomShape(build_room(read_room(f"a showroom with {n} sofas"), sofas(n)))
     covered = n * 2.0 * 0.9 / room.area
     assert covered <= COVERAGE * (WALL_SERVED / n) ** 0.5 + 1e-9
+
+
+def test_the_front_wall_is_the_last_a_thing_is_stood_against():
+    """Nearest the anchor first, but a spot on the viewer's front wall only after every other
+    wall's: a fireplace there would show the camera its back."""
+    from scenewright.layout.relations import FRONT_PENALTY, RoomTarget, propose_wall
+
+    room = RoomTarget.of(Room.rectangle(6, 6))
+    anchor = np.array([0.0, -2.5])  # close to the front wall
+    xy, yaws, cost = propose_wall("against wall", np.array([0.75, 0.25]), room, anchor)
+    assert np.all(np.diff(cost) >= 0)
+    front = xy[:, 1] < -2.5
+    assert front.any() and not front[0]
+    assert np.all(cost[front] >= FRONT_PENALTY)

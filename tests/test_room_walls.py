@@ -22,3 +22,11 @@ def test_a_thing_above_another_that_would_pass_the_ceiling_hangs_from_it_near_it
     assert {"mirror_1 near sink_1", "mirror_1 on wall room"} <= got  # mounted: the wall gives the height
     assert "drone_1 above rug_1" in got  # 0.02 + 2 + 0.2 m fits under 2.7 m
     assert "lantern_1 above desk_1" in {str(c) for c in room_constraints(objects, said, 4.0)}
+
+
+def test_a_fireplace_and_a_tv_stand_stand_against_a_wall_even_with_a_seat_by_them():
+    objects = [_o("fireplace_1", "fireplace", 1.2), _o("tv_stand_1", "tv_stand", 0.5), _o("armchair_1", "armchair", 0.9)]
+    said = [Constraint(relation="near", source="armchair_1", target="fireplace_1")]
+    got = {str(c) for c in room_constraints(objects, said, 2.7)}
+    assert {"fireplace_1 against wall room", "tv_stand_1 against wall room"} <= got
+    assert "armchair_1 against wall room" not in got
