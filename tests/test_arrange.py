@@ -304,3 +304,18 @@ def test_anchors_send_things_to_the_back_the_front_and_the_middle():
     others = [v for k, v in o.items() if k not in ("wardrobe_1", "bench_1")]
     assert all(o["wardrobe_1"].position.y > v.position.y for v in others)
     assert all(o["bench_1"].position.y < v.position.y for v in others)
+
+
+@pytest.mark.parametrize("seat", ["armchair", "sofa"])
+def test_a_seat_by_the_fireplace_turns_to_it(seat):
+    parsed = _scene(seat, "fireplace", relations=[(f"{seat}_1", "near", "fireplace_1", False)])
+    made = compose(parsed)
+    assert (f"{seat}_1", "face to", "fireplace_1") in {(r.source, r.relation, r.target) for r in made.relations}
+    objects = _by_id(made.objects)
+    assert _faces(objects[f"{seat}_1"], objects["fireplace_1"])
+
+
+def test_a_seat_that_faces_something_else_keeps_it():
+    parsed = _scene("armchair", "fireplace", "tv", relations=[
+        ("armchair_1", "near", "fireplace_1", False), ("armchair_1", "face to", "tv_1", False)])
+    assert ("armchair_1", "face to", "fireplace_1") not in {(r.source, r.relation, r.target) for r in compose(parsed).relations}

@@ -313,3 +313,17 @@ def test_a_thing_on_the_wall_above_one_against_it_hangs_over_it_at_the_height_ab
     by_id = {o.id: o for o in result.objects}
     assert check("above", by_id["frame"], by_id["dresser"])
     assert check_room("on wall", by_id["frame"], room, "room")
+
+
+def test_the_front_wall_is_the_last_a_thing_is_stood_against():
+    """Nearest the anchor first, but a spot on the viewer's front wall only after every other
+    wall's: a fireplace there would show the camera its back."""
+    from scenewright.layout.relations import FRONT_PENALTY, RoomTarget, propose_wall
+
+    room = RoomTarget.of(Room.rectangle(6, 6))
+    anchor = np.array([0.0, -2.5])  # close to the front wall
+    xy, yaws, cost = propose_wall("against wall", np.array([0.75, 0.25]), room, anchor)
+    assert np.all(np.diff(cost) >= 0)
+    front = xy[:, 1] < -2.5
+    assert front.any() and not front[0]
+    assert np.all(cost[front] >= FRONT_PENALTY)

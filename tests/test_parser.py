@@ -8,6 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from scenewright.bench.analysis import load_prompts, run_parse_bench
+from scenewright.analysis.parser.room import read_room
 from scenewright.core.catalogue import load_catalogue
 from scenewright.analysis.parser import (
     GROUND_KINDS,
@@ -648,3 +649,25 @@ def test_long_stretches_and_floor_things_on_a_desk_are_its_tabletop_kind():
     assert by["speaker_1"].size[2] <= 0.6 * by["desk_1"].size[2] + 1e-9
     assert by["speaker_1"].size[0] / by["speaker_1"].size[2] == pytest.approx(speaker[0] / speaker[2], rel=1e-3)
     assert by["vase_1"].size[2] == pytest.approx(1.2)  # a stated size stays
+
+
+@pytest.mark.parametrize(
+    ("text", "indoor", "names"),
+    [
+        ("A blacksmith's forge in an old stone barn: an anvil stands by a furnace.", True, {"anvil", "furnace"}),
+        ("A reading corner inside a log cabin, with an armchair by the stove.", True, {"armchair", "stove"}),
+        # a building named later, or standing somewhere, is a thing of the scene
+        ("A farm at dusk. A barn stands behind the pond and a cat sleeps in the barn.", False, {"barn", "pond", "cat"}),
+        # a kennel is too low to hold a scene
+        ("A puppy naps in a kennel.", False, {"puppy", "kennel"}),
+        # the owner of the room the text opens in is the setting too
+        ("The engine room of a rusty cargo starship: a reactor hums by a console.", True, {"reactor", "console"}),
+        ("A hall of mirrors with a clown.", True, {"mirror", "clown"}),
+    ],
+)
+def test_a_building_the_opening_sentence_is_inside_sets_the_scene(text, indoor, names):
+    parsed = parse_scene(text)
+    assert parsed.indoor is indoor
+    assert {o.name.split()[-1] for o in parsed.objects} == names
+    if "barn" in text or "cabin" in text:  # the room takes the building's usual floor
+        assert read_room(text).place in ("barn", "cabin")

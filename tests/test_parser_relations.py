@@ -117,9 +117,22 @@ def test_between_a_facing_pair_runs_front_to_back():
 
 
 def test_a_clause_opened_by_and_keeps_its_own_placing():
-    parsed = parse_scene("Two robots sell orbs from a cart, and three aliens wait in a line.")
+    parsed = parse_scene("Two robots sell three orbs from a cart, and three aliens wait in a line.")
     formations = {o.name: o.formation for o in parsed.objects}
     assert formations["alien"] == "row" and formations["robot"] is None and formations["orb"] is None
+
+
+@pytest.mark.parametrize(
+    ("text", "names"),
+    [
+        ("A farm stall selling pies stands by the gate.", {"stall", "gate"}),
+        ("A cart serving hot drinks, buns and cakes waits by the gate.", {"cart", "gate"}),
+        # a counted thing is there to be seen
+        ("A vendor sells three kites by the gate.", {"vendor", "kite", "gate"}),
+    ],
+)
+def test_what_is_sold_or_served_is_wares_not_things_of_the_layout(text, names):
+    assert {o.name.split()[-1] for o in parse_scene(text).objects} == names
 
 
 def test_with_after_a_persons_target_belongs_to_the_target():
@@ -495,3 +508,16 @@ def test_them_names_the_people_not_the_seats_they_sit_on():
 def test_at_each_end_of_a_thing_is_one_at_either_end():
     found = rels("A long table fills the hall, and a candelabrum stands at either end of it.")
     assert {("candelabrum_1", "left of", "table_1"), ("candelabrum_2", "right of", "table_1")} <= found, found
+
+
+    ("text", "expected"),
+    [
+        ("A porter pushes a luggage cart across the hall.", {("porter_1", "near", "cart_1")}),
+        ("An old farmer turns a heavy millstone.", {("farmer_1", "near", "millstone_1")}),
+        # a thing small enough to hold gives no place of its own; the clause's own relation wins
+        ("A man reads a newspaper on the bench.", {("man_1", "on", "bench_1")}),
+        ("A nurse wheels a gurney beside the desk.", {("gurney_1", "side of", "desk_1"), ("nurse_1", "near", "gurney_1")}),
+    ],
+)
+def test_whoever_acts_on_a_big_thing_stands_by_it(text, expected):
+    assert rels(text) == expected

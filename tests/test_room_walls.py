@@ -81,3 +81,11 @@ def test_what_stands_on_a_thing_hung_above_another_counts_toward_the_ceiling():
     # The shelf's top at 0.4 + 2 + 0.2 = 2.6 m, and the trunk on it 0.5 m higher.
     assert ceiling_for(objects, said, 2.7) == pytest.approx(3.15)
     assert "shelf_1 near sofa_1" in {str(c) for c in room_constraints(objects, said, 2.9)}
+
+
+def test_a_fireplace_and_a_tv_stand_stand_against_a_wall_even_with_a_seat_by_them():
+    objects = [_o("fireplace_1", "fireplace", 1.2), _o("tv_stand_1", "tv_stand", 0.5), _o("armchair_1", "armchair", 0.9)]
+    said = [Constraint(relation="near", source="armchair_1", target="fireplace_1")]
+    got = {str(c) for c in room_constraints(objects, said, 2.7)}
+    assert {"fireplace_1 against wall room", "tv_stand_1 against wall room"} <= got
+    assert "armchair_1 against wall room" not in got

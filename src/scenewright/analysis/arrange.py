@@ -47,7 +47,8 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
         return Composition([], list(parsed.relations))
     parsed = replace(parsed, objects=posture.pose(parsed))  # people sit and lie as the text says
     parsed = replace(parsed, objects=hosts.lengthen(parsed))  # a cabinet long enough for two aquariums
-    layout = Layout(parsed.objects, share_supports(parsed) + formations.stack_relations(parsed.objects))
+    relations = share_supports(parsed) + formations.stack_relations(parsed.objects)
+    layout = Layout(parsed.objects, relations + groups.facing_focal(parsed.objects, relations))
     _place_related(layout)
     for rule in GROUP_RULES:
         rule(layout)

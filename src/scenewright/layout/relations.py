@@ -74,6 +74,9 @@ MOUNT_HEIGHTS = (1.5, 1.25, 1.8)
 ABOVE_CLEARANCE = 0.05
 #: Slack for floating-point round-off only, so that limits hold exactly at the limit.
 EPS = 1e-9
+#: m added to the distance of a spot on the front wall (its inward normal points more than this
+#: along +Y, away from the viewer) when wall spots are ranked: the open front is the viewer's.
+FRONT_NORMAL, FRONT_PENALTY = 0.7, 4.0
 
 
 def rest_share(obj: SceneObject) -> float:
@@ -558,13 +561,13 @@ def room_violation(relation: str, source: SceneObject, room: Room, target: str =
 
 def propose_wall(
     relation: str, foot: np.ndarray, room: RoomTarget, anchor: np.ndarray, spacing: float = 0.1
-) -> tuple[np.ndarray, np.ndarray]:
-    """Candidate centres (x, y) and yaws of a source standing back to a wall (``against wall``,
-    ``on wall``) or in a corner, nearest to ``anchor`` first. ``foot`` is the source's footprint
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Candidate centres (x, y), yaws and costs of a source standing back to a wall (``against
+    wall``, ``on wall``) or in a corner, cheapest first: nearest to ``anchor``, the front wall last. ``foot`` is the source's footprint
     half extents in its own yaw frame: its back sits :data:`FLUSH` off the wall, facing in."""
     anchor = np.asarray(anchor, dtype=float)[:2]
     fx, fy = float(foot[0]), float(foot[1])
-    xy, yaws = [], []
+    xy, yaws, spans = [], [], {}
     for k in range(len(room.length)):
         length = float(room.length[k])
         if length < 2 * fx:
@@ -577,13 +580,17 @@ def propose_wall(
             t = np.append(np.arange(fx, length - fx + EPS, spacing), np.clip(to_anchor, fx, length - fx))
         if not len(t):
             continue
+        spans[k] = t
         xy.append(room.start[k] + t[:, None] * room.direction[k] + (fy + FLUSH) * room.normal[k])
         yaws.append(np.full(len(t), float(wall_yaw(room.normal[k]))))
     if not xy:
-        return np.zeros((0, 2)), np.zeros(0)
+        return np.zeros((0, 2)), np.zeros(0), np.zeros(0)
     xy, yaws = np.concatenate(xy), np.concatenate(yaws)
-    order = np.argsort(np.linalg.norm(xy - anchor, axis=1), kind="stable")
-    return xy[order], yaws[order]
+    # the front wall is the viewer's: a thing stands against it only when no other wall will do
+    front = np.concatenate([np.full(len(t), room.normal[k][1] > FRONT_NORMAL) for k, t in spans.items()])
+    cost = np.linalg.norm(xy - anchor, axis=1) + FRONT_PENALTY * front
+    order = np.argsort(cost, kind="stable")
+    return xy[order], yaws[order], cost[order]
 
 
 def room_heights(relation: str, half_z: float, room: RoomTarget) -> np.ndarray | None:

@@ -433,9 +433,8 @@ class _Search:
         if wall is not None and not resting:
             relation, target = wall[0].relation, wall[1]
             spacing = {"probe": 0.4, "check": 0.2, "normal": 0.1, "wide": 0.05}[density]
-            xy, yaws = rel.propose_wall(relation, item.foot, target, anchor, spacing)
-            xy_parts, yaw_parts = [xy], [yaws]
-            cost_parts = [np.linalg.norm(xy - anchor[:2], axis=1)]
+            xy, yaws, cost = rel.propose_wall(relation, item.foot, target, anchor, spacing)
+            xy_parts, yaw_parts, cost_parts = [xy], [yaws], [cost]
             yaw_choices, facing = (), None  # the wall turns it
         for k, yaw in enumerate(yaw_choices):
             half = rotated_half(item.half, item.tilt, yaw)

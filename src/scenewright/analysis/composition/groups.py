@@ -273,3 +273,17 @@ def _within(a: Footprint, b: Footprint) -> bool:
 
 
 RULES = (bed, desks, dining, lounge, lamps, rugs)
+
+
+def facing_focal(objects, relations: list[ParsedRelation]) -> list[ParsedRelation]:
+    """A seat the text puts by a fireplace or a TV ("an armchair by the fireplace") turns to it,
+    as a designer would set it: one inferred ``face to`` per such seat that faces nothing yet."""
+    kind = {o.id: roles.kind(o.category) for o in objects}
+    facing = {r.source for r in relations if r.relation == "face to"}
+    out = []
+    for r in relations:
+        by_focal = r.relation in ("near", "side of", "left of", "right of") and kind.get(r.target) in roles.FOCAL
+        if by_focal and kind.get(r.source) in roles.SEATS and r.source not in facing:
+            out.append(ParsedRelation(source=r.source, relation="face to", target=r.target, inferred=True))
+            facing.add(r.source)
+    return out

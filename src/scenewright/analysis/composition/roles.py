@@ -31,12 +31,13 @@ BEDS = frozenset({"bed", "crib"})
 NIGHTSTANDS = frozenset({"nightstand"})
 #: What stands at the foot of a bed.
 BED_FOOT = frozenset({"treasure_chest", "ottoman", "bench"})
-#: Tall or wall-bound storage: along the edges of the scene, backs outward.
+#: Tall or wall-bound storage, and what is built into a wall (a fireplace, a TV stand): along the
+#: edges of the scene, backs outward.
 EDGE_STORAGE = frozenset({
     "bookshelf", "wardrobe", "cabinet", "fridge", "filing_cabinet", "shop_shelf", "wine_rack",
     "locker", "server_rack", "dresser", "dumbbell_rack", "grandfather_clock", "fume_hood",
     "whiteboard", "water_cooler", "display_case", "vending_machine", "counter", "shower",
-    "washing_machine", "dishwasher", "stove", "sink", "curtain", "easel",
+    "washing_machine", "dishwasher", "stove", "sink", "curtain", "easel", "fireplace", "tv_stand",
 })  # fmt: skip
 RUGS = frozenset({"rug"})
 FLOOR_LAMPS = frozenset({"floor_lamp", "torch", "coat_rack"})

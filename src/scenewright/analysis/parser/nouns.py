@@ -215,7 +215,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue
         if " ".join(words) in places and s > 0 and toks[s - 1].text in _DEFINITE:
             continue  # "the middle of the cabin" after "The captain's cabin of a ship": the setting again
-        if _part_of_vessel(toks, s, e) or (part_end is not None and _owner_of_part(toks, part_end, s)):
+        if _part_of_vessel(toks, s, e) or (part_end is not None and _owner_of_part(toks, part_end, s)) or (
+            _owns_opening_place(toks, s) and (cat in _ENCLOSING or load_catalogue()[cat].shape in _ENCLOSING)
+        ):
             # "The bridge of a small cargo spaceship, ...": the bridge and the ship are the setting
             places.append(" ".join(words))
             part_end = e if part_end is None else None
@@ -281,7 +283,29 @@ def _part_of_vessel(toks: list[_Tok], s: int, e: int) -> bool:
     ):  # "The captain's cabin of a sailing ship"
         j -= 1
     opening = j < 0 or toks[j].text in (".", "!", "?")
-    return opening and " ".join(t.text for t in toks[s:e]) in _PLACE_PARTS and e < len(toks) and toks[e].text == "of"
+    part = " ".join(t.text for t in toks[s:e])
+    return opening and (part in _PLACE_PARTS or part in load_vocabulary().places) and e < len(toks) and toks[e].text == "of"
+
+
+#: Categories and shapes that can hold a scene inside them ("the engine room of a starship").
+_ENCLOSING = {"house", "building", "tower", "spaceship", "boat", "vehicle", "bus", "truck", "tent", "structure"}
+
+
+def _owns_opening_place(toks: list[_Tok], s: int) -> bool:
+    """The noun at ``s`` owns the place the description opens with ("The engine room of a rusty
+    cargo starship", "The kitchen of an old farmhouse"): it is the setting, not a thing in it."""
+    j = s - 1
+    while j >= 0 and (toks[j].text in _DETERMINERS or load_vocabulary().is_adjective(toks[j].text)
+                      or toks[j].text in ("cargo", "space", "sailing", "fishing", "merchant")):
+        j -= 1  # fmt: skip
+    if j < 1 or toks[j].text != "of":
+        return False
+    places = load_vocabulary().places
+    for width in (2, 1):
+        part = " ".join(t.text for t in toks[max(0, j - width) : j])
+        if part in places or part in _PLACE_PARTS:
+            return _part_of_vessel(toks, j - width, j)
+    return False
 
 
 def _owner_of_part(toks: list[_Tok], part_end: int, s: int) -> bool:
@@ -380,6 +404,8 @@ def _names_kind(toks: list[_Tok], e: int) -> bool:
 #: Words that open the setting's contents after a place word ("a hangar with...", "a hangar where...").
 _PLACE_OPENERS = {"with", "where", "full", "filled", "housing", "containing", "holding", "packed", "crammed"}
 _INSIDE = {"in", "inside", "within", "into", "throughout"}
+#: m, the least height of a building a scene can stand inside (a kennel is no setting).
+_STOREY = 2.2
 #: Words a place phrase may have before its noun ("a bright cartoon-style pet shop").
 _PLACE_WORDS = 6
 
@@ -389,7 +415,9 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     with-part names things), not "a barn stands behind the pond"."""
     places = load_vocabulary().places
     head = singular(toks[e - 1].text)
-    if head not in places and not (e >= 2 and f"{toks[e - 2].text} {head}" in places):
+    named = head in places or (e >= 2 and f"{toks[e - 2].text} {head}" in places)
+    building = not named and _enterable(toks, s, e)
+    if not (named or building):
         return False
     j = s - 1
     while j >= 0 and s - j <= _PLACE_WORDS and (
@@ -398,6 +426,8 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
         j -= 1
     if j >= 0 and toks[j].text in _INSIDE:
         return True
+    if building:
+        return False
     # "on the top floor of a converted warehouse": a part of the place holds the scene
     if j > 0 and toks[j].text == "of" and toks[j - 1].text in (
         "floor", "top", "edge", "roof", "corner", "end", "back", "middle", "centre", "center", "rear", "interior",
@@ -426,6 +456,16 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
                 break
             k += 1
     return False
+
+
+def _enterable(toks: list[_Tok], s: int, e: int) -> bool:
+    """A building people stand in, named in the opening sentence: "a forge in an old stone barn"
+    sets the scene inside the barn, where "a barn stands behind the pond" is a thing of the scene."""
+    if any(t.text in (".", "!", "?") for t in toks[:s]):
+        return False
+    name = match_phrase(tuple(t.text for t in toks[s:e]))
+    category = load_catalogue()[name] if name else None
+    return category is not None and category.shape == "house" and category.size[2] >= _STOREY
 
 
 def _verb_word(word: str) -> bool:

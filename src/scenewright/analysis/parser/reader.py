@@ -30,6 +30,7 @@ from scenewright.analysis.parser.words import (
     _HAND_PAIRS,
     _HAND_VERBS,
     _HANG_VERBS,
+    _WARES_VERBS,
     _HOLD,
     _HOLD_PAIRS,
     _NUMBERS,
@@ -85,6 +86,8 @@ class _Clause:
     last_srcs: list[int] = field(default_factory=list)
     #: Thing → what this clause put it on or in: no "it" of its own ("a parrot in a cage watches it").
     supports: dict[int, list[int]] = field(default_factory=dict)
+    #: (doers, thing) for a living subject acting on a thing too big to hold ("a porter pushes a cart").
+    deeds: list[tuple[list[int], int]] = field(default_factory=list)
 
 
 #: Phrases that place a group in a formation rather than by a target.
@@ -492,7 +495,7 @@ class _Reader:
             while j >= 0 and (toks[j].text in _DETERMINERS or toks[j].text in _NUMBERS or (
                 toks[j].text not in _STOP and toks[j].text[0].isalnum())) and m.start - j < 5:  # fmt: skip
                 j -= 1
-            if prev is not None and self._held_inside(m, prev):
+            if (prev is not None and self._held_inside(m, prev)) or self._wares(m):
                 m.content = chain = True
                 continue
             if j < 1 or prev is None:
@@ -505,6 +508,19 @@ class _Reader:
             )
             m.content = content
             chain = content
+
+    def _wares(self, m: _Mention) -> bool:
+        """"A stall selling pies", "a cart serving hot drinks": a bare plural after a verb of
+        trade is what is sold, not things of the layout ("a vendor sells two balloons" are there)."""
+        head = m.phrase.split()[-1].lower()
+        if m.counted or singular(head) == head:
+            return False
+        k = m.start - 1  # back over describing words and a list of wares before ("pies, cakes and jams")
+        while k >= 0 and m.start - k <= 8 and self.toks[k].text not in _WARES_VERBS and (
+            self.toks[k].text in (",", "and", "or") or self.toks[k].text not in _STOP and self.toks[k].text[:1].isalpha()
+        ):
+            k -= 1
+        return k >= 0 and self.toks[k].text in _WARES_VERBS
 
     def _size(self, m: _Mention) -> tuple[float, float, float]:
         return m.guess.size if m.guess is not None else self.catalogue[m.category].size
@@ -883,6 +899,8 @@ class _Reader:
                     # "an astronaut plants a flag next to it": the verb's object takes what follows,
                     # unless a person holds it ("a man reads a newspaper on the bench": he is on it)
                     verb_object = self._object_of_verb(c, last_event_end, m.start)
+                    if verb_object and self._living(c.main[-1]) and not self._small(g) and not c.expect_new:
+                        c.deeds.append((list(c.main), g))
                     if not (verb_object and self._living(c.main[-1]) and self._small(g) and not c.expect_new):
                         c.main = [g] if c.expect_new or verb_object else [*c.main, g]
                     if not c.verb_seen:
@@ -898,6 +916,14 @@ class _Reader:
                 continue
             k += 1
         self._close_with(c)
+        self._do_deeds(c)
+
+    def _do_deeds(self, c: _Clause) -> None:
+        """"A porter pushes a cart", "two engineers check the console": whoever acts on a thing
+        too big to hold stands by it, unless the clause already relates the two."""
+        for doers, thing in c.deeds:
+            free = [d for d in doers if not any({r[1], r[2]} == {d, thing} for r in self.relations)]
+            self._relate("near", free, thing)
 
     def _object_of_verb(self, c: _Clause, start: int, end: int) -> bool:
         """Whether the noun at ``end`` is the object of a verb that follows the clause's subject

@@ -51,6 +51,8 @@ PLACE_SIZES: dict[str, tuple[float, float]] = {
     "gallery": (7.0, 8.0), "chamber": (5.0, 6.0), "hall": (9.0, 10.0), "pantry": (2.0, 2.5),
     "laundry room": (2.5, 3.0), "playroom": (4.0, 4.5), "kids room": (3.5, 4.0), "games room": (5.0, 5.5),
     "conference room": (5.0, 7.0), "meeting room": (4.5, 6.0), "waiting room": (4.5, 5.5),
+    "barn": (8.0, 10.0), "stable": (6.0, 8.0), "cabin": (5.0, 6.0), "cottage": (5.0, 6.0), "hut": (3.5, 4.0),
+    "shed": (3.0, 3.5), "shack": (3.0, 3.5), "greenhouse": (5.0, 8.0),
 }  # fmt: skip
 _SMALL = ("small", "tiny", "cosy", "cozy", "compact", "little", "cramped", "narrow")
 _LARGE = ("large", "big", "spacious", "huge", "grand", "vast", "open-plan", "open plan", "airy", "wide")

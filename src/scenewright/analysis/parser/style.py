@@ -113,7 +113,9 @@ _INDOOR_PLACES = {"hangar", "warehouse", "factory", "garage", "workshop", "libra
                   "attic", "basement", "cellar", "loft", "lobby", "hallway", "corridor", "chamber", "church",
                   "cathedral", "chapel", "temple", "dungeon", "crypt", "bunker", "vault", "gym", "spa", "bakery",
                   "salon", "theatre", "theater", "cinema", "ballroom", "lounge", "pantry", "diner", "restaurant",
-                  "bar", "arcade", "mall", "station", "hospital", "clinic", "nursery", "school", "kitchen", "bedroom"}  # fmt: skip
+                  "bar", "arcade", "mall", "station", "hospital", "clinic", "nursery", "school", "kitchen", "bedroom",
+                  "barn", "house", "cottage", "cabin", "hut", "shed", "shack", "stable", "greenhouse", "farmhouse",
+                  "teahouse", "coffeehouse", "bathhouse", "guesthouse", "alehouse", "playhouse"}  # fmt: skip
 
 
 #: A clause that looks out of the setting: the places it names are seen, not stood in ("a window

@@ -58,6 +58,10 @@ _CONTENT_HEADS = {"vase", "bowl", "basket", "bucket", "plate", "bottle", "cup", 
 _CONTENT_MARKERS = {("full", "of"), ("filled", "with"), ("packed", "with"), ("overflowing", "with"),
                     ("covered", "in"), ("covered", "with"), ("stacked", "with"), ("heaped", "with"),
                     ("stocked", "with"), ("lined", "with"), ("piled", "with"), ("overflow", "with")}  # fmt: skip
+#: Verbs of trade: the bare plural after them is what is sold or served, not things of the layout
+#: ("a stall selling pies", "a cart serving hot drinks"; but "a vendor sells two balloons").
+_WARES_VERBS = {"sell", "sells", "selling", "sold", "serve", "serves", "serving", "served", "offer", "offers",
+                "offering", "stocks", "stocking", "peddles", "peddling", "hawks", "hawking"}  # fmt: skip
 _HANG_VERBS = {"hang", "hangs", "hanging", "hung", "strung", "hover", "hovers", "hovering", "float", "floats",
                "floating", "suspended", "dangle", "dangles", "dangling", "fly", "flies", "flying",
                "soar", "soars", "soaring", "glow", "glows", "drift", "drifts", "mounted", "swing",
