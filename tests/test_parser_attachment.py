@@ -165,7 +165,7 @@ def test_from_a_seat_or_a_roof_is_on_it():
     assert {("cat_1", "on", "stool_1"), ("stool_1", "side of", "counter_1")} <= found
     found = rels("A small hut stands by the road, and a crow watches everything from the hut's roof.")
     assert ("bird_1", "on", "house_1") in found or any(s.startswith("crow") and r == "on" for s, r, _ in found)
-    assert rels("A man sips from a glass.") == set()
+    assert not any(t == "barrel_1" for _, _, t in rels("A man pulls a rope from the barrel."))
     found = rels("Three stalls stand in a row. Steam rises from a food cart next to the first stall.")
     assert ("cart_1", "side of", "market_stall_1") in found
 

@@ -510,6 +510,7 @@ def test_at_each_end_of_a_thing_is_one_at_either_end():
     assert {("candelabrum_1", "left of", "table_1"), ("candelabrum_2", "right of", "table_1")} <= found, found
 
 
+@pytest.mark.parametrize(
     ("text", "expected"),
     [
         ("A porter pushes a luggage cart across the hall.", {("porter_1", "near", "cart_1")}),

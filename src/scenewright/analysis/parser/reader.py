@@ -845,7 +845,10 @@ class _Reader:
                 k += 1
                 continue
             holder = c.main or list(prev_subject)  # ", peering through a loupe": the subject before
-            hand = (w in _HAND_VERBS or (w, nxt) in _HAND_PAIRS) and bool(holder) and self._person_at(holder[-1])
+            # (a hand verb that opens a relation phrase is no holding: "waves at a passing van")
+            hand = (w in _HAND_VERBS or (w, nxt) in _HAND_PAIRS) and k not in self.rel_at and bool(holder) and (
+                self._person_at(holder[-1])
+            )
             if w == "with" or w in _HOLD or (w, nxt) in _HOLD_PAIRS or w in ("has", "have") or hand:
                 if w in _HOLD and w.endswith("ing") and c.head is not None and c.wsub:
                     # "with a small table beside them holding a teapot": the with-thing holds it
