@@ -16,6 +16,8 @@ from scenewright.assets import load_meshes
 from scenewright.cli import main
 from scenewright.folder import SceneFolder
 from scenewright.layout import check, colliding_pairs
+from scenewright.layout.relations import check_room
+from scenewright.scene import ROOM_RELATIONS
 
 
 def _example(name: str) -> str:
@@ -89,8 +91,10 @@ def test_generate_end_to_end(case, tmp_path):
 
     unplaced = {u.id for u in scene.layout.unplaced}
     assert not unplaced, scene.layout.unplaced
-    failed = [str(c) for c in scene.constraints
-              if not check(c.relation, scene.get(c.source), scene.get(c.target))]
+    failed = [str(c) for c in scene.constraints if not (
+        check_room(c.relation, scene.get(c.source), scene.room, c.target) if c.relation in ROOM_RELATIONS
+        else check(c.relation, scene.get(c.source), scene.get(c.target))
+    )]  # fmt: skip
     assert not failed
     assert colliding_pairs(scene.objects, load_meshes(scene, folder), scene.constraints) == []
 

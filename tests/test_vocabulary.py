@@ -1,5 +1,7 @@
 """The open vocabulary: unknown nouns become guessed objects of a shape family; places set the scene."""
 
+import json
+
 import pytest
 
 from scenewright.core.catalogue import load_catalogue
@@ -187,3 +189,17 @@ def test_an_agent_noun_is_a_person_only_when_it_acts_like_one():
     assert vocabulary.guess_agent("dehumidifier", False) is None
     assert vocabulary.guess_agent("blorp", True) is None  # no agent ending
     assert "shovels" in vocabulary.person_verbs and "stands" not in vocabulary.person_verbs
+
+
+@pytest.mark.parametrize("name", ["vocabulary.json", "catalogue.json", "relation_phrases.json"])
+def test_no_data_file_names_a_key_twice(name):
+    """A key written twice loads as its last value and silently drops the first (two branches
+    that both teach a word merge that way): every key once."""
+    from importlib import resources
+
+    def unique(pairs):
+        keys = [k for k, _ in pairs]
+        assert len(keys) == len(set(keys)), sorted({k for k in keys if keys.count(k) > 1})
+        return dict(pairs)
+
+    json.loads(resources.files("scenewright.data").joinpath(name).read_text(encoding="utf-8"), object_pairs_hook=unique)
