@@ -107,3 +107,8 @@ def test_a_cage_hung_from_the_ceiling_hangs_and_holds_its_bird():
     assert cage.rests == "hanging"
     assert ("canary_1", "on", "cage_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
     assert not parsed.repairs
+
+
+def test_it_is_never_what_the_subject_rests_on():
+    found = rels("A tabby cat dozes under the desk, and a canary in a cage watches it.")
+    assert {("canary_1", "on", "cage_1"), ("canary_1", "face to", "cat_1")} <= found

@@ -653,16 +653,22 @@ class _Reader:
                 return g
         return None
 
-    def _pronoun(self, word: str, c: _Clause, srcs: list[int], prefer: list[int], kind: str = "") -> list[int]:
+    def _pronoun(
+        self, word: str, c: _Clause, srcs: list[int], prefer: list[int], kind: str = "", others: list[int] | None = None
+    ) -> list[int]:
         """The group "it" / "them" names: the subject before (when this clause has its own) or
-        the latest earlier mention, of the right number."""
+        the latest earlier mention, of the right number; never a source, one of ``others`` or
+        what a source rests on."""
         plural = word in ("them", "themselves")
         # "a fish stall and a noodle stall face each other, and a girl stands between them": two
         # single things of this clause, or of the subject before, are "them"
         for pair in ([g for g in c.groups if g not in srcs], [g for g in prefer if g not in srcs]):
             if plural and len(pair) >= 2 and all(self.groups[g].count == 1 for g in pair):
                 return pair[-2:]
-        recent = [g for g in [*prefer, *reversed(self.history), *reversed(c.groups)] if g not in srcs]
+        # never what a source rests on ("a parrot in a cage watches it": not the cage)
+        hosts = {r[2] for r in self.relations if r[0] == "on" and r[1] in srcs}
+        skip = {*srcs, *(others or ()), *hosts}
+        recent = [g for g in [*prefer, *reversed(self.history), *reversed(c.groups)] if g not in skip]
         # a thing on the floor is not placed by a small thing on a table ("a nightstand with a lamp
         # on it. A rug lies in front of it": the nightstand)
         # (above a small thing is fine: "a register on the counter, and a hologram floats above it")
@@ -1033,7 +1039,7 @@ class _Reader:
             targets: list[int] | str = self._pronoun(target, c, srcs, prefer, kind) if c.head is None else list(c.head)
             if c.head is not None and all(self._living(h) for h in c.head):
                 # "a man on the bench, with his terrier asleep under it": "it" is no person
-                targets = self._pronoun(target, c, srcs + c.head, prefer)
+                targets = self._pronoun(target, c, srcs, prefer, others=c.head)
             below = [r[2] for r in self.relations if c.head and r[1] in c.head and r[0] == "above"]
             if below and all(self.groups[h].rests == "hanging" for h in c.head) and not any(
                 self.groups[g].rests == "hanging" for g in srcs
