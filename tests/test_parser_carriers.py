@@ -52,8 +52,10 @@ def test_a_posture_verbs_them_names_several_seats_one_each():
     assert {("boy_1", "on", "armchair_1"), ("boy_2", "on", "armchair_2")} <= found
 
 
-def test_in_a_tower_is_inside_it_not_on_top():
+def test_in_a_tower_or_a_dome_is_inside_it_not_on_top():
     assert not any(r[0] == "keeper_1" for r in rels("A keeper sits in the lighthouse."))
+    assert not any(r[0] == "man_1" for r in rels("A young man stands in the dome."))
+    assert ("man_1", "on", "stage_1") in rels("A young man stands in the stage.")
 
 
 def test_an_animals_it_is_what_stands_on_the_ground_not_a_hung_lamp():

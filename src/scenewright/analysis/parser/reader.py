@@ -863,10 +863,10 @@ class _Reader:
     def _lives(self, category: str) -> bool:
         return category in _LIVING or self.catalogue[category].shape in _LIVING
 
-    def _carrier(self, g: int, kinds: tuple[str, ...] | None = None) -> bool:
+    def _carrier(self, g: int, kinds: tuple[str, ...] | None = None, by_family: bool = True) -> bool:
         """Something a person or an animal sits, stands or rides on, or is carried in (``carriers``
         in ``data/vocabulary.json``), of these kinds (all when None)."""
-        return load_vocabulary().carries(self.groups[g].category, self.groups[g].name, kinds)
+        return load_vocabulary().carries(self.groups[g].category, self.groups[g].name, kinds, by_family)
 
     def _platform(self, g: int, thing: int) -> bool:
         """A perch one stands things in the middle of (a stand, a stage, a pier): low enough
@@ -1232,8 +1232,8 @@ class _Reader:
         if kind == "in":  # "a man in a rocking chair", "a duck floats in the tub", "children in the bus": on it
             if target.shape in _ENCLOSURES or target.shape == "tower":
                 return "no relation"  # in a tent, in the lighthouse: inside it, out of the layout
-            if self._living(s) and self._carrier(t):
-                return "on"
+            if self._living(s) and (self._carrier(t, _VESSEL_KINDS) or self._carrier(t, by_family=False)):
+                return "on"  # (in a guessed structure, a dome or an igloo, one is inside it)
             holds = target.shape in _SEATS or target.support or self._carrier(t, _VESSEL_KINDS)
             return "on" if holds and target.size[2] <= 2.5 else "no relation"
         if kind == "from":  # "a heron watches from a rock", "a guard waves from the tower": on it
