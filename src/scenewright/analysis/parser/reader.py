@@ -465,8 +465,9 @@ class _Reader:
     def _holds_living(self, holder: _Mention) -> bool:
         """What people or animals it is full of stand on: a carrier ("a stand packed with
         fans", "a boat full of children") or a thing with a top."""
-        name = holder.phrase
-        return self.catalogue[holder.category].support or load_vocabulary().carries(holder.category, name)
+        vocabulary, category, name = load_vocabulary(), holder.category, holder.phrase
+        vessel = vocabulary.carries(category, name, _VESSEL_KINDS) or vocabulary.carries(category, name, by_family=False)
+        return self.catalogue[category].support or vessel  # ("a dome full of visitors": inside it)
 
     def _listed_content(self, start: int) -> bool:
         """Whether the noun at ``start`` is in a list of bare nouns that a content marker opens
