@@ -88,7 +88,7 @@ class Vocabulary:
 
     def is_posture_verb(self, word: str) -> bool:
         """A verb of sitting, lying or standing ("dozes", "perched", "stands")."""
-        return any(word in words for words in self.postures.values())
+        return any(word in verbs for verbs in self.postures.values())
 
     def agrees(self, pronoun: str, head: str) -> bool:
         """Whether "she"/"her" or "he"/"him"/"his" can name a thing whose name ends in ``head``:
