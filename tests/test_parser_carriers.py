@@ -52,8 +52,10 @@ def test_a_posture_verbs_them_names_several_seats_one_each():
     assert {("boy_1", "on", "armchair_1"), ("boy_2", "on", "armchair_2")} <= found
 
 
-def test_in_a_tower_is_inside_it_not_on_top():
+def test_in_a_tower_or_a_dome_is_inside_it_not_on_top():
     assert not any(r[0] == "keeper_1" for r in rels("A keeper sits in the lighthouse."))
+    assert not any(r[0] == "man_1" for r in rels("A young man stands in the dome."))
+    assert ("man_1", "on", "stage_1") in rels("A young man stands in the stage.")
 
 
 def test_an_animals_it_is_what_stands_on_the_ground_not_a_hung_lamp():
@@ -107,3 +109,8 @@ def test_a_cage_hung_from_the_ceiling_hangs_and_holds_its_bird():
     assert cage.rests == "hanging"
     assert ("canary_1", "on", "cage_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
     assert not parsed.repairs
+
+
+def test_it_is_never_what_the_subject_rests_on():
+    found = rels("A tabby cat dozes under the desk, and a canary in a cage watches it.")
+    assert {("canary_1", "on", "cage_1"), ("canary_1", "face to", "cat_1")} <= found

@@ -129,7 +129,8 @@ _ROOFED_VEHICLES = ("car", "truck", "bus", "vehicle")
 #: Parts of a building that place a thing by the building itself when nothing else is named.
 _BUILDING_PARTS = ("roof", "rooftop", "porch", "step", "doorstep", "chimney", "eave", "gable", "veranda", "facade", "door", "doorway")
 #: Carriers anything smaller is on when it is *in* them ("in the tub", "in the canoe", "a broom in the
-#: bucket"); a person or an animal is on every kind of carrier it is in ("fans in the stand").
+#: bucket"); a person or an animal is on every kind of carrier it is in ("fans in the stand"), a
+#: guessed structure only when its name is listed (one in a dome is inside it).
 _VESSEL_KINDS = ("seats", "vehicles", "containers")
 #: What a thing is mounted on as a part of it ("lanterns on tall poles").
 _MOUNTS = ("pole", "stick", "mast", "stake", "spike")
@@ -576,8 +577,9 @@ class _Reader:
     def _holds_living(self, holder: _Mention) -> bool:
         """What people or animals it is full of stand on: a carrier ("a stand packed with
         fans", "a boat full of children") or a thing with a top."""
-        name = holder.phrase
-        return self.catalogue[holder.category].support or load_vocabulary().carries(holder.category, name)
+        vocabulary, category, name = load_vocabulary(), holder.category, holder.phrase
+        vessel = vocabulary.carries(category, name, _VESSEL_KINDS) or vocabulary.carries(category, name, by_family=False)
+        return self.catalogue[category].support or vessel  # ("a dome full of visitors": inside it)
 
     def _listed_content(self, start: int) -> bool:
         """Whether the noun at ``start`` is in a list of bare nouns that a content marker opens
@@ -767,16 +769,22 @@ class _Reader:
                 return g
         return None
 
-    def _pronoun(self, word: str, c: _Clause, srcs: list[int], prefer: list[int], kind: str = "") -> list[int]:
+    def _pronoun(
+        self, word: str, c: _Clause, srcs: list[int], prefer: list[int], kind: str = "", others: list[int] | None = None
+    ) -> list[int]:
         """The group "it" / "them" names: the subject before (when this clause has its own) or
-        the latest earlier mention, of the right number."""
+        the latest earlier mention, of the right number; never a source, one of ``others`` or
+        what a source rests on."""
         plural = word in ("them", "themselves")
         # "a fish stall and a noodle stall face each other, and a girl stands between them": two
         # single things of this clause, or of the subject before, are "them"
         for pair in ([g for g in c.groups if g not in srcs], [g for g in prefer if g not in srcs]):
             if plural and len(pair) >= 2 and all(self.groups[g].count == 1 for g in pair):
                 return pair[-2:]
-        recent = [g for g in [*prefer, *reversed(self.history), *reversed(c.groups)] if g not in srcs]
+        # never what a source rests on ("a parrot in a cage watches it": not the cage)
+        hosts = {r[2] for r in self.relations if r[0] == "on" and r[1] in srcs}
+        skip = {*srcs, *(others or ()), *hosts}
+        recent = [g for g in [*prefer, *reversed(self.history), *reversed(c.groups)] if g not in skip]
         if not plural:  # "it" is never a person ("a guard waves at a lorry; behind it, ...")
             recent = [g for g in recent if not self._human(g)] or recent
         # a thing on the floor is not placed by a small thing on a table ("a nightstand with a lamp
@@ -1026,10 +1034,10 @@ class _Reader:
     def _lives(self, category: str) -> bool:
         return category in _LIVING or self.catalogue[category].shape in _LIVING
 
-    def _carrier(self, g: int, kinds: tuple[str, ...] | None = None) -> bool:
+    def _carrier(self, g: int, kinds: tuple[str, ...] | None = None, by_family: bool = True) -> bool:
         """Something a person or an animal sits, stands or rides on, or is carried in (``carriers``
         in ``data/vocabulary.json``), of these kinds (all when None)."""
-        return load_vocabulary().carries(self.groups[g].category, self.groups[g].name, kinds)
+        return load_vocabulary().carries(self.groups[g].category, self.groups[g].name, kinds, by_family)
 
     def _platform(self, g: int, thing: int) -> bool:
         """A perch one stands things in the middle of (a stand, a stage, a pier): low enough
@@ -1249,7 +1257,7 @@ class _Reader:
             )
             if c.head is not None and all(self._living(h) for h in c.head):
                 # "a man on the bench, with his terrier asleep under it": "it" is no person
-                targets = self._pronoun(target, c, srcs + c.head, prefer)
+                targets = self._pronoun(target, c, srcs, prefer, others=c.head)
             below = [r[2] for r in self.relations if c.head and r[1] in c.head and r[0] == "above"]
             if below and all(self.groups[h].rests == "hanging" for h in c.head) and not any(
                 self.groups[g].rests == "hanging" for g in srcs
@@ -1541,8 +1549,8 @@ class _Reader:
         if kind == "in":  # "a man in a rocking chair", "a duck floats in the tub", "children in the bus": on it
             if target.shape in _ENCLOSURES or target.shape == "tower":
                 return "no relation"  # in a tent, in the lighthouse: inside it, out of the layout
-            if self._living(s) and self._carrier(t):
-                return "on"
+            if self._living(s) and (self._carrier(t, _VESSEL_KINDS) or self._carrier(t, by_family=False)):
+                return "on"  # (in a guessed structure, a dome or an igloo, one is inside it)
             holds = target.shape in _SEATS or target.support or self._carrier(t, _VESSEL_KINDS)
             return "on" if holds and target.size[2] <= 2.5 else "no relation"
         if kind == "from":  # "a heron watches from a rock", "a guard waves from the tower": on it

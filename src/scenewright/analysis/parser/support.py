@@ -167,9 +167,8 @@ def fit_on_hosts(
 
 def can_hold(host: ParsedObject, thing: ParsedObject, catalogue) -> bool:
     """Whether ``thing`` can rest on ``host``: hosts that hang hold nothing but what fits in a
-    hung container; a flat host holds
-    anything; a person or an animal sits or stands on any host at least a stool's size;
-    otherwise the thing must be about the host's size or smaller."""
+    hung container; a flat host holds anything; a person or an animal sits or stands on any
+    host at least a stool's size; otherwise the thing must be about the host's size or smaller."""
     if host.category in _NO_TOP:
         return False  # what a knight holds is beside him, not on him
     if (host.rests or catalogue[host.category].rests) == "hanging":

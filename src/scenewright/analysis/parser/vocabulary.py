@@ -86,19 +86,19 @@ class Vocabulary:
     #: ("pulls a rope from the barrel" does not).
     lookout_verbs: frozenset[str] = frozenset()
 
-    def carries(self, category: str, name: str, kinds: tuple[str, ...] | None = None) -> bool:
+    def carries(self, category: str, name: str, kinds: tuple[str, ...] | None = None, by_family: bool = True) -> bool:
         """Whether a thing of ``category`` named ``name`` is one of the ``kinds`` of carriers
-        (all kinds when None): by its category, its catalogue shape or its head noun."""
-        shape = load_catalogue()[category].shape
+        (all kinds when None): by its category, its catalogue shape or its head noun; with
+        ``by_family`` False a guessed thing counts by its head noun only (a dome is a structure
+        one stands on, but one is *in* it, not on it)."""
+        record = load_catalogue()[category]
         head = singular(name.lower().split()[-1]) if name.strip() else ""
-        return any(
-            category in self.carriers[k] or shape in self.carriers[k] or head in self.carriers[k]
-            for k in (kinds or tuple(self.carriers))
-        )
+        names = (head,) if record.family and not by_family else (category, record.shape, head)
+        return any(n in self.carriers[k] for k in (kinds or tuple(self.carriers)) for n in names)
 
     def is_posture_verb(self, word: str) -> bool:
         """A verb of sitting, lying or standing ("dozes", "perched", "stands")."""
-        return any(word in words for words in self.postures.values())
+        return any(word in verbs for verbs in self.postures.values())
 
     def agrees(self, pronoun: str, head: str) -> bool:
         """Whether "she"/"her" or "he"/"him"/"his" can name a thing whose name ends in ``head``:
