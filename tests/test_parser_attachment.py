@@ -178,3 +178,8 @@ def test_a_description_goes_on_past_a_place_that_is_no_thing():
 def test_a_subordinate_clause_does_not_share_the_relation_before():
     found = rels("A boy stands in front of the mirror while the barber, a thin man with a comb, cuts his hair.")
     assert ("barber_1", "in front of", "mirror_1") not in found
+
+
+def test_a_side_word_before_an_owners_part():
+    found = rels("A round pond lies in the meadow. Two horses drink at its near edge.")
+    assert {("horse_1", "near", "pond_1"), ("horse_2", "near", "pond_1")} <= found

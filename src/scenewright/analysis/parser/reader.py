@@ -710,9 +710,10 @@ class _Reader:
         if owner and j > lead + 1:
             self._part = singular(toks[j - 1].text)
             return owner, j  # "above its door": a part of its owner places by the owner itself
-        if owner and lead + 1 < ce and toks[lead + 1].text in _OWNER_PARTS:
-            self._part = toks[lead + 1].text
-            return owner, lead + 2  # "piled against its side": by the owner
+        side = lead + 1 + (lead + 2 < ce and toks[lead + 1].text in ("near", "far", "left", "right", "upper", "lower"))
+        if owner and side < ce and toks[side].text in _OWNER_PARTS:
+            self._part = toks[side].text
+            return owner, side + 1  # "piled against its side", "drink at its near edge": by the owner
         if lead < ce and toks[lead].text == "the" and j == lead + 2 and singular(toks[lead + 1].text) in load_vocabulary().part_owners:
             self._part = singular(toks[lead + 1].text)
             return "the part", j  # "lies in the water": the water of the pond named before
