@@ -183,3 +183,8 @@ def test_a_subordinate_clause_does_not_share_the_relation_before():
 def test_a_side_word_before_an_owners_part():
     found = rels("A round pond lies in the meadow. Two horses drink at its near edge.")
     assert {("horse_1", "near", "pond_1"), ("horse_2", "near", "pond_1")} <= found
+
+
+def test_a_phrase_after_what_a_hung_thing_is_above_places_that_thing():
+    found = rels("A chandelier hangs above the table in front of the fireplace.")
+    assert {("table_1", "in front of", "fireplace_1"), ("pendant_lamp_1", "above", "table_1")} <= found

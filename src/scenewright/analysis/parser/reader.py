@@ -107,8 +107,9 @@ _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
 
 #: After these, a phrase right after the target places the target: "a lamp on a table left of the
 #: sofa", "astronauts beside a lab bench to the right of the console", "sniffs at a cooler near the
-#: truck", "dozes in an armchair by the fire" (the armchair is by the fire).
-_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in", "from")
+#: truck", "dozes in an armchair by the fire" (the armchair is by the fire), "a chandelier hangs above
+#: the table in front of the fireplace" (the table is).
+_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in", "from", "above", "over")
 #: Sides of a thing named by a possessive ("against its side"): the owner places.
 _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
 #: "Piled with" on a cart or a table is a load of things standing on it when they are this big or
