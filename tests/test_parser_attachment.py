@@ -188,3 +188,8 @@ def test_a_side_word_before_an_owners_part():
 def test_a_phrase_after_what_a_hung_thing_is_above_places_that_thing():
     found = rels("A chandelier hangs above the table in front of the fireplace.")
     assert {("table_1", "in front of", "fireplace_1"), ("pendant_lamp_1", "above", "table_1")} <= found
+
+
+def test_a_possessive_before_the_target_is_no_verb():
+    found = rels("Two team benches stand by the pitch. A cooler sits beside the home team's bench.")
+    assert ("cooler_1", "side of", "bench_1") in found

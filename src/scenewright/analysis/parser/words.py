@@ -100,4 +100,6 @@ _ORDINALS = {**ORDINALS, "last": -1, "left": 0, "right": -1, "other": -1, "neare
 
 def _is_verb(word: str) -> bool:
     """A finite verb, roughly: what closes a noun phrase's "with" part ("with a mirror is placed")."""
+    if word.endswith("'s"):  # "there's" is a verb, "the team's bench" a possessive
+        return word in ("there's", "here's", "it's", "that's", "what's", "who's", "where's")
     return word in _FINITE or (len(word) > 3 and word.endswith("s") and not word.endswith(("ss", "us", "is")))
