@@ -193,3 +193,8 @@ def test_a_phrase_after_what_a_hung_thing_is_above_places_that_thing():
 def test_a_possessive_before_the_target_is_no_verb():
     found = rels("Two team benches stand by the pitch. A cooler sits beside the home team's bench.")
     assert ("cooler_1", "side of", "bench_1") in found
+
+
+def test_around_a_persons_feet_is_around_the_person():
+    found = rels("An old woman scatters grain for a few hens around her feet.")
+    assert {("hen_1", "face to", "woman_1"), ("hen_2", "face to", "woman_1")} <= found

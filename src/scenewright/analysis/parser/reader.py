@@ -1139,8 +1139,8 @@ class _Reader:
             target, self._target_start = [group], -1
         body, part = self._body_part, self._part  # "on her knees": by the person, as the part says
         self._perch_part = part in load_vocabulary().carriers.get("perches", ())
-        if body == "near" or (body == "on" and kind in ("on", "on top", "in")):
-            kind = body
+        if (body == "near" and kind != "around") or (body == "on" and kind in ("on", "on top", "in")):
+            kind = body  # ("hens around her feet" stay around her)
         between = [t.text for t in toks[last_event_end : rel.start]]
         # sources: the noun the phrase follows when nothing but adverbs lies between
         srcs: list[int]
