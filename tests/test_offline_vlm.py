@@ -233,3 +233,15 @@ def test_a_support_only_inferred_gives_way_to_a_side_the_text_states():
     objects = vlm.describe_objects(text, "realistic", None).value
     written = {str(c) for c in vlm.write_constraints(text, objects, None).value}
     assert written == {"toaster_1 side of round_table_1"}
+
+
+def test_where_the_reader_guesses_a_wall_thing_hangs_it_is_near_that_thing_not_above_it():
+    vlm = OfflineVLM()
+    text = "A dining room with a long table in the middle and a large painting."
+    assert any(r.relation == "above" and r.inferred for r in vlm.composition(text).relations)
+    objects = vlm.describe_objects(text, "realistic", None).value
+    written = {str(c) for c in vlm.write_constraints(text, objects, None).value}
+    assert written == {"picture_frame_1 near table_1"}
+    stated = "A dining room with a long table. A large painting hangs above the table."
+    objects = vlm.describe_objects(stated, "realistic", None).value
+    assert "picture_frame_1 above table_1" in {str(c) for c in vlm.write_constraints(stated, objects, None).value}
