@@ -233,3 +233,33 @@ def test_a_support_only_inferred_gives_way_to_a_side_the_text_states():
     objects = vlm.describe_objects(text, "realistic", None).value
     written = {str(c) for c in vlm.write_constraints(text, objects, None).value}
     assert written == {"toaster_1 side of round_table_1"}
+
+
+def test_where_the_reader_guesses_a_wall_thing_hangs_it_is_near_that_thing_not_above_it():
+    vlm = OfflineVLM()
+    text = "A dining room with a long table in the middle and a large painting."
+    assert any(r.relation == "above" and r.inferred for r in vlm.composition(text).relations)
+    objects = vlm.describe_objects(text, "realistic", None).value
+    written = {str(c) for c in vlm.write_constraints(text, objects, None).value}
+    assert written == {"picture_frame_1 near table_1"}
+    stated = "A dining room with a long table. A large painting hangs above the table."
+    objects = vlm.describe_objects(stated, "realistic", None).value
+    assert "picture_frame_1 above table_1" in {str(c) for c in vlm.write_constraints(stated, objects, None).value}
+
+
+def test_a_guess_that_repeats_what_the_text_states_for_another_of_its_kind_stands_as_stated():
+    from dataclasses import replace
+
+    from scenewright.analysis.parser import ParsedRelation
+
+    vlm = OfflineVLM()
+    text = "A tall cabinet and two wall clocks."
+    composed = vlm.composition(text)
+    ids = {o.id for o in composed.objects}
+    assert {"cabinet_1", "wall_clock_1", "wall_clock_2"} <= ids
+    # One clock the text hangs above the cabinet, the other the reader only guessed there.
+    guessed = [ParsedRelation("wall_clock_1", "above", "cabinet_1"),
+               ParsedRelation("wall_clock_2", "above", "cabinet_1", inferred=True)]
+    vlm._compositions[vlm.parse(text).text] = replace(composed, relations=guessed)
+    written = {str(c) for c in vlm.write_constraints(text, composed.objects, None).value}
+    assert written == {"wall_clock_1 above cabinet_1", "wall_clock_2 above cabinet_1"}

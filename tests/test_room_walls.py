@@ -17,7 +17,8 @@ def test_a_thing_above_another_that_would_pass_the_ceiling_hangs_from_it_over_it
                _o("sink_1", "sink", 0.9), _o("lamp_1", "pendant_lamp", 0.3), _o("rug_1", "rug", 0.02),
                _o("drone_1", "drone", 0.2), _o("kite_1", "kite", 0.4), _o("wardrobe_1", "wardrobe", 1.9)]
     said = [Constraint(relation="above", source=s, target=t)
-            for s, t in (("lantern_1", "desk_1"), ("mirror_1", "sink_1"), ("drone_1", "rug_1"), ("kite_1", "wardrobe_1"))]
+            for s, t in (("lantern_1", "desk_1"), ("mirror_1", "sink_1"), ("drone_1", "rug_1"),
+                         ("kite_1", "wardrobe_1"))]
     got = {str(c) for c in room_constraints(objects, said, 2.7)}
     # Hung from the ceiling, its centre still 2 m over the desk's (0.375 + 2 + 0.2 <= 2.7): "above" holds there.
     assert {"lantern_1 on ceiling ceiling", "lantern_1 above desk_1"} <= got
@@ -89,3 +90,13 @@ def test_a_fireplace_and_a_tv_stand_stand_against_a_wall_even_with_a_seat_by_the
     got = {str(c) for c in room_constraints(objects, said, 2.7)}
     assert {"fireplace_1 against wall room", "tv_stand_1 against wall room"} <= got
     assert "armchair_1 against wall room" not in got
+
+
+def test_a_cycle_of_on_does_not_hang_the_priors():
+    objects = [_o("frame_1", "picture_frame", 0.4), _o("box_1", "crate", 0.3), _o("tin_1", "crate", 0.2),
+               _o("chest_1", "dresser", 0.8)]
+    said = [Constraint(relation=r, source=a, target=b)
+            for r, a, b in (("on", "box_1", "frame_1"), ("on", "tin_1", "box_1"), ("on", "box_1", "tin_1"),
+                            ("above", "frame_1", "chest_1"))]
+    assert ceiling_for(objects, said, 2.7) >= 2.7
+    assert room_constraints(objects, said, 3.0)

@@ -17,7 +17,7 @@ from scenewright.analysis.parser import ParsedScene, parse_scene
 from scenewright.analysis.parser.language import check_english
 from scenewright.core.protocols import Answer
 from scenewright.core.relations import BINDING
-from scenewright.analysis.parser.room import wall_phrases
+from scenewright.analysis.parser.room import WALL_THINGS, wall_phrases
 from scenewright.errors import BackendError, InputError
 from scenewright.scene import ROOM_RELATIONS, ROOM_TARGET, Constraint, Event, LayoutReport, Room, SceneObject
 
@@ -111,11 +111,22 @@ class OfflineVLM:
         # A support the reader only inferred gives way to a side the text states to the same
         # thing ("a coffee machine stands beside a small table": not on it).
         beside = {(r.source, r.target) for r in relations if r.relation in _SIDES and not r.inferred}
+        category = {o.id: o.category for o in parsed.objects}
+        kinds_above = {(category.get(r.source), category.get(r.target)) for r in relations
+                       if r.relation == "above" and not r.inferred}
         for r in relations:
             if r.relation == "on" and r.inferred and (r.source, r.target) in beside:
                 continue
+            relation = r.relation
+            if (relation == "above" and r.inferred and category.get(r.source) in WALL_THINGS
+                    and (category.get(r.source), category.get(r.target)) not in kinds_above):
+                # The reader's guess of where a picture or a clock hangs gives it a place, not a
+                # height: the wall gives that ("a mirror" over the nearest wardrobe is near it).
+                # One the text states for another of its kind stands as stated ("a clock above
+                # each of the cabinets").
+                relation = "near"
             if r.source in ids and r.target in ids:
-                out.append(Constraint(relation=r.relation, source=ids[r.source], target=ids[r.target]))
+                out.append(Constraint(relation=relation, source=ids[r.source], target=ids[r.target]))
         for r in wall_phrases(parsed) if room is not None else ():  # "against the back wall"
             if r.source in ids:
                 out.append(Constraint(relation=r.relation, source=ids[r.source], target=r.target))

@@ -132,9 +132,12 @@ class _Reach:
             seen.add(i)
         return i
 
-    def load(self, i: str) -> float:
-        """How high the things stacked ``on`` ``i`` reach over its top (a rack's suitcases)."""
-        return max((self.size[s] + self.load(s) for s, h in self.host.items() if h == i and s != i), default=0.0)
+    def load(self, i: str, seen: frozenset[str] = frozenset()) -> float:
+        """How high the things stacked ``on`` ``i`` reach over its top (a rack's suitcases); a
+        cycle of ``on`` (cleaned away later) stacks nothing twice."""
+        seen = seen | {i}
+        return max((self.size[s] + self.load(s, seen) for s, h in self.host.items() if h == i and s not in seen),
+                   default=0.0)
 
     def top(self, source: str, target: str) -> float:
         """How high ``source``'s top reaches, with what stands on it, at its lowest ``above`` ``target``."""
