@@ -339,7 +339,9 @@ VARIANTS = [
     ("bowl", "crab pot", "brick"), ("cart", "ore cart", "metal"), ("generic", "gourd", "leaf"), ("generic", "beach ball", "paint"),
     ("barrel", "bass drum", "hide"), ("generic", "ramp", "wood"), ("fence", "stepladder", "dark_wood"),
     ("fridge", "water dispenser", "glass"), ("bowl", "skillet", "dark_wood"), ("bowl", "tea pot", "accent"),
-    ("generic", "goalpost", "canvas_alt"), ("generic", "smokestack", "brick"),
+    ("generic", "goalpost", "canvas_alt"), ("generic", "smokestack", "brick"), ("floor_lamp", "hat stand", "brass"),
+    ("trash_can", "pillar box", "paper"), ("counter", "vitrine", "glass"), ("generic", "rail", "dark_metal"),
+    ("generic", "orrery", "gold"),
 ]
 
 

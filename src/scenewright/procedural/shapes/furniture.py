@@ -299,9 +299,26 @@ def nightstand(m: Model) -> None:
         m.ball("brass", (0, -m.sy / 2 - 0.005, z0 + h / 2), (0.015, 0.015, 0.015), fraction=0.4)
 
 
+def _display_case(m: Model) -> None:
+    """A display case: a wooden cabinet with a glass case on top, things on show inside, a
+    flat wooden rim round the glass top (what stands on it stands on the glass)."""
+    m.main = "glass"  # "a glass display case" describes the case, not its cabinet
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    base = 0.55 * H
+    m.box("wood", (-W, -D, 0), (W, D, base))
+    _doors(m, -W + 0.03, W - 0.03, 0.05 * H, base - 0.05 * H, min(8, max(1, int(round(m.sx / 0.6)))), -D)
+    m.box("glass", (-0.97 * W, -0.95 * D, base), (0.97 * W, 0.95 * D, 0.99 * H), rounded=0.0)
+    m.box("dark_wood", (-W, -D, 0.99 * H), (W, D, H), rounded=0.0)
+    for k, x in enumerate(np.linspace(-0.6 * W, 0.6 * W, 4)):
+        m.ball(("gold", "crystal")[k % 2], (x, 0, base + 0.06 * H), (0.1 * W, 0.25 * D, 0.06 * H), fraction=0.4)
+
+
 def counter(m: Model) -> None:
     if m.named("control panel", "console", "terminal", "control desk", "control console"):
         machine(m)
+        return
+    if m.named("display case", "display cabinet", "glass case", "vitrine", "showcase", "glass cabinet", "jewelry case"):
+        _display_case(m)
         return
     top_t = m.thick(0.04, 0.08 * m.sz)
     m.box("dark_wood", (-m.sx / 2 + 0.02, -m.sy / 2 + 0.08, 0), (m.sx / 2 - 0.02, m.sy / 2, 0.1))

@@ -1,5 +1,5 @@
-"""The fallback shape: soft things, instruments, pumpkins, balls, ramps, goals and
-chimneys (things with no family),
+"""The fallback shape: soft things, instruments, pumpkins, balls, ramps, goals, chimneys,
+rails and orreries (things with no family),
 the family a name calls (animals, craft, figures...), and a plain plinthed block for a name
 with no hint at all."""
 
@@ -94,9 +94,46 @@ def _chimney(m: Model) -> None:
     m.cylinder("ceramic", (0, 0, 0.94 * H), (0, 0, H), 0.35 * min(W, D), 0.3 * min(W, D), fraction=0.5)
 
 
+def _rail(m: Model) -> None:
+    """A grind rail: a long steel tube on legs with flat feet, along its longer side."""
+    m.main = "metal"
+    along_x = m.sx >= m.sy
+    L = (m.sx if along_x else m.sy) / 2
+    r = 0.06 * m.sz + 0.01
+
+    def at(t: float, z: float):
+        return (t, 0.0, z) if along_x else (0.0, t, z)
+
+    m.cylinder("metal", at(-L, m.sz - r), at(L, m.sz - r), r, fraction=0.6)
+    for t in (-0.8 * L, 0.0, 0.8 * L):
+        m.cylinder("dark_metal", at(t, 0.06 * m.sz), at(t, m.sz - 1.5 * r), 0.7 * r, fraction=0.4)
+        lo, hi = np.array(at(t - 0.15 * L, 0.0)), np.array(at(t + 0.15 * L, 0.06 * m.sz))
+        side = np.array((0.0, 1.0, 0.0) if along_x else (1.0, 0.0, 0.0)) * 2.5 * r
+        m.box("dark_metal", np.minimum(lo, hi) - side, np.maximum(lo, hi) + side, rounded=0.0)
+
+
+def _orrery(m: Model) -> None:
+    """An orrery: a brass sun on a column over a round base, planets on arms of different
+    lengths and heights, a ring of the ecliptic."""
+    m.main = "brass"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.lathe("dark_wood", [(0.5, 0.0), (0.5, 0.1 * H), (0.0, 0.1 * H)], scale=(m.sx, m.sy))
+    m.post("brass", 0, 0, 0.1 * H, 0.7 * H, 0.03 * min(m.sx, m.sy) + 0.003, fraction=0.4)
+    m.ball("gold", (0, 0, 0.7 * H), (0.14 * W, 0.14 * D, 0.14 * H))
+    m.torus("brass", (0, 0, 0.55 * H), 0.8 * min(W, D), 0.01 * min(m.sx, m.sy) + 0.002, fraction=0.8)
+    for k, (reach, z, size, role) in enumerate(((0.35, 0.6, 0.05, "copper"), (0.55, 0.5, 0.07, "book_b"), (0.8, 0.42, 0.08, "accent"),
+                                                (0.95, 0.35, 0.06, "leaf"))):
+        a = 2.1 * k + 0.4
+        tip = (reach * W * np.cos(a), reach * D * np.sin(a), z * H)
+        m.beam("brass", (0, 0, 0.25 * H + 0.03 * k * H), (tip[0], tip[1], 0.25 * H + 0.03 * k * H), 0.015 * min(m.sx, m.sy) + 0.002)
+        m.post("brass", tip[0], tip[1], 0.25 * H + 0.03 * k * H, z * H, 0.008 * min(m.sx, m.sy) + 0.002, fraction=0.3)
+        m.ball(role, tip, (size * W, size * D, size * H), fraction=0.5)
+
+
 def generic(m: Model) -> None:
-    """Soft things, instruments, pumpkins, balls, ramps, goals and chimneys by name; else the family the name calls (a horse the
-    catalogue files here is an animal); only a name with no hint at all gets the block."""
+    """Soft things, instruments, pumpkins, balls, ramps, goals, chimneys, rails and orreries
+    by name; else the family the name calls (a horse the catalogue files here is an animal);
+    only a name with no hint at all gets the block."""
     variants = (
         (("guitar", "violin", "cello"), _guitar),
         (("cushion", "pillow", "pouf"), _cushion),
@@ -107,6 +144,8 @@ def generic(m: Model) -> None:
         (("ramp", "skate ramp"), structures._ramp),
         (("goal", "goalpost", "goal post"), _goal),
         (("chimney", "smokestack", "chimney stack"), _chimney),
+        (("grind rail", "rail"), _rail),
+        (("orrery",), _orrery),
     )
     for words, build in variants:
         if m.named(*words):

@@ -18,7 +18,28 @@ def table_lamp(m: Model) -> None:
     m.lathe("shade", [(r, m.sz - shade_h), (0.6 * r, m.sz)])
 
 
+def _coat_rack(m: Model) -> None:
+    """A coat stand: a turned pole on splayed feet, hooks angled out at the top under a knob."""
+    m.main = "dark_wood"
+    r = min(m.sx, m.sy) / 2
+    H = m.sz
+    pole = 0.08 * r + 0.01
+    m.post("dark_wood", 0, 0, 0.06 * H, 0.95 * H, pole, fraction=0.5)
+    m.ball("dark_wood", (0, 0, 0.96 * H), (1.6 * pole,) * 3, fraction=0.5)
+    for k in range(3):
+        a = 2 * np.pi * k / 3 + np.pi / 2
+        m.beam("dark_wood", (0, 0, 0.12 * H), (0.95 * r * np.cos(a), 0.95 * r * np.sin(a), 0.0), 1.2 * pole)
+    for k in range(4):
+        a = 2 * np.pi * k / 4 + np.pi / 4
+        tip = (0.7 * r * np.cos(a), 0.7 * r * np.sin(a), 0.92 * H)
+        m.beam("brass", (0, 0, 0.84 * H), tip, 0.5 * pole)
+        m.ball("brass", tip, (0.8 * pole,) * 3, fraction=0.4)
+
+
 def floor_lamp(m: Model) -> None:
+    if m.named("coat rack", "coat stand", "hat stand", "hat rack", "coat tree", "hall tree", "hat tree"):
+        _coat_rack(m)
+        return
     m.main = "metal"
     r = min(m.sx, m.sy) / 2
     shade_h = 0.22 * m.sz
@@ -260,9 +281,23 @@ def picture_frame(m: Model) -> None:
         m.box(role, (cx - w / 2, front, cz - h / 2), (cx + w / 2, front + 0.002, cz + h / 2), rounded=0.0)
 
 
+def _post_box(m: Model) -> None:
+    """A pillar post box: a red column with a domed cap, a letter slot and a plate."""
+    m.main = "accent"
+    r = min(m.sx, m.sy) / 2
+    H = m.sz
+    m.lathe("dark_metal", [(r, 0.0), (r, 0.06 * H), (0.0, 0.06 * H)])
+    m.lathe("accent", [(0.9 * r, 0.06 * H), (0.9 * r, 0.82 * H), (r, 0.84 * H), (r, 0.88 * H), (0.6 * r, 0.97 * H), (0.0, H)])
+    m.box("dark_metal", (-0.4 * r, -0.95 * r, 0.68 * H), (0.4 * r, -0.85 * r, 0.72 * H), rounded=0.0)
+    m.box("paper", (-0.3 * r, -0.93 * r, 0.45 * H), (0.3 * r, -0.87 * r, 0.58 * H), rounded=0.0)
+
+
 def trash_can(m: Model) -> None:
     if m.named("basket", "hamper"):
         _basket(m)
+        return
+    if m.named("mailbox", "mail box", "post box", "postbox", "letterbox", "letter box", "pillar box"):
+        _post_box(m)
         return
     m.main = "metal"
     r = min(m.sx, m.sy) / 2
