@@ -495,3 +495,10 @@ def test_them_names_the_people_not_the_seats_they_sit_on():
 def test_at_each_end_of_a_thing_is_one_at_either_end():
     found = rels("A long table fills the hall, and a candelabrum stands at either end of it.")
     assert {("candelabrum_1", "left of", "table_1"), ("candelabrum_2", "right of", "table_1")} <= found, found
+
+
+def test_a_host_covered_in_big_things_holds_them_small_ones_stay_its_look_or_contents():
+    found = rels("Two clerks work at a long counter covered in cash registers.")
+    assert ("cash_register_1", "on", "counter_1") in found, found
+    parsed = parse_scene("A sofa covered in green velvet stands by a table covered in crumbs.")
+    assert sorted(o.category for o in parsed.objects) == ["sofa", "table"]

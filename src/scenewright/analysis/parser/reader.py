@@ -101,7 +101,7 @@ _CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in")
 _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
 #: "Piled with" on a cart or a table is a load of things standing on it when they are this big or
 #: bigger ("a cart piled with suitcases"); smaller ones ("piled with apples") stay its contents.
-_LOADS = {("piled", "with"), ("stacked", "with"), ("heaped", "with")}
+_LOADS = {("piled", "with"), ("stacked", "with"), ("heaped", "with"), ("covered", "in"), ("covered", "with")}
 _LOAD_HOSTS = ("cart", "truck", "table", "round_table", "desk", "counter", "bookshelf", "shop_shelf")
 _LOAD_SIZE = 0.3
 #: Things that show what follows their "of", even a definite one ("a statue of the king").
@@ -710,8 +710,11 @@ class _Reader:
                     continue
                 c.head = [c.each] if c.each is not None else (c.main or list(prev_subject))
                 mine = nxt in _PERSON_POSSESSIVES  # "by the flag with his mallet": his, not the flag's
-                if w == "with" and c.last_target and c.last_target_end == k and self._animate(*c.head) and not mine:
-                    c.head = list(c.last_target)  # "a baker stands behind the counter with a tray on it"
+                after_target = bool(c.last_target) and c.last_target_end == k
+                if after_target and ((w == "with" and self._animate(*c.head) and not mine) or (w, nxt) in _HOLD_PAIRS):
+                    # "a baker stands behind the counter with a tray on it", "sits at a desk covered in
+                    # monitors": the target's
+                    c.head = list(c.last_target)
                 c.wsub, c.expect_new = [], False
                 # "with his putter": a possessive after "with" says the person has it in hand
                 hand = hand or (w == "with" and mine and all(self._person_at(h) for h in c.head))

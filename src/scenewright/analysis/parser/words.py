@@ -70,7 +70,8 @@ _ADVERBS = {"just", "right", "directly", "all", "both", "neatly", "slightly", "a
 _HOLD = {"holds", "hold", "holding", "carries", "carry", "carrying", "supports", "support", "supporting",
          "bears", "bearing", "displays", "displaying"}  # fmt: skip
 _HOLD_PAIRS = {("loaded", "with"), ("topped", "with"), ("set", "with"), ("laid", "with"), ("decorated", "with"),
-               ("piled", "with"), ("stacked", "with"), ("heaped", "with")}  # fmt: skip
+               ("piled", "with"), ("stacked", "with"), ("heaped", "with"), ("covered", "in"),
+               ("covered", "with")}  # fmt: skip
 #: Verbs whose object a person has in hand ("waves a flag", "sips from a glass", "peering through
 #: a loupe"): the thing is carried by its holder, as with "holds".
 _HAND_VERBS = {"waves", "waving", "wields", "wielding", "brandishes", "brandishing", "clutches", "clutching",
