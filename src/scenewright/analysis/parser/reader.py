@@ -99,8 +99,9 @@ _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
 _CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in")
 #: Sides of a thing named by a possessive ("against its side"): the owner places.
 _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
-#: "Piled with" on a cart or a table is a load of things standing on it when they are this big or
-#: bigger ("a cart piled with suitcases"); smaller ones ("piled with apples") stay its contents.
+#: "Piled with" or "covered in" on a cart or a table is a load of things standing on it when they are
+#: this big or bigger ("a cart piled with suitcases", "a desk covered in monitors"); smaller ones
+#: ("piled with apples", "covered in crumbs") stay its contents.
 _LOADS = {("piled", "with"), ("stacked", "with"), ("heaped", "with"), ("covered", "in"), ("covered", "with")}
 _LOAD_HOSTS = ("cart", "truck", "table", "round_table", "desk", "counter", "bookshelf", "shop_shelf")
 _LOAD_SIZE = 0.3
