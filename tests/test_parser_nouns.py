@@ -281,3 +281,7 @@ def test_a_compound_written_open_is_the_closed_one():
 
 def test_a_known_noun_in_a_hyphened_look_does_not_hide_the_thing():
     assert objects("A fox-shaped glimmerlamp hangs above the door.") == Counter({("thing", "glimmerlamp"): 1})
+
+
+def test_a_string_of_things_is_one_string():
+    assert objects("A shelf holds a string of glimmerbeads.")[("thing", "glimmerbead")] == 1

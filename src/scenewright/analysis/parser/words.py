@@ -18,7 +18,7 @@ _QUANTITY = {
     "stack": 3, "stacks": 4, "pile": 3, "piles": 4, "bunch": 3, "handful": 3, "collection": 3,
     "coils": 3, "coil": 1, "ring": 4, "circle": 4, "lot": 5, "lots": 5, "plenty": 5, "dozens": 12,
     "series": 3, "trio": 3, "clusters": 5, "grove": 4, "patch": 1, "flock": 6, "herd": 6, "flocks": 12,
-    "herds": 12,
+    "herds": 12, "string": 1,
 }  # fmt: skip
 _DETERMINERS = {"a", "an", "the", "this", "that", "these", "those", "its", "their", "his", "her", "our", "my",
                 "your", "another", "each", "every", "any", "other", "one", "all"}  # fmt: skip
