@@ -502,3 +502,10 @@ def test_a_host_covered_in_big_things_holds_them_small_ones_stay_its_look_or_con
     assert ("cash_register_1", "on", "counter_1") in found, found
     parsed = parse_scene("A sofa covered in green velvet stands by a table covered in crumbs.")
     assert sorted(o.category for o in parsed.objects) == ["sofa", "table"]
+
+
+def test_between_the_second_and_third_of_a_group():
+    parsed = parse_scene("Four kilns stand in a row, and a bin stands between the second and third kiln.")
+    assert sum(o.name == "kiln" for o in parsed.objects) == 4
+    found = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert {("trash_can_1", "near", "kiln_2"), ("trash_can_1", "near", "kiln_3")} <= found, found

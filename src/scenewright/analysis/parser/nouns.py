@@ -867,6 +867,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         count = 1
     if plural and count == 1 and counted and not m.each and toks[max(m.start - 1, 0)].text not in ("a", "an"):
         count = 2
+    if not counted and not plural and any(a.lower() in _ORDINALS for a in adjectives):
+        m.definite = True  # "between the first and second car": the second of those already there
     m.count, m.counted, m.adjectives = count, counted, adjectives
 
 

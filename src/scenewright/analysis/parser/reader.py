@@ -585,6 +585,18 @@ class _Reader:
             return owner, lead + 2  # "piled against its side": by the owner
         return None, pos
 
+    def _ordinal_pair(self, pos: int, ce: int) -> tuple[int, list[int], int] | None:
+        """"Between the first and second car": the member the bare ordinal picks, the group the
+        noun after "and" names (its own ordinal resolved as usual) and where that phrase ends."""
+        toks = self.toks
+        k = pos + (pos < ce and toks[pos].text == "the")
+        if k + 2 >= ce or toks[k].text not in _ORDINALS or toks[k + 1].text != "and":
+            return None
+        target, end = self._target_at(k + 2, ce)
+        if not isinstance(target, list) or len(target) != 1 or self.groups[target[0]].count < 2:
+            return None
+        return _ORDINALS[toks[k].text] % self.groups[target[0]].count, target, end
+
     def _people_own(self) -> int | None:
         """The group "their" most likely names when it is people or animals: the latest group
         of several, when living (what such owners have is a thing of its own, not a part like a
@@ -876,6 +888,9 @@ class _Reader:
         kind = rel.kind
         target, end = self._target_at(rel.end, ce)
         body, part = self._body_part, self._part  # "on her knees": by the person, as the part says
+        first = None  # "between the first and second car": the member the bare ordinal picks
+        if kind == "between" and target is None:
+            first, target, end = self._ordinal_pair(rel.end, ce) or (None, target, end)
         if body == "near" or (body == "on" and kind in ("on", "on top", "in")):
             kind = body
         between = [t.text for t in toks[last_event_end : rel.start]]
@@ -1044,6 +1059,8 @@ class _Reader:
             c.each_own = None
         if tm is not None and tm.each:  # "a candle on every table": one per table
             self._per_each([s for s in srcs if s in c.groups], targets[0])
+        if first is not None:
+            self._relate(kind, srcs, targets[0], hang, first)
         for t in targets:
             self._relate(kind, srcs, t, hang, instance)
             if body == "on":  # a person holds nothing on top, but carries what is on a knee or an arm
