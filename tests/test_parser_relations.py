@@ -509,3 +509,9 @@ def test_between_the_second_and_third_of_a_group():
     assert sum(o.name == "kiln" for o in parsed.objects) == 4
     found = {(r.source, r.relation, r.target) for r in parsed.relations}
     assert {("trash_can_1", "near", "kiln_2"), ("trash_can_1", "near", "kiln_3")} <= found, found
+
+
+def test_uncounted_things_on_either_side_are_two():
+    parsed = parse_scene("Potted ferns stand on either side of the door, and three stools stand on either side of the bar.")
+    counts = Counter(o.category for o in parsed.objects)
+    assert counts["potted_plant"] == 2 and counts["stool"] == 3, counts

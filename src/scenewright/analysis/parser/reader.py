@@ -1104,9 +1104,11 @@ class _Reader:
                 self.pair_each.add((src, target))
 
     def _one_a_side(self, srcs: list[int]) -> None:
-        """"A lamp post on each side of the door": one thing named for both sides means two."""
+        """"A lamp post on each side of the door": one thing named for both sides means two; so do
+        things the text does not count ("trunks sit on either side of the table")."""
         for s in srcs:
-            if self.groups[s].count == 1 and s not in self.history:
+            uncounted = s not in self.numbered and self.groups[s].count == 3
+            if (self.groups[s].count == 1 or uncounted) and s not in self.history:
                 self.groups[s].count = 2
 
     def _hung_before(self, pos: int) -> bool:
