@@ -512,6 +512,7 @@ def test_between_the_second_and_third_of_a_group():
 
 
 def test_uncounted_things_on_either_side_are_two():
-    parsed = parse_scene("Potted ferns stand on either side of the door, and three stools stand on either side of the bar.")
+    text = "Potted ferns stand on either side of the door, and three stools stand on either side of the bar."
+    parsed = parse_scene(text)
     counts = Counter(o.category for o in parsed.objects)
     assert counts["potted_plant"] == 2 and counts["stool"] == 3, counts
