@@ -516,3 +516,10 @@ def test_uncounted_things_on_either_side_are_two():
     parsed = parse_scene(text)
     counts = Counter(o.category for o in parsed.objects)
     assert counts["potted_plant"] == 2 and counts["stool"] == 3, counts
+
+
+def test_one_on_each_of_its_parts():
+    parsed = parse_scene("A mannequin stands by the window with a parakeet perched on each of its raised arms.")
+    assert sum(o.category == "bird" for o in parsed.objects) == 2
+    found = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert ("parakeet_1", "on", "mannequin_1") in found, found

@@ -530,11 +530,16 @@ class _Reader:
         """The noun phrase (or pronoun) right after a relation phrase, and where it ends."""
         toks = self.toks
         self._body_part = self._part = None
+        self._parts_each = 0
         body = self._body_part_at(pos, ce, self.by_start)
         if body is not None:
             return body
         # "on one of its branches": the part of one owner, as "on its branch"
-        lead = pos + 2 if [t.text for t in toks[pos : pos + 2]] == ["one", "of"] else pos
+        opening = [t.text for t in toks[pos : pos + 2]]
+        lead = pos + 2 if opening in (["one", "of"], ["each", "of"]) else pos
+        if opening == ["each", "of"] and lead + 1 < ce and toks[lead].text in _OWNER_PRONOUNS:
+            # "a crow on each of its outstretched arms": one per part, two unless the text counts them
+            self._parts_each = _NUMBERS.get(toks[lead + 1].text, 2)
         j = pos
         while j < ce and j - pos < 6:
             if j in self.by_start:
@@ -568,7 +573,7 @@ class _Reader:
             # a noun, not a verb, after a determiner or a count ("its walls", "two rows of")
             after_determiner = j > pos and (toks[j - 1].text in _DETERMINERS or toks[j - 1].text in _NUMBERS)
             if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
-                w not in _STOP and w[0].isalnum() and (after_determiner or not _is_verb(w))
+                w not in _STOP and w[0].isalnum() and (after_determiner or not _is_verb(w) or self._part_word(w))
             ):
                 j += 1
                 continue
@@ -596,6 +601,12 @@ class _Reader:
         if not isinstance(target, list) or len(target) != 1 or self.groups[target[0]].count < 2:
             return None
         return _ORDINALS[toks[k].text] % self.groups[target[0]].count, target, end
+
+    @staticmethod
+    def _part_word(word: str) -> bool:
+        """A part of a body or a thing ("its outstretched arms", "its rusty wheels"): a noun, no verb."""
+        vocabulary = load_vocabulary()
+        return word in vocabulary.body_parts or singular(word) in vocabulary.part_owners
 
     def _people_own(self) -> int | None:
         """The group "their" most likely names when it is people or animals: the latest group
@@ -888,6 +899,7 @@ class _Reader:
         kind = rel.kind
         target, end = self._target_at(rel.end, ce)
         body, part = self._body_part, self._part  # "on her knees": by the person, as the part says
+        parts_each = self._parts_each
         first = None  # "between the first and second car": the member the bare ordinal picks
         if kind == "between" and target is None:
             first, target, end = self._ordinal_pair(rel.end, ce) or (None, target, end)
@@ -971,7 +983,10 @@ class _Reader:
             own_subject = list(prev_subject) if c.main and srcs == c.main else []
             prefer = [*c.last_target, *prev_subject] if c.last_target else own_subject
             targets: list[int] | str = self._pronoun(target, c, srcs, prefer, kind) if c.head is None else list(c.head)
-            if c.head is not None and all(self._living(h) for h in c.head):
+            # (a scarecrow or a mannequin has a person's shape but is "it")
+            if c.head is not None and all(self._living(h) and self.groups[h].category == "figure" or (
+                self._living(h) and self.catalogue[self.groups[h].category].shape != "figure"
+            ) for h in c.head):  # fmt: skip
                 # "a man on the bench, with his terrier asleep under it": "it" is no person
                 targets = self._pronoun(target, c, srcs + c.head, prefer)
             below = [r[2] for r in self.relations if c.head and r[1] in c.head and r[0] == "above"]
@@ -1061,9 +1076,15 @@ class _Reader:
             self._per_each([s for s in srcs if s in c.groups], targets[0])
         if first is not None:
             self._relate(kind, srcs, targets[0], hang, first)
+        for g in srcs if parts_each and part is not None else []:
+            if g in c.groups and g not in self.numbered and self.groups[g].count == 1:
+                self.groups[g].count = parts_each
         for t in targets:
             self._relate(kind, srcs, t, hang, instance)
-            if body == "on":  # a person holds nothing on top, but carries what is on a knee or an arm
+            # a person holds nothing on top, but carries what is on a knee or an arm ("a crow on each of
+            # its arms": a scarecrow's too)
+            limb = part is not None and load_vocabulary().body_parts.get(part) == "on" and self._person_at(t)
+            if body == "on" or (limb and kind == "on"):
                 self.carried.update((s, t) for s in srcs)
         c.produced = True
         c.rels = [(kind, targets)]
