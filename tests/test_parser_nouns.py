@@ -281,3 +281,14 @@ def test_a_compound_written_open_is_the_closed_one():
 
 def test_a_known_noun_in_a_hyphened_look_does_not_hide_the_thing():
     assert objects("A fox-shaped glimmerlamp hangs above the door.") == Counter({("thing", "glimmerlamp"): 1})
+
+
+def test_a_string_of_things_is_one_string():
+    assert objects("A shelf holds a string of glimmerbeads.")[("thing", "glimmerbead")] == 1
+
+
+def test_a_description_that_opens_with_its_picture_names_no_picture():
+    got = objects("A soft pastel painting of a quiet harbour at dusk. A red buoy floats by the pier.")
+    assert not any(category == "picture_frame" for category, _ in got) and not got[("thing", "harbour")]
+    # a picture that hangs somewhere is a thing of the scene
+    assert objects("A painting of a ship hangs above the fireplace.")[("picture_frame", "painting")] == 1

@@ -522,3 +522,31 @@ def test_at_each_end_of_a_thing_is_one_at_either_end():
 )
 def test_whoever_acts_on_a_big_thing_stands_by_it(text, expected):
     assert rels(text) == expected
+
+
+def test_a_host_covered_in_big_things_holds_them_small_ones_stay_its_look_or_contents():
+    found = rels("Two clerks work at a long counter covered in cash registers.")
+    assert ("cash_register_1", "on", "counter_1") in found, found
+    parsed = parse_scene("A sofa covered in green velvet stands by a table covered in crumbs.")
+    assert sorted(o.category for o in parsed.objects) == ["sofa", "table"]
+
+
+def test_between_the_second_and_third_of_a_group():
+    parsed = parse_scene("Four kilns stand in a row, and a bin stands between the second and third kiln.")
+    assert sum(o.name == "kiln" for o in parsed.objects) == 4
+    found = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert {("trash_can_1", "near", "kiln_2"), ("trash_can_1", "near", "kiln_3")} <= found, found
+
+
+def test_uncounted_things_on_either_side_are_two():
+    text = "Potted ferns stand on either side of the door, and three stools stand on either side of the bar."
+    parsed = parse_scene(text)
+    counts = Counter(o.category for o in parsed.objects)
+    assert counts["potted_plant"] == 2 and counts["stool"] == 3, counts
+
+
+def test_one_on_each_of_its_parts():
+    parsed = parse_scene("A mannequin stands by the window with a parakeet perched on each of its raised arms.")
+    assert sum(o.category == "bird" for o in parsed.objects) == 2
+    found = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert ("parakeet_1", "on", "mannequin_1") in found, found

@@ -159,6 +159,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
     places: list[str] = []
     modifier: list[str] = []
     part_end: int | None = None  # where an opening "the bridge of" ends: its owner is the setting too
+    picture_end: int | None = None  # where an opening "a painting" ends: what it shows is the setting
     for k, (s, e, cat, entry) in enumerate(raw):
         nxt = raw[k + 1] if k + 1 < len(raw) else None
         words = [t.text for t in toks[s:e]]
@@ -215,6 +216,15 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue
         if " ".join(words) in places and s > 0 and toks[s - 1].text in _DEFINITE:
             continue  # "the middle of the cabin" after "The captain's cabin of a ship": the setting again
+        if picture_end is not None and all(t.text[:1].isalpha() and t.text not in _STOP or t.text in ("a", "an")
+                                           for t in toks[picture_end + 1 : s]):  # fmt: skip
+            places.append(" ".join(words))  # "... painting of a windy headland": the place it shows
+            picture_end = None
+            continue
+        picture_end = None
+        if _picture_of_scene(toks, s, e, cat):
+            picture_end = e  # "A soft watercolour painting of a windy headland": the medium, not a thing in it
+            continue
         if _part_of_vessel(toks, s, e) or (part_end is not None and _owner_of_part(toks, part_end, s)) or (
             _owns_opening_place(toks, s) and (cat in _ENCLOSING or load_catalogue()[cat].shape in _ENCLOSING)
         ):
@@ -306,6 +316,19 @@ def _owns_opening_place(toks: list[_Tok], s: int) -> bool:
         if part in places or part in _PLACE_PARTS:
             return _part_of_vessel(toks, j - width, j)
     return False
+
+
+def _picture_of_scene(toks: list[_Tok], s: int, e: int, category: str) -> bool:
+    """The description opens with the picture it is ("A watercolour painting of a headland", "An
+    illustration of a market"): a picture followed by "of", with only describing words before it."""
+    if category != "picture_frame" or e >= len(toks) or toks[e].text != "of":
+        return False
+    if not all(t.text[:1].isalpha() and t.text not in _STOP or t.text in ("a", "an") for t in toks[:s]):
+        return False
+    k = e  # a sentence that only names the picture: "A painting of a ship hangs ..." is a thing
+    while k < len(toks) and toks[k].text not in (".", "!", "?") and not _verb_word(toks[k].text):
+        k += 1
+    return k >= len(toks) or toks[k].text in (".", "!", "?")
 
 
 def _owner_of_part(toks: list[_Tok], part_end: int, s: int) -> bool:
@@ -907,6 +930,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         count = 1
     if plural and count == 1 and counted and not m.each and toks[max(m.start - 1, 0)].text not in ("a", "an"):
         count = 2
+    if not counted and not plural and any(a.lower() in _ORDINALS for a in adjectives):
+        m.definite = True  # "between the first and second car": the second of those already there
     m.count, m.counted, m.adjectives = count, counted, adjectives
 
 

@@ -112,9 +112,10 @@ _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
 _CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in", "from", "above", "over")
 #: Sides of a thing named by a possessive ("against its side"): the owner places.
 _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
-#: "Piled with" on a cart or a table is a load of things standing on it when they are this big or
-#: bigger ("a cart piled with suitcases"); smaller ones ("piled with apples") stay its contents.
-_LOADS = {("piled", "with"), ("stacked", "with"), ("heaped", "with")}
+#: "Piled with" or "covered in" on a cart or a table is a load of things standing on it when they are
+#: this big or bigger ("a cart piled with suitcases", "a desk covered in monitors"); smaller ones
+#: ("piled with apples", "covered in crumbs") stay its contents.
+_LOADS = {("piled", "with"), ("stacked", "with"), ("heaped", "with"), ("covered", "in"), ("covered", "with")}
 _LOAD_HOSTS = ("cart", "truck", "table", "round_table", "desk", "counter", "bookshelf", "shop_shelf")
 _LOAD_SIZE = 0.3
 #: Things that show what follows their "of", even a definite one ("a statue of the king").
@@ -660,11 +661,16 @@ class _Reader:
         """The noun phrase (or pronoun) right after a relation phrase, and where it ends."""
         toks = self.toks
         self._body_part = self._part = None
+        self._parts_each = 0
         body = self._body_part_at(pos, ce, self.by_start)
         if body is not None:
             return body
         # "on one of its branches": the part of one owner, as "on its branch"
-        lead = pos + 2 if [t.text for t in toks[pos : pos + 2]] == ["one", "of"] else pos
+        opening = [t.text for t in toks[pos : pos + 2]]
+        lead = pos + 2 if opening in (["one", "of"], ["each", "of"]) else pos
+        if opening == ["each", "of"] and lead + 1 < ce and toks[lead].text in _OWNER_PRONOUNS:
+            # "a crow on each of its outstretched arms": one per part, two unless the text counts them
+            self._parts_each = _NUMBERS.get(toks[lead + 1].text, 2)
         j = pos
         while j < ce and j - pos < 6:
             if j in self.by_start:
@@ -698,7 +704,7 @@ class _Reader:
             # a noun, not a verb, after a determiner or a count ("its walls", "two rows of")
             after_determiner = j > pos and (toks[j - 1].text in _DETERMINERS or toks[j - 1].text in _NUMBERS)
             if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
-                w not in _STOP and w[0].isalnum() and (after_determiner or not _is_verb(w))
+                w not in _STOP and w[0].isalnum() and (after_determiner or not _is_verb(w) or self._part_word(w))
             ):
                 j += 1
                 continue
@@ -719,6 +725,12 @@ class _Reader:
             self._part = singular(toks[lead + 1].text)
             return "the part", j  # "lies in the water": the water of the pond named before
         return None, pos
+
+    @staticmethod
+    def _part_word(word: str) -> bool:
+        """A part of a body or a thing ("its outstretched arms", "its rusty wheels"): a noun, no verb."""
+        vocabulary = load_vocabulary()
+        return word in vocabulary.body_parts or singular(word) in vocabulary.part_owners
 
     def _people_own(self) -> int | None:
         """The group "their" most likely names when it is people or animals: the latest group
@@ -868,10 +880,13 @@ class _Reader:
                     continue
                 c.head = [c.each] if c.each is not None else (c.main or list(prev_subject))
                 mine = nxt in _PERSON_POSSESSIVES  # "by the flag with his mallet": his, not the flag's
-                if w == "with" and c.last_target and c.last_target_end == k and not mine and (
-                    self._animate(*c.head) or c.last_kind == "between"
-                ):  # "a baker stands behind the counter with a tray on it", "between a drum and a shelf with cups on it"
-                    c.head = list(c.last_target[-1:] if c.last_kind == "between" else c.last_target)
+                after_target = bool(c.last_target) and c.last_target_end == k
+                between = c.last_kind == "between"
+                if after_target and (
+                    (w == "with" and not mine and (self._animate(*c.head) or between)) or (w, nxt) in _HOLD_PAIRS
+                ):  # "a baker stands behind the counter with a tray on it", "between a drum and a shelf with
+                    # cups on it", "sits at a desk covered in monitors": the target's
+                    c.head = list(c.last_target[-1:] if between else c.last_target)
                 c.wsub, c.expect_new = [], False
                 # "with his putter": a possessive after "with" says the person has it in hand
                 hand = hand or (w == "with" and mine and all(self._person_at(h) for h in c.head))
@@ -1139,6 +1154,7 @@ class _Reader:
             target, self._target_start = [group], -1
         body, part = self._body_part, self._part  # "on her knees": by the person, as the part says
         self._perch_part = part in load_vocabulary().carriers.get("perches", ())
+        parts_each = self._parts_each
         if (body == "near" and kind != "around") or (body == "on" and kind in ("on", "on top", "in")):
             kind = body  # ("hens around her feet" stay around her)
         between = [t.text for t in toks[last_event_end : rel.start]]
@@ -1257,7 +1273,10 @@ class _Reader:
             targets: list[int] | str = (
                 list(c.head) if c.head is not None else self._pronoun(target, c, who + own, prefer, kind)
             )
-            if c.head is not None and all(self._living(h) for h in c.head):
+            # (a scarecrow or a mannequin has a person's shape but is "it")
+            if c.head is not None and all(self._living(h) and self.groups[h].category == "figure" or (
+                self._living(h) and self.catalogue[self.groups[h].category].shape != "figure"
+            ) for h in c.head):  # fmt: skip
                 # "a man on the bench, with his terrier asleep under it": "it" is no person
                 targets = self._pronoun(target, c, srcs, prefer, others=c.head)
             below = [r[2] for r in self.relations if c.head and r[1] in c.head and r[0] == "above"]
@@ -1362,10 +1381,16 @@ class _Reader:
         sitter = self._seat_owner(c, srcs, tm) if tm is not None else None
         if sitter is not None:
             self._relate("on", [sitter], targets[0], instance=instance)
+        for g in srcs if parts_each and part is not None else []:
+            if g in c.groups and g not in self.numbered and self.groups[g].count == 1:
+                self.groups[g].count = parts_each
         for t in targets:
             for one in ordinals or (instance,):
                 self._relate(kind, srcs, t, hang, one)
-            if body == "on":  # a person holds nothing on top, but carries what is on a knee or an arm
+            # a person holds nothing on top, but carries what is on a knee or an arm ("a crow on each of
+            # its arms": a scarecrow's too)
+            limb = part is not None and load_vocabulary().body_parts.get(part) == "on" and self._person_at(t)
+            if body == "on" or (limb and kind == "on"):
                 self.carried.update((s, t) for s in srcs)
         c.produced = True
         c.rels = [(kind, targets)]
@@ -1477,9 +1502,11 @@ class _Reader:
                 self.pair_each.add((src, target))
 
     def _one_a_side(self, srcs: list[int]) -> None:
-        """"A lamp post on each side of the door": one thing named for both sides means two."""
+        """"A lamp post on each side of the door": one thing named for both sides means two; so do
+        things the text does not count ("trunks sit on either side of the table")."""
         for s in srcs:
-            if self.groups[s].count == 1 and s not in self.history:
+            uncounted = s not in self.numbered and self.groups[s].count == 3
+            if (self.groups[s].count == 1 or uncounted) and s not in self.history:
                 self.groups[s].count = 2
 
     def _hung_before(self, pos: int) -> bool:

@@ -18,7 +18,7 @@ _QUANTITY = {
     "stack": 3, "stacks": 4, "pile": 3, "piles": 4, "bunch": 3, "handful": 3, "collection": 3,
     "coils": 3, "coil": 1, "ring": 4, "circle": 4, "lot": 5, "lots": 5, "plenty": 5, "dozens": 12,
     "series": 3, "trio": 3, "clusters": 5, "grove": 4, "patch": 1, "flock": 6, "herd": 6, "flocks": 12,
-    "herds": 12,
+    "herds": 12, "string": 1,
 }  # fmt: skip
 _DETERMINERS = {"a", "an", "the", "this", "that", "these", "those", "its", "their", "his", "her", "our", "my",
                 "your", "another", "each", "every", "any", "other", "one", "all"}  # fmt: skip
@@ -74,7 +74,8 @@ _ADVERBS = {"just", "right", "directly", "all", "both", "neatly", "slightly", "a
 _HOLD = {"holds", "hold", "holding", "carries", "carry", "carrying", "supports", "support", "supporting",
          "bears", "bearing", "displays", "displaying"}  # fmt: skip
 _HOLD_PAIRS = {("loaded", "with"), ("topped", "with"), ("set", "with"), ("laid", "with"), ("decorated", "with"),
-               ("piled", "with"), ("stacked", "with"), ("heaped", "with")}  # fmt: skip
+               ("piled", "with"), ("stacked", "with"), ("heaped", "with"), ("covered", "in"),
+               ("covered", "with")}  # fmt: skip
 #: Verbs whose object a person has in hand ("waves a flag", "sips from a glass", "peering through
 #: a loupe"): the thing is carried by its holder, as with "holds".
 _HAND_VERBS = {"waves", "waving", "wields", "wielding", "brandishes", "brandishing", "clutches", "clutching",
