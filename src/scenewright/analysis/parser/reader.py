@@ -6,7 +6,28 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
 
-from scenewright.core.catalogue import Category, load_catalogue, singular
+from scenewright.analysis.parser.contents import _Contents
+from scenewright.analysis.parser.grammar import (
+    MAX_COUNT,
+    _CEILING_WORDS,
+    _CHAIN_KINDS,
+    _COPULAS,
+    _ENCLOSURES,
+    _FORMATIONS,
+    _FORMATION_NOUNS,
+    _GROUND_KINDS,
+    _KIND_RELATION,
+    _OWN_SIDES,
+    _PARTICIPLES,
+    _PERSONAL,
+    _PERSON_POSSESSIVES,
+    _PLACE_KINDS,
+    _POSSESSED,
+    _RELATIVES,
+    _SEATS,
+    _VESSEL_KINDS,
+)
+from scenewright.analysis.parser.kinds import _Kinds
 from scenewright.analysis.parser.nouns import (
     _Group,
     _Mention,
@@ -14,27 +35,24 @@ from scenewright.analysis.parser.nouns import (
     _is_plural,
     _mark_appositions,
     _opens_phrase,
-    _position_adjective,
     _post_description,
     _read_count,
 )
 from scenewright.analysis.parser.phrases import _Rel, _find_relations
+from scenewright.analysis.parser.references import _References
 from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
 from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _split, _tokenise
 from scenewright.analysis.parser.vocabulary import load_vocabulary, scaled, stretched
 from scenewright.analysis.parser.words import (
     _ADVERBS,
-    _CONTENT_HEADS,
-    _CONTENT_MARKERS,
     _DETERMINERS,
+    _FINITE,
     _HAND_PAIRS,
     _HAND_VERBS,
     _HANG_VERBS,
-    _WARES_VERBS,
     _HOLD,
     _HOLD_PAIRS,
     _NUMBERS,
-    _FINITE,
     _ORDINALS,
     _OWNER_PRONOUNS,
     _OWN_PLACE,
@@ -42,6 +60,7 @@ from scenewright.analysis.parser.words import (
     _STOP,
     _is_verb,
 )
+from scenewright.core.catalogue import Category, load_catalogue, singular
 
 
 @dataclass
@@ -90,82 +109,11 @@ class _Clause:
     deeds: list[tuple[list[int], int]] = field(default_factory=list)
 
 
-#: Phrases that place a group in a formation rather than by a target.
-_FORMATIONS = ("row", "rows", "stack", "circle")
-#: Quantity nouns that set their things out in a formation ("a row of stalls", "two rows of chairs").
-_FORMATION_NOUNS = {"row": "row", "line": "row", "rows": "rows", "lines": "rows", "stack": "stack",
-                    "ring": "circle", "circle": "circle"}  # fmt: skip
-#: Phrase kinds that, with no object after them, name a part of the room ("along the back wall").
-_PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None, "foot of": None, "at": None}
-#: Phrase kinds that place a thing on the ground beside another (not on it, not above it).
-_GROUND_KINDS = ("left of", "right of", "in front of", "behind", "side of", "near", "far", "left", "right")
-#: Phrase kinds read as one of the scene's relations whatever they join.
-_KIND_RELATION = {"left": "left of", "right": "right of", "flank elliptic": "flank", "hanging from": "above",
-                  "leaning on": "side of", "along": "side of"}  # fmt: skip
-#: Seat shapes: what is "at" a desk or a table faces it from the front.
-_SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
-
-#: After these, a phrase right after the target places the target: "a lamp on a table left of the
-#: sofa", "astronauts beside a lab bench to the right of the console", "sniffs at a cooler near the
-#: truck", "dozes in an armchair by the fire" (the armchair is by the fire), "a chandelier hangs above
-#: the table in front of the fireplace" (the table is).
-_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in", "from", "above", "over")
-#: Sides of a thing named by a possessive ("against its side"): the owner places.
-_OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
-#: "Piled with" or "covered in" on a cart or a table is a load of things standing on it when they are
-#: this big or bigger ("a cart piled with suitcases", "a desk covered in monitors"); smaller ones
-#: ("piled with apples", "covered in crumbs") stay its contents.
-_LOADS = {("piled", "with"), ("stacked", "with"), ("heaped", "with"), ("covered", "in"), ("covered", "with")}
-_LOAD_HOSTS = ("cart", "truck", "table", "round_table", "desk", "counter", "bookshelf", "shop_shelf")
-_LOAD_SIZE = 0.3
-#: Things that show what follows their "of", even a definite one ("a statue of the king").
-_DEPICTIONS = ("statue", "hologram", "picture_frame", "sign", "billboard")
-#: Flat holders whose "of" things stand on them as objects ("a tray of bottles", "a pallet of tires").
-_FLAT_HOLDERS = ("plate", "pallet")
-#: Shapes that hold what they hold inside, out of the layout ("a greenhouse holds tomato plants").
-_ENCLOSURES = ("house", "building", "tent", "kiosk")
-#: Where a hung thing hangs from indoors.
-_CEILING_WORDS = ("ceiling", "ceilings", "beam", "beams", "rafter", "rafters")
-#: Vehicles with a roof and doors of their own.
-_ROOFED_VEHICLES = ("car", "truck", "bus", "vehicle")
-#: Parts of a building that place a thing by the building itself when nothing else is named.
-_BUILDING_PARTS = ("roof", "rooftop", "porch", "step", "doorstep", "chimney", "eave", "gable", "veranda", "facade", "door", "doorway")
-#: Carriers anything smaller is on when it is *in* them ("in the tub", "in the canoe", "a broom in the
-#: bucket"); a person or an animal is on every kind of carrier it is in ("fans in the stand"), a
-#: guessed structure only when its name is listed (one in a dome is inside it).
-_VESSEL_KINDS = ("seats", "vehicles", "containers")
-#: What a thing is mounted on as a part of it ("lanterns on tall poles").
-_MOUNTS = ("pole", "stick", "mast", "stake", "spike")
-#: Verbs that join a subject to what it is, not to a thing it acts on.
-_COPULAS = ("is", "are", "was", "were", "be", "has", "have", "had", "seems", "looks")
-#: A perch no taller than this, and this many times a thing's footprint, is a platform whose middle
-#: the thing stands on ("a throne in the centre of the stage").
-_PLATFORM_HEIGHT, _PLATFORM_AREA = 3.5, 4.0
-#: Pronouns that name a person or an animal.
-_PERSONAL = ("him", "her", "himself", "herself")
-#: Possessives of people and the pronoun that names their owner ("at his feet" → him).
-_PERSON_POSSESSIVES = {"his": "him", "her": "her", "their": "them living", "my": "him", "your": "him"}
-#: The longest side (m) of a thing a person has in hand when the text says "with" ("a wheel gun").
-_HANDHELD_SIZE = 1.0
-#: Depth (m) at most of a board or a frame that hangs or leans rather than stands.
-_THIN = 0.12
-#: Words that open a relative clause about the noun before them.
-_RELATIVES = ("that", "which", "who")
-#: Past participles that do not end in -ed ("a tarp strung between two trees").
-_PARTICIPLES = ("strung", "hung", "slung", "built", "set", "laid", "held", "spread", "drawn", "stuck", "bent", "kept")
-#: Phrase kinds that name a side of what their possessive names ("to her left") and its relation.
-_OWN_SIDES = {"its left": "left of", "its right": "right of", "its foot": "foot of"}
-#: The pronoun a possessive in such a phrase stands for.
-_POSSESSED = {**_OWNER_PRONOUNS, **_PERSON_POSSESSIVES}
-#: Categories and shapes of living things ("him", "her" name one of them).
-_LIVING = frozenset({"figure", "animal", "bird", "robot"})
-
-#: No phrase makes more objects than this ("a million chairs"): the object limit then refuses the text.
-MAX_COUNT = 10_000
-
-
-class _Reader:
-    """One pass over the text that builds groups of objects and relations between them."""
+class _Reader(_Contents, _References, _Kinds):
+    """One pass over the text that builds groups of objects and relations between them. What is
+    content (:mod:`.contents`), what a reference names (:mod:`.references`) and what kind of thing
+    a group is (:mod:`.kinds`) are its parts in their own modules; the tables they share are in
+    :mod:`.grammar`."""
 
     def __init__(self, text: str):
         self.text = text
@@ -487,115 +435,8 @@ class _Reader:
         before = [m for m in mentions if m.end <= s and s - m.end <= 8]
         return before[-1].start if before else None
 
-    def _mark_contents(self, mentions: list[_Mention]) -> None:
-        """Nouns after "full of", or after "of" following a container or a depiction ("a vase of
-        tulips", "a statue of a horse"), are contents, not objects of the scene."""
-        toks = self.toks
-        chain = False
-        for k, m in enumerate(mentions):
-            prev = mentions[k - 1] if k else None
-            j = m.start - 1
-            while j >= 0 and (toks[j].text in _DETERMINERS or toks[j].text in _NUMBERS or (
-                toks[j].text not in _STOP and toks[j].text[0].isalnum())) and m.start - j < 5:  # fmt: skip
-                j -= 1
-            if (prev is not None and self._held_inside(m, prev)) or self._wares(m):
-                m.content = chain = True
-                continue
-            if j < 1 or prev is None:
-                chain = False
-                continue
-            gap = [t.text for t in toks[prev.end : j + 1]]
-            self._each_full(m, mentions[:k], j)
-            content = self._is_content(m, prev, j) or (
-                chain and prev.content and not (m.counted or m.definite) and all(g in ("and", ",", "or") for g in gap)
-            )
-            m.content = content
-            chain = content
-
-    def _wares(self, m: _Mention) -> bool:
-        """"A stall selling pies", "a cart serving hot drinks": a bare plural after a verb of
-        trade is what is sold, not things of the layout ("a vendor sells two balloons" are there)."""
-        head = m.phrase.split()[-1].lower()
-        if m.counted or singular(head) == head:
-            return False
-        k = m.start - 1  # back over describing words and a list of wares before ("pies, cakes and jams")
-        while k >= 0 and m.start - k <= 8 and self.toks[k].text not in _WARES_VERBS and (
-            self.toks[k].text in (",", "and", "or") or self.toks[k].text not in _STOP and self.toks[k].text[:1].isalpha()
-        ):
-            k -= 1
-        return k >= 0 and self.toks[k].text in _WARES_VERBS
-
     def _size(self, m: _Mention) -> tuple[float, float, float]:
         return m.guess.size if m.guess is not None else self.catalogue[m.category].size
-
-    def _held_inside(self, m: _Mention, prev: _Mention) -> bool:
-        """"A greenhouse holds tomato plants": what a building or a tent holds is inside it, its
-        contents rather than things of the layout."""
-        gap = [t.text for t in self.toks[prev.end : m.start]]
-        return bool(gap) and gap[0] in _HOLD and len(gap) <= 4 and self.catalogue[prev.category].shape in _ENCLOSURES
-
-    def _is_content(self, m: _Mention, prev: _Mention, j: int) -> bool:
-        w = self.toks[j].text
-        marker = (self.toks[j - 1].text, w)
-        if marker in _LOADS and self.catalogue[prev.category].shape in _LOAD_HOSTS and max(self._size(m)) >= _LOAD_SIZE:
-            return False  # "a luggage cart piled with suitcases": they stand on the cart
-        alive = self._lives(m.category) or m.category == "fish"
-        if marker in _CONTENT_MARKERS and j - prev.end <= 2:
-            # "a bowl full of apples"; but "a tank full of guppies", "a stand packed with fans" are
-            # there, on what holds them
-            if alive and self._holds_living(prev):
-                self.held_of.append((m.start, prev.start))
-                self.aboard.add(m.start)
-            return not alive
-        if self._listed_content(m.start):
-            return not alive  # "crates overflow with apples, pumpkins and carrots"
-        if w == "of" and prev.end == j and prev.category in _FLAT_HOLDERS and not m.definite:
-            self.held_of.append((m.start, prev.start))  # "a tray of medicine bottles": bottles on the tray
-            return False
-        holder = prev.category in _CONTENT_HEADS or prev.category in ("container", "tool")
-        if w == "of" and prev.end == j and holder and (not m.definite or prev.category in _DEPICTIONS):
-            return True  # "a vase of tulips", "a statue of a horse", "a hologram of the star map"
-        if w == "on" and j - prev.end <= 2 and singular(m.phrase.split()[-1].lower()) in _MOUNTS:
-            return True  # "a windsock on a tall pole", "a flag flutters on a pole": the pole is its part
-        plant = self.catalogue[prev.category].shape in ("potted_plant", "bush", "flower_bed")
-        return w == "in" and j - prev.end <= 2 and m.category in ("pot", "planter", "vase") and plant
-
-    def _each_full(self, m: _Mention, before: list[_Mention], j: int) -> None:
-        """"Three baskets by the stove, each of them full of kittens": living things each of
-        several holders is full of stand on those holders (the latest several named)."""
-        toks = self.toks
-        if j < 1 or (toks[j - 1].text, toks[j].text) not in _CONTENT_MARKERS:
-            return
-        k = j - 2
-        while k >= 0 and toks[k].text in ("of", "them", "these", "those"):
-            k -= 1
-        if k < 0 or toks[k].text != "each" or not (self._lives(m.category) or m.category == "fish"):
-            return
-        several = [h for h in before if h.end <= k and _is_plural(toks, h) and self._holds_living(h)]
-        if several:
-            self.held_of.append((m.start, several[-1].start))
-            self.aboard.add(m.start)
-
-    def _holds_living(self, holder: _Mention) -> bool:
-        """What people or animals it is full of stand on: a carrier ("a stand packed with
-        fans", "a boat full of children") or a thing with a top."""
-        vocabulary, category, name = load_vocabulary(), holder.category, holder.phrase
-        vessel = vocabulary.carries(category, name, _VESSEL_KINDS) or vocabulary.carries(category, name, by_family=False)
-        return self.catalogue[category].support or vessel  # ("a dome full of visitors": inside it)
-
-    def _listed_content(self, start: int) -> bool:
-        """Whether the noun at ``start`` is in a list of bare nouns that a content marker opens
-        ("overflow with apples, pumpkins and carrots": the pumpkins are contents too)."""
-        toks = self.toks
-        k = start - 1
-        while k > 0 and start - k <= 10:
-            w = toks[k].text
-            if (toks[k - 1].text, w) in _CONTENT_MARKERS:
-                return True
-            if not (w in (",", "and", "or") or (w[:1].isalpha() and w not in _STOP)):
-                return False
-            k -= 1
-        return False
 
     def _merge_lists(self, clauses: list[tuple[int, int]]) -> list[tuple[int, int]]:
         """Join a clause that only lists objects to the next one when that one places them
@@ -656,176 +497,6 @@ class _Reader:
                 continue
             return False
         return True
-
-    def _target_at(self, pos: int, ce: int) -> tuple[list[int] | str | None, int]:
-        """The noun phrase (or pronoun) right after a relation phrase, and where it ends."""
-        toks = self.toks
-        self._body_part = self._part = None
-        self._parts_each = 0
-        body = self._body_part_at(pos, ce, self.by_start)
-        if body is not None:
-            return body
-        # "on one of its branches": the part of one owner, as "on its branch"
-        opening = [t.text for t in toks[pos : pos + 2]]
-        lead = pos + 2 if opening in (["one", "of"], ["each", "of"]) else pos
-        if opening == ["each", "of"] and lead + 1 < ce and toks[lead].text in _OWNER_PRONOUNS:
-            # "a crow on each of its outstretched arms": one per part, two unless the text counts them
-            self._parts_each = _NUMBERS.get(toks[lead + 1].text, 2)
-        j = pos
-        while j < ce and j - pos < 6:
-            if j in self.by_start:
-                m = self.by_start[j]
-                self._target_start = m.start
-                owner = _OWNER_PRONOUNS.get(toks[lead].text) if lead < ce else None
-                people = self._people_own() if owner == "them" else None
-                if people is not None:  # "two teenagers sit on their motorbikes": people's things are things,
-                    owner = None  # one each when the text gives no count
-                    if m.group < 0 and not m.counted and _is_plural(toks, m):
-                        m.count = self.groups[people].count
-                if owner and m.group < 0 and not any(g.category == m.category for g in self.groups):
-                    self._part = singular(toks[m.end - 1].text)
-                    return owner, m.end  # "pumpkins on its counter": the stall's own counter is the stall
-                g = self._resolve(m, self.size_of.get(m.start, []))
-                return ([g] if g >= 0 else None), m.end
-            w = toks[j].text
-            if w in ("it", "them", "itself", "themselves", "him", "her", "himself", "herself") and not (
-                w == "her" and j + 1 in self.by_start
-            ):  # "beside her dog": a possessive, the dog is the target
-                return w, j + 1
-            if w in ("each", "one") and j + 1 < ce and toks[j + 1].text in ("other", "another"):
-                return "each other", j + 2
-            if w in ("each", "every") and j + 1 < ce and toks[j + 1].text == "one":
-                return "each one", j + 2  # "a chair in front of each one": one per member
-            of_them = [t.text for t in toks[j + 1 : j + 3]] in (["of", "them"], ["of", "these"], ["of", "those"])
-            if w == "each" and of_them:
-                return "each one", j + 3  # "a clock hangs above each of them": as "each one"
-            if w == "one" and j > pos and toks[j - 1].text not in _NUMBERS and (j + 1 >= ce or toks[j + 1].text != "of"):
-                return "that one", j + 1  # "at the foot of the tallest one": one of a group named before
-            # a noun, not a verb, after a determiner or a count ("its walls", "two rows of")
-            after_determiner = j > pos and (toks[j - 1].text in _DETERMINERS or toks[j - 1].text in _NUMBERS)
-            if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
-                w not in _STOP and w[0].isalnum() and (after_determiner or not _is_verb(w) or self._part_word(w))
-            ):
-                j += 1
-                continue
-            break
-        building = self._building_of_part(pos, j)
-        if building is not None:
-            self._part = next(singular(t.text) for t in toks[pos:j] if singular(t.text) in _BUILDING_PARTS)
-            return [building], j  # "mounted on the roof", "beside its door", "on the shop's roof"
-        owner = _OWNER_PRONOUNS.get(toks[lead].text) if lead < ce else None
-        if owner and j > lead + 1:
-            self._part = singular(toks[j - 1].text)
-            return owner, j  # "above its door": a part of its owner places by the owner itself
-        side = lead + 1 + (lead + 2 < ce and toks[lead + 1].text in ("near", "far", "left", "right", "upper", "lower"))
-        if owner and side < ce and toks[side].text in _OWNER_PARTS:
-            self._part = toks[side].text
-            return owner, side + 1  # "piled against its side", "drink at its near edge": by the owner
-        if lead < ce and toks[lead].text == "the" and j == lead + 2 and singular(toks[lead + 1].text) in load_vocabulary().part_owners:
-            self._part = singular(toks[lead + 1].text)
-            return "the part", j  # "lies in the water": the water of the pond named before
-        return None, pos
-
-    @staticmethod
-    def _part_word(word: str) -> bool:
-        """A part of a body or a thing ("its outstretched arms", "its rusty wheels"): a noun, no verb."""
-        vocabulary = load_vocabulary()
-        return word in vocabulary.body_parts or singular(word) in vocabulary.part_owners
-
-    def _people_own(self) -> int | None:
-        """The group "their" most likely names when it is people or animals: the latest group
-        of several, when living (what such owners have is a thing of its own, not a part like a
-        roof)."""
-        several = [g.index for g in self.groups if g.count > 1]
-        return several[-1] if several and self._living(several[-1]) else None
-
-    def _body_part_at(self, pos: int, ce: int, starts) -> tuple[str, int] | None:
-        """"on her knees", "at his feet", "in their arms": a part of a person places by the
-        person ("her" → the woman); the part's relation (carried on, or near) is kept for
-        :meth:`_relation`."""
-        toks = self.toks
-        k = pos
-        while k < ce and toks[k].text in ("one", "of", "both"):
-            k += 1  # "on one of her knees"
-        if k + 1 >= ce or toks[k].text not in _PERSON_POSSESSIVES:
-            return None
-        j = k + 1
-        while j < ce - 1 and j - k <= 2 and load_vocabulary().is_adjective(toks[j].text):
-            j += 1  # "at her tiny feet"
-        part = toks[j].text if j < ce else ""
-        relation = load_vocabulary().body_parts.get(part)
-        if relation is None or j in starts:  # "on her back porch": a thing named, not a part
-            return None
-        self._body_part = relation
-        return _PERSON_POSSESSIVES[toks[k].text], j + 1
-
-    def _building_of_part(self, pos: int, end: int) -> int | None:
-        """The building (or vehicle) a part of one names when no thing is named ("on the roof",
-        "beside its door", "at the foot of the porch steps"): the one whose name the possessive
-        gives, else the latest one mentioned."""
-        words = [t.text for t in self.toks[pos:end]]
-        if not any(singular(w) in _BUILDING_PARTS for w in words):
-            return None
-        # one named in this sentence first ("a truck is parked behind the tents with two kayaks
-        # on its roof"), then earlier buildings, then earlier vehicles
-        stop = max((k for k in range(pos) if self.toks[k].text in (".", "!", "?")), default=-1)
-        here = {m.group for k, m in self.by_start.items() if stop < k < pos and m.group >= 0}
-        shapes = [self.catalogue[g.category].shape for g in self.groups]
-        latest = range(len(self.groups) - 1, -1, -1)
-        buildings = [
-            *(g for g in latest if g in here and shapes[g] in (*_ENCLOSURES, *_ROOFED_VEHICLES)),
-            *(g for g in latest if shapes[g] in _ENCLOSURES),
-            *(g for g in latest if shapes[g] in _ROOFED_VEHICLES),
-        ]
-        named = [w[:-2] for w in words if w.endswith("'s")]
-        for g in buildings:
-            if not named or singular(named[0]) == singular(self.groups[g].name.split()[-1]):
-                return g
-        return None
-
-    def _pronoun(
-        self, word: str, c: _Clause, srcs: list[int], prefer: list[int], kind: str = "", others: list[int] | None = None
-    ) -> list[int]:
-        """The group "it" / "them" names: the subject before (when this clause has its own) or
-        the latest earlier mention, of the right number; never a source, one of ``others`` or
-        what a source rests on."""
-        plural = word in ("them", "themselves")
-        # "a fish stall and a noodle stall face each other, and a girl stands between them": two
-        # single things of this clause, or of the subject before, are "them"
-        for pair in ([g for g in c.groups if g not in srcs], [g for g in prefer if g not in srcs]):
-            if plural and len(pair) >= 2 and all(self.groups[g].count == 1 for g in pair):
-                return pair[-2:]
-        # never what a source rests on ("a parrot in a cage watches it": not the cage)
-        hosts = {r[2] for r in self.relations if r[0] == "on" and r[1] in srcs}
-        skip = {*srcs, *(others or ()), *hosts}
-        recent = [g for g in [*prefer, *reversed(self.history), *reversed(c.groups)] if g not in skip]
-        if not plural:  # "it" is never a person ("a guard waves at a lorry; behind it, ...")
-            recent = [g for g in recent if not self._human(g)] or recent
-        # a thing on the floor is not placed by a small thing on a table ("a nightstand with a lamp
-        # on it. A rug lies in front of it": the nightstand)
-        # (above a small thing is fine: "a register on the counter, and a hologram floats above it")
-        # (one standing on its own is: "a pirate skull grins over the hole, and a windmill stands in front of it")
-        big = bool(srcs) and not self._small(*srcs) and kind not in ("above", "over")
-        # the people on seats, not the seats ("two helmsmen, each in a seat. Across from them, ...")
-        sat_on = {r[2] for r in self.relations if r[0] == "on" and self._person_at(r[1]) and r[1] in recent}
-        tabletop = {r[1] for r in self.relations if r[0] in ("on", "above")}
-
-        def aside(g: int) -> bool:
-            return big and self._small(g) and g in tabletop
-
-        # what a living thing watches is first a living thing ("a fox sits on the drum, watching them")
-        watcher = kind == "face to" and bool(srcs) and all(self._living(g) for g in srcs)
-        for fits in (
-            (lambda g: not aside(g) and g not in sat_on and (not watcher or self._living(g))),
-            (lambda g: not aside(g) and g not in sat_on),
-            (lambda g: not aside(g)),
-            (lambda g: True),
-        ):  # fmt: skip
-            for g in recent:
-                if (self.groups[g].count > 1) == plural and fits(g):
-                    return [g]
-        # "them" after two single things ("an armchair ... a bookcase ..., between them")
-        return list(dict.fromkeys(recent))[:2] if plural else []
 
     def _clause(self, c: _Clause, cs: int, ce: int, prev_subject: list[int]) -> None:
         toks = self.toks
@@ -964,35 +635,6 @@ class _Reader:
             return False
         return any(_is_verb(w) and w not in _COPULAS for w in gap)
 
-    def _part_owner(self, part: str | None, targets: list[int], candidates: list[int], srcs: list[int]) -> list[int]:
-        """The owner of a part named with "its" ("an owl perched on its back"): what the pronoun
-        resolved to when that can have the part, else the latest candidate that can (the
-        armchair, not the fireplace named after it)."""
-        owners = load_vocabulary().part_owners.get(part or "")
-        if not owners:
-            return targets
-
-        def has(g: int) -> bool:
-            category = self.groups[g].category
-            return category in owners or self.catalogue[category].shape in owners
-
-        if targets and any(has(t) for t in targets):
-            return [t for t in targets if has(t)]  # "a bookcase and a piano ..., on its lid": the piano
-        return next(([g] for g in candidates if g not in srcs and has(g)), targets)
-
-    def _seat(self, c: _Clause, srcs: list[int], prefer: list[int], pos: int, plural: bool = False) -> list[int]:
-        """What a person or an animal who sits, lies or stands "in it" / "on it" is on: the
-        nearest thing named in this sentence or the one before that can hold them, when the
-        clause has a posture verb. A person's is a carrier ("a bookcase stands beside an
-        armchair, and a sailor dozes in it": the armchair); an animal's anything standing on the
-        ground ("a lamp hangs above the table, and a cat naps on it": the table)."""
-        if not srcs or not all(self._living(g) for g in srcs) or not self._verb_before(pos, self._posture):
-            return []
-        holds = self._carrier if all(self._is_person(g) for g in srcs) else self._grounded
-        recent = [*prefer, *reversed(self.history[self._recent_from :]), *reversed(c.groups)]
-        fits = (g for g in recent if (self.groups[g].count > 1) == plural and g not in srcs)
-        return next(([g] for g in fits if holds(g) and not self._living(g)), [])
-
     def _verb_before(self, pos: int, test) -> bool:
         """A verb that passes ``test`` earlier in the same clause part ("dozes in it")."""
         k = pos - 1
@@ -1013,56 +655,6 @@ class _Reader:
         vocabulary = load_vocabulary()
         return word in vocabulary.lookout_verbs or vocabulary.is_posture_verb(word)
 
-    def _one_of(self, c: _Clause, srcs: list[int], prev_subject: list[int]) -> list[int]:
-        """The group "the tallest one", "the nearest one" picks from: the subject of this clause
-        or the one before when it is several ("three stalls ..., and a drone hovers above the
-        nearest one"), else the latest group of several mentioned."""
-        order = [*c.subjects, *prev_subject, *reversed(c.groups), *reversed(self.history)]
-        return next(([g] for g in order if g not in srcs and self.groups[g].count > 1), [])
-
-    def _person(self, c: _Clause, srcs: list[int], word: str) -> list[int]:
-        """Whom "him" / "her" (or "their" before a body part) names: the clause's own living
-        subject, else the latest living thing mentioned before, of a sex the pronoun agrees
-        with ("her" is not the dad) and, for "their", several."""
-        # "..., with his cat at his feet": the with-part's owner before the things it lists
-        order = [*c.subjects, *(c.head or []), *c.main_groups, *reversed(c.groups), *reversed(self.history)]
-        vocabulary = load_vocabulary()
-
-        def fits(g: int) -> bool:
-            group = self.groups[g]
-            return (
-                g not in srcs and self._living(g) and vocabulary.agrees(word, group.name.split()[-1])
-                and (word != "them living" or group.count > 1)
-            )  # fmt: skip
-
-        # "her dachshund naps in a hatbox beside her": a person before an animal the text calls "her"
-        return next(([g] for g in order if fits(g) and self._person_at(g)), []) or next(
-            ([g] for g in order if fits(g)), []
-        )
-
-    def _living(self, g: int) -> bool:
-        """A person or an animal (catalogue dogs and horses too, guessed figures and animals)."""
-        return self._lives(self.groups[g].category)
-
-    def _human(self, g: int) -> bool:
-        """A person, whom "it" never names (an animal, a scarecrow or a mannequin it can)."""
-        return self.groups[g].category == "figure"
-
-    def _lives(self, category: str) -> bool:
-        return category in _LIVING or self.catalogue[category].shape in _LIVING
-
-    def _carrier(self, g: int, kinds: tuple[str, ...] | None = None, by_family: bool = True) -> bool:
-        """Something a person or an animal sits, stands or rides on, or is carried in (``carriers``
-        in ``data/vocabulary.json``), of these kinds (all when None)."""
-        return load_vocabulary().carries(self.groups[g].category, self.groups[g].name, kinds, by_family)
-
-    def _platform(self, g: int, thing: int) -> bool:
-        """A perch one stands things in the middle of (a stand, a stage, a pier): low enough
-        to climb and many times the thing's footprint."""
-        host, size = self.groups[g], self.groups[thing].size
-        low = host.size[2] <= _PLATFORM_HEIGHT
-        return self._carrier(g, ("perches",)) and low and host.size[0] * host.size[1] >= _PLATFORM_AREA * size[0] * size[1]
-
     def _seat_owner(self, c: _Clause, srcs: list[int], m: _Mention) -> int | None:
         """Who sits on a seat named with a person's possessive ("an old woman sits knitting,
         her cat beside her chair": her chair is the one she sits on), when the sentence
@@ -1081,42 +673,6 @@ class _Reader:
                 return owner[0]
             k -= 1
         return None
-
-    def _ridden(self, g: int, host: int) -> int:
-        """What a rider put on something else is on: "a kid on a bike waits at the top of the
-        ramp" puts the bike on the ramp, the kid stays on the bike."""
-        rides = (r[2] for r in self.relations if r[0] == "on" and r[1] == g and r[2] != host)
-        return next((v for v in rides if self._living(g) and self._carrier(v, ("vehicles", "mounts"))), g)
-
-    def _bare(self, m: _Mention) -> bool:
-        """A singular noun with no determiner, count or describing word ("on horseback")."""
-        return not (m.definite or m.counted or m.adjectives or _is_plural(self.toks, m))
-
-    def _grounded(self, g: int) -> bool:
-        """Stands on the ground (no tabletop thing, nothing hung)."""
-        return self.groups[g].rests == "ground"
-
-    def _is_person(self, g: int) -> bool:
-        """A person, not an animal: what a seat, not a desk, carries."""
-        return self.catalogue[self.groups[g].category].shape == "figure"
-
-    def _animate(self, *groups: int) -> bool:
-        """People and animals: what comes "with" right after their target belongs to the target."""
-        return bool(groups) and all(self.groups[g].category in ("figure", "animal", "bird") for g in groups)
-
-    def _person_at(self, g: int) -> bool:
-        """A person (a figure of the catalogue or a guessed one), who can have things in hand."""
-        return self.catalogue[self.groups[g].category].shape == "figure"
-
-    def _handheld(self, g: int) -> bool:
-        """A thing a person carries with them: no living thing, and one that stands on tables or
-        is small enough to hold ("a pickaxe", "a clipboard"), not "a man with a ladder"."""
-        group = self.groups[g]
-        return not self._living(g) and (group.rests == "surface" or max(group.size) <= _HANDHELD_SIZE)
-
-    def _small(self, *groups: int) -> bool:
-        """All of these stand on surfaces (tabletop things)."""
-        return all(self.groups[g].rests == "surface" for g in groups)
 
     def _close_with(self, c: _Clause) -> None:
         """"A desk with a lamp", "a cart loaded with barrels": small things with no place of
@@ -1407,46 +963,6 @@ class _Reader:
         c.expect_new = True
         return end
 
-    def _owners_side(self, pos: int, ce: int) -> tuple[str, list[int], int] | None:
-        """"(on) the artist's right": right of the latest thing of that name, and where it ends."""
-        toks = self.toks
-        k = pos + (pos < ce and toks[pos].text == "the")
-        if k + 1 >= ce or not toks[k].text.endswith("'s") or toks[k + 1].text not in ("left", "right"):
-            return None
-        head = singular(toks[k].text[:-2])
-        owner = next((g.index for g in reversed(self.groups) if singular(g.name.split()[-1]) == head), None)
-        return None if owner is None else (f"{toks[k + 1].text} of", [owner], k + 2)
-
-    def _ordinal_pair(self, pos: int, ce: int) -> tuple[int, tuple[int, int], int] | None:
-        """"(between) the first and second ramp", "the first and the last car": the group the noun
-        names back, the two ordinals, and where the noun ends."""
-        toks = self.toks
-        k = pos + (pos < ce and toks[pos].text == "the")
-        if k + 2 >= ce or toks[k].text not in _ORDINALS or toks[k + 1].text != "and":
-            return None
-        j = k + 2 + (toks[k + 2].text == "the")
-        if j >= ce or toks[j].text not in _ORDINALS:
-            return None
-        m = next((self.by_start[i] for i in range(j + 1, min(ce, j + 4)) if i in self.by_start), None)
-        if m is None:
-            return None
-        m.definite = True  # "the first and second car": the cars named before
-        group = self._resolve(m, [])
-        if group < 0:
-            return None
-        return group, (_ORDINALS[toks[k].text], _ORDINALS[toks[j].text]), m.end
-
-    def _peer(self, kind: str, srcs: list[int], targets: list[int], c: _Clause) -> list[int]:
-        """A small thing beside "it", where "it" came out as a host with a small thing just
-        named on it, stands by that thing ("a computer on the counter, with a radio beside it")."""
-        beside = kind in ("side of", "near", "left of", "right of")
-        if not beside or not srcs or len(targets) != 1 or not self._small(*srcs):
-            return targets
-        recent = [*self.history[-3:], *c.groups]  # this clause, or the one just before the "with"
-        on_it = [r[1] for r in self.relations if r[0] == "on" and r[2] == targets[0] and r[1] in recent]
-        peers = [g for g in on_it if g not in srcs and self._small(g)]
-        return peers[-1:] or targets
-
     def _rider_placed(self, c: _Clause, rider: list[int], kind: str) -> bool:
         """Whether a phrase after "a person sits on X" places the person, not X: where the person
         works or faces ("sits on a stool at a workbench", "on a bathtub across from it"), and
@@ -1525,21 +1041,6 @@ class _Reader:
         while k >= 0 and pos - k <= 8 and self.toks[k].text not in (",", ".", ";", "and", "while"):
             k -= 1
         return any(self.toks[i].text in _CEILING_WORDS for i in range(k + 1, min(pos + 4, len(self.toks))))
-
-    def _overhead(self, g: int) -> bool:
-        """Whether a thing hangs or is fixed to a wall, so what stands under it is below it: it
-        hangs, the text hangs it ("a ring light that hangs from the ceiling") or puts it on a
-        wall, or it is a board or a frame, too thin to stand on its own."""
-        group = self.groups[g]
-        if group.rests == "hanging" or (group.size[1] <= _THIN and group.size[2] >= 2 * _THIN):
-            return True
-        for k, m in self.by_start.items():
-            if m.group != g:
-                continue
-            after = [t.text for t in self.toks[m.end : m.end + 3]]
-            if k in self.on_wall or any(w in _HANG_VERBS for w in after[after[:1] in (["that"], ["which"]) :][:1]):
-                return True
-        return False
 
     def _relate(self, kind: str, srcs: list[int], target: int, hang: bool = False, instance=None) -> None:
         for s in srcs:

@@ -1,0 +1,140 @@
+"""What is content rather than a thing of the layout: what fills a holder ("a vase of
+tulips"), what a building holds, what a stall sells.
+
+A part of the clause reader (:class:`~scenewright.analysis.parser.reader._Reader`), kept apart
+so each concern reads on its own; its methods use the reader's state.
+"""
+
+from __future__ import annotations
+
+from scenewright.analysis.parser.grammar import (
+    _DEPICTIONS,
+    _ENCLOSURES,
+    _FLAT_HOLDERS,
+    _LOADS,
+    _LOAD_HOSTS,
+    _LOAD_SIZE,
+    _MOUNTS,
+    _VESSEL_KINDS,
+)
+from scenewright.analysis.parser.nouns import _Mention, _is_plural
+from scenewright.analysis.parser.vocabulary import load_vocabulary
+from scenewright.analysis.parser.words import (
+    _CONTENT_HEADS,
+    _CONTENT_MARKERS,
+    _DETERMINERS,
+    _HOLD,
+    _NUMBERS,
+    _STOP,
+    _WARES_VERBS,
+)
+from scenewright.core.catalogue import singular
+
+
+class _Contents:
+    def _mark_contents(self, mentions: list[_Mention]) -> None:
+        """Nouns after "full of", or after "of" following a container or a depiction ("a vase of
+        tulips", "a statue of a horse"), are contents, not objects of the scene."""
+        toks = self.toks
+        chain = False
+        for k, m in enumerate(mentions):
+            prev = mentions[k - 1] if k else None
+            j = m.start - 1
+            while j >= 0 and (toks[j].text in _DETERMINERS or toks[j].text in _NUMBERS or (
+                toks[j].text not in _STOP and toks[j].text[0].isalnum())) and m.start - j < 5:  # fmt: skip
+                j -= 1
+            if (prev is not None and self._held_inside(m, prev)) or self._wares(m):
+                m.content = chain = True
+                continue
+            if j < 1 or prev is None:
+                chain = False
+                continue
+            gap = [t.text for t in toks[prev.end : j + 1]]
+            self._each_full(m, mentions[:k], j)
+            content = self._is_content(m, prev, j) or (
+                chain and prev.content and not (m.counted or m.definite) and all(g in ("and", ",", "or") for g in gap)
+            )
+            m.content = content
+            chain = content
+
+    def _wares(self, m: _Mention) -> bool:
+        """"A stall selling pies", "a cart serving hot drinks": a bare plural after a verb of
+        trade is what is sold, not things of the layout ("a vendor sells two balloons" are there)."""
+        head = m.phrase.split()[-1].lower()
+        if m.counted or singular(head) == head:
+            return False
+        k = m.start - 1  # back over describing words and a list of wares before ("pies, cakes and jams")
+        while k >= 0 and m.start - k <= 8 and self.toks[k].text not in _WARES_VERBS and (
+            self.toks[k].text in (",", "and", "or") or self.toks[k].text not in _STOP and self.toks[k].text[:1].isalpha()
+        ):
+            k -= 1
+        return k >= 0 and self.toks[k].text in _WARES_VERBS
+
+    def _held_inside(self, m: _Mention, prev: _Mention) -> bool:
+        """"A greenhouse holds tomato plants": what a building or a tent holds is inside it, its
+        contents rather than things of the layout."""
+        gap = [t.text for t in self.toks[prev.end : m.start]]
+        return bool(gap) and gap[0] in _HOLD and len(gap) <= 4 and self.catalogue[prev.category].shape in _ENCLOSURES
+
+    def _is_content(self, m: _Mention, prev: _Mention, j: int) -> bool:
+        w = self.toks[j].text
+        marker = (self.toks[j - 1].text, w)
+        if marker in _LOADS and self.catalogue[prev.category].shape in _LOAD_HOSTS and max(self._size(m)) >= _LOAD_SIZE:
+            return False  # "a luggage cart piled with suitcases": they stand on the cart
+        alive = self._lives(m.category) or m.category == "fish"
+        if marker in _CONTENT_MARKERS and j - prev.end <= 2:
+            # "a bowl full of apples"; but "a tank full of guppies", "a stand packed with fans" are
+            # there, on what holds them
+            if alive and self._holds_living(prev):
+                self.held_of.append((m.start, prev.start))
+                self.aboard.add(m.start)
+            return not alive
+        if self._listed_content(m.start):
+            return not alive  # "crates overflow with apples, pumpkins and carrots"
+        if w == "of" and prev.end == j and prev.category in _FLAT_HOLDERS and not m.definite:
+            self.held_of.append((m.start, prev.start))  # "a tray of medicine bottles": bottles on the tray
+            return False
+        holder = prev.category in _CONTENT_HEADS or prev.category in ("container", "tool")
+        if w == "of" and prev.end == j and holder and (not m.definite or prev.category in _DEPICTIONS):
+            return True  # "a vase of tulips", "a statue of a horse", "a hologram of the star map"
+        if w == "on" and j - prev.end <= 2 and singular(m.phrase.split()[-1].lower()) in _MOUNTS:
+            return True  # "a windsock on a tall pole", "a flag flutters on a pole": the pole is its part
+        plant = self.catalogue[prev.category].shape in ("potted_plant", "bush", "flower_bed")
+        return w == "in" and j - prev.end <= 2 and m.category in ("pot", "planter", "vase") and plant
+
+    def _each_full(self, m: _Mention, before: list[_Mention], j: int) -> None:
+        """"Three baskets by the stove, each of them full of kittens": living things each of
+        several holders is full of stand on those holders (the latest several named)."""
+        toks = self.toks
+        if j < 1 or (toks[j - 1].text, toks[j].text) not in _CONTENT_MARKERS:
+            return
+        k = j - 2
+        while k >= 0 and toks[k].text in ("of", "them", "these", "those"):
+            k -= 1
+        if k < 0 or toks[k].text != "each" or not (self._lives(m.category) or m.category == "fish"):
+            return
+        several = [h for h in before if h.end <= k and _is_plural(toks, h) and self._holds_living(h)]
+        if several:
+            self.held_of.append((m.start, several[-1].start))
+            self.aboard.add(m.start)
+
+    def _holds_living(self, holder: _Mention) -> bool:
+        """What people or animals it is full of stand on: a carrier ("a stand packed with
+        fans", "a boat full of children") or a thing with a top."""
+        vocabulary, category, name = load_vocabulary(), holder.category, holder.phrase
+        vessel = vocabulary.carries(category, name, _VESSEL_KINDS) or vocabulary.carries(category, name, by_family=False)
+        return self.catalogue[category].support or vessel  # ("a dome full of visitors": inside it)
+
+    def _listed_content(self, start: int) -> bool:
+        """Whether the noun at ``start`` is in a list of bare nouns that a content marker opens
+        ("overflow with apples, pumpkins and carrots": the pumpkins are contents too)."""
+        toks = self.toks
+        k = start - 1
+        while k > 0 and start - k <= 10:
+            w = toks[k].text
+            if (toks[k - 1].text, w) in _CONTENT_MARKERS:
+                return True
+            if not (w in (",", "and", "or") or (w[:1].isalpha() and w not in _STOP)):
+                return False
+            k -= 1
+        return False

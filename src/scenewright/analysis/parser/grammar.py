@@ -1,0 +1,82 @@
+"""The tables the reader's parts share: phrase kinds, shapes and roles its rules ask about.
+
+Closed classes of English words live in :mod:`words`; these say what the reader does with a
+phrase kind or a kind of thing.
+"""
+
+from __future__ import annotations
+
+from scenewright.analysis.parser.words import _OWNER_PRONOUNS
+
+#: Phrases that place a group in a formation rather than by a target.
+_FORMATIONS = ("row", "rows", "stack", "circle")
+#: Quantity nouns that set their things out in a formation ("a row of stalls", "two rows of chairs").
+_FORMATION_NOUNS = {"row": "row", "line": "row", "rows": "rows", "lines": "rows", "stack": "stack",
+                    "ring": "circle", "circle": "circle"}  # fmt: skip
+#: Phrase kinds that, with no object after them, name a part of the room ("along the back wall").
+_PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None, "foot of": None, "at": None}
+#: Phrase kinds that place a thing on the ground beside another (not on it, not above it).
+_GROUND_KINDS = ("left of", "right of", "in front of", "behind", "side of", "near", "far", "left", "right")
+#: Phrase kinds read as one of the scene's relations whatever they join.
+_KIND_RELATION = {"left": "left of", "right": "right of", "flank elliptic": "flank", "hanging from": "above",
+                  "leaning on": "side of", "along": "side of"}  # fmt: skip
+#: Seat shapes: what is "at" a desk or a table faces it from the front.
+_SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
+
+#: After these, a phrase right after the target places the target: "a lamp on a table left of the
+#: sofa", "astronauts beside a lab bench to the right of the console", "sniffs at a cooler near the
+#: truck", "dozes in an armchair by the fire" (the armchair is by the fire), "a chandelier hangs above
+#: the table in front of the fireplace" (the table is).
+_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in", "from", "above", "over")
+#: Sides of a thing named by a possessive ("against its side"): the owner places.
+_OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
+#: "Piled with" or "covered in" on a cart or a table is a load of things standing on it when they are
+#: this big or bigger ("a cart piled with suitcases", "a desk covered in monitors"); smaller ones
+#: ("piled with apples", "covered in crumbs") stay its contents.
+_LOADS = {("piled", "with"), ("stacked", "with"), ("heaped", "with"), ("covered", "in"), ("covered", "with")}
+_LOAD_HOSTS = ("cart", "truck", "table", "round_table", "desk", "counter", "bookshelf", "shop_shelf")
+_LOAD_SIZE = 0.3
+#: Things that show what follows their "of", even a definite one ("a statue of the king").
+_DEPICTIONS = ("statue", "hologram", "picture_frame", "sign", "billboard")
+#: Flat holders whose "of" things stand on them as objects ("a tray of bottles", "a pallet of tires").
+_FLAT_HOLDERS = ("plate", "pallet")
+#: Shapes that hold what they hold inside, out of the layout ("a greenhouse holds tomato plants").
+_ENCLOSURES = ("house", "building", "tent", "kiosk")
+#: Where a hung thing hangs from indoors.
+_CEILING_WORDS = ("ceiling", "ceilings", "beam", "beams", "rafter", "rafters")
+#: Vehicles with a roof and doors of their own.
+_ROOFED_VEHICLES = ("car", "truck", "bus", "vehicle")
+#: Parts of a building that place a thing by the building itself when nothing else is named.
+_BUILDING_PARTS = ("roof", "rooftop", "porch", "step", "doorstep", "chimney", "eave", "gable", "veranda", "facade", "door", "doorway")
+#: Carriers anything smaller is on when it is *in* them ("in the tub", "in the canoe", "a broom in the
+#: bucket"); a person or an animal is on every kind of carrier it is in ("fans in the stand"), a
+#: guessed structure only when its name is listed (one in a dome is inside it).
+_VESSEL_KINDS = ("seats", "vehicles", "containers")
+#: What a thing is mounted on as a part of it ("lanterns on tall poles").
+_MOUNTS = ("pole", "stick", "mast", "stake", "spike")
+#: Verbs that join a subject to what it is, not to a thing it acts on.
+_COPULAS = ("is", "are", "was", "were", "be", "has", "have", "had", "seems", "looks")
+#: A perch no taller than this, and this many times a thing's footprint, is a platform whose middle
+#: the thing stands on ("a throne in the centre of the stage").
+_PLATFORM_HEIGHT, _PLATFORM_AREA = 3.5, 4.0
+#: Pronouns that name a person or an animal.
+_PERSONAL = ("him", "her", "himself", "herself")
+#: Possessives of people and the pronoun that names their owner ("at his feet" → him).
+_PERSON_POSSESSIVES = {"his": "him", "her": "her", "their": "them living", "my": "him", "your": "him"}
+#: The longest side (m) of a thing a person has in hand when the text says "with" ("a wheel gun").
+_HANDHELD_SIZE = 1.0
+#: Depth (m) at most of a board or a frame that hangs or leans rather than stands.
+_THIN = 0.12
+#: Words that open a relative clause about the noun before them.
+_RELATIVES = ("that", "which", "who")
+#: Past participles that do not end in -ed ("a tarp strung between two trees").
+_PARTICIPLES = ("strung", "hung", "slung", "built", "set", "laid", "held", "spread", "drawn", "stuck", "bent", "kept")
+#: Phrase kinds that name a side of what their possessive names ("to her left") and its relation.
+_OWN_SIDES = {"its left": "left of", "its right": "right of", "its foot": "foot of"}
+#: The pronoun a possessive in such a phrase stands for.
+_POSSESSED = {**_OWNER_PRONOUNS, **_PERSON_POSSESSIVES}
+#: Categories and shapes of living things ("him", "her" name one of them).
+_LIVING = frozenset({"figure", "animal", "bird", "robot"})
+
+#: No phrase makes more objects than this ("a million chairs"): the object limit then refuses the text.
+MAX_COUNT = 10_000

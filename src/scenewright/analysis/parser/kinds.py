@@ -1,0 +1,95 @@
+"""What kind of thing a group is, as the rules ask it: living, a person, small enough to
+hold, a carrier, a platform, hung overhead.
+
+A part of the clause reader (:class:`~scenewright.analysis.parser.reader._Reader`), kept apart
+so each concern reads on its own; its methods use the reader's state.
+"""
+
+from __future__ import annotations
+
+from scenewright.analysis.parser.grammar import (
+    _HANDHELD_SIZE,
+    _LIVING,
+    _PLATFORM_AREA,
+    _PLATFORM_HEIGHT,
+    _THIN,
+)
+from scenewright.analysis.parser.nouns import _Mention, _is_plural
+from scenewright.analysis.parser.vocabulary import load_vocabulary
+from scenewright.analysis.parser.words import _HANG_VERBS
+
+
+class _Kinds:
+    def _living(self, g: int) -> bool:
+        """A person or an animal (catalogue dogs and horses too, guessed figures and animals)."""
+        return self._lives(self.groups[g].category)
+
+    def _human(self, g: int) -> bool:
+        """A person, whom "it" never names (an animal, a scarecrow or a mannequin it can)."""
+        return self.groups[g].category == "figure"
+
+    def _lives(self, category: str) -> bool:
+        return category in _LIVING or self.catalogue[category].shape in _LIVING
+
+    def _carrier(self, g: int, kinds: tuple[str, ...] | None = None, by_family: bool = True) -> bool:
+        """Something a person or an animal sits, stands or rides on, or is carried in (``carriers``
+        in ``data/vocabulary.json``), of these kinds (all when None)."""
+        return load_vocabulary().carries(self.groups[g].category, self.groups[g].name, kinds, by_family)
+
+    def _platform(self, g: int, thing: int) -> bool:
+        """A perch one stands things in the middle of (a stand, a stage, a pier): low enough
+        to climb and many times the thing's footprint."""
+        host, size = self.groups[g], self.groups[thing].size
+        low = host.size[2] <= _PLATFORM_HEIGHT
+        return self._carrier(g, ("perches",)) and low and host.size[0] * host.size[1] >= _PLATFORM_AREA * size[0] * size[1]
+
+    def _grounded(self, g: int) -> bool:
+        """Stands on the ground (no tabletop thing, nothing hung)."""
+        return self.groups[g].rests == "ground"
+
+    def _is_person(self, g: int) -> bool:
+        """A person, not an animal: what a seat, not a desk, carries."""
+        return self.catalogue[self.groups[g].category].shape == "figure"
+
+    def _animate(self, *groups: int) -> bool:
+        """People and animals: what comes "with" right after their target belongs to the target."""
+        return bool(groups) and all(self.groups[g].category in ("figure", "animal", "bird") for g in groups)
+
+    def _person_at(self, g: int) -> bool:
+        """A person (a figure of the catalogue or a guessed one), who can have things in hand."""
+        return self.catalogue[self.groups[g].category].shape == "figure"
+
+    def _handheld(self, g: int) -> bool:
+        """A thing a person carries with them: no living thing, and one that stands on tables or
+        is small enough to hold ("a pickaxe", "a clipboard"), not "a man with a ladder"."""
+        group = self.groups[g]
+        return not self._living(g) and (group.rests == "surface" or max(group.size) <= _HANDHELD_SIZE)
+
+    def _small(self, *groups: int) -> bool:
+        """All of these stand on surfaces (tabletop things)."""
+        return all(self.groups[g].rests == "surface" for g in groups)
+
+    def _bare(self, m: _Mention) -> bool:
+        """A singular noun with no determiner, count or describing word ("on horseback")."""
+        return not (m.definite or m.counted or m.adjectives or _is_plural(self.toks, m))
+
+    def _ridden(self, g: int, host: int) -> int:
+        """What a rider put on something else is on: "a kid on a bike waits at the top of the
+        ramp" puts the bike on the ramp, the kid stays on the bike."""
+        rides = (r[2] for r in self.relations if r[0] == "on" and r[1] == g and r[2] != host)
+        return next((v for v in rides if self._living(g) and self._carrier(v, ("vehicles", "mounts"))), g)
+
+    def _overhead(self, g: int) -> bool:
+        """Whether a thing hangs or is fixed to a wall, so what stands under it is below it: it
+        hangs, the text hangs it ("a ring light that hangs from the ceiling") or puts it on a
+        wall, or it is a board or a frame, too thin to stand on its own."""
+        group = self.groups[g]
+        if group.rests == "hanging" or (group.size[1] <= _THIN and group.size[2] >= 2 * _THIN):
+            return True
+        for k, m in self.by_start.items():
+            if m.group != g:
+                continue
+            after = [t.text for t in self.toks[m.end : m.end + 3]]
+            if k in self.on_wall or any(w in _HANG_VERBS for w in after[after[:1] in (["that"], ["which"]) :][:1]):
+                return True
+        return False

@@ -1,0 +1,300 @@
+"""Whom and what a reference names: "it", "them", "him", "her", "one of them", a
+possessive's part ("its back", "at his feet"), an ordinal pair ("the first and second car").
+
+A part of the clause reader (:class:`~scenewright.analysis.parser.reader._Reader`), kept apart
+so each concern reads on its own; its methods use the reader's state.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from scenewright.analysis.parser.grammar import (
+    _BUILDING_PARTS,
+    _ENCLOSURES,
+    _OWNER_PARTS,
+    _PERSON_POSSESSIVES,
+    _ROOFED_VEHICLES,
+)
+from scenewright.analysis.parser.nouns import _is_plural, _position_adjective
+from scenewright.analysis.parser.vocabulary import load_vocabulary
+from scenewright.analysis.parser.words import (
+    _DETERMINERS,
+    _NUMBERS,
+    _ORDINALS,
+    _OWNER_PRONOUNS,
+    _STOP,
+    _is_verb,
+)
+from scenewright.core.catalogue import singular
+
+if TYPE_CHECKING:
+    from scenewright.analysis.parser.reader import _Clause
+
+
+class _References:
+    def _target_at(self, pos: int, ce: int) -> tuple[list[int] | str | None, int]:
+        """The noun phrase (or pronoun) right after a relation phrase, and where it ends."""
+        toks = self.toks
+        self._body_part = self._part = None
+        self._parts_each = 0
+        body = self._body_part_at(pos, ce, self.by_start)
+        if body is not None:
+            return body
+        # "on one of its branches": the part of one owner, as "on its branch"
+        opening = [t.text for t in toks[pos : pos + 2]]
+        lead = pos + 2 if opening in (["one", "of"], ["each", "of"]) else pos
+        if opening == ["each", "of"] and lead + 1 < ce and toks[lead].text in _OWNER_PRONOUNS:
+            # "a crow on each of its outstretched arms": one per part, two unless the text counts them
+            self._parts_each = _NUMBERS.get(toks[lead + 1].text, 2)
+        j = pos
+        while j < ce and j - pos < 6:
+            if j in self.by_start:
+                m = self.by_start[j]
+                self._target_start = m.start
+                owner = _OWNER_PRONOUNS.get(toks[lead].text) if lead < ce else None
+                people = self._people_own() if owner == "them" else None
+                if people is not None:  # "two teenagers sit on their motorbikes": people's things are things,
+                    owner = None  # one each when the text gives no count
+                    if m.group < 0 and not m.counted and _is_plural(toks, m):
+                        m.count = self.groups[people].count
+                if owner and m.group < 0 and not any(g.category == m.category for g in self.groups):
+                    self._part = singular(toks[m.end - 1].text)
+                    return owner, m.end  # "pumpkins on its counter": the stall's own counter is the stall
+                g = self._resolve(m, self.size_of.get(m.start, []))
+                return ([g] if g >= 0 else None), m.end
+            w = toks[j].text
+            if w in ("it", "them", "itself", "themselves", "him", "her", "himself", "herself") and not (
+                w == "her" and j + 1 in self.by_start
+            ):  # "beside her dog": a possessive, the dog is the target
+                return w, j + 1
+            if w in ("each", "one") and j + 1 < ce and toks[j + 1].text in ("other", "another"):
+                return "each other", j + 2
+            if w in ("each", "every") and j + 1 < ce and toks[j + 1].text == "one":
+                return "each one", j + 2  # "a chair in front of each one": one per member
+            of_them = [t.text for t in toks[j + 1 : j + 3]] in (["of", "them"], ["of", "these"], ["of", "those"])
+            if w == "each" and of_them:
+                return "each one", j + 3  # "a clock hangs above each of them": as "each one"
+            if w == "one" and j > pos and toks[j - 1].text not in _NUMBERS and (j + 1 >= ce or toks[j + 1].text != "of"):
+                return "that one", j + 1  # "at the foot of the tallest one": one of a group named before
+            # a noun, not a verb, after a determiner or a count ("its walls", "two rows of")
+            after_determiner = j > pos and (toks[j - 1].text in _DETERMINERS or toks[j - 1].text in _NUMBERS)
+            if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
+                w not in _STOP and w[0].isalnum() and (after_determiner or not _is_verb(w) or self._part_word(w))
+            ):
+                j += 1
+                continue
+            break
+        building = self._building_of_part(pos, j)
+        if building is not None:
+            self._part = next(singular(t.text) for t in toks[pos:j] if singular(t.text) in _BUILDING_PARTS)
+            return [building], j  # "mounted on the roof", "beside its door", "on the shop's roof"
+        owner = _OWNER_PRONOUNS.get(toks[lead].text) if lead < ce else None
+        if owner and j > lead + 1:
+            self._part = singular(toks[j - 1].text)
+            return owner, j  # "above its door": a part of its owner places by the owner itself
+        side = lead + 1 + (lead + 2 < ce and toks[lead + 1].text in ("near", "far", "left", "right", "upper", "lower"))
+        if owner and side < ce and toks[side].text in _OWNER_PARTS:
+            self._part = toks[side].text
+            return owner, side + 1  # "piled against its side", "drink at its near edge": by the owner
+        if lead < ce and toks[lead].text == "the" and j == lead + 2 and singular(toks[lead + 1].text) in load_vocabulary().part_owners:
+            self._part = singular(toks[lead + 1].text)
+            return "the part", j  # "lies in the water": the water of the pond named before
+        return None, pos
+
+    @staticmethod
+    def _part_word(word: str) -> bool:
+        """A part of a body or a thing ("its outstretched arms", "its rusty wheels"): a noun, no verb."""
+        vocabulary = load_vocabulary()
+        return word in vocabulary.body_parts or singular(word) in vocabulary.part_owners
+
+    def _people_own(self) -> int | None:
+        """The group "their" most likely names when it is people or animals: the latest group
+        of several, when living (what such owners have is a thing of its own, not a part like a
+        roof)."""
+        several = [g.index for g in self.groups if g.count > 1]
+        return several[-1] if several and self._living(several[-1]) else None
+
+    def _body_part_at(self, pos: int, ce: int, starts) -> tuple[str, int] | None:
+        """"on her knees", "at his feet", "in their arms": a part of a person places by the
+        person ("her" → the woman); the part's relation (carried on, or near) is kept for
+        :meth:`_relation`."""
+        toks = self.toks
+        k = pos
+        while k < ce and toks[k].text in ("one", "of", "both"):
+            k += 1  # "on one of her knees"
+        if k + 1 >= ce or toks[k].text not in _PERSON_POSSESSIVES:
+            return None
+        j = k + 1
+        while j < ce - 1 and j - k <= 2 and load_vocabulary().is_adjective(toks[j].text):
+            j += 1  # "at her tiny feet"
+        part = toks[j].text if j < ce else ""
+        relation = load_vocabulary().body_parts.get(part)
+        if relation is None or j in starts:  # "on her back porch": a thing named, not a part
+            return None
+        self._body_part = relation
+        return _PERSON_POSSESSIVES[toks[k].text], j + 1
+
+    def _building_of_part(self, pos: int, end: int) -> int | None:
+        """The building (or vehicle) a part of one names when no thing is named ("on the roof",
+        "beside its door", "at the foot of the porch steps"): the one whose name the possessive
+        gives, else the latest one mentioned."""
+        words = [t.text for t in self.toks[pos:end]]
+        if not any(singular(w) in _BUILDING_PARTS for w in words):
+            return None
+        # one named in this sentence first ("a truck is parked behind the tents with two kayaks
+        # on its roof"), then earlier buildings, then earlier vehicles
+        stop = max((k for k in range(pos) if self.toks[k].text in (".", "!", "?")), default=-1)
+        here = {m.group for k, m in self.by_start.items() if stop < k < pos and m.group >= 0}
+        shapes = [self.catalogue[g.category].shape for g in self.groups]
+        latest = range(len(self.groups) - 1, -1, -1)
+        buildings = [
+            *(g for g in latest if g in here and shapes[g] in (*_ENCLOSURES, *_ROOFED_VEHICLES)),
+            *(g for g in latest if shapes[g] in _ENCLOSURES),
+            *(g for g in latest if shapes[g] in _ROOFED_VEHICLES),
+        ]
+        named = [w[:-2] for w in words if w.endswith("'s")]
+        for g in buildings:
+            if not named or singular(named[0]) == singular(self.groups[g].name.split()[-1]):
+                return g
+        return None
+
+    def _pronoun(
+        self, word: str, c: _Clause, srcs: list[int], prefer: list[int], kind: str = "", others: list[int] | None = None
+    ) -> list[int]:
+        """The group "it" / "them" names: the subject before (when this clause has its own) or
+        the latest earlier mention, of the right number; never a source, one of ``others`` or
+        what a source rests on."""
+        plural = word in ("them", "themselves")
+        # "a fish stall and a noodle stall face each other, and a girl stands between them": two
+        # single things of this clause, or of the subject before, are "them"
+        for pair in ([g for g in c.groups if g not in srcs], [g for g in prefer if g not in srcs]):
+            if plural and len(pair) >= 2 and all(self.groups[g].count == 1 for g in pair):
+                return pair[-2:]
+        # never what a source rests on ("a parrot in a cage watches it": not the cage)
+        hosts = {r[2] for r in self.relations if r[0] == "on" and r[1] in srcs}
+        skip = {*srcs, *(others or ()), *hosts}
+        recent = [g for g in [*prefer, *reversed(self.history), *reversed(c.groups)] if g not in skip]
+        if not plural:  # "it" is never a person ("a guard waves at a lorry; behind it, ...")
+            recent = [g for g in recent if not self._human(g)] or recent
+        # a thing on the floor is not placed by a small thing on a table ("a nightstand with a lamp
+        # on it. A rug lies in front of it": the nightstand)
+        # (above a small thing is fine: "a register on the counter, and a hologram floats above it")
+        # (one standing on its own is: "a pirate skull grins over the hole, and a windmill stands in front of it")
+        big = bool(srcs) and not self._small(*srcs) and kind not in ("above", "over")
+        # the people on seats, not the seats ("two helmsmen, each in a seat. Across from them, ...")
+        sat_on = {r[2] for r in self.relations if r[0] == "on" and self._person_at(r[1]) and r[1] in recent}
+        tabletop = {r[1] for r in self.relations if r[0] in ("on", "above")}
+
+        def aside(g: int) -> bool:
+            return big and self._small(g) and g in tabletop
+
+        # what a living thing watches is first a living thing ("a fox sits on the drum, watching them")
+        watcher = kind == "face to" and bool(srcs) and all(self._living(g) for g in srcs)
+        for fits in (
+            (lambda g: not aside(g) and g not in sat_on and (not watcher or self._living(g))),
+            (lambda g: not aside(g) and g not in sat_on),
+            (lambda g: not aside(g)),
+            (lambda g: True),
+        ):  # fmt: skip
+            for g in recent:
+                if (self.groups[g].count > 1) == plural and fits(g):
+                    return [g]
+        # "them" after two single things ("an armchair ... a bookcase ..., between them")
+        return list(dict.fromkeys(recent))[:2] if plural else []
+
+    def _part_owner(self, part: str | None, targets: list[int], candidates: list[int], srcs: list[int]) -> list[int]:
+        """The owner of a part named with "its" ("an owl perched on its back"): what the pronoun
+        resolved to when that can have the part, else the latest candidate that can (the
+        armchair, not the fireplace named after it)."""
+        owners = load_vocabulary().part_owners.get(part or "")
+        if not owners:
+            return targets
+
+        def has(g: int) -> bool:
+            category = self.groups[g].category
+            return category in owners or self.catalogue[category].shape in owners
+
+        if targets and any(has(t) for t in targets):
+            return [t for t in targets if has(t)]  # "a bookcase and a piano ..., on its lid": the piano
+        return next(([g] for g in candidates if g not in srcs and has(g)), targets)
+
+    def _seat(self, c: _Clause, srcs: list[int], prefer: list[int], pos: int, plural: bool = False) -> list[int]:
+        """What a person or an animal who sits, lies or stands "in it" / "on it" is on: the
+        nearest thing named in this sentence or the one before that can hold them, when the
+        clause has a posture verb. A person's is a carrier ("a bookcase stands beside an
+        armchair, and a sailor dozes in it": the armchair); an animal's anything standing on the
+        ground ("a lamp hangs above the table, and a cat naps on it": the table)."""
+        if not srcs or not all(self._living(g) for g in srcs) or not self._verb_before(pos, self._posture):
+            return []
+        holds = self._carrier if all(self._is_person(g) for g in srcs) else self._grounded
+        recent = [*prefer, *reversed(self.history[self._recent_from :]), *reversed(c.groups)]
+        fits = (g for g in recent if (self.groups[g].count > 1) == plural and g not in srcs)
+        return next(([g] for g in fits if holds(g) and not self._living(g)), [])
+
+    def _one_of(self, c: _Clause, srcs: list[int], prev_subject: list[int]) -> list[int]:
+        """The group "the tallest one", "the nearest one" picks from: the subject of this clause
+        or the one before when it is several ("three stalls ..., and a drone hovers above the
+        nearest one"), else the latest group of several mentioned."""
+        order = [*c.subjects, *prev_subject, *reversed(c.groups), *reversed(self.history)]
+        return next(([g] for g in order if g not in srcs and self.groups[g].count > 1), [])
+
+    def _person(self, c: _Clause, srcs: list[int], word: str) -> list[int]:
+        """Whom "him" / "her" (or "their" before a body part) names: the clause's own living
+        subject, else the latest living thing mentioned before, of a sex the pronoun agrees
+        with ("her" is not the dad) and, for "their", several."""
+        # "..., with his cat at his feet": the with-part's owner before the things it lists
+        order = [*c.subjects, *(c.head or []), *c.main_groups, *reversed(c.groups), *reversed(self.history)]
+        vocabulary = load_vocabulary()
+
+        def fits(g: int) -> bool:
+            group = self.groups[g]
+            return (
+                g not in srcs and self._living(g) and vocabulary.agrees(word, group.name.split()[-1])
+                and (word != "them living" or group.count > 1)
+            )  # fmt: skip
+
+        # "her dachshund naps in a hatbox beside her": a person before an animal the text calls "her"
+        return next(([g] for g in order if fits(g) and self._person_at(g)), []) or next(
+            ([g] for g in order if fits(g)), []
+        )
+
+    def _peer(self, kind: str, srcs: list[int], targets: list[int], c: _Clause) -> list[int]:
+        """A small thing beside "it", where "it" came out as a host with a small thing just
+        named on it, stands by that thing ("a computer on the counter, with a radio beside it")."""
+        beside = kind in ("side of", "near", "left of", "right of")
+        if not beside or not srcs or len(targets) != 1 or not self._small(*srcs):
+            return targets
+        recent = [*self.history[-3:], *c.groups]  # this clause, or the one just before the "with"
+        on_it = [r[1] for r in self.relations if r[0] == "on" and r[2] == targets[0] and r[1] in recent]
+        peers = [g for g in on_it if g not in srcs and self._small(g)]
+        return peers[-1:] or targets
+
+    def _owners_side(self, pos: int, ce: int) -> tuple[str, list[int], int] | None:
+        """"(on) the artist's right": right of the latest thing of that name, and where it ends."""
+        toks = self.toks
+        k = pos + (pos < ce and toks[pos].text == "the")
+        if k + 1 >= ce or not toks[k].text.endswith("'s") or toks[k + 1].text not in ("left", "right"):
+            return None
+        head = singular(toks[k].text[:-2])
+        owner = next((g.index for g in reversed(self.groups) if singular(g.name.split()[-1]) == head), None)
+        return None if owner is None else (f"{toks[k + 1].text} of", [owner], k + 2)
+
+    def _ordinal_pair(self, pos: int, ce: int) -> tuple[int, tuple[int, int], int] | None:
+        """"(between) the first and second ramp", "the first and the last car": the group the noun
+        names back, the two ordinals, and where the noun ends."""
+        toks = self.toks
+        k = pos + (pos < ce and toks[pos].text == "the")
+        if k + 2 >= ce or toks[k].text not in _ORDINALS or toks[k + 1].text != "and":
+            return None
+        j = k + 2 + (toks[k + 2].text == "the")
+        if j >= ce or toks[j].text not in _ORDINALS:
+            return None
+        m = next((self.by_start[i] for i in range(j + 1, min(ce, j + 4)) if i in self.by_start), None)
+        if m is None:
+            return None
+        m.definite = True  # "the first and second car": the cars named before
+        group = self._resolve(m, [])
+        if group < 0:
+            return None
+        return group, (_ORDINALS[toks[k].text], _ORDINALS[toks[j].text]), m.end
