@@ -1,9 +1,6 @@
 """What is content rather than a thing of the layout: what fills a holder ("a vase of
-tulips"), what a building holds, what a stall sells.
-
-A part of the clause reader (:class:`~scenewright.analysis.parser.reader._Reader`), kept apart
-so each concern reads on its own; its methods use the reader's state.
-"""
+tulips"), what a building holds, what a stall sells. A mixin of
+:class:`~scenewright.analysis.parser.reader._Reader`."""
 
 from __future__ import annotations
 

@@ -1,9 +1,6 @@
 """What kind of thing a group is, as the rules ask it: living, a person, small enough to
-hold, a carrier, a platform, hung overhead.
-
-A part of the clause reader (:class:`~scenewright.analysis.parser.reader._Reader`), kept apart
-so each concern reads on its own; its methods use the reader's state.
-"""
+hold, a carrier, a platform, hung overhead. A mixin of
+:class:`~scenewright.analysis.parser.reader._Reader`."""
 
 from __future__ import annotations
 

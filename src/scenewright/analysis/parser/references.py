@@ -1,9 +1,6 @@
 """Whom and what a reference names: "it", "them", "him", "her", "one of them", a
-possessive's part ("its back", "at his feet"), an ordinal pair ("the first and second car").
-
-A part of the clause reader (:class:`~scenewright.analysis.parser.reader._Reader`), kept apart
-so each concern reads on its own; its methods use the reader's state.
-"""
+possessive's part ("its back", "at his feet"), an ordinal pair ("the first and second car"). A mixin of
+:class:`~scenewright.analysis.parser.reader._Reader`."""
 
 from __future__ import annotations
 
