@@ -550,3 +550,9 @@ def test_one_on_each_of_its_parts():
     assert sum(o.category == "bird" for o in parsed.objects) == 2
     found = {(r.source, r.relation, r.target) for r in parsed.relations}
     assert ("parakeet_1", "on", "mannequin_1") in found, found
+
+
+def test_clinging_to_is_on_and_the_shade_of_a_thing_is_near_it():
+    assert ("monkey_1", "on", "camel_1") in rels("A monkey clings to a camel.")
+    found = rels("A goat dozes in the shade of a palm tree.")
+    assert ("goat_1", "near", "palm_tree_1") in found and ("goat_1", "on", "palm_tree_1") not in found
