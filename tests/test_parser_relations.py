@@ -556,3 +556,13 @@ def test_clinging_to_is_on_and_the_shade_of_a_thing_is_near_it():
     assert ("monkey_1", "on", "camel_1") in rels("A monkey clings to a camel.")
     found = rels("A goat dozes in the shade of a palm tree.")
     assert ("goat_1", "near", "palm_tree_1") in found and ("goat_1", "on", "palm_tree_1") not in found
+
+
+def test_a_balcony_is_its_owners():
+    assert ("wizard_1", "on", "windmill_1") in rels("A windmill stands on the hill, and a wizard stands on its balcony.")
+
+
+def test_a_radio_set_is_a_radio_a_hoard_a_thing_and_an_operator_a_person():
+    parsed = parse_scene("A radio operator sits at a table with a radio set on it, and a dragon sleeps on a hoard.")
+    assert {o.category for o in parsed.objects} >= {"radio", "figure", "table"}
+    assert any(o.name == "hoard" for o in parsed.objects)
