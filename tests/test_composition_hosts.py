@@ -47,3 +47,13 @@ def test_a_host_the_catalogue_does_not_know_is_as_wide_as_its_load():
     pigeons = [obj(f"pigeon_{i}", "bird", (0.3, 0.3, 0.3)) for i in range(3)]
     out = {o.id: o for o in lengthen(scene([sill, *pigeons], [on(p.id, "sill_1") for p in pigeons]))}
     assert out["sill_1"].size[0] >= 3 * 0.3 + 0.2
+
+
+def test_a_boulder_grows_as_a_whole_to_hold_three_goats_and_a_pebble_keeps_its_size():
+    rock = obj("rock_1", "rock", (1.2, 1.0, 0.8))
+    goats = [obj(f"goat_{i}", "animal", (0.4, 1.0, 0.8)) for i in (1, 2, 3)]
+    grown = {o.id: o for o in lengthen(scene([rock, *goats], [on(g.id, "rock_1") for g in goats]))}["rock_1"]
+    assert grown.size[0] * grown.size[1] >= 1.5 * 3 * 0.4 * 1.0 - 1e-3
+    assert abs(grown.size[0] / grown.size[1] - 1.2) < 1e-3 and grown.size[2] > 0.8  # the same boulder, bigger
+    crow = obj("bird_1", "bird", (0.3, 0.3, 0.3))
+    assert lengthen(scene([rock, crow], [on("bird_1", "rock_1")]))[0].size == rock.size

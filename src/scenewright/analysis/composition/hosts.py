@@ -7,7 +7,9 @@ it. Furniture that comes in any length (tables, counters, cabinets, desks, bench
 lengthened along its width to hold side by side what stands on it, as a designer would pick a
 longer sideboard. A thing the catalogue does not know ("a concrete ledge") has a guessed size,
 not one piece of furniture's: it is lengthened the same way, as wide as what the text puts on
-it. Other hosts keep their size, and what does not fit is the solver's to report.
+it. A rock comes in any size too: "three goats have climbed onto a boulder" wants one whose top
+holds three goats, so it grows in all three directions until its top does. Other hosts keep
+their size, and what does not fit is the solver's to report.
 """
 
 from __future__ import annotations
@@ -24,6 +26,10 @@ STRETCHABLE = frozenset({"table", "counter", "cabinet", "desk", "bench"})
 GAP = 0.05
 #: No host is lengthened past this many metres (a banquet table, a shop counter).
 LONGEST = 4.0
+#: Procedural shapes that come in any size and grow as a whole (a boulder for three goats).
+GROWN = frozenset({"rock"})
+#: Top area a grown host gives its load, as a multiple of the load's own footprints.
+ROOM_ON_TOP = 1.5
 
 
 def lengthen(parsed: ParsedScene) -> list[ParsedObject]:
@@ -45,5 +51,10 @@ def lengthen(parsed: ParsedScene) -> list[ParsedObject]:
             need = (sum(s.size[0] + GAP for s in on) + GAP) / rows
             width = max(o.size[0], min(need, LONGEST))
             o = replace(o, size=(width, *o.size[1:]))
+        elif entry is not None and entry.shape in GROWN and on:
+            need = ROOM_ON_TOP * sum(s.size[0] * s.size[1] for s in on)
+            factor = min((need / (o.size[0] * o.size[1])) ** 0.5, LONGEST / max(o.size[:2]))
+            if factor > 1.0:
+                o = replace(o, size=tuple(round(v * factor, 4) for v in o.size))
         out.append(o)
     return out
