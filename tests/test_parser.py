@@ -671,3 +671,8 @@ def test_a_building_the_opening_sentence_is_inside_sets_the_scene(text, indoor, 
     assert {o.name.split()[-1] for o in parsed.objects} == names
     if "barn" in text or "cabin" in text:  # the room takes the building's usual floor
         assert read_room(text).place in ("barn", "cabin")
+
+
+def test_a_text_that_opens_inside_a_place_is_indoor_whatever_stands_there():
+    parsed = parse_scene("Inside a horse stable at dawn, three horses stand by a hay cart and a trough.")
+    assert parsed.indoor

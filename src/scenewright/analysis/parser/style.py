@@ -135,6 +135,8 @@ def _is_indoor(categories: list[str], text: str, catalogue, places: list[str] = 
     text sets its scene: "A low-poly goblin cave.") twice; a ceiling, an opening "inside a ..."
     or the bridge of a ship weigh like a place; places only seen through a window do not count."""
     low = text.lower()
+    if places and re.match(r"\W*inside\b", low):
+        return True  # "Inside a horse stable at dawn, ...": the text says so, whatever stands there
     setting = _VIEW.sub(" ", low)
     opening = re.split(r"[.!?]", setting, maxsplit=1)[0]
     votes = 0
