@@ -69,8 +69,6 @@ _HANDHELD_SIZE = 1.0
 _THIN = 0.12
 #: Words that open a relative clause about the noun before them.
 _RELATIVES = ("that", "which", "who")
-#: Past participles that do not end in -ed ("a tarp strung between two trees").
-_PARTICIPLES = ("strung", "hung", "slung", "built", "set", "laid", "held", "spread", "drawn", "stuck", "bent", "kept")
 #: Phrase kinds that name a side of what their possessive names ("to her left") and its relation.
 _OWN_SIDES = {"its left": "left of", "its right": "right of", "its foot": "foot of"}
 #: The pronoun a possessive in such a phrase stands for.

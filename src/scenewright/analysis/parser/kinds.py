@@ -44,16 +44,13 @@ class _Kinds:
         """Stands on the ground (no tabletop thing, nothing hung)."""
         return self.groups[g].rests == "ground"
 
-    def _is_person(self, g: int) -> bool:
-        """A person, not an animal: what a seat, not a desk, carries."""
-        return self.catalogue[self.groups[g].category].shape == "figure"
-
     def _animate(self, *groups: int) -> bool:
         """People and animals: what comes "with" right after their target belongs to the target."""
         return bool(groups) and all(self.groups[g].category in ("figure", "animal", "bird") for g in groups)
 
     def _person_at(self, g: int) -> bool:
-        """A person (a figure of the catalogue or a guessed one), who can have things in hand."""
+        """A person (a figure of the catalogue or a guessed one), not an animal: who can have things
+        in hand, and whom a seat, not a desk, carries."""
         return self.catalogue[self.groups[g].category].shape == "figure"
 
     def _handheld(self, g: int) -> bool:

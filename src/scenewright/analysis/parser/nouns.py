@@ -402,7 +402,8 @@ _KIND_WORDS = {"board", "panel", "screen", "machine", "device", "unit", "box", "
 #: Participles without -ed that follow a noun to describe it ("strung with lights", "built of stone").
 _IRREGULAR_PARTICIPLES = {"strung", "hung", "spun", "built", "made", "lit", "set", "worn", "torn", "sunk", "stuck",
                           "swung", "bound", "wound", "laid", "held", "spread", "cast", "shot", "dug", "hidden",
-                          "frozen", "broken", "woven", "fallen", "overgrown", "half", "full", "covered"}  # fmt: skip
+                          "frozen", "broken", "woven", "fallen", "overgrown", "half", "full", "covered", "slung",
+                          "drawn", "bent", "kept"}  # fmt: skip
 
 
 def _names_kind(toks: list[_Tok], e: int) -> bool:

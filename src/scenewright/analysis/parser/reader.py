@@ -18,7 +18,6 @@ from scenewright.analysis.parser.grammar import (
     _GROUND_KINDS,
     _KIND_RELATION,
     _OWN_SIDES,
-    _PARTICIPLES,
     _PERSONAL,
     _PERSON_POSSESSIVES,
     _PLACE_KINDS,
@@ -35,6 +34,7 @@ from scenewright.analysis.parser.nouns import (
     _is_plural,
     _mark_appositions,
     _opens_phrase,
+    _participle,
     _post_description,
     _read_count,
 )
@@ -983,7 +983,7 @@ class _Reader(_Contents, _References, _Kinds):
             return False
         if words[0] in _RELATIVES:
             return True
-        return after_verb and (words[0].endswith(("ing", "ed")) or words[0] in _PARTICIPLES)
+        return after_verb and _participle(words[0])
 
     def _names_thing(self, start: int, starts: set[int]) -> bool:
         """A noun phrase of a thing follows ("at each desk"), not a time or a part ("at one end")."""

@@ -224,7 +224,7 @@ class _References:
         ground ("a lamp hangs above the table, and a cat naps on it": the table)."""
         if not srcs or not all(self._living(g) for g in srcs) or not self._verb_before(pos, self._posture):
             return []
-        holds = self._carrier if all(self._is_person(g) for g in srcs) else self._grounded
+        holds = self._carrier if all(self._person_at(g) for g in srcs) else self._grounded
         recent = [*prefer, *reversed(self.history[self._recent_from :]), *reversed(c.groups)]
         fits = (g for g in recent if (self.groups[g].count > 1) == plural and g not in srcs)
         return next(([g] for g in fits if holds(g) and not self._living(g)), [])
