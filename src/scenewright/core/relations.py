@@ -11,8 +11,8 @@ from __future__ import annotations
 from scenewright.scene import RELATION_TYPES, Relation
 
 __all__ = [
-    "ABOVE", "BINDING", "BUFFER", "FACE_DEGREES", "FAR", "INVERSE", "NEAR", "ON_GAP", "PRIORITY",
-    "RELATION_TYPES", "Relation",
+    "ABOVE", "BINDING", "BUFFER", "FACE_DEGREES", "FAR", "INVERSE", "NEAR", "ON_GAP", "OPPOSITE_SIDES",
+    "PRIORITY", "RELATION_TYPES", "Relation",
 ]
 
 BUFFER = 0.1  # m, relative relations
@@ -21,6 +21,10 @@ FAR = 8.0  # m, horizontal gap
 ON_GAP = 0.002  # m, clearance for "on"
 ABOVE = 2.0  # m, centre of source over centre of target (not touching it)
 FACE_DEGREES = 10.0
+#: The side relations that put a thing between two others when it has both of a pair, per world
+#: axis (x, y) from the low end to the high end: right of one and left of the other, behind one
+#: and in front of the other.
+OPPOSITE_SIDES = (("right of", "left of"), ("behind", "in front of"))
 
 #: Solver priority by relation type: the first relation of an object in this order generates
 #: its candidates (vertical ones fix height and footprint, relative ones a side, the rest last).

@@ -52,7 +52,7 @@ import numpy as np
 
 from scenewright.errors import InputError
 from scenewright.geometry import world_box
-from scenewright.core.relations import BUFFER, PRIORITY
+from scenewright.core.relations import BUFFER, OPPOSITE_SIDES, PRIORITY
 from scenewright.layout import relations as rel
 from scenewright.layout.collision import CollisionWorld, colliding_pairs, resting_pairs
 from scenewright.layout.constraints import clean_constraints, topological_order
@@ -107,8 +107,6 @@ WALK_REJECTS = 40
 #: Relations of one side that a turn can break: checked on the box an object sweeps turning
 #: while it waits to face an object placed after it.
 SWEPT = ("left of", "right of", "in front of", "behind", "side of")
-#: The one-sided relations that put an object between two targets when it has both of a pair.
-OPPOSITE = ("right of", "left of", "in front of", "behind")
 #: m, room left in a gap for a thing still to be placed between two others beyond its own width
 #: and the buffers, so it is not held to one exact spot.
 GAP_SLACK = 0.5
@@ -137,9 +135,8 @@ def _opposite_pair(own: Sequence[tuple[Constraint, int]]) -> tuple[int, int, int
     (the one at the low end, the one at the high end, the world axis between them)."""
     sides: dict[str, int] = {}
     for c, t in own:
-        if c.relation in OPPOSITE:
-            sides.setdefault(c.relation, t)
-    for axis, (low, high) in enumerate((("right of", "left of"), ("behind", "in front of"))):
+        sides.setdefault(c.relation, t)
+    for axis, (low, high) in enumerate(OPPOSITE_SIDES):
         if low in sides and high in sides and sides[low] != sides[high]:
             return sides[low], sides[high], axis
     return None

@@ -21,7 +21,7 @@ from typing import Sequence
 
 from scenewright.analysis.composition import roles
 from scenewright.analysis.parser.room import CEILING_THINGS, WALL_THINGS
-from scenewright.core.relations import ABOVE
+from scenewright.core.relations import ABOVE, OPPOSITE_SIDES
 from scenewright.layout.relations import FLUSH, lowest_above, rest_share
 from scenewright.scene import CEILING_TARGET, ROOM_RELATIONS, ROOM_TARGET, Constraint, SceneObject
 
@@ -71,14 +71,12 @@ def room_constraints(objects: Sequence[SceneObject], constraints: Sequence[Const
     return out
 
 
-#: Pairs of sides that put a thing between two others (as the reader writes "between").
-_OPPOSITE = (("right of", "left of"), ("in front of", "behind"))
 
 
 def _between(sides: dict[str, set[str]]) -> bool:
     """Whether a thing's relations (relation → targets) put it on opposite sides of two things."""
     return any(sides.get(a, set()) and sides.get(b, set()) and sides[a] | sides[b] != sides[a] & sides[b]
-               for a, b in _OPPOSITE)
+               for a, b in OPPOSITE_SIDES)
 
 
 def ceiling_for(objects: Sequence[SceneObject], constraints: Sequence[Constraint], height: float) -> float:
