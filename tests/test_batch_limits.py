@@ -177,18 +177,19 @@ def test_booking_spaces_starts_and_ignores_a_stale_booking():
         Limits(FileSlots(Path("/nonexistent")), 2, per_minute=0)
 
 
-def _most_in_any_second(arrivals: list[float]) -> int:
-    return max(sum(1 for t in arrivals if start <= t < start + 1.0) for start in arrivals)
+def _most_in_any_window(arrivals: list[float], seconds: float = 1.0) -> int:
+    return max(sum(1 for t in arrivals if start <= t < start + seconds) for start in arrivals)
 
 
 @pytest.mark.slow
 def test_four_workers_share_one_requests_per_minute_limit(openai_server, tmp_path):
-    # 240 a minute: starts 0.25 s apart, so at most 4 (5 with a late arrival) in any second;
-    # four workers each sending up to four images at once would put 16 in the first second.
+    # 240 a minute: starts 0.25 s apart, so at most 8 in any two seconds (10 when a loaded machine
+    # lets two late ones arrive together; a one-second window failed at load 27 for that reason);
+    # four workers each sending up to four images at once would put all 16 in the first second.
     counter, code = _remote_batch(openai_server, tmp_path, 2, 0.0, "--requests-per-minute", "240")
     assert code == 0, (tmp_path / "out" / "batch.md").read_text()
     assert counter.total == 2 * 8
-    assert _most_in_any_second(counter.arrivals) <= 5
+    assert _most_in_any_window(counter.arrivals, seconds=2.0) <= 10
     span = max(counter.arrivals) - min(counter.arrivals)
     assert span >= 15 * 0.25 * 0.8  # sixteen starts, fifteen gaps
 
@@ -230,4 +231,4 @@ def test_on_ray_the_limits_are_shared_too(openai_server, tmp_path):
         assert record.totals()["done"] == 4, [o.reason for o in record.outcomes.values()]
         assert mesh_server.peak == 1 and len(mesh_server.submitted) == 4 * 3
     assert counter.total == 4 * 8 and counter.peak <= K
-    assert _most_in_any_second(counter.arrivals) <= 11  # 0.1 s apart: 10 a second, 11 with a late one
+    assert _most_in_any_window(counter.arrivals) <= 11  # 0.1 s apart: 10 a second, 11 with a late one

@@ -520,3 +520,21 @@ def test_bench_pipeline_scores_the_final_layout_of_annotated_prompts(tmp_path, c
     row = result["details"][0]
     assert row["relations_stated"] == 3 and row["supports_checked"] == 4
     assert 0.0 <= result["relations_realised"] <= 1.0 and row["parse"]["objects_expected"] == 4
+
+
+def test_bench_pipeline_scores_a_refused_text_as_an_empty_scene_and_goes_on(tmp_path, capsys):
+    from scenewright.cli import main
+
+    prompts = tmp_path / "prompts"
+    prompts.mkdir()
+    annotated = {"domain": "indoor", "style": "realistic", "objects": {"desk": 1, "office_chair": 1},
+                 "relations": [["office_chair", "in front of", "desk"]]}
+    (prompts / "01.json").write_text(json.dumps({**annotated, "id": "crowd", "text": "A desk, an office chair and 400 chairs."}))
+    (prompts / "02.json").write_text(json.dumps({**annotated, "id": "office", "text": "An office chair in front of a desk."}))
+    assert main(["bench", "pipeline", "--prompts", str(prompts), "--json", "--details"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert [r["id"] for r in result["refused"]] == ["crowd"] and "--max-objects" in result["refused"][0]["error"]
+    refused, done = result["details"]
+    assert refused["objects"] == 0 and not refused["complete"] and refused["relations_realised"] == 0
+    assert refused["relations_stated"] == 1 and refused["supports_right"] == 0
+    assert done["complete"] and result["complete_layouts"] == 1

@@ -292,3 +292,11 @@ def test_a_description_that_opens_with_its_picture_names_no_picture():
     assert not any(category == "picture_frame" for category, _ in got) and not got[("thing", "harbour")]
     # a picture that hangs somewhere is a thing of the scene
     assert objects("A painting of a ship hangs above the fireplace.")[("picture_frame", "painting")] == 1
+
+
+@pytest.mark.parametrize("decade", ["1980s", "1920's", "60s"])
+def test_a_decade_is_a_time_not_a_count(decade):
+    # "a 1980s comic" had been read as 1980 things named "s comic".
+    assert objects(f"In the style of a {decade} comic: a robot stands beside a lamp post.") == Counter(
+        {("robot", "robot"): 1, ("lamp_post", "post"): 1}
+    )

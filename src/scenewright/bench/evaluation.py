@@ -16,6 +16,7 @@ import time
 from pathlib import Path
 
 from scenewright.bench.analysis import parse_figures, ratio, score_prompt
+from scenewright.errors import ScenewrightError
 from scenewright.evaluation.annotations import Prompt
 from scenewright.evaluation.composition import LINE, in_a_line, spread
 from scenewright.evaluation.room import room_metrics
@@ -113,6 +114,7 @@ def summarise_runs(rows: list[dict], *, details: bool = False) -> dict:
         f"median_seconds_{LARGE_SCENE}plus_objects": round(statistics.median(large), 3) if large else None,
         f"scenes_{LARGE_SCENE}plus_objects": len(large),
         "complete_layouts": sum(r["complete"] for r in rows),
+        "refused": [{"id": r["id"], "error": r["error"]} for r in rows if "error" in r],
         "rooms": room_figures(rows),
         "slowest": [
             {k: r[k] for k in ("id", "seconds", "objects", "complete")}
@@ -143,8 +145,15 @@ def run_pipeline_bench(
     with tempfile.TemporaryDirectory(prefix="scenewright-bench-") as tmp:
         for prompt in chosen:
             start = time.perf_counter()
-            scene = generate(prompt.text, Path(tmp) / prompt.id, backends=backends, settings=settings, render=False,
-                             room=room)
+            try:
+                scene = generate(prompt.text, Path(tmp) / prompt.id, backends=backends, settings=settings,
+                                 render=False, room=room)
+            except ScenewrightError as error:
+                # A text the pipeline refuses is a scene the user did not get: it scores as an empty
+                # scene (nothing realised, no support right) and the batch goes on.
+                rows.append({**run_row(prompt, Scene(text=prompt.text), time.perf_counter() - start),
+                             "error": str(error)})
+                continue
             rows.append(run_row(prompt, scene, time.perf_counter() - start))
     return summarise_runs(rows, details=details)
 

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 
 #: Letters of any script, so an accented word ("café", "Stühle") stays one word.
-_TOKEN = re.compile(r"\d+(?:\.\d+)?|[^\W\d_]+(?:['’][^\W\d_]+)?|[.,;:!?()\"“”]|['‘’]|[-–—]")
+_TOKEN = re.compile(r"\d{2,4}'?s\b|\d+(?:\.\d+)?|[^\W\d_]+(?:['’][^\W\d_]+)?|[.,;:!?()\"“”]|['‘’]|[-–—]")
 #: Marks that open or close a quotation; single ones only where no apostrophe can be meant.
 _DOUBLE_QUOTES = '"“”'
 _SINGLE_QUOTES = "'‘’"
