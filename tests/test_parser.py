@@ -10,6 +10,7 @@ from hypothesis import strategies as st
 from scenewright.bench.analysis import load_prompts, run_parse_bench
 from scenewright.analysis.parser.room import read_room
 from scenewright.core.catalogue import load_catalogue
+from scenewright.core.styles import load_looks
 from scenewright.analysis.parser import (
     GROUND_KINDS,
     detect_ground,
@@ -258,11 +259,16 @@ def test_hanging_things_hang_above_something():
         ("A photorealistic kitchen.", "realistic"),
         ("A kitchen.", "realistic"),
         ("A realistic bench in an anime-style park.", "anime"),
+        ("A voxel-art quarry with a digger.", "voxel"),  # a named look (data/styles.json)
+        ("Film noir: a desk, a lamp and a hat stand.", "film noir"),
+        ("A watercolor meadow with two cows.", "watercolour"),
+        ("A crypt in a gothic style, with a coffin.", "gothic"),
+        ("A gothic chapel with six pews.", "realistic"),  # a word for buildings too: the look only before "style"
     ],
 )
 def test_style(text, style):
     assert detect_style(text) == style
-    assert style in STYLES
+    assert style in load_looks()
 
 
 @pytest.mark.parametrize(

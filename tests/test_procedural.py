@@ -26,6 +26,7 @@ from scenewright.procedural.material import described_surfaces, find_colour, fin
 from scenewright.backends.procedural_meshes import ProceduralMeshes
 from scenewright.procedural.meshes import build_glb, build_model, choose_shape, keyword_shape
 from scenewright.procedural.style import ROLES, resolve_style
+from scenewright.procedural.textures import ground_texture
 from scenewright.scene import STYLES, Vec3
 from scenewright.settings import Settings
 
@@ -166,6 +167,25 @@ def test_steampunk_metal_is_brass_and_cartoon_is_rounder():
     cartoon = build_model("crate", (0.6, 0.6, 0.6), "cartoon", seed=1).geometry["wood"]
     realistic = build_model("crate", (0.6, 0.6, 0.6), "realistic", seed=1).geometry["wood"]
     assert cartoon.volume < 0.97 * realistic.volume  # bigger bevels shave the corners
+
+
+def test_a_named_look_draws_its_base_geometry_in_its_own_palette():
+    noir = build_model("armchair", (0.9, 0.9, 1.0), "film noir", seed=1)
+    realistic = build_model("armchair", (0.9, 0.9, 1.0), "realistic", seed=1)
+    assert sorted(noir.geometry) == sorted(realistic.geometry)
+    for role, mesh in noir.geometry.items():
+        assert np.allclose(mesh.vertices, realistic.geometry[role].vertices)
+        r, g, b = np.asarray(mesh.visual.material.baseColorFactor[:3], float)
+        assert abs(r - g) < 1e-6 and abs(g - b) < 1e-6, role  # black and white
+    assert resolve_style("Ukiyo-e").family == "anime" and resolve_style("film-noir style").name == "film noir"
+    assert resolve_style("voxel").flat and resolve_style("synthwave").neon
+
+
+def test_a_named_look_shifts_the_ground_texture_too():
+    grey = ground_texture("grass", "film noir", seed=3).astype(int)
+    assert np.abs(grey[..., 0] - grey[..., 1]).max() <= 1 and np.abs(grey[..., 1] - grey[..., 2]).max() <= 1
+    colour = ground_texture("grass", "realistic", seed=3).astype(int)
+    assert np.abs(colour[..., 1] - colour[..., 0]).mean() > 5
 
 
 def test_unknown_style_falls_back_to_realistic_with_a_note(caplog):

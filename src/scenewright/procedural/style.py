@@ -12,6 +12,7 @@ import logging
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
+from scenewright.core.styles import Look, load_looks, normalise
 from scenewright.scene import DEFAULT_STYLE, STYLES
 
 log = logging.getLogger(__name__)
@@ -145,6 +146,8 @@ def _hsv(color, saturation: float = 1.0, value: float = 1.0, toward_white: float
 
 @dataclass(frozen=True)
 class Style:
+    #: A base style's name or a named look's (``data/styles.json``); the ground texture follows
+    #: the base, :attr:`family`.
     name: str
     #: Segments around round parts; low-poly keeps them few.
     segments: int
@@ -162,6 +165,11 @@ class Style:
     metallic_scale: float = 1.0
     neon: bool = False
     overrides: dict[str, Surface] = field(default_factory=dict)
+
+    @property
+    def family(self) -> str:
+        """The base style this one is drawn like."""
+        return load_looks()[self.name].like if self.name in load_looks() else self.name
 
     def thick(self, metres: float) -> float:
         return metres * self.chunk
@@ -222,23 +230,23 @@ STYLE_TABLE: dict[str, Style] = {
 }
 assert set(STYLE_TABLE) == set(STYLES)
 
-_ALIASES = {
-    "lowpoly": "low-poly", "low poly": "low-poly", "polygonal": "low-poly", "faceted": "low-poly",
-    "cartoonish": "cartoon", "toon": "cartoon", "cartoony": "cartoon", "pixar": "cartoon",
-    "photorealistic": "realistic", "realism": "realistic", "photoreal": "realistic", "real": "realistic",
-    "cyber": "cyberpunk", "neon": "cyberpunk", "cyber-punk": "cyberpunk", "synthwave": "cyberpunk",
-    "steam": "steampunk", "steam-punk": "steampunk", "victorian": "steampunk",
-    "manga": "anime", "ghibli": "anime", "kawaii": "anime",
-}
+
+def _drawn_like(look: Look) -> Style:
+    """A named look as a style: its base's geometry and palette, with the look's changes on top."""
+    base = STYLE_TABLE[look.like]
+    if look.name == look.like:
+        return base
+    overrides = {**base.overrides, **{role: Surface(tuple(v[:3]), v[3], v[4]) for role, v in look.overrides.items()}}
+    return replace(base, name=look.name, overrides=overrides, **look.palette)
 
 
 @lru_cache(maxsize=64)
 def resolve_style(text: str | None) -> Style:
-    """The style a free-text name means; unknown names fall back to realistic with a note."""
-    key = " ".join((text or DEFAULT_STYLE).strip().lower().replace("_", " ").split())
-    key = key.removesuffix(" style").removesuffix("-style")
-    for candidate in (key, key.replace(" ", "-"), _ALIASES.get(key), _ALIASES.get(key.replace("-", " "))):
-        if candidate in STYLE_TABLE:
-            return STYLE_TABLE[candidate]
-    log.warning("unknown style %r: using realistic (known: %s)", text, ", ".join(STYLE_TABLE))
+    """The style a free-text name means (a look's name or any word for it, ``data/styles.json``);
+    unknown names fall back to realistic with a note."""
+    key = normalise(text or DEFAULT_STYLE).removesuffix(" style")
+    for look in load_looks().values():
+        if key in look.words or key in look.styled:
+            return _drawn_like(look)
+    log.warning("unknown style %r: using realistic (known: %s)", text, ", ".join(load_looks()))
     return STYLE_TABLE[DEFAULT_STYLE]

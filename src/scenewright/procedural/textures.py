@@ -15,6 +15,8 @@ from collections.abc import Callable
 import numpy as np
 from PIL import Image
 
+from scenewright.procedural.style import STYLE_TABLE, resolve_style
+
 log = logging.getLogger(__name__)
 
 SIZE = 512
@@ -294,15 +296,25 @@ def _anime(img, rng):
 _STYLES = {"cartoon": _cartoon, "low-poly": _low_poly, "cyberpunk": _cyberpunk, "steampunk": _steampunk, "anime": _anime}
 
 
+def _look(img, look, base):
+    """A named look's palette over its base style's filter: a film-noir ground is grey too."""
+    img = _saturate(img, look.saturation / max(base.saturation, 1e-6)) * (look.value / base.value)
+    whiten = max(0.0, look.pastel - base.pastel)
+    return img + (1 - img) * whiten
+
+
 def ground_texture(kind: str, style: str, seed: int, size: int = SIZE) -> np.ndarray:
-    """An RGB uint8 tile of a ground kind (see :data:`KINDS`) in a style name from
+    """An RGB uint8 tile of a ground kind (see :data:`KINDS`) in a style or look name from
     :mod:`scenewright.procedural.style`."""
     if kind not in _KINDS:
         raise ValueError(f"unknown ground kind {kind!r}; kinds are: {', '.join(KINDS)}")
     rng = np.random.default_rng(seed)
     img = _KINDS[kind](rng, size)
-    if style in _STYLES:
-        img = _STYLES[style](img, rng)
+    look = resolve_style(style)
+    if look.family in _STYLES:
+        img = _STYLES[look.family](img, rng)
+    if look.name != look.family:
+        img = _look(img, look, STYLE_TABLE[look.family])
     # Move structured lines (grout, plank gaps) off the tile border; still periodic.
     img = np.roll(img, (size // 8 + 5, size // 8 + 11), axis=(0, 1))
     return (np.clip(img, 0, 1) * 255).astype(np.uint8)

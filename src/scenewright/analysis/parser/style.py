@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import re
 
+from scenewright.core.styles import load_looks, normalise
 from scenewright.scene import DEFAULT_STYLE
 
 #: Ground kinds the procedural ground textures understand.
@@ -14,30 +15,22 @@ GROUND_KINDS = (
 )  # fmt: skip
 
 
-_STYLE_WORDS = [
-    ("low-poly", ("low poly", "lowpoly", "low-poly", "polygonal", "flat shaded")),
-    ("cartoon", ("cartoon", "cartoonish", "cartoony", "toon", "pixar", "claymation")),
-    ("anime", ("anime", "ghibli", "cel shaded", "cel-shaded")),
-    ("cyberpunk", ("cyberpunk", "neon noir", "neon-noir", "blade runner")),
-    ("steampunk", ("steampunk", "clockwork")),
-    ("realistic", ("realistic", "photorealistic", "photo realistic", "photo-realistic", "lifelike")),
-]
-
-
 def detect_style(text: str, default: str = DEFAULT_STYLE) -> str:
-    """The style the text names ("cartoon-style", "Cyberpunk.", "anime"), else ``default``.
+    """The look the text names ("cartoon-style", "Cyberpunk.", "a voxel-art quarry"; the words are
+    ``data/styles.json``'s), else ``default``.
 
     A word followed by "style" wins over a word used in passing; otherwise the first named."""
-    low = " " + " ".join(re.findall(r"[a-z]+", text.lower())) + " "
+    low = f" {normalise(text)} "
     best: tuple[int, int, str] | None = None
-    for style, words in _STYLE_WORDS:
-        for w in words:
-            w = " " + " ".join(re.findall(r"[a-z]+", w)) + " "
-            pos = low.find(w)
+    for look in load_looks().values():
+        for w in (*look.words, *look.styled):
+            pos = low.find(f" {w} ")
             if pos < 0:
                 continue
-            styled = low[pos + len(w) : pos + len(w) + 6].startswith(("style", "styled", "look", "aesthetic"))
-            rank = (0 if styled else 1, pos, style)
+            styled = low[pos + len(w) + 2 :].startswith(("style", "styled", "look", "aesthetic"))
+            if w in look.styled and not styled:
+                continue
+            rank = (0 if styled else 1, pos, look.name)
             if best is None or rank < best:
                 best = rank
     return best[2] if best else default

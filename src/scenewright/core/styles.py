@@ -1,0 +1,60 @@
+"""Named looks (``data/styles.json``): the words a text uses for each, and how a look beyond the
+six base styles differs from the base it is drawn like.
+
+One table serves the reader, which names a scene's look from its words, and the procedural
+backends, which draw it; so a look added there is read and drawn with no code.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from functools import lru_cache
+from importlib import resources
+
+from scenewright.settings import STYLES
+
+#: What a look may change of its base: palette and shading only, so every look draws the same
+#: geometry as a base style (the shared-face test covers the bases).
+PALETTE = ("saturation", "value", "pastel", "roughness", "metallic_scale", "flat")
+
+
+@dataclass(frozen=True)
+class Look:
+    name: str
+    #: Words a text names it by, normalised to lowercase words split by single spaces.
+    words: tuple[str, ...]
+    #: Words that name it only when "style" follows: "a gothic style" is the look, "a gothic
+    #: chapel" is a building.
+    styled: tuple[str, ...]
+    #: The base style it is drawn like (itself for a base style).
+    like: str
+    palette: dict = field(default_factory=dict)
+    #: Role → (r, g, b, metallic, roughness).
+    overrides: dict = field(default_factory=dict)
+
+
+def normalise(words: str) -> str:
+    """Lowercase words joined by single spaces: "Ukiyo-e" and "ukiyo e" are one name."""
+    return " ".join("".join(c if c.isalnum() else " " for c in words.lower()).split())
+
+
+@lru_cache(maxsize=1)
+def load_looks() -> dict[str, Look]:
+    """Look name → :class:`Look`, checked once: every base style is there, every ``like`` is a base."""
+    raw = json.loads(resources.files("scenewright.data").joinpath("styles.json").read_text(encoding="utf-8"))
+    looks = {}
+    for name, entry in raw["looks"].items():
+        like = entry.get("like", name)
+        unknown = set(entry) - {"words", "styled", "like", "overrides", *PALETTE}
+        if like not in STYLES or unknown:
+            raise ValueError(f"styles.json: look {name!r} must be drawn like one of {', '.join(STYLES)} "
+                             f"and change only {', '.join(PALETTE)} and overrides (got {sorted(unknown) or like!r})")
+        styled = tuple(normalise(w) for w in entry.get("styled", ()))
+        words = tuple(normalise(w) for w in (name, *entry["words"]) if normalise(w) not in styled)
+        looks[name] = Look(name, words, styled, like,
+                           {k: entry[k] for k in PALETTE if k in entry}, entry.get("overrides", {}))
+    missing = set(STYLES) - set(looks)
+    if missing:
+        raise ValueError(f"styles.json: the base styles {sorted(missing)} have no entry")
+    return looks
