@@ -58,3 +58,10 @@ def load_looks() -> dict[str, Look]:
     if missing:
         raise ValueError(f"styles.json: the base styles {sorted(missing)} have no entry")
     return looks
+
+
+def find_look(name: str) -> Look | None:
+    """The look a free-text style name means: a look's name or any word for it ("Ukiyo-e",
+    "cartoon-style", "low poly"), else None."""
+    key = normalise(name).removesuffix(" style")
+    return next((look for look in load_looks().values() if key in look.words or key in look.styled), None)

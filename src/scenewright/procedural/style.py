@@ -12,7 +12,7 @@ import logging
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
-from scenewright.core.styles import Look, load_looks, normalise
+from scenewright.core.styles import Look, find_look, load_looks
 from scenewright.scene import DEFAULT_STYLE, STYLES
 
 log = logging.getLogger(__name__)
@@ -169,7 +169,7 @@ class Style:
     @property
     def family(self) -> str:
         """The base style this one is drawn like."""
-        return load_looks()[self.name].like if self.name in load_looks() else self.name
+        return find_look(self.name).like
 
     def thick(self, metres: float) -> float:
         return metres * self.chunk
@@ -244,9 +244,8 @@ def _drawn_like(look: Look) -> Style:
 def resolve_style(text: str | None) -> Style:
     """The style a free-text name means (a look's name or any word for it, ``data/styles.json``);
     unknown names fall back to realistic with a note."""
-    key = normalise(text or DEFAULT_STYLE).removesuffix(" style")
-    for look in load_looks().values():
-        if key in look.words or key in look.styled:
-            return _drawn_like(look)
+    look = find_look(text or DEFAULT_STYLE)
+    if look is not None:
+        return _drawn_like(look)
     log.warning("unknown style %r: using realistic (known: %s)", text, ", ".join(load_looks()))
     return STYLE_TABLE[DEFAULT_STYLE]

@@ -30,6 +30,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from scenewright.core.styles import find_look
 from scenewright.errors import BackendError, InputError, MissingExtra
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder, as_folder
@@ -235,7 +236,7 @@ def render(
             "frame": frame,
             "boxes": {oid: box.tolist() for oid, box in box_corners(scene).items()},
             "weights": view_weights(scene),
-            "style": scene.style,
+            "style": look.like if (look := find_look(scene.style)) else "realistic",  # a named look lights as its base
             **_ground_and_room(scene, folder, views),
             "views": list(views),
             "keep_all": keep_all,
