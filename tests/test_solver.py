@@ -400,7 +400,7 @@ def test_what_the_report_keeps_of_a_conflict_can_hold_together(gap, seed):
 @given(k=st.integers(1, 3), seed=st.integers(0, 1000), dy=st.floats(-3.0, 3.0))
 def test_a_row_seated_between_two_things_sits_in_their_gap(k, seed, dy):
     """k people, each on a stool, right of one kiosk and left of another: the kiosks leave a gap
-    for all of them in line with each other, and the stools go into it, so each person stands
+    wide enough for all of them, and the stools go into it, so each person stands
     on the line joining the two (the evaluation's *between*), not merely in the two half-planes."""
     from scenewright.evaluation.stated import between
 

@@ -538,9 +538,7 @@ class _Search:
         """``anchor`` moved, where it must be, to the side of the gap that the objects still to be
         placed between this one and a placed one need ("a boulder right of the truck and left
         of the hut": the truck stands left of the hut, a boulder's width and both buffers apart),
-        so the search starts where that gap can open rather than on the wrong side of the other,
-        and in line with the other across that axis (the truck and the hut face each other over
-        the gap), so the line joining the two runs through the gap and not past it."""
+        so the search starts where that gap can open rather than on the wrong side of the other."""
         anchor = np.array(anchor, dtype=float)
         half = float(np.max(item.foot))
         for s in self.dependents[item.index]:
@@ -556,10 +554,8 @@ class _Search:
             need = 2 * BUFFER + GAP_SLACK + width
             if item.index == low and self.posed[high]:
                 anchor[axis] = min(anchor[axis], self.lo[high, axis] - need - half)
-                anchor[1 - axis] = self.pos[high, 1 - axis]
             elif item.index == high and self.posed[low]:
                 anchor[axis] = max(anchor[axis], self.hi[low, axis] + need + half)
-                anchor[1 - axis] = self.pos[low, 1 - axis]
         return anchor
 
     def crowded(self) -> bool:
