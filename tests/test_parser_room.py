@@ -126,6 +126,17 @@ def test_a_wall_thing_does_not_take_the_corner_of_the_next_clause():
     assert not any(source == "mirror_1" for source, _, _ in got)
 
 
+def test_the_nearest_of_a_wall_and_a_ceiling_phrase_after_a_thing_places_it():
+    """A thing takes the first phrase after its name: hung on the wall when the wall comes first,
+    though the ceiling is named later in the sentence for something the parse did not keep; a
+    ceiling with a word before it ("the vaulted ceiling") is the ceiling."""
+    parsed = parse_scene("A boathouse. Two oars hang on hooks on the left wall, and a haze of smoke hangs from "
+                         "the ceiling. Three lanterns hang from the beamed ceiling above the barrel.")
+    got = {(r.source, r.relation, r.target) for r in wall_phrases(parsed)}
+    assert ("oar_1", "on wall", "wall_3") in got and ("oar_1", "on ceiling", "ceiling") not in got
+    assert ("lantern_1", "on ceiling", "ceiling") in got
+
+
 @pytest.mark.parametrize("text, floor, walls, ceiling", [
     ("A kitchen with white tiled walls and a stone floor.", "stone", "white tiled", None),
     ("A bar with brick walls, a wooden floor and a concrete ceiling.", "wood floor", "brick", "concrete"),

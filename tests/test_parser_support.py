@@ -43,3 +43,32 @@ def test_the_parse_records_its_repairs():
     triples = {(r.source, r.relation, r.target) for r in parsed.relations}
     assert ("sofa_1", "side of", "desk_1") in triples and ("table_lamp_1", "on", "desk_1") in triples
     assert len(parsed.repairs) == 1 and parsed.repairs[0].startswith("sofa_1 on desk_1")
+
+
+def _supports(text: str) -> set[tuple[str, str]]:
+    return {(r.source, r.target) for r in parse_scene(text).relations if r.relation == "on"}
+
+
+@pytest.mark.parametrize(
+    "text, wanted, unwanted",
+    [
+        # beside a thing resting on a piece of furniture: on that furniture too
+        ("A kitchen. A dog naps on the desk next to a typewriter.", {("typewriter_1", "desk_1")}, set()),
+        # at the foot of a stove (a host itself): on the floor by it, not on it nor on the counter
+        ("A workshop with a counter. A basket stands at the foot of the stove.", set(),
+         {("basket_1", "stove_1"), ("basket_1", "counter_1")}),
+        # what a person sits on stays on the floor, not on the table
+        ("A tea room with a low table. An old woman sits on a cushion.", set(), {("cushion_1", "coffee_table_1")}),
+        # by a person on a chair: not on the chair; the desk is the guess
+        ("A studio with a desk and a chair. A girl sits on the chair, and a mug stands next to her.",
+         {("cup_1", "desk_1")}, {("cup_1", "chair_1")}),
+        # a lamp beside a bed is left to its own hosts
+        ("A bedroom with a bed, a nightstand and a lamp beside the bed.", {("table_lamp_1", "nightstand_1")}, set()),
+        # never guessed onto the thing it stands beside
+        ("A kitchen with a table. A toaster stands beside the counter.", {("toaster_1", "table_1")},
+         {("toaster_1", "counter_1")}),
+    ],
+)
+def test_inferred_supports_follow_what_a_thing_stands_beside(text, wanted, unwanted):
+    got = _supports(text)
+    assert wanted <= got and not unwanted & got

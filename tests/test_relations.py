@@ -241,3 +241,23 @@ def test_on_rests_at_the_share_of_the_host_height(share, height, yaw, dx):
     assert holds("on", src, host)
     sunk = Boxes.at(np.array([dx, 0.0, rest + 0.2 - 0.01]), np.array([0.1, 0.1, 0.2]), 0.0)
     assert not holds("on", sunk, host)
+
+
+@settings(max_examples=40, deadline=None)
+@given(top=st.floats(2.4, 4.0), height=st.floats(0.4, 1.2), name=st.sampled_from(["cage", "golden cage", "birdcage"]))
+def test_what_is_put_on_a_cage_rests_on_its_floor_wherever_it_hangs(top, height, name):
+    """A cage's load sits inside it, on its base (the container family's ``rest_inside``): a
+    canary "in a cage" hung with its top at the ceiling still rests on it; a chest of the same
+    family keeps its lid as its top."""
+    from scenewright.layout.relations import rest_share, source_heights
+
+    cage = box("cage", size=(0.5, 0.5, height), z=top - height / 2).model_copy(
+        update={"category": "container", "name": name})
+    floor = top - height + 0.08 * height
+    assert rest_share(cage) == pytest.approx(0.08)
+    (z,) = source_heights("on", 0.05, Boxes.of(cage), 0.0)
+    canary = box("canary", size=(0.1, 0.1, 0.1), z=z)
+    assert z == pytest.approx(floor + 0.05) and check("on", canary, cage)
+    assert not check("on", box("canary", size=(0.1, 0.1, 0.1), z=top + 0.05), cage)  # not on its dome
+    chest = cage.model_copy(update={"name": "toy chest"})
+    assert rest_share(chest) == 1.0

@@ -100,3 +100,28 @@ def test_a_cycle_of_on_does_not_hang_the_priors():
                             ("above", "frame_1", "chest_1"))]
     assert ceiling_for(objects, said, 2.7) >= 2.7
     assert room_constraints(objects, said, 3.0)
+
+
+def test_what_rests_on_a_hung_thing_hangs_with_it_not_against_the_ceiling():
+    """"A cage with two finches inside hangs from the ceiling": the finches are on the cage, and
+    only the cage is mounted; a thing resting on nothing keeps its mounting."""
+    objects = [_o("cage_1", "container", 0.8), _o("finch_1", "bird", 0.1), _o("lamp_1", "pendant_lamp", 0.3)]
+    said = [Constraint(relation="on ceiling", source=s, target="ceiling") for s in ("cage_1", "finch_1", "lamp_1")]
+    said.append(Constraint(relation="on", source="finch_1", target="cage_1"))
+    got = {str(c) for c in room_constraints(objects, said, 3.0)}
+    assert {"cage_1 on ceiling ceiling", "finch_1 on cage_1", "lamp_1 on ceiling ceiling"} <= got
+    assert not any(c.startswith("finch_1 on ceiling") or c.startswith("finch_1 on wall") for c in got)
+
+
+def test_a_flat_thing_above_another_goes_on_the_wall_over_it_not_under_the_ceiling():
+    """A screen or a board above a thing is mounted on the wall (and its target stands at that
+    wall); a lantern above the same thing hangs from the ceiling."""
+    screen = SceneObject(id="screen_1", name="screen", category="monitor", size=Vec3(x=0.7, y=0.08, z=0.45))
+    board = SceneObject(id="board_1", name="chalkboard", category="whiteboard", size=Vec3(x=1.6, y=0.05, z=1.0))
+    objects = [screen, board, _o("locker_1", "cabinet", 1.2), _o("bench_1", "bench", 0.5),
+               _o("lantern_1", "lantern", 0.4)]
+    said = [Constraint(relation="above", source=s, target=t)
+            for s, t in (("screen_1", "locker_1"), ("board_1", "bench_1"), ("lantern_1", "locker_1"))]
+    got = {str(c) for c in room_constraints(objects, said, 3.0)}
+    assert {"screen_1 on wall room", "board_1 on wall room", "locker_1 against wall room"} <= got
+    assert "lantern_1 on ceiling ceiling" in got and "screen_1 on ceiling ceiling" not in got

@@ -365,3 +365,53 @@ def test_the_second_end_of_a_between_leaves_the_gap_on_the_side_the_relations_as
     assert result.report.unplaced == []
     assert all(check(c.relation, by_id[c.source], by_id[c.target]) for c in constraints)
     assert by_id["tractor"].position.x < by_id["barn"].position.x
+
+
+def test_constraints_to_several_objects_that_conflict_name_only_what_must_give_way():
+    """Relations to two objects that cannot all hold: the report names the weakest that keep the
+    rest possible (here "left of b" and "near b"), the strongest (in front of, then the text's
+    order) kept, so the feedback gives up the conflict and not everything the object was asked."""
+    objects = [box("a"), box("b", -5.0), box("s", 3.0, size=(0.5, 0.5, 0.5))]
+    said = [c("right of", "s", "a"), c("left of", "s", "b"), c("near", "s", "a"), c("near", "s", "b"),
+            c("in front of", "s", "a")]
+    result = solve(objects, said, fixed=["a", "b"], seed=2)
+    [u] = result.report.unplaced
+    assert u.id == "s" and u.reason == "its constraints cannot all hold at once"
+    assert {str(f) for f in u.failed} == {"s left of b", "s near b"}
+
+
+@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(gap=st.floats(3.0, 9.0), seed=st.integers(0, 1000))
+def test_what_the_report_keeps_of_a_conflict_can_hold_together(gap, seed):
+    """Whatever a conflict between two targets gives up, the rest has a pose: solved again
+    without the constraints the report names, the object is placed and all the rest hold."""
+    objects = [box("a"), box("b", -gap), box("s", 2.0, size=(0.4, 0.4, 0.4))]
+    said = [c("right of", "s", "a"), c("left of", "s", "b"), c("behind", "s", "b"), c("near", "s", "a")]
+    first = solve(objects, said, fixed=["a", "b"], seed=seed)
+    [u] = first.report.unplaced
+    named = {f.key() for f in u.failed}
+    assert named and len(named) < len(said)
+    kept = [x for x in said if (x["relation"], x["source"], x["target"]) not in named]
+    again = solve(objects, kept, fixed=["a", "b"], seed=seed)
+    assert again.report.complete
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(k=st.integers(1, 3), seed=st.integers(0, 1000), dy=st.floats(-3.0, 3.0))
+def test_a_row_seated_between_two_things_sits_in_their_gap(k, seed, dy):
+    """k people, each on a stool, right of one kiosk and left of another: the kiosks leave a gap
+    wide enough for all of them, and the stools go into it, so each person stands
+    on the line joining the two (the evaluation's *between*), not merely in the two half-planes."""
+    from scenewright.evaluation.stated import between
+
+    objects = [box("east", 0.0, 0.0, size=(1.2, 0.8, 1.0)), box("west", 1.0, dy, size=(1.0, 1.0, 1.0))]
+    said = []
+    for j in range(k):
+        objects += [box(f"stool{j}", -2.0 + j, 4.0, size=(0.4, 0.4, 0.5)),
+                    box(f"fan{j}", 3.0, -2.0 - j, size=(0.45, 0.3, 1.0))]
+        said += [c("on", f"fan{j}", f"stool{j}"), c("right of", f"fan{j}", "east"), c("left of", f"fan{j}", "west")]
+    result = solve(objects, said, bounds=(14.0, 14.0), seed=seed)
+    assert result.report.complete
+    by = {o.id: o for o in result.objects}
+    for j in range(k):
+        assert between(by[f"fan{j}"], by["east"], by["west"]), f"fan{j}"

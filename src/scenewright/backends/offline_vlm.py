@@ -189,6 +189,8 @@ def relax_constraints(constraints: Sequence[Constraint], report: LayoutReport) -
                 relaxed, target = c.relation, ROOM_TARGET  # one wall -> any wall
             else:
                 target = c.target
+            if relaxed is not None and (relaxed, c.source, target) in failed:
+                relaxed = None  # what it would become failed as well ("near" the airship too)
             if relaxed is not None:
                 revised.append(Constraint(relation=relaxed, source=c.source, target=target))
         out = revised

@@ -73,6 +73,19 @@ class Category:
     #: Share of its height where a thing put on it rests, when that is below its top: a seat
     #: under a backrest, a mattress under a headboard. The procedural mesh has its surface there.
     rest_height: float | None = None
+    #: Head nouns of things of this family that hold what is put on them inside, with the share
+    #: of their height where that rests: their floor ("a parrot in a birdcage" sits on the cage's
+    #: base, not on its dome, which may hang against the ceiling).
+    rest_inside: tuple[tuple[str, float], ...] = ()
+
+    def rest_for(self, name: str) -> float | None:
+        """The share of its height where a thing put on one named ``name`` rests, when that is
+        below its top: the category's :attr:`rest_height`, else the floor of a holder its head
+        noun names (:attr:`rest_inside`)."""
+        if self.rest_height is not None or not self.rest_inside:
+            return self.rest_height
+        head = singular(words(name)[-1]) if words(name) else ""
+        return dict(self.rest_inside).get(head)
 
     @property
     def indoor(self) -> bool:
@@ -132,8 +145,10 @@ def _validate(entry: dict, seen: set[str]) -> Category:
     if len(size) != 3 or min(size) <= 0:
         raise ValueError(f"catalogue: {name!r} needs three positive sizes, got {entry['size']}")
     rest_height = entry.get("rest_height")
-    if rest_height is not None and not 0 < float(rest_height) <= 1:
-        raise ValueError(f"catalogue: {name!r} rest_height {rest_height!r} is a share of its height, in (0, 1]")
+    inside = {k: float(v) for k, v in entry.get("rest_inside", {}).items()}
+    for share in [rest_height, *inside.values()]:
+        if share is not None and not 0 < float(share) <= 1:
+            raise ValueError(f"catalogue: {name!r} rest height {share!r} is a share of its height, in (0, 1]")
     return Category(
         name=name,
         synonyms=tuple(entry.get("synonyms", ())),
@@ -144,6 +159,7 @@ def _validate(entry: dict, seen: set[str]) -> Category:
         support=bool(entry.get("support", False)),
         family=bool(entry.get("family", False)),
         rest_height=None if rest_height is None else float(rest_height),
+        rest_inside=tuple(sorted(inside.items())),
     )
 
 

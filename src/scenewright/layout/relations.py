@@ -82,9 +82,10 @@ FRONT_NORMAL, FRONT_PENALTY = 0.7, 4.0
 def rest_share(obj: SceneObject) -> float:
     """Share of ``obj``'s height where a thing put on it rests: 1 (its top) unless its catalogue
     category says lower (``rest_height``: a seat under its backrest, a mattress under its headboard;
-    the procedural mesh has its surface there)."""
+    ``rest_inside``: a cage's floor; the procedural mesh has its surface there)."""
     category = load_catalogue().get(obj.category) if obj.category else None
-    return category.rest_height if category is not None and category.rest_height else 1.0
+    share = category.rest_for(obj.name) if category is not None else None
+    return share or 1.0
 
 
 @dataclass(frozen=True)

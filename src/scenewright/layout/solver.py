@@ -52,7 +52,7 @@ import numpy as np
 
 from scenewright.errors import InputError
 from scenewright.geometry import world_box
-from scenewright.core.relations import BUFFER, OPPOSITE_SIDES, PRIORITY
+from scenewright.core.relations import BINDING, BUFFER, OPPOSITE_SIDES, PRIORITY
 from scenewright.layout import relations as rel
 from scenewright.layout.collision import CollisionWorld, colliding_pairs, resting_pairs
 from scenewright.layout.constraints import clean_constraints, topological_order
@@ -112,6 +112,8 @@ SWEPT = ("left of", "right of", "in front of", "behind", "side of")
 GAP_SLACK = 0.5
 #: Shares of the way from one target to the other tried for a thing between them.
 GAP_STEPS = np.linspace(0.05, 0.95, 37)
+#: How much more a constraint an object's failure does not name weighs at its nearest miss.
+KEPT = 10.0
 #: Yaws tried for an object whose orientation nothing fixes, besides the model's.
 AXIS_YAWS = (0.0, 90.0, 180.0, 270.0)
 
@@ -411,6 +413,8 @@ class _Search:
         if ceiling is not None and not resting and primary is None:
             relation, target = "on ceiling", ceiling[1]
         ends = self.gap_between(own)
+        if ends is None and not own:
+            ends = self.riders_gap(item)
         if anchor is None:
             anchor = self.anchor[item.index]
             if ceiling is not None and relation == "near":
@@ -517,9 +521,22 @@ class _Search:
         pair = _opposite_pair(own)
         return None if pair is None else np.stack([self.box(pair[0]).centre[:2], self.box(pair[1]).centre[:2]])
 
+    def riders_gap(self, item: _Item) -> np.ndarray | None:
+        """The gap (as :meth:`gap_between`) a thing still to be put ``on`` this one must stand in,
+        when this one is free to go there: a chair whose sitter stands between two benches goes
+        in their gap, where the sitter then can."""
+        for s in self.dependents[item.index]:
+            other = self.items[s]
+            if self.posed[s] or not any(c.relation == "on" and t == item.index for c, t in other.own):
+                continue
+            pair = _opposite_pair(other.own)
+            if pair is not None and item.index not in pair[:2] and self.posed[pair[0]] and self.posed[pair[1]]:
+                return np.stack([self.box(pair[0]).centre[:2], self.box(pair[1]).centre[:2]])
+        return None
+
     def leave_gap(self, item: _Item, anchor: np.ndarray) -> np.ndarray:
-        """``anchor`` moved, where it must be, to the side of the gap that an object still to be
-        placed between this one and a placed one needs ("a boulder right of the truck and left
+        """``anchor`` moved, where it must be, to the side of the gap that the objects still to be
+        placed between this one and a placed one need ("a boulder right of the truck and left
         of the hut": the truck stands left of the hut, a boulder's width and both buffers apart),
         so the search starts where that gap can open rather than on the wrong side of the other."""
         anchor = np.array(anchor, dtype=float)
@@ -529,8 +546,11 @@ class _Search:
             if pair is None:
                 continue
             low, high, axis = pair
-            other = self.items[s]
-            width = 2 * rotated_half(other.half, other.tilt, other.obj.yaw)[axis]  # as the model turned it
+            # all that stand in this gap side by side ("a row of parents between the benches"),
+            # each as the model turned it
+            width = sum(2 * rotated_half(o.half, o.tilt, o.obj.yaw)[axis]
+                        for x, o in self.items.items()
+                        if x in self.dependents[item.index] and not self.posed[x] and _opposite_pair(o.own) == pair)
             need = 2 * BUFFER + GAP_SLACK + width
             if item.index == low and self.posed[high]:
                 anchor[axis] = min(anchor[axis], self.lo[high, axis] - need - half)
@@ -627,7 +647,25 @@ class _Search:
         conflict = self.contradiction(item) if not ok.any() else None
         if conflict is not None:
             return _Failure(reason, conflict, inherent=True)
-        return _Failure(reason, [c for c, _, _ in pairs])
+        given_up = self.given_up(item) if not ok.any() else []
+        return _Failure(reason, given_up or [c for c, _, _ in pairs])
+
+    def given_up(self, item: _Item) -> list[Constraint]:
+        """The object's constraints to go without so that the rest can hold together, as few and
+        as weak as a greedy pass finds: each is kept, the most binding first (:data:`BINDING`,
+        then the text's order), when the ones kept so far still have a pose with it. The report
+        names these, so the feedback gives up what conflicts ("a car right of the mast and left
+        of the airship, in front of the mast": right of the mast or left of the airship, not all
+        three), not everything the object was asked."""
+        ranked = sorted(self.active(item), key=lambda ct: BINDING.index(ct[0].relation))
+        kept: list[tuple[Constraint, int]] = []
+        out: list[Constraint] = []
+        for c, t in ranked:
+            if self.feasible(replace(item, own=kept + [(c, t)], reverse=[])):
+                kept.append((c, t))
+            else:
+                out.append(c)
+        return out
 
     def contradiction(self, item: _Item) -> list[Constraint] | None:
         """Constraints to one object that no pose meets together, or None. Relations between two
@@ -796,7 +834,8 @@ class _Search:
         """Put an object given up on at its nearest miss; returns its failure and the nodes used.
 
         The nearest miss is the collision-free pose, inside the bounds if any is, whose summed
-        violation of its constraints is least (a degree of facing counts as a centimetre). With
+        violation of its constraints is least (a degree of facing counts as a centimetre; one the
+        failure does not name counts :data:`KEPT` times). With
         no collision-free pose at all it keeps its initial pose, outside the collision world,
         so the objects placed against it still have a pose to be placed against.
         """
@@ -808,7 +847,11 @@ class _Search:
             rel.violations(c.relation, boxes, tb) if tb is not None else rel.violations(c.relation, sb, boxes)
             for c, tb, sb in pairs
         ]
-        scale = [0.01 if c.relation == "face to" else 1.0 for c, _, _ in pairs]
+        # What the failure names gives way first: the rest weighs KEPT times more, so the nearest
+        # miss keeps what :meth:`given_up` found can hold together.
+        given = {c.key() for c in failure.failed}
+        scale = [(0.01 if c.relation == "face to" else 1.0) * (1.0 if c.key() in given else KEPT)
+                 for c, _, _ in pairs]
         total = sum(m * w for m, w in zip(misses, scale)) if misses else np.zeros(len(centres))
         if self.area is not None:
             total = total + 1e3 * self.outside_by(boxes)

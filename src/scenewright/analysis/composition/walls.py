@@ -37,6 +37,7 @@ def room_constraints(objects: Sequence[SceneObject], constraints: Sequence[Const
     is :data:`ABOVE` over the target's top: "an oil lantern hangs above the desk") hangs from the
     ceiling over it instead."""
     kinds = {o.id: roles.kind(o.category) if o.category else None for o in objects}
+    constraints = _carried_not_mounted(constraints)
     mounted = _mounted(objects, constraints)
     reach = _Reach(objects, constraints, mounted)
     if height is not None:
@@ -73,6 +74,14 @@ def room_constraints(objects: Sequence[SceneObject], constraints: Sequence[Const
 
 
 
+def _carried_not_mounted(constraints: Sequence[Constraint]) -> list[Constraint]:
+    """``constraints`` without the wall or ceiling mounting of a thing that rests ``on`` another:
+    its host carries it, and hangs in its place ("a birdcage with two parrots inside hangs from
+    the ceiling": the parrots sit in the cage, not against the ceiling beside it)."""
+    carried = {c.source for c in constraints if c.relation == "on"}
+    return [c for c in constraints if not (c.source in carried and c.relation in ("on wall", "on ceiling"))]
+
+
 def _between(sides: dict[str, set[str]]) -> bool:
     """Whether a thing's relations (relation → targets) put it on opposite sides of two things."""
     return any(sides.get(a, set()) and sides.get(b, set()) and sides[a] | sides[b] != sides[a] & sides[b]
@@ -92,10 +101,23 @@ def ceiling_for(objects: Sequence[SceneObject], constraints: Sequence[Constraint
 
 def _mounted(objects: Sequence[SceneObject], constraints: Sequence[Constraint]) -> dict[str, tuple[str, str]]:
     """Id → (relation, target) of each thing hung on a wall or from the ceiling: by its category,
-    or because the text itself hangs it there ("a lantern hangs from the ceiling")."""
-    mounted = {o.id: ("on wall", ROOM_TARGET) for o in objects if o.category in WALL_THINGS}
+    a flat thing above another on the wall over it ("a status screen above each pod", "a
+    whiteboard above the bench"), or because the text itself hangs it there ("a lantern hangs
+    from the ceiling")."""
+    above = {c.source for c in constraints if c.relation == "above"}
+    mounted = {o.id: ("on wall", ROOM_TARGET) for o in objects
+               if o.category in WALL_THINGS or (o.id in above and _flat(o))}
     mounted |= {o.id: ("on ceiling", CEILING_TARGET) for o in objects if o.category in CEILING_THINGS}
     return mounted | {c.source: (c.relation, c.target) for c in constraints if c.relation in ("on wall", "on ceiling")}
+
+
+#: A thing no deeper than this share of its width, and than :data:`FLAT_DEPTH`, is a panel (a
+#: screen, a board, a sign): above another it hangs on a wall, not from the ceiling.
+FLAT_SHARE, FLAT_DEPTH = 0.35, 0.25
+
+
+def _flat(o: SceneObject) -> bool:
+    return o.size.y <= FLAT_SHARE * o.size.x and o.size.y <= FLAT_DEPTH and o.size.z >= 2 * o.size.y
 
 
 class _Reach:

@@ -325,8 +325,8 @@ def place_openings(room: Room, wanted: Sequence[tuple[str, str | None, int]]) ->
 WALL_THINGS = frozenset({"picture_frame", "mirror", "wall_clock", "projector_screen", "lifebuoy"})
 CEILING_THINGS = frozenset({"ceiling_fan", "pendant_lamp", "punching_bag"})
 _WALL_PHRASE = re.compile(r"\b(against|along|on|by|to|in|at|onto|from)\s+(?:the\s+|a\s+|one\s+)?(?:(back|rear|far|left|right|front)(?:[- ]hand)?\s+)?(wall|corner)s?\b")
-#: "hangs from the ceiling", "suspended from the ceiling", "on the ceiling".
-_CEILING_PHRASE = re.compile(r"\b(?:(?:hang|hangs|hanging|hung|suspended|dangles|dangling|swings?)\s+(?:\w+\s+){0,2}?from|on)\s+the\s+ceiling\b")
+#: "hangs from the ceiling", "suspended from the vaulted ceiling", "on the ceiling".
+_CEILING_PHRASE = re.compile(r"\b(?:(?:hang|hangs|hanging|hung|suspended|dangles|dangling|swings?)\s+(?:\w+\s+){0,2}?from|on)\s+the\s+(?:[\w-]+\s+){0,2}?ceiling\b")
 #: Verbs that put a thing *on* a wall rather than against it.
 _MOUNTED = re.compile(r"\b(?:hang|hangs|hanging|hung|mounted|fixed|pinned|nailed|fastened)\b")
 
@@ -360,10 +360,12 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
                 continue
             at = found.end()
             ceiling = _CEILING_PHRASE.search(sentence, at)
+            phrase = _WALL_PHRASE.search(sentence, at)
+            if phrase is not None and ceiling is not None and phrase.start() < ceiling.start():
+                ceiling = None  # "wheels hang on the back wall, and tubes dangle from the ceiling"
             if ceiling is not None and not _names_between(sentence[at:ceiling.start()], names, name):
                 out.append(ParsedRelation(source=o.id, relation="on ceiling", target=CEILING_TARGET))
                 break
-            phrase = _WALL_PHRASE.search(sentence, at)
             if phrase is None:
                 break
             # The phrase places this thing when the parse anchored it to a wall, when it is a wall

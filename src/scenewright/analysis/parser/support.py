@@ -50,7 +50,15 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
     load: Counter[str] = Counter(r.target for r in relations if r.relation == "on")
     extra: list[ParsedRelation] = []
     supports = [o for o in objects if catalogue[o.category].support]
-    beside_ground = _beside_ground(objects, relations, catalogue)
+    by_id = {o.id: o for o in objects}
+    beside = _beside(objects, relations, catalogue)
+    partners: dict[str, set[str]] = {}  # beside a thing, never inferred onto it: both cannot hold
+    for r in relations:
+        if r.relation in _SIDES:
+            partners.setdefault(r.source, set()).add(r.target)
+    # a thing a person or an animal sits or lies on stays on the floor (a cushion, a basket)
+    ridden = {r.target for r in relations
+              if r.relation == "on" and catalogue[by_id[r.source].category].shape in _LIVING_SHAPES}
     # the members of a stack above its first rest on the one below (the composition says so)
     first_of: dict[int, str] = {}
     for o in objects:
@@ -60,15 +68,20 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
         rests = obj.rests or catalogue[obj.category].rests
         if obj.id in placed_vertically or obj.id in stacked:
             continue
-        if rests == "surface":
+        if rests == "surface" and obj.id not in ridden:
             prefs = _SUPPORT_PREFERENCE.get(obj.category, ())
             fitting = [
                 s for s in supports
-                if s.id != obj.id and s.size[0] >= obj.size[0] * 0.9 and s.size[1] >= obj.size[1] * 0.9
+                if s.id != obj.id and s.id not in partners.get(obj.id, ())
+                and s.size[0] >= obj.size[0] * 0.9 and s.size[1] >= obj.size[1] * 0.9
                 and (s.category in _GENERAL_HOSTS or s.category in prefs)
             ]  # fmt: skip
-            if obj.id in beside_ground:
-                continue  # "a mine cart next to a lantern": the lantern stands on the ground by it
+            if obj.id in beside:
+                host = beside[obj.id]  # the partner's host, or the ground by it
+                if host is not None and can_hold(by_id[host], obj, catalogue):
+                    load[host] += 1
+                    extra.append(ParsedRelation(obj.id, "on", host, inferred=True))
+                continue
             if not fitting:
                 continue
 
@@ -91,27 +104,53 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
     return extra
 
 
-_HORIZONTAL = ("side of", "near", "left of", "right of", "in front of", "behind")
+#: Relations that put one thing on a side of another: it cannot be on it as well.
+_SIDES = ("side of", "left of", "right of", "in front of", "behind")
+_HORIZONTAL = ("near", *_SIDES)
 
 
-def _beside_ground(objects: list[ParsedObject], relations: list[ParsedRelation], catalogue) -> set[str]:
-    """Things the text sets beside something standing on the ground that holds nothing, a seat
-    aside: those stand on the ground too ("a cart waits next to a lantern")."""
+def _beside(objects: list[ParsedObject], relations: list[ParsedRelation], catalogue) -> dict[str, str | None]:
+    """Surface things the text sets beside (or in front of, behind) another, with where they
+    stand by it: on the piece of furniture that other thing rests on ("a cat on the counter next
+    to a microscope": the microscope is on the counter too; a cup by a man on a chair is not on
+    the chair), or on the ground (``None``) by one that
+    stands there ("a cart waits next to a lantern", "a basket at the foot of the stove"). A thing
+    the catalogue gives hosts of its own (a lamp, a TV) beside a piece of furniture or a seat is
+    left to those ("a lamp beside the bed" is on the nightstand). Never on the thing it is beside:
+    beside it and on it cannot both hold."""
     by_id = {o.id: o for o in objects}
+    host = {r.source: r.target for r in relations if r.relation == "on"}
+    raised = {r.source for r in relations if r.relation == "above"}
 
-    def grounded(o: ParsedObject) -> bool:
+    def rests(o: ParsedObject) -> str:
+        return o.rests or catalogue[o.category].rests
+
+    def furniture(o: ParsedObject) -> bool:
         category = catalogue[o.category]
-        rests = o.rests or category.rests
-        return rests == "ground" and not category.support and category.shape not in _SEAT_SHAPES
+        return category.support or category.shape in _SEAT_SHAPES
 
-    out: set[str] = set()
-    for r in relations:
-        if r.relation in _HORIZONTAL and not r.inferred:
-            source, target = by_id[r.source], by_id[r.target]
-            if grounded(target):
-                out.add(source.id)
-            if grounded(source):
-                out.add(target.id)
+    pairs = [(by_id[r.source], by_id[r.target]) for r in relations if r.relation in _HORIZONTAL and not r.inferred]
+    pairs += [(b, a) for a, b in pairs]
+    out: dict[str, str | None] = {}
+    grounded = {o.id for o in objects if rests(o) == "ground" and o.id not in host and o.id not in raised}
+    changed = True
+    while changed:  # a thing set on the ground by one may ground the next ("a basket at its foot")
+        changed = False
+        for thing, partner in pairs:
+            if thing.id in out or thing.id in host or thing.id in raised or rests(thing) != "surface":
+                continue
+            if partner.id in host:
+                shared = by_id[host[partner.id]]  # furniture things are put on, not a seat or a dais
+                if shared.id == thing.id or not (catalogue[shared.category].support
+                                                 or shared.category in _SUPPORT_PREFERENCE.get(thing.category, ())):
+                    continue
+                out[thing.id] = shared.id
+            elif partner.id in grounded and not (thing.category in _SUPPORT_PREFERENCE and furniture(partner)):
+                out[thing.id] = None
+                grounded.add(thing.id)
+            else:
+                continue
+            changed = True
     return out
 
 
