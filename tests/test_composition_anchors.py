@@ -76,3 +76,20 @@ def test_the_member_the_text_puts_in_the_middle_stands_at_the_origin():
     (cat,) = [o for o in parsed.objects if o.anchor == "centre"]
     placed = {o.id: o for o in compose(parsed).objects}[cat.id]
     assert (placed.position.x, placed.position.y) == pytest.approx((0.0, 0.0), abs=1e-6)
+
+
+def test_a_composition_stands_centred_so_its_room_holds_it():
+    """The room is built centred on the origin around the first poses: groups packed to one side
+    of the first would start outside it (and be squeezed along a wall by the solver)."""
+    from scenewright.analysis.parser.room import room_for
+
+    text = ("A busy joinery workshop: a long workbench with two stools, a lathe, a drill press, a table saw, "
+            "a tall cabinet of tools, a rack of clamps, a stack of planks, a sawhorse, a glue pot on a shelf, "
+            "three barrels, two crates and a wheelbarrow.")
+    objects = compose(parse_scene(text)).objects
+    room = room_for(text, objects)
+    ground = [o for o in objects if o.position.z - o.size.z / 2 < 0.05 and o.size.z >= 0.1]
+    lo = [min(world_box(o)[0][i] for o in ground) for i in (0, 1)]
+    hi = [max(world_box(o)[1][i] for o in ground) for i in (0, 1)]
+    assert [(a + b) / 2 for a, b in zip(lo, hi)] == pytest.approx([0.0, 0.0], abs=1e-3)
+    assert all(_inside(o, room) for o in ground)

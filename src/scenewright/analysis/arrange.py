@@ -24,6 +24,7 @@ from dataclasses import dataclass, replace
 from scenewright.analysis.composition import (
     anchors, edges, formations, groups, hosts, outdoor, packing, posture, relational, roles,
 )
+from scenewright.analysis.composition.footprint import bbox
 from scenewright.analysis.composition.lines import unline
 from scenewright.analysis.composition.units import Layout, Unit
 from scenewright.analysis.parser import ParsedRelation, ParsedScene
@@ -86,8 +87,24 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
     outdoor.park(layout, vehicles)
     outdoor.scatter(layout, natural, random.Random(seed))
     unline(layout, layout.relations_hold)
+    if not any(_member_at(layout, u, "centre") for u in layout.top_units()):
+        _centre(layout)
     return Composition([layout.scene_object(o.id) for o in parsed.objects], layout.relations,
                        tuple(walled[id(u)] for u in layout.top_units() if id(u) in walled))
+
+
+def _centre(layout: Layout) -> None:
+    """Everything moved so that what stands on the ground is centred on the origin: a room is
+    built centred there around the first poses, so a composition set out to one side (groups
+    packed behind the first one) would start half outside its room and be squeezed along a wall."""
+    prints = layout.ground_prints(list(layout.placed))
+    if not prints:
+        return
+    x0, y0, x1, y1 = bbox(prints)
+    dx, dy = -(x0 + x1) / 2, -(y0 + y1) / 2
+    for p in layout.placed.values():
+        p.x += dx
+        p.y += dy
 
 
 def _member_at(layout: Layout, unit: Unit, anchor: str) -> str | None:

@@ -104,6 +104,12 @@ def _stacks(ids: Sequence[str], prints: dict[str, Footprint]) -> dict[str, list[
     return stacks
 
 
+def _into(p: Footprint, lo: tuple[float, float], hi: tuple[float, float]) -> tuple[float, float]:
+    """The step (dx, dy) that brings a footprint poking through a wall back inside."""
+    return (max(0.0, lo[0] + WALL_CLEARANCE - (p.x - p.w / 2)) - max(0.0, p.x + p.w / 2 - (hi[0] - WALL_CLEARANCE)),
+            max(0.0, lo[1] + WALL_CLEARANCE - (p.y - p.d / 2)) - max(0.0, p.y + p.d / 2 - (hi[1] - WALL_CLEARANCE)))
+
+
 def _move(stack: list[str], prints: dict[str, Footprint], dx: float, dy: float) -> None:
     for i in stack:
         prints[i].x += dx
@@ -112,16 +118,30 @@ def _move(stack: list[str], prints: dict[str, Footprint], dx: float, dy: float) 
 
 def _inside(member: str, stacks: dict[str, list[str]], prints: dict[str, Footprint],
             lo: tuple[float, float], hi: tuple[float, float]) -> None:
-    """Step each stack that pokes through a wall back inside, then push the stacks it now meets
-    on the same way, round by round (the anchored member, at its wall, stays)."""
+    """Step each stack that pokes through a wall back inside (and along the wall off the anchored
+    member, if it lands on it), then push the stacks it now meets on the same way, round by
+    round (the anchored member, at its wall, stays)."""
     moved: dict[str, tuple[float, float]] = {}
+    m = prints[member]
     for k, stack in stacks.items():
         p = prints[k]
-        dx = max(0.0, lo[0] + WALL_CLEARANCE - (p.x - p.w / 2)) - max(0.0, p.x + p.w / 2 - (hi[0] - WALL_CLEARANCE))
-        dy = max(0.0, lo[1] + WALL_CLEARANCE - (p.y - p.d / 2)) - max(0.0, p.y + p.d / 2 - (hi[1] - WALL_CLEARANCE))
-        if dx or dy:
-            _move(stack, prints, dx, dy)
-            moved[k] = (dx, dy)
+        dx, dy = _into(p, lo, hi)
+        if not (dx or dy):
+            continue
+        _move(stack, prints, dx, dy)
+        if k != member and p.overlaps(m, PUSH_GAP):
+            # stepped in onto the anchored member (a piano behind a lamp beside the sofa, now at
+            # the wall the sofa stands at): along the wall, off the member's nearer end
+            along = 0 if abs(dy) >= abs(dx) else 1
+            centre, half, m_centre, m_half = ((p.x, p.w / 2, m.x, m.w / 2) if along == 0 else (p.y, p.d / 2, m.y, m.d / 2))
+            side = 1.0 if centre >= m_centre else -1.0
+            shift = m_centre + side * (m_half + PUSH_GAP + half) - centre
+            _move(stack, prints, *((shift, 0.0) if along == 0 else (0.0, shift)))
+            back = _into(p, lo, hi)[along]
+            if back:  # no room at that end: the other one
+                shift = m_centre - side * (m_half + PUSH_GAP + half) - (centre + shift)
+                _move(stack, prints, *((shift, 0.0) if along == 0 else (0.0, shift)))
+        moved[k] = (dx, dy)
     for _ in range(PUSH_ROUNDS):
         pushed: dict[str, tuple[float, float]] = {}
         for k, (dx, dy) in moved.items():
