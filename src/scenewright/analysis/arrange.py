@@ -10,6 +10,11 @@ road, natural things are scattered with Poisson-disc spacing, and no set of grou
 left in a line. The solver searches candidates nearest these poses first, so the
 composition is also its candidate order.
 
+Groups with a member the text anchors to a wall ("a sofa at the back of the room") are recorded
+(``Composition.anchored``): once the room is known the analysis stage moves each one there as a
+whole (``composition.anchors``). Everything finally stands centred on the origin, where the room
+is built around it.
+
 The arrangement is deterministic for a given seed (only the scatter draws random numbers).
 Rules may add relations (a sofa standing on the rug put under it); :func:`compose` returns
 them with the poses, so the constraints written from the parse keep them.
