@@ -347,6 +347,7 @@ VARIANTS = [
     ("machine", "jukebox", "light"), ("machine", "hair dryer", "chrome"), ("armchair", "throne", "gold"),
     ("panel", "windsock", "canvas_alt"), ("structure", "windsock", "canvas_alt"), ("tower", "satellite dish", "plastic"),
     ("structure", "radar dish", "plastic"), ("tool", "bicycle wheel", "metal"),
+    ("tool", "shoe last", "wood"), ("tool", "potter's wheel", "plastic"),
 ]
 
 

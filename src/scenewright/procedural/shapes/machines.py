@@ -476,6 +476,27 @@ def tank(m: Model) -> None:
         _horizontal_tank(m)
 
 
+def _last(m: Model) -> None:
+    """A shoemaker's last: a wooden foot, sole down, toe to the front, the instep rising to a
+    flat-topped ankle at the heel."""
+    m.main = "wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.ball("wood", (0, -0.15 * D, 0.3 * H), (0.9 * W, 0.85 * D, 0.3 * H), fraction=0.8)  # the sole's bulk
+    m.ball("wood", (0, 0.45 * D, 0.45 * H), (0.8 * W, 0.5 * D, 0.45 * H), fraction=0.8)  # the heel and instep
+    m.cylinder("dark_wood", (0, 0.5 * D, 0.6 * H), (0, 0.5 * D, H), 0.55 * W, 0.5 * W, fraction=0.6)  # the ankle
+
+
+def _potters_wheel(m: Model) -> None:
+    """A potter's wheel: a low cabinet, a splash pan round a turning disc on its shaft."""
+    m.main = "wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    r = 0.8 * min(W, D)
+    m.box("wood", (-W, -D, 0), (W, D, 0.7 * H))
+    m.cylinder("dark_metal", (0, 0, 0.7 * H), (0, 0, 0.9 * H), 0.08 * r, fraction=0.4)
+    m.torus("plastic", (0, 0, 0.82 * H), 0.95 * r, 0.06 * r, fraction=0.8)
+    m.cylinder("metal", (0, 0, 0.9 * H), (0, 0, H), 0.7 * r, fraction=1.0)
+
+
 def _grindstone(m: Model) -> None:
     """A grindstone: a stone wheel on an axle between the sides of a wooden frame on four
     legs, a crank at one end and a trough under the wheel."""
@@ -923,11 +944,13 @@ def tool(m: Model) -> None:
     wrench, a long-handled tool (shovel, fork, rake, broom, golf club), a sword, a lens, papers
     or a scroll, a telescope, a traffic cone, a trophy, a radio, a weathervane, a skateboard,
     a tyre, a spoked wheel, a microscope, a skull, a till, a power tool, a compass, shears, a tape measure, a
-    grindstone on its frame, a gadget; else a toolbox. The variant named first
+    grindstone on its frame, a shoemaker's last, a potter's wheel, a gadget; else a toolbox. The variant named first
     wins ("radio scanner" is a radio)."""
     variants = (
         (("anvil",), _anvil),
         (("grindstone", "grinding wheel", "whetstone wheel", "sharpening wheel"), _grindstone),
+        (("last", "shoe last"), _last),
+        (("potter's wheel", "potters wheel", "pottery wheel"), _potters_wheel),
         (("hammer", "axe", "hatchet", "mallet", "gavel", "sledgehammer", "pickaxe", "pick", "mattock"), _hammer),
         (("wrench", "spanner"), _wrench),
         (("shovel", "spade", "fork", "pitchfork", "rake", "hoe", "broom", "mop", "oar", "paddle", "putter", "golf club",
@@ -943,7 +966,6 @@ def tool(m: Model) -> None:
         (("weathervane", "weather vane", "wind vane"), _weathervane),
         (("skateboard", "longboard"), _skateboard),
         (("tyre", "tire", "spare tyre", "spare tire"), _tyre),
-        (("wheel", "bicycle wheel", "bike wheel", "cartwheel", "cart wheel", "wagon wheel"), _wheel),
         (("microscope",), _microscope),
         (("wheel gun", "impact wrench", "drill", "nail gun", "power tool"), _power_tool),
         (("compass",), _compass),
@@ -951,6 +973,8 @@ def tool(m: Model) -> None:
         (("tape measure", "measuring tape"), _tape_measure),
         (("skull",), _skull),
         (("cash register", "till", "register"), _till),
+        # after the names that hold "wheel" as a modifier ("wheel gun"): a tie goes to the earlier
+        (("wheel", "bicycle wheel", "bike wheel", "cartwheel", "cart wheel", "wagon wheel"), _wheel),
         (("toolbox", "tool box", "tool chest", "toolkit", "kit"), _toolbox),
         (("gadget", "device", "remote", "walkie-talkie", "scanner", "detector", "controller", "calculator",
           "phone", "tablet"), _gadget),
