@@ -362,6 +362,12 @@ VARIANTS = [
     ("generic", "goalpost", "canvas_alt"), ("generic", "smokestack", "brick"), ("floor_lamp", "hat stand", "brass"),
     ("trash_can", "pillar box", "paper"), ("counter", "vitrine", "glass"), ("generic", "rail", "dark_metal"),
     ("generic", "orrery", "gold"),
+    ("bookshelf", "weapon rack", "metal"), ("bookshelf", "shoe rack", "wood"), ("bookshelf", "wine rack", "lacquer"),
+    ("bookshelf", "dumbbell rack", "rubber"), ("generic", "balloon", "paper"), ("tool", "grindstone", "stone"),
+    ("machine", "jukebox", "light"), ("machine", "hair dryer", "chrome"), ("armchair", "throne", "gold"),
+    ("panel", "windsock", "canvas_alt"), ("structure", "windsock", "canvas_alt"), ("tower", "satellite dish", "plastic"),
+    ("structure", "radar dish", "plastic"), ("tool", "bicycle wheel", "metal"),
+    ("tool", "shoe last", "wood"), ("tool", "potter's wheel", "plastic"),
 ]
 
 

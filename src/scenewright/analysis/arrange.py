@@ -10,6 +10,11 @@ road, natural things are scattered with Poisson-disc spacing, and no set of grou
 left in a line. The solver searches candidates nearest these poses first, so the
 composition is also its candidate order.
 
+Groups with a member the text anchors to a wall ("a sofa at the back of the room") are recorded
+(``Composition.anchored``): once the room is known the analysis stage moves each one there as a
+whole (``composition.anchors``). Everything finally stands centred on the origin, where the room
+is built around it.
+
 The arrangement is deterministic for a given seed (only the scatter draws random numbers).
 Rules may add relations (a sofa standing on the rug put under it); :func:`compose` returns
 them with the poses, so the constraints written from the parse keep them.
@@ -21,10 +26,14 @@ import random
 from collections import defaultdict
 from dataclasses import dataclass, replace
 
-from scenewright.analysis.composition import edges, formations, groups, hosts, outdoor, packing, posture, relational, roles
+from scenewright.analysis.composition import (
+    anchors, edges, formations, groups, hosts, outdoor, packing, posture, relational, roles,
+)
+from scenewright.analysis.composition.footprint import bbox
 from scenewright.analysis.composition.lines import unline
 from scenewright.analysis.composition.units import Layout, Unit
 from scenewright.analysis.parser import ParsedRelation, ParsedScene
+from scenewright.core.protocols import AnchoredGroup
 from scenewright.scene import SceneObject
 
 
@@ -35,6 +44,9 @@ class Composition:
 
     objects: list[SceneObject]
     relations: list[ParsedRelation]
+    #: Groups to move as one to where the text anchors one of their members in the room
+    #: (:func:`~scenewright.analysis.composition.anchors.into_room`, once the room is known).
+    anchored: tuple[AnchoredGroup, ...] = ()
 
 
 #: Rules that join units into groups, in order: a host's own partners before shared ones.
@@ -54,12 +66,16 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
         rule(layout)
     formations.arrange(layout)
     storage, vehicles, natural, core, front = [], [], [], [], []
+    walled = {id(u): g for u in layout.top_units() if (g := anchors.anchored(layout, u)) is not None}
     for unit in layout.top_units():
         kind = layout.kind(unit.root)
         anchor = layout.by_id[unit.root].anchor
+        centre = _member_at(layout, unit, "centre")
         if anchor == "front":
             front.append(unit)
-        elif anchor == "centre":
+        elif centre is not None:
+            p = layout.placed[centre]  # the member the text puts in the middle stands there
+            layout.move(unit, -p.x, -p.y)
             core.insert(0, unit)
         elif unit.turnable and not unit.partners and (kind in roles.EDGE_STORAGE or anchor in edges.ANCHORED):
             storage.append(unit)
@@ -69,13 +85,36 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
             natural.append(unit)
         else:
             core.append(unit)
-    packing.pack(layout, core, centred=sum(layout.by_id[u.root].anchor == "centre" for u in core))
-    edges.along_edges(layout, storage)
+    packing.pack(layout, core, centred=sum(_member_at(layout, u, "centre") is not None for u in core),
+                 backed={id(u) for u in core if id(u) in walled})
+    edges.along_edges(layout, storage, back_taken=any(id(u) in walled for u in core))
     edges.in_front(layout, front)
     outdoor.park(layout, vehicles)
     outdoor.scatter(layout, natural, random.Random(seed))
     unline(layout, layout.relations_hold)
-    return Composition([layout.scene_object(o.id) for o in parsed.objects], layout.relations)
+    if not any(_member_at(layout, u, "centre") for u in layout.top_units()):
+        _centre(layout)
+    return Composition([layout.scene_object(o.id) for o in parsed.objects], layout.relations,
+                       tuple(walled[id(u)] for u in layout.top_units() if id(u) in walled))
+
+
+def _centre(layout: Layout) -> None:
+    """Everything moved so that what stands on the ground is centred on the origin: a room is
+    built centred there around the first poses, so a composition set out to one side (groups
+    packed behind the first one) would start half outside its room and be squeezed along a wall."""
+    prints = layout.ground_prints(list(layout.placed))
+    if not prints:
+        return
+    x0, y0, x1, y1 = bbox(prints)
+    dx, dy = -(x0 + x1) / 2, -(y0 + y1) / 2
+    for p in layout.placed.values():
+        p.x += dx
+        p.y += dy
+
+
+def _member_at(layout: Layout, unit: Unit, anchor: str) -> str | None:
+    """The unit's member (its root first) the text anchors at ``anchor``, if any."""
+    return next((i for i in [unit.root, *unit.ids] if layout.by_id[i].anchor == anchor), None)
 
 
 def initial_objects(parsed: ParsedScene, seed: int = 0) -> list[SceneObject]:

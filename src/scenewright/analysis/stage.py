@@ -50,6 +50,7 @@ def _reference(scene: Scene, folder: SceneFolder, images: ImageGenerator) -> byt
 def _objects(scene: Scene, vlm: VisionLanguageModel, reference: bytes | None, room: str) -> None:
     """The objects, and the room they stand in (decided with them, so that a resumed run that
     finds the objects finds their room too)."""
+    from scenewright.analysis.composition.anchors import into_room
     from scenewright.analysis.parser.room import parse_room_option, room_for
 
     answer = vlm.describe_objects(scene.text, scene.style, reference)
@@ -66,6 +67,8 @@ def _objects(scene: Scene, vlm: VisionLanguageModel, reference: bytes | None, ro
         STAGE, f"found {len(objects)} objects", step="objects", backend=vlm.name, ids=[o.id for o in objects]
     )
     scene.room = room_for(scene.text, objects, parse_room_option(room), answer.room, answer.proposes_room)
+    if scene.room is not None and answer.anchored:  # "a sofa at the back of the room", with its group
+        scene.objects = into_room(scene.objects, scene.room, answer.anchored)
     if scene.room is not None:
         _fit_under_ceiling(scene)
         xs, ys = [p[0] for p in scene.room.floor], [p[1] for p in scene.room.floor]

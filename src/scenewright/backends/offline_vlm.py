@@ -95,7 +95,9 @@ class OfflineVLM:
                     data={"backend": self.name, "step": "guessed", "guessed": guessed},
                 )
             )
-        return Answer([o.model_copy(deep=True) for o in self.composition(text).objects], tuple(repairs))
+        composition = self.composition(text)
+        return Answer([o.model_copy(deep=True) for o in composition.objects], tuple(repairs),
+                      anchored=composition.anchored)
 
     def write_constraints(
         self, text: str, objects: Sequence[SceneObject], reference: bytes | None, room: Room | None = None

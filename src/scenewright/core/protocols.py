@@ -24,6 +24,18 @@ T = TypeVar("T")
 
 
 @dataclass(frozen=True)
+class AnchoredGroup:
+    """Objects a model composed as one group (``ids``), and where the text puts one of them in
+    the room (``member`` at ``anchor``: ``back``, ``wall`` or ``corner``): once the room is known
+    the whole group goes there, keeping its arrangement ("a sofa at the back of the room" takes
+    its coffee table and armchairs with it)."""
+
+    member: str
+    anchor: str
+    ids: tuple[str, ...]
+
+
+@dataclass(frozen=True)
 class Answer(Generic[T]):
     """A model's answer after validation, with what had to be repaired or dropped in it to pass.
 
@@ -38,6 +50,8 @@ class Answer(Generic[T]):
     #: leaves the room to the offline reading of the text (docs/rooms.md).
     room: Room | None = None
     proposes_room: bool = False
+    #: ``describe_objects``: groups to move as one to where the text anchors them in the room.
+    anchored: tuple[AnchoredGroup, ...] = ()
 
 
 @runtime_checkable

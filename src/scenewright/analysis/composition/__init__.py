@@ -9,5 +9,6 @@ One small module per kind of rule, applied in order by :func:`scenewright.analys
   scattered (Poisson disc), ways in kept free;
 - ``packing`` — groups set out compactly, repeated groups in a grid;
 - ``edges`` — tall storage along the edges, backs outward;
+- ``anchors`` — a group the text anchors in the room moved there as one, once the room is known;
 - ``lines`` — never a line of unrelated things (``spread`` measures it).
 """

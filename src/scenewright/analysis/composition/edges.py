@@ -34,8 +34,10 @@ def share(count: int, back_free: bool = True) -> list[str]:
     return sides + ["back"] * back if not back_free else ["back"] * back + sides
 
 
-def along_edges(layout: Layout, units: list[Unit]) -> None:
-    """Stand each storage unit along an edge of everything already placed."""
+def along_edges(layout: Layout, units: list[Unit], back_taken: bool = False) -> None:
+    """Stand each storage unit along an edge of everything already placed; the sides first
+    when a group the text puts against the back wall (``back_taken``) or a bed's head takes
+    the back."""
     if not units:
         return
     x0, y0, x1, y1 = bbox(layout.placed[i] for u in layout.settled for i in u.ids)
@@ -44,7 +46,7 @@ def along_edges(layout: Layout, units: list[Unit]) -> None:
     rest = [u for u in units if layout.by_id[u.root].anchor != "back"]
     units = back + rest
     edges = ["back"] * len(back) + share(
-        len(rest), back_free=not back and not any(layout.kind(u.root) in roles.BEDS for u in layout.settled)
+        len(rest), back_free=not back and not back_taken and not any(layout.kind(u.root) in roles.BEDS for u in layout.settled)
     )
     for edge in ("back", "left", "right"):
         row = [u for u, e in zip(units, edges) if e == edge]

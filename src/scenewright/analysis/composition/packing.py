@@ -25,9 +25,11 @@ FRONT_COST = 0.35
 Box = tuple[float, float, float, float]
 
 
-def best_spot(size: tuple[float, float], boxes: list[Box], gap: float = AISLE) -> tuple[float, float]:
+def best_spot(size: tuple[float, float], boxes: list[Box], gap: float = AISLE,
+              back: float | None = None) -> tuple[float, float]:
     """The centre for a ``size`` (w, d) box beside ``boxes`` that keeps their union compact and
-    square, sides and back before the front; (0, 0) when there is nothing yet."""
+    square, sides and back before the front, and never reaching past ``back`` (y) when given;
+    (0, 0) when there is nothing yet."""
     if not boxes:
         return 0.0, 0.0
     w, d = size
@@ -57,6 +59,8 @@ def best_spot(size: tuple[float, float], boxes: list[Box], gap: float = AISLE) -
     behind_all = lo[:, 1] >= arr[:, 1].min() - 1e-6
     cost = area * (1.0 + FRONT_COST * (front & ~behind_all)) + 1e-3 * np.hypot(c[:, 0], c[:, 1])
     cost[hit] = np.inf
+    if back is not None:
+        cost[hi[:, 1] > back + 1e-6] = np.inf
     k = int(np.argmin(cost))
     if not np.isfinite(cost[k]):  # boxed in everywhere: beyond the far right
         return float(arr[:, 2].max() + gap + w / 2), float((arr[:, 1].min() + arr[:, 3].max()) / 2)
@@ -83,9 +87,11 @@ def _grid(layout: Layout, units: list[Unit]) -> None:
         layout.move(unit, x - (b[0] + b[2]) / 2, y - (b[1] + b[3]) / 2)
 
 
-def pack(layout: Layout, units: list[Unit], centred: int = 0) -> None:
+def pack(layout: Layout, units: list[Unit], centred: int = 0, backed: frozenset[int] | set[int] = frozenset()) -> None:
     """Set ``units`` out compactly around the origin (what is already placed stays); the first
-    ``centred`` units (those the text puts in the middle) go down first, at the centre."""
+    ``centred`` units (those the text puts in the middle) go down first, at the centre; then the
+    units (by ``id``) ``backed`` against a wall ("a sofa at the back of the room"), and nothing
+    goes down behind those: the room fit moves them back to their wall as they are."""
     centre = {id(u) for u in units[:centred]}
     by_group: dict[tuple[str, str], list[Unit]] = defaultdict(list)
     blocks: list[list[Unit]] = []
@@ -106,17 +112,22 @@ def pack(layout: Layout, units: list[Unit], centred: int = 0) -> None:
         x0, y0, x1, y1 = _union(layout, block)
         count = sum(len(u.ids) for u in block)
         middle = any(id(u) in centre for u in block)
-        return (not middle, -count, -(x1 - x0) * (y1 - y0), min(order[id(u)] for u in block))
+        walled = any(id(u) in backed for u in block)
+        return (not middle, not walled, -count, -(x1 - x0) * (y1 - y0), min(order[id(u)] for u in block))
 
     down: list[Box] = []
+    back: float | None = None
     for block in sorted(blocks, key=weight):
         x0, y0, x1, y1 = _union(layout, block)
+        walled = any(id(u) in backed for u in block)
         # the first stays in its own frame (its main object at the origin)
-        x, y = best_spot((x1 - x0, y1 - y0), down) if down else ((x0 + x1) / 2, (y0 + y1) / 2)
+        x, y = best_spot((x1 - x0, y1 - y0), down, back=None if walled else back) if down else ((x0 + x1) / 2, (y0 + y1) / 2)
         for u in block:
             layout.move(u, x - (x0 + x1) / 2, y - (y0 + y1) / 2)
             layout.settled.append(u)
         down.append(_union(layout, block))
+        if walled:
+            back = max(back if back is not None else -np.inf, down[-1][3])
 
 
 def _union(layout: Layout, block: list[Unit]) -> Box:

@@ -16,7 +16,7 @@ from collections import Counter, defaultdict
 from collections.abc import Callable
 
 from scenewright.analysis.composition import roles
-from scenewright.analysis.composition.footprint import GAP, Footprint, push
+from scenewright.analysis.composition.footprint import GAP, Footprint, clear, push
 from scenewright.analysis.parser import ParsedObject, ParsedRelation
 from scenewright.geometry import front_direction, yaw_towards
 from scenewright.layout import relations as rel
@@ -113,7 +113,7 @@ def place_related(
         x = t.x + dx * ((t.w + probe.w) / 2 + GAP) + (0.0 if dx else offset)
         y = t.y + dy * ((t.d + probe.d) / 2 + GAP) + (offset if dx else 0.0)
         p = Footprint(x, y, obj.size[2] / 2, probe.yaw, obj.size)
-        return push(p, (dx, dy), list(placed.values()))
+        return push(_slide(p, t, (dx, dy), list(placed.values())), (dx, dy), list(placed.values()))
 
     def place(obj: ParsedObject, trail: frozenset[str] = frozenset()) -> None:
         if obj.id in placed:
@@ -176,6 +176,31 @@ def place_related(
             others = [v for k, v in placed.items() if k != obj.id and frozenset((k, obj.id)) not in resting]
             _turn_clear(obj, placed, placed[target], [v for v in others if v.h >= 0.1], relations, by_id)
     return placed
+
+
+def _slide(p: Footprint, t: Footprint, direction: tuple[float, float], others: list[Footprint]) -> Footprint:
+    """``p`` beside ``t`` on the ``direction`` side, slid along that side (never past ``t``'s
+    ends) to the clear spot nearest where it is, when its spot is taken: a stool in front of a
+    piano whose middle a lamp stands before takes the free end of the keyboard rather than a
+    place metres out. Unchanged when no spot along the side is clear."""
+    if clear(p, others):
+        return p
+    dx, _ = direction
+    room = ((t.d - p.d) if dx else (t.w - p.w)) / 2
+    if room <= 0:
+        return p
+    home = (p.x, p.y)
+    steps = sorted({round(k * 0.05, 2) for k in range(-int(room / 0.05), int(room / 0.05) + 1)} | {-room, room}, key=abs)
+    for s in steps:
+        base = t.y if dx else t.x
+        if dx:
+            p.y = base + s
+        else:
+            p.x = base + s
+        if clear(p, others):
+            return p
+    p.x, p.y = home
+    return p
 
 
 def _turn_clear(obj, placed, target: Footprint, others, relations, by_id) -> None:

@@ -192,6 +192,27 @@ def _rocket(m: Model) -> None:
         linear = np.array([[d[0], -d[1], 0], [d[1], d[0], 0], [0, 0, 1]]) @ np.array([[1, 0, 0], [0, 0, 1], [0, 1, 0]], float)
         m.add("paint", P.transform(fin, P.affine(linear, (0, 0, 0))))
 
+def _dish(m: Model) -> None:
+    """A satellite dish (or radar dish): a pedestal, a yoke, and a shallow dish tilted up
+    toward the sky at the front, a feed on struts at its focus."""
+    m.main = "plastic"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    R = min(W, D, 0.42 * H)
+    hub = H - R * 1.05
+    m.box("concrete", (-0.5 * W, -0.5 * D, 0), (0.5 * W, 0.5 * D, 0.05 * H))
+    m.post("dark_metal", 0, 0, 0.05 * H, hub, 0.08 * R + 0.01, fraction=0.5)
+    tilt = np.radians(50.0)  # from facing straight up toward the front (−Y)
+    rot = np.array([[1, 0, 0], [0, np.cos(tilt), -np.sin(tilt)], [0, np.sin(tilt), np.cos(tilt)]])
+    dish = P.lathe([(0.0, 0.0), (0.35 * R, 0.03 * R), (0.7 * R, 0.12 * R), (R, 0.28 * R), (0.97 * R, 0.3 * R),
+                    (0.67 * R, 0.15 * R), (0.0, 0.05 * R)], m.segments(1.0))
+    m.add("plastic", P.transform(dish, P.affine(rot, (0.0, 0.0, hub))))
+    focus = rot @ np.array([0.0, 0.0, 0.75 * R]) + (0.0, 0.0, hub)
+    for a in (0.0, 2.1, 4.2):
+        rim = rot @ np.array([0.85 * R * np.cos(a), 0.85 * R * np.sin(a), 0.22 * R]) + (0.0, 0.0, hub)
+        m.beam("metal", rim, focus, 0.02 * R + 0.004)
+    m.ball("dark_plastic", focus, (0.07 * R,) * 3, fraction=0.4)
+
+
 def _lattice_tower(m: Model) -> None:
     """A steel lattice tower: four tapering legs, cross bracing, arms near the top."""
     m.main = "metal"
@@ -253,6 +274,9 @@ def _crane(m: Model) -> None:
 def tower(m: Model) -> None:
     if m.named("crane"):
         _crane(m)
+        return
+    if m.named("satellite dish", "radar dish", "dish", "radio telescope"):
+        _dish(m)
         return
     if m.named("pylon", "transmission tower", "radio tower", "antenna") or m.has("steel", "lattice", "service tower", "launch tower"):
         _lattice_tower(m)

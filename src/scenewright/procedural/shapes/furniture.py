@@ -104,7 +104,35 @@ def chair(m: Model) -> None:
     _chair_frame(m, seat_z, t)
 
 
+def _throne(m: Model) -> None:
+    """A throne: its seat where the catalogue seats a sitter (0.45 of its height, as an
+    armchair's), a seat's height above a stone dais that makes up the rest, a back rising far
+    above it to a pointed crest, carved arms, gilt trim and a red cushion."""
+    m.main = "dark_wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    seat = 0.45 * H
+    step = max(0.04 * H, seat - 0.45)
+    back_t = 0.2 * m.sy
+    arm = 0.14 * m.sx
+    m.box("stone", (-W, -D, 0), (W, D, step / 2))
+    m.box("stone", (-0.92 * W, -0.92 * D, step / 2), (0.92 * W, 0.92 * D, step))
+    m.box("dark_wood", (-W + arm, -D + 0.03, step), (W - arm, D - back_t, seat - 0.06))
+    m.box("paint", (-W + arm, -D + 0.04, seat - 0.06), (W - arm, D - back_t, seat))
+    crest = 0.85 * H
+    m.box("dark_wood", (-W + 0.5 * arm, D - back_t, step), (W - 0.5 * arm, D, crest))
+    m.extrude("gold", [(-W + 0.5 * arm, crest), (W - 0.5 * arm, crest), (0.0, H)], "y", D - back_t, D)
+    m.box("paint", (-W + 1.3 * arm, D - back_t - 0.02, seat + 0.05), (W - 1.3 * arm, D - back_t, crest - 0.08))
+    for sgn in (-1, 1):
+        x0, x1 = sorted((sgn * W, sgn * (W - arm)))
+        m.box("dark_wood", (x0, -D + 0.03, step), (x1, D - back_t, seat + 0.25))
+        m.ball("gold", ((x0 + x1) / 2, -D + 0.06, seat + 0.27), (0.6 * arm, 0.6 * arm, 0.6 * arm), fraction=0.5)
+        m.ball("gold", (sgn * (W - 0.6 * arm), D - back_t / 2, crest + 0.02), (0.5 * arm, 0.5 * arm, 0.5 * arm), fraction=0.5)
+
+
 def armchair(m: Model) -> None:
+    if m.named("throne"):
+        _throne(m)
+        return
     m.main = "fabric"
     leg_h = 0.1 * m.sz
     arm = m.thick(0.15, 0.22 * m.sx)
@@ -243,7 +271,112 @@ def _books_row(m: Model, x0: float, x1: float, y0: float, y1: float, z: float, h
         x += w + (m.vary(0.05, 0.15) if m.rng.random() < 0.08 else 0.0)
 
 
+def _rack_frame(m: Model, role: str) -> tuple[float, float]:
+    """Two end frames (a post at each corner, rails joining them at the foot and the top):
+    an open rack's ends. Returns the half width inside the posts and the posts' radius."""
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    r = min(0.025, 0.08 * min(m.sx, m.sy)) + 0.004
+    for x in (-W + r, W - r):
+        for y in (-D + r, D - r):
+            m.post(role, x, y, 0, H, r, fraction=0.4)
+        for z in (0.06 * H, H - r):
+            m.cylinder(role, (x, -D + 2 * r, z), (x, D - 2 * r, z), 0.7 * r, fraction=0.4)
+    return W - 2 * r, r
+
+
+def _hanging_rack(m: Model) -> None:
+    """A rack things hang from (tongs, tools, weapons, coats): an open frame with a top bar of
+    pegs, the things hanging from them side by side, a foot rail where long ones rest."""
+    m.main = "dark_wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    inner, r = _rack_frame(m, "dark_wood")
+    m.cylinder("dark_wood", (-inner, 0, 0.9 * H), (inner, 0, 0.9 * H), r, fraction=0.4)
+    m.cylinder("dark_wood", (-inner, 0, 0.15 * H), (inner, 0, 0.15 * H), 0.8 * r, fraction=0.4)
+    count = max(3, int(2 * inner / 0.12))
+    long_things = m.named("weapon", "spear", "sword", "lance", "pike", "staff", "polearm", "halberd", "rifle", "musket", "bow")
+    for k in range(count):
+        x = -inner + (k + 0.5) * 2 * inner / count
+        m.cylinder("metal", (x, -1.2 * r, 0.9 * H), (x, -2.6 * r, 0.9 * H), 0.3 * r, fraction=0.3)  # a peg
+        if long_things:  # a shaft resting on the foot rail against the top bar, its blade above
+            y = -2.2 * r
+            m.cylinder("wood", (x, y, 0.15 * H + r), (x, y, 0.84 * H), 0.35 * r, fraction=0.3)
+            m.cylinder("metal", (x, y, 0.84 * H), (x, y, 0.97 * H), 0.6 * r, 0.05 * r, fraction=0.3)
+        else:  # tongs, tools: two thin arms hanging from the peg, spread toward their ends
+            drop = m.vary(0.35, 0.55) * H
+            for side in (-1, 1):
+                m.beam("dark_metal", (x, -2.6 * r, 0.9 * H - r), (x + side * 0.025, -2.6 * r, 0.9 * H - drop), 0.5 * r)
+
+
+def _bottle_rack(m: Model) -> None:
+    """A wine rack: a lattice of cubbies, a bottle lying in each, its neck out."""
+    m.main = "wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    t = m.thick(0.02, 0.06 * m.sx)
+    cols, rows = max(2, int(m.sx / 0.12)), max(2, int(m.sz / 0.12))
+    for k in range(cols + 1):
+        x = -W + t / 2 + k * (m.sx - t) / cols
+        m.box("wood", (x - t / 2, -D, 0), (x + t / 2, D, H))
+    for k in range(rows + 1):  # shelves a little inside the uprights' faces: no shared planes
+        z = k * (H - t - 0.004) / rows
+        m.box("dark_wood", (-W + t, -0.97 * D, z), (W - t, 0.97 * D, z + t))
+    cw, ch = (m.sx - t) / cols - t, (H - t) / rows - t
+    for i in range(cols):
+        for j in range(rows):
+            if m.rng.random() < 0.25:
+                continue
+            x = -W + t + i * (m.sx - t) / cols + cw / 2
+            z = t + j * (H - t) / rows + ch / 2
+            rb = 0.4 * min(cw, ch)
+            m.cylinder("lacquer", (x, -0.9 * D, z), (x, 0.9 * D, z), rb, fraction=0.4)
+            m.cylinder("dark_plastic", (x, -D - 0.05, z), (x, -0.9 * D, z), 0.35 * rb, fraction=0.3)
+
+
+def _weights_rack(m: Model) -> None:
+    """A dumbbell rack: a frame with two sloping rails, dumbbells lying across them."""
+    m.main = "dark_metal"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    inner, r = _rack_frame(m, "dark_metal")
+    for y0, y1, z0, z1 in ((-0.9 * D, 0.0, 0.55 * H, 0.62 * H), (0.0, 0.9 * D, 0.85 * H, 0.92 * H)):
+        m.box("metal", (-inner, y0, z0), (inner, y1, z0 + 0.3 * r), rounded=0.0)
+        count = max(2, int(2 * inner / 0.22))
+        for k in range(count):
+            x = -inner + (k + 0.5) * 2 * inner / count
+            z = z0 + 0.3 * r + 0.035
+            yc = (y0 + y1) / 2
+            m.cylinder("chrome", (x, yc - 0.12, z), (x, yc + 0.12, z), 0.012, fraction=0.3)
+            for e in (-1, 1):
+                m.cylinder("rubber", (x, yc + e * 0.12, z), (x, yc + e * 0.17, z), 0.035, fraction=0.4)
+
+
+def _slatted_rack(m: Model) -> None:
+    """A plain rack (shoes, boots, crates, goods): an open frame with slatted levels, the top
+    one flush with the frame's top so what stands on the rack stands on slats."""
+    m.main = "wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    inner, r = _rack_frame(m, "dark_wood")
+    levels = max(2, min(5, int(round(H / 0.4))))
+    slats = max(3, int(m.sy / 0.07))
+    for k in range(1, levels + 1):
+        top = 0.06 * H + k * (H - 0.06 * H) / levels - (r if k == levels else 0.0)
+        for j in range(slats):
+            y = -D + 2 * r + (j + 0.5) * (m.sy - 4 * r) / slats
+            m.box("wood", (-inner, y - 0.4 * (m.sy - 4 * r) / slats, top - 0.02), (inner, y + 0.4 * (m.sy - 4 * r) / slats, top))
+
+
+#: Words of a rack things hang from, in its name or description ("a weapon rack", "a rack of tongs").
+_HUNG = ("weapon", "spear", "sword", "lance", "pike", "halberd", "rifle", "musket", "tong", "tongs", "tool", "utensil",
+         "ladle", "pan", "key", "hook", "coat")
+
+
 def bookshelf(m: Model) -> None:
+    """Shelves of books; a rack is an open frame instead: a wine rack's cubbies of bottles, a
+    dumbbell rack's rails, a rack of tongs or weapons hanging from pegs, else slatted levels."""
+    rack = m.first_named(((("wine rack", "bottle rack", "wine shelf"), _bottle_rack),
+                          (("dumbbell", "weight", "kettlebell"), _weights_rack),
+                          (("rack", "racks"), _hanging_rack if m.has(*_HUNG) else _slatted_rack)))
+    if rack is not None:
+        rack(m)
+        return
     side = m.thick(0.025, 0.1 * m.sx)
     m.box("wood", (-m.sx / 2, -m.sy / 2, 0), (-m.sx / 2 + side, m.sy / 2, m.sz))
     m.box("wood", (m.sx / 2 - side, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, m.sz))

@@ -1,5 +1,5 @@
 """The fallback shape: soft things, instruments, pumpkins, balls, ramps, goals, chimneys,
-rails and orreries (things with no family),
+rails, orreries and party balloons (things with no family),
 the family a name calls (animals, craft, figures...), and a plain plinthed block for a name
 with no hint at all."""
 
@@ -130,9 +130,22 @@ def _orrery(m: Model) -> None:
         m.ball(role, tip, (size * W, size * D, size * H), fraction=0.5)
 
 
+def _balloon(m: Model) -> None:
+    """A party balloon on its string: a small weight on the ground, the string, the knot and
+    the balloon at the top (a hot-air balloon is a vehicle)."""
+    m.main = "paint"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    r = min(W, D)
+    m.box("dark_plastic", (-0.2 * r, -0.2 * r, 0), (0.2 * r, 0.2 * r, 0.15 * r))
+    knot = H - 2.3 * r
+    m.cylinder("paper", (0, 0, 0.15 * r), (0, 0, knot), 0.012 * r + 0.001, fraction=0.3)
+    m.cylinder("paint", (0, 0, knot - 0.02 * r), (0, 0, knot + 0.12 * r), 0.04 * r, 0.09 * r, fraction=0.4)
+    m.ball("paint", (0, 0, H - 1.15 * r), (0.95 * r, 0.95 * r, 1.15 * r))
+
+
 def generic(m: Model) -> None:
-    """Soft things, instruments, pumpkins, balls, ramps, goals, chimneys, rails and orreries
-    by name; else the family the name calls (a horse the catalogue files here is an animal);
+    """Soft things, instruments, pumpkins, balls, ramps, goals, chimneys, rails, orreries and
+    party balloons by name; else the family the name calls (a horse the catalogue files here is an animal);
     only a name with no hint at all gets the block."""
     variants = (
         (("guitar", "violin", "cello"), _guitar),
@@ -146,6 +159,7 @@ def generic(m: Model) -> None:
         (("chimney", "smokestack", "chimney stack"), _chimney),
         (("grind rail", "rail"), _rail),
         (("orrery",), _orrery),
+        (("balloon", "party balloon"), _balloon),
     )
     for words, build in variants:
         if m.named(*words):

@@ -29,6 +29,38 @@ def _vents(m: Model, x0: float, x1: float, z0: float, z1: float, y: float, count
         m.box("dark_metal", (x0, y - 0.01 * m.sy, z), (x1, y + 0.001, z + 0.4 * step), rounded=0.0)
 
 
+def _jukebox(m: Model) -> None:
+    """A jukebox: a cabinet under a round arched top, a lit arch of tubes round a glass dome
+    over the record deck, a speaker grille below."""
+    m.main = "dark_wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    body = H - W  # the arch's springing line: a half circle as wide as the cabinet tops it
+    m.box("dark_wood", (-W, -D, 0), (W, D, body))
+    m.cylinder("dark_wood", (0, -0.97 * D, body), (0, 0.97 * D, body), W, fraction=1.0)  # inside the body's faces
+    m.torus("light", (0, -D - 0.01, body), 0.85 * W, 0.06 * W, axis="y", arc=np.pi, fraction=0.8)
+    m.ball("glass", (0, -D + 0.1 * D, body), (0.6 * W, 0.3 * D, 0.55 * W), fraction=0.6)
+    m.box("chrome", (-0.7 * W, -D - 0.01, 0.45 * body), (0.7 * W, -D, 0.5 * body), rounded=0.0)
+    m.box("fabric", (-0.6 * W, -D - 0.01, 0.08 * body), (0.6 * W, -D, 0.4 * body), rounded=0.0)
+    for x in (-0.85 * W, 0.85 * W):
+        m.box("accent", (x - 0.05 * W, -D - 0.02, 0.05 * body), (x + 0.05 * W, -D + 0.02, 0.98 * body), rounded=0.0)
+
+
+def _hood_dryer(m: Model) -> None:
+    """A salon hair dryer on its stand: a five-footed base, a pole, and the hood on an arm,
+    tilted forward."""
+    m.main = "plastic"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    r = 0.03 * min(m.sx, m.sy) + 0.008
+    for k in range(5):
+        a = 2 * np.pi * k / 5 + np.pi / 2
+        m.beam("dark_metal", (0, 0, 0.03 * H), (0.8 * W * np.cos(a), 0.8 * D * np.sin(a), 0.02 * H), 1.5 * r)
+    m.post("chrome", 0, 0.3 * D, 0.04 * H, 0.72 * H, r, fraction=0.4)
+    m.beam("chrome", (0, 0.3 * D, 0.7 * H), (0, -0.1 * D, 0.76 * H), r)
+    hood = min(W, D, 0.15 * H)
+    m.ball("plastic", (0, -0.25 * D, 0.78 * H), (hood, 1.1 * hood, 0.9 * hood), fraction=0.8)
+    m.ball("dark_plastic", (0, -0.25 * D - 0.4 * hood, 0.74 * H), (0.8 * hood, 0.75 * hood, 0.6 * hood), fraction=0.6)
+
+
 def _arcade(m: Model) -> None:
     """An arcade cabinet: side panels, a tilted screen, a control deck, a lit marquee."""
     m.main = "paint"
@@ -260,12 +292,14 @@ def machine(m: Model) -> None:
     generator or engine, compressor, printer, washing machine, server rack, furnace,
     periscope, bowling ball return, claw crane game, sewing machine."""
     variants = (
-        (("arcade", "pinball", "slot machine", "jukebox", "game cabinet"), _arcade),
+        (("jukebox", "juke box"), _jukebox),
+        (("arcade", "pinball", "slot machine", "game cabinet"), _arcade),
         (("console", "terminal", "control panel", "control desk", "dashboard", "workstation", "switchboard", "cockpit"),
          _console),
         (("compressor",), _compressor),
         (("generator", "engine", "motor", "pump", "turbine", "dynamo"), _engine),
         (("printer", "copier", "photocopier", "fax", "scanner"), _printer),
+        (("hair dryer", "hood dryer", "salon dryer", "blow dryer"), _hood_dryer),
         (("washing machine", "washer", "dryer", "dishwasher", "laundry"), _washer),
         (("server", "mainframe", "rack", "supercomputer"), _server),
         (("furnace", "kiln", "forge", "smelter", "foundry"), _furnace),
@@ -440,6 +474,49 @@ def tank(m: Model) -> None:
         _silo(m)
     else:
         _horizontal_tank(m)
+
+
+def _last(m: Model) -> None:
+    """A shoemaker's last: a wooden foot, sole down, toe to the front, the instep rising to a
+    flat-topped ankle at the heel."""
+    m.main = "wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.ball("wood", (0, -0.15 * D, 0.3 * H), (0.9 * W, 0.85 * D, 0.3 * H), fraction=0.8)  # the sole's bulk
+    m.ball("wood", (0, 0.45 * D, 0.45 * H), (0.8 * W, 0.5 * D, 0.45 * H), fraction=0.8)  # the heel and instep
+    m.cylinder("dark_wood", (0, 0.5 * D, 0.6 * H), (0, 0.5 * D, H), 0.55 * W, 0.5 * W, fraction=0.6)  # the ankle
+
+
+def _potters_wheel(m: Model) -> None:
+    """A potter's wheel: a low cabinet, a splash pan round a turning disc on its shaft."""
+    m.main = "wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    r = 0.8 * min(W, D)
+    m.box("wood", (-W, -D, 0), (W, D, 0.7 * H))
+    m.cylinder("dark_metal", (0, 0, 0.7 * H), (0, 0, 0.9 * H), 0.08 * r, fraction=0.4)
+    m.torus("plastic", (0, 0, 0.82 * H), 0.95 * r, 0.06 * r, fraction=0.8)
+    m.cylinder("metal", (0, 0, 0.9 * H), (0, 0, H), 0.7 * r, fraction=1.0)
+
+
+def _grindstone(m: Model) -> None:
+    """A grindstone: a stone wheel on an axle between the sides of a wooden frame on four
+    legs, a crank at one end and a trough under the wheel."""
+    m.main = "stone"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    leg = m.thick(0.04, 0.12 * min(m.sx, m.sy))
+    frame = 0.45 * H
+    m.legs("wood", 0.02, 0, frame, leg, square=True)
+    for x in (-W + 0.02, W - 0.02 - 2 * leg):
+        m.box("wood", (x, -D + 0.02, frame), (x + 2 * leg, D - 0.02, frame + 2 * leg))
+    radius = min(0.48 * (H - frame), 0.9 * D)
+    axle = H - radius
+    width = min(0.35 * m.sx, 0.18)
+    m.cylinder("stone", (-width / 2, 0, axle), (width / 2, 0, axle), radius, fraction=1.0)
+    m.cylinder("dark_metal", (-W + 0.02, 0, axle), (W + 0.02, 0, axle), 0.15 * radius, fraction=0.4)
+    for x in (-W + 0.02 + leg, W - 0.02 - leg):
+        m.box("wood", (x - leg, -leg, frame + 2 * leg), (x + leg, leg, axle - 0.15 * radius))
+    m.beam("dark_metal", (W + 0.02, 0, axle), (W + 0.02, 0, axle - 0.5 * radius), 0.1 * radius)
+    m.cylinder("wood", (W + 0.02, 0, axle - 0.5 * radius), (W + 0.02, -0.5 * D, axle - 0.5 * radius), 0.08 * radius, fraction=0.3)
+    m.box("dark_wood", (-0.8 * width, -0.6 * radius, frame + 2 * leg), (0.8 * width, 0.6 * radius, frame + 2 * leg + 0.12 * radius))
 
 
 def _anvil(m: Model) -> None:
@@ -745,6 +822,27 @@ def _tyre(m: Model) -> None:
     m.cylinder("dark_metal", (0.3 * r, -0.3 * m.sy, 1.3 * r), (0.3 * r, -0.36 * m.sy, 1.3 * r), 0.04 * r, fraction=0.3)  # the valve
 
 
+def _wheel(m: Model) -> None:
+    """A spoked wheel (a bicycle's, a cart's): a thin tyre round a rim, spokes to a hub,
+    standing on its tread across its box's longer side, or lying flat when its box is low."""
+    m.main = "rubber"
+    flat = m.sz < 0.6 * max(m.sx, m.sy)
+    r = (min(m.sx, m.sy) if flat else min(max(m.sx, m.sy), m.sz)) / 2
+    axis = "z" if flat else ("y" if m.sx >= m.sy else "x")
+    centre = np.array((0.0, 0.0, 0.5 * m.sz if flat else r))
+    m.torus("rubber", tuple(centre), 0.92 * r, 0.08 * r, axis=axis)
+    m.torus("metal", tuple(centre), 0.8 * r, 0.035 * r, axis=axis, fraction=0.8)
+    normal = {"z": np.array((0.0, 0.0, 1.0)), "y": np.array((0.0, 1.0, 0.0)), "x": np.array((1.0, 0.0, 0.0))}[axis]
+    m.cylinder("dark_metal", tuple(centre - 0.08 * r * normal), tuple(centre + 0.08 * r * normal), 0.08 * r, fraction=0.4)
+    u = np.cross(normal, (0.0, 0.0, 1.0) if axis != "z" else (1.0, 0.0, 0.0))
+    u /= np.linalg.norm(u)
+    v = np.cross(normal, u)
+    for k in range(12):
+        a = 2 * np.pi * (k + 0.5) / 12
+        tip = centre + 0.78 * r * (np.cos(a) * u + np.sin(a) * v)
+        m.beam("metal", tuple(centre + 0.07 * r * (np.cos(a) * u + np.sin(a) * v)), tuple(tip), 0.012 * r + 0.001)
+
+
 def _microscope(m: Model) -> None:
     """A microscope: a heavy foot, a curved arm holding an eyepiece tube over a stage."""
     m.main = "paint"
@@ -845,11 +943,14 @@ def tool(m: Model) -> None:
     """A small object by its name: an anvil on its stump, a hammer, axe, pickaxe or mallet, a
     wrench, a long-handled tool (shovel, fork, rake, broom, golf club), a sword, a lens, papers
     or a scroll, a telescope, a traffic cone, a trophy, a radio, a weathervane, a skateboard,
-    a tyre, a microscope, a skull, a till, a power tool, a compass, shears, a tape measure, a
-    gadget; else a toolbox. The variant named first
+    a tyre, a spoked wheel, a microscope, a skull, a till, a power tool, a compass, shears, a tape measure, a
+    grindstone on its frame, a shoemaker's last, a potter's wheel, a gadget; else a toolbox. The variant named first
     wins ("radio scanner" is a radio)."""
     variants = (
         (("anvil",), _anvil),
+        (("grindstone", "grinding wheel", "whetstone wheel", "sharpening wheel"), _grindstone),
+        (("last", "shoe last"), _last),
+        (("potter's wheel", "potters wheel", "pottery wheel"), _potters_wheel),
         (("hammer", "axe", "hatchet", "mallet", "gavel", "sledgehammer", "pickaxe", "pick", "mattock"), _hammer),
         (("wrench", "spanner"), _wrench),
         (("shovel", "spade", "fork", "pitchfork", "rake", "hoe", "broom", "mop", "oar", "paddle", "putter", "golf club",
@@ -872,6 +973,8 @@ def tool(m: Model) -> None:
         (("tape measure", "measuring tape"), _tape_measure),
         (("skull",), _skull),
         (("cash register", "till", "register"), _till),
+        # after the names that hold "wheel" as a modifier ("wheel gun"): a tie goes to the earlier
+        (("wheel", "bicycle wheel", "bike wheel", "cartwheel", "cart wheel", "wagon wheel"), _wheel),
         (("toolbox", "tool box", "tool chest", "toolkit", "kit"), _toolbox),
         (("gadget", "device", "remote", "walkie-talkie", "scanner", "detector", "controller", "calculator",
           "phone", "tablet"), _gadget),

@@ -1,5 +1,5 @@
 """Large open structures, upright panels and containers the catalogue does not know one by
-one: a ferris wheel, crane, carousel, stage, scaffold, grandstand, siege engine or skate
+one: a windsock, a satellite or radar dish, a ferris wheel, crane, carousel, stage, scaffold, grandstand, siege engine or skate
 ramp; a screen, banner or notice board; a box, trunk, suitcase, backpack, sack, basket, cool
 box, cage, pen or hatbox. Fronts face −Y."""
 
@@ -8,8 +8,28 @@ from __future__ import annotations
 import numpy as np
 
 from scenewright.procedural.builder import Model
-from scenewright.procedural.shapes.buildings import _crane, _windmill
+from scenewright.procedural.shapes.buildings import _crane, _dish, _windmill
 from scenewright.procedural.shapes.props import _basket, _chest, _creel
+
+
+def _windsock(m: Model) -> None:
+    """A windsock: a mast with a ring at its top and a tapering striped sock streaming from it
+    to one side, drooping a little."""
+    m.main = "canvas"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    pole = 0.015 * H + 0.01
+    m.post("metal", -W + 2 * pole, 0, 0, H, pole, fraction=0.4)
+    m.box("concrete", (-W, -2.5 * pole, 0), (-W + 4 * pole, 2.5 * pole, 0.03 * H))
+    mouth = min(D, 0.09 * H)
+    length = 2 * W - 3 * pole
+    bands = 5
+    for k in range(bands):
+        t0, t1 = k / bands, (k + 1) / bands
+        x0, x1 = -W + 3 * pole + t0 * length, -W + 3 * pole + t1 * length
+        z0, z1 = H - mouth - 0.12 * t0 * H, H - mouth - 0.12 * t1 * H
+        r0, r1 = mouth * (1 - 0.55 * t0), mouth * (1 - 0.55 * t1)
+        m.cylinder("canvas" if k % 2 == 0 else "canvas_alt", (x0, 0, z0), (x1, 0, z1), r0, r1, fraction=0.6)
+    m.torus("metal", (-W + 3 * pole - 0.004, 0, H - mouth), mouth, 0.12 * pole, axis="x", fraction=0.6)
 
 
 def _ferris_wheel(m: Model) -> None:
@@ -261,6 +281,8 @@ def structure(m: Model) -> None:
     """A large open structure; its name picks it: ferris wheel, windmill, crane, carousel,
     stage, scaffold, launch pad, grandstand, siege engine, skate ramp; else a truss gantry."""
     variants = (
+        (("windsock", "wind sock", "wind cone"), _windsock),
+        (("satellite dish", "radar dish", "radar", "dish", "radio telescope"), _dish),
         (("ferris wheel", "big wheel", "observation wheel", "wheel"), _ferris_wheel),
         (("windmill", "wind turbine"), _windmill),
         (("crane", "tower crane", "gantry crane"), _crane),
@@ -281,7 +303,8 @@ def structure(m: Model) -> None:
 
 def panel(m: Model) -> None:
     """A flat upright board: a screen on feet, a banner between poles, a notice board on
-    legs, a tilted solar panel; else a painted board on two feet."""
+    legs, a tilted solar panel, a windsock (filed with panels as a thing that flies); else a
+    painted board on two feet."""
     W, D, H = m.sx / 2, m.sy / 2, m.sz
     t = min(0.3 * D, 0.03 * max(m.sx, m.sz)) + 0.005
     if m.named("solar panel", "solar"):
@@ -295,6 +318,9 @@ def panel(m: Model) -> None:
             x = -W + (k + 0.5) * 2 * W / 6
             m.extrude("screen", [(-0.95 * D, 0.34 * H), (0.95 * D, 1.0 * H), (0.95 * D, 1.005 * H), (-0.95 * D, 0.345 * H)], "x",
                       x - 0.15 * W, x + 0.15 * W)
+        return
+    if m.named("windsock", "wind sock", "wind cone"):
+        _windsock(m)
         return
     if m.named("banner", "flag", "tapestry", "pennant"):
         m.main = "canvas"
