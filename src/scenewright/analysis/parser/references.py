@@ -13,7 +13,7 @@ from scenewright.analysis.parser.grammar import (
     _PERSON_POSSESSIVES,
     _ROOFED_VEHICLES,
 )
-from scenewright.analysis.parser.nouns import _is_plural, _position_adjective
+from scenewright.analysis.parser.nouns import _HOLDING_PARTS, _is_plural, _position_adjective
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import (
     _DETERMINERS,
@@ -118,8 +118,13 @@ class _References:
         :meth:`_relation`."""
         toks = self.toks
         k = pos
-        while k < ce and toks[k].text in ("one", "of", "both"):
+        while k < ce and toks[k].text in ("one", "of", "both", "each", "either"):
             k += 1  # "on one of her knees"
+        vocabulary = load_vocabulary()
+        if pos < k < ce and toks[k].text in _HOLDING_PARTS and k not in starts:
+            # "a glass in one hand", "a sword in each hand": whoever the clause is about
+            self._body_part = vocabulary.body_parts[toks[k].text]
+            return "someone", k + 1
         if k + 1 >= ce or toks[k].text not in _PERSON_POSSESSIVES:
             return None
         j = k + 1
