@@ -111,3 +111,10 @@ def test_companions_keep_together():
 def test_a_part_in_hand_with_no_thing_places_nobody():
     found = rels("A cat lies on the rug while the owner, a tall man with nothing in his hand, strokes its fur.")
     assert not any(r == "on" and t == "cat_1" for s, r, t in found), found
+
+
+def test_a_giver_has_the_gift_in_hand_and_stands_by_whom_it_goes_to():
+    found = rels("A clown gives the boy a kite beside the tent.")
+    assert {("kite_1", "on", "clown_1"), ("clown_1", "near", "boy_1")} <= found, found
+    found = rels("Two pilots sit in a jeep, and a mechanic hands one of them a wrench.")
+    assert {("wrench_1", "on", "mechanic_1"), ("mechanic_1", "near", "pilot_1")} <= found, found

@@ -150,3 +150,25 @@ class _Hands:
         if thing:
             c.deeds.append((doers, thing[0]))
             c.deed_end = k + 1
+
+    def _given_to(self, c: _Clause, k: int, ce: int, giver: list[int], prev_subject: list[int]) -> tuple[int, int] | None:
+        """Whom the giving verb at ``k`` gives to, and where that phrase ends, when a thing to
+        hold follows ("hands one of them a toolbox", "passes her a cup", "gives the boy a kite")."""
+        toks, j = self.toks, k + 1
+        words = [t.text for t in toks[j : j + 3]]
+        m = self._next_mention(j, ce)
+        if words == ["one", "of", "them"]:  # one of the people (or animals) named just before
+            order = [*prev_subject, *self.topic, *reversed(self.history)]
+            whom, end = [g for g in order if g not in giver and self.groups[g].count > 1 and self._living(g)], j + 3
+        elif words[:1] and words[0] in ("him", "her", "them"):
+            whom, end = self._person(c, giver, "them living" if words[0] == "them" else words[0]), j + 1
+        elif m is not None and self._lives(m.category):
+            group = self._resolve(m, self.size_of.get(m.start, []))
+            whom, end = ([group] if group >= 0 else []), m.end
+            c.groups.extend(whom)
+        else:
+            return None
+        if not whom or self._hand_object(end, ce) is None:
+            return None
+        return whom[0], end
+

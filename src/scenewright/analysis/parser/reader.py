@@ -51,6 +51,7 @@ from scenewright.analysis.parser.words import (
     _ADVERBS,
     _DETERMINERS,
     _FINITE,
+    _GIVE_VERBS,
     _HAND_VERBS,
     _HANG_VERBS,
     _HOLD,
@@ -572,6 +573,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             tool_end = self._tool_after(k, ce) if doer and self._person_at(doer[-1]) else None
             if tool_end is not None:
                 holder, hand = doer, True
+            given = self._given_to(c, k, ce, holder, prev_subject) if w in _GIVE_VERBS and holder else None
+            if given is not None and self._living(holder[-1]):
+                c.deeds.append((list(holder), given[0]))  # "a robot hands one of them a toolbox": by them
+                hand, tool_end = True, given[1]
             if w == "with" or w in _HOLD or (w, nxt) in _HOLD_PAIRS or w in ("has", "have") or hand:
                 if w in _HOLD and w.endswith("ing") and c.head is not None and c.wsub:
                     # "with a small table beside them holding a teapot": the with-thing holds it

@@ -84,6 +84,10 @@ _HAND_VERBS = {"waves", "waving", "wields", "wielding", "brandishes", "brandishi
 #: Verbs of taking an animal along ("a man walks a dachshund beside the van"): the animal keeps by
 #: its person, whom what follows places.
 _LEAD_VERBS = {"walk", "walks", "walking", "lead", "leads", "leading", "guide", "guides", "guiding"}
+#: Verbs of giving ("a robot hands one of them a toolbox"): the giver has the thing in hand and
+#: stands by whom it is given to.
+_GIVE_VERBS = {"hands", "handing", "hand", "gives", "giving", "give", "passes", "passing", "pass", "offers",
+               "offering", "offer"}  # fmt: skip
 #: Use verbs whose one thing several people have between them ("two girls share a bento box"): no
 #: thing for each.
 _SHARE_VERBS = {"share", "shares", "sharing"}
