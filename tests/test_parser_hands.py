@@ -118,3 +118,16 @@ def test_a_giver_has_the_gift_in_hand_and_stands_by_whom_it_goes_to():
     assert {("kite_1", "on", "clown_1"), ("clown_1", "near", "boy_1")} <= found, found
     found = rels("Two pilots sit in a jeep, and a mechanic hands one of them a wrench.")
     assert {("wrench_1", "on", "mechanic_1"), ("mechanic_1", "near", "pilot_1")} <= found, found
+
+
+def test_what_is_not_in_hand_or_no_perch_stays_so():
+    found = rels("A boy feeds the goats from a bucket.")  # what the feed comes out of carries nobody
+    assert ("boy_1", "on", "bucket_1") not in found, found
+    found = rels("A girl sits on a bench with her dog.")  # a dog with her is by her, not in her arms
+    assert ("dog_1", "near", "girl_1") in found and ("dog_1", "on", "girl_1") not in found, found
+    found = rels("A girl writes on the blackboard.")  # too big to hold: written at
+    assert ("girl_1", "near", "blackboard_1") in found, found
+    found = rels("An old man sits with a cup of tea at the table.")  # "with" right after a posture verb
+    assert {("cup_1", "on", "man_1"), ("man_1", "near", "table_1")} <= found, found
+    found = rels("A blacksmith holds a glowing horseshoe with tongs over the anvil.")
+    assert ("horseshoe_1", "on", "blacksmith_1") in found, found

@@ -8,10 +8,10 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from scenewright.analysis.parser.grammar import _COPULAS, _PERSON_POSSESSIVES
+from scenewright.analysis.parser.grammar import _COPULAS, _PERSON_POSSESSIVES, _RIDDEN
 from scenewright.analysis.parser.nouns import _Mention
 from scenewright.analysis.parser.vocabulary import load_vocabulary
-from scenewright.analysis.parser.words import _DETERMINERS, _HAND_PAIRS, _NUMBERS, _ORDINALS, _STOP
+from scenewright.analysis.parser.words import _DETERMINERS, _HAND_PAIRS, _NUMBERS, _ORDINALS, _STOP, _is_verb
 
 if TYPE_CHECKING:
     from scenewright.analysis.parser.reader import _Clause
@@ -103,14 +103,16 @@ class _Hands:
         w = self.toks[j].text
         # ("feed", "weed" end as past participles do, but are no describing words)
         describing = load_vocabulary().is_adjective(w) and not w.endswith("eed")
-        return j in self.ends and j not in self.by_start and w.isalpha() and w not in _STOP and not describing
+        verb = w not in _STOP or _is_verb(w)  # ("sits", "stands" are stop words of noun phrases)
+        return j in self.ends and j not in self.by_start and w.isalpha() and verb and not describing
 
     def _acts_from(self, k: int) -> bool:
         """Whether the "from" at ``k`` says where a doer is: after a verb and what it acts on, when
         that is named by a pronoun, lives or is too big to hold ("plays it from a narrow bench",
         "two children feed ducks from a footbridge"; not "pulls a rope from the barrel")."""
-        if not self._after_verb(k):
-            return False
+        perch = self._next_mention(k + 1, len(self.toks))
+        if not self._after_verb(k) or perch is not None and not load_vocabulary().carries(perch.category, perch.phrase, _RIDDEN):
+            return False  # ("feeds the goats from a bucket": what the feed comes out of)
         j = k - 1
         while j >= 0 and k - j <= 6:
             w = self.toks[j].text

@@ -584,6 +584,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     k += 1
                     last_event_end = k
                     continue
+                self._close_with(c)  # "holds a horseshoe with tongs": the horseshoe is held before the tongs come
                 c.head = [c.each] if c.each is not None else (holder if tool_end is not None else (c.main or list(prev_subject)))
                 mine = nxt in _PERSON_POSSESSIVES  # "by the flag with his mallet": his, not the flag's
                 after_target = bool(c.last_target) and c.last_target_end == k
@@ -756,9 +757,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 )
                 if held and not c.hand and any(r[1] == g for r in self.relations):
                     continue  # "a clerk at the counter, with a radio beside it": placed on its own
-                # ("a squire holds a horse by the reins": too big for arms, by him)
+                # ("a squire holds a horse by the reins": too big for arms, by him; "a girl with her dog": by her)
                 big = c.hold and max(self.groups[g].size) > _HANDHELD_SIZE
-                if (big or not c.hold) and self._living(g) and self._living(h) and not any(r[1] == g for r in self.relations):
+                if (big or c.hand or not c.hold) and self._living(g) and self._living(h) and not any(r[1] == g for r in self.relations):
                     self._relate("near", [g], h)  # "a dog waits with its handler", "a farmer with two sheepdogs"
                     c.produced = True
                     continue
@@ -842,6 +843,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             srcs = list(c.main)
             if kind in ("on", "in", "on top") and c.deeds and c.deed_end == last_event_end and self._small(c.deeds[-1][1]):
                 srcs = [c.deeds[-1][1]]  # "a smith hammers a horseshoe on the anvil": the horseshoe is on it
+        if kind == "on" and srcs and all(self._person_at(g) for g in srcs) and self._pair_before(rel.start):
+            kind = "near"  # "a girl writes on the blackboard": at it (a slate in hand was read as held)
         if kind == "from" and c.deeds and c.deed_end in (last_event_end, rel.start):
             srcs = list(c.deeds[-1][0])  # "two children feed ducks from a footbridge": the children are on it
         if kind == "from" and not any(self._living(g) for g in srcs):
