@@ -131,3 +131,15 @@ def test_what_is_not_in_hand_or_no_perch_stays_so():
     assert {("cup_1", "on", "man_1"), ("man_1", "near", "table_1")} <= found, found
     found = rels("A blacksmith holds a glowing horseshoe with tongs over the anvil.")
     assert ("horseshoe_1", "on", "blacksmith_1") in found, found
+
+
+def test_juggled_things_are_in_hand_whatever_their_size_and_no_person_is_on_another():
+    found = rels("A street performer juggles flaming torches beside the fountain.")
+    assert {("torch_1", "on", "street_performer_1"), ("street_performer_1", "side of", "fountain_1")} <= found, found
+    found = rels("A nurse checks on a patient in the bed.")
+    assert ("nurse_1", "near", "patient_1") in found and ("nurse_1", "on", "patient_1") not in found, found
+
+
+def test_a_participle_with_its_own_object_ends_the_phrase_before_it():
+    found = rels("A man leans against the wall reading a book.")
+    assert ("books_1", "on", "man_1") in found and ("man_1", "side of", "books_1") not in found, found

@@ -1025,6 +1025,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         for g in srcs if parts_each and part is not None else []:
             if g in c.groups and g not in self.numbered and self.groups[g].count == 1:
                 self.groups[g].count = parts_each
+        if kind == "on" and body is None and all(self._person_at(g) for g in [*srcs, *targets]):
+            kind = "near"  # "a nurse checks on a patient": by another person, never on one
         for t in targets:
             for one in ordinals or (instance,):
                 self._relate(kind, srcs, t, hang, one)

@@ -76,6 +76,9 @@ class _References:
                 return "that one", j + 1  # "at the foot of the tallest one": one of a group named before
             # a noun, not a verb, after a determiner or a count ("its walls", "two rows of")
             after_determiner = j > pos and (toks[j - 1].text in _DETERMINERS or toks[j - 1].text in _NUMBERS)
+            # "leans against the wall reading a book": a participle with its own object ends the phrase
+            if w.endswith("ing") and j + 1 < ce and toks[j + 1].text in _DETERMINERS and j > pos:
+                break
             if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
                 w not in _STOP and w[0].isalnum() and (after_determiner or not _is_verb(w) or self._part_word(w))
             ):

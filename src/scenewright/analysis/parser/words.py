@@ -80,7 +80,7 @@ _HOLD_PAIRS = {("loaded", "with"), ("topped", "with"), ("set", "with"), ("laid",
 #: with "holds".
 _HAND_VERBS = {"waves", "waving", "wields", "wielding", "brandishes", "brandishing", "clutches", "clutching",
                "grips", "gripping", "clasps", "clasping", "swinging", "twirls", "twirling", "raises",
-               "raising"}  # fmt: skip
+               "raising", "juggle", "juggles", "juggling"}  # fmt: skip
 #: Verbs of taking an animal along ("a man walks a dachshund beside the van"): the animal keeps by
 #: its person, whom what follows places.
 _LEAD_VERBS = {"walk", "walks", "walking", "lead", "leads", "leading", "guide", "guides", "guiding"}
@@ -112,7 +112,7 @@ _USE_VERBS = {
     "eat", "eats", "eating", "munch", "munches", "munching", "nibble", "nibbles", "nibbling", "chew", "chews", "chewing", "gnaw", "gnaws", "gnawing",
     "read", "reads", "reading", "play", "plays", "playing", "strum", "strums", "strumming",
     "bang", "bangs", "banging", "shake", "shakes", "shaking", "ring", "rings", "ringing",
-    "lift", "lifts", "lifting", "juggle", "juggles", "juggling", "toss", "tosses", "tossing",
+    "lift", "lifts", "lifting", "toss", "tosses", "tossing",
     "share", "shares", "sharing", "sharpen", "sharpens", "sharpening", "polish", "polishes", "polishing",
     "paint", "paints", "painting", "carve", "carves", "carving", "whittle", "whittles", "whittling",
     "knit", "knits", "knitting", "sew", "sews", "sewing", "mend", "mends", "mending",
