@@ -143,3 +143,10 @@ def test_juggled_things_are_in_hand_whatever_their_size_and_no_person_is_on_anot
 def test_a_participle_with_its_own_object_ends_the_phrase_before_it():
     found = rels("A man leans against the wall reading a book.")
     assert ("books_1", "on", "man_1") in found and ("man_1", "side of", "books_1") not in found, found
+
+
+def test_an_instrument_played_is_in_hand_and_a_pet_with_one_keeps_its_own_place():
+    found = rels("A musician plays the violin under a lamp post.")
+    assert {("guitar_1", "on", "musician_1"), ("musician_1", "near", "lamp_post_1")} <= found, found  # a violin is a guitar
+    found = rels("A girl reads a comic on the sofa, with her kitten asleep under it.")
+    assert ("girl_1", "on", "sofa_1") in found and not any(s == "girl_1" and r == "near" for s, r, t in found), found

@@ -19,7 +19,7 @@ _PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None,
 _GROUND_KINDS = ("left of", "right of", "in front of", "behind", "side of", "near", "far", "left", "right")
 #: Besides those of the ground, phrase kinds that place a person rather than what they have in hand
 #: ("reads a book on the bench", "eats a sandwich at the table").
-_HOLDER_KINDS = ("on", "at", "in", "between")
+_HOLDER_KINDS = ("on", "at", "in", "between", "under")
 #: Phrase kinds read as one of the scene's relations whatever they join.
 _KIND_RELATION = {"left": "left of", "right": "right of", "flank elliptic": "flank", "hanging from": "above",
                   "leaning on": "side of", "along": "side of"}  # fmt: skip
@@ -70,7 +70,7 @@ _PERSONAL = ("him", "her", "himself", "herself", "someone")
 #: Possessives of people and the pronoun that names their owner ("at his feet" → him).
 _PERSON_POSSESSIVES = {"his": "him", "her": "her", "their": "them living", "my": "him", "your": "him"}
 #: The longest side (m) of a thing a person has in hand when the text says "with" ("a wheel gun").
-_HANDHELD_SIZE = 1.0
+_HANDHELD_SIZE = 1.1
 #: The longest side (m) of a tool a person works with in hand ("a long paddle", "a telescope").
 _TOOL_SIZE = 1.6
 #: Depth (m) at most of a board or a frame that hangs or leans rather than stands.

@@ -827,6 +827,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # "a dad with his putter beside the windmill": what is in hand goes where its holder is
             # ("reads a book on the bench", "sharpen their spears on a grindstone": the readers and sharpeners)
             in_hand = c.hand and target not in _PERSONAL and (kind in _GROUND_KINDS or kind in _HOLDER_KINDS)
+            # ("with his terrier asleep under it": a living with-thing is no thing in hand, its phrase places it)
+            in_hand = in_hand and not any(self._living(g) for g in c.wsub)
             if c.wsub and not closed and not c.expect_new and not in_hand:
                 srcs = list(c.wsub)
                 if kind in ("on", "above", "over", "on top", "under"):
