@@ -785,8 +785,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         body, part = self._body_part, self._part  # "on her knees": by the person, as the part says
         self._perch_part = part in load_vocabulary().carriers.get("perches", ())
         parts_each = self._parts_each
-        if (body == "near" and kind != "around") or (body == "on" and kind in ("on", "on top", "in")):
-            kind = body  # ("hens around her feet" stay around her)
+        if (body == "near" and kind != "around") or (body == "on" and kind in ("on", "on top", "in", "under")):
+            kind = body  # ("hens around her feet" stay around her; "a surfboard under his arm" is carried)
         between = [t.text for t in toks[last_event_end : rel.start]]
         # sources: the noun the phrase follows when nothing but adverbs lies between
         srcs: list[int]
