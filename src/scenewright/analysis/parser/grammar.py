@@ -17,6 +17,9 @@ _FORMATION_NOUNS = {"row": "row", "line": "row", "rows": "rows", "lines": "rows"
 _PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None, "foot of": None, "at": None}
 #: Phrase kinds that place a thing on the ground beside another (not on it, not above it).
 _GROUND_KINDS = ("left of", "right of", "in front of", "behind", "side of", "near", "far", "left", "right")
+#: Besides those of the ground, phrase kinds that place a person rather than what they have in hand
+#: ("reads a book on the bench", "eats a sandwich at the table").
+_HOLDER_KINDS = ("on", "at", "in", "between", "under")
 #: Phrase kinds read as one of the scene's relations whatever they join.
 _KIND_RELATION = {"left": "left of", "right": "right of", "flank elliptic": "flank", "hanging from": "above",
                   "leaning on": "side of", "along": "side of"}  # fmt: skip
@@ -52,6 +55,8 @@ _BUILDING_PARTS = ("roof", "rooftop", "porch", "step", "doorstep", "chimney", "e
 #: bucket"); a person or an animal is on every kind of carrier it is in ("fans in the stand"), a
 #: guessed structure only when its name is listed (one in a dome is inside it).
 _VESSEL_KINDS = ("seats", "vehicles", "containers")
+#: Carrier kinds a person sits, rides or stands on, and never has in hand ("rows with a canoe").
+_RIDDEN = ("seats", "vehicles", "mounts", "perches")
 #: What a thing is mounted on as a part of it ("lanterns on tall poles").
 _MOUNTS = ("pole", "stick", "mast", "stake", "spike")
 #: Verbs that join a subject to what it is, not to a thing it acts on.
@@ -59,12 +64,15 @@ _COPULAS = ("is", "are", "was", "were", "be", "has", "have", "had", "seems", "lo
 #: A perch no taller than this, and this many times a thing's footprint, is a platform whose middle
 #: the thing stands on ("a throne in the centre of the stage").
 _PLATFORM_HEIGHT, _PLATFORM_AREA = 3.5, 4.0
-#: Pronouns that name a person or an animal.
-_PERSONAL = ("him", "her", "himself", "herself")
+#: Pronouns that name a person or an animal ("someone": the owner of a body part no possessive
+#: names, "a glass in one hand").
+_PERSONAL = ("him", "her", "himself", "herself", "someone")
 #: Possessives of people and the pronoun that names their owner ("at his feet" → him).
 _PERSON_POSSESSIVES = {"his": "him", "her": "her", "their": "them living", "my": "him", "your": "him"}
 #: The longest side (m) of a thing a person has in hand when the text says "with" ("a wheel gun").
-_HANDHELD_SIZE = 1.0
+_HANDHELD_SIZE = 1.1
+#: The longest side (m) of a tool a person works with in hand ("a long paddle", "a telescope").
+_TOOL_SIZE = 1.6
 #: Depth (m) at most of a board or a frame that hangs or leans rather than stands.
 _THIN = 0.12
 #: Words that open a relative clause about the noun before them.

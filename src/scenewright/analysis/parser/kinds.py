@@ -9,7 +9,9 @@ from scenewright.analysis.parser.grammar import (
     _LIVING,
     _PLATFORM_AREA,
     _PLATFORM_HEIGHT,
+    _RIDDEN,
     _THIN,
+    _TOOL_SIZE,
 )
 from scenewright.analysis.parser.nouns import _Mention, _is_plural
 from scenewright.analysis.parser.vocabulary import load_vocabulary
@@ -57,7 +59,18 @@ class _Kinds:
         """A thing a person carries with them: no living thing, and one that stands on tables or
         is small enough to hold ("a pickaxe", "a clipboard"), not "a man with a ladder"."""
         group = self.groups[g]
-        return not self._living(g) and (group.rests == "surface" or max(group.size) <= _HANDHELD_SIZE)
+        return self._holdable(group.category, group.name, group.size, group.rests)
+
+    def _holdable(self, category: str, name: str, size, rests: str, tool: bool = False) -> bool:
+        """What :meth:`_handheld` says of a thing of this category, name, size and rest; with
+        ``tool``, what a person works with in hand ("stirs it with a long paddle", "peers through
+        a telescope"): up to ``_TOOL_SIZE`` long, and nothing one sits or rides on ("rows with a
+        canoe" is no paddle)."""
+        if self._lives(category):
+            return False
+        if tool:
+            return max(size) <= _TOOL_SIZE and not load_vocabulary().carries(category, name, _RIDDEN)
+        return rests == "surface" or max(size) <= _HANDHELD_SIZE
 
     def _small(self, *groups: int) -> bool:
         """All of these stand on surfaces (tabletop things)."""

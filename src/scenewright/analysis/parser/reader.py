@@ -16,6 +16,8 @@ from scenewright.analysis.parser.grammar import (
     _FORMATIONS,
     _FORMATION_NOUNS,
     _GROUND_KINDS,
+    _HANDHELD_SIZE,
+    _HOLDER_KINDS,
     _KIND_RELATION,
     _OWN_SIDES,
     _PERSONAL,
@@ -23,9 +25,11 @@ from scenewright.analysis.parser.grammar import (
     _PLACE_KINDS,
     _POSSESSED,
     _RELATIVES,
+    _RIDDEN,
     _SEATS,
     _VESSEL_KINDS,
 )
+from scenewright.analysis.parser.hands import _Hands
 from scenewright.analysis.parser.kinds import _Kinds
 from scenewright.analysis.parser.nouns import (
     _Group,
@@ -47,17 +51,20 @@ from scenewright.analysis.parser.words import (
     _ADVERBS,
     _DETERMINERS,
     _FINITE,
-    _HAND_PAIRS,
+    _GIVE_VERBS,
     _HAND_VERBS,
     _HANG_VERBS,
     _HOLD,
     _HOLD_PAIRS,
+    _LEAD_VERBS,
     _NUMBERS,
     _ORDINALS,
     _OWNER_PRONOUNS,
     _OWN_PLACE,
     _PLANT_SHAPES,
+    _SHARE_VERBS,
     _STOP,
+    _USE_VERBS,
     _is_verb,
 )
 from scenewright.core.catalogue import Category, load_catalogue, singular
@@ -75,6 +82,8 @@ class _Clause:
     #: The with-things are in a person's hands ("with his putter", "waves a flag"): carried by
     #: the holder, who keeps the clause's next placing.
     hand: bool = False
+    #: The holders share the one thing in hand ("sharing a thermos"): not one each.
+    shared: bool = False
     wsub_related: set[int] = field(default_factory=set)
     last_target: list[int] = field(default_factory=list)
     last_target_end: int = -1
@@ -105,15 +114,17 @@ class _Clause:
     last_srcs: list[int] = field(default_factory=list)
     #: Thing → what this clause put it on or in: no "it" of its own ("a parrot in a cage watches it").
     supports: dict[int, list[int]] = field(default_factory=dict)
-    #: (doers, thing) for a living subject acting on a thing too big to hold ("a porter pushes a cart").
+    #: (doers, thing) for a living subject acting on a thing ("a porter pushes a cart").
     deeds: list[tuple[list[int], int]] = field(default_factory=list)
+    #: Where the last thing acted on ends: a phrase right after it places it ("stirs a pot on the stove").
+    deed_end: int = -1
 
 
-class _Reader(_Contents, _References, _Kinds):
+class _Reader(_Contents, _References, _Kinds, _Hands):
     """One pass over the text that builds groups of objects and relations between them. What is
-    content (:mod:`.contents`), what a reference names (:mod:`.references`) and what kind of thing
-    a group is (:mod:`.kinds`) are its parts in their own modules; the tables they share are in
-    :mod:`.grammar`."""
+    content (:mod:`.contents`), what a reference names (:mod:`.references`), what kind of thing
+    a group is (:mod:`.kinds`) and what people hold or act on (:mod:`.hands`) are its parts in
+    their own modules; the tables they share are in :mod:`.grammar`."""
 
     def __init__(self, text: str):
         self.text = text
@@ -135,6 +146,8 @@ class _Reader(_Contents, _References, _Kinds):
         #: Where the sentence before this one starts in ``history``: a posture verb's "in it"
         #: looks for a seat no further back.
         self._recent_from = 0
+        #: Where this sentence starts in ``history``.
+        self._sentence_from = 0
         #: (thing, person) groups where the text puts the thing on a part of the person.
         self.carried: set[tuple[int, int]] = set()
         #: Place words that set the scene rather than stand in it ("a hangar with a spaceship").
@@ -279,21 +292,25 @@ class _Reader(_Contents, _References, _Kinds):
                 self.size_of.setdefault(owner, []).append((dim, value))
         taken = {k for m in mentions for k in range(m.start, m.end)}
         starts = {m.start for m in mentions}
-        # "from" places only after a verb one does from where one is ("a heron watches from a rock");
-        # "pulls a rope from the barrel" names where the rope comes from
-        self.rel_at = {
-            r.start: r for r in _find_relations(toks, taken)
-            if (r.kind != "at" or self._names_thing(r.end, starts)) and (r.kind != "from" or self._verb_before(r.start, self._lookout))
-        }  # fmt: skip
+        # "from" places only after a verb one does from where one is ("a heron watches from a rock"),
+        # or one done to something too big to hold (below); "pulls a rope from the barrel" names
+        # where the rope comes from
+        found = [r for r in _find_relations(toks, taken) if r.kind != "at" or self._names_thing(r.end, starts)]
+        self.rel_at = {r.start: r for r in found if r.kind != "from" or self._verb_before(r.start, self._lookout)}
         self._rows_then_with(mentions)
         #: Mentions the text puts on a wall ("a luggage rack on the wall"): hung, so "above" holds.
         self.on_wall = {m.start for m in mentions if self._on_wall_after(m.end)}
         self._read_looks(mentions)
         self.by_start = {m.start: m for m in mentions if not m.content}
         self.content_at = {k for m in mentions if m.content for k in range(m.start, m.end)}
+        self.ends = {m.end for m in mentions if not m.content}
+        #: Words of a noun phrase, its describing words too ("a sleeping dog").
+        self.named_at = {k for m in mentions for k in range(m.start - len(m.adjectives), m.end)}
+        self.rel_at.update((r.start, r) for r in found if r.kind == "from" and self._acts_from(r.start))
         sentence_from = 0
         for sentence in _split(toks):
             self._recent_from, sentence_from = sentence_from, len(self.history)
+            self._sentence_from = sentence_from
             prev_subject: list[int] = []
             pending: list[tuple[str, list[int]]] = []
             last_rels: list[tuple[str, list[int]]] = []
@@ -515,6 +532,8 @@ class _Reader(_Contents, _References, _Kinds):
         while j < ce and j not in self.rel_at and (toks[j].text in _DETERMINERS or toks[j].text in _ADVERBS):
             j += 1
         starts_with_rel = j in self.rel_at
+        # ", sipping coffee from a cup": a clause that opens with a participle is the subject's before
+        participial = not c.first and k < ce and toks[k].text.endswith("ing") and k not in self.by_start
         c.unknown_subject = j > k and toks[k].text in ("a", "an", "the") and j not in self.by_start and not starts_with_rel
         last_event_end = cs
         while k < ce:
@@ -528,6 +547,11 @@ class _Reader(_Contents, _References, _Kinds):
             each_seat = k + 1 in self.rel_at and self.rel_at[k + 1].kind in ("in", "on", "at")
             if w == "each" and (each_part or each_passive or each_hold or each_seat):
                 plural = [g for g in [*self.history, *c.groups] if self.groups[g].count > 1]
+                # "four astronauts sit on stools around a table, each holding a pouch": the holders
+                holding = nxt in _HOLD or nxt in _HAND_VERBS or nxt in _USE_VERBS
+                people = [g for g in [*c.subjects, *prev_subject, *self.topic] if self.groups[g].count > 1 and self._living(g)]
+                if holding and people:
+                    plural = people[:1]
                 if plural:
                     c.each = plural[-1]
                 k += 1
@@ -537,11 +561,22 @@ class _Reader(_Contents, _References, _Kinds):
                 c.each_own = members[-1]  # "two helmsmen sit ..., each in a steel seat": a seat each
                 k += 1
                 continue
-            holder = c.main or list(prev_subject)  # ", peering through a loupe": the subject before
+            holder = c.main or list(prev_subject)  # ", holding a lamp": the subject before
             # (a hand verb that opens a relation phrase is no holding: "waves at a passing van")
-            hand = (w in _HAND_VERBS or (w, nxt) in _HAND_PAIRS) and k not in self.rel_at and bool(holder) and (
-                self._person_at(holder[-1])
+            # (an animal has in hand what it plays with or eats: "a bear bangs a spoon")
+            hand = k not in self.rel_at and bool(holder) and (
+                (w in _HAND_VERBS and self._person_at(holder[-1]))
+                or (w in _USE_VERBS and self._living(holder[-1]) and self._hand_object(k + 1, ce) is not None)
             )
+            # "sipping coffee from a paper cup", "practises with five clubs": in the doer's hand
+            doer = list(prev_subject) if participial else (c.subjects or holder)
+            tool_end = self._tool_after(k, ce) if doer and self._person_at(doer[-1]) else None
+            if tool_end is not None:
+                holder, hand = doer, True
+            given = self._given_to(c, k, ce, holder, prev_subject) if w in _GIVE_VERBS and holder else None
+            if given is not None and self._living(holder[-1]):
+                c.deeds.append((list(holder), given[0]))  # "a robot hands one of them a toolbox": by them
+                hand, tool_end = True, given[1]
             if w == "with" or w in _HOLD or (w, nxt) in _HOLD_PAIRS or w in ("has", "have") or hand:
                 if w in _HOLD and w.endswith("ing") and c.head is not None and c.wsub:
                     # "with a small table beside them holding a teapot": the with-thing holds it
@@ -549,11 +584,15 @@ class _Reader(_Contents, _References, _Kinds):
                     k += 1
                     last_event_end = k
                     continue
-                c.head = [c.each] if c.each is not None else (c.main or list(prev_subject))
+                self._close_with(c)  # "holds a horseshoe with tongs": the horseshoe is held before the tongs come
+                c.head = [c.each] if c.each is not None else (holder if tool_end is not None else (c.main or list(prev_subject)))
                 mine = nxt in _PERSON_POSSESSIVES  # "by the flag with his mallet": his, not the flag's
                 after_target = bool(c.last_target) and c.last_target_end == k
                 between = c.last_kind == "between"
-                if after_target and (
+                # ("a sheep waits by the gate with its shepherd": a living thing's companion is its own)
+                fellow = self._next_mention(k + 1, ce)
+                fellow = fellow is not None and self._lives(fellow.category) and all(self._living(h) for h in c.head)
+                if after_target and not fellow and (
                     (w == "with" and not mine and (self._animate(*c.head) or between)) or (w, nxt) in _HOLD_PAIRS
                 ):  # "a baker stands behind the counter with a tray on it", "between a drum and a shelf with
                     # cups on it", "sits at a desk covered in monitors": the target's
@@ -562,7 +601,8 @@ class _Reader(_Contents, _References, _Kinds):
                 # "with his putter": a possessive after "with" says the person has it in hand
                 hand = hand or (w == "with" and mine and all(self._person_at(h) for h in c.head))
                 c.hold, c.hand = w in _HOLD or (w, nxt) in _HOLD_PAIRS or hand, hand
-                k += 2 if (w, nxt) in _HOLD_PAIRS or (w, nxt) in _HAND_PAIRS else 1
+                c.shared = w in _SHARE_VERBS
+                k = tool_end if tool_end is not None else k + (2 if (w, nxt) in _HOLD_PAIRS else 1)
                 last_event_end = k
                 continue
             if k in self.by_start:
@@ -598,9 +638,22 @@ class _Reader(_Contents, _References, _Kinds):
                     # "an astronaut plants a flag next to it": the verb's object takes what follows,
                     # unless a person holds it ("a man reads a newspaper on the bench": he is on it)
                     verb_object = self._object_of_verb(c, last_event_end, m.start)
-                    if verb_object and self._living(c.main[-1]) and not self._small(g) and not c.expect_new:
+                    # "a man walks a dachshund beside the van": the dog by the man, the man by the van
+                    led = verb_object and self._living(g) and self._person_at(c.main[-1]) and not c.expect_new and any(
+                        t.text in _LEAD_VERBS for t in toks[last_event_end : m.start]
+                    )
+                    # "a man tips a crate of grapes into the trailer": by the trailer
+                    into = bool(c.deeds) and c.deed_end == last_event_end and any(
+                        t.text in ("into", "onto") for t in toks[last_event_end : m.start]
+                    )
+                    if into:
+                        c.deeds[-1], c.deed_end = (c.deeds[-1][0], g), m.end
+                    elif led:
+                        c.deeds.append(([g], c.main[-1]))
+                    elif verb_object and self._living(c.main[-1]) and not c.expect_new:
                         c.deeds.append((list(c.main), g))
-                    if not (verb_object and self._living(c.main[-1]) and self._small(g) and not c.expect_new):
+                        c.deed_end = m.end
+                    if not (led or into or verb_object and self._living(c.main[-1]) and self._small(g) and not c.expect_new):
                         c.main = [g] if c.expect_new or verb_object else [*c.main, g]
                     if not c.verb_seen:
                         c.subjects.append(g)
@@ -613,14 +666,22 @@ class _Reader(_Contents, _References, _Kinds):
                 k = self._relation(c, self.rel_at[k], ce, prev_subject, starts_with_rel, last_event_end)
                 last_event_end = k
                 continue
+            if c.head is None and k not in self.content_at:
+                self._deed_on_pronoun(c, k, list(prev_subject) if participial else [], prev_subject)
             k += 1
         self._close_with(c)
         self._do_deeds(c)
 
     def _do_deeds(self, c: _Clause) -> None:
         """"A porter pushes a cart", "two engineers check the console": whoever acts on a thing
-        too big to hold stands by it, unless the clause already relates the two."""
+        too big to hold stands by it, unless the clause already relates the two; one who acts on
+        a small thing stands by what it is on ("stirs a pot on the stove": by the stove)."""
         for doers, thing in c.deeds:
+            if self._small(thing):
+                hosts = [r[2] for r in self.relations if r[0] == "on" and r[1] == thing and r[2] not in doers]
+                if not hosts:
+                    continue
+                thing = hosts[-1]
             free = [d for d in doers if not any({r[1], r[2]} == {d, thing} for r in self.relations)]
             self._relate("near", free, thing)
 
@@ -633,7 +694,10 @@ class _Reader(_Contents, _References, _Kinds):
         gap = [t.text for t in self.toks[start:end]]
         if any(w in ("and", "or", ",", "with", "while") for w in gap):
             return False
-        return any(_is_verb(w) and w not in _COPULAS for w in gap)
+        # ("two children feed ducks": a verb after a plural subject has no -s; "two kids are loading
+        # pumpkins", but "a mother pushing a pram" names the mother)
+        progressive = any(self.toks[j - 1].text in _COPULAS and self.toks[j].text.endswith("ing") for j in range(start + 1, end))
+        return progressive or any((_is_verb(w) or self._finite_at(j)) and w not in _COPULAS for j, w in enumerate(gap, start))
 
     def _verb_before(self, pos: int, test) -> bool:
         """A verb that passes ``test`` earlier in the same clause part ("dozes in it")."""
@@ -676,7 +740,8 @@ class _Reader(_Contents, _References, _Kinds):
 
     def _close_with(self, c: _Clause) -> None:
         """"A desk with a lamp", "a cart loaded with barrels": small things with no place of
-        their own stand on what they came with."""
+        their own stand on what they came with; people and animals keep by each other ("a dog
+        with its handler")."""
         if c.head is None:
             return
         for g in c.wsub:
@@ -687,14 +752,23 @@ class _Reader(_Contents, _References, _Kinds):
                     continue  # "with a stone lantern beside it": placed by the head, not on it
                 rests = self.groups[g].rests
                 # "a miner with a pickaxe", "waves a flag" (a horse held by the reins is no load)
-                held = self._person_at(h) and not self._living(g) and (c.hand or self._handheld(g))
+                held = (self._person_at(h) or c.hand and self._living(h)) and not self._living(g) and (
+                    c.hand or self._handheld(g)
+                )
                 if held and not c.hand and any(r[1] == g for r in self.relations):
                     continue  # "a clerk at the counter, with a radio beside it": placed on its own
+                # ("a squire holds a horse by the reins": too big for arms, by him; "a girl with her dog": by her)
+                big = c.hold and max(self.groups[g].size) > _HANDHELD_SIZE
+                if (big or c.hand or not c.hold) and self._living(g) and self._living(h) and not any(r[1] == g for r in self.relations):
+                    self._relate("near", [g], h)  # "a dog waits with its handler", "a farmer with two sheepdogs"
+                    c.produced = True
+                    continue
                 if c.hold or held or (rests == "surface" and self.catalogue[self.groups[h].category].support):
                     self._relate("on", [g], h)
                     c.produced = True
                     if held or (c.hold and self._person_at(h) and not self._living(g)):
-                        self.in_hand.append((g, h))
+                        if not c.shared:
+                            self.in_hand.append((g, h))
                         self.carried.add((g, h))
 
     def _relation(self, c: _Clause, rel: _Rel, ce: int, prev_subject, starts_with_rel, last_event_end) -> int:
@@ -711,8 +785,8 @@ class _Reader(_Contents, _References, _Kinds):
         body, part = self._body_part, self._part  # "on her knees": by the person, as the part says
         self._perch_part = part in load_vocabulary().carriers.get("perches", ())
         parts_each = self._parts_each
-        if (body == "near" and kind != "around") or (body == "on" and kind in ("on", "on top", "in")):
-            kind = body  # ("hens around her feet" stay around her)
+        if (body == "near" and kind != "around") or (body == "on" and kind in ("on", "on top", "in", "under")):
+            kind = body  # ("hens around her feet" stay around her; "a surfboard under his arm" is carried)
         between = [t.text for t in toks[last_event_end : rel.start]]
         # sources: the noun the phrase follows when nothing but adverbs lies between
         srcs: list[int]
@@ -751,7 +825,10 @@ class _Reader(_Contents, _References, _Kinds):
                 and (k - 1 not in self.content_at or toks[k].text in _FINITE)
             )
             # "a dad with his putter beside the windmill": what is in hand goes where its holder is
-            in_hand = c.hand and target not in _PERSONAL and kind in _GROUND_KINDS
+            # ("reads a book on the bench", "sharpen their spears on a grindstone": the readers and sharpeners)
+            in_hand = c.hand and target not in _PERSONAL and (kind in _GROUND_KINDS or kind in _HOLDER_KINDS)
+            # ("with his terrier asleep under it": a living with-thing is no thing in hand, its phrase places it)
+            in_hand = in_hand and not any(self._living(g) for g in c.wsub)
             if c.wsub and not closed and not c.expect_new and not in_hand:
                 srcs = list(c.wsub)
                 if kind in ("on", "above", "over", "on top", "under"):
@@ -760,8 +837,18 @@ class _Reader(_Contents, _References, _Kinds):
                 self._close_with(c)
                 srcs = list(c.head)
                 c.head, c.wsub = None, []
+                if body == "on" and not in_hand:
+                    return end  # "a woman with clippers in her hand": no object named in hand, none placed
+                if in_hand and kind == "on" and isinstance(target, list) and not self._carrier(target[0], _RIDDEN):
+                    kind = "near"  # one works on a grindstone or an anvil standing at it
         else:
             srcs = list(c.main)
+            if kind in ("on", "in", "on top") and c.deeds and c.deed_end == last_event_end and self._small(c.deeds[-1][1]):
+                srcs = [c.deeds[-1][1]]  # "a smith hammers a horseshoe on the anvil": the horseshoe is on it
+        if kind == "on" and srcs and all(self._person_at(g) for g in srcs) and self._pair_before(rel.start):
+            kind = "near"  # "a girl writes on the blackboard": at it (a slate in hand was read as held)
+        if kind == "from" and c.deeds and c.deed_end in (last_event_end, rel.start):
+            srcs = list(c.deeds[-1][0])  # "two children feed ducks from a footbridge": the children are on it
         if kind == "from" and not any(self._living(g) for g in srcs):
             # "a guard waves a flag from the tower": the one who waves is up there
             srcs = [g for g in c.subjects if self._living(g)] or srcs
@@ -940,6 +1027,8 @@ class _Reader(_Contents, _References, _Kinds):
         for g in srcs if parts_each and part is not None else []:
             if g in c.groups and g not in self.numbered and self.groups[g].count == 1:
                 self.groups[g].count = parts_each
+        if kind == "on" and body is None and all(self._person_at(g) for g in [*srcs, *targets]):
+            kind = "near"  # "a nurse checks on a patient": by another person, never on one
         for t in targets:
             for one in ordinals or (instance,):
                 self._relate(kind, srcs, t, hang, one)

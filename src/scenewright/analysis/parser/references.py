@@ -13,7 +13,7 @@ from scenewright.analysis.parser.grammar import (
     _PERSON_POSSESSIVES,
     _ROOFED_VEHICLES,
 )
-from scenewright.analysis.parser.nouns import _is_plural, _position_adjective
+from scenewright.analysis.parser.nouns import _HOLDING_PARTS, _is_plural, _position_adjective
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import (
     _DETERMINERS,
@@ -76,6 +76,9 @@ class _References:
                 return "that one", j + 1  # "at the foot of the tallest one": one of a group named before
             # a noun, not a verb, after a determiner or a count ("its walls", "two rows of")
             after_determiner = j > pos and (toks[j - 1].text in _DETERMINERS or toks[j - 1].text in _NUMBERS)
+            # "leans against the wall reading a book": a participle with its own object ends the phrase
+            if w.endswith("ing") and j + 1 < ce and toks[j + 1].text in _DETERMINERS and j > pos:
+                break
             if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
                 w not in _STOP and w[0].isalnum() and (after_determiner or not _is_verb(w) or self._part_word(w))
             ):
@@ -118,8 +121,13 @@ class _References:
         :meth:`_relation`."""
         toks = self.toks
         k = pos
-        while k < ce and toks[k].text in ("one", "of", "both"):
+        while k < ce and toks[k].text in ("one", "of", "both", "each", "either"):
             k += 1  # "on one of her knees"
+        vocabulary = load_vocabulary()
+        if pos < k < ce and toks[k].text in _HOLDING_PARTS and k not in starts:
+            # "a glass in one hand", "a sword in each hand": whoever the clause is about
+            self._body_part = vocabulary.body_parts[toks[k].text]
+            return "someone", k + 1
         if k + 1 >= ce or toks[k].text not in _PERSON_POSSESSIVES:
             return None
         j = k + 1

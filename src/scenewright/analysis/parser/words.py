@@ -76,14 +76,51 @@ _HOLD = {"holds", "hold", "holding", "carries", "carry", "carrying", "supports",
 _HOLD_PAIRS = {("loaded", "with"), ("topped", "with"), ("set", "with"), ("laid", "with"), ("decorated", "with"),
                ("piled", "with"), ("stacked", "with"), ("heaped", "with"), ("covered", "in"),
                ("covered", "with")}  # fmt: skip
-#: Verbs whose object a person has in hand ("waves a flag", "sips from a glass", "peering through
-#: a loupe"): the thing is carried by its holder, as with "holds".
+#: Verbs whose object a person has in hand ("waves a flag"): the thing is carried by its holder, as
+#: with "holds".
 _HAND_VERBS = {"waves", "waving", "wields", "wielding", "brandishes", "brandishing", "clutches", "clutching",
                "grips", "gripping", "clasps", "clasping", "swinging", "twirls", "twirling", "raises",
-               "raising"}  # fmt: skip
-_HAND_PAIRS = {("sips", "from"), ("sipping", "from"), ("drinks", "from"), ("drinking", "from"), ("peers", "through"),
-               ("peering", "through"), ("looks", "through"), ("looking", "through"), ("squints", "through"),
-               ("squinting", "through")}  # fmt: skip
+               "raising", "juggle", "juggles", "juggling"}  # fmt: skip
+#: Verbs of taking an animal along ("a man walks a dachshund beside the van"): the animal keeps by
+#: its person, whom what follows places.
+_LEAD_VERBS = {"walk", "walks", "walking", "lead", "leads", "leading", "guide", "guides", "guiding"}
+#: Verbs of giving ("a robot hands one of them a toolbox"): the giver has the thing in hand and
+#: stands by whom it is given to.
+_GIVE_VERBS = {"hands", "handing", "hand", "gives", "giving", "give", "passes", "passing", "pass", "offers",
+               "offering", "offer"}  # fmt: skip
+#: Use verbs whose one thing several people have between them ("two girls share a bento box"): no
+#: thing for each.
+_SHARE_VERBS = {"share", "shares", "sharing"}
+#: A verb, then (after what it takes, if anything) a preposition whose thing a person has in hand:
+#: "sips from a glass", "sipping coffee from a paper cup", "counting coins out of a pouch",
+#: "sketching on a clipboard", "peering through a loupe", "watching the ships through a spyglass".
+_HAND_PAIRS = {
+    ("sips", "from"), ("sipping", "from"), ("sip", "from"), ("drinks", "from"), ("drinking", "from"),
+    ("drink", "from"), ("tastes", "from"), ("tasting", "from"), ("taste", "from"), ("eats", "from"),
+    ("eating", "from"), ("eat", "from"), ("counts", "out"), ("counting", "out"), ("count", "out"),
+    ("peers", "through"), ("peering", "through"), ("looks", "through"), ("looking", "through"),
+    ("squints", "through"), ("squinting", "through"), ("watches", "through"), ("watching", "through"),
+    ("watch", "through"), ("sketches", "on"), ("sketching", "on"), ("sketch", "on"), ("writes", "on"),
+    ("writing", "on"), ("write", "on"), ("scribbles", "on"), ("scribbling", "on"), ("draws", "on"),
+    ("drawing", "on"), ("draw", "on"), ("types", "on"), ("typing", "on"), ("type", "on"),
+}  # fmt: skip
+#: Verbs whose object a person has in hand while doing them, when it is small enough to hold
+#: ("eats a sandwich", "plays a flute", "lifts a barbell", "two scouts sharpen their spears"); a
+#: bigger object is acted on where it stands ("paints a fence"). Stirring or hammering a thing
+#: works on it where it lies ("stirs a pot on the stove"), so those verbs are not here.
+_USE_VERBS = {
+    "eat", "eats", "eating", "munch", "munches", "munching", "nibble", "nibbles", "nibbling", "chew", "chews", "chewing", "gnaw", "gnaws", "gnawing",
+    "read", "reads", "reading", "play", "plays", "playing", "strum", "strums", "strumming",
+    "bang", "bangs", "banging", "shake", "shakes", "shaking", "ring", "rings", "ringing",
+    "lift", "lifts", "lifting", "toss", "tosses", "tossing",
+    "share", "shares", "sharing", "sharpen", "sharpens", "sharpening", "polish", "polishes", "polishing",
+    "paint", "paints", "painting", "carve", "carves", "carving", "whittle", "whittles", "whittling",
+    "knit", "knits", "knitting", "sew", "sews", "sewing", "mend", "mends", "mending",
+    "taste", "tastes", "tasting", "sip", "sips", "sipping", "drink", "drinks", "drinking",
+    "hug", "hugs", "hugging", "cradle", "cradles", "cradling", "cuddle", "cuddles", "cuddling",
+    "inspect", "inspects", "inspecting", "examine", "examines", "examining", "study", "studies", "studying",
+    "count", "counts", "counting", "blow", "blows", "blowing", "tune", "tunes", "tuning",
+}  # fmt: skip
 #: Words that start a with-thing's own placing ("with a till at one end and a computer ...").
 _OWN_PLACE = {"at", "in", "along", "against", "under", "inside"}
 #: Possessives whose noun, when no object, is a part of what the pronoun names ("its door").

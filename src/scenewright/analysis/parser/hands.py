@@ -1,0 +1,176 @@
+"""What people and animals have in hand and what they act on: a thing used, worked with or
+taken from is in the doer's hand ("eats a sandwich", "practises with five clubs", "sipping coffee
+from a paper cup"), a thing acted on is one the doer stands by ("plays it from a bench",
+"scrubs its back"), and "from" a perch is where the doer is. A mixin of
+:class:`~scenewright.analysis.parser.reader._Reader`."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from scenewright.analysis.parser.grammar import _COPULAS, _PERSON_POSSESSIVES, _RIDDEN
+from scenewright.analysis.parser.nouns import _Mention
+from scenewright.analysis.parser.vocabulary import load_vocabulary
+from scenewright.analysis.parser.words import _DETERMINERS, _HAND_PAIRS, _NUMBERS, _ORDINALS, _STOP, _is_verb
+
+if TYPE_CHECKING:
+    from scenewright.analysis.parser.reader import _Clause
+
+
+class _Hands:
+    def _tool_after(self, k: int, ce: int) -> int | None:
+        """Where the thing starts that a person has in hand as the word at ``k`` says: "with" right
+        after a verb or its object ("practises with five clubs", "stirring it with a long paddle"),
+        or the preposition of a hand pair ("sipping coffee from a paper cup", "counting coins out
+        of a pouch", "sketching on a clipboard"); None when it says no such thing, or what follows
+        is too big to work with."""
+        w = self.toks[k].text
+        rel = self.rel_at.get(k)
+        if rel is not None and (w, self.toks[rel.end - 1].text) in _HAND_PAIRS:
+            end = rel.end  # "peering through a loupe": a phrase of its own (near), but the loupe is in hand
+        elif w == "with":
+            end = k + 1 if self._after_verb(k) else None
+        elif any(p == w for _, p in _HAND_PAIRS) and self._pair_before(k):
+            end = k + 2 if w == "out" and k + 1 < ce and self.toks[k + 1].text == "of" else k + 1
+        else:
+            return None
+        thing = self._hand_object(end, ce, tool=True) if end is not None else None
+        if thing is None or self._placed_by_pronoun(thing.end, ce):
+            return None  # "fanning a stove with a kettle on it": the stove's, not in hand
+        return end
+
+    def _hand_object(self, start: int, ce: int, tool: bool = False) -> _Mention | None:
+        """The thing named right after ``start`` when a person can have it in hand (with ``tool``,
+        one they work with): "eats a sandwich"."""
+        m = self._next_mention(start, ce)
+        if m is None:
+            return None
+        record = m.guess if m.guess is not None else self.catalogue[m.category]
+        size = self.groups[m.group].size if m.group >= 0 else record.size
+        return m if self._holdable(m.category, m.phrase, size, record.rests, tool) else None
+
+    def _next_mention(self, start: int, ce: int) -> _Mention | None:
+        """The noun phrase right after ``start``, past its determiners and describing words."""
+        k = start
+        while k < ce and k - start < 5:
+            if k in self.by_start:
+                return self.by_start[k]
+            w = self.toks[k].text
+            if w in _STOP and w not in _DETERMINERS and w not in _NUMBERS or not w[:1].isalpha():
+                return None
+            k += 1
+        return None
+
+    def _pair_before(self, k: int) -> bool:
+        """A verb of a hand pair with the preposition at ``k`` before it in the same clause part,
+        no other phrase between ("types at a computer on the counter" is no typing on it)."""
+        j = k - 1
+        while j >= 0 and k - j <= 6 and self.toks[j].text not in (",", ".", ";", "and", "while"):
+            if (self.toks[j].text, self.toks[k].text) in _HAND_PAIRS:
+                return True  # (the verb may open a phrase itself: "watching the ships through a spyglass")
+            if j in self.rel_at:
+                return False
+            j -= 1
+        return False
+
+    def _placed_by_pronoun(self, end: int, ce: int) -> bool:
+        """A phrase right after a thing places it by "it" or "them" ("a kettle on it")."""
+        rel = self.rel_at.get(end)
+        return rel is not None and rel.end < ce and self.toks[rel.end].text in ("it", "them", "its", "their")
+
+    def _after_verb(self, k: int, over: tuple[str, ...] = ()) -> bool:
+        """Whether the word at ``k`` comes right after a verb, or after a verb and what it acts on
+        ("practises with", "scrubs its back with", "tapping a heel with"), not after a noun phrase
+        of its own ("a woman in a coat with ..."); the words ``over`` may lie between too
+        ("forks straw into it", "pushes the front one")."""
+        j = k - 1
+        while j >= 0 and k - j <= 6:
+            w = self.toks[j].text
+            if self._participle_at(j) or self._finite_at(j):
+                return w not in _COPULAS
+            if w in _STOP and w not in _DETERMINERS and w not in ("it", "them") and w not in over or not w[:1].isalpha():
+                return False
+            j -= 1
+        return False
+
+    def _participle_at(self, j: int) -> bool:
+        """A verb in -ing that is no describing word of a noun ("stirring it", not "a rocking chair")."""
+        return self.toks[j].text.endswith("ing") and j + 1 not in self.by_start and j not in self.named_at
+
+    def _finite_at(self, j: int) -> bool:
+        """A verb right after its subject ("a juggler practises", "two scouts sharpen"): a word
+        after a noun phrase that is no phrase word, no noun and no describing word."""
+        w = self.toks[j].text
+        # ("feed", "weed" end as past participles do, but are no describing words)
+        describing = load_vocabulary().is_adjective(w) and not w.endswith("eed")
+        verb = w not in _STOP or _is_verb(w)  # ("sits", "stands" are stop words of noun phrases)
+        return j in self.ends and j not in self.by_start and w.isalpha() and verb and not describing
+
+    def _acts_from(self, k: int) -> bool:
+        """Whether the "from" at ``k`` says where a doer is: after a verb and what it acts on, when
+        that is named by a pronoun, lives or is too big to hold ("plays it from a narrow bench",
+        "two children feed ducks from a footbridge"; not "pulls a rope from the barrel")."""
+        perch = self._next_mention(k + 1, len(self.toks))
+        if not self._after_verb(k) or perch is not None and not load_vocabulary().carries(perch.category, perch.phrase, _RIDDEN):
+            return False  # ("feeds the goats from a bucket": what the feed comes out of)
+        j = k - 1
+        while j >= 0 and k - j <= 6:
+            w = self.toks[j].text
+            if w in ("it", "them", "him", "her"):
+                return True
+            m = self.by_start.get(j)
+            if m is not None:
+                return self._lives(m.category) or self._hand_object(j, k) is None
+            if self._finite_at(j) or self._participle_at(j):
+                return False  # the verb: it acts on nothing named ("jumps from the ledge")
+            j -= 1
+        return False
+
+    def _deed_on_pronoun(self, c: _Clause, k: int, doers: list[int], prev_subject: list[int]) -> None:
+        """"Plays it from a bench", "scrubs its back", "forks straw into it", "pushes the front
+        one": what a verb acts on named by a pronoun is a deed too (whoever acts stands by it)."""
+        toks, w = self.toks, self.toks[k].text
+        doers = doers or list(c.main)
+        if not doers or not all(self._living(g) for g in doers):
+            return
+        one = w == "one" and k > 0 and toks[k - 1].text not in _NUMBERS and (k + 1 >= len(toks) or toks[k + 1].text != "of")
+        # "scrubs its back", "trims its ears", "measures his arm": the owner of the part
+        after = toks[k + 1].text if k + 1 < len(toks) else ""
+        part = k + 1 not in self.by_start and after.isalpha() and (after not in _STOP or self._part_word(after))
+        owner = part and (w == "its" or w in _PERSON_POSSESSIVES and toks[k + 1].text in load_vocabulary().body_parts)
+        if not (w in ("it", "them") or one or owner) or not self._after_verb(k, over=("into", "onto", *_ORDINALS, "front", "back")):
+            return
+        if one:
+            thing = self._one_of(c, doers, prev_subject)
+        elif owner and w != "its":
+            thing = self._person(c, doers, _PERSON_POSSESSIVES[w])
+        else:  # "leans over the vat, stirring it": the clause's own target, else what the one before was about
+            prefer = [*c.last_target, *prev_subject, *self.topic]
+            thing = self._pronoun("them" if w == "them" else "it", c, doers, prefer)
+            # (only what this sentence or the clause before named: "the nearer one" of two vats is no "it" of long ago)
+            thing = [g for g in thing if g in {*prefer, *c.groups, *self.history[self._sentence_from :]}]
+        if thing:
+            c.deeds.append((doers, thing[0]))
+            c.deed_end = k + 1
+
+    def _given_to(self, c: _Clause, k: int, ce: int, giver: list[int], prev_subject: list[int]) -> tuple[int, int] | None:
+        """Whom the giving verb at ``k`` gives to, and where that phrase ends, when a thing to
+        hold follows ("hands one of them a toolbox", "passes her a cup", "gives the boy a kite")."""
+        toks, j = self.toks, k + 1
+        words = [t.text for t in toks[j : j + 3]]
+        m = self._next_mention(j, ce)
+        if words == ["one", "of", "them"]:  # one of the people (or animals) named just before
+            order = [*prev_subject, *self.topic, *reversed(self.history)]
+            whom, end = [g for g in order if g not in giver and self.groups[g].count > 1 and self._living(g)], j + 3
+        elif words[:1] and words[0] in ("him", "her", "them"):
+            whom, end = self._person(c, giver, "them living" if words[0] == "them" else words[0]), j + 1
+        elif m is not None and self._lives(m.category):
+            group = self._resolve(m, self.size_of.get(m.start, []))
+            whom, end = ([group] if group >= 0 else []), m.end
+            c.groups.extend(whom)
+        else:
+            return None
+        if not whom or self._hand_object(end, ce) is None:
+            return None
+        return whom[0], end
+
