@@ -426,3 +426,21 @@ def test_the_owners_of_the_opening_place_are_who_the_text_names_again():
     got = objects("A cosy den in the burrow of the two badgers. Father Badger reads by the fire, and Mother Badger knits.")
     assert sum(n for (c, w), n in got.items() if w == "badger") == 2, got
     assert objects("The workshop of an old clockmaker. A clock hangs on the wall.")[("figure", "clockmaker")] == 1
+
+
+@pytest.mark.parametrize(
+    "text, key, count",
+    [
+        ("Four bison graze beside the barn.", "bison", 4),  # a count before a plural that looks singular: its verb follows
+        ("Two goldfish tanks stand by the wall.", "tank", 2),  # ... but a compound ends in the plural
+    ],
+)
+def test_an_invariant_plural_after_a_count_is_the_subject_of_the_verb_after_it(text, key, count):
+    got = parse_scene(text).objects
+    assert sum(1 for o in got if o.name.split()[-1] == key) == count, [(o.category, o.name) for o in got]
+
+
+def test_a_participle_after_the_opening_place_and_a_gerund_after_a_comma_are_no_things():
+    assert not any("etched" in n for n in names("A cider distillery etched as a copperplate, with barrels by the wall."))
+    got = objects("A potter sits at his wheel, painting a tall jug.")  # "painting" would be a picture
+    assert not any(c == "picture_frame" for c, _ in got), got

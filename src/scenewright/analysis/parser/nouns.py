@@ -237,7 +237,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         follow = toks[e].text if e < n else ""
         if e < n and toks[e].joined and (toks[e].text in _LIKENESS or toks[e].text.endswith(("ing", "ed"))):
             continue  # "a mushroom-shaped lamp", "a goldfish-scooping stall", "glass-domed huts": a look or a use
-        if entry is not None and singular(words[-1]) == words[-1] and _names_kind(toks, e):
+        # "three sheep graze": after a count, a compound would end in a plural ("three fish tanks")
+        verb_after = _counted_plural(toks, s) and e < n and not toks[e].joined and singular(toks[e].text) == toks[e].text
+        if entry is not None and singular(words[-1]) == words[-1] and _names_kind(toks, e) and not verb_after:
             continue  # "a bear face", "a train compartment", "camel-hair tents": a kind, not a thing
         follow_two = f"{follow} {toks[e + 1].text}" if e + 1 < n else ""
         if follow in _VENUES or follow in vocabulary.places or follow_two in vocabulary.places or (
@@ -509,7 +511,8 @@ def _gerund_here(toks: list[_Tok], s: int, e: int) -> bool:
     if e - s != 1 or not w.endswith("ing") or s == 0 or e >= len(toks) or toks[e].text not in _OBJECT_OPENERS:
         return False
     before = toks[s - 1].text
-    return before not in _DETERMINERS and before not in _NUMBERS and not load_vocabulary().is_adjective(before)
+    adjective = before[:1].isalpha() and load_vocabulary().is_adjective(before)  # ", painting a boat": no adjective
+    return before not in _DETERMINERS and before not in _NUMBERS and not adjective
 
 
 #: Words that open an object after a verb: "an astronaut plants a flag", "a knight guards the gate".
@@ -708,7 +711,11 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             if head is not None and x in _PLACE_ADVERBS:
                 break  # "a lantern hangs from a beam overhead": where, not a kind of beam
             ends = j + 1 >= n or toks[j + 1].text in _STOP or not toks[j + 1].text[:1].isalpha()
-            if head is not None and _participle(x) and ends and not vocabulary.is_adjective(toks[head].text):
+            # "a sake brewery drawn as a print": a place word is no describing word before its participle
+            describing = head is not None and vocabulary.is_adjective(toks[head].text) and (
+                toks[head].text not in vocabulary.not_things
+            )
+            if head is not None and _participle(x) and ends and not describing:
                 break  # "a low ledge watching, ...", "a tarp strung between two trees": its verb, not
                 # a "home recording studio"
             head = j
