@@ -444,3 +444,18 @@ def test_a_participle_after_the_opening_place_and_a_gerund_after_a_comma_are_no_
     assert not any("etched" in n for n in names("A cider distillery etched as a copperplate, with barrels by the wall."))
     got = objects("A potter sits at his wheel, painting a tall jug.")  # "painting" would be a picture
     assert not any(c == "picture_frame" for c, _ in got), got
+
+
+def test_a_look_list_after_all_names_no_things():
+    got = objects("A retro milk bar, all chrome stools and neon tubes. Three stools stand at the counter.")
+    assert got[("stool", "stool")] == 3 and not any(w == "tube" for _, w in got), got
+
+
+def test_a_bare_plural_opening_a_clause_after_and_is_its_subject():
+    got = objects("Harnesses rest on a peg by the door, and halters hang on the wall beside them.")
+    assert sum(n for (_, w), n in got.items() if w == "halter") >= 2, got
+
+
+def test_tack_and_clippers_are_things_of_their_own():
+    got = objects("Two saddles rest on the fence. A vet with clippers in her hand kneels by a goat.")
+    assert sum(n for (_, w), n in got.items() if w == "saddle") == 2 and any(w == "clippers" for _, w in got), got

@@ -214,6 +214,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a kitchen in the cottage of the three bears": whose place it is, not who is there
         if _worn(toks, s, e):
             continue  # "a knight in battered armour": what he wears, not a thing standing there
+        if _in_look_list(toks, s):
+            continue  # "a moon base, all chrome fins and pastel domes": how everything looks
         if _likeness_of(toks, s):
             continue  # "a neon sign shaped like a cactus", "in the style of a woodcut": a look, not a thing
         if e + 1 < n and toks[e].text == "in" and toks[e + 1].text in _MEASURES:
@@ -456,6 +458,18 @@ def _owner_of_setting(toks: list[_Tok], s: int, e: int, category: str) -> bool:
     place = singular(toks[j - 1].text)
     known = match_phrase((place,))
     return place in load_vocabulary().places or (known is not None and load_catalogue()[known].shape in _ENCLOSING)
+
+
+def _in_look_list(toks: list[_Tok], s: int) -> bool:
+    """The noun at ``s`` is in a list opened by ", all" that says how the whole scene looks ("a
+    moon base, all chrome fins and pastel domes", "a lounge, all black lacquer and fan shapes"):
+    describing words, nouns, commas and "and" only, back to the comma."""
+    j = s - 1
+    while j >= 1 and s - j <= 10 and (toks[j].text in (",", "and") or (
+        toks[j].text[:1].isalpha() and toks[j].text not in _STOP and not _verb_word(toks[j].text)
+    )):
+        j -= 1
+    return j >= 1 and toks[j].text == "all" and toks[j - 1].text == ","
 
 
 #: Words right before what someone wears ("in battered armour", "wearing a cape").
@@ -818,14 +832,16 @@ def _landforms(toks: list[_Tok], covered: set[int]) -> list:
 
 
 def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
-    """Bare plurals nobody listed that open a sentence as its subject ("Noodle cartons and soda
-    cans litter the floor"): no count, but a verb (or "and" and another such plural) follows."""
+    """Bare plurals nobody listed that open a sentence or a clause after ", and" as its subject
+    ("Noodle cartons and soda cans litter the floor"): no count, but a verb (or "and" and another
+    such plural) follows."""
     vocabulary = load_vocabulary()
     out: list = []
     n = len(toks)
     for k in range(n):
         after_and = k > 0 and toks[k - 1].text == "and" and bool(out) and out[-1][1] == k - 1
-        if not (k == 0 or toks[k - 1].text in (".", "!", "?", ";") or after_and):
+        clause = k > 1 and toks[k - 1].text == "and" and toks[k - 2].text == ","  # "..., and bridles hang"
+        if not (k == 0 or toks[k - 1].text in (".", "!", "?", ";") or after_and or clause):
             continue
         j, head = k, None
         while j < n and j - k < 4 and j not in covered and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
