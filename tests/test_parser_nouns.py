@@ -459,3 +459,13 @@ def test_a_bare_plural_opening_a_clause_after_and_is_its_subject():
 def test_tack_and_clippers_are_things_of_their_own():
     got = objects("Two saddles rest on the fence. A vet with clippers in her hand kneels by a goat.")
     assert sum(n for (_, w), n in got.items() if w == "saddle") == 2 and any(w == "clippers" for _, w in got), got
+
+
+def test_a_noun_before_a_possessive_names_the_owners_kind():
+    got = names("A lighthouse keeper's cottage stands on the cliff. A tractor driver's flask sits on the wall.")
+    assert got == {"cottage", "flask"}, got
+
+
+def test_titles_are_people():
+    got = objects("The old jarl sits on a carved bench, and the abbess kneels by the altar.")
+    assert got[("figure", "jarl")] == 1 and got[("figure", "abbess")] == 1, got

@@ -210,6 +210,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue
         if _role_after_as(toks, s):
             continue  # "four logs around it as seats", "a crate used as a table": a use, not a thing
+        if e < n and toks[e].text.endswith("'s") and toks[e].text[:-2].isalpha() and not toks[s].text.endswith("'s"):
+            continue  # "a lighthouse keeper's cottage": the kind of keeper, no lighthouse
         if _owner_of_setting(toks, s, e, cat):
             continue  # "a kitchen in the cottage of the three bears": whose place it is, not who is there
         if _worn(toks, s, e):
