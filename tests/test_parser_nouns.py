@@ -469,3 +469,13 @@ def test_a_noun_before_a_possessive_names_the_owners_kind():
 def test_titles_are_people():
     got = objects("The old jarl sits on a carved bench, and the abbess kneels by the altar.")
     assert got[("figure", "jarl")] == 1 and got[("figure", "abbess")] == 1, got
+
+
+def test_a_counted_plural_before_a_known_singular_word_is_its_subject():
+    got = objects("Two dockers hammer crates shut beside the ship.")
+    assert not any("hammer" in w for _, w in got) and sum(n for (_, w), n in got.items() if w == "docker") == 2, got
+
+
+def test_glasses_worn_are_no_cups():
+    got = objects("A librarian in horn-rimmed glasses stamps a book. Two glasses of milk stand on the desk.")
+    assert got[("cup", "milk")] + got[("cup", "glass")] == 2, got

@@ -741,7 +741,9 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         known = any(k in covered and k not in looks for k in range(i + 1, head + 1)) if head is not None else False
         if head is None or known or toks[head].quoted:
             continue
-        if j < n and j in covered:
+        # a counted plural before a singular known word is its subject ("two stokers shovel coal")
+        subject = plural and singular(toks[head].text) != toks[head].text and j < n and singular(toks[j].text) == toks[j].text
+        if j < n and j in covered and not subject:
             continue  # the words before a known noun are its adjectives ("a shiny [robot]")
         word = toks[head].text
         held = _held(toks, head) or (owner and _in_hand(toks, i) and vocabulary.is_thing_word(word))
