@@ -375,6 +375,9 @@ def test_a_part_of_a_thing_named_before_places_by_that_thing():
         ("A dog sleeps on a pile of laundry by the stove.", "laundry", 1, 1),  # a heap of stuff is one thing
         ("Two lanes of lorries wait at the border.", "lorry", 6, 30),
         ("Rows of lettuces grow in the bed.", "lettuce", 6, 40),
+        ("A line of tinsel hangs over the door.", "tinsel", 1, 1),  # stuff, no count noun
+        ("A flock of sheep grazes by the wall.", "sheep", 3, 12),  # ... but living things are counted
+        ("Two dozen mugs hang on the dresser.", "mug", 24, 24),
     ],
 )
 def test_measure_words_count_what_follows_them(text, key, low, high):
@@ -479,3 +482,8 @@ def test_a_counted_plural_before_a_known_singular_word_is_its_subject():
 def test_glasses_worn_are_no_cups():
     got = objects("A librarian in horn-rimmed glasses stamps a book. Two glasses of milk stand on the desk.")
     assert got[("cup", "milk")] + got[("cup", "glass")] == 2, got
+
+
+def test_a_cable_car_is_no_car_and_a_slope_sets_the_scene():
+    got = objects("A ski hut on a steep slope. Behind the hut, a cable car glides over the pines.")
+    assert got[("vehicle", "car")] == 1 and not any(c == "car" or w == "slope" for c, w in got), got

@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 
 from scenewright.core.catalogue import load_catalogue, match_phrase, phrase_index, singular
-from scenewright.analysis.parser.grammar import _BUILDING_PARTS
+from scenewright.analysis.parser.grammar import _BUILDING_PARTS, _LIVING
 from scenewright.analysis.parser.tokens import _Tok
 from scenewright.analysis.parser.vocabulary import GENERIC, Entry, load_vocabulary
 from scenewright.analysis.parser.words import (
@@ -1118,6 +1118,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         w = t.text
         if w in _NUMBERS and not toks[j + 1].joined:
             count, counted = _NUMBERS[w], True
+            if w == "dozen" and j > 0 and toks[j - 1].text in _NUMBERS:
+                count *= _NUMBERS[toks[j - 1].text]  # "two dozen candles"
             # "above one bench", "between every two benches", "the two nearest benches": of those
             # already there, if any
             m.definite = w == "one" or (j > 0 and toks[j - 1].text in ("every", "each", *_DEFINITE))
@@ -1143,8 +1145,13 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             q = toks[j - 1].text
             small = (m.guess.rests if m.guess is not None else load_catalogue()[m.category].rests) == "surface"
             pair = q in ("pair", "pairs") and toks[m.end - 1].text in load_vocabulary().pair_nouns  # "a pair of shears"
-            # "a stack of plates", "a pile of parchment": one heap of small things or of stuff
-            heaped = q in _HEAPS and (small or not plural)
+            # "a stack of plates", "a pile of parchment", "a line of bunting": one heap of small
+            # things, one lot of stuff (no count noun); "a flock of sheep" are sheep
+            shape = load_catalogue()[m.category].shape
+            alive = m.category in _LIVING or shape in _LIVING or m.category == "fish"
+            last = toks[m.end - 1].text
+            stuff = not plural and singular(last) == last and not alive  # not "herbs", listed as written
+            heaped = (q in _HEAPS and small) or (stuff and singular(q) == q and q != "pair")  # "bunches of garlic": several
             count = 1 if heaped or pair else _QUANTITY[q]
             counted = q in ("pair", "couple", "dozen")
             k = j - 2
