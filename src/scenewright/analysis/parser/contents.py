@@ -81,7 +81,11 @@ class _Contents:
         alive = self._lives(m.category) or m.category == "fish"
         if marker in _CONTENT_MARKERS and j - prev.end <= 2:
             # "a bowl full of apples"; but "a tank full of guppies", "a stand packed with fans" are
-            # there, on what holds them
+            # there, on what holds them; "a grandstand full of spectators" is a crowd that fills
+            # it, its look, where people the text counts or describes are there
+            crowd = marker == ("full", "of") and not m.counted and self.catalogue[m.category].shape == "figure"
+            if crowd and m.start == j + 1 and not load_vocabulary().carries(prev.category, prev.phrase, _VESSEL_KINDS):
+                return True  # (a boat full of children carries them: they are in it)
             if alive and self._holds_living(prev):
                 self.held_of.append((m.start, prev.start))
                 self.aboard.add(m.start)

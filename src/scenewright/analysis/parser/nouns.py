@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 
 from scenewright.core.catalogue import load_catalogue, match_phrase, phrase_index, singular
+from scenewright.analysis.parser.grammar import _BUILDING_PARTS, _LIVING
 from scenewright.analysis.parser.tokens import _Tok
 from scenewright.analysis.parser.vocabulary import GENERIC, Entry, load_vocabulary
 from scenewright.analysis.parser.words import (
@@ -22,6 +23,7 @@ from scenewright.analysis.parser.words import (
     _HAND_VERBS,
     _HANG_VERBS,
     _HOLD,
+    _PLACE_ADVERBS,
     _PLANT_SHAPES,
     _PREPOSITIONS,
     _is_verb,
@@ -100,6 +102,8 @@ def _match_at(toks: list[_Tok], i: int) -> tuple[int, str, Entry | None] | None:
             continue
         # "a cork board" is the catalogue's corkboard: a compound written open or closed
         cat = match_phrase(words) or (match_phrase(("".join(words),)) if length == 2 else None)
+        if _verb_ends_subject(toks, i, i + length):
+            continue  # "a wizard in a pointed hat stands on ...", "the far wall looms": a verb, not a stand
         if cat:
             return i + length, cat, None
         entry = vocabulary.match(words)
@@ -111,6 +115,31 @@ def _match_at(toks: list[_Tok], i: int) -> tuple[int, str, Entry | None] | None:
         if entry is not None and not verb and not head_known:
             return i + length, entry.category, entry
     return None
+
+
+#: Determiners of one thing: a plural after them is no noun of their phrase ("a hat stands").
+_SINGULAR_DETERMINERS = {"a", "an", "another", "each", "every", "one"}
+
+
+def _verb_ends_subject(toks: list[_Tok], i: int, end: int) -> bool:
+    """The plural ending at ``end`` is the verb of a singular subject, not a noun: a phrase
+    opened by "a" cannot end in a plural ("a wizard in a pointed hat stands"), and a plural
+    placing verb right after a singular noun is its verb ("the far wall looms", "a tower looms")."""
+    last = toks[end - 1].text
+    if last == singular(last) or singular(last) not in _FINITE or _counted_plural(toks, i):
+        return False
+    j = i - 1
+    while j >= 0 and i - j <= 4 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+        j -= 1
+    if j >= 0 and j < i - 1 and toks[j].text in _SINGULAR_DETERMINERS:
+        return True
+    if end - i != 1 or i == 0:
+        return False
+    before = toks[i - 1].text
+    return (
+        before[:1].isalpha() and before not in _STOP and singular(before) == before
+        and not load_vocabulary().is_adjective(before) and not toks[i].joined
+    )  # fmt: skip
 
 
 def _counted_plural(toks: list[_Tok], i: int) -> bool:
@@ -181,6 +210,16 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue
         if _role_after_as(toks, s):
             continue  # "four logs around it as seats", "a crate used as a table": a use, not a thing
+        if e < n and toks[e].text.endswith("'s") and toks[e].text[:-2].isalpha() and not toks[s].text.endswith("'s"):
+            continue  # "a lighthouse keeper's cottage": the kind of keeper, no lighthouse
+        if _owner_of_setting(toks, s, e, cat):
+            continue  # "a kitchen in the cottage of the three bears": whose place it is, not who is there
+        if _worn(toks, s, e):
+            continue  # "a knight in battered armour": what he wears, not a thing standing there
+        if _in_look_list(toks, s):
+            continue  # "a moon base, all chrome fins and pastel domes": how everything looks
+        if _likeness_of(toks, s):
+            continue  # "a neon sign shaped like a cactus", "in the style of a woodcut": a look, not a thing
         if e + 1 < n and toks[e].text == "in" and toks[e + 1].text in _MEASURES:
             continue  # "a room six tatami mats in size", "two cars in length": a measure, not things
         if toks[s].joined and e - s == 1 and _names_kind(toks, e):
@@ -200,15 +239,19 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         if entry is not None and (verb_before or (k > 0 and raw[k - 1][1] == s and not kind)):
             continue  # "two robots stand guard", "fox statues guard the path": a verb here
         follow = toks[e].text if e < n else ""
-        if e < n and toks[e].joined and (toks[e].text in _LIKENESS or toks[e].text.endswith("ing")):
-            continue  # "a mushroom-shaped lamp", "a goldfish-scooping stall": a look or a use, not a thing
-        if entry is not None and singular(words[-1]) == words[-1] and _names_kind(toks, e):
+        if e < n and toks[e].joined and (toks[e].text in _LIKENESS or toks[e].text.endswith(("ing", "ed"))):
+            continue  # "a mushroom-shaped lamp", "a goldfish-scooping stall", "glass-domed huts": a look or a use
+        # "three sheep graze": after a count, a compound would end in a plural ("three fish tanks")
+        verb_after = _counted_plural(toks, s) and e < n and not toks[e].joined and singular(toks[e].text) == toks[e].text
+        if entry is not None and singular(words[-1]) == words[-1] and _names_kind(toks, e) and not verb_after:
             continue  # "a bear face", "a train compartment", "camel-hair tents": a kind, not a thing
         follow_two = f"{follow} {toks[e + 1].text}" if e + 1 < n else ""
         if follow in _VENUES or follow in vocabulary.places or follow_two in vocabulary.places or (
             follow and singular(follow) in _VENUES and len(words) == 1
-        ):
+        ) or _names_place_after(toks, e):
             continue  # "a throne hall", "a farmhouse kitchen", "a rocket launch site": the place, not the thing
+        if _place_name(toks, s):
+            continue  # "a dig on a hillside in southern Turkey": a country, not a bird
         if _is_place(toks, s, e, raw[k + 1 :]) or (
             follow in ("floor", "interior", "grounds") and singular(words[-1]) in vocabulary.places
         ):  # "an abandoned factory floor with a conveyor belt"
@@ -243,10 +286,54 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             stop = max((k for k in range(s) if toks[k].text in (".", "!", "?")), default=-1)
             same = [m for m in mentions if m.start > stop]
             cat, entry = (same or mentions)[0 if same else -1].category, (same or mentions)[0 if same else -1].guess
-        mention = _Mention(cat, " ".join(t.orig for t in toks[s:e]), s, e, 1, False, False)
+        phrase = " ".join(t.orig for t in toks[s:e])
+        phrase = phrase[:-2] if phrase.endswith(("'s", "’s")) else phrase  # "the diner's roof": the diner
+        mention = _Mention(cat, phrase, s, e, 1, False, False)
         mention.guess, mention.modifier = entry, kind
         mentions.append(mention)
+    _short_for_compound(toks, mentions)
     return _alias_mentions(toks, mentions), places
+
+
+def _short_for_compound(toks: list[_Tok], mentions: list[_Mention]) -> None:
+    """"his bike" after "a motorbike rider" is the motorbike: a one-word noun after a possessive
+    or "the", the end of a closed compound the text used since it last named a thing of the
+    noun's own kind (even as a modifier), which the catalogue files elsewhere."""
+    for m in mentions:
+        if m.end - m.start != 1 or m.start == 0 or toks[m.start - 1].text not in _DEFINITE or m.guess is not None:
+            continue
+        word = singular(toks[m.start].text)
+        since = max((x.end for x in mentions if x.category == m.category and x.start < m.start), default=0)
+        for t in reversed(toks[since : m.start]):
+            whole = singular(t.text)
+            category = match_phrase((whole,)) if whole != word and whole.endswith(word) else None
+            if category is not None and category != m.category:
+                m.category = category
+                break
+
+
+def _names_place_after(toks: list[_Tok], e: int) -> bool:
+    """A noun, then a place word after it: the three name the place ("an orc war camp", "a
+    zeppelin mooring field"), not a thing and what it does ("a dog guards camp")."""
+    if e + 1 >= len(toks) or toks[e].joined or toks[e + 1].joined:
+        return False
+    middle, last = toks[e].text, toks[e + 1].text
+    if not middle.isalpha() or middle in _STOP or _is_verb(middle) or middle in load_vocabulary().adjectives:
+        return False
+    after = toks[e + 2].text if e + 2 < len(toks) else "."
+    places = load_vocabulary().places
+    return (last in places or last in _VENUES) and (not after.isalpha() or after in _STOP)
+
+
+def _place_name(toks: list[_Tok], s: int) -> bool:
+    """A capitalised noun inside a sentence after "in" or "from" names a place ("in southern
+    Turkey", "a carpet from Persia"), not the thing a lower-case word would."""
+    if s == 0 or not toks[s].orig[:1].isupper() or toks[s - 1].text in (".", "!", "?", '"', ":"):
+        return False
+    j = s - 1
+    while j >= 0 and s - j <= 3 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+        j -= 1
+    return j >= 0 and toks[j].text in ("in", "from", "across", "throughout")
 
 
 #: Categories that name any plant of their kind, so the kind before them says which ("a cypress tree").
@@ -353,6 +440,80 @@ def _role_after_as(toks: list[_Tok], s: int) -> bool:
     return j >= 1 and toks[j].text == "as" and toks[j - 1].text not in ("well", "such", "same")
 
 
+def _owner_of_setting(toks: list[_Tok], s: int, e: int, category: str) -> bool:
+    """People or animals after "<place> of" in the verbless opening own the setting ("the
+    cottage of the three bears", "the den of an old fox") when the text names them again later
+    ("Papa Bear stirs the pot"): those later ones are who is there ("the workshop of an old
+    clockmaker" named once is the clockmaker in it)."""
+    if load_catalogue()[category].shape not in ("figure", "animal"):
+        return False
+    head = singular(toks[e - 1].text)
+    if not any(singular(t.text) == head for t in toks[e:]):
+        return False
+    j = s - 1
+    while j >= 0 and s - j <= 4 and (toks[j].text in _DETERMINERS or toks[j].text in _NUMBERS or (
+        toks[j].text[:1].isalpha() and toks[j].text not in _STOP
+    )):
+        j -= 1
+    if j < 1 or toks[j].text != "of" or not _verbless_opening(toks, j):
+        return False
+    place = singular(toks[j - 1].text)
+    known = match_phrase((place,))
+    return place in load_vocabulary().places or (known is not None and load_catalogue()[known].shape in _ENCLOSING)
+
+
+def _in_look_list(toks: list[_Tok], s: int) -> bool:
+    """The noun at ``s`` is in a list opened by ", all" that says how the whole scene looks ("a
+    moon base, all chrome fins and pastel domes", "a lounge, all black lacquer and fan shapes"):
+    describing words, nouns, commas and "and" only, back to the comma."""
+    j = s - 1
+    while j >= 1 and s - j <= 10 and (toks[j].text in (",", "and") or (
+        toks[j].text[:1].isalpha() and toks[j].text not in _STOP and not _verb_word(toks[j].text)
+    )):
+        j -= 1
+    return j >= 1 and toks[j].text == "all" and toks[j - 1].text == ","
+
+
+#: Words right before what someone wears ("in battered armour", "wearing a cape").
+_WEARING = {"in", "wearing", "wears", "wore", "donning", "clad"}
+
+
+def _worn(toks: list[_Tok], s: int, e: int) -> bool:
+    """Clothing the catalogue also names as a thing ("armour") is worn after "in" or
+    "wearing": "a knight in battered armour"; "a suit of armour stands by the door" is a thing."""
+    if singular(toks[e - 1].text) not in load_vocabulary().clothing and toks[e - 1].text not in load_vocabulary().clothing:
+        return False
+    j = s - 1
+    while j >= 0 and s - j <= 4 and toks[j].text[:1].isalpha() and toks[j].text not in _WEARING and (
+        toks[j].text in _DETERMINERS or toks[j].text not in _STOP
+    ):
+        j -= 1
+    return j >= 0 and toks[j].text in _WEARING
+
+
+#: Participles before "like" that make what follows a look ("shaped like a fish", "painted like a comic").
+_LIKENESS_VERBS = {"shaped", "painted", "styled", "drawn", "carved", "made", "built", "designed", "dressed",
+                   "disguised", "decorated", "looks", "look", "looking", "rendered", "moulded", "molded", "sculpted"}  # fmt: skip
+#: Nouns before "of" that make what follows a look ("in the style of an etching", "in the shape of a heart").
+_LIKENESS_NOUNS = {"style", "shape", "form", "manner", "likeness", "fashion", "spirit"}
+
+
+def _likeness_of(toks: list[_Tok], s: int) -> bool:
+    """The noun at ``s`` says what another thing looks like, not a thing of its own: "a sign
+    shaped like a cactus", "a rock resembling a turtle", "in the style of an ink painting"."""
+    j = s - 1
+    while j >= 0 and s - j <= 5 and toks[j].text[:1].isalpha() and toks[j].text not in ("resembling", "resembles") and (
+        toks[j].text in ("a", "an", "the") or toks[j].text not in _STOP
+    ):
+        j -= 1
+    if j < 1:
+        return False
+    w, before = toks[j].text, toks[j - 1].text
+    if w == "like":
+        return before in _LIKENESS_VERBS
+    return (w == "of" and before in _LIKENESS_NOUNS) or w in ("resembling", "resembles")
+
+
 #: After "in", what makes the noun before a unit of measure ("six tatami mats in size").
 _MEASURES = {"size", "length", "width", "area", "diameter", "height", "depth", "breadth", "span"}
 #: Word pairs after which a noun names an owner, not a thing of the scene.
@@ -366,7 +527,8 @@ def _gerund_here(toks: list[_Tok], s: int, e: int) -> bool:
     if e - s != 1 or not w.endswith("ing") or s == 0 or e >= len(toks) or toks[e].text not in _OBJECT_OPENERS:
         return False
     before = toks[s - 1].text
-    return before not in _DETERMINERS and before not in _NUMBERS and not load_vocabulary().is_adjective(before)
+    adjective = before[:1].isalpha() and load_vocabulary().is_adjective(before)  # ", painting a boat": no adjective
+    return before not in _DETERMINERS and before not in _NUMBERS and not adjective
 
 
 #: Words that open an object after a verb: "an astronaut plants a flag", "a knight guards the gate".
@@ -450,6 +612,8 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
         j -= 1
     if j >= 0 and toks[j].text in _INSIDE:
         return True
+    if head in load_vocabulary().landforms and j >= 0 and _landform_part(toks, j):
+        return False  # "a dragon sleeps on top of a hill": the hill is a thing here
     if building:
         return False
     # "on the top floor of a converted warehouse": a part of the place holds the scene
@@ -458,6 +622,8 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
         "inside",
     ):  # fmt: skip
         return True
+    if j >= 0 and toks[j].text in _SETTING_PREPOSITIONS and _verbless_opening(toks, j):
+        return True  # "A mining outpost on a grey asteroid", "a tea terrace clinging to a mountainside"
     # a sentence that only names the place ("An anime-style ramen shop late at night.")
     if later and (j < 0 or toks[j].text in (".", "!", "?")):
         k = e
@@ -480,6 +646,18 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
                 break
             k += 1
     return False
+
+
+#: Prepositions that tie the opening's place to a wider one ("a base on a rocky shoulder").
+_SETTING_PREPOSITIONS = {"on", "at", "of", "to", "near", "by", "below", "beneath", "under", "above", "beside",
+                         "overlooking", "outside", "atop", "upon"}  # fmt: skip
+
+
+def _verbless_opening(toks: list[_Tok], k: int) -> bool:
+    """The words before ``k`` are the description's first sentence and have no verb: it names
+    where the scene is ("An archaeological dig on a hillside", "The waiting lanes of a ferry
+    terminal"), so a place word in it is the setting, not a thing standing in it."""
+    return not any(t.text in (".", "!", "?") or _verb_word(t.text) for t in toks[:k])
 
 
 def _enterable(toks: list[_Tok], s: int, e: int) -> bool:
@@ -546,8 +724,14 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
                 break
             if j > i + 1 and not plural and _is_verb(x):
                 break
+            if head is not None and x in _PLACE_ADVERBS:
+                break  # "a lantern hangs from a beam overhead": where, not a kind of beam
             ends = j + 1 >= n or toks[j + 1].text in _STOP or not toks[j + 1].text[:1].isalpha()
-            if head is not None and _participle(x) and ends and not vocabulary.is_adjective(toks[head].text):
+            # "a sake brewery drawn as a print": a place word is no describing word before its participle
+            describing = head is not None and vocabulary.is_adjective(toks[head].text) and (
+                toks[head].text not in vocabulary.not_things
+            )
+            if head is not None and _participle(x) and ends and not describing:
                 break  # "a low ledge watching, ...", "a tarp strung between two trees": its verb, not
                 # a "home recording studio"
             head = j
@@ -557,7 +741,9 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         known = any(k in covered and k not in looks for k in range(i + 1, head + 1)) if head is not None else False
         if head is None or known or toks[head].quoted:
             continue
-        if j < n and j in covered:
+        # a counted plural before a singular known word is its subject ("two stokers shovel coal")
+        subject = plural and singular(toks[head].text) != toks[head].text and j < n and singular(toks[j].text) == toks[j].text
+        if j < n and j in covered and not subject:
             continue  # the words before a known noun are its adjectives ("a shiny [robot]")
         word = toks[head].text
         held = _held(toks, head) or (owner and _in_hand(toks, i) and vocabulary.is_thing_word(word))
@@ -566,9 +752,11 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         # "eight lanes side by side": a setting is never counted, so a counted place is a row of things
         one = singular(word)
         counted_place = _NUMBERS.get(w, 0) > 1 and one != word and one in vocabulary.places and one not in _VENUES
-        if not (vocabulary.is_thing_word(word) or held or counted_place) or word in _QUANTITY or (
-            j < n and toks[j].text == "of"
-        ):
+        # "five pairs of shoes", "a rack of coats": clothing counted out is not worn
+        stock = w == "of" and word in vocabulary.clothing
+        if not (vocabulary.is_thing_word(word) or held or counted_place or stock) or (
+            word in _QUANTITY and not counted_place
+        ) or (j < n and toks[j].text == "of"):
             continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"
         entry = _guess(toks, head, toks[max(i - 1, 0) : head])
         opening = i == 0 or not toks[i - 1].text[:1].isalpha()
@@ -578,19 +766,86 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             # subject that opens a clause standing somewhere ("The periscope rises in the middle")
         out.append((head, head + 1, entry.category, entry))
         covered.add(head)
-    out += _bare_subjects(toks, covered)
+    out += _bare_subjects(toks, covered) + _landforms(toks, covered) + _owners_of_parts(toks, covered)
     return out + _unknown_heads(toks, raw, covered)
 
 
+def _owners_of_parts(toks: list[_Tok], covered: set[int]) -> list:
+    """"A sign stands on the diner's roof": the owner of a part is a thing of the scene, even
+    when nothing else names it as one (a setting word like "diner" included)."""
+    vocabulary = load_vocabulary()
+    out: list = []
+    for k in range(1, len(toks) - 1):
+        w = toks[k].text
+        if k in covered or not w.endswith("'s") or toks[k - 1].text not in _DEFINITE:
+            continue
+        j = k + 1
+        while j < len(toks) - 1 and vocabulary.is_adjective(toks[j].text):
+            j += 1
+        if singular(toks[j].text) not in _BUILDING_PARTS and singular(toks[j].text) not in vocabulary.part_owners:
+            continue
+        base = w[:-2]
+        if base not in vocabulary.places and any(singular(toks[i].text) == base for i in covered if i < k):
+            continue  # "the hut's roof" after "a site hut": the part places by the hut named before (a
+            # place named before set the scene and is no thing yet)
+        known = match_phrase((base,))
+        entry = None if known else vocabulary.match((base,))
+        if singular(base) in vocabulary.places and singular(toks[j].text) in _BUILDING_PARTS:
+            known, entry = "building", None  # "the diner's roof": a building here
+        if known or entry is not None:
+            out.append((k, k + 1, known or entry.category, entry))
+            covered.add(k)
+    return out
+
+
+#: Words before "of" that put a thing on a landform or at its foot ("on top of", "at the foot of").
+_LANDFORM_PARTS = {"top", "foot", "summit", "crest", "base"}
+
+
+def _landform_part(toks: list[_Tok], k: int) -> bool:
+    """"of" at ``k`` closes "on top of" or "(at) the foot of" outside the opening that names the
+    setting ("A village at the foot of a mountain" is where the scene is); "at the top of the
+    slope" is where on the place, not a thing on it."""
+    if k < 2 or toks[k].text != "of" or toks[k - 1].text not in _LANDFORM_PARTS:
+        return False
+    if toks[k - 1].text == "top" and toks[k - 2].text != "on":
+        return False
+    return not _verbless_opening(toks, k)
+
+
+def _landforms(toks: list[_Tok], covered: set[int]) -> list:
+    """A hill, a dune or a cliff sets the scene, but one the text puts a thing on top of or at
+    the foot of is a thing of the scene ("a dragon sleeps on top of a flat-topped hill"); not
+    "at the top of the slope", a part of the place."""
+    forms = load_vocabulary().landforms
+    out: list = []
+    for k in range(2, len(toks)):
+        if not _landform_part(toks, k):
+            continue
+        j = k + 1
+        while j < len(toks) and j - k <= 5 and j not in covered and toks[j].text[:1].isalpha() and (
+            toks[j].text in _DETERMINERS or toks[j].text not in _STOP
+        ):
+            j += 1
+        head = j - 1
+        entry = forms.get(singular(toks[head].text)) if head > k and head not in covered else None
+        if entry is not None:
+            out.append((head, head + 1, entry.category, entry))
+            covered.add(head)
+    return out
+
+
 def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
-    """Bare plurals nobody listed that open a sentence as its subject ("Noodle cartons and soda
-    cans litter the floor"): no count, but a verb (or "and" and another such plural) follows."""
+    """Bare plurals nobody listed that open a sentence or a clause after ", and" as its subject
+    ("Noodle cartons and soda cans litter the floor"): no count, but a verb (or "and" and another
+    such plural) follows."""
     vocabulary = load_vocabulary()
     out: list = []
     n = len(toks)
     for k in range(n):
         after_and = k > 0 and toks[k - 1].text == "and" and bool(out) and out[-1][1] == k - 1
-        if not (k == 0 or toks[k - 1].text in (".", "!", "?", ";") or after_and):
+        clause = k > 1 and toks[k - 1].text == "and" and toks[k - 2].text == ","  # "..., and bridles hang"
+        if not (k == 0 or toks[k - 1].text in (".", "!", "?", ";") or after_and or clause):
             continue
         j, head = k, None
         while j < n and j - k < 4 and j not in covered and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
@@ -835,8 +1090,8 @@ def _is_plural(toks: list[_Tok], m: _Mention) -> bool:
     last = words[-1]
     if m.guess is not None and tuple(t.text for t in toks[m.start : m.end]) in load_vocabulary().entries:
         return False  # "a triceratops" is listed as it is written
-    if last in load_vocabulary().pair_nouns:
-        return False  # "shears" are one pair
+    if last in load_vocabulary().pair_nouns or last.endswith("'s"):
+        return False  # "shears" are one pair; "the diner's" roof is one diner's
     return singular(last) != last or last in ("people", "cacti", "shelves", "benches", "glasses")
 
 
@@ -863,6 +1118,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         w = t.text
         if w in _NUMBERS and not toks[j + 1].joined:
             count, counted = _NUMBERS[w], True
+            if w == "dozen" and j > 0 and toks[j - 1].text in _NUMBERS:
+                count *= _NUMBERS[toks[j - 1].text]  # "two dozen candles"
             # "above one bench", "between every two benches", "the two nearest benches": of those
             # already there, if any
             m.definite = w == "one" or (j > 0 and toks[j - 1].text in ("every", "each", *_DEFINITE))
@@ -888,13 +1145,22 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             q = toks[j - 1].text
             small = (m.guess.rests if m.guess is not None else load_catalogue()[m.category].rests) == "surface"
             pair = q in ("pair", "pairs") and toks[m.end - 1].text in load_vocabulary().pair_nouns  # "a pair of shears"
-            count = 1 if (q in ("stack", "pile") and small) or pair else _QUANTITY[q]
+            # "a stack of plates", "a pile of parchment", "a line of bunting": one heap of small
+            # things, one lot of stuff (no count noun); "a flock of sheep" are sheep
+            shape = load_catalogue()[m.category].shape
+            alive = m.category in _LIVING or shape in _LIVING or m.category == "fish"
+            last = toks[m.end - 1].text
+            stuff = not plural and singular(last) == last and not alive  # not "herbs", listed as written
+            heaped = (q in _HEAPS and small) or (stuff and singular(q) == q and q != "pair")  # "bunches of garlic": several
+            count = 1 if heaped or pair else _QUANTITY[q]
             counted = q in ("pair", "couple", "dozen")
             k = j - 2
             if k >= 0 and toks[k].text in _NUMBERS:  # "two pairs of", "three stacks of"
                 width, depth, _ = load_catalogue()[m.category].size
                 long_unit = (width >= 1.0 and depth <= 0.6) or load_catalogue()[m.category].shape == "flower_bed"
-                per = 1 if q in ("row", "rows", "line", "lines") and long_unit else count  # a row of tulips is a bed
+                # a row of tulips is a bed; each of "five pairs" is a pair, of "three rows" a row
+                per = 1 if q in ("row", "rows", "line", "lines") and long_unit else _QUANTITY.get(singular(q), count)
+                per = 1 if heaped or pair else per
                 count, counted = per * _NUMBERS[toks[k].text], True  # "three rows of shelves": a unit a row
             elif k >= 0 and toks[k].text == "of" and k > 0 and toks[k - 1].text in _QUANTITY:
                 count = _QUANTITY[toks[k - 1].text]  # "a lot of"
@@ -936,6 +1202,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
     m.count, m.counted, m.adjectives = count, counted, adjectives
 
 
+#: Quantity nouns of a heap: a heap of small things or of stuff is one thing ("a stack of plates").
+_HEAPS = {"stack", "stacks", "pile", "piles", "heap", "heaps", "bundle", "bundles"}
 #: Quantity nouns that name one unit ("a row of", "a stack of"); their plurals name several.
 _QUANTITY_ONE = {"row", "line", "stack", "pile", "set", "group", "cluster", "ring", "circle", "pair", "couple"}
 #: Unit nouns a "N in each ..." phrase counts by.

@@ -59,6 +59,10 @@ class _References:
                     self._part = singular(toks[m.end - 1].text)
                     return owner, m.end  # "pumpkins on its counter": the stall's own counter is the stall
                 g = self._resolve(m, self.size_of.get(m.start, []))
+                part = toks[m.end].text if m.end < ce and toks[m.end - 1].text.endswith("'s") else ""
+                if singular(part) in _BUILDING_PARTS:
+                    self._part = singular(part)
+                    return ([g] if g >= 0 else None), m.end + 1  # "on the diner's roof": by the diner, on its roof
                 return ([g] if g >= 0 else None), m.end
             w = toks[j].text
             if w in ("it", "them", "itself", "themselves", "him", "her", "himself", "herself") and not (

@@ -85,6 +85,8 @@ class Vocabulary:
     #: What one does from where one is: "a heron watches from a rock" puts the heron on the rock
     #: ("pulls a rope from the barrel" does not).
     lookout_verbs: frozenset[str] = frozenset()
+    #: Place words that are a thing when the text puts something on top of them or at their foot.
+    landforms: dict[str, Entry] = field(default_factory=dict)
 
     def carries(self, category: str, name: str, kinds: tuple[str, ...] | None = None, by_family: bool = True) -> bool:
         """Whether a thing of ``category`` named ``name`` is one of the ``kinds`` of carriers
@@ -213,6 +215,11 @@ def _validate(raw: dict) -> Vocabulary:
         carriers={k: frozenset(v) for k, v in raw.get("carriers", {}).items() if k != "about"},
         postures={k: tuple(v) for k, v in raw.get("postures", {}).items() if k != "about"},
         lookout_verbs=frozenset(raw.get("lookout_verbs", ())),
+        landforms={
+            k: Entry(v[0], (float(v[1]), float(v[2]), float(v[3])), catalogue[v[0]].rests)
+            for k, v in raw.get("landforms", {}).items()
+            if k != "about"
+        },
     )
 
 

@@ -14,8 +14,9 @@ _NUMBERS = {
 _VAGUE = {"few": 3, "several": 3, "some": 3, "various": 3, "many": 5, "numerous": 5, "multiple": 3, "both": 2}
 #: Nouns that count or arrange what follows "of" ("a row of lamps", "stacks of crates").
 _QUANTITY = {
-    "pair": 2, "pairs": 4, "couple": 2, "row": 3, "rows": 5, "line": 3, "set": 3, "group": 3, "cluster": 3,
-    "stack": 3, "stacks": 4, "pile": 3, "piles": 4, "bunch": 3, "handful": 3, "collection": 3,
+    "pair": 2, "pairs": 4, "couple": 2, "row": 3, "rows": 6, "line": 3, "set": 3, "group": 3, "cluster": 3,
+    "stack": 3, "stacks": 4, "pile": 3, "piles": 4, "heap": 3, "heaps": 4, "bunch": 3, "bunches": 4,
+    "bundle": 3, "bundles": 4, "lane": 3, "lanes": 6, "queue": 4, "handful": 3, "collection": 3,
     "coils": 3, "coil": 1, "ring": 4, "circle": 4, "lot": 5, "lots": 5, "plenty": 5, "dozens": 12,
     "series": 3, "trio": 3, "clusters": 5, "grove": 4, "patch": 1, "flock": 6, "herd": 6, "flocks": 12,
     "herds": 12, "string": 1,
@@ -27,6 +28,9 @@ _PRONOUNS = {"it", "them", "itself", "themselves", "one"}
 #: Less common prepositions: they end a noun phrase and name no kind of the noun before ("a wheelchair past the door").
 _PREPOSITIONS = {"past", "beyond", "among", "amongst", "amid", "amidst", "via", "within", "without", "alongside",
                  "during", "until", "despite", "except", "aboard", "astride"}  # fmt: skip
+#: Adverbs of place that may follow a noun ("a beam overhead", "a fish on the ice nearby"): no kind of it.
+_PLACE_ADVERBS = {"overhead", "nearby", "aloft", "upstairs", "downstairs", "ashore", "underfoot", "offshore",
+                  "uphill", "downhill", "downstream", "upstream", "yonder"}  # fmt: skip
 #: Words that end a noun phrase when reading backwards for adjectives.
 _STOP = (
     set(_NUMBERS) | set(_VAGUE) | _DETERMINERS | _PRONOUNS
@@ -53,6 +57,7 @@ _DIMENSIONS = {"wide": "x", "width": "x", "across": "x", "long": "long", "length
                "depth": "y", "tall": "z", "high": "z", "height": "z", "diameter": "d"}  # fmt: skip
 #: Containers and depictions: what follows their "of" is content or subject, not an object.
 _CONTENT_HEADS = {"vase", "bowl", "basket", "bucket", "plate", "bottle", "cup", "pot", "crate", "cart", "statue",
+                  "cabinet", "wardrobe", "display_case", "treasure_chest", "trash_can", "laundry_basket",
                   "picture_frame", "planter", "sign", "billboard", "shop_shelf", "bookshelf", "flask",
                   "barrel", "shipping_container", "flower_bed", "cauldron", "sandbox", "hologram"}  # fmt: skip
 _CONTENT_MARKERS = {("full", "of"), ("filled", "with"), ("packed", "with"), ("overflowing", "with"),
