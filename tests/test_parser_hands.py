@@ -151,3 +151,11 @@ def test_an_instrument_played_is_in_hand_and_a_pet_with_one_keeps_its_own_place(
     assert {("guitar_1", "on", "musician_1"), ("musician_1", "near", "lamp_post_1")} <= found, found  # a violin is a guitar
     found = rels("A girl reads a comic on the sofa, with her kitten asleep under it.")
     assert ("girl_1", "on", "sofa_1") in found and not any(s == "girl_1" and r == "near" for s, r, t in found), found
+
+
+def test_one_going_towards_a_thing_faces_it_and_one_crossing_a_bridge_is_on_it():
+    found = rels("Two vans are parked by the gate, and a porter pushes a trolley towards them.")
+    assert ("porter_1", "face to", "truck_1") in found, found
+    found = rels("A squire on a brown pony trots over the bridge towards the tower.")
+    assert {("horse_1", "on", "bridge_1"), ("squire_1", "face to", "tower_1")} <= found, found
+    assert ("owl_1", "above", "bridge_1") in rels("An owl flies over the bridge.")

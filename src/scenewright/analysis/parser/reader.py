@@ -852,11 +852,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if kind == "from" and not any(self._living(g) for g in srcs):
             # "a guard waves a flag from the tower": the one who waves is up there
             srcs = [g for g in c.subjects if self._living(g)] or srcs
-        if kind == "no relation" and c.head is not None and toks[rel.start].text.startswith(("toward", "heading")):
+        towards = kind == "no relation" and toks[rel.start].text.startswith(("toward", "heading"))
+        if towards and c.head is not None:
             # "a forklift carries a pallet toward the rack": the with-part ends, the rack is no load
             self._close_with(c)
+            srcs = list(c.head)
             c.head, c.wsub, c.expect_new = None, [], True
-            return end
+        if towards and c.deeds and c.deeds[-1][1] in srcs:
+            srcs = list(c.deeds[-1][0])  # "a porter pushes a trolley towards them": the porter goes
+        if towards and srcs and all(self._living(g) for g in srcs) and target is not None:
+            kind = "face to"  # "a waitress carries a tray towards them", "rides towards the dragon": facing them
         if kind == "no relation" or (kind == "stack" and end < ce and toks[end].text == "with"):
             return end  # "a shelf stacked with books": contents, no stack
         if kind in _FORMATIONS or kind.startswith("anchor ") or (target is None and kind in _PLACE_KINDS):
@@ -1143,7 +1148,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
     def _kind(self, kind: str, s: int, t: int, hang: bool = False) -> str:
         src = self.groups[s]
         if kind == "over":
-            # a tree leaning over a pond stands by it; a lamp or a lantern over a table hangs above it
+            # a tree leaning over a pond stands by it; a lamp or a lantern over a table hangs above it;
+            # one who rides or walks over a bridge is on it (a rider's mount is: :meth:`_ridden`)
+            if self._living(s) and not hang and self._carrier(t, ("perches",)):
+                return "on"
             return "above" if hang or src.rests in ("hanging", "surface") else "near"
         walled = any(m.group == s for k, m in self.by_start.items() if k in self.on_wall)
         if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not (hang or walled):
