@@ -154,7 +154,7 @@ def test_an_instrument_played_is_in_hand_and_a_pet_with_one_keeps_its_own_place(
 
 
 def test_one_going_towards_a_thing_faces_it_and_one_crossing_a_bridge_is_on_it():
-    found = rels("Two vans are parked by the gate, and a porter pushes a trolley towards them.")
+    found = rels("Two vans are parked by the gate, and a porter carries a suitcase towards them.")
     assert ("porter_1", "face to", "truck_1") in found, found
     found = rels("A squire on a brown pony trots over the bridge towards the tower.")
     assert {("horse_1", "on", "bridge_1"), ("squire_1", "face to", "tower_1")} <= found, found

@@ -858,8 +858,6 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._close_with(c)
             srcs = list(c.head)
             c.head, c.wsub, c.expect_new = None, [], True
-        if towards and c.deeds and c.deeds[-1][1] in srcs:
-            srcs = list(c.deeds[-1][0])  # "a porter pushes a trolley towards them": the porter goes
         if towards and srcs and all(self._living(g) for g in srcs) and target is not None:
             kind = "face to"  # "a waitress carries a tray towards them", "rides towards the dragon": facing them
         if kind == "no relation" or (kind == "stack" and end < ce and toks[end].text == "with"):
