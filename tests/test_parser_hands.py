@@ -159,3 +159,8 @@ def test_one_going_towards_a_thing_faces_it_and_one_crossing_a_bridge_is_on_it()
     found = rels("A squire on a brown pony trots over the bridge towards the tower.")
     assert {("horse_1", "on", "bridge_1"), ("squire_1", "face to", "tower_1")} <= found, found
     assert ("owl_1", "above", "bridge_1") in rels("An owl flies over the bridge.")
+
+
+def test_a_clause_opening_with_a_participle_is_about_the_subject_before():
+    found = rels("A knight kneels before the queen, offering her a sword.")
+    assert {("sword_1", "on", "knight_1"), ("knight_1", "near", "queen_1")} <= found, found

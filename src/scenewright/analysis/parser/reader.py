@@ -148,6 +148,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self._recent_from = 0
         #: Where this sentence starts in ``history``.
         self._sentence_from = 0
+        #: The living subjects of the clause before in this sentence: whom a clause that opens with a
+        #: participle is about ("a knight kneels before the queen, offering her a sword": the knight).
+        self.doers: list[int] = []
         #: (thing, person) groups where the text puts the thing on a part of the person.
         self.carried: set[tuple[int, int]] = set()
         #: Place words that set the scene rather than stand in it ("a hangar with a spaceship").
@@ -312,6 +315,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._recent_from, sentence_from = sentence_from, len(self.history)
             self._sentence_from = sentence_from
             prev_subject: list[int] = []
+            self.doers = []
             pending: list[tuple[str, list[int]]] = []
             last_rels: list[tuple[str, list[int]]] = []
             clauses = self._merge_lists(sentence)
@@ -360,6 +364,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 if about:
                     placed_by = [r[2] for r in self.relations[before:] if r[1] in about]
                     self.topic = list(dict.fromkeys([*about, *reversed(placed_by)]))
+                    self.doers = [g for g in about if self._living(g)]
                 self.history.extend(c.groups)
         by_start = {m.start: m for m in mentions}
         held = [("on", by_start[s].group, by_start[h].group, None) for s, h in self.held_of
@@ -561,7 +566,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 c.each_own = members[-1]  # "two helmsmen sit ..., each in a steel seat": a seat each
                 k += 1
                 continue
-            holder = c.main or list(prev_subject)  # ", holding a lamp": the subject before
+            # ", holding a lamp": the subject before
+            holder = c.main or (self.doers if participial else []) or list(prev_subject)
             # (a hand verb that opens a relation phrase is no holding: "waves at a passing van")
             # (an animal has in hand what it plays with or eats: "a bear bangs a spoon")
             hand = k not in self.rel_at and bool(holder) and (
@@ -569,7 +575,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 or (w in _USE_VERBS and self._living(holder[-1]) and self._hand_object(k + 1, ce) is not None)
             )
             # "sipping coffee from a paper cup", "practises with five clubs": in the doer's hand
-            doer = list(prev_subject) if participial else (c.subjects or holder)
+            doer = (self.doers or list(prev_subject)) if participial else (c.subjects or holder)
             tool_end = self._tool_after(k, ce) if doer and self._person_at(doer[-1]) else None
             if tool_end is not None:
                 holder, hand = doer, True
@@ -667,7 +673,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 last_event_end = k
                 continue
             if c.head is None and k not in self.content_at:
-                self._deed_on_pronoun(c, k, list(prev_subject) if participial else [], prev_subject)
+                self._deed_on_pronoun(c, k, (self.doers or list(prev_subject)) if participial else [], prev_subject)
             k += 1
         self._close_with(c)
         self._do_deeds(c)
