@@ -164,3 +164,9 @@ def test_one_going_towards_a_thing_faces_it_and_one_crossing_a_bridge_is_on_it()
 def test_a_clause_opening_with_a_participle_is_about_the_subject_before():
     found = rels("A knight kneels before the queen, offering her a sword.")
     assert {("sword_1", "on", "knight_1"), ("knight_1", "near", "queen_1")} <= found, found
+
+
+def test_one_who_carries_a_thing_takes_the_place_that_follows():
+    found = rels("A robot waiter carries a tray of drinks between the tables.")
+    assert ("plate_1", "on", "robot_waiter_1") in found or any(r == "on" and t == "robot_waiter_1" for s, r, t in found), found
+    assert any(s == "robot_waiter_1" and t.startswith("table") for s, r, t in found), found

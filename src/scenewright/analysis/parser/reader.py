@@ -832,7 +832,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             )
             # "a dad with his putter beside the windmill": what is in hand goes where its holder is
             # ("reads a book on the bench", "sharpen their spears on a grindstone": the readers and sharpeners)
-            in_hand = c.hand and target not in _PERSONAL and (kind in _GROUND_KINDS or kind in _HOLDER_KINDS)
+            # (what a person holds or carries is in hand as well: "a waiter carries a tray between the tables")
+            holding = c.hand or c.hold and all(self._living(h) for h in c.head)
+            in_hand = holding and target not in _PERSONAL and (kind in _GROUND_KINDS or kind in _HOLDER_KINDS)
             # ("with his terrier asleep under it": a living with-thing is no thing in hand, its phrase places it)
             in_hand = in_hand and not any(self._living(g) for g in c.wsub)
             if c.wsub and not closed and not c.expect_new and not in_hand:
