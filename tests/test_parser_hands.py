@@ -168,5 +168,4 @@ def test_a_clause_opening_with_a_participle_is_about_the_subject_before():
 
 def test_one_who_carries_a_thing_takes_the_place_that_follows():
     found = rels("A robot waiter carries a tray of drinks between the tables.")
-    assert ("plate_1", "on", "robot_waiter_1") in found or any(r == "on" and t == "robot_waiter_1" for s, r, t in found), found
-    assert any(s == "robot_waiter_1" and t.startswith("table") for s, r, t in found), found
+    assert {("plate_1", "on", "robot_1"), ("robot_1", "right of", "table_1"), ("robot_1", "left of", "table_2")} <= found, found
