@@ -169,3 +169,10 @@ def test_a_clause_opening_with_a_participle_is_about_the_subject_before():
 def test_one_who_carries_a_thing_takes_the_place_that_follows():
     found = rels("A robot waiter carries a tray of drinks between the tables.")
     assert {("plate_1", "on", "robot_1"), ("robot_1", "right of", "table_1"), ("robot_1", "left of", "table_2")} <= found, found
+
+
+def test_a_tool_after_a_place_with_no_top_is_the_persons():
+    found = rels("A guard stands at the gate with a spear.")
+    assert ("spear_1", "on", "guard_1") in found, found
+    found = rels("A baker stands behind the counter with a tray on it.")  # its own phrase: the counter's
+    assert ("plate_1", "on", "counter_1") in found, found

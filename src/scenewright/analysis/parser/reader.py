@@ -598,7 +598,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # ("a sheep waits by the gate with its shepherd": a living thing's companion is its own)
                 fellow = self._next_mention(k + 1, ce)
                 fellow = fellow is not None and self._lives(fellow.category) and all(self._living(h) for h in c.head)
-                if after_target and not fellow and (
+                # ("a guard stands at the gate with a spear": nothing stands on a gate, the spear is his)
+                tool = self._hand_object(k + 1, ce, tool=True) if w == "with" else None
+                armed = tool is not None and not self._placed_by_pronoun(tool.end, ce) and all(
+                    self._person_at(h) for h in c.head
+                ) and not any(self.catalogue[self.groups[t].category].support for t in c.last_target)
+                if armed and after_target:
+                    hand = True
+                if after_target and not fellow and not armed and (
                     (w == "with" and not mine and (self._animate(*c.head) or between)) or (w, nxt) in _HOLD_PAIRS
                 ):  # "a baker stands behind the counter with a tray on it", "between a drum and a shelf with
                     # cups on it", "sits at a desk covered in monitors": the target's
