@@ -554,7 +554,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 plural = [g for g in [*self.history, *c.groups] if self.groups[g].count > 1]
                 # "four astronauts sit on stools around a table, each holding a pouch": the holders
                 holding = nxt in _HOLD or nxt in _HAND_VERBS or nxt in _USE_VERBS
-                people = [g for g in [*c.subjects, *prev_subject, *self.topic] if self.groups[g].count > 1 and self._living(g)]
+                people = [
+                    g for g in [*c.subjects, *prev_subject, *self.topic] if self.groups[g].count > 1 and self._living(g)
+                ]
                 if holding and people:
                     plural = people[:1]
                 if plural:
@@ -591,7 +593,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     last_event_end = k
                     continue
                 self._close_with(c)  # "holds a horseshoe with tongs": the horseshoe is held before the tongs come
-                c.head = [c.each] if c.each is not None else (holder if tool_end is not None else (c.main or list(prev_subject)))
+                own = holder if tool_end is not None else (c.main or list(prev_subject))
+                c.head = [c.each] if c.each is not None else own
                 mine = nxt in _PERSON_POSSESSIVES  # "by the flag with his mallet": his, not the flag's
                 after_target = bool(c.last_target) and c.last_target_end == k
                 between = c.last_kind == "between"
@@ -666,7 +669,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     elif verb_object and self._living(c.main[-1]) and not c.expect_new:
                         c.deeds.append((list(c.main), g))
                         c.deed_end = m.end
-                    if not (led or into or verb_object and self._living(c.main[-1]) and self._small(g) and not c.expect_new):
+                    small_object = verb_object and self._living(c.main[-1]) and self._small(g) and not c.expect_new
+                    if not (led or into or small_object):
                         c.main = [g] if c.expect_new or verb_object else [*c.main, g]
                     if not c.verb_seen:
                         c.subjects.append(g)
@@ -709,8 +713,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return False
         # ("two children feed ducks": a verb after a plural subject has no -s; "two kids are loading
         # pumpkins", but "a mother pushing a pram" names the mother)
-        progressive = any(self.toks[j - 1].text in _COPULAS and self.toks[j].text.endswith("ing") for j in range(start + 1, end))
-        return progressive or any((_is_verb(w) or self._finite_at(j)) and w not in _COPULAS for j, w in enumerate(gap, start))
+        toks = self.toks
+        progressive = any(toks[j - 1].text in _COPULAS and toks[j].text.endswith("ing") for j in range(start + 1, end))
+        finite = any((_is_verb(w) or self._finite_at(j)) and w not in _COPULAS for j, w in enumerate(gap, start))
+        return progressive or finite
 
     def _verb_before(self, pos: int, test) -> bool:
         """A verb that passes ``test`` earlier in the same clause part ("dozes in it")."""
@@ -772,7 +778,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     continue  # "a clerk at the counter, with a radio beside it": placed on its own
                 # ("a squire holds a horse by the reins": too big for arms, by him; "a girl with her dog": by her)
                 big = c.hold and max(self.groups[g].size) > _HANDHELD_SIZE
-                if (big or c.hand or not c.hold) and self._living(g) and self._living(h) and not any(r[1] == g for r in self.relations):
+                placed = any(r[1] == g for r in self.relations)
+                if (big or c.hand or not c.hold) and self._living(g) and self._living(h) and not placed:
                     self._relate("near", [g], h)  # "a dog waits with its handler", "a farmer with two sheepdogs"
                     c.produced = True
                     continue
@@ -858,8 +865,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     kind = "near"  # one works on a grindstone or an anvil standing at it
         else:
             srcs = list(c.main)
-            if kind in ("on", "in", "on top") and c.deeds and c.deed_end == last_event_end and self._small(c.deeds[-1][1]):
-                srcs = [c.deeds[-1][1]]  # "a smith hammers a horseshoe on the anvil": the horseshoe is on it
+            acted = c.deeds[-1][1] if c.deeds and c.deed_end == last_event_end else None
+            if kind in ("on", "in", "on top") and acted is not None and self._small(acted):
+                srcs = [acted]  # "a smith hammers a horseshoe on the anvil": the horseshoe is on it
         if kind == "on" and srcs and all(self._person_at(g) for g in srcs) and self._pair_before(rel.start):
             kind = "near"  # "a girl writes on the blackboard": at it (a slate in hand was read as held)
         if kind == "from" and c.deeds and c.deed_end in (last_event_end, rel.start):
