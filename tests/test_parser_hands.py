@@ -151,3 +151,28 @@ def test_an_instrument_played_is_in_hand_and_a_pet_with_one_keeps_its_own_place(
     assert {("guitar_1", "on", "musician_1"), ("musician_1", "near", "lamp_post_1")} <= found, found  # a violin is a guitar
     found = rels("A girl reads a comic on the sofa, with her kitten asleep under it.")
     assert ("girl_1", "on", "sofa_1") in found and not any(s == "girl_1" and r == "near" for s, r, t in found), found
+
+
+def test_one_going_towards_a_thing_faces_it_and_one_crossing_a_bridge_is_on_it():
+    found = rels("Two vans are parked by the gate, and a porter carries a suitcase towards them.")
+    assert ("porter_1", "face to", "truck_1") in found, found
+    found = rels("A squire on a brown pony trots over the bridge towards the tower.")
+    assert {("horse_1", "on", "bridge_1"), ("squire_1", "face to", "tower_1")} <= found, found
+    assert ("owl_1", "above", "bridge_1") in rels("An owl flies over the bridge.")
+
+
+def test_a_clause_opening_with_a_participle_is_about_the_subject_before():
+    found = rels("A knight kneels before the queen, offering her a sword.")
+    assert {("sword_1", "on", "knight_1"), ("knight_1", "near", "queen_1")} <= found, found
+
+
+def test_one_who_carries_a_thing_takes_the_place_that_follows():
+    found = rels("A robot waiter carries a tray of drinks between the tables.")
+    assert {("plate_1", "on", "robot_1"), ("robot_1", "right of", "table_1"), ("robot_1", "left of", "table_2")} <= found, found
+
+
+def test_a_tool_after_a_place_with_no_top_is_the_persons():
+    found = rels("A guard stands at the gate with a spear.")
+    assert ("spear_1", "on", "guard_1") in found, found
+    found = rels("A baker stands behind the counter with a tray on it.")  # its own phrase: the counter's
+    assert ("plate_1", "on", "counter_1") in found, found

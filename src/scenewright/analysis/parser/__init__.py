@@ -9,7 +9,7 @@ the phrase.
 Where things live: ``tokens`` (words, clauses), ``words`` (closed word classes), ``nouns``
 (noun phrases, the open vocabulary, place words), ``sizes``, ``phrases`` (relation phrases;
 the phrases themselves are ``data/relation_phrases.json``), ``reader`` (clause reading and
-reference resolution), ``distribute`` ("each", around, between, rows: group relations to
+reference resolution), ``hands`` (what people and animals hold or act on), ``distribute`` ("each", around, between, rows: group relations to
 object relations), ``support`` (default supports, ``on`` only onto hosts that can hold the
 thing), ``vocabulary`` (``data/vocabulary.json``), ``language`` (English only), ``style``.
 To add a phrase, add it to its kind's list in ``data/relation_phrases.json``; to add a thing,
@@ -43,6 +43,18 @@ Decisions worth knowing:
   sides (every side once, then the long sides of a long table), each facing it; one thing
   "around" another is ``near`` it; ``at a distance of
   N m`` → ``near`` when N ≤ 2, ``far`` when N > 8.
+- People and animals (``hands``): what one uses, works with or takes from is in hand, ``on`` the
+  holder, when small enough to hold ("eats a sandwich", "practises with five clubs", "sipping
+  coffee from a paper cup", "a glass in one hand", "baskets on their backs"); the holder takes the
+  next place phrase ("lifts a barbell next to the bales"), a seat or a perch carrying them and
+  anything else worked at (``near``: "sharpen their spears on a grindstone"). A doer stands
+  ``near`` what it acts on ("plays it", "scrubs its back", "forks straw into it", "pushes the front
+  one"), is ``on`` the perch it acts from ("plays it from a bench", "feed ducks from a
+  footbridge"); a small thing worked on where it lies takes the phrase ("stirs a pot on the stove":
+  the pot on it, the doer near it). Companions keep ``near`` ("with its handler"), a led animal by
+  its person ("walks a dachshund beside the van": the man beside it); "each holding" gives one to
+  each of the people; "sharing a thermos" is one thermos; a giver holds the gift, ``near`` whom it
+  goes to; one going "towards" a thing faces it; a rider over a bridge is on it (the mount is).
 - "on the left wall" places nothing: a side word before a noun is that noun's adjective, and
   walls are no objects. A part named by a possessive is its owner ("above its door" → above
   it), since doors, roofs and porches are not objects either.

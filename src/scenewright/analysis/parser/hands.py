@@ -111,7 +111,8 @@ class _Hands:
         that is named by a pronoun, lives or is too big to hold ("plays it from a narrow bench",
         "two children feed ducks from a footbridge"; not "pulls a rope from the barrel")."""
         perch = self._next_mention(k + 1, len(self.toks))
-        if not self._after_verb(k) or perch is not None and not load_vocabulary().carries(perch.category, perch.phrase, _RIDDEN):
+        ridden = perch is None or load_vocabulary().carries(perch.category, perch.phrase, _RIDDEN)
+        if not self._after_verb(k) or not ridden:
             return False  # ("feeds the goats from a bucket": what the feed comes out of)
         j = k - 1
         while j >= 0 and k - j <= 6:
@@ -133,12 +134,14 @@ class _Hands:
         doers = doers or list(c.main)
         if not doers or not all(self._living(g) for g in doers):
             return
-        one = w == "one" and k > 0 and toks[k - 1].text not in _NUMBERS and (k + 1 >= len(toks) or toks[k + 1].text != "of")
-        # "scrubs its back", "trims its ears", "measures his arm": the owner of the part
         after = toks[k + 1].text if k + 1 < len(toks) else ""
+        one = w == "one" and k > 0 and toks[k - 1].text not in _NUMBERS and after != "of"
+        # "scrubs its back", "trims its ears", "measures his arm": the owner of the part
         part = k + 1 not in self.by_start and after.isalpha() and (after not in _STOP or self._part_word(after))
         owner = part and (w == "its" or w in _PERSON_POSSESSIVES and toks[k + 1].text in load_vocabulary().body_parts)
-        if not (w in ("it", "them") or one or owner) or not self._after_verb(k, over=("into", "onto", *_ORDINALS, "front", "back")):
+        if not (w in ("it", "them") or one or owner):
+            return
+        if not self._after_verb(k, over=("into", "onto", *_ORDINALS, "front", "back")):
             return
         if one:
             thing = self._one_of(c, doers, prev_subject)
@@ -153,7 +156,9 @@ class _Hands:
             c.deeds.append((doers, thing[0]))
             c.deed_end = k + 1
 
-    def _given_to(self, c: _Clause, k: int, ce: int, giver: list[int], prev_subject: list[int]) -> tuple[int, int] | None:
+    def _given_to(
+        self, c: _Clause, k: int, ce: int, giver: list[int], prev_subject: list[int]
+    ) -> tuple[int, int] | None:
         """Whom the giving verb at ``k`` gives to, and where that phrase ends, when a thing to
         hold follows ("hands one of them a toolbox", "passes her a cup", "gives the boy a kite")."""
         toks, j = self.toks, k + 1

@@ -148,6 +148,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self._recent_from = 0
         #: Where this sentence starts in ``history``.
         self._sentence_from = 0
+        #: The living subjects of the clause before in this sentence: whom a clause that opens with a
+        #: participle is about ("a knight kneels before the queen, offering her a sword": the knight).
+        self.doers: list[int] = []
         #: (thing, person) groups where the text puts the thing on a part of the person.
         self.carried: set[tuple[int, int]] = set()
         #: Place words that set the scene rather than stand in it ("a hangar with a spaceship").
@@ -312,6 +315,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._recent_from, sentence_from = sentence_from, len(self.history)
             self._sentence_from = sentence_from
             prev_subject: list[int] = []
+            self.doers = []
             pending: list[tuple[str, list[int]]] = []
             last_rels: list[tuple[str, list[int]]] = []
             clauses = self._merge_lists(sentence)
@@ -360,6 +364,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 if about:
                     placed_by = [r[2] for r in self.relations[before:] if r[1] in about]
                     self.topic = list(dict.fromkeys([*about, *reversed(placed_by)]))
+                    self.doers = [g for g in about if self._living(g)]
                 self.history.extend(c.groups)
         by_start = {m.start: m for m in mentions}
         held = [("on", by_start[s].group, by_start[h].group, None) for s, h in self.held_of
@@ -549,7 +554,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 plural = [g for g in [*self.history, *c.groups] if self.groups[g].count > 1]
                 # "four astronauts sit on stools around a table, each holding a pouch": the holders
                 holding = nxt in _HOLD or nxt in _HAND_VERBS or nxt in _USE_VERBS
-                people = [g for g in [*c.subjects, *prev_subject, *self.topic] if self.groups[g].count > 1 and self._living(g)]
+                people = [
+                    g for g in [*c.subjects, *prev_subject, *self.topic] if self.groups[g].count > 1 and self._living(g)
+                ]
                 if holding and people:
                     plural = people[:1]
                 if plural:
@@ -561,7 +568,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 c.each_own = members[-1]  # "two helmsmen sit ..., each in a steel seat": a seat each
                 k += 1
                 continue
-            holder = c.main or list(prev_subject)  # ", holding a lamp": the subject before
+            # ", holding a lamp": the subject before
+            holder = c.main or (self.doers if participial else []) or list(prev_subject)
             # (a hand verb that opens a relation phrase is no holding: "waves at a passing van")
             # (an animal has in hand what it plays with or eats: "a bear bangs a spoon")
             hand = k not in self.rel_at and bool(holder) and (
@@ -569,7 +577,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 or (w in _USE_VERBS and self._living(holder[-1]) and self._hand_object(k + 1, ce) is not None)
             )
             # "sipping coffee from a paper cup", "practises with five clubs": in the doer's hand
-            doer = list(prev_subject) if participial else (c.subjects or holder)
+            doer = (self.doers or list(prev_subject)) if participial else (c.subjects or holder)
             tool_end = self._tool_after(k, ce) if doer and self._person_at(doer[-1]) else None
             if tool_end is not None:
                 holder, hand = doer, True
@@ -585,14 +593,22 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     last_event_end = k
                     continue
                 self._close_with(c)  # "holds a horseshoe with tongs": the horseshoe is held before the tongs come
-                c.head = [c.each] if c.each is not None else (holder if tool_end is not None else (c.main or list(prev_subject)))
+                own = holder if tool_end is not None else (c.main or list(prev_subject))
+                c.head = [c.each] if c.each is not None else own
                 mine = nxt in _PERSON_POSSESSIVES  # "by the flag with his mallet": his, not the flag's
                 after_target = bool(c.last_target) and c.last_target_end == k
                 between = c.last_kind == "between"
                 # ("a sheep waits by the gate with its shepherd": a living thing's companion is its own)
                 fellow = self._next_mention(k + 1, ce)
                 fellow = fellow is not None and self._lives(fellow.category) and all(self._living(h) for h in c.head)
-                if after_target and not fellow and (
+                # ("a guard stands at the gate with a spear": nothing stands on a gate, the spear is his)
+                tool = self._hand_object(k + 1, ce, tool=True) if w == "with" else None
+                armed = tool is not None and not self._placed_by_pronoun(tool.end, ce) and all(
+                    self._person_at(h) for h in c.head
+                ) and not any(self.catalogue[self.groups[t].category].support for t in c.last_target)
+                if armed and after_target:
+                    hand = True
+                if after_target and not fellow and not armed and (
                     (w == "with" and not mine and (self._animate(*c.head) or between)) or (w, nxt) in _HOLD_PAIRS
                 ):  # "a baker stands behind the counter with a tray on it", "between a drum and a shelf with
                     # cups on it", "sits at a desk covered in monitors": the target's
@@ -653,7 +669,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     elif verb_object and self._living(c.main[-1]) and not c.expect_new:
                         c.deeds.append((list(c.main), g))
                         c.deed_end = m.end
-                    if not (led or into or verb_object and self._living(c.main[-1]) and self._small(g) and not c.expect_new):
+                    small_object = verb_object and self._living(c.main[-1]) and self._small(g) and not c.expect_new
+                    if not (led or into or small_object):
                         c.main = [g] if c.expect_new or verb_object else [*c.main, g]
                     if not c.verb_seen:
                         c.subjects.append(g)
@@ -667,7 +684,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 last_event_end = k
                 continue
             if c.head is None and k not in self.content_at:
-                self._deed_on_pronoun(c, k, list(prev_subject) if participial else [], prev_subject)
+                self._deed_on_pronoun(c, k, (self.doers or list(prev_subject)) if participial else [], prev_subject)
             k += 1
         self._close_with(c)
         self._do_deeds(c)
@@ -696,8 +713,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return False
         # ("two children feed ducks": a verb after a plural subject has no -s; "two kids are loading
         # pumpkins", but "a mother pushing a pram" names the mother)
-        progressive = any(self.toks[j - 1].text in _COPULAS and self.toks[j].text.endswith("ing") for j in range(start + 1, end))
-        return progressive or any((_is_verb(w) or self._finite_at(j)) and w not in _COPULAS for j, w in enumerate(gap, start))
+        toks = self.toks
+        progressive = any(toks[j - 1].text in _COPULAS and toks[j].text.endswith("ing") for j in range(start + 1, end))
+        finite = any((_is_verb(w) or self._finite_at(j)) and w not in _COPULAS for j, w in enumerate(gap, start))
+        return progressive or finite
 
     def _verb_before(self, pos: int, test) -> bool:
         """A verb that passes ``test`` earlier in the same clause part ("dozes in it")."""
@@ -759,7 +778,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     continue  # "a clerk at the counter, with a radio beside it": placed on its own
                 # ("a squire holds a horse by the reins": too big for arms, by him; "a girl with her dog": by her)
                 big = c.hold and max(self.groups[g].size) > _HANDHELD_SIZE
-                if (big or c.hand or not c.hold) and self._living(g) and self._living(h) and not any(r[1] == g for r in self.relations):
+                placed = any(r[1] == g for r in self.relations)
+                if (big or c.hand or not c.hold) and self._living(g) and self._living(h) and not placed:
                     self._relate("near", [g], h)  # "a dog waits with its handler", "a farmer with two sheepdogs"
                     c.produced = True
                     continue
@@ -826,7 +846,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             )
             # "a dad with his putter beside the windmill": what is in hand goes where its holder is
             # ("reads a book on the bench", "sharpen their spears on a grindstone": the readers and sharpeners)
-            in_hand = c.hand and target not in _PERSONAL and (kind in _GROUND_KINDS or kind in _HOLDER_KINDS)
+            # (what a person holds or carries is in hand as well: "a waiter carries a tray between the tables")
+            holding = c.hand or c.hold and all(self._living(h) for h in c.head)
+            in_hand = holding and target not in _PERSONAL and (kind in _GROUND_KINDS or kind in _HOLDER_KINDS)
             # ("with his terrier asleep under it": a living with-thing is no thing in hand, its phrase places it)
             in_hand = in_hand and not any(self._living(g) for g in c.wsub)
             if c.wsub and not closed and not c.expect_new and not in_hand:
@@ -843,8 +865,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     kind = "near"  # one works on a grindstone or an anvil standing at it
         else:
             srcs = list(c.main)
-            if kind in ("on", "in", "on top") and c.deeds and c.deed_end == last_event_end and self._small(c.deeds[-1][1]):
-                srcs = [c.deeds[-1][1]]  # "a smith hammers a horseshoe on the anvil": the horseshoe is on it
+            acted = c.deeds[-1][1] if c.deeds and c.deed_end == last_event_end else None
+            if kind in ("on", "in", "on top") and acted is not None and self._small(acted):
+                srcs = [acted]  # "a smith hammers a horseshoe on the anvil": the horseshoe is on it
         if kind == "on" and srcs and all(self._person_at(g) for g in srcs) and self._pair_before(rel.start):
             kind = "near"  # "a girl writes on the blackboard": at it (a slate in hand was read as held)
         if kind == "from" and c.deeds and c.deed_end in (last_event_end, rel.start):
@@ -852,11 +875,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if kind == "from" and not any(self._living(g) for g in srcs):
             # "a guard waves a flag from the tower": the one who waves is up there
             srcs = [g for g in c.subjects if self._living(g)] or srcs
-        if kind == "no relation" and c.head is not None and toks[rel.start].text.startswith(("toward", "heading")):
+        towards = kind == "no relation" and toks[rel.start].text.startswith(("toward", "heading"))
+        if towards and c.head is not None:
             # "a forklift carries a pallet toward the rack": the with-part ends, the rack is no load
             self._close_with(c)
+            srcs = list(c.head)
             c.head, c.wsub, c.expect_new = None, [], True
-            return end
+        if towards and srcs and all(self._living(g) for g in srcs) and target is not None:
+            kind = "face to"  # "a waitress carries a tray towards them", "rides towards the dragon": facing them
         if kind == "no relation" or (kind == "stack" and end < ce and toks[end].text == "with"):
             return end  # "a shelf stacked with books": contents, no stack
         if kind in _FORMATIONS or kind.startswith("anchor ") or (target is None and kind in _PLACE_KINDS):
@@ -1143,7 +1169,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
     def _kind(self, kind: str, s: int, t: int, hang: bool = False) -> str:
         src = self.groups[s]
         if kind == "over":
-            # a tree leaning over a pond stands by it; a lamp or a lantern over a table hangs above it
+            # a tree leaning over a pond stands by it; a lamp or a lantern over a table hangs above it;
+            # one who rides or walks over a bridge is on it (a rider's mount is: :meth:`_ridden`)
+            if self._living(s) and not hang and self._carrier(t, ("perches",)):
+                return "on"
             return "above" if hang or src.rests in ("hanging", "surface") else "near"
         walled = any(m.group == s for k, m in self.by_start.items() if k in self.on_wall)
         if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not (hang or walled):

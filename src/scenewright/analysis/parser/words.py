@@ -114,7 +114,8 @@ _HAND_PAIRS = {
 #: bigger object is acted on where it stands ("paints a fence"). Stirring or hammering a thing
 #: works on it where it lies ("stirs a pot on the stove"), so those verbs are not here.
 _USE_VERBS = {
-    "eat", "eats", "eating", "munch", "munches", "munching", "nibble", "nibbles", "nibbling", "chew", "chews", "chewing", "gnaw", "gnaws", "gnawing",
+    "eat", "eats", "eating", "munch", "munches", "munching", "nibble", "nibbles", "nibbling",
+    "chew", "chews", "chewing", "gnaw", "gnaws", "gnawing",
     "read", "reads", "reading", "play", "plays", "playing", "strum", "strums", "strumming",
     "bang", "bangs", "banging", "shake", "shakes", "shaking", "ring", "rings", "ringing",
     "lift", "lifts", "lifting", "toss", "tosses", "tossing",
