@@ -16,13 +16,17 @@ from scenewright.analysis.parser.grammar import (
     _FORMATIONS,
     _FORMATION_NOUNS,
     _GROUND_KINDS,
+    _HANDHELD_SIZE,
     _KIND_RELATION,
+    _LOW_HOST,
     _OWN_SIDES,
     _PERSONAL,
     _PERSON_POSSESSIVES,
     _PLACE_KINDS,
+    _PLATFORM_HEIGHT,
     _POSSESSED,
     _RELATIVES,
+    _REVERSED,
     _SEATS,
     _VESSEL_KINDS,
 )
@@ -68,6 +72,10 @@ class _Clause:
     """What one clause has built so far."""
 
     first: bool
+    #: The clause opens as a sentence does, with a phrase before its own subject: the first of its
+    #: sentence, or one after "and" that names its subject after the phrase ("..., and between
+    #: them a crew heaves on the ropes").
+    opens: bool = False
     main: list[int] = field(default_factory=list)
     head: list[int] | None = None  # what a "with" part hangs from
     wsub: list[int] = field(default_factory=list)
@@ -283,7 +291,9 @@ class _Reader(_Contents, _References, _Kinds):
         # "pulls a rope from the barrel" names where the rope comes from
         self.rel_at = {
             r.start: r for r in _find_relations(toks, taken)
-            if (r.kind != "at" or self._names_thing(r.end, starts)) and (r.kind != "from" or self._verb_before(r.start, self._lookout))
+            if (r.kind != "at" or self._names_thing(r.end, starts))
+            and (r.kind != "from" or self._verb_before(r.start, self._lookout) or self._from_to(r.end, starts)
+                 or self._seat_after(r, mentions))
         }  # fmt: skip
         self._rows_then_with(mentions)
         #: Mentions the text puts on a wall ("a luggage rack on the wall"): hung, so "above" holds.
@@ -515,6 +525,7 @@ class _Reader(_Contents, _References, _Kinds):
         while j < ce and j not in self.rel_at and (toks[j].text in _DETERMINERS or toks[j].text in _ADVERBS):
             j += 1
         starts_with_rel = j in self.rel_at
+        c.opens = c.first or (starts_with_rel and k > cs and self._subject_after(self.rel_at[j].end, ce))
         c.unknown_subject = j > k and toks[k].text in ("a", "an", "the") and j not in self.by_start and not starts_with_rel
         last_event_end = cs
         while k < ce:
@@ -617,6 +628,17 @@ class _Reader(_Contents, _References, _Kinds):
         self._close_with(c)
         self._do_deeds(c)
 
+    def _subject_after(self, start: int, ce: int) -> bool:
+        """Two things named after a phrase that opens a clause part, its target and the clause's
+        own subject ("and between them a ground crew heaves ..."), or no verb at all: the
+        subject comes in the next part ("and beside him, a dog sleeps")."""
+        pronouns = ("it", "them", "him", "her")
+        named = [
+            k for k in range(start, ce)
+            if (k in self.by_start and k not in self.content_at) or self.toks[k].text in pronouns
+        ]  # fmt: skip
+        return len(named) >= 2 or not any(_is_verb(t.text) for t in self.toks[start:ce])
+
     def _do_deeds(self, c: _Clause) -> None:
         """"A porter pushes a cart", "two engineers check the console": whoever acts on a thing
         too big to hold stands by it, unless the clause already relates the two."""
@@ -700,6 +722,9 @@ class _Reader(_Contents, _References, _Kinds):
     def _relation(self, c: _Clause, rel: _Rel, ce: int, prev_subject, starts_with_rel, last_event_end) -> int:
         toks = self.toks
         kind = rel.kind
+        stacked = any(r.end == rel.start and r.kind == "stack" for r in self.rel_at.values())
+        if kind == "near" and toks[rel.start].text == "against" and stacked:
+            kind = "side of"  # "drums are stacked against the hut": the stack rests on its side
         # "To her left a globe sits": the possessive is the target, the noun after the subject
         target, end = self._target_at(rel.end, ce) if kind not in _OWN_SIDES else (None, rel.end)
         if kind in ("on", "at") and target is None and (side := self._owners_side(rel.end, ce)) is not None:
@@ -707,12 +732,17 @@ class _Reader(_Contents, _References, _Kinds):
         ordinals: tuple[int, int] | None = None  # "between the first and second car": two of one group
         if kind == "between" and target is None and (pair := self._ordinal_pair(rel.end, ce)) is not None:
             group, ordinals, end = pair
-            target, self._target_start = [group], -1
+            several = [group] if group is not None else self._one_of(c, [], prev_subject)
+            target, self._target_start = several or None, -1
         body, part = self._body_part, self._part  # "on her knees": by the person, as the part says
         self._perch_part = part in load_vocabulary().carriers.get("perches", ())
         parts_each = self._parts_each
         if (body == "near" and kind != "around") or (body == "on" and kind in ("on", "on top", "in")):
             kind = body  # ("hens around her feet" stay around her)
+        elif body == "on" and kind == "at":  # "a shelf at his back": behind him, not carried
+            kind, body = "behind" if any(t.text == "back" for t in toks[rel.end : end]) else "near", None
+        if kind == "at" and part == "top":  # "a shuttle docked at its top": as "at the top of" it, on it
+            kind = "on"
         between = [t.text for t in toks[last_event_end : rel.start]]
         # sources: the noun the phrase follows when nothing but adverbs lies between
         srcs: list[int]
@@ -752,16 +782,45 @@ class _Reader(_Contents, _References, _Kinds):
             )
             # "a dad with his putter beside the windmill": what is in hand goes where its holder is
             in_hand = c.hand and target not in _PERSONAL and kind in _GROUND_KINDS
+            # the with-part named something that is no object of its own ("with geraniums"), and no
+            # verb of the head's ("a man with a hat sits in a chair")
+            gap = [toks[k].text for k in range(last_event_end, rel.start)]
+            contents = (
+                toks[last_event_end - 1].text == "with"
+                and any(w not in _STOP and w[:1].isalpha() for w in gap)
+                and not any(w in _FINITE or self._lookout(w) for w in gap)
+            )
             if c.wsub and not closed and not c.expect_new and not in_hand:
                 srcs = list(c.wsub)
                 if kind in ("on", "above", "over", "on top", "under"):
                     c.wsub_related.update(srcs)
+            elif not c.wsub and contents and kind in ("in", "on") and isinstance(target, list) and target:
+                # "a chalet with geraniums in every window box": what holds the head's contents is
+                # on the head
+                for h in c.head:
+                    self._relate("on", list(target), h)
+                c.wsub, c.expect_new = list(target), False
+                c.wsub_related.update(target)
+                c.groups.extend(g for g in target if g not in c.groups)
+                return end
             else:
                 self._close_with(c)
                 srcs = list(c.head)
                 c.head, c.wsub = None, []
         else:
             srcs = list(c.main)
+            # the small object of the subject's verb right before the phrase
+            held = [m.group for m in self.by_start.values() if m.end == last_event_end and m.group in c.main_groups]
+            acted = bool(held and srcs) and held[0] not in srcs and self._small(held[0])
+            acted = acted and all(self._living(g) for g in srcs)
+            hosts = target if isinstance(target, list) else []
+            on_host = kind in ("on", "in") and bool(hosts) and not any(self._carrier(t) for t in hosts)
+            if acted and (kind in ("over", "above") or on_host):
+                # "a cook stirs a pot over the fire", "a bear stirs a pot on the stove": the pot is
+                # there, the cook by it ("a man reads a paper on the bench" is on the bench himself)
+                for t in hosts:
+                    self._relate("near", srcs, t)
+                srcs = held[:1]
         if kind == "from" and not any(self._living(g) for g in srcs):
             # "a guard waves a flag from the tower": the one who waves is up there
             srcs = [g for g in c.subjects if self._living(g)] or srcs
@@ -822,9 +881,9 @@ class _Reader(_Contents, _References, _Kinds):
             # a post next to it": the wagon)
             own_subject = list(prev_subject) if c.main and srcs == c.main else []
             prefer = [*c.last_target, *prev_subject] if c.last_target else own_subject
-            if not srcs and c.first and starts_with_rel:
+            if not srcs and c.opens and starts_with_rel:
                 prefer = list(self.topic)  # "Behind them, five soldiers sit": them of the sentence before
-            who = srcs or ([] if c.first else list(prev_subject))  # "..., watching them": the subject before
+            who = srcs or ([] if c.opens else list(prev_subject))  # "..., watching them": the subject before
             own = [t for s in who for t in c.supports.get(s, [])]
             targets: list[int] | str = (
                 list(c.head) if c.head is not None else self._pronoun(target, c, who + own, prefer, kind)
@@ -861,8 +920,10 @@ class _Reader(_Contents, _References, _Kinds):
             targets = []
         else:
             targets = target
+        if kind == "from" and end < ce and toks[end].text == "to" and isinstance(targets, list) and targets:
+            kind = "between"  # "a conveyor carries ore from it to a refinery": between the two
         if kind == "between" and isinstance(targets, list) and targets:
-            if end < ce and toks[end].text == "and":
+            if end < ce and toks[end].text == ("to" if rel.kind == "from" else "and"):
                 second, end2 = self._target_at(end + 1, ce)
                 if isinstance(second, list):
                     targets, end = targets + second, end2
@@ -871,10 +932,12 @@ class _Reader(_Contents, _References, _Kinds):
                 if t in c.groups:
                     continue
                 c.groups.append(t)
-        if kind in ("flanked by", "surrounded by", "near by", "on by"):
+        if kind in _REVERSED:
             head = srcs or list(prev_subject)
-            if isinstance(targets, list) and head:
-                active = {"flanked by": "flank", "surrounded by": "around", "near by": "near", "on by": "on"}[kind]
+            if kind == "towing" and isinstance(targets, list):
+                targets = [t for t in targets if not self._small(t)]  # "pulls a pint": no load behind
+            if isinstance(targets, list) and targets and head:
+                active = _REVERSED[kind]
                 if c.each is not None:  # "three tables, each surrounded by two chairs": two per table
                     self._per_each([t for t in targets if t != c.each], c.each)
                 for t in targets:
@@ -887,7 +950,7 @@ class _Reader(_Contents, _References, _Kinds):
             c.last_target, c.last_target_end, c.expect_new = [], -1, False
             return end
         if not srcs:
-            if starts_with_rel and c.first and not c.produced and isinstance(targets, list) and targets:
+            if starts_with_rel and c.opens and not c.produced and isinstance(targets, list) and targets:
                 tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
                 c.fronted.append((kind, targets, tm is not None and tm.each))
                 if isinstance(target, list):  # "On a mound behind the giraffes, ...": the mound is behind them
@@ -903,6 +966,7 @@ class _Reader(_Contents, _References, _Kinds):
         if kind in ("flank", "flank elliptic") and not toks[rel.start].text.startswith("flank"):
             self._one_a_side(srcs)  # also beside what is no object: "on each side of the elevator"
         hang = kind == "hanging from" or self._hung_before(rel.start)
+        hang = hang or any(t.text in _HANG_VERBS for t in toks[rel.start : rel.end])  # "hangs over the bar"
         if hang and kind in ("above", "over", "hanging from") and self._from_ceiling(rel.start):
             for g in srcs:  # "three paper lanterns hang from the ceiling over the counter": hung, not set down
                 if self.groups[g].rests != "hanging" and not self._living(g):  # also "a birdcage hangs from the ceiling"
@@ -940,7 +1004,11 @@ class _Reader(_Contents, _References, _Kinds):
         for g in srcs if parts_each and part is not None else []:
             if g in c.groups and g not in self.numbered and self.groups[g].count == 1:
                 self.groups[g].count = parts_each
-        for t in targets:
+        # "lanterns hang from the branches of an oak": up in its spread crown, by no side of it
+        crown = kind == "hanging from" and any(
+            "tree" in load_vocabulary().part_owners.get(singular(w.text), ()) for w in toks[rel.end : end]
+        )
+        for t in targets if not crown else ():
             for one in ordinals or (instance,):
                 self._relate(kind, srcs, t, hang, one)
             # a person holds nothing on top, but carries what is on a knee or an arm ("a crow on each of
@@ -964,14 +1032,21 @@ class _Reader(_Contents, _References, _Kinds):
         return end
 
     def _rider_placed(self, c: _Clause, rider: list[int], kind: str) -> bool:
-        """Whether a phrase after "a person sits on X" places the person, not X: where the person
-        works or faces ("sits on a stool at a workbench", "on a bathtub across from it"), and
-        after a seat, what the person sits between or under ("in folding chairs between them").
-        Beside, near, in front of place the seat ("a bard sits on a stool beside the fire")."""
-        if c.last_kind not in ("on", "in", "on top") or not rider or not all(self._living(g) for g in rider):
+        """Whether a phrase after "a person sits on X" places the person, not X: what the person
+        faces after any target ("kneels at a low table across from the vats", "ponies tied to a
+        fence across from the caravans"), where the person works ("sits on a stool at a
+        workbench"), and after a seat, what the person sits between, under or at the foot of ("in
+        folding chairs between them", "rest on a bench at the foot of a cross"; but "a cat naps in
+        a basket at the foot of the stove" places the basket). Beside, near, in front of place the
+        seat ("a bard sits on a stool beside the fire")."""
+        if not rider or not all(self._living(g) for g in rider):
+            return False
+        if kind in ("opposite", "face to"):
+            return True
+        if c.last_kind not in ("on", "in", "on top"):
             return False
         seat = all(self.catalogue[self.groups[g].category].shape in _SEATS for g in c.last_target)
-        return kind in ("opposite", "at", "face to") or (seat and kind in ("between", "under"))
+        return kind == "at" or (seat and kind in ("between", "under", "foot of"))
 
     @staticmethod
     def _describes(words: list[str], after_verb: bool) -> bool:
@@ -984,6 +1059,26 @@ class _Reader(_Contents, _References, _Kinds):
         if words[0] in _RELATIVES:
             return True
         return after_verb and _participle(words[0])
+
+    def _seat_after(self, rel: _Rel, mentions: list[_Mention]) -> bool:
+        """A seat right after "from": whatever one does from a seat, one sits on it ("a servant
+        plays the organ from a narrow bench"), unless a small thing taken from it comes right
+        before ("takes a cushion from the sofa")."""
+        seat = next((m for m in mentions if rel.end <= m.start < rel.end + 4), None)
+        taken = any(m.end == rel.start and max(self._size(m)) <= _HANDHELD_SIZE for m in mentions)
+        return seat is not None and not taken and load_vocabulary().carries(seat.category, seat.phrase, ("seats",))
+
+    def _from_to(self, start: int, starts: set[int]) -> bool:
+        """"From it to a refinery", "from the gate to the barn": a thing, then "to" and another
+        thing; what runs or carries from one to the other is between them."""
+        k = start
+        while k < len(self.toks) and k - start < 6 and self.toks[k].text != "to":
+            if not self.toks[k].text[:1].isalnum():
+                return False
+            k += 1
+        return k < len(self.toks) and self.toks[k].text == "to" and k > start and self._names_thing(start, starts) and (
+            self._names_thing(k + 1, starts)
+        )
 
     def _names_thing(self, start: int, starts: set[int]) -> bool:
         """A noun phrase of a thing follows ("at each desk"), not a time or a part ("at one end")."""
@@ -1053,8 +1148,17 @@ class _Reader(_Contents, _References, _Kinds):
 
     def _kind(self, kind: str, s: int, t: int, hang: bool = False) -> str:
         src = self.groups[s]
+        target = self.catalogue[self.groups[t].category]
         if kind == "over":
-            # a tree leaning over a pond stands by it; a lamp or a lantern over a table hangs above it
+            # a tree leaning over a pond stands by it; a lamp or a lantern over a table hangs above it;
+            # a pot or a cauldron over a fire sits on it; a rider over a bridge (no more than a platform
+            # high) is on it
+            vessel = src.rests == "surface" or self._carrier(s, ("containers",))
+            if not hang and vessel and not target.support and self.groups[t].size[2] <= _LOW_HOST:
+                return "on"
+            low = self.groups[t].size[2] <= _PLATFORM_HEIGHT
+            if not hang and self._living(s) and self._carrier(t, ("perches",)) and low:
+                return "on"
             return "above" if hang or src.rests in ("hanging", "surface") else "near"
         walled = any(m.group == s for k, m in self.by_start.items() if k in self.on_wall)
         if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not (hang or walled):
@@ -1062,9 +1166,7 @@ class _Reader(_Contents, _References, _Kinds):
         if kind == "under" and self._overhead(t):
             return "under hung"  # "chairs under a ceiling fan": the fan hangs above them
         if kind == "under":
-            tgt = self.catalogue[self.groups[t].category]
-            return "under flat" if self.groups[s].size[2] < 0.1 and tgt.size[2] < 1.5 else "near"
-        target = self.catalogue[self.groups[t].category]
+            return "under flat" if self.groups[s].size[2] < 0.1 and target.size[2] < 1.5 else "near"
         if kind == "at":  # "an office chair at each desk": pulled up to it, facing it
             seat = self.catalogue[src.category].shape in _SEATS
             return "at seat" if seat and (target.support or target.shape in ("desk", "table", "counter")) else "near"
@@ -1085,8 +1187,12 @@ class _Reader(_Contents, _References, _Kinds):
             return "on" if holds and target.size[2] <= 2.5 else "no relation"
         if kind == "from":  # "a heron watches from a rock", "a guard waves from the tower": on it
             return "on" if self._living(s) and (self._carrier(t) or self._perch_part) else "no relation"
-        if kind == "hanging from":  # from a beam or a shelf: above it; from a tall tree: beside it
-            return "above" if target.size[2] <= 2.5 else "near"
+        if kind == "hanging from":
+            # from a beam: above it; from a tree: beside it; from anything else (a post, a stall, a
+            # barrier, a tower's railing) it is carried by that thing, on it
+            if any(w in _CEILING_WORDS for w in self.groups[t].name.split()):
+                return "above"
+            return "near" if target.shape in _PLANT_SHAPES else "on"
         if kind == "centre of":  # "a vase in the middle of the table", "a throne in the centre of the stage": on it
             if src.rests == "surface" and target.support:
                 return "on"
