@@ -117,6 +117,27 @@ class _Clause:
     deeds: list[tuple[list[int], int]] = field(default_factory=list)
 
 
+@dataclass
+class _Phrase:
+    """One relation phrase as :meth:`_Reader._relation` reads it, step by step."""
+
+    rel: _Rel
+    ce: int  # where its clause ends
+    kind: str
+    #: The target as read after the phrase: groups, a pronoun ("it", "him", "each one"), or nothing.
+    target: list[int] | str | None
+    end: int  # where the phrase and its target end
+    #: "Between the first and second car": the two members of the target group.
+    ordinals: tuple[int, int] | None = None
+    #: The relation a body part names to its person ("on her knees": on), and the part word.
+    body: str | None = None
+    part: str | None = None
+    #: "On each of its arms": how many parts, one thing on each.
+    parts_each: int = 0
+    srcs: list[int] = field(default_factory=list)
+    targets: list[int] | str = field(default_factory=list)
+
+
 class _Reader(_Contents, _References, _Kinds):
     """One pass over the text that builds groups of objects and relations between them. What is
     content (:mod:`.contents`), what a reference names (:mod:`.references`) and what kind of thing
@@ -720,6 +741,25 @@ class _Reader(_Contents, _References, _Kinds):
                         self.carried.add((g, h))
 
     def _relation(self, c: _Clause, rel: _Rel, ce: int, prev_subject, starts_with_rel, last_event_end) -> int:
+        """One relation phrase, in steps: read the phrase and its target, find what it places, set
+        out a formation or an anchor, resolve the target, then relate (or hand the phrase to the
+        clause's subject when it comes first). Returns where the reading goes on."""
+        p = self._read_phrase(c, rel, ce, prev_subject)
+        if (stop := self._sources(c, p, prev_subject, last_event_end)) is not None:
+            return stop
+        if (stop := self._formation_or_anchor(c, p, prev_subject)) is not None:
+            return stop
+        self._targets(c, p, prev_subject, starts_with_rel)
+        if (stop := self._reversed_phrase(c, p, prev_subject)) is not None:
+            return stop
+        if (stop := self._without_sources(c, p, prev_subject, starts_with_rel)) is not None:
+            return stop
+        return self._place(c, p)
+
+    def _read_phrase(self, c: _Clause, rel: _Rel, ce: int, prev_subject) -> _Phrase:
+        """The phrase's kind as its words and target make it, and its target: "stacked against",
+        "on the artist's right", "between the first and second car", "on her knees", "at his
+        back", "at its top"."""
         toks = self.toks
         kind = rel.kind
         stacked = any(r.end == rel.start and r.kind == "stack" for r in self.rel_at.values())
@@ -743,6 +783,13 @@ class _Reader(_Contents, _References, _Kinds):
             kind, body = "behind" if any(t.text == "back" for t in toks[rel.end : end]) else "near", None
         if kind == "at" and part == "top":  # "a shuttle docked at its top": as "at the top of" it, on it
             kind = "on"
+        return _Phrase(rel, ce, kind, target, end, ordinals, body, part, parts_each)
+
+    def _sources(self, c: _Clause, p: _Phrase, prev_subject, last_event_end) -> int | None:
+        """What the phrase places: the target before it when the phrase chains on it or a
+        description of it goes on, the with-part's things, else the clause's subject (or the small
+        thing its verb acts on). Where the reading goes on when the phrase places nothing here."""
+        toks, rel, kind, target = self.toks, p.rel, p.kind, p.target
         between = [t.text for t in toks[last_event_end : rel.start]]
         # sources: the noun the phrase follows when nothing but adverbs lies between
         srcs: list[int]
@@ -766,8 +813,8 @@ class _Reader(_Contents, _References, _Kinds):
         elif c.last_target and c.last_target_end == last_event_end and self._describes(between, c.target_after_verb):
             srcs = list(c.last_target)  # "a lorry idling at the barrier", "a lamp that hangs above the bar"
             if target is None:  # "a fork stuck in the soil beside it": the description goes on
-                k = end
-                while k < ce and k not in self.rel_at and k not in self.by_start and toks[k].text not in (",", "and"):
+                k = p.end
+                while k < p.ce and k not in self.rel_at and k not in self.by_start and toks[k].text not in (",", "and"):
                     k += 1
                 c.last_target_end = k
                 return k
@@ -802,7 +849,7 @@ class _Reader(_Contents, _References, _Kinds):
                 c.wsub, c.expect_new = list(target), False
                 c.wsub_related.update(target)
                 c.groups.extend(g for g in target if g not in c.groups)
-                return end
+                return p.end
             else:
                 self._close_with(c)
                 srcs = list(c.head)
@@ -824,6 +871,13 @@ class _Reader(_Contents, _References, _Kinds):
         if kind == "from" and not any(self._living(g) for g in srcs):
             # "a guard waves a flag from the tower": the one who waves is up there
             srcs = [g for g in c.subjects if self._living(g)] or srcs
+        p.srcs = srcs
+        return None
+
+    def _formation_or_anchor(self, c: _Clause, p: _Phrase, prev_subject) -> int | None:
+        """Phrases that place by no target: no relation ("toward the rack"), a formation ("in a
+        row", "stacked"), a part of the room ("against the wall", "in the middle of the room")."""
+        toks, rel, kind, srcs, end, ce = self.toks, p.rel, p.kind, p.srcs, p.end, p.ce
         if kind == "no relation" and c.head is not None and toks[rel.start].text.startswith(("toward", "heading")):
             # "a forklift carries a pallet toward the rack": the with-part ends, the rack is no load
             self._close_with(c)
@@ -831,7 +885,7 @@ class _Reader(_Contents, _References, _Kinds):
             return end
         if kind == "no relation" or (kind == "stack" and end < ce and toks[end].text == "with"):
             return end  # "a shelf stacked with books": contents, no stack
-        if kind in _FORMATIONS or kind.startswith("anchor ") or (target is None and kind in _PLACE_KINDS):
+        if kind in _FORMATIONS or kind.startswith("anchor ") or (p.target is None and kind in _PLACE_KINDS):
             # "three stalls stand in a row", "a sofa against the wall", "a rug in the middle of the room"
             place = _PLACE_KINDS.get(kind) or self._anchor_after(rel.end, ce) if not kind.startswith("anchor ") else kind
             lines = next((_NUMBERS[t.text] for t in toks[rel.start : rel.end] if t.text in _NUMBERS), None)
@@ -848,6 +902,14 @@ class _Reader(_Contents, _References, _Kinds):
             if kind.startswith("anchor ") and toks[rel.end - 1].text != "of":
                 return rel.end  # "In the centre a huge spellbook floats ...": the noun after is the subject
             return end
+        return None
+
+    def _targets(self, c: _Clause, p: _Phrase, prev_subject, starts_with_rel) -> None:
+        """The groups the phrase's target names: a possessive's side ("to her left"), "on top",
+        "inside", "each one", "that one", a part ("in the water"), a person ("beside him"), "it" /
+        "them", the last target of an elliptic phrase ("on either side"), then the second end of
+        *between* ("and ...", "from A to B")."""
+        toks, rel, kind, target, srcs, part = self.toks, p.rel, p.kind, p.target, p.srcs, p.part
         if kind in _OWN_SIDES and target is None:
             # "to its left", "to her left", "at its foot": the side of what the possessive names
             owner = next(t.text for t in toks[rel.start : rel.end] if t.text in _POSSESSED)
@@ -858,6 +920,7 @@ class _Reader(_Contents, _References, _Kinds):
             rel = replace(rel, elliptic=True)
         if kind == "in" and target is None and toks[rel.start].text == "inside" and c.head is not None:
             target = "it"  # "a cage with a rabbit inside": inside the with-part's head
+        targets: list[int] | str
         if target == "each one":
             if all(g in self.history for g in srcs) and any(g not in self.history for g in c.main):
                 # "a register on the counter in front of each of them": one register each, not a counter
@@ -876,42 +939,7 @@ class _Reader(_Contents, _References, _Kinds):
             if not targets and target == "them living":  # "to their left" of things: them
                 targets = self._pronoun("them", c, srcs, list(c.last_target))
         elif isinstance(target, str) and target != "each other":
-            # "a bench in front of the swing, facing it": the clause's own last target first.
-            # then the subject before ("a wagon waits behind the fountain, and a donkey is tied to
-            # a post next to it": the wagon)
-            own_subject = list(prev_subject) if c.main and srcs == c.main else []
-            prefer = [*c.last_target, *prev_subject] if c.last_target else own_subject
-            if not srcs and c.opens and starts_with_rel:
-                prefer = list(self.topic)  # "Behind them, five soldiers sit": them of the sentence before
-            who = srcs or ([] if c.opens else list(prev_subject))  # "..., watching them": the subject before
-            own = [t for s in who for t in c.supports.get(s, [])]
-            targets: list[int] | str = (
-                list(c.head) if c.head is not None else self._pronoun(target, c, who + own, prefer, kind)
-            )
-            # (a scarecrow or a mannequin has a person's shape but is "it")
-            if c.head is not None and all(self._living(h) and self.groups[h].category == "figure" or (
-                self._living(h) and self.catalogue[self.groups[h].category].shape != "figure"
-            ) for h in c.head):  # fmt: skip
-                # "a man on the bench, with his terrier asleep under it": "it" is no person
-                targets = self._pronoun(target, c, srcs, prefer, others=c.head)
-            below = [r[2] for r in self.relations if c.head and r[1] in c.head and r[0] == "above"]
-            if below and all(self.groups[h].rests == "hanging" for h in c.head) and not any(
-                self.groups[g].rests == "hanging" for g in srcs
-            ):  # "a chandelier hangs above the table, with a bench on either side of it": the table
-                targets = below[-1:]
-            if c.head is not None and srcs == c.head:
-                targets = self._pronoun(target, c, srcs, prefer)
-            elif c.head is not None and target == "it" and all(self.groups[h].count > 1 for h in c.head):
-                # "two tents, with a campfire in front of them and four logs around it": "it" is
-                # no plural head but the single thing named last
-                single = [g for g in reversed(c.groups) if g not in srcs and self.groups[g].count == 1]
-                targets = single[:1] or targets
-            elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
-                targets = c.wsub_before[-1:]  # "... and a computer beside it": beside the till
-            targets = self._part_owner(part, targets, [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)], srcs)
-            if c.head is None and target in ("it", "them") and part is None and kind in ("in", "on", "from"):
-                targets = self._seat(c, srcs, prefer, rel.start, target == "them") or targets
-            targets = self._peer(kind, srcs, targets, c)
+            targets = self._pronoun_target(c, p, target, kind, srcs, prev_subject, starts_with_rel)
         elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
             # "a bed with a nightstand on either side": a with-thing's side is its head's
             owner = list(c.head) if c.head is not None and srcs == c.wsub else []
@@ -920,6 +948,7 @@ class _Reader(_Contents, _References, _Kinds):
             targets = []
         else:
             targets = target
+        end, ce = p.end, p.ce
         if kind == "from" and end < ce and toks[end].text == "to" and isinstance(targets, list) and targets:
             kind = "between"  # "a conveyor carries ore from it to a refinery": between the two
         if kind == "between" and isinstance(targets, list) and targets:
@@ -932,37 +961,100 @@ class _Reader(_Contents, _References, _Kinds):
                 if t in c.groups:
                     continue
                 c.groups.append(t)
-        if kind in _REVERSED:
-            head = srcs or list(prev_subject)
-            if kind == "towing" and isinstance(targets, list):
-                targets = [t for t in targets if not self._small(t)]  # "pulls a pint": no load behind
-            if isinstance(targets, list) and targets and head:
-                active = _REVERSED[kind]
-                if c.each is not None:  # "three tables, each surrounded by two chairs": two per table
-                    self._per_each([t for t in targets if t != c.each], c.each)
-                for t in targets:
-                    for h in head:
-                        self._relate(active, [t], h)
-                c.produced = True
-                c.rels.append((kind, targets))
-                if c.head is None:
-                    c.main = list(targets)  # "guarded by a skeleton sitting on a barrel"
-            c.last_target, c.last_target_end, c.expect_new = [], -1, False
+        p.rel, p.kind, p.target, p.srcs, p.targets, p.end = rel, kind, target, srcs, targets, end
+
+    def _pronoun_target(
+        self, c: _Clause, p: _Phrase, target: str, kind: str, srcs: list[int], prev_subject, starts_with_rel
+    ) -> list[int]:
+        """What "it" / "them" after a phrase names: the with-part's head, else the clause's own
+        last target, the subject before, what the sentence before was about (for a fronted
+        phrase), with the exceptions a person, a hung head, a plural head and a till make."""
+        rel, part = p.rel, p.part
+        # "a bench in front of the swing, facing it": the clause's own last target first.
+        # then the subject before ("a wagon waits behind the fountain, and a donkey is tied to
+        # a post next to it": the wagon)
+        own_subject = list(prev_subject) if c.main and srcs == c.main else []
+        prefer = [*c.last_target, *prev_subject] if c.last_target else own_subject
+        if not srcs and c.opens and starts_with_rel:
+            prefer = list(self.topic)  # "Behind them, five soldiers sit": them of the sentence before
+        who = srcs or ([] if c.opens else list(prev_subject))  # "..., watching them": the subject before
+        own = [t for s in who for t in c.supports.get(s, [])]
+        targets: list[int] = list(c.head) if c.head is not None else self._pronoun(target, c, who + own, prefer, kind)
+        # (a scarecrow or a mannequin has a person's shape but is "it")
+        if c.head is not None and all(self._living(h) and self.groups[h].category == "figure" or (
+            self._living(h) and self.catalogue[self.groups[h].category].shape != "figure"
+        ) for h in c.head):  # fmt: skip
+            # "a man on the bench, with his terrier asleep under it": "it" is no person
+            targets = self._pronoun(target, c, srcs, prefer, others=c.head)
+        below = [r[2] for r in self.relations if c.head and r[1] in c.head and r[0] == "above"]
+        if below and all(self.groups[h].rests == "hanging" for h in c.head) and not any(
+            self.groups[g].rests == "hanging" for g in srcs
+        ):  # "a chandelier hangs above the table, with a bench on either side of it": the table
+            targets = below[-1:]
+        if c.head is not None and srcs == c.head:
+            targets = self._pronoun(target, c, srcs, prefer)
+        elif c.head is not None and target == "it" and all(self.groups[h].count > 1 for h in c.head):
+            # "two tents, with a campfire in front of them and four logs around it": "it" is
+            # no plural head but the single thing named last
+            single = [g for g in reversed(c.groups) if g not in srcs and self.groups[g].count == 1]
+            targets = single[:1] or targets
+        elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
+            targets = c.wsub_before[-1:]  # "... and a computer beside it": beside the till
+        candidates = [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)]
+        targets = self._part_owner(part, targets, candidates, srcs)
+        if c.head is None and target in ("it", "them") and part is None and kind in ("in", "on", "from"):
+            targets = self._seat(c, srcs, prefer, rel.start, target == "them") or targets
+        return self._peer(kind, srcs, targets, c)
+
+    def _reversed_phrase(self, c: _Clause, p: _Phrase, prev_subject) -> int | None:
+        """"A desk flanked by two lamps", "a snowmobile towing a sled": the target is placed by
+        the thing before the phrase."""
+        if p.kind not in _REVERSED:
+            return None
+        kind, targets = p.kind, p.targets
+        head = p.srcs or list(prev_subject)
+        if kind == "towing" and isinstance(targets, list):
+            targets = [t for t in targets if not self._small(t)]  # "pulls a pint": no load behind
+        if isinstance(targets, list) and targets and head:
+            active = _REVERSED[kind]
+            if c.each is not None:  # "three tables, each surrounded by two chairs": two per table
+                self._per_each([t for t in targets if t != c.each], c.each)
+            for t in targets:
+                for h in head:
+                    self._relate(active, [t], h)
+            c.produced = True
+            c.rels.append((kind, targets))
+            if c.head is None:
+                c.main = list(targets)  # "guarded by a skeleton sitting on a barrel"
+        c.last_target, c.last_target_end, c.expect_new = [], -1, False
+        return p.end
+
+    def _without_sources(self, c: _Clause, p: _Phrase, prev_subject, starts_with_rel) -> int | None:
+        """A phrase with nothing before it to place: fronted, it waits for the clause's subject
+        ("Behind the chair, a hologram floats"); later in a clause it places the subject before;
+        "steam rises from a food cart" places the cart."""
+        if p.srcs:
+            return None
+        kind, target, targets, end = p.kind, p.target, p.targets, p.end
+        if starts_with_rel and c.opens and not c.produced and isinstance(targets, list) and targets:
+            tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
+            c.fronted.append((kind, targets, tm is not None and tm.each))
+            if isinstance(target, list):  # "On a mound behind the giraffes, ...": the mound is behind them
+                c.last_target, c.last_target_end, c.last_kind = targets, end, kind
             return end
-        if not srcs:
-            if starts_with_rel and c.opens and not c.produced and isinstance(targets, list) and targets:
-                tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
-                c.fronted.append((kind, targets, tm is not None and tm.each))
-                if isinstance(target, list):  # "On a mound behind the giraffes, ...": the mound is behind them
-                    c.last_target, c.last_target_end, c.last_kind = targets, end, kind
-                return end
-            if not c.first and not c.unknown_subject:
-                srcs = list(prev_subject)
-            elif kind == "from" and isinstance(target, list) and targets:
-                # "steam rises from a food cart next to the stall": steam is no thing, the cart is placed
-                c.main = c.main_groups = list(targets)
-                c.last_target, c.last_target_end, c.last_kind = list(targets), end, kind
-                return end
+        if not c.first and not c.unknown_subject:
+            p.srcs = list(prev_subject)
+        elif kind == "from" and isinstance(target, list) and targets:
+            # "steam rises from a food cart next to the stall": steam is no thing, the cart is placed
+            c.main = c.main_groups = list(targets)
+            c.last_target, c.last_target_end, c.last_kind = list(targets), end, kind
+            return end
+        return None
+
+    def _place(self, c: _Clause, p: _Phrase) -> int:
+        """Relate the sources to the targets, one per member where "each" / "every" says so, and
+        keep what the clause's next phrase chains on."""
+        toks, rel, kind, target, targets, srcs, end = self.toks, p.rel, p.kind, p.target, p.targets, p.srcs, p.end
         if kind in ("flank", "flank elliptic") and not toks[rel.start].text.startswith("flank"):
             self._one_a_side(srcs)  # also beside what is no object: "on each side of the elevator"
         hang = kind == "hanging from" or self._hung_before(rel.start)
@@ -1001,20 +1093,20 @@ class _Reader(_Contents, _References, _Kinds):
         sitter = self._seat_owner(c, srcs, tm) if tm is not None else None
         if sitter is not None:
             self._relate("on", [sitter], targets[0], instance=instance)
-        for g in srcs if parts_each and part is not None else []:
+        for g in srcs if p.parts_each and p.part is not None else []:
             if g in c.groups and g not in self.numbered and self.groups[g].count == 1:
-                self.groups[g].count = parts_each
+                self.groups[g].count = p.parts_each
         # "lanterns hang from the branches of an oak": up in its spread crown, by no side of it
         crown = kind == "hanging from" and any(
             "tree" in load_vocabulary().part_owners.get(singular(w.text), ()) for w in toks[rel.end : end]
         )
         for t in targets if not crown else ():
-            for one in ordinals or (instance,):
+            for one in p.ordinals or (instance,):
                 self._relate(kind, srcs, t, hang, one)
             # a person holds nothing on top, but carries what is on a knee or an arm ("a crow on each of
             # its arms": a scarecrow's too)
-            limb = part is not None and load_vocabulary().body_parts.get(part) == "on" and self._person_at(t)
-            if body == "on" or (limb and kind == "on"):
+            limb = p.part is not None and load_vocabulary().body_parts.get(p.part) == "on" and self._person_at(t)
+            if p.body == "on" or (limb and kind == "on"):
                 self.carried.update((s, t) for s in srcs)
         c.produced = True
         c.rels = [(kind, targets)]
