@@ -695,3 +695,17 @@ def test_from_a_seat_is_on_it_unless_a_small_thing_is_taken_from_it():
 def test_watch_is_facing_and_his_watch_is_no_phrase():
     assert ("cat_1", "face to", "girl_1") in rels("Two cats watch the girl from the lid of a barrel.")
     assert not rels("A man checks his watch by the door.") & {("man_1", "face to", "door_1")}
+
+
+def test_a_fronted_phrase_on_a_place_does_not_take_the_subject_as_its_target():
+    text = "In the middle of the yard a farmer rides a tractor, while two geese waddle around the tractor."
+    found = rels(text)
+    assert not any(s.startswith("goose") and t == "farmer_1" for s, _, t in found), found
+    assert ("goose_1", "face to", "tractor_1") in found
+    assert ("cart_1", "near", "market_stall_1") in rels("A cart stands between the carousel and a hook-a-duck stall.")
+
+
+def test_one_unknown_thing_after_with_is_no_content():
+    # "a great bible" is one thing the catalogue does not know: its lectern is not put on the abbot
+    found = rels("The abbot sits on a carved chair, with a great bible open on a lectern in front of him.")
+    assert ("lectern_1", "in front of", "abbot_1") in found and ("lectern_1", "on", "abbot_1") not in found

@@ -829,19 +829,20 @@ class _Reader(_Contents, _References, _Kinds):
             )
             # "a dad with his putter beside the windmill": what is in hand goes where its holder is
             in_hand = c.hand and target not in _PERSONAL and kind in _GROUND_KINDS
-            # the with-part named something that is no object of its own ("with geraniums"), and no
-            # verb of the head's ("a man with a hat sits in a chair")
+            # the with-part named stuff that is no object of its own ("with geraniums"; not "with a
+            # great bible", one thing the catalogue does not know), and no verb of the head's ("a man
+            # with a hat sits in a chair")
             gap = [toks[k].text for k in range(last_event_end, rel.start)]
             contents = (
                 toks[last_event_end - 1].text == "with"
                 and any(w not in _STOP and w[:1].isalpha() for w in gap)
-                and not any(w in _FINITE or self._lookout(w) for w in gap)
+                and not any(w in _FINITE or self._lookout(w) or w in ("a", "an", "one") for w in gap)
             )
             if c.wsub and not closed and not c.expect_new and not in_hand:
                 srcs = list(c.wsub)
                 if kind in ("on", "above", "over", "on top", "under"):
                     c.wsub_related.update(srcs)
-            elif not c.wsub and contents and kind in ("in", "on") and isinstance(target, list) and target:
+            elif not c.wsub and contents and kind == "in" and isinstance(target, list) and target:
                 # "a chalet with geraniums in every window box": what holds the head's contents is
                 # on the head
                 for h in c.head:

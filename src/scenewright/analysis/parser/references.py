@@ -84,11 +84,15 @@ class _References:
                 return "each one", j + 3  # "a clock hangs above each of them": as "each one"
             if w == "one" and j > pos and toks[j - 1].text not in _NUMBERS and (j + 1 >= ce or toks[j + 1].text != "of"):
                 return "that one", j + 1  # "at the foot of the tallest one": one of a group named before
-            # a noun, not a verb, after a determiner or a count ("its walls", "two rows of")
-            after_determiner = j > pos and (toks[j - 1].text in _DETERMINERS or toks[j - 1].text in _NUMBERS)
             # a word hyphen-joined to its neighbour, or right before the noun, describes the noun
             # ("a fold-down table", "a tall parts cabinet"), whatever verb it could also be
             hyphened = (j > pos and toks[j].joined) or (j + 1 < ce and toks[j + 1].joined)
+            # a noun, not a verb, after a determiner or a count ("its walls", "two rows of")
+            after_determiner = j > pos and (toks[j - 1].text in _DETERMINERS or toks[j - 1].text in _NUMBERS)
+            # "in the middle of the arena a cowboy clings": an article after a word opens a noun
+            # phrase of its own (not in "a hook-a-duck stall")
+            if w in ("a", "an", "the") and j > pos and not (after_determiner or hyphened) and toks[j - 1].text != "of":
+                break
             modifier = w not in _STOP and w[0].isalnum() and j + 1 in self.by_start
             if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
                 hyphened or modifier
