@@ -595,6 +595,9 @@ def test_a_hyphened_or_compound_target_is_found():
 def test_between_two_ordinals_of_the_row_before():
     found = rels("Three vans wait in a line by the gate, and a porter walks between the second and the third.")
     assert {("porter_1", "near", "truck_2"), ("porter_1", "near", "truck_3")} <= found
+    # several in the clause are what is placed, not the row ("two boys play between ...")
+    found = rels("Three vans wait in a line by the gate, and two boys play between the second and the third.")
+    assert {("boy_1", "near", "truck_2"), ("boy_2", "near", "truck_3")} <= found
 
 
 def test_from_one_thing_to_another_is_between_them():

@@ -772,7 +772,7 @@ class _Reader(_Contents, _References, _Kinds):
         ordinals: tuple[int, int] | None = None  # "between the first and second car": two of one group
         if kind == "between" and target is None and (pair := self._ordinal_pair(rel.end, ce)) is not None:
             group, ordinals, end = pair
-            several = [group] if group is not None else self._one_of(c, [], prev_subject)
+            several = [group] if group is not None else self._one_of(c, c.main, prev_subject)
             target, self._target_start = several or None, -1
         body, part = self._body_part, self._part  # "on her knees": by the person, as the part says
         self._perch_part = part in load_vocabulary().carriers.get("perches", ())
