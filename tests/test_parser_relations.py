@@ -616,6 +616,8 @@ def test_a_phrase_after_and_before_its_own_subject_is_fronted():
 def test_hung_from_a_thing_is_on_it_from_a_trees_boughs_nothing():
     found = rels("A troll sleeps under a wooden watchtower, and bells hang from its railing.")
     assert ("bell_1", "on", "tower_1") in found, found
+    found = rels("Three tents are pitched behind the barn, each with a flag flying from its top.")
+    assert {("flagpole_1", "on", "tent_1"), ("flagpole_3", "on", "tent_3")} <= found
     found = rels("Paper lanterns hang from the boughs of a tall oak tree behind the benches.")
     assert ("tree_1", "behind", "bench_1") in found and not any(s.startswith("lantern") for s, _, _ in found)
 
