@@ -714,3 +714,10 @@ def test_one_unknown_thing_after_with_is_no_content():
     # "a great bible" is one thing the catalogue does not know: its lectern is not put on the abbot
     found = rels("The abbot sits on a carved chair, with a great bible open on a lectern in front of him.")
     assert ("lectern_1", "in front of", "abbot_1") in found and ("lectern_1", "on", "abbot_1") not in found
+
+
+def test_uncounted_seats_of_counted_sitters_are_one_each():
+    parsed = parse_scene("Four astronauts sit on padded stools around a fold-down table.")
+    assert sum(o.category == "stool" for o in parsed.objects) == 4
+    found = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert {(f"astronaut_{i}", "on", f"stool_{i}") for i in range(1, 5)} <= found

@@ -1091,6 +1091,8 @@ class _Reader(_Contents, _References, _Kinds):
             self._per_each(targets, c.each)  # "each in a leather seat": one seat apiece
         elif tm is not None and kind == "on" and self._bare(tm) and len(srcs) == 1 and self._living(srcs[0]):
             self._per_each(targets, srcs[0])  # "two soldiers on horseback": a horse each
+        elif tm is not None and kind == "on" and len(srcs) == 1 and self._living(srcs[0]) and self._seats_each(tm):
+            self.groups[targets[0]].count = self.groups[srcs[0]].count  # "four astronauts sit on stools": one each
         sitter = self._seat_owner(c, srcs, tm) if tm is not None else None
         if sitter is not None:
             self._relate("on", [sitter], targets[0], instance=instance)
@@ -1123,6 +1125,14 @@ class _Reader(_Contents, _References, _Kinds):
             c.last_target, c.last_target_end = [], -1
         c.expect_new = True
         return end
+
+    def _seats_each(self, m: _Mention) -> bool:
+        """Seats named in the plural with no count of their own, new here ("on padded stools"):
+        as many as sit on them."""
+        return (
+            _is_plural(self.toks, m) and not m.counted and not m.definite and m.group >= 0
+            and m.group not in self.numbered and self._carrier(m.group, ("seats",))
+        )  # fmt: skip
 
     def _rider_placed(self, c: _Clause, rider: list[int], kind: str) -> bool:
         """Whether a phrase after "a person sits on X" places the person, not X: what the person
