@@ -721,3 +721,10 @@ def test_uncounted_seats_of_counted_sitters_are_one_each():
     assert sum(o.category == "stool" for o in parsed.objects) == 4
     found = {(r.source, r.relation, r.target) for r in parsed.relations}
     assert {(f"astronaut_{i}", "on", f"stool_{i}") for i in range(1, 5)} <= found
+
+
+def test_at_the_end_of_a_thing():
+    text = "A seagull perches on a bollard at the end of the bench, eyeing the woman. A vase stands at one end of the counter."
+    found = rels(text)
+    assert {("bollard_1", "near", "bench_1"), ("vase_1", "on", "counter_1"), ("bird_1", "face to", "woman_1")} <= found
+    assert ("treasure_chest_1", "in front of", "bed_1") in rels("A chest stands at the end of the bed.")

@@ -25,7 +25,8 @@ Decisions worth knowing:
 - ``between A and B`` → right of one and left of the other (front/behind when the pair stands
   front to back) and near both; a seat ``at`` a desk or table → in front of it, facing it;
   ``at the foot of`` anything → in front of it, ``at the head of`` a bed → behind it (a table's head is
-  an end); ``hanging from`` a beam → above it, from a tree → near it, from anything else (a post, a
+  an end); ``at the end of`` a table or a counter → on it for a tabletop thing, of a bed → in front
+  of it, else near it; ``hanging from`` a beam → above it, from a tree → near it, from anything else (a post, a
   stall, a tower's railing) → on it; ``leaning on`` / ``along`` → side of;
   ``in a row`` / ``stacked`` → each right of / on the one before; ``against the wall``, ``in
   the corner``, ``in the middle of the room``, ``at the back`` name no object and become the

@@ -14,7 +14,8 @@ _FORMATIONS = ("row", "rows", "stack", "circle")
 _FORMATION_NOUNS = {"row": "row", "line": "row", "rows": "rows", "lines": "rows", "stack": "stack",
                     "ring": "circle", "circle": "circle"}  # fmt: skip
 #: Phrase kinds that, with no object after them, name a part of the room ("along the back wall").
-_PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None, "foot of": None, "at": None}
+_PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None, "foot of": None, "at": None,
+                "end of": None}  # fmt: skip
 #: Phrase kinds that place a thing on the ground beside another (not on it, not above it).
 _GROUND_KINDS = ("left of", "right of", "in front of", "behind", "side of", "near", "far", "left", "right")
 #: Phrase kinds read as one of the scene's relations whatever they join.

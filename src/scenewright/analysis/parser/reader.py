@@ -1296,6 +1296,10 @@ class _Reader(_Contents, _References, _Kinds):
             if any(w in _CEILING_WORDS for w in self.groups[t].name.split()):
                 return "above"
             return "near" if target.shape in _PLANT_SHAPES else "on"
+        if kind == "end of":  # "a cushion at the end of the counter": on it; "a chest at the end of the bed": at its foot
+            if src.rests == "surface" and target.support:
+                return "on"
+            return "in front of" if target.shape == "bed" else "near"  # "a barrow at the end of the patch"
         if kind == "centre of":  # "a vase in the middle of the table", "a throne in the centre of the stage": on it
             if src.rests == "surface" and target.support:
                 return "on"
