@@ -728,3 +728,9 @@ def test_at_the_end_of_a_thing():
     found = rels(text)
     assert {("bollard_1", "near", "bench_1"), ("vase_1", "on", "counter_1"), ("bird_1", "face to", "woman_1")} <= found
     assert ("treasure_chest_1", "in front of", "bed_1") in rels("A chest stands at the end of the bed.")
+
+
+def test_a_living_mover_toward_a_thing_faces_it_unless_it_moves_an_object_there():
+    found = rels("A knight on a white horse rides over the bridge towards the dragon. A porter pushes a cart toward the kiosk.")
+    assert ("knight_1", "face to", "dragon_1") in found and ("porter_1", "face to", "kiosk_1") not in found
+    assert ("waiter_1", "face to", "table_1") in rels("A waiter carries a tray towards the table.")

@@ -44,8 +44,10 @@ Decisions worth knowing:
   ``surrounding`` / ``surrounded by`` → the surrounding objects shared among the target's
   sides (every side once, then the long sides of a long table), each facing it; one thing
   "around" another is ``near`` it, unless it moves (a person, an animal, a vehicle: "a dog runs
-  around the tree"), which takes one side, facing it; ``from A to B`` → between A and B; ``at a distance of
-  N m`` → ``near`` when N ≤ 2, ``far`` when N > 8.
+  around the tree"), which takes one side, facing it; ``from A to B`` → between A and B; a person or
+  an animal going ``towards`` a thing faces it, unless the verb moves an object there ("pushes a cart
+  toward the kiosk"); X ``towing`` / ``pulling`` Y → Y behind X; ``at a distance of N m`` → ``near``
+  when N ≤ 2, ``far`` when N > 8.
 - "on the left wall" places nothing: a side word before a noun is that noun's adjective, and
   walls are no objects. A part named by a possessive is its owner ("above its door" → above
   it), since doors, roofs and porches are not objects either.

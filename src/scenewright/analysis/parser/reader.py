@@ -879,7 +879,15 @@ class _Reader(_Contents, _References, _Kinds):
         """Phrases that place by no target: no relation ("toward the rack"), a formation ("in a
         row", "stacked"), a part of the room ("against the wall", "in the middle of the room")."""
         toks, rel, kind, srcs, end, ce = self.toks, p.rel, p.kind, p.srcs, p.end, p.ce
-        if kind == "no relation" and c.head is not None and toks[rel.start].text.startswith(("toward", "heading")):
+        toward = toks[rel.start].text.startswith(("toward", "heading"))
+        objects = [g for g in c.main_groups if g not in c.subjects]
+        if kind == "no relation" and toward and c.head is None and srcs and not objects and all(
+            self._living(g) for g in srcs
+        ):  # "a knight rides over the bridge towards the dragon", "a waiter carries a tray towards them": he
+            # faces it ("a porter pushes a cart toward the kiosk": what goes there is the verb's object)
+            p.kind = "face to"
+            return None
+        if kind == "no relation" and c.head is not None and toward:
             # "a forklift carries a pallet toward the rack": the with-part ends, the rack is no load
             self._close_with(c)
             c.head, c.wsub, c.expect_new = None, [], True
