@@ -25,7 +25,9 @@ Decisions worth knowing:
 - ``between A and B`` → right of one and left of the other (front/behind when the pair stands
   front to back) and near both; a seat ``at`` a desk or table → in front of it, facing it;
   ``at the foot of`` anything → in front of it, ``at the head of`` a bed → behind it (a table's head is
-  an end); ``hanging from`` → above (near a tall host); ``leaning on`` / ``along`` → side of;
+  an end); ``at the end of`` a table or a counter → on it for a tabletop thing, of a bed → in front
+  of it, else near it; ``hanging from`` a beam → above it, from a tree → near it, from anything else (a post, a
+  stall, a tower's railing) → on it; ``leaning on`` / ``along`` → side of;
   ``in a row`` / ``stacked`` → each right of / on the one before; ``against the wall``, ``in
   the corner``, ``in the middle of the room``, ``at the back`` name no object and become the
   object's ``anchor`` for the arranger.
@@ -41,8 +43,11 @@ Decisions worth knowing:
   side of" is two, one a side, even beside a door that is no object); ``around`` /
   ``surrounding`` / ``surrounded by`` → the surrounding objects shared among the target's
   sides (every side once, then the long sides of a long table), each facing it; one thing
-  "around" another is ``near`` it; ``at a distance of
-  N m`` → ``near`` when N ≤ 2, ``far`` when N > 8.
+  "around" another is ``near`` it, unless it moves (a person, an animal, a vehicle: "a dog runs
+  around the tree"), which takes one side, facing it; ``from A to B`` → between A and B; a person or
+  an animal going ``towards`` a thing faces it, unless the verb moves an object there ("pushes a cart
+  toward the kiosk"); X ``towing`` / ``pulling`` Y → Y behind X; ``at a distance of N m`` → ``near``
+  when N ≤ 2, ``far`` when N > 8.
 - People and animals (``hands``): what one uses, works with or takes from is in hand, ``on`` the
   holder, when small enough to hold ("eats a sandwich", "practises with five clubs", "sipping
   coffee from a paper cup", "a glass in one hand", "baskets on their backs"); the holder takes the
@@ -54,7 +59,7 @@ Decisions worth knowing:
   the pot on it, the doer near it). Companions keep ``near`` ("with its handler"), a led animal by
   its person ("walks a dachshund beside the van": the man beside it); "each holding" gives one to
   each of the people; "sharing a thermos" is one thermos; a giver holds the gift, ``near`` whom it
-  goes to; one going "towards" a thing faces it; a rider over a bridge is on it (the mount is).
+  goes to; a rider over a bridge is on it (the mount is).
 - "on the left wall" places nothing: a side word before a noun is that noun's adjective, and
   walls are no objects. A part named by a possessive is its owner ("above its door" → above
   it), since doors, roofs and porches are not objects either.
@@ -122,10 +127,12 @@ Decisions worth knowing:
   *facing* and, after a seat, *between* / *under* place ("sits on a stool at the workbench"),
   while *beside* / *near* place the seat; "with" right after the second end of *between* is that
   end's. X *under* a thing that hangs, is hung, is on a wall or is a thin board → that thing
-  ``above`` X ("chairs under a ceiling fan"). "Between the first and second van", "the two
-  nearest benches" are members of the group named before; "to her left", "at its foot", "on the
-  nurse's right" name a side of the possessor. A phrase opening a sentence, or a clause after a
-  semicolon, names with "it"/"them" what the clause before was about (its subjects, then what
+  ``above`` X ("chairs under a ceiling fan"). "Between the first and second van", "between
+  the second and the third" (of the row named before), "the two nearest benches" are members of
+  the group named before; "to her left", "at its foot", "on the
+  nurse's right" name a side of the possessor. A phrase opening a sentence, a clause after a
+  semicolon, or a clause after "and" that names its own subject after the phrase ("and between
+  them a crew heaves on the ropes"), names with "it"/"them" what the clause before was about (its subjects, then what
   placed them, latest first), and chains like any phrase ("On a mound behind the giraffes, ...");
   "it" never names a person, a thing never names what it sits on or in, and what a living thing
   watches is a living thing first. A where-clause's subjects placed nowhere else are ``near`` the

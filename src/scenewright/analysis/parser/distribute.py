@@ -142,7 +142,10 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
         elif kind == "flank":
             for i, (a, _) in enumerate(pairs):
                 out.append(ParsedRelation(a, ("left of", "right of")[i % 2], tgt.ids[(i // 2) % len(tgt.ids)]))
-        elif kind == "around" and len(src.ids) == 1:  # one round ottoman "surrounds" a palm: it is near
+        elif kind == "around" and len(src.ids) == 1 and not (reader._living(s) or reader._carrier(s, ("vehicles",))):
+            # one round ottoman "surrounds" a palm: it is near (a dog that runs around the tree, a
+            # toy train that circles a chair, is at one side of it on its way, facing it, as one of
+            # a group would be)
             out += [ParsedRelation(src.ids[0], "near", b) for b in tgt.ids[:1]]
         elif kind == "around":
             # paired ("each surrounded by two chairs"): each target's sides go to its own share

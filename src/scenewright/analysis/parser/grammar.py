@@ -14,7 +14,8 @@ _FORMATIONS = ("row", "rows", "stack", "circle")
 _FORMATION_NOUNS = {"row": "row", "line": "row", "rows": "rows", "lines": "rows", "stack": "stack",
                     "ring": "circle", "circle": "circle"}  # fmt: skip
 #: Phrase kinds that, with no object after them, name a part of the room ("along the back wall").
-_PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None, "foot of": None, "at": None}
+_PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None, "foot of": None, "at": None,
+                "end of": None}  # fmt: skip
 #: Phrase kinds that place a thing on the ground beside another (not on it, not above it).
 _GROUND_KINDS = ("left of", "right of", "in front of", "behind", "side of", "near", "far", "left", "right")
 #: Besides those of the ground, phrase kinds that place a person rather than what they have in hand
@@ -23,14 +24,18 @@ _HOLDER_KINDS = ("on", "at", "in", "between", "under")
 #: Phrase kinds read as one of the scene's relations whatever they join.
 _KIND_RELATION = {"left": "left of", "right": "right of", "flank elliptic": "flank", "hanging from": "above",
                   "leaning on": "side of", "along": "side of"}  # fmt: skip
+#: Phrase kinds that place their target by the thing before them ("a desk flanked by two lamps",
+#: "a snowmobile towing a sled": the sled behind it), and the relation the target gets.
+_REVERSED = {"flanked by": "flank", "surrounded by": "around", "near by": "near", "on by": "on", "towing": "behind"}
 #: Seat shapes: what is "at" a desk or a table faces it from the front.
 _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
 
 #: After these, a phrase right after the target places the target: "a lamp on a table left of the
 #: sofa", "astronauts beside a lab bench to the right of the console", "sniffs at a cooler near the
 #: truck", "dozes in an armchair by the fire" (the armchair is by the fire), "a chandelier hangs above
-#: the table in front of the fireplace" (the table is).
-_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in", "from", "above", "over")
+#: the table in front of the fireplace" (the table is), "lanterns hang from the branches of a tree
+#: behind the chairs" (the tree is).
+_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in", "from", "above", "over", "hanging from")
 #: Sides of a thing named by a possessive ("against its side"): the owner places.
 _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
 #: "Piled with" or "covered in" on a cart or a table is a load of things standing on it when they are
@@ -64,6 +69,9 @@ _COPULAS = ("is", "are", "was", "were", "be", "has", "have", "had", "seems", "lo
 #: A perch no taller than this, and this many times a thing's footprint, is a platform whose middle
 #: the thing stands on ("a throne in the centre of the stage").
 _PLATFORM_HEIGHT, _PLATFORM_AREA = 3.5, 4.0
+#: Height (m) at most of a host that a small thing "over" it sits on ("a pot over the fire"); over
+#: a taller one (a table) it hangs above.
+_LOW_HOST = 1.0
 #: Pronouns that name a person or an animal ("someone": the owner of a body part no possessive
 #: names, "a glass in one hand").
 _PERSONAL = ("him", "her", "himself", "herself", "someone")

@@ -91,7 +91,11 @@ def _distance_at(toks: list[_Tok], i: int) -> _Rel | None:
 
 def _qualifies_noun(toks: list[_Tok], end: int, kind: str) -> bool:
     """"on the left wall", "on the left bench": the side word is the next noun's adjective, so
-    the phrase is only its preposition (a wall is no object: nothing is left of anything)."""
+    the phrase is only its preposition (a wall is no object: nothing is left of anything).
+    "A ring of stones", "two circles of chairs": a verb of going around that is also a noun is
+    the noun before its "of"."""
+    if kind == "around" and end < len(toks) and toks[end].text == "of":
+        return True
     if kind not in ("left", "right") or end >= len(toks):
         return False
     w = toks[end].text

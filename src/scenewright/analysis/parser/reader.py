@@ -19,12 +19,15 @@ from scenewright.analysis.parser.grammar import (
     _HANDHELD_SIZE,
     _HOLDER_KINDS,
     _KIND_RELATION,
+    _LOW_HOST,
     _OWN_SIDES,
     _PERSONAL,
     _PERSON_POSSESSIVES,
     _PLACE_KINDS,
+    _PLATFORM_HEIGHT,
     _POSSESSED,
     _RELATIVES,
+    _REVERSED,
     _RIDDEN,
     _SEATS,
     _VESSEL_KINDS,
@@ -75,6 +78,10 @@ class _Clause:
     """What one clause has built so far."""
 
     first: bool
+    #: The clause opens as a sentence does, with a phrase before its own subject: the first of its
+    #: sentence, or one after "and" that names its subject after the phrase ("..., and between
+    #: them a crew heaves on the ropes").
+    opens: bool = False
     main: list[int] = field(default_factory=list)
     head: list[int] | None = None  # what a "with" part hangs from
     wsub: list[int] = field(default_factory=list)
@@ -118,6 +125,27 @@ class _Clause:
     deeds: list[tuple[list[int], int]] = field(default_factory=list)
     #: Where the last thing acted on ends: a phrase right after it places it ("stirs a pot on the stove").
     deed_end: int = -1
+
+
+@dataclass
+class _Phrase:
+    """One relation phrase as :meth:`_Reader._relation` reads it, step by step."""
+
+    rel: _Rel
+    ce: int  # where its clause ends
+    kind: str
+    #: The target as read after the phrase: groups, a pronoun ("it", "him", "each one"), or nothing.
+    target: list[int] | str | None
+    end: int  # where the phrase and its target end
+    #: "Between the first and second car": the two members of the target group.
+    ordinals: tuple[int, int] | None = None
+    #: The relation a body part names to its person ("on her knees": on), and the part word.
+    body: str | None = None
+    part: str | None = None
+    #: "On each of its arms": how many parts, one thing on each.
+    parts_each: int = 0
+    srcs: list[int] = field(default_factory=list)
+    targets: list[int] | str = field(default_factory=list)
 
 
 class _Reader(_Contents, _References, _Kinds, _Hands):
@@ -299,7 +327,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # or one done to something too big to hold (below); "pulls a rope from the barrel" names
         # where the rope comes from
         found = [r for r in _find_relations(toks, taken) if r.kind != "at" or self._names_thing(r.end, starts)]
-        self.rel_at = {r.start: r for r in found if r.kind != "from" or self._verb_before(r.start, self._lookout)}
+        self.rel_at = {
+            r.start: r for r in found
+            if r.kind != "from" or self._verb_before(r.start, self._lookout) or self._from_to(r.end, starts)
+            or self._seat_after(r, mentions)
+        }  # fmt: skip
         self._rows_then_with(mentions)
         #: Mentions the text puts on a wall ("a luggage rack on the wall"): hung, so "above" holds.
         self.on_wall = {m.start for m in mentions if self._on_wall_after(m.end)}
@@ -539,6 +571,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         starts_with_rel = j in self.rel_at
         # ", sipping coffee from a cup": a clause that opens with a participle is the subject's before
         participial = not c.first and k < ce and toks[k].text.endswith("ing") and k not in self.by_start
+        c.opens = c.first or (starts_with_rel and k > cs and self._subject_after(self.rel_at[j].end, ce))
         c.unknown_subject = j > k and toks[k].text in ("a", "an", "the") and j not in self.by_start and not starts_with_rel
         last_event_end = cs
         while k < ce:
@@ -689,6 +722,17 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self._close_with(c)
         self._do_deeds(c)
 
+    def _subject_after(self, start: int, ce: int) -> bool:
+        """Two things named after a phrase that opens a clause part, its target and the clause's
+        own subject ("and between them a ground crew heaves ..."), or no verb at all: the
+        subject comes in the next part ("and beside him, a dog sleeps")."""
+        pronouns = ("it", "them", "him", "her")
+        named = [
+            k for k in range(start, ce)
+            if (k in self.by_start and k not in self.content_at) or self.toks[k].text in pronouns
+        ]  # fmt: skip
+        return len(named) >= 2 or not any(_is_verb(t.text) for t in self.toks[start:ce])
+
     def _do_deeds(self, c: _Clause) -> None:
         """"A porter pushes a cart", "two engineers check the console": whoever acts on a thing
         too big to hold stands by it, unless the clause already relates the two; one who acts on
@@ -792,8 +836,30 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                         self.carried.add((g, h))
 
     def _relation(self, c: _Clause, rel: _Rel, ce: int, prev_subject, starts_with_rel, last_event_end) -> int:
+        """One relation phrase, in steps: read the phrase and its target, find what it places, set
+        out a formation or an anchor, resolve the target, then relate (or hand the phrase to the
+        clause's subject when it comes first). Returns where the reading goes on."""
+        p = self._read_phrase(c, rel, ce, prev_subject)
+        if (stop := self._sources(c, p, prev_subject, last_event_end)) is not None:
+            return stop
+        if (stop := self._formation_or_anchor(c, p, prev_subject)) is not None:
+            return stop
+        self._targets(c, p, prev_subject, starts_with_rel)
+        if (stop := self._reversed_phrase(c, p, prev_subject)) is not None:
+            return stop
+        if (stop := self._without_sources(c, p, prev_subject, starts_with_rel)) is not None:
+            return stop
+        return self._place(c, p)
+
+    def _read_phrase(self, c: _Clause, rel: _Rel, ce: int, prev_subject) -> _Phrase:
+        """The phrase's kind as its words and target make it, and its target: "stacked against",
+        "on the artist's right", "between the first and second car", "on her knees", "at his
+        back", "at its top"."""
         toks = self.toks
         kind = rel.kind
+        stacked = any(r.end == rel.start and r.kind == "stack" for r in self.rel_at.values())
+        if kind == "near" and toks[rel.start].text == "against" and stacked:
+            kind = "side of"  # "drums are stacked against the hut": the stack rests on its side
         # "To her left a globe sits": the possessive is the target, the noun after the subject
         target, end = self._target_at(rel.end, ce) if kind not in _OWN_SIDES else (None, rel.end)
         if kind in ("on", "at") and target is None and (side := self._owners_side(rel.end, ce)) is not None:
@@ -801,12 +867,24 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         ordinals: tuple[int, int] | None = None  # "between the first and second car": two of one group
         if kind == "between" and target is None and (pair := self._ordinal_pair(rel.end, ce)) is not None:
             group, ordinals, end = pair
-            target, self._target_start = [group], -1
+            several = [group] if group is not None else self._one_of(c, c.main, prev_subject)
+            target, self._target_start = several or None, -1
         body, part = self._body_part, self._part  # "on her knees": by the person, as the part says
         self._perch_part = part in load_vocabulary().carriers.get("perches", ())
         parts_each = self._parts_each
         if (body == "near" and kind != "around") or (body == "on" and kind in ("on", "on top", "in", "under")):
             kind = body  # ("hens around her feet" stay around her; "a surfboard under his arm" is carried)
+        elif body == "on" and kind == "at":  # "a shelf at his back": behind him, not carried
+            kind, body = "behind" if any(t.text == "back" for t in toks[rel.end : end]) else "near", None
+        if kind == "at" and part == "top":  # "a shuttle docked at its top": as "at the top of" it, on it
+            kind = "on"
+        return _Phrase(rel, ce, kind, target, end, ordinals, body, part, parts_each)
+
+    def _sources(self, c: _Clause, p: _Phrase, prev_subject, last_event_end) -> int | None:
+        """What the phrase places: the target before it when the phrase chains on it or a
+        description of it goes on, the with-part's things, else the clause's subject (or the small
+        thing its verb acts on). Where the reading goes on when the phrase places nothing here."""
+        toks, rel, kind, target, body, end = self.toks, p.rel, p.kind, p.target, p.body, p.end
         between = [t.text for t in toks[last_event_end : rel.start]]
         # sources: the noun the phrase follows when nothing but adverbs lies between
         srcs: list[int]
@@ -830,8 +908,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         elif c.last_target and c.last_target_end == last_event_end and self._describes(between, c.target_after_verb):
             srcs = list(c.last_target)  # "a lorry idling at the barrier", "a lamp that hangs above the bar"
             if target is None:  # "a fork stuck in the soil beside it": the description goes on
-                k = end
-                while k < ce and k not in self.rel_at and k not in self.by_start and toks[k].text not in (",", "and"):
+                k = p.end
+                while k < p.ce and k not in self.rel_at and k not in self.by_start and toks[k].text not in (",", "and"):
                     k += 1
                 c.last_target_end = k
                 return k
@@ -851,10 +929,28 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             in_hand = holding and target not in _PERSONAL and (kind in _GROUND_KINDS or kind in _HOLDER_KINDS)
             # ("with his terrier asleep under it": a living with-thing is no thing in hand, its phrase places it)
             in_hand = in_hand and not any(self._living(g) for g in c.wsub)
+            # the with-part named stuff that is no object of its own ("with geraniums"; not "with a
+            # great bible", one thing the catalogue does not know), and no verb of the head's ("a man
+            # with a hat sits in a chair")
+            gap = [toks[k].text for k in range(last_event_end, rel.start)]
+            contents = (
+                toks[last_event_end - 1].text == "with"
+                and any(w not in _STOP and w[:1].isalpha() for w in gap)
+                and not any(w in _FINITE or self._lookout(w) or w in ("a", "an", "one") for w in gap)
+            )
             if c.wsub and not closed and not c.expect_new and not in_hand:
                 srcs = list(c.wsub)
                 if kind in ("on", "above", "over", "on top", "under"):
                     c.wsub_related.update(srcs)
+            elif not c.wsub and contents and kind == "in" and isinstance(target, list) and target:
+                # "a chalet with geraniums in every window box": what holds the head's contents is
+                # on the head
+                for h in c.head:
+                    self._relate("on", list(target), h)
+                c.wsub, c.expect_new = list(target), False
+                c.wsub_related.update(target)
+                c.groups.extend(g for g in target if g not in c.groups)
+                return p.end
             else:
                 self._close_with(c)
                 srcs = list(c.head)
@@ -866,8 +962,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         else:
             srcs = list(c.main)
             acted = c.deeds[-1][1] if c.deeds and c.deed_end == last_event_end else None
-            if kind in ("on", "in", "on top") and acted is not None and self._small(acted):
-                srcs = [acted]  # "a smith hammers a horseshoe on the anvil": the horseshoe is on it
+            if kind in ("on", "in", "on top", "over") and acted is not None and self._small(acted):
+                # "a smith hammers a horseshoe on the anvil", "a cook stirs a pot over the fire": the
+                # thing acted on is there (its doer by it: :meth:`_do_deeds`)
+                srcs = [acted]
         if kind == "on" and srcs and all(self._person_at(g) for g in srcs) and self._pair_before(rel.start):
             kind = "near"  # "a girl writes on the blackboard": at it (a slate in hand was read as held)
         if kind == "from" and c.deeds and c.deed_end in (last_event_end, rel.start):
@@ -875,17 +973,29 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if kind == "from" and not any(self._living(g) for g in srcs):
             # "a guard waves a flag from the tower": the one who waves is up there
             srcs = [g for g in c.subjects if self._living(g)] or srcs
-        towards = kind == "no relation" and toks[rel.start].text.startswith(("toward", "heading"))
-        if towards and c.head is not None:
+        p.kind, p.srcs = kind, srcs
+        return None
+
+    def _formation_or_anchor(self, c: _Clause, p: _Phrase, prev_subject) -> int | None:
+        """Phrases that place by no target: no relation ("toward the rack"), a formation ("in a
+        row", "stacked"), a part of the room ("against the wall", "in the middle of the room")."""
+        toks, rel, kind, srcs, end, ce = self.toks, p.rel, p.kind, p.srcs, p.end, p.ce
+        toward = toks[rel.start].text.startswith(("toward", "heading"))
+        objects = [g for g in c.main_groups if g not in c.subjects]
+        if kind == "no relation" and toward and c.head is None and srcs and not objects and all(
+            self._living(g) for g in srcs
+        ):  # "a knight rides over the bridge towards the dragon", "a waiter carries a tray towards them": he
+            # faces it ("a porter pushes a cart toward the kiosk": what goes there is the verb's object)
+            p.kind = "face to"
+            return None
+        if kind == "no relation" and c.head is not None and toward:
             # "a forklift carries a pallet toward the rack": the with-part ends, the rack is no load
             self._close_with(c)
-            srcs = list(c.head)
             c.head, c.wsub, c.expect_new = None, [], True
-        if towards and srcs and all(self._living(g) for g in srcs) and target is not None:
-            kind = "face to"  # "a waitress carries a tray towards them", "rides towards the dragon": facing them
+            return end
         if kind == "no relation" or (kind == "stack" and end < ce and toks[end].text == "with"):
             return end  # "a shelf stacked with books": contents, no stack
-        if kind in _FORMATIONS or kind.startswith("anchor ") or (target is None and kind in _PLACE_KINDS):
+        if kind in _FORMATIONS or kind.startswith("anchor ") or (p.target is None and kind in _PLACE_KINDS):
             # "three stalls stand in a row", "a sofa against the wall", "a rug in the middle of the room"
             place = _PLACE_KINDS.get(kind) or self._anchor_after(rel.end, ce) if not kind.startswith("anchor ") else kind
             lines = next((_NUMBERS[t.text] for t in toks[rel.start : rel.end] if t.text in _NUMBERS), None)
@@ -902,6 +1012,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if kind.startswith("anchor ") and toks[rel.end - 1].text != "of":
                 return rel.end  # "In the centre a huge spellbook floats ...": the noun after is the subject
             return end
+        return None
+
+    def _targets(self, c: _Clause, p: _Phrase, prev_subject, starts_with_rel) -> None:
+        """The groups the phrase's target names: a possessive's side ("to her left"), "on top",
+        "inside", "each one", "that one", a part ("in the water"), a person ("beside him"), "it" /
+        "them", the last target of an elliptic phrase ("on either side"), then the second end of
+        *between* ("and ...", "from A to B")."""
+        toks, rel, kind, target, srcs, part = self.toks, p.rel, p.kind, p.target, p.srcs, p.part
         if kind in _OWN_SIDES and target is None:
             # "to its left", "to her left", "at its foot": the side of what the possessive names
             owner = next(t.text for t in toks[rel.start : rel.end] if t.text in _POSSESSED)
@@ -912,6 +1030,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             rel = replace(rel, elliptic=True)
         if kind == "in" and target is None and toks[rel.start].text == "inside" and c.head is not None:
             target = "it"  # "a cage with a rabbit inside": inside the with-part's head
+        targets: list[int] | str
         if target == "each one":
             if all(g in self.history for g in srcs) and any(g not in self.history for g in c.main):
                 # "a register on the counter in front of each of them": one register each, not a counter
@@ -930,42 +1049,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if not targets and target == "them living":  # "to their left" of things: them
                 targets = self._pronoun("them", c, srcs, list(c.last_target))
         elif isinstance(target, str) and target != "each other":
-            # "a bench in front of the swing, facing it": the clause's own last target first.
-            # then the subject before ("a wagon waits behind the fountain, and a donkey is tied to
-            # a post next to it": the wagon)
-            own_subject = list(prev_subject) if c.main and srcs == c.main else []
-            prefer = [*c.last_target, *prev_subject] if c.last_target else own_subject
-            if not srcs and c.first and starts_with_rel:
-                prefer = list(self.topic)  # "Behind them, five soldiers sit": them of the sentence before
-            who = srcs or ([] if c.first else list(prev_subject))  # "..., watching them": the subject before
-            own = [t for s in who for t in c.supports.get(s, [])]
-            targets: list[int] | str = (
-                list(c.head) if c.head is not None else self._pronoun(target, c, who + own, prefer, kind)
-            )
-            # (a scarecrow or a mannequin has a person's shape but is "it")
-            if c.head is not None and all(self._living(h) and self.groups[h].category == "figure" or (
-                self._living(h) and self.catalogue[self.groups[h].category].shape != "figure"
-            ) for h in c.head):  # fmt: skip
-                # "a man on the bench, with his terrier asleep under it": "it" is no person
-                targets = self._pronoun(target, c, srcs, prefer, others=c.head)
-            below = [r[2] for r in self.relations if c.head and r[1] in c.head and r[0] == "above"]
-            if below and all(self.groups[h].rests == "hanging" for h in c.head) and not any(
-                self.groups[g].rests == "hanging" for g in srcs
-            ):  # "a chandelier hangs above the table, with a bench on either side of it": the table
-                targets = below[-1:]
-            if c.head is not None and srcs == c.head:
-                targets = self._pronoun(target, c, srcs, prefer)
-            elif c.head is not None and target == "it" and all(self.groups[h].count > 1 for h in c.head):
-                # "two tents, with a campfire in front of them and four logs around it": "it" is
-                # no plural head but the single thing named last
-                single = [g for g in reversed(c.groups) if g not in srcs and self.groups[g].count == 1]
-                targets = single[:1] or targets
-            elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
-                targets = c.wsub_before[-1:]  # "... and a computer beside it": beside the till
-            targets = self._part_owner(part, targets, [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)], srcs)
-            if c.head is None and target in ("it", "them") and part is None and kind in ("in", "on", "from"):
-                targets = self._seat(c, srcs, prefer, rel.start, target == "them") or targets
-            targets = self._peer(kind, srcs, targets, c)
+            targets = self._pronoun_target(c, p, target, kind, srcs, prev_subject, starts_with_rel)
         elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
             # "a bed with a nightstand on either side": a with-thing's side is its head's
             owner = list(c.head) if c.head is not None and srcs == c.wsub else []
@@ -974,8 +1058,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             targets = []
         else:
             targets = target
+        end, ce = p.end, p.ce
+        if kind == "from" and end < ce and toks[end].text == "to" and isinstance(targets, list) and targets:
+            kind = "between"  # "a conveyor carries ore from it to a refinery": between the two
         if kind == "between" and isinstance(targets, list) and targets:
-            if end < ce and toks[end].text == "and":
+            if end < ce and toks[end].text == ("to" if rel.kind == "from" else "and"):
                 second, end2 = self._target_at(end + 1, ce)
                 if isinstance(second, list):
                     targets, end = targets + second, end2
@@ -984,38 +1071,104 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 if t in c.groups:
                     continue
                 c.groups.append(t)
-        if kind in ("flanked by", "surrounded by", "near by", "on by"):
-            head = srcs or list(prev_subject)
-            if isinstance(targets, list) and head:
-                active = {"flanked by": "flank", "surrounded by": "around", "near by": "near", "on by": "on"}[kind]
-                if c.each is not None:  # "three tables, each surrounded by two chairs": two per table
-                    self._per_each([t for t in targets if t != c.each], c.each)
-                for t in targets:
-                    for h in head:
-                        self._relate(active, [t], h)
-                c.produced = True
-                c.rels.append((kind, targets))
-                if c.head is None:
-                    c.main = list(targets)  # "guarded by a skeleton sitting on a barrel"
-            c.last_target, c.last_target_end, c.expect_new = [], -1, False
+        p.rel, p.kind, p.target, p.srcs, p.targets, p.end = rel, kind, target, srcs, targets, end
+
+    def _pronoun_target(
+        self, c: _Clause, p: _Phrase, target: str, kind: str, srcs: list[int], prev_subject, starts_with_rel
+    ) -> list[int]:
+        """What "it" / "them" after a phrase names: the with-part's head, else the clause's own
+        last target, the subject before, what the sentence before was about (for a fronted
+        phrase), with the exceptions a person, a hung head, a plural head and a till make."""
+        rel, part = p.rel, p.part
+        # "a bench in front of the swing, facing it": the clause's own last target first.
+        # then the subject before ("a wagon waits behind the fountain, and a donkey is tied to
+        # a post next to it": the wagon)
+        own_subject = list(prev_subject) if c.main and srcs == c.main else []
+        prefer = [*c.last_target, *prev_subject] if c.last_target else own_subject
+        if not srcs and c.opens and starts_with_rel:
+            prefer = list(self.topic)  # "Behind them, five soldiers sit": them of the sentence before
+        who = srcs or ([] if c.opens else list(prev_subject))  # "..., watching them": the subject before
+        own = [t for s in who for t in c.supports.get(s, [])]
+        targets: list[int] = list(c.head) if c.head is not None else self._pronoun(target, c, who + own, prefer, kind)
+        # (a scarecrow or a mannequin has a person's shape but is "it")
+        if c.head is not None and all(self._living(h) and self.groups[h].category == "figure" or (
+            self._living(h) and self.catalogue[self.groups[h].category].shape != "figure"
+        ) for h in c.head):  # fmt: skip
+            # "a man on the bench, with his terrier asleep under it": "it" is no person
+            targets = self._pronoun(target, c, srcs, prefer, others=c.head)
+        below = [r[2] for r in self.relations if c.head and r[1] in c.head and r[0] == "above"]
+        if below and all(self.groups[h].rests == "hanging" for h in c.head) and not any(
+            self.groups[g].rests == "hanging" for g in srcs
+        ):  # "a chandelier hangs above the table, with a bench on either side of it": the table
+            targets = below[-1:]
+        if c.head is not None and srcs == c.head:
+            targets = self._pronoun(target, c, srcs, prefer)
+        elif c.head is not None and target == "it" and all(self.groups[h].count > 1 for h in c.head):
+            # "two tents, with a campfire in front of them and four logs around it": "it" is
+            # no plural head but the single thing named last
+            single = [g for g in reversed(c.groups) if g not in srcs and self.groups[g].count == 1]
+            targets = single[:1] or targets
+        elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
+            targets = c.wsub_before[-1:]  # "... and a computer beside it": beside the till
+        candidates = [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)]
+        targets = self._part_owner(part, targets, candidates, srcs)
+        if c.head is None and target in ("it", "them") and part is None and kind in ("in", "on", "from"):
+            targets = self._seat(c, srcs, prefer, rel.start, target == "them") or targets
+        return self._peer(kind, srcs, targets, c)
+
+    def _reversed_phrase(self, c: _Clause, p: _Phrase, prev_subject) -> int | None:
+        """"A desk flanked by two lamps", "a snowmobile towing a sled": the target is placed by
+        the thing before the phrase."""
+        if p.kind not in _REVERSED:
+            return None
+        kind, targets = p.kind, p.targets
+        head = p.srcs or list(prev_subject)
+        if kind == "towing" and isinstance(targets, list):
+            targets = [t for t in targets if not self._small(t)]  # "pulls a pint": no load behind
+        if isinstance(targets, list) and targets and head:
+            active = _REVERSED[kind]
+            if c.each is not None:  # "three tables, each surrounded by two chairs": two per table
+                self._per_each([t for t in targets if t != c.each], c.each)
+            for t in targets:
+                for h in head:
+                    self._relate(active, [t], h)
+            c.produced = True
+            c.rels.append((kind, targets))
+            if c.head is None:
+                c.main = list(targets)  # "guarded by a skeleton sitting on a barrel"
+        c.last_target, c.last_target_end, c.expect_new = [], -1, False
+        return p.end
+
+    def _without_sources(self, c: _Clause, p: _Phrase, prev_subject, starts_with_rel) -> int | None:
+        """A phrase with nothing before it to place: fronted, it waits for the clause's subject
+        ("Behind the chair, a hologram floats"); later in a clause it places the subject before;
+        "steam rises from a food cart" places the cart."""
+        if p.srcs:
+            return None
+        kind, target, targets, end = p.kind, p.target, p.targets, p.end
+        if starts_with_rel and c.opens and not c.produced and isinstance(targets, list) and targets:
+            tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
+            c.fronted.append((kind, targets, tm is not None and tm.each))
+            if isinstance(target, list):  # "On a mound behind the giraffes, ...": the mound is behind them
+                c.last_target, c.last_target_end, c.last_kind = targets, end, kind
             return end
-        if not srcs:
-            if starts_with_rel and c.first and not c.produced and isinstance(targets, list) and targets:
-                tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
-                c.fronted.append((kind, targets, tm is not None and tm.each))
-                if isinstance(target, list):  # "On a mound behind the giraffes, ...": the mound is behind them
-                    c.last_target, c.last_target_end, c.last_kind = targets, end, kind
-                return end
-            if not c.first and not c.unknown_subject:
-                srcs = list(prev_subject)
-            elif kind == "from" and isinstance(target, list) and targets:
-                # "steam rises from a food cart next to the stall": steam is no thing, the cart is placed
-                c.main = c.main_groups = list(targets)
-                c.last_target, c.last_target_end, c.last_kind = list(targets), end, kind
-                return end
+        if not c.first and not c.unknown_subject:
+            p.srcs = list(prev_subject)
+        elif kind == "from" and isinstance(target, list) and targets:
+            # "steam rises from a food cart next to the stall": steam is no thing, the cart is placed
+            c.main = c.main_groups = list(targets)
+            c.last_target, c.last_target_end, c.last_kind = list(targets), end, kind
+            return end
+        return None
+
+    def _place(self, c: _Clause, p: _Phrase) -> int:
+        """Relate the sources to the targets, one per member where "each" / "every" says so, and
+        keep what the clause's next phrase chains on."""
+        toks, rel, kind, target, targets, srcs, end = self.toks, p.rel, p.kind, p.target, p.targets, p.srcs, p.end
         if kind in ("flank", "flank elliptic") and not toks[rel.start].text.startswith("flank"):
             self._one_a_side(srcs)  # also beside what is no object: "on each side of the elevator"
         hang = kind == "hanging from" or self._hung_before(rel.start)
+        hang = hang or any(t.text in _HANG_VERBS for t in toks[rel.start : rel.end])  # "hangs over the bar"
         if hang and kind in ("above", "over", "hanging from") and self._from_ceiling(rel.start):
             for g in srcs:  # "three paper lanterns hang from the ceiling over the counter": hung, not set down
                 if self.groups[g].rests != "hanging" and not self._living(g):  # also "a birdcage hangs from the ceiling"
@@ -1047,21 +1200,27 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._per_each(targets, c.each)  # "each in a leather seat": one seat apiece
         elif tm is not None and kind == "on" and self._bare(tm) and len(srcs) == 1 and self._living(srcs[0]):
             self._per_each(targets, srcs[0])  # "two soldiers on horseback": a horse each
+        elif tm is not None and kind == "on" and len(srcs) == 1 and self._living(srcs[0]) and self._seats_each(tm):
+            self.groups[targets[0]].count = self.groups[srcs[0]].count  # "four astronauts sit on stools": one each
         sitter = self._seat_owner(c, srcs, tm) if tm is not None else None
         if sitter is not None:
             self._relate("on", [sitter], targets[0], instance=instance)
-        for g in srcs if parts_each and part is not None else []:
+        for g in srcs if p.parts_each and p.part is not None else []:
             if g in c.groups and g not in self.numbered and self.groups[g].count == 1:
-                self.groups[g].count = parts_each
-        if kind == "on" and body is None and all(self._person_at(g) for g in [*srcs, *targets]):
+                self.groups[g].count = p.parts_each
+        if kind == "on" and p.body is None and all(self._person_at(g) for g in [*srcs, *targets]):
             kind = "near"  # "a nurse checks on a patient": by another person, never on one
-        for t in targets:
-            for one in ordinals or (instance,):
+        # "lanterns hang from the branches of an oak": up in its spread crown, by no side of it
+        crown = kind == "hanging from" and any(
+            "tree" in load_vocabulary().part_owners.get(singular(w.text), ()) for w in toks[rel.end : end]
+        )
+        for t in targets if not crown else ():
+            for one in p.ordinals or (instance,):
                 self._relate(kind, srcs, t, hang, one)
             # a person holds nothing on top, but carries what is on a knee or an arm ("a crow on each of
             # its arms": a scarecrow's too)
-            limb = part is not None and load_vocabulary().body_parts.get(part) == "on" and self._person_at(t)
-            if body == "on" or (limb and kind == "on"):
+            limb = p.part is not None and load_vocabulary().body_parts.get(p.part) == "on" and self._person_at(t)
+            if p.body == "on" or (limb and kind == "on"):
                 self.carried.update((s, t) for s in srcs)
         c.produced = True
         c.rels = [(kind, targets)]
@@ -1078,15 +1237,30 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         c.expect_new = True
         return end
 
+    def _seats_each(self, m: _Mention) -> bool:
+        """Seats named in the plural with no count of their own, new here ("on padded stools"):
+        as many as sit on them."""
+        return (
+            _is_plural(self.toks, m) and not m.counted and not m.definite and m.group >= 0
+            and m.group not in self.numbered and self._carrier(m.group, ("seats",))
+        )  # fmt: skip
+
     def _rider_placed(self, c: _Clause, rider: list[int], kind: str) -> bool:
-        """Whether a phrase after "a person sits on X" places the person, not X: where the person
-        works or faces ("sits on a stool at a workbench", "on a bathtub across from it"), and
-        after a seat, what the person sits between or under ("in folding chairs between them").
-        Beside, near, in front of place the seat ("a bard sits on a stool beside the fire")."""
-        if c.last_kind not in ("on", "in", "on top") or not rider or not all(self._living(g) for g in rider):
+        """Whether a phrase after "a person sits on X" places the person, not X: what the person
+        faces after any target ("kneels at a low table across from the vats", "ponies tied to a
+        fence across from the caravans"), where the person works ("sits on a stool at a
+        workbench"), and after a seat, what the person sits between, under or at the foot of ("in
+        folding chairs between them", "rest on a bench at the foot of a cross"; but "a cat naps in
+        a basket at the foot of the stove" places the basket). Beside, near, in front of place the
+        seat ("a bard sits on a stool beside the fire")."""
+        if not rider or not all(self._living(g) for g in rider):
+            return False
+        if kind in ("opposite", "face to"):
+            return True
+        if c.last_kind not in ("on", "in", "on top"):
             return False
         seat = all(self.catalogue[self.groups[g].category].shape in _SEATS for g in c.last_target)
-        return kind in ("opposite", "at", "face to") or (seat and kind in ("between", "under"))
+        return kind == "at" or (seat and kind in ("between", "under", "foot of"))
 
     @staticmethod
     def _describes(words: list[str], after_verb: bool) -> bool:
@@ -1099,6 +1273,26 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if words[0] in _RELATIVES:
             return True
         return after_verb and _participle(words[0])
+
+    def _seat_after(self, rel: _Rel, mentions: list[_Mention]) -> bool:
+        """A seat right after "from": whatever one does from a seat, one sits on it ("a servant
+        plays the organ from a narrow bench"), unless a small thing taken from it comes right
+        before ("takes a cushion from the sofa")."""
+        seat = next((m for m in mentions if rel.end <= m.start < rel.end + 4), None)
+        taken = any(m.end == rel.start and max(self._size(m)) <= _HANDHELD_SIZE for m in mentions)
+        return seat is not None and not taken and load_vocabulary().carries(seat.category, seat.phrase, ("seats",))
+
+    def _from_to(self, start: int, starts: set[int]) -> bool:
+        """"From it to a refinery", "from the gate to the barn": a thing, then "to" and another
+        thing; what runs or carries from one to the other is between them."""
+        k = start
+        while k < len(self.toks) and k - start < 6 and self.toks[k].text != "to":
+            if not self.toks[k].text[:1].isalnum():
+                return False
+            k += 1
+        return k < len(self.toks) and self.toks[k].text == "to" and k > start and self._names_thing(start, starts) and (
+            self._names_thing(k + 1, starts)
+        )
 
     def _names_thing(self, start: int, starts: set[int]) -> bool:
         """A noun phrase of a thing follows ("at each desk"), not a time or a part ("at one end")."""
@@ -1168,10 +1362,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
 
     def _kind(self, kind: str, s: int, t: int, hang: bool = False) -> str:
         src = self.groups[s]
+        target = self.catalogue[self.groups[t].category]
         if kind == "over":
             # a tree leaning over a pond stands by it; a lamp or a lantern over a table hangs above it;
-            # one who rides or walks over a bridge is on it (a rider's mount is: :meth:`_ridden`)
-            if self._living(s) and not hang and self._carrier(t, ("perches",)):
+            # a pot or a cauldron over a fire sits on it; a rider over a bridge (no more than a platform
+            # high) is on it
+            vessel = src.rests == "surface" or self._carrier(s, ("containers",))
+            if not hang and vessel and not target.support and self.groups[t].size[2] <= _LOW_HOST:
+                return "on"
+            low = self.groups[t].size[2] <= _PLATFORM_HEIGHT
+            if not hang and self._living(s) and self._carrier(t, ("perches",)) and low:
                 return "on"
             return "above" if hang or src.rests in ("hanging", "surface") else "near"
         walled = any(m.group == s for k, m in self.by_start.items() if k in self.on_wall)
@@ -1180,9 +1380,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if kind == "under" and self._overhead(t):
             return "under hung"  # "chairs under a ceiling fan": the fan hangs above them
         if kind == "under":
-            tgt = self.catalogue[self.groups[t].category]
-            return "under flat" if self.groups[s].size[2] < 0.1 and tgt.size[2] < 1.5 else "near"
-        target = self.catalogue[self.groups[t].category]
+            return "under flat" if self.groups[s].size[2] < 0.1 and target.size[2] < 1.5 else "near"
         if kind == "at":  # "an office chair at each desk": pulled up to it, facing it
             seat = self.catalogue[src.category].shape in _SEATS
             return "at seat" if seat and (target.support or target.shape in ("desk", "table", "counter")) else "near"
@@ -1203,8 +1401,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return "on" if holds and target.size[2] <= 2.5 else "no relation"
         if kind == "from":  # "a heron watches from a rock", "a guard waves from the tower": on it
             return "on" if self._living(s) and (self._carrier(t) or self._perch_part) else "no relation"
-        if kind == "hanging from":  # from a beam or a shelf: above it; from a tall tree: beside it
-            return "above" if target.size[2] <= 2.5 else "near"
+        if kind == "hanging from":
+            # from a beam: above it; from a tree: beside it; from anything else (a post, a stall, a
+            # barrier, a tower's railing) it is carried by that thing, on it
+            if any(w in _CEILING_WORDS for w in self.groups[t].name.split()):
+                return "above"
+            return "near" if target.shape in _PLANT_SHAPES else "on"
+        if kind == "end of":  # "a cushion at the end of the counter": on it; "a chest at the end of the bed": at its foot
+            if src.rests == "surface" and target.support:
+                return "on"
+            return "in front of" if target.shape == "bed" else "near"  # "a barrow at the end of the patch"
         if kind == "centre of":  # "a vase in the middle of the table", "a throne in the centre of the stage": on it
             if src.rests == "surface" and target.support:
                 return "on"

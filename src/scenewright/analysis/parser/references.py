@@ -44,6 +44,12 @@ class _References:
         if opening == ["each", "of"] and lead + 1 < ce and toks[lead].text in _OWNER_PRONOUNS:
             # "a crow on each of its outstretched arms": one per part, two unless the text counts them
             self._parts_each = _NUMBERS.get(toks[lead + 1].text, 2)
+        part_of_each = next((k for k in range(pos + 1, min(ce - 1, pos + 5)) if toks[k].text == "of"), None)
+        if part_of_each is not None and toks[part_of_each + 1].text in ("each", "every") and (
+            part_of_each + 2 >= ce or not toks[part_of_each + 2].text[:1].isalpha()
+        ):  # "looks out over the door of each": a part of every member, one by each
+            self._part = singular(toks[part_of_each - 1].text)
+            return "each one", part_of_each + 2
         j = pos
         while j < ce and j - pos < 6:
             if j in self.by_start:
@@ -58,6 +64,10 @@ class _References:
                 if owner and m.group < 0 and not any(g.category == m.category for g in self.groups):
                     self._part = singular(toks[m.end - 1].text)
                     return owner, m.end  # "pumpkins on its counter": the stall's own counter is the stall
+                possessor = self._possessor(pos, j)
+                if possessor is not None and m.group < 0 and not any(g.category == m.category for g in self.groups):
+                    self._part = singular(toks[m.end - 1].text)
+                    return [possessor], m.end  # "either side of the warehouse's gate": the warehouse
                 g = self._resolve(m, self.size_of.get(m.start, []))
                 part = toks[m.end].text if m.end < ce and toks[m.end - 1].text.endswith("'s") else ""
                 if singular(part) in _BUILDING_PARTS:
@@ -78,12 +88,22 @@ class _References:
                 return "each one", j + 3  # "a clock hangs above each of them": as "each one"
             if w == "one" and j > pos and toks[j - 1].text not in _NUMBERS and (j + 1 >= ce or toks[j + 1].text != "of"):
                 return "that one", j + 1  # "at the foot of the tallest one": one of a group named before
+            # a word hyphen-joined to its neighbour, or right before the noun, describes the noun
+            # ("a fold-down table", "a tall parts cabinet"), whatever verb it could also be
+            hyphened = (j > pos and toks[j].joined) or (j + 1 < ce and toks[j + 1].joined)
             # a noun, not a verb, after a determiner or a count ("its walls", "two rows of")
             after_determiner = j > pos and (toks[j - 1].text in _DETERMINERS or toks[j - 1].text in _NUMBERS)
             # "leans against the wall reading a book": a participle with its own object ends the phrase
             if w.endswith("ing") and j + 1 < ce and toks[j + 1].text in _DETERMINERS and j > pos:
                 break
+            # "in the middle of the arena a cowboy clings": an article after a word opens a noun
+            # phrase of its own (not in "a hook-a-duck stall")
+            if w in ("a", "an", "the") and j > pos and not (after_determiner or hyphened) and toks[j - 1].text != "of":
+                break
+            modifier = w not in _STOP and w[0].isalnum() and j + 1 in self.by_start
             if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
+                hyphened or modifier
+            ) or (
                 w not in _STOP and w[0].isalnum() and (after_determiner or not _is_verb(w) or self._part_word(w))
             ):
                 j += 1
@@ -93,6 +113,10 @@ class _References:
         if building is not None:
             self._part = next(singular(t.text) for t in toks[pos:j] if singular(t.text) in _BUILDING_PARTS)
             return [building], j  # "mounted on the roof", "beside its door", "on the shop's roof"
+        possessor = self._possessor(pos, j)
+        if possessor is not None:
+            self._part = singular(toks[j - 1].text)
+            return [possessor], j  # "on either side of the refinery's airlock": the refinery
         owner = _OWNER_PRONOUNS.get(toks[lead].text) if lead < ce else None
         if owner and j > lead + 1:
             self._part = singular(toks[j - 1].text)
@@ -105,6 +129,17 @@ class _References:
             self._part = singular(toks[lead + 1].text)
             return "the part", j  # "lies in the water": the water of the pond named before
         return None, pos
+
+    def _possessor(self, pos: int, end: int) -> int | None:
+        """The thing a possessive before a part names ("the refinery's airlock" → the refinery), a
+        part being no object of its own; a person's or an animal's things are things ("the
+        farmer's cart")."""
+        owned = [t.text[:-2] for t in self.toks[pos:end] if t.text.endswith("'s")]
+        if not owned:
+            return None
+        head = singular(owned[-1])
+        found = next((g.index for g in reversed(self.groups) if singular(g.name.split()[-1]) == head), None)
+        return found if found is not None and not self._living(found) else None
 
     @staticmethod
     def _part_word(word: str) -> bool:
@@ -200,8 +235,15 @@ class _References:
 
         # what a living thing watches is first a living thing ("a fox sits on the drum, watching them")
         watcher = kind == "face to" and bool(srcs) and all(self._living(g) for g in srcs)
+        # what hangs or stands above "it" is above a thing first ("a bear stirs a pot on the stove,
+        # and ladles hang from the ceiling above it": the stove)
+        overhead = kind in ("above", "over")
+
+        def kind_fits(g: int) -> bool:
+            return (not watcher or self._living(g)) and not (overhead and self._living(g))
+
         for fits in (
-            (lambda g: not aside(g) and g not in sat_on and (not watcher or self._living(g))),
+            (lambda g: not aside(g) and g not in sat_on and kind_fits(g)),
             (lambda g: not aside(g) and g not in sat_on),
             (lambda g: not aside(g)),
             (lambda g: True),
@@ -289,9 +331,10 @@ class _References:
         owner = next((g.index for g in reversed(self.groups) if singular(g.name.split()[-1]) == head), None)
         return None if owner is None else (f"{toks[k + 1].text} of", [owner], k + 2)
 
-    def _ordinal_pair(self, pos: int, ce: int) -> tuple[int, tuple[int, int], int] | None:
+    def _ordinal_pair(self, pos: int, ce: int) -> tuple[int | None, tuple[int, int], int] | None:
         """"(between) the first and second ramp", "the first and the last car": the group the noun
-        names back, the two ordinals, and where the noun ends."""
+        names back, the two ordinals, and where the noun ends; no group when no noun follows
+        ("between the second and the third": of the row named before)."""
         toks = self.toks
         k = pos + (pos < ce and toks[pos].text == "the")
         if k + 2 >= ce or toks[k].text not in _ORDINALS or toks[k + 1].text != "and":
@@ -299,6 +342,9 @@ class _References:
         j = k + 2 + (toks[k + 2].text == "the")
         if j >= ce or toks[j].text not in _ORDINALS:
             return None
+        ordinals = (_ORDINALS[toks[k].text], _ORDINALS[toks[j].text])
+        if j + 1 >= ce or not toks[j + 1].text[:1].isalpha():
+            return None, ordinals, j + 1
         m = next((self.by_start[i] for i in range(j + 1, min(ce, j + 4)) if i in self.by_start), None)
         if m is None:
             return None
@@ -306,4 +352,4 @@ class _References:
         group = self._resolve(m, [])
         if group < 0:
             return None
-        return group, (_ORDINALS[toks[k].text], _ORDINALS[toks[j].text]), m.end
+        return group, ordinals, m.end
