@@ -487,3 +487,9 @@ def test_glasses_worn_are_no_cups():
 def test_a_cable_car_is_no_car_and_a_slope_sets_the_scene():
     got = objects("A ski hut on a steep slope. Behind the hut, a cable car glides over the pines.")
     assert got[("vehicle", "car")] == 1 and not any(c == "car" or w == "slope" for c, w in got), got
+
+
+def test_a_place_phrase_closed_by_a_comma_is_no_apposition():
+    got = objects("On the towpath, an old woman in a shawl feeds the ducks.")
+    assert not any(w == "towpath" for _, w in got), got
+    assert objects("The ferryman, a gaunt old man, leans on his pole.")[("figure", "ferryman")] == 1

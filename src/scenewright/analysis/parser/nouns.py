@@ -921,7 +921,8 @@ def _guess(toks: list[_Tok], head: int, before: list[_Tok]) -> Entry:
     entry = vocabulary.guess(word)
     if any(t.text == "with" for t in before):
         return entry
-    human = _does_what_people_do(toks, head + 1) or _person_apposition(toks, head + 1)
+    fronted = _after_preposition(toks, head)  # "On the bank, an old woman grills ...": no apposition
+    human = _does_what_people_do(toks, head + 1) or (_person_apposition(toks, head + 1) and not fronted)
     moody = any(t.text in vocabulary.moods for t in before)
     if entry.category == GENERIC or (human and entry.category == "machine"):
         entry = vocabulary.guess_agent(word, moody or _acts_as_person(toks, head + 1), human) or entry
@@ -958,6 +959,19 @@ def _does_what_people_do(toks: list[_Tok], k: int) -> bool:
     found = _verb_after(toks, k)
     vocabulary = load_vocabulary()
     return found is not None and found[0] in vocabulary.person_verbs and found[0] not in vocabulary.animal_verbs
+
+
+def _after_preposition(toks: list[_Tok], head: int) -> bool:
+    """The noun phrase ending at ``head`` follows a preposition ("on the bank", "behind the old
+    mill"): the object of a place phrase, which a comma after it closes."""
+    j = head - 1
+    while j >= 0 and head - j <= 4 and (toks[j].text in _DETERMINERS or (
+        toks[j].text[:1].isalpha() and toks[j].text not in _STOP
+    )):
+        j -= 1
+    return j >= 0 and toks[j].text in _STOP and toks[j].text not in _DETERMINERS and toks[j].text[:1].isalpha() and (
+        toks[j].text not in ("and", "or", "but", "while", "where", "which", "who", "that", "as", "than")
+    )
 
 
 #: Words an apposition may open with before the person it names ("their sensei, a tiny old man, ...").
