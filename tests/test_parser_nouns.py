@@ -378,6 +378,8 @@ def test_a_part_of_a_thing_named_before_places_by_that_thing():
         ("A line of tinsel hangs over the door.", "tinsel", 1, 1),  # stuff, no count noun
         ("A flock of sheep grazes by the wall.", "sheep", 3, 12),  # ... but living things are counted
         ("Two dozen mugs hang on the dresser.", "mug", 24, 24),
+        ("A pod of dolphins leaps beside the yacht.", "dolphin", 3, 12),  # collective nouns of animals
+        ("A school of tiny fish circles the anchor.", "fish", 4, 20),
     ],
 )
 def test_measure_words_count_what_follows_them(text, key, low, high):
@@ -493,3 +495,7 @@ def test_a_place_phrase_closed_by_a_comma_is_no_apposition():
     got = objects("On the towpath, an old woman in a shawl feeds the ducks.")
     assert not any(w == "towpath" for _, w in got), got
     assert objects("The ferryman, a gaunt old man, leans on his pole.")[("figure", "ferryman")] == 1
+
+
+def test_an_opening_reef_sets_the_scene():
+    assert not any(w == "reef" for _, w in objects("A sunlit coral reef in a cartoon style. A turtle glides over a clam."))
