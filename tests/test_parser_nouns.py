@@ -499,3 +499,8 @@ def test_a_place_phrase_closed_by_a_comma_is_no_apposition():
 
 def test_an_opening_reef_sets_the_scene():
     assert not any(w == "reef" for _, w in objects("A sunlit coral reef in a cartoon style. A turtle glides over a clam."))
+
+
+def test_a_verbless_style_line_before_the_opening_keeps_it_the_setting():
+    got = objects("Flat vector art. A moss garden behind an old temple. A stone lantern stands by the pond.")
+    assert not any(w == "temple" for _, w in got) and got[("lantern", "lantern")] == 1, got

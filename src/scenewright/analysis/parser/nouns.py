@@ -650,14 +650,14 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
 
 #: Prepositions that tie the opening's place to a wider one ("a base on a rocky shoulder").
 _SETTING_PREPOSITIONS = {"on", "at", "of", "to", "near", "by", "below", "beneath", "under", "above", "beside",
-                         "overlooking", "outside", "atop", "upon"}  # fmt: skip
+                         "overlooking", "outside", "atop", "upon", "behind", "beyond", "along", "across"}  # fmt: skip
 
 
 def _verbless_opening(toks: list[_Tok], k: int) -> bool:
-    """The words before ``k`` are the description's first sentence and have no verb: it names
-    where the scene is ("An archaeological dig on a hillside", "The waiting lanes of a ferry
-    terminal"), so a place word in it is the setting, not a thing standing in it."""
-    return not any(t.text in (".", "!", "?") or _verb_word(t.text) for t in toks[:k])
+    """No verb comes before ``k`` in the description (a verbless style line before it aside,
+    "Low poly."): the words name where the scene is ("An archaeological dig on a hillside", "The
+    waiting lanes of a ferry terminal"), so a place word there is the setting, not a thing in it."""
+    return not any(_verb_word(t.text) for t in toks[:k])
 
 
 def _enterable(toks: list[_Tok], s: int, e: int) -> bool:
