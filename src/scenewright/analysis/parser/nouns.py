@@ -242,7 +242,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         if e < n and toks[e].joined and (toks[e].text in _LIKENESS or toks[e].text.endswith(("ing", "ed"))):
             continue  # "a mushroom-shaped lamp", "a goldfish-scooping stall", "glass-domed huts": a look or a use
         # "three sheep graze": after a count, a compound would end in a plural ("three fish tanks")
-        verb_after = _counted_plural(toks, s) and e < n and not toks[e].joined and singular(toks[e].text) == toks[e].text
+        verb_after = _counted_plural(toks, s) and e < n and not toks[e].joined and singular(follow) == follow
         if entry is not None and singular(words[-1]) == words[-1] and _names_kind(toks, e) and not verb_after:
             continue  # "a bear face", "a train compartment", "camel-hair tents": a kind, not a thing
         follow_two = f"{follow} {toks[e + 1].text}" if e + 1 < n else ""
@@ -481,7 +481,8 @@ _WEARING = {"in", "wearing", "wears", "wore", "donning", "clad"}
 def _worn(toks: list[_Tok], s: int, e: int) -> bool:
     """Clothing the catalogue also names as a thing ("armour") is worn after "in" or
     "wearing": "a knight in battered armour"; "a suit of armour stands by the door" is a thing."""
-    if singular(toks[e - 1].text) not in load_vocabulary().clothing and toks[e - 1].text not in load_vocabulary().clothing:
+    clothing = load_vocabulary().clothing
+    if singular(toks[e - 1].text) not in clothing and toks[e - 1].text not in clothing:
         return False
     j = s - 1
     while j >= 0 and s - j <= 4 and toks[j].text[:1].isalpha() and toks[j].text not in _WEARING and (
@@ -493,7 +494,8 @@ def _worn(toks: list[_Tok], s: int, e: int) -> bool:
 
 #: Participles before "like" that make what follows a look ("shaped like a fish", "painted like a comic").
 _LIKENESS_VERBS = {"shaped", "painted", "styled", "drawn", "carved", "made", "built", "designed", "dressed",
-                   "disguised", "decorated", "looks", "look", "looking", "rendered", "moulded", "molded", "sculpted"}  # fmt: skip
+                   "disguised", "decorated", "looks", "look", "looking", "rendered", "moulded", "molded",
+                   "sculpted"}  # fmt: skip
 #: Nouns before "of" that make what follows a look ("in the style of an etching", "in the shape of a heart").
 _LIKENESS_NOUNS = {"style", "shape", "form", "manner", "likeness", "fashion", "spirit"}
 
@@ -742,7 +744,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         if head is None or known or toks[head].quoted:
             continue
         # a counted plural before a singular known word is its subject ("two stokers shovel coal")
-        subject = plural and singular(toks[head].text) != toks[head].text and j < n and singular(toks[j].text) == toks[j].text
+        subject = plural and singular(toks[head].text) != toks[head].text and j < n
+        subject = subject and singular(toks[j].text) == toks[j].text
         if j < n and j in covered and not subject:
             continue  # the words before a known noun are its adjectives ("a shiny [robot]")
         word = toks[head].text
@@ -1165,7 +1168,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             alive = m.category in _LIVING or shape in _LIVING or m.category == "fish"
             last = toks[m.end - 1].text
             stuff = not plural and singular(last) == last and not alive  # not "herbs", listed as written
-            heaped = (q in _HEAPS and small) or (stuff and singular(q) == q and q != "pair")  # "bunches of garlic": several
+            # "bunches of garlic": several lots of it
+            heaped = (q in _HEAPS and small) or (stuff and singular(q) == q and q != "pair")
             count = 1 if heaped or pair else _QUANTITY[q]
             counted = q in ("pair", "couple", "dozen")
             k = j - 2
