@@ -510,3 +510,21 @@ def test_an_opening_reef_sets_the_scene():
 def test_a_verbless_style_line_before_the_opening_keeps_it_the_setting():
     got = objects("Flat vector art. A moss garden behind an old temple. A stone lantern stands by the pond.")
     assert not any(w == "temple" for _, w in got) and got[("lantern", "lantern")] == 1, got
+
+
+@pytest.mark.parametrize(
+    "text, verb",
+    [
+        ("Two boys fish from the jetty.", "fish"),  # a catalogue noun after a plural, before a preposition
+        ("The girls swing on the old gate.", "swing"),
+        ("A punter poles his raft under the arch.", "pole"),  # after "a ...", a plural before an object
+    ],
+)
+def test_a_known_noun_where_the_subject_wants_a_verb_is_the_verb(text, verb):
+    got = objects(text)
+    assert not any(verb in w for _, w in got), got
+
+
+def test_a_plural_modifier_is_rare_so_compounds_stay():
+    got = objects("Two stone benches face the pond, and three fish tanks glow by the wall.")
+    assert got[("bench", "bench")] == 2 and got[("aquarium", "tank")] == 3, got

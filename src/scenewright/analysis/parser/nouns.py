@@ -123,10 +123,12 @@ _SINGULAR_DETERMINERS = {"a", "an", "another", "each", "every", "one"}
 
 def _verb_ends_subject(toks: list[_Tok], i: int, end: int) -> bool:
     """The plural ending at ``end`` is the verb of a singular subject, not a noun: a phrase
-    opened by "a" cannot end in a plural ("a wizard in a pointed hat stands"), and a plural
-    placing verb right after a singular noun is its verb ("the far wall looms", "a tower looms")."""
+    opened by "a" cannot end in a plural ("a wizard in a pointed hat stands", "a gondolier poles
+    his boat"), and a plural placing verb right after a singular noun is its verb ("the far wall
+    looms", "a tower looms")."""
     last = toks[end - 1].text
-    if last == singular(last) or singular(last) not in _FINITE or _counted_plural(toks, i):
+    transitive = end < len(toks) and toks[end].text in _OBJECT_OPENERS  # "... poles his boat"
+    if last == singular(last) or not (singular(last) in _FINITE or transitive) or _counted_plural(toks, i):
         return False
     j = i - 1
     while j >= 0 and i - j <= 4 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
@@ -238,6 +240,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         verb_before = s > 0 and _is_verb(toks[s - 1].text) and not _opens_phrase(toks, s - 1)  # not "a news helicopter"
         if entry is not None and (verb_before or (k > 0 and raw[k - 1][1] == s and not kind)):
             continue  # "two robots stand guard", "fox statues guard the path": a verb here
+        if entry is None and k > 0 and raw[k - 1][1] == s and _plural_subject_before(toks, raw[k - 1], e):
+            continue  # "two kids fish from the pier", "the children swing on the gate": a verb here
         follow = toks[e].text if e < n else ""
         if e < n and toks[e].joined and (toks[e].text in _LIKENESS or toks[e].text.endswith(("ing", "ed"))):
             continue  # "a mushroom-shaped lamp", "a goldfish-scooping stall", "glass-domed huts": a look or a use
@@ -310,6 +314,16 @@ def _short_for_compound(toks: list[_Tok], mentions: list[_Mention]) -> None:
             if category is not None and category != m.category:
                 m.category = category
                 break
+
+
+def _plural_subject_before(toks: list[_Tok], before: tuple, e: int) -> bool:
+    """A catalogue noun right after a plural noun and before a preposition or an object is that
+    plural's verb ("two kids fish from the pier"): a noun before another is singular ("a fish
+    tank"), and a compound goes on with a noun."""
+    last = toks[before[1] - 1].text
+    follow = toks[e].text if e < len(toks) else "."
+    plural = singular(last) != last and (last,) not in load_vocabulary().entries  # "herbs" is listed as written
+    return plural and singular(toks[e - 1].text) == toks[e - 1].text and follow in _STOP and follow[:1].isalpha()
 
 
 def _names_place_after(toks: list[_Tok], e: int) -> bool:
