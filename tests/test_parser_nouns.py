@@ -528,3 +528,7 @@ def test_a_known_noun_where_the_subject_wants_a_verb_is_the_verb(text, verb):
 def test_a_plural_modifier_is_rare_so_compounds_stay():
     got = objects("Two stone benches face the pond, and three fish tanks glow by the wall.")
     assert got[("bench", "bench")] == 2 and got[("aquarium", "tank")] == 3, got
+
+
+def test_an_agent_noun_doing_something_to_what_is_his_is_a_person():
+    assert objects("A punter poles his raft under the arch.")[("figure", "punter")] == 1

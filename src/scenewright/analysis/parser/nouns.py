@@ -960,7 +960,8 @@ def _verb_after(toks: list[_Tok], k: int) -> tuple[str, int] | None:
 
 def _acts_as_person(toks: list[_Tok], k: int) -> bool:
     """Whether the subject ending at ``k`` does what people do: a person verb ("a picker is
-    working", "a welder kneels"), or a deed done to a thing ("a farrier is shoeing a horse")."""
+    working", "a welder kneels"), a deed done to a thing ("a farrier is shoeing a horse") or to
+    something of his or hers ("a punter poles his raft")."""
     found = _verb_after(toks, k)
     if found is None:
         return False
@@ -968,6 +969,8 @@ def _acts_as_person(toks: list[_Tok], k: int) -> bool:
     if verb in load_vocabulary().person_verbs:
         return True
     k += skipped
+    if _is_verb(verb) and k + 1 < len(toks) and toks[k + 1].text in ("his", "her"):
+        return True  # "a punter poles his raft": what is his is a person's
     return skipped > 0 and verb.endswith("ing") and k + 1 < len(toks) and toks[k + 1].text in _DETERMINERS
 
 
