@@ -532,3 +532,8 @@ def test_a_plural_modifier_is_rare_so_compounds_stay():
 
 def test_an_agent_noun_doing_something_to_what_is_his_is_a_person():
     assert objects("A punter poles his raft under the arch.")[("figure", "punter")] == 1
+
+
+def test_what_a_thing_stands_on_is_no_part_of_it():
+    got = parse_scene("A bronze statue stands on its stone plinth in the square, all pigeons and puddles.").objects
+    assert any(o.name.endswith("plinth") for o in got), [(o.category, o.name) for o in got]

@@ -482,7 +482,7 @@ def _in_look_list(toks: list[_Tok], s: int) -> bool:
     describing words, nouns, commas and "and" only, back to the comma."""
     j = s - 1
     while j >= 1 and s - j <= 10 and (toks[j].text in (",", "and") or (
-        toks[j].text[:1].isalpha() and toks[j].text not in _STOP and not _verb_word(toks[j].text)
+        toks[j].text[:1].isalpha() and toks[j].text not in _STOP
     )):
         j -= 1
     return j >= 1 and toks[j].text == "all" and toks[j - 1].text == ","
