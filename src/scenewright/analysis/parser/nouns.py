@@ -299,12 +299,16 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
     return _alias_mentions(toks, mentions), places
 
 
+_POSSESSIVES = {"his", "her", "their", "its", "my", "our", "your"}
+
+
 def _short_for_compound(toks: list[_Tok], mentions: list[_Mention]) -> None:
-    """"his bike" after "a motorbike rider" is the motorbike: a one-word noun after a possessive
-    or "the", the end of a closed compound the text used since it last named a thing of the
-    noun's own kind (even as a modifier), which the catalogue files elsewhere."""
+    """"his bike" after "a motorbike rider" is the motorbike: a one-word noun after a possessive,
+    the end of a closed compound the text used since it last named a thing of the noun's own
+    kind (even as a modifier), which the catalogue files elsewhere. Not after "the": "the house"
+    after "a greenhouse" is mostly another house."""
     for m in mentions:
-        if m.end - m.start != 1 or m.start == 0 or toks[m.start - 1].text not in _DEFINITE or m.guess is not None:
+        if m.end - m.start != 1 or m.start == 0 or toks[m.start - 1].text not in _POSSESSIVES or m.guess is not None:
             continue
         word = singular(toks[m.start].text)
         since = max((x.end for x in mentions if x.category == m.category and x.start < m.start), default=0)
