@@ -537,3 +537,8 @@ def test_an_agent_noun_doing_something_to_what_is_his_is_a_person():
 def test_what_a_thing_stands_on_is_no_part_of_it():
     got = parse_scene("A bronze statue stands on its stone plinth in the square, all pigeons and puddles.").objects
     assert any(o.name.endswith("plinth") for o in got), [(o.category, o.name) for o in got]
+
+
+def test_a_place_word_that_a_with_list_places_things_by_is_a_thing():
+    got = objects("A sunny allotment with a water butt beside the greenhouse and a bench under the apple tree.")
+    assert got[("greenhouse", "greenhouse")] == 1, got

@@ -642,7 +642,8 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
         "inside",
     ):  # fmt: skip
         return True
-    if j >= 0 and toks[j].text in _SETTING_PREPOSITIONS and _verbless_opening(toks, j):
+    listing = any(t.text in _PLACE_OPENERS for t in toks[:j])  # "a garden with a pond by the greenhouse"
+    if j >= 0 and toks[j].text in _SETTING_PREPOSITIONS and _verbless_opening(toks, j) and not listing:
         return True  # "A mining outpost on a grey asteroid", "a tea terrace clinging to a mountainside"
     # a sentence that only names the place ("An anime-style ramen shop late at night.")
     if later and (j < 0 or toks[j].text in (".", "!", "?")):
