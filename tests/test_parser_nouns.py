@@ -542,3 +542,8 @@ def test_what_a_thing_stands_on_is_no_part_of_it():
 def test_a_place_word_that_a_with_list_places_things_by_is_a_thing():
     got = objects("A sunny allotment with a water butt beside the greenhouse and a bench under the apple tree.")
     assert got[("greenhouse", "greenhouse")] == 1, got
+
+
+def test_an_inside_part_of_the_setting_makes_no_building():
+    got = objects("A cosy bakery at dawn. A cat sleeps by the bakery's door.")
+    assert not any(c == "building" for c, _ in got), got

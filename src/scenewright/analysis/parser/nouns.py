@@ -792,6 +792,10 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
     return out + _unknown_heads(toks, raw, covered)
 
 
+#: Parts only a building seen from outside shows: its owner, a place word, is a building of the scene.
+_OUTSIDE_PARTS = {"roof", "rooftop", "chimney", "eave", "gable", "facade", "porch", "veranda", "doorstep"}
+
+
 def _owners_of_parts(toks: list[_Tok], covered: set[int]) -> list:
     """"A sign stands on the diner's roof": the owner of a part is a thing of the scene, even
     when nothing else names it as one (a setting word like "diner" included)."""
@@ -812,8 +816,10 @@ def _owners_of_parts(toks: list[_Tok], covered: set[int]) -> list:
             # place named before set the scene and is no thing yet)
         known = match_phrase((base,))
         entry = None if known else vocabulary.match((base,))
-        if singular(base) in vocabulary.places and singular(toks[j].text) in _BUILDING_PARTS:
-            known, entry = "building", None  # "the diner's roof": a building here
+        if singular(base) in vocabulary.places:
+            if singular(toks[j].text) not in _OUTSIDE_PARTS:
+                continue  # "by the shop's door": inside the setting, no building of it
+            known, entry = "building", None  # "the diner's roof": a building seen from outside
         if known or entry is not None:
             out.append((k, k + 1, known or entry.category, entry))
             covered.add(k)
