@@ -123,10 +123,12 @@ _SINGULAR_DETERMINERS = {"a", "an", "another", "each", "every", "one"}
 
 def _verb_ends_subject(toks: list[_Tok], i: int, end: int) -> bool:
     """The plural ending at ``end`` is the verb of a singular subject, not a noun: a phrase
-    opened by "a" cannot end in a plural ("a wizard in a pointed hat stands"), and a plural
-    placing verb right after a singular noun is its verb ("the far wall looms", "a tower looms")."""
+    opened by "a" cannot end in a plural ("a wizard in a pointed hat stands", "a gondolier poles
+    his boat"), and a plural placing verb right after a singular noun is its verb ("the far wall
+    looms", "a tower looms")."""
     last = toks[end - 1].text
-    if last == singular(last) or singular(last) not in _FINITE or _counted_plural(toks, i):
+    transitive = end < len(toks) and toks[end].text in _OBJECT_OPENERS  # "... poles his boat"
+    if last == singular(last) or not (singular(last) in _FINITE or transitive) or _counted_plural(toks, i):
         return False
     j = i - 1
     while j >= 0 and i - j <= 4 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
@@ -238,11 +240,13 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         verb_before = s > 0 and _is_verb(toks[s - 1].text) and not _opens_phrase(toks, s - 1)  # not "a news helicopter"
         if entry is not None and (verb_before or (k > 0 and raw[k - 1][1] == s and not kind)):
             continue  # "two robots stand guard", "fox statues guard the path": a verb here
+        if entry is None and k > 0 and raw[k - 1][1] == s and _plural_subject_before(toks, raw[k - 1], e):
+            continue  # "two kids fish from the pier", "the children swing on the gate": a verb here
         follow = toks[e].text if e < n else ""
         if e < n and toks[e].joined and (toks[e].text in _LIKENESS or toks[e].text.endswith(("ing", "ed"))):
             continue  # "a mushroom-shaped lamp", "a goldfish-scooping stall", "glass-domed huts": a look or a use
         # "three sheep graze": after a count, a compound would end in a plural ("three fish tanks")
-        verb_after = _counted_plural(toks, s) and e < n and not toks[e].joined and singular(toks[e].text) == toks[e].text
+        verb_after = _counted_plural(toks, s) and e < n and not toks[e].joined and singular(follow) == follow
         if entry is not None and singular(words[-1]) == words[-1] and _names_kind(toks, e) and not verb_after:
             continue  # "a bear face", "a train compartment", "camel-hair tents": a kind, not a thing
         follow_two = f"{follow} {toks[e + 1].text}" if e + 1 < n else ""
@@ -295,12 +299,16 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
     return _alias_mentions(toks, mentions), places
 
 
+_POSSESSIVES = {"his", "her", "their", "its", "my", "our", "your"}
+
+
 def _short_for_compound(toks: list[_Tok], mentions: list[_Mention]) -> None:
-    """"his bike" after "a motorbike rider" is the motorbike: a one-word noun after a possessive
-    or "the", the end of a closed compound the text used since it last named a thing of the
-    noun's own kind (even as a modifier), which the catalogue files elsewhere."""
+    """"his bike" after "a motorbike rider" is the motorbike: a one-word noun after a possessive,
+    the end of a closed compound the text used since it last named a thing of the noun's own
+    kind (even as a modifier), which the catalogue files elsewhere. Not after "the": "the house"
+    after "a greenhouse" is mostly another house."""
     for m in mentions:
-        if m.end - m.start != 1 or m.start == 0 or toks[m.start - 1].text not in _DEFINITE or m.guess is not None:
+        if m.end - m.start != 1 or m.start == 0 or toks[m.start - 1].text not in _POSSESSIVES or m.guess is not None:
             continue
         word = singular(toks[m.start].text)
         since = max((x.end for x in mentions if x.category == m.category and x.start < m.start), default=0)
@@ -310,6 +318,16 @@ def _short_for_compound(toks: list[_Tok], mentions: list[_Mention]) -> None:
             if category is not None and category != m.category:
                 m.category = category
                 break
+
+
+def _plural_subject_before(toks: list[_Tok], before: tuple, e: int) -> bool:
+    """A catalogue noun right after a plural noun and before a preposition or an object is that
+    plural's verb ("two kids fish from the pier"): a noun before another is singular ("a fish
+    tank"), and a compound goes on with a noun."""
+    last = toks[before[1] - 1].text
+    follow = toks[e].text if e < len(toks) else "."
+    plural = singular(last) != last and (last,) not in load_vocabulary().entries  # "herbs" is listed as written
+    return plural and singular(toks[e - 1].text) == toks[e - 1].text and follow in _STOP and follow[:1].isalpha()
 
 
 def _names_place_after(toks: list[_Tok], e: int) -> bool:
@@ -468,7 +486,7 @@ def _in_look_list(toks: list[_Tok], s: int) -> bool:
     describing words, nouns, commas and "and" only, back to the comma."""
     j = s - 1
     while j >= 1 and s - j <= 10 and (toks[j].text in (",", "and") or (
-        toks[j].text[:1].isalpha() and toks[j].text not in _STOP and not _verb_word(toks[j].text)
+        toks[j].text[:1].isalpha() and toks[j].text not in _STOP
     )):
         j -= 1
     return j >= 1 and toks[j].text == "all" and toks[j - 1].text == ","
@@ -481,7 +499,8 @@ _WEARING = {"in", "wearing", "wears", "wore", "donning", "clad"}
 def _worn(toks: list[_Tok], s: int, e: int) -> bool:
     """Clothing the catalogue also names as a thing ("armour") is worn after "in" or
     "wearing": "a knight in battered armour"; "a suit of armour stands by the door" is a thing."""
-    if singular(toks[e - 1].text) not in load_vocabulary().clothing and toks[e - 1].text not in load_vocabulary().clothing:
+    clothing = load_vocabulary().clothing
+    if singular(toks[e - 1].text) not in clothing and toks[e - 1].text not in clothing:
         return False
     j = s - 1
     while j >= 0 and s - j <= 4 and toks[j].text[:1].isalpha() and toks[j].text not in _WEARING and (
@@ -493,7 +512,8 @@ def _worn(toks: list[_Tok], s: int, e: int) -> bool:
 
 #: Participles before "like" that make what follows a look ("shaped like a fish", "painted like a comic").
 _LIKENESS_VERBS = {"shaped", "painted", "styled", "drawn", "carved", "made", "built", "designed", "dressed",
-                   "disguised", "decorated", "looks", "look", "looking", "rendered", "moulded", "molded", "sculpted"}  # fmt: skip
+                   "disguised", "decorated", "looks", "look", "looking", "rendered", "moulded", "molded",
+                   "sculpted"}  # fmt: skip
 #: Nouns before "of" that make what follows a look ("in the style of an etching", "in the shape of a heart").
 _LIKENESS_NOUNS = {"style", "shape", "form", "manner", "likeness", "fashion", "spirit"}
 
@@ -622,7 +642,8 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
         "inside",
     ):  # fmt: skip
         return True
-    if j >= 0 and toks[j].text in _SETTING_PREPOSITIONS and _verbless_opening(toks, j):
+    listing = any(t.text in _PLACE_OPENERS for t in toks[:j])  # "a garden with a pond by the greenhouse"
+    if j >= 0 and toks[j].text in _SETTING_PREPOSITIONS and _verbless_opening(toks, j) and not listing:
         return True  # "A mining outpost on a grey asteroid", "a tea terrace clinging to a mountainside"
     # a sentence that only names the place ("An anime-style ramen shop late at night.")
     if later and (j < 0 or toks[j].text in (".", "!", "?")):
@@ -650,14 +671,14 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
 
 #: Prepositions that tie the opening's place to a wider one ("a base on a rocky shoulder").
 _SETTING_PREPOSITIONS = {"on", "at", "of", "to", "near", "by", "below", "beneath", "under", "above", "beside",
-                         "overlooking", "outside", "atop", "upon"}  # fmt: skip
+                         "overlooking", "outside", "atop", "upon", "behind", "beyond", "along", "across"}  # fmt: skip
 
 
 def _verbless_opening(toks: list[_Tok], k: int) -> bool:
-    """The words before ``k`` are the description's first sentence and have no verb: it names
-    where the scene is ("An archaeological dig on a hillside", "The waiting lanes of a ferry
-    terminal"), so a place word in it is the setting, not a thing standing in it."""
-    return not any(t.text in (".", "!", "?") or _verb_word(t.text) for t in toks[:k])
+    """No verb comes before ``k`` in the description (a verbless style line before it aside,
+    "Low poly."): the words name where the scene is ("An archaeological dig on a hillside", "The
+    waiting lanes of a ferry terminal"), so a place word there is the setting, not a thing in it."""
+    return not any(_verb_word(t.text) for t in toks[:k])
 
 
 def _enterable(toks: list[_Tok], s: int, e: int) -> bool:
@@ -742,7 +763,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         if head is None or known or toks[head].quoted:
             continue
         # a counted plural before a singular known word is its subject ("two stokers shovel coal")
-        subject = plural and singular(toks[head].text) != toks[head].text and j < n and singular(toks[j].text) == toks[j].text
+        subject = plural and singular(toks[head].text) != toks[head].text and j < n
+        subject = subject and singular(toks[j].text) == toks[j].text
         if j < n and j in covered and not subject:
             continue  # the words before a known noun are its adjectives ("a shiny [robot]")
         word = toks[head].text
@@ -770,6 +792,10 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
     return out + _unknown_heads(toks, raw, covered)
 
 
+#: Parts only a building seen from outside shows: its owner, a place word, is a building of the scene.
+_OUTSIDE_PARTS = {"roof", "rooftop", "chimney", "eave", "gable", "facade", "porch", "veranda", "doorstep"}
+
+
 def _owners_of_parts(toks: list[_Tok], covered: set[int]) -> list:
     """"A sign stands on the diner's roof": the owner of a part is a thing of the scene, even
     when nothing else names it as one (a setting word like "diner" included)."""
@@ -790,8 +816,10 @@ def _owners_of_parts(toks: list[_Tok], covered: set[int]) -> list:
             # place named before set the scene and is no thing yet)
         known = match_phrase((base,))
         entry = None if known else vocabulary.match((base,))
-        if singular(base) in vocabulary.places and singular(toks[j].text) in _BUILDING_PARTS:
-            known, entry = "building", None  # "the diner's roof": a building here
+        if singular(base) in vocabulary.places:
+            if singular(toks[j].text) not in _OUTSIDE_PARTS:
+                continue  # "by the shop's door": inside the setting, no building of it
+            known, entry = "building", None  # "the diner's roof": a building seen from outside
         if known or entry is not None:
             out.append((k, k + 1, known or entry.category, entry))
             covered.add(k)
@@ -921,7 +949,8 @@ def _guess(toks: list[_Tok], head: int, before: list[_Tok]) -> Entry:
     entry = vocabulary.guess(word)
     if any(t.text == "with" for t in before):
         return entry
-    human = _does_what_people_do(toks, head + 1) or _person_apposition(toks, head + 1)
+    fronted = _after_preposition(toks, head)  # "On the bank, an old woman grills ...": no apposition
+    human = _does_what_people_do(toks, head + 1) or (_person_apposition(toks, head + 1) and not fronted)
     moody = any(t.text in vocabulary.moods for t in before)
     if entry.category == GENERIC or (human and entry.category == "machine"):
         entry = vocabulary.guess_agent(word, moody or _acts_as_person(toks, head + 1), human) or entry
@@ -942,7 +971,8 @@ def _verb_after(toks: list[_Tok], k: int) -> tuple[str, int] | None:
 
 def _acts_as_person(toks: list[_Tok], k: int) -> bool:
     """Whether the subject ending at ``k`` does what people do: a person verb ("a picker is
-    working", "a welder kneels"), or a deed done to a thing ("a farrier is shoeing a horse")."""
+    working", "a welder kneels"), a deed done to a thing ("a farrier is shoeing a horse") or to
+    something of his or hers ("a punter poles his raft")."""
     found = _verb_after(toks, k)
     if found is None:
         return False
@@ -950,6 +980,8 @@ def _acts_as_person(toks: list[_Tok], k: int) -> bool:
     if verb in load_vocabulary().person_verbs:
         return True
     k += skipped
+    if _is_verb(verb) and k + 1 < len(toks) and toks[k + 1].text in ("his", "her"):
+        return True  # "a punter poles his raft": what is his is a person's
     return skipped > 0 and verb.endswith("ing") and k + 1 < len(toks) and toks[k + 1].text in _DETERMINERS
 
 
@@ -958,6 +990,19 @@ def _does_what_people_do(toks: list[_Tok], k: int) -> bool:
     found = _verb_after(toks, k)
     vocabulary = load_vocabulary()
     return found is not None and found[0] in vocabulary.person_verbs and found[0] not in vocabulary.animal_verbs
+
+
+def _after_preposition(toks: list[_Tok], head: int) -> bool:
+    """The noun phrase ending at ``head`` follows a preposition ("on the bank", "behind the old
+    mill"): the object of a place phrase, which a comma after it closes."""
+    j = head - 1
+    while j >= 0 and head - j <= 4 and (toks[j].text in _DETERMINERS or (
+        toks[j].text[:1].isalpha() and toks[j].text not in _STOP
+    )):
+        j -= 1
+    return j >= 0 and toks[j].text in _STOP and toks[j].text not in _DETERMINERS and toks[j].text[:1].isalpha() and (
+        toks[j].text not in ("and", "or", "but", "while", "where", "which", "who", "that", "as", "than")
+    )
 
 
 #: Words an apposition may open with before the person it names ("their sensei, a tiny old man, ...").
@@ -1151,7 +1196,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             alive = m.category in _LIVING or shape in _LIVING or m.category == "fish"
             last = toks[m.end - 1].text
             stuff = not plural and singular(last) == last and not alive  # not "herbs", listed as written
-            heaped = (q in _HEAPS and small) or (stuff and singular(q) == q and q != "pair")  # "bunches of garlic": several
+            # "bunches of garlic": several lots of it
+            heaped = (q in _HEAPS and small) or (stuff and singular(q) == q and q != "pair")
             count = 1 if heaped or pair else _QUANTITY[q]
             counted = q in ("pair", "couple", "dozen")
             k = j - 2

@@ -13,7 +13,7 @@ from scenewright.analysis.parser.grammar import (
     _PERSON_POSSESSIVES,
     _ROOFED_VEHICLES,
 )
-from scenewright.analysis.parser.nouns import _HOLDING_PARTS, _is_plural, _position_adjective
+from scenewright.analysis.parser.nouns import _HOLDING_PARTS, _PLACING_VERBS, _is_plural, _position_adjective
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import (
     _DETERMINERS,
@@ -61,7 +61,9 @@ class _References:
                     owner = None  # one each when the text gives no count
                     if m.group < 0 and not m.counted and _is_plural(toks, m):
                         m.count = self.groups[people].count
-                if owner and m.group < 0 and not any(g.category == m.category for g in self.groups):
+                # "a rocket stands on its launch pad": what a thing is placed on is no part of it
+                own_support = pos >= 2 and toks[pos - 2].text in _PLACING_VERBS
+                if owner and m.group < 0 and not own_support and not any(g.category == m.category for g in self.groups):
                     self._part = singular(toks[m.end - 1].text)
                     return owner, m.end  # "pumpkins on its counter": the stall's own counter is the stall
                 possessor = self._possessor(pos, j)
