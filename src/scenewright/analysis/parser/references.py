@@ -62,7 +62,8 @@ class _References:
                     if m.group < 0 and not m.counted and _is_plural(toks, m):
                         m.count = self.groups[people].count
                 # "a rocket stands on its launch pad": what a thing is placed on is no part of it
-                own_support = pos >= 2 and toks[pos - 2].text in _PLACING_VERBS
+                # ("bells hang from its railing": the railing is)
+                own_support = pos >= 2 and toks[pos - 1].text in ("on", "upon") and toks[pos - 2].text in _PLACING_VERBS
                 if owner and m.group < 0 and not own_support and not any(g.category == m.category for g in self.groups):
                     self._part = singular(toks[m.end - 1].text)
                     return owner, m.end  # "pumpkins on its counter": the stall's own counter is the stall
