@@ -555,3 +555,22 @@ def test_a_place_word_that_a_with_list_places_things_by_is_a_thing():
 def test_an_inside_part_of_the_setting_makes_no_building():
     got = objects("A cosy bakery at dawn. A cat sleeps by the bakery's door.")
     assert not any(c == "building" for c, _ in got), got
+
+
+@pytest.mark.parametrize(
+    "text, setting",
+    [
+        ("A cow shed at milking time: four cows stand in stalls and a farmer carries a bucket.", "shed"),
+        ("A boathouse on a lake: a rowing boat hangs above a canoe, with oars against the wall.", "boathouse"),
+        ("A goat barn in the Alps, with three goats in a pen and a bucket by the door.", "barn"),
+    ],
+)
+def test_a_building_the_description_opens_with_is_where_it_stands(text, setting):
+    parsed = parse_scene(text)
+    assert setting in parsed.places and parsed.indoor
+    assert setting not in {o.name.split()[-1] for o in parsed.objects}
+
+
+def test_a_building_the_opening_points_back_at_is_a_thing():
+    parsed = parse_scene("A red barn on a hill, with a tractor parked beside it.")
+    assert "barn" in {o.category for o in parsed.objects} and not parsed.indoor

@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+import itertools
+
 from dataclasses import dataclass, field
 from functools import lru_cache
 
@@ -634,6 +636,8 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
         return True
     if head in load_vocabulary().landforms and j >= 0 and _landform_part(toks, j):
         return False  # "a dragon sleeps on top of a hill": the hill is a thing here
+    if _opening_setting(toks, s, e):
+        return True
     if building:
         return False
     # "on the top floor of a converted warehouse": a part of the place holds the scene
@@ -681,12 +685,37 @@ def _verbless_opening(toks: list[_Tok], k: int) -> bool:
     return not any(_verb_word(t.text) for t in toks[:k])
 
 
+def _opening_setting(toks: list[_Tok], s: int, e: int) -> bool:
+    """The words from ``s`` open the description and run with no verb to a colon or to a with-list
+    that never points back at them: "A cow shed at milking time: four cows ...", "A goat barn in
+    the Alps, with three goats in a pen" name where the scene stands ("a barn stands behind the
+    pond", "a barn with a tractor beside it" name a thing of it)."""
+    if not _verbless_opening(toks, s) or any(t.text in (",", ":", ";", "with", "and") for t in toks[:s]):
+        return False
+    if e < len(toks) and toks[e].text == "of":
+        return False  # "the captain's cabin of a sailing ship": whose it is decides (_owns_opening_place)
+    k = e
+    while k < len(toks) and toks[k].text not in (".", "!", "?", ";", ":", "with"):
+        # ("at milking time", "in the Alps": no verbs)
+        if _verb_word(toks[k].text) and not toks[k].text.endswith("ing") and not toks[k].orig[:1].isupper():
+            return False
+        k += 1
+    if k < len(toks) and toks[k].text == "with":
+        rest = itertools.takewhile(lambda t: t.text not in (".", "!", "?"), toks[k:])
+        return not any(t.text in ("it", "its") for t in rest)
+    return k < len(toks) and toks[k].text == ":"
+
+
 def _enterable(toks: list[_Tok], s: int, e: int) -> bool:
     """A building people stand in, named in the opening sentence: "a forge in an old stone barn"
     sets the scene inside the barn, where "a barn stands behind the pond" is a thing of the scene."""
     if any(t.text in (".", "!", "?") for t in toks[:s]):
         return False
-    name = match_phrase(tuple(t.text for t in toks[s:e]))
+    head = singular(toks[e - 1].text)
+    # "a cow shed", "a boathouse": a kind of shed or house
+    name = match_phrase(tuple(t.text for t in toks[s:e])) or match_phrase((head,)) or (
+        "house" if head.endswith("house") else None
+    )
     category = load_catalogue()[name] if name else None
     return category is not None and category.shape == "house" and category.size[2] >= _STOREY
 

@@ -111,6 +111,12 @@ _INDOOR_PLACES = {"hangar", "warehouse", "factory", "garage", "workshop", "libra
                   "teahouse", "coffeehouse", "bathhouse", "guesthouse", "alehouse", "playhouse"}  # fmt: skip
 
 
+def _building(place: str) -> bool:
+    """A place word whose setting is a building ("a hangar", "a cow shed", "a boathouse")."""
+    head = place.split()[-1]
+    return head in _INDOOR_PLACES or head.endswith("house")
+
+
 #: A clause that looks out of the setting: the places it names are seen, not stood in ("a window
 #: looking out on a ringed planet", "a view of the sea").
 _VIEW = re.compile(r"\b(?:looking out|looks out|look out|overlooking|overlooks|views? (?:of|over|across|onto)|"
@@ -136,7 +142,10 @@ def _is_indoor(categories: list[str], text: str, catalogue, places: list[str] = 
     for name in categories:
         tags = catalogue[name].tags
         votes += ("indoor" in tags) - ("outdoor" in tags)
-    votes += 3 * sum(1 for p in places if p.split()[-1] in _INDOOR_PLACES)
+    # a building the opening sentence stands in outweighs what stands there ("A cow shed at milking
+    # time: four cows ..."); one named further on counts as one voice among the objects
+    stood_in = re.split(r"\bwith\b", opening, maxsplit=1)[0]  # (not "a graveyard, with a chapel at the end")
+    votes += sum(3 + 7 * (p in stood_in) for p in places if _building(p))
     votes += 3 * len(_INSIDE.findall(low))
     for word in ("room", "kitchen", "bedroom", "bathroom", "office", "classroom", "lab", "apartment", "studio",
                  "café", "cafe", "shop", "store", "boutique", "gallery", "hall", "interior", "indoors", "smithy",
