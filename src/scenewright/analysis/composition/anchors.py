@@ -42,16 +42,16 @@ def anchored(layout: Layout, unit: Unit) -> AnchoredGroup | None:
     """The unit's member the text anchors to a wall (``back``, ``wall``, ``corner``) and the
     unit's objects, when moving them as one matters: the unit holds more than its member's own
     stack, or the anchor is ``back`` (which no room relation places). The root is preferred,
-    else the first anchored member standing on the ground, in text order. Storage a rule gave
-    partners (a counter with its stools) stands against a wall in a room all the same: it goes
-    there with them."""
+    else the first anchored member standing on the ground, in text order. A counter the bar
+    rule gave stools stands against a wall in a room all the same: it goes there with them."""
     standing = [i for i in unit.ids if layout.on_ground(i) and layout.by_id[i].size[2] >= 0.1]
     members = [i for i in [unit.root, *unit.ids] if i in standing and layout.by_id[i].anchor in WALL_ANCHORS]
     if not members:
         # a counter (storage's kind, which stands against a wall in a room) with the stools a
         # rule lined up before it: the bar goes to the wall with its stools
-        if unit.partners and layout.kind(unit.root) in roles.EDGE_STORAGE and len(standing) > 1:
-            return AnchoredGroup(member=unit.root, anchor="wall", ids=tuple(unit.ids))
+        root = unit.root
+        if layout.kind(root) in roles.BARS & roles.EDGE_STORAGE and any(layout.kind(p) in roles.BAR_SEATS for p in unit.partners):
+            return AnchoredGroup(member=root, anchor="wall", ids=tuple(unit.ids))
         return None
     member = members[0]
     anchor = layout.by_id[member].anchor

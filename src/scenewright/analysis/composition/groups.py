@@ -61,9 +61,12 @@ STOOL_PITCH = 0.6
 
 def bars(layout: Layout) -> None:
     """Stools line the front of each counter (a bar, a kitchen island), side by side, facing
-    it, shared out one counter at a time; a counter the text already seats is left alone."""
+    it, shared out one counter at a time. A counter the text already seats is left alone, and
+    so is one the text relates to other things: in a room a counter stands against a wall, and
+    only a counter that is its group's own root goes there with what was put before it."""
     stools = layout.free_units(roles.BAR_SEATS)
-    counters = [c for c in layout.hosts(roles.BARS) if not layout.has_partner(c, roles.SEATS)]
+    counters = [c for c in layout.hosts(roles.BARS)
+                if layout.unit_of[c].root == c and not layout.has_partner(c, roles.SEATS)]
     share: dict[str, int] = {c: 0 for c in counters}
     caps = {c: max(1, int(layout.placed[c].size[0] // STOOL_PITCH)) for c in counters}
     left = len(stools)
