@@ -5,7 +5,7 @@ import pytest
 from scenewright.analysis.arrange import compose
 from scenewright.analysis.composition.anchors import into_room
 from scenewright.analysis.parser import parse_scene
-from scenewright.geometry import world_box
+from scenewright.geometry import front_direction, world_box
 from scenewright.layout import relations as rel
 from scenewright.scene import Room
 
@@ -93,3 +93,40 @@ def test_a_composition_stands_centred_so_its_room_holds_it():
     hi = [max(world_box(o)[1][i] for o in ground) for i in (0, 1)]
     assert [(a + b) / 2 for a, b in zip(lo, hi)] == pytest.approx([0.0, 0.0], abs=1e-3)
     assert all(_inside(o, room) for o in ground)
+
+
+def test_stools_line_a_counter_and_go_to_the_wall_with_it():
+    """A designer lines the bar stools up along the counter's front, facing it; in a room the
+    counter stands against a wall, so it goes there with its stools, not alone."""
+    room = Room.rectangle(6.0, 5.0)
+    parsed, composition, objects = _placed("A roadside diner with a long counter, three stools and a jukebox.", room)
+    counter = objects["counter_1"]
+    stools = [objects[f"stool_{k}"] for k in (1, 2, 3)]
+    for stool in stools:
+        assert rel.check("in front of", stool, counter)
+        assert abs(stool.position.y - counter.position.y) < counter.size.y / 2 + stool.size.y + 0.3
+        d = front_direction(stool.rotation.z)
+        assert d[1] > 0.99  # facing the counter behind it (+Y)
+    assert sorted(round(s.position.y, 3) for s in stools)[0] == sorted(round(s.position.y, 3) for s in stools)[-1]
+    assert world_box(counter)[1][1] == pytest.approx(2.5, abs=0.03)  # its back at the back wall
+    assert any(g.member == "counter_1" for g in composition.anchored)
+
+
+def test_a_hung_thing_in_the_middle_does_not_pin_the_group_under_it():
+    """"A fan in the middle of the room" hangs there whatever stands under it: the group under
+    it (a bed against the back wall, its rug, the cat on the rug) is not held at the centre,
+    and the other groups are not packed out of a small room in front of it."""
+    room = Room.rectangle(4.0, 5.0)
+    text = ("A narrow bed stands against the back wall with a small rug in front of it, and a cat sleeps on the rug. "
+            "A ceiling fan turns in the middle of the room above the cat. A desk with a chair in front of it stands "
+            "nearby, and a tall wardrobe.")
+    parsed, composition, objects = _placed(text, room)
+    assert {o.id: o.anchor for o in parsed.objects}.get("ceiling_fan_1") == "centre"
+    # nothing pins the middle: the composition stands centred as a whole, as any other
+    ground = [o for o in composition.objects if o.position.z - o.size.z / 2 < 0.05 and o.size.z >= 0.1]
+    lo = [min(world_box(o)[0][i] for o in ground) for i in (0, 1)]
+    hi = [max(world_box(o)[1][i] for o in ground) for i in (0, 1)]
+    assert [(a + b) / 2 for a, b in zip(lo, hi)] == pytest.approx([0.0, 0.0], abs=1e-3)
+    # and the bed's group goes to the back wall as one, inside the room
+    assert world_box(objects["bed_1"])[1][1] == pytest.approx(2.5, abs=0.03)
+    assert _inside(objects["bed_1"], room) and _inside(objects["cat_1"], room)

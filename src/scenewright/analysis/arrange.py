@@ -67,10 +67,12 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
     formations.arrange(layout)
     storage, vehicles, natural, core, front = [], [], [], [], []
     walled = {id(u): g for u in layout.top_units() if (g := anchors.anchored(layout, u)) is not None}
+    # a group the text puts against a wall goes there, whatever of it is also "in the middle"
+    centred = {id(u): m for u in layout.top_units() if id(u) not in walled and (m := _member_at(layout, u, "centre"))}
     for unit in layout.top_units():
         kind = layout.kind(unit.root)
         anchor = layout.by_id[unit.root].anchor
-        centre = _member_at(layout, unit, "centre")
+        centre = centred.get(id(unit))
         if anchor == "front":
             front.append(unit)
         elif centre is not None:
@@ -85,14 +87,14 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
             natural.append(unit)
         else:
             core.append(unit)
-    packing.pack(layout, core, centred=sum(_member_at(layout, u, "centre") is not None for u in core),
+    packing.pack(layout, core, centred=sum(id(u) in centred for u in core),
                  backed={id(u) for u in core if id(u) in walled})
     edges.along_edges(layout, storage, back_taken=any(id(u) in walled for u in core))
     edges.in_front(layout, front)
     outdoor.park(layout, vehicles)
     outdoor.scatter(layout, natural, random.Random(seed))
     unline(layout, layout.relations_hold)
-    if not any(_member_at(layout, u, "centre") for u in layout.top_units()):
+    if not centred:
         _centre(layout)
     return Composition([layout.scene_object(o.id) for o in parsed.objects], layout.relations,
                        tuple(walled[id(u)] for u in layout.top_units() if id(u) in walled))
@@ -113,8 +115,10 @@ def _centre(layout: Layout) -> None:
 
 
 def _member_at(layout: Layout, unit: Unit, anchor: str) -> str | None:
-    """The unit's member (its root first) the text anchors at ``anchor``, if any."""
-    return next((i for i in [unit.root, *unit.ids] if layout.by_id[i].anchor == anchor), None)
+    """The unit's member (its root first) standing on the ground that the text anchors at
+    ``anchor``, if any: a ceiling fan "in the middle of the room" hangs there whatever stands
+    under it."""
+    return next((i for i in [unit.root, *unit.ids] if layout.by_id[i].anchor == anchor and layout.on_ground(i)), None)
 
 
 def initial_objects(parsed: ParsedScene, seed: int = 0) -> list[SceneObject]:

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from scenewright.analysis.composition import roles
 from scenewright.analysis.composition.footprint import Footprint
 from scenewright.analysis.composition.units import Layout, Unit
 from scenewright.core.protocols import AnchoredGroup
@@ -41,10 +42,16 @@ def anchored(layout: Layout, unit: Unit) -> AnchoredGroup | None:
     """The unit's member the text anchors to a wall (``back``, ``wall``, ``corner``) and the
     unit's objects, when moving them as one matters: the unit holds more than its member's own
     stack, or the anchor is ``back`` (which no room relation places). The root is preferred,
-    else the first anchored member standing on the ground, in text order."""
+    else the first anchored member standing on the ground, in text order. A counter the bar
+    rule gave stools stands against a wall in a room all the same: it goes there with them."""
     standing = [i for i in unit.ids if layout.on_ground(i) and layout.by_id[i].size[2] >= 0.1]
     members = [i for i in [unit.root, *unit.ids] if i in standing and layout.by_id[i].anchor in WALL_ANCHORS]
     if not members:
+        # a counter (storage's kind, which stands against a wall in a room) with the stools a
+        # rule lined up before it: the bar goes to the wall with its stools
+        root = unit.root
+        if layout.kind(root) in roles.BARS & roles.EDGE_STORAGE and any(layout.kind(p) in roles.BAR_SEATS for p in unit.partners):
+            return AnchoredGroup(member=root, anchor="wall", ids=tuple(unit.ids))
         return None
     member = members[0]
     anchor = layout.by_id[member].anchor
@@ -66,11 +73,12 @@ def into_room(objects: Sequence[SceneObject], room: Room, groups: Sequence[Ancho
         m = prints[g.member]
         stacks = _stacks(ids, prints)
         dy = hi[1] - WALL_CLEARANCE - (m.y + m.d / 2)
-        dx = 0.0
+        x0, _, x1, _ = _box([prints[i] for i in stacks])
         if g.anchor == "corner":
-            x0, _, x1, _ = _box([prints[i] for i in stacks])
             left = m.x <= (x0 + x1) / 2
             dx = (lo[0] + WALL_CLEARANCE - (m.x - m.w / 2)) if left else (hi[0] - WALL_CLEARANCE - (m.x + m.w / 2))
+        else:  # along the wall, as little as brings the whole group between the side walls
+            dx = max(0.0, lo[0] + WALL_CLEARANCE - x0) - max(0.0, x1 - (hi[0] - WALL_CLEARANCE))
         for i in ids:
             prints[i].x += dx
             prints[i].y += dy

@@ -1,7 +1,7 @@
 """Functional groups: what a designer puts together without being told.
 
-Each rule takes the units no relation places and joins them to a host: a chair in front of
-each desk, facing it; chairs around each dining table, facing it; a lounge's seats around
+Each rule takes the units no relation places and joins them to a host: stools along the
+front of a counter (a bar), facing it; a chair in front of each desk, facing it; chairs around each dining table, facing it; a lounge's seats around
 the coffee table, facing the focal object (TV, fireplace); nightstands either side of a
 bed's head and a chest at its foot; a floor lamp beside a seat; a rug under its group. Every
 instance of a host gets its own partners before any host gets a second.
@@ -53,6 +53,38 @@ def desks(layout: Layout) -> None:
         ly = -(h.size[1] / 2 + _size(layout, chair)[1] / 2 + SEAT_GAP)
         if _slot(layout, host, chair, 0.0, ly, 180.0):
             layout.unit_of[host].group = layout.unit_of[host].group or "desk"
+
+
+#: Width a bar stool takes along a counter.
+STOOL_PITCH = 0.6
+
+
+def bars(layout: Layout) -> None:
+    """Stools line the front of each counter (a bar, a kitchen island), side by side, facing
+    it, shared out one counter at a time. A counter the text already seats is left alone, and
+    so is one the text relates to other things: in a room a counter stands against a wall, and
+    only a counter that is its group's own root goes there with what was put before it."""
+    stools = layout.free_units(roles.BAR_SEATS)
+    counters = [c for c in layout.hosts(roles.BARS)
+                if layout.unit_of[c].root == c and not layout.has_partner(c, roles.SEATS)]
+    share: dict[str, int] = {c: 0 for c in counters}
+    caps = {c: max(1, int(layout.placed[c].size[0] // STOOL_PITCH)) for c in counters}
+    left = len(stools)
+    while left and any(share[c] < caps[c] for c in counters):
+        for c in counters:
+            if left and share[c] < caps[c]:
+                share[c] += 1
+                left -= 1
+    for c in counters:
+        h = layout.placed[c]
+        n = share[c]
+        for k in range(n):
+            stool = stools.pop(0)
+            lx = (k - (n - 1) / 2) * STOOL_PITCH
+            ly = -(h.size[1] / 2 + _size(layout, stool)[1] / 2 + SEAT_GAP)
+            _slot(layout, c, stool, lx, ly, 180.0)
+        if n:
+            layout.unit_of[c].group = layout.unit_of[c].group or "bar"
 
 
 def _table_slots(h: Footprint, chair: tuple[float, float, float], round_table: bool, count: int):
@@ -272,7 +304,7 @@ def _within(a: Footprint, b: Footprint) -> bool:
     return abs(a.x - b.x) + a.w / 2 <= b.w / 2 + 1e-6 and abs(a.y - b.y) + a.d / 2 <= b.d / 2 + 1e-6
 
 
-RULES = (bed, desks, dining, lounge, lamps, rugs)
+RULES = (bed, bars, desks, dining, lounge, lamps, rugs)
 
 
 def facing_focal(objects, relations: list[ParsedRelation]) -> list[ParsedRelation]:

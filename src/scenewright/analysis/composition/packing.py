@@ -26,10 +26,12 @@ Box = tuple[float, float, float, float]
 
 
 def best_spot(size: tuple[float, float], boxes: list[Box], gap: float = AISLE,
-              back: float | None = None) -> tuple[float, float]:
+              back: float | None = None, about_origin: bool = False) -> tuple[float, float]:
     """The centre for a ``size`` (w, d) box beside ``boxes`` that keeps their union compact and
     square, sides and back before the front, and never reaching past ``back`` (y) when given;
-    (0, 0) when there is nothing yet."""
+    (0, 0) when there is nothing yet. ``about_origin``: compact as seen from the origin (the
+    union's extent mirrored about it), for a layout whose middle must stay where it is (a
+    table the text puts in the middle of the room, which is built centred on it)."""
     if not boxes:
         return 0.0, 0.0
     w, d = size
@@ -53,7 +55,10 @@ def best_spot(size: tuple[float, float], boxes: list[Box], gap: float = AISLE,
     ).any(axis=1)
     ux0, uy0 = np.minimum(lo[:, 0], arr[:, 0].min()), np.minimum(lo[:, 1], arr[:, 1].min())
     ux1, uy1 = np.maximum(hi[:, 0], arr[:, 2].max()), np.maximum(hi[:, 1], arr[:, 3].max())
-    uw, ud = ux1 - ux0, uy1 - uy0
+    if about_origin:
+        uw, ud = 2 * np.maximum(-ux0, ux1), 2 * np.maximum(-uy0, uy1)
+    else:
+        uw, ud = ux1 - ux0, uy1 - uy0
     area = uw * ud * (1.0 + 0.5 * np.abs(np.log(uw / ud)))
     front = c[:, 1] < (arr[:, 1].min() + arr[:, 3].max()) / 2 - 1e-6
     behind_all = lo[:, 1] >= arr[:, 1].min() - 1e-6
@@ -121,7 +126,8 @@ def pack(layout: Layout, units: list[Unit], centred: int = 0, backed: frozenset[
         x0, y0, x1, y1 = _union(layout, block)
         walled = any(id(u) in backed for u in block)
         # the first stays in its own frame (its main object at the origin)
-        x, y = best_spot((x1 - x0, y1 - y0), down, back=None if walled else back) if down else ((x0 + x1) / 2, (y0 + y1) / 2)
+        x, y = (best_spot((x1 - x0, y1 - y0), down, back=None if walled else back, about_origin=bool(centre))
+                if down else ((x0 + x1) / 2, (y0 + y1) / 2))
         for u in block:
             layout.move(u, x - (x0 + x1) / 2, y - (y0 + y1) / 2)
             layout.settled.append(u)

@@ -17,6 +17,10 @@ SEATS = frozenset({
 })  # fmt: skip
 #: Seats one pulls up to a desk or a table.
 CHAIRS = frozenset({"chair", "office_chair", "stool"})
+#: High seats that line a bar or a counter.
+BAR_SEATS = frozenset({"stool"})
+#: What bar stools line, facing it.
+BARS = frozenset({"counter"})
 #: Seats of a lounge, gathered around a coffee table.
 LOUNGE_SEATS = frozenset({"sofa", "armchair", "bean_bag", "booth", "deck_chair"})
 #: Work surfaces with one chair in front.
