@@ -225,6 +225,19 @@ def can_hold(host: ParsedObject, thing: ParsedObject, catalogue) -> bool:
     return area and side
 
 
+def onto_stack_tops(objects: list[ParsedObject], relations: list[ParsedRelation]) -> list[ParsedRelation]:
+    """``relations`` with each ``on`` a member of a stack ("a goat stands on a stack of hay bales",
+    read onto the first bale) onto its top member: the others carry the ones above them (the
+    composition puts each member on the one below), so only the top has room."""
+    members: dict[int, list[str]] = {}
+    for o in objects:
+        if o.formation == "stack":
+            members.setdefault(o.group, []).append(o.id)
+    top = {i: ids[-1] for ids in members.values() if len(ids) > 1 for i in ids}
+    return [replace(r, target=top[r.target]) if r.relation == "on" and r.target in top and r.source not in top else r
+            for r in relations]
+
+
 def repair_supports(
     objects: list[ParsedObject], relations: list[ParsedRelation], catalogue,
     carried: frozenset[tuple[str, str]] = frozenset(),
