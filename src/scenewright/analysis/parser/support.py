@@ -113,8 +113,8 @@ def _beside(objects: list[ParsedObject], relations: list[ParsedRelation], catalo
     """Surface things the text sets beside (or in front of, behind) another, with where they
     stand by it: on the piece of furniture that other thing rests on ("a cat on the counter next
     to a microscope": the microscope is on the counter too; a cup by a man on a chair is not on
-    the chair), or on the ground (``None``) by one that
-    stands there ("a cart waits next to a lantern", "a basket at the foot of the stove"). A thing
+    the chair), or on the ground (``None``) by one that stands there ("a cart waits next to a
+    lantern", "a basket at the foot of the stove"). A thing
     the catalogue gives hosts of its own (a lamp, a TV) beside a piece of furniture or a seat is
     left to those ("a lamp beside the bed" is on the nightstand). Never on the thing it is beside:
     beside it and on it cannot both hold."""
