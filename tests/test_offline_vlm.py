@@ -275,3 +275,14 @@ def test_a_side_whose_relaxed_form_failed_as_well_is_dropped_not_relaxed():
     constraints = [C("in front of", "car", "mast"), C("left of", "car", "ship"), C("near", "car", "ship")]
     report = LayoutReport(unplaced=[UnplacedObject(id="car", failed=constraints[1:], reason="cannot all hold")])
     assert [c.key() for c in relax_constraints(constraints, report)] == [("in front of", "car", "mast")]
+
+
+def test_a_support_only_inferred_gives_way_to_a_wall_the_text_hangs_the_thing_on():
+    from scenewright.analysis.parser.room import room_for
+
+    vlm = OfflineVLM()
+    text = "A workshop with a workbench. A saw hangs on the left wall."
+    assert any(r.relation == "on" and r.inferred for r in vlm.composition(text).relations)  # the reader's guess
+    objects = vlm.describe_objects(text, "realistic", None).value
+    room = room_for(text, objects, (5.0, 4.0, None))
+    assert [str(c) for c in vlm.write_constraints(text, objects, None, room).value] == ["saw_1 on wall wall_3"]

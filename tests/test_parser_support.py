@@ -72,3 +72,12 @@ def _supports(text: str) -> set[tuple[str, str]]:
 def test_inferred_supports_follow_what_a_thing_stands_beside(text, wanted, unwanted):
     got = _supports(text)
     assert wanted <= got and not unwanted & got
+
+
+@pytest.mark.parametrize("text, rider, top", [
+    ("A barn. A rooster stands on a stack of crates.", "rooster_1", "crate_3"),
+    ("A yard. Three tyres are stacked by the wall, and a cat sleeps on the tyres.", "cat_1", "tyre_3"),
+])
+def test_what_is_put_on_a_stack_rests_on_its_top_member(text, rider, top):
+    """The members of a stack carry the ones above them; a thing put on the stack goes on the top."""
+    assert _supports(text) == {(rider, top)}

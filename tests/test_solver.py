@@ -415,3 +415,19 @@ def test_a_row_seated_between_two_things_sits_in_their_gap(k, seed, dy):
     by = {o.id: o for o in result.objects}
     for j in range(k):
         assert between(by[f"fan{j}"], by["east"], by["west"]), f"fan{j}"
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(far=st.floats(4.0, 9.0), side=st.sampled_from(["near", "in front of", "left of", "behind"]),
+       seed=st.integers(0, 1000))
+def test_a_seat_goes_where_its_sitter_is_asked_to_be(far, side, seed):
+    """A painter on a stool, asked to be by an easel far from where the stool began: the stool
+    (no relation of its own) takes its candidates from the painter's relation, so the first
+    search places both, and the painter's relations hold."""
+    objects = [box("easel", far, 0.0, size=(0.8, 0.6, 1.6)), box("stool", -far, 0.0, size=(0.4, 0.4, 0.6)),
+               box("painter", 0.0, 3.0, size=(0.5, 0.4, 1.0))]
+    said = [c("on", "painter", "stool"), c(side, "painter", "easel")]
+    result = solve(objects, said, bounds=(24.0, 24.0), seed=seed, fixed=["easel"])
+    assert result.report.complete
+    by = {o.id: o for o in result.objects}
+    assert check("on", by["painter"], by["stool"]) and check(side, by["painter"], by["easel"])

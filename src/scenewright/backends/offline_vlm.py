@@ -113,11 +113,14 @@ class OfflineVLM:
         # A support the reader only inferred gives way to a side the text states to the same
         # thing ("a coffee machine stands beside a small table": not on it).
         beside = {(r.source, r.target) for r in relations if r.relation in _SIDES and not r.inferred}
+        # ... and to a wall or a ceiling the text hangs it on ("hammers hang on the wall").
+        walls = wall_phrases(parsed) if room is not None else []
+        hung = {r.source for r in walls if r.relation in ("on wall", "on ceiling")}
         category = {o.id: o.category for o in parsed.objects}
         kinds_above = {(category.get(r.source), category.get(r.target)) for r in relations
                        if r.relation == "above" and not r.inferred}
         for r in relations:
-            if r.relation == "on" and r.inferred and (r.source, r.target) in beside:
+            if r.relation == "on" and r.inferred and ((r.source, r.target) in beside or r.source in hung):
                 continue
             relation = r.relation
             if (relation == "above" and r.inferred and category.get(r.source) in WALL_THINGS
@@ -129,7 +132,7 @@ class OfflineVLM:
                 relation = "near"
             if r.source in ids and r.target in ids:
                 out.append(Constraint(relation=relation, source=ids[r.source], target=ids[r.target]))
-        for r in wall_phrases(parsed) if room is not None else ():  # "against the back wall"
+        for r in walls:  # "against the back wall"
             if r.source in ids:
                 out.append(Constraint(relation=r.relation, source=ids[r.source], target=r.target))
         return Answer(out, repairs)

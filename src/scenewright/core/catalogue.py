@@ -84,8 +84,8 @@ class Category:
         noun names (:attr:`rest_inside`)."""
         if self.rest_height is not None or not self.rest_inside:
             return self.rest_height
-        head = singular(words(name)[-1]) if words(name) else ""
-        return dict(self.rest_inside).get(head)
+        tokens = words(name)
+        return dict(self.rest_inside).get(singular(tokens[-1])) if tokens else None
 
     @property
     def indoor(self) -> bool:

@@ -403,7 +403,7 @@ class _Search:
         own = self.active(item)
         area = self.area if bounded else None
         ranked = sorted(own, key=lambda ct: PRIORITY[ct[0].relation])
-        primary = ranked[0] if ranked else None
+        primary = ranked[0] if ranked else (self.rider_lead(item) if not item.walls else None)
         relation, target = (primary[0].relation, self.box(primary[1])) if primary else ("face to", None)
         # A room relation leads unless the object rests on another: a wall one fixes position
         # and yaw, "on ceiling" fixes the height (and "above" then only the plan position).
@@ -521,15 +521,29 @@ class _Search:
         pair = _opposite_pair(own)
         return None if pair is None else np.stack([self.box(pair[0]).centre[:2], self.box(pair[1]).centre[:2]])
 
+    def riders(self, item: _Item) -> list[_Item]:
+        """The objects still to be placed that rest ``on`` this one (a sitter on a stool)."""
+        return [self.items[s] for s in self.dependents[item.index] if not self.posed[s]
+                and any(c.relation == "on" and t == item.index for c, t in self.items[s].own)]
+
+    def rider_lead(self, item: _Item) -> tuple[Constraint, int] | None:
+        """For a thing with no relation of its own that something still to be placed rests ``on``,
+        the most binding relation of that rider to a placed object beside it ("a toymaker on a
+        stool, at his bench": near the bench): the thing's candidates come from it, so the rider
+        can meet it from its back (forward checking still decides)."""
+        for rider in self.riders(item):
+            beside = [(c, t) for c, t in rider.own
+                      if t != item.index and self.posed[t] and c.relation in (*SWEPT, "near")]
+            if beside:
+                return min(beside, key=lambda ct: BINDING.index(ct[0].relation))
+        return None
+
     def riders_gap(self, item: _Item) -> np.ndarray | None:
         """The gap (as :meth:`gap_between`) a thing still to be put ``on`` this one must stand in,
         when this one is free to go there: a chair whose sitter stands between two benches goes
         in their gap, where the sitter then can."""
-        for s in self.dependents[item.index]:
-            other = self.items[s]
-            if self.posed[s] or not any(c.relation == "on" and t == item.index for c, t in other.own):
-                continue
-            pair = _opposite_pair(other.own)
+        for rider in self.riders(item):
+            pair = _opposite_pair(rider.own)
             if pair is not None and item.index not in pair[:2] and self.posed[pair[0]] and self.posed[pair[1]]:
                 return np.stack([self.box(pair[0]).centre[:2], self.box(pair[1]).centre[:2]])
         return None

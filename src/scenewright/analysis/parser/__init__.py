@@ -162,7 +162,7 @@ from scenewright.analysis.parser.model import ParsedObject, ParsedRelation, Pars
 from scenewright.analysis.parser.phrases import relation_phrases
 from scenewright.analysis.parser.reader import _Reader
 from scenewright.analysis.parser.style import GROUND_KINDS, _is_indoor, detect_ground, detect_style
-from scenewright.analysis.parser.support import _infer_support, fit_on_hosts, repair_supports
+from scenewright.analysis.parser.support import _infer_support, fit_on_hosts, onto_stack_tops, repair_supports
 
 __all__ = [
     "GROUND_KINDS", "ParsedObject", "ParsedRelation", "ParsedScene",
@@ -192,7 +192,7 @@ def parse_scene(text: str) -> ParsedScene:
     objects = fit_on_hosts(objects, expanded, catalogue, {i for g in reader.groups if g.sized for i in g.ids})
     by_group = {g.index: g.ids for g in reader.groups}
     carried = frozenset((a, b) for s, t in reader.carried for a in by_group[s] for b in by_group[t])
-    stated, repairs = repair_supports(objects, expanded, catalogue, carried)
+    stated, repairs = repair_supports(objects, onto_stack_tops(objects, expanded), catalogue, carried)
     inferred = _infer_support(objects, stated, catalogue)
     relations = _acyclic(stated + inferred, [o.id for o in objects])
     indoor = _is_indoor([o.category for o in objects], text, catalogue, reader.places)

@@ -113,8 +113,8 @@ def _beside(objects: list[ParsedObject], relations: list[ParsedRelation], catalo
     """Surface things the text sets beside (or in front of, behind) another, with where they
     stand by it: on the piece of furniture that other thing rests on ("a cat on the counter next
     to a microscope": the microscope is on the counter too; a cup by a man on a chair is not on
-    the chair), or on the ground (``None``) by one that
-    stands there ("a cart waits next to a lantern", "a basket at the foot of the stove"). A thing
+    the chair), or on the ground (``None``) by one that stands there ("a cart waits next to a
+    lantern", "a basket at the foot of the stove"). A thing
     the catalogue gives hosts of its own (a lamp, a TV) beside a piece of furniture or a seat is
     left to those ("a lamp beside the bed" is on the nightstand). Never on the thing it is beside:
     beside it and on it cannot both hold."""
@@ -223,6 +223,19 @@ def can_hold(host: ParsedObject, thing: ParsedObject, catalogue) -> bool:
     area = thing.size[0] * thing.size[1] <= _AREA_SLACK * host.size[0] * host.size[1]
     side = max(thing.size[:2]) <= _SIDE_SLACK * max(host.size[:2])
     return area and side
+
+
+def onto_stack_tops(objects: list[ParsedObject], relations: list[ParsedRelation]) -> list[ParsedRelation]:
+    """``relations`` with each ``on`` a member of a stack ("a goat stands on a stack of hay bales",
+    read onto the first bale) onto its top member: the others carry the ones above them (the
+    composition puts each member on the one below), so only the top has room."""
+    members: dict[int, list[str]] = {}
+    for o in objects:
+        if o.formation == "stack":
+            members.setdefault(o.group, []).append(o.id)
+    top = {i: ids[-1] for ids in members.values() if len(ids) > 1 for i in ids}
+    return [replace(r, target=top[r.target]) if r.relation == "on" and r.target in top and r.source not in top else r
+            for r in relations]
 
 
 def repair_supports(
