@@ -67,14 +67,7 @@ def bars(layout: Layout) -> None:
     stools = layout.free_units(roles.BAR_SEATS)
     counters = [c for c in layout.hosts(roles.BARS)
                 if layout.unit_of[c].root == c and not layout.has_partner(c, roles.SEATS)]
-    share: dict[str, int] = {c: 0 for c in counters}
-    caps = {c: max(1, int(layout.placed[c].size[0] // STOOL_PITCH)) for c in counters}
-    left = len(stools)
-    while left and any(share[c] < caps[c] for c in counters):
-        for c in counters:
-            if left and share[c] < caps[c]:
-                share[c] += 1
-                left -= 1
+    share = _share_out(len(stools), {c: max(1, int(layout.placed[c].size[0] // STOOL_PITCH)) for c in counters})
     for c in counters:
         h = layout.placed[c]
         n = share[c]
@@ -85,6 +78,17 @@ def bars(layout: Layout) -> None:
             _slot(layout, c, stool, lx, ly, 180.0)
         if n:
             layout.unit_of[c].group = layout.unit_of[c].group or "bar"
+
+
+def _share_out(count: int, caps: dict[str, int]) -> dict[str, int]:
+    """``count`` seats dealt one host at a time, in order, each host up to its cap."""
+    share = {h: 0 for h in caps}
+    while count and any(share[h] < caps[h] for h in caps):
+        for h in caps:
+            if count and share[h] < caps[h]:
+                share[h] += 1
+                count -= 1
+    return share
 
 
 def _table_slots(h: Footprint, chair: tuple[float, float, float], round_table: bool, count: int):
@@ -125,13 +129,7 @@ def dining(layout: Layout) -> None:
         return
     size = _size(layout, chairs[0])
     caps = {t: capacity(layout.placed[t], size, layout.kind(t) in roles.ROUND_TABLES) for t in tables}
-    share = {t: 0 for t in tables}
-    left = len(chairs)
-    while left and any(share[t] < caps[t] for t in tables):
-        for t in tables:
-            if left and share[t] < caps[t]:
-                share[t] += 1
-                left -= 1
+    share = _share_out(len(chairs), caps)
     for t in tables:
         slots = _table_slots(layout.placed[t], size, layout.kind(t) in roles.ROUND_TABLES, share[t])
         for lx, ly, yaw in slots:
