@@ -1050,6 +1050,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 targets = self._pronoun("them", c, srcs, list(c.last_target))
         elif isinstance(target, str) and target != "each other":
             targets = self._pronoun_target(c, p, target, kind, srcs, prev_subject, starts_with_rel)
+        elif target is None and kind in ("left", "right") and toks[rel.start].text == "on" and (
+            c.last_target and c.last_target_end == rel.start
+        ):
+            # "a bench sits beneath a willow on the right": a side of the scene, which the
+            # willow is on, not a side of the willow ("to the right" after it stays the willow's)
+            targets = []
         elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
             # "a bed with a nightstand on either side": a with-thing's side is its head's
             owner = list(c.head) if c.head is not None and srcs == c.wsub else []
