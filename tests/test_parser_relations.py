@@ -741,3 +741,10 @@ def test_on_the_right_after_a_target_is_a_side_of_the_scene():
     assert ("cart_1", "right of", "tree_1") not in found and ("cart_1", "near", "tree_1") in found
     assert ("cart_1", "right of", "tree_1") in rels("A cart waits beneath an oak tree to the right.")
     assert ("table_lamp_1", "left of", "desk_1") in rels("A desk stands by the wall, with a lamp on the left.")
+
+
+def test_a_seat_behind_a_thing_places_the_sitter_beside_it_the_seat():
+    found = rels("The pilot slumps in a leather armchair behind a desk. A girl sits on a stool beside the counter.")
+    assert {("pilot_1", "on", "armchair_1"), ("pilot_1", "behind", "desk_1")} <= found
+    assert ("armchair_1", "behind", "desk_1") not in found and ("stool_1", "side of", "counter_1") in found
+    assert ("basket_1", "behind", "stove_1") in rels("A cat naps in a basket behind the stove.")

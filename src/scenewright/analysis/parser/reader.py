@@ -1255,10 +1255,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         """Whether a phrase after "a person sits on X" places the person, not X: what the person
         faces after any target ("kneels at a low table across from the vats", "ponies tied to a
         fence across from the caravans"), where the person works ("sits on a stool at a
-        workbench"), and after a seat, what the person sits between, under or at the foot of ("in
-        folding chairs between them", "rest on a bench at the foot of a cross"; but "a cat naps in
-        a basket at the foot of the stove" places the basket). Beside, near, in front of place the
-        seat ("a bard sits on a stool beside the fire")."""
+        workbench"), and after a seat, what the person sits between, under, behind or at the foot
+        of ("in folding chairs between them", "rest on a bench at the foot of a cross", "lounges in
+        an armchair behind the desk": one works behind a desk as at it; but "a cat naps in a basket
+        at the foot of the stove" places the basket). Beside, near, in front of place the seat ("a
+        bard sits on a stool beside the fire"): so the annotated sets read it, four texts to one."""
         if not rider or not all(self._living(g) for g in rider):
             return False
         if kind in ("opposite", "face to"):
@@ -1266,7 +1267,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if c.last_kind not in ("on", "in", "on top"):
             return False
         seat = all(self.catalogue[self.groups[g].category].shape in _SEATS for g in c.last_target)
-        return kind == "at" or (seat and kind in ("between", "under", "foot of"))
+        return kind == "at" or (seat and kind in ("between", "under", "behind", "foot of"))
 
     @staticmethod
     def _describes(words: list[str], after_verb: bool) -> bool:
