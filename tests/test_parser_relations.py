@@ -748,3 +748,8 @@ def test_a_seat_behind_a_thing_places_the_sitter_beside_it_the_seat():
     assert {("pilot_1", "on", "armchair_1"), ("pilot_1", "behind", "desk_1")} <= found
     assert ("armchair_1", "behind", "desk_1") not in found and ("stool_1", "side of", "counter_1") in found
     assert ("basket_1", "behind", "stove_1") in rels("A cat naps in a basket behind the stove.")
+
+
+def test_surface_things_along_a_shelf_or_counter_stand_on_it():
+    found = rels("A row of glass jars lining a shelf stands by the door. A row of stools runs along the counter.")
+    assert ("bottle_1", "on", "bookshelf_1") in found and ("stool_1", "side of", "counter_1") in found

@@ -19,6 +19,7 @@ from scenewright.analysis.parser.grammar import (
     _HANDHELD_SIZE,
     _HOLDER_KINDS,
     _KIND_RELATION,
+    _LOAD_HOSTS,
     _LOW_HOST,
     _OWN_SIDES,
     _PERSONAL,
@@ -1418,6 +1419,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if src.rests == "surface" and target.support:
                 return "on"
             return "in front of" if target.shape == "bed" else "near"  # "a barrow at the end of the patch"
+        if kind == "along" and src.rests == "surface" and (target.support or target.shape in _LOAD_HOSTS):
+            return "on"  # "jars lining a shelf", "bottles along the bar": on it, as at its end or centre
         if kind == "centre of":  # "a vase in the middle of the table", "a throne in the centre of the stage": on it
             if src.rests == "surface" and target.support:
                 return "on"
