@@ -734,3 +734,22 @@ def test_a_living_mover_toward_a_thing_faces_it_unless_it_moves_an_object_there(
     found = rels("A knight on a white horse rides over the bridge towards the dragon. A porter pushes a cart toward the kiosk.")
     assert ("knight_1", "face to", "dragon_1") in found and ("porter_1", "face to", "kiosk_1") not in found
     assert ("waiter_1", "face to", "table_1") in rels("A waiter carries a tray towards the table.")
+
+
+def test_on_the_right_after_a_target_is_a_side_of_the_scene():
+    found = rels("A tent stands in the middle. A cart waits beneath an oak tree on the right.")
+    assert ("cart_1", "right of", "tree_1") not in found and ("cart_1", "near", "tree_1") in found
+    assert ("cart_1", "right of", "tree_1") in rels("A cart waits beneath an oak tree to the right.")
+    assert ("table_lamp_1", "left of", "desk_1") in rels("A desk stands by the wall, with a lamp on the left.")
+
+
+def test_a_seat_behind_a_thing_places_the_sitter_beside_it_the_seat():
+    found = rels("The pilot slumps in a leather armchair behind a desk. A girl sits on a stool beside the counter.")
+    assert {("pilot_1", "on", "armchair_1"), ("pilot_1", "behind", "desk_1")} <= found
+    assert ("armchair_1", "behind", "desk_1") not in found and ("stool_1", "side of", "counter_1") in found
+    assert ("basket_1", "behind", "stove_1") in rels("A cat naps in a basket behind the stove.")
+
+
+def test_surface_things_along_a_shelf_or_counter_stand_on_it():
+    found = rels("A row of glass jars lining a shelf stands by the door. A row of stools runs along the counter.")
+    assert ("bottle_1", "on", "bookshelf_1") in found and ("stool_1", "side of", "counter_1") in found

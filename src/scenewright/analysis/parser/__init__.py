@@ -124,7 +124,7 @@ Decisions worth knowing:
 - Attachment: a relative or a participle right after a target describes the target ("a lorry
   idling at the barrier", "a ring light that hangs from the ceiling"; before the subject's own
   verb a participle stays the subject's); a person on a seat is what *at*, *across from*,
-  *facing* and, after a seat, *between* / *under* place ("sits on a stool at the workbench"),
+  *facing* and, after a seat, *between* / *under* / *behind* place ("sits on a stool at the workbench"),
   while *beside* / *near* place the seat; "with" right after the second end of *between* is that
   end's. X *under* a thing that hangs, is hung, is on a wall or is a thin board → that thing
   ``above`` X ("chairs under a ceiling fan"). "Between the first and second van", "between

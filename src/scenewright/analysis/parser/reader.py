@@ -19,6 +19,7 @@ from scenewright.analysis.parser.grammar import (
     _HANDHELD_SIZE,
     _HOLDER_KINDS,
     _KIND_RELATION,
+    _LOAD_HOSTS,
     _LOW_HOST,
     _OWN_SIDES,
     _PERSONAL,
@@ -1050,6 +1051,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 targets = self._pronoun("them", c, srcs, list(c.last_target))
         elif isinstance(target, str) and target != "each other":
             targets = self._pronoun_target(c, p, target, kind, srcs, prev_subject, starts_with_rel)
+        elif target is None and kind in ("left", "right") and toks[rel.start].text == "on" and (
+            c.last_target and c.last_target_end == rel.start
+        ):
+            # "a bench sits beneath a willow on the right": a side of the scene, which the
+            # willow is on, not a side of the willow ("to the right" after it stays the willow's)
+            targets = []
         elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
             # "a bed with a nightstand on either side": a with-thing's side is its head's
             owner = list(c.head) if c.head is not None and srcs == c.wsub else []
@@ -1249,10 +1256,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         """Whether a phrase after "a person sits on X" places the person, not X: what the person
         faces after any target ("kneels at a low table across from the vats", "ponies tied to a
         fence across from the caravans"), where the person works ("sits on a stool at a
-        workbench"), and after a seat, what the person sits between, under or at the foot of ("in
-        folding chairs between them", "rest on a bench at the foot of a cross"; but "a cat naps in
-        a basket at the foot of the stove" places the basket). Beside, near, in front of place the
-        seat ("a bard sits on a stool beside the fire")."""
+        workbench"), and after a seat, what the person sits between, under, behind or at the foot
+        of ("in folding chairs between them", "rest on a bench at the foot of a cross", "lounges in
+        an armchair behind the desk": one works behind a desk as at it; but "a cat naps in a basket
+        at the foot of the stove" places the basket). Beside, near, in front of place the seat ("a
+        bard sits on a stool beside the fire"): so the annotated sets read it, four texts to one."""
         if not rider or not all(self._living(g) for g in rider):
             return False
         if kind in ("opposite", "face to"):
@@ -1260,7 +1268,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if c.last_kind not in ("on", "in", "on top"):
             return False
         seat = all(self.catalogue[self.groups[g].category].shape in _SEATS for g in c.last_target)
-        return kind == "at" or (seat and kind in ("between", "under", "foot of"))
+        return kind == "at" or (seat and kind in ("between", "under", "behind", "foot of"))
 
     @staticmethod
     def _describes(words: list[str], after_verb: bool) -> bool:
@@ -1411,6 +1419,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if src.rests == "surface" and target.support:
                 return "on"
             return "in front of" if target.shape == "bed" else "near"  # "a barrow at the end of the patch"
+        if kind == "along" and src.rests == "surface" and (target.support or target.shape in _LOAD_HOSTS):
+            return "on"  # "jars lining a shelf", "bottles along the bar": on it, as at its end or centre
         if kind == "centre of":  # "a vase in the middle of the table", "a throne in the centre of the stage": on it
             if src.rests == "surface" and target.support:
                 return "on"
