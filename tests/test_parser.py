@@ -682,3 +682,20 @@ def test_a_building_the_opening_sentence_is_inside_sets_the_scene(text, indoor, 
 def test_a_text_that_opens_inside_a_place_is_indoor_whatever_stands_there():
     parsed = parse_scene("Inside a horse stable at dawn, three horses stand by a hay cart and a trough.")
     assert parsed.indoor
+
+
+@pytest.mark.parametrize(
+    ("text", "indoor"),
+    [
+        # the place the opening names, though it is no thing, outweighs the animals standing there
+        ("A shearing parlour on a hill farm at noon. Five sheep and two goats wait in pens by a dog.", True),
+        ("An old clockmaker's workshop, lit by a candle. A horse, a goat and a fox stand by a tree.", True),
+        # a style line before a colon is no setting
+        ("Bold flat colours: a saddler's workshop in a village. Two ponies wait by a bench.", True),
+        # seen from outside, or open to the sky, it is no room
+        ("The front of a small fire station. A fire engine waits on the apron by a tree.", False),
+        ("A drive-in cinema at dusk. Three cars stand before a screen under a tree.", False),
+    ],
+)
+def test_the_opening_place_word_decides_indoor(text, indoor):
+    assert parse_scene(text).indoor is indoor

@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import itertools
+import re
 
 from dataclasses import dataclass, field
 from functools import lru_cache
@@ -297,6 +298,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         mention = _Mention(cat, phrase, s, e, 1, False, False)
         mention.guess, mention.modifier = entry, kind
         mentions.append(mention)
+    word = _opening_place_word(toks)
+    if word is not None and not any(word.split()[-1] in p.split() for p in places):
+        places.append(word)
     _short_for_compound(toks, mentions)
     return _alias_mentions(toks, mentions), places
 
@@ -704,6 +708,29 @@ def _opening_setting(toks: list[_Tok], s: int, e: int) -> bool:
         rest = itertools.takewhile(lambda t: t.text not in (".", "!", "?"), toks[k:])
         return not any(t.text in ("it", "its") for t in rest)
     return k < len(toks) and toks[k].text == ":"
+
+
+def _opening_place_word(toks: list[_Tok]) -> str | None:
+    """The place word the verbless opening names, though it names no thing ("A milking parlour on
+    a farm", "A Victorian clockmaker's workshop, lit by a lamp"): where the scene stands, so it
+    decides indoors before the animals or the lamps there. A style line before a colon is
+    skipped ("Flat colours: a ...")."""
+    places = load_vocabulary().places
+    for k, t in enumerate(toks):
+        if t.text in (".", "!", "?", ";"):
+            return None
+        if t.text == ":" or _verb_word(t.text) and not t.text.endswith("ing"):
+            if not any(u.text == ":" for u in toks[k:] if u.text not in (".", "!", "?")):
+                return None  # a verb before the place: the sentence tells, not where
+            continue
+        follow = toks[k + 1].text if k + 1 < len(toks) else "."
+        if singular(t.text) in places and (follow in _SETTING_PREPOSITIONS or follow in (",", ".", ":", "in", "with")):
+            before = " ".join(u.text for u in toks[:k])
+            if re.search(r"\b(?:open air|drive in|outdoor|open)$|\b(?:front|outside|exterior|yard|forecourt) of\b", before):
+                return None  # "a drive-in cinema", "the front of a fire station": outside the building
+            two = f"{toks[k - 1].text} {t.text}" if k > 0 else ""
+            return two if two in places else t.text
+    return None
 
 
 def _enterable(toks: list[_Tok], s: int, e: int) -> bool:

@@ -108,7 +108,7 @@ _INDOOR_PLACES = {"hangar", "warehouse", "factory", "garage", "workshop", "libra
                   "salon", "theatre", "theater", "cinema", "ballroom", "lounge", "pantry", "diner", "restaurant",
                   "bar", "arcade", "mall", "station", "hospital", "clinic", "nursery", "school", "kitchen", "bedroom",
                   "barn", "house", "cottage", "cabin", "hut", "shed", "shack", "stable", "greenhouse", "farmhouse",
-                  "teahouse", "coffeehouse", "bathhouse", "guesthouse", "alehouse", "playhouse"}  # fmt: skip
+                  "teahouse", "coffeehouse", "bathhouse", "guesthouse", "alehouse", "playhouse", "parlour", "parlor"}  # fmt: skip
 
 
 def _building(place: str) -> bool:
