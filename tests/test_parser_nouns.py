@@ -574,3 +574,17 @@ def test_a_building_the_description_opens_with_is_where_it_stands(text, setting)
 def test_a_building_the_opening_points_back_at_is_a_thing():
     parsed = parse_scene("A red barn on a hill, with a tractor parked beside it.")
     assert "barn" in {o.category for o in parsed.objects} and not parsed.indoor
+
+
+@pytest.mark.parametrize(
+    ("text", "names"),
+    [
+        # where the opening's place is: no thing of the scene
+        ("A wizard's library at the top of a tower. A cat sleeps on a stool.", {"cat", "stool"}),
+        ("A fox's den beneath the roots of an old beech. A cub sleeps on a rug.", {"cub", "rug"}),
+        # a thing at the top of a tower, told with a verb, is there
+        ("A garden. A cat sits at the top of a tower.", {"cat", "tower"}),
+    ],
+)
+def test_the_thing_the_opening_place_sits_in_is_no_object(text, names):
+    assert {o.name.split()[-1] for o in parse_scene(text).objects} == names

@@ -191,6 +191,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
     raw = sorted(raw + _unknown_nouns(toks, raw), key=lambda r: r[0])
     mentions: list[_Mention] = []
     places: list[str] = []
+    opening_place = _opening_place_word(toks)
     modifier: list[str] = []
     part_end: int | None = None  # where an opening "the bridge of" ends: its owner is the setting too
     picture_end: int | None = None  # where an opening "a painting" ends: what it shows is the setting
@@ -259,6 +260,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a throne hall", "a farmhouse kitchen", "a rocket launch site": the place, not the thing
         if _place_name(toks, s):
             continue  # "a dig on a hillside in southern Turkey": a country, not a bird
+        if (places or opening_place) and _whereabouts_of_setting(toks, s):
+            places.append(" ".join(words))
+            continue  # "a wizard's study at the top of a tower": where the setting is, not a thing in it
         if _is_place(toks, s, e, raw[k + 1 :]) or (
             follow in ("floor", "interior", "grounds") and singular(words[-1]) in vocabulary.places
         ):  # "an abandoned factory floor with a conveyor belt"
@@ -298,9 +302,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         mention = _Mention(cat, phrase, s, e, 1, False, False)
         mention.guess, mention.modifier = entry, kind
         mentions.append(mention)
-    word = _opening_place_word(toks)
-    if word is not None and not any(word.split()[-1] in p.split() for p in places):
-        places.append(word)
+    if opening_place is not None and not any(opening_place.split()[-1] in p.split() for p in places):
+        places.insert(0, opening_place)
     _short_for_compound(toks, mentions)
     return _alias_mentions(toks, mentions), places
 
@@ -731,6 +734,30 @@ def _opening_place_word(toks: list[_Tok]) -> str | None:
             two = f"{toks[k - 1].text} {t.text}" if k > 0 else ""
             return two if two in places else t.text
     return None
+
+
+#: Parts of a thing the opening's place sits in or by ("at the top of a tower", "beneath the roots
+#: of an oak", "in the hold of a barge").
+_SETTING_PARTS = {"top", "foot", "base", "bottom", "summit", "roots", "root", "heart", "depths", "shadow", "hold",
+                  "belly", "hollow", "trunk", "branches", "crown"}  # fmt: skip
+
+
+def _whereabouts_of_setting(toks: list[_Tok], s: int) -> bool:
+    """The noun at ``s`` owns the part of a thing the opening sentence puts its place at, with no
+    verb before it: "A wizard's study at the top of a tower", "a fox's den beneath the roots of a
+    beech" name where the setting is (the tower, the beech), not a thing standing in the scene."""
+    j = s - 1
+    while j >= 0 and s - j <= 4 and (toks[j].text in _DETERMINERS or (
+        toks[j].text[:1].isalpha() and toks[j].text not in _STOP
+    )):  # fmt: skip
+        j -= 1
+    if j < 3 or toks[j].text != "of" or toks[j - 1].text not in _SETTING_PARTS or toks[j - 2].text not in _DETERMINERS:
+        return False
+    if toks[j - 3].text not in _SETTING_PREPOSITIONS and toks[j - 3].text not in _INSIDE:
+        return False
+    start = max((k for k in range(j) if toks[k].text == ":"), default=-1) + 1
+    return not any(t.text in (".", "!", "?", ";") or _verb_word(t.text) and not t.text.endswith("ing")
+                   for t in toks[start:j])  # fmt: skip
 
 
 def _enterable(toks: list[_Tok], s: int, e: int) -> bool:
