@@ -588,3 +588,11 @@ def test_a_building_the_opening_points_back_at_is_a_thing():
 )
 def test_the_thing_the_opening_place_sits_in_is_no_object(text, names):
     assert {o.name.split()[-1] for o in parse_scene(text).objects} == names
+
+
+def test_a_plural_possessive_owns_the_noun_after_it():
+    # the shepherds only own the hut; "shelter" after "shepherds'" is a noun, not a verb
+    names = [o.name for o in parse_scene("A goat grazes by the shepherds' shelter, and a dog sleeps behind it.").objects]
+    assert sorted(n.split()[-1] for n in names) == ["dog", "goat", "shelter"]
+    # a quotation closed after an s is no possessive
+    assert [o.category for o in parse_scene("A sign reading 'Fresh Eggs' hangs on a gate.").objects] == ["sign", "arch"]

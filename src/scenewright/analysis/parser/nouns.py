@@ -872,7 +872,27 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         out.append((head, head + 1, entry.category, entry))
         covered.add(head)
     out += _bare_subjects(toks, covered) + _landforms(toks, covered) + _owners_of_parts(toks, covered)
-    return out + _unknown_heads(toks, raw, covered)
+    return out + _unknown_heads(toks, raw, covered) + _possessed(toks, covered)
+
+
+def _possessed(toks: list[_Tok], covered: set[int]) -> list:
+    """A lone word right after a plural possessive is the noun it owns, though it looks like a
+    verb ("the judges' stand", "the shepherds' shelter"): "judges'" can be no "judges is"."""
+    vocabulary = load_vocabulary()
+    out = []
+    for k in range(2, len(toks)):
+        owner, word = toks[k - 1], toks[k].text
+        after = toks[k + 1].text if k + 1 < len(toks) else "."
+        if k in covered or not owner.orig.endswith(("'", "’")) or toks[k - 2].text not in _DEFINITE:
+            continue
+        if toks[k].quoted or word in _STOP and not _is_verb(word) or not vocabulary.is_thing_word(word):
+            continue
+        if after[:1].isalpha() and after not in _STOP:
+            continue  # a longer phrase: left to the other rules
+        entry = _guess(toks, k, toks[k - 2 : k])
+        out.append((k, k + 1, entry.category, entry))
+        covered.add(k)
+    return out
 
 
 #: Parts only a building seen from outside shows: its owner, a place word, is a building of the scene.

@@ -7,6 +7,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from scenewright.core.catalogue import singular
+
 
 #: Letters of any script, so an accented word ("café", "Stühle") stays one word.
 _TOKEN = re.compile(r"\d{2,4}'?s\b|\d+(?:\.\d+)?|[^\W\d_]+(?:['’][^\W\d_]+)?|[.,;:!?()\"“”]|['‘’]|[-–—]")
@@ -34,6 +36,13 @@ def _tokenise(text: str) -> list[_Tok]:
         if s in _SINGLE_QUOTES or s in _DOUBLE_QUOTES:
             before = text[m.start() - 1] if m.start() else " "
             after = text[m.end()] if m.end() < len(text) else " "
+            plural_owner = s in _SINGLE_QUOTES and toks and m.start() == prev_end and toks[-1].text.endswith("s")
+            if plural_owner and not quoting and not after.isalnum() and toks[-1].text[:1].isalpha():
+                # "the judges' stand" reads as "the judge's stand": a possessive, as the reader knows them
+                toks[-1].text = singular(toks[-1].text) + "'s"
+                toks[-1].orig += s
+                prev_end = m.end()
+                continue
             if not quoting and (before.isspace() or before == "(") and after.isalnum():
                 quoting = True  # "a sign reading 'Open'": opens; "the dogs' bowls" does not
             elif quoting and not before.isspace():
