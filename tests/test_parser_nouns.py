@@ -596,3 +596,14 @@ def test_a_plural_possessive_owns_the_noun_after_it():
     assert sorted(n.split()[-1] for n in names) == ["dog", "goat", "shelter"]
     # a quotation closed after an s is no possessive
     assert [o.category for o in parse_scene("A sign reading 'Fresh Eggs' hangs on a gate.").objects] == ["sign", "arch"]
+
+
+def test_a_measure_word_after_the_noun_of_its_kind_is_a_thing():
+    # "a coil of rope" measures rope; "an induction coil" is a coil standing there
+    assert [o.name for o in parse_scene("A baker stands by an induction coil.").objects][-1] == "induction coil"
+    assert [o.category for o in parse_scene("A baker stands by a big coil.").objects] == ["figure"]
+
+
+def test_a_short_word_with_an_adjective_ending_is_a_noun():
+    # "-est" after a stem makes "tallest", not "nest"
+    assert [o.name for o in parse_scene("A wren's nest is tucked under the eaves.").objects] == ["nest"]

@@ -794,6 +794,10 @@ def later_before(later: list, toks: list[_Tok], e: int) -> bool:
     return False
 
 
+#: Measure words ("a coil of rope", "a stack of plates") that also name a thing of their own.
+_MEASURE_THINGS = {"coil", "coils", "ring", "stack", "stacks", "column", "string", "set"}
+
+
 def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None]]) -> list:
     """Noun phrases whose head neither the catalogue nor the vocabulary knows ("a zorbulator",
     "three glimmerwings"): counted phrases only, and only heads that can name a thing; after
@@ -859,8 +863,10 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         counted_place = _NUMBERS.get(w, 0) > 1 and one != word and one in vocabulary.places and one not in _VENUES
         # "five pairs of shoes", "a rack of coats": clothing counted out is not worn
         stock = w == "of" and word in vocabulary.clothing
+        # "a tesla coil", "a drum set": a measure word after the noun of its kind is the thing itself
+        compound = word in _MEASURE_THINGS and head > i + 1 and not vocabulary.is_adjective(toks[head - 1].text)
         if not (vocabulary.is_thing_word(word) or held or counted_place or stock) or (
-            word in _QUANTITY and not counted_place
+            word in _QUANTITY and not counted_place and not compound
         ) or (j < n and toks[j].text == "of"):
             continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"
         entry = _guess(toks, head, toks[max(i - 1, 0) : head])

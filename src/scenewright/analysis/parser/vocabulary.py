@@ -132,7 +132,9 @@ class Vocabulary:
             return False
         if not w.isalpha() or len(w) < 3:
             return False
-        return not w.endswith(("ly", "ous", "ful", "ish", "less", "able", "ible", "ive", "ed", "est"))
+        # an ending makes an adjective only after a stem of its own ("tallest", not "nest" or "chest")
+        endings = ("ly", "ous", "ful", "ish", "less", "able", "ible", "ive", "ed", "est")
+        return not any(w.endswith(e) and len(w) - len(e) >= _MIN_STEM for e in endings)
 
     def is_adjective(self, word: str) -> bool:
         """A describing word rather than a noun that names the kind ("rusty" vs "street")."""
