@@ -607,3 +607,16 @@ def test_a_measure_word_after_the_noun_of_its_kind_is_a_thing():
 def test_a_short_word_with_an_adjective_ending_is_a_noun():
     # "-est" after a stem makes "tallest", not "nest"
     assert [o.name for o in parse_scene("A wren's nest is tucked under the eaves.").objects] == ["nest"]
+
+
+def test_a_possessive_compound_and_a_counted_plural_head():
+    # "a boar's head" is the trophy the vocabulary knows as a boar head; after "two", a plural
+    # -s word after a known noun is the head ("beetle cases"), not the known noun's verb
+    objects = parse_scene("A boar's head hangs between two framed beetle cases.").objects
+    assert [o.name for o in objects] == ["boar head", "beetle case", "beetle case"]
+
+
+def test_the_owner_of_the_opening_room_with_a_hyphened_modifier_is_the_setting():
+    assert [o.name for o in parse_scene("The engine room of an ocean-going ship. A cat sleeps by a pump.").objects] == [
+        "cat", "pump"
+    ]

@@ -110,6 +110,8 @@ def _match_at(toks: list[_Tok], i: int) -> tuple[int, str, Entry | None] | None:
         if cat:
             return i + length, cat, None
         entry = vocabulary.match(words)
+        if entry is None and length > 1 and words[0].endswith("'s"):
+            entry = vocabulary.match((words[0][:-2], *words[1:]))  # "a stag's head" is a stag head
         # a catalogue head keeps its kind ("a toy chest" is a chest) unless the vocabulary says
         # otherwise ("an arcade cabinet"); "a fig plant stands" has a verb, not a plant stand
         verb = length > 1 and words[-1] != singular(words[-1]) and singular(words[-1]) in _FINITE
@@ -299,6 +301,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             cat, entry = (same or mentions)[0 if same else -1].category, (same or mentions)[0 if same else -1].guess
         phrase = " ".join(t.orig for t in toks[s:e])
         phrase = phrase[:-2] if phrase.endswith(("'s", "’s")) else phrase  # "the diner's roof": the diner
+        phrase = re.sub(r"['’]s ", " ", phrase)  # "a stag's head" is named as the stag head it is
         mention = _Mention(cat, phrase, s, e, 1, False, False)
         mention.guess, mention.modifier = entry, kind
         mentions.append(mention)
@@ -420,7 +423,8 @@ def _owns_opening_place(toks: list[_Tok], s: int) -> bool:
     cargo starship", "The kitchen of an old farmhouse"): it is the setting, not a thing in it."""
     j = s - 1
     while j >= 0 and (toks[j].text in _DETERMINERS or load_vocabulary().is_adjective(toks[j].text)
-                      or toks[j].text in ("cargo", "space", "sailing", "fishing", "merchant")):
+                      or toks[j].text in ("cargo", "space", "sailing", "fishing", "merchant")
+                      or toks[j].joined or j + 1 < s and toks[j + 1].joined):  # "a long-haul freighter"
         j -= 1  # fmt: skip
     if j < 1 or toks[j].text != "of":
         return False
@@ -1030,7 +1034,10 @@ def _unknown_heads(toks: list[_Tok], raw: list, covered: set[int]) -> list:
         if e - s != 1 or k >= len(toks) or k in covered or toks[k].quoted or toks[k].joined or toks[s].joined:
             continue
         word, known = toks[k].text, toks[s].text
-        if singular(known) != known or word in _STOP or word in _FINITE or _is_verb(word) or _participle(word):
+        # "two butterfly cases": after a count, a plural -s word is the head (a verb after it would have no -s)
+        counted_head = _counted_plural(toks, s) and singular(word) != word and word not in _STOP
+        looks_verb = word in _STOP or word in _FINITE or _is_verb(word)
+        if singular(known) != known or looks_verb and not counted_head or _participle(word):
             continue
         if word in _ADVERB_NOUNS or word in _ORDINALS:
             continue  # "the counter right next to the till", "the stall left of the gate"
