@@ -620,3 +620,10 @@ def test_the_owner_of_the_opening_room_with_a_hyphened_modifier_is_the_setting()
     assert [o.name for o in parse_scene("The engine room of an ocean-going ship. A cat sleeps by a pump.").objects] == [
         "cat", "pump"
     ]
+
+
+def test_a_plural_before_a_participle_is_a_noun_not_a_verb():
+    # "stone urns holding ferns": the urns hold, no stone "urns" anything
+    objects = parse_scene("Glass domes holding tiny shells line a mantel.").objects
+    assert [o.name for o in objects][:2] == ["glass dome", "glass dome"]
+    assert objects[0].category == "container"  # a small case on a shelf, not a 3.5 m domed building

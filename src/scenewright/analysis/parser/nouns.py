@@ -582,8 +582,8 @@ def _plural_is_verb(toks: list[_Tok], s: int, nxt: tuple) -> bool:
     person = load_vocabulary().match(tuple(t.text for t in toks[s : nxt[0]]))
     if person is not None and person.category == "figure":
         return True  # "the baker slides loaves into the oven": a person names no kind of slide
-    if _is_verb(follow) or follow in _FINITE:
-        return False
+    if _is_verb(follow) or follow in _FINITE or follow.endswith("ing") and follow.isalpha():
+        return False  # "glass domes holding birds": a participle after it makes it the noun
     return nxt[3] is not None
 
 
