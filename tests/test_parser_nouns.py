@@ -627,3 +627,9 @@ def test_a_plural_before_a_participle_is_a_noun_not_a_verb():
     objects = parse_scene("Glass domes holding tiny shells line a mantel.").objects
     assert [o.name for o in objects][:2] == ["glass dome", "glass dome"]
     assert objects[0].category == "container"  # a small case on a shelf, not a 3.5 m domed building
+
+
+def test_a_word_nobody_listed_heading_the_verbless_opening_is_the_setting():
+    parsed = parse_scene("A busy chandlery, all rope and brass. A cat sleeps on a crate.")
+    assert [o.name for o in parsed.objects] == ["cat", "crate"]
+    assert "chandlery" in parsed.places

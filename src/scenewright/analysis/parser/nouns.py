@@ -262,6 +262,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a throne hall", "a farmhouse kitchen", "a rocket launch site": the place, not the thing
         if _place_name(toks, s):
             continue  # "a dig on a hillside in southern Turkey": a country, not a bird
+        if entry is not None and entry.category == GENERIC and _unknown_opening_place(toks, s, e):
+            places.append(" ".join(words))
+            continue  # "An art nouveau perfumery, all brass and glass.": a word nobody listed names the setting
         if (places or opening_place) and _whereabouts_of_setting(toks, s):
             places.append(" ".join(words))
             continue  # "a wizard's study at the top of a tower": where the setting is, not a thing in it
@@ -738,6 +741,27 @@ def _opening_place_word(toks: list[_Tok]) -> str | None:
             two = f"{toks[k - 1].text} {t.text}" if k > 0 else ""
             return two if two in places else t.text
     return None
+
+
+def _unknown_opening_place(toks: list[_Tok], s: int, e: int) -> bool:
+    """A noun nobody listed heads a verbless opening sentence (or the part after its style line's
+    colon) and is followed by where or when it is: "A busy perfumery, all brass and glass.",
+    "Bold colours: a riverside regatta on a Sunday afternoon." name the setting, not a thing."""
+    j = s - 1
+    while j >= 0 and (toks[j].text in _DETERMINERS or toks[j].text[:1].isalpha() and toks[j].text not in _STOP
+                      and not _verb_word(toks[j].text)):  # fmt: skip
+        j -= 1
+    if j >= 0 and toks[j].text != ":" or any(t.text in (".", "!", "?") for t in toks[:s]):
+        return False
+    follow = toks[e].text if e < len(toks) else "."
+    if follow not in _SETTING_PREPOSITIONS and follow not in (",", ".", "in"):
+        return False
+    k = e
+    while k < len(toks) and toks[k].text not in (".", "!", "?"):
+        if _verb_word(toks[k].text) and not toks[k].text.endswith("ing") and not toks[k].orig[:1].isupper():
+            return False
+        k += 1
+    return True
 
 
 #: Parts of a thing the opening's place sits in or by ("at the top of a tower", "beneath the roots
