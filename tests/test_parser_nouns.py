@@ -633,3 +633,9 @@ def test_a_word_nobody_listed_heading_the_verbless_opening_is_the_setting():
     parsed = parse_scene("A busy chandlery, all rope and brass. A cat sleeps on a crate.")
     assert [o.name for o in parsed.objects] == ["cat", "crate"]
     assert "chandlery" in parsed.places
+
+
+def test_worn_hats_and_suits_and_a_gerund_with_its_object_are_no_things():
+    assert [o.name for o in parse_scene("A mechanic in a blue jumpsuit leans on a van.").objects] == ["mechanic", "van"]
+    names = [o.name for o in parse_scene("Two hunters crouch by a rock, one aiming a bow at the deer.").objects]
+    assert "aiming" not in names and "bow" in names

@@ -883,6 +883,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         if j < n and j in covered and not subject:
             continue  # the words before a known noun are its adjectives ("a shiny [robot]")
         word = toks[head].text
+        if word.endswith("ing") and j < n and toks[j].text in _OBJECT_OPENERS:
+            continue  # "one aiming a gun at the ship": a verb taking its object, not a noun
         held = _held(toks, head) or (owner and _in_hand(toks, i) and vocabulary.is_thing_word(word))
         if held:
             definite = False
