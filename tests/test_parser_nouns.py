@@ -639,3 +639,10 @@ def test_worn_hats_and_suits_and_a_gerund_with_its_object_are_no_things():
     assert [o.name for o in parse_scene("A mechanic in a blue jumpsuit leans on a van.").objects] == ["mechanic", "van"]
     names = [o.name for o in parse_scene("Two hunters crouch by a rock, one aiming a bow at the deer.").objects]
     assert "aiming" not in names and "bow" in names
+
+
+def test_run_by_a_thing_is_running_past_it_not_its_owner():
+    assert [o.name for o in parse_scene("Two boys run by a tent.").objects][-1] == "tent"
+    assert [o.name for o in parse_scene("A café run by an old woman, with a cat on the counter.").objects] == [
+        "cat", "counter"
+    ]

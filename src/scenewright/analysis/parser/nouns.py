@@ -216,7 +216,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             e = nxt[1]
         if s == e:
             continue
-        if _role_after_as(toks, s):
+        if _role_after_as(toks, s, cat):
             continue  # "four logs around it as seats", "a crate used as a table": a use, not a thing
         if e < n and toks[e].text.endswith("'s") and toks[e].text[:-2].isalpha() and not toks[s].text.endswith("'s"):
             continue  # "a lighthouse keeper's cottage": the kind of keeper, no lighthouse
@@ -459,7 +459,7 @@ def _owner_of_part(toks: list[_Tok], part_end: int, s: int) -> bool:
     )
 
 
-def _role_after_as(toks: list[_Tok], s: int) -> bool:
+def _role_after_as(toks: list[_Tok], s: int, category: str) -> bool:
     """The noun at ``s`` names what another thing serves as ("as seats", "as a table"), not
     "as well as a lamp" or "such as a lamp"."""
     j = s - 1
@@ -467,8 +467,10 @@ def _role_after_as(toks: list[_Tok], s: int) -> bool:
         toks[j].text in ("a", "an", "the", "her", "his", "their") or toks[j].text not in _STOP
     ):
         j -= 1
-    if j >= 1 and (toks[j - 1].text, toks[j].text) in _ABSENT_OWNER:
-        return True  # "a bedroom belonging to a teenage girl": the owner is not in the scene
+    owner = category == GENERIC or load_catalogue()[category].shape in ("figure", "animal")
+    if j >= 1 and (toks[j - 1].text, toks[j].text) in _ABSENT_OWNER and owner:
+        return True  # "a bedroom belonging to a teenage girl": the owner is not in the scene ("boys run by a
+        # tent": a thing owns nothing, the boys run past it)
     if j >= 1 and toks[j].text == "for" and not any(t.text in _DETERMINERS or t.text in _NUMBERS for t in toks[j + 1 : s]):
         return True  # "a bench for parents", "a fridge for vaccines": whom or what it serves, no thing here
     return j >= 1 and toks[j].text == "as" and toks[j - 1].text not in ("well", "such", "same")
