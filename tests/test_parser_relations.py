@@ -753,3 +753,18 @@ def test_a_seat_behind_a_thing_places_the_sitter_beside_it_the_seat():
 def test_surface_things_along_a_shelf_or_counter_stand_on_it():
     found = rels("A row of glass jars lining a shelf stands by the door. A row of stools runs along the counter.")
     assert ("bottle_1", "on", "bookshelf_1") in found and ("stool_1", "side of", "counter_1") in found
+
+
+def test_an_animal_inside_it_is_in_the_container_named_before_not_the_last_target():
+    found = rels("A wire birdcage hangs from the ceiling above a writing desk, and a canary sleeps inside it.")
+    assert ("canary_1", "on", "wire_birdcage_1") in found and ("canary_1", "on", "desk_1") not in found
+    found = rels("A basket stands beside the sofa, and a cat naps in it.")
+    assert ("cat_1", "on", "basket_1") in found
+    # "on it" still names the grounded thing below
+    assert ("cat_1", "on", "table_1") in rels("A lamp hangs above the table, and a cat naps on it.")
+
+
+def test_while_after_a_with_part_opens_a_clause_of_its_own():
+    found = rels("The woman walks behind the cows with a clipboard, while her son carries a bucket towards the barn.")
+    assert {("clipboard_1", "on", "woman_1"), ("bucket_1", "on", "son_1")} <= found
+    assert ("bucket_1", "on", "woman_1") not in found

@@ -501,7 +501,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             places = any(k in self.rel_at for k in range(cs, ce))
             # "a counter with combs, scissors and a jar runs beneath the mirror": the list goes on
             goes_on = bool(out) and self._open_with(*out[-1]) and cs not in self.rel_at
+            # ("with a clipboard, while her son carries a pail": "while" opens a clause of its own;
+            # "with two chairs, where a man sits" goes on about the with-part)
             goes_on = goes_on and self.toks[cs].text not in ("and", "or", "but", "then", "so")
+            goes_on = goes_on and self.toks[cs - 1].text not in _CLAUSE_WORDS - {"where"}
             # a bare list takes the next placing when "and" closes it ("a lamp, a laptop and a mug on
             # the desk"); a list of commas only is a list of separate things ("a desk, an armchair, a
             # globe on the desk": only the globe is on the desk)
@@ -1120,7 +1123,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         candidates = [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)]
         targets = self._part_owner(part, targets, candidates, srcs)
         if c.head is None and target in ("it", "them") and part is None and kind in ("in", "on", "from"):
-            targets = self._seat(c, srcs, prefer, rel.start, target == "them") or targets
+            targets = self._seat(c, srcs, prefer, rel.start, target == "them", kind == "in") or targets
         return self._peer(kind, srcs, targets, c)
 
     def _reversed_phrase(self, c: _Clause, p: _Phrase, prev_subject) -> int | None:
