@@ -768,3 +768,8 @@ def test_while_after_a_with_part_opens_a_clause_of_its_own():
     found = rels("The woman walks behind the cows with a clipboard, while her son carries a bucket towards the barn.")
     assert {("clipboard_1", "on", "woman_1"), ("bucket_1", "on", "son_1")} <= found
     assert ("bucket_1", "on", "woman_1") not in found
+
+
+def test_it_after_towards_can_name_what_was_headed_for_and_under_it_names_a_taller_thing():
+    found = rels("A red tractor drives towards a big crane, and a lorry waits under it.")
+    assert ("truck_1", "near", "crane_1") in found and ("truck_1", "near", "tractor_1") not in found

@@ -998,6 +998,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             c.head, c.wsub, c.expect_new = None, [], True
             return end
         if kind == "no relation" or (kind == "stack" and end < ce and toks[end].text == "with"):
+            if toward and isinstance(p.target, list):  # named all the same: "..., and a truck waits under it"
+                c.groups.extend(g for g in p.target if g not in c.groups)
             return end  # "a shelf stacked with books": contents, no stack
         if kind in _FORMATIONS or kind.startswith("anchor ") or (p.target is None and kind in _PLACE_KINDS):
             # "three stalls stand in a row", "a sofa against the wall", "a rug in the middle of the room"

@@ -241,9 +241,15 @@ class _References:
         # what hangs or stands above "it" is above a thing first ("a bear stirs a pot on the stove,
         # and ladles hang from the ceiling above it": the stove)
         overhead = kind in ("above", "over")
+        # what stands "under it" is under something taller ("a tractor drives towards a crane, and
+        # a truck waits under it": the crane, not the tractor)
+        tallest = max((self.groups[g].size[2] for g in srcs), default=0.0) if kind == "under" else 0.0
 
         def kind_fits(g: int) -> bool:
-            return (not watcher or self._living(g)) and not (overhead and self._living(g))
+            return (
+                (not watcher or self._living(g)) and not (overhead and self._living(g))
+                and self.groups[g].size[2] > tallest
+            )  # fmt: skip
 
         for fits in (
             (lambda g: not aside(g) and g not in sat_on and kind_fits(g)),
