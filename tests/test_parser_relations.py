@@ -773,3 +773,9 @@ def test_while_after_a_with_part_opens_a_clause_of_its_own():
 def test_it_after_towards_can_name_what_was_headed_for_and_under_it_names_a_taller_thing():
     found = rels("A red tractor drives towards a big crane, and a lorry waits under it.")
     assert ("truck_1", "near", "crane_1") in found and ("truck_1", "near", "tractor_1") not in found
+
+
+def test_things_that_line_a_shelf_stand_on_it_and_a_line_of_things_stays_a_formation():
+    found = rels("Glass jars holding pickled eggs line a shelf by the window.")
+    assert ("bottle_1", "on", "bookshelf_1") in found and ("bookshelf_1", "on", "bottle_1") not in found
+    assert not any(r[1] == "along" for r in rels("Three stalls stand in a line."))
