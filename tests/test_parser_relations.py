@@ -779,3 +779,8 @@ def test_things_that_line_a_shelf_stand_on_it_and_a_line_of_things_stays_a_forma
     found = rels("Glass jars holding pickled eggs line a shelf by the window.")
     assert ("bottle_1", "on", "bookshelf_1") in found and ("bookshelf_1", "on", "bottle_1") not in found
     assert not any(r[1] == "along" for r in rels("Three stalls stand in a line."))
+
+
+def test_in_the_middle_of_a_ground_cover_is_on_it():
+    found = rels("Two boys sit on a yoga mat with a lunchbox in the middle of it.")
+    assert ("lunchbox_1", "on", "yoga_mat_1") in found

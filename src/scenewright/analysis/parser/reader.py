@@ -1429,5 +1429,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if kind == "centre of":  # "a vase in the middle of the table", "a throne in the centre of the stage": on it
             if src.rests == "surface" and target.support:
                 return "on"
-            return "on" if self._platform(t, s) else "near"
+            # "a basket in the middle of the picnic blanket": a cover on the ground holds anything
+            cover = self.groups[t].rests == "ground" and self.groups[t].size[2] < 0.1
+            return "on" if cover or self._platform(t, s) else "near"
         return _KIND_RELATION.get(kind, kind)
