@@ -784,3 +784,8 @@ def test_things_that_line_a_shelf_stand_on_it_and_a_line_of_things_stays_a_forma
 def test_in_the_middle_of_a_ground_cover_is_on_it():
     found = rels("Two boys sit on a yoga mat with a lunchbox in the middle of it.")
     assert ("lunchbox_1", "on", "yoga_mat_1") in found
+
+
+def test_a_clause_that_opens_with_a_verb_goes_on_about_the_living_subject_before():
+    found = rels("The baker, in a white apron, pushes a tray into a big oven.")
+    assert ("baker_1", "near", "stove_1") in found

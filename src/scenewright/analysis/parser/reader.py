@@ -575,6 +575,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         starts_with_rel = j in self.rel_at
         # ", sipping coffee from a cup": a clause that opens with a participle is the subject's before
         participial = not c.first and k < ce and toks[k].text.endswith("ing") and k not in self.by_start
+        # "the baker, in a white apron, pushes a tray into the oven": a clause that opens with a
+        # verb goes on about the living subject before (what it acts on is its object)
+        if not c.first and not participial and k == cs and k < ce and k not in self.by_start and k not in self.rel_at:
+            if _is_verb(toks[k].text) and prev_subject and all(self._living(g) for g in prev_subject):
+                c.main = list(prev_subject)
         c.opens = c.first or (starts_with_rel and k > cs and self._subject_after(self.rel_at[j].end, ce))
         c.unknown_subject = j > k and toks[k].text in ("a", "an", "the") and j not in self.by_start and not starts_with_rel
         last_event_end = cs
