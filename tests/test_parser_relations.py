@@ -789,3 +789,8 @@ def test_in_the_middle_of_a_ground_cover_is_on_it():
 def test_a_clause_that_opens_with_a_verb_goes_on_about_the_living_subject_before():
     found = rels("The baker, in a white apron, pushes a tray into a big oven.")
     assert ("baker_1", "near", "stove_1") in found
+
+
+def test_a_thing_strapped_to_a_part_is_on_its_owner():
+    found = rels("A car with a bicycle strapped to its roof waits by the gate.")
+    assert ("bicycle_1", "on", "car_1") in found
