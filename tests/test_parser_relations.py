@@ -794,3 +794,9 @@ def test_a_clause_that_opens_with_a_verb_goes_on_about_the_living_subject_before
 def test_a_thing_strapped_to_a_part_is_on_its_owner():
     found = rels("A car with a bicycle strapped to its roof waits by the gate.")
     assert ("bicycle_1", "on", "car_1") in found
+
+
+def test_each_with_its_own_thing_in_front_of_it_and_a_bird_on_a_wrist():
+    found = rels("Four horses stand around a trough. Each horse has a bucket in front of it.")
+    assert {("bucket_1", "in front of", "horse_1"), ("bucket_4", "in front of", "horse_4")} <= found
+    assert ("bird_1", "on", "man_1") in rels("A man sits on a bench, a parrot on his wrist.")

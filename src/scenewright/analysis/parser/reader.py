@@ -1108,10 +1108,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         own = [t for s in who for t in c.supports.get(s, [])]
         targets: list[int] = list(c.head) if c.head is not None else self._pronoun(target, c, who + own, prefer, kind)
         # (a scarecrow or a mannequin has a person's shape but is "it")
-        if c.head is not None and all(self._living(h) and self.groups[h].category == "figure" or (
+        owner = c.head is not None and c.head == [c.each]
+        if c.head is not None and not owner and all(self._living(h) and self.groups[h].category == "figure" or (
             self._living(h) and self.catalogue[self.groups[h].category].shape != "figure"
         ) for h in c.head):  # fmt: skip
             # "a man on the bench, with his terrier asleep under it": "it" is no person
+            # ("each camel has a bucket in front of it": the camel, as "each" made it the owner)
             targets = self._pronoun(target, c, srcs, prefer, others=c.head)
         below = [r[2] for r in self.relations if c.head and r[1] in c.head and r[0] == "above"]
         if below and all(self.groups[h].rests == "hanging" for h in c.head) and not any(
