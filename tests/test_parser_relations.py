@@ -800,3 +800,9 @@ def test_each_with_its_own_thing_in_front_of_it_and_a_bird_on_a_wrist():
     found = rels("Four horses stand around a trough. Each horse has a bucket in front of it.")
     assert {("bucket_1", "in front of", "horse_1"), ("bucket_4", "in front of", "horse_4")} <= found
     assert ("bird_1", "on", "man_1") in rels("A man sits on a bench, a parrot on his wrist.")
+
+
+def test_a_load_rides_on_the_noun_right_before_laden_and_that_noun_is_placed():
+    found = rels("Two boys lead a donkey laden with sacks between the tents.")
+    assert ("sack_1", "on", "horse_1") in found and ("horse_1", "right of", "tent_1") in found
+    assert not any(r[0].startswith("sack") and r[2] == "boy_1" for r in found)

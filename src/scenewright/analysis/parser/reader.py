@@ -655,6 +655,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 ):  # "a baker stands behind the counter with a tray on it", "between a drum and a shelf with
                     # cups on it", "sits at a desk covered in monitors": the target's
                     c.head = list(c.last_target[-1:] if between else c.last_target)
+                # "two boys lead a donkey laden with sacks": the load is the noun's right before it
+                laden = [m.group for m in self.by_start.values() if m.end == k and m.group is not None]
+                if (w, nxt) in _HOLD_PAIRS and laden and laden[0] in c.groups:
+                    c.head = laden[:1]
                 c.wsub, c.expect_new = [], False
                 # "with his putter": a possessive after "with" says the person has it in hand
                 hand = hand or (w == "with" and mine and all(self._person_at(h) for h in c.head))
