@@ -753,3 +753,56 @@ def test_a_seat_behind_a_thing_places_the_sitter_beside_it_the_seat():
 def test_surface_things_along_a_shelf_or_counter_stand_on_it():
     found = rels("A row of glass jars lining a shelf stands by the door. A row of stools runs along the counter.")
     assert ("bottle_1", "on", "bookshelf_1") in found and ("stool_1", "side of", "counter_1") in found
+
+
+def test_an_animal_inside_it_is_in_the_container_named_before_not_the_last_target():
+    found = rels("A wire birdcage hangs from the ceiling above a writing desk, and a canary sleeps inside it.")
+    assert ("canary_1", "on", "wire_birdcage_1") in found and ("canary_1", "on", "desk_1") not in found
+    found = rels("A basket stands beside the sofa, and a cat naps in it.")
+    assert ("cat_1", "on", "basket_1") in found
+    # "on it" still names the grounded thing below
+    assert ("cat_1", "on", "table_1") in rels("A lamp hangs above the table, and a cat naps on it.")
+
+
+def test_while_after_a_with_part_opens_a_clause_of_its_own():
+    found = rels("The woman walks behind the cows with a clipboard, while her son carries a bucket towards the barn.")
+    assert {("clipboard_1", "on", "woman_1"), ("bucket_1", "on", "son_1")} <= found
+    assert ("bucket_1", "on", "woman_1") not in found
+
+
+def test_it_after_towards_can_name_what_was_headed_for_and_under_it_names_a_taller_thing():
+    found = rels("A red tractor drives towards a big crane, and a lorry waits under it.")
+    assert ("truck_1", "near", "crane_1") in found and ("truck_1", "near", "tractor_1") not in found
+
+
+def test_things_that_line_a_shelf_stand_on_it_and_a_line_of_things_stays_a_formation():
+    found = rels("Glass jars holding pickled eggs line a shelf by the window.")
+    assert ("bottle_1", "on", "bookshelf_1") in found and ("bookshelf_1", "on", "bottle_1") not in found
+    assert not any(r[1] == "along" for r in rels("Three stalls stand in a line."))
+
+
+def test_in_the_middle_of_a_ground_cover_is_on_it():
+    found = rels("Two boys sit on a yoga mat with a lunchbox in the middle of it.")
+    assert ("lunchbox_1", "on", "yoga_mat_1") in found
+
+
+def test_a_clause_that_opens_with_a_verb_goes_on_about_the_living_subject_before():
+    found = rels("The baker, in a white apron, pushes a tray into a big oven.")
+    assert ("baker_1", "near", "stove_1") in found
+
+
+def test_a_thing_strapped_to_a_part_is_on_its_owner():
+    found = rels("A car with a bicycle strapped to its roof waits by the gate.")
+    assert ("bicycle_1", "on", "car_1") in found
+
+
+def test_each_with_its_own_thing_in_front_of_it_and_a_bird_on_a_wrist():
+    found = rels("Four horses stand around a trough. Each horse has a bucket in front of it.")
+    assert {("bucket_1", "in front of", "horse_1"), ("bucket_4", "in front of", "horse_4")} <= found
+    assert ("bird_1", "on", "man_1") in rels("A man sits on a bench, a parrot on his wrist.")
+
+
+def test_a_load_rides_on_the_noun_right_before_laden_and_that_noun_is_placed():
+    found = rels("Two boys lead a donkey laden with sacks between the tents.")
+    assert ("sack_1", "on", "horse_1") in found and ("horse_1", "right of", "tent_1") in found
+    assert not any(r[0].startswith("sack") and r[2] == "boy_1" for r in found)

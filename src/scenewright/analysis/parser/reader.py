@@ -501,7 +501,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             places = any(k in self.rel_at for k in range(cs, ce))
             # "a counter with combs, scissors and a jar runs beneath the mirror": the list goes on
             goes_on = bool(out) and self._open_with(*out[-1]) and cs not in self.rel_at
+            # ("with a clipboard, while her son carries a pail": "while" opens a clause of its own;
+            # "with two chairs, where a man sits" goes on about the with-part)
             goes_on = goes_on and self.toks[cs].text not in ("and", "or", "but", "then", "so")
+            goes_on = goes_on and self.toks[cs - 1].text not in _CLAUSE_WORDS - {"where"}
             # a bare list takes the next placing when "and" closes it ("a lamp, a laptop and a mug on
             # the desk"); a list of commas only is a list of separate things ("a desk, an armchair, a
             # globe on the desk": only the globe is on the desk)
@@ -572,6 +575,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         starts_with_rel = j in self.rel_at
         # ", sipping coffee from a cup": a clause that opens with a participle is the subject's before
         participial = not c.first and k < ce and toks[k].text.endswith("ing") and k not in self.by_start
+        # "the baker, in a white apron, pushes a tray into the oven": a clause that opens with a
+        # verb goes on about the living subject before (what it acts on is its object)
+        if not c.first and not participial and k == cs and k < ce and k not in self.by_start and k not in self.rel_at:
+            if _is_verb(toks[k].text) and prev_subject and all(self._living(g) for g in prev_subject):
+                c.main = list(prev_subject)
         c.opens = c.first or (starts_with_rel and k > cs and self._subject_after(self.rel_at[j].end, ce))
         c.unknown_subject = j > k and toks[k].text in ("a", "an", "the") and j not in self.by_start and not starts_with_rel
         last_event_end = cs
@@ -647,6 +655,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 ):  # "a baker stands behind the counter with a tray on it", "between a drum and a shelf with
                     # cups on it", "sits at a desk covered in monitors": the target's
                     c.head = list(c.last_target[-1:] if between else c.last_target)
+                # "two boys lead a donkey laden with sacks": the load is the noun's right before it
+                laden = [m.group for m in self.by_start.values() if m.end == k and m.group is not None]
+                if (w, nxt) in _HOLD_PAIRS and laden and laden[0] in c.groups:
+                    c.head = laden[:1]
                 c.wsub, c.expect_new = [], False
                 # "with his putter": a possessive after "with" says the person has it in hand
                 hand = hand or (w == "with" and mine and all(self._person_at(h) for h in c.head))
@@ -995,6 +1007,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             c.head, c.wsub, c.expect_new = None, [], True
             return end
         if kind == "no relation" or (kind == "stack" and end < ce and toks[end].text == "with"):
+            if toward and isinstance(p.target, list):  # named all the same: "..., and a truck waits under it"
+                c.groups.extend(g for g in p.target if g not in c.groups)
             return end  # "a shelf stacked with books": contents, no stack
         if kind in _FORMATIONS or kind.startswith("anchor ") or (p.target is None and kind in _PLACE_KINDS):
             # "three stalls stand in a row", "a sofa against the wall", "a rug in the middle of the room"
@@ -1098,10 +1112,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         own = [t for s in who for t in c.supports.get(s, [])]
         targets: list[int] = list(c.head) if c.head is not None else self._pronoun(target, c, who + own, prefer, kind)
         # (a scarecrow or a mannequin has a person's shape but is "it")
-        if c.head is not None and all(self._living(h) and self.groups[h].category == "figure" or (
+        owner = c.head is not None and c.head == [c.each]
+        if c.head is not None and not owner and all(self._living(h) and self.groups[h].category == "figure" or (
             self._living(h) and self.catalogue[self.groups[h].category].shape != "figure"
         ) for h in c.head):  # fmt: skip
             # "a man on the bench, with his terrier asleep under it": "it" is no person
+            # ("each camel has a bucket in front of it": the camel, as "each" made it the owner)
             targets = self._pronoun(target, c, srcs, prefer, others=c.head)
         below = [r[2] for r in self.relations if c.head and r[1] in c.head and r[0] == "above"]
         if below and all(self.groups[h].rests == "hanging" for h in c.head) and not any(
@@ -1120,7 +1136,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         candidates = [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)]
         targets = self._part_owner(part, targets, candidates, srcs)
         if c.head is None and target in ("it", "them") and part is None and kind in ("in", "on", "from"):
-            targets = self._seat(c, srcs, prefer, rel.start, target == "them") or targets
+            targets = self._seat(c, srcs, prefer, rel.start, target == "them", kind == "in") or targets
         return self._peer(kind, srcs, targets, c)
 
     def _reversed_phrase(self, c: _Clause, p: _Phrase, prev_subject) -> int | None:
@@ -1424,5 +1440,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if kind == "centre of":  # "a vase in the middle of the table", "a throne in the centre of the stage": on it
             if src.rests == "surface" and target.support:
                 return "on"
-            return "on" if self._platform(t, s) else "near"
+            # "a basket in the middle of the picnic blanket": a cover on the ground holds anything
+            cover = self.groups[t].rests == "ground" and self.groups[t].size[2] < 0.1
+            return "on" if cover or self._platform(t, s) else "near"
         return _KIND_RELATION.get(kind, kind)

@@ -241,9 +241,15 @@ class _References:
         # what hangs or stands above "it" is above a thing first ("a bear stirs a pot on the stove,
         # and ladles hang from the ceiling above it": the stove)
         overhead = kind in ("above", "over")
+        # what stands "under it" is under something taller ("a tractor drives towards a crane, and
+        # a truck waits under it": the crane, not the tractor)
+        tallest = max((self.groups[g].size[2] for g in srcs), default=0.0) if kind == "under" else 0.0
 
         def kind_fits(g: int) -> bool:
-            return (not watcher or self._living(g)) and not (overhead and self._living(g))
+            return (
+                (not watcher or self._living(g)) and not (overhead and self._living(g))
+                and self.groups[g].size[2] > tallest
+            )  # fmt: skip
 
         for fits in (
             (lambda g: not aside(g) and g not in sat_on and kind_fits(g)),
@@ -273,18 +279,23 @@ class _References:
             return [t for t in targets if has(t)]  # "a bookcase and a piano ..., on its lid": the piano
         return next(([g] for g in candidates if g not in srcs and has(g)), targets)
 
-    def _seat(self, c: _Clause, srcs: list[int], prefer: list[int], pos: int, plural: bool = False) -> list[int]:
+    def _seat(
+        self, c: _Clause, srcs: list[int], prefer: list[int], pos: int, plural: bool = False, inside: bool = False
+    ) -> list[int]:
         """What a person or an animal who sits, lies or stands "in it" / "on it" is on: the
         nearest thing named in this sentence or the one before that can hold them, when the
         clause has a posture verb. A person's is a carrier ("a bookcase stands beside an
         armchair, and a sailor dozes in it": the armchair); an animal's anything standing on the
-        ground ("a lamp hangs above the table, and a cat naps on it": the table)."""
+        ground ("a lamp hangs above the table, and a cat naps on it": the table), but "in it" a
+        container first, hung or not ("a cage hangs above the desk, and a finch sleeps in it")."""
         if not srcs or not all(self._living(g) for g in srcs) or not self._verb_before(pos, self._posture):
             return []
-        holds = self._carrier if all(self._person_at(g) for g in srcs) else self._grounded
+        person = all(self._person_at(g) for g in srcs)
+        holds = self._carrier if person else self._grounded
         recent = [*prefer, *reversed(self.history[self._recent_from :]), *reversed(c.groups)]
-        fits = (g for g in recent if (self.groups[g].count > 1) == plural and g not in srcs)
-        return next(([g] for g in fits if holds(g) and not self._living(g)), [])
+        fits = [g for g in recent if (self.groups[g].count > 1) == plural and g not in srcs and not self._living(g)]
+        vessel = [g for g in fits if inside and not person and self._carrier(g, ("containers",), False)]
+        return vessel[:1] or next(([g] for g in fits if holds(g)), [])
 
     def _one_of(self, c: _Clause, srcs: list[int], prev_subject: list[int]) -> list[int]:
         """The group "the tallest one", "the nearest one" picks from: the subject of this clause

@@ -80,7 +80,7 @@ _FINITE = {"is", "are", "was", "were", "has", "have", "had", "stand", "sit", "li
 _ADVERBS = {"just", "right", "directly", "all", "both", "neatly", "slightly", "also", "then", "only", "far", "well"}
 _HOLD = {"holds", "hold", "holding", "carries", "carry", "carrying", "supports", "support", "supporting",
          "bears", "bearing", "displays", "displaying"}  # fmt: skip
-_HOLD_PAIRS = {("loaded", "with"), ("topped", "with"), ("set", "with"), ("laid", "with"), ("decorated", "with"),
+_HOLD_PAIRS = {("loaded", "with"), ("laden", "with"), ("topped", "with"), ("set", "with"), ("laid", "with"), ("decorated", "with"),
                ("piled", "with"), ("stacked", "with"), ("heaped", "with"), ("covered", "in"),
                ("covered", "with")}  # fmt: skip
 #: Verbs whose object a person has in hand ("waves a flag"): the thing is carried by its holder, as
