@@ -1088,6 +1088,8 @@ def _dfs(
     failures: dict[int, _Failure] = {}
     depth_of: dict[int, int] = {}
     jumps: Counter = Counter()
+    #: Objects left over among their twins: their failure, and the twins placed then.
+    left_over: dict[int, tuple[_Failure, list[int]]] = {}
     count = 0
     limited = False
     depth = 0
@@ -1105,6 +1107,17 @@ def _dfs(
         i = order[depth]
         node = nodes[depth]
         fallback = None  # a free pose that only failed forward checking
+        over = next((f for t, (f, held) in left_over.items()
+                     if t in failures and t in search.twins.get(i, ()) and search.placed[held].all()), None)
+        if node is None and over is not None:
+            # A twin was left over and every twin that filled the room is still there: so is this one.
+            failure = replace(over, failed=[c for c, _, _ in search.pairs(search.items[i])], nearest=None)
+            settled, used = search.settle(i, failure)
+            count += 1 + used // CHUNK
+            if settled is not None:
+                failures[i] = settled
+            depth += 1
+            continue
         if node is None:
             made = search.candidates(search.items[i])
             if isinstance(made, _Failure):
@@ -1147,7 +1160,8 @@ def _dfs(
             conflict, failure = node.conflict | search.ancestors({i}) - {i}, None
             conflict |= set(search.followers[i])
         culprits = {j for j in conflict if j in depth_of and search.placed[j]}
-        if node is not None and node.blockers and node.blockers.keys() <= search.twins.get(i, set()):
+        crowded = node is not None and node.blockers and node.blockers.keys() <= search.twins.get(i, set())
+        if crowded:
             # Only its twins are in the way: moving them (or what they stand against) only swaps
             # which of them is left over, so the search goes on without jumping back.
             culprits = set()
@@ -1156,6 +1170,8 @@ def _dfs(
                 place(i, node, fallback)
                 continue
             failure = failure or search.blocked(node, limited)
+            if crowded:
+                left_over[i] = (failure, [t for t in search.twins[i] if search.placed[t]])
             settled, used = search.settle(i, failure)
             count += 1 + used // CHUNK
             if settled is not None:
