@@ -431,3 +431,37 @@ def test_a_seat_goes_where_its_sitter_is_asked_to_be(far, side, seed):
     assert result.report.complete
     by = {o.id: o for o in result.objects}
     assert check("on", by["painter"], by["stool"]) and check(side, by["painter"], by["easel"])
+
+
+@settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(k=st.integers(4, 12), width=st.floats(0.5, 1.4), seed=st.integers(0, 1000))
+def test_more_twins_than_their_holder_holds_fill_it_without_spending_the_search(k, width, seed):
+    """k like jars on a sideboard that holds fewer: the ones left over collide only with their
+    twins, so the search does not jump back to shuffle them (which only swaps which is left over);
+    it fills the top, reports the rest, and stays far inside its node budget."""
+    from scenewright.layout.solver import NODES_PER_OBJECT
+
+    objects = [box("sideboard", size=(width, 0.4, 0.9))]
+    objects += [box(f"jar{j}", 2.0 + 0.4 * j, 2.0, size=(0.3, 0.3, 0.25)) for j in range(k)]
+    said = [c("on", f"jar{j}", "sideboard") for j in range(k)]
+    result = solve(objects, said, bounds=(8.0, 8.0), seed=seed)
+    assert not independent_collisions(result.objects, {}, result.constraints)
+    on_top = [x for x in result.report.placed if x != "sideboard"]
+    assert on_top and len(on_top) + len(result.report.unplaced) == k
+    assert not {u.id for u in audit(result.objects, result.constraints).report.unplaced} & set(on_top)
+    assert result.report.nodes < (NODES_PER_OBJECT * len(objects) + 1000) / 3
+
+
+def test_twins_are_like_leaves_with_the_same_constraints():
+    from scenewright.layout.solver import _Search
+    from scenewright.scene import Constraint
+
+    objects = [box("shelf", size=(2.0, 0.4, 1.0)), box("bench", 3.0, size=(2.0, 0.4, 1.0))]
+    objects += [box(f"cup{j}", size=(0.2, 0.2, 0.2)) for j in range(3)] + [box("mug", size=(0.2, 0.2, 0.3))]
+    objects += [box("odd", size=(0.2, 0.2, 0.2)), box("spoon", size=(0.1, 0.1, 0.1))]
+    said = [c("on", f"cup{j}", "shelf") for j in range(3)] + [c("on", "mug", "shelf"), c("on", "odd", "bench")]
+    said += [c("on", "cup2", "shelf"), c("on", "spoon", "cup0")]
+    search = _Search(objects, [Constraint(**x) for x in said], None, None, set(), 0)
+    twins = {search.objects[i].id: {search.objects[j].id for j in js} for i, js in search.twins.items()}
+    assert twins["cup1"] == set()  # cup0 holds a spoon, cup2 has another constraint; the mug is taller
+    assert twins["odd"] == set() and "cup0" not in twins and "shelf" not in twins

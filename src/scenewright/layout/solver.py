@@ -291,6 +291,7 @@ class _Search:
         for s in range(n):
             for t in sorted({t for _, t in own[s]}):
                 self.dependents[t].append(s)
+        self.twins = self._twins()
         #: Objects placed at their nearest miss, violating their constraints.
         self.missed: set[int] = set()
         #: (object, target, target's yaw) -> the object's constraints to that target if they
@@ -300,6 +301,21 @@ class _Search:
         self.followers: dict[int, list[int]] = {i: [] for i in range(n)}
         for i in self.fixed:
             self.put(i, self.pos[i], self.yaw[i])
+
+    def _twins(self) -> dict[int, set[int]]:
+        """Per free object nothing depends on, the others of its kind: the same shape, the same
+        yaws and the same constraints to the same targets ("a dozen ladles above the stove").
+        Twins swap places without changing anything, so one that collides only with its twins has
+        met the room its constraints leave, not a bad pose of theirs (:func:`_dfs`)."""
+        kinds: dict[tuple, set[int]] = {}
+        for i, item in self.items.items():
+            if i in self.fixed or self.dependents[i] or item.reverse:
+                continue
+            key = (tuple(self.world.local_half[i]), item.obj.rotation.tuple(), item.yaws,
+                   tuple(sorted((c.relation, t) for c, t in item.own)),
+                   tuple(sorted((c.relation, c.target) for c, _ in item.walls)))
+            kinds.setdefault(key, set()).add(i)
+        return {i: kind - {i} for kind in kinds.values() for i in kind}
 
     def _yaw_options(self, obj: SceneObject) -> tuple[float, ...]:
         """The model's yaw, then the axis yaws that give a different shape: a half turn of a plain
@@ -1072,6 +1088,8 @@ def _dfs(
     failures: dict[int, _Failure] = {}
     depth_of: dict[int, int] = {}
     jumps: Counter = Counter()
+    #: Objects left over among their twins: their failure, and the twins placed then.
+    left_over: dict[int, tuple[_Failure, list[int]]] = {}
     count = 0
     limited = False
     depth = 0
@@ -1089,6 +1107,17 @@ def _dfs(
         i = order[depth]
         node = nodes[depth]
         fallback = None  # a free pose that only failed forward checking
+        over = next((f for t, (f, held) in left_over.items()
+                     if t in failures and t in search.twins.get(i, ()) and search.placed[held].all()), None)
+        if node is None and over is not None:
+            # A twin was left over and every twin that filled the room is still there: so is this one.
+            failure = replace(over, failed=[c for c, _, _ in search.pairs(search.items[i])], nearest=None)
+            settled, used = search.settle(i, failure)
+            count += 1 + used // CHUNK
+            if settled is not None:
+                failures[i] = settled
+            depth += 1
+            continue
         if node is None:
             made = search.candidates(search.items[i])
             if isinstance(made, _Failure):
@@ -1131,11 +1160,18 @@ def _dfs(
             conflict, failure = node.conflict | search.ancestors({i}) - {i}, None
             conflict |= set(search.followers[i])
         culprits = {j for j in conflict if j in depth_of and search.placed[j]}
+        crowded = node is not None and node.blockers and node.blockers.keys() <= search.twins.get(i, set())
+        if crowded:
+            # Only its twins are in the way: moving them (or what they stand against) only swaps
+            # which of them is left over, so the search goes on without jumping back.
+            culprits = set()
         if limited or not culprits or jumps[i] >= MAX_JUMPS or search.downstream(search.items[i]):
             if fallback is not None:  # the dependents will report their own failure
                 place(i, node, fallback)
                 continue
             failure = failure or search.blocked(node, limited)
+            if crowded:
+                left_over[i] = (failure, [t for t in search.twins[i] if search.placed[t]])
             settled, used = search.settle(i, failure)
             count += 1 + used // CHUNK
             if settled is not None:
