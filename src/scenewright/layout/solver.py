@@ -1094,6 +1094,13 @@ def _dfs(
     limited = False
     depth = 0
 
+    def settle(i: int, failure) -> int:
+        """Leave ``i`` at its nearest miss, its failure recorded; the nodes that cost."""
+        settled, used = search.settle(i, failure)
+        if settled is not None:
+            failures[i] = settled
+        return 1 + used // CHUNK
+
     def place(i: int, node: _Node, k: int) -> None:
         nonlocal depth
         search.place_at(node, k)
@@ -1112,10 +1119,7 @@ def _dfs(
         if node is None and over is not None:
             # A twin was left over and every twin that filled the room is still there: so is this one.
             failure = replace(over, failed=[c for c, _, _ in search.pairs(search.items[i])], nearest=None)
-            settled, used = search.settle(i, failure)
-            count += 1 + used // CHUNK
-            if settled is not None:
-                failures[i] = settled
+            count += settle(i, failure)
             depth += 1
             continue
         if node is None:
@@ -1172,10 +1176,7 @@ def _dfs(
             failure = failure or search.blocked(node, limited)
             if crowded:
                 left_over[i] = (failure, [t for t in search.twins[i] if search.placed[t]])
-            settled, used = search.settle(i, failure)
-            count += 1 + used // CHUNK
-            if settled is not None:
-                failures[i] = settled
+            count += settle(i, failure)
             depth += 1
             continue
         # Backjump to the latest culprit; everything after it is undone and re-placed.
