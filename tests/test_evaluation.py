@@ -538,3 +538,20 @@ def test_bench_pipeline_scores_a_refused_text_as_an_empty_scene_and_goes_on(tmp_
     assert refused["objects"] == 0 and not refused["complete"] and refused["relations_realised"] == 0
     assert refused["relations_stated"] == 1 and refused["supports_right"] == 0
     assert done["complete"] and result["complete_layouts"] == 1
+
+
+def test_a_relation_and_its_inverse_score_as_the_same_fact_but_other_relations_keep_their_direction():
+    prompt = annotation(
+        {"farmer": 1, "goat": 1, "shed": 1, "cart": 1, "dog": 1},
+        [["farmer", "near", "goat"], ["cart", "left of", "shed"], ["dog", "on", "cart"], ["dog", "between", "farmer", "shed"]],
+    )
+    objects = [("f", None, "farmer"), ("g", None, "goat"), ("s", None, "shed"), ("c", "cart", "cart"), ("d", "dog", "dog")]
+    turned = score_objects(
+        prompt, objects, [("g", "near", "f"), ("s", "right of", "c"), ("c", "on", "d"), ("f", "left of", "d"), ("d", "left of", "s")]
+    )
+    assert (turned["relations_recalled"], turned["relations_expected"]) == (3, 4)
+    assert turned["missing_relations"] == ["dog | on | cart"]  # "on" has no inverse: the cart on the dog is wrong
+    assert turned["wrong_relations"] == ["cart | on | dog"]
+    assert (turned["relations_correct"], turned["relations_predicted"]) == (4, 5)
+    behind = score_objects(prompt, objects, [("s", "behind", "c")])  # an inverse of another side is no match
+    assert behind["relations_recalled"] == 0 and behind["wrong_relations"] == ["shed | behind | cart"]

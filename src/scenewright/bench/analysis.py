@@ -4,8 +4,11 @@ Each parsed object counts as the annotation key it matches (its category, or for
 outside the catalogue the key's words in its name, :func:`assign_keys`). Relations are compared
 at key level, as sets, and only the relations the parser read from the text count: the ones it
 inferred (a lamp put on a nightstand nobody mentioned it standing on) are reported separately.
-A *between* entry is recalled when the parser related the source to both targets, in whatever
-relations it chose; those relations are then correct, not wrong.
+A relation and its inverse are one spatial fact ("the farmer near the goat" is "the goat near
+the farmer", "a cart left of the shed" is "the shed right of the cart": the same boxes, the same
+buffer), so each side is compared in one orientation. A *between* entry is recalled when the
+parser related the source to both targets, in whatever relations it chose; those relations are
+then correct, not wrong.
 """
 
 from __future__ import annotations
@@ -15,9 +18,18 @@ from collections.abc import Iterable
 from pathlib import Path
 
 from scenewright.analysis.parser import parse_scene
+from scenewright.core.relations import INVERSE
 from scenewright.evaluation.annotations import Prompt, assign_keys, default_prompt_dir, load_prompts
 
 __all__ = ["Prompt", "default_prompt_dir", "load_prompts", "run_parse_bench", "score_objects", "score_prompt", "summarise"]
+
+
+def oriented(triple: tuple[str, str, str]) -> tuple[str, str, str]:
+    """One orientation of a relation and its inverse: the one whose source key sorts first."""
+    source, relation, target = triple
+    if relation in INVERSE and target < source:
+        return target, INVERSE[relation], source
+    return triple
 
 
 def score_objects(
@@ -34,12 +46,14 @@ def score_objects(
     found = sum(min(predicted.get(key, 0), lo) for key, (lo, _) in prompt.objects.items())
     right = sum(min(n, prompt.objects.get(key, (0, 0))[1]) for key, n in predicted.items())
     triples = {(label[s], r, label[t]) for s, r, t in relations if s in label and t in label}
-    hits = triples & prompt.relations
+    stated = {oriented(t) for t in prompt.relations}
+    hits = {t for t in triples if oriented(t) in stated}
+    recalled = {t for t in prompt.relations if oriented(t) in {oriented(p) for p in triples}}
     explained: set[tuple[str, str, str]] = set()
     between_hits = []
     for source, first, second in sorted(prompt.between):
-        to_first = {t for t in triples if t[0] == source and t[2] == first}
-        to_second = {t for t in triples if t[0] == source and t[2] == second}
+        to_first = {t for t in triples if {t[0], t[2]} == {source, first} and (t[0] == source or t[1] in INVERSE)}
+        to_second = {t for t in triples if {t[0], t[2]} == {source, second} and (t[0] == source or t[1] in INVERSE)}
         if to_first and to_second:
             between_hits.append((source, first, second))
             explained |= to_first | to_second
@@ -51,7 +65,7 @@ def score_objects(
         "objects_correct": right,
         "relations_expected": prompt.stated,
         "relations_predicted": len(triples),
-        "relations_recalled": len(hits) + len(between_hits),
+        "relations_recalled": len(recalled) + len(between_hits),
         "relations_correct": len(correct),
         "missing_objects": sorted(
             f"{key}×{lo - predicted.get(key, 0)}" for key, (lo, _) in prompt.objects.items() if predicted.get(key, 0) < lo
@@ -62,7 +76,7 @@ def score_objects(
             if n > prompt.objects.get(key, (0, 0))[1]
         ),
         "missing_relations": sorted(
-            [" | ".join(t) for t in prompt.relations - triples]
+            [" | ".join(t) for t in prompt.relations - recalled]
             + [f"{s} | between | {a} | {b}" for s, a, b in prompt.between if (s, a, b) not in between_hits]
         ),
         "wrong_relations": sorted(" | ".join(t) for t in triples - correct),
