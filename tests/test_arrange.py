@@ -319,3 +319,16 @@ def test_a_seat_that_faces_something_else_keeps_it():
     parsed = _scene("armchair", "fireplace", "tv", relations=[
         ("armchair_1", "near", "fireplace_1", False), ("armchair_1", "face to", "tv_1", False)])
     assert ("armchair_1", "face to", "fireplace_1") not in {(r.source, r.relation, r.target) for r in compose(parsed).relations}
+
+
+def test_a_stack_taller_than_one_can_reach_stands_in_columns_side_by_side():
+    parsed = parse_scene("A cellar. Eight oak barrels are stacked against the far wall.")
+    made = compose(parsed)
+    o = _by_id(made.objects)
+    barrels = [v for v in made.objects if v.category == "barrel"]
+    assert len(barrels) == 8 and max(b.position.z + b.size.z / 2 for b in barrels) <= 2.0 + 1e-6
+    feet = [b for b in barrels if b.position.z - b.size.z / 2 < 1e-3]
+    assert 1 < len(feet) < len(barrels)  # a pile: several columns, each more than one high
+    for r in made.relations:
+        if r.source in o and r.target in o:
+            assert rel.check(r.relation, o[r.source], o[r.target]), r

@@ -24,6 +24,9 @@ from scenewright.geometry import front_direction, yaw_towards
 
 #: Room between the rows of a formation: a seat's legroom, a walkway between stalls.
 ROW_GAP = 0.6
+#: The highest a stack is piled (m): what one can reach the top of. Taller ones stand in columns
+#: side by side ("a dozen barrels stacked against the wall" is a pile, not a tower to the rafters).
+STACK_REACH = 2.0
 #: The smallest ring: four stools "in a circle" still leave a middle to sit round.
 RING_RADIUS = 1.0
 
@@ -38,11 +41,18 @@ def members(objects: list[ParsedObject]) -> dict[int, list[ParsedObject]]:
 
 
 def stack_relations(objects: list[ParsedObject]) -> list[ParsedRelation]:
-    """"Three crates stacked": each member on the one below it."""
+    """"Three crates stacked": each member on the one below it, in columns no higher than
+    :data:`STACK_REACH`, each column's foot beside the one before."""
     out: list[ParsedRelation] = []
     for objs in members(objects).values():
         if objs[0].formation == "stack":
-            out += [ParsedRelation(objs[i].id, "on", objs[i - 1].id, inferred=True) for i in range(1, len(objs))]
+            high = max(1, int(STACK_REACH / max(objs[0].size[2], 1e-3)))
+            out += [
+                ParsedRelation(objs[i].id, "on", objs[i - 1].id, inferred=True)
+                if i % high
+                else ParsedRelation(objs[i].id, "side of", objs[i - high].id, inferred=True)
+                for i in range(1, len(objs))
+            ]
     return out
 
 
