@@ -832,3 +832,8 @@ def test_a_bare_word_after_and_shares_the_article_of_the_thing_before():
 def test_an_audience_is_people_and_the_viewer_no_thing():
     assert objects("A singer stands on a stage facing the audience.")[("figure", "audience")] == 1
     assert names("A boy sits beside the window facing the viewer.") == {"boy"}
+
+
+def test_an_agent_noun_with_a_hand_tool_is_a_person():
+    assert objects("A fitter with a spanner kneels by the pipe.")[("figure", "fitter")] == 1
+    assert objects("A shredder with a steel hopper hums.")[("figure", "shredder")] == 0

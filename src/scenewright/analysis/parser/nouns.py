@@ -1292,7 +1292,7 @@ def _guess(toks: list[_Tok], head: int, before: list[_Tok]) -> Entry:
     fronted = _after_preposition(toks, head)  # "On the bank, an old woman grills ...": no apposition
     human = _does_what_people_do(toks, head + 1) or (_person_apposition(toks, head + 1) and not fronted)
     moody = any(t.text in vocabulary.moods for t in before)
-    acts = moody or _acts_as_person(toks, head + 1) or _dressed(toks, head + 1)
+    acts = moody or _acts_as_person(toks, head + 1) or _dressed(toks, head + 1) or _equipped(toks, head + 1)
     if entry.category == GENERIC or (human and entry.category == "machine"):
         entry = vocabulary.guess_agent(word, acts, human) or entry
     return entry
@@ -1344,6 +1344,22 @@ def _dressed(toks: list[_Tok], k: int) -> bool:
         if t.text in clothing or singular(t.text) in clothing:
             return True
         if not t.text[:1].isalpha() or t.text in _STOP and t.text not in _DETERMINERS:
+            return False
+    return False
+
+
+def _equipped(toks: list[_Tok], k: int) -> bool:
+    """A hand tool follows the noun ending at ``k`` after "with" ("a marshaller with a pair of
+    glowing batons", "a fitter with a spanner"): an agent noun with a tool is one who uses it."""
+    if k >= len(toks) or toks[k].text != "with":
+        return False
+    vocabulary = load_vocabulary()
+    for j in range(k + 1, min(k + 7, len(toks))):
+        w = toks[j].text
+        entry = vocabulary.match((w,))
+        if entry is not None or match_phrase((w,)) is not None:
+            return entry is not None and entry.category == "tool"
+        if not w[:1].isalpha() or w in _STOP and w not in _DETERMINERS and w != "of":
             return False
     return False
 
