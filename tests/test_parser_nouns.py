@@ -733,6 +733,7 @@ def test_a_definite_word_nobody_listed_that_a_thing_is_put_by_is_a_thing():
 def test_an_ing_word_before_a_word_nobody_listed_names_what_it_is_for():
     assert "splitting wedge" in names("A splitting wedge lies beside the stump.")
     assert "zorb" in names("A glowing zorb hums by the door.")
+    assert "axe" in names("Two dwarf statues holding axes flank the gate.")  # a participle of the noun before
 
 
 def test_a_bare_noun_right_after_a_verb_of_cooking_is_the_food():

@@ -221,7 +221,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # "a chopping block", "a diving hut": before a lifeless word nobody listed, an -ing word no
         # list calls a describing word names what it is for ("laughing children" do it)
         gerund = m.guess is not None and last.endswith("ing") and last not in vocabulary.adjectives
-        gerund = gerund and not self._lives(m.category)
+        # (inside the phrase, not a participle after the noun before: "statues holding axes")
+        gerund = gerund and not self._lives(m.category) and _opens_phrase(self.toks, m.start - 1)
         if not kind and last and kind_here and (not vocabulary.is_adjective(last) or gerund) and (
             m.guess is not None or last not in vocabulary.not_things or likeness
         ):  # "a street musician", "a golf cart", "a taiko drum": the noun before names its kind
