@@ -838,3 +838,20 @@ def test_an_audience_is_people_and_the_viewer_no_thing():
 def test_an_agent_noun_with_a_hand_tool_is_a_person():
     assert objects("A fitter with a spanner kneels by the pipe.")[("figure", "fitter")] == 1
     assert objects("A shredder with a steel hopper hums.")[("figure", "shredder")] == 0
+
+
+def test_roles_everyone_knows_those_talked_to_and_the_dressed_are_people():
+    # "the" before a word never brought in, opening a clause with a deed: a role
+    assert objects("The sexton watches from the porch beside a yew.")[("figure", "sexton")] == 1
+    # whom someone talks to, chats with or waves at
+    assert objects("The abbess talks to a novice by the well.")[("figure", "novice")] == 1
+    # a word nobody listed in clothes
+    assert objects("A ronin in a straw hat waits at the gate.")[("figure", "ronin")] == 1
+    # a thing in a casing is no person; a thing after "the" that only stands is a thing
+    assert objects("A heater in a steel casing hums.")[("figure", "heater")] == 0
+    assert objects("The periscope rises in the middle.")[("figure", "periscope")] == 0
+
+
+def test_trees_nobody_had_listed_are_trees():
+    got = objects("A yew and a rowan shade the gate.")  # two subjects, one plural verb
+    assert got[("pine_tree", "yew")] == 1 and got[("tree", "rowan")] == 1

@@ -658,10 +658,12 @@ def _names_kind(toks: list[_Tok], e: int) -> bool:
     w = t.text
     if w in _PREPOSITIONS:
         return False  # "pushes a wheelchair past the chairs"
+    if not t.joined and _plural_verb(toks, e):
+        return False  # "two mechanics on a lift work on it", "a yew and a rowan shade the gate": a verb
     if t.joined or (w in load_vocabulary().not_things and singular(w) == w and w not in _FINITE):
         return True  # "camel-hair tents", "a bear face"
-    if w in _IRREGULAR_PARTICIPLES or _plural_verb(toks, e):
-        return False  # "a ferris wheel strung with bulbs": a participle, not a kind; "... work on it": a verb
+    if w in _IRREGULAR_PARTICIPLES:
+        return False  # "a ferris wheel strung with bulbs": a participle, not a kind
     return (
         w[:1].isalpha() and w not in _STOP and not _is_verb(w) and not w.endswith(("ed", "ing", "ly"))
         and not load_vocabulary().is_adjective(w) and w not in _DETERMINERS
@@ -1009,11 +1011,15 @@ def _plural_verb(toks: list[_Tok], j: int) -> bool:
     verbs = vocabulary.person_verbs | vocabulary.animal_verbs | _HANG_VERBS
     # a person verb, or any word that goes somewhere ("two knights in armour creep up the slope")
     verb = any(toks[j].text + ending in verbs for ending in ("s", "es")) or after in _MOTION_PARTICLES
-    if not (takes and verb) or singular(toks[j].text) != toks[j].text:
+    if not takes or singular(toks[j].text) != toks[j].text:
         return False
     k = j - 1  # back over the phrase to its preposition: the subject stands before it
     while k > 0 and toks[k].text[:1].isalpha() and (toks[k].text in _DETERMINERS or toks[k].text not in _STOP):
         k -= 1
+    if toks[k].text == "and" and k > 0 and toks[k - 1].text[:1].isalpha() and toks[k - 1].text not in _STOP:
+        return True  # "a yew and a rowan shade the gate": two subjects, one plural verb
+    if not verb:
+        return False
     subject = toks[k - 1].text if k > 0 and (toks[k].text in _PARTICLES or toks[k].text in ("in", "of", "near")) else ""
     return subject[:1].isalpha() and vocabulary.singular(subject) != subject
 
@@ -1291,8 +1297,9 @@ def _guess(toks: list[_Tok], head: int, before: list[_Tok]) -> Entry:
         return entry
     fronted = _after_preposition(toks, head)  # "On the bank, an old woman grills ...": no apposition
     human = _does_what_people_do(toks, head + 1) or (_person_apposition(toks, head + 1) and not fronted)
+    human = human or _dressed(toks, head + 1) or _role_subject(toks, head) or _addressed(toks, head)
     moody = any(t.text in vocabulary.moods for t in before)
-    acts = moody or _acts_as_person(toks, head + 1) or _dressed(toks, head + 1) or _equipped(toks, head + 1)
+    acts = moody or _acts_as_person(toks, head + 1) or _equipped(toks, head + 1)
     if entry.category == GENERIC or (human and entry.category == "machine"):
         entry = vocabulary.guess_agent(word, acts, human) or entry
     return entry
@@ -1346,6 +1353,41 @@ def _dressed(toks: list[_Tok], k: int) -> bool:
         if not t.text[:1].isalpha() or t.text in _STOP and t.text not in _DETERMINERS:
             return False
     return False
+
+
+def _phrase_opener(toks: list[_Tok], head: int) -> int:
+    """Where the noun phrase of ``head`` opens: the determiner or count before its describing words."""
+    j = head - 1
+    while j >= 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+        j -= 1
+    return j
+
+
+def _role_subject(toks: list[_Tok], head: int) -> bool:
+    """"The sexton watches from the porch": a word nobody listed, named with "the" though never
+    brought in, opens a sentence or a clause and does what people (or animals) do — a role
+    everyone knows, a person."""
+    j = _phrase_opener(toks, head)
+    if j < 0 or toks[j].text != "the" or j > 0 and toks[j - 1].text not in (".", "!", "?", ";", ":", ","):
+        return False
+    found = _verb_after(toks, head + 1)
+    return found is not None and found[0] in load_vocabulary().person_verbs
+
+
+#: Verbs of talking and greeting: whom they are done to or with is a person ("talks to a novice").
+_SOCIAL_VERBS = {"talk", "talks", "talking", "chat", "chats", "chatting", "speak", "speaks", "speaking", "argue",
+                 "argues", "arguing", "haggle", "haggles", "haggling", "bargain", "bargains", "bargaining",
+                 "whisper", "whispers", "whispering", "wave", "waves", "waving", "smile", "smiles", "smiling",
+                 "nod", "nods", "nodding", "listen", "listens", "listening", "gossip", "gossips", "gossiping",
+                 "quarrel", "quarrels", "quarrelling", "bow", "bows", "bowing", "beckon", "beckons", "beckoning",
+                 "flirt", "flirts", "flirting", "plead", "pleads", "pleading", "converse", "converses"}  # fmt: skip
+
+
+def _addressed(toks: list[_Tok], head: int) -> bool:
+    """The word at ``head`` is whom someone talks to, chats with, waves at ("the abbess talks to
+    a novice by the well"): a person."""
+    j = _phrase_opener(toks, head)
+    return j >= 2 and toks[j - 1].text in ("to", "with", "at") and toks[j - 2].text in _SOCIAL_VERBS
 
 
 def _equipped(toks: list[_Tok], k: int) -> bool:
