@@ -855,3 +855,9 @@ def test_roles_everyone_knows_those_talked_to_and_the_dressed_are_people():
 def test_trees_nobody_had_listed_are_trees():
     got = objects("A yew and a rowan shade the gate.")  # two subjects, one plural verb
     assert got[("pine_tree", "yew")] == 1 and got[("tree", "rowan")] == 1
+
+
+def test_a_bare_plural_after_a_comma_with_an_object_after_it_is_a_verb():
+    got = objects("The farrier, a broad woman in an apron, shoes a grey mare.")
+    assert not any(w == "shoe" for _, w in got) and got[("figure", "farrier")] == 1
+    assert sum(n for (_, w), n in objects("Old shoes hang from the rafters.").items() if w == "shoe") == 3

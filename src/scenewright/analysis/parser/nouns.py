@@ -260,6 +260,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         )  # fmt: skip
         if entry is not None and (verb_before or (k > 0 and raw[k - 1][1] == s and not kind)):
             continue  # "two robots stand guard", "fox statues guard the path": a verb here
+        if _bare_plural_verb(toks, s, e) and not kind:
+            continue  # "the farrier, a broad woman, shoes a grey mare": a verb taking its object
         if entry is None and k > 0 and raw[k - 1][1] == s and _plural_subject_before(toks, raw[k - 1], e):
             continue  # "two kids fish from the pier", "the children swing on the gate": a verb here
         follow = toks[e].text if e < n else ""
@@ -980,6 +982,19 @@ def _shares_article(toks: list[_Tok], i: int, covered: set[int]) -> bool:
     after = toks[i + 2].text
     word = toks[i + 1].text
     return singular(word) == word and (not after[:1].isalpha() or after in _STOP or _is_verb(after))
+
+
+def _bare_plural_verb(toks: list[_Tok], s: int, e: int) -> bool:
+    """A one-word plural with nothing of a noun phrase before it (no determiner, count or
+    describing word) and an object right after it is a verb: "..., shoes a grey mare", "...,
+    hammers the nails"; "two shoes lie there", "old shoes hang" are things."""
+    if e - s != 1 or e >= len(toks) or toks[e].text not in _OBJECT_OPENERS or toks[e].text in _NUMBERS:
+        return False
+    word = toks[s].text
+    if singular(word) == word or s == 0:
+        return False
+    before = toks[s - 1].text
+    return before in (",", ";", "and", "who", "that", "which")
 
 
 def _listed_adjective(toks: list[_Tok], k: int) -> bool:
