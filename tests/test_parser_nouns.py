@@ -861,3 +861,19 @@ def test_a_bare_plural_after_a_comma_with_an_object_after_it_is_a_verb():
     got = objects("The farrier, a broad woman in an apron, shoes a grey mare.")
     assert not any(w == "shoe" for _, w in got) and got[("figure", "farrier")] == 1
     assert sum(n for (_, w), n in objects("Old shoes hang from the rafters.").items() if w == "shoe") == 3
+
+
+def test_an_apposition_then_a_bare_plural_and_its_object_is_a_verb():
+    got = objects("The quartermaster, a wiry android, counts canisters by the gate.")
+    assert not any(w == "count" for _, w in got)
+    assert sum(n for (_, w), n in objects("A few cacti and tumbleweeds dot the sand.").items() if w == "tumbleweed") >= 2
+
+
+def test_a_person_word_before_a_capitalised_name_names_that_person():
+    got = objects("A cat sleeps by the oven. Brother Anselm kneads dough at the table.")
+    assert got[("figure", "anselm")] == 1
+
+
+def test_tabby_and_deeds_of_the_kitchen():
+    got = objects("A novice stirs porridge, and a tabby sleeps on the hearth.")
+    assert got[("figure", "novice")] == 1 and got[("cat", "tabby")] == 1

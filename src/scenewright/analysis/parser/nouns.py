@@ -988,13 +988,20 @@ def _bare_plural_verb(toks: list[_Tok], s: int, e: int) -> bool:
     """A one-word plural with nothing of a noun phrase before it (no determiner, count or
     describing word) and an object right after it is a verb: "..., shoes a grey mare", "...,
     hammers the nails"; "two shoes lie there", "old shoes hang" are things."""
-    if e - s != 1 or e >= len(toks) or toks[e].text not in _OBJECT_OPENERS or toks[e].text in _NUMBERS:
+    if e - s != 1 or e >= len(toks):
         return False
     word = toks[s].text
-    if singular(word) == word or s == 0:
+    if singular(word) == word or s == 0 or toks[s - 1].text not in (",", ";", "and", "who", "that", "which"):
         return False
-    before = toks[s - 1].text
-    return before in (",", ";", "and", "who", "that", "which")
+    after = toks[e].text
+    if after in _OBJECT_OPENERS:
+        return after not in _NUMBERS
+    # "the quartermaster, an android, counts canisters by the gate": after an apposition's comma, a
+    # bare noun that ends no list ("hats, shoes and bags"; "cacti and tumbleweeds dot the sand")
+    two = toks[e + 1].text if e + 1 < len(toks) else "."
+    return toks[s - 1].text == "," and after[:1].isalpha() and after not in _STOP and not toks[e].joined and (
+        two not in (",", "and", "or")
+    )
 
 
 def _listed_adjective(toks: list[_Tok], k: int) -> bool:
@@ -1274,7 +1281,7 @@ def _unknown_heads(toks: list[_Tok], raw: list, covered: set[int]) -> list:
     "a wheel gun", "a horse trough"): the unknown noun is the thing, the known one its modifier."""
     vocabulary = load_vocabulary()
     out = []
-    for s, e, _, _ in raw:
+    for s, e, category, _ in raw:
         k = e
         if e - s != 1 or k >= len(toks) or k in covered or toks[k].quoted or toks[k].joined or toks[s].joined:
             continue
@@ -1295,6 +1302,8 @@ def _unknown_heads(toks: list[_Tok], raw: list, covered: set[int]) -> list:
         if k + 1 not in covered and after[:1].isalpha() and after not in _STOP and not _is_verb(after):
             continue  # a longer phrase than two nouns: left to the other rules
         entry = _guess(toks, k, toks[max(s - 3, 0) : k])
+        if toks[k].orig[:1].isupper() and load_catalogue()[category].shape == "figure":
+            entry = vocabulary.guess_agent(word, False, human=True) or entry  # "Brother Anselm", "Captain Okafor"
         out.append((k, k + 1, entry.category, entry))
         covered.add(k)
     return out
