@@ -877,3 +877,8 @@ def test_a_person_word_before_a_capitalised_name_names_that_person():
 def test_tabby_and_deeds_of_the_kitchen():
     got = objects("A novice stirs porridge, and a tabby sleeps on the hearth.")
     assert got[("figure", "novice")] == 1 and got[("cat", "tabby")] == 1
+
+
+def test_a_group_of_a_number_counts_its_members_and_the_plural_after_is_a_verb():
+    got = objects("A family of four shelters under the awning of the kiosk.")
+    assert got[("figure", "family")] == 1 and not any(w == "shelter" for _, w in got)

@@ -898,6 +898,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         ) or _shares_article(toks, i, covered)
         if not counter or w == "one" and i + 1 < n and toks[i + 1].text in ("of", "another", "other"):
             continue
+        if w in _NUMBERS and i > 1 and toks[i - 1].text == "of" and toks[i - 2].text in _PEOPLE_GROUPS:
+            continue  # "a family of four shelters under the awning": how many, then the verb
         plural = w not in ("a", "an", "another", "one", "the", "and", *_OWNERS) and not (w.isdigit() and int(w) == 1)
         j = i + 1
         if w == "a" and j < n and toks[j].text in ("few", "couple", "pair", "dozen"):
@@ -1002,6 +1004,11 @@ def _bare_plural_verb(toks: list[_Tok], s: int, e: int) -> bool:
     return toks[s - 1].text == "," and after[:1].isalpha() and after not in _STOP and not toks[e].joined and (
         two not in (",", "and", "or")
     )
+
+
+#: Nouns of a group of people, whose "of four" counts its members ("a family of four").
+_PEOPLE_GROUPS = {"family", "couple", "crowd", "audience", "party", "group", "team", "crew", "band", "gang",
+                  "troupe", "class"}  # fmt: skip
 
 
 def _listed_adjective(toks: list[_Tok], k: int) -> bool:
