@@ -882,3 +882,11 @@ def test_tabby_and_deeds_of_the_kitchen():
 def test_a_group_of_a_number_counts_its_members_and_the_plural_after_is_a_verb():
     got = objects("A family of four shelters under the awning of the kiosk.")
     assert got[("figure", "family")] == 1 and not any(w == "shelter" for _, w in got)
+
+
+def test_a_line_after_the_noun_of_its_kind_is_the_thing_and_before_ends_a_phrase():
+    assert "washing line" in names("A washing line hangs between two poles.")
+    assert "plumb line" in names("A mason with a plumb line checks the wall.")
+    assert not any("before" in n for n in names("A siege camp before a castle. A soldier sharpens a sword."))
+    got = objects("A long line of carts waits by the gate.")
+    assert not any(w == "line" for _, w in got) and sum(n for (_, w), n in got.items() if w == "cart") >= 3

@@ -877,7 +877,7 @@ def later_before(later: list, toks: list[_Tok], e: int) -> bool:
 
 
 #: Measure words ("a coil of rope", "a stack of plates") that also name a thing of their own.
-_MEASURE_THINGS = {"coil", "coils", "ring", "stack", "stacks", "column", "string", "set"}
+_MEASURE_THINGS = {"coil", "coils", "ring", "stack", "stacks", "column", "string", "set", "line"}
 
 
 def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None]]) -> list:
@@ -914,7 +914,9 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
                 continue
             if j in covered or not x[:1].isalpha() or x in _STOP:
                 break
-            if j > i + 1 and not plural and (_is_verb(x) or _plural_verb(toks, j)):
+            # (a plural verb form cannot follow "a": "a washing line hangs" has no verb "line")
+            plural_form = x in _FINITE and not x.endswith("s") and w in ("a", "an", "another")
+            if j > i + 1 and not plural and (_is_verb(x) and not plural_form or _plural_verb(toks, j)):
                 break  # "a ladder stands", "two mechanics on a scissor lift work on its joint"
             if head is not None and x in _PLACE_ADVERBS:
                 break  # "a lantern hangs from a beam overhead": where, not a kind of beam
@@ -952,8 +954,9 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         # "five pairs of shoes", "a rack of coats": clothing counted out is not worn
         stock = w == "of" and word in vocabulary.clothing
         # "a tesla coil", "a drum set": a measure word after the noun of its kind is the thing itself
-        compound = word in _MEASURE_THINGS and head > i + 1 and not vocabulary.is_adjective(toks[head - 1].text)
-        if not (vocabulary.is_thing_word(word) or held or counted_place or stock) or (
+        kind = toks[head - 1].text  # ("a washing line": what it is for)
+        compound = word in _MEASURE_THINGS and head > i + 1 and (not vocabulary.is_adjective(kind) or kind.endswith("ing"))
+        if not (vocabulary.is_thing_word(word) or held or counted_place or stock or compound) or (
             word in _QUANTITY and not counted_place and not compound
         ) or (j < n and toks[j].text == "of"):
             continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"

@@ -30,7 +30,7 @@ _DEFINITE = {"the", "this", "that", "these", "those", "its", "their", "his", "he
 _PRONOUNS = {"it", "them", "itself", "themselves", "one"}
 #: Less common prepositions: they end a noun phrase and name no kind of the noun before ("a wheelchair past the door").
 _PREPOSITIONS = {"past", "beyond", "among", "amongst", "amid", "amidst", "via", "within", "without", "alongside",
-                 "during", "until", "despite", "except", "aboard", "astride"}  # fmt: skip
+                 "during", "until", "despite", "except", "aboard", "astride", "before"}  # fmt: skip
 #: Adverbs of place that may follow a noun ("a beam overhead", "a fish on the ice nearby"): no kind of it.
 _PLACE_ADVERBS = {"overhead", "nearby", "aloft", "upstairs", "downstairs", "ashore", "underfoot", "offshore",
                   "uphill", "downhill", "downstream", "upstream", "yonder"}  # fmt: skip
