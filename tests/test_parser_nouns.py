@@ -890,3 +890,9 @@ def test_a_line_after_the_noun_of_its_kind_is_the_thing_and_before_ends_a_phrase
     assert not any("before" in n for n in names("A siege camp before a castle. A soldier sharpens a sword."))
     got = objects("A long line of carts waits by the gate.")
     assert not any(w == "line" for _, w in got) and sum(n for (_, w), n in got.items() if w == "cart") >= 3
+
+
+def test_groups_of_people_and_words_of_the_shore_and_the_door():
+    got = objects("A choir of monks sings beside the altar, facing the congregation.")
+    assert got[("figure", "monk")] == 3 and not got[("figure", "choir")] and got[("figure", "congregation")] == 1
+    assert names("A cat sits beside the threshold, facing the tide.") == {"cat"}

@@ -186,9 +186,11 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             if longer is not None:
                 i = longer
                 continue
-        if found and found[0] - i == 1 and toks[i].text in _QUANTITY and found[0] < n and toks[found[0]].text == "of":
-            i += 1  # "a crowd of fans", "a couple of crates": a count, not the crowd or the couple
-            continue
+        of = found is not None and found[0] - i == 1 and found[0] + 1 < n and toks[found[0]].text == "of"
+        members = toks[i].text in _PEOPLE_GROUPS and toks[found[0] + 1].text not in _NUMBERS if of else False
+        if of and (toks[i].text in _QUANTITY and toks[i].text not in _PEOPLE_GROUPS or members):
+            i += 1  # "a crowd of fans", "a couple of crates", "a choir of monks": a count, not the crowd
+            continue  # ("a family of four" is the family)
         if found:
             raw.append((i, *found))
             i = found[0]
@@ -1011,7 +1013,7 @@ def _bare_plural_verb(toks: list[_Tok], s: int, e: int) -> bool:
 
 #: Nouns of a group of people, whose "of four" counts its members ("a family of four").
 _PEOPLE_GROUPS = {"family", "couple", "crowd", "audience", "party", "group", "team", "crew", "band", "gang",
-                  "troupe", "class"}  # fmt: skip
+                  "troupe", "class", "congregation", "choir", "orchestra", "mob", "entourage", "retinue"}  # fmt: skip
 
 
 def _listed_adjective(toks: list[_Tok], k: int) -> bool:
