@@ -896,3 +896,9 @@ def test_groups_of_people_and_words_of_the_shore_and_the_door():
     got = objects("A choir of monks sings beside the altar, facing the congregation.")
     assert got[("figure", "monk")] == 3 and not got[("figure", "choir")] and got[("figure", "congregation")] == 1
     assert names("A cat sits beside the threshold, facing the tide.") == {"cat"}
+
+
+def test_an_enclosing_guess_heading_the_verbless_opening_is_the_setting():
+    parsed = parse_scene("A geodesic dome on a frozen lake at dawn. A goat grazes by a stethoscope.")
+    assert [o.name for o in parsed.objects] == ["goat", "stethoscope"]
+    assert parsed.objects[1].category == "tool"

@@ -280,7 +280,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a throne hall", "a farmhouse kitchen", "a rocket launch site": the place, not the thing
         if _place_name(toks, s):
             continue  # "a dig on a hillside in southern Turkey": a country, not a bird
-        if entry is not None and entry.category == GENERIC and _unknown_opening_place(toks, s, e):
+        if entry is not None and entry.category in (GENERIC, *_ENCLOSING) and _unknown_opening_place(toks, s, e):
             places.append(" ".join(words))
             continue  # "An art nouveau perfumery, all brass and glass.": a word nobody listed names the setting
         if (places or opening_place) and _whereabouts_of_setting(toks, s):
