@@ -902,3 +902,8 @@ def test_an_enclosing_guess_heading_the_verbless_opening_is_the_setting():
     parsed = parse_scene("A geodesic dome on a frozen lake at dawn. A goat grazes by a stethoscope.")
     assert [o.name for o in parsed.objects] == ["goat", "stethoscope"]
     assert parsed.objects[1].category == "tool"
+
+
+def test_boats_nobody_had_listed_and_a_crossing_that_sets_the_scene():
+    got = objects("A river ferry crossing at dawn. Children splash beside a moored sampan near a coracle.")
+    assert got[("boat", "sampan")] == 1 and got[("boat", "coracle")] == 1 and not got[("boat", "ferry")]
