@@ -907,3 +907,15 @@ def test_an_enclosing_guess_heading_the_verbless_opening_is_the_setting():
 def test_boats_nobody_had_listed_and_a_crossing_that_sets_the_scene():
     got = objects("A river ferry crossing at dawn. Children splash beside a moored sampan near a coracle.")
     assert got[("boat", "sampan")] == 1 and got[("boat", "coracle")] == 1 and not got[("boat", "ferry")]
+
+
+def test_a_role_the_catalogue_files_as_a_thing_renamed_as_a_person_is_that_person():
+    got = objects("The coach, a red-faced man in a parka, shouts from the bench.")
+    assert got[("figure", "coach")] == 1 and not got[("figure", "man")] and not got[("bus", "coach")]
+    got = objects("Across from the press, a customer waits on a bench.")  # a fronted place phrase
+    assert got[("figure", "customer")] == 1
+
+
+def test_teams_and_players_of_things():
+    got = objects("Two teams skate after the puck, and a snake charmer plays a pungi beside a basket.")
+    assert got[("figure", "team")] == 2 and got[("figure", "charmer")] == 1 and got[("tool", "pungi")] == 1

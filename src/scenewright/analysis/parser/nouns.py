@@ -1561,6 +1561,14 @@ def _mark_appositions(toks: list[_Tok], mentions: list[_Mention]) -> None:
             if renamed and kinds[-1].end < len(toks) and toks[kinds[-1].end].text == ",":
                 for x in kinds:
                     x.content = True
+        elif later and _person_mention(later[0]) and not _person_mention(m) and not _is_plural(toks, m) and (
+            m.end - m.start == 1 and m.start > 0 and toks[m.start - 1].text == "the"
+            and not _after_preposition(toks, m.start) and _renames(toks, m.end, later[0].start)
+        ):  # fmt: skip  (not "Across from the press, a customer waits": a fronted place phrase)
+            # "the coach, a red-faced man": a word the catalogue files as a thing, renamed as a person,
+            # names that person's role
+            m.category, m.guess = "figure", load_vocabulary().guess_agent(toks[m.start].text, False, human=True)
+            later[0].content = True
         elif _person_mention(m) and later and _person_mention(later[0]) and _renames(toks, m.end, later[0].start):
             # the role is the name ("the keeper, an old woman", "the owner, a bearded man"); a word
             # that only says whose ("its owner, a girl in goggles") gives way to the person
