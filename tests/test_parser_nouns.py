@@ -919,3 +919,12 @@ def test_a_role_the_catalogue_files_as_a_thing_renamed_as_a_person_is_that_perso
 def test_teams_and_players_of_things():
     got = objects("Two teams skate after the puck, and a snake charmer plays a pungi beside a basket.")
     assert got[("figure", "team")] == 2 and got[("figure", "charmer")] == 1 and got[("tool", "pungi")] == 1
+
+
+def test_a_number_hyphened_to_a_word_counts_nothing():
+    got = objects("A six-wheeled rover idles at the foot of the conveyor.")
+    assert sum(n for (_, w), n in got.items() if w == "rover") == 1 and not any(w == "idle" for _, w in got)
+
+
+def test_hair_and_paperwork_are_no_things():
+    assert names("The vet, a young woman with a ponytail, fills in a form.") == {"vet"}

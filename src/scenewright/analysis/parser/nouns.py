@@ -155,9 +155,9 @@ def _counted_plural(toks: list[_Tok], i: int) -> bool:
     j = i - 1
     while j >= 0 and i - j <= 3:
         w = toks[j].text
-        if w in _NUMBERS or w in _VAGUE or w.isdigit():
-            return w not in ("one", "single", "1")
-        if w in _STOP or not w[:1].isalpha():
+        if (w in _NUMBERS or w in _VAGUE or w.isdigit()) and not toks[j + 1].joined:
+            return w not in ("one", "single", "1")  # ("a six-wheeled rover": no count)
+        if w in _STOP and not toks[j + 1].joined or not w[:1].isalnum():
             return False
         j -= 1
     return False
@@ -900,6 +900,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         ) or _shares_article(toks, i, covered)
         if not counter or w == "one" and i + 1 < n and toks[i + 1].text in ("of", "another", "other"):
             continue
+        if i + 1 < n and toks[i + 1].joined and w not in ("a", "an", "another", "the", *_OWNERS):
+            continue  # "a six-wheeled rover": a number hyphened to a word describes, counts nothing
         if w in _NUMBERS and i > 1 and toks[i - 1].text == "of" and toks[i - 2].text in _PEOPLE_GROUPS:
             continue  # "a family of four shelters under the awning": how many, then the verb
         plural = w not in ("a", "an", "another", "one", "the", "and", *_OWNERS) and not (w.isdigit() and int(w) == 1)
