@@ -928,3 +928,9 @@ def test_a_number_hyphened_to_a_word_counts_nothing():
 
 def test_hair_and_paperwork_are_no_things():
     assert names("The vet, a young woman with a ponytail, fills in a form.") == {"vet"}
+
+
+def test_a_tower_of_small_things_is_a_stack_of_them_the_tower_of_a_castle_a_tower():
+    got = objects("A toddler builds a tower of wooden cubes beside the sofa.")
+    assert not any(c == "tower" for c, _ in got)
+    assert objects("A raven sits on the tower of the castle.")[("tower", "tower")] == 1

@@ -188,7 +188,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
                 continue
         of = found is not None and found[0] - i == 1 and found[0] + 1 < n and toks[found[0]].text == "of"
         members = toks[i].text in _PEOPLE_GROUPS and toks[found[0] + 1].text not in _NUMBERS if of else False
-        if of and (toks[i].text in _QUANTITY and toks[i].text not in _PEOPLE_GROUPS or members):
+        counts = of and toks[found[0] + 1].text not in _DETERMINERS  # ("the tower of the castle" is a tower)
+        if counts and (toks[i].text in _QUANTITY and toks[i].text not in _PEOPLE_GROUPS or members):
             i += 1  # "a crowd of fans", "a couple of crates", "a choir of monks": a count, not the crowd
             continue  # ("a family of four" is the family)
         if found:
