@@ -934,3 +934,9 @@ def test_a_tower_of_small_things_is_a_stack_of_them_the_tower_of_a_castle_a_towe
     got = objects("A toddler builds a tower of wooden cubes beside the sofa.")
     assert not any(c == "tower" for c, _ in got)
     assert objects("A raven sits on the tower of the castle.")[("tower", "tower")] == 1
+
+
+def test_a_bare_noun_after_at_is_a_state_not_a_thing():
+    got = objects("A wooden brig lies at anchor beyond the reef, and an alchemist heats a retort.")
+    assert got[("boat", "brig")] == 1 and not any(c == "anchor" for c, _ in got) and got[("flask", "retort")] == 1
+    assert objects("A brig lies beside an anchor.")[("anchor", "anchor")] == 1

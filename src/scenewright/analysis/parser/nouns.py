@@ -247,6 +247,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "two children are building a snowman": a verb, not a building
         if _adverb_here(toks, s, e):
             continue  # "the shrine stands well behind the gate": an adverb, not a well
+        if _idiom_here(toks, s, e):
+            continue  # "a brig lies at anchor", "a guard stands on duty": no anchor there
         kind, modifier = modifier, []
         cat, entry = _kind_of_plant(kind, cat, entry)
         if kind and entry is not None and entry.category == "figure":
@@ -422,6 +424,15 @@ def _adverb_here(toks: list[_Tok], s: int, e: int) -> bool:
     if not before[:1].isalpha():
         return True
     return before not in _DETERMINERS and before not in _NUMBERS and not load_vocabulary().is_adjective(before)
+
+
+def _idiom_here(toks: list[_Tok], s: int, e: int) -> bool:
+    """A bare singular noun right after "at" ("at anchor", "at sea"), a phrase of manner or state,
+    not a thing: no determiner, count or describing word, and the phrase ends there."""
+    if e - s != 1 or s < 2 or toks[s - 1].text != "at" or singular(toks[s].text) != toks[s].text:
+        return False
+    after = toks[e].text if e < len(toks) else "."
+    return not after[:1].isalpha() or after in _STOP
 
 
 #: Parts of a vessel or a building that are a setting when the text opens with "the X of a Y".
