@@ -940,3 +940,9 @@ def test_a_bare_noun_after_at_is_a_state_not_a_thing():
     got = objects("A wooden brig lies at anchor beyond the reef, and an alchemist heats a retort.")
     assert got[("boat", "brig")] == 1 and not any(c == "anchor" for c, _ in got) and got[("flask", "retort")] == 1
     assert objects("A brig lies beside an anchor.")[("anchor", "anchor")] == 1
+
+
+def test_what_only_vehicles_do_makes_a_vehicle_and_more_dogs():
+    got = objects("A battered zil is parked beside the hut, and a St Bernard naps by the fire pit.")
+    assert got[("vehicle", "zil")] == 1 and got[("dog", "bernard")] == 1
+    assert objects("A snow groomer is parked by the lift.")[("vehicle", "groomer")] == 1

@@ -1352,7 +1352,14 @@ def _guess(toks: list[_Tok], head: int, before: list[_Tok]) -> Entry:
     acts = moody or _acts_as_person(toks, head + 1) or _equipped(toks, head + 1)
     if entry.category == GENERIC or (human and entry.category == "machine"):
         entry = vocabulary.guess_agent(word, acts, human) or entry
+    found = _verb_after(toks, head + 1)
+    if entry.category == GENERIC and found is not None and found[0] in _VEHICLE_VERBS:
+        entry = vocabulary.family("vehicle")  # "a zil is parked"
     return entry
+
+
+#: What only vehicles do: a word nobody listed that does it is a vehicle ("a snowcat idles").
+_VEHICLE_VERBS = {"parked", "idles", "idling", "reverses", "reversing", "honks", "honking", "revs", "revving"}
 
 
 #: Verbs that only carry the verb after them ("a picker is working").

@@ -180,6 +180,10 @@ class Vocabulary:
         agent = one.endswith(_AGENT_ENDINGS) and len(one) - 2 >= _MIN_STEM
         return self._family("figure") if (agent and acts) or human else None
 
+    def family(self, family: str) -> Entry:
+        """The entry of a shape family ("vehicle"), its size and rest the catalogue's."""
+        return self._family(family)
+
     @staticmethod
     def _family(family: str) -> Entry:
         category = load_catalogue()[family]
