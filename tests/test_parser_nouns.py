@@ -946,3 +946,9 @@ def test_what_only_vehicles_do_makes_a_vehicle_and_more_dogs():
     got = objects("A battered zil is parked beside the hut, and a St Bernard naps by the fire pit.")
     assert got[("vehicle", "zil")] == 1 and got[("dog", "bernard")] == 1
     assert objects("A snow groomer is parked by the lift.")[("vehicle", "groomer")] == 1
+
+
+def test_bathers_in_towels_are_people_and_a_hole_cut_in_the_ice_no_thing():
+    got = objects("Three bathers in towels run towards a hole cut in the ice, and a towel hangs on a hook.")
+    assert got[("figure", "bather")] == 3 and not any(w in ("cut", "hole") for _, w in got)
+    assert sum(n for (_, w), n in got.items() if w == "towel") == 1

@@ -662,7 +662,7 @@ _KIND_WORDS = {"board", "panel", "screen", "machine", "device", "unit", "box", "
 _IRREGULAR_PARTICIPLES = {"strung", "hung", "spun", "built", "made", "lit", "set", "worn", "torn", "sunk", "stuck",
                           "swung", "bound", "wound", "laid", "held", "spread", "cast", "shot", "dug", "hidden",
                           "frozen", "broken", "woven", "fallen", "overgrown", "half", "full", "covered", "slung",
-                          "drawn", "bent", "kept"}  # fmt: skip
+                          "drawn", "bent", "kept", "cut", "split", "shut"}  # fmt: skip
 
 
 def _names_kind(toks: list[_Tok], e: int) -> bool:
