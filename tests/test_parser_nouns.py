@@ -952,3 +952,8 @@ def test_bathers_in_towels_are_people_and_a_hole_cut_in_the_ice_no_thing():
     got = objects("Three bathers in towels run towards a hole cut in the ice, and a towel hangs on a hook.")
     assert got[("figure", "bather")] == 3 and not any(w in ("cut", "hole") for _, w in got)
     assert sum(n for (_, w), n in got.items() if w == "towel") == 1
+
+
+def test_a_hand_of_a_trade_is_a_person():
+    got = objects("A dockhand guides a crate onto the ramp while a seagull perches on a warning beacon.")
+    assert got[("figure", "dockhand")] == 1 and got[("lantern", "beacon")] == 1
