@@ -957,3 +957,11 @@ def test_bathers_in_towels_are_people_and_a_hole_cut_in_the_ice_no_thing():
 def test_a_hand_of_a_trade_is_a_person():
     got = objects("A dockhand guides a crate onto the ramp while a seagull perches on a warning beacon.")
     assert got[("figure", "dockhand")] == 1 and got[("lantern", "beacon")] == 1
+
+
+def test_a_part_after_its_of_a_thing_that_has_such_parts_is_no_thing():
+    got = objects("A technician sits at a diagnostics console, reading its screens.")
+    assert not any(c == "monitor" for c, _ in got)
+    found = parse_scene("A fruit stall stands by the gate, with a cash tin on its counter.")
+    assert [o.category for o in found.objects].count("counter") == 0
+    assert ("cash_tin_1", "on", "market_stall_1") in {(r.source, r.relation, r.target) for r in found.relations}

@@ -249,6 +249,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "the shrine stands well behind the gate": an adverb, not a well
         if _idiom_here(toks, s, e):
             continue  # "a brig lies at anchor", "a guard stands on duty": no anchor there
+        if _owned_part(toks, s, e, mentions):
+            continue  # "a console, reading its screens": the console's screens, no monitors of their own
         kind, modifier = modifier, []
         cat, entry = _kind_of_plant(kind, cat, entry)
         if kind and entry is not None and entry.category == "figure":
@@ -424,6 +426,17 @@ def _adverb_here(toks: list[_Tok], s: int, e: int) -> bool:
     if not before[:1].isalpha():
         return True
     return before not in _DETERMINERS and before not in _NUMBERS and not load_vocabulary().is_adjective(before)
+
+
+def _owned_part(toks: list[_Tok], s: int, e: int, mentions: list[_Mention]) -> bool:
+    """A part word after "its"/"their" (``part_owners``: "its screens", "its counter", "the
+    truck's ... its cab") when a thing named before has such a part: that thing's part, which the
+    relation reading maps to its owner, not a thing of its own."""
+    if e - s != 1 or s == 0 or toks[s - 1].text not in ("its", "their"):
+        return False
+    owners = load_vocabulary().part_owners.get(singular(toks[s].text))
+    catalogue = load_catalogue()
+    return bool(owners) and any(m.category in owners or catalogue[m.category].shape in owners for m in mentions)
 
 
 def _idiom_here(toks: list[_Tok], s: int, e: int) -> bool:
