@@ -19,6 +19,7 @@ from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import (
     _CONTENT_HEADS,
     _CONTENT_MARKERS,
+    _COOK_VERBS,
     _DETERMINERS,
     _HOLD,
     _NUMBERS,
@@ -56,9 +57,14 @@ class _Contents:
 
     def _wares(self, m: _Mention) -> bool:
         """"A stall selling pies", "a cart serving hot drinks": a bare plural after a verb of
-        trade is what is sold, not things of the layout ("a vendor sells two balloons" are there)."""
+        trade is what is sold, not things of the layout ("a vendor sells two balloons" are there);
+        a bare noun right after a verb of cooking is the food ("a woman grills fish")."""
         head = m.phrase.split()[-1].lower()
-        if m.counted or singular(head) == head:
+        if m.counted or m.definite:
+            return False
+        if m.start > 0 and self.toks[m.start - 1].text in _COOK_VERBS:
+            return True  # "a woman grills fish": the food cooked
+        if singular(head) == head:
             return False
         k = m.start - 1  # back over describing words and a list of wares before ("pies, cakes and jams")
         while k >= 0 and m.start - k <= 8 and self.toks[k].text not in _WARES_VERBS and (

@@ -11,6 +11,7 @@ from functools import lru_cache
 
 from scenewright.core.catalogue import load_catalogue, match_phrase, phrase_index, singular
 from scenewright.analysis.parser.grammar import _BUILDING_PARTS, _LIVING
+from scenewright.analysis.parser.phrases import _phrase_table
 from scenewright.analysis.parser.tokens import _Tok
 from scenewright.analysis.parser.vocabulary import GENERIC, Entry, load_vocabulary
 from scenewright.analysis.parser.words import (
@@ -154,9 +155,9 @@ def _counted_plural(toks: list[_Tok], i: int) -> bool:
     j = i - 1
     while j >= 0 and i - j <= 3:
         w = toks[j].text
-        if w in _NUMBERS or w in _VAGUE or w.isdigit():
-            return w not in ("one", "single", "1")
-        if w in _STOP or not w[:1].isalpha():
+        if (w in _NUMBERS or w in _VAGUE or w.isdigit()) and not toks[j + 1].joined:
+            return w not in ("one", "single", "1")  # ("a six-wheeled rover": no count)
+        if w in _STOP and not toks[j + 1].joined or not w[:1].isalnum():
             return False
         j -= 1
     return False
@@ -185,6 +186,12 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             if longer is not None:
                 i = longer
                 continue
+        of = found is not None and found[0] - i == 1 and found[0] + 1 < n and toks[found[0]].text == "of"
+        members = toks[i].text in _PEOPLE_GROUPS and toks[found[0] + 1].text not in _NUMBERS if of else False
+        counts = of and toks[found[0] + 1].text not in _DETERMINERS  # ("the tower of the castle" is a tower)
+        if counts and (toks[i].text in _QUANTITY and toks[i].text not in _PEOPLE_GROUPS or members):
+            i += 1  # "a crowd of fans", "a couple of crates", "a choir of monks": a count, not the crowd
+            continue  # ("a family of four" is the family)
         if found:
             raw.append((i, *found))
             i = found[0]
@@ -222,12 +229,15 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a lighthouse keeper's cottage": the kind of keeper, no lighthouse
         if _owner_of_setting(toks, s, e, cat):
             continue  # "a kitchen in the cottage of the three bears": whose place it is, not who is there
-        if _worn(toks, s, e):
-            continue  # "a knight in battered armour": what he wears, not a thing standing there
+        if _worn(toks, s, e) or (entry is not None and entry.category == GENERIC and _worn_by(toks, s, mentions)):
+            continue  # "a knight in battered armour": what he wears, not a thing standing there; "a diver
+            # in a drysuit": a word nobody listed that a person is in
         if _in_look_list(toks, s):
             continue  # "a moon base, all chrome fins and pastel domes": how everything looks
-        if _likeness_of(toks, s):
-            continue  # "a neon sign shaped like a cactus", "in the style of a woodcut": a look, not a thing
+        if _likeness_of(toks, s) or _material_of(toks, s):
+            modifier = []  # (the kind of a noun that is no thing names no kind of the next one)
+            continue  # "a neon sign shaped like a cactus", "in the style of a woodcut": a look, not a
+            # thing; "a lantern made from a snail shell": what the lantern is made of
         if e + 1 < n and toks[e].text == "in" and toks[e + 1].text in _MEASURES:
             continue  # "a room six tatami mats in size", "two cars in length": a measure, not things
         if toks[s].joined and e - s == 1 and _names_kind(toks, e):
@@ -237,6 +247,10 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "two children are building a snowman": a verb, not a building
         if _adverb_here(toks, s, e):
             continue  # "the shrine stands well behind the gate": an adverb, not a well
+        if _idiom_here(toks, s, e):
+            continue  # "a brig lies at anchor", "a guard stands on duty": no anchor there
+        if _owned_part(toks, s, e, mentions):
+            continue  # "a console, reading its screens": the console's screens, no monitors of their own
         kind, modifier = modifier, []
         cat, entry = _kind_of_plant(kind, cat, entry)
         if kind and entry is not None and entry.category == "figure":
@@ -244,8 +258,17 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             if machine is not None and load_catalogue()[machine].shape == "robot":
                 cat, entry = machine, None  # "a robot bartender" is a robot that tends the bar
         verb_before = s > 0 and _is_verb(toks[s - 1].text) and not _opens_phrase(toks, s - 1)  # not "a news helicopter"
+        # "a robot with six arms ladles stew": a plural names no kind of the next word, so a plural
+        # right after one is a verb
+        before = toks[s - 1] if s > 0 else None
+        verb_before = verb_before or (
+            before is not None and before.text[:1].isalpha() and before.text not in _STOP and not toks[s].joined
+            and singular(before.text) != before.text and e - s == 1 and singular(words[-1]) != words[-1]
+        )  # fmt: skip
         if entry is not None and (verb_before or (k > 0 and raw[k - 1][1] == s and not kind)):
             continue  # "two robots stand guard", "fox statues guard the path": a verb here
+        if _bare_plural_verb(toks, s, e) and not kind:
+            continue  # "the farrier, a broad woman, shoes a grey mare": a verb taking its object
         if entry is None and k > 0 and raw[k - 1][1] == s and _plural_subject_before(toks, raw[k - 1], e):
             continue  # "two kids fish from the pier", "the children swing on the gate": a verb here
         follow = toks[e].text if e < n else ""
@@ -262,7 +285,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a throne hall", "a farmhouse kitchen", "a rocket launch site": the place, not the thing
         if _place_name(toks, s):
             continue  # "a dig on a hillside in southern Turkey": a country, not a bird
-        if entry is not None and entry.category == GENERIC and _unknown_opening_place(toks, s, e):
+        if entry is not None and entry.category in (GENERIC, *_ENCLOSING) and _unknown_opening_place(toks, s, e):
             places.append(" ".join(words))
             continue  # "An art nouveau perfumery, all brass and glass.": a word nobody listed names the setting
         if (places or opening_place) and _whereabouts_of_setting(toks, s):
@@ -285,13 +308,17 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             picture_end = e  # "A soft watercolour painting of a windy headland": the medium, not a thing in it
             continue
         if _part_of_vessel(toks, s, e) or (part_end is not None and _owner_of_part(toks, part_end, s)) or (
-            _owns_opening_place(toks, s) and (cat in _ENCLOSING or load_catalogue()[cat].shape in _ENCLOSING)
-        ):
+            _owns_opening_place(toks, s)
+            and (cat in _ENCLOSING or cat == GENERIC or load_catalogue()[cat].shape in _ENCLOSING)
+        ):  # (a word nobody listed too: "the kennel room of an animal shelter")
             # "The bridge of a small cargo spaceship, ...": the bridge and the ship are the setting
             places.append(" ".join(words))
             part_end = e if part_end is None else None
             continue
-        qualifies = follow[:1].isalpha() and follow not in _STOP and not _is_verb(follow)
+        opener = next((t.text for t in reversed(toks[:s]) if not t.text[:1].isalpha() or t.text in _STOP), ".")
+        qualifies = follow[:1].isalpha() and follow not in _STOP and (
+            not _is_verb(follow) or singular(follow) in vocabulary.not_things and opener not in _SINGULAR_DETERMINERS
+        )  # ("of tiny stone tiles": a plural part, no verb; "a brass lamp glows" has one)
         if len(words) == 1 and words[0] in _MODIFIER_NOUNS and qualifies and not follow.endswith(("ed", "ing")):
             continue  # "a stone path", "a glass roof": an adjective here
         if s > 0 and toks[s - 1].text in _PROJECTED and cat not in _SHOWS_PROJECTION:
@@ -401,6 +428,26 @@ def _adverb_here(toks: list[_Tok], s: int, e: int) -> bool:
     return before not in _DETERMINERS and before not in _NUMBERS and not load_vocabulary().is_adjective(before)
 
 
+def _owned_part(toks: list[_Tok], s: int, e: int, mentions: list[_Mention]) -> bool:
+    """A part word after "its"/"their" (``part_owners``: "its screens", "its counter", "the
+    truck's ... its cab") when a thing named before has such a part: that thing's part, which the
+    relation reading maps to its owner, not a thing of its own."""
+    if e - s != 1 or s == 0 or toks[s - 1].text not in ("its", "their"):
+        return False
+    owners = load_vocabulary().part_owners.get(singular(toks[s].text))
+    catalogue = load_catalogue()
+    return bool(owners) and any(m.category in owners or catalogue[m.category].shape in owners for m in mentions)
+
+
+def _idiom_here(toks: list[_Tok], s: int, e: int) -> bool:
+    """A bare singular noun right after "at" ("at anchor", "at sea"), a phrase of manner or state,
+    not a thing: no determiner, count or describing word, and the phrase ends there."""
+    if e - s != 1 or s < 2 or toks[s - 1].text != "at" or singular(toks[s].text) != toks[s].text:
+        return False
+    after = toks[e].text if e < len(toks) else "."
+    return not after[:1].isalpha() or after in _STOP
+
+
 #: Parts of a vessel or a building that are a setting when the text opens with "the X of a Y".
 _PLACE_PARTS = {"bridge", "deck", "cockpit", "hold", "cabin", "interior", "inside", "galley", "hull", "flight deck"}
 
@@ -409,8 +456,8 @@ def _part_of_vessel(toks: list[_Tok], s: int, e: int) -> bool:
     """The description opens with "The bridge of a ...", "The cockpit of an old plane"."""
     j = s - 1
     while j >= 0 and (
-        toks[j].text in _DETERMINERS or load_vocabulary().is_adjective(toks[j].text) or toks[j].text.endswith("'s")
-    ):  # "The captain's cabin of a sailing ship"
+        toks[j].text in _DETERMINERS or toks[j].text[:1].isalpha() and toks[j].text not in _STOP
+    ):  # "The captain's cabin of a sailing ship", "The kennel room of a shelter"
         j -= 1
     opening = j < 0 or toks[j].text in (".", "!", "?")
     part = " ".join(t.text for t in toks[s:e])
@@ -425,9 +472,10 @@ def _owns_opening_place(toks: list[_Tok], s: int) -> bool:
     """The noun at ``s`` owns the place the description opens with ("The engine room of a rusty
     cargo starship", "The kitchen of an old farmhouse"): it is the setting, not a thing in it."""
     j = s - 1
-    while j >= 0 and (toks[j].text in _DETERMINERS or load_vocabulary().is_adjective(toks[j].text)
-                      or toks[j].text in ("cargo", "space", "sailing", "fishing", "merchant")
-                      or toks[j].joined or j + 1 < s and toks[j + 1].joined):  # "a long-haul freighter"
+    # back over describing words and nouns of its kind ("a colony ship", "a small animal shelter",
+    # "a long-haul freighter")
+    while j >= 0 and (toks[j].text in _DETERMINERS or toks[j].text[:1].isalpha() and toks[j].text not in _STOP
+                      or toks[j].joined or j + 1 < s and toks[j + 1].joined):
         j -= 1  # fmt: skip
     if j < 1 or toks[j].text != "of":
         return False
@@ -528,6 +576,17 @@ def _worn(toks: list[_Tok], s: int, e: int) -> bool:
     return j >= 0 and toks[j].text in _WEARING
 
 
+def _worn_by(toks: list[_Tok], s: int, mentions: list[_Mention]) -> bool:
+    """The noun at ``s`` follows "in" right after a person ("a diver in a drysuit"): what the
+    person wears, since people are in clothes, not in things nobody listed."""
+    j = s - 1
+    while j >= 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+        j -= 1
+    if j < 1 or toks[j].text not in ("a", "an") or toks[j - 1].text != "in":
+        return False
+    return bool(mentions) and mentions[-1].end == j - 1 and _person_mention(mentions[-1])
+
+
 #: Participles before "like" that make what follows a look ("shaped like a fish", "painted like a comic").
 _LIKENESS_VERBS = {"shaped", "painted", "styled", "drawn", "carved", "made", "built", "designed", "dressed",
                    "disguised", "decorated", "looks", "look", "looking", "rendered", "moulded", "molded",
@@ -540,9 +599,9 @@ def _likeness_of(toks: list[_Tok], s: int) -> bool:
     """The noun at ``s`` says what another thing looks like, not a thing of its own: "a sign
     shaped like a cactus", "a rock resembling a turtle", "in the style of an ink painting"."""
     j = s - 1
-    while j >= 0 and s - j <= 5 and toks[j].text[:1].isalpha() and toks[j].text not in ("resembling", "resembles") and (
+    while j >= 0 and s - j <= 5 and toks[j].text[:1].isalnum() and toks[j].text not in ("resembling", "resembles") and (
         toks[j].text in ("a", "an", "the") or toks[j].text not in _STOP
-    ):
+    ):  # ("in the style of a 1950s pulp magazine cover": a decade is a describing word)
         j -= 1
     if j < 1:
         return False
@@ -550,6 +609,19 @@ def _likeness_of(toks: list[_Tok], s: int) -> bool:
     if w == "like":
         return before in _LIKENESS_VERBS
     return (w == "of" and before in _LIKENESS_NOUNS) or w in ("resembling", "resembles")
+
+
+def _material_of(toks: list[_Tok], s: int) -> bool:
+    """The noun at ``s`` follows "made from", "carved out of" and the like: the stuff another thing
+    is made of ("a lantern made from a snail shell", "a boat carved from a single log")."""
+    j = s - 1
+    while j >= 0 and s - j <= 5 and toks[j].text[:1].isalpha() and (
+        toks[j].text in _DETERMINERS or toks[j].text in _NUMBERS or toks[j].text not in _STOP
+    ):
+        j -= 1
+    if j >= 1 and toks[j].text == "of" and toks[j - 1].text == "out":
+        j -= 1  # "carved out of"
+    return j >= 1 and (toks[j - 1].text, "of" if toks[j].text == "out" else toks[j].text) in _MADE_OF
 
 
 #: After "in", what makes the noun before a unit of measure ("six tatami mats in size").
@@ -603,7 +675,7 @@ _KIND_WORDS = {"board", "panel", "screen", "machine", "device", "unit", "box", "
 _IRREGULAR_PARTICIPLES = {"strung", "hung", "spun", "built", "made", "lit", "set", "worn", "torn", "sunk", "stuck",
                           "swung", "bound", "wound", "laid", "held", "spread", "cast", "shot", "dug", "hidden",
                           "frozen", "broken", "woven", "fallen", "overgrown", "half", "full", "covered", "slung",
-                          "drawn", "bent", "kept"}  # fmt: skip
+                          "drawn", "bent", "kept", "cut", "split", "shut"}  # fmt: skip
 
 
 def _names_kind(toks: list[_Tok], e: int) -> bool:
@@ -615,6 +687,8 @@ def _names_kind(toks: list[_Tok], e: int) -> bool:
     w = t.text
     if w in _PREPOSITIONS:
         return False  # "pushes a wheelchair past the chairs"
+    if not t.joined and _plural_verb(toks, e):
+        return False  # "two mechanics on a lift work on it", "a yew and a rowan shade the gate": a verb
     if t.joined or (w in load_vocabulary().not_things and singular(w) == w and w not in _FINITE):
         return True  # "camel-hair tents", "a bear face"
     if w in _IRREGULAR_PARTICIPLES:
@@ -652,6 +726,8 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
         return True
     if head in load_vocabulary().landforms and j >= 0 and _landform_part(toks, j):
         return False  # "a dragon sleeps on top of a hill": the hill is a thing here
+    if j >= 0 and toks[j].text in _DETERMINERS and _placed_by(toks, j) and not _verbless_opening(toks, j):
+        return False  # "a mule waits beside the tavern": a building of the scene (_buildings)
     if _opening_setting(toks, s, e):
         return True
     if building:
@@ -756,11 +832,14 @@ def _unknown_opening_place(toks: list[_Tok], s: int, e: int) -> bool:
     if j >= 0 and toks[j].text != ":" or any(t.text in (".", "!", "?") for t in toks[:s]):
         return False
     follow = toks[e].text if e < len(toks) else "."
-    if follow not in _SETTING_PREPOSITIONS and follow not in (",", ".", "in"):
+    # ("A Roman amphitheatre rendered as a floor mosaic": how it is drawn)
+    if follow not in _SETTING_PREPOSITIONS and follow not in (",", ".", "in") and follow not in _LIKENESS_VERBS:
         return False
     k = e
     while k < len(toks) and toks[k].text not in (".", "!", "?"):
-        if _verb_word(toks[k].text) and not toks[k].text.endswith("ing") and not toks[k].orig[:1].isupper():
+        if _verb_word(toks[k].text) and not toks[k].text.endswith("ing") and not toks[k].orig[:1].isupper() and (
+            not _in_look_list(toks, k)
+        ):  # ("..., all curving brass, lilies and green glass": how it looks, no verb)
             return False
         k += 1
     return True
@@ -825,7 +904,7 @@ def later_before(later: list, toks: list[_Tok], e: int) -> bool:
 
 
 #: Measure words ("a coil of rope", "a stack of plates") that also name a thing of their own.
-_MEASURE_THINGS = {"coil", "coils", "ring", "stack", "stacks", "column", "string", "set"}
+_MEASURE_THINGS = {"coil", "coils", "ring", "stack", "stacks", "column", "string", "set", "line"}
 
 
 def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None]]) -> list:
@@ -843,10 +922,14 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         definite = owner or w == "the"  # only for a person ("the old watchmaker sits ...")
         counter = definite or w in ("a", "an", "another") or w in _NUMBERS or w in _VAGUE or w.isdigit() or (
             w == "of" and i > 0 and toks[i - 1].text in _QUANTITY
-        )
+        ) or _shares_article(toks, i, covered)
         if not counter or w == "one" and i + 1 < n and toks[i + 1].text in ("of", "another", "other"):
             continue
-        plural = w not in ("a", "an", "another", "one", "the", *_OWNERS) and not (w.isdigit() and int(w) == 1)
+        if i + 1 < n and toks[i + 1].joined and w not in ("a", "an", "another", "the", *_OWNERS):
+            continue  # "a six-wheeled rover": a number hyphened to a word describes, counts nothing
+        if w in _NUMBERS and i > 1 and toks[i - 1].text == "of" and toks[i - 2].text in _PEOPLE_GROUPS:
+            continue  # "a family of four shelters under the awning": how many, then the verb
+        plural = w not in ("a", "an", "another", "one", "the", "and", *_OWNERS) and not (w.isdigit() and int(w) == 1)
         j = i + 1
         if w == "a" and j < n and toks[j].text in ("few", "couple", "pair", "dozen"):
             continue  # the count of a phrase read by its own rules
@@ -860,8 +943,10 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
                 continue
             if j in covered or not x[:1].isalpha() or x in _STOP:
                 break
-            if j > i + 1 and not plural and _is_verb(x):
-                break
+            # (a plural verb form cannot follow "a": "a washing line hangs" has no verb "line")
+            plural_form = x in _FINITE and not x.endswith("s") and w in ("a", "an", "another")
+            if j > i + 1 and not plural and (_is_verb(x) and not plural_form or _plural_verb(toks, j)):
+                break  # "a ladder stands", "two mechanics on a scissor lift work on its joint"
             if head is not None and x in _PLACE_ADVERBS:
                 break  # "a lantern hangs from a beam overhead": where, not a kind of beam
             ends = j + 1 >= n or toks[j + 1].text in _STOP or not toks[j + 1].text[:1].isalpha()
@@ -887,6 +972,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         word = toks[head].text
         if word.endswith("ing") and j < n and toks[j].text in _OBJECT_OPENERS:
             continue  # "one aiming a gun at the ship": a verb taking its object, not a noun
+        if _listed_adjective(toks, head):
+            continue  # "on a clear, windy morning": the first of two describing words
         held = _held(toks, head) or (owner and _in_hand(toks, i) and vocabulary.is_thing_word(word))
         if held:
             definite = False
@@ -896,21 +983,106 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         # "five pairs of shoes", "a rack of coats": clothing counted out is not worn
         stock = w == "of" and word in vocabulary.clothing
         # "a tesla coil", "a drum set": a measure word after the noun of its kind is the thing itself
-        compound = word in _MEASURE_THINGS and head > i + 1 and not vocabulary.is_adjective(toks[head - 1].text)
-        if not (vocabulary.is_thing_word(word) or held or counted_place or stock) or (
+        kind = toks[head - 1].text  # ("a washing line": what it is for)
+        compound = word in _MEASURE_THINGS and head > i + 1 and (not vocabulary.is_adjective(kind) or kind.endswith("ing"))
+        if not (vocabulary.is_thing_word(word) or held or counted_place or stock or compound) or (
             word in _QUANTITY and not counted_place and not compound
         ) or (j < n and toks[j].text == "of"):
             continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"
         entry = _guess(toks, head, toks[max(i - 1, 0) : head])
         opening = i == 0 or not toks[i - 1].text[:1].isalpha()
         placed = w == "the" and opening and j < n and toks[j].text in _PLACING_VERBS
-        if definite and entry.category != "figure" and not placed:
-            continue  # "the far end", "her turn": after "the" or "her", only a person is read, or a
-            # subject that opens a clause standing somewhere ("The periscope rises in the middle")
+        # ("near", "by" and "past" the landmarks and the fittings of a place too: "near the airlock")
+        by = _placed_by(toks, i, _BY_KINDS - {"near"}) and not _named_before(toks, head)
+        by = by and (j >= n or toks[j].text not in ("one", "ones"))
+        if definite and entry.category != "figure" and not placed and not by:
+            continue  # "the far end", "her turn": after "the" or "her", only a person is read, a
+            # subject that opens a clause standing somewhere ("The periscope rises in the middle"),
+            # or what a thing is put by ("a horse waits beside the bunkhouse")
         out.append((head, head + 1, entry.category, entry))
         covered.add(head)
     out += _bare_subjects(toks, covered) + _landforms(toks, covered) + _owners_of_parts(toks, covered)
+    out += _loose_parts(toks, covered) + _buildings(toks, covered)
     return out + _unknown_heads(toks, raw, covered) + _possessed(toks, covered)
+
+
+def _shares_article(toks: list[_Tok], i: int, covered: set[int]) -> bool:
+    """The "and" at ``i`` joins a bare singular word to a one-word thing opened by "a"/"an", which
+    counts both ("armed with a net and trident"): one of each."""
+    if toks[i].text != "and" or i < 2 or i - 1 not in covered or toks[i - 2].text not in ("a", "an"):
+        return False
+    if i + 2 >= len(toks) or not toks[i + 1].text[:1].isalpha() or toks[i + 1].text in _STOP:
+        return False
+    after = toks[i + 2].text
+    word = toks[i + 1].text
+    return singular(word) == word and (not after[:1].isalpha() or after in _STOP or _is_verb(after))
+
+
+def _bare_plural_verb(toks: list[_Tok], s: int, e: int) -> bool:
+    """A one-word plural with nothing of a noun phrase before it (no determiner, count or
+    describing word) and an object right after it is a verb: "..., shoes a grey mare", "...,
+    hammers the nails"; "two shoes lie there", "old shoes hang" are things."""
+    if e - s != 1 or e >= len(toks):
+        return False
+    word = toks[s].text
+    if singular(word) == word or s == 0 or toks[s - 1].text not in (",", ";", "and", "who", "that", "which"):
+        return False
+    after = toks[e].text
+    if after in _OBJECT_OPENERS:
+        return after not in _NUMBERS
+    # "the quartermaster, an android, counts canisters by the gate": after an apposition's comma, a
+    # bare noun that ends no list ("hats, shoes and bags"; "cacti and tumbleweeds dot the sand")
+    two = toks[e + 1].text if e + 1 < len(toks) else "."
+    return toks[s - 1].text == "," and after[:1].isalpha() and after not in _STOP and not toks[e].joined and (
+        two not in (",", "and", "or")
+    )
+
+
+#: Nouns of a group of people, whose "of four" counts its members ("a family of four").
+_PEOPLE_GROUPS = {"family", "couple", "crowd", "audience", "party", "group", "team", "crew", "band", "gang",
+                  "troupe", "class", "congregation", "choir", "orchestra", "mob", "entourage", "retinue"}  # fmt: skip
+
+
+def _listed_adjective(toks: list[_Tok], k: int) -> bool:
+    """The word at ``k`` is the first of describing words a comma parts ("a clear, windy
+    morning", "a tall, narrow cupboard"): describing words, then a noun, follow the comma."""
+    vocabulary = load_vocabulary()
+    j = k + 2
+    if j >= len(toks) or toks[k + 1].text != "," or not vocabulary.is_adjective(toks[j].text):
+        return False
+    while j < len(toks) and vocabulary.is_adjective(toks[j].text) and toks[j].text not in vocabulary.not_things:
+        j += 1  # (not "morning", a noun that looks like a describing word)
+    return j < len(toks) and toks[j].text[:1].isalpha() and toks[j].text not in _STOP
+
+
+#: Particles of going somewhere: a bare word before one, after a plural subject, is its verb.
+_MOTION_PARTICLES = {"up", "down", "out", "off", "across", "along", "around", "through", "towards", "toward",
+                     "into", "onto", "past"}  # fmt: skip
+
+
+def _plural_verb(toks: list[_Tok], j: int) -> bool:
+    """The word at ``j`` is the plural verb of a subject before the phrase it follows, no noun
+    of that phrase: a person's, an animal's or a hanging verb in its plural form ("work", "chat")
+    with a preposition or an object after it, or any word before a particle of going, after a
+    plural subject and its place phrase ("two mechanics on a scissor lift work on its joint", "two
+    knights in armour creep up the slope"; "a work bench" stays a bench)."""
+    vocabulary = load_vocabulary()
+    after = toks[j + 1].text if j + 1 < len(toks) else "."
+    takes = after in _PARTICLES or after in _OBJECT_OPENERS
+    verbs = vocabulary.person_verbs | vocabulary.animal_verbs | _HANG_VERBS
+    # a person verb, or any word that goes somewhere ("two knights in armour creep up the slope")
+    verb = any(toks[j].text + ending in verbs for ending in ("s", "es")) or after in _MOTION_PARTICLES
+    if not takes or singular(toks[j].text) != toks[j].text:
+        return False
+    k = j - 1  # back over the phrase to its preposition: the subject stands before it
+    while k > 0 and toks[k].text[:1].isalpha() and (toks[k].text in _DETERMINERS or toks[k].text not in _STOP):
+        k -= 1
+    if toks[k].text == "and" and k > 0 and toks[k - 1].text[:1].isalpha() and toks[k - 1].text not in _STOP:
+        return True  # "a yew and a rowan shade the gate": two subjects, one plural verb
+    if not verb:
+        return False
+    subject = toks[k - 1].text if k > 0 and (toks[k].text in _PARTICLES or toks[k].text in ("in", "of", "near")) else ""
+    return subject[:1].isalpha() and vocabulary.singular(subject) != subject
 
 
 def _possessed(toks: list[_Tok], covered: set[int]) -> list:
@@ -1004,6 +1176,97 @@ def _landforms(toks: list[_Tok], covered: set[int]) -> list:
     return out
 
 
+#: Kinds of relation phrase that put a thing outside another, by its walls ("beside the tavern",
+#: "at the foot of the signal box"), not in or on it.
+_BY_KINDS = {"in front of", "behind", "side of", "near", "opposite", "foot of", "face to", "flank", "between",
+             "left of", "right of"}  # fmt: skip
+
+
+def _placed_by(toks: list[_Tok], i: int, kinds: set[str] = _BY_KINDS) -> bool:
+    """A relation phrase (of these kinds) that puts a thing outside what the noun phrase opening
+    at ``i`` names ends right before it ("beside [the bunkhouse]", "at the foot of [the signal
+    box]"), or it is the second of a pair after "between" ("between the cookhouse and [the shed]")."""
+    table = _phrase_table()
+    for length in range(1, min(i, 6) + 1):
+        if table.get(tuple(t.text for t in toks[i - length : i])) in kinds:
+            return True
+    if i == 0 or toks[i - 1].text != "and":
+        return False
+    k = i - 2
+    while k >= 0 and i - k <= 8 and toks[k].text not in (".", ",", ";", ":") and not _verb_word(toks[k].text):
+        if toks[k].text == "between":
+            return True
+        k -= 1
+    return False
+
+
+def _named_before(toks: list[_Tok], k: int) -> bool:
+    """The word at ``k`` is the end or the start of a closed compound named before ("the fire"
+    after "a fireplace"): that thing again (``_alias_mentions``), no new one."""
+    word = singular(toks[k].text)
+    return any(
+        w != word and (w.endswith(word) or w.startswith(word))
+        for w in (singular(t.text) for t in toks[:k] if t.text[:1].isalpha())
+    )
+
+
+def _buildings(toks: list[_Tok], covered: set[int]) -> list:
+    """A place word sets the scene ("a tavern at dusk"), but one a telling sentence puts a thing
+    outside of is a building of the scene ("a mule waits beside the tavern", "milk churns stand at
+    the foot of the little waiting room"); inside it ("in the tavern") it stays the setting."""
+    table = load_vocabulary().buildings
+    out: list = []
+    for k, t in enumerate(toks):
+        for width in (2, 1):
+            words = tuple(u.text for u in toks[k : k + width])
+            entry = table.get((*words[:-1], singular(words[-1]))) if len(words) == width else None
+            if entry is None or any(x in covered for x in range(k, k + width)) or t.quoted:
+                continue
+            after = toks[k + width].text if k + width < len(toks) else "."
+            if after[:1].isalpha() and after not in _STOP and not _is_verb(after):
+                break  # "the tavern keeper": a longer phrase, read by the other rules
+            j = k - 1
+            while j >= 0 and toks[j].text[:1].isalpha() and (
+                toks[j].text not in _STOP or toks[j].joined or toks[j + 1].joined
+            ):
+                j -= 1  # back over describing words ("the little waiting room", "a false-front saloon")
+            if j < 0 or toks[j].text not in _DETERMINERS or not _placed_by(toks, j) or _verbless_opening(toks, j):
+                break
+            end = k + width
+            out.append((k, end, entry.category, entry))
+            covered.update(range(k, end))
+            break
+    return out
+
+
+def _loose_parts(toks: list[_Tok], covered: set[int]) -> list:
+    """A part of a body or a machine is no object ("its left arm", "a robot with six arms"), but
+    one the text detaches is a thing of its own: a detaching word before it ("spare heads", "a
+    severed claw") or right after it ("its left arm removed and lying on a workbench"), or a
+    part that opens a clause as its own subject ("a crane hook hangs from a rail")."""
+    vocabulary = load_vocabulary()
+    out: list = []
+    for k, t in enumerate(toks):
+        entry = vocabulary.loose_parts.get(vocabulary.singular(t.text))
+        if entry is None or k in covered or t.quoted or t.joined or (k + 1 < len(toks) and toks[k + 1].joined):
+            continue
+        j = k - 1
+        while j >= 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+            j -= 1
+        before = {u.text for u in toks[j + 1 : k]}
+        after = toks[k + 1].text if k + 1 < len(toks) else "."
+        opener = toks[j].text if j >= 0 else "."
+        # its own subject, with a verb of its number: not "a mushroom with a tiny door stands" (whose
+        # door it is), nor "a sieve on a wooden frame stand" (the verb of a plural subject before)
+        whose = j > 0 and toks[j - 1].text in ("with", "of", "has", "have", "having")
+        verb = (after in _PLACING_VERBS or after in ("is", "are")) and after.endswith("s") == (opener in ("a", "an"))
+        own = (opener in ("a", "an") or opener in _NUMBERS) and verb and not whose
+        if before & vocabulary.detached or after in vocabulary.detached or own:
+            out.append((k, k + 1, entry.category, entry))
+            covered.add(k)
+    return out
+
+
 def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
     """Bare plurals nobody listed that open a sentence or a clause after ", and" as its subject
     ("Noodle cartons and soda cans litter the floor"): no count, but a verb (or "and" and another
@@ -1057,7 +1320,7 @@ def _unknown_heads(toks: list[_Tok], raw: list, covered: set[int]) -> list:
     "a wheel gun", "a horse trough"): the unknown noun is the thing, the known one its modifier."""
     vocabulary = load_vocabulary()
     out = []
-    for s, e, _, _ in raw:
+    for s, e, category, _ in raw:
         k = e
         if e - s != 1 or k >= len(toks) or k in covered or toks[k].quoted or toks[k].joined or toks[s].joined:
             continue
@@ -1069,7 +1332,7 @@ def _unknown_heads(toks: list[_Tok], raw: list, covered: set[int]) -> list:
             continue
         if word in _ADVERB_NOUNS or word in _ORDINALS:
             continue  # "the counter right next to the till", "the stall left of the gate"
-        verb = word in _HANG_VERBS or word in vocabulary.person_verbs  # "holographic koi swim"
+        verb = word in _HANG_VERBS or word in vocabulary.person_verbs or _plural_verb(toks, k)  # "holographic koi swim"
         if verb or not _opens_phrase(toks, s) or (_counted_plural(toks, s) and singular(word) == word):
             continue  # "robots sell orbs", "three koi swim": a verb after its subject
         if not vocabulary.is_thing_word(word) or vocabulary.is_adjective(word) or word in _QUANTITY:
@@ -1078,6 +1341,8 @@ def _unknown_heads(toks: list[_Tok], raw: list, covered: set[int]) -> list:
         if k + 1 not in covered and after[:1].isalpha() and after not in _STOP and not _is_verb(after):
             continue  # a longer phrase than two nouns: left to the other rules
         entry = _guess(toks, k, toks[max(s - 3, 0) : k])
+        if toks[k].orig[:1].isupper() and load_catalogue()[category].shape == "figure":
+            entry = vocabulary.guess_agent(word, False, human=True) or entry  # "Brother Anselm", "Captain Okafor"
         out.append((k, k + 1, entry.category, entry))
         covered.add(k)
     return out
@@ -1095,10 +1360,19 @@ def _guess(toks: list[_Tok], head: int, before: list[_Tok]) -> Entry:
         return entry
     fronted = _after_preposition(toks, head)  # "On the bank, an old woman grills ...": no apposition
     human = _does_what_people_do(toks, head + 1) or (_person_apposition(toks, head + 1) and not fronted)
+    human = human or _dressed(toks, head + 1) or _role_subject(toks, head) or _addressed(toks, head)
     moody = any(t.text in vocabulary.moods for t in before)
+    acts = moody or _acts_as_person(toks, head + 1) or _equipped(toks, head + 1)
     if entry.category == GENERIC or (human and entry.category == "machine"):
-        entry = vocabulary.guess_agent(word, moody or _acts_as_person(toks, head + 1), human) or entry
+        entry = vocabulary.guess_agent(word, acts, human) or entry
+    found = _verb_after(toks, head + 1)
+    if entry.category == GENERIC and found is not None and found[0] in _VEHICLE_VERBS:
+        entry = vocabulary.family("vehicle")  # "a zil is parked"
     return entry
+
+
+#: What only vehicles do: a word nobody listed that does it is a vehicle ("a snowcat idles").
+_VEHICLE_VERBS = {"parked", "idles", "idling", "reverses", "reversing", "honks", "honking", "revs", "revving"}
 
 
 #: Verbs that only carry the verb after them ("a picker is working").
@@ -1113,6 +1387,11 @@ def _verb_after(toks: list[_Tok], k: int) -> tuple[str, int] | None:
     return (toks[k].text, k - start) if k < len(toks) else None
 
 
+#: Particles and prepositions between a verb and what it takes ("leans over", "bends down to").
+_PARTICLES = {"over", "on", "at", "into", "onto", "across", "up", "down", "to", "towards", "toward", "from",
+              "with", "beside", "behind", "against", "under", "through", "out", "off", "by"}  # fmt: skip
+
+
 def _acts_as_person(toks: list[_Tok], k: int) -> bool:
     """Whether the subject ending at ``k`` does what people do: a person verb ("a picker is
     working", "a welder kneels"), a deed done to a thing ("a farrier is shoeing a horse") or to
@@ -1124,9 +1403,77 @@ def _acts_as_person(toks: list[_Tok], k: int) -> bool:
     if verb in load_vocabulary().person_verbs:
         return True
     k += skipped
-    if _is_verb(verb) and k + 1 < len(toks) and toks[k + 1].text in ("his", "her"):
+    owner = k + 1
+    while owner < len(toks) and owner - k <= 2 and toks[owner].text in _PARTICLES:
+        owner += 1  # "the old chandler leans over his ledger", "a tinker bends down to her pack"
+    if _is_verb(verb) and owner < len(toks) and toks[owner].text in ("his", "her"):
         return True  # "a punter poles his raft": what is his is a person's
     return skipped > 0 and verb.endswith("ing") and k + 1 < len(toks) and toks[k + 1].text in _DETERMINERS
+
+
+def _dressed(toks: list[_Tok], k: int) -> bool:
+    """Clothing follows the noun ending at ``k`` after "in" or "wearing" ("a perfumer in a velvet
+    waistcoat", "a refueller in a hi-vis vest"): an agent noun that wears clothes is a person."""
+    if k >= len(toks) or toks[k].text not in _WEARING:
+        return False
+    clothing = load_vocabulary().clothing
+    for t in toks[k + 1 : k + 6]:
+        if t.text in clothing or singular(t.text) in clothing:
+            return True
+        if not t.text[:1].isalpha() or t.text in _STOP and t.text not in _DETERMINERS:
+            return False
+    return False
+
+
+def _phrase_opener(toks: list[_Tok], head: int) -> int:
+    """Where the noun phrase of ``head`` opens: the determiner or count before its describing words."""
+    j = head - 1
+    while j >= 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+        j -= 1
+    return j
+
+
+def _role_subject(toks: list[_Tok], head: int) -> bool:
+    """"The sexton watches from the porch": a word nobody listed, named with "the" though never
+    brought in, opens a sentence or a clause and does what people (or animals) do — a role
+    everyone knows, a person."""
+    j = _phrase_opener(toks, head)
+    if j < 0 or toks[j].text != "the" or j > 0 and toks[j - 1].text not in (".", "!", "?", ";", ":", ","):
+        return False
+    found = _verb_after(toks, head + 1)
+    return found is not None and found[0] in load_vocabulary().person_verbs
+
+
+#: Verbs of talking and greeting: whom they are done to or with is a person ("talks to a novice").
+_SOCIAL_VERBS = {"talk", "talks", "talking", "chat", "chats", "chatting", "speak", "speaks", "speaking", "argue",
+                 "argues", "arguing", "haggle", "haggles", "haggling", "bargain", "bargains", "bargaining",
+                 "whisper", "whispers", "whispering", "wave", "waves", "waving", "smile", "smiles", "smiling",
+                 "nod", "nods", "nodding", "listen", "listens", "listening", "gossip", "gossips", "gossiping",
+                 "quarrel", "quarrels", "quarrelling", "bow", "bows", "bowing", "beckon", "beckons", "beckoning",
+                 "flirt", "flirts", "flirting", "plead", "pleads", "pleading", "converse", "converses"}  # fmt: skip
+
+
+def _addressed(toks: list[_Tok], head: int) -> bool:
+    """The word at ``head`` is whom someone talks to, chats with, waves at ("the abbess talks to
+    a novice by the well"): a person."""
+    j = _phrase_opener(toks, head)
+    return j >= 2 and toks[j - 1].text in ("to", "with", "at") and toks[j - 2].text in _SOCIAL_VERBS
+
+
+def _equipped(toks: list[_Tok], k: int) -> bool:
+    """A hand tool follows the noun ending at ``k`` after "with" ("a marshaller with a pair of
+    glowing batons", "a fitter with a spanner"): an agent noun with a tool is one who uses it."""
+    if k >= len(toks) or toks[k].text != "with":
+        return False
+    vocabulary = load_vocabulary()
+    for j in range(k + 1, min(k + 7, len(toks))):
+        w = toks[j].text
+        entry = vocabulary.match((w,))
+        if entry is not None or match_phrase((w,)) is not None:
+            return entry is not None and entry.category == "tool"
+        if not w[:1].isalpha() or w in _STOP and w not in _DETERMINERS and w != "of":
+            return False
+    return False
 
 
 def _does_what_people_do(toks: list[_Tok], k: int) -> bool:
@@ -1248,10 +1595,22 @@ def _mark_appositions(toks: list[_Tok], mentions: list[_Mention]) -> None:
             if renamed and kinds[-1].end < len(toks) and toks[kinds[-1].end].text == ",":
                 for x in kinds:
                     x.content = True
+        elif later and _person_mention(later[0]) and not _person_mention(m) and not _is_plural(toks, m) and (
+            m.end - m.start == 1 and m.start > 0 and toks[m.start - 1].text == "the"
+            and not _after_preposition(toks, m.start) and _renames(toks, m.end, later[0].start)
+        ):  # fmt: skip  (not "Across from the press, a customer waits": a fronted place phrase)
+            # "the coach, a red-faced man": a word the catalogue files as a thing, renamed as a person,
+            # names that person's role
+            m.category, m.guess = "figure", load_vocabulary().guess_agent(toks[m.start].text, False, human=True)
+            later[0].content = True
         elif _person_mention(m) and later and _person_mention(later[0]) and _renames(toks, m.end, later[0].start):
-            # the role is the name ("the keeper, an old woman"); a word that only says whose
-            # ("its owner, a girl in goggles") gives way to the person
+            # the role is the name ("the keeper, an old woman", "the owner, a bearded man"); a word
+            # that only says whose ("its owner, a girl in goggles") gives way to the person
             relational = singular(m.phrase.split()[-1].lower()) in load_vocabulary().relational
+            j = m.start - 1
+            while j > 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+                j -= 1  # "its new owner"
+            relational = relational and j >= 0 and toks[j].text in _POSSESSIVES
             (m if relational else later[0]).content = True
 
 
@@ -1281,7 +1640,7 @@ def _is_plural(toks: list[_Tok], m: _Mention) -> bool:
         return False  # "a triceratops" is listed as it is written
     if last in load_vocabulary().pair_nouns or last.endswith("'s"):
         return False  # "shears" are one pair; "the diner's" roof is one diner's
-    return singular(last) != last or last in ("people", "cacti", "shelves", "benches", "glasses")
+    return load_vocabulary().singular(last) != last or last in ("people", "cacti", "shelves", "benches", "glasses")
 
 
 #: Place nouns that qualify the next noun after a determiner ("the middle bench", "the end stall").

@@ -202,12 +202,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             m.category = "round_table"
         if adjectives & {"potted", "pot"} and self.catalogue[m.category].shape in _PLANT_SHAPES:
             m.category, m.guess = "potted_plant", None  # "a potted palm" is a house plant, not a 6 m tree
-        vocabulary = load_vocabulary()
         cat: Category = self.catalogue[m.category]
         name = m.phrase.lower()
+        vocabulary = load_vocabulary()
         if _is_plural(self.toks, m):
             words = name.split()
-            name = " ".join([singular(words[0]), *words[1:]]) if "of" in words[1:2] else singular(name)
+            one = vocabulary.singular  # ("mechanics" are mechanics)
+            of = "of" in words[1:2]
+            name = " ".join([one(words[0]), *words[1:]] if of else [*words[:-1], one(words[-1])])
         kind = [w.lower() for w in m.modifier]
         describing = [a.lower() for a in m.adjectives]
         if kind and describing[-len(kind) :] == kind:
@@ -216,7 +218,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # a material makes a likeness of a living thing: its name keeps it ("a rubber chicken")
         likeness = last in vocabulary.materials and self._lives(m.category)
         kind_here = _opens_phrase(self.toks, m.start - 1) if m.guess is None else True
-        if not kind and last and kind_here and not vocabulary.is_adjective(last) and (
+        # "a chopping block", "a diving hut": before a lifeless word nobody listed, an -ing word no
+        # list calls a describing word names what it is for ("laughing children" do it)
+        gerund = m.guess is not None and last.endswith("ing") and last not in vocabulary.adjectives
+        # (inside the phrase, not a participle after the noun before: "statues holding axes")
+        gerund = gerund and not self._lives(m.category) and _opens_phrase(self.toks, m.start - 1)
+        if not kind and last and kind_here and (not vocabulary.is_adjective(last) or gerund) and (
             m.guess is not None or last not in vocabulary.not_things or likeness
         ):  # "a street musician", "a golf cart", "a taiko drum": the noun before names its kind
             # (a material, a place or a time before a catalogue thing does not: "an oak table")
@@ -260,12 +267,17 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if m.group >= 0:
             return m.group
         if (m.definite or m.each) and not sizes:
-            head = singular(self.toks[m.end - 1].text)
-            family = self.catalogue[m.category].family  # a camel is not "the pig"
+            vocabulary = load_vocabulary()
+            head = vocabulary.singular(self.toks[m.end - 1].text)
+            # a camel is not "the pig", nor "the cookhouse" the bunkhouse: in a family, or between
+            # two guessed words, one thing only by the same head noun
+            family = self.catalogue[m.category].family
             found = next(
                 (
                     g.index for g in reversed(self.groups)
-                    if g.category == m.category and (not family or singular(g.name.split()[-1]) == head)
+                    if g.category == m.category and (
+                        not (family or m.guess is not None and g.guessed) or singular(g.name.split()[-1]) == head
+                    )
                 ),
                 None,
             )  # fmt: skip
@@ -284,6 +296,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 found = next(
                     (g.index for g in reversed(self.groups) if g.name.split()[-1].endswith(head)), None
                 )
+            kinds = vocabulary.hypernyms.get(head, ()) if m.definite and m.end - m.start == 1 else ()
+            if found is None and kinds:  # "the ship" after "a flying saucer": that thing again
+                found = next(
+                    (g.index for g in reversed(self.groups)
+                     if g.category in kinds or self.catalogue[g.category].shape in kinds),
+                    None,
+                )  # fmt: skip
             if found is not None:
                 m.group = found
                 if m.counted and _is_plural(self.toks, m) and self.groups[found].count < m.count:
@@ -407,9 +426,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
 
     def _one_per_holder(self) -> None:
         """"Three miners with pickaxes", "a mechanic with a wheel gun kneels beside each car": a
-        thing in hand comes once per holder, unless the text counts it ("two men with one ladder")."""
+        thing in hand comes once per holder, unless the text counts it ("two men with one ladder")
+        or it is too big for one to hold ("two rescuers carry a stretcher" carry one)."""
         for g, h in self.in_hand:
-            if g not in self.numbered and self.groups[h].count > 1:
+            if g not in self.numbered and self.groups[h].count > 1 and self._handheld(g):
                 self.groups[g].count = self.groups[h].count
 
     def _where(self, cs: int, c: _Clause, since: int) -> None:

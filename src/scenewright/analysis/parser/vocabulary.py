@@ -87,6 +87,14 @@ class Vocabulary:
     lookout_verbs: frozenset[str] = frozenset()
     #: Place words that are a thing when the text puts something on top of them or at their foot.
     landforms: dict[str, Entry] = field(default_factory=dict)
+    #: Words that name a kind of thing named before ("the ship" after "a flying saucer").
+    hypernyms: dict[str, frozenset[str]] = field(default_factory=dict)
+    #: Place words that are a building of the scene when the text puts something outside them.
+    buildings: dict[tuple[str, ...], Entry] = field(default_factory=dict)
+    #: Parts that are a thing of their own once detached ("spare heads", "its arm removed").
+    loose_parts: dict[str, Entry] = field(default_factory=dict)
+    #: Words that detach a part ("spare", "severed", "removed").
+    detached: frozenset[str] = frozenset()
 
     def carries(self, category: str, name: str, kinds: tuple[str, ...] | None = None, by_family: bool = True) -> bool:
         """Whether a thing of ``category`` named ``name`` is one of the ``kinds`` of carriers
@@ -119,9 +127,14 @@ class Vocabulary:
         """The entry a word tuple names, the last word also in its singular form."""
         if tokens in self.entries:
             return self.entries[tokens]
-        if tokens:
-            return self.entries.get((*tokens[:-1], singular(tokens[-1])))
-        return None
+        if not tokens:
+            return None
+        return self.entries.get((*tokens[:-1], self.singular(tokens[-1])))
+
+    def singular(self, word: str) -> str:
+        """``singular``, also for the plural of a listed "-ic" noun ("mechanics", "medics"),
+        which ``singular`` keeps as a subject of study ("physics")."""
+        return word[:-1] if word.endswith("ics") and (word[:-1],) in self.entries else singular(word)
 
     def is_thing_word(self, word: str) -> bool:
         """Could ``word`` head a noun phrase naming a thing? Not a place, time, part, material
@@ -166,6 +179,10 @@ class Vocabulary:
         one = singular(head.lower())
         agent = one.endswith(_AGENT_ENDINGS) and len(one) - 2 >= _MIN_STEM
         return self._family("figure") if (agent and acts) or human else None
+
+    def family(self, family: str) -> Entry:
+        """The entry of a shape family ("vehicle"), its size and rest the catalogue's."""
+        return self._family(family)
 
     @staticmethod
     def _family(family: str) -> Entry:
@@ -222,6 +239,18 @@ def _validate(raw: dict) -> Vocabulary:
             for k, v in raw.get("landforms", {}).items()
             if k != "about"
         },
+        hypernyms={k: frozenset(v) for k, v in raw.get("hypernyms", {}).items() if k != "about"},
+        buildings={
+            tuple(words(k)): Entry(v[0], (float(v[1]), float(v[2]), float(v[3])), catalogue[v[0]].rests)
+            for k, v in raw.get("buildings", {}).items()
+            if k != "about"
+        },
+        loose_parts={
+            k: Entry(v[0], (float(v[1]), float(v[2]), float(v[3])), catalogue[v[0]].rests)
+            for k, v in raw.get("loose_parts", {}).items()
+            if k not in ("about", "detached")
+        },
+        detached=frozenset(raw.get("loose_parts", {}).get("detached", ())),
     )
 
 

@@ -21,7 +21,8 @@ _QUANTITY = {
     "series": 3, "trio": 3, "clusters": 5, "grove": 4, "patch": 1, "flock": 6, "herd": 6, "flocks": 12,
     "herds": 12, "string": 1, "school": 8, "shoal": 8, "swarm": 10, "pod": 4, "pack": 5, "pride": 5, "troop": 6,
     "litter": 4, "gaggle": 6, "colony": 10, "fleet": 5, "convoy": 4, "crew": 4, "team": 5, "squad": 5, "gang": 4,
-    "band": 4, "crowd": 8, "throng": 8, "procession": 6, "column": 4, "file": 4, "parade": 6,
+    "band": 4, "crowd": 8, "throng": 8, "procession": 6, "column": 4, "file": 4, "parade": 6, "train": 4,
+    "caravan": 4, "tower": 4, "pyramid": 6,
 }  # fmt: skip
 _DETERMINERS = {"a", "an", "the", "this", "that", "these", "those", "its", "their", "his", "her", "our", "my",
                 "your", "another", "each", "every", "any", "other", "one", "all"}  # fmt: skip
@@ -29,7 +30,7 @@ _DEFINITE = {"the", "this", "that", "these", "those", "its", "their", "his", "he
 _PRONOUNS = {"it", "them", "itself", "themselves", "one"}
 #: Less common prepositions: they end a noun phrase and name no kind of the noun before ("a wheelchair past the door").
 _PREPOSITIONS = {"past", "beyond", "among", "amongst", "amid", "amidst", "via", "within", "without", "alongside",
-                 "during", "until", "despite", "except", "aboard", "astride"}  # fmt: skip
+                 "during", "until", "despite", "except", "aboard", "astride", "before"}  # fmt: skip
 #: Adverbs of place that may follow a noun ("a beam overhead", "a fish on the ice nearby"): no kind of it.
 _PLACE_ADVERBS = {"overhead", "nearby", "aloft", "upstairs", "downstairs", "ashore", "underfoot", "offshore",
                   "uphill", "downhill", "downstream", "upstream", "yonder"}  # fmt: skip
@@ -69,6 +70,13 @@ _CONTENT_MARKERS = {("full", "of"), ("filled", "with"), ("packed", "with"), ("ov
 #: ("a stall selling pies", "a cart serving hot drinks"; but "a vendor sells two balloons").
 _WARES_VERBS = {"sell", "sells", "selling", "sold", "serve", "serves", "serving", "served", "offer", "offers",
                 "offering", "stocks", "stocking", "peddles", "peddling", "hawks", "hawking"}  # fmt: skip
+#: Verbs of cooking: a bare noun right after one is the food cooked, no thing of the layout ("a woman
+#: grills fish over the fire", "roasting chestnuts"; but "grills two fish" are there).
+_COOK_VERBS = {"grill", "grills", "grilling", "fry", "fries", "frying", "roast", "roasts", "roasting", "bake",
+               "bakes", "baking", "boil", "boils", "boiling", "toast", "toasts", "toasting", "smoke", "smokes",
+               "smoking", "barbecue", "barbecues", "barbecuing", "cook", "cooks", "cooking", "stew", "stews",
+               "stewing", "sear", "sears", "searing", "steam", "steams", "steaming", "gut", "guts", "gutting",
+               "fillet", "fillets", "filleting", "chop", "chops", "chopping", "knead", "kneads", "kneading"}  # fmt: skip
 _HANG_VERBS = {"hang", "hangs", "hanging", "hung", "strung", "hover", "hovers", "hovering", "float", "floats",
                "floating", "suspended", "dangle", "dangles", "dangling", "fly", "flies", "flying",
                "soar", "soars", "soaring", "glow", "glows", "drift", "drifts", "mounted", "swing",
