@@ -858,12 +858,15 @@ def test_at_a_part_one_stands_on_is_on_the_thing():
     assert ("girl_1", "on", "barge_1") in rels("A barge lies by the quay, and a girl stands at the bow of the barge.")
 
 
-def test_fewer_than_four_around_a_thing_cover_its_four_sides_seats_one_side_each():
+def test_fewer_than_four_around_a_thing_cover_its_four_sides_seats_at_a_table_one_side_each():
     found = rels("Two ducks waddle around the bench.")
     sides = {r for _, r, _ in found} - {"face to"}
     assert sides == {"left of", "right of", "in front of", "behind"}
     assert {("bird_1", "face to", "bench_1"), ("bird_2", "face to", "bench_1")} <= found
-    assert len([r for r in rels("Three stools stand around the barrel.") if r[1] != "face to"]) == 3
+    found = rels("Three folding chairs stand around the brazier.")
+    assert {r for _, r, _ in found} - {"face to"} == {"left of", "right of", "in front of", "behind"}
+    # seats at a table are pulled up to a side each
+    assert len([r for r in rels("Two chairs stand around the round table.") if r[1] != "face to"]) == 2
 
 
 def test_one_who_sits_under_a_thing_on_a_seat_is_on_the_seat():

@@ -30,9 +30,9 @@ def _ids(groups: list[_Group]) -> None:
 
 def _around_sides(n: int, src: _Group, tgt: _Group, corners: bool) -> list[tuple[str, ...]]:
     """Which sides of the target each of ``n`` surrounding objects takes: long sides first. Fewer
-    than four that are no seats ("two children run around the well", "three dogs sit around her")
-    stand so that between them they are on every side, the first ones at corners (on two sides
-    at once); seats keep one side each, pulled up to it."""
+    than four ("two children run around the well", "three dogs sit around her", "three chairs
+    around the campfire") stand so that between them they are on every side, the first ones at
+    corners (on two sides at once); seats at a table keep one side each, pulled up to it."""
     tx, ty, _ = tgt.size
     width = max(src.size[0], 0.3) + 0.15
     if tx >= 1.4 * ty:
@@ -156,8 +156,9 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
         elif kind == "around":
             # paired ("each surrounded by two chairs"): each target's sides go to its own share
             per = len(tgt.ids) if paired else 1
-            seat = reader.catalogue[src.category].shape in _SEATS
-            sides = _around_sides(-(-len(src.ids) // per), src, tgt, corners=not seat)
+            # (seats at a table or a desk are pulled up to a side each; around a fire or a well any way round)
+            seat_at = reader.catalogue[src.category].shape in _SEATS and reader.catalogue[tgt.category].support
+            sides = _around_sides(-(-len(src.ids) // per), src, tgt, corners=not seat_at)
             for i, a in enumerate(src.ids):
                 b = tgt.ids[i % len(tgt.ids)]
                 out += [ParsedRelation(a, side, b) for side in sides[i // per]] + [ParsedRelation(a, "face to", b)]
