@@ -824,6 +824,7 @@ def test_a_load_trails_its_puller_and_where_they_go_is_the_pullers():
 def test_what_heads_towards_a_thing_faces_it_a_puller_or_a_leader_too():
     assert ("truck_1", "face to", "arch_1") in rels("A truck tows a caravan towards the gate.")
     assert ("farmer_1", "face to", "barn_1") in rels("A farmer leads a cow towards the barn.")
+    assert ("nurse_1", "face to", "ambulance_1") in rels("Two nurses carry a stretcher towards the ambulance.")
     # what is pushed goes there, not its pusher
     assert not any(r == "face to" for _, r, _ in rels("A porter pushes a luggage cart toward the kiosk."))
 

@@ -1018,9 +1018,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         row", "stacked"), a part of the room ("against the wall", "in the middle of the room")."""
         toks, rel, kind, srcs, end, ce = self.toks, p.rel, p.kind, p.srcs, p.end, p.ce
         toward = toks[rel.start].text.startswith(("toward", "heading"))
-        # a load trails its puller and a led animal its leader: neither is what goes there
+        # a load trails its puller, a led animal its leader and what one carries its carrier: none of
+        # them is what goes there ("two rescuers carry a stretcher towards the helicopter": they face it)
         trailing = {t for k, ts in c.rels if k == "towing" for t in ts}
         trailing |= {d for doers, thing in c.deeds if thing in srcs for d in doers}
+        trailing |= {g for g, holder in self.carried if holder in srcs}
         objects = [g for g in c.main_groups if g not in c.subjects and g not in trailing]
         # what pulls a load moves under its own power, whatever the catalogue calls it ("a skidder hauls timber")
         hauls = self._verb_before(rel.start, lambda w: _phrase_table().get((w,)) == "towing")
