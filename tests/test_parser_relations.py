@@ -910,3 +910,8 @@ def test_it_after_the_opposite_side_names_the_same_landmark():
     assert ("lamp_post_1", "right of", "kiosk_1") in found
     # the same side is the subject's ("a tractor behind the barn, a dog behind it": behind the tractor)
     assert ("dog_1", "behind", "tractor_1") in rels("A tractor is parked behind the barn, and a dog sleeps behind it.")
+
+
+def test_a_part_of_a_thing_reaches_past_the_usual_few_words():
+    assert ("ferryman_1", "side of", "arch_1") in rels("The ferryman leans on the long iron bar of the old gate.")
+    assert ("cat_1", "on", "shed_1") in rels("A cat sleeps on the sunny roof of the little red shed.")

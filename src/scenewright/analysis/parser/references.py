@@ -53,7 +53,8 @@ class _References:
             self._part = singular(toks[part_of_each - 1].text)
             return "each one", part_of_each + 2
         j = pos
-        while j < ce and j - pos < 6:
+        # a part "of" a thing reaches a few words further ("on the balance beam of the upper gate")
+        while j < ce and j - pos < (9 if "of" in [t.text for t in toks[pos + 1 : j]] else 6):
             if j in self.by_start:
                 m = self.by_start[j]
                 self._target_start = m.start
