@@ -915,3 +915,10 @@ def test_it_after_the_opposite_side_names_the_same_landmark():
 def test_a_part_of_a_thing_reaches_past_the_usual_few_words():
     assert ("ferryman_1", "side of", "arch_1") in rels("The ferryman leans on the long iron bar of the old gate.")
     assert ("cat_1", "on", "shed_1") in rels("A cat sleeps on the sunny roof of the little red shed.")
+
+
+def test_a_participle_with_its_object_is_no_list_sharing_the_place_before():
+    assert ("goat_1", "on", "bench_1") not in rels("A girl sits on the bench, feeding a goat.")
+    assert not any(s == "dog_1" for s, _, _ in rels("Two boys run around the fountain, chasing a puppy."))
+    found = rels("A cat sleeps on the sofa, a sleeping dog and a kitten.")
+    assert {("dog_1", "on", "sofa_1"), ("cat_2", "on", "sofa_1")} <= found

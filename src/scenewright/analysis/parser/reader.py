@@ -555,6 +555,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             w = self.toks[k].text
             if w in _HOLD:  # "a counter holds a till, and clocks stand behind it": two clauses
                 return False
+            # ", feeding a goat", ", chasing a puppy": a participle with its object, a clause of its own
+            # (not "a sleeping dog", whose participle is the noun's own word)
+            nxt = k + 1 < ce and (self.toks[k + 1].text in _DETERMINERS or k + 1 in self.by_start)
+            if w.endswith("ing") and k not in self.named_at and nxt:
+                return False
             if k in allowed or w in ("and", "or", "with") or w in _DETERMINERS or w in _NUMBERS:
                 continue
             return False
