@@ -922,3 +922,15 @@ def test_a_participle_with_its_object_is_no_list_sharing_the_place_before():
     assert not any(s == "dog_1" for s, _, _ in rels("Two boys run around the fountain, chasing a puppy."))
     found = rels("A cat sleeps on the sofa, a sleeping dog and a kitten.")
     assert {("dog_1", "on", "sofa_1"), ("cat_2", "on", "sofa_1")} <= found
+
+
+def test_facing_from_across_a_place_is_across_from():
+    found = rels("A leather armchair faces the fireplace from across the room.")
+    assert {("armchair_1", "in front of", "fireplace_1"), ("armchair_1", "face to", "fireplace_1")} <= found
+    found = rels("A bakery stands on the square. Across the street, a small kiosk faces the bakery stall.")
+    assert ("kiosk_1", "in front of", "market_stall_1") in found
+    # from across a thing, or a later clause part, only faces
+    found = rels("Two armchairs face the sofa from across the coffee table.")
+    assert ("armchair_1", "in front of", "sofa_1") not in found and ("armchair_1", "face to", "sofa_1") in found
+    found = rels("Across the road, a goat stands on a boulder, watching the robot.")
+    assert ("goat_1", "face to", "robot_1") in found and ("goat_1", "in front of", "robot_1") not in found

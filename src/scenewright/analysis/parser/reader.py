@@ -901,6 +901,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         mutual = [t.text for t in toks[max(0, rel.start - 2) : rel.start]] in (["each", "other"], ["one", "another"])
         if kind == "on a carrier" and mutual:
             kind = "no relation"  # "two men face each other across the bench": the bench is between them
+        if kind == "face to" and self._across_from(rel.start, end):
+            kind = "opposite"  # "a sofa faces the piano from across the room", "Across the street, a kiosk faces the shelter"
         carried_on = ("on", "on top", "in", "under", "on a carrier")
         if (body == "near" and kind != "around") or (body == "on" and kind in carried_on):
             # ("hens around her feet" stay around her; "a surfboard under his arm", "an axe across his
@@ -911,6 +913,17 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if kind == "at" and part in _STANDING_PARTS:
             kind = "on"  # "a shuttle docked at its top", "the captain stands at its prow": as "on" it
         return _Phrase(rel, ce, kind, target, end, ordinals, body, part, parts_each)
+
+    def _across_from(self, start: int, end: int) -> bool:
+        """Whether a facing phrase faces its target from across a place (no object: "from across the
+        room" right after the target, not "from across the table"), or in the clause right after a
+        sentence's opening "Across the street,": across from it."""
+        toks = self.toks
+        if [t.text for t in toks[end : end + 2]] == ["from", "across"]:
+            return not any(k in self.by_start for k in range(end + 2, min(end + 6, len(toks))))
+        opening = max((k for k in range(start) if toks[k].text in (".", "!", "?", ";")), default=-1) + 1
+        breaks = sum(toks[k].text == "," for k in range(opening, start))
+        return toks[opening].text == "across" and toks[opening + 1].text != "from" and breaks == 1
 
     def _sources(self, c: _Clause, p: _Phrase, prev_subject, last_event_end) -> int | None:
         """What the phrase places: the target before it when the phrase chains on it or a
