@@ -934,3 +934,9 @@ def test_facing_from_across_a_place_is_across_from():
     assert ("armchair_1", "in front of", "sofa_1") not in found and ("armchair_1", "face to", "sofa_1") in found
     found = rels("Across the road, a goat stands on a boulder, watching the robot.")
     assert ("goat_1", "face to", "robot_1") in found and ("goat_1", "in front of", "robot_1") not in found
+
+
+def test_behind_a_puller_is_behind_its_load():
+    assert ("farmer_1", "behind", "plough_1") in rels("A horse pulls a plough across the field, and a farmer walks behind it.")
+    found = rels("A tractor tows a trailer past the barn. A dog runs behind the tractor.")
+    assert ("dog_1", "behind", "trailer_1") in found and ("trailer_1", "behind", "tractor_1") in found

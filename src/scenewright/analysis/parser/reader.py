@@ -195,6 +195,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         #: What the clause before was about: its subjects, then what they were placed by, latest
         #: first; a phrase opening the next one with "it"/"them" names one of these first.
         self.topic: list[int] = []
+        #: Puller → the load it pulls ("a horse pulls a plough"): what is behind the puller is behind its load.
+        self.towed: dict[int, int] = {}
 
     # ---- groups
 
@@ -1205,6 +1207,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             for t in targets:
                 for h in head:
                     self._relate(active, [t], h)
+                    if kind == "towing":
+                        self.towed[h] = t
             c.produced = True
             c.rels.append((kind, targets))
             if c.head is None:
@@ -1437,6 +1441,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
     def _relate(self, kind: str, srcs: list[int], target: int, hang: bool = False, instance=None) -> None:
         for s in srcs:
             resolved = self._kind(kind, s, target, hang)
+            # "a horse pulls a plough, and a farmer walks behind it": behind the plough, the train's tail
+            seen = {s}
+            while resolved == "behind" and target in self.towed and self.towed[target] not in seen:
+                seen.add(target)
+                target = self.towed[target]
             if resolved == "on":
                 s = self._ridden(s, target)
             if s == target or resolved == "no relation":
