@@ -940,3 +940,10 @@ def test_behind_a_puller_is_behind_its_load():
     assert ("farmer_1", "behind", "plough_1") in rels("A horse pulls a plough across the field, and a farmer walks behind it.")
     found = rels("A tractor tows a trailer past the barn. A dog runs behind the tractor.")
     assert ("dog_1", "behind", "trailer_1") in found and ("trailer_1", "behind", "tractor_1") in found
+
+
+def test_out_of_its_own_shelter_and_a_phrase_after_it():
+    found = rels("A kitten peeks out of its basket by the stove.")
+    assert {("cat_1", "on", "basket_1"), ("basket_1", "near", "stove_1")} <= found
+    # "behind it" after "in front of" stays the subject's back
+    assert ("dog_1", "behind", "cat_1") in rels("A cat sits in front of the fireplace, and a dog lies behind it.")

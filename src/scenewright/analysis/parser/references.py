@@ -67,6 +67,8 @@ class _References:
                 # "a rocket stands on its launch pad": what a thing is placed on is no part of it
                 # ("bells hang from its railing": the railing is)
                 own_support = pos >= 2 and toks[pos - 1].text in ("on", "upon") and toks[pos - 2].text in _PLACING_VERBS
+                # ("a horse looks out of its stable": one's own shelter, a thing of its own)
+                own_support = own_support or [t.text for t in toks[max(0, pos - 2) : pos]] == ["out", "of"]
                 if owner and m.group < 0 and not own_support and not any(g.category == m.category for g in self.groups):
                     self._part = singular(toks[m.end - 1].text)
                     return owner, m.end  # "pumpkins on its counter": the stall's own counter is the stall
