@@ -52,8 +52,9 @@ Decisions worth knowing:
   turns or spins ``above`` a thing is aloft ("a hologram turns above the table"); ``across`` a
   thing a living thing can stand on, or "leaning out of" / "peeks out of" one, → on it (across
   anything else, or fronted, nothing); "climbs out of" → near; ``at`` a part one stands on (its
-  top, prow, stern, deck, roof) → on the thing; ``at a distance of N m`` → ``near`` when N ≤ 2,
-  ``far`` when N > 8.
+  top, prow, stern, deck, roof) → on the thing; facing a thing "from across the room" (a place) or
+  after an opening "Across the street," → across from it; ``at a distance of N m`` → ``near`` when
+  N ≤ 2, ``far`` when N > 8.
 - People and animals (``hands``): what one uses, works with or takes from is in hand, ``on`` the
   holder, when small enough to hold ("eats a sandwich", "practises with five clubs", "sipping
   coffee from a paper cup", "a glass in one hand", "baskets on their backs"); the holder takes the
