@@ -58,7 +58,9 @@ def test_a_comma_list_is_separate_things_and_an_and_list_shares_the_place():
         ("A lantern hanging from the shelf.", ("lantern_1", "on", "bookshelf_1")),
         ("A lantern hanging from the oak tree.", ("lantern_1", "near", "tree_1")),
         ("A bicycle leaning on the fence.", ("bicycle_1", "side of", "fence_1")),
-        ("Benches run along the fence.", ("bench_1", "side of", "fence_1")),
+        # along a thing is by it, parallel to it ("side of" would put the benches off the fence's end)
+        ("Benches run along the fence.", ("bench_1", "near", "fence_1")),
+        ("Lamp posts stand along the hedge.", ("lamp_post_1", "near", "bush_1")),
         ("A stool at the counter.", ("stool_1", "in front of", "counter_1")),
         ("A cat sits at the well.", ("cat_1", "near", "well_1")),
         ("A desk stands by the window. Its chair is pushed under it.", ("chair_1", "in front of", "desk_1")),
@@ -752,7 +754,7 @@ def test_a_seat_behind_a_thing_places_the_sitter_beside_it_the_seat():
 
 def test_surface_things_along_a_shelf_or_counter_stand_on_it():
     found = rels("A row of glass jars lining a shelf stands by the door. A row of stools runs along the counter.")
-    assert ("bottle_1", "on", "bookshelf_1") in found and ("stool_1", "side of", "counter_1") in found
+    assert ("bottle_1", "on", "bookshelf_1") in found and ("stool_1", "near", "counter_1") in found
 
 
 def test_an_animal_inside_it_is_in_the_container_named_before_not_the_last_target():
@@ -806,3 +808,142 @@ def test_a_load_rides_on_the_noun_right_before_laden_and_that_noun_is_placed():
     found = rels("Two boys lead a donkey laden with sacks between the tents.")
     assert ("sack_1", "on", "horse_1") in found and ("horse_1", "right of", "tent_1") in found
     assert not any(r[0].startswith("sack") and r[2] == "boy_1" for r in found)
+
+
+def test_a_load_trails_its_puller_and_where_they_go_is_the_pullers():
+    found = rels("A mule drags a sledge between two barns.")
+    assert {("mule_1", "right of", "barn_1"), ("mule_1", "left of", "barn_2"), ("sled_1", "behind", "mule_1")} <= found
+    assert not any(s == "sled_1" and t.startswith("barn") for s, _, t in found)
+    found = rels("An ox pulls a wagon of hay past the well.")
+    assert ("ox_1", "near", "well_1") in found and ("cart_1", "near", "well_1") not in found
+    # what rides on the load is no subject of the verb either ("a trailer of children past the pond")
+    assert rels("A tractor pulls a trailer of sheep past the barn.") & {("tractor_1", "near", "barn_1")}
+    assert not any(t == "barn_1" and s != "tractor_1" for s, _, t in rels("A tractor pulls a trailer of sheep past the barn."))
+
+
+def test_what_heads_towards_a_thing_faces_it_a_puller_or_a_leader_too():
+    assert ("truck_1", "face to", "arch_1") in rels("A truck tows a caravan towards the gate.")
+    assert ("farmer_1", "face to", "barn_1") in rels("A farmer leads a cow towards the barn.")
+    assert ("nurse_1", "face to", "ambulance_1") in rels("Two nurses carry a stretcher towards the ambulance.")
+    # what is pushed goes there, not its pusher
+    assert not any(r == "face to" for _, r, _ in rels("A porter pushes a luggage cart toward the kiosk."))
+
+
+def test_what_turns_above_a_thing_is_up_in_the_air_a_tall_thing_is_by_it():
+    assert ("hologram_1", "above", "round_table_1") in rels("A hologram of a whale rotates above the round table.")
+    assert ("pine_tree_1", "near", "pond_1") in rels("A pine towers above the pond.")
+
+
+def test_the_middle_one_of_a_group_is_halfway_along():
+    assert ("cat_1", "on", "locker_3") in rels("Five lockers stand in a row, and a cat sleeps on the middle locker.")
+
+
+def test_across_a_thing_one_can_stand_on_is_on_it():
+    assert ("lizard_1", "on", "rock_1") in rels("A lizard scuttles across the boulder.")
+    assert ("goose_1", "on", "bridge_1") in rels("A goose waddles across the bridge.")
+    assert ("cat_1", "on", "shed_1") in rels("A cat pads across the roof of the shed.")
+    assert ("rifle_1", "on", "hunter_1") in rels("A hunter sits on a log, a rifle across his knees.")
+    # a thing that rolls across, a fronted "across" (its far side), and "across" between two who face each other
+    assert not rels("A wheelbarrow rolls across the bridge.")
+    assert ("heron_1", "on", "bridge_1") not in rels("Across the bridge, a heron waits beside a post.")
+    assert not any(r == "on" for _, r, _ in rels("Two boxers face each other across the bench."))
+
+
+def test_out_of_a_thing():
+    assert ("girl_1", "near", "car_1") in rels("A girl steps out of the car.")
+    assert ("dog_1", "on", "laundry_basket_1") in rels("A puppy peeks out of the laundry basket.")
+
+
+def test_at_a_part_one_stands_on_is_on_the_thing():
+    assert ("fisherman_1", "on", "boat_1") in rels("A rowing boat is tied to the jetty, and a fisherman sits at its stern.")
+    assert ("girl_1", "on", "barge_1") in rels("A barge lies by the quay, and a girl stands at the bow of the barge.")
+
+
+def test_fewer_than_four_around_a_thing_cover_its_four_sides_seats_at_a_table_one_side_each():
+    found = rels("Two ducks waddle around the bench.")
+    sides = {r for _, r, _ in found} - {"face to"}
+    assert sides == {"left of", "right of", "in front of", "behind"}
+    assert {("bird_1", "face to", "bench_1"), ("bird_2", "face to", "bench_1")} <= found
+    found = rels("Three folding chairs stand around the brazier.")
+    assert {r for _, r, _ in found} - {"face to"} == {"left of", "right of", "in front of", "behind"}
+    # seats at a table are pulled up to a side each
+    assert len([r for r in rels("Two chairs stand around the round table.") if r[1] != "face to"]) == 2
+
+
+def test_one_who_sits_under_a_thing_on_a_seat_is_on_the_seat():
+    found = rels("A shepherd dozes beneath the olive tree on a hay bale.")
+    assert {("shepherd_1", "on", "hay_bale_1"), ("shepherd_1", "near", "tree_1")} <= found
+    assert not any(s == "tree_1" for s, _, _ in found)
+
+
+def test_its_own_part_or_support_names_no_other_thing():
+    # "with fresh bread on its counter": the stall's own counter, the stall is on nothing
+    assert not any(r == "on" for _, r, _ in rels("A bakery stall stands under an awning by the well, with fresh bread on its counter."))
+    assert rels("A drone rests on its charging pad beside the shed.") == {("drone_1", "side of", "shed_1")}
+    assert rels("A horse rears up on its hind legs beside the fence.") == {("horse_1", "side of", "fence_1")}
+
+
+def test_it_after_at_the_foot_of_or_seated_around_is_a_thing():
+    found = rels("A donkey dozes beside the windmill, and two hens peck at the foot of it.")
+    assert ("hen_1", "in front of", "windmill_1") in found
+    found = rels("A fox lays out a tea table, and three rabbits sit on stools around it.")
+    assert ("rabbit_1", "face to", "table_1") in found and not any(t == "fox_1" for _, _, t in found)
+
+
+def test_it_is_no_thing_someone_has_in_hand():
+    found = rels("A ferryman stands on the raft holding a lantern, and two otters swim alongside it.")
+    assert ("otter_1", "side of", "boat_1") in found and ("otter_1", "side of", "lantern_1") not in found
+
+
+def test_company_a_verb_names_goes_along_with_its_subject_who_takes_the_phrase():
+    found = rels("A girl plays with a puppy under the oak.")
+    assert {("girl_1", "near", "tree_1"), ("dog_1", "near", "girl_1")} <= found
+    found = rels("A shepherd walks with his dog along the hedge.")
+    assert ("shepherd_1", "near", "bush_1") in found and ("dog_1", "near", "bush_1") not in found
+    # a with-part after a comma is a description of its own, placed by its phrase
+    assert ("dog_1", "near", "bench_1") in rels("A man sits on the bench, with his terrier asleep under it.")
+
+
+def test_it_after_the_opposite_side_names_the_same_landmark():
+    assert ("boy_1", "in front of", "anvil_1") in rels("A smith works behind the anvil, and a boy waits in front of it.")
+    found = rels("A bench stands to the left of the kiosk, and a lamp post stands to the right of it.")
+    assert ("lamp_post_1", "right of", "kiosk_1") in found
+    # the same side is the subject's ("a tractor behind the barn, a dog behind it": behind the tractor)
+    assert ("dog_1", "behind", "tractor_1") in rels("A tractor is parked behind the barn, and a dog sleeps behind it.")
+
+
+def test_a_part_of_a_thing_reaches_past_the_usual_few_words():
+    assert ("ferryman_1", "side of", "arch_1") in rels("The ferryman leans on the long iron bar of the old gate.")
+    assert ("cat_1", "on", "shed_1") in rels("A cat sleeps on the sunny roof of the little red shed.")
+
+
+def test_a_participle_with_its_object_is_no_list_sharing_the_place_before():
+    assert ("goat_1", "on", "bench_1") not in rels("A girl sits on the bench, feeding a goat.")
+    assert not any(s == "dog_1" for s, _, _ in rels("Two boys run around the fountain, chasing a puppy."))
+    found = rels("A cat sleeps on the sofa, a sleeping dog and a kitten.")
+    assert {("dog_1", "on", "sofa_1"), ("cat_2", "on", "sofa_1")} <= found
+
+
+def test_facing_from_across_a_place_is_across_from():
+    found = rels("A leather armchair faces the fireplace from across the room.")
+    assert {("armchair_1", "in front of", "fireplace_1"), ("armchair_1", "face to", "fireplace_1")} <= found
+    found = rels("A bakery stands on the square. Across the street, a small kiosk faces the bakery stall.")
+    assert ("kiosk_1", "in front of", "market_stall_1") in found
+    # from across a thing, or a later clause part, only faces
+    found = rels("Two armchairs face the sofa from across the coffee table.")
+    assert ("armchair_1", "in front of", "sofa_1") not in found and ("armchair_1", "face to", "sofa_1") in found
+    found = rels("Across the road, a goat stands on a boulder, watching the robot.")
+    assert ("goat_1", "face to", "robot_1") in found and ("goat_1", "in front of", "robot_1") not in found
+
+
+def test_behind_a_puller_is_behind_its_load():
+    assert ("farmer_1", "behind", "plough_1") in rels("A horse pulls a plough across the field, and a farmer walks behind it.")
+    found = rels("A tractor tows a trailer past the barn. A dog runs behind the tractor.")
+    assert ("dog_1", "behind", "trailer_1") in found and ("trailer_1", "behind", "tractor_1") in found
+
+
+def test_out_of_its_own_shelter_and_a_phrase_after_it():
+    found = rels("A kitten peeks out of its basket by the stove.")
+    assert {("cat_1", "on", "basket_1"), ("basket_1", "near", "stove_1")} <= found
+    # "behind it" after "in front of" stays the subject's back
+    assert ("dog_1", "behind", "cat_1") in rels("A cat sits in front of the fireplace, and a dog lies behind it.")

@@ -27,7 +27,7 @@ Decisions worth knowing:
   ``at the foot of`` anything → in front of it, ``at the head of`` a bed → behind it (a table's head is
   an end); ``at the end of`` a table or a counter → on it for a tabletop thing, of a bed → in front
   of it, else near it; ``hanging from`` a beam → above it, from a tree → near it, from anything else (a post, a
-  stall, a tower's railing) → on it; ``leaning on`` / ``along`` → side of;
+  stall, a tower's railing) → on it; ``leaning on`` → side of, ``along`` → near (by it, parallel);
   ``in a row`` / ``stacked`` → each right of / on the one before; ``against the wall``, ``in
   the corner``, ``in the middle of the room``, ``at the back`` name no object and become the
   object's ``anchor`` for the arranger.
@@ -42,12 +42,19 @@ Decisions worth knowing:
   ``on either side of`` → one flanker ``left of`` and one ``right of`` (one thing named "on each
   side of" is two, one a side, even beside a door that is no object); ``around`` /
   ``surrounding`` / ``surrounded by`` → the surrounding objects shared among the target's
-  sides (every side once, then the long sides of a long table), each facing it; one thing
-  "around" another is ``near`` it, unless it moves (a person, an animal, a vehicle: "a dog runs
-  around the tree"), which takes one side, facing it; ``from A to B`` → between A and B; a person or
-  an animal going ``towards`` a thing faces it, unless the verb moves an object there ("pushes a cart
-  toward the kiosk"); X ``towing`` / ``pulling`` Y → Y behind X; ``at a distance of N m`` → ``near``
-  when N ≤ 2, ``far`` when N > 8.
+  sides (every side once, then the long sides of a long table), each facing it; fewer than four
+  that are no seats cover the four sides between them, the first at corners ("two children run
+  around the well"); one thing "around" another is ``near`` it, unless it moves (a person, an
+  animal, a vehicle: "a dog runs around the tree"), which takes a corner, facing it; ``from A to
+  B`` → between A and B; a person, an animal or a vehicle going ``towards`` a thing faces it, unless
+  the verb moves an object there ("pushes a cart toward the kiosk"); X ``towing`` / ``pulling`` Y →
+  Y behind X, and the next phrase places X ("a pony pulls a cart between two shafts"); what
+  turns or spins ``above`` a thing is aloft ("a hologram turns above the table"); ``across`` a
+  thing a living thing can stand on, or "leaning out of" / "peeks out of" one, → on it (across
+  anything else, or fronted, nothing); "climbs out of" → near; ``at`` a part one stands on (its
+  top, prow, stern, deck, roof) → on the thing; facing a thing "from across the room" (a place) or
+  after an opening "Across the street," → across from it; ``at a distance of N m`` → ``near`` when
+  N ≤ 2, ``far`` when N > 8.
 - People and animals (``hands``): what one uses, works with or takes from is in hand, ``on`` the
   holder, when small enough to hold ("eats a sandwich", "practises with five clubs", "sipping
   coffee from a paper cup", "a glass in one hand", "baskets on their backs"); the holder takes the

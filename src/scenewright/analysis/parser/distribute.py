@@ -9,6 +9,7 @@ import re
 from collections import Counter
 from dataclasses import replace
 
+from scenewright.analysis.parser.grammar import _SEATS
 from scenewright.analysis.parser.model import ParsedRelation
 from scenewright.analysis.parser.nouns import _Group
 from scenewright.analysis.parser.reader import _Reader
@@ -27,8 +28,11 @@ def _ids(groups: list[_Group]) -> None:
             g.ids.append(f"{base}_{counters[base]}")
 
 
-def _around_sides(n: int, src: _Group, tgt: _Group) -> list[str]:
-    """Which side of the target each of ``n`` surrounding objects takes: long sides first."""
+def _around_sides(n: int, src: _Group, tgt: _Group, corners: bool) -> list[tuple[str, ...]]:
+    """Which sides of the target each of ``n`` surrounding objects takes: long sides first. Fewer
+    than four ("two children run around the well", "three dogs sit around her", "three chairs
+    around the campfire") stand so that between them they are on every side, the first ones at
+    corners (on two sides at once); seats at a table keep one side each, pulled up to it."""
     tx, ty, _ = tgt.size
     width = max(src.size[0], 0.3) + 0.15
     if tx >= 1.4 * ty:
@@ -42,9 +46,11 @@ def _around_sides(n: int, src: _Group, tgt: _Group) -> list[str]:
         long_cap = short_cap = max(1, int(max(tx, ty) // width))
     # every side once (four chairs take four sides), then the long sides fill up first
     order = first + short + first * (long_cap - 1) + short * (short_cap - 1)
+    if n < 4 and corners:
+        return [(first[0], short[0]), (first[1], short[1]) if n == 2 else (first[1],), (short[1],)][:n]
     if n < 4:
         order = first + short
-    return [order[i % len(order)] for i in range(n)]
+    return [(order[i % len(order)],) for i in range(n)]
 
 
 def _instance_pairs(src: _Group, tgt: _Group, paired: bool) -> list[tuple[str, str]]:
@@ -150,10 +156,12 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
         elif kind == "around":
             # paired ("each surrounded by two chairs"): each target's sides go to its own share
             per = len(tgt.ids) if paired else 1
-            sides = _around_sides(-(-len(src.ids) // per), src, tgt)
+            # (seats at a table or a desk are pulled up to a side each; around a fire or a well any way round)
+            seat_at = reader.catalogue[src.category].shape in _SEATS and reader.catalogue[tgt.category].support
+            sides = _around_sides(-(-len(src.ids) // per), src, tgt, corners=not seat_at)
             for i, a in enumerate(src.ids):
                 b = tgt.ids[i % len(tgt.ids)]
-                out += [ParsedRelation(a, sides[i // per], b), ParsedRelation(a, "face to", b)]
+                out += [ParsedRelation(a, side, b) for side in sides[i // per]] + [ParsedRelation(a, "face to", b)]
         elif kind == "under flat":
             for a, b in pairs:
                 out.append(ParsedRelation(b, "on", a))

@@ -18,12 +18,18 @@ _PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None,
                 "end of": None}  # fmt: skip
 #: Phrase kinds that place a thing on the ground beside another (not on it, not above it).
 _GROUND_KINDS = ("left of", "right of", "in front of", "behind", "side of", "near", "far", "left", "right")
+#: Sides facing each other across a thing: "it" after one of them names the thing the other placed by
+#: ("a lamp right of the sofa, a plant left of it"; "a robot behind the counter, colonists in front of
+#: it"). Not behind after in front of: "a cat sits in front of the fire, and a dog lies behind it" is
+#: the cat's back.
+_OPPOSITE_SIDES = {"in front of": "behind", "left of": "right of", "right of": "left of"}
 #: Besides those of the ground, phrase kinds that place a person rather than what they have in hand
 #: ("reads a book on the bench", "eats a sandwich at the table").
 _HOLDER_KINDS = ("on", "at", "in", "between", "under")
-#: Phrase kinds read as one of the scene's relations whatever they join.
+#: Phrase kinds read as one of the scene's relations whatever they join ("benches along the fence"
+#: stand by it, parallel to it on either face, not off one of its ends as "side of" would put them).
 _KIND_RELATION = {"left": "left of", "right": "right of", "flank elliptic": "flank", "hanging from": "above",
-                  "leaning on": "side of", "along": "side of"}  # fmt: skip
+                  "leaning on": "side of", "along": "near"}  # fmt: skip
 #: Phrase kinds that place their target by the thing before them ("a desk flanked by two lamps",
 #: "a snowmobile towing a sled": the sled behind it), and the relation the target gets.
 _REVERSED = {"flanked by": "flank", "surrounded by": "around", "near by": "near", "on by": "on", "towing": "behind"}
@@ -35,7 +41,10 @@ _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
 #: truck", "dozes in an armchair by the fire" (the armchair is by the fire), "a chandelier hangs above
 #: the table in front of the fireplace" (the table is), "lanterns hang from the branches of a tree
 #: behind the chairs" (the tree is).
-_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in", "from", "above", "over", "hanging from")
+_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in", "from", "above", "over", "hanging from",
+                "on a carrier")  # fmt: skip
+#: Parts of a thing one stands on: "at" one is on the thing ("at its top", "at its prow", "at the stern").
+_STANDING_PARTS = ("top", "roof", "rooftop", "deck", "prow", "bow", "stern")
 #: Sides of a thing named by a possessive ("against its side"): the owner places.
 _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
 #: "Piled with" or "covered in" on a cart or a table is a load of things standing on it when they are

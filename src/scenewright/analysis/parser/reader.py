@@ -31,6 +31,7 @@ from scenewright.analysis.parser.grammar import (
     _REVERSED,
     _RIDDEN,
     _SEATS,
+    _STANDING_PARTS,
     _VESSEL_KINDS,
 )
 from scenewright.analysis.parser.hands import _Hands
@@ -46,7 +47,7 @@ from scenewright.analysis.parser.nouns import (
     _post_description,
     _read_count,
 )
-from scenewright.analysis.parser.phrases import _Rel, _find_relations
+from scenewright.analysis.parser.phrases import _Rel, _find_relations, _phrase_table
 from scenewright.analysis.parser.references import _References
 from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
 from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _split, _tokenise
@@ -68,6 +69,7 @@ from scenewright.analysis.parser.words import (
     _PLANT_SHAPES,
     _SHARE_VERBS,
     _STOP,
+    _TURN_VERBS,
     _USE_VERBS,
     _is_verb,
 )
@@ -193,6 +195,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         #: What the clause before was about: its subjects, then what they were placed by, latest
         #: first; a phrase opening the next one with "it"/"them" names one of these first.
         self.topic: list[int] = []
+        #: Puller → the load it pulls ("a horse pulls a plough"): what is behind the puller is behind its load.
+        self.towed: dict[int, int] = {}
 
     # ---- groups
 
@@ -309,7 +313,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     self.groups[found].count = m.count  # "the two nearest benches" after "a bench": two at least
                 if not _is_plural(self.toks, m) and self.groups[found].count > 1 and not m.each:
                     adj = [a.lower() for a in m.adjectives]
-                    self.instance[m.start] = next((_ORDINALS[a] for a in adj if a in _ORDINALS), 0)
+                    # "the middle table" of four: the one halfway along
+                    middle = self.groups[found].count // 2 if {"middle", "central", "centre", "center"} & {*adj} else 0
+                    self.instance[m.start] = next((_ORDINALS[a] for a in adj if a in _ORDINALS), middle)
                 return found
         if m.alias:
             return -1
@@ -571,6 +577,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             w = self.toks[k].text
             if w in _HOLD:  # "a counter holds a till, and clocks stand behind it": two clauses
                 return False
+            # ", feeding a goat", ", chasing a puppy": a participle with its object, a clause of its own
+            # (not "a sleeping dog", whose participle is the noun's own word)
+            nxt = k + 1 < ce and (self.toks[k + 1].text in _DETERMINERS or k + 1 in self.by_start)
+            if w.endswith("ing") and k not in self.named_at and nxt:
+                return False
             if k in allowed or w in ("and", "or", "with") or w in _DETERMINERS or w in _NUMBERS:
                 continue
             return False
@@ -603,6 +614,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         c.opens = c.first or (starts_with_rel and k > cs and self._subject_after(self.rel_at[j].end, ce))
         c.unknown_subject = j > k and toks[k].text in ("a", "an", "the") and j not in self.by_start and not starts_with_rel
         last_event_end = cs
+        phrase_end = -1  # where the last relation phrase and its target end
         while k < ce:
             w = toks[k].text
             nxt = toks[k + 1].text if k + 1 < ce else ""
@@ -736,7 +748,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                         c.deeds.append((list(c.main), g))
                         c.deed_end = m.end
                     small_object = verb_object and self._living(c.main[-1]) and self._small(g) and not c.expect_new
-                    if not (led or into or small_object):
+                    # "pulls a trailer of waving children past the pond": what the "of" after a
+                    # phrase's target names is the target's load, not one the clause goes on about
+                    load = phrase_end == m.start - len(m.adjectives) - 1 and toks[phrase_end].text == "of"
+                    if not (led or into or small_object or load):
                         c.main = [g] if c.expect_new or verb_object else [*c.main, g]
                     if not c.verb_seen:
                         c.subjects.append(g)
@@ -747,7 +762,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             c.finite = c.finite or _is_verb(w)
             if k in self.rel_at:
                 k = self._relation(c, self.rel_at[k], ce, prev_subject, starts_with_rel, last_event_end)
-                last_event_end = k
+                last_event_end = phrase_end = k
                 continue
             if c.head is None and k not in self.content_at:
                 self._deed_on_pronoun(c, k, (self.doers or list(prev_subject)) if participial else [], prev_subject)
@@ -905,13 +920,32 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         body, part = self._body_part, self._part  # "on her knees": by the person, as the part says
         self._perch_part = part in load_vocabulary().carriers.get("perches", ())
         parts_each = self._parts_each
-        if (body == "near" and kind != "around") or (body == "on" and kind in ("on", "on top", "in", "under")):
-            kind = body  # ("hens around her feet" stay around her; "a surfboard under his arm" is carried)
+        mutual = [t.text for t in toks[max(0, rel.start - 2) : rel.start]] in (["each", "other"], ["one", "another"])
+        if kind == "on a carrier" and mutual:
+            kind = "no relation"  # "two men face each other across the bench": the bench is between them
+        if kind == "face to" and self._across_from(rel.start, end):
+            kind = "opposite"  # "a sofa faces the piano from across the room", "Across the street, a kiosk faces the shelter"
+        carried_on = ("on", "on top", "in", "under", "on a carrier")
+        if (body == "near" and kind != "around") or (body == "on" and kind in carried_on):
+            # ("hens around her feet" stay around her; "a surfboard under his arm", "an axe across his
+            # knees" is carried)
+            kind = body
         elif body == "on" and kind == "at":  # "a shelf at his back": behind him, not carried
             kind, body = "behind" if any(t.text == "back" for t in toks[rel.end : end]) else "near", None
-        if kind == "at" and part == "top":  # "a shuttle docked at its top": as "at the top of" it, on it
-            kind = "on"
+        if kind == "at" and part in _STANDING_PARTS:
+            kind = "on"  # "a shuttle docked at its top", "the captain stands at its prow": as "on" it
         return _Phrase(rel, ce, kind, target, end, ordinals, body, part, parts_each)
+
+    def _across_from(self, start: int, end: int) -> bool:
+        """Whether a facing phrase faces its target from across a place (no object: "from across the
+        room" right after the target, not "from across the table"), or in the clause right after a
+        sentence's opening "Across the street,": across from it."""
+        toks = self.toks
+        if [t.text for t in toks[end : end + 2]] == ["from", "across"]:
+            return not any(k in self.by_start for k in range(end + 2, min(end + 6, len(toks))))
+        opening = max((k for k in range(start) if toks[k].text in (".", "!", "?", ";")), default=-1) + 1
+        breaks = sum(toks[k].text == "," for k in range(opening, start))
+        return toks[opening].text == "across" and toks[opening + 1].text != "from" and breaks == 1
 
     def _sources(self, c: _Clause, p: _Phrase, prev_subject, last_event_end) -> int | None:
         """What the phrase places: the target before it when the phrase chains on it or a
@@ -971,7 +1005,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 and any(w not in _STOP and w[:1].isalpha() for w in gap)
                 and not any(w in _FINITE or self._lookout(w) or w in ("a", "an", "one") for w in gap)
             )
-            if c.wsub and not closed and not c.expect_new and not in_hand:
+            # "a trader argues with a buyer beside it", "a squire waits with the horses by a tower": the
+            # company a verb names goes along with its subject, who is what the phrase places
+            # ("a man sits on the bench, with his terrier asleep under it": the terrier)
+            with_at = next((k for k in range(rel.start - 1, max(rel.start - 8, 0), -1) if toks[k].text == "with"), 0)
+            company = with_at > 0 and _is_verb(toks[with_at - 1].text) and all(
+                self._living(g) for g in [*c.wsub, *c.head]
+            )
+            if c.wsub and not closed and not c.expect_new and not in_hand and not company:
                 srcs = list(c.wsub)
                 if kind in ("on", "above", "over", "on top", "under"):
                     c.wsub_related.update(srcs)
@@ -990,6 +1031,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 c.head, c.wsub = None, []
                 if body == "on" and not in_hand:
                     return end  # "a woman with clippers in her hand": no object named in hand, none placed
+                named = any(w not in _STOP and w[:1].isalpha() for w in gap)
+                if named and not closed and p.part is not None and target in ("it", "them"):
+                    return end  # "a stall ..., with a cash tin on its counter": what is on its own part is no object
                 if in_hand and kind == "on" and isinstance(target, list) and not self._carrier(target[0], _RIDDEN):
                     kind = "near"  # one works on a grindstone or an anvil standing at it
         else:
@@ -1014,11 +1058,19 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         row", "stacked"), a part of the room ("against the wall", "in the middle of the room")."""
         toks, rel, kind, srcs, end, ce = self.toks, p.rel, p.kind, p.srcs, p.end, p.ce
         toward = toks[rel.start].text.startswith(("toward", "heading"))
-        objects = [g for g in c.main_groups if g not in c.subjects]
+        # a load trails its puller, a led animal its leader and what one carries its carrier: none of
+        # them is what goes there ("two rescuers carry a stretcher towards the helicopter": they face it)
+        trailing = {t for k, ts in c.rels if k == "towing" for t in ts}
+        trailing |= {d for doers, thing in c.deeds if thing in srcs for d in doers}
+        trailing |= {g for g, holder in self.carried if holder in srcs}
+        objects = [g for g in c.main_groups if g not in c.subjects and g not in trailing]
+        # what pulls a load moves under its own power, whatever the catalogue calls it ("a skidder hauls timber")
+        hauls = self._verb_before(rel.start, lambda w: _phrase_table().get((w,)) == "towing")
         if kind == "no relation" and toward and c.head is None and srcs and not objects and all(
-            self._living(g) for g in srcs
-        ):  # "a knight rides over the bridge towards the dragon", "a waiter carries a tray towards them": he
-            # faces it ("a porter pushes a cart toward the kiosk": what goes there is the verb's object)
+            self._living(g) or self._carrier(g, ("vehicles",)) or hauls for g in srcs
+        ):  # "a knight rides over the bridge towards the dragon", "a waiter carries a tray towards them",
+            # "a tug pulls four carts towards the hold": it faces it ("a porter pushes a cart toward the
+            # kiosk": what goes there is the verb's object)
             p.kind = "face to"
             return None
         if kind == "no relation" and c.head is not None and toward:
@@ -1175,10 +1227,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             for t in targets:
                 for h in head:
                     self._relate(active, [t], h)
+                    if kind == "towing":
+                        self.towed[h] = t
             c.produced = True
             c.rels.append((kind, targets))
             if c.head is None:
-                c.main = list(targets)  # "guarded by a skeleton sitting on a barrel"
+                # "guarded by a skeleton sitting on a barrel": what comes next is the skeleton's; but
+                # a load trails its puller, so where "a pony pulls a cart" goes ("between two
+                # shafts", "past the pond", "towards the gate") is the pony's
+                c.main = list(head) if kind == "towing" else list(targets)
         c.last_target, c.last_target_end, c.expect_new = [], -1, False
         return p.end
 
@@ -1189,6 +1246,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if p.srcs:
             return None
         kind, target, targets, end = p.kind, p.target, p.targets, p.end
+        if starts_with_rel and c.opens and kind == "on a carrier":
+            return end  # "Across the bridge, a troll waits": on its far side, no place of the layout
         if starts_with_rel and c.opens and not c.produced and isinstance(targets, list) and targets:
             tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
             c.fronted.append((kind, targets, tm is not None and tm.each))
@@ -1295,12 +1354,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         workbench"), and after a seat, what the person sits between, under, behind or at the foot
         of ("in folding chairs between them", "rest on a bench at the foot of a cross", "lounges in
         an armchair behind the desk": one works behind a desk as at it; but "a cat naps in a basket
-        at the foot of the stove" places the basket). Beside, near, in front of place the seat ("a
+        at the foot of the stove" places the basket); after "under", what one sits on ("sits
+        beneath the bridge on a boulder"). Beside, near, in front of place the seat ("a
         bard sits on a stool beside the fire"): so the annotated sets read it, four texts to one."""
         if not rider or not all(self._living(g) for g in rider):
             return False
         if kind in ("opposite", "face to"):
             return True
+        if c.last_kind == "under" and kind in ("on", "in"):
+            return True  # "a troll sits beneath the bridge on a boulder": the troll is on it, not the bridge
         if c.last_kind not in ("on", "in", "on top"):
             return False
         seat = all(self.catalogue[self.groups[g].category].shape in _SEATS for g in c.last_target)
@@ -1379,11 +1441,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 self.groups[s].count = 2
 
     def _hung_before(self, pos: int) -> bool:
-        """A hanging verb earlier in the same clause part ("three lanterns hang from the ceiling
-        over the counter": the over is hung, not a tree leaning over)."""
+        """A hanging (or turning) verb earlier in the same clause part ("three lanterns hang from the
+        ceiling over the counter": the over is hung, not a tree leaning over; "a hologram turns above
+        the table")."""
         k = pos - 1
         while k >= 0 and pos - k <= 8 and self.toks[k].text not in (",", ".", ";", "and", "while"):
-            if self.toks[k].text in _HANG_VERBS:
+            if self.toks[k].text in _HANG_VERBS or self.toks[k].text in _TURN_VERBS:
                 return True
             k -= 1
         return False
@@ -1398,6 +1461,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
     def _relate(self, kind: str, srcs: list[int], target: int, hang: bool = False, instance=None) -> None:
         for s in srcs:
             resolved = self._kind(kind, s, target, hang)
+            # "a horse pulls a plough, and a farmer walks behind it": behind the plough, the train's tail
+            seen = {s}
+            while resolved == "behind" and target in self.towed and self.towed[target] not in seen:
+                seen.add(target)
+                target = self.towed[target]
             if resolved == "on":
                 s = self._ridden(s, target)
             if s == target or resolved == "no relation":
@@ -1443,7 +1511,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "on"  # (in a guessed structure, a dome or an igloo, one is inside it)
             holds = target.shape in _SEATS or target.support or self._carrier(t, _VESSEL_KINDS)
             return "on" if holds and target.size[2] <= 2.5 else "no relation"
-        if kind == "from":  # "a heron watches from a rock", "a guard waves from the tower": on it
+        if kind in ("from", "on a carrier"):
+            # "a heron watches from a rock", "a guard waves from the tower", "a peacock struts across
+            # its roof", "a cat peeks out of the box": on it (across anything else one only passes)
             return "on" if self._living(s) and (self._carrier(t) or self._perch_part) else "no relation"
         if kind == "hanging from":
             # from a beam: above it; from a tree: beside it; from anything else (a post, a stall, a

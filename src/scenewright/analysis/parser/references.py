@@ -9,6 +9,8 @@ from typing import TYPE_CHECKING
 from scenewright.analysis.parser.grammar import (
     _BUILDING_PARTS,
     _ENCLOSURES,
+    _GROUND_KINDS,
+    _OPPOSITE_SIDES,
     _OWNER_PARTS,
     _PERSON_POSSESSIVES,
     _ROOFED_VEHICLES,
@@ -51,7 +53,8 @@ class _References:
             self._part = singular(toks[part_of_each - 1].text)
             return "each one", part_of_each + 2
         j = pos
-        while j < ce and j - pos < 6:
+        # a part "of" a thing reaches a few words further ("on the balance beam of the upper gate")
+        while j < ce and j - pos < (9 if "of" in [t.text for t in toks[pos + 1 : j]] else 6):
             if j in self.by_start:
                 m = self.by_start[j]
                 self._target_start = m.start
@@ -64,6 +67,8 @@ class _References:
                 # "a rocket stands on its launch pad": what a thing is placed on is no part of it
                 # ("bells hang from its railing": the railing is)
                 own_support = pos >= 2 and toks[pos - 1].text in ("on", "upon") and toks[pos - 2].text in _PLACING_VERBS
+                # ("a horse looks out of its stable": one's own shelter, a thing of its own)
+                own_support = own_support or [t.text for t in toks[max(0, pos - 2) : pos]] == ["out", "of"]
                 if owner and m.group < 0 and not own_support and not any(g.category == m.category for g in self.groups):
                     self._part = singular(toks[m.end - 1].text)
                     return owner, m.end  # "pumpkins on its counter": the stall's own counter is the stall
@@ -72,6 +77,12 @@ class _References:
                     self._part = singular(toks[m.end - 1].text)
                     return [possessor], m.end  # "either side of the warehouse's gate": the warehouse
                 g = self._resolve(m, self.size_of.get(m.start, []))
+                # "struts across the roof of the barn", "waves from the deck of the ship": a part one stands on
+                perch = load_vocabulary().carriers.get("perches", ())
+                self._part = next((
+                    singular(toks[k].text) for k in range(pos, m.start - 1)
+                    if toks[k + 1].text == "of" and singular(toks[k].text) in (*_BUILDING_PARTS, *perch)
+                ), None)  # fmt: skip
                 part = toks[m.end].text if m.end < ce and toks[m.end - 1].text.endswith("'s") else ""
                 if singular(part) in _BUILDING_PARTS:
                     self._part = singular(part)
@@ -123,6 +134,12 @@ class _References:
         owner = _OWNER_PRONOUNS.get(toks[lead].text) if lead < ce else None
         if owner and j > lead + 1:
             self._part = singular(toks[j - 1].text)
+            # "a helicopter waits on its pad": what a thing is placed on with "its" and nobody names as a
+            # part of anything is its own, no object ("an owl perches on its back": the armchair's)
+            placed_on = pos >= 2 and toks[pos - 1].text in ("on", "upon") and toks[pos - 2].text in _PLACING_VERBS
+            if placed_on and self._part not in load_vocabulary().part_owners:
+                self._part = None
+                return None, pos
             return owner, j  # "above its door": a part of its owner places by the owner itself
         side = lead + 1 + (lead + 2 < ce and toks[lead + 1].text in ("near", "far", "left", "right", "upper", "lower"))
         if owner and side < ce and toks[side].text in _OWNER_PARTS:
@@ -221,6 +238,11 @@ class _References:
         # never what a source rests on ("a parrot in a cage watches it": not the cage)
         hosts = {r[2] for r in self.relations if r[0] == "on" and r[1] in srcs}
         skip = {*srcs, *(others or ()), *hosts}
+        # the other side of the landmark the subject before was placed by ("a robot works behind the
+        # counter, and colonists wait in front of it": the counter's front, not the robot's)
+        flip = _OPPOSITE_SIDES.get(kind)
+        landmark = [r[2] for r in reversed(self.relations) if flip and r[0] == flip and r[1] in prefer[:1]]
+        prefer = [*landmark[:1], *prefer]
         recent = [g for g in [*prefer, *reversed(self.history), *reversed(c.groups)] if g not in skip]
         if not plural:  # "it" is never a person ("a guard waves at a lorry; behind it, ...")
             recent = [g for g in recent if not self._human(g)] or recent
@@ -233,8 +255,12 @@ class _References:
         sat_on = {r[2] for r in self.relations if r[0] == "on" and self._person_at(r[1]) and r[1] in recent}
         tabletop = {r[1] for r in self.relations if r[0] in ("on", "above")}
 
+        # what someone has in hand goes where they go: nothing stands by "it" ("a man holds a rope, and a
+        # dog barks at the swans gliding alongside it": the boat)
+        in_hand = {g for g, _ in self.carried} if kind in _GROUND_KINDS else set()
+
         def aside(g: int) -> bool:
-            return big and self._small(g) and g in tabletop
+            return (big and self._small(g) and g in tabletop) or g in in_hand
 
         # what a living thing watches is first a living thing ("a fox sits on the drum, watching them")
         watcher = kind == "face to" and bool(srcs) and all(self._living(g) for g in srcs)
@@ -244,11 +270,20 @@ class _References:
         # what stands "under it" is under something taller ("a tractor drives towards a crane, and
         # a truck waits under it": the crane, not the tractor)
         tallest = max((self.groups[g].size[2] for g in srcs), default=0.0) if kind == "under" else 0.0
+        # what is "at the foot of it" is at the foot of a thing this sentence names (a tree, a tower),
+        # not of an animal ("a goat grazes by an apple tree, and chickens scratch at the foot of it")
+        local = {*self.history[self._sentence_from :], *c.groups}
+        footed = kind == "foot of" and any(
+            g in local and not self._living(g) and (self.groups[g].count > 1) == plural for g in recent
+        )
+
+        # who sit on seats "around it" sit around a thing, as at a table ("two hoglets sit on stools around it")
+        seated = kind == "around" and any(c.supports.get(s) for s in srcs)
 
         def kind_fits(g: int) -> bool:
             return (
-                (not watcher or self._living(g)) and not (overhead and self._living(g))
-                and self.groups[g].size[2] > tallest
+                (not watcher or self._living(g)) and not ((overhead or seated) and self._living(g))
+                and self.groups[g].size[2] > tallest and not (footed and (self._living(g) or g not in local))
             )  # fmt: skip
 
         for fits in (
