@@ -15,7 +15,7 @@ _FORMATION_NOUNS = {"row": "row", "line": "row", "rows": "rows", "lines": "rows"
                     "ring": "circle", "circle": "circle"}  # fmt: skip
 #: Phrase kinds that, with no object after them, name a part of the room ("along the back wall").
 _PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None, "foot of": None, "at": None,
-                "end of": None}  # fmt: skip
+                "end of": None, "covering": None}  # fmt: skip
 #: Phrase kinds that place a thing on the ground beside another (not on it, not above it).
 _GROUND_KINDS = ("left of", "right of", "in front of", "behind", "side of", "near", "far", "left", "right")
 #: Besides those of the ground, phrase kinds that place a person rather than what they have in hand
@@ -35,7 +35,8 @@ _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
 #: truck", "dozes in an armchair by the fire" (the armchair is by the fire), "a chandelier hangs above
 #: the table in front of the fireplace" (the table is), "lanterns hang from the branches of a tree
 #: behind the chairs" (the tree is).
-_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in", "from", "above", "over", "hanging from")
+_CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in", "from", "above", "over", "hanging from",
+                "covering")
 #: Sides of a thing named by a possessive ("against its side"): the owner places.
 _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
 #: "Piled with" or "covered in" on a cart or a table is a load of things standing on it when they are
@@ -50,6 +51,8 @@ _DEPICTIONS = ("statue", "hologram", "picture_frame", "sign", "billboard")
 _FLAT_HOLDERS = ("plate", "pallet")
 #: Shapes that hold what they hold inside, out of the layout ("a greenhouse holds tomato plants").
 _ENCLOSURES = ("house", "building", "tent", "kiosk")
+#: m, an enclosure lower than this is an animal's hutch or kennel, no building one goes into.
+_HUTCH_HEIGHT = 1.5
 #: Where a hung thing hangs from indoors.
 _CEILING_WORDS = ("ceiling", "ceilings", "beam", "beams", "rafter", "rafters")
 #: Vehicles with a roof and doors of their own.

@@ -18,6 +18,7 @@ from scenewright.analysis.parser.grammar import (
     _GROUND_KINDS,
     _HANDHELD_SIZE,
     _HOLDER_KINDS,
+    _HUTCH_HEIGHT,
     _KIND_RELATION,
     _LOAD_HOSTS,
     _LOW_HOST,
@@ -49,6 +50,7 @@ from scenewright.analysis.parser.nouns import (
 from scenewright.analysis.parser.phrases import _Rel, _find_relations
 from scenewright.analysis.parser.references import _References
 from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
+from scenewright.analysis.parser.support import FLAT_HOST
 from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _split, _tokenise
 from scenewright.analysis.parser.vocabulary import load_vocabulary, scaled, stretched
 from scenewright.analysis.parser.words import (
@@ -69,6 +71,7 @@ from scenewright.analysis.parser.words import (
     _SHARE_VERBS,
     _STOP,
     _USE_VERBS,
+    _VAGUE,
     _is_verb,
 )
 from scenewright.core.catalogue import Category, load_catalogue, singular
@@ -327,7 +330,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # "from" places only after a verb one does from where one is ("a heron watches from a rock"),
         # or one done to something too big to hold (below); "pulls a rope from the barrel" names
         # where the rope comes from
-        found = [r for r in _find_relations(toks, taken) if r.kind != "at" or self._names_thing(r.end, starts)]
+        found = [r for r in _find_relations(toks, taken)
+                 if (r.kind != "at" or self._names_thing(r.end, starts)) and (r.kind != "covering" or self._covers(r))]
         self.rel_at = {
             r.start: r for r in found
             if r.kind != "from" or self._verb_before(r.start, self._lookout) or self._from_to(r.end, starts)
@@ -403,7 +407,26 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         held = [("on", by_start[s].group, by_start[h].group, None) for s, h in self.held_of
                 if by_start[s].group >= 0 and by_start[h].group >= 0]  # fmt: skip
         self.relations[:0] = held  # before any other support the list gave them
+        self._aboard_their_vehicle(mentions)
         self._one_per_holder()
+
+    def _aboard_their_vehicle(self, mentions) -> None:
+        """"A train waits at the platform, its driver leaning out": a person a vehicle's "its"
+        names is its crew, on it (the latest vehicle named before in the sentence), unless the text
+        puts them on something else."""
+        placed = {r[1] for r in self.relations if r[0] in ("on", "above")}
+        for k, m in enumerate(mentions):
+            g = m.group
+            if m.content or g < 0 or g in placed or m.start == 0 or self.toks[m.start - 1].text != "its":
+                continue
+            if not self._person_at(g):
+                continue
+            for before in reversed(mentions[:k]):
+                if any(t.text in (".", ";", "!", "?") for t in self.toks[before.end : m.start]):
+                    break
+                if before.group >= 0 and not before.content and self._carrier(before.group, ("vehicles",)):
+                    self.relations.append(("on", g, before.group, None))
+                    break
 
     def _one_per_holder(self) -> None:
         """"Three miners with pickaxes", "a mechanic with a wheel gun kneels beside each car": a
@@ -889,8 +912,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             kind = body  # ("hens around her feet" stay around her; "a surfboard under his arm" is carried)
         elif body == "on" and kind == "at":  # "a shelf at his back": behind him, not carried
             kind, body = "behind" if any(t.text == "back" for t in toks[rel.end : end]) else "near", None
-        if kind == "at" and part == "top":  # "a shuttle docked at its top": as "at the top of" it, on it
-            kind = "on"
+        if kind == "at" and (part == "top" or self._perch_part and part != "edge"):
+            kind = "on"  # "a shuttle docked at its top", "the jarl stands at its prow": on it
+        if kind == "along" and part is not None and self._hung_before(rel.start):
+            kind = "on"  # "shields hang along the ship's side": the ship carries them
         return _Phrase(rel, ce, kind, target, end, ordinals, body, part, parts_each)
 
     def _sources(self, c: _Clause, p: _Phrase, prev_subject, last_event_end) -> int | None:
@@ -1358,6 +1383,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if (self.groups[s].count == 1 or uncounted) and s not in self.history:
                 self.groups[s].count = 2
 
+    def _covers(self, r: _Rel) -> bool:
+        """Whether a verb of covering ("crowd", "cover", "line") is one here: a noun phrase follows
+        it ("vases crowd three shelves", "jars crowd every shelf"), not a verb or "of" ("a noisy
+        crowd gathers", "crowds of tourists"), and it is no noun after an article."""
+        after = self.toks[r.end].text if r.end < len(self.toks) else ""
+        return after in _DETERMINERS or after in _NUMBERS or after in _VAGUE
+
     def _hung_before(self, pos: int) -> bool:
         """A hanging verb earlier in the same clause part ("three lanterns hang from the ceiling
         over the counter": the over is hung, not a tree leaning over)."""
@@ -1417,6 +1449,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "left of"  # the head of a table is one of its ends
             return "near"
         if kind == "in":  # "a man in a rocking chair", "a duck floats in the tub", "children in the bus": on it
+            if self._living(s) and target.shape in _ENCLOSURES and self.groups[t].size[2] < _HUTCH_HEIGHT:
+                return "on"  # "a dog in each kennel", "hens in the coop": a hutch holds them as a cage does
             if target.shape in _ENCLOSURES or target.shape == "tower":
                 return "no relation"  # in a tent, in the lighthouse: inside it, out of the layout
             if self._living(s) and (self._carrier(t, _VESSEL_KINDS) or self._carrier(t, by_family=False)):
@@ -1436,7 +1470,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "on"
             return "in front of" if target.shape == "bed" else "near"  # "a barrow at the end of the patch"
         if kind == "along" and src.rests == "surface" and (target.support or target.shape in _LOAD_HOSTS):
-            return "on"  # "jars lining a shelf", "bottles along the bar": on it, as at its end or centre
+            return "on"  # "bottles along the bar": on it, as at its end or centre
+        if kind == "covering":
+            # "jars crowd every shelf", "crates cover a long table", "lasts lining a shelf": on what
+            # has a top for them; "trees line the drive" stand beside it; people crowding a carrier
+            # ("tourists crowd the pier") are on it, by anything else near it
+            if self._living(s):
+                return "on" if self._carrier(t) else "near"
+            flat = self.groups[t].size[2] <= FLAT_HOST
+            return "on" if target.support or target.shape in _LOAD_HOSTS or flat else "side of"
         if kind == "centre of":  # "a vase in the middle of the table", "a throne in the centre of the stage": on it
             if src.rests == "surface" and target.support:
                 return "on"
