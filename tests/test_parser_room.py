@@ -198,3 +198,12 @@ def test_a_ceiling_may_be_raised_only_where_nobody_gave_a_height():
     assert not tall_freely("4x5x2.6", "a workshop")
     assert not tall_freely("auto", "a low-ceilinged workshop")
     assert not tall_freely("none", "a workshop")
+
+
+def test_a_thing_named_before_another_that_hangs_from_the_ceiling_stays_on_the_floor():
+    """"... beside a long counter, and three paper lanterns hang from the ceiling": the lanterns
+    hang, the counter, whose name comes first, does not (the hanging verb opens the phrase)."""
+    parsed = parse_scene("A tea room. A clock is fixed to the wall behind a long counter, and three paper "
+                         "lanterns hang from the ceiling above the tables.")
+    got = {(r.source, r.relation) for r in wall_phrases(parsed)}
+    assert ("lantern_1", "on ceiling") in got and not any(s.startswith("counter") for s, _ in got)

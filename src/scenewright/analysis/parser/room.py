@@ -394,7 +394,8 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
             fellows = _FELLOWS.match(sentence, at)
             if fellows is not None:
                 at = fellows.end()  # "saws and chisels hang on the wall": the chisels are fellows
-            if ceiling is not None and not _names_between(sentence[at:ceiling.start()], names, name):
+            # (names inside the phrase count: "a workbench, and two hanging lamps dangle from the ceiling")
+            if ceiling is not None and not _names_between(sentence[at:ceiling.end()], names, name):
                 out.append(ParsedRelation(source=o.id, relation="on ceiling", target=CEILING_TARGET))
                 break
             if phrase is None:
