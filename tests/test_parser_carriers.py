@@ -146,3 +146,12 @@ def test_a_building_holds_no_one_and_food_is_a_crates_contents():
     assert not any(s.startswith("farmer") and r == "on" for s, r, _ in rels("A farmer waits in the barn."))
     parsed = parse_scene("Crates of fish are stacked by the stall.")
     assert [o.category for o in parsed.objects if o.category == "fish"] == []
+
+
+def test_things_hung_from_posts_are_carried_by_them_one_post_each():
+    """A post or a pole has no top to set a thing on, but what hangs from it is on it (no repair
+    to "beside"); posts the text does not count come one per hung thing."""
+    parsed = parse_scene("Eight paper lanterns hang from poles around the pond. A bell hangs from a post by the gate.")
+    got = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert ("lantern_8", "on", "pole_8") in got and ("bell_1", "on", "post_1") in got
+    assert not parsed.repairs

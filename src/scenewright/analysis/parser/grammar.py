@@ -53,6 +53,8 @@ _FLAT_HOLDERS = ("plate", "pallet")
 _ENCLOSURES = ("house", "building", "tent", "kiosk")
 #: m, an enclosure lower than this is an animal's hutch or kennel, no building one goes into.
 _HUTCH_HEIGHT = 1.5
+#: m, a thing whose top is narrower than this (a post, a pole) holds only what hangs from it.
+_NARROW_TOP = 0.3
 #: Where a hung thing hangs from indoors.
 _CEILING_WORDS = ("ceiling", "ceilings", "beam", "beams", "rafter", "rafters")
 #: Vehicles with a roof and doors of their own.

@@ -22,6 +22,7 @@ from scenewright.analysis.parser.grammar import (
     _KIND_RELATION,
     _LOAD_HOSTS,
     _LOW_HOST,
+    _NARROW_TOP,
     _OWN_SIDES,
     _PERSONAL,
     _PERSON_POSSESSIVES,
@@ -1250,6 +1251,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._per_each(targets, srcs[0])  # "two soldiers on horseback": a horse each
         elif tm is not None and kind == "on" and len(srcs) == 1 and self._living(srcs[0]) and self._seats_each(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "four astronauts sit on stools": one each
+        elif tm is not None and kind == "hanging from" and len(srcs) == 1 and self._hooks_each(tm):
+            self.groups[targets[0]].count = self.groups[srcs[0]].count  # "a dozen lanterns hang from posts": one each
         sitter = self._seat_owner(c, srcs, tm) if tm is not None else None
         if sitter is not None:
             self._relate("on", [sitter], targets[0], instance=instance)
@@ -1270,6 +1273,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             limb = p.part is not None and load_vocabulary().body_parts.get(p.part) == "on" and self._person_at(t)
             if p.body == "on" or (limb and kind == "on"):
                 self.carried.update((s, t) for s in srcs)
+            elif kind == "hanging from" and self._thin(t):
+                self.carried.update((s, t) for s in srcs)  # "a lantern hangs from a post": it carries it
         c.produced = True
         c.rels = [(kind, targets)]
         if kind in ("on", "in", "on top"):
@@ -1292,6 +1297,18 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             _is_plural(self.toks, m) and not m.counted and not m.definite and m.group >= 0
             and m.group not in self.numbered and self._carrier(m.group, ("seats",))
         )  # fmt: skip
+
+    def _hooks_each(self, m: _Mention) -> bool:
+        """Thin things named in the plural with no count of their own, new here, that things hang
+        from ("lanterns hang from posts", "flags fly from poles"): one for each."""
+        return (
+            _is_plural(self.toks, m) and not m.counted and not m.definite and m.group >= 0
+            and m.group not in self.numbered and self._thin(m.group)
+        )  # fmt: skip
+
+    def _thin(self, g: int) -> bool:
+        """A post, a pole, a hook: too narrow on top to put anything on, only to hang it from."""
+        return max(self.groups[g].size[:2]) < _NARROW_TOP
 
     def _rider_placed(self, c: _Clause, rider: list[int], kind: str) -> bool:
         """Whether a phrase after "a person sits on X" places the person, not X: what the person

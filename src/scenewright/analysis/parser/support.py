@@ -244,7 +244,8 @@ def repair_supports(
 ) -> tuple[list[ParsedRelation], list[str]]:
     """Each ``on`` whose host cannot hold the thing becomes ``side of`` (what the text most
     likely meant: "a dinosaur skeleton on a barrel" stands beside it), with a note of the repair.
-    What the text puts on a part of a person (``carried``: "a laptop on her knees") stays on them."""
+    What the text puts on a part of a person (``carried``: "a laptop on her knees") or hangs from a
+    post stays on it."""
     by_id = {o.id: o for o in objects}
     out: list[ParsedRelation] = []
     notes: list[str] = []
