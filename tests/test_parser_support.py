@@ -111,3 +111,14 @@ def test_verbs_of_covering_put_things_on_their_host(text, expected, absent):
     if absent is not None:
         assert absent not in got
     assert not any(r == "on" and t.startswith("stage") for _, r, t in got)
+
+
+def test_a_thing_nobody_listed_is_sized_for_the_small_host_the_text_puts_it_on():
+    """"Two piglets nap on little cushions": a noun nobody listed has a guessed size, and the text
+    putting it on a stool or a cushion says it is small enough; a known thing is still repaired."""
+    parsed = parse_scene("Two sprites sit on pebble stools. A dinosaur skeleton stands on a barrel.")
+    got = {(r.source, r.relation, r.target) for r in parsed.relations}
+    sprite = next(o for o in parsed.objects if o.id == "sprite_1")
+    stool = next(o for o in parsed.objects if o.id == "stool_1")
+    assert ("sprite_1", "on", "stool_1") in got and max(sprite.size[:2]) <= max(stool.size[:2])
+    assert ("dinosaur_skeleton_1", "side of", "barrel_1") in got
