@@ -155,3 +155,10 @@ def test_things_hung_from_posts_are_carried_by_them_one_post_each():
     got = {(r.source, r.relation, r.target) for r in parsed.relations}
     assert ("lantern_8", "on", "pole_8") in got and ("bell_1", "on", "post_1") in got
     assert not parsed.repairs
+
+
+def test_a_sitter_s_seat_after_a_larger_place_seats_the_sitter():
+    """"An ogre sits beside the barn on an upturned crate": the crate cannot carry the barn, so
+    the phrase seats the ogre; a thing that does not sit leaves the chain as it is."""
+    got = rels("An old ogre sits beside the barn on an upturned crate.")
+    assert ("ogre_1", "on", "crate_1") in got and not any(s == "barn_1" and r == "on" for s, r, _ in got)

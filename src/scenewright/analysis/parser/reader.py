@@ -939,6 +939,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             rider = c.main or ([] if c.first else list(prev_subject))
             if self._rider_placed(c, rider, kind):
                 srcs = list(rider)  # "he sits on a stool at the workbench": he is at it, on his stool
+            elif self._sits_on_instead(c, rider, p):
+                srcs = list(rider)  # "a troll sits beneath the bridge on a boulder": he is on it, not the bridge
             each = target == "each one" or (
                 isinstance(target, list) and getattr(self.by_start.get(self._target_start), "each", False)
             )
@@ -1297,6 +1299,18 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             _is_plural(self.toks, m) and not m.counted and not m.definite and m.group >= 0
             and m.group not in self.numbered and self._carrier(m.group, ("seats",))
         )  # fmt: skip
+
+    def _sits_on_instead(self, c: _Clause, rider: list[int], p: _Phrase) -> bool:
+        """Whether an ``on`` / ``in`` phrase after a place of a sitting or lying living thing seats
+        that thing, not the place: the place's footprint is larger than the seat's, so the seat
+        cannot carry it ("sits beneath the bridge on a mossy boulder", "sleeps under the table on
+        a cushion")."""
+        if p.kind not in ("on", "in") or not isinstance(p.target, list) or not p.target or not rider:
+            return False
+        if not all(self._living(g) for g in rider) or not self._verb_before(p.rel.start, self._posture):
+            return False
+        place, seat = self.groups[c.last_target[0]].size, self.groups[p.target[0]].size
+        return place[0] * place[1] > seat[0] * seat[1]
 
     def _hooks_each(self, m: _Mention) -> bool:
         """Thin things named in the plural with no count of their own, new here, that things hang
