@@ -162,3 +162,12 @@ def test_a_sitter_s_seat_after_a_larger_place_seats_the_sitter():
     the phrase seats the ogre; a thing that does not sit leaves the chain as it is."""
     got = rels("An old ogre sits beside the barn on an upturned crate.")
     assert ("ogre_1", "on", "crate_1") in got and not any(s == "barn_1" and r == "on" for s, r, _ in got)
+
+
+def test_counted_things_of_a_container_are_there_in_it():
+    """"A nest of four speckled eggs": counted, so objects, in (on) the nest; "a vase of tulips"
+    stays the vase's contents."""
+    got = rels("A heron stands beside a nest of four speckled eggs.")
+    assert ("egg_4", "on", "nest_1") in got
+    parsed = parse_scene("A vase of tulips stands on the table.")
+    assert [o.category for o in parsed.objects] == ["vase", "table"]

@@ -105,6 +105,9 @@ class _Contents:
             self.aboard.add(m.start)
             return False
         holder = prev.category in _CONTENT_HEADS or prev.category in ("container", "tool")
+        if w == "of" and prev.end == j and holder and m.counted and prev.category not in _DEPICTIONS:
+            self.held_of.append((m.start, prev.start))  # "a nest of five golden eggs": counted, so there, in it
+            return False
         if w == "of" and prev.end == j and holder and (not m.definite or prev.category in _DEPICTIONS):
             return True  # "a vase of tulips", "a statue of a horse", "a hologram of the star map"
         if w == "on" and j - prev.end <= 2 and singular(m.phrase.split()[-1].lower()) in _MOUNTS:
