@@ -286,3 +286,12 @@ def test_a_support_only_inferred_gives_way_to_a_wall_the_text_hangs_the_thing_on
     objects = vlm.describe_objects(text, "realistic", None).value
     room = room_for(text, objects, (5.0, 4.0, None))
     assert [str(c) for c in vlm.write_constraints(text, objects, None, room).value] == ["saw_1 on wall wall_3"]
+
+
+def test_a_thing_hung_above_another_that_cannot_hang_there_still_hangs_from_the_ceiling():
+    # "a dozen pans hang from the ceiling above the hob": those that find no place over the hob
+    # give up the hob first, and keep the ceiling
+    constraints = [C("above", "pan", "hob"), C("on ceiling", "pan", "ceiling"), C("near", "cook", "hob")]
+    report = LayoutReport(unplaced=[UnplacedObject(id="pan", failed=constraints[:2], reason="no room over it")])
+    assert [c.key() for c in relax_constraints(constraints, report)] == [
+        ("on ceiling", "pan", "ceiling"), ("near", "cook", "hob")]

@@ -114,3 +114,60 @@ def test_a_cage_hung_from_the_ceiling_hangs_and_holds_its_bird():
 def test_it_is_never_what_the_subject_rests_on():
     found = rels("A tabby cat dozes under the desk, and a canary in a cage watches it.")
     assert {("canary_1", "on", "cage_1"), ("canary_1", "face to", "cat_1")} <= found
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # a vehicle's "its" person is its crew, aboard
+        ("A red bus idles at the stop, its driver waving to a boy.", {("driver_1", "on", "bus_1")}),
+        # at a vehicle's perch part (its prow, stern, deck) is on the vehicle
+        ("A rowing boat lies on the sand, and a fisherman stands at its stern.", {("fisherman_1", "on", "boat_1")}),
+        # things hung along a part of something are carried by it
+        ("A market stall stands by the gate. Lanterns hang along the stall's front.",
+         {("lantern_1", "on", "market_stall_1")}),
+        # "a <carrier> of <living things>": they ride in it, no contents
+        ("A tractor pulls a cart of bleating sheep towards the barn.", {("sheep_1", "on", "cart_1")}),
+        ("A basket of puppies sits by the stove.", {("dog_1", "on", "basket_1")}),
+        # "a N in each" after a group: one per member, in it
+        ("Five hutches stand along the fence, a rabbit in each.", {("rabbit_5", "on", "cabinet_5")}),
+        # a small enclosure (a kennel, a coop) holds an animal as a cage does; a building does not
+        ("Two hens doze in the little coop, and a farmer waits in the barn.", {("hen_2", "on", "coop_1")}),
+        # climbing a thing is on it
+        ("Two cat trees stand by the sofa, with four kittens climbing them.", {("cat_1", "on", "cat_tree_1")}),
+        ("A boy climbs the ladder beside the shed.", {("boy_1", "on", "ladder_1")}),
+    ],
+)
+def test_aboard_in_and_climbing(text, expected):
+    assert expected <= rels(text)
+
+
+def test_a_building_holds_no_one_and_food_is_a_crates_contents():
+    assert not any(s.startswith("farmer") and r == "on" for s, r, _ in rels("A farmer waits in the barn."))
+    parsed = parse_scene("Crates of fish are stacked by the stall.")
+    assert [o.category for o in parsed.objects if o.category == "fish"] == []
+
+
+def test_things_hung_from_posts_are_carried_by_them_one_post_each():
+    """A post or a pole has no top to set a thing on, but what hangs from it is on it (no repair
+    to "beside"); posts the text does not count come one per hung thing."""
+    parsed = parse_scene("Eight paper lanterns hang from poles around the pond. A bell hangs from a post by the gate.")
+    got = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert ("lantern_8", "on", "pole_8") in got and ("bell_1", "on", "post_1") in got
+    assert not parsed.repairs
+
+
+def test_a_sitter_s_seat_after_a_larger_place_seats_the_sitter():
+    """"An ogre sits beside the barn on an upturned crate": the crate cannot carry the barn, so
+    the phrase seats the ogre; a thing that does not sit leaves the chain as it is."""
+    got = rels("An old ogre sits beside the barn on an upturned crate.")
+    assert ("ogre_1", "on", "crate_1") in got and not any(s == "barn_1" and r == "on" for s, r, _ in got)
+
+
+def test_counted_things_of_a_container_are_there_in_it():
+    """"A nest of four speckled eggs": counted, so objects, in (on) the nest; "a vase of tulips"
+    stays the vase's contents."""
+    got = rels("A heron stands beside a nest of four speckled eggs.")
+    assert ("egg_4", "on", "nest_1") in got
+    parsed = parse_scene("A vase of tulips stands on the table.")
+    assert [o.category for o in parsed.objects] == ["vase", "table"]

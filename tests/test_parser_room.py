@@ -137,6 +137,35 @@ def test_the_nearest_of_a_wall_and_a_ceiling_phrase_after_a_thing_places_it():
     assert ("lantern_1", "on ceiling", "ceiling") in got
 
 
+def test_plural_names_fellow_subjects_and_fixing_verbs_put_things_on_the_wall():
+    """ "Shelves" names a shelf; a thing's fellow subjects come with it ("ladles and pans hang on
+    the wall"); bolted or screwed to a bulkhead is on a wall, hung in the window too (standing in
+    it is not); a wall cupboard, a wall-mounted screen and framed things hang on a wall, but a
+    thing framed *by* others does not; "hooked to the ceiling" hangs."""
+    parsed = parse_scene("A ship's galley. Two shelves are screwed to the left wall. Ladles and pans hang in a "
+                         "line on the wall over the sink. A fire extinguisher is bolted to the bulkhead by the "
+                         "hatch. A lantern hangs in the window, and a cat sits in the window. A wall cupboard "
+                         "holds the spices, beside three framed maps. A sofa stands framed by two lamps.")
+    got = {(r.source, r.relation, r.target) for r in wall_phrases(parsed)}
+    on_wall = {s for s, r, _ in got if r == "on wall"}
+    assert {"bookshelf_1", "bookshelf_2", "ladle_1", "pot_1", "fire_extinguisher_1", "lantern_1"} <= on_wall
+    assert ("bookshelf_1", "on wall", "wall_3") in got
+    assert {"cabinet_1", "map_1"} <= on_wall or {"cupboard_1", "map_1"} <= on_wall
+    assert "cat_1" not in on_wall and "lamp_1" not in on_wall and "sofa_1" not in on_wall
+    puppets = parse_scene("A toy shop. Two marionettes dangle from strings hooked to the ceiling.")
+    assert {(r.source, r.relation) for r in wall_phrases(puppets)} >= {("marionette_1", "on ceiling")}
+
+
+def test_a_shelf_fixed_to_a_wall_is_a_wall_shelf_and_a_free_standing_one_a_bookcase():
+    """Storage the text fixes to a wall is a wall unit's height, so what stands on it fits under
+    the ceiling; one standing on the floor keeps its size."""
+    fixed = parse_scene("A pottery. Jugs crowd two shelves screwed to the left wall.")
+    standing = parse_scene("A pottery. Jugs crowd two shelves by the kiln.")
+    height = {o.id: o.size[2] for o in fixed.objects}
+    assert height["bookshelf_1"] <= 0.5 and max(o.size[2] for o in standing.objects if o.category == "bookshelf") > 1.5
+    assert ("bottle_1", "on", "bookshelf_1") in {(r.source, r.relation, r.target) for r in fixed.relations}
+
+
 @pytest.mark.parametrize("text, floor, walls, ceiling", [
     ("A kitchen with white tiled walls and a stone floor.", "stone", "white tiled", None),
     ("A bar with brick walls, a wooden floor and a concrete ceiling.", "wood floor", "brick", "concrete"),
@@ -169,3 +198,12 @@ def test_a_ceiling_may_be_raised_only_where_nobody_gave_a_height():
     assert not tall_freely("4x5x2.6", "a workshop")
     assert not tall_freely("auto", "a low-ceilinged workshop")
     assert not tall_freely("none", "a workshop")
+
+
+def test_a_thing_named_before_another_that_hangs_from_the_ceiling_stays_on_the_floor():
+    """"... beside a long counter, and three paper lanterns hang from the ceiling": the lanterns
+    hang, the counter, whose name comes first, does not (the hanging verb opens the phrase)."""
+    parsed = parse_scene("A tea room. A clock is fixed to the wall behind a long counter, and three paper "
+                         "lanterns hang from the ceiling above the tables.")
+    got = {(r.source, r.relation) for r in wall_phrases(parsed)}
+    assert ("lantern_1", "on ceiling") in got and not any(s.startswith("counter") for s, _ in got)

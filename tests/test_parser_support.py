@@ -81,3 +81,44 @@ def test_inferred_supports_follow_what_a_thing_stands_beside(text, wanted, unwan
 def test_what_is_put_on_a_stack_rests_on_its_top_member(text, rider, top):
     """The members of a stack carry the ones above them; a thing put on the stack goes on the top."""
     assert _supports(text) == {(rider, top)}
+
+
+def _stated(text: str) -> set[tuple[str, str, str]]:
+    return {(r.source, r.relation, r.target) for r in parse_scene(text).relations if not r.inferred}
+
+
+@pytest.mark.parametrize(
+    ("text", "expected", "absent"),
+    [
+        # a verb of covering puts what covers on a host with a top
+        ("Old clocks crowd two shelves above the workbench.", ("wall_clock_1", "on", "bookshelf_1"), None),
+        ("Bottles of ink clutter every desk in the office.", ("bottle_1", "on", "desk_1"), None),
+        ("Boxes of buttons cover a long counter, and a tailor waits behind it.", ("crate_1", "on", "counter_1"), None),
+        ("A row of teapots lining a shelf by the stove.", ("pot_1", "on", "bookshelf_1"), None),
+        # a flat host takes them; the host's own place phrase places the host
+        ("Toys litter the rug by the bed.", ("toy_1", "on", "rug_1"), ("toy_1", "near", "bed_1")),
+        # what has no top for them: beside it; people crowd what carries them
+        ("Tall poplars line the drive beside the old barn.", None, ("poplar_tree_1", "on", "barn_1")),
+        ("Tourists crowd the pier by the lighthouse.", ("tourist_1", "on", "pier_1"), None),
+        # "crowd" as a noun is no verb of covering
+        ("A noisy crowd gathers around the stage.", None, None),
+    ],
+)
+def test_verbs_of_covering_put_things_on_their_host(text, expected, absent):
+    got = _stated(text)
+    if expected is not None:
+        assert expected in got
+    if absent is not None:
+        assert absent not in got
+    assert not any(r == "on" and t.startswith("stage") for _, r, t in got)
+
+
+def test_a_thing_nobody_listed_is_sized_for_the_small_host_the_text_puts_it_on():
+    """"Two piglets nap on little cushions": a noun nobody listed has a guessed size, and the text
+    putting it on a stool or a cushion says it is small enough; a known thing is still repaired."""
+    parsed = parse_scene("Two sprites sit on pebble stools. A dinosaur skeleton stands on a barrel.")
+    got = {(r.source, r.relation, r.target) for r in parsed.relations}
+    sprite = next(o for o in parsed.objects if o.id == "sprite_1")
+    stool = next(o for o in parsed.objects if o.id == "stool_1")
+    assert ("sprite_1", "on", "stool_1") in got and max(sprite.size[:2]) <= max(stool.size[:2])
+    assert ("dinosaur_skeleton_1", "side of", "barrel_1") in got

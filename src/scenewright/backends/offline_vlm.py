@@ -174,12 +174,15 @@ _SUPPORTING = frozenset({"on", "above", "on wall", "on ceiling"})
 def relax_constraints(constraints: Sequence[Constraint], report: LayoutReport) -> list[Constraint]:
     """The constraints with every failed relation of each unplaced object relaxed one step
     (a side → near, anything else dropped), its supports (:data:`_SUPPORTING`) only when nothing
-    else failed with them; where the report names no failed relation (the object collided
+    else failed with them, and its wall or ceiling only when no other support did; where the report names no failed relation (the object collided
     everywhere), its lowest-priority relation is dropped instead."""
     out = list(constraints)
     for unplaced in report.unplaced:
         failed = {c.key() for c in unplaced.failed}
-        failed = {k for k in failed if k[0] not in _SUPPORTING} or failed
+        # supports last, and of those the wall or the ceiling last of all: twelve ladles "from the
+        # ceiling above the stove" that cannot all hang over it still hang from the ceiling
+        failed = ({k for k in failed if k[0] not in _SUPPORTING}
+                  or {k for k in failed if k[0] not in ROOM_RELATIONS} or failed)
         if not failed:
             own = [c for c in out if c.source == unplaced.id]
             if own:

@@ -163,11 +163,13 @@ Decisions worth knowing:
 
 from __future__ import annotations
 
+from dataclasses import replace
 
 from scenewright.analysis.parser.distribute import _acyclic, _expand, _ids
 from scenewright.analysis.parser.model import ParsedObject, ParsedRelation, ParsedScene
 from scenewright.analysis.parser.phrases import relation_phrases
 from scenewright.analysis.parser.reader import _Reader
+from scenewright.analysis.parser.room import wall_units
 from scenewright.analysis.parser.style import GROUND_KINDS, _is_indoor, detect_ground, detect_style
 from scenewright.analysis.parser.support import _infer_support, fit_on_hosts, onto_stack_tops, repair_supports
 
@@ -203,7 +205,7 @@ def parse_scene(text: str) -> ParsedScene:
     inferred = _infer_support(objects, stated, catalogue)
     relations = _acyclic(stated + inferred, [o.id for o in objects])
     indoor = _is_indoor([o.category for o in objects], text, catalogue, reader.places)
-    return ParsedScene(
+    parsed = ParsedScene(
         text=text,
         objects=objects,
         relations=relations,
@@ -213,3 +215,4 @@ def parse_scene(text: str) -> ParsedScene:
         places=reader.places,
         repairs=repairs,
     )
+    return replace(parsed, objects=wall_units(parsed))  # a shelf fixed to a wall is a wall shelf

@@ -15,6 +15,7 @@ from scenewright.analysis.parser.grammar import (
     _VESSEL_KINDS,
 )
 from scenewright.analysis.parser.nouns import _Mention, _is_plural
+from scenewright.analysis.parser.phrases import _phrase_table
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import (
     _CONTENT_HEADS,
@@ -33,14 +34,15 @@ class _Contents:
     def _mark_contents(self, mentions: list[_Mention]) -> None:
         """Nouns after "full of", or after "of" following a container or a depiction ("a vase of
         tulips", "a statue of a horse"), are contents, not objects of the scene."""
-        toks = self.toks
+        toks, phrases = self.toks, _phrase_table()
         chain = False
         for k, m in enumerate(mentions):
             prev = mentions[k - 1] if k else None
             j = m.start - 1
             while j >= 0 and (toks[j].text in _DETERMINERS or toks[j].text in _NUMBERS or (
-                toks[j].text not in _STOP and toks[j].text[0].isalnum())) and m.start - j < 5:  # fmt: skip
-                j -= 1
+                toks[j].text not in _STOP and toks[j].text[0].isalnum() and (toks[j].text,) not in phrases
+            )) and m.start - j < 5:  # fmt: skip
+                j -= 1  # (a relation phrase ends the noun phrase: "jars of fluid crowd every shelf")
             if (prev is not None and self._held_inside(m, prev)) or self._wares(m):
                 m.content = chain = True
                 continue
@@ -101,7 +103,17 @@ class _Contents:
         if w == "of" and prev.end == j and prev.category in _FLAT_HOLDERS and not m.definite:
             self.held_of.append((m.start, prev.start))  # "a tray of medicine bottles": bottles on the tray
             return False
+        vessel = load_vocabulary().carries(prev.category, prev.phrase, _VESSEL_KINDS)
+        if w == "of" and prev.end == j and self._lives(m.category) and vessel and not m.definite and (
+            prev.category not in _DEPICTIONS
+        ):  # "a trailer of waving children", "a basket of kittens": they ride in it ("crates of fish" hold food)
+            self.held_of.append((m.start, prev.start))
+            self.aboard.add(m.start)
+            return False
         holder = prev.category in _CONTENT_HEADS or prev.category in ("container", "tool")
+        if w == "of" and prev.end == j and holder and m.counted and prev.category not in _DEPICTIONS:
+            self.held_of.append((m.start, prev.start))  # "a nest of five golden eggs": counted, so there, in it
+            return False
         if w == "of" and prev.end == j and holder and (not m.definite or prev.category in _DEPICTIONS):
             return True  # "a vase of tulips", "a statue of a horse", "a hologram of the star map"
         if w == "on" and j - prev.end <= 2 and singular(m.phrase.split()[-1].lower()) in _MOUNTS:

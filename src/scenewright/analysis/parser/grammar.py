@@ -15,7 +15,7 @@ _FORMATION_NOUNS = {"row": "row", "line": "row", "rows": "rows", "lines": "rows"
                     "ring": "circle", "circle": "circle"}  # fmt: skip
 #: Phrase kinds that, with no object after them, name a part of the room ("along the back wall").
 _PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None, "foot of": None, "at": None,
-                "end of": None}  # fmt: skip
+                "end of": None, "covering": None}  # fmt: skip
 #: Phrase kinds that place a thing on the ground beside another (not on it, not above it).
 _GROUND_KINDS = ("left of", "right of", "in front of", "behind", "side of", "near", "far", "left", "right")
 #: Sides facing each other across a thing: "it" after one of them names the thing the other placed by
@@ -42,7 +42,7 @@ _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
 #: the table in front of the fireplace" (the table is), "lanterns hang from the branches of a tree
 #: behind the chairs" (the tree is).
 _CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in", "from", "above", "over", "hanging from",
-                "on a carrier")  # fmt: skip
+                "on a carrier", "covering")  # fmt: skip
 #: Parts of a thing one stands on: "at" one is on the thing ("at its top", "at its prow", "at the stern").
 _STANDING_PARTS = ("top", "roof", "rooftop", "deck", "prow", "bow", "stern")
 #: Sides of a thing named by a possessive ("against its side"): the owner places.
@@ -59,6 +59,10 @@ _DEPICTIONS = ("statue", "hologram", "picture_frame", "sign", "billboard")
 _FLAT_HOLDERS = ("plate", "pallet")
 #: Shapes that hold what they hold inside, out of the layout ("a greenhouse holds tomato plants").
 _ENCLOSURES = ("house", "building", "tent", "kiosk")
+#: m, an enclosure lower than this is an animal's hutch or kennel, no building one goes into.
+_HUTCH_HEIGHT = 1.5
+#: m, a thing whose top is narrower than this (a post, a pole) holds only what hangs from it.
+_NARROW_TOP = 0.3
 #: Where a hung thing hangs from indoors.
 _CEILING_WORDS = ("ceiling", "ceilings", "beam", "beams", "rafter", "rafters")
 #: Vehicles with a roof and doors of their own.

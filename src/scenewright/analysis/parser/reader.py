@@ -18,9 +18,11 @@ from scenewright.analysis.parser.grammar import (
     _GROUND_KINDS,
     _HANDHELD_SIZE,
     _HOLDER_KINDS,
+    _HUTCH_HEIGHT,
     _KIND_RELATION,
     _LOAD_HOSTS,
     _LOW_HOST,
+    _NARROW_TOP,
     _OWN_SIDES,
     _PERSONAL,
     _PERSON_POSSESSIVES,
@@ -50,6 +52,7 @@ from scenewright.analysis.parser.nouns import (
 from scenewright.analysis.parser.phrases import _Rel, _find_relations, _phrase_table
 from scenewright.analysis.parser.references import _References
 from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
+from scenewright.analysis.parser.support import FLAT_HOST
 from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _split, _tokenise
 from scenewright.analysis.parser.vocabulary import load_vocabulary, scaled, stretched
 from scenewright.analysis.parser.words import (
@@ -71,6 +74,7 @@ from scenewright.analysis.parser.words import (
     _STOP,
     _TURN_VERBS,
     _USE_VERBS,
+    _VAGUE,
     _is_verb,
 )
 from scenewright.core.catalogue import Category, load_catalogue, singular
@@ -352,7 +356,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # "from" places only after a verb one does from where one is ("a heron watches from a rock"),
         # or one done to something too big to hold (below); "pulls a rope from the barrel" names
         # where the rope comes from
-        found = [r for r in _find_relations(toks, taken) if r.kind != "at" or self._names_thing(r.end, starts)]
+        found = [r for r in _find_relations(toks, taken)
+                 if (r.kind != "at" or self._names_thing(r.end, starts)) and (r.kind != "covering" or self._covers(r))]
         self.rel_at = {
             r.start: r for r in found
             if r.kind != "from" or self._verb_before(r.start, self._lookout) or self._from_to(r.end, starts)
@@ -428,7 +433,26 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         held = [("on", by_start[s].group, by_start[h].group, None) for s, h in self.held_of
                 if by_start[s].group >= 0 and by_start[h].group >= 0]  # fmt: skip
         self.relations[:0] = held  # before any other support the list gave them
+        self._aboard_their_vehicle(mentions)
         self._one_per_holder()
+
+    def _aboard_their_vehicle(self, mentions) -> None:
+        """"A train waits at the platform, its driver leaning out": a person a vehicle's "its"
+        names is its crew, on it (the latest vehicle named before in the sentence), unless the text
+        puts them on something else."""
+        placed = {r[1] for r in self.relations if r[0] in ("on", "above")}
+        for k, m in enumerate(mentions):
+            g = m.group
+            if m.content or g < 0 or g in placed or m.start == 0 or self.toks[m.start - 1].text != "its":
+                continue
+            if not self._person_at(g):
+                continue
+            for before in reversed(mentions[:k]):
+                if any(t.text in (".", ";", "!", "?") for t in self.toks[before.end : m.start]):
+                    break
+                if before.group >= 0 and not before.content and self._carrier(before.group, ("vehicles",)):
+                    self.relations.append(("on", g, before.group, None))
+                    break
 
     def _one_per_holder(self) -> None:
         """"Three miners with pickaxes", "a mechanic with a wheel gun kneels beside each car": a
@@ -932,8 +956,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             kind = body
         elif body == "on" and kind == "at":  # "a shelf at his back": behind him, not carried
             kind, body = "behind" if any(t.text == "back" for t in toks[rel.end : end]) else "near", None
-        if kind == "at" and part in _STANDING_PARTS:
+        if kind == "at" and (part in _STANDING_PARTS or self._perch_part and part != "edge"):
             kind = "on"  # "a shuttle docked at its top", "the captain stands at its prow": as "on" it
+        if kind == "along" and part is not None and self._hung_before(rel.start):
+            kind = "on"  # "shields hang along the ship's side": the ship carries them
         return _Phrase(rel, ce, kind, target, end, ordinals, body, part, parts_each)
 
     def _across_from(self, start: int, end: int) -> bool:
@@ -967,6 +993,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             rider = c.main or ([] if c.first else list(prev_subject))
             if self._rider_placed(c, rider, kind):
                 srcs = list(rider)  # "he sits on a stool at the workbench": he is at it, on his stool
+            elif self._sits_on_instead(c, rider, p):
+                srcs = list(rider)  # "a troll sits beneath the bridge on a boulder": he is on it, not the bridge
             each = target == "each one" or (
                 isinstance(target, list) and getattr(self.by_start.get(self._target_start), "each", False)
             )
@@ -1304,6 +1332,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._per_each(targets, srcs[0])  # "two soldiers on horseback": a horse each
         elif tm is not None and kind == "on" and len(srcs) == 1 and self._living(srcs[0]) and self._seats_each(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "four astronauts sit on stools": one each
+        elif tm is not None and kind == "hanging from" and len(srcs) == 1 and self._hooks_each(tm):
+            self.groups[targets[0]].count = self.groups[srcs[0]].count  # "a dozen lanterns hang from posts": one each
         sitter = self._seat_owner(c, srcs, tm) if tm is not None else None
         if sitter is not None:
             self._relate("on", [sitter], targets[0], instance=instance)
@@ -1324,6 +1354,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             limb = p.part is not None and load_vocabulary().body_parts.get(p.part) == "on" and self._person_at(t)
             if p.body == "on" or (limb and kind == "on"):
                 self.carried.update((s, t) for s in srcs)
+            elif kind == "hanging from" and self._thin(t):
+                self.carried.update((s, t) for s in srcs)  # "a lantern hangs from a post": it carries it
         c.produced = True
         c.rels = [(kind, targets)]
         if kind in ("on", "in", "on top"):
@@ -1346,6 +1378,30 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             _is_plural(self.toks, m) and not m.counted and not m.definite and m.group >= 0
             and m.group not in self.numbered and self._carrier(m.group, ("seats",))
         )  # fmt: skip
+
+    def _sits_on_instead(self, c: _Clause, rider: list[int], p: _Phrase) -> bool:
+        """Whether an ``on`` / ``in`` phrase after a place of a sitting or lying living thing seats
+        that thing, not the place: the place's footprint is larger than the seat's, so the seat
+        cannot carry it ("sits beneath the bridge on a mossy boulder", "sleeps under the table on
+        a cushion")."""
+        if p.kind not in ("on", "in") or not isinstance(p.target, list) or not p.target or not rider:
+            return False
+        if not all(self._living(g) for g in rider) or not self._verb_before(p.rel.start, self._posture):
+            return False
+        place, seat = self.groups[c.last_target[0]].size, self.groups[p.target[0]].size
+        return place[0] * place[1] > seat[0] * seat[1]
+
+    def _hooks_each(self, m: _Mention) -> bool:
+        """Thin things named in the plural with no count of their own, new here, that things hang
+        from ("lanterns hang from posts", "flags fly from poles"): one for each."""
+        return (
+            _is_plural(self.toks, m) and not m.counted and not m.definite and m.group >= 0
+            and m.group not in self.numbered and self._thin(m.group)
+        )  # fmt: skip
+
+    def _thin(self, g: int) -> bool:
+        """A post, a pole, a hook: too narrow on top to put anything on, only to hang it from."""
+        return max(self.groups[g].size[:2]) < _NARROW_TOP
 
     def _rider_placed(self, c: _Clause, rider: list[int], kind: str) -> bool:
         """Whether a phrase after "a person sits on X" places the person, not X: what the person
@@ -1440,6 +1496,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if (self.groups[s].count == 1 or uncounted) and s not in self.history:
                 self.groups[s].count = 2
 
+    def _covers(self, r: _Rel) -> bool:
+        """Whether a verb of covering ("crowd", "cover", "line") is one here: a noun phrase follows
+        it ("vases crowd three shelves", "jars crowd every shelf"), not a verb or "of" ("a noisy
+        crowd gathers", "crowds of tourists"), and it is no noun after an article."""
+        after = self.toks[r.end].text if r.end < len(self.toks) else ""
+        return after in _DETERMINERS or after in _NUMBERS or after in _VAGUE
+
     def _hung_before(self, pos: int) -> bool:
         """A hanging (or turning) verb earlier in the same clause part ("three lanterns hang from the
         ceiling over the counter": the over is hung, not a tree leaning over; "a hologram turns above
@@ -1505,6 +1568,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "left of"  # the head of a table is one of its ends
             return "near"
         if kind == "in":  # "a man in a rocking chair", "a duck floats in the tub", "children in the bus": on it
+            if self._living(s) and target.shape in _ENCLOSURES and self.groups[t].size[2] < _HUTCH_HEIGHT:
+                return "on"  # "a dog in each kennel", "hens in the coop": a hutch holds them as a cage does
             if target.shape in _ENCLOSURES or target.shape == "tower":
                 return "no relation"  # in a tent, in the lighthouse: inside it, out of the layout
             if self._living(s) and (self._carrier(t, _VESSEL_KINDS) or self._carrier(t, by_family=False)):
@@ -1526,7 +1591,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "on"
             return "in front of" if target.shape == "bed" else "near"  # "a barrow at the end of the patch"
         if kind == "along" and src.rests == "surface" and (target.support or target.shape in _LOAD_HOSTS):
-            return "on"  # "jars lining a shelf", "bottles along the bar": on it, as at its end or centre
+            return "on"  # "bottles along the bar": on it, as at its end or centre
+        if kind == "covering":
+            # "jars crowd every shelf", "crates cover a long table", "lasts lining a shelf": on what
+            # has a top for them; "trees line the drive" stand beside it; people crowding a carrier
+            # ("tourists crowd the pier") are on it, by anything else near it
+            if self._living(s):
+                return "on" if self._carrier(t) else "near"
+            flat = self.groups[t].size[2] <= FLAT_HOST
+            return "on" if target.support or target.shape in _LOAD_HOSTS or flat else "side of"
         if kind == "centre of":  # "a vase in the middle of the table", "a throne in the centre of the stage": on it
             if src.rests == "surface" and target.support:
                 return "on"

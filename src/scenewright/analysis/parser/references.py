@@ -97,6 +97,8 @@ class _References:
                 return "each other", j + 2
             if w in ("each", "every") and j + 1 < ce and toks[j + 1].text == "one":
                 return "each one", j + 2  # "a chair in front of each one": one per member
+            if w == "each" and j == pos and (j + 1 >= ce or not toks[j + 1].text[:1].isalpha()):
+                return "each one", j + 1  # "eight kennels along the wall, a dog in each": one per member
             of_them = [t.text for t in toks[j + 1 : j + 3]] in (["of", "them"], ["of", "these"], ["of", "those"])
             if w == "each" and of_them:
                 return "each one", j + 3  # "a clock hangs above each of them": as "each one"

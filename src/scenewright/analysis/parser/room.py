@@ -23,10 +23,10 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Sequence
 
-from scenewright.core.catalogue import load_catalogue
+from scenewright.core.catalogue import load_catalogue, singular
 from scenewright.analysis.parser.model import ParsedRelation, ParsedScene
 from scenewright.analysis.parser.style import detect_ground
 from scenewright.errors import InputError
@@ -324,16 +324,39 @@ def place_openings(room: Room, wanted: Sequence[tuple[str, str | None, int]]) ->
 #: Categories hung on a wall, and hung from the ceiling, when the scene has a room.
 WALL_THINGS = frozenset({"picture_frame", "mirror", "wall_clock", "projector_screen", "lifebuoy"})
 CEILING_THINGS = frozenset({"ceiling_fan", "pendant_lamp", "punching_bag"})
-_WALL_PHRASE = re.compile(r"\b(against|along|on|by|to|in|at|onto|from)\s+(?:the\s+|a\s+|one\s+)?(?:(back|rear|far|left|right|front)(?:[- ]hand)?\s+)?(wall|corner)s?\b")
-#: "hangs from the ceiling", "suspended from the vaulted ceiling", "on the ceiling".
-_CEILING_PHRASE = re.compile(r"\b(?:(?:hang|hangs|hanging|hung|suspended|dangles|dangling|swings?)\s+(?:\w+\s+){0,2}?from|on)\s+the\s+(?:[\w-]+\s+){0,2}?ceiling\b")
+#: Words for a room's wall (a ship's bulkhead is its wall); "window" only for a thing hung there.
+_WALL_WORDS = r"(wall|corner|bulkhead|window)"
+_WALL_PHRASE = re.compile(r"\b(against|along|on|by|to|in|at|onto|from)\s+(?:the\s+|a\s+|one\s+)?(?:(back|rear|far|left|right|front)(?:[- ]hand)?\s+)?" + _WALL_WORDS + r"s?\b")
+#: Verbs (and participles) that fix a thing to a wall or the ceiling.
+_FIXING = r"(?:hang|hangs|hanging|hung|mounted|fixed|pinned|nailed|fastened|bolted|screwed|hooked|attached|affixed|clamped|tacked|taped|glued|stuck|suspended)"
+#: "hangs from the ceiling", "suspended from the vaulted ceiling", "on the ceiling", "dangle from
+#: strings hooked to the ceiling", "fixed to the ceiling".
+_CEILING_PHRASE = re.compile(
+    r"\b(?:(?:" + _FIXING + r"|dangles?|dangling|swings?)\s+(?:[\w-]+\s+){0,4}?(?:from|to)|on)\s+the\s+(?:[\w-]+\s+){0,2}?ceiling\b"
+)
 #: Verbs that put a thing *on* a wall rather than against it.
-_MOUNTED = re.compile(r"\b(?:hang|hangs|hanging|hung|mounted|fixed|pinned|nailed|fastened)\b")
+_MOUNTED = re.compile(r"\b" + _FIXING + r"\b")
+#: Words before a thing's name that fix it to a wall: "a wall shelf", "a wall-mounted screen", "two
+#: framed butterfly cases" (what is framed hangs).
+_WALL_WORDS_BEFORE = re.compile(
+    r"\b(?:wall\s+|(?:wall-mounted|framed)\s+(?:(?!(?:by|with|in|on|of|and|or|the|a|an)\b)[\w-]+\s+){0,2})$"
+)
+#: The leading list of a thing's fellow subjects ("saws and chisels hang on the wall"): names
+#: there do not come between the thing and its wall phrase.
+_FELLOWS = re.compile(r"(?:\s*(?:,|and|or)\s+(?:[\w-]+\s+){0,2}?[\w-]+)+")
 
 
 def _names_between(text: str, names: set[str], own: str) -> bool:
     """Whether ``text`` names a thing other than ``own``."""
-    return any(re.search(rf"\b{re.escape(other)}s?\b", text) for other in names if other != own)
+    return any(_named(text, other) is not None for other in names if other != own)
+
+
+def _named(text: str, name: str) -> tuple[int, int] | None:
+    """Where ``text`` first names ``name``, singular or plural ("shelves" names a shelf)."""
+    for found in re.finditer(r"[\w-]+", text):
+        if found.group() == name or singular(found.group()) == name:
+            return found.span()
+    return None
 
 
 def _head(o) -> str:
@@ -343,10 +366,12 @@ def _head(o) -> str:
 
 def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
     """Room relations the text states: "against the (back) wall" → ``against wall``, "in the
-    corner" → ``in corner``, a thing on, hung or mounted on "the left wall" → ``on wall``, a
-    thing hanging from the ceiling → ``on ceiling``. The side picks the
-    wall (:data:`RECTANGLE_WALLS`); no side means any wall (``room``). A thing is matched to the
-    phrase in its own sentence, after its name."""
+    corner" → ``in corner``, a thing on, hung or mounted on "the left wall" (fixed, bolted, hung in
+    the window, on a ship's bulkhead) → ``on wall``, a thing hanging from the ceiling → ``on
+    ceiling``; "a wall shelf", "a wall-mounted screen" and "framed" things hang on a wall. The side
+    picks the wall (:data:`RECTANGLE_WALLS`); no side means any wall (``room``). A thing is matched
+    to the phrase in its own sentence, after its name (singular or plural); its fellow subjects
+    ("saws and chisels hang on the wall") come with it."""
     low = " ".join(parsed.text.lower().split())
     sentences = [(m.start(), m.end()) for m in re.finditer(r"[^.;!?]+", low)]
     names = {_head(o) for o in parsed.objects}
@@ -355,15 +380,22 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
         name = _head(o)
         for s, e in sentences:
             sentence = low[s:e]
-            found = re.search(rf"\b{re.escape(name)}s?\b", sentence)
+            found = _named(sentence, name)
             if found is None:
                 continue
-            at = found.end()
+            if _WALL_WORDS_BEFORE.search(sentence[: found[0]]):
+                out.append(ParsedRelation(source=o.id, relation="on wall", target="room"))
+                break
+            at = found[1]
             ceiling = _CEILING_PHRASE.search(sentence, at)
             phrase = _WALL_PHRASE.search(sentence, at)
             if phrase is not None and ceiling is not None and phrase.start() < ceiling.start():
                 ceiling = None  # "wheels hang on the back wall, and tubes dangle from the ceiling"
-            if ceiling is not None and not _names_between(sentence[at:ceiling.start()], names, name):
+            fellows = _FELLOWS.match(sentence, at)
+            if fellows is not None:
+                at = fellows.end()  # "saws and chisels hang on the wall": the chisels are fellows
+            # (names inside the phrase count: "a workbench, and two hanging lamps dangle from the ceiling")
+            if ceiling is not None and not _names_between(sentence[at:ceiling.end()], names, name):
                 out.append(ParsedRelation(source=o.id, relation="on ceiling", target=CEILING_TARGET))
                 break
             if phrase is None:
@@ -377,6 +409,8 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
             wall_thing = o.category in WALL_THINGS and what == "wall"
             if o.anchor is None and not wall_thing and _names_between(between, names, name):
                 break
+            if what == "window" and not _MOUNTED.search(between):
+                break  # a thing hung in the window is on its wall; one standing there is not
             target = f"wall_{RECTANGLE_WALLS[_SIDE_WORDS[side]]}" if side and _SIDE_WORDS.get(side) else "room"
             if what == "corner":
                 relation = "in corner"
@@ -386,6 +420,27 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
                 relation = "against wall"
             out.append(ParsedRelation(source=o.id, relation=relation, target=target))
             break
+    return out
+
+
+#: Height (m) a floor-standing storage unit takes when the text fixes it to a wall: a wall shelf is
+#: a board or two ("three shelves fixed to the back wall", "a wall shelf above the console"), not
+#: a 1.9 m bookcase lifted off the floor, and what stands on it still fits under the ceiling.
+WALL_UNIT_HEIGHTS = {"bookshelf": 0.45, "shop_shelf": 0.45, "cabinet": 0.7}
+#: m, the depth of such a unit at most.
+WALL_UNIT_DEPTH = 0.3
+
+
+def wall_units(parsed: ParsedScene) -> list:
+    """``parsed``'s objects, each storage unit the text fixes to a wall (:func:`wall_phrases`) the
+    size of a wall unit (:data:`WALL_UNIT_HEIGHTS`); the rest as they are."""
+    mounted = {r.source for r in wall_phrases(parsed) if r.relation == "on wall"}
+    out = []
+    for o in parsed.objects:
+        height = WALL_UNIT_HEIGHTS.get(o.category)
+        if o.id in mounted and height is not None and o.size[2] > height:
+            o = replace(o, size=(o.size[0], min(o.size[1], WALL_UNIT_DEPTH), height))
+        out.append(o)
     return out
 
 

@@ -158,6 +158,8 @@ _SEAT_SHAPES = ("chair", "armchair", "sofa", "bench", "stool", "office_chair", "
 
 #: Hosts with no top to put things on: people and birds (a horse or a camel can carry a load).
 _NO_TOP = {"figure", "bird", "mannequin", "scarecrow"}
+#: The category of a thing nobody listed: its size is a guess, not knowledge.
+_UNKNOWN = "thing"
 #: A host this low is ground-like (a rug, a pond, a pallet, a blanket): anything may stand on it.
 FLAT_HOST = 0.3
 #: How much larger than its host a thing may be and still rest on it (footprint, longest side):
@@ -184,13 +186,20 @@ def fit_on_hosts(
     objects: list[ParsedObject], relations: list[ParsedRelation], catalogue, fixed: set[str]
 ) -> list[ParsedObject]:
     """Objects with every floor-standing thing stated ``on`` a general host scaled down to a
-    tabletop size (its proportions kept); sizes the text states (``fixed``) stay."""
+    tabletop size (its proportions kept), and a thing nobody listed (its size only a guess) as small
+    as the host it is stated on needs ("two hoglets sit on pebble stools": the text knows better
+    than the guess); sizes the text states (``fixed``) stay."""
     by_id = {o.id: o for o in objects}
     scale: dict[str, float] = {}
     for r in relations:
         if r.relation != "on" or r.source in fixed:
             continue
         thing, host = by_id[r.source], by_id[r.target]
+        if thing.category == _UNKNOWN and host.category not in _NO_TOP and not can_hold(host, thing, catalogue):
+            side = max(host.size[:2]) / max(thing.size[:2])
+            area = (host.size[0] * host.size[1] / (thing.size[0] * thing.size[1])) ** 0.5
+            scale[thing.id] = min(scale.get(thing.id, 1.0), side, area)
+            continue
         if (thing.rests or catalogue[thing.category].rests) != "ground" or host.category not in _GENERAL_HOSTS:
             continue
         if host.size[2] > _FURNITURE_HEIGHT or thing.category in _FLOOR_FURNITURE:
@@ -244,7 +253,8 @@ def repair_supports(
 ) -> tuple[list[ParsedRelation], list[str]]:
     """Each ``on`` whose host cannot hold the thing becomes ``side of`` (what the text most
     likely meant: "a dinosaur skeleton on a barrel" stands beside it), with a note of the repair.
-    What the text puts on a part of a person (``carried``: "a laptop on her knees") stays on them."""
+    What the text puts on a part of a person (``carried``: "a laptop on her knees") or hangs from a
+    post stays on it."""
     by_id = {o.id: o for o in objects}
     out: list[ParsedRelation] = []
     notes: list[str] = []
