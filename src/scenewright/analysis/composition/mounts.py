@@ -1,0 +1,45 @@
+"""Outdoors, a thing made to hang on a wall stands on a post.
+
+A clock, a mirror, a picture or a lifebuoy hangs on a wall. In a scene with no room, where the
+text puts it on nothing ("a clock on the kiosk" keeps its kiosk), nothing holds it up: it would
+float over what the text hangs it above. A designer stands it on a post, as a station clock or
+a lifebuoy stand: its box grows by the post's height (:data:`~scenewright.procedural.shapes.frames.POST`),
+it rests on the ground, its description says so (the mesh then draws the post), and what the
+text hangs it ``above`` it stands ``behind``, over it to the viewer's eye. An ``above`` the
+reader only guessed gives a place, not a height: that becomes ``near``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from scenewright.analysis.parser import ParsedRelation, ParsedScene
+from scenewright.analysis.parser.room import WALL_THINGS
+from scenewright.procedural.shapes.frames import POST, POSTED
+
+#: m, the least depth of a posted thing's box: the post stands behind its face.
+DEPTH = 0.12
+
+
+def on_posts(parsed: ParsedScene) -> ParsedScene:
+    """``parsed`` with every wall thing of an outdoor scene that stands on nothing put on a post."""
+    if parsed.indoor:
+        return parsed
+    held = {r.source for r in parsed.relations if r.relation == "on"}
+    posted = {o.id for o in parsed.objects if o.category in WALL_THINGS and o.id not in held}
+    if not posted:
+        return parsed
+    objects = [
+        replace(o, size=(o.size[0], max(o.size[1], DEPTH), o.size[2] + POST), rests="ground",
+                description=f"{o.description} {POSTED}".strip())
+        if o.id in posted else o
+        for o in parsed.objects
+    ]  # fmt: skip
+    relations = [_grounded(r) if r.source in posted else r for r in parsed.relations]
+    return replace(parsed, objects=objects, relations=relations)
+
+
+def _grounded(r: ParsedRelation) -> ParsedRelation:
+    if r.relation != "above":
+        return r
+    return replace(r, relation="near" if r.inferred else "behind")
