@@ -372,7 +372,8 @@ VARIANTS = [
     ("vehicle", "diesel train", "screen"), ("vehicle", "electric train", "canvas_alt"), ("vehicle", "longship", "wood"),
     ("vehicle", "narrowboat", "canvas_alt"), ("bus", "tram", "canvas_alt"), ("structure", "stone platform", "yellow_paint"),
     ("structure", "wooden platform", "dark_wood"), ("vehicle", "snowmobile", "leather"), ("vehicle", "snowcat", "screen"),
-    ("boat", "rowing boat", "dark_wood"), ("boat", "viking longship", "canvas"),
+    ("boat", "rowing boat", "dark_wood"), ("boat", "viking longship", "canvas"), ("vehicle", "jet plane", "plastic"),
+    ("vehicle", "twin-propeller airplane", "plastic"), ("vehicle", "flying saucer", "dark_metal"),
 ]
 
 

@@ -266,8 +266,73 @@ def treadmill(m: Model) -> None:
     m.box("screen", (-0.25 * m.sx, -0.35 * m.sy, 0.82 * m.sz), (0.25 * m.sx, -0.34 * m.sy, 0.95 * m.sz), rounded=0.0)
 
 
+#: Words of aircraft driven by propellers rather than jets.
+_PROPELLER = ("propeller", "prop", "turboprop", "biplane", "seaplane", "floatplane", "crop duster", "twin-propeller")
+
+
+def _plane(m: Model) -> None:
+    """A fixed-wing aeroplane, nose toward −Y: a round fuselage with a cockpit and a window
+    line, low tapered wings across the box's width, a tailplane and a fin, engines under the
+    wings (propellers when the words say so, else jets) and a tricycle landing gear."""
+    m.main = "plastic"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    r = min(0.2 * H, 0.1 * m.sy, 0.25 * W)
+    gear = 0.35 * H - r
+    zc = gear + r
+    m.cylinder("plastic", (0, -0.8 * L, zc), (0, 0.6 * L, zc), r, fraction=0.8)
+    m.ball("plastic", (0, -0.8 * L, zc), (r, 0.18 * L, r), fraction=0.8)
+    m.cylinder("plastic", (0, 0.6 * L, zc), (0, 0.98 * L, zc + 0.6 * r), r, 0.25 * r, fraction=0.8)
+    m.box("screen", (-0.55 * r, -0.92 * L, zc + 0.25 * r), (0.55 * r, -0.86 * L, zc + 0.6 * r), rounded=0.0)
+    for s in (-1, 1):  # the window line, a hair proud of the fuselage's side
+        x0, x1 = sorted((s * 0.96 * r, s * 1.01 * r))
+        m.box("screen", (x0, -0.7 * L, zc + 0.05 * r), (x1, 0.55 * L, zc + 0.25 * r), rounded=0.0)
+    zw = zc - 0.5 * r
+    m.extrude("paint", [(-W, -0.02 * L), (0.0, -0.25 * L), (W, -0.02 * L), (W, 0.06 * L), (0.0, 0.08 * L), (-W, 0.06 * L)],
+              "z", zw - 0.04 * r - 0.005, zw + 0.04 * r + 0.005)
+    zt = zc + 0.55 * r
+    span = 0.32 * m.sx
+    m.extrude("paint", [(-span, 0.9 * L), (0.0, 0.78 * L), (span, 0.9 * L), (span, 0.97 * L), (-span, 0.97 * L)],
+              "z", zt - 0.03 * r - 0.003, zt + 0.03 * r + 0.003)
+    m.extrude("paint", [(0.72 * L, zc + 0.5 * r), (L, zc + 0.7 * r), (L, H), (0.9 * L, H)], "x", -0.04 * r - 0.004, 0.04 * r + 0.004)
+    propeller = m.has(*_PROPELLER)
+    for s in (-1, 1):
+        x = s * 0.35 * m.sx
+        n = 0.45 * r
+        m.cylinder("metal", (x, -0.3 * L, zw - 0.4 * n), (x, 0.02 * L, zw - 0.4 * n), n, 0.7 * n, fraction=0.6)
+        if propeller:
+            m.cylinder("dark_metal", (x, -0.31 * L, zw - 0.4 * n), (x, -0.315 * L, zw - 0.4 * n), min(2.2 * n, zw + 0.4 * n - 0.02),
+                       fraction=0.8)
+        else:
+            m.cylinder("dark_metal", (x, -0.301 * L, zw - 0.4 * n), (x, -0.302 * L, zw - 0.4 * n), 0.85 * n, fraction=0.6)
+    wheel = 0.35 * gear + 0.01
+    for x, y in ((0.0, -0.7 * L), (-0.2 * m.sx, 0.0), (0.2 * m.sx, 0.0)):
+        m.post("dark_metal", x, y, wheel, zc - 0.5 * r if x == 0 else zw, 0.02 * H + 0.01, fraction=0.4)
+        m.cylinder("rubber", (x - 0.3 * wheel, y, wheel), (x + 0.3 * wheel, y, wheel), wheel, fraction=0.6)
+
+
+def _saucer(m: Model) -> None:
+    """A flying saucer: a metal disc thickest at the middle with a glass dome on top, a ring
+    of lights round the rim and three landing legs."""
+    m.main = "metal"
+    H = m.sz
+    leg = 0.15 * H
+    m.lathe("metal", [(0.0, leg), (0.25, leg + 0.05 * H), (0.5, 0.42 * H), (0.3, 0.6 * H), (0.0, 0.62 * H)], scale=(m.sx, m.sy))
+    m.lathe("glass", [(0.17, 0.58 * H), (0.14, 0.85 * H), (0.0, H)], scale=(m.sx, m.sy), fraction=0.8)
+    for k in range(10):
+        a = 2 * np.pi * k / 10
+        m.ball("light", (0.47 * m.sx * np.cos(a), 0.47 * m.sy * np.sin(a), 0.42 * H), (0.025 * m.sx,) * 3, fraction=0.4)
+    for k in range(3):
+        a = 2 * np.pi * k / 3 + np.pi / 2
+        foot = np.array([0.3 * m.sx * np.cos(a), 0.3 * m.sy * np.sin(a), 0.0])
+        m.beam("dark_metal", foot + (0, 0, 0.01 * H), (0.2 * m.sx * np.cos(a), 0.2 * m.sy * np.sin(a), leg + 0.05 * H), 0.02 * m.sx)
+        m.cylinder("dark_metal", foot, foot + (0, 0, 0.02 * H), 0.04 * m.sx, fraction=0.5)
+
+
 def craft(m: Model) -> None:
-    """A spaceship or drone: a hull, wings or rotor arms, glowing engines."""
+    """A spaceship or drone: a hull, wings or rotor arms, glowing engines; a saucer by name."""
+    if m.named("flying saucer", "saucer", "ufo", "flying disc"):
+        _saucer(m)
+        return
     m.main = "metal"
     if m.named("drone", "quadcopter"):
         m.box("dark_plastic", (-0.2 * m.sx, -0.2 * m.sy, 0.3 * m.sz), (0.2 * m.sx, 0.2 * m.sy, 0.7 * m.sz))
@@ -690,8 +755,8 @@ _WATERCRAFT = re.compile(r"\b(?:\w*boat|\w+ship|ship|barge|canoe|kayak|raft|ferr
 
 def vehicle(m: Model) -> None:
     """A vehicle the catalogue does not know: tractor, forklift, golf cart, cart, battle
-    tank, snowmobile, tracked crawler, train (steam or a diesel/electric unit, by its words), a flying craft (drone,
-    spaceship), a boat (a name ending in -boat or -ship); else a car."""
+    tank, snowmobile, tracked crawler, train (steam or a diesel/electric unit, by its words), an aeroplane
+    (propellers or jets, by its words), a flying craft (drone, spaceship, saucer), a boat (a name ending in -boat or -ship); else a car."""
     variants = (
         (("tractor", "bulldozer", "harvester", "combine"), _tractor),
         (("forklift", "fork lift", "pallet truck"), _forklift),
@@ -707,8 +772,10 @@ def vehicle(m: Model) -> None:
         (("helicopter", "chopper", "gyrocopter"), _helicopter),
         (("airship", "blimp", "zeppelin", "dirigible"), _airship),
         (("submarine", "u-boat", "sub"), _submarine),
-        (("spaceship", "spacecraft", "starship", "drone", "quadcopter", "jet", "airplane", "plane", "aircraft", "ufo",
-          "shuttle", "rocket ship"), craft),
+        (("airplane", "aeroplane", "plane", "aircraft", "airliner", "jet", "jetliner", "biplane", "seaplane", "glider",
+          "turboprop", "propeller plane", "cargo plane", "fighter jet"), _plane),
+        (("spaceship", "spacecraft", "starship", "drone", "quadcopter", "ufo", "flying saucer", "saucer", "shuttle",
+          "rocket ship"), craft),
     )
     build = m.first_named(variants)
     if build is None and _WATERCRAFT.search(m.name):
