@@ -78,7 +78,8 @@ def test_a_thing_nobody_sized_fits_a_hand_or_its_host_s_top_and_never_grows():
     assert fit_unsized(scene([keeper, sized], [on("lute_1", "figure_1")]))[1].size == sized.size  # a known size stays
 
 
-def test_a_thing_nobody_knows_sitting_on_a_seat_keeps_its_size():
-    settle = obj("bench_1", "bench", (1.6, 0.6, 0.85))
+def test_a_thing_nobody_knows_on_a_seat_a_rock_or_another_unknown_keeps_its_size():
+    """There it is as likely someone the reader did not know ("two riggers on a boulder")."""
     stranger = unsized("oddling_1", "oddling")
-    assert fit_unsized(scene([settle, stranger], [on("oddling_1", "bench_1")]))[1].size == stranger.size
+    for host in (obj("bench_1", "bench", (1.6, 0.6, 0.85)), obj("rock_1", "rock", (1.2, 1.0, 0.8)), unsized("lift_1", "lift")):
+        assert fit_unsized(scene([host, stranger], [on("oddling_1", host.id)]))[1].size == stranger.size, host.id

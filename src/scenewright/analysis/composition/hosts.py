@@ -13,9 +13,10 @@ their size, and what does not fit is the solver's to report.
 
 The other way round, a thing nobody sized (a guessed ``thing``: "a baton", "a gouge", "a pocket
 watch") has the size of a middling crate, which is right on the ground and wrong in a hand: one
-a person or an animal holds is hand-sized (:data:`HAND`), one put on another thing keeps to a
-share of that thing's top (:data:`TOP_SHARE`), proportions kept (:func:`fit_unsized`). What sits
-on a seat is left alone: a thing nobody knows that sits on a bench is more likely someone.
+a person or an animal holds is hand-sized (:data:`HAND`), one put on furniture made to hold
+things (a table, a shelf: the catalogue's ``support``) keeps to a share of its top
+(:data:`TOP_SHARE`), proportions kept (:func:`fit_unsized`). What stands on a seat, a rock, a lift
+or another unknown thing is left alone: a thing nobody knows there is as likely someone.
 """
 
 from __future__ import annotations
@@ -23,7 +24,6 @@ from __future__ import annotations
 from collections import defaultdict
 from dataclasses import replace
 
-from scenewright.analysis.composition import roles
 from scenewright.analysis.parser import ParsedObject, ParsedScene
 from scenewright.analysis.parser.vocabulary import GENERIC
 from scenewright.core.catalogue import load_catalogue
@@ -75,8 +75,8 @@ def lengthen(parsed: ParsedScene) -> list[ParsedObject]:
 
 
 def fit_unsized(parsed: ParsedScene) -> list[ParsedObject]:
-    """The parse's objects, each guessed ``thing`` put ``on`` another (not a seat) scaled down,
-    proportions kept, to a hand's size on the living (:data:`HAND`) or to :data:`TOP_SHARE` of
+    """The parse's objects, each guessed ``thing`` held by the living or put ``on`` a support
+    scaled down, proportions kept, to a hand's size (:data:`HAND`) or to :data:`TOP_SHARE` of
     its host's top; never up."""
     catalogue = load_catalogue()
     by_id = {o.id: o for o in parsed.objects}
@@ -84,10 +84,9 @@ def fit_unsized(parsed: ParsedScene) -> list[ParsedObject]:
     out = []
     for o in parsed.objects:
         host = hosts.get(o.id)
-        if o.guessed and o.category == GENERIC and host is not None and roles.kind(host.category) not in roles.SEATS:
-            entry = catalogue.get(host.category)
-            living = entry is not None and entry.shape in LIVING
-            longest = HAND if living else TOP_SHARE * min(host.size[:2])
+        entry = catalogue.get(host.category) if host is not None else None
+        if o.guessed and o.category == GENERIC and entry is not None and (entry.shape in LIVING or entry.support):
+            longest = HAND if entry.shape in LIVING else TOP_SHARE * min(host.size[:2])
             factor = longest / max(o.size)
             if factor < 1.0:
                 o = replace(o, size=tuple(round(v * factor, 4) for v in o.size))
