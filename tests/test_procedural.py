@@ -374,7 +374,7 @@ VARIANTS = [
     ("structure", "wooden platform", "dark_wood"), ("vehicle", "snowmobile", "leather"), ("vehicle", "snowcat", "screen"),
     ("boat", "rowing boat", "dark_wood"), ("boat", "viking longship", "canvas"), ("vehicle", "jet plane", "plastic"),
     ("vehicle", "twin-propeller airplane", "plastic"), ("vehicle", "flying saucer", "dark_metal"),
-    ("bookshelf", "shelf bookshelf", "ceramic"),
+    ("bookshelf", "shelf bookshelf", "ceramic"), ("cart", "luggage cart", "rubber"), ("vehicle", "baggage trolley", "rubber"),
 ]
 
 

@@ -202,9 +202,40 @@ def boat(m: Model) -> None:
         m.box("paint", (-0.35 * m.sx, -0.15 * L, 0.85 * m.sz), (0.35 * m.sx, 0.65 * L, m.sz))
 
 
+#: Words of carts pushed by hand over smooth floors (stations, airports, shops): a flat trolley.
+_TROLLEY = ("luggage", "baggage", "platform trolley", "trolley", "shopping", "hand truck", "dolly", "flatbed cart",
+            "tea trolley", "serving cart", "service cart", "laundry")
+
+
+def _trolley(m: Model) -> None:
+    """A trolley: a flat deck at the cart's rest height with a low rail round it, on four
+    castors on legs, a push handle rising at the back."""
+    m.main = "metal"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    wr = min(0.1 * H, 0.12 * L, 0.3 * W)
+    deck = 0.51 * H - 0.01  # its top at the cart's rest height (data/catalogue.json), like a cart's bed
+    m.box("wood", (-W + 0.02 * m.sx, -L, deck), (W - 0.02 * m.sx, 0.92 * L, 0.55 * H))
+    for x in (-0.8 * W, 0.8 * W):
+        for y in (-0.8 * L, 0.75 * L):
+            m.cylinder("rubber", (x - 0.3 * wr, y, wr), (x + 0.3 * wr, y, wr), wr, fraction=0.5)
+            m.post("dark_metal", x, y, wr, deck, 0.25 * wr, fraction=0.4)
+    rail = deck + 0.12 * H
+    corners = [(-0.98 * W, -0.98 * L, rail), (0.98 * W, -0.98 * L, rail), (0.98 * W, 0.9 * L, rail), (-0.98 * W, 0.9 * L, rail)]
+    ring(m, "metal", corners, 0.02 * H + 0.005)
+    for x in (-0.9 * W, 0.9 * W):
+        m.beam("metal", (x, 0.93 * L, deck), (x, L - 0.01 * L, H - 0.02 * H), 0.025 * H + 0.005)
+    m.cylinder("dark_plastic", (-0.95 * W, L - 0.01 * L, H - 0.02 * H), (0.95 * W, L - 0.01 * L, H - 0.02 * H), 0.02 * H + 0.005,
+               fraction=0.4)
+
+
 def cart(m: Model) -> None:
+    """A wooden cart on two spoked wheels with shafts; a mine cart, or a hand trolley (luggage,
+    baggage, shopping...) by its words."""
     if m.named("minecart", "mine cart", "mine car", "ore cart", "ore car"):
         _minecart(m)
+        return
+    if m.has(*_TROLLEY):
+        _trolley(m)
         return
     wr = 0.35 * m.sz
     bed_z = 0.5 * m.sz
