@@ -1,6 +1,6 @@
 """Outdoors, a thing made for a wall stands on a post; indoors and on a host it stays as it was."""
 
-from scenewright.analysis.composition.mounts import on_posts
+from scenewright.analysis.composition.mounts import on_posts, over_holders
 from scenewright.analysis.parser import ParsedObject, ParsedRelation, ParsedScene
 from scenewright.procedural.shapes.frames import POST, POSTED
 
@@ -26,3 +26,16 @@ def test_indoors_or_on_a_host_a_wall_thing_stays_as_it_was():
     assert on_posts(indoor) == indoor
     hung = _scene(False, [ParsedRelation("mirror_1", "on", "kiosk_1")])
     assert on_posts(hung) == hung
+
+
+def test_a_guessed_above_over_a_held_thing_moves_to_its_holder():
+    """"Garlic hangs from the rafters" guessed over the whisk a cook holds hangs over the cook."""
+    cook = ParsedObject("figure_1", "figure", "cook", "cook", (0.5, 0.3, 1.75), 0)
+    whisk = ParsedObject("whisk_1", "thing", "whisk", "whisk", (0.3, 0.1, 0.1), 1, guessed=True)
+    garlic = ParsedObject("garlic_1", "thing", "garlic", "garlic", (0.3, 0.3, 0.3), 2, guessed=True)
+    held = ParsedRelation("whisk_1", "on", "figure_1")
+    out = over_holders(ParsedScene("", [cook, whisk, garlic], [held, ParsedRelation("garlic_1", "above", "whisk_1", inferred=True)],
+                                   "realistic", "wood", True))
+    assert out.relations[1].target == "figure_1"
+    said = ParsedScene("", [cook, whisk, garlic], [held, ParsedRelation("garlic_1", "above", "whisk_1")], "realistic", "wood", True)
+    assert over_holders(said) == said  # what the text says stands

@@ -25,6 +25,7 @@ from collections import defaultdict
 from dataclasses import replace
 
 from scenewright.analysis.parser import ParsedObject, ParsedScene
+from scenewright.analysis.composition.mounts import LIVING
 from scenewright.analysis.parser.vocabulary import GENERIC
 from scenewright.core.catalogue import load_catalogue
 
@@ -40,8 +41,6 @@ GROWN = frozenset({"rock"})
 ROOM_ON_TOP = 1.5
 #: m, the longest side of a thing nobody sized that a person or an animal has in hand.
 HAND = 0.3
-#: Shapes of the living: what is on one of them is held (or carried, or perched).
-LIVING = frozenset({"figure", "animal", "bird"})
 #: Share of its host's smaller top side the longest side of a thing nobody sized keeps to.
 TOP_SHARE = 0.5
 
