@@ -2,7 +2,7 @@
 
 from scenewright.analysis.composition.mounts import on_posts, over_holders
 from scenewright.analysis.parser import ParsedObject, ParsedRelation, ParsedScene
-from scenewright.procedural.shapes.frames import POST, POSTED
+from scenewright.core.catalogue import POST, POSTED
 
 
 def _scene(indoor: bool, relations) -> ParsedScene:

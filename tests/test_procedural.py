@@ -25,7 +25,7 @@ from scenewright.procedural.builder import Model
 from scenewright.procedural.material import described_surfaces, find_colour, find_material
 from scenewright.backends.procedural_meshes import ProceduralMeshes
 from scenewright.procedural.meshes import build_glb, build_model, choose_shape, keyword_shape
-from scenewright.procedural.shapes.frames import POST, POSTED
+from scenewright.core.catalogue import POST, POSTED
 from scenewright.procedural.style import ROLES, resolve_style
 from scenewright.procedural.textures import ground_texture
 from scenewright.scene import STYLES, Vec3

@@ -18,13 +18,13 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from scenewright.core.catalogue import load_catalogue, lookup
+from scenewright.core.catalogue import POST, POSTED, load_catalogue, lookup
 from scenewright.errors import InputError
 from scenewright.procedural.builder import Model
 from scenewright.procedural.material import described_surfaces
 from scenewright.procedural.shapes import SHAPES
 from scenewright.procedural.shapes.families import FAMILY_WORDS
-from scenewright.procedural.shapes.frames import POST, POSTED, on_post
+from scenewright.procedural.shapes.frames import on_post
 from scenewright.procedural.style import resolve_style
 
 if TYPE_CHECKING:

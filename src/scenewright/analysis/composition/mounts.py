@@ -5,7 +5,7 @@ Outdoors, a thing made to hang on a wall stands on a post.
 A clock, a mirror, a picture or a lifebuoy hangs on a wall. In a scene with no room, where the
 text puts it on nothing ("a clock on the kiosk" keeps its kiosk), nothing holds it up: it would
 float over what the text hangs it above. A designer stands it on a post, as a station clock or
-a lifebuoy stand: its box grows by the post's height (:data:`~scenewright.procedural.shapes.frames.POST`),
+a lifebuoy stand: its box grows by the post's height (:data:`~scenewright.core.catalogue.POST`),
 it rests on the ground, its description says so (the mesh then draws the post), and what the
 text hangs it ``above`` it stands ``behind``, over it to the viewer's eye. An ``above`` the
 reader only guessed gives a place, not a height: that becomes ``near``.
@@ -21,8 +21,7 @@ from dataclasses import replace
 
 from scenewright.analysis.parser import ParsedRelation, ParsedScene
 from scenewright.analysis.parser.room import WALL_THINGS
-from scenewright.core.catalogue import load_catalogue
-from scenewright.procedural.shapes.frames import POST, POSTED
+from scenewright.core.catalogue import POST, POSTED, load_catalogue
 
 #: m, the least depth of a posted thing's box: the post stands behind its face.
 DEPTH = 0.12

@@ -6,6 +6,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from scenewright.core.catalogue import POST
 from scenewright.procedural.builder import Model
 
 
@@ -21,13 +22,6 @@ def ring(m: Model, role: str, corners: Sequence, width: float) -> None:
     for a, b in zip(points, points[1:] + points[:1]):
         inward = 0.5 * width * (b - a) / np.linalg.norm(b - a)
         m.beam(role, a + inward, b - inward, width)
-
-
-#: m from the ground to the foot of a thing made for a wall that stands outdoors on a post
-#: (:mod:`scenewright.analysis.composition.mounts` makes its box this much taller).
-POST = 2.2
-#: What the description of such a thing says: the mesh draws the post under it.
-POSTED = "on a post"
 
 
 def on_post(m: Model, build) -> None:
