@@ -1,4 +1,4 @@
-from scenewright.analysis.composition.hosts import LONGEST, lengthen
+from scenewright.analysis.composition.hosts import HAND, LONGEST, TOP_SHARE, fit_unsized, lengthen
 from scenewright.analysis.parser import ParsedObject, ParsedRelation, ParsedScene
 
 
@@ -57,3 +57,29 @@ def test_a_boulder_grows_as_a_whole_to_hold_three_goats_and_a_pebble_keeps_its_s
     assert abs(grown.size[0] / grown.size[1] - 1.2) < 1e-3 and grown.size[2] > 0.8  # the same boulder, bigger
     crow = obj("bird_1", "bird", (0.3, 0.3, 0.3))
     assert lengthen(scene([rock, crow], [on("bird_1", "rock_1")]))[0].size == rock.size
+
+
+def unsized(oid, name):
+    """A guessed thing nobody sized: the generic family's middling crate."""
+    return ParsedObject(id=oid, category="thing", name=name, description=name, size=(0.6, 0.6, 0.6), group=0, guessed=True)
+
+
+def test_a_thing_nobody_sized_fits_a_hand_or_its_host_s_top_and_never_grows():
+    keeper = obj("figure_1", "figure", (0.5, 0.3, 1.75))
+    out = {o.id: o for o in fit_unsized(scene([keeper, unsized("whistle_1", "tin whistle")], [on("whistle_1", "figure_1")]))}
+    assert max(out["whistle_1"].size) == HAND and out["figure_1"].size == keeper.size
+    shelf = obj("nightstand_1", "nightstand", (0.5, 0.4, 0.6))
+    out = {o.id: o for o in fit_unsized(scene([shelf, unsized("gizmo_1", "gizmo")], [on("gizmo_1", "nightstand_1")]))}
+    assert max(out["gizmo_1"].size) == TOP_SHARE * 0.4
+    dais = obj("stage_1", "stage", (6.0, 4.0, 1.0))
+    big = unsized("gizmo_2", "gizmo")
+    assert fit_unsized(scene([dais, big], [on("gizmo_2", "stage_1")]))[1].size == big.size  # small enough already
+    sized = ParsedObject(id="lute_1", category="guitar", name="lute", description="lute", size=(0.4, 0.1, 0.9), group=0)
+    assert fit_unsized(scene([keeper, sized], [on("lute_1", "figure_1")]))[1].size == sized.size  # a known size stays
+
+
+def test_a_thing_nobody_knows_on_a_seat_a_rock_or_another_unknown_keeps_its_size():
+    """There it is as likely someone the reader did not know ("two riggers on a boulder")."""
+    stranger = unsized("oddling_1", "oddling")
+    for host in (obj("bench_1", "bench", (1.6, 0.6, 0.85)), obj("rock_1", "rock", (1.2, 1.0, 0.8)), unsized("lift_1", "lift")):
+        assert fit_unsized(scene([host, stranger], [on("oddling_1", host.id)]))[1].size == stranger.size, host.id

@@ -25,6 +25,7 @@ from scenewright.procedural.builder import Model
 from scenewright.procedural.material import described_surfaces, find_colour, find_material
 from scenewright.backends.procedural_meshes import ProceduralMeshes
 from scenewright.procedural.meshes import build_glb, build_model, choose_shape, keyword_shape
+from scenewright.core.catalogue import POST, POSTED
 from scenewright.procedural.style import ROLES, resolve_style
 from scenewright.procedural.textures import ground_texture
 from scenewright.scene import STYLES, Vec3
@@ -368,6 +369,12 @@ VARIANTS = [
     ("panel", "windsock", "canvas_alt"), ("structure", "windsock", "canvas_alt"), ("tower", "satellite dish", "plastic"),
     ("structure", "radar dish", "plastic"), ("tool", "bicycle wheel", "metal"),
     ("tool", "shoe last", "wood"), ("tool", "potter's wheel", "plastic"),
+    ("vehicle", "diesel train", "screen"), ("vehicle", "electric train", "canvas_alt"), ("vehicle", "longship", "wood"),
+    ("vehicle", "narrowboat", "canvas_alt"), ("bus", "tram", "canvas_alt"), ("structure", "stone platform", "yellow_paint"),
+    ("structure", "wooden platform", "dark_wood"), ("vehicle", "snowmobile", "leather"), ("vehicle", "snowcat", "screen"),
+    ("boat", "rowing boat", "dark_wood"), ("boat", "viking longship", "canvas"), ("vehicle", "jet plane", "plastic"),
+    ("vehicle", "twin-propeller airplane", "plastic"), ("vehicle", "flying saucer", "dark_metal"),
+    ("bookshelf", "shelf bookshelf", "ceramic"), ("cart", "luggage cart", "rubber"), ("vehicle", "baggage trolley", "rubber"),
 ]
 
 
@@ -384,6 +391,34 @@ def test_the_object_s_own_word_picks_the_variant_before_its_category_s():
     forklift = build_model("truck", (2.0, 3.5, 2.5), "realistic", 1, name="forklift tractor")
     tractor = build_model("truck", (2.0, 3.5, 2.5), "realistic", 1, name="tractor")
     assert "yellow_paint" in forklift.geometry and "yellow_paint" not in tractor.geometry
+
+
+def _vehicle(name: str, size=(3.0, 14.0, 4.0)) -> Model:
+    model = Model(size, resolve_style("realistic"), np.random.default_rng(0), name=f"{name} vehicle")
+    SHAPES["vehicle"](model)
+    return model
+
+
+def test_a_train_s_traction_words_pick_steam_or_a_unit_of_as_many_carriages_as_said():
+    """Steam (or an old or toy train) is the locomotive with its boiler's brass dome; diesel,
+    electric or a plain train is a unit of carriages, one stripe a side each, with a pantograph
+    only when electric."""
+    for steam in ("steam train", "old locomotive", "toy train", "locomotive"):
+        assert "brass" in _vehicle(steam).parts and "screen" not in _vehicle(steam).parts, steam
+    for name, carriages in (("two-carriage diesel train", 2), ("three car electric train", 3), ("train", 2), ("railcar", 1)):
+        model = _vehicle(name)
+        assert "brass" not in model.parts and len(model.parts["canvas_alt"]) == 2 * carriages, name
+    top = {name: max(p.vertices[:, 2].max() for p in _vehicle(name).parts["dark_metal"]) for name in ("diesel train", "electric train")}
+    assert top["electric train"] > top["diesel train"]  # the pantograph stands over the exhaust stacks
+
+
+def test_a_wall_thing_on_a_post_has_its_face_up_top_and_fills_its_box():
+    """A clock the composition stood on a post outdoors: the post from the ground, the dial above it."""
+    size = (0.35, 0.12, 0.35 + POST)
+    glb = build_glb("clock", size, "realistic", 1, description=f"station clock {POSTED}", name="clock wall clock")
+    assert_fills(glb, size)
+    parts = scene_frame(load(glb))
+    assert parts["ceramic"].bounds[0][2] > POST - 0.01 and parts["dark_metal"].bounds[0][2] < 0.01
 
 
 def test_a_balloon_is_widest_high_up_over_a_small_basket():

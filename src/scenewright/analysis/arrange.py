@@ -27,7 +27,7 @@ from collections import defaultdict
 from dataclasses import dataclass, replace
 
 from scenewright.analysis.composition import (
-    anchors, edges, formations, groups, hosts, outdoor, packing, posture, relational, roles,
+    anchors, edges, formations, groups, hosts, mounts, outdoor, packing, posture, relational, roles,
 )
 from scenewright.analysis.composition.footprint import bbox
 from scenewright.analysis.composition.lines import unline
@@ -57,7 +57,10 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
     """The designed first layout of ``parsed``."""
     if not parsed.objects:
         return Composition([], list(parsed.relations))
+    parsed = mounts.on_posts(parsed)  # outdoors a clock made for a wall stands on a post
+    parsed = mounts.over_holders(parsed)  # onions hang over the bear, not over the spoon it holds
     parsed = replace(parsed, objects=posture.pose(parsed))  # people sit and lie as the text says
+    parsed = replace(parsed, objects=hosts.fit_unsized(parsed))  # a baton nobody sized fits a hand
     parsed = replace(parsed, objects=hosts.lengthen(parsed))  # a cabinet long enough for two aquariums
     relations = share_supports(parsed) + formations.stack_relations(parsed.objects)
     layout = Layout(parsed.objects, relations + groups.facing_focal(parsed.objects, relations))

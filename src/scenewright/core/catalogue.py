@@ -37,6 +37,11 @@ SHAPE_NAMES = (
     "animal", "bird", "figure", "machine", "tank", "structure", "panel", "container", "tool", "vehicle",
 )  # fmt: skip
 RESTS = ("ground", "surface", "hanging")
+#: m from the ground to the foot of a thing made for a wall that stands outdoors on a post
+#: (:mod:`scenewright.analysis.composition.mounts` makes its box this much taller)...
+POST = 2.2
+#: ... and what its description then says: the procedural mesh draws the post under it.
+POSTED = "on a post"
 
 _WORD = re.compile(r"[^\W_]+(?:['’][^\W\d_]+)?")  # letters of any script: "café" is one word
 #: Plurals that the suffix rules below would get wrong.

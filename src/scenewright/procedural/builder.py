@@ -111,9 +111,10 @@ class Model:
     def first_named(self, variants):
         """The build of the variant whose word comes first in the name, or ``None``: a name is
         the object's own words, then its category's ("forklift tractor" is a forklift, "ice
-        chest cooler" a cooler)."""
+        chest cooler" a cooler). A word hyphened to the one before it describes ("a
+        two-carriage train" is a train, not a carriage)."""
         found = [(match.start(), k) for k, (words, _) in enumerate(variants) for w in words
-                 if (match := re.search(rf"\b{re.escape(w)}(?:e?s)?\b", self.name))]
+                 if (match := re.search(rf"(?<!-)\b{re.escape(w)}(?:e?s)?\b", self.name))]
         return variants[min(found)[1]][1] if found else None
 
     def lathe(self, role: str, profile, centre=(0.0, 0.0, 0.0), scale=(1.0, 1.0), fraction: float = 1.0) -> None:

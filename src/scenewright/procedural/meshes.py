@@ -18,12 +18,13 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from scenewright.core.catalogue import load_catalogue, lookup
+from scenewright.core.catalogue import POST, POSTED, load_catalogue, lookup
 from scenewright.errors import InputError
 from scenewright.procedural.builder import Model
 from scenewright.procedural.material import described_surfaces
 from scenewright.procedural.shapes import SHAPES
 from scenewright.procedural.shapes.families import FAMILY_WORDS
+from scenewright.procedural.shapes.frames import on_post
 from scenewright.procedural.style import resolve_style
 
 if TYPE_CHECKING:
@@ -110,7 +111,10 @@ def _drawn(shape: str, size, style: str, seed: int, description: str, name: str)
         raise InputError(f"unknown shape {shape!r}; shapes are: {', '.join(sorted(SHAPES))}")
     resolved = resolve_style(style)
     model = Model(size, resolved, np.random.default_rng(seed), name=name, description=description)
-    SHAPES[shape](model)
+    if POSTED in description.lower() and float(size[2]) > POST:  # a wall thing standing outdoors
+        on_post(model, SHAPES[shape])
+    else:
+        SHAPES[shape](model)
     return model, described_surfaces(f"{name} {description}", model.main, model.parts.keys(), resolved.base)
 
 

@@ -10,6 +10,13 @@ not one piece of furniture's: it is lengthened the same way, as wide as what the
 it. A rock comes in any size too: "three goats have climbed onto a boulder" wants one whose top
 holds three goats, so it grows in all three directions until its top does. Other hosts keep
 their size, and what does not fit is the solver's to report.
+
+The other way round, a thing nobody sized (a guessed ``thing``: "a baton", "a gouge", "a pocket
+watch") has the size of a middling crate, which is right on the ground and wrong in a hand: one
+a person or an animal holds is hand-sized (:data:`HAND`), one put on furniture made to hold
+things (a table, a shelf: the catalogue's ``support``) keeps to a share of its top
+(:data:`TOP_SHARE`), proportions kept (:func:`fit_unsized`). What stands on a seat, a rock, a lift
+or another unknown thing is left alone: a thing nobody knows there is as likely someone.
 """
 
 from __future__ import annotations
@@ -18,6 +25,8 @@ from collections import defaultdict
 from dataclasses import replace
 
 from scenewright.analysis.parser import ParsedObject, ParsedScene
+from scenewright.analysis.composition.mounts import LIVING
+from scenewright.analysis.parser.vocabulary import GENERIC
 from scenewright.core.catalogue import load_catalogue
 
 #: Procedural shapes that are drawn well at any width.
@@ -30,6 +39,10 @@ LONGEST = 4.0
 GROWN = frozenset({"rock"})
 #: Top area a grown host gives its load, as a multiple of the load's own footprints.
 ROOM_ON_TOP = 1.5
+#: m, the longest side of a thing nobody sized that a person or an animal has in hand.
+HAND = 0.3
+#: Share of its host's smaller top side the longest side of a thing nobody sized keeps to.
+TOP_SHARE = 0.5
 
 
 def lengthen(parsed: ParsedScene) -> list[ParsedObject]:
@@ -55,6 +68,26 @@ def lengthen(parsed: ParsedScene) -> list[ParsedObject]:
             need = ROOM_ON_TOP * sum(s.size[0] * s.size[1] for s in on)
             factor = min((need / (o.size[0] * o.size[1])) ** 0.5, LONGEST / max(o.size[:2]))
             if factor > 1.0:
+                o = replace(o, size=tuple(round(v * factor, 4) for v in o.size))
+        out.append(o)
+    return out
+
+
+def fit_unsized(parsed: ParsedScene) -> list[ParsedObject]:
+    """The parse's objects, each guessed ``thing`` held by the living or put ``on`` a support
+    scaled down, proportions kept, to a hand's size (:data:`HAND`) or to :data:`TOP_SHARE` of
+    its host's top; never up."""
+    catalogue = load_catalogue()
+    by_id = {o.id: o for o in parsed.objects}
+    hosts = {r.source: by_id[r.target] for r in parsed.relations if r.relation == "on" and r.target in by_id}
+    out = []
+    for o in parsed.objects:
+        host = hosts.get(o.id)
+        entry = catalogue.get(host.category) if host is not None else None
+        if o.guessed and o.category == GENERIC and entry is not None and (entry.shape in LIVING or entry.support):
+            longest = HAND if entry.shape in LIVING else TOP_SHARE * min(host.size[:2])
+            factor = longest / max(o.size)
+            if factor < 1.0:
                 o = replace(o, size=tuple(round(v * factor, 4) for v in o.size))
         out.append(o)
     return out

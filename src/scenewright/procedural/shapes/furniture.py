@@ -271,6 +271,24 @@ def _books_row(m: Model, x0: float, x1: float, y0: float, y1: float, z: float, h
         x += w + (m.vary(0.05, 0.15) if m.rng.random() < 0.08 else 0.0)
 
 
+def _goods_row(m: Model, x0: float, x1: float, y0: float, y1: float, z: float, height: float) -> None:
+    """Odds and ends side by side with gaps between: boxes, jars and tins of different
+    heights, what a shelf that is no bookshelf holds."""
+    x = x0 + m.vary(0.0, 0.1)
+    depth = y1 - y0
+    while x < x1 - 0.06:
+        w = min(m.vary(0.06, 0.18), x1 - x)
+        h = height * m.vary(0.35, 0.8)
+        kind = int(m.rng.integers(3))
+        if kind == 0:
+            m.box("paper", (x, y0 + 0.1 * depth, z), (x + w, y1 - 0.05 * depth, z + h), rounded=0.0)
+        else:
+            r = min(0.5 * w, 0.4 * depth)
+            m.cylinder("ceramic" if kind == 1 else "metal", (x + r, (y0 + y1) / 2, z), (x + r, (y0 + y1) / 2, z + h), r, fraction=0.5)
+            w = 2 * r
+        x += w + m.vary(0.02, 0.12)
+
+
 def _rack_frame(m: Model, role: str) -> tuple[float, float]:
     """Two end frames (a post at each corner, rails joining them at the foot and the top):
     an open rack's ends. Returns the half width inside the posts and the posts' radius."""
@@ -369,7 +387,7 @@ _HUNG = ("weapon", "spear", "sword", "lance", "pike", "halberd", "rifle", "muske
 
 
 def bookshelf(m: Model) -> None:
-    """Shelves of books; a rack is an open frame instead: a wine rack's cubbies of bottles, a
+    """Shelves of books (a shelf that is no bookshelf, of odds and ends); a rack is an open frame instead: a wine rack's cubbies of bottles, a
     dumbbell rack's rails, a rack of tongs or weapons hanging from pegs, else slatted levels."""
     rack = m.first_named(((("wine rack", "bottle rack", "wine shelf"), _bottle_rack),
                           (("dumbbell", "weight", "kettlebell"), _weights_rack),
@@ -377,6 +395,10 @@ def bookshelf(m: Model) -> None:
     if rack is not None:
         rack(m)
         return
+    # Books when it is a bookshelf or the text says so; a shelf of anything else holds odds and ends.
+    row = m.first_named(((("shelf", "shelves", "shelving", "shelf unit"), _goods_row),
+                         (("bookshelf", "bookshelves", "bookcase", "book shelf", "book case"), _books_row)))
+    row = _books_row if row is None or m.has("book", "books", "library") else row
     side = m.thick(0.025, 0.1 * m.sx)
     m.box("wood", (-m.sx / 2, -m.sy / 2, 0), (-m.sx / 2 + side, m.sy / 2, m.sz))
     m.box("wood", (m.sx / 2 - side, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, m.sz))
@@ -387,8 +409,7 @@ def bookshelf(m: Model) -> None:
         z = i * pitch
         m.box("wood", (-m.sx / 2 + side, -m.sy / 2, z), (m.sx / 2 - side, m.sy / 2 - 0.015, z + side))
         if i < shelves:
-            _books_row(m, -m.sx / 2 + side, m.sx / 2 - side, -m.sy / 2 + 0.03, m.sy / 2 - 0.02, z + side,
-                       pitch - side - 0.02)
+            row(m, -m.sx / 2 + side, m.sx / 2 - side, -m.sy / 2 + 0.03, m.sy / 2 - 0.02, z + side, pitch - side - 0.02)
 
 
 def _doors(m: Model, x0, x1, z0, z1, count: int, y: float) -> None:

@@ -1,7 +1,7 @@
 """The fallback shape: soft things, instruments, pumpkins, balls, ramps, goals, chimneys,
 rails, orreries and party balloons (things with no family),
-the family a name calls (animals, craft, figures...), and a plain plinthed block for a name
-with no hint at all."""
+the family a name calls (animals, craft, figures...), and a lump under a dust sheet for a
+name with no hint at all."""
 
 from __future__ import annotations
 
@@ -146,7 +146,7 @@ def _balloon(m: Model) -> None:
 def generic(m: Model) -> None:
     """Soft things, instruments, pumpkins, balls, ramps, goals, chimneys, rails, orreries and
     party balloons by name; else the family the name calls (a horse the catalogue files here is an animal);
-    only a name with no hint at all gets the block."""
+    only a name with no hint at all gets the draped lump."""
     variants = (
         (("guitar", "violin", "cello"), _guitar),
         (("cushion", "pillow", "pouf"), _cushion),
@@ -169,12 +169,18 @@ def generic(m: Model) -> None:
     if family is not None:
         FAMILIES[family](m)
         return
-    m.main = "plastic"
-    base = 0.08 * m.sz
-    m.box("dark_plastic", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, base))
-    m.box("plastic", (-0.46 * m.sx, -0.46 * m.sy, base), (0.46 * m.sx, 0.46 * m.sy, m.sz),
-          rounded=max(0.06 * min(m.sx, m.sy, m.sz), 0.01))
-    m.box("accent", (-0.3 * m.sx, -0.47 * m.sy, 0.6 * m.sz), (0.3 * m.sx, -0.46 * m.sy, 0.7 * m.sz), rounded=0.0)
+    _draped(m)
+
+
+def _draped(m: Model) -> None:
+    """A thing nobody can draw, under a dust sheet: a flat top, rounded shoulders, sides
+    falling straight and flaring into a hem on the ground. It says "something of this size
+    stands here" without claiming to be a crate or a cooler, which a plain block with a
+    stripe was taken for."""
+    m.main = "fabric"
+    H = m.sz
+    profile = [(0.0, H), (0.36, 0.985 * H), (0.43, 0.93 * H), (0.445, 0.8 * H), (0.44, 0.25 * H), (0.47, 0.06 * H), (0.5, 0.0)]
+    m.lathe("fabric", profile, scale=(m.sx, m.sy))
 
 
 SHAPES = {"generic": generic}

@@ -1,5 +1,5 @@
 """Large open structures, upright panels and containers the catalogue does not know one by
-one: a windsock, a satellite or radar dish, a ferris wheel, crane, carousel, stage, scaffold, grandstand, siege engine or skate
+one: a windsock, a satellite or radar dish, a ferris wheel, crane, carousel, platform, stage, scaffold, grandstand, siege engine or skate
 ramp; a screen, banner or notice board; a box, trunk, suitcase, backpack, sack, basket, cool
 box, cage, pen or hatbox. Fronts face −Y."""
 
@@ -204,6 +204,46 @@ def _pad(m: Model) -> None:
     m.box("yellow_paint", (-band / 2, band / 2, H - paint), (-band / 2 + band, 0.6 * r, H), rounded=0.0)
 
 
+def _platform(m: Model) -> None:
+    """A raised platform, flat on top at its full height so what stands on it stands on the
+    deck: of timber (said so, or taller than a step or two and not said to be masonry) a plank deck on posts and joists
+    with steps up at one end; else a solid masonry platform under an overhanging coping, a
+    painted line along each long edge and a ramp down at one end."""
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    run = min(0.3 * m.sx, max(1.5 * H, 0.3))
+    deck_end = W - run
+    masonry = m.has("stone", "brick", "concrete", "masonry", "marble")
+    if m.has("wood", "wooden", "timber", "plank", "boardwalk") or (H > 1.2 and not masonry):
+        m.main = "wood"
+        t = min(0.1, 0.3 * H)
+        boards = max(3, int(m.sy / 0.25))
+        width = m.sy / boards
+        for k in range(boards):  # boards with a hair between them: no shared sides
+            y0 = -D + k * width
+            m.box("wood", (-W, y0 + 0.004, H - t), (deck_end, y0 + width - 0.004, H), rounded=0.0)
+        post = min(0.08, 0.1 * min(m.sx, m.sy))
+        for x in np.linspace(-W + post, deck_end - post, max(2, int((deck_end + W) / 1.5) + 1)):
+            for y in (-D + post, D - post):
+                m.box("dark_wood", (x - post, y - post, 0), (x + post, y + post, H - t - 0.5 * post), rounded=0.0)  # into the joist
+        for y in (-D + post, D - post):  # joists under the boards, between the posts' faces
+            m.box("dark_wood", (-W + 0.5 * post, y - 0.7 * post, H - t - 2 * post), (deck_end - 0.5 * post, y + 0.7 * post, H - t),
+                  rounded=0.0)
+        steps = max(2, int(H / 0.2))
+        for k in range(steps):  # treads side by side, each as high as its step
+            x0 = deck_end + k * run / steps
+            m.box("wood", (x0, -0.4 * D, 0), (x0 + run / steps - 0.004, 0.4 * D, H * (steps - k) / (steps + 1)), rounded=0.0)
+        return
+    m.main = "concrete"
+    body = "brick" if m.has("brick") else "stone" if m.has("stone", "masonry") else "concrete"
+    cap = min(0.1, 0.25 * H)
+    m.box(body, (-W, -D + 0.04, 0), (deck_end, D - 0.04, H - cap), rounded=0.0)
+    m.box("stone", (-W, -D, H - cap), (deck_end, D, H - 0.002), rounded=0.0)
+    line = min(0.1, 0.05 * m.sy)
+    for y in (-D + 0.08, D - 0.08 - line):  # either edge may face the track
+        m.box("yellow_paint", (-W + 0.01, y, H - 0.5 * cap), (deck_end - 0.01, y + line, H), rounded=0.0)
+    m.extrude(body, [(deck_end, 0.0), (W, 0.0), (deck_end, H - cap)], "y", -D + 0.04, D - 0.04)
+
+
 def _grandstand(m: Model) -> None:
     """A grandstand: rows of seats on tiers rising to the back, under a roof on posts.
     Each tier is its own slab, front to back (nested blocks would share their sides)."""
@@ -279,7 +319,7 @@ def _ramp(m: Model) -> None:
 
 def structure(m: Model) -> None:
     """A large open structure; its name picks it: ferris wheel, windmill, crane, carousel,
-    stage, scaffold, launch pad, grandstand, siege engine, skate ramp; else a truss gantry."""
+    platform, stage, scaffold, launch pad, grandstand, siege engine, skate ramp; else a truss gantry."""
     variants = (
         (("windsock", "wind sock", "wind cone"), _windsock),
         (("satellite dish", "radar dish", "radar", "dish", "radio telescope"), _dish),
@@ -287,7 +327,8 @@ def structure(m: Model) -> None:
         (("windmill", "wind turbine"), _windmill),
         (("crane", "tower crane", "gantry crane"), _crane),
         (("carousel", "merry-go-round", "merry go round", "roundabout"), _carousel),
-        (("stage", "bandstand", "podium", "platform"), _stage),
+        (("platform", "dais"), _platform),
+        (("stage", "bandstand", "podium"), _stage),
         (("scaffold", "scaffolding"), _scaffold),
         (("launch pad", "landing pad", "helipad", "pad"), _pad),
         (("grandstand", "bleachers", "stands", "tribune", "spectator stand", "viewing stand"), _grandstand),

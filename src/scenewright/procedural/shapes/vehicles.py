@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 from scenewright.procedural import parts as P
 from scenewright.procedural.builder import Model
+from scenewright.procedural.shapes.frames import ring
 
 
 def _wheel(m: Model, x: float, y: float, r: float, width: float, outward: int) -> None:
@@ -76,6 +79,9 @@ def truck(m: Model) -> None:
 
 
 def bus(m: Model) -> None:
+    if m.named("tram", "streetcar"):  # the catalogue files trams with buses; they run on rails
+        _railcars(m)
+        return
     m.main = "paint"
     wr = min(0.16 * m.sz, 0.05 * m.sy)
     L = m.sy / 2
@@ -142,34 +148,94 @@ def bicycle(m: Model) -> None:
     m.cylinder("dark_metal", crank + (-0.04, 0, 0), crank + (0.04, 0, 0), 0.08, fraction=0.6)
 
 
+#: Words of boats that carry a sail, and of those whose sail is square-rigged.
+_SAILS = ("sail", "sailing", "yacht", "longship", "viking", "galleon", "schooner", "clipper", "dhow", "junk", "frigate",
+          "pirate", "sloop", "ketch", "caravel")
+_SQUARE_RIG = ("longship", "viking", "galleon", "junk", "square", "caravel")
+#: Words of boats open to the sky, rowed, paddled or poled: a gunwale and thwarts, no cabin.
+_OPEN = ("rowing", "rowboat", "row boat", "canoe", "kayak", "dinghy", "punt", "gondola", "longship", "viking", "raft",
+         "skiff", "coracle", "lifeboat", "fishing boat", "whaler")
+
+
 def boat(m: Model) -> None:
+    """A hull tapering to a bow at the front; by its words an open boat (gunwale and thwarts:
+    rowing boat, canoe, longship), a sailing boat (mast and sail, square-rigged for a longship
+    or a galleon) or, else, a motor boat with a cabin."""
     m.main = "paint"
-    sail = m.has("sail", "yacht") or m.sz > 1.5 * m.sx
-    hull_h = (0.3 if sail else 0.55) * m.sz
+    open_ = m.has(*_OPEN)
+    sail = m.has(*_SAILS) or m.sz > 1.5 * m.sx
+    hull_h = (0.3 if sail or open_ else 0.55) * m.sz
+    top = 0.7 * hull_h if open_ else hull_h  # an open boat's floor lies below its gunwale
     L = m.sy / 2
     deck = [(0, -L), (0.3 * m.sx, -0.55 * L), (0.5 * m.sx, -0.05 * L), (0.47 * m.sx, L), (-0.47 * m.sx, L),
             (-0.5 * m.sx, -0.05 * L), (-0.3 * m.sx, -0.55 * L)]
-    hull = P.prism(deck, hull_h)
+    hull = P.prism(deck, top)
     bottom = hull.vertices[:, 2] < 1e-9
     hull.vertices[bottom, 0] *= 0.3
     hull.vertices[bottom, 1] = hull.vertices[bottom, 1] * 0.85 + 0.05 * L
     m.add("paint", P.flatten(hull))
     planks = P.prism([(x * 0.94, y * 0.96) for x, y in deck], 0.02 * m.sz + 0.01)
-    m.add("wood", P.flatten(P.transform(planks, P.affine(np.eye(3), (0, 0, hull_h - 0.01)))))
-    m.box("canvas_alt", (-0.5 * m.sx - 0.005, -0.05 * L, 0.92 * hull_h), (0.5 * m.sx + 0.005, L, 0.98 * hull_h), rounded=0.0)
-    if sail:
-        m.post("wood", 0, -0.1 * L, hull_h, m.sz, 0.02 * m.sx + 0.01, fraction=0.4)
-        m.extrude("canvas_alt", [(-0.08 * L, hull_h + 0.1 * m.sz), (0.8 * L, hull_h + 0.1 * m.sz), (-0.08 * L, 0.97 * m.sz)],
-                  "x", -0.005, 0.005)
+    m.add("wood", P.flatten(P.transform(planks, P.affine(np.eye(3), (0, 0, top - 0.01)))))
+    if open_:
+        rail = hull_h - top
+        ring(m, "dark_wood", [(x, y, top + rail / 2) for x, y in deck], rail)
+        for k in range(3):  # thwarts across, a little under the gunwale
+            y = -0.3 * L + k * 0.45 * L
+            half = 0.47 * m.sx * min(1.0, 0.6 + 0.4 * (y + 0.55 * L) / (0.5 * L))
+            m.box("wood", (-half + rail / 2, y - 0.05 * L, top + 0.02 * m.sz), (half - rail / 2, y + 0.05 * L, top + 0.5 * rail),
+                  rounded=0.0)
     else:
+        m.box("canvas_alt", (-0.5 * m.sx - 0.005, -0.05 * L, 0.92 * hull_h), (0.5 * m.sx + 0.005, L, 0.98 * hull_h), rounded=0.0)
+    if sail:
+        m.post("wood", 0, -0.1 * L, top, m.sz, 0.02 * m.sx + 0.01, fraction=0.4)
+        if m.has(*_SQUARE_RIG):
+            m.cylinder("wood", (-0.6 * m.sx, -0.1 * L, 0.93 * m.sz), (0.6 * m.sx, -0.1 * L, 0.93 * m.sz), 0.015 * m.sx + 0.005,
+                       fraction=0.4)
+            m.box("canvas", (-0.55 * m.sx, -0.1 * L - 0.02 * m.sx - 0.012, hull_h + 0.15 * m.sz),
+                  (0.55 * m.sx, -0.1 * L - 0.02 * m.sx - 0.007, 0.92 * m.sz), rounded=0.0)
+        else:
+            m.extrude("canvas_alt", [(-0.08 * L, hull_h + 0.1 * m.sz), (0.8 * L, hull_h + 0.1 * m.sz), (-0.08 * L, 0.97 * m.sz)],
+                      "x", -0.005, 0.005)
+    elif not open_:
         m.box("wall", (-0.32 * m.sx, -0.1 * L, hull_h), (0.32 * m.sx, 0.6 * L, 0.85 * m.sz))
         m.box("glass", (-0.33 * m.sx, -0.11 * L, 0.65 * m.sz), (0.33 * m.sx, 0.55 * L, 0.78 * m.sz), rounded=0.0)
         m.box("paint", (-0.35 * m.sx, -0.15 * L, 0.85 * m.sz), (0.35 * m.sx, 0.65 * L, m.sz))
 
 
+#: Words of carts pushed by hand over smooth floors (stations, airports, shops): a flat trolley.
+_TROLLEY = ("luggage", "baggage", "platform trolley", "trolley", "shopping", "hand truck", "dolly", "flatbed cart",
+            "tea trolley", "serving cart", "service cart", "laundry")
+
+
+def _trolley(m: Model) -> None:
+    """A trolley: a flat deck at the cart's rest height with a low rail round it, on four
+    castors on legs, a push handle rising at the back."""
+    m.main = "metal"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    wr = min(0.1 * H, 0.12 * L, 0.3 * W)
+    deck = 0.51 * H - 0.01  # its top at the cart's rest height (data/catalogue.json), like a cart's bed
+    m.box("wood", (-W + 0.02 * m.sx, -L, deck), (W - 0.02 * m.sx, 0.92 * L, 0.55 * H))
+    for x in (-0.8 * W, 0.8 * W):
+        for y in (-0.8 * L, 0.75 * L):
+            m.cylinder("rubber", (x - 0.3 * wr, y, wr), (x + 0.3 * wr, y, wr), wr, fraction=0.5)
+            m.post("dark_metal", x, y, wr, deck, 0.25 * wr, fraction=0.4)
+    rail = deck + 0.12 * H
+    corners = [(-0.98 * W, -0.98 * L, rail), (0.98 * W, -0.98 * L, rail), (0.98 * W, 0.9 * L, rail), (-0.98 * W, 0.9 * L, rail)]
+    ring(m, "metal", corners, 0.02 * H + 0.005)
+    for x in (-0.9 * W, 0.9 * W):
+        m.beam("metal", (x, 0.93 * L, deck), (x, L - 0.01 * L, H - 0.02 * H), 0.025 * H + 0.005)
+    m.cylinder("dark_plastic", (-0.95 * W, L - 0.01 * L, H - 0.02 * H), (0.95 * W, L - 0.01 * L, H - 0.02 * H), 0.02 * H + 0.005,
+               fraction=0.4)
+
+
 def cart(m: Model) -> None:
+    """A wooden cart on two spoked wheels with shafts; a mine cart, or a hand trolley (luggage,
+    baggage, shopping...) by its words."""
     if m.named("minecart", "mine cart", "mine car", "ore cart", "ore car"):
         _minecart(m)
+        return
+    if m.has(*_TROLLEY):
+        _trolley(m)
         return
     wr = 0.35 * m.sz
     bed_z = 0.5 * m.sz
@@ -231,8 +297,73 @@ def treadmill(m: Model) -> None:
     m.box("screen", (-0.25 * m.sx, -0.35 * m.sy, 0.82 * m.sz), (0.25 * m.sx, -0.34 * m.sy, 0.95 * m.sz), rounded=0.0)
 
 
+#: Words of aircraft driven by propellers rather than jets.
+_PROPELLER = ("propeller", "prop", "turboprop", "biplane", "seaplane", "floatplane", "crop duster", "twin-propeller")
+
+
+def _plane(m: Model) -> None:
+    """A fixed-wing aeroplane, nose toward −Y: a round fuselage with a cockpit and a window
+    line, low tapered wings across the box's width, a tailplane and a fin, engines under the
+    wings (propellers when the words say so, else jets) and a tricycle landing gear."""
+    m.main = "plastic"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    r = min(0.2 * H, 0.1 * m.sy, 0.25 * W)
+    gear = 0.35 * H - r
+    zc = gear + r
+    m.cylinder("plastic", (0, -0.8 * L, zc), (0, 0.6 * L, zc), r, fraction=0.8)
+    m.ball("plastic", (0, -0.8 * L, zc), (r, 0.18 * L, r), fraction=0.8)
+    m.cylinder("plastic", (0, 0.6 * L, zc), (0, 0.98 * L, zc + 0.6 * r), r, 0.25 * r, fraction=0.8)
+    m.box("screen", (-0.55 * r, -0.92 * L, zc + 0.25 * r), (0.55 * r, -0.86 * L, zc + 0.6 * r), rounded=0.0)
+    for s in (-1, 1):  # the window line, a hair proud of the fuselage's side
+        x0, x1 = sorted((s * 0.96 * r, s * 1.01 * r))
+        m.box("screen", (x0, -0.7 * L, zc + 0.05 * r), (x1, 0.55 * L, zc + 0.25 * r), rounded=0.0)
+    zw = zc - 0.5 * r
+    m.extrude("paint", [(-W, -0.02 * L), (0.0, -0.25 * L), (W, -0.02 * L), (W, 0.06 * L), (0.0, 0.08 * L), (-W, 0.06 * L)],
+              "z", zw - 0.04 * r - 0.005, zw + 0.04 * r + 0.005)
+    zt = zc + 0.55 * r
+    span = 0.32 * m.sx
+    m.extrude("paint", [(-span, 0.9 * L), (0.0, 0.78 * L), (span, 0.9 * L), (span, 0.97 * L), (-span, 0.97 * L)],
+              "z", zt - 0.03 * r - 0.003, zt + 0.03 * r + 0.003)
+    m.extrude("paint", [(0.72 * L, zc + 0.5 * r), (L, zc + 0.7 * r), (L, H), (0.9 * L, H)], "x", -0.04 * r - 0.004, 0.04 * r + 0.004)
+    propeller = m.has(*_PROPELLER)
+    for s in (-1, 1):
+        x = s * 0.35 * m.sx
+        n = 0.45 * r
+        m.cylinder("metal", (x, -0.3 * L, zw - 0.4 * n), (x, 0.02 * L, zw - 0.4 * n), n, 0.7 * n, fraction=0.6)
+        if propeller:
+            m.cylinder("dark_metal", (x, -0.31 * L, zw - 0.4 * n), (x, -0.315 * L, zw - 0.4 * n), min(2.2 * n, zw + 0.4 * n - 0.02),
+                       fraction=0.8)
+        else:
+            m.cylinder("dark_metal", (x, -0.301 * L, zw - 0.4 * n), (x, -0.302 * L, zw - 0.4 * n), 0.85 * n, fraction=0.6)
+    wheel = 0.35 * gear + 0.01
+    for x, y in ((0.0, -0.7 * L), (-0.2 * m.sx, 0.0), (0.2 * m.sx, 0.0)):
+        m.post("dark_metal", x, y, wheel, zc - 0.5 * r if x == 0 else zw, 0.02 * H + 0.01, fraction=0.4)
+        m.cylinder("rubber", (x - 0.3 * wheel, y, wheel), (x + 0.3 * wheel, y, wheel), wheel, fraction=0.6)
+
+
+def _saucer(m: Model) -> None:
+    """A flying saucer: a metal disc thickest at the middle with a glass dome on top, a ring
+    of lights round the rim and three landing legs."""
+    m.main = "metal"
+    H = m.sz
+    leg = 0.15 * H
+    m.lathe("metal", [(0.0, leg), (0.25, leg + 0.05 * H), (0.5, 0.42 * H), (0.3, 0.6 * H), (0.0, 0.62 * H)], scale=(m.sx, m.sy))
+    m.lathe("glass", [(0.17, 0.58 * H), (0.14, 0.85 * H), (0.0, H)], scale=(m.sx, m.sy), fraction=0.8)
+    for k in range(10):
+        a = 2 * np.pi * k / 10
+        m.ball("light", (0.47 * m.sx * np.cos(a), 0.47 * m.sy * np.sin(a), 0.42 * H), (0.025 * m.sx,) * 3, fraction=0.4)
+    for k in range(3):
+        a = 2 * np.pi * k / 3 + np.pi / 2
+        foot = np.array([0.3 * m.sx * np.cos(a), 0.3 * m.sy * np.sin(a), 0.0])
+        m.beam("dark_metal", foot + (0, 0, 0.01 * H), (0.2 * m.sx * np.cos(a), 0.2 * m.sy * np.sin(a), leg + 0.05 * H), 0.02 * m.sx)
+        m.cylinder("dark_metal", foot, foot + (0, 0, 0.02 * H), 0.04 * m.sx, fraction=0.5)
+
+
 def craft(m: Model) -> None:
-    """A spaceship or drone: a hull, wings or rotor arms, glowing engines."""
+    """A spaceship or drone: a hull, wings or rotor arms, glowing engines; a saucer by name."""
+    if m.named("flying saucer", "saucer", "ufo", "flying disc"):
+        _saucer(m)
+        return
     m.main = "metal"
     if m.named("drone", "quadcopter"):
         m.box("dark_plastic", (-0.2 * m.sx, -0.2 * m.sy, 0.3 * m.sz), (0.2 * m.sx, 0.2 * m.sy, 0.7 * m.sz))
@@ -338,11 +469,9 @@ def _golf_cart(m: Model) -> None:
     m.box("canvas_alt", (-0.5 * W, L - 0.05 * m.sy, 0.3 * H), (0.5 * W, L, 0.7 * H))
 
 
-def _battle_tank(m: Model) -> None:
-    """A battle tank: tracks with road wheels, a hull with a sloped glacis, a turret and gun."""
-    m.main = "olive_paint"
-    W, L, H = m.sx / 2, m.sy / 2, m.sz
-    track_h = 0.4 * H
+def _tracks(m: Model, track_h: float) -> None:
+    """Two crawler tracks ``track_h`` high along the sides, road wheels on their outer faces."""
+    W, L = m.sx / 2, m.sy / 2
     for s in (-1, 1):
         x0, x1 = sorted((s * W, s * 0.65 * W))
         m.extrude("rubber", [(-L, 0.5 * track_h), (-L + 0.1 * m.sy, 0), (L - 0.08 * m.sy, 0), (L, 0.5 * track_h), (L - 0.04 * m.sy, track_h),
@@ -353,6 +482,51 @@ def _battle_tank(m: Model) -> None:
             y = -L + 0.15 * m.sy + k * step
             m.cylinder("dark_metal", (s * W * 1.001, y, 0.35 * track_h), (s * W * 1.02, y, 0.35 * track_h),
                        min(0.3 * track_h, 0.48 * step), fraction=0.4)
+
+
+def _tracked(m: Model) -> None:
+    """A tracked working vehicle (a snowcat, a crawler, a half-track): a glazed cab at the front
+    and a load box behind it on two crawler tracks."""
+    m.main = "paint"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    track_h = 0.3 * H
+    _tracks(m, track_h)
+    deck = 1.05 * track_h
+    m.box("dark_metal", (-0.66 * W, -0.95 * L, 0.5 * track_h), (0.66 * W, 0.95 * L, deck), rounded=0.0)
+    m.box("paint", (-0.9 * W, -L, deck), (0.9 * W, -0.1 * L, 0.6 * H))
+    m.box("screen", (-0.85 * W, -1.004 * L, 0.62 * H), (0.85 * W, -0.15 * L, 0.9 * H), rounded=0.0)
+    m.box("paint", (-0.9 * W, -L, 0.9 * H), (0.9 * W, -0.1 * L, H))
+    m.box("paint", (-0.9 * W, 0.0, deck), (0.9 * W, 0.98 * L, 0.75 * H))
+    m.box("light", (-0.6 * W, -1.01 * L, 0.45 * H), (-0.35 * W, -L + 0.01, 0.52 * H), rounded=0.0)
+    m.box("light", (0.35 * W, -1.01 * L, 0.45 * H), (0.6 * W, -L + 0.01, 0.52 * H), rounded=0.0)
+
+
+def _snowmobile(m: Model) -> None:
+    """A snowmobile: two skis at the front on struts, a track under the rear, a tapered hood
+    with a windscreen, a long seat and handlebars."""
+    m.main = "paint"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    for s in (-1, 1):
+        m.extrude("dark_metal", [(-L, 0.12 * H), (-0.95 * L, 0.02 * H), (-0.2 * L, 0.0), (-0.2 * L, 0.05 * H), (-0.9 * L, 0.07 * H)],
+                  "x", s * 0.8 * W - 0.06 * W, s * 0.8 * W + 0.06 * W)
+        m.beam("dark_metal", (s * 0.8 * W, -0.55 * L, 0.05 * H), (s * 0.4 * W, -0.45 * L, 0.35 * H), 0.04 * H)
+    m.extrude("rubber", [(0.0, 0.15 * H), (0.1 * L, 0.0), (0.95 * L, 0.0), (L, 0.15 * H), (0.95 * L, 0.3 * H), (0.05 * L, 0.3 * H)],
+              "x", -0.45 * W, 0.45 * W)
+    m.extrude("paint", [(-0.75 * L, 0.3 * H), (0.2 * L, 0.28 * H), (0.2 * L, 0.62 * H), (-0.3 * L, 0.62 * H), (-0.7 * L, 0.45 * H)],
+              "x", -0.55 * W, 0.55 * W)
+    m.box("leather", (-0.4 * W, 0.15 * L, 0.3 * H), (0.4 * W, 0.9 * L, 0.66 * H))  # above the hood's top
+    m.extrude("glass", [(-0.32 * L, 0.6 * H), (-0.26 * L, 0.6 * H), (-0.18 * L, 0.85 * H), (-0.24 * L, 0.85 * H)], "x", -0.4 * W, 0.4 * W)
+    m.cylinder("dark_metal", (-W, -0.12 * L, 0.8 * H), (W, -0.12 * L, 0.8 * H), 0.03 * H, fraction=0.4)
+    m.post("dark_metal", 0, -0.15 * L, 0.6 * H, 0.8 * H, 0.03 * H)
+    m.box("light", (-0.2 * W, -0.755 * L, 0.36 * H), (0.2 * W, -0.7 * L, 0.42 * H), rounded=0.0)
+
+
+def _battle_tank(m: Model) -> None:
+    """A battle tank: tracks with road wheels, a hull with a sloped glacis, a turret and gun."""
+    m.main = "olive_paint"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    track_h = 0.4 * H
+    _tracks(m, track_h)
     m.extrude("olive_paint", [(-L + 0.05 * m.sy, 0.35 * track_h), (L, 0.35 * track_h), (L, 0.6 * H), (-0.2 * L, 0.6 * H), (-L, 1.1 * track_h)],
               "x", -0.65 * W, 0.65 * W)
     m.box("olive_paint", (-W, -L + 0.1 * m.sy, track_h), (W, 0.98 * L, 1.1 * track_h), rounded=0.0)
@@ -360,6 +534,102 @@ def _battle_tank(m: Model) -> None:
     m.cylinder("olive_paint", (0, -0.2 * L, 0.74 * H), (0, -L, 0.76 * H), 0.05 * H, fraction=0.5)
     m.cylinder("dark_metal", (0, -L, 0.76 * H), (0, -L - 0.001, 0.76 * H), 0.04 * H, fraction=0.4)
     m.lathe("dark_metal", [(0.12 * W, 0.86 * H), (0.1 * W, H)], centre=(0.25 * W, 0.25 * L, 0), fraction=0.5)
+
+
+#: Words that make a train a steam train: its power, or an age or a likeness that calls the
+#: classic shape ("a toy train", "an old locomotive").
+_STEAM = ("steam", "puffing", "coal", "toy", "model", "miniature", "old", "vintage", "antique", "heritage", "victorian")
+#: Words of modern rail traction: the train is a unit of carriages with cabs.
+_MODERN = ("diesel", "electric", "commuter", "passenger", "express", "high-speed", "bullet", "metro", "subway",
+           "underground", "tram", "streetcar", "railcar", "railbus", "multiple unit", "light rail", "monorail")
+#: Words of electric traction: a pantograph on the roof.
+_ELECTRIC = ("electric", "tram", "streetcar", "metro", "high-speed", "bullet", "light rail")
+_CARRIAGES = re.compile(r"\b(one|two|three|four|five|six|\d)[- ](?:carriages?|cars?|coach(?:es)?)\b")
+_COUNT = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
+
+
+def _ccw(points) -> list:
+    """A (y, z) outline turned counter-clockwise, as :meth:`Model.extrude` wants it."""
+    pts = [tuple(map(float, p)) for p in points]
+    area = sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(pts, pts[1:] + pts[:1]))
+    return pts if area > 0 else pts[::-1]
+
+
+def _train(m: Model) -> None:
+    """A train by its traction: steam words (or a locomotive with no modern word) give the
+    steam locomotive; diesel, electric, commuter, tram... a unit of carriages with cabs."""
+    steam = m.has(*_STEAM) and not m.has(*_MODERN)
+    if steam or (not m.has(*_MODERN) and m.named("locomotive", "steam engine", "engine")):
+        _locomotive(m)
+    else:
+        _railcars(m)
+
+
+def _railcars(m: Model) -> None:
+    """A diesel or electric unit: as many carriages as the text says ("a two-carriage train"; a
+    train two, a railcar or tram one), each a long body on two bogies with a band of windows,
+    doors and a stripe, a sloped cab at each end of the unit, gangways between carriages, and a
+    pantograph (electric) or exhaust stacks (diesel) on the roof."""
+    m.main = "paint"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    said = _CARRIAGES.search(m.text)
+    n = (_COUNT.get(said.group(1)) or int(said.group(1))) if said else 2 if m.named("train") else 1
+    n = max(1, min(n, int(m.sy // (1.5 * m.sx)), 8))  # no carriage shorter than 1.5 times its width
+    gap = 0.015 * m.sy
+    car = (m.sy - (n - 1) * gap) / n
+    wr, floor, roof = min(0.09 * H, 0.06 * car), 0.27 * H, 0.9 * H
+    for i in range(n):
+        y0, y1 = -L + i * (car + gap), -L + i * (car + gap) + car
+        nose = min(0.1 * car, 0.25 * H)
+        lo = y0 + nose if i == 0 else y0
+        hi = y1 - nose if i == n - 1 else y1
+        outline = [(y0, floor), (y1, floor)]
+        outline += [(y1, 0.6 * H), (hi, roof)] if i == n - 1 else [(y1, roof)]
+        outline += [(lo, roof), (y0, 0.6 * H)] if i == 0 else [(y0, roof)]
+        m.extrude("paint", outline, "x", -W, W)
+        for end, top, sign in ((y0, lo, -1), (y1, hi, 1)):
+            if top != end:  # a cab: its windscreen a hair proud of the slope, headlights below
+                d = np.array([top - end, roof - 0.6 * H])
+                out = sign * np.array([d[1], -d[0]]) / np.hypot(*d)
+                foot = np.array([end, 0.6 * H])
+                pane = [foot + t * d + u * out for t, u in ((0.15, 0.004), (0.85, 0.004), (0.85, 0.012), (0.15, 0.012))]
+                m.extrude("screen", _ccw(pane), "x", -0.75 * W, 0.75 * W)
+                for s in (-1, 1):
+                    m.box("light", (s * 0.6 * W - 0.1 * W, end - 0.01, 0.38 * H), (s * 0.6 * W + 0.1 * W, end + 0.01, 0.44 * H),
+                          rounded=0.0)
+        windows = max(2, int((hi - lo) / (0.35 * H)))
+        pitch = (hi - lo - 0.2 * car) / windows
+        for k in range(windows):
+            w0 = lo + 0.1 * car + k * pitch
+            for s in (-1, 1):  # dark panes a hair proud of the side (clear glass would show the paint)
+                x0, x1 = sorted((s * (W + 0.008), s * (W - 0.01)))  # inner faces apart from the door's
+                m.box("screen", (x0, w0 + 0.08 * pitch, 0.55 * H), (x1, w0 + 0.92 * pitch, 0.8 * H), rounded=0.0)
+        for s in (-1, 1):
+            x0, x1 = sorted((s * (W + 0.004), s * (W - 0.015)))
+            m.box("canvas_alt", (x0, y0 + 0.01 * car, 0.42 * H), (x1, y1 - 0.01 * car, 0.47 * H), rounded=0.0)
+            x0, x1 = sorted((s * (W + 0.012), s * (W - 0.02)))
+            for t in (0.3, 0.7):
+                m.box("dark_plastic", (x0, y0 + t * car - 0.04 * car, floor + 0.02 * H), (x1, y0 + t * car + 0.04 * car, 0.82 * H),
+                      rounded=0.0)
+        for yb in (y0 + 0.2 * car, y1 - 0.2 * car):
+            m.box("dark_metal", (-0.75 * W, yb - 2.4 * wr, 0.6 * wr), (0.75 * W, yb + 2.4 * wr, 1.9 * wr), rounded=0.0)
+            for dy in (-1.2 * wr, 1.2 * wr):
+                for s in (-1, 1):
+                    _wheel(m, s * 0.85 * W, yb + dy, wr, 0.08 * m.sx, s)
+        m.box("dark_metal", (-0.8 * W, y0 + 0.04 * car, 1.8 * wr), (0.8 * W, y1 - 0.04 * car, floor + 0.01 * H), rounded=0.0)
+        m.box("metal", (-0.8 * W, lo + 0.02 * car, roof - 0.01 * H), (0.8 * W, hi - 0.02 * car, roof + 0.03 * H), rounded=0.0)
+        if i < n - 1:
+            m.box("rubber", (-0.55 * W, y1 - 0.01, floor + 0.05 * H), (0.55 * W, y1 + gap + 0.01, 0.85 * H), rounded=0.0)
+    top = roof + 0.03 * H
+    if m.has(*_ELECTRIC):
+        y = -L + 0.5 * car
+        for dy in (-0.12 * H, 0.12 * H):
+            m.beam("dark_metal", (0, y + dy, top), (0, y, 0.96 * H), 0.015 * H)
+        m.beam("dark_metal", (-0.5 * W, y, 0.97 * H), (0.5 * W, y, 0.97 * H), 0.02 * H, 0.06 * H)
+    else:
+        for i in range(n):
+            y = -L + i * (car + gap) + 0.5 * car
+            m.box("dark_metal", (-0.25 * W, y - 0.08 * car, top - 0.005), (0.25 * W, y + 0.08 * car, 0.97 * H), rounded=0.0)
 
 
 def _locomotive(m: Model) -> None:
@@ -508,15 +778,24 @@ def _pram(m: Model) -> None:
     m.ball("canvas_alt", (0, 0.3 * L, 0.62 * H), (0.72 * W, 0.35 * L, 0.3 * H), fraction=0.6)
 
 
+#: Names of craft that float: a word ending in -boat or -ship (craft that fly are matched
+#: before it), or one of the few other words for a hull.
+_WATERCRAFT = re.compile(r"\b(?:\w*boat|\w+ship|ship|barge|canoe|kayak|raft|ferry|yacht|galleon|dinghy|gondola|punt|dhow|"
+                         r"sampan|trawler|schooner|frigate|steamer|clipper)s?\b")
+
+
 def vehicle(m: Model) -> None:
     """A vehicle the catalogue does not know: tractor, forklift, golf cart, cart, battle
-    tank, locomotive, or a flying craft (drone, spaceship); else a car."""
+    tank, snowmobile, tracked crawler, train (steam or a diesel/electric unit, by its words), an aeroplane
+    (propellers or jets, by its words), a flying craft (drone, spaceship, saucer), a boat (a name ending in -boat or -ship); else a car."""
     variants = (
         (("tractor", "bulldozer", "harvester", "combine"), _tractor),
         (("forklift", "fork lift", "pallet truck"), _forklift),
         (("golf cart", "buggy", "gokart", "go-kart", "kart", "rickshaw"), _golf_cart),
         (("army tank", "battle tank", "military tank", "panzer", "armored", "armoured", "tank"), _battle_tank),
-        (("locomotive", "train", "engine car", "steam engine"), _locomotive),
+        (("snowmobile", "skidoo", "ski-doo", "snow scooter", "motor sledge"), _snowmobile),
+        (("snowcat", "tracked", "crawler", "half-track", "halftrack", "snow groomer", "piste basher", "caterpillar"), _tracked),
+        (("locomotive", "train", "engine car", "steam engine", "railcar", "railbus", "multiple unit"), _train),
         (("hot air balloon", "balloon"), _balloon),
         (("minecart", "mine cart", "mine car", "ore cart", "ore car"), _minecart),
         (("cart", "wagon", "carriage", "wheelbarrow", "trolley", "chariot", "trailer"), cart),
@@ -524,10 +803,14 @@ def vehicle(m: Model) -> None:
         (("helicopter", "chopper", "gyrocopter"), _helicopter),
         (("airship", "blimp", "zeppelin", "dirigible"), _airship),
         (("submarine", "u-boat", "sub"), _submarine),
-        (("spaceship", "spacecraft", "starship", "drone", "quadcopter", "jet", "airplane", "plane", "aircraft", "ufo",
-          "shuttle", "rocket ship"), craft),
+        (("airplane", "aeroplane", "plane", "aircraft", "airliner", "jet", "jetliner", "biplane", "seaplane", "glider",
+          "turboprop", "propeller plane", "cargo plane", "fighter jet"), _plane),
+        (("spaceship", "spacecraft", "starship", "drone", "quadcopter", "ufo", "flying saucer", "saucer", "shuttle",
+          "rocket ship"), craft),
     )
     build = m.first_named(variants)
+    if build is None and _WATERCRAFT.search(m.name):
+        build = boat  # "a longship", "a narrowboat", "a ferry": hulls, not wheels
     (build or car)(m)
 
 
