@@ -327,3 +327,19 @@ def test_the_front_wall_is_the_last_a_thing_is_stood_against():
     front = xy[:, 1] < -2.5
     assert front.any() and not front[0]
     assert np.all(cost[front] >= FRONT_PENALTY)
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(rooms_and_objects(), st.lists(st.floats(0.0, 3.5), min_size=6, max_size=6))
+def test_fits_answers_as_a_zero_misfit_does(case, heights):
+    # The solver asks fits() of its candidates (the cheap measures first): the same answer as misfit().
+    room, objects = case
+    room = Room.model_validate({**room.model_dump(), "height": 2.7, "openings": [
+        Opening(kind="door", wall=0, offset=1.0, width=0.9, height=2.1),
+        Opening(kind="window", wall=1, offset=1.0, width=1.2, height=1.2, sill=0.9),
+    ]})
+    shape = RoomShape(room)
+    lifted = [o.model_copy(update={"position": Vec3(x=o.position.x, y=o.position.y, z=z)})
+              for o, z in zip(objects, heights)]
+    boxes = boxes_of(lifted)
+    assert list(shape.fits(boxes)) == list(shape.misfit(boxes) <= 1e-9)

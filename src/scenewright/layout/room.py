@@ -163,6 +163,14 @@ class RoomShape:
         """Containment (under the ceiling too) and clear openings together (m): 0 where a box may stand."""
         return np.maximum(np.maximum(self.outside_by(boxes), self.above_ceiling(boxes)), self.blocking(boxes))
 
+    def fits(self, boxes: Boxes) -> np.ndarray:
+        """Whether each box may stand where it is (its :meth:`misfit` is 0): the cheap measures
+        first, the walls only for the boxes those leave, as the solver asks it of thousands."""
+        ok = (self.above_ceiling(boxes) <= EPS) & (self.blocking(boxes) <= EPS)
+        if ok.any():
+            ok[ok] = self.outside_by(boxes[ok]) <= EPS
+        return ok
+
     def blocked_openings(self, objects: Sequence[SceneObject]) -> list[tuple[int, Opening, list[str]]]:
         """Each opening whose clear strip an object stands in: (index, opening, those ids)."""
         if not objects:
