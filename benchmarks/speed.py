@@ -8,7 +8,7 @@ the same interpreter and packages), interleaved repeat by repeat so both see the
 and the JSON holds both side by side.
 
 Run: ``.venv/bin/python benchmarks/speed.py --baseline 9091e14 [--render]``; prints one JSON
-object. ``make bench`` runs it against the revision before the speed work.
+object. ``--prompts FILE...`` times annotated scenes too (the slow layouts of a batch). ``make bench`` runs it against the revision before the speed work.
 """
 
 from __future__ import annotations
@@ -103,7 +103,8 @@ def render_cpu(src: Path, scene: Path, work: Path, preview: str | None) -> dict[
         shutil.rmtree(copy, ignore_errors=True)
 
 
-def measure(sources: dict[str, Path], repeats: int, work: Path, render: bool, sizes: tuple[int, ...] = SIZES) -> dict:
+def measure(sources: dict[str, Path], repeats: int, work: Path, render: bool, sizes: tuple[int, ...] = SIZES,
+            prompts: dict[str, str] | None = None) -> dict:
     runs: dict[str, dict[str, list]] = {name: {} for name in sources}
 
     def add(name: str, key: str, value: dict[str, float]) -> None:
@@ -121,6 +122,11 @@ def measure(sources: dict[str, Path], repeats: int, work: Path, render: bool, si
                     scenes[name][n] = out
                 else:
                     shutil.rmtree(out, ignore_errors=True)
+            for pid, text in (prompts or {}).items():  # annotated scenes: the layouts users wait for
+                out = work / f"{name}-{pid}-{rep}"
+                add(name, f"generate_{pid}", timed(scenewright("generate", text, "--out", str(out), "--no-render"),
+                                                   src, work))
+                shutil.rmtree(out, ignore_errors=True)
             for n in [n for n in (15, 60) if n in sizes]:
                 copy = work / f"{name}-edit-{n}-{rep}"
                 shutil.copytree(scenes[name][n], copy)
@@ -159,6 +165,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--render", action="store_true", help="also time a default preview render (needs bpy)")
     parser.add_argument("--sizes", default=",".join(map(str, SIZES)),
                         help="object counts to generate (multiples of 5; the edits use 15 and 60 when listed)")
+    parser.add_argument("--prompts", nargs="+", type=Path, default=[],
+                        help="annotated prompt files (benchmarks/prompts-*/NN_id.json) to generate too, each timed")
     args = parser.parse_args(argv)
     if args.repeats < 1:
         parser.error("--repeats must be at least 1")
@@ -168,6 +176,10 @@ def main(argv: list[str] | None = None) -> int:
         parser.error(f"--sizes takes numbers separated by commas, got {args.sizes!r}")
     if not sizes or any(n < 5 or n % 5 for n in sizes):
         parser.error("--sizes: each count must be a positive multiple of 5 (five kinds of furniture)")
+    prompts = {}
+    for path in args.prompts:
+        entry = json.loads(path.read_text(encoding="utf-8"))
+        prompts[entry.get("id", path.stem)] = entry["text"]
     with tempfile.TemporaryDirectory(prefix="scenewright-speed-") as tmp:
         work = Path(tmp)
         sources = {}
@@ -181,7 +193,7 @@ def main(argv: list[str] | None = None) -> int:
         sources["after"] = compiled(ROOT / "src")
         result = {"baseline": args.baseline, "repeats": args.repeats, "cpus": os.cpu_count(),
                   "load_average": [round(x, 2) for x in os.getloadavg()],
-                  **measure(sources, args.repeats, work, args.render, sizes)}
+                  **measure(sources, args.repeats, work, args.render, sizes, prompts)}
     print(json.dumps(result, indent=1))
     return 0
 

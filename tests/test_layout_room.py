@@ -135,7 +135,7 @@ def test_a_room_too_small_reports_what_does_not_fit_and_by_how_much():
 
 
 @st.composite
-def rooms_and_objects(draw):
+def rooms_and_objects(draw, near: bool = False):
     if draw(st.booleans()):
         width, depth = draw(st.floats(3.0, 8.0)), draw(st.floats(3.0, 8.0))
         room = Room.rectangle(width, depth)
@@ -150,7 +150,9 @@ def rooms_and_objects(draw):
         if used + sx * sy > 0.2 * area:
             break
         used += sx * sy
-        objects.append(box(f"o{k}", draw(st.floats(-10, 10)), draw(st.floats(-10, 10)), sx, sy, draw(st.floats(0.2, 2.0)),
+        reach = 5 if near else 10  # near: most of them on the floor or across a wall
+        objects.append(box(f"o{k}", draw(st.floats(-reach, reach)), draw(st.floats(-reach, reach)), sx, sy,
+                           draw(st.floats(0.2, 2.0)),
                            yaw=draw(st.sampled_from([0.0, 30.0, 90.0]))))
     return room, objects
 
@@ -327,3 +329,26 @@ def test_the_front_wall_is_the_last_a_thing_is_stood_against():
     front = xy[:, 1] < -2.5
     assert front.any() and not front[0]
     assert np.all(cost[front] >= FRONT_PENALTY)
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(rooms_and_objects(near=True), st.lists(st.floats(0.0, 3.5), min_size=6, max_size=6))
+def test_fits_answers_as_a_zero_misfit_does(case, heights):
+    # The solver asks fits() of its candidates (the cheap measures first): the same answer as misfit().
+    room, objects = case
+    room = Room.model_validate({**room.model_dump(), "height": 2.7, "openings": [
+        Opening(kind="door", wall=0, offset=1.0, width=0.9, height=2.1),
+        Opening(kind="window", wall=1, offset=1.0, width=1.2, height=1.2, sill=0.9),
+    ]})
+    shape = RoomShape(room)
+    lifted = [o.model_copy(update={"position": Vec3(x=o.position.x, y=o.position.y, z=z)})
+              for o, z in zip(objects, heights)]
+    boxes = boxes_of(lifted)
+    assert list(shape.fits(boxes)) == list(shape.misfit(boxes) <= 1e-9)
+    # outside_by() and blocking() skip what their plan extents clear: the full measures agree.
+    assert list(shape.outside_by(boxes)) == list(shape._outside_by(boxes))
+    full = np.zeros(len(lifted))
+    for _, rect, bottom, top in shape.strips:
+        band = (boxes.lo[:, 2] < top - 1e-9) & (boxes.hi[:, 2] > bottom + 1e-9)
+        full = np.maximum(full, np.where(band, shape._penetration(boxes, rect)[:, 0], 0.0))
+    assert list(shape.blocking(boxes)) == list(np.where(full > SLACK, full, 0.0))

@@ -465,3 +465,42 @@ def test_twins_are_like_leaves_with_the_same_constraints():
     twins = {search.objects[i].id: {search.objects[j].id for j in js} for i, js in search.twins.items()}
     assert twins["cup1"] == set()  # cup0 holds a spoon, cup2 has another constraint; the mug is taller
     assert twins["odd"] == set() and "cup0" not in twins and "shelf" not in twins
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(3, 12), st.integers(0, 10_000), st.booleans(), st.data())
+def test_any_pose_answers_as_the_full_set_of_poses_does(n, seed, in_room, data):
+    # Forward checking asks any_pose() (each constraint judged only where the ones before hold,
+    # the room only where all hold); poses() judges every candidate: the answers must agree,
+    # and both draw the same random candidates, so the search goes on the same either way.
+    from scenewright.layout.solver import _Search
+    from scenewright.scene import Room
+
+    p = planted_problem(n, seed, with_meshes=False)
+    room = Room.rectangle(*p.bounds) if in_room else None
+    quick, full = (_Search(p.objects, p.constraints, None, p.bounds, (), seed, room=room) for _ in range(2))
+    placed = data.draw(st.sets(st.integers(0, len(p.objects) - 1)))
+    for search in (quick, full):
+        for i in sorted(placed):
+            search.put(i, np.array(p.solution[i].position.tuple()), p.solution[i].yaw)
+    for i, item in quick.items.items():
+        for density in ("probe", "check", "wide"):
+            poses = full.poses(full.items[i], density)
+            assert quick.any_pose(item, density) == bool(np.any(poses.ok & poses.inside))
+            assert quick.any_pose(item, density, bounded=False, inside=False) == bool(
+                full.poses(full.items[i], density, bounded=False).ok.any())
+
+
+def test_a_stack_too_tall_for_the_room_gives_up_its_top_at_once():
+    # Its height is its support's top wherever the two stand: no jump back, no restart can help.
+    from scenewright.scene import Room
+
+    room = Room.model_validate({**Room.rectangle(4.0, 4.0).model_dump(), "height": 2.5})
+    objects = [box("dresser", size=(1.0, 0.5, 1.6)), box("trunk", size=(0.6, 0.4, 0.5)),
+               box("hatbox", size=(0.4, 0.4, 0.6))]
+    constraints = [c("on", "trunk", "dresser"), c("on", "hatbox", "trunk")]
+    result = solve(objects, constraints, room=room, seed=3)
+    assert result.report.placed == ["dresser", "trunk"]
+    (top,) = result.report.unplaced
+    assert top.id == "hatbox" and "ceiling" in top.reason
+    assert result.report.nodes <= 10  # one search, no backjumps

@@ -88,6 +88,18 @@ def _strip(room: Room, opening: Opening, corridor: bool = False) -> tuple[_Rects
     return rect, bottom, opening.sill + opening.height
 
 
+def _extent(centre: np.ndarray, half: np.ndarray, axes: np.ndarray) -> np.ndarray:
+    """Half extents (..., 2) along x and y of rectangles (centre, half, axes as :class:`_Rects`)."""
+    return (np.abs(axes) * half[..., :, None]).sum(axis=-2)
+
+
+def _plan_extent(boxes: Boxes) -> tuple[np.ndarray, np.ndarray]:
+    """The axis-aligned plan extent (lo, hi) of each box's footprint."""
+    centre, half, axes = _rectangle(boxes)
+    e = _extent(centre, half, axes)
+    return centre - e, centre + e
+
+
 class RoomShape:
     """A room's floor, walls and opening strips as arrays, for measuring many boxes at once.
 
@@ -105,7 +117,13 @@ class RoomShape:
         self.walls = _Rects((pts + end) / 2.0, np.stack([length / 2.0, np.zeros(len(pts))], axis=1),
                             np.stack([d, np.stack([-d[:, 1], d[:, 0]], axis=1)], axis=1))
         self.lo, self.hi = pts.min(axis=0), pts.max(axis=0)
+        #: A floor that is its own bounding rectangle: a footprint inside that is inside the floor.
+        self.rectangular = (len(pts) == 4 and bool(np.all((pts == self.lo) | (pts == self.hi)))
+                            and math.isclose(self.area, float(np.prod(self.hi - self.lo))))
         self.strips = [(o, *_strip(room, o, corridors)) for o in room.openings]
+        #: Each strip's plan extent (lo, hi): a footprint clear of it is clear of the strip.
+        self._strip_extents = [(r.centre[0] - e, r.centre[0] + e) for _, r, _, _ in self.strips
+                               for e in [_extent(r.centre, r.half, r.axes)[0]]]
         self._cells: tuple[np.ndarray, np.ndarray] | None = None
         self._door_cells: list[np.ndarray] | None = None
         self._near: dict[tuple[bytes, float, bool], tuple[tuple[slice, slice], np.ndarray]] = {}
@@ -139,7 +157,18 @@ class RoomShape:
         return np.maximum(0.0, -sep)
 
     def outside_by(self, boxes: Boxes) -> np.ndarray:
-        """How far (m) each box's footprint reaches outside the floor polygon (0 inside it)."""
+        """How far (m) each box's footprint reaches outside the floor polygon (0 inside it). On a
+        rectangular floor a footprint whose plan extent lies within it is 0 without measuring."""
+        out = np.zeros(boxes.lo.shape[:-1])
+        todo = np.ones(out.shape, dtype=bool)
+        if self.rectangular:
+            lo, hi = _plan_extent(boxes)
+            todo = ~(np.all(lo > self.lo, axis=-1) & np.all(hi < self.hi, axis=-1))
+        if todo.any():
+            out[todo] = self._outside_by(boxes[todo])
+        return out
+
+    def _outside_by(self, boxes: Boxes) -> np.ndarray:
         centre = boxes.centre[..., :2]
         poke = self._penetration(boxes, self.walls).max(axis=-1)
         _, half, _ = _rectangle(boxes)
@@ -149,9 +178,13 @@ class RoomShape:
     def blocking(self, boxes: Boxes) -> np.ndarray:
         """How deep (m) each box stands in the clear strip of a door or window (0 when in none)."""
         worst = np.zeros(boxes.lo.shape[:-1])
-        for _, rect, bottom, top in self.strips:
+        lo, hi = _plan_extent(boxes)
+        for (_, rect, bottom, top), (s_lo, s_hi) in zip(self.strips, self._strip_extents):
             band = (boxes.lo[..., 2] < top - EPS) & (boxes.hi[..., 2] > bottom + EPS)
-            worst = np.maximum(worst, np.where(band, self._penetration(boxes, rect)[..., 0], 0.0))
+            # Only a footprint whose plan extent meets the strip's can stand in it.
+            band &= np.all(lo < s_hi, axis=-1) & np.all(hi > s_lo, axis=-1)
+            if band.any():
+                worst[band] = np.maximum(worst[band], self._penetration(boxes[band], rect)[..., 0])
         return np.where(worst > SLACK, worst, 0.0)
 
     def above_ceiling(self, boxes: Boxes) -> np.ndarray:
@@ -162,6 +195,14 @@ class RoomShape:
     def misfit(self, boxes: Boxes) -> np.ndarray:
         """Containment (under the ceiling too) and clear openings together (m): 0 where a box may stand."""
         return np.maximum(np.maximum(self.outside_by(boxes), self.above_ceiling(boxes)), self.blocking(boxes))
+
+    def fits(self, boxes: Boxes) -> np.ndarray:
+        """Whether each box may stand where it is (its :meth:`misfit` is 0): the cheap measures
+        first, the walls only for the boxes those leave, as the solver asks it of thousands."""
+        ok = (self.above_ceiling(boxes) <= EPS) & (self.blocking(boxes) <= EPS)
+        if ok.any():
+            ok[ok] = self.outside_by(boxes[ok]) <= EPS
+        return ok
 
     def blocked_openings(self, objects: Sequence[SceneObject]) -> list[tuple[int, Opening, list[str]]]:
         """Each opening whose clear strip an object stands in: (index, opening, those ids)."""

@@ -65,6 +65,7 @@ from scenewright.layout.relations import (
     rotated_half,
     tilt_matrix,
 )
+from scenewright.layout.room import SLACK as ROOM_SLACK
 from scenewright.layout.room import RoomShape, shortfall
 from scenewright.layout.room import problems as room_problems
 from scenewright.scene import ROOM_RELATIONS, Constraint, LayoutReport, Room, SceneObject, UnplacedObject, Vec3
@@ -181,7 +182,7 @@ class _Poses:
     satisfied: list[np.ndarray]
     #: Which candidates satisfy all of them (and keep the followers' relations when turned).
     ok: np.ndarray
-    #: Which candidates lie inside the bounds.
+    #: Which of the candidates in ``ok`` lie inside the bounds (the others are not measured).
     inside: np.ndarray
     #: Follower index → its yaw per candidate (an object facing this one turns with it).
     turns: dict[int, np.ndarray]
@@ -397,11 +398,7 @@ class _Search:
     def feasible(self, item: _Item) -> bool:
         """Whether any candidate pose meets the object's constraints and the bounds: a sparse
         set at the model's yaw first (it usually answers), then the full one."""
-        for density in ("probe", "check"):
-            poses = self.poses(item, density)
-            if np.any(poses.ok & poses.inside):
-                return True
-        return False
+        return any(self.any_pose(item, density) for density in ("probe", "check"))
 
     def active(self, item: _Item) -> list[tuple[Constraint, int]]:
         """The object's constraints whose targets have a pose (a facing waits for its target)."""
@@ -415,6 +412,47 @@ class _Search:
         (a sparse set at the model's yaw) or ``"check"`` (sparser than normal): the last two for
         forward checking. ``anchor`` replaces the object's own; ``bounded=False`` ignores the bounds.
         """
+        centres, yaws, boxes, turns, swept = self._generate(item, density, anchor, bounded)
+        sat = [
+            rel.holds(c.relation, swept if swept is not None and c.relation in SWEPT else boxes, tb)
+            if tb is not None else rel.holds(c.relation, sb, boxes)
+            for c, tb, sb in self.pairs(item, turns, centres)
+        ]
+        ok = np.logical_and.reduce(sat) if sat else np.ones(len(centres), dtype=bool)
+        for f, y in turns.items():  # and its own relations must survive the turn
+            ok &= self.still_holds(f, y, exclude=item.index)
+        return _Poses(centres, yaws, boxes, sat, ok, self.inside(boxes if swept is None else swept, among=ok), turns)
+
+    def any_pose(
+        self, item: _Item, density: str, anchor: np.ndarray | None = None, bounded: bool = True, inside: bool = True
+    ) -> bool:
+        """Whether any of the candidates :meth:`poses` makes meets every constraint (and, with
+        ``inside``, the bounds): the same answer, found by judging each constraint only on the
+        candidates that met the ones before, as forward checking asks it thousands of times."""
+        centres, yaws, boxes, turns, swept = self._generate(item, density, anchor, bounded)
+        alive = np.arange(len(centres))
+        for c, tb, sb in self.pairs(item, turns, centres):
+            if tb is None:
+                keep = rel.holds(c.relation, sb, boxes[alive])
+            else:
+                mine = swept if swept is not None and c.relation in SWEPT else boxes
+                turned = isinstance(tb, Boxes) and tb.lo.ndim == 2  # a target facing each candidate
+                keep = rel.holds(c.relation, mine[alive], tb[alive] if turned else tb)
+            alive = alive[keep]
+            if not len(alive):
+                return False
+        for f, y in turns.items():
+            alive = alive[self.still_holds(f, y[alive], exclude=item.index)]
+        if inside and len(alive):
+            alive = alive[self.inside((boxes if swept is None else swept)[alive])]
+        return bool(len(alive))
+
+    def _generate(
+        self, item: _Item, density: str, anchor: np.ndarray | None, bounded: bool
+    ) -> tuple[np.ndarray, np.ndarray, Boxes, dict[int, np.ndarray], Boxes | None]:
+        """The candidate poses of :meth:`poses`, nearest the anchor first: centres, yaws, their
+        boxes, the yaw per candidate of each object facing this one, and the box each candidate
+        sweeps turning when it waits to face an object placed later (else None)."""
         obj = item.obj
         own = self.active(item)
         area = self.area if bounded else None
@@ -518,15 +556,7 @@ class _Search:
         if waiting is not None:
             reach = float(np.hypot(*item.foot))
             swept = Boxes.at(centres, np.array([reach, reach, item.half_z]), yaws)
-        sat = [
-            rel.holds(c.relation, swept if swept is not None and c.relation in SWEPT else boxes, tb)
-            if tb is not None else rel.holds(c.relation, sb, boxes)
-            for c, tb, sb in self.pairs(item, turns, centres)
-        ]
-        ok = np.logical_and.reduce(sat) if sat else np.ones(len(xy), dtype=bool)
-        for f, y in turns.items():  # and its own relations must survive the turn
-            ok &= self.still_holds(f, y, exclude=item.index)
-        return _Poses(centres, yaws, boxes, sat, ok, self.inside(boxes if swept is None else swept), turns)
+        return centres, yaws, boxes, turns, swept
 
     def gap_between(self, own: list[tuple[Constraint, int]]) -> np.ndarray | None:
         """The centres (2, 2) of two targets the object must stand on opposite sides of (right
@@ -633,15 +663,19 @@ class _Search:
                         ok &= rel.holds(c.relation, self.box(s), boxes)
         return ok
 
-    def inside(self, boxes: Boxes) -> np.ndarray:
-        """Whether each box stands inside the bounds and the room, clear of its openings."""
+    def inside(self, boxes: Boxes, among: np.ndarray | None = None) -> np.ndarray:
+        """Whether each box stands inside the bounds and the room, clear of its openings; with
+        ``among`` (a mask), only those boxes are measured and the rest count as outside. The
+        room's measure is the costly one: it is taken only of boxes inside the bounds."""
         if self.area is None:
-            return np.ones(boxes.lo.shape[0], dtype=bool)
+            return np.ones(boxes.lo.shape[0], dtype=bool) if among is None else among.copy()
         ok = np.all(boxes.lo[:, :2] >= self.area[0] - rel.EPS, axis=1) & np.all(
             boxes.hi[:, :2] <= self.area[1] + rel.EPS, axis=1
         )
-        if self.room is not None:
-            ok &= self.room.misfit(boxes) <= rel.EPS
+        if among is not None:
+            ok &= among
+        if self.room is not None and ok.any():
+            ok[ok] = self.room.fits(boxes[ok])
         return ok
 
     def pairs(self, item: _Item, turns=None, centres=None) -> list[tuple[Constraint, Boxes | None, Boxes | None]]:
@@ -666,6 +700,11 @@ class _Search:
         never = [c for c in never if not self.alone(item, c)]
         if never:
             return _Failure("no candidate position satisfies " + "; ".join(f"'{c}'" for c in never), never)
+        over = self.over_ceiling(item)
+        if ok.any() and over is not None:
+            # Its height is its support's, which no move in plan changes: no jump back can help.
+            return _Failure(f"resting on {self.objects[over].id} it reaches past the {self.room.room.height:g} m "
+                            "ceiling", [c for c, _, _ in pairs], inherent=True)
         if ok.any():
             w, d = self.area[1] - self.area[0]
             where = "room, or in a door's or window's clear strip" if self.room is not None else "bounds"
@@ -679,6 +718,17 @@ class _Search:
             return _Failure(reason, conflict, inherent=True)
         given_up = self.given_up(item) if not ok.any() else []
         return _Failure(reason, given_up or [c for c, _, _ in pairs])
+
+    def over_ceiling(self, item: _Item) -> int | None:
+        """What the object rests ``on``, when resting there it reaches past the room's ceiling:
+        its height is its support's top, the same wherever in plan the two stand, so no pose of
+        any object helps it (a stack too tall for the room). None otherwise."""
+        ranked = sorted(self.active(item), key=lambda ct: PRIORITY[ct[0].relation])
+        if self.room is None or not ranked or ranked[0][0].relation != "on":
+            return None
+        support = ranked[0][1]
+        top = float(self.box(support).top) + 2 * item.half_z
+        return support if top - self.room.room.height > ROOM_SLACK else None
 
     def given_up(self, item: _Item) -> list[Constraint]:
         """The object's constraints to go without so that the rest can hold together, as few and
@@ -713,7 +763,7 @@ class _Search:
                 self.followers[item.index] = []  # as the objects facing it stand
                 try:
                     probe = replace(item, own=group, reverse=[], walls=[])
-                    found = self.poses(probe, "wide", anchor=self.box(t).centre, bounded=False).ok.any()
+                    found = self.any_pose(probe, "wide", anchor=self.box(t).centre, bounded=False, inside=False)
                 finally:
                     self.followers[item.index] = saved
                 self.contradictions[key] = None if found else [c for c, _ in group]
@@ -831,7 +881,7 @@ class _Search:
                 continue
             if self.feasible(replace(item, own=known)):
                 continue
-            if self.contradiction(replace(item, own=known)) is not None:
+            if self.contradiction(replace(item, own=known)) is not None or self.over_ceiling(item) is not None:
                 continue  # no pose of anything helps it; it will be placed at its nearest miss
             node.conflict.update(t for _, t in known if t != i)
             rest = replace(item, own=[(c, t) for c, t in known if t != i])
