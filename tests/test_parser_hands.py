@@ -265,3 +265,10 @@ def test_work_done_on_a_thing_that_carries_nobody_is_done_at_it():
     assert ("painter_1", "near", "picture_frame_1") in rels("A painter works on a canvas.")
     assert ("man_1", "on", "bench_1") in rels("A man reads a book on the bench.")  # a seat carries the reader
     assert ("boy_1", "on", "crate_1") in rels("A boy stands on a crate.")  # a posture
+
+
+def test_a_tool_with_a_person_after_a_pronoun_is_in_hand_unless_placed_on_its_own():
+    found = rels("Six goats stand in a row. The farmer walks behind them with a rake.")
+    assert ("rake_1", "on", "farmer_1") in found, found
+    found = rels("The abbot sits on a chair, with a great bible open on a lectern in front of him.")
+    assert ("bible_1", "on", "abbot_1") not in found, found

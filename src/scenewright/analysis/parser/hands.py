@@ -201,6 +201,11 @@ class _Hands:
         rel = self.rel_at.get(end)
         return rel is not None and rel.end < ce and self.toks[rel.end].text in ("it", "them", "its", "their")
 
+    def _placed_after(self, end: int, ce: int) -> bool:
+        """A relation phrase right after a thing, or after one word that describes it ("a bible
+        open on a lectern", "an urn beside each bench")."""
+        return end in self.rel_at or (end + 1 < ce and self.toks[end].text.isalpha() and end + 1 in self.rel_at)
+
     def _after_verb(self, k: int, over: tuple[str, ...] = ()) -> bool:
         """Whether the word at ``k`` comes right after a verb, or after a verb and what it acts on
         ("practises with", "scrubs its back with", "tapping a heel with"), not after a noun phrase

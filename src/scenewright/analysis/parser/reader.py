@@ -657,7 +657,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 armed = tool is not None and not self._placed_by_pronoun(tool.end, ce) and all(
                     self._person_at(h) for h in c.head
                 ) and not any(self.catalogue[self.groups[t].category].support for t in c.last_target)
-                if armed and after_target:
+                # ("walks behind them with a broom": what a person works with is in hand, unless a
+                # phrase of its own places it: "with a bible open on a lectern")
+                if armed and (after_target or not self._placed_after(tool.end, ce)):
                     hand = True
                 if after_target and not fellow and not armed and (
                     (w == "with" and not mine and (self._animate(*c.head) or between)) or (w, nxt) in _HOLD_PAIRS
