@@ -272,3 +272,8 @@ def test_a_tool_with_a_person_after_a_pronoun_is_in_hand_unless_placed_on_its_ow
     assert ("rake_1", "on", "farmer_1") in found, found
     found = rels("The abbot sits on a chair, with a great bible open on a lectern in front of him.")
     assert ("bible_1", "on", "abbot_1") not in found, found
+
+
+def test_the_other_of_two_holders_has_the_thing_named_after_it():
+    found = rels("Two sailors stand on the pier, one holding a lamp, the other a coil of rope.")
+    assert {("table_lamp_1", "on", "sailor_1"), ("rope_coil_1", "on", "sailor_2")} <= found, found

@@ -95,6 +95,8 @@ class _Clause:
     #: The with-things are living ones a verb's doer is with ("a groom waits with the ponies"):
     #: the doer keeps the clause's next placing, they keep by the doer.
     company: bool = False
+    #: With-things of "the other" of the holders ("one holding a lamp, the other a rope"): its second.
+    others: set[int] = field(default_factory=set)
     wsub_related: set[int] = field(default_factory=set)
     last_target: list[int] = field(default_factory=list)
     last_target_end: int = -1
@@ -699,7 +701,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     if c.wsub and any(w in _OWN_PLACE for w in gap):  # "a till at one end and a computer"
                         self._close_with(c)
                         c.wsub_before, closed = list(c.wsub), True
-                    if c.hand and c.wsub and any(w in _STOP and w not in ("and", "or") for w in gap):
+                    # ("one holding a lamp, the other a rope": the second holder's thing, its verb left out)
+                    other = [w for w in gap if w != ","][:2] in (["the", "other"], ["another", "a"], ["another", "an"])
+                    if c.hand and c.wsub and not other and any(w in _STOP and w not in ("and", "or") for w in gap):
                         # "waves a flag from a gantry": what is in hand is the noun right after
                         self._close_with(c)
                         c.head, c.wsub, c.hand, c.hold = None, [], False, False
@@ -707,6 +711,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                         last_event_end = m.end
                         continue
                     c.wsub = [g] if (c.expect_new or closed) else [*c.wsub, g]
+                    if other:
+                        c.others.add(g)
                 else:
                     c.main_groups.append(g)
                     # "an astronaut plants a flag next to it": the verb's object takes what follows,
@@ -857,7 +863,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     c.produced = True
                     continue
                 if c.hold or held or (rests == "surface" and self.catalogue[self.groups[h].category].support):
-                    self._relate("on", [g], h)
+                    self._relate("on", [g], h, instance=1 if g in c.others and self.groups[h].count > 1 else None)
                     c.produced = True
                     if held or (c.hold and self._person_at(h) and not self._living(g)):
                         if not c.shared:
