@@ -277,3 +277,10 @@ def test_a_tool_with_a_person_after_a_pronoun_is_in_hand_unless_placed_on_its_ow
 def test_the_other_of_two_holders_has_the_thing_named_after_it():
     found = rels("Two sailors stand on the pier, one holding a lamp, the other a coil of rope.")
     assert {("table_lamp_1", "on", "sailor_1"), ("rope_coil_1", "on", "sailor_2")} <= found, found
+
+
+def test_worn_things_between_a_doer_and_its_verb_do_not_hide_the_verb():
+    found = rels("A porter in a red cap bargains with a driver beside the kiosk.")
+    assert {("porter_1", "side of", "kiosk_1"), ("driver_1", "near", "porter_1")} <= found, found
+    found = rels("A sailor in oilskins launches a kite from the pier.")  # a perch: on it
+    assert {("sailor_1", "on", "pier_1"), ("kite_1", "on", "sailor_1")} <= found, found

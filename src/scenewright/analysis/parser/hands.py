@@ -55,7 +55,7 @@ class _Hands:
         if rel is not None and (w, self.toks[rel.end - 1].text) in _HAND_PAIRS:
             end = rel.end  # "peering through a loupe": a phrase of its own (near), but the loupe is in hand
         elif w == "with":
-            end = k + 1 if self._after_verb(k) else None
+            end = k + 1 if self._after_verb(k, worn=True) else None
         elif any(p == w for _, p in _HAND_PAIRS) and self._pair_before(k):
             end = k + 2 if w == "out" and k + 1 < ce and self.toks[k + 1].text == "of" else k + 1
         elif w == "on" and self._device_verb_before(k):
@@ -206,15 +206,17 @@ class _Hands:
         open on a lectern", "an urn beside each bench")."""
         return end in self.rel_at or (end + 1 < ce and self.toks[end].text.isalpha() and end + 1 in self.rel_at)
 
-    def _after_verb(self, k: int, over: tuple[str, ...] = ()) -> bool:
+    def _after_verb(self, k: int, over: tuple[str, ...] = (), worn: bool = False) -> bool:
         """Whether the word at ``k`` comes right after a verb, or after a verb and what it acts on
         ("practises with", "scrubs its back with", "tapping a heel with"), not after a noun phrase
         of its own ("a woman in a coat with ..."); the words ``over`` may lie between too
-        ("forks straw into it", "pushes the front one")."""
+        ("forks straw into it", "pushes the front one"); with ``worn``, a verb in -s after what
+        the doer wears ("a trader in a turban argues with"), which names no object."""
         j = k - 1
         while j >= 0 and k - j <= 6:
             w = self.toks[j].text
-            if self._participle_at(j) or self._finite_at(j):
+            finite = worn and _is_verb(w) and w not in _STOP and j not in self.named_at and j not in self.content_at
+            if self._participle_at(j) or self._finite_at(j) or finite:
                 return w not in _COPULAS
             if w in _STOP and w not in _DETERMINERS and w not in ("it", "them") and w not in over or not w[:1].isalpha():
                 return False
@@ -241,7 +243,7 @@ class _Hands:
         "two children feed ducks from a footbridge"; not "pulls a rope from the barrel")."""
         perch = self._next_mention(k + 1, len(self.toks))
         ridden = perch is None or load_vocabulary().carries(perch.category, perch.phrase, _RIDDEN)
-        if not self._after_verb(k) or not ridden:
+        if not self._after_verb(k, worn=True) or not ridden:
             return False  # ("feeds the goats from a bucket": what the feed comes out of)
         j = k - 1
         while j >= 0 and k - j <= 6:
@@ -259,7 +261,8 @@ class _Hands:
     def _taken_from(self) -> list[_Rel]:
         """"Lifts a tray from the counter", "two porters lift cases off it", "takes a jar out of
         the cabinet": a small thing taken from something too big to hold puts the one who takes
-        it by that thing (a "near" phrase of their own; the thing is in hand)."""
+        it by that thing (a "near" phrase of their own; the thing is in hand), or on it when it
+        carries people ("launches a kite from the pier")."""
         toks, out = self.toks, []
         for k, tok in enumerate(toks):
             if tok.text not in ("from", "off", "out") or (k in self.rel_at and self.rel_at[k].kind != "from"):
@@ -268,12 +271,14 @@ class _Hands:
             if tok.text == "out" and end == k + 1:
                 continue
             thing = next((m for m in self.by_start.values() if m.end == k), None)
-            if thing is None or self._hand_object(thing.start, k) is None or not self._after_verb(thing.start):
+            if thing is None or self._hand_object(thing.start, k) is None or not self._after_verb(thing.start, worn=True):
                 continue  # ("a man from the village": no thing taken)
             source = self._next_mention(end, len(toks))
             pronoun = end < len(toks) and toks[end].text in ("it", "them")
             if pronoun or (source is not None and self._hand_object(source.start, source.end) is None):
-                out.append(_Rel("near", k, end))
+                # ("launches a kite from the pier": what carries people is where the doer stands)
+                perch = not pronoun and load_vocabulary().carries(source.category, source.phrase, ("perches",))
+                out.append(_Rel("on" if perch else "near", k, end))
         return out
 
     def _deed_on_pronoun(self, c: _Clause, k: int, doers: list[int], prev_subject: list[int]) -> None:

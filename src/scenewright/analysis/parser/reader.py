@@ -653,7 +653,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # ("a sheep waits by the gate with its shepherd": a living thing's companion is its own)
                 fellow = self._next_mention(k + 1, ce)
                 fellow = fellow is not None and self._lives(fellow.category) and all(self._living(h) for h in c.head)
-                c.company = fellow and w == "with" and self._after_verb(k)
+                c.company = fellow and w == "with" and self._after_verb(k, worn=True)
                 # ("a guard stands at the gate with a spear": nothing stands on a gate, the spear is his)
                 tool = self._hand_object(k + 1, ce, tool=True) if w == "with" else None
                 armed = tool is not None and not self._placed_by_pronoun(tool.end, ce) and all(
