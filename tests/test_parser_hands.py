@@ -176,3 +176,111 @@ def test_a_tool_after_a_place_with_no_top_is_the_persons():
     assert ("spear_1", "on", "guard_1") in found, found
     found = rels("A baker stands behind the counter with a tray on it.")  # its own phrase: the counter's
     assert ("plate_1", "on", "counter_1") in found, found
+
+
+@pytest.mark.parametrize(
+    "text, thing, holder",
+    [
+        ("A clerk checks a wristwatch next to the kiosk.", "wristwatch_1", "clerk_1"),  # any verb, a small thing
+        ("A potter sits on a stool with a cushion, turning a small jug.", "bottle_1", "potter_1"),  # a participle
+        ("A keeper kneels by the cage, offering a carrot through the bars.", "carrot_1", "keeper_1"),  # no one given to
+        ("Three ducks gather around a boy holding a loaf of bread.", "loaf_1", "boy_1"),  # the person right before
+        ("Guards with spears patrol past the fountain.", "spear_1", "guard_1"),  # a plural verb ends the with-part
+        ("A hunter sits on a log, a rifle across his knees.", "rifle_1", "hunter_1"),  # across a carrying part
+        ("A porter waits by the door, a sack over his shoulder.", "sack_1", "porter_1"),
+        ("A girl sits on a bench, a rabbit in her lap.", "rabbit_1", "girl_1"),
+        ("Three mules wait by the well, each with a bell.", "bell_1", "mule_1"),  # an animal's small thing is on it
+    ],
+)
+def test_a_thing_used_after_any_verb_or_named_with_a_carrying_part_is_in_hand(text, thing, holder):
+    assert (thing, "on", holder) in rels(text), rels(text)
+
+
+def test_the_holder_of_a_verb_of_use_takes_the_place_that_follows():
+    found = rels("A clerk checks a wristwatch next to the kiosk.")
+    assert ("clerk_1", "side of", "kiosk_1") in found and ("wristwatch_1", "side of", "kiosk_1") not in found, found
+    found = rels("Guards with spears patrol past the fountain.")
+    assert ("guard_1", "near", "fountain_1") in found and ("spear_1", "near", "fountain_1") not in found, found
+
+
+def test_verbs_of_placing_work_in_place_or_reaching_from_afar_leave_the_thing_where_it_is():
+    assert ("pram_1", "on", "mother_1") not in rels("A mother pushes a pram past the bakery.")
+    found = rels("A maid kneels by the hearth, fanning a brazier with a kettle on it.")
+    assert not any(t == "maid_1" and r == "on" for s, r, t in found), found
+
+
+def test_the_one_thing_several_use_is_one():
+    parsed = parse_scene("Two porters carry a trunk past the shed.")
+    assert Counter(o.name for o in parsed.objects)["trunk"] == 1
+    assert Counter(o.name for o in parse_scene("Two scouts sharpen their spears.").objects)["spear"] == 2
+
+
+def test_each_with_gives_every_animal_its_own():
+    parsed = parse_scene("Three mules wait by the well, each with a bell.")
+    assert Counter(o.name for o in parsed.objects)["bell"] == 3
+    assert not any(s.startswith("bell") and t == "well_1" for s, r, t in rels(parsed.text))
+
+
+def test_his_after_a_clause_names_its_doer_not_whom_it_is_beside():
+    found = rels("A student browses the shelves while her cousin waits beside her, a map under his arm.")
+    assert ("map_1", "on", "cousin_1") in found and ("map_1", "on", "student_1") not in found, found
+
+
+@pytest.mark.parametrize(
+    "text, near",
+    [
+        ("A boy leads a horse past the barn.", ("boy_1", "horse_1")),  # a person stands by livestock
+        ("A farmer waits with two goats beside the gate.", ("farmer_1", "goat_1")),
+        ("A man walks a dachshund beside the van.", ("dog_1", "man_1")),  # a pet keeps by its person
+        ("A girl sits on a bench with her dog.", ("dog_1", "girl_1")),
+    ],
+)
+def test_a_person_stands_by_livestock_and_a_pet_keeps_by_its_person(text, near):
+    assert (near[0], "near", near[1]) in rels(text), rels(text)
+
+
+def test_one_waiting_with_animals_keeps_the_place_that_follows():
+    found = rels("A farmer waits with two goats beside the gate.")
+    assert ("farmer_1", "side of", "arch_1") in found and ("goat_1", "side of", "arch_1") not in found, found
+
+
+def test_one_who_takes_a_small_thing_from_a_big_one_stands_by_it():
+    found = rels("A nurse takes a bottle out of the cabinet.")
+    assert {("bottle_1", "on", "nurse_1"), ("nurse_1", "near", "cabinet_1")} <= found, found
+    found = rels("A cart stands by the gate, and two porters lift suitcases off it.")
+    assert ("porter_1", "near", "cart_1") in found, found
+    assert rels("A man from the village waits by the well.") == {("man_1", "near", "well_1")}
+
+
+def test_a_small_thing_one_does_something_on_is_in_hand_unless_something_else_is():
+    found = rels("A camera stands by the tent, and a girl films it on a tablet.")
+    assert ("tablet_1", "on", "girl_1") in found and ("girl_1", "on", "tablet_1") not in found, found
+    found = rels("A cook sharpens a knife on a whetstone.")  # the knife is in hand, the whetstone worked at
+    assert ("whetstone_1", "on", "cook_1") not in found, found
+    assert ("cup_1", "on", "plate_1") in rels("A waiter sets a cup on a tray.")  # placing
+
+
+def test_work_done_on_a_thing_that_carries_nobody_is_done_at_it():
+    assert ("chef_1", "near", "board_1") in rels("A chef slices bread on a board beside the oven.")
+    assert ("painter_1", "near", "picture_frame_1") in rels("A painter works on a canvas.")
+    assert ("man_1", "on", "bench_1") in rels("A man reads a book on the bench.")  # a seat carries the reader
+    assert ("boy_1", "on", "crate_1") in rels("A boy stands on a crate.")  # a posture
+
+
+def test_a_tool_with_a_person_after_a_pronoun_is_in_hand_unless_placed_on_its_own():
+    found = rels("Six goats stand in a row. The farmer walks behind them with a rake.")
+    assert ("rake_1", "on", "farmer_1") in found, found
+    found = rels("The abbot sits on a chair, with a great bible open on a lectern in front of him.")
+    assert ("bible_1", "on", "abbot_1") not in found, found
+
+
+def test_the_other_of_two_holders_has_the_thing_named_after_it():
+    found = rels("Two sailors stand on the pier, one holding a lamp, the other a coil of rope.")
+    assert {("table_lamp_1", "on", "sailor_1"), ("rope_coil_1", "on", "sailor_2")} <= found, found
+
+
+def test_worn_things_between_a_doer_and_its_verb_do_not_hide_the_verb():
+    found = rels("A porter in a red cap bargains with a driver beside the kiosk.")
+    assert {("porter_1", "side of", "kiosk_1"), ("driver_1", "near", "porter_1")} <= found, found
+    found = rels("A sailor in oilskins launches a kite from the pier.")  # a perch: on it
+    assert {("sailor_1", "on", "pier_1"), ("kite_1", "on", "sailor_1")} <= found, found

@@ -9,12 +9,37 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from scenewright.analysis.parser.grammar import _COPULAS, _PERSON_POSSESSIVES, _RIDDEN
-from scenewright.analysis.parser.nouns import _Mention
+from scenewright.analysis.parser.nouns import _Mention, _is_plural
+from scenewright.analysis.parser.phrases import _Rel
 from scenewright.analysis.parser.vocabulary import load_vocabulary
-from scenewright.analysis.parser.words import _DETERMINERS, _HAND_PAIRS, _NUMBERS, _ORDINALS, _STOP, _is_verb
+from scenewright.analysis.parser.words import (
+    _DETERMINERS,
+    _GIVE_VERBS,
+    _HAND_PAIRS,
+    _HAND_VERBS,
+    _HANG_VERBS,
+    _HOLD,
+    _LEAD_VERBS,
+    _NOT_IN_HAND,
+    _NUMBERS,
+    _ORDINALS,
+    _PUT_OR_WORKED,
+    _STOP,
+    _USE_VERBS,
+    _is_verb,
+    _verb_stem,
+)
 
 if TYPE_CHECKING:
     from scenewright.analysis.parser.reader import _Clause
+
+#: How long (m) an animal is to be what its person stands by ("a girl leads a camel", "a herdsman
+#: waits with two cows": by the animals), where a smaller one keeps by its person ("a man walks
+#: a dachshund", "a girl with her dog").
+_HERD_LENGTH = 1.0
+
+#: The verbs of the hand tables: verbs, whatever their ending says ("play", "carry").
+_DEED_VERBS = _USE_VERBS | _HAND_VERBS | _HOLD | _LEAD_VERBS | _GIVE_VERBS
 
 
 class _Hands:
@@ -26,18 +51,116 @@ class _Hands:
         is too big to work with."""
         w = self.toks[k].text
         rel = self.rel_at.get(k)
+        device = False
         if rel is not None and (w, self.toks[rel.end - 1].text) in _HAND_PAIRS:
             end = rel.end  # "peering through a loupe": a phrase of its own (near), but the loupe is in hand
         elif w == "with":
-            end = k + 1 if self._after_verb(k) else None
+            end = k + 1 if self._after_verb(k, worn=True) else None
         elif any(p == w for _, p in _HAND_PAIRS) and self._pair_before(k):
             end = k + 2 if w == "out" and k + 1 < ce and self.toks[k + 1].text == "of" else k + 1
+        elif w == "on" and self._device_verb_before(k):
+            end, device = k + 1, True  # "films it on a tablet", "plays a tune on a flute"
         else:
             return None
         thing = self._hand_object(end, ce, tool=True) if end is not None else None
         if thing is None or self._placed_by_pronoun(thing.end, ce):
             return None  # "fanning a stove with a kettle on it": the stove's, not in hand
+        if device and not self._device(thing):
+            return None  # "reads a book on the bench", "sharpens a knife on a whetstone": where, not with what
         return end
+
+    def _acting_verb(self, k: int, held: bool = False) -> str | None:
+        """The verb before the phrase word at ``k`` in the same clause part, with at most what it
+        acts on between (with ``held``, nothing small enough to hold); None when there is none, or
+        another phrase or such a thing comes first."""
+        j = k - 1
+        while j >= 0 and k - j <= 5 and self.toks[j].text not in (",", ".", ";", "and", "while"):
+            w = self.toks[j].text
+            if j in self.rel_at or (held and j in self.by_start and self._hand_object(j, k) is not None):
+                return None
+            verb = self._participle_at(j) or self._finite_at(j) or (_is_verb(w) and w not in _STOP)
+            if verb and j not in self.named_at:
+                return w
+            j -= 1
+        return None
+
+    def _device_verb_before(self, k: int) -> bool:
+        """A verb a person does with a small thing "on" which at ``k`` comes before it in the same
+        clause part, with nothing in hand between ("films it on a tablet", "plays a tune on a
+        flute"; "sharpens a knife on a whetstone" works the knife there): no posture, placing or
+        work in place ("sits on a cushion", "sets a cup on a tray", "chops onions on a board")."""
+        w = self._acting_verb(k, held=True)
+        return w is not None and not (_verb_stem(w, _PUT_OR_WORKED) or self._still(w))
+
+    def _works_on(self, k: int, target) -> bool:
+        """Whether a person's verb "on" a thing that carries nobody, at ``k``, is work done at it,
+        not standing on it ("a chef slices bread on a board", "two mechanics work on the engine";
+        but "reads a book on the bench": a seat, "stands on a crate": a posture)."""
+        w = self._acting_verb(k)
+        carrier = isinstance(target, list) and target and self._carrier(target[0])
+        return w is not None and isinstance(target, list) and bool(target) and not carrier and not self._still(w)
+
+    @staticmethod
+    def _still(w: str) -> bool:
+        """A verb of posture, being or hanging: one done where one is ("sits", "is", "dangles")."""
+        return load_vocabulary().is_posture_verb(w) or w in _COPULAS or w in _HANG_VERBS
+
+    def _device(self, m: _Mention) -> bool:
+        """A tabletop thing that holds nothing and carries nobody (a tablet, a flute, a notepad): what
+        one does something "on" with it in hand."""
+        record = m.guess if m.guess is not None else self.catalogue[m.category]
+        rests = self.groups[m.group].rests if m.group >= 0 else record.rests
+        return rests == "surface" and not getattr(record, "support", False)
+
+    def _used_at(self, k: int, ce: int) -> bool:
+        """Whether the word at ``k`` is a verb a person does with the thing right after it in hand:
+        any verb but those of :data:`_NOT_IN_HAND`, posture or looking out, when the thing is small
+        enough to hold ("checks a wristwatch next to the kiosk": in hand, and he is by the kiosk;
+        "turning a small jug"; "two men haul a trunk up the stairs")."""
+        w = self.toks[k].text
+        if k in self.named_at or k in self.content_at or w in _STOP or w in _COPULAS or not w.isalpha():
+            return False
+        vocabulary = load_vocabulary()
+        if _verb_stem(w, _NOT_IN_HAND) or vocabulary.is_posture_verb(w) or w in vocabulary.lookout_verbs:
+            return False
+        verb = w.endswith("ing") or _is_verb(w) or self._finite_at(k)
+        return verb and w not in _HANG_VERBS and self._hand_object(k + 1, ce) is not None
+
+    def _one_thing_after(self, k: int, ce: int) -> bool:
+        """The noun phrase right after ``k`` names one thing ("a trunk", not "trunks", "two trunks"
+        or "a pair of oars")."""
+        m = self._next_mention(k + 1, ce)
+        return m is not None and m.count <= 1 and not _is_plural(self.toks, m)
+
+    def _bearer_before(self, k: int) -> int | None:
+        """The person named right before a participle of holding or use at ``k``, with no comma
+        between: the one who holds ("ducks gather around a boy holding a loaf": the boy's, not the
+        ducks'; "..., holding a lamp" after a comma is the subject's)."""
+        w = self.toks[k].text
+        if not (w.endswith("ing") and w in _DEED_VERBS) or k not in self.ends:
+            return None
+        named = next((m.group for m in self.by_start.values() if m.end == k and m.group >= 0), None)
+        return named if named is not None and self._person_at(named) else None
+
+    def _keeps_by(self, g: int, h: int) -> tuple[int, int]:
+        """(who stands near whom) for two living things that go together, ``g`` named with or led
+        by ``h``: a person stands by livestock and mounts, which hold their place; a pet, or one
+        person with another, keeps by the one the text pairs it with."""
+        animal = self.groups[g]
+        herd = not self._person_at(g) and max(animal.size[:2]) >= _HERD_LENGTH and self._person_at(h)
+        return (h, g) if herd else (g, h)
+
+    def _borne(self, g: int, h: int) -> bool:
+        """A small thing an animal has with it is on the animal, as a person's is in hand: what it
+        wears, carries or has in its mouth ("three mules, each with a bell", "a dog with a
+        ball"); nothing as big as the animal ("a horse with a cart"); a robot's with-things are
+        its parts ("a robot with six arms")."""
+        animal, thing = self.groups[h], self.groups[g]
+        return (
+            self._living(h) and not self._person_at(h) and self.catalogue[animal.category].shape != "robot"
+            and self._handheld(g)
+            and max(thing.size) < 0.5 * max(animal.size)
+        )  # fmt: skip
 
     def _hand_object(self, start: int, ce: int, tool: bool = False) -> _Mention | None:
         """The thing named right after ``start`` when a person can have it in hand (with ``tool``,
@@ -78,15 +201,22 @@ class _Hands:
         rel = self.rel_at.get(end)
         return rel is not None and rel.end < ce and self.toks[rel.end].text in ("it", "them", "its", "their")
 
-    def _after_verb(self, k: int, over: tuple[str, ...] = ()) -> bool:
+    def _placed_after(self, end: int, ce: int) -> bool:
+        """A relation phrase right after a thing, or after one word that describes it ("a bible
+        open on a lectern", "an urn beside each bench")."""
+        return end in self.rel_at or (end + 1 < ce and self.toks[end].text.isalpha() and end + 1 in self.rel_at)
+
+    def _after_verb(self, k: int, over: tuple[str, ...] = (), worn: bool = False) -> bool:
         """Whether the word at ``k`` comes right after a verb, or after a verb and what it acts on
         ("practises with", "scrubs its back with", "tapping a heel with"), not after a noun phrase
         of its own ("a woman in a coat with ..."); the words ``over`` may lie between too
-        ("forks straw into it", "pushes the front one")."""
+        ("forks straw into it", "pushes the front one"); with ``worn``, a verb in -s after what
+        the doer wears ("a trader in a turban argues with"), which names no object."""
         j = k - 1
         while j >= 0 and k - j <= 6:
             w = self.toks[j].text
-            if self._participle_at(j) or self._finite_at(j):
+            finite = worn and _is_verb(w) and w not in _STOP and j not in self.named_at and j not in self.content_at
+            if self._participle_at(j) or self._finite_at(j) or finite:
                 return w not in _COPULAS
             if w in _STOP and w not in _DETERMINERS and w not in ("it", "them") and w not in over or not w[:1].isalpha():
                 return False
@@ -101,8 +231,9 @@ class _Hands:
         """A verb right after its subject ("a juggler practises", "two scouts sharpen"): a word
         after a noun phrase that is no phrase word, no noun and no describing word."""
         w = self.toks[j].text
-        # ("feed", "weed" end as past participles do, but are no describing words)
-        describing = load_vocabulary().is_adjective(w) and not w.endswith("eed")
+        # ("feed", "weed" end as past participles do, "play", "carry" as "rusty" does, but are no
+        # describing words)
+        describing = load_vocabulary().is_adjective(w) and not w.endswith("eed") and w not in _DEED_VERBS
         verb = w not in _STOP or _is_verb(w)  # ("sits", "stands" are stop words of noun phrases)
         return j in self.ends and j not in self.by_start and w.isalpha() and verb and not describing
 
@@ -112,7 +243,7 @@ class _Hands:
         "two children feed ducks from a footbridge"; not "pulls a rope from the barrel")."""
         perch = self._next_mention(k + 1, len(self.toks))
         ridden = perch is None or load_vocabulary().carries(perch.category, perch.phrase, _RIDDEN)
-        if not self._after_verb(k) or not ridden:
+        if not self._after_verb(k, worn=True) or not ridden:
             return False  # ("feeds the goats from a bucket": what the feed comes out of)
         j = k - 1
         while j >= 0 and k - j <= 6:
@@ -126,6 +257,29 @@ class _Hands:
                 return False  # the verb: it acts on nothing named ("jumps from the ledge")
             j -= 1
         return False
+
+    def _taken_from(self) -> list[_Rel]:
+        """"Lifts a tray from the counter", "two porters lift cases off it", "takes a jar out of
+        the cabinet": a small thing taken from something too big to hold puts the one who takes
+        it by that thing (a "near" phrase of their own; the thing is in hand), or on it when it
+        carries people ("launches a kite from the pier")."""
+        toks, out = self.toks, []
+        for k, tok in enumerate(toks):
+            if tok.text not in ("from", "off", "out") or (k in self.rel_at and self.rel_at[k].kind != "from"):
+                continue
+            end = k + 2 if tok.text == "out" and k + 1 < len(toks) and toks[k + 1].text == "of" else k + 1
+            if tok.text == "out" and end == k + 1:
+                continue
+            thing = next((m for m in self.by_start.values() if m.end == k), None)
+            if thing is None or self._hand_object(thing.start, k) is None or not self._after_verb(thing.start, worn=True):
+                continue  # ("a man from the village": no thing taken)
+            source = self._next_mention(end, len(toks))
+            pronoun = end < len(toks) and toks[end].text in ("it", "them")
+            if pronoun or (source is not None and self._hand_object(source.start, source.end) is None):
+                # ("launches a kite from the pier": what carries people is where the doer stands)
+                perch = not pronoun and load_vocabulary().carries(source.category, source.phrase, ("perches",))
+                out.append(_Rel("on" if perch else "near", k, end))
+        return out
 
     def _deed_on_pronoun(self, c: _Clause, k: int, doers: list[int], prev_subject: list[int]) -> None:
         """"Plays it from a bench", "scrubs its back", "forks straw into it", "pushes the front

@@ -98,6 +98,11 @@ class _Clause:
     hand: bool = False
     #: The holders share the one thing in hand ("sharing a thermos"): not one each.
     shared: bool = False
+    #: The with-things are living ones a verb's doer is with ("a groom waits with the ponies"):
+    #: the doer keeps the clause's next placing, they keep by the doer.
+    company: bool = False
+    #: With-things of "the other" of the holders ("one holding a lamp, the other a rope"): its second.
+    others: set[int] = field(default_factory=set)
     wsub_related: set[int] = field(default_factory=set)
     last_target: list[int] = field(default_factory=list)
     last_target_end: int = -1
@@ -373,6 +378,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         #: Words of a noun phrase, its describing words too ("a sleeping dog").
         self.named_at = {k for m in mentions for k in range(m.start - len(m.adjectives), m.end)}
         self.rel_at.update((r.start, r) for r in found if r.kind == "from" and self._acts_from(r.start))
+        self.rel_at.update((r.start, r) for r in self._taken_from())
         sentence_from = 0
         for sentence in _split(toks):
             self._recent_from, sentence_from = sentence_from, len(self.history)
@@ -668,11 +674,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 continue
             # ", holding a lamp": the subject before
             holder = c.main or (self.doers if participial else []) or list(prev_subject)
+            # ("ducks gather around a boy holding a loaf": the person right before the participle)
+            bearer = self._bearer_before(k)
+            holder = [bearer] if bearer is not None else holder
             # (a hand verb that opens a relation phrase is no holding: "waves at a passing van")
             # (an animal has in hand what it plays with or eats: "a bear bangs a spoon")
             hand = k not in self.rel_at and bool(holder) and (
                 (w in _HAND_VERBS and self._person_at(holder[-1]))
                 or (w in _USE_VERBS and self._living(holder[-1]) and self._hand_object(k + 1, ce) is not None)
+                or (self._person_at(holder[-1]) and self._used_at(k, ce))
             )
             # "sipping coffee from a paper cup", "practises with five clubs": in the doer's hand
             doer = (self.doers or list(prev_subject)) if participial else (c.subjects or holder)
@@ -691,7 +701,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     last_event_end = k
                     continue
                 self._close_with(c)  # "holds a horseshoe with tongs": the horseshoe is held before the tongs come
-                own = holder if tool_end is not None else (c.main or list(prev_subject))
+                own = holder if tool_end is not None or bearer is not None else (c.main or list(prev_subject))
                 c.head = [c.each] if c.each is not None else own
                 mine = nxt in _PERSON_POSSESSIVES  # "by the flag with his mallet": his, not the flag's
                 after_target = bool(c.last_target) and c.last_target_end == k
@@ -699,12 +709,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # ("a sheep waits by the gate with its shepherd": a living thing's companion is its own)
                 fellow = self._next_mention(k + 1, ce)
                 fellow = fellow is not None and self._lives(fellow.category) and all(self._living(h) for h in c.head)
+                c.company = fellow and w == "with" and self._after_verb(k, worn=True)
                 # ("a guard stands at the gate with a spear": nothing stands on a gate, the spear is his)
                 tool = self._hand_object(k + 1, ce, tool=True) if w == "with" else None
                 armed = tool is not None and not self._placed_by_pronoun(tool.end, ce) and all(
                     self._person_at(h) for h in c.head
                 ) and not any(self.catalogue[self.groups[t].category].support for t in c.last_target)
-                if armed and after_target:
+                # ("walks behind them with a broom": what a person works with is in hand, unless a
+                # phrase of its own places it: "with a bible open on a lectern")
+                if armed and (after_target or not self._placed_after(tool.end, ce)):
                     hand = True
                 if after_target and not fellow and not armed and (
                     (w == "with" and not mine and (self._animate(*c.head) or between)) or (w, nxt) in _HOLD_PAIRS
@@ -719,7 +732,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # "with his putter": a possessive after "with" says the person has it in hand
                 hand = hand or (w == "with" and mine and all(self._person_at(h) for h in c.head))
                 c.hold, c.hand = w in _HOLD or (w, nxt) in _HOLD_PAIRS or hand, hand
-                c.shared = w in _SHARE_VERBS
+                # ("two men haul a trunk": one thing a verb of several has in hand is theirs together)
+                c.shared = w in _SHARE_VERBS or (w != "with" and c.each is None and self._one_thing_after(k, ce))
                 k = tool_end if tool_end is not None else k + (2 if (w, nxt) in _HOLD_PAIRS else 1)
                 last_event_end = k
                 continue
@@ -743,7 +757,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     if c.wsub and any(w in _OWN_PLACE for w in gap):  # "a till at one end and a computer"
                         self._close_with(c)
                         c.wsub_before, closed = list(c.wsub), True
-                    if c.hand and c.wsub and any(w in _STOP and w not in ("and", "or") for w in gap):
+                    # ("one holding a lamp, the other a rope": the second holder's thing, its verb left out)
+                    other = [w for w in gap if w != ","][:2] in (["the", "other"], ["another", "a"], ["another", "an"])
+                    if c.hand and c.wsub and not other and any(w in _STOP and w not in ("and", "or") for w in gap):
                         # "waves a flag from a gantry": what is in hand is the noun right after
                         self._close_with(c)
                         c.head, c.wsub, c.hand, c.hold = None, [], False, False
@@ -751,6 +767,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                         last_event_end = m.end
                         continue
                     c.wsub = [g] if (c.expect_new or closed) else [*c.wsub, g]
+                    if other:
+                        c.others.add(g)
                 else:
                     c.main_groups.append(g)
                     # "an astronaut plants a flag next to it": the verb's object takes what follows,
@@ -767,7 +785,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     if into:
                         c.deeds[-1], c.deed_end = (c.deeds[-1][0], g), m.end
                     elif led:
-                        c.deeds.append(([g], c.main[-1]))
+                        follower, anchor = self._keeps_by(g, c.main[-1])
+                        c.deeds.append(([follower], anchor))
                     elif verb_object and self._living(c.main[-1]) and not c.expect_new:
                         c.deeds.append((list(c.main), g))
                         c.deed_end = m.end
@@ -889,18 +908,21 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # "a miner with a pickaxe", "waves a flag" (a horse held by the reins is no load)
                 held = (self._person_at(h) or c.hand and self._living(h)) and not self._living(g) and (
                     c.hand or self._handheld(g)
-                )
+                ) or self._borne(g, h)
                 if held and not c.hand and any(r[1] == g for r in self.relations):
                     continue  # "a clerk at the counter, with a radio beside it": placed on its own
                 # ("a squire holds a horse by the reins": too big for arms, by him; "a girl with her dog": by her)
                 big = c.hold and max(self.groups[g].size) > _HANDHELD_SIZE
                 placed = any(r[1] == g for r in self.relations)
                 if (big or c.hand or not c.hold) and self._living(g) and self._living(h) and not placed:
-                    self._relate("near", [g], h)  # "a dog waits with its handler", "a farmer with two sheepdogs"
+                    # ("a groom holds a pony by the reins": what one holds keeps by one, whatever its size)
+                    follower, anchor = (g, h) if c.hold and not c.company else self._keeps_by(g, h)
+                    # "a dog waits with its handler", "a farmer with two sheepdogs"
+                    self._relate("near", [follower], anchor)
                     c.produced = True
                     continue
                 if c.hold or held or (rests == "surface" and self.catalogue[self.groups[h].category].support):
-                    self._relate("on", [g], h)
+                    self._relate("on", [g], h, instance=1 if g in c.others and self.groups[h].count > 1 else None)
                     c.produced = True
                     if held or (c.hold and self._person_at(h) and not self._living(g)):
                         if not c.shared:
@@ -949,10 +971,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             kind = "no relation"  # "two men face each other across the bench": the bench is between them
         if kind == "face to" and self._across_from(rel.start, end):
             kind = "opposite"  # "a sofa faces the piano from across the room", "Across the street, a kiosk faces the shelter"
-        carried_on = ("on", "on top", "in", "under", "on a carrier")
-        if (body == "near" and kind != "around") or (body == "on" and kind in carried_on):
-            # ("hens around her feet" stay around her; "a surfboard under his arm", "an axe across his
-            # knees" is carried)
+        # ("hens around her feet" stay around her; "a surfboard under his arm", "an axe across his
+        # knees", "a bag over her shoulder", "a snake around his neck" are carried)
+        carried = ("on", "on top", "in", "under", "over", "around", "no relation", "on a carrier")
+        if (body == "near" and kind != "around") or (body == "on" and kind in carried):
             kind = body
         elif body == "on" and kind == "at":  # "a shelf at his back": behind him, not carried
             kind, body = "behind" if any(t.text == "back" for t in toks[rel.end : end]) else "near", None
@@ -1010,8 +1032,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return k
         elif c.head is not None:
             # contents are no verbs: "a cart with a bowl of apples on it" keeps the bowl as the source
+            # ("ladies with parasols stroll along it": a plural verb has no -s, it comes right after a noun)
             closed = any(
-                _is_verb(toks[k].text)
+                _is_verb(toks[k].text) or self._finite_at(k)
                 for k in range(last_event_end, rel.start + 1)  # "with parrots inside hangs from": its own verb
                 if k not in self.content_at and toks[k - 1].text not in ("of", "in")  # "a farmer in dungarees"
                 and toks[k - 1].text not in _DETERMINERS
@@ -1024,6 +1047,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             in_hand = holding and target not in _PERSONAL and (kind in _GROUND_KINDS or kind in _HOLDER_KINDS)
             # ("with his terrier asleep under it": a living with-thing is no thing in hand, its phrase places it)
             in_hand = in_hand and not any(self._living(g) for g in c.wsub)
+            # ("a groom waits with the ponies beside a shed": the groom is there, the ponies with him)
+            company = c.company and target not in _PERSONAL and kind in (*_GROUND_KINDS, "at", "between", "under")
+            in_hand = in_hand or company
             # the with-part named stuff that is no object of its own ("with geraniums"; not "with a
             # great bible", one thing the catalogue does not know), and no verb of the head's ("a man
             # with a hat sits in a chair")
@@ -1071,8 +1097,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # "a smith hammers a horseshoe on the anvil", "a cook stirs a pot over the fire": the
                 # thing acted on is there (its doer by it: :meth:`_do_deeds`)
                 srcs = [acted]
-        if kind == "on" and srcs and all(self._person_at(g) for g in srcs) and self._pair_before(rel.start):
-            kind = "near"  # "a girl writes on the blackboard": at it (a slate in hand was read as held)
+        if kind == "on" and srcs and all(self._person_at(g) for g in srcs) and (
+            self._pair_before(rel.start) or self._works_on(rel.start, target)
+        ):  # "a girl writes on the blackboard", "a chef slices bread on a board": at it, not on it
+            kind = "near"
         if kind == "from" and c.deeds and c.deed_end in (last_event_end, rel.start):
             srcs = list(c.deeds[-1][0])  # "two children feed ducks from a footbridge": the children are on it
         if kind == "from" and not any(self._living(g) for g in srcs):

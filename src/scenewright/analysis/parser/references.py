@@ -345,8 +345,12 @@ class _References:
         """Whom "him" / "her" (or "their" before a body part) names: the clause's own living
         subject, else the latest living thing mentioned before, of a sex the pronoun agrees
         with ("her" is not the dad) and, for "their", several."""
-        # "..., with his cat at his feet": the with-part's owner before the things it lists
-        order = [*c.subjects, *(c.head or []), *c.main_groups, *reversed(c.groups), *reversed(self.history)]
+        # "..., with his cat at his feet": the with-part's owner before the things it lists; then
+        # the doers of the clause before ("... while her cousin waits beside her, a map under his
+        # arm": the cousin, not whom he waits beside)
+        order = [
+            *c.subjects, *(c.head or []), *c.main_groups, *reversed(c.groups), *self.doers, *reversed(self.history)
+        ]  # fmt: skip
         vocabulary = load_vocabulary()
 
         def fits(g: int) -> bool:

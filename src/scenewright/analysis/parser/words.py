@@ -141,6 +141,31 @@ _USE_VERBS = {
     "inspect", "inspects", "inspecting", "examine", "examines", "examining", "study", "studies", "studying",
     "count", "counts", "counting", "blow", "blows", "blowing", "tune", "tunes", "tuning",
 }  # fmt: skip
+#: Verbs of placing or of work done where the thing lies, by their stem (:func:`_verb_stem`): their
+#: small object is not in the doer's hand ("sets a cup on the tray", "stirs a pot on the stove",
+#: "chops onions", "pushes a pram"), nor is a small thing they are done "on".
+_PUT_OR_WORKED = {
+    # placing
+    "put", "place", "set", "lay", "stack", "arrange", "hang", "mount", "plant", "drop", "leave", "lean",
+    "prop", "pile", "load", "unload", "fill", "empty", "spread", "scatter", "tip", "dump", "lower", "store",
+    "stock", "display", "pack", "unpack", "stuff",
+    # work in place
+    "stir", "chop", "cut", "slice", "dice", "knead", "hammer", "weld", "forge", "fry", "grill", "roast",
+    "bake", "cook", "boil", "wash", "scrub", "sweep", "mop", "water", "repair", "fix", "assemble", "build",
+    "open", "close", "lock", "unlock", "shoe", "dig", "rake", "shovel", "split", "saw", "plough", "plow",
+    "light", "stoke", "tend", "fan", "push",
+}  # fmt: skip
+#: Verbs of sense, pursuit, trade and going, by their stem: what they take reaches the doer from afar
+#: or stays where it is ("watches a kite", "kicks a ball", "sells lanterns", "leads a pony").
+_FROM_AFAR = {
+    "watch", "see", "eye", "admire", "observe", "chase", "follow", "kick", "throw", "face", "guard",
+    "approach", "pursue", "film", "photograph", "point", "sell", "serve", "hunt", "stalk", "sniff",
+    "ignore", "greet", "wait", "guide", "lead", "walk", "ride", "drive", "steer", "board", "climb", "cross",
+    "enter", "circle", "block",
+}  # fmt: skip
+#: Verbs whose small object is not in hand: any other verb a person does to a thing small enough to
+#: hold has it in hand ("checks a wristwatch", "turning a small jug", "haul a trunk up the stairs").
+_NOT_IN_HAND = _PUT_OR_WORKED | _FROM_AFAR
 #: Words that start a with-thing's own placing ("with a till at one end and a computer ...").
 _OWN_PLACE = {"at", "in", "along", "against", "under", "inside"}
 #: Possessives whose noun, when no object, is a part of what the pronoun names ("its door").
@@ -154,6 +179,19 @@ ORDINALS = {
 }  # fmt: skip
 #: Words that pick one of a group the text named before ("the other chair", "the last lamp").
 _ORDINALS = {**ORDINALS, "last": -1, "left": 0, "right": -1, "other": -1, "nearest": 0}
+
+
+def _verb_stem(word: str, stems: set[str]) -> bool:
+    """Whether ``word`` is a form of one of ``stems`` ("stirs", "stirring", "chopped", "bakes")."""
+    w = word.lower()
+    forms = {w}
+    for end in ("ing", "ed", "es", "s"):
+        if w.endswith(end) and len(w) - len(end) >= 2:
+            base = w[: -len(end)]
+            forms |= {base, base + "e"}
+            if len(base) > 2 and base[-1] == base[-2]:
+                forms.add(base[:-1])  # "stirring", "chopped"
+    return bool(forms & stems)
 
 
 def _is_verb(word: str) -> bool:
