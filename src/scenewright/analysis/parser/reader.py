@@ -1118,6 +1118,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # them is what goes there ("two rescuers carry a stretcher towards the helicopter": they face it)
         trailing = {t for k, ts in c.rels if k == "towing" for t in ts}
         trailing |= {d for doers, thing in c.deeds if thing in srcs for d in doers}
+        trailing |= {thing for doers, thing in c.deeds if any(d in srcs for d in doers)}  # what they lead
         trailing |= {g for g, holder in self.carried if holder in srcs}
         objects = [g for g in c.main_groups if g not in c.subjects and g not in trailing]
         # what pulls a load moves under its own power, whatever the catalogue calls it ("a skidder hauls timber")
