@@ -284,3 +284,14 @@ def test_worn_things_between_a_doer_and_its_verb_do_not_hide_the_verb():
     assert {("porter_1", "side of", "kiosk_1"), ("driver_1", "near", "porter_1")} <= found, found
     found = rels("A sailor in oilskins launches a kite from the pier.")  # a perch: on it
     assert {("sailor_1", "on", "pier_1"), ("kite_1", "on", "sailor_1")} <= found, found
+
+
+@pytest.mark.parametrize(
+    ("text", "held"),
+    [
+        ("A sheriff stands by the saloon door, pistol in hand.", ("pistol_1", "on", "sheriff_1")),
+        ("A girl waits at the gate, umbrella in hand, and a dog sits beside her.", ("umbrella_1", "on", "girl_1")),
+    ],
+)
+def test_a_thing_in_hand_after_a_comma_is_held_by_whom_the_clause_is_about(text, held):
+    assert held in rels(text)

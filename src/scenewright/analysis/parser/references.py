@@ -185,8 +185,8 @@ class _References:
         while k < ce and toks[k].text in ("one", "of", "both", "each", "either"):
             k += 1  # "on one of her knees"
         vocabulary = load_vocabulary()
-        if pos < k < ce and toks[k].text in _HOLDING_PARTS and k not in starts:
-            # "a glass in one hand", "a sword in each hand": whoever the clause is about
+        if k < ce and (pos < k or toks[k].text in ("hand", "hands")) and toks[k].text in _HOLDING_PARTS and k not in starts:
+            # "a glass in one hand", "a sword in each hand", ", baton in hand": whoever the clause is about
             self._body_part = vocabulary.body_parts[toks[k].text]
             return "someone", k + 1
         if k + 1 >= ce or toks[k].text not in _PERSON_POSSESSIVES:
