@@ -207,3 +207,13 @@ def test_a_thing_named_before_another_that_hangs_from_the_ceiling_stays_on_the_f
                          "lanterns hang from the ceiling above the tables.")
     got = {(r.source, r.relation) for r in wall_phrases(parsed)}
     assert ("lantern_1", "on ceiling") in got and not any(s.startswith("counter") for s, _ in got)
+
+
+def test_a_thing_hung_from_something_overhead_that_is_no_thing_hangs_from_the_ceiling():
+    """"hang from the X overhead": whatever the X is called (a catwalk, a loft), what hangs from it
+    hangs from the room's top; a thing of the scene named there carries what hangs from it."""
+    parsed = parse_scene("A film studio. Six floodlights hang from the steel catwalk overhead, and a camera "
+                         "stands on a dolly.")
+    got = {(r.source, r.relation) for r in wall_phrases(parsed)}
+    assert ("floodlight_6", "on ceiling") in got
+    assert not any(s.startswith("camera") or s.startswith("dolly") for s, _ in got)

@@ -333,6 +333,9 @@ _FIXING = r"(?:hang|hangs|hanging|hung|mounted|fixed|pinned|nailed|fastened|bolt
 #: strings hooked to the ceiling", "fixed to the ceiling".
 _CEILING_PHRASE = re.compile(
     r"\b(?:(?:" + _FIXING + r"|dangles?|dangling|swings?)\s+(?:[\w-]+\s+){0,4}?(?:from|to)|on)\s+the\s+(?:[\w-]+\s+){0,2}?ceiling\b"
+    # what hangs from something "overhead" that is no thing of the scene hangs from the room's top
+    # ("sandbags hang from the fly gallery overhead"; a named rack overhead carries its pans)
+    r"|\b(?:" + _FIXING + r"|dangles?|dangling|swings?)\s+from\s+the\s+(?:[\w-]+\s+){1,3}?overhead\b"
 )
 #: Verbs that put a thing *on* a wall rather than against it.
 _MOUNTED = re.compile(r"\b" + _FIXING + r"\b")
