@@ -306,7 +306,7 @@ def _hanging_rack(m: Model) -> None:
     """A rack things hang from (tongs, tools, weapons, coats): an open frame with a top bar of
     pegs, the things hanging from them side by side, a foot rail where long ones rest."""
     m.main = "dark_wood"
-    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    H = m.sz
     inner, r = _rack_frame(m, "dark_wood")
     m.cylinder("dark_wood", (-inner, 0, 0.9 * H), (inner, 0, 0.9 * H), r, fraction=0.4)
     m.cylinder("dark_wood", (-inner, 0, 0.15 * H), (inner, 0, 0.15 * H), 0.8 * r, fraction=0.4)
@@ -352,7 +352,7 @@ def _bottle_rack(m: Model) -> None:
 def _weights_rack(m: Model) -> None:
     """A dumbbell rack: a frame with two sloping rails, dumbbells lying across them."""
     m.main = "dark_metal"
-    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    D, H = m.sy / 2, m.sz
     inner, r = _rack_frame(m, "dark_metal")
     for y0, y1, z0, z1 in ((-0.9 * D, 0.0, 0.55 * H, 0.62 * H), (0.0, 0.9 * D, 0.85 * H, 0.92 * H)):
         m.box("metal", (-inner, y0, z0), (inner, y1, z0 + 0.3 * r), rounded=0.0)
@@ -370,7 +370,7 @@ def _slatted_rack(m: Model) -> None:
     """A plain rack (shoes, boots, crates, goods): an open frame with slatted levels, the top
     one flush with the frame's top so what stands on the rack stands on slats."""
     m.main = "wood"
-    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    D, H = m.sy / 2, m.sz
     inner, r = _rack_frame(m, "dark_wood")
     levels = max(2, min(5, int(round(H / 0.4))))
     slats = max(3, int(m.sy / 0.07))
