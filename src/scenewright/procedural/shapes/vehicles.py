@@ -8,6 +8,7 @@ import numpy as np
 
 from scenewright.procedural import parts as P
 from scenewright.procedural.builder import Model
+from scenewright.procedural.material import COLOURS
 from scenewright.procedural.shapes.frames import ring
 
 
@@ -19,8 +20,28 @@ def _wheel(m: Model, x: float, y: float, r: float, width: float, outward: int) -
     m.cylinder("metal", (face, y, r), (face + outward * 0.01, y, r), 0.55 * r, fraction=0.6)
 
 
-def car(m: Model) -> None:
+#: Vehicles whose trade fixes their colour, by their words; the first found paints them.
+_LIVERIES = (
+    (("fire engine", "fire truck", "fire tender", "mail van", "post van", "postal"), "red"),
+    (("taxi", "school bus", "taxicab"), "yellow"),
+    (("police", "ambulance", "ice cream"), "white"),
+    (("army", "military"), "olive"),
+)
+#: Colours cars, vans and buses come in: one per vehicle (seeded by its id), so a car park is
+#: not a row of one red.
+_PAINTS = ("white", "silver", "black", "charcoal", "navy", "blue", "maroon", "red", "green", "beige")
+
+
+def _livery(m: Model) -> None:
+    """Paint is the main role; its colour by the vehicle's trade, else one of :data:`_PAINTS`
+    (a colour the text names still wins: it is described)."""
     m.main = "paint"
+    name = next((colour for words, colour in _LIVERIES if m.has(*words)), None)
+    m.tints["paint"] = COLOURS[name or _PAINTS[int(m.rng.integers(len(_PAINTS)))]]
+
+
+def car(m: Model) -> None:
+    _livery(m)
     wr = min(0.2 * m.sz, 0.11 * m.sy)
     body_lo, body_hi = 0.35 * wr, 0.55 * m.sz
     L = m.sy / 2
@@ -53,7 +74,7 @@ def truck(m: Model) -> None:
         vehicle(m)
         return
     food = m.named("food truck", "ice cream truck", "food van")
-    m.main = "paint"
+    _livery(m)
     wr = min(0.17 * m.sz, 0.07 * m.sy)
     chassis = 1.2 * wr
     L = m.sy / 2
@@ -82,7 +103,7 @@ def bus(m: Model) -> None:
     if m.named("tram", "streetcar"):  # the catalogue files trams with buses; they run on rails
         _railcars(m)
         return
-    m.main = "paint"
+    _livery(m)
     wr = min(0.16 * m.sz, 0.05 * m.sy)
     L = m.sy / 2
     m.box("paint", (-m.sx / 2 + 0.02, -L, 0.6 * wr), (m.sx / 2 - 0.02, L, m.sz))
@@ -101,7 +122,7 @@ def bus(m: Model) -> None:
 
 
 def _motorcycle(m: Model) -> None:
-    m.main = "paint"
+    _livery(m)
     r = min(0.3 * m.sy, 0.33 * m.sz)
     tyre = 0.35 * r
     yf, yr = -m.sy / 2 + r, m.sy / 2 - r
@@ -123,7 +144,7 @@ def bicycle(m: Model) -> None:
     if m.named("motorcycle", "motorbike", "scooter", "moped"):
         _motorcycle(m)
         return
-    m.main = "paint"
+    _livery(m)
     r = min(0.25 * m.sy, 0.36 * m.sz)  # two wheels, never overlapping
     tube = m.thick(0.018, 0.2 * m.sx)
     yf, yr = -m.sy / 2 + r, m.sy / 2 - r
