@@ -249,11 +249,64 @@ def _trolley(m: Model) -> None:
                fraction=0.4)
 
 
+def _sledge(m: Model) -> None:
+    """A sledge on two runners that curl up at the front, a slatted bed on struts; a sleigh
+    (by its word) also gets high curved sides and a seat."""
+    m.main = "wood"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    sleigh = m.named("sleigh")
+    runner = "metal" if sleigh else "dark_wood"
+    r = m.thick(0.02, 0.08 * W) + 0.004
+    bed = (0.35 if sleigh else 0.7) * H
+    curl = min(0.25 * m.sy, 0.8 * bed)
+    arc = [(-L + curl - curl * np.sin(a), r + curl * (1 - np.cos(a))) for a in np.linspace(0, np.pi / 2, 4)]
+    for x in (-0.8 * W, 0.8 * W):
+        m.cylinder(runner, (x, arc[0][0], r), (x, L, r), r, fraction=0.4)
+        for k, ((y0, z0), (y1, z1)) in enumerate(zip(arc, arc[1:])):  # the curl, each piece a hair thinner
+            m.beam(runner, (x, y0, z0), (x, y1, z1), 2 * r * (1 - 0.03 * k))
+        for y in (-0.45 * L, 0.1 * L, 0.65 * L):
+            m.post("dark_wood", x, y, 2 * r, bed + 0.02 * H, 0.8 * r, fraction=0.3)
+    for k in range(5):  # slats a hair apart: boards that touch would share a face
+        y0 = -0.6 * L + k * 1.5 * L / 5
+        m.box("wood", (-0.94 * W, y0, bed), (0.94 * W, y0 + 0.26 * L, bed + 0.1 * H))
+    if sleigh:
+        low = bed - 0.03 * H  # below the slats' underside, which would otherwise share its plane
+        side = [(-0.7 * L, low), (L, low), (L, H), (0.5 * L, 0.75 * H), (-0.55 * L, 0.75 * H), (-0.7 * L, 0.95 * H)]
+        for x in (-W, W - 0.06 * m.sx):
+            m.extrude("paint", side, "x", x, x + 0.06 * m.sx)
+        m.box("fabric", (-0.92 * W, 0.35 * L, bed + 0.08 * H), (0.92 * W, 0.8 * L, 0.6 * H))
+
+
+def _wheelbarrow(m: Model) -> None:
+    """A wheelbarrow: a sloped tub over one wheel at the front, two legs and two handles
+    running back from under the tub."""
+    m.main = "paint"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    wr = min(0.3 * H, 0.17 * m.sy)
+    floor = 0.55 * H  # the cart's rest height (data/catalogue.json): what it carries sits here
+    m.lathe("paint", [(0.0, floor - 0.03 * H), (0.5 * W, floor - 0.03 * H), (0.62 * W, floor), (0.95 * W, H - 0.04 * H), (0.99 * W, H)],
+            centre=(0, -0.05 * L, 0), scale=(1.0, 0.55 * L / W))
+    m.box("dark_metal", (-0.45 * W, -0.35 * L, floor - 0.05 * H), (0.45 * W, 0.25 * L, floor - 0.02 * H))
+    m.cylinder("rubber", (-0.12 * W, -L + wr, wr), (0.12 * W, -L + wr, wr), wr, fraction=0.6)
+    m.cylinder("metal", (-0.14 * W, -L + wr, wr), (0.14 * W, -L + wr, wr), 0.3 * wr, fraction=0.4)
+    for s in (-1, 1):
+        m.beam("wood", (s * 0.14 * W, -L + wr, wr), (s * 0.55 * W, L, floor + 0.05 * H), 0.05 * W + 0.01)
+        m.post("dark_metal", s * 0.45 * W, 0.45 * L, 0, floor - 0.02 * H, 0.03 * W + 0.005, fraction=0.3)
+        m.cylinder("dark_plastic", (s * 0.55 * W, 0.85 * L, floor + 0.04 * H), (s * 0.57 * W, L, floor + 0.05 * H), 0.04 * W + 0.008,
+                   fraction=0.4)
+
+
 def cart(m: Model) -> None:
-    """A wooden cart on two spoked wheels with shafts; a mine cart, or a hand trolley (luggage,
-    baggage, shopping...) by its words."""
+    """A wooden cart on two spoked wheels with shafts; a mine cart, a sledge, a wheelbarrow or
+    a hand trolley (luggage, baggage, shopping...) by its words."""
     if m.named("minecart", "mine cart", "mine car", "ore cart", "ore car"):
         _minecart(m)
+        return
+    if m.named("sled", "sledge", "sleigh", "toboggan", "sledges"):
+        _sledge(m)
+        return
+    if m.named("wheelbarrow", "barrow"):
+        _wheelbarrow(m)
         return
     if m.has(*_TROLLEY):
         _trolley(m)
