@@ -394,6 +394,7 @@ VARIANTS = [
     ("bookshelf", "shelf bookshelf", "ceramic"), ("cart", "luggage cart", "rubber"), ("vehicle", "baggage trolley", "rubber"),
     ("panel", "cricket scoreboard", "lacquer"), ("panel", "painted backdrop", "leaf"), ("tent", "forecourt canopy", "light"),
     ("cart", "wooden sledge", "dark_wood"), ("cart", "sleigh", "fabric"), ("cart", "wheelbarrow", "rubber"),
+    ("machine", "weighing scales", "brass"), ("vehicle", "touring caravan", "canvas_alt"),
 ]
 
 

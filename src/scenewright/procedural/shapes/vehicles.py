@@ -858,8 +858,33 @@ _WATERCRAFT = re.compile(r"\b(?:\w*boat|\w+ship|ship|barge|canoe|kayak|raft|ferr
                          r"sampan|trawler|schooner|frigate|steamer|clipper)s?\b")
 
 
+def _caravan(m: Model) -> None:
+    """A touring caravan: a tall white box on one axle in its middle, a coloured band, windows
+    and a door along its sides, an A-frame drawbar with a jockey wheel at the front (not a car
+    six metres long)."""
+    m.main = "canvas_alt"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    wr = min(0.12 * H, 0.06 * m.sy)
+    lo = 1.5 * wr
+    y0 = -L + 0.15 * m.sy  # the body's front; the drawbar reaches forward from it
+    m.box("canvas_alt", (-W, y0, lo), (W, L, H))
+    m.box("paint", (-W - 0.005, y0 + 0.02, 0.42 * H), (W + 0.005, L - 0.02, 0.48 * H), rounded=0.0)
+    span = L - y0
+    for a, b in ((0.08, 0.4), (0.72, 0.93)):
+        m.box("glass", (-W - 0.008, y0 + a * span, 0.58 * H), (W + 0.008, y0 + b * span, 0.8 * H), rounded=0.0)
+    m.box("dark_plastic", (W - 0.01, y0 + 0.5 * span, lo + 0.04 * H), (W + 0.01, y0 + 0.64 * span, 0.85 * H), rounded=0.0)
+    m.box("glass", (-0.6 * W, y0 - 0.008, 0.55 * H), (0.6 * W, y0 + 0.02, 0.75 * H), rounded=0.0)
+    axle = y0 + 0.55 * span
+    for s in (-1, 1):
+        _wheel(m, s * (W + 0.01), axle, wr, 0.1 * m.sx, s)  # its face clear of the body side
+        m.beam("dark_metal", (s * 0.5 * W, y0 + 0.01, lo + 0.01), (s * 0.02, -L + 0.03, 0.8 * lo), 0.04 * W + 0.02 + 0.002 * (s + 1))
+    m.ball("dark_metal", (0, -L + 0.03, 0.8 * lo), (0.035,) * 3, fraction=0.4)
+    m.post("metal", 0, -L + 0.06 * m.sy, 0.35 * wr, lo, 0.02 + 0.01 * W, fraction=0.4)
+    m.cylinder("rubber", (-0.04, -L + 0.06 * m.sy, 0.35 * wr), (0.04, -L + 0.06 * m.sy, 0.35 * wr), 0.35 * wr, fraction=0.5)
+
+
 def vehicle(m: Model) -> None:
-    """A vehicle the catalogue does not know: tractor, forklift, golf cart, cart, battle
+    """A vehicle the catalogue does not know: tractor, forklift, golf cart, caravan, cart, battle
     tank, snowmobile, tracked crawler, train (steam or a diesel/electric unit, by its words), an aeroplane
     (propellers or jets, by its words), a flying craft (drone, spaceship, saucer), a boat (a name ending in -boat or -ship); else a car."""
     variants = (
@@ -872,6 +897,7 @@ def vehicle(m: Model) -> None:
         (("locomotive", "train", "engine car", "steam engine", "railcar", "railbus", "multiple unit"), _train),
         (("hot air balloon", "balloon"), _balloon),
         (("minecart", "mine cart", "mine car", "ore cart", "ore car"), _minecart),
+        (("caravan", "camper trailer", "travel trailer", "trailer home", "mobile home"), _caravan),
         (("cart", "wagon", "carriage", "wheelbarrow", "trolley", "chariot", "trailer"), cart),
         (("pram", "stroller", "pushchair", "baby carriage", "perambulator"), _pram),
         (("helicopter", "chopper", "gyrocopter"), _helicopter),
