@@ -395,6 +395,7 @@ VARIANTS = [
     ("panel", "cricket scoreboard", "lacquer"), ("panel", "painted backdrop", "leaf"), ("tent", "forecourt canopy", "light"),
     ("cart", "wooden sledge", "dark_wood"), ("cart", "sleigh", "fabric"), ("cart", "wheelbarrow", "rubber"),
     ("machine", "weighing scales", "brass"), ("vehicle", "touring caravan", "canvas_alt"),
+    ("generic", "dragon egg", "scales"), ("container", "nest", "straw"),
 ]
 
 

@@ -608,10 +608,25 @@ def _hatbox(m: Model) -> None:
     m.lathe("accent", [(0.475, 0.35 * m.sz), (0.475, 0.45 * m.sz)], scale=(m.sx, m.sy), fraction=0.7)
 
 
+def _nest(m: Model) -> None:
+    """A nest: a low round bowl of woven twigs, stray sticks poking out of its rim (not a box,
+    which the eggs put in it made a crate of)."""
+    m.main = "straw"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.lathe("straw", [(0.0, 0.25 * H), (0.3, 0.3 * H), (0.42, 0.6 * H), (0.5, 0.85 * H), (0.47, H), (0.36, 0.7 * H),
+                      (0.2, 0.45 * H), (0.0, 0.42 * H)], scale=(m.sx, m.sy))
+    m.lathe("dark_wood", [(0.35, 0.0), (0.45, 0.1 * H), (0.5, 0.3 * H)], scale=(m.sx, m.sy), fraction=0.6)
+    for k in range(7):
+        a = 2 * np.pi * k / 7 + 0.3
+        r0, r1 = 0.4, 0.55
+        m.beam("dark_wood", (r0 * np.cos(a) * m.sx, r0 * np.sin(a) * m.sy, 0.7 * H),
+               (r1 * np.cos(a + 0.4) * m.sx, r1 * np.sin(a + 0.4) * m.sy, 0.9 * H), 0.006 + 0.02 * min(W, D) * (1 + 0.05 * k))
+
+
 def container(m: Model) -> None:
     """Something that holds things: a cardboard box, a treasure chest, a travel trunk, a
     suitcase, a backpack, a sack, a basket, a cool box, a cage, a pen, a lobster pot, a
-    spool, a hatbox; else a box. The variant named first wins ("ice chest cooler" is a cool box)."""
+    spool, a hatbox, a nest; else a box. The variant named first wins ("ice chest cooler" is a cool box)."""
     variants = (
         (("chest", "treasure", "coffer"), _chest),
         (("trunk", "footlocker"), _trunk),
@@ -625,6 +640,7 @@ def container(m: Model) -> None:
         (("lobster pot", "crab pot", "creel", "fish trap"), _creel),
         (("spool", "reel", "bobbin", "cable drum"), _spool),
         (("hatbox", "hat box"), _hatbox),
+        (("nest", "nests"), _nest),
     )
     build = m.first_named(variants)
     if build is _chest:
