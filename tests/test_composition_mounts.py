@@ -21,6 +21,25 @@ def test_outdoors_a_wall_thing_on_nothing_stands_on_a_post_behind_what_it_hangs_
     assert guessed.relations[0].relation == "near"  # a guessed "above" gives a place, not a height
 
 
+def test_outdoors_a_light_the_reader_only_guessed_hanging_stands_on_a_post():
+    """"Paper lanterns hang from the eaves" with no eaves read: hung over the nearest thing, a
+    guess, it would float; on a post it stands near that thing. A stated ``above`` stays, and
+    what is no light (a drone "hovering over the field", read as hanging) keeps flying."""
+    lamp = ParsedObject("lantern_1", "lantern", "lantern", "paper lantern", (0.25, 0.25, 0.4), 3)
+    scene = _scene(False, [ParsedRelation("lantern_1", "above", "bench_1", inferred=True)])
+    out = on_posts(ParsedScene("", [*scene.objects, lamp], scene.relations, "realistic", "grass", False))
+    assert out.objects[-1].size[2] == 0.4 + POST and POSTED in out.objects[-1].description
+    assert [(r.relation, r.target) for r in out.relations] == [("near", "bench_1")]
+    said = ParsedScene("", [*scene.objects[1:], lamp], [ParsedRelation("lantern_1", "above", "bench_1")], "realistic", "grass", False)
+    assert on_posts(said) == said
+    indoor = ParsedScene("", [*scene.objects, lamp], scene.relations, "realistic", "wood", True)
+    assert on_posts(indoor) == indoor
+    drone = ParsedObject("drone_1", "drone", "drone", "drone", (0.6, 0.6, 0.2), 3)
+    flying = ParsedScene("", [*scene.objects[1:], drone], [ParsedRelation("drone_1", "above", "bench_1", inferred=True)],
+                         "realistic", "grass", False)
+    assert on_posts(flying) == flying
+
+
 def test_indoors_or_on_a_host_a_wall_thing_stays_as_it_was():
     indoor = _scene(True, [ParsedRelation("mirror_1", "above", "bench_1")])
     assert on_posts(indoor) == indoor

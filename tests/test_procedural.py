@@ -217,6 +217,23 @@ def test_colour_before_a_part_noun_goes_to_that_part():
     assert lamp["shade"][1] > lamp["shade"][0] and min(lamp["ceramic"]) > 0.8
 
 
+def test_vehicles_come_in_many_colours_unless_their_trade_or_the_text_fixes_one():
+    """A car park of undescribed cars is not one red: each vehicle's paint is picked by its seed;
+    a fire engine stays red, a taxi yellow, and a colour the text names wins."""
+    def paint(name: str, seed: int, description: str = "", style: str = "realistic"):
+        return tuple(base_colours(build_model("car", (1.9, 4.5, 1.5), style, seed, description, name=name))["paint"])
+
+    assert len({paint("hatchback", seed) for seed in range(12)}) >= 4
+    assert paint("hatchback", 3) == paint("hatchback", 3)
+    fire = paint("fire engine", 5)
+    assert fire[0] > 0.5 and fire[0] > 3 * fire[1]
+    taxi = paint("taxi", 5)
+    assert taxi[0] > 0.6 and taxi[1] > 0.6 and taxi[2] < 0.4
+    green = paint("hatchback", 5, "a green hatchback")
+    assert green[1] > green[0] and green[1] > green[2]
+    assert len({paint("hatchback", seed, style="steampunk") for seed in range(6)}) == 1  # the style's own paint
+
+
 def test_material_words_set_the_surface():
     chrome = build_model("table", (1.2, 0.8, 0.75), "realistic", 1, "a polished chrome table").geometry["wood"]
     assert chrome.visual.material.metallicFactor == 1.0 and chrome.visual.material.roughnessFactor < 0.1
@@ -375,6 +392,10 @@ VARIANTS = [
     ("boat", "rowing boat", "dark_wood"), ("boat", "viking longship", "canvas"), ("vehicle", "jet plane", "plastic"),
     ("vehicle", "twin-propeller airplane", "plastic"), ("vehicle", "flying saucer", "dark_metal"),
     ("bookshelf", "shelf bookshelf", "ceramic"), ("cart", "luggage cart", "rubber"), ("vehicle", "baggage trolley", "rubber"),
+    ("panel", "cricket scoreboard", "lacquer"), ("panel", "painted backdrop", "leaf"), ("tent", "forecourt canopy", "light"),
+    ("cart", "wooden sledge", "dark_wood"), ("cart", "sleigh", "fabric"), ("cart", "wheelbarrow", "rubber"),
+    ("machine", "weighing scales", "brass"), ("vehicle", "touring caravan", "canvas_alt"),
+    ("generic", "dragon egg", "scales"), ("container", "nest", "straw"),
 ]
 
 

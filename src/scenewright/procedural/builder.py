@@ -52,6 +52,9 @@ class Model:
         self.main = main
         self.parts: dict[str, list[P.Part]] = defaultdict(list)
         self.neon = NEONS[int(rng.integers(len(NEONS)))]
+        #: Role → colour a generator chose where the text names none (a car's paint, one of the
+        #: colours cars come in): applied as if described, so a colour the text names wins.
+        self.tints: dict[str, tuple[float, float, float]] = {}
         #: Role → its glTF material, exact, as :meth:`finish` made it (trimesh keeps 8 bits).
         self.materials: dict[str, dict] = {}
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import hashlib
 import re
+from dataclasses import replace
 from functools import cache
 from pathlib import Path
 
@@ -115,7 +116,10 @@ def _drawn(shape: str, size, style: str, seed: int, description: str, name: str)
         on_post(model, SHAPES[shape])
     else:
         SHAPES[shape](model)
-    return model, described_surfaces(f"{name} {description}", model.main, model.parts.keys(), resolved.base)
+    # A style that repaints a role (steampunk's bronze-green paint) keeps its own colour there.
+    tinted = {role: replace(resolved.base(role), color=colour) for role, colour in model.tints.items()
+              if role not in resolved.overrides}
+    return model, {**tinted, **described_surfaces(f"{name} {description}", model.main, model.parts.keys(), resolved.base)}
 
 
 def build_glb(shape: str, size, style: str, seed: int, description: str = "", name: str = "") -> bytes:

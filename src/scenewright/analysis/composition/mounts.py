@@ -1,6 +1,6 @@
 """Where things made to hang go when the text does not hold them up.
 
-Outdoors, a thing made to hang on a wall stands on a post.
+Outdoors, a thing made to hang on a wall, or a light that only hangs, stands on a post.
 
 A clock, a mirror, a picture or a lifebuoy hangs on a wall. In a scene with no room, where the
 text puts it on nothing ("a clock on the kiosk" keeps its kiosk), nothing holds it up: it would
@@ -8,7 +8,11 @@ float over what the text hangs it above. A designer stands it on a post, as a st
 a lifebuoy stand: its box grows by the post's height (:data:`~scenewright.core.catalogue.POST`),
 it rests on the ground, its description says so (the mesh then draws the post), and what the
 text hangs it ``above`` it stands ``behind``, over it to the viewer's eye. An ``above`` the
-reader only guessed gives a place, not a height: that becomes ``near``.
+reader only guessed gives a place, not a height: that becomes ``near``. So with a light the text
+only hangs ("lanterns hang from the rafters" of a shed read as open ground): the reader hangs it
+over the nearest thing, a guess, and with no roof overhead it would float there; on a post it is
+a lamp post's lantern. Only lights: the reader reads hovering and flying as hanging too, and a
+drone "hovering over the track" must keep flying.
 
 Nothing hangs over what someone holds: the reader hangs a thing it was told only hangs ("bunches
 of onions hang from the beams") over the nearest thing, and when that is in a hand ("a wooden
@@ -27,14 +31,20 @@ from scenewright.core.catalogue import POST, POSTED, load_catalogue
 DEPTH = 0.12
 #: Shapes of the living: what is on one of them is in hand (or carried, or perched).
 LIVING = frozenset({"figure", "animal", "bird"})
+#: Shapes of lights that hang (lanterns, lamps, chandeliers): outdoors, hung on nothing, a lamp post's.
+LIGHTS = frozenset({"table_lamp", "pendant_lamp"})
 
 
 def on_posts(parsed: ParsedScene) -> ParsedScene:
-    """``parsed`` with every wall thing of an outdoor scene that stands on nothing put on a post."""
+    """``parsed`` with every wall thing of an outdoor scene that stands on nothing, and every light
+    hung only by the reader's guess, put on a post."""
     if parsed.indoor:
         return parsed
     held = {r.source for r in parsed.relations if r.relation == "on"}
-    posted = {o.id for o in parsed.objects if o.category in WALL_THINGS and o.id not in held}
+    catalogue = load_catalogue()
+    hung = {r.source for r in parsed.relations if r.relation == "above" and r.inferred}
+    lights = {o.id for o in parsed.objects if o.id in hung and o.category in catalogue and catalogue[o.category].shape in LIGHTS}
+    posted = {o.id for o in parsed.objects if (o.category in WALL_THINGS or o.id in lights) and o.id not in held}
     if not posted:
         return parsed
     objects = [

@@ -71,6 +71,15 @@ def _ball(m: Model) -> None:
     m.torus("accent", (0, 0, r), 1.0 * r, 0.06 * r, axis="x", fraction=0.8)
 
 
+def _egg(m: Model) -> None:
+    """An egg standing on its broad end, filling its box: a hen's white shell; a dragon's or a
+    dinosaur's scaly."""
+    m.main = "scales" if m.named("dragon", "dinosaur", "wyvern", "serpent") else "fur_white"
+    H = m.sz
+    m.lathe(m.main, [(0.0, 0.0), (0.3, 0.03 * H), (0.45, 0.2 * H), (0.5, 0.4 * H), (0.46, 0.6 * H), (0.33, 0.82 * H),
+                     (0.16, 0.96 * H), (0.0, H)], scale=(m.sx, m.sy))
+
+
 def _goal(m: Model) -> None:
     """A football goal: two posts and a crossbar at the front, the net sloping back to the
     ground, stanchions holding it out."""
@@ -144,7 +153,7 @@ def _balloon(m: Model) -> None:
 
 
 def generic(m: Model) -> None:
-    """Soft things, instruments, pumpkins, balls, ramps, goals, chimneys, rails, orreries and
+    """Soft things, instruments, pumpkins, balls, eggs, ramps, goals, chimneys, rails, orreries and
     party balloons by name; else the family the name calls (a horse the catalogue files here is an animal);
     only a name with no hint at all gets the draped lump."""
     variants = (
@@ -160,6 +169,7 @@ def generic(m: Model) -> None:
         (("grind rail", "rail"), _rail),
         (("orrery",), _orrery),
         (("balloon", "party balloon"), _balloon),
+        (("egg", "eggs"), _egg),
     )
     for words, build in variants:
         if m.named(*words):

@@ -307,6 +307,7 @@ def machine(m: Model) -> None:
         (("claw machine", "claw crane", "crane game", "prize machine"), _claw_machine),
         (("sewing machine",), _sewing_machine),
         (("ball return",), _ball_return),
+        (("scales", "scale", "balance", "weighbridge", "weighing machine"), _scales),
     )
     for words, build in variants:
         if m.named(*words):
@@ -328,6 +329,32 @@ def machine(m: Model) -> None:
     for s in (-1, 1):
         m.cylinder("metal", (s * 0.95 * W, 0.3 * D, 0.3 * H), (s * W, 0.3 * D, 0.3 * H), 0.08 * min(H, m.sy), fraction=0.5)
     m.cylinder("metal", (0.95 * W, 0.3 * D, 0.3 * H), (0.95 * W, 0.3 * D, 0.95 * H), 0.05 * min(H, m.sy), fraction=0.5)
+
+
+def _scales(m: Model) -> None:
+    """Scales by the shape of their box: a tall one a beam balance (a pillar on a plinth, a
+    beam across its top, a pan hung from each end); a low one a platform scale (a plate to
+    stand things on, a dial on a column at the back)."""
+    m.main = "brass"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    if H >= 0.8 * max(m.sx, m.sy):
+        m.box("dark_wood", (-0.3 * W, -0.3 * D, 0), (0.3 * W, 0.3 * D, 0.06 * H))
+        post = 0.04 * min(W, D) + 0.01
+        m.post("brass", 0, 0, 0.06 * H, 0.95 * H, post, fraction=0.4)
+        m.ball("brass", (0, 0, 0.95 * H), (1.6 * post,) * 3, fraction=0.4)
+        m.cylinder("brass", (-0.8 * W, 0, 0.9 * H), (0.8 * W, 0, 0.9 * H), 0.6 * post, fraction=0.4)
+        for s in (-1, 1):
+            x = s * 0.75 * W
+            for a in range(3):  # three cords from the beam's end to the pan's rim
+                ang = 2 * np.pi * a / 3
+                m.beam("dark_metal", (x, 0, 0.9 * H), (x + 0.2 * W * np.cos(ang), 0.2 * D * np.sin(ang), 0.42 * H), 0.004 + 0.001 * a)
+            m.lathe("brass", [(0.0, 0.38 * H), (0.2 * W, 0.39 * H), (0.25 * W, 0.43 * H)], centre=(x, 0, 0), scale=(1.0, D / W))
+        return
+    m.box("dark_metal", (-W, -D, 0), (W, 0.6 * D, 0.35 * H))
+    m.box("metal", (-0.9 * W, -0.9 * D, 0.33 * H), (0.9 * W, 0.5 * D, 0.42 * H))  # set into the base
+    m.box("dark_metal", (-0.12 * W, 0.65 * D, 0), (0.12 * W, 0.85 * D, 0.7 * H))
+    m.cylinder("brass", (0, 0.7 * D, 0.8 * H), (0, D, 0.8 * H), 0.2 * min(H, m.sx), fraction=0.6)
+    m.cylinder("canvas_alt", (0, 0.68 * D, 0.8 * H), (0, 0.705 * D, 0.8 * H), 0.16 * min(H, m.sx), fraction=0.6)
 
 
 def _horizontal_tank(m: Model) -> None:

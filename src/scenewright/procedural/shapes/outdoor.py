@@ -549,9 +549,28 @@ def _gazebo(m: Model) -> None:
     m.lathe("roof", [(0.5, eave), (0.5, eave + 0.04 * m.sz), (0.0, m.sz)], scale=(m.sx, m.sy), fraction=0.25)
     m.lathe("wood", [(0.46, 0.42 * eave), (0.46, 0.45 * eave)], scale=(m.sx, m.sy), fraction=0.25)
 
+def _canopy(m: Model) -> None:
+    """A canopy (a forecourt's, a market's, a shelter's): a flat roof with a deep fascia on
+    square posts, open on every side, so what stands under it shows."""
+    m.main = "paint"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    fascia = min(0.15 * H, 0.6)
+    post = m.thick(0.12, 0.06 * min(m.sx, m.sy))
+    nx = 2 if m.sx < 8 else 3
+    for i in range(nx):
+        x = -0.8 * W + i * 1.6 * W / (nx - 1)
+        for y in (-0.75 * D, 0.75 * D):
+            m.box("metal", (x - post, y - post, 0), (x + post, y + post, H - fascia + 0.01))
+    m.box("paint", (-W, -D, H - fascia), (W, D, H))
+    m.box("light", (-0.9 * W, -0.9 * D, H - fascia - 0.02), (0.9 * W, 0.9 * D, H - fascia + 0.005), rounded=0.0)
+
+
 def tent(m: Model) -> None:
     if m.named("gazebo", "pavilion", "pergola"):
         _gazebo(m)
+        return
+    if m.named("canopy", "awning", "shelter", "carport", "lean-to"):
+        _canopy(m)
         return
     m.main = "canvas"
     m.extrude("canvas", [(-m.sx / 2, 0), (m.sx / 2, 0), (0, m.sz)], "y", -m.sy / 2 + 0.02, m.sy / 2)

@@ -374,6 +374,12 @@ def panel(m: Model) -> None:
                              (-W + 2 * pole, 0.3 * H)], "y", -0.5 * t, 0.5 * t)
         m.box("canvas_alt", (-0.6 * W, -0.5 * t - 0.003, 0.6 * H), (0.6 * W, -0.5 * t, 0.75 * H), rounded=0.0)
         return
+    if m.named("scoreboard", "score board", "departure board", "arrivals board", "timetable", "leaderboard", "tote board"):
+        _scoreboard(m)
+        return
+    if m.named("backdrop", "back drop", "scenery", "flat", "set piece", "cyclorama", "painted cloth"):
+        _backdrop(m)
+        return
     board_lo = (0.35 if m.named("notice board", "bulletin board", "noticeboard", "corkboard", "cork board") else 0.25) * H
     if m.named("screen", "display", "monitor", "video wall", "projection screen", "jumbotron", "hologram", "holo"):
         m.main = "dark_plastic"
@@ -407,6 +413,53 @@ def panel(m: Model) -> None:
     for x in (-0.8 * W, 0.8 * W):
         m.box("dark_wood" if notice else "dark_metal", (x - leg, -0.3 * t, 0), (x + leg, 0.5 * t + leg, board_lo + 0.1 * (H - board_lo)))
         m.box("dark_wood" if notice else "dark_metal", (x - 1.5 * leg, -D, 0), (x + 1.5 * leg, D, 0.03 * H))
+
+
+def _scoreboard(m: Model) -> None:
+    """A scoreboard: a dark board on two posts under a little roof, rows of white number plates
+    and a name band (not a billboard, whose white face and stripe read as an advert)."""
+    m.main = "dark_wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    t = min(0.5 * D, 0.04 * max(m.sx, m.sz)) + 0.01
+    lo, top = 0.3 * H, 0.9 * H
+    front = -0.5 * t
+    post = min(0.05 * W, 0.8 * D) + 0.01
+    for x in (-0.85 * W, 0.85 * W):  # each post set into the board's back, below its top
+        m.box("dark_wood", (x - post, 0.5 * t - 0.003, 0), (x + post, 0.5 * t + 2 * post, top - 0.01 * H))
+    m.box("dark_wood", (-W, front, lo), (W, 0.5 * t, top - 0.003))
+    m.extrude("roof", [(-D, top), (D, top), (D, top + 0.02 * H), (0, H), (-D, top + 0.02 * H)], "x", -1.02 * W, 1.02 * W)
+    m.box("canvas_alt", (-0.8 * W, front - 0.004, top - 0.14 * (top - lo)), (0.8 * W, front + 0.002, top - 0.04 * (top - lo)),
+          rounded=0.0)
+    cols = 4
+    ph, pw = 0.17 * (top - lo), 0.13 * m.sx
+    for r in range(3):
+        z = lo + (0.08 + 0.27 * r) * (top - lo)
+        for c in range(cols):
+            x = -0.75 * W + c * 1.5 * W / (cols - 1)
+            m.box("canvas_alt", (x - pw / 2, front - 0.006, z), (x + pw / 2, front + 0.002, z + ph), rounded=0.0)
+            m.box("lacquer", (x - 0.15 * pw, front - 0.008, z + 0.2 * ph), (x + 0.15 * pw, front - 0.004, z + 0.8 * ph),
+                  rounded=0.0)
+
+
+def _backdrop(m: Model) -> None:
+    """A painted backdrop (a stage flat, scenery): a canvas in a timber frame painted with sky,
+    hills and a castle's outline, braced from behind so it stands on its own."""
+    m.main = "canvas_alt"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    t = min(0.3 * D, 0.02 * max(m.sx, m.sz)) + 0.01
+    y0 = -D + 0.02 * m.sy  # the frame's face, toward the viewer; the braces reach back to +D
+    m.box("wood", (-W, y0, 0.01 * H), (W, y0 + t, H))
+    # Layers a few millimetres apart, each set into the one behind, so no two share a face.
+    m.box("fabric", (-0.97 * W, y0 - 0.003, 0.45 * H), (0.97 * W, y0 + 0.002, 0.98 * H), rounded=0.0)
+    hills = [(-0.96 * W, 0.03 * H), (0.96 * W, 0.03 * H), (0.96 * W, 0.5 * H), (0.5 * W, 0.62 * H), (0.0, 0.48 * H),
+             (-0.45 * W, 0.6 * H), (-0.96 * W, 0.47 * H)]
+    m.extrude("leaf", hills, "y", y0 - 0.005, y0 + 0.001)
+    m.box("stone", (0.05 * W, y0 - 0.007, 0.5 * H), (0.55 * W, y0 - 0.004, 0.75 * H), rounded=0.0)
+    for x in (0.08 * W, 0.52 * W):
+        m.box("stone", (x - 0.06 * W, y0 - 0.008, 0.49 * H), (x + 0.06 * W, y0 - 0.0035, 0.86 * H), rounded=0.0)
+    for x in (-0.7 * W, 0.0, 0.7 * W):
+        m.beam("dark_wood", (x, y0 + t, 0.7 * H), (x, D, 0.02 * H), 0.02 * W + 0.01)
+        m.box("dark_wood", (x - 0.04 * W, y0 + 0.5 * t, 0), (x + 0.04 * W, D, 0.02 * H))
 
 
 def _box(m: Model) -> None:
@@ -555,10 +608,25 @@ def _hatbox(m: Model) -> None:
     m.lathe("accent", [(0.475, 0.35 * m.sz), (0.475, 0.45 * m.sz)], scale=(m.sx, m.sy), fraction=0.7)
 
 
+def _nest(m: Model) -> None:
+    """A nest: a low round bowl of woven twigs, stray sticks poking out of its rim (not a box,
+    which the eggs put in it made a crate of)."""
+    m.main = "straw"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.lathe("straw", [(0.0, 0.25 * H), (0.3, 0.3 * H), (0.42, 0.6 * H), (0.5, 0.85 * H), (0.47, H), (0.36, 0.7 * H),
+                      (0.2, 0.45 * H), (0.0, 0.42 * H)], scale=(m.sx, m.sy))
+    m.lathe("dark_wood", [(0.35, 0.0), (0.45, 0.1 * H), (0.5, 0.3 * H)], scale=(m.sx, m.sy), fraction=0.6)
+    for k in range(7):
+        a = 2 * np.pi * k / 7 + 0.3
+        r0, r1 = 0.4, 0.55
+        m.beam("dark_wood", (r0 * np.cos(a) * m.sx, r0 * np.sin(a) * m.sy, 0.7 * H),
+               (r1 * np.cos(a + 0.4) * m.sx, r1 * np.sin(a + 0.4) * m.sy, 0.9 * H), 0.006 + 0.02 * min(W, D) * (1 + 0.05 * k))
+
+
 def container(m: Model) -> None:
     """Something that holds things: a cardboard box, a treasure chest, a travel trunk, a
     suitcase, a backpack, a sack, a basket, a cool box, a cage, a pen, a lobster pot, a
-    spool, a hatbox; else a box. The variant named first wins ("ice chest cooler" is a cool box)."""
+    spool, a hatbox, a nest; else a box. The variant named first wins ("ice chest cooler" is a cool box)."""
     variants = (
         (("chest", "treasure", "coffer"), _chest),
         (("trunk", "footlocker"), _trunk),
@@ -572,6 +640,7 @@ def container(m: Model) -> None:
         (("lobster pot", "crab pot", "creel", "fish trap"), _creel),
         (("spool", "reel", "bobbin", "cable drum"), _spool),
         (("hatbox", "hat box"), _hatbox),
+        (("nest", "nests"), _nest),
     )
     build = m.first_named(variants)
     if build is _chest:

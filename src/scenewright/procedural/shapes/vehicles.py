@@ -8,6 +8,7 @@ import numpy as np
 
 from scenewright.procedural import parts as P
 from scenewright.procedural.builder import Model
+from scenewright.procedural.material import COLOURS
 from scenewright.procedural.shapes.frames import ring
 
 
@@ -19,8 +20,28 @@ def _wheel(m: Model, x: float, y: float, r: float, width: float, outward: int) -
     m.cylinder("metal", (face, y, r), (face + outward * 0.01, y, r), 0.55 * r, fraction=0.6)
 
 
-def car(m: Model) -> None:
+#: Vehicles whose trade fixes their colour, by their words; the first found paints them.
+_LIVERIES = (
+    (("fire engine", "fire truck", "fire tender", "mail van", "post van", "postal"), "red"),
+    (("taxi", "school bus", "taxicab"), "yellow"),
+    (("police", "ambulance", "ice cream"), "white"),
+    (("army", "military"), "olive"),
+)
+#: Colours cars, vans and buses come in: one per vehicle (seeded by its id), so a car park is
+#: not a row of one red.
+_PAINTS = ("white", "silver", "black", "charcoal", "navy", "blue", "maroon", "red", "green", "beige")
+
+
+def _livery(m: Model) -> None:
+    """Paint is the main role; its colour by the vehicle's trade, else one of :data:`_PAINTS`
+    (a colour the text names still wins: it is described)."""
     m.main = "paint"
+    name = next((colour for words, colour in _LIVERIES if m.has(*words)), None)
+    m.tints["paint"] = COLOURS[name or _PAINTS[int(m.rng.integers(len(_PAINTS)))]]
+
+
+def car(m: Model) -> None:
+    _livery(m)
     wr = min(0.2 * m.sz, 0.11 * m.sy)
     body_lo, body_hi = 0.35 * wr, 0.55 * m.sz
     L = m.sy / 2
@@ -53,7 +74,7 @@ def truck(m: Model) -> None:
         vehicle(m)
         return
     food = m.named("food truck", "ice cream truck", "food van")
-    m.main = "paint"
+    _livery(m)
     wr = min(0.17 * m.sz, 0.07 * m.sy)
     chassis = 1.2 * wr
     L = m.sy / 2
@@ -82,7 +103,7 @@ def bus(m: Model) -> None:
     if m.named("tram", "streetcar"):  # the catalogue files trams with buses; they run on rails
         _railcars(m)
         return
-    m.main = "paint"
+    _livery(m)
     wr = min(0.16 * m.sz, 0.05 * m.sy)
     L = m.sy / 2
     m.box("paint", (-m.sx / 2 + 0.02, -L, 0.6 * wr), (m.sx / 2 - 0.02, L, m.sz))
@@ -101,7 +122,7 @@ def bus(m: Model) -> None:
 
 
 def _motorcycle(m: Model) -> None:
-    m.main = "paint"
+    _livery(m)
     r = min(0.3 * m.sy, 0.33 * m.sz)
     tyre = 0.35 * r
     yf, yr = -m.sy / 2 + r, m.sy / 2 - r
@@ -123,7 +144,7 @@ def bicycle(m: Model) -> None:
     if m.named("motorcycle", "motorbike", "scooter", "moped"):
         _motorcycle(m)
         return
-    m.main = "paint"
+    _livery(m)
     r = min(0.25 * m.sy, 0.36 * m.sz)  # two wheels, never overlapping
     tube = m.thick(0.018, 0.2 * m.sx)
     yf, yr = -m.sy / 2 + r, m.sy / 2 - r
@@ -228,11 +249,64 @@ def _trolley(m: Model) -> None:
                fraction=0.4)
 
 
+def _sledge(m: Model) -> None:
+    """A sledge on two runners that curl up at the front, a slatted bed on struts; a sleigh
+    (by its word) also gets high curved sides and a seat."""
+    m.main = "wood"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    sleigh = m.named("sleigh")
+    runner = "metal" if sleigh else "dark_wood"
+    r = m.thick(0.02, 0.08 * W) + 0.004
+    bed = (0.35 if sleigh else 0.7) * H
+    curl = min(0.25 * m.sy, 0.8 * bed)
+    arc = [(-L + curl - curl * np.sin(a), r + curl * (1 - np.cos(a))) for a in np.linspace(0, np.pi / 2, 4)]
+    for x in (-0.8 * W, 0.8 * W):
+        m.cylinder(runner, (x, arc[0][0], r), (x, L, r), r, fraction=0.4)
+        for k, ((y0, z0), (y1, z1)) in enumerate(zip(arc, arc[1:])):  # the curl, each piece a hair thinner
+            m.beam(runner, (x, y0, z0), (x, y1, z1), 2 * r * (1 - 0.03 * k))
+        for y in (-0.45 * L, 0.1 * L, 0.65 * L):
+            m.post("dark_wood", x, y, 2 * r, bed + 0.02 * H, 0.8 * r, fraction=0.3)
+    for k in range(5):  # slats a hair apart: boards that touch would share a face
+        y0 = -0.6 * L + k * 1.5 * L / 5
+        m.box("wood", (-0.94 * W, y0, bed), (0.94 * W, y0 + 0.26 * L, bed + 0.1 * H))
+    if sleigh:
+        low = bed - 0.03 * H  # below the slats' underside, which would otherwise share its plane
+        side = [(-0.7 * L, low), (L, low), (L, H), (0.5 * L, 0.75 * H), (-0.55 * L, 0.75 * H), (-0.7 * L, 0.95 * H)]
+        for x in (-W, W - 0.06 * m.sx):
+            m.extrude("paint", side, "x", x, x + 0.06 * m.sx)
+        m.box("fabric", (-0.92 * W, 0.35 * L, bed + 0.08 * H), (0.92 * W, 0.8 * L, 0.6 * H))
+
+
+def _wheelbarrow(m: Model) -> None:
+    """A wheelbarrow: a sloped tub over one wheel at the front, two legs and two handles
+    running back from under the tub."""
+    m.main = "paint"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    wr = min(0.3 * H, 0.17 * m.sy)
+    floor = 0.55 * H  # the cart's rest height (data/catalogue.json): what it carries sits here
+    m.lathe("paint", [(0.0, floor - 0.03 * H), (0.5 * W, floor - 0.03 * H), (0.62 * W, floor), (0.95 * W, H - 0.04 * H), (0.99 * W, H)],
+            centre=(0, -0.05 * L, 0), scale=(1.0, 0.55 * L / W))
+    m.box("dark_metal", (-0.45 * W, -0.35 * L, floor - 0.05 * H), (0.45 * W, 0.25 * L, floor - 0.02 * H))
+    m.cylinder("rubber", (-0.12 * W, -L + wr, wr), (0.12 * W, -L + wr, wr), wr, fraction=0.6)
+    m.cylinder("metal", (-0.14 * W, -L + wr, wr), (0.14 * W, -L + wr, wr), 0.3 * wr, fraction=0.4)
+    for s in (-1, 1):
+        m.beam("wood", (s * 0.14 * W, -L + wr, wr), (s * 0.55 * W, L, floor + 0.05 * H), 0.05 * W + 0.01)
+        m.post("dark_metal", s * 0.45 * W, 0.45 * L, 0, floor - 0.02 * H, 0.03 * W + 0.005, fraction=0.3)
+        m.cylinder("dark_plastic", (s * 0.55 * W, 0.85 * L, floor + 0.04 * H), (s * 0.57 * W, L, floor + 0.05 * H), 0.04 * W + 0.008,
+                   fraction=0.4)
+
+
 def cart(m: Model) -> None:
-    """A wooden cart on two spoked wheels with shafts; a mine cart, or a hand trolley (luggage,
-    baggage, shopping...) by its words."""
+    """A wooden cart on two spoked wheels with shafts; a mine cart, a sledge, a wheelbarrow or
+    a hand trolley (luggage, baggage, shopping...) by its words."""
     if m.named("minecart", "mine cart", "mine car", "ore cart", "ore car"):
         _minecart(m)
+        return
+    if m.named("sled", "sledge", "sleigh", "toboggan", "sledges"):
+        _sledge(m)
+        return
+    if m.named("wheelbarrow", "barrow"):
+        _wheelbarrow(m)
         return
     if m.has(*_TROLLEY):
         _trolley(m)
@@ -784,8 +858,33 @@ _WATERCRAFT = re.compile(r"\b(?:\w*boat|\w+ship|ship|barge|canoe|kayak|raft|ferr
                          r"sampan|trawler|schooner|frigate|steamer|clipper)s?\b")
 
 
+def _caravan(m: Model) -> None:
+    """A touring caravan: a tall white box on one axle in its middle, a coloured band, windows
+    and a door along its sides, an A-frame drawbar with a jockey wheel at the front (not a car
+    six metres long)."""
+    m.main = "canvas_alt"
+    W, L, H = m.sx / 2, m.sy / 2, m.sz
+    wr = min(0.12 * H, 0.06 * m.sy)
+    lo = 1.5 * wr
+    y0 = -L + 0.15 * m.sy  # the body's front; the drawbar reaches forward from it
+    m.box("canvas_alt", (-W, y0, lo), (W, L, H))
+    m.box("paint", (-W - 0.005, y0 + 0.02, 0.42 * H), (W + 0.005, L - 0.02, 0.48 * H), rounded=0.0)
+    span = L - y0
+    for a, b in ((0.08, 0.4), (0.72, 0.93)):
+        m.box("glass", (-W - 0.008, y0 + a * span, 0.58 * H), (W + 0.008, y0 + b * span, 0.8 * H), rounded=0.0)
+    m.box("dark_plastic", (W - 0.01, y0 + 0.5 * span, lo + 0.04 * H), (W + 0.01, y0 + 0.64 * span, 0.85 * H), rounded=0.0)
+    m.box("glass", (-0.6 * W, y0 - 0.008, 0.55 * H), (0.6 * W, y0 + 0.02, 0.75 * H), rounded=0.0)
+    axle = y0 + 0.55 * span
+    for s in (-1, 1):
+        _wheel(m, s * (W + 0.01), axle, wr, 0.1 * m.sx, s)  # its face clear of the body side
+        m.beam("dark_metal", (s * 0.5 * W, y0 + 0.01, lo + 0.01), (s * 0.02, -L + 0.03, 0.8 * lo), 0.04 * W + 0.02 + 0.002 * (s + 1))
+    m.ball("dark_metal", (0, -L + 0.03, 0.8 * lo), (0.035,) * 3, fraction=0.4)
+    m.post("metal", 0, -L + 0.06 * m.sy, 0.35 * wr, lo, 0.02 + 0.01 * W, fraction=0.4)
+    m.cylinder("rubber", (-0.04, -L + 0.06 * m.sy, 0.35 * wr), (0.04, -L + 0.06 * m.sy, 0.35 * wr), 0.35 * wr, fraction=0.5)
+
+
 def vehicle(m: Model) -> None:
-    """A vehicle the catalogue does not know: tractor, forklift, golf cart, cart, battle
+    """A vehicle the catalogue does not know: tractor, forklift, golf cart, caravan, cart, battle
     tank, snowmobile, tracked crawler, train (steam or a diesel/electric unit, by its words), an aeroplane
     (propellers or jets, by its words), a flying craft (drone, spaceship, saucer), a boat (a name ending in -boat or -ship); else a car."""
     variants = (
@@ -798,6 +897,7 @@ def vehicle(m: Model) -> None:
         (("locomotive", "train", "engine car", "steam engine", "railcar", "railbus", "multiple unit"), _train),
         (("hot air balloon", "balloon"), _balloon),
         (("minecart", "mine cart", "mine car", "ore cart", "ore car"), _minecart),
+        (("caravan", "camper trailer", "travel trailer", "trailer home", "mobile home"), _caravan),
         (("cart", "wagon", "carriage", "wheelbarrow", "trolley", "chariot", "trailer"), cart),
         (("pram", "stroller", "pushchair", "baby carriage", "perambulator"), _pram),
         (("helicopter", "chopper", "gyrocopter"), _helicopter),
