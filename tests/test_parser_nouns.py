@@ -965,3 +965,20 @@ def test_a_part_after_its_of_a_thing_that_has_such_parts_is_no_thing():
     found = parse_scene("A fruit stall stands by the gate, with a cash tin on its counter.")
     assert [o.category for o in found.objects].count("counter") == 0
     assert ("cash_tin_1", "on", "market_stall_1") in {(r.source, r.relation, r.target) for r in found.relations}
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("Two glaziers fit a pane, and a third sweeps up the shards.", {"glazier": 3}),
+        ("A hermit crab hides under a shell while another scuttles over the sand.", {"hermit crab": 2}),
+        ("Four nurses chat at the desk while two others push a trolley.", {"nurse": 6}),
+        ("A squirrel nibbles a nut, and a fourth cone lies nearby.", {"squirrel": 1}),
+        # one of a counted group acting is no new member
+        ("Two kids play on the lawn: one flies a kite, another chases a ball.", {"kid": 2}),
+    ],
+)
+def test_a_count_with_its_noun_left_out_is_more_of_the_group_before(text, expected):
+    found = Counter(o.name.lower() for o in parse_scene(text).objects)
+    for name, count in expected.items():
+        assert found[name] == count, found

@@ -18,6 +18,7 @@ from scenewright.analysis.parser.words import (
     _DEFINITE,
     _DETERMINERS,
     _NUMBERS,
+    ORDINALS,
     _ORDINALS,
     _QUANTITY,
     _STOP,
@@ -338,7 +339,55 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
     if opening_place is not None and not any(opening_place.split()[-1] in p.split() for p in places):
         places.insert(0, opening_place)
     _short_for_compound(toks, mentions)
+    mentions = sorted(mentions + _elided_members(toks, mentions), key=lambda m: m.start)
     return _alias_mentions(toks, mentions), places
+
+
+def _elided_at(toks: list[_Tok], i: int) -> int | None:
+    """Where a noun left out after "another", "a third" or "two others" would stand, when a verb
+    follows right away ("..., while another draws water", "and a third waits by the door"): the
+    index of the count word that stands for it; None when a noun follows or none is left out."""
+    w = toks[i].text
+    if w == "others" and i > 0 and toks[i - 1].text in _NUMBERS:
+        return i  # ("two others sweep the steps": a plural noun could not follow)
+    if w == "another":
+        k = i
+    elif w in ("a", "an") and i + 1 < len(toks) and toks[i + 1].text in ORDINALS:
+        k = i + 1
+    else:
+        return None
+    verb = toks[k + 1].text if k + 1 < len(toks) else ""
+    return k if _is_verb(verb) else None  # (a singular noun after "another" ends in no -s)
+
+
+def _elided_members(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention]:
+    """One more of the group named last ("two porters carry a crate, and a third waits by the
+    door"; "a monk reads, while another sweeps"): a count with its noun left out names more of the
+    latest plural noun (for "another", of the latest living thing too), in its sentence or the one
+    before. Not after "one" as a subject ("one boy reads, another sleeps" splits a group)."""
+    out = []
+    for i in range(len(toks)):
+        k = _elided_at(toks, i)
+        if k is None:
+            continue
+        sentences = [j for j in range(i) if toks[j].text in (".", "!", "?")]
+        since = sentences[-2] if len(sentences) > 1 else -1
+        if any(t.text == "one" for t in toks[(sentences[-1] if sentences else -1) + 1 : i]):
+            continue
+        before = [m for m in mentions if since < m.start and m.end <= i and not m.alias]
+        living = toks[i].text == "another"
+        chosen = next(
+            (m for m in reversed(before) if _is_plural(toks, m) or (living and load_catalogue()[m.category].shape in _LIVING)),
+            None,
+        )
+        if chosen is None:
+            continue
+        *kind, head = chosen.phrase.split()
+        name = " ".join([*kind, singular(head) if head.islower() else head])
+        m = _Mention(chosen.category, name, k, k + 1, 1, False, False)
+        m.guess, m.modifier = chosen.guess, chosen.modifier
+        out.append(m)
+    return out
 
 
 _POSSESSIVES = {"his", "her", "their", "its", "my", "our", "your"}
@@ -925,6 +974,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         ) or _shares_article(toks, i, covered)
         if not counter or w == "one" and i + 1 < n and toks[i + 1].text in ("of", "another", "other"):
             continue
+        if _elided_at(toks, i) is not None or (i + 1 < n and _elided_at(toks, i + 1) is not None):
+            continue  # "a third waits": more of a group named before (:func:`_elided_members`)
         if i + 1 < n and toks[i + 1].joined and w not in ("a", "an", "another", "the", *_OWNERS):
             continue  # "a six-wheeled rover": a number hyphened to a word describes, counts nothing
         if w in _NUMBERS and i > 1 and toks[i - 1].text == "of" and toks[i - 2].text in _PEOPLE_GROUPS:
