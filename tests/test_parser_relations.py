@@ -947,3 +947,17 @@ def test_out_of_its_own_shelter_and_a_phrase_after_it():
     assert {("cat_1", "on", "basket_1"), ("basket_1", "near", "stove_1")} <= found
     # "behind it" after "in front of" stays the subject's back
     assert ("dog_1", "behind", "cat_1") in rels("A cat sits in front of the fireplace, and a dog lies behind it.")
+
+
+def test_across_from_a_pronoun_places_what_the_subject_watches_or_stands_at():
+    # what the doers look at is across from them
+    found = {(s.split("_")[0], r, t) for s, r, t in rels("Two cats sit on the wall and stare at the pigeons across from them.")}
+    assert {("bird", "in front of", "cat_1"), ("bird", "face to", "cat_1")} <= found
+    assert not any(s == "cat" and r == "in front of" for s, r, _ in found)
+    # "it" after "at" a thing is something else: the thing is across from that
+    found = rels("A tram halts at the corner while its riders wait at a newsstand across from it.")
+    assert ("kiosk_1", "in front of", "bus_1") in found
+    assert not any(r[0].startswith("rider") and r[1] == "on" for r in found)  # they queue, not aboard
+    # a person at a table across from "him" stays the one placed
+    found = rels("A judge sits on the bench. A lawyer stands at a lectern across from him.")
+    assert ("lawyer_1", "in front of", "judge_1") in found

@@ -456,8 +456,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
     def _aboard_their_vehicle(self, mentions) -> None:
         """"A train waits at the platform, its driver leaning out": a person a vehicle's "its"
         names is its crew, on it (the latest vehicle named before in the sentence), unless the text
-        puts them on something else."""
-        placed = {r[1] for r in self.relations if r[0] in ("on", "above")}
+        puts them somewhere ("its passengers queue at a kiosk")."""
+        placed = {r[1] for r in self.relations if r[0] != "face to"}
         for k, m in enumerate(mentions):
             g = m.group
             if m.content or g < 0 or g in placed or m.start == 0 or self.toks[m.start - 1].text != "its":
@@ -1030,7 +1030,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if chained and c.last_target and c.last_target_end == last_event_end and all(b in _ADVERBS for b in between):
             srcs = list(c.last_target)
             rider = c.main or ([] if c.first else list(prev_subject))
-            if self._rider_placed(c, rider, kind):
+            across = kind == "opposite" and self._across_from_doer(c, target, None, last_event_end)
+            if self._rider_placed(c, rider, kind) and not across:
                 srcs = list(rider)  # "he sits on a stool at the workbench": he is at it, on his stool
             elif self._sits_on_instead(c, rider, p):
                 srcs = list(rider)  # "a troll sits beneath the bridge on a boulder": he is on it, not the bridge
@@ -1114,6 +1115,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # "a smith hammers a horseshoe on the anvil", "a cook stirs a pot over the fire": the
                 # thing acted on is there (its doer by it: :meth:`_do_deeds`)
                 srcs = [acted]
+            elif kind == "opposite" and self._across_from_doer(c, target, acted, last_event_end):
+                # "two dogs watch the flock across from them": the flock is across from the dogs;
+                # "they queue at a kiosk across from it": the kiosk (no kiosk is across from itself)
+                srcs = [acted] if acted is not None else list(c.last_target)
         if kind == "on" and srcs and all(self._person_at(g) for g in srcs) and (
             self._pair_before(rel.start) or self._works_on(rel.start, target)
         ):  # "a girl writes on the blackboard", "a chef slices bread on a board": at it, not on it
@@ -1125,6 +1130,18 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             srcs = [g for g in c.subjects if self._living(g)] or srcs
         p.kind, p.srcs = kind, srcs
         return None
+
+    def _across_from_doer(self, c: _Clause, target, acted: int | None, last_event_end: int) -> bool:
+        """Whether "across from" a pronoun, right after what the subject acts on, looks at or is at,
+        places that thing across from what the pronoun names: after a thing acted on or looked at
+        ("watching the pen across from them"), and after "at" a thing when the pronoun is "it" (a
+        person at a table across from him is the one placed)."""
+        if target not in ("it", "them", *_PERSONAL):
+            return False
+        if acted is not None:
+            return True
+        after = bool(c.last_target) and c.last_target_end == last_event_end
+        return after and (c.last_kind == "face to" or (c.last_kind == "at" and target == "it"))
 
     def _formation_or_anchor(self, c: _Clause, p: _Phrase, prev_subject) -> int | None:
         """Phrases that place by no target: no relation ("toward the rack"), a formation ("in a
