@@ -320,3 +320,8 @@ def test_worn_things_between_a_doer_and_its_verb_do_not_hide_the_verb():
 )
 def test_a_thing_in_hand_after_a_comma_is_held_by_whom_the_clause_is_about(text, held):
     assert held in rels(text)
+
+
+def test_the_giver_is_the_living_subject_not_what_it_acted_on_before():
+    found = rels("A courier has propped his scooter by the door and hands the clerk a parcel.")
+    assert ("parcel_1", "on", "courier_1") in found

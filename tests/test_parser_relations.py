@@ -961,3 +961,15 @@ def test_across_from_a_pronoun_places_what_the_subject_watches_or_stands_at():
     # a person at a table across from "him" stays the one placed
     found = rels("A judge sits on the bench. A lawyer stands at a lectern across from him.")
     assert ("lawyer_1", "in front of", "judge_1") in found
+
+
+def test_a_body_part_of_a_named_person_carries_like_his_own():
+    assert ("dog_1", "on", "girl_1") in rels("A puppy has fallen asleep in the lap of the girl.")
+    assert ("toddler_1", "on", "uncle_1") in rels("A toddler rides on the shoulders of his uncle.")
+    # a part of a thing stays a place on the thing
+    assert ("cat_1", "behind", "truck_1") in rels("A cat sits at the back of the van.")
+
+
+def test_who_after_a_comma_is_the_one_named_before_it():
+    found = rels("A boy naps on the rug beside his aunt, who knits in an armchair.")
+    assert ("aunt_1", "on", "armchair_1") in found and ("boy_1", "on", "rug_1") in found

@@ -645,6 +645,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if plural:
                 c.main = plural[-1:]
                 k += 1
+        if not c.first and k < ce and toks[k].text == "who":
+            # "near her mother, who sits on the sofa": the one named right before the comma
+            comma = k - 1 if k > 0 and toks[k - 1].text == "," else k
+            named = [m.group for m in self.by_start.values() if m.end == comma and m.group >= 0]
+            if named and self._living(named[0]):
+                c.main = named[:1]
+                k += 1
         j = k
         # an adverb that opens a relation phrase is part of it ("Far from the house, ...")
         while j < ce and j not in self.rel_at and (toks[j].text in _DETERMINERS or toks[j].text in _ADVERBS):
@@ -706,11 +713,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             tool_end = self._tool_after(k, ce) if doer and self._person_at(doer[-1]) else None
             if tool_end is not None:
                 holder, hand = doer, True
-            given = self._given_to(c, k, ce, holder, prev_subject) if w in _GIVE_VERBS and holder else None
-            if given is not None and self._living(holder[-1]):
-                c.deeds.append((list(holder), given[0]))  # "a robot hands one of them a toolbox": by them
-                hand, tool_end = True, given[1]
-            if w == "with" or w in _HOLD or (w, nxt) in _HOLD_PAIRS or w in ("has", "have") or hand:
+            # (the givers are the living subjects: "a postman has parked his bike and hands her a letter")
+            givers = [g for g in holder if self._living(g)] if w in _GIVE_VERBS else []
+            given = self._given_to(c, k, ce, givers, prev_subject) if givers else None
+            if given is not None:
+                c.deeds.append((givers, given[0]))  # "a robot hands one of them a toolbox": by them
+                holder, hand, tool_end = givers, True, given[1]
+            # ("has fallen asleep", "have gathered": a tense, nothing held)
+            owns = w in ("has", "have") and not (_participle(nxt) or nxt in ("been", "gone", "come", "grown"))
+            if w == "with" or w in _HOLD or (w, nxt) in _HOLD_PAIRS or owns or hand:
                 if w in _HOLD and w.endswith("ing") and c.head is not None and c.wsub:
                     # "with a small table beside them holding a teapot": the with-thing holds it
                     c.head, c.wsub, c.hold, c.expect_new = list(c.wsub[-1:]), [], True, False

@@ -176,7 +176,7 @@ class _References:
         several = [g.index for g in self.groups if g.count > 1]
         return several[-1] if several and self._living(several[-1]) else None
 
-    def _body_part_at(self, pos: int, ce: int, starts) -> tuple[str, int] | None:
+    def _body_part_at(self, pos: int, ce: int, starts) -> tuple[str | list[int], int] | None:
         """"on her knees", "at his feet", "in their arms": a part of a person places by the
         person ("her" → the woman); the part's relation (carried on, or near) is kept for
         :meth:`_relation`."""
@@ -189,6 +189,17 @@ class _References:
             # "a glass in one hand", "a sword in each hand", ", baton in hand": whoever the clause is about
             self._body_part = vocabulary.body_parts[toks[k].text]
             return "someone", k + 1
+        if k + 3 < ce and toks[k].text == "the" and toks[k + 2].text == "of" and toks[k + 1].text in vocabulary.body_parts:
+            # "asleep on the lap of her father", "rides on the shoulders of his uncle": the owner named
+            at = next((j for j in range(k + 3, min(k + 6, ce)) if j in starts), None)
+            owner = starts[at] if at is not None and isinstance(starts, dict) else None
+            if at is not None and owner is None:
+                return "someone", at + 1  # (asked only whether the phrase names anything)
+            if owner is not None and self._lives(owner.category):
+                g = self._resolve(owner, self.size_of.get(owner.start, []))
+                if g >= 0:
+                    self._body_part = vocabulary.body_parts[toks[k + 1].text]
+                    return [g], owner.end
         if k + 1 >= ce or toks[k].text not in _PERSON_POSSESSIVES:
             return None
         j = k + 1
