@@ -171,3 +171,11 @@ def test_counted_things_of_a_container_are_there_in_it():
     assert ("egg_4", "on", "nest_1") in got
     parsed = parse_scene("A vase of tulips stands on the table.")
     assert [o.category for o in parsed.objects] == ["vase", "table"]
+
+
+def test_people_in_an_open_shelter_stand_on_its_floor_and_a_band_is_people():
+    parsed = parse_scene("A brass band plays in the pavilion while two girls sit in a gazebo by the lake.")
+    found = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert ("band_1", "on", "gazebo_1") in found and ("girl_1", "on", "gazebo_2") in found
+    # a closed tent keeps whoever is inside out of the layout
+    assert not parse_scene("A scout sleeps in the tent.").relations

@@ -1644,6 +1644,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if kind == "in":  # "a man in a rocking chair", "a duck floats in the tub", "children in the bus": on it
             if self._living(s) and target.shape in _ENCLOSURES and self.groups[t].size[2] < _HUTCH_HEIGHT:
                 return "on"  # "a dog in each kennel", "hens in the coop": a hutch holds them as a cage does
+            if self._living(s) and target.shape in _ENCLOSURES and self._carrier(t, ("perches",)):
+                return "on"  # "a band plays in the bandstand": an open shelter's floor carries them
             if target.shape in _ENCLOSURES or target.shape == "tower":
                 return "no relation"  # in a tent, in the lighthouse: inside it, out of the layout
             if self._living(s) and (self._carrier(t, _VESSEL_KINDS) or self._carrier(t, by_family=False)):
