@@ -982,3 +982,17 @@ def test_a_count_with_its_noun_left_out_is_more_of_the_group_before(text, expect
     found = Counter(o.name.lower() for o in parse_scene(text).objects)
     for name, count in expected.items():
         assert found[name] == count, found
+
+
+def test_what_a_thing_is_measured_against_is_no_thing_and_sets_its_size():
+    parsed = parse_scene("A spider the size of a dinner plate hangs in its web by the door.")
+    assert [o.name for o in parsed.objects] == ["spider"]
+    assert max(parsed.objects[0].size[:2]) == pytest.approx(max(load_catalogue()["plate"].size[:2]))
+    assert names("A crab as big as a bucket sits on the rock.") == {"crab", "rock"}
+
+
+def test_irregular_plurals_in_compounds_and_newborn_things_are_small():
+    assert singular("grandchildren") == "grandchild" and singular("townspeople") == "townsperson"
+    small = parse_scene("A newborn calf lies in the straw.").objects[0]
+    grown = parse_scene("A calf lies in the straw.").objects[0]
+    assert small.name == "calf" and small.size[2] < grown.size[2]

@@ -119,6 +119,9 @@ def singular(word: str) -> str:
     """The singular of an English plural noun, by the common suffix rules."""
     if word in _IRREGULAR:
         return _IRREGULAR[word]
+    compound = next((w for w in ("children", "geese", "mice", "people") if word.endswith(w) and len(word) > len(w)), None)
+    if compound is not None:  # "grandchildren", "schoolchildren", "townspeople", "dormice"
+        return word[: -len(compound)] + _IRREGULAR[compound]
     if word.endswith("men") and word not in _SINGULAR_MEN:
         return word[:-3] + "man"
     if len(word) <= 3 or not word.endswith("s") or word.endswith(_KEEP_S):

@@ -235,6 +235,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             # in a drysuit": a word nobody listed that a person is in
         if _in_look_list(toks, s):
             continue  # "a moon base, all chrome fins and pastel domes": how everything looks
+        if _compared_with(toks, s):
+            continue  # "a dragon the size of a cat", "a crab as big as a dinner plate": a measure, no cat
         if _likeness_of(toks, s) or _material_of(toks, s):
             modifier = []  # (the kind of a noun that is no thing names no kind of the next one)
             continue  # "a neon sign shaped like a cactus", "in the style of a woodcut": a look, not a
@@ -658,6 +660,25 @@ def _likeness_of(toks: list[_Tok], s: int) -> bool:
     if w == "like":
         return before in _LIKENESS_VERBS
     return (w == "of" and before in _LIKENESS_NOUNS) or w in ("resembling", "resembles")
+
+
+#: Nouns of a measure that "of" compares with a thing ("the size of a cat", "the height of a man").
+_MEASURE_NOUNS = {"size", "height", "length", "width", "weight", "breadth"}
+
+
+def _compared_with(toks: list[_Tok], s: int) -> bool:
+    """The noun at ``s`` is what something is measured against, not a thing in the scene: after
+    "the size of", "as big as", "bigger than", past its article and describing words."""
+    j = s - 1
+    adjective = load_vocabulary().is_adjective
+    while j >= 0 and s - j <= 3 and (toks[j].text in _DETERMINERS or adjective(toks[j].text)):
+        j -= 1
+    if j < 1:
+        return False
+    w, before = toks[j].text, toks[j - 1].text
+    return (w == "of" and before in _MEASURE_NOUNS) or (w == "as" and toks[j - 2].text == "as" if j > 1 else False) or (
+        w == "than" and (before.endswith("er") or before in ("more", "less"))
+    )
 
 
 def _material_of(toks: list[_Tok], s: int) -> bool:

@@ -55,7 +55,7 @@ from scenewright.analysis.parser.references import _References
 from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
 from scenewright.analysis.parser.support import FLAT_HOST
 from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _split, _tokenise
-from scenewright.analysis.parser.vocabulary import load_vocabulary, scaled, stretched
+from scenewright.analysis.parser.vocabulary import GENERIC, load_vocabulary, scaled, stretched
 from scenewright.analysis.parser.words import (
     _ADVERBS,
     _DETERMINERS,
@@ -78,7 +78,7 @@ from scenewright.analysis.parser.words import (
     _VAGUE,
     _is_verb,
 )
-from scenewright.core.catalogue import Category, load_catalogue, singular
+from scenewright.core.catalogue import Category, load_catalogue, match_phrase, singular
 
 
 @dataclass
@@ -367,6 +367,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             owner = self._size_owner(mentions, s, e)
             if owner is not None:
                 self.size_of.setdefault(owner, []).append((dim, value))
+        for m in mentions:
+            compared = self._compared_size(m.end)
+            if compared is not None and m.start not in self.size_of:
+                self.size_of[m.start] = [("long", compared)]
         taken = {k for m in mentions for k in range(m.start, m.end)}
         starts = {m.start for m in mentions}
         # "from" places only after a verb one does from where one is ("a heron watches from a rock"),
@@ -554,6 +558,31 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             m.post, end = _post_description(self.toks, m.end, starts)
             for other in mentions:
                 other.content = other.content or m.end < other.start < end
+
+    def _compared_size(self, end: int) -> float | None:
+        """The longest side of what a thing is said to be the size of, right after it ("a dragon
+        the size of a cat", "a snail as big as a football"): that of the compared thing's category
+        or open-vocabulary guess; None when no such comparison follows."""
+        words = [t.text for t in self.toks[end : end + 4]]
+        if words[:3] == ["the", "size", "of"]:
+            k = end + 3
+        elif len(words) > 2 and words[0] == "as" and words[2] == "as":
+            k = end + 3
+        else:
+            return None
+        while k < len(self.toks) and self.toks[k].text in _DETERMINERS:
+            k += 1
+        j = k
+        while j + 1 < len(self.toks) and self.toks[j + 1].text[:1].isalpha() and self.toks[j + 1].text not in _STOP:
+            j += 1  # ("a dinner plate": the phrase's last word names it)
+        if j >= len(self.toks) or not self.toks[j].text[:1].isalpha():
+            return None
+        phrase = tuple(singular(t.text) for t in self.toks[k : j + 1])
+        category = match_phrase(phrase) or match_phrase(phrase[-1:])
+        if category is None:
+            guess = load_vocabulary().guess(phrase[-1])
+            return None if guess.category == GENERIC else max(guess.size[:2])
+        return max(self.catalogue[category].size[:2])
 
     def _size_owner(self, mentions: list[_Mention], s: int, e: int) -> int | None:
         after = [m for m in mentions if m.start >= e and m.start - e <= 4]
