@@ -996,3 +996,10 @@ def test_irregular_plurals_in_compounds_and_newborn_things_are_small():
     small = parse_scene("A newborn calf lies in the straw.").objects[0]
     grown = parse_scene("A calf lies in the straw.").objects[0]
     assert small.name == "calf" and small.size[2] < grown.size[2]
+
+
+def test_clothing_no_one_wears_is_a_thing():
+    parsed = parse_scene("Three raincoats hang on a peg rail.")
+    assert sum(o.name == "raincoat" for o in parsed.objects) == 3
+    assert "cardigan" in names("A cardigan is folded on the stool.")
+    assert "cardigan" not in names("A woman in a cardigan sits on the stool.")

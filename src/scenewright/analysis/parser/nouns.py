@@ -1057,7 +1057,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         # "a tesla coil", "a drum set": a measure word after the noun of its kind is the thing itself
         kind = toks[head - 1].text  # ("a washing line": what it is for)
         compound = word in _MEASURE_THINGS and head > i + 1 and (not vocabulary.is_adjective(kind) or kind.endswith("ing"))
-        if not (vocabulary.is_thing_word(word) or held or counted_place or stock or compound) or (
+        laid = _laid_clothing(toks, head) and not _worn(toks, head, head + 1)
+        if not (vocabulary.is_thing_word(word) or held or counted_place or stock or compound or laid) or (
             word in _QUANTITY and not counted_place and not compound
         ) or (j < n and toks[j].text == "of"):
             continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"
@@ -1339,6 +1340,22 @@ def _loose_parts(toks: list[_Tok], covered: set[int]) -> list:
     return out
 
 
+#: What clothing that is off a body does: hangs, lies, is laid or spread somewhere.
+_LAID_VERBS = _HANG_VERBS | {"lie", "lies", "lay", "lying", "rest", "rests", "draped", "folded", "piled", "spread",
+                             "drying", "dry", "dries", "sit", "sits"}  # fmt: skip
+
+
+def _laid_clothing(toks: list[_Tok], head: int) -> bool:
+    """Clothing at ``head`` that no one wears: it hangs, lies or is laid somewhere ("leather jackets
+    hang on a rail", "a coat is draped over the chair"), so it is a thing of the scene."""
+    clothing = load_vocabulary().clothing
+    word = toks[head].text
+    if word not in clothing and singular(word) not in clothing:
+        return False
+    after = [t.text for t in toks[head + 1 : head + 3]]
+    return bool(after) and (after[0] in _LAID_VERBS or (after[0] in ("is", "are") and after[1:2] and after[1] in _LAID_VERBS))
+
+
 def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
     """Bare plurals nobody listed that open a sentence or a clause after ", and" as its subject
     ("Noodle cartons and soda cans litter the floor"): no count, but a verb (or "and" and another
@@ -1364,7 +1381,7 @@ def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
         if head is None or toks[head].quoted or not (after == "and" or verb):
             continue
         word = toks[head].text
-        if not vocabulary.is_thing_word(word) or _participle(word) or word in _QUANTITY:
+        if not (vocabulary.is_thing_word(word) or _laid_clothing(toks, head)) or _participle(word) or word in _QUANTITY:
             continue
         entry = _guess(toks, head, toks[k:head])
         out.append((head, head + 1, entry.category, entry))
