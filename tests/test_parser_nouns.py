@@ -971,6 +971,7 @@ def test_a_part_after_its_of_a_thing_that_has_such_parts_is_no_thing():
     ("text", "expected"),
     [
         ("Two glaziers fit a pane, and a third sweeps up the shards.", {"glazier": 3}),
+        ("Two cooks work at a pair of stoves while a third peels onions.", {"cook": 3, "stove": 2}),
         ("A hermit crab hides under a shell while another scuttles over the sand.", {"hermit crab": 2}),
         ("Four nurses chat at the desk while two others push a trolley.", {"nurse": 6}),
         ("A squirrel nibbles a nut, and a fourth cone lies nearby.", {"squirrel": 1}),

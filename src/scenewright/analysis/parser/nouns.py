@@ -377,9 +377,12 @@ def _elided_members(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention
         if any(t.text == "one" for t in toks[(sentences[-1] if sentences else -1) + 1 : i]):
             continue
         before = [m for m in mentions if since < m.start and m.end <= i and not m.alias]
-        living = toks[i].text == "another"
+        lives = [m for m in before if load_catalogue()[m.category].shape in _LIVING]
+        # (one that does something is more of the people or animals, when there are: "two smiths
+        # work at a pair of anvils while a third pumps the bellows")
+        plural = [m for m in before if _is_plural(toks, m)]
         chosen = next(
-            (m for m in reversed(before) if _is_plural(toks, m) or (living and load_catalogue()[m.category].shape in _LIVING)),
+            reversed([m for m in plural if m in lives] or plural or (lives if toks[i].text == "another" else [])),
             None,
         )
         if chosen is None:
