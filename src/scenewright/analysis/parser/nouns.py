@@ -381,10 +381,9 @@ def _elided_members(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention
         # (one that does something is more of the people or animals, when there are: "two smiths
         # work at a pair of anvils while a third pumps the bellows")
         plural = [m for m in before if _is_plural(toks, m)]
-        chosen = next(
-            reversed([m for m in plural if m in lives] or plural or (lives if toks[i].text == "another" else [])),
-            None,
-        )
+        # ("another" is one more of a single one too: "a monk reads, while another draws water")
+        order = [lives, plural] if toks[i].text == "another" else [[m for m in plural if m in lives], plural]
+        chosen = next((group[-1] for group in order if group), None)
         if chosen is None:
             continue
         *kind, head = chosen.phrase.split()
