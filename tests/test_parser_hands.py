@@ -325,3 +325,14 @@ def test_a_thing_in_hand_after_a_comma_is_held_by_whom_the_clause_is_about(text,
 def test_the_giver_is_the_living_subject_not_what_it_acted_on_before():
     found = rels("A courier has propped his scooter by the door and hands the clerk a parcel.")
     assert ("parcel_1", "on", "courier_1") in found
+
+
+def test_a_thing_held_over_ones_head_stays_in_hand():
+    found = rels("A porter shouts at the crowd, holding a lamp above his head.")
+    assert ("table_lamp_1", "on", "porter_1") in found and not any(r[1] == "above" for r in found)
+
+
+def test_the_owner_of_a_body_part_acted_on_is_a_thing_and_the_tool_is_the_doers():
+    found = rels("A groom scrubs the pony's flank with a sponge.")
+    assert ("sponge_1", "on", "groom_1") in found
+    assert ("groom_1", "near", "horse_1") in found

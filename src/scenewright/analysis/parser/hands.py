@@ -218,6 +218,10 @@ class _Hands:
             finite = worn and _is_verb(w) and w not in _STOP and j not in self.named_at and j not in self.content_at
             if self._participle_at(j) or self._finite_at(j) or finite:
                 return w not in _COPULAS
+            owned = j > 0 and (self.toks[j - 1].text.endswith("'s") or self.toks[j - 1].text in _DETERMINERS)
+            if owned and w[:1].isalpha():
+                j -= 1  # "scrubs the calf's back with", "polishes its hull with": the part acted on
+                continue
             if w in _STOP and w not in _DETERMINERS and w not in ("it", "them") and w not in over or not w[:1].isalpha():
                 return False
             j -= 1

@@ -1184,6 +1184,11 @@ def _possessed(toks: list[_Tok], covered: set[int]) -> list:
 _OUTSIDE_PARTS = {"roof", "rooftop", "chimney", "eave", "gable", "facade", "porch", "veranda", "doorstep"}
 
 
+#: Parts of an animal's or a person's body beyond those a thing is carried on ("the horse's mane").
+_LIVING_PARTS = {"mane", "flank", "ear", "tail", "fur", "coat", "hoof", "horn", "trunk", "muzzle", "nose", "wing",
+                 "feather", "hair", "face", "beard", "leg", "belly", "chin", "cheek", "snout", "ear"}  # fmt: skip
+
+
 def _owners_of_parts(toks: list[_Tok], covered: set[int]) -> list:
     """"A sign stands on the diner's roof": the owner of a part is a thing of the scene, even
     when nothing else names it as one (a setting word like "diner" included)."""
@@ -1196,9 +1201,18 @@ def _owners_of_parts(toks: list[_Tok], covered: set[int]) -> list:
         j = k + 1
         while j < len(toks) - 1 and vocabulary.is_adjective(toks[j].text):
             j += 1
-        if singular(toks[j].text) not in _BUILDING_PARTS and singular(toks[j].text) not in vocabulary.part_owners:
-            continue
         base = w[:-2]
+        part = singular(toks[j].text)
+        if part in vocabulary.body_parts or part in _LIVING_PARTS:
+            known = match_phrase((base,))
+            entry = None if known else vocabulary.match((base,))
+            shape = load_catalogue()[known or entry.category].shape if known or entry is not None else None
+            if shape in _LIVING:  # (one named before is that one again: "the calf's back")
+                out.append((k, k + 1, known or entry.category, entry))  # "a groom brushes the horse's mane"
+                covered.add(k)
+            continue
+        if part not in _BUILDING_PARTS and part not in vocabulary.part_owners:
+            continue
         if base not in vocabulary.places and any(singular(toks[i].text) == base for i in covered if i < k):
             continue  # "the hut's roof" after "a site hut": the part places by the hut named before (a
             # place named before set the scene and is no thing yet)

@@ -290,7 +290,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return m.group
         if (m.definite or m.each) and not sizes:
             vocabulary = load_vocabulary()
-            head = vocabulary.singular(self.toks[m.end - 1].text)
+            last = self.toks[m.end - 1].text
+            head = vocabulary.singular(last[:-2] if last.endswith("'s") else last)  # ("the calf's back": the calf)
             # a camel is not "the pig", nor "the cookhouse" the bunkhouse: in a family, or between
             # two guessed words, one thing only by the same head noun
             family = self.catalogue[m.category].family
@@ -1108,6 +1109,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # ("a groom waits with the ponies beside a shed": the groom is there, the ponies with him)
             company = c.company and target not in _PERSONAL and kind in (*_GROUND_KINDS, "at", "between", "under")
             in_hand = in_hand or company
+            # "holding a lantern above her head": it stays in hand (above anything else it is above that)
+            lifted = holding and kind in ("above", "over") and (body is not None or target in _PERSONAL)
+            in_hand = in_hand or lifted
             # the with-part named stuff that is no object of its own ("with geraniums"; not "with a
             # great bible", one thing the catalogue does not know), and no verb of the head's ("a man
             # with a hat sits in a chair")
@@ -1143,6 +1147,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 c.head, c.wsub = None, []
                 if body == "on" and not in_hand:
                     return end  # "a woman with clippers in her hand": no object named in hand, none placed
+                if lifted:
+                    return end  # held over one's own head: in hand, nothing more
                 named = any(w not in _STOP and w[:1].isalpha() for w in gap)
                 if named and not closed and p.part is not None and target in ("it", "them"):
                     return end  # "a stall ..., with a cash tin on its counter": what is on its own part is no object
