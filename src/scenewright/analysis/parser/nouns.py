@@ -1505,8 +1505,9 @@ def _acts_as_person(toks: list[_Tok], k: int) -> bool:
     if found is None:
         return False
     verb, skipped = found
-    if verb in load_vocabulary().person_verbs:
-        return True
+    person_verbs = load_vocabulary().person_verbs
+    if verb in person_verbs or (f"{verb}s" in person_verbs or f"{verb}es" in person_verbs) and verb.isalpha():
+        return True  # ("three shearers work": the plural's verb, listed by its -s form)
     k += skipped
     owner = k + 1
     while owner < len(toks) and owner - k <= 2 and toks[owner].text in _PARTICLES:
