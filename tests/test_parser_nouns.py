@@ -1005,3 +1005,11 @@ def test_clothing_no_one_wears_is_a_thing():
     assert sum(o.name == "raincoat" for o in parsed.objects) == 3
     assert "cardigan" in names("A cardigan is folded on the stool.")
     assert "cardigan" not in names("A woman in a cardigan sits on the stool.")
+
+
+def test_an_opening_sentence_that_only_names_a_building_is_where_the_scene_stands():
+    inside = parse_scene("An old cider barn on an orchard farm in autumn. Two men roll barrels across the floor.")
+    assert inside.indoor and "barn" not in {o.name for o in inside.objects}
+    # the text comes back to it from outside: a building of the scene
+    outside = parse_scene("A stone barn at dawn. Two goats graze beside the barn.")
+    assert "barn" in {o.name for o in outside.objects}

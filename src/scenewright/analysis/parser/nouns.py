@@ -867,6 +867,15 @@ def _opening_setting(toks: list[_Tok], s: int, e: int) -> bool:
     if k < len(toks) and toks[k].text == "with":
         rest = itertools.takewhile(lambda t: t.text not in (".", "!", "?"), toks[k:])
         return not any(t.text in ("it", "its") for t in rest)
+    if k < len(toks) and toks[k].text in (".", "!", "?"):
+        # "A sheep shearing shed on a hill farm in late spring.": a sentence that only names the
+        # building is where the scene stands, unless the text comes back to it from outside
+        # ("... . Two cows graze beside the barn", "Its roof ...")
+        head = singular(toks[e - 1].text)
+        later = toks[k + 1 :]
+        listed = any(t.text in ("and", ",") for t in toks[e:k])  # ("A garden shed and a mower.": things)
+        again = any(singular(t.text.removesuffix("'s")) == head for t in later)
+        return bool(later) and not listed and not again and later[0].text not in ("it", "its")
     return k < len(toks) and toks[k].text == ":"
 
 
