@@ -1012,4 +1012,4 @@ def test_an_opening_sentence_that_only_names_a_building_is_where_the_scene_stand
     assert inside.indoor and "barn" not in {o.name for o in inside.objects}
     # the text comes back to it from outside: a building of the scene
     outside = parse_scene("A stone barn at dawn. Two goats graze beside the barn.")
-    assert "barn" in {o.name for o in outside.objects}
+    assert any(o.name.endswith("barn") for o in outside.objects)
