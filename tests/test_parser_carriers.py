@@ -179,3 +179,9 @@ def test_people_in_an_open_shelter_stand_on_its_floor_and_a_band_is_people():
     assert ("band_1", "on", "gazebo_1") in found and ("girl_1", "on", "gazebo_2") in found
     # a closed tent keeps whoever is inside out of the layout
     assert not parse_scene("A scout sleeps in the tent.").relations
+
+
+def test_a_board_people_stand_on_is_a_platform_not_a_sign():
+    board = next(o for o in parse_scene("Two dancers stand on a raised wooden board.").objects if o.name == "board")
+    assert board.category != "panel" and board.size[2] < 1.0 and min(board.size[:2]) > 1.0
+    assert next(o for o in parse_scene("A painted board hangs by the door.").objects).category == "panel"

@@ -457,6 +457,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.relations[:0] = held  # before any other support the list gave them
         self._aboard_their_vehicle(mentions)
         self._one_per_holder()
+        self._boards_underfoot()
+
+    def _boards_underfoot(self) -> None:
+        """A board, a panel, a sheet nobody listed that people or animals stand on is a raised floor,
+        not a sign ("three shearers work on a raised wooden board"): a platform, low and wide."""
+        platform = load_vocabulary().match(("platform",))
+        for kind, s, t, _ in self.relations:
+            group = self.groups[t]
+            if kind == "on" and group.category == "panel" and group.guessed and self._living(s) and not group.sized:
+                group.category, group.size = platform.category, platform.size
 
     def _aboard_their_vehicle(self, mentions) -> None:
         """"A train waits at the platform, its driver leaning out": a person a vehicle's "its"
