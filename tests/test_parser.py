@@ -282,6 +282,7 @@ def test_style(text, style):
         ("A living room with a sofa.", True, "wood floor"),
         ("A clearing.", False, "grass"),
         ("A hall with a marble floor.", True, "marble"),
+        ("A village croquet game on a Sunday.", False, "grass"),  # a game played on grass outweighs the village
     ],
 )
 def test_ground(text, indoor, kind):

@@ -53,7 +53,8 @@ _GROUND_MATERIALS = [
     ("wood floor", ("wooden floor", "wood floor", "hardwood", "parquet", "floorboards", "wooden deck", "plank")),
     ("stone", ("stone floor", "flagstone", "flagstones", "paved")),
     ("dirt", ("dirt", "mud", "muddy", "soil")),
-    ("grass", ("grass", "grassy", "lawn")),
+    ("grass", ("grass", "grassy", "lawn", "turf", "outfield", "cricket", "croquet", "bowling green", "playing field",
+               "football pitch", "rugby pitch")),  # (games played on grass: the ground of the village too)
 ]
 #: Words for places, and the ground each has: the setting's own word decides (the first one the
 #: description names, its opening sentence first), so "a savannah enclosure at a city zoo" is
