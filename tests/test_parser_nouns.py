@@ -27,6 +27,7 @@ def names(text: str) -> set[str]:
         ("Three gleaners are working beside the cart.", "gleaner"),  # agent noun doing what people do
         ("A cooper is hooping a barrel next to the shed.", "cooper"),  # a deed done to a thing
         ("Two sawyers work in the pit.", "sawyer"),  # a plural's person verb, in its base form
+        ("Four jurors sit on a long bench.", "juror"),  # sitting on a seat
     ],
 )
 def test_person_nouns_are_figures_named_by_the_text(text, person):

@@ -1514,9 +1514,12 @@ def _acts_as_person(toks: list[_Tok], k: int) -> bool:
     if found is None:
         return False
     verb, skipped = found
-    person_verbs = load_vocabulary().person_verbs
+    vocabulary = load_vocabulary()
+    person_verbs = vocabulary.person_verbs
     if verb in person_verbs or (f"{verb}s" in person_verbs or f"{verb}es" in person_verbs) and verb.isalpha():
         return True  # ("three shearers work": the plural's verb, listed by its -s form)
+    if verb in vocabulary.postures.get("sitting", ()) and _seat_after(toks, k + skipped + 1):
+        return True  # "members sit on benches": sitting on a seat is what people do
     k += skipped
     owner = k + 1
     while owner < len(toks) and owner - k <= 2 and toks[owner].text in _PARTICLES:
@@ -1524,6 +1527,18 @@ def _acts_as_person(toks: list[_Tok], k: int) -> bool:
     if _is_verb(verb) and owner < len(toks) and toks[owner].text in ("his", "her"):
         return True  # "a punter poles his raft": what is his is a person's
     return skipped > 0 and verb.endswith("ing") and k + 1 < len(toks) and toks[k + 1].text in _DETERMINERS
+
+
+def _seat_after(toks: list[_Tok], k: int) -> bool:
+    """A seat named right after ``k`` by "on"/"in"/"at" ("on benches", "in a deckchair")."""
+    if k >= len(toks) or toks[k].text not in ("on", "in", "at", "upon"):
+        return False
+    seats = load_vocabulary().carriers.get("seats", ())
+    for j in range(k + 1, min(k + 5, len(toks))):
+        name = match_phrase((singular(toks[j].text),))
+        if name is not None:
+            return name in seats
+    return False
 
 
 def _dressed(toks: list[_Tok], k: int) -> bool:
