@@ -185,3 +185,8 @@ def test_a_board_people_stand_on_is_a_platform_not_a_sign():
     board = next(o for o in parse_scene("Two dancers stand on a raised wooden board.").objects if o.name == "board")
     assert board.category != "panel" and board.size[2] < 1.0 and min(board.size[:2]) > 1.0
     assert next(o for o in parse_scene("A painted board hangs by the door.").objects).category == "panel"
+
+
+def test_from_a_rim_or_an_edge_one_perches_on_its_owner():
+    found = {(r.source, r.relation, r.target) for r in parse_scene("Two finches drink from the birdbath's rim.").relations}
+    assert ("finch_1", "on", "bird_bath_1") in found

@@ -382,7 +382,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.rel_at = {
             r.start: r for r in found
             if r.kind != "from" or self._verb_before(r.start, self._lookout) or self._from_to(r.end, starts)
-            or self._seat_after(r, mentions)
+            or self._seat_after(r, mentions) or self._from_perch_part(r.end)
         }  # fmt: skip
         self._rows_then_with(mentions)
         #: Mentions the text puts on a wall ("a luggage rack on the wall"): hung, so "above" holds.
@@ -1562,6 +1562,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         seat = next((m for m in mentions if rel.end <= m.start < rel.end + 4), None)
         taken = any(m.end == rel.start and max(self._size(m)) <= _HANDHELD_SIZE for m in mentions)
         return seat is not None and not taken and load_vocabulary().carries(seat.category, seat.phrase, ("seats",))
+
+    def _from_perch_part(self, start: int) -> bool:
+        """"From" names a part one perches on ("doves drink from the fountain's rim", "a gull
+        dives from the edge of the pier"): where the doer is."""
+        words = [t.text for t in self.toks[start : start + 4]]
+        if words[:1] == ["the"]:
+            words = words[1:]
+        perches = load_vocabulary().carriers.get("perches", ())
+        owned = len(words) > 1 and words[0].endswith("'s") and singular(words[1]) in perches
+        return owned or (len(words) > 1 and words[1] == "of" and singular(words[0]) in perches)
 
     def _from_to(self, start: int, starts: set[int]) -> bool:
         """"From it to a refinery", "from the gate to the barn": a thing, then "to" and another

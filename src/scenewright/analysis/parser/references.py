@@ -84,7 +84,7 @@ class _References:
                     if toks[k + 1].text == "of" and singular(toks[k].text) in (*_BUILDING_PARTS, *perch)
                 ), None)  # fmt: skip
                 part = toks[m.end].text if m.end < ce and toks[m.end - 1].text.endswith("'s") else ""
-                if singular(part) in _BUILDING_PARTS:
+                if singular(part) in _BUILDING_PARTS or singular(part) in perch:  # ("the fountain's rim")
                     self._part = singular(part)
                     return ([g] if g >= 0 else None), m.end + 1  # "on the diner's roof": by the diner, on its roof
                 return ([g] if g >= 0 else None), m.end
