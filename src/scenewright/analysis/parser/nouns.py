@@ -689,6 +689,8 @@ def _names_kind(toks: list[_Tok], e: int) -> bool:
         return False  # "pushes a wheelchair past the chairs"
     if not t.joined and _plural_verb(toks, e):
         return False  # "two mechanics on a lift work on it", "a yew and a rowan shade the gate": a verb
+    if _joint_verb_at(toks, e):
+        return False  # "a farmer and his son wade into the pond"
     if t.joined or (w in load_vocabulary().not_things and singular(w) == w and w not in _FINITE):
         return True  # "camel-hair tents", "a bear face"
     if w in _IRREGULAR_PARTICIPLES:
@@ -1033,9 +1035,22 @@ def _bare_plural_verb(toks: list[_Tok], s: int, e: int) -> bool:
     # "the quartermaster, an android, counts canisters by the gate": after an apposition's comma, a
     # bare noun that ends no list ("hats, shoes and bags"; "cacti and tumbleweeds dot the sand")
     two = toks[e + 1].text if e + 1 < len(toks) else "."
+    if _plural_form_verb(after, two):
+        return False  # "Beyond them, spectators crowd a grandstand", "..., musicians play for a princess"
     return toks[s - 1].text == "," and after[:1].isalpha() and after not in _STOP and not toks[e].joined and (
         two not in (",", "and", "or")
     )
+
+
+def _plural_form_verb(word: str, after: str) -> bool:
+    """``word`` reads as the plural verb of the noun before it: a person's, an animal's or a
+    hanging verb without its -s ("play", "sing"), or any bare word with an object right after it
+    ("crowd a grandstand", "unload the boxes"); a noun there would end in -s ("counts canisters")."""
+    vocabulary = load_vocabulary()
+    if not word[:1].isalpha() or word in _STOP or singular(word) != word:
+        return False
+    verbs = vocabulary.person_verbs | vocabulary.animal_verbs | _HANG_VERBS
+    return word in _FINITE or any(word + ending in verbs for ending in ("s", "es")) or after in _OBJECT_OPENERS
 
 
 #: Nouns of a group of people, whose "of four" counts its members ("a family of four").
@@ -1332,6 +1347,8 @@ def _unknown_heads(toks: list[_Tok], raw: list, covered: set[int]) -> list:
             continue
         if word in _ADVERB_NOUNS or word in _ORDINALS:
             continue  # "the counter right next to the till", "the stall left of the gate"
+        if _joint_verb(toks, k, category):
+            continue  # "a farmer and his son wade into the pond": the plural verb of both
         verb = word in _HANG_VERBS or word in vocabulary.person_verbs or _plural_verb(toks, k)  # "holographic koi swim"
         if verb or not _opens_phrase(toks, s) or (_counted_plural(toks, s) and singular(word) == word):
             continue  # "robots sell orbs", "three koi swim": a verb after its subject
@@ -1346,6 +1363,30 @@ def _unknown_heads(toks: list[_Tok], raw: list, covered: set[int]) -> list:
         out.append((k, k + 1, entry.category, entry))
         covered.add(k)
     return out
+
+
+def _joint_verb(toks: list[_Tok], k: int, category: str) -> bool:
+    """The bare word at ``k`` follows a one-word living thing joined by "and" to one before it
+    ("a goat and her kid", "the boy and his dog"): the two make a plural subject, so the word,
+    with a preposition or an object after it, is their verb."""
+    s = k - 1
+    if s < 2 or toks[s - 2].text != "and" or toks[s - 1].text not in _DETERMINERS or k + 1 >= len(toks):
+        return False
+    word, after = toks[k].text, toks[k + 1].text
+    # (its object: a preposition, a determiner or a bare plural, "fold towels"; not a verb of
+    # one subject, "and a snake charmer plays", "stands")
+    vocabulary = load_vocabulary()
+    verbs = vocabulary.person_verbs | vocabulary.animal_verbs | _HANG_VERBS
+    takes = after in _STOP or (singular(after) != after and singular(after) not in _FINITE and after not in verbs)
+    if not word[:1].isalpha() or word in _STOP or singular(word) != word or not takes:
+        return False
+    return category in _LIVING or load_catalogue()[category].shape in _LIVING
+
+
+def _joint_verb_at(toks: list[_Tok], k: int) -> bool:
+    """`_joint_verb` after whatever one-word thing stands before ``k``."""
+    found = _match_at(toks, k - 1) if k > 0 else None
+    return found is not None and found[0] == k and _joint_verb(toks, k, found[1])
 
 
 def _guess(toks: list[_Tok], head: int, before: list[_Tok]) -> Entry:
@@ -1734,6 +1775,11 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             break
         if (w in _STOP and not _position_adjective(toks, j)) or not w[0].isalnum():
             break
+        if j == prev_end and j > 0 and singular(w) == w and not t.joined and (
+            _plural_subject_word(toks[j - 1]) or _joint_verb_at(toks, j)
+        ):
+            break  # "two volunteers unload crates", "a man and his son unload crates": the verb of
+            # the subject before, no kind of crate
         adjectives.insert(0, t.orig)
         j -= 1
     if count is None and j >= 1 and (toks[j - 1].text, toks[j].text) in _CROWDED:
@@ -1749,6 +1795,11 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
     if not counted and not plural and any(a.lower() in _ORDINALS for a in adjectives):
         m.definite = True  # "between the first and second car": the second of those already there
     m.count, m.counted, m.adjectives = count, counted, adjectives
+
+
+def _plural_subject_word(tok: _Tok) -> bool:
+    """A plural noun, not a possessive ("the boys' bikes"): what follows it at once is its verb."""
+    return tok.text[:1].isalpha() and singular(tok.text) != tok.text and not tok.orig.endswith(("'", "’"))
 
 
 #: Quantity nouns of a heap: a heap of small things or of stuff is one thing ("a stack of plates").

@@ -1,0 +1,34 @@
+"""Which words are things, round 3: verbs after a plural or joint subject, and other words the
+reader took for the wrong thing (issue #10)."""
+
+from scenewright.analysis.parser import parse_scene
+
+
+def names(text: str) -> set[str]:
+    return {o.name.lower() for o in parse_scene(text).objects}
+
+
+def test_bare_verb_after_counted_plural_names_no_kind():
+    # "unload" is the verb of "two boys", not a kind of apple
+    assert names("Two boys unload apples from a van.") == {"boy", "apple", "van"}
+
+
+def test_joint_subject_keeps_both_and_reads_the_verb():
+    # "X and her Y" make a plural subject: the bare word after Y is their verb
+    assert names("A mare and her foal graze in a meadow.") >= {"mare", "foal"}
+    assert names("A farmer and his son wade into the pond.") >= {"farmer", "son"}
+    got = names("A man and his daughter fold towels on a bed.")
+    assert {"man", "daughter", "towel"} <= got and not any("fold" in n for n in got)
+
+
+def test_joint_subject_leaves_one_subject_verbs_alone():
+    got = names("Two skaters race past, and a snake charmer plays a flute beside a basket.")
+    assert "snake charmer" in got or "charmer" in got
+
+
+def test_bare_plural_after_comma_before_its_verb_is_a_subject():
+    # after a fronted phrase, a plural person noun with a verb after it is the subject
+    assert {"dancer"} <= names("Inside the hall, dancers crowd the stage.")
+    assert {"singer"} <= names("Under the arch, singers sing for a queen.")
+    # the old reading stays: a plural word with an object after it is a verb
+    assert "shoes" not in names("The smith, a tall man, shoes a brown pony.")
