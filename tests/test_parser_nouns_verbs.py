@@ -32,3 +32,16 @@ def test_bare_plural_after_comma_before_its_verb_is_a_subject():
     assert {"singer"} <= names("Under the arch, singers sing for a queen.")
     # the old reading stays: a plural word with an object after it is a verb
     assert "shoes" not in names("The smith, a tall man, shoes a brown pony.")
+
+
+def test_units_of_stuff_are_the_things():
+    # a plural unit of stuff opening a sentence is its subject, counted by the unit
+    got = [o.name for o in parse_scene("Sacks of barley lean on the barn wall. Crates of coal are piled by the stove.").objects]
+    assert got.count("crate") == 3
+
+
+def test_one_heap_of_stuff_is_named_by_the_stuff():
+    assert "silver" in names("A raven sits on a pile of silver.")
+    assert "rubble" in {n.split()[0] for n in names("A heap of rubble.")}
+    # a colour before a plural describes the things of the heap, it is no stuff
+    assert "old" not in names("A pile of old bricks lies by the gate.")

@@ -931,6 +931,11 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             continue  # "a six-wheeled rover": a number hyphened to a word describes, counts nothing
         if w in _NUMBERS and i > 1 and toks[i - 1].text == "of" and toks[i - 2].text in _PEOPLE_GROUPS:
             continue  # "a family of four shelters under the awning": how many, then the verb
+        if w == "of" and _heap_of_stuff(toks, i, covered):
+            entry = _guess(toks, i + 1, toks[i - 1 : i + 1])
+            out.append((i + 1, i + 2, entry.category, entry))
+            covered.add(i + 1)
+            continue  # "a pile of gold", "a heap of rubble": one heap, named by its stuff
         plural = w not in ("a", "an", "another", "one", "the", "and", *_OWNERS) and not (w.isdigit() and int(w) == 1)
         j = i + 1
         if w == "a" and j < n and toks[j].text in ("few", "couple", "pair", "dozen"):
@@ -1300,6 +1305,8 @@ def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
             if singular(toks[j - 1].text) != toks[j - 1].text:
                 head = j - 1  # the plural ends the phrase
                 break
+        if head is not None and j + 2 < n and toks[j].text == "of" and _stuff_word(toks, j + 1, covered):
+            j += 2  # "Bales of wool are stacked": units of stuff, counted by the unit
         after = toks[j].text if j < n else "."
         verb = after[:1].isalpha() and (after not in _STOP or after in _FINITE)
         # a listed noun there is a verb when an object follows it ("cans litter the floor")
@@ -1313,6 +1320,28 @@ def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
         out.append((head, head + 1, entry.category, entry))
         covered.add(head)
     return out
+
+
+def _stuff_word(toks: list[_Tok], k: int, covered: set[int]) -> bool:
+    """The word at ``k`` names stuff, no thing ("wool", "gold", "sand"): what a unit or a heap
+    of it is made of, so the unit, or the heap named by the stuff, is the thing."""
+    w = toks[k].text
+    return k not in covered and w[:1].isalpha() and w not in _STOP and singular(w) == w and (
+        w in load_vocabulary().not_things and not load_vocabulary().is_adjective(w)
+    )
+
+
+def _heap_of_stuff(toks: list[_Tok], i: int, covered: set[int]) -> bool:
+    """"of" at ``i`` joins one heap ("a pile", "a heap") to one word of stuff that ends the phrase
+    ("a pile of gold", "a heap of rubble."): a colour word there is the stuff too."""
+    if i < 1 or i + 1 >= len(toks) or toks[i - 1].text not in _HEAPS or singular(toks[i - 1].text) != toks[i - 1].text:
+        return False
+    w = toks[i + 1].text
+    after = toks[i + 2].text if i + 2 < len(toks) else "."
+    ends = not after[:1].isalpha() or (after in _STOP and after not in ("of", "and"))
+    # (a verb may follow stuff, "a heap of rubble blocks the door", not a colour: "a pile of old bricks")
+    stuff = ends and load_vocabulary().is_adjective(w) or (ends or _is_verb(after)) and w in load_vocabulary().not_things
+    return stuff and i + 1 not in covered and w[:1].isalpha() and w not in _STOP and singular(w) == w
 
 
 def _opens_phrase(toks: list[_Tok], k: int) -> bool:
