@@ -45,3 +45,17 @@ def test_one_heap_of_stuff_is_named_by_the_stuff():
     assert "rubble" in {n.split()[0] for n in names("A heap of rubble.")}
     # a colour before a plural describes the things of the heap, it is no stuff
     assert "old" not in names("A pile of old bricks lies by the gate.")
+
+
+def test_worker_compound_does_not_name_its_place_before():
+    # "the hoop" after "a hoopkeeper" is a new thing: the compound names a person, not the hoop
+    assert "hoop" in names("A hoopkeeper kneels behind the hoop at the near end.")
+    # a closed compound of things still names it ("the fire" after "a fireplace")
+    assert "fire" not in names("A fireplace glows. A cat sleeps by the fire.")
+
+
+def test_owner_of_an_outside_part_is_a_building():
+    assert "tavern" in names("Pigeons sit on the roof of the tavern.")
+    assert "silo" in names("Two crows perch on the roof of the silo.")
+    # in the opening, the roof of a place holds the scene
+    assert "tavern" not in names("A party on the roof of a tavern at night. Two men dance.")

@@ -730,6 +730,8 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
         return False  # "a dragon sleeps on top of a hill": the hill is a thing here
     if j >= 0 and toks[j].text in _DETERMINERS and _placed_by(toks, j) and not _verbless_opening(toks, j):
         return False  # "a mule waits beside the tavern": a building of the scene (_buildings)
+    if _outside_part_of(toks, j + 1) and not _verbless_opening(toks, j):
+        return False  # "pigeons sit on the roof of the tavern": seen from outside, a building of the scene
     if _opening_setting(toks, s, e):
         return True
     if building:
@@ -1000,7 +1002,7 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         opening = i == 0 or not toks[i - 1].text[:1].isalpha()
         placed = w == "the" and opening and j < n and toks[j].text in _PLACING_VERBS
         # ("near", "by" and "past" the landmarks and the fittings of a place too: "near the airlock")
-        by = _placed_by(toks, i, _BY_KINDS - {"near"}) and not _named_before(toks, head)
+        by = (_placed_by(toks, i, _BY_KINDS - {"near"}) or _outside_part_of(toks, i)) and not _named_before(toks, head)
         by = by and (j >= n or toks[j].text not in ("one", "ones"))
         if definite and entry.category != "figure" and not placed and not by:
             continue  # "the far end", "her turn": after "the" or "her", only a person is read, a
@@ -1129,6 +1131,12 @@ def _possessed(toks: list[_Tok], covered: set[int]) -> list:
 _OUTSIDE_PARTS = {"roof", "rooftop", "chimney", "eave", "gable", "facade", "porch", "veranda", "doorstep"}
 
 
+def _outside_part_of(toks: list[_Tok], i: int) -> bool:
+    """The phrase opening at ``i`` owns a part only a building seen from outside shows ("on the
+    roof of [the granary]", "on the steps of [the chapel]"): a building of the scene."""
+    return i >= 2 and toks[i - 1].text == "of" and singular(toks[i - 2].text) in _OUTSIDE_PARTS | {"step"}
+
+
 def _owners_of_parts(toks: list[_Tok], covered: set[int]) -> list:
     """"A sign stands on the diner's roof": the owner of a part is a thing of the scene, even
     when nothing else names it as one (a setting word like "diner" included)."""
@@ -1225,9 +1233,15 @@ def _named_before(toks: list[_Tok], k: int) -> bool:
     after "a fireplace"): that thing again (``_alias_mentions``), no new one."""
     word = singular(toks[k].text)
     return any(
-        w != word and (w.endswith(word) or w.startswith(word))
+        w != word and (w.endswith(word) or w.startswith(word) and not _agent_compound(w[len(word) :]))
         for w in (singular(t.text) for t in toks[:k] if t.text[:1].isalpha())
     )
+
+
+def _agent_compound(rest: str) -> bool:
+    """``rest`` ends a closed compound that names whoever works at its first part ("wicketkeeper",
+    "boatman", "lamplighter"): that thing is still to be named ("the boatman rows the boat")."""
+    return len(rest) >= 3 and rest.endswith(("er", "or", "man", "woman", "ist"))
 
 
 def _buildings(toks: list[_Tok], covered: set[int]) -> list:
@@ -1250,7 +1264,8 @@ def _buildings(toks: list[_Tok], covered: set[int]) -> list:
                 toks[j].text not in _STOP or toks[j].joined or toks[j + 1].joined
             ):
                 j -= 1  # back over describing words ("the little waiting room", "a false-front saloon")
-            if j < 0 or toks[j].text not in _DETERMINERS or not _placed_by(toks, j) or _verbless_opening(toks, j):
+            placed = j >= 0 and (_placed_by(toks, j) or _outside_part_of(toks, j))  # ("on the roof of the inn")
+            if not placed or toks[j].text not in _DETERMINERS or _verbless_opening(toks, j):
                 break
             end = k + width
             out.append((k, end, entry.category, entry))
