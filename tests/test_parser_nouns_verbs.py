@@ -59,3 +59,22 @@ def test_owner_of_an_outside_part_is_a_building():
     assert "silo" in names("Two crows perch on the roof of the silo.")
     # in the opening, the roof of a place holds the scene
     assert "tavern" not in names("A party on the roof of a tavern at night. Two men dance.")
+
+
+def test_noun_before_a_use_and_a_thing_names_what_it_is_for():
+    assert names("A goat milking stool stands by the wall.") == {"stool", "wall"} or "goat" not in names(
+        "A goat milking stool stands by the wall."
+    )
+    # a person before the -ing word does the deed
+    assert {"man", "sofa"} <= names("A man watching television sits on a sofa.")
+
+
+def test_animal_before_an_unlisted_opening_place_is_its_kind():
+    got = names("An otter sanctuary by a river. Two otters swim.")
+    assert [o.name for o in parse_scene("An otter sanctuary by a river. Two otters swim.").objects].count("otter") == 2, got
+
+
+def test_listed_building_after_in_holds_the_opening_place():
+    got = names("A vintage guitar shop in a converted bus depot. A stool stands by the window.")
+    assert "depot" not in got and "bus depot" not in got
+    assert "depot" in names("A fox sleeps behind the depot.")

@@ -278,6 +278,13 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         verb_after = _counted_plural(toks, s) and e < n and not toks[e].joined and singular(follow) == follow
         if entry is not None and singular(words[-1]) == words[-1] and _names_kind(toks, e) and not verb_after:
             continue  # "a bear face", "a train compartment", "camel-hair tents": a kind, not a thing
+        if _use_compound(toks, s, e, cat):
+            continue  # "a sheep shearing shed", "a horse riding school": what the next thing is for
+        if e < n and toks[e].text[:1].isalpha() and toks[e].text not in _STOP and not toks[e].joined and (
+            not _is_verb(toks[e].text) and not _participle(toks[e].text) and _match_at(toks, e) is None
+            and _unknown_opening_place(toks, e, e + 1)
+        ):
+            continue  # "An otter sanctuary by a river.": the kind of the place nobody listed the opening names
         follow_two = f"{follow} {toks[e + 1].text}" if e + 1 < n else ""
         if follow in _VENUES or follow in vocabulary.places or follow_two in vocabulary.places or (
             follow and singular(follow) in _VENUES and len(words) == 1
@@ -678,6 +685,19 @@ _IRREGULAR_PARTICIPLES = {"strung", "hung", "spun", "built", "made", "lit", "set
                           "drawn", "bent", "kept", "cut", "split", "shut"}  # fmt: skip
 
 
+def _use_compound(toks: list[_Tok], s: int, e: int, category: str) -> bool:
+    """A singular noun, not a person, then an -ing word and a bare singular thing ("a sheep
+    shearing shed", "a cheese weighing house"): the first two name what the thing is for, so the
+    first is no thing of the scene. (A person there does the deed: "a man watching television".)"""
+    if e + 1 >= len(toks) or e - s != 1 or toks[e].joined or not toks[e].text.endswith("ing"):
+        return False
+    word, nxt = toks[s].text, toks[e + 1].text
+    if singular(word) != word or category in _LIVING - {"animal", "bird"} or load_catalogue()[category].shape == "figure":
+        return False
+    found = _match_at(toks, e + 1)
+    return found is not None and nxt not in _STOP and singular(toks[found[0] - 1].text) == toks[found[0] - 1].text
+
+
 def _names_kind(toks: list[_Tok], e: int) -> bool:
     """The noun ending at ``e`` qualifies the word after it: a hyphen joins them, or a noun that
     is no verb, adverb or participle follows."""
@@ -884,6 +904,8 @@ def _enterable(toks: list[_Tok], s: int, e: int) -> bool:
         "house" if head.endswith("house") else None
     )
     category = load_catalogue()[name] if name else None
+    if (head,) in load_vocabulary().buildings:
+        return True  # "a showroom in a converted bus depot": a building the vocabulary lists
     return category is not None and category.shape == "house" and category.size[2] >= _STOREY
 
 
