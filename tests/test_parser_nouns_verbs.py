@@ -78,3 +78,16 @@ def test_listed_building_after_in_holds_the_opening_place():
     got = names("A vintage guitar shop in a converted bus depot. A stool stands by the window.")
     assert "depot" not in got and "bus depot" not in got
     assert "depot" in names("A fox sleeps behind the depot.")
+
+
+def test_clothing_that_hangs_or_lies_is_a_thing():
+    got = [o.name for o in parse_scene("Woollen coats hang on a hook by the door.").objects]
+    assert got.count("coat") >= 2
+    assert "cloak" in names("A cloak is draped over the chair.")
+    assert "shawl" in names("An old woman sits by a shawl folded on the bench.")
+    # clothing a person is in stays worn
+    assert "cloak" not in names("A knight in a cloak stands by the gate.")
+
+
+def test_a_wig_is_worn():
+    assert "wig" not in " ".join(names("A judge in a long powdered wig sits at the bench."))

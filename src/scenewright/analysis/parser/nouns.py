@@ -1011,8 +1011,9 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         # "eight lanes side by side": a setting is never counted, so a counted place is a row of things
         one = singular(word)
         counted_place = _NUMBERS.get(w, 0) > 1 and one != word and one in vocabulary.places and one not in _VENUES
-        # "five pairs of shoes", "a rack of coats": clothing counted out is not worn
-        stock = w == "of" and word in vocabulary.clothing
+        # "five pairs of shoes", "a rack of coats": clothing counted out is not worn; nor is
+        # clothing that hangs or lies somewhere ("three coats lie on the bed")
+        stock = w == "of" and word in vocabulary.clothing or _laid_out(toks, head, j)
         # "a tesla coil", "a drum set": a measure word after the noun of its kind is the thing itself
         kind = toks[head - 1].text  # ("a washing line": what it is for)
         compound = word in _MEASURE_THINGS and head > i + 1 and (not vocabulary.is_adjective(kind) or kind.endswith("ing"))
@@ -1351,7 +1352,7 @@ def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
         if head is None or toks[head].quoted or not (after == "and" or verb):
             continue
         word = toks[head].text
-        if not vocabulary.is_thing_word(word) or _participle(word) or word in _QUANTITY:
+        if not (vocabulary.is_thing_word(word) or _laid_out(toks, head, j)) or _participle(word) or word in _QUANTITY:
             continue
         entry = _guess(toks, head, toks[k:head])
         out.append((head, head + 1, entry.category, entry))
@@ -1379,6 +1380,29 @@ def _heap_of_stuff(toks: list[_Tok], i: int, covered: set[int]) -> bool:
     # (a verb may follow stuff, "a heap of rubble blocks the door", not a colour: "a pile of old bricks")
     stuff = ends and load_vocabulary().is_adjective(w) or (ends or _is_verb(after)) and w in load_vocabulary().not_things
     return stuff and i + 1 not in covered and w[:1].isalpha() and w not in _STOP and singular(w) == w
+
+
+#: Participles of clothing put down or hung up, not worn ("a coat draped over the chair").
+_LAID = {"hung", "draped", "folded", "spread", "laid", "piled", "heaped", "strewn", "thrown", "slung", "pegged"}
+
+
+def _laid_out(toks: list[_Tok], head: int, j: int) -> bool:
+    """The clothing word at ``head`` is the subject of a placing verb ("leather coats hang on a
+    rail", "a cloak lies on the bench") or is put somewhere ("a shawl draped over the chair"): a
+    thing of the scene, not worn."""
+    if singular(toks[head].text) not in load_vocabulary().clothing or j >= len(toks):
+        return False
+    k = head - 1
+    while k >= 0 and toks[k].text[:1].isalpha() and (toks[k].text in _DETERMINERS or toks[k].text not in _STOP):
+        if _is_verb(toks[k].text):
+            break  # ("skirts a fleece spread out on it": the object of a deed)
+        k -= 1
+    if k >= 0 and toks[k].text in ("with", "in", "wearing", "without", "and", "or"):
+        return False  # "a boy with a red cap stands by the swing": the boy's verb, his cap
+    after = toks[j].text
+    if after in ("is", "are", "was", "were") and j + 1 < len(toks):
+        after = toks[j + 1].text
+    return after in _LAID or after in _PLACING_VERBS or after + "s" in _PLACING_VERBS
 
 
 def _opens_phrase(toks: list[_Tok], k: int) -> bool:
