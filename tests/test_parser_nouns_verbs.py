@@ -91,3 +91,17 @@ def test_clothing_that_hangs_or_lies_is_a_thing():
 
 def test_a_wig_is_worn():
     assert "wig" not in " ".join(names("A judge in a long powdered wig sits at the bench."))
+
+
+def test_compound_irregular_plurals_singularise_by_their_last_part():
+    from scenewright.core.catalogue import singular
+
+    assert singular("schoolchildren") == "schoolchild" and singular("dormice") == "dormouse"
+    assert singular("pumice") == "pumice"
+    got = [o.name for o in parse_scene("Three schoolchildren sit on a wall.").objects]
+    assert got.count("schoolchild") == 3
+
+
+def test_a_size_comparison_makes_no_thing():
+    assert "dog" not in names("A toad as big as a dog squats by the well.")
+    assert "plate" not in " ".join(names("A crab the size of a dinner plate scuttles over the sand."))

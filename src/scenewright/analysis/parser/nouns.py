@@ -599,12 +599,16 @@ _LIKENESS_VERBS = {"shaped", "painted", "styled", "drawn", "carved", "made", "bu
                    "disguised", "decorated", "looks", "look", "looking", "rendered", "moulded", "molded",
                    "sculpted"}  # fmt: skip
 #: Nouns before "of" that make what follows a look ("in the style of an etching", "in the shape of a heart").
-_LIKENESS_NOUNS = {"style", "shape", "form", "manner", "likeness", "fashion", "spirit"}
+_LIKENESS_NOUNS = {"style", "shape", "form", "manner", "likeness", "fashion", "spirit", "size"}
+#: Words of size a comparison ends on before "as"/"than" ("as big as a horse", "no bigger than a cat").
+_COMPARED = {"big", "large", "small", "tall", "long", "wide", "high", "heavy", "bigger", "larger", "smaller",
+             "taller", "longer", "wider", "higher", "heavier", "tiny", "huge"}  # fmt: skip
 
 
 def _likeness_of(toks: list[_Tok], s: int) -> bool:
     """The noun at ``s`` says what another thing looks like, not a thing of its own: "a sign
-    shaped like a cactus", "a rock resembling a turtle", "in the style of an ink painting"."""
+    shaped like a cactus", "a rock resembling a turtle", "in the style of an ink painting", "a
+    crab the size of a dinner plate"."""
     j = s - 1
     while j >= 0 and s - j <= 5 and toks[j].text[:1].isalnum() and toks[j].text not in ("resembling", "resembles") and (
         toks[j].text in ("a", "an", "the") or toks[j].text not in _STOP
@@ -615,6 +619,8 @@ def _likeness_of(toks: list[_Tok], s: int) -> bool:
     w, before = toks[j].text, toks[j - 1].text
     if w == "like":
         return before in _LIKENESS_VERBS
+    if w in ("as", "than") and before in _COMPARED:
+        return True  # "a dragon as big as a barn", "a spider no bigger than a coin": a size, no barn
     return (w == "of" and before in _LIKENESS_NOUNS) or w in ("resembling", "resembles")
 
 
