@@ -105,3 +105,14 @@ def test_compound_irregular_plurals_singularise_by_their_last_part():
 def test_a_size_comparison_makes_no_thing():
     assert "dog" not in names("A toad as big as a dog squats by the well.")
     assert "plate" not in " ".join(names("A crab the size of a dinner plate scuttles over the sand."))
+
+
+def test_a_noun_before_a_part_names_whose_part():
+    assert names("A rover with a crane arm is parked by the hut.") == {"rover", "hut"}
+    assert "heron" not in names("A jester with heron feathers in his cap sits on a barrel.")
+    assert "crane" in names("A crane stands by the quay.")
+
+
+def test_its_seat_of_a_vehicle_is_no_chair():
+    got = parse_scene("A rowing boat is moored at the jetty, a fisherman dozing in its seat.").objects
+    assert not any(o.category == "chair" for o in got)

@@ -280,6 +280,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a bear face", "a train compartment", "camel-hair tents": a kind, not a thing
         if _use_compound(toks, s, e, cat):
             continue  # "a sheep shearing shed", "a horse riding school": what the next thing is for
+        if _owner_of_named_part(toks, s, e):
+            continue  # "a crawler with a crane arm", "a hat of peacock feathers": whose part, no crane
         if e < n and toks[e].text[:1].isalpha() and toks[e].text not in _STOP and not toks[e].joined and (
             not _is_verb(toks[e].text) and not _participle(toks[e].text) and _match_at(toks, e) is None
             and _unknown_opening_place(toks, e, e + 1)
@@ -689,6 +691,22 @@ _IRREGULAR_PARTICIPLES = {"strung", "hung", "spun", "built", "made", "lit", "set
                           "swung", "bound", "wound", "laid", "held", "spread", "cast", "shot", "dug", "hidden",
                           "frozen", "broken", "woven", "fallen", "overgrown", "half", "full", "covered", "slung",
                           "drawn", "bent", "kept", "cut", "split", "shut"}  # fmt: skip
+
+
+#: Parts of a body or a machine, and what covers a body: a noun right before one names whose part
+#: it is ("a crane arm", "peacock feathers", "a bear hide"), not a thing of its own.
+_PART_NOUNS = {"arm", "limb", "wing", "tail", "hook", "propeller", "boom", "jib", "feather", "fur", "hide", "scale",
+               "plume", "horn", "antler", "tusk", "claw", "skin", "pelt", "fleece", "quill"}  # fmt: skip
+
+
+def _owner_of_named_part(toks: list[_Tok], s: int, e: int) -> bool:
+    """The singular noun ending at ``e`` qualifies a part noun that ends the phrase right after it."""
+    if e >= len(toks) or toks[e].joined or singular(toks[e - 1].text) != toks[e - 1].text:
+        return False
+    if singular(toks[e].text) not in _PART_NOUNS or toks[e].quoted:
+        return False
+    after = toks[e + 1].text if e + 1 < len(toks) else "."
+    return not after[:1].isalpha() or after in _STOP or _is_verb(after) or _participle(after)
 
 
 def _use_compound(toks: list[_Tok], s: int, e: int, category: str) -> bool:
