@@ -116,3 +116,14 @@ def test_a_noun_before_a_part_names_whose_part():
 def test_its_seat_of_a_vehicle_is_no_chair():
     got = parse_scene("A rowing boat is moored at the jetty, a fisherman dozing in its seat.").objects
     assert not any(o.category == "chair" for o in got)
+
+
+def test_a_band_is_a_group_of_people():
+    got = {o.name: o.category for o in parse_scene("A jazz band plays on the terrace.").objects}
+    assert got.get("jazz band", got.get("band")) == "figure"
+    # "a band of" counts its members, and so does "a quartet of four fiddlers"
+    assert [o.name for o in parse_scene("A band of monks walks by.").objects].count("monk") >= 2
+    got = [o.name for o in parse_scene("A string quartet of four fiddlers plays by the door.").objects]
+    assert got.count("fiddler") == 4 and "quartet" not in " ".join(got)
+    # "a family of four" is the family
+    assert "family" in {o.name for o in parse_scene("A family of four shelters under the awning.").objects}

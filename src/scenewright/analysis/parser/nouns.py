@@ -187,7 +187,10 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
                 i = longer
                 continue
         of = found is not None and found[0] - i == 1 and found[0] + 1 < n and toks[found[0]].text == "of"
-        members = toks[i].text in _PEOPLE_GROUPS and toks[found[0] + 1].text not in _NUMBERS if of else False
+        # ("a family of four" is the family; "a quartet of four fiddlers" are the fiddlers)
+        members = toks[i].text in _PEOPLE_GROUPS and (
+            toks[found[0] + 1].text not in _NUMBERS or _match_at(toks, found[0] + 2) is not None
+        ) if of else False
         counts = of and toks[found[0] + 1].text not in _DETERMINERS  # ("the tower of the castle" is a tower)
         if counts and (toks[i].text in _QUANTITY and toks[i].text not in _PEOPLE_GROUPS or members):
             i += 1  # "a crowd of fans", "a couple of crates", "a choir of monks": a count, not the crowd
@@ -1109,7 +1112,8 @@ def _plural_form_verb(word: str, after: str) -> bool:
 
 #: Nouns of a group of people, whose "of four" counts its members ("a family of four").
 _PEOPLE_GROUPS = {"family", "couple", "crowd", "audience", "party", "group", "team", "crew", "band", "gang",
-                  "troupe", "class", "congregation", "choir", "orchestra", "mob", "entourage", "retinue"}  # fmt: skip
+                  "troupe", "class", "congregation", "choir", "orchestra", "mob", "entourage", "retinue", "ensemble",
+                  "quartet", "trio"}  # fmt: skip
 
 
 def _listed_adjective(toks: list[_Tok], k: int) -> bool:
