@@ -127,3 +127,8 @@ def test_a_band_is_a_group_of_people():
     assert got.count("fiddler") == 4 and "quartet" not in " ".join(got)
     # "a family of four" is the family
     assert "family" in {o.name for o in parse_scene("A family of four shelters under the awning.").objects}
+
+
+def test_small_dog_breeds_are_animals():
+    got = {o.name: o.category for o in parse_scene("A chihuahua sleeps in a basket by the stove.").objects}
+    assert got.get("chihuahua") == "animal"
