@@ -49,6 +49,8 @@ _IRREGULAR = {"cacti": "cactus", "mice": "mouse", "geese": "goose", "people": "p
               "taxis": "taxi", "buses": "bus", "octopuses": "octopus", "walruses": "walrus", "cactuses": "cactus",
               "thermoses": "thermos", "canvases": "canvas", "lenses": "lens", "atlases": "atlas",
               "canvas": "canvas", "atlas": "atlas", "oxen": "ox", "axes": "axe", "pickaxes": "pickaxe"}
+#: Irregular plurals that also end closed compounds, whose plural is made by their last part.
+_COMPOUND_HEADS = ("children", "mice", "geese", "people")
 #: Plurals in -ves of nouns in -f or -fe other than those in -lf ("knives"); the rest drop the s ("hives").
 _F_PLURALS = {"knives": "knife", "wives": "wife", "lives": "life", "leaves": "leaf", "loaves": "loaf",
               "thieves": "thief", "sheaves": "sheaf", "scarves": "scarf", "hooves": "hoof", "wharves": "wharf",
@@ -119,9 +121,9 @@ def singular(word: str) -> str:
     """The singular of an English plural noun, by the common suffix rules."""
     if word in _IRREGULAR:
         return _IRREGULAR[word]
-    compound = next((w for w in ("children", "geese", "mice", "people") if word.endswith(w) and len(word) > len(w)), None)
-    if compound is not None:  # "grandchildren", "schoolchildren", "townspeople", "dormice"
-        return word[: -len(compound)] + _IRREGULAR[compound]
+    head = next((h for h in _COMPOUND_HEADS if word.endswith(h) and len(word) - len(h) >= 3), None)
+    if head is not None:
+        return word[: -len(head)] + _IRREGULAR[head]  # "grandchildren", "dormice", "snowgeese"
     if word.endswith("men") and word not in _SINGULAR_MEN:
         return word[:-3] + "man"
     if len(word) <= 3 or not word.endswith("s") or word.endswith(_KEEP_S):

@@ -188,7 +188,10 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
                 i = longer
                 continue
         of = found is not None and found[0] - i == 1 and found[0] + 1 < n and toks[found[0]].text == "of"
-        members = toks[i].text in _PEOPLE_GROUPS and toks[found[0] + 1].text not in _NUMBERS if of else False
+        # ("a family of four" is the family; "a quartet of four fiddlers" are the fiddlers)
+        members = toks[i].text in _PEOPLE_GROUPS and (
+            toks[found[0] + 1].text not in _NUMBERS or _match_at(toks, found[0] + 2) is not None
+        ) if of else False
         counts = of and toks[found[0] + 1].text not in _DETERMINERS  # ("the tower of the castle" is a tower)
         if counts and (toks[i].text in _QUANTITY and toks[i].text not in _PEOPLE_GROUPS or members):
             i += 1  # "a crowd of fans", "a couple of crates", "a choir of monks": a count, not the crowd
@@ -235,8 +238,6 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             # in a drysuit": a word nobody listed that a person is in
         if _in_look_list(toks, s):
             continue  # "a moon base, all chrome fins and pastel domes": how everything looks
-        if _compared_with(toks, s):
-            continue  # "a dragon the size of a cat", "a crab as big as a dinner plate": a measure, no cat
         if _likeness_of(toks, s) or _material_of(toks, s):
             modifier = []  # (the kind of a noun that is no thing names no kind of the next one)
             continue  # "a neon sign shaped like a cactus", "in the style of a woodcut": a look, not a
@@ -281,6 +282,15 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         verb_after = _counted_plural(toks, s) and e < n and not toks[e].joined and singular(follow) == follow
         if entry is not None and singular(words[-1]) == words[-1] and _names_kind(toks, e) and not verb_after:
             continue  # "a bear face", "a train compartment", "camel-hair tents": a kind, not a thing
+        if _use_compound(toks, s, e, cat):
+            continue  # "a sheep shearing shed", "a horse riding school": what the next thing is for
+        if _owner_of_named_part(toks, s, e):
+            continue  # "a crawler with a crane arm", "a hat of peacock feathers": whose part, no crane
+        if e < n and toks[e].text[:1].isalpha() and toks[e].text not in _STOP and not toks[e].joined and (
+            not _is_verb(toks[e].text) and not _participle(toks[e].text) and _match_at(toks, e) is None
+            and _unknown_opening_place(toks, e, e + 1)
+        ):
+            continue  # "An otter sanctuary by a river.": the kind of the place nobody listed the opening names
         follow_two = f"{follow} {toks[e + 1].text}" if e + 1 < n else ""
         if follow in _VENUES or follow in vocabulary.places or follow_two in vocabulary.places or (
             follow and singular(follow) in _VENUES and len(words) == 1
@@ -645,12 +655,16 @@ _LIKENESS_VERBS = {"shaped", "painted", "styled", "drawn", "carved", "made", "bu
                    "disguised", "decorated", "looks", "look", "looking", "rendered", "moulded", "molded",
                    "sculpted"}  # fmt: skip
 #: Nouns before "of" that make what follows a look ("in the style of an etching", "in the shape of a heart").
-_LIKENESS_NOUNS = {"style", "shape", "form", "manner", "likeness", "fashion", "spirit"}
+_LIKENESS_NOUNS = {"style", "shape", "form", "manner", "likeness", "fashion", "spirit", "size"}
+#: Words of size a comparison ends on before "as"/"than" ("as big as a horse", "no bigger than a cat").
+_COMPARED = {"big", "large", "small", "tall", "long", "wide", "high", "heavy", "bigger", "larger", "smaller",
+             "taller", "longer", "wider", "higher", "heavier", "tiny", "huge"}  # fmt: skip
 
 
 def _likeness_of(toks: list[_Tok], s: int) -> bool:
     """The noun at ``s`` says what another thing looks like, not a thing of its own: "a sign
-    shaped like a cactus", "a rock resembling a turtle", "in the style of an ink painting"."""
+    shaped like a cactus", "a rock resembling a turtle", "in the style of an ink painting", "a
+    crab the size of a dinner plate"."""
     j = s - 1
     while j >= 0 and s - j <= 5 and toks[j].text[:1].isalnum() and toks[j].text not in ("resembling", "resembles") and (
         toks[j].text in ("a", "an", "the") or toks[j].text not in _STOP
@@ -661,26 +675,9 @@ def _likeness_of(toks: list[_Tok], s: int) -> bool:
     w, before = toks[j].text, toks[j - 1].text
     if w == "like":
         return before in _LIKENESS_VERBS
+    if w in ("as", "than") and before in _COMPARED:
+        return True  # "a dragon as big as a barn", "a spider no bigger than a coin": a size, no barn
     return (w == "of" and before in _LIKENESS_NOUNS) or w in ("resembling", "resembles")
-
-
-#: Nouns of a measure that "of" compares with a thing ("the size of a cat", "the height of a man").
-_MEASURE_NOUNS = {"size", "height", "length", "width", "weight", "breadth"}
-
-
-def _compared_with(toks: list[_Tok], s: int) -> bool:
-    """The noun at ``s`` is what something is measured against, not a thing in the scene: after
-    "the size of", "as big as", "bigger than", past its article and describing words."""
-    j = s - 1
-    adjective = load_vocabulary().is_adjective
-    while j >= 0 and s - j <= 3 and (toks[j].text in _DETERMINERS or adjective(toks[j].text)):
-        j -= 1
-    if j < 1:
-        return False
-    w, before = toks[j].text, toks[j - 1].text
-    return (w == "of" and before in _MEASURE_NOUNS) or (w == "as" and toks[j - 2].text == "as" if j > 1 else False) or (
-        w == "than" and (before.endswith("er") or before in ("more", "less"))
-    )
 
 
 def _material_of(toks: list[_Tok], s: int) -> bool:
@@ -750,6 +747,40 @@ _IRREGULAR_PARTICIPLES = {"strung", "hung", "spun", "built", "made", "lit", "set
                           "drawn", "bent", "kept", "cut", "split", "shut"}  # fmt: skip
 
 
+#: Parts of a body or a machine, and what covers a body: a noun right before one names whose part
+#: it is ("a crane arm", "peacock feathers", "a bear hide"), not a thing of its own.
+_PART_NOUNS = {"arm", "limb", "wing", "tail", "hook", "propeller", "boom", "jib", "feather", "fur", "hide", "scale",
+               "plume", "horn", "antler", "tusk", "claw", "skin", "pelt", "fleece", "quill"}  # fmt: skip
+
+
+def _owner_of_named_part(toks: list[_Tok], s: int, e: int) -> bool:
+    """The singular noun ending at ``e`` qualifies a part noun that ends the phrase right after it."""
+    if e >= len(toks) or toks[e].joined or singular(toks[e - 1].text) != toks[e - 1].text:
+        return False
+    if singular(toks[e].text) not in _PART_NOUNS or toks[e].quoted:
+        return False
+    j = s - 1
+    while j >= 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+        j -= 1  # (past the phrase's describing words: "a hermit crab hides")
+    if singular(toks[e].text) != toks[e].text and j >= 0 and toks[j].text in _SINGULAR_DETERMINERS:
+        return False  # "a crab hides under a shell": a verb after one thing, no hides of a crab
+    after = toks[e + 1].text if e + 1 < len(toks) else "."
+    return not after[:1].isalpha() or after in _STOP or _is_verb(after) or _participle(after)
+
+
+def _use_compound(toks: list[_Tok], s: int, e: int, category: str) -> bool:
+    """A singular noun, not a person, then an -ing word and a bare singular thing ("a sheep
+    shearing shed", "a cheese weighing house"): the first two name what the thing is for, so the
+    first is no thing of the scene. (A person there does the deed: "a man watching television".)"""
+    if e + 1 >= len(toks) or e - s != 1 or toks[e].joined or not toks[e].text.endswith("ing"):
+        return False
+    word, nxt = toks[s].text, toks[e + 1].text
+    if singular(word) != word or category in _LIVING - {"animal", "bird"} or load_catalogue()[category].shape == "figure":
+        return False
+    found = _match_at(toks, e + 1)
+    return found is not None and nxt not in _STOP and singular(toks[found[0] - 1].text) == toks[found[0] - 1].text
+
+
 def _names_kind(toks: list[_Tok], e: int) -> bool:
     """The noun ending at ``e`` qualifies the word after it: a hyphen joins them, or a noun that
     is no verb, adverb or participle follows."""
@@ -761,6 +792,8 @@ def _names_kind(toks: list[_Tok], e: int) -> bool:
         return False  # "pushes a wheelchair past the chairs"
     if not t.joined and _plural_verb(toks, e):
         return False  # "two mechanics on a lift work on it", "a yew and a rowan shade the gate": a verb
+    if _joint_verb_at(toks, e):
+        return False  # "a farmer and his son wade into the pond"
     if t.joined or (w in load_vocabulary().not_things and singular(w) == w and w not in _FINITE):
         return True  # "camel-hair tents", "a bear face"
     if w in _IRREGULAR_PARTICIPLES:
@@ -800,6 +833,8 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
         return False  # "a dragon sleeps on top of a hill": the hill is a thing here
     if j >= 0 and toks[j].text in _DETERMINERS and _placed_by(toks, j) and not _verbless_opening(toks, j):
         return False  # "a mule waits beside the tavern": a building of the scene (_buildings)
+    if _outside_part_of(toks, j + 1) and not _verbless_opening(toks, j):
+        return False  # "pigeons sit on the roof of the tavern": seen from outside, a building of the scene
     if _opening_setting(toks, s, e):
         return True
     if building:
@@ -961,6 +996,8 @@ def _enterable(toks: list[_Tok], s: int, e: int) -> bool:
         "house" if head.endswith("house") else None
     )
     category = load_catalogue()[name] if name else None
+    if (head,) in load_vocabulary().buildings:
+        return True  # "a showroom in a converted bus depot": a building the vocabulary lists
     return category is not None and category.shape == "house" and category.size[2] >= _STOREY
 
 
@@ -1012,6 +1049,11 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             continue  # "a six-wheeled rover": a number hyphened to a word describes, counts nothing
         if w in _NUMBERS and i > 1 and toks[i - 1].text == "of" and toks[i - 2].text in _PEOPLE_GROUPS:
             continue  # "a family of four shelters under the awning": how many, then the verb
+        if w == "of" and _heap_of_stuff(toks, i, covered):
+            entry = _guess(toks, i + 1, toks[i - 1 : i + 1])
+            out.append((i + 1, i + 2, entry.category, entry))
+            covered.add(i + 1)
+            continue  # "a pile of gold", "a heap of rubble": one heap, named by its stuff
         plural = w not in ("a", "an", "another", "one", "the", "and", *_OWNERS) and not (w.isdigit() and int(w) == 1)
         j = i + 1
         if w == "a" and j < n and toks[j].text in ("few", "couple", "pair", "dozen"):
@@ -1063,13 +1105,13 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         # "eight lanes side by side": a setting is never counted, so a counted place is a row of things
         one = singular(word)
         counted_place = _NUMBERS.get(w, 0) > 1 and one != word and one in vocabulary.places and one not in _VENUES
-        # "five pairs of shoes", "a rack of coats": clothing counted out is not worn
-        stock = w == "of" and word in vocabulary.clothing
+        # "five pairs of shoes", "a rack of coats": clothing counted out is not worn; nor is
+        # clothing that hangs or lies somewhere ("three coats lie on the bed")
+        stock = w == "of" and word in vocabulary.clothing or _laid_out(toks, head, j)
         # "a tesla coil", "a drum set": a measure word after the noun of its kind is the thing itself
         kind = toks[head - 1].text  # ("a washing line": what it is for)
         compound = word in _MEASURE_THINGS and head > i + 1 and (not vocabulary.is_adjective(kind) or kind.endswith("ing"))
-        laid = _laid_clothing(toks, head) and not _worn(toks, head, head + 1)
-        if not (vocabulary.is_thing_word(word) or held or counted_place or stock or compound or laid) or (
+        if not (vocabulary.is_thing_word(word) or held or counted_place or stock or compound) or (
             word in _QUANTITY and not counted_place and not compound
         ) or (j < n and toks[j].text == "of"):
             continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"
@@ -1077,7 +1119,7 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         opening = i == 0 or not toks[i - 1].text[:1].isalpha()
         placed = w == "the" and opening and j < n and toks[j].text in _PLACING_VERBS
         # ("near", "by" and "past" the landmarks and the fittings of a place too: "near the airlock")
-        by = _placed_by(toks, i, _BY_KINDS - {"near"}) and not _named_before(toks, head)
+        by = (_placed_by(toks, i, _BY_KINDS - {"near"}) or _outside_part_of(toks, i)) and not _named_before(toks, head)
         by = by and (j >= n or toks[j].text not in ("one", "ones"))
         if definite and entry.category != "figure" and not placed and not by:
             continue  # "the far end", "her turn": after "the" or "her", only a person is read, a
@@ -1117,14 +1159,28 @@ def _bare_plural_verb(toks: list[_Tok], s: int, e: int) -> bool:
     # "the quartermaster, an android, counts canisters by the gate": after an apposition's comma, a
     # bare noun that ends no list ("hats, shoes and bags"; "cacti and tumbleweeds dot the sand")
     two = toks[e + 1].text if e + 1 < len(toks) else "."
+    if _plural_form_verb(after, two):
+        return False  # "Beyond them, spectators crowd a grandstand", "..., musicians play for a princess"
     return toks[s - 1].text == "," and after[:1].isalpha() and after not in _STOP and not toks[e].joined and (
         two not in (",", "and", "or")
     )
 
 
+def _plural_form_verb(word: str, after: str) -> bool:
+    """``word`` reads as the plural verb of the noun before it: a person's, an animal's or a
+    hanging verb without its -s ("play", "sing"), or any bare word with an object right after it
+    ("crowd a grandstand", "unload the boxes"); a noun there would end in -s ("counts canisters")."""
+    vocabulary = load_vocabulary()
+    if not word[:1].isalpha() or word in _STOP or singular(word) != word:
+        return False
+    verbs = vocabulary.person_verbs | vocabulary.animal_verbs | _HANG_VERBS
+    return word in _FINITE or any(word + ending in verbs for ending in ("s", "es")) or after in _OBJECT_OPENERS
+
+
 #: Nouns of a group of people, whose "of four" counts its members ("a family of four").
 _PEOPLE_GROUPS = {"family", "couple", "crowd", "audience", "party", "group", "team", "crew", "band", "gang",
-                  "troupe", "class", "congregation", "choir", "orchestra", "mob", "entourage", "retinue"}  # fmt: skip
+                  "troupe", "class", "congregation", "choir", "orchestra", "mob", "entourage", "retinue", "ensemble",
+                  "quartet", "trio"}  # fmt: skip
 
 
 def _listed_adjective(toks: list[_Tok], k: int) -> bool:
@@ -1196,6 +1252,12 @@ _OUTSIDE_PARTS = {"roof", "rooftop", "chimney", "eave", "gable", "facade", "porc
 #: Parts of an animal's or a person's body beyond those a thing is carried on ("the horse's mane").
 _LIVING_PARTS = {"mane", "flank", "ear", "tail", "fur", "coat", "hoof", "horn", "trunk", "muzzle", "nose", "wing",
                  "feather", "hair", "face", "beard", "leg", "belly", "chin", "cheek", "snout", "ear"}  # fmt: skip
+
+
+def _outside_part_of(toks: list[_Tok], i: int) -> bool:
+    """The phrase opening at ``i`` owns a part only a building seen from outside shows ("on the
+    roof of [the granary]", "on the steps of [the chapel]"): a building of the scene."""
+    return i >= 2 and toks[i - 1].text == "of" and singular(toks[i - 2].text) in _OUTSIDE_PARTS | {"step"}
 
 
 def _owners_of_parts(toks: list[_Tok], covered: set[int]) -> list:
@@ -1303,9 +1365,15 @@ def _named_before(toks: list[_Tok], k: int) -> bool:
     after "a fireplace"): that thing again (``_alias_mentions``), no new one."""
     word = singular(toks[k].text)
     return any(
-        w != word and (w.endswith(word) or w.startswith(word))
+        w != word and (w.endswith(word) or w.startswith(word) and not _agent_compound(w[len(word) :]))
         for w in (singular(t.text) for t in toks[:k] if t.text[:1].isalpha())
     )
+
+
+def _agent_compound(rest: str) -> bool:
+    """``rest`` ends a closed compound that names whoever works at its first part ("wicketkeeper",
+    "boatman", "lamplighter"): that thing is still to be named ("the boatman rows the boat")."""
+    return len(rest) >= 3 and rest.endswith(("er", "or", "man", "woman", "ist"))
 
 
 def _buildings(toks: list[_Tok], covered: set[int]) -> list:
@@ -1328,7 +1396,8 @@ def _buildings(toks: list[_Tok], covered: set[int]) -> list:
                 toks[j].text not in _STOP or toks[j].joined or toks[j + 1].joined
             ):
                 j -= 1  # back over describing words ("the little waiting room", "a false-front saloon")
-            if j < 0 or toks[j].text not in _DETERMINERS or not _placed_by(toks, j) or _verbless_opening(toks, j):
+            placed = j >= 0 and (_placed_by(toks, j) or _outside_part_of(toks, j))  # ("on the roof of the inn")
+            if not placed or toks[j].text not in _DETERMINERS or _verbless_opening(toks, j):
                 break
             end = k + width
             out.append((k, end, entry.category, entry))
@@ -1365,22 +1434,6 @@ def _loose_parts(toks: list[_Tok], covered: set[int]) -> list:
     return out
 
 
-#: What clothing that is off a body does: hangs, lies, is laid or spread somewhere.
-_LAID_VERBS = _HANG_VERBS | {"lie", "lies", "lay", "lying", "rest", "rests", "draped", "folded", "piled", "spread",
-                             "drying", "dry", "dries", "sit", "sits"}  # fmt: skip
-
-
-def _laid_clothing(toks: list[_Tok], head: int) -> bool:
-    """Clothing at ``head`` that no one wears: it hangs, lies or is laid somewhere ("leather jackets
-    hang on a rail", "a coat is draped over the chair"), so it is a thing of the scene."""
-    clothing = load_vocabulary().clothing
-    word = toks[head].text
-    if word not in clothing and singular(word) not in clothing:
-        return False
-    after = [t.text for t in toks[head + 1 : head + 3]]
-    return bool(after) and (after[0] in _LAID_VERBS or (after[0] in ("is", "are") and after[1:2] and after[1] in _LAID_VERBS))
-
-
 def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
     """Bare plurals nobody listed that open a sentence or a clause after ", and" as its subject
     ("Noodle cartons and soda cans litter the floor"): no count, but a verb (or "and" and another
@@ -1399,6 +1452,8 @@ def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
             if singular(toks[j - 1].text) != toks[j - 1].text:
                 head = j - 1  # the plural ends the phrase
                 break
+        if head is not None and j + 2 < n and toks[j].text == "of" and _stuff_word(toks, j + 1, covered):
+            j += 2  # "Bales of wool are stacked": units of stuff, counted by the unit
         after = toks[j].text if j < n else "."
         verb = after[:1].isalpha() and (after not in _STOP or after in _FINITE)
         # a listed noun there is a verb when an object follows it ("cans litter the floor")
@@ -1406,12 +1461,57 @@ def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
         if head is None or toks[head].quoted or not (after == "and" or verb):
             continue
         word = toks[head].text
-        if not (vocabulary.is_thing_word(word) or _laid_clothing(toks, head)) or _participle(word) or word in _QUANTITY:
+        if not (vocabulary.is_thing_word(word) or _laid_out(toks, head, j)) or _participle(word) or word in _QUANTITY:
             continue
         entry = _guess(toks, head, toks[k:head])
         out.append((head, head + 1, entry.category, entry))
         covered.add(head)
     return out
+
+
+def _stuff_word(toks: list[_Tok], k: int, covered: set[int]) -> bool:
+    """The word at ``k`` names stuff, no thing ("wool", "gold", "sand"): what a unit or a heap
+    of it is made of, so the unit, or the heap named by the stuff, is the thing."""
+    w = toks[k].text
+    return k not in covered and w[:1].isalpha() and w not in _STOP and singular(w) == w and (
+        w in load_vocabulary().not_things and not load_vocabulary().is_adjective(w)
+    )
+
+
+def _heap_of_stuff(toks: list[_Tok], i: int, covered: set[int]) -> bool:
+    """"of" at ``i`` joins one heap ("a pile", "a heap") to one word of stuff that ends the phrase
+    ("a pile of gold", "a heap of rubble."): a colour word there is the stuff too."""
+    if i < 1 or i + 1 >= len(toks) or toks[i - 1].text not in _HEAPS or singular(toks[i - 1].text) != toks[i - 1].text:
+        return False
+    w = toks[i + 1].text
+    after = toks[i + 2].text if i + 2 < len(toks) else "."
+    ends = not after[:1].isalpha() or (after in _STOP and after not in ("of", "and"))
+    # (a verb may follow stuff, "a heap of rubble blocks the door", not a colour: "a pile of old bricks")
+    stuff = ends and load_vocabulary().is_adjective(w) or (ends or _is_verb(after)) and w in load_vocabulary().not_things
+    return stuff and i + 1 not in covered and w[:1].isalpha() and w not in _STOP and singular(w) == w
+
+
+#: Participles of clothing put down or hung up, not worn ("a coat draped over the chair").
+_LAID = {"hung", "draped", "folded", "spread", "laid", "piled", "heaped", "strewn", "thrown", "slung", "pegged"}
+
+
+def _laid_out(toks: list[_Tok], head: int, j: int) -> bool:
+    """The clothing word at ``head`` is the subject of a placing verb ("leather coats hang on a
+    rail", "a cloak lies on the bench") or is put somewhere ("a shawl draped over the chair"): a
+    thing of the scene, not worn."""
+    if singular(toks[head].text) not in load_vocabulary().clothing or j >= len(toks):
+        return False
+    k = head - 1
+    while k >= 0 and toks[k].text[:1].isalpha() and (toks[k].text in _DETERMINERS or toks[k].text not in _STOP):
+        if _is_verb(toks[k].text):
+            break  # ("skirts a fleece spread out on it": the object of a deed)
+        k -= 1
+    if k >= 0 and toks[k].text in ("with", "in", "wearing", "without", "and", "or"):
+        return False  # "a boy with a red cap stands by the swing": the boy's verb, his cap
+    after = toks[j].text
+    if after in ("is", "are", "was", "were") and j + 1 < len(toks):
+        after = toks[j + 1].text
+    return after in _LAID or after in _PLACING_VERBS or after + "s" in _PLACING_VERBS
 
 
 def _opens_phrase(toks: list[_Tok], k: int) -> bool:
@@ -1446,6 +1546,8 @@ def _unknown_heads(toks: list[_Tok], raw: list, covered: set[int]) -> list:
             continue
         if word in _ADVERB_NOUNS or word in _ORDINALS:
             continue  # "the counter right next to the till", "the stall left of the gate"
+        if _joint_verb(toks, k, category):
+            continue  # "a farmer and his son wade into the pond": the plural verb of both
         verb = word in _HANG_VERBS or word in vocabulary.person_verbs or _plural_verb(toks, k)  # "holographic koi swim"
         if verb or not _opens_phrase(toks, s) or (_counted_plural(toks, s) and singular(word) == word):
             continue  # "robots sell orbs", "three koi swim": a verb after its subject
@@ -1460,6 +1562,30 @@ def _unknown_heads(toks: list[_Tok], raw: list, covered: set[int]) -> list:
         out.append((k, k + 1, entry.category, entry))
         covered.add(k)
     return out
+
+
+def _joint_verb(toks: list[_Tok], k: int, category: str) -> bool:
+    """The bare word at ``k`` follows a one-word living thing joined by "and" to one before it
+    ("a goat and her kid", "the boy and his dog"): the two make a plural subject, so the word,
+    with a preposition or an object after it, is their verb."""
+    s = k - 1
+    if s < 2 or toks[s - 2].text != "and" or toks[s - 1].text not in _DETERMINERS or k + 1 >= len(toks):
+        return False
+    word, after = toks[k].text, toks[k + 1].text
+    # (its object: a preposition, a determiner or a bare plural, "fold towels"; not a verb of
+    # one subject, "and a snake charmer plays", "stands")
+    vocabulary = load_vocabulary()
+    verbs = vocabulary.person_verbs | vocabulary.animal_verbs | _HANG_VERBS
+    takes = after in _STOP or (singular(after) != after and singular(after) not in _FINITE and after not in verbs)
+    if not word[:1].isalpha() or word in _STOP or singular(word) != word or not takes:
+        return False
+    return category in _LIVING or load_catalogue()[category].shape in _LIVING
+
+
+def _joint_verb_at(toks: list[_Tok], k: int) -> bool:
+    """`_joint_verb` after whatever one-word thing stands before ``k``."""
+    found = _match_at(toks, k - 1) if k > 0 else None
+    return found is not None and found[0] == k and _joint_verb(toks, k, found[1])
 
 
 def _guess(toks: list[_Tok], head: int, before: list[_Tok]) -> Entry:
@@ -1868,6 +1994,11 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             break
         if (w in _STOP and not _position_adjective(toks, j)) or not w[0].isalnum():
             break
+        if j == prev_end and j > 0 and singular(w) == w and not t.joined and (
+            _plural_subject_word(toks[j - 1]) or _joint_verb_at(toks, j)
+        ):
+            break  # "two volunteers unload crates", "a man and his son unload crates": the verb of
+            # the subject before, no kind of crate
         adjectives.insert(0, t.orig)
         j -= 1
     if count is None and j >= 1 and (toks[j - 1].text, toks[j].text) in _CROWDED:
@@ -1883,6 +2014,11 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
     if not counted and not plural and any(a.lower() in _ORDINALS for a in adjectives):
         m.definite = True  # "between the first and second car": the second of those already there
     m.count, m.counted, m.adjectives = count, counted, adjectives
+
+
+def _plural_subject_word(tok: _Tok) -> bool:
+    """A plural noun, not a possessive ("the boys' bikes"): what follows it at once is its verb."""
+    return tok.text[:1].isalpha() and singular(tok.text) != tok.text and not tok.orig.endswith(("'", "’"))
 
 
 #: Quantity nouns of a heap: a heap of small things or of stuff is one thing ("a stack of plates").
