@@ -53,7 +53,7 @@ from scenewright.analysis.parser.phrases import _Rel, _find_relations, _phrase_t
 from scenewright.analysis.parser.references import _References
 from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
 from scenewright.analysis.parser.support import FLAT_HOST
-from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _split, _tokenise
+from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _split, _Tok, _tokenise
 from scenewright.analysis.parser.vocabulary import load_vocabulary, scaled, stretched
 from scenewright.analysis.parser.words import (
     _ADVERBS,
@@ -78,6 +78,20 @@ from scenewright.analysis.parser.words import (
     _is_verb,
 )
 from scenewright.core.catalogue import Category, load_catalogue, singular
+
+
+#: How many sides "every side" / "all sides" names: a square's.
+_ALL_SIDES = 4
+
+
+def _every_side(toks: list[_Tok], k: int, ce: int) -> int:
+    """How many sides "every side", "all sides" or "all four sides" at ``k`` names; 0 if none."""
+    words = [t.text for t in toks[k : min(k + 3, ce)]]
+    if words[:2] in (["every", "side"], ["all", "sides"]):
+        return _ALL_SIDES
+    if len(words) == 3 and words[0] == "all" and words[2] == "sides" and words[1] in _NUMBERS:
+        return _NUMBERS[words[1]]
+    return 0
 
 
 @dataclass
@@ -218,8 +232,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         cat: Category = self.catalogue[m.category]
         name = m.phrase.lower()
         vocabulary = load_vocabulary()
-        if _is_plural(self.toks, m):
-            words = name.split()
+        words = name.split()
+        # "the scales" are one thing, yet named as the listed word ("scale"), as "shears" are
+        pair = words[-1] in vocabulary.pair_nouns and (words[-1],) not in vocabulary.entries
+        if _is_plural(self.toks, m) or pair:
             one = vocabulary.singular  # ("mechanics" are mechanics)
             of = "of" in words[1:2]
             name = " ".join([one(words[0]), *words[1:]] if of else [*words[:-1], one(words[-1])])
@@ -668,6 +684,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 k += 1
                 continue
             members = c.main or list(prev_subject)
+            sides = _every_side(toks, k, ce)
+            if sides:  # "benches stand on every side of the pond": one a side, a row along each
+                self._one_a_side(members, sides, row=toks[k - 1].text == "along")
             if w == "each" and k + 1 in self.rel_at and members and self.groups[members[-1]].count > 1:
                 c.each_own = members[-1]  # "two helmsmen sit ..., each in a steel seat": a seat each
                 k += 1
@@ -1517,13 +1536,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 self.groups[src].count *= self.groups[target].count
                 self.pair_each.add((src, target))
 
-    def _one_a_side(self, srcs: list[int]) -> None:
+    def _one_a_side(self, srcs: list[int], sides: int = 2, row: bool = False) -> None:
         """"A lamp post on each side of the door": one thing named for both sides means two; so do
-        things the text does not count ("trunks sit on either side of the table")."""
+        things the text does not count ("trunks sit on either side of the table"); on every side of
+        a thing, four; things that run along every side make a row on each ("arches run along
+        every side": as many a side as an uncounted plural names)."""
         for s in srcs:
             uncounted = s not in self.numbered and self.groups[s].count == 3
             if (self.groups[s].count == 1 or uncounted) and s not in self.history:
-                self.groups[s].count = 2
+                self.groups[s].count = sides * (3 if row and uncounted else 1)
 
     def _covers(self, r: _Rel) -> bool:
         """Whether a verb of covering ("crowd", "cover", "line") is one here: a noun phrase follows

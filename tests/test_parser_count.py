@@ -1,0 +1,39 @@
+"""How many things the offline reader makes of a text."""
+
+from collections import Counter
+
+import pytest
+
+from scenewright.analysis.parser import parse_scene
+
+
+def counts(text: str) -> Counter:
+    """Last word of each object's name → how many."""
+    return Counter(o.name.split()[-1].lower() for o in parse_scene(text).objects)
+
+
+@pytest.mark.parametrize(
+    ("text", "word"),
+    [
+        ("A grocer weighs apples on the old scales, and a boy waits beside the scales.", "scale"),
+        ("A pair of scales stands on the shop counter.", "scale"),
+        ("The smith works the bellows by the forge while an apprentice sweeps behind the bellows.", "bellows"),
+        ("A jeweller lifts a ring with pincers at her bench.", "pincers"),
+    ],
+)
+def test_a_plural_only_noun_is_one_thing(text, word):
+    assert counts(text)[word] == 1
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("A stone lion sits on every side of the monument.", "lion", 4),
+        ("Lanterns glow on all sides of the gazebo.", "lantern", 4),
+        ("Flower beds lie on all three sides of the lawn.", "bed", 3),
+        ("Pillars run along every side of the market hall.", "pillar", 12),
+        ("Two flags fly on every side of the tower.", "flag", 2),
+    ],
+)
+def test_every_side_gives_one_a_side_and_a_row_along_each(text, word, many):
+    assert counts(text)[word] == many
