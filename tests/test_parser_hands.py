@@ -54,6 +54,31 @@ def test_each_holding_gives_one_to_each_of_the_people():
     assert ("candle_1", "on", "monk_1") in rels(parsed.text)
 
 
+@pytest.mark.parametrize(
+    ("text", "per_member"),
+    [
+        ("Four weavers sit in a row, each working a loom.", ["loom"]),
+        ("Two cobblers sit at the window, each bent over a boot and holding an awl.", ["boot", "awl"]),
+    ],
+)
+def test_each_doing_something_gives_every_member_its_own(text, per_member):
+    found = Counter(o.name for o in parse_scene(text).objects)
+    members = found[text.split()[1][:-1]]
+    assert members > 1 and all(found[name] == members for name in per_member), found
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Two cooks stir the broth with ladles.",  # in hand, uncounted: one each
+        "Two huntsmen walk their hounds along the lane.",  # "their": one each of their owners
+    ],
+)
+def test_uncounted_plurals_of_several_owners_come_one_each(text):
+    found = Counter(o.category for o in parse_scene(text).objects)
+    assert sorted(found.values()) == [2, 2], found
+
+
 def test_a_shared_thing_is_one():
     parsed = parse_scene("Two sisters sit on a blanket, sharing a teapot.")
     assert sum(o.name == "teapot" for o in parsed.objects) == 1

@@ -1654,6 +1654,10 @@ def _position_adjective(toks: list[_Tok], j: int) -> bool:
     )
 
 
+#: How many things an uncounted plural names ("barrels stand by the door").
+UNCOUNTED = 3
+
+
 def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
     """Fill count, definiteness and adjectives from the words before the noun."""
     plural = _is_plural(toks, m)
@@ -1741,7 +1745,7 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         # that looks singular, since a bare singular thing is never what a place is full of)
         count = _VAGUE["many"]
     if count is None:
-        count = 3 if plural else 1
+        count = UNCOUNTED if plural else 1
     if m.category == "books" and not counted:
         count = 1
     if plural and count == 1 and counted and not m.each and toks[max(m.start - 1, 0)].text not in ("a", "an"):

@@ -39,6 +39,7 @@ from scenewright.analysis.parser.grammar import (
 from scenewright.analysis.parser.hands import _Hands
 from scenewright.analysis.parser.kinds import _Kinds
 from scenewright.analysis.parser.nouns import (
+    UNCOUNTED,
     _Group,
     _Mention,
     _find_mentions,
@@ -136,6 +137,9 @@ class _Clause:
     wsub_before: list[int] = field(default_factory=list)
     #: The group "each"/"every" distributes over: its with-parts and flankers come once per member.
     each: int | None = None
+    #: "each" opened a deed ("each bent over an anvil", "each shaping a pot"): every thing the
+    #: clause names after it comes once per member, not only its with-parts.
+    each_deed: bool = False
     #: The group whose members each have their own target of the next placing ("each in a seat").
     each_own: int | None = None
     #: The subject's own verb has come ("a guard waves at ..."), so a participle after a target
@@ -268,7 +272,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         g.guessed = m.guess is not None
         g.sized = bool(sizes)
         self.groups.append(g)
-        default = 3 if _is_plural(self.toks, m) else 1  # what an uncounted phrase gets
+        default = UNCOUNTED if _is_plural(self.toks, m) else 1  # what an uncounted phrase gets
+        j = m.start - 1
+        while j > 0 and self.toks[j].text[:1].isalpha() and self.toks[j].text not in _STOP:
+            j -= 1  # (past describing words: "their two fat ponies" is counted anyway)
+        if default == UNCOUNTED and j >= 0 and self.toks[j].text == "their":
+            self.theirs.add(g.index)
         if (m.counted and m.count > 1) or (not m.counted and m.count != default):  # "three", "many"
             self.numbered.add(g.index)
         self._formation_before(m, g)
@@ -362,6 +371,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.in_hand: list[tuple[int, int]] = []
         #: Groups whose count the text gives by a number or a vague word ("three", "a few").
         self.numbered: set[int] = set()
+        #: Uncounted plurals after "their" ("walk their dogs"): one each of their owners.
+        self.theirs: set[int] = set()
         #: Starts of living things a holder is full of ("packed with laughing children"): aboard it,
         #: no subject of the clause's verb.
         self.aboard: set[int] = set()
@@ -479,9 +490,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
     def _one_per_holder(self) -> None:
         """"Three miners with pickaxes", "a mechanic with a wheel gun kneels beside each car": a
         thing in hand comes once per holder, unless the text counts it ("two men with one ladder")
-        or it is too big for one to hold ("two rescuers carry a stretcher" carry one)."""
-        for g, h in self.in_hand:
-            if g not in self.numbered and self.groups[h].count > 1 and self._handheld(g):
+        or it is too big for one to hold ("two rescuers carry a stretcher" carry one); things the
+        text gives in the plural, uncounted, come one each whatever their size ("two reapers with
+        scythes"), and so do those of "their" by their owners ("two girls walk their ponies")."""
+        theirs = [(g, h) for _, a, b, _ in self.relations for g, h in ((a, b), (b, a)) if g in self.theirs]
+        theirs = [(g, h) for g, h in theirs if self._living(h) and h not in self.theirs]
+        for g, h in [*self.in_hand, *theirs]:
+            uncounted = g not in self.numbered and self.groups[g].count == UNCOUNTED
+            if g not in self.numbered and self.groups[h].count > 1 and (self._handheld(g) or uncounted):
                 self.groups[g].count = self.groups[h].count
 
     def _where(self, cs: int, c: _Clause, since: int) -> None:
@@ -670,17 +686,18 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             each_hold = (nxt, toks[k + 2].text if k + 2 < ce else "") in _HOLD_PAIRS
             # "four pilots sit at the console, each in a leather seat": a seat apiece
             each_seat = k + 1 in self.rel_at and self.rel_at[k + 1].kind in ("in", "on", "at")
-            if w == "each" and (each_part or each_passive or each_hold or each_seat):
+            each_deed = _participle(nxt) and k + 1 not in self.rel_at and k + 1 not in self.by_start
+            if w == "each" and (each_part or each_passive or each_hold or each_seat or each_deed):
                 plural = [g for g in [*self.history, *c.groups] if self.groups[g].count > 1]
                 # "four astronauts sit on stools around a table, each holding a pouch": the holders
                 holding = nxt in _HOLD or nxt in _HAND_VERBS or nxt in _USE_VERBS
                 people = [
                     g for g in [*c.subjects, *prev_subject, *self.topic] if self.groups[g].count > 1 and self._living(g)
                 ]
-                if holding and people:
+                if (holding or each_deed) and people:
                     plural = people[:1]
                 if plural:
-                    c.each = plural[-1]
+                    c.each, c.each_deed = plural[-1], each_deed and bool(people)
                 k += 1
                 continue
             members = c.main or list(prev_subject)
@@ -762,7 +779,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 k = m.end
                 if g < 0:
                     continue
-                if c.each is not None and c.head is not None and not m.definite and g != c.each:
+                if c.each is not None and (c.head is not None or c.each_deed) and not m.definite and g != c.each:
                     self.groups[g].count = max(1, m.count) * self.groups[c.each].count
                     self.pair_each.add((g, c.each))
                 if m.each and c.head is None and not c.verb_seen:
@@ -1542,7 +1559,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         a thing, four; things that run along every side make a row on each ("arches run along
         every side": as many a side as an uncounted plural names)."""
         for s in srcs:
-            uncounted = s not in self.numbered and self.groups[s].count == 3
+            uncounted = s not in self.numbered and self.groups[s].count == UNCOUNTED
             if (self.groups[s].count == 1 or uncounted) and s not in self.history:
                 self.groups[s].count = sides * (3 if row and uncounted else 1)
 
