@@ -37,3 +37,24 @@ def test_a_plural_only_noun_is_one_thing(text, word):
 )
 def test_every_side_gives_one_a_side_and_a_row_along_each(text, word, many):
     assert counts(text)[word] == many
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("Four looms stand in a row, each loom fitted with a spindle.", "spindle", 4),
+        ("Five trawlers lie at the quay, each boat moored to a bollard.", "bollard", 5),
+        ("Three porters climb the pass, each of them with a basket on his back.", "basket", 3),
+        ("Four rowers rest on the jetty, every one of them with an oar.", "oar", 4),
+    ],
+)
+def test_each_member_named_again_or_of_them_gets_its_own(text, word, many):
+    assert counts(text)[word] == many
+
+
+def test_them_after_each_names_the_members_not_what_each_has():
+    parsed = parse_scene(
+        "Four mules stand in a row, each mule tied to a hitching post. The muleteer walks behind them."
+    )
+    rels = {(r.source.rsplit("_", 1)[0], r.relation, r.target.rsplit("_", 1)[0]) for r in parsed.relations}
+    assert any(s == "muleteer" and k == "behind" and t == "mule" for s, k, t in rels)

@@ -95,6 +95,20 @@ def _every_side(toks: list[_Tok], k: int, ce: int) -> int:
     return 0
 
 
+def _each_lead(toks: list[_Tok], k: int, ce: int) -> int:
+    """Where "each of them", "every one" or "every one of them" at ``k`` ends, less one (the
+    words then read as one "each"); ``k`` if none opens there."""
+    words = [t.text for t in toks[k : min(k + 4, ce)]]
+    j = k + 1
+    if words[:2] in (["each", "one"], ["every", "one"]):
+        j += 1
+    elif words[:1] != ["each"]:
+        return k
+    if [t.text for t in toks[j : j + 2]] in (["of", "them"], ["of", "these"], ["of", "those"]):
+        j += 2
+    return j - 1
+
+
 @dataclass
 class _Clause:
     """What one clause has built so far."""
@@ -679,6 +693,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         phrase_end = -1  # where the last relation phrase and its target end
         while k < ce:
             w = toks[k].text
+            lead = _each_lead(toks, k, ce) if k not in self.by_start else k
+            if lead > k:  # "every one of them with a spade": as "each with a spade"
+                w, k = "each", lead
             nxt = toks[k + 1].text if k + 1 < ce else ""
             each_part = nxt in ("with", "have", "has", "holding", "holds", "carrying", "bearing")
             # "each surrounded by two chairs": the passive flankers come once per member too
@@ -784,6 +801,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     self.pair_each.add((g, c.each))
                 if m.each and c.head is None and not c.verb_seen:
                     c.each = g  # "every desk has a lamp": a lamp per desk
+                    # "each cow hooked up to a pump": a deed of each member, its things once per member
+                    deed = m.end < ce and _participle(toks[m.end].text) and m.end not in self.rel_at
+                    c.each_deed = deed and m.end not in self.by_start and self.groups[g].count > 1
                 c.groups.append(g)
                 if m.start in self.aboard:
                     pass  # "a bus full of children waits": the bus waits
@@ -1561,7 +1581,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         for s in srcs:
             uncounted = s not in self.numbered and self.groups[s].count == UNCOUNTED
             if (self.groups[s].count == 1 or uncounted) and s not in self.history:
-                self.groups[s].count = sides * (3 if row and uncounted else 1)
+                self.groups[s].count = sides * (UNCOUNTED if row and uncounted else 1)
 
     def _covers(self, r: _Rel) -> bool:
         """Whether a verb of covering ("crowd", "cover", "line") is one here: a noun phrase follows
