@@ -58,3 +58,15 @@ def test_them_after_each_names_the_members_not_what_each_has():
     )
     rels = {(r.source.rsplit("_", 1)[0], r.relation, r.target.rsplit("_", 1)[0]) for r in parsed.relations}
     assert any(s == "muleteer" and k == "behind" and t == "mule" for s, k, t in rels)
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("Five fig trees grow in stone tubs along the terrace.", "tub", 5),
+        ("Six small palms stand in brass pots beside the stairs.", "pot", 6),
+        ("Two bay trees stand in a wide trough.", "trough", 1),
+    ],
+)
+def test_plants_in_uncounted_pots_get_one_each(text, word, many):
+    assert counts(text)[word] == many

@@ -1417,6 +1417,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._per_each(targets, srcs[0])  # "two soldiers on horseback": a horse each
         elif tm is not None and kind == "on" and len(srcs) == 1 and self._living(srcs[0]) and self._seats_each(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "four astronauts sit on stools": one each
+        elif tm is not None and kind == "in" and len(srcs) == 1 and self._planted(srcs[0]) and self._uncounted_new(tm):
+            self.groups[targets[0]].count = self.groups[srcs[0]].count  # "four fig trees in planters": one each
         elif tm is not None and kind == "hanging from" and len(srcs) == 1 and self._hooks_each(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "a dozen lanterns hang from posts": one each
         sitter = self._seat_owner(c, srcs, tm) if tm is not None else None
@@ -1459,9 +1461,18 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
     def _seats_each(self, m: _Mention) -> bool:
         """Seats named in the plural with no count of their own, new here ("on padded stools"):
         as many as sit on them."""
+        return self._uncounted_new(m) and self._carrier(m.group, ("seats",))
+
+    def _planted(self, g: int) -> bool:
+        """Several plants: each grows in a pot, tub or planter of its own."""
+        plant = self.catalogue[self.groups[g].category].shape in _PLANT_SHAPES or self.groups[g].category == "potted_plant"
+        return self.groups[g].count > 1 and plant
+
+    def _uncounted_new(self, m: _Mention) -> bool:
+        """A plural with no count of its own, new here ("in clay pots", "on stools")."""
         return (
             _is_plural(self.toks, m) and not m.counted and not m.definite and m.group >= 0
-            and m.group not in self.numbered and self._carrier(m.group, ("seats",))
+            and m.group not in self.numbered
         )  # fmt: skip
 
     def _sits_on_instead(self, c: _Clause, rider: list[int], p: _Phrase) -> bool:
