@@ -1465,7 +1465,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
 
     def _planted(self, g: int) -> bool:
         """Several plants: each grows in a pot, tub or planter of its own."""
-        plant = self.catalogue[self.groups[g].category].shape in _PLANT_SHAPES or self.groups[g].category == "potted_plant"
+        category = self.groups[g].category
+        plant = self.catalogue[category].shape in _PLANT_SHAPES or category == "potted_plant"
         return self.groups[g].count > 1 and plant
 
     def _uncounted_new(self, m: _Mention) -> bool:
