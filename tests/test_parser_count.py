@@ -70,3 +70,16 @@ def test_them_after_each_names_the_members_not_what_each_has():
 )
 def test_plants_in_uncounted_pots_get_one_each(text, word, many):
     assert counts(text)[word] == many
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("A stone urn stands at each corner of the terrace.", "urn", 4),
+        ("A red lamp glows at each wingtip of the glider.", "lamp", 2),
+        ("A narrow bench with a cushion at each end sits by the wall.", "cushion", 2),
+        ("A falconer stands with a hawk on each shoulder.", "falconer", 1),
+    ],
+)
+def test_a_thing_at_each_corner_or_end_is_one_a_part(text, word, many):
+    assert counts(text)[word] == many

@@ -70,6 +70,7 @@ from scenewright.analysis.parser.words import (
     _ORDINALS,
     _OWNER_PRONOUNS,
     _OWN_PLACE,
+    _PARTS_A_THING,
     _PLANT_SHAPES,
     _SHARE_VERBS,
     _STOP,
@@ -86,12 +87,16 @@ _ALL_SIDES = 4
 
 
 def _every_side(toks: list[_Tok], k: int, ce: int) -> int:
-    """How many sides "every side", "all sides" or "all four sides" at ``k`` names; 0 if none."""
+    """How many sides "every side", "all sides" or "all four sides" at ``k`` names, or how many of
+    a part "at each corner", "at each end" (no object: one thing a part); 0 if none."""
     words = [t.text for t in toks[k : min(k + 3, ce)]]
     if words[:2] in (["every", "side"], ["all", "sides"]):
         return _ALL_SIDES
     if len(words) == 3 and words[0] == "all" and words[2] == "sides" and words[1] in _NUMBERS:
         return _NUMBERS[words[1]]
+    at = k > 0 and toks[k - 1].text in ("at", "on", "by", "in")
+    if at and len(words) > 1 and words[0] in ("each", "every") and words[1] in _PARTS_A_THING:
+        return _PARTS_A_THING[words[1]]
     return 0
 
 
@@ -720,7 +725,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             members = c.main or list(prev_subject)
             sides = _every_side(toks, k, ce)
             if sides:  # "benches stand on every side of the pond": one a side, a row along each
-                self._one_a_side(members, sides, row=toks[k - 1].text == "along")
+                # ("a table with a lamp at each end": the with-thing)
+                placed = c.wsub if c.head is not None and c.wsub else members
+                self._one_a_side(placed, sides, row=toks[k - 1].text == "along")
             if w == "each" and k + 1 in self.rel_at and members and self.groups[members[-1]].count > 1:
                 c.each_own = members[-1]  # "two helmsmen sit ..., each in a steel seat": a seat each
                 k += 1
