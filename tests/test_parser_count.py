@@ -83,3 +83,16 @@ def test_plants_in_uncounted_pots_get_one_each(text, word, many):
 )
 def test_a_thing_at_each_corner_or_end_is_one_a_part(text, word, many):
     assert counts(text)[word] == many
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("An oil lamp burns on every bedside table.", "table", 3),
+        ("An oil lamp burns on every bedside table.", "lamp", 3),
+        ("A sentry waits at each gate.", "sentry", 3),
+        ("A clerk stamps every parcel at the counter.", "parcel", 1),
+    ],
+)
+def test_each_place_not_named_before_is_several(text, word, many):
+    assert counts(text)[word] == many

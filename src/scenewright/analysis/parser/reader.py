@@ -286,7 +286,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         base = stretched(scaled(m.guess.size, describing) if m.guess is not None else cat.size, describing)
         size = _apply_sizes(base, sizes) if sizes else base
         rests = m.guess.rests if m.guess is not None else cat.rests
-        count = min(max(1, m.count), MAX_COUNT)
+        # "a candle burns on every table", no table named before: several tables, as many as an
+        # uncounted plural names (not what a deed is done to: "counting every sack")
+        det = next((j for j in range(m.start - 1, max(m.start - 5, -1), -1) if self.toks[j].text in ("each", "every")), -1)
+        place = any(r.end == det for r in self.rel_at.values())
+        count = UNCOUNTED if m.each and place else min(max(1, m.count), MAX_COUNT)
         g = _Group(len(self.groups), m.category, count, name, description, size, rests=rests)
         g.guessed = m.guess is not None
         g.sized = bool(sizes)
