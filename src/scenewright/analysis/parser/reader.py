@@ -288,7 +288,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         rests = m.guess.rests if m.guess is not None else cat.rests
         # "a candle burns on every table", no table named before: several tables, as many as an
         # uncounted plural names (not what a deed is done to: "counting every sack")
-        det = next((j for j in range(m.start - 1, max(m.start - 5, -1), -1) if self.toks[j].text in ("each", "every")), -1)
+        words = range(m.start - 1, max(m.start - 5, -1), -1)
+        det = next((j for j in words if self.toks[j].text in ("each", "every")), -1)
         place = any(r.end == det for r in self.rel_at.values())
         count = UNCOUNTED if m.each and place else min(max(1, m.count), MAX_COUNT)
         g = _Group(len(self.groups), m.category, count, name, description, size, rests=rests)
