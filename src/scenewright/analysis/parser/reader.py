@@ -54,7 +54,7 @@ from scenewright.analysis.parser.phrases import _Rel, _find_relations, _phrase_t
 from scenewright.analysis.parser.references import _References
 from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
 from scenewright.analysis.parser.support import FLAT_HOST
-from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _split, _tokenise
+from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _split, _Tok, _tokenise
 from scenewright.analysis.parser.vocabulary import GENERIC, load_vocabulary, scaled, stretched
 from scenewright.analysis.parser.words import (
     _ADVERBS,
@@ -70,6 +70,7 @@ from scenewright.analysis.parser.words import (
     _ORDINALS,
     _OWNER_PRONOUNS,
     _OWN_PLACE,
+    _PARTS_A_THING,
     _PLANT_SHAPES,
     _SHARE_VERBS,
     _STOP,
@@ -79,6 +80,38 @@ from scenewright.analysis.parser.words import (
     _is_verb,
 )
 from scenewright.core.catalogue import Category, load_catalogue, match_phrase, singular
+
+
+#: How many sides "every side" / "all sides" names: a square's.
+_ALL_SIDES = 4
+
+
+def _every_side(toks: list[_Tok], k: int, ce: int) -> int:
+    """How many sides "every side", "all sides" or "all four sides" at ``k`` names, or how many of
+    a part "at each corner", "at each end" (no object: one thing a part); 0 if none."""
+    words = [t.text for t in toks[k : min(k + 3, ce)]]
+    if words[:2] in (["every", "side"], ["all", "sides"]):
+        return _ALL_SIDES
+    if len(words) == 3 and words[0] == "all" and words[2] == "sides" and words[1] in _NUMBERS:
+        return _NUMBERS[words[1]]
+    at = k > 0 and toks[k - 1].text in ("at", "on", "by", "in")
+    if at and len(words) > 1 and words[0] in ("each", "every") and words[1] in _PARTS_A_THING:
+        return _PARTS_A_THING[words[1]]
+    return 0
+
+
+def _each_lead(toks: list[_Tok], k: int, ce: int) -> int:
+    """Where "each of them", "every one" or "every one of them" at ``k`` ends, less one (the
+    words then read as one "each"); ``k`` if none opens there."""
+    words = [t.text for t in toks[k : min(k + 4, ce)]]
+    j = k + 1
+    if words[:2] in (["each", "one"], ["every", "one"]):
+        j += 1
+    elif words[:1] != ["each"]:
+        return k
+    if [t.text for t in toks[j : j + 2]] in (["of", "them"], ["of", "these"], ["of", "those"]):
+        j += 2
+    return j - 1
 
 
 @dataclass
@@ -222,8 +255,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         cat: Category = self.catalogue[m.category]
         name = m.phrase.lower()
         vocabulary = load_vocabulary()
-        if _is_plural(self.toks, m):
-            words = name.split()
+        words = name.split()
+        # "the scales" are one thing, yet named as the listed word ("scale"), as "shears" are
+        pair = words[-1] in vocabulary.pair_nouns and (words[-1],) not in vocabulary.entries
+        if _is_plural(self.toks, m) or pair:
             one = vocabulary.singular  # ("mechanics" are mechanics)
             of = "of" in words[1:2]
             name = " ".join([one(words[0]), *words[1:]] if of else [*words[:-1], one(words[-1])])
@@ -251,7 +286,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         base = stretched(scaled(m.guess.size, describing) if m.guess is not None else cat.size, describing)
         size = _apply_sizes(base, sizes) if sizes else base
         rests = m.guess.rests if m.guess is not None else cat.rests
-        count = min(max(1, m.count), MAX_COUNT)
+        # "a candle burns on every table", no table named before: several tables, as many as an
+        # uncounted plural names (not what a deed is done to: "counting every sack")
+        words = range(m.start - 1, max(m.start - 5, -1), -1)
+        det = next((j for j in words if self.toks[j].text in ("each", "every")), -1)
+        place = any(r.end == det for r in self.rel_at.values())
+        count = UNCOUNTED if m.each and place else min(max(1, m.count), MAX_COUNT)
         g = _Group(len(self.groups), m.category, count, name, description, size, rests=rests)
         g.guessed = m.guess is not None
         g.sized = bool(sizes)
@@ -710,6 +750,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         phrase_end = -1  # where the last relation phrase and its target end
         while k < ce:
             w = toks[k].text
+            lead = _each_lead(toks, k, ce) if k not in self.by_start else k
+            if lead > k:  # "every one of them with a spade": as "each with a spade"
+                w, k = "each", lead
             nxt = toks[k + 1].text if k + 1 < ce else ""
             each_part = nxt in ("with", "have", "has", "holding", "holds", "carrying", "bearing")
             # "each surrounded by two chairs": the passive flankers come once per member too
@@ -732,6 +775,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 k += 1
                 continue
             members = c.main or list(prev_subject)
+            sides = _every_side(toks, k, ce)
+            if sides:  # "benches stand on every side of the pond": one a side, a row along each
+                # ("a table with a lamp at each end": the with-thing)
+                placed = c.wsub if c.head is not None and c.wsub else members
+                self._one_a_side(placed, sides, row=toks[k - 1].text == "along")
             if w == "each" and k + 1 in self.rel_at and members and self.groups[members[-1]].count > 1:
                 c.each_own = members[-1]  # "two helmsmen sit ..., each in a steel seat": a seat each
                 k += 1
@@ -816,6 +864,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     self.pair_each.add((g, c.each))
                 if m.each and c.head is None and not c.verb_seen:
                     c.each = g  # "every desk has a lamp": a lamp per desk
+                    # "each cow hooked up to a pump": a deed of each member, its things once per member
+                    deed = m.end < ce and _participle(toks[m.end].text) and m.end not in self.rel_at
+                    c.each_deed = deed and m.end not in self.by_start and self.groups[g].count > 1
                 c.groups.append(g)
                 if m.start in self.aboard:
                     pass  # "a bus full of children waits": the bus waits
@@ -1451,6 +1502,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._per_each(targets, srcs[0])  # "two soldiers on horseback": a horse each
         elif tm is not None and kind == "on" and len(srcs) == 1 and self._living(srcs[0]) and self._seats_each(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "four astronauts sit on stools": one each
+        elif tm is not None and kind == "in" and len(srcs) == 1 and self._planted(srcs[0]) and self._uncounted_new(tm):
+            self.groups[targets[0]].count = self.groups[srcs[0]].count  # "four fig trees in planters": one each
         elif tm is not None and kind == "hanging from" and len(srcs) == 1 and self._hooks_each(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "a dozen lanterns hang from posts": one each
         sitter = self._seat_owner(c, srcs, tm) if tm is not None else None
@@ -1493,9 +1546,19 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
     def _seats_each(self, m: _Mention) -> bool:
         """Seats named in the plural with no count of their own, new here ("on padded stools"):
         as many as sit on them."""
+        return self._uncounted_new(m) and self._carrier(m.group, ("seats",))
+
+    def _planted(self, g: int) -> bool:
+        """Several plants: each grows in a pot, tub or planter of its own."""
+        category = self.groups[g].category
+        plant = self.catalogue[category].shape in _PLANT_SHAPES or category == "potted_plant"
+        return self.groups[g].count > 1 and plant
+
+    def _uncounted_new(self, m: _Mention) -> bool:
+        """A plural with no count of its own, new here ("in clay pots", "on stools")."""
         return (
             _is_plural(self.toks, m) and not m.counted and not m.definite and m.group >= 0
-            and m.group not in self.numbered and self._carrier(m.group, ("seats",))
+            and m.group not in self.numbered
         )  # fmt: skip
 
     def _sits_on_instead(self, c: _Clause, rider: list[int], p: _Phrase) -> bool:
@@ -1617,13 +1680,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 self.groups[src].count *= self.groups[target].count
                 self.pair_each.add((src, target))
 
-    def _one_a_side(self, srcs: list[int]) -> None:
+    def _one_a_side(self, srcs: list[int], sides: int = 2, row: bool = False) -> None:
         """"A lamp post on each side of the door": one thing named for both sides means two; so do
-        things the text does not count ("trunks sit on either side of the table")."""
+        things the text does not count ("trunks sit on either side of the table"); on every side of
+        a thing, four; things that run along every side make a row on each ("arches run along
+        every side": as many a side as an uncounted plural names)."""
         for s in srcs:
             uncounted = s not in self.numbered and self.groups[s].count == UNCOUNTED
             if (self.groups[s].count == 1 or uncounted) and s not in self.history:
-                self.groups[s].count = 2
+                self.groups[s].count = sides * (UNCOUNTED if row and uncounted else 1)
 
     def _covers(self, r: _Rel) -> bool:
         """Whether a verb of covering ("crowd", "cover", "line") is one here: a noun phrase follows

@@ -299,8 +299,11 @@ class _References:
                 and self.groups[g].size[2] > tallest and not (footed and (self._living(g) or g not in local))
             )  # fmt: skip
 
+        # the members, not what each of them has ("six cows, each hooked up to a pump. The farmer
+        # walks behind them": the cows)
+        apiece = {g for g, each in self.pair_each if each in recent}
         for fits in (
-            (lambda g: not aside(g) and g not in sat_on and kind_fits(g)),
+            (lambda g: not aside(g) and g not in sat_on and g not in apiece and kind_fits(g)),
             (lambda g: not aside(g) and g not in sat_on),
             (lambda g: not aside(g)),
             (lambda g: True),

@@ -168,6 +168,9 @@ _FROM_AFAR = {
 _NOT_IN_HAND = _PUT_OR_WORKED | _FROM_AFAR
 #: Words that start a with-thing's own placing ("with a till at one end and a computer ...").
 _OWN_PLACE = {"at", "in", "along", "against", "under", "inside"}
+#: How many of these parts a thing has: "a lamp at each corner" is four lamps, "a cone at each
+#: wingtip" two.
+_PARTS_A_THING = {"corner": 4, "end": 2, "wingtip": 2}
 #: Possessives whose noun, when no object, is a part of what the pronoun names ("its door").
 _OWNER_PRONOUNS = {"its": "it", "their": "them"}
 #: Ordinal words → position, counted from 0 as Python indexes ("first" is 0); the scene parser

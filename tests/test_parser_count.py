@@ -1,0 +1,98 @@
+"""How many things the offline reader makes of a text."""
+
+from collections import Counter
+
+import pytest
+
+from scenewright.analysis.parser import parse_scene
+
+
+def counts(text: str) -> Counter:
+    """Last word of each object's name → how many."""
+    return Counter(o.name.split()[-1].lower() for o in parse_scene(text).objects)
+
+
+@pytest.mark.parametrize(
+    ("text", "word"),
+    [
+        ("A grocer weighs apples on the old scales, and a boy waits beside the scales.", "scale"),
+        ("A pair of scales stands on the shop counter.", "scale"),
+        ("The smith works the bellows by the forge while an apprentice sweeps behind the bellows.", "bellows"),
+        ("A jeweller lifts a ring with pincers at her bench.", "pincers"),
+    ],
+)
+def test_a_plural_only_noun_is_one_thing(text, word):
+    assert counts(text)[word] == 1
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("A stone lion sits on every side of the monument.", "lion", 4),
+        ("Lanterns glow on all sides of the gazebo.", "lantern", 4),
+        ("Flower beds lie on all three sides of the lawn.", "bed", 3),
+        ("Pillars run along every side of the market hall.", "pillar", 12),
+        ("Two flags fly on every side of the tower.", "flag", 2),
+    ],
+)
+def test_every_side_gives_one_a_side_and_a_row_along_each(text, word, many):
+    assert counts(text)[word] == many
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("Four looms stand in a row, each loom fitted with a spindle.", "spindle", 4),
+        ("Five trawlers lie at the quay, each boat moored to a bollard.", "bollard", 5),
+        ("Three porters climb the pass, each of them with a basket on his back.", "basket", 3),
+        ("Four rowers rest on the jetty, every one of them with an oar.", "oar", 4),
+    ],
+)
+def test_each_member_named_again_or_of_them_gets_its_own(text, word, many):
+    assert counts(text)[word] == many
+
+
+def test_them_after_each_names_the_members_not_what_each_has():
+    parsed = parse_scene(
+        "Four mules stand in a row, each mule tied to a hitching post. The muleteer walks behind them."
+    )
+    rels = {(r.source.rsplit("_", 1)[0], r.relation, r.target.rsplit("_", 1)[0]) for r in parsed.relations}
+    assert any(s == "muleteer" and k == "behind" and t == "mule" for s, k, t in rels)
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("Five fig trees grow in stone tubs along the terrace.", "tub", 5),
+        ("Six small palms stand in brass pots beside the stairs.", "pot", 6),
+        ("Two bay trees stand in a wide trough.", "trough", 1),
+    ],
+)
+def test_plants_in_uncounted_pots_get_one_each(text, word, many):
+    assert counts(text)[word] == many
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("A stone urn stands at each corner of the terrace.", "urn", 4),
+        ("A red lamp glows at each wingtip of the glider.", "lamp", 2),
+        ("A narrow bench with a cushion at each end sits by the wall.", "cushion", 2),
+        ("A falconer stands with a hawk on each shoulder.", "falconer", 1),
+    ],
+)
+def test_a_thing_at_each_corner_or_end_is_one_a_part(text, word, many):
+    assert counts(text)[word] == many
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("An oil lamp burns on every bedside table.", "table", 3),
+        ("An oil lamp burns on every bedside table.", "lamp", 3),
+        ("A sentry waits at each gate.", "sentry", 3),
+        ("A clerk stamps every parcel at the counter.", "parcel", 1),
+    ],
+)
+def test_each_place_not_named_before_is_several(text, word, many):
+    assert counts(text)[word] == many
