@@ -452,6 +452,13 @@ def test_a_tall_thing_on_the_wall_can_be_above():
     assert ("pine_tree_1", "near", "pond_1") in rels("A tall pine stands above the pond.")
 
 
+def test_a_board_or_a_shelf_above_a_thing_is_fixed_up_there():
+    # a flat board and a unit with a wall form come mounted; a tree does not
+    assert ("sign_1", "above", "desk_1") in rels("A painted sign above the writing desk welcomes guests.")
+    assert ("bookshelf_1", "above", "sofa_1") in rels("A bookcase above the old sofa holds atlases.")
+    assert ("tree_1", "near", "well_1") in rels("An old oak above the well sways in the wind.")
+
+
 @pytest.mark.parametrize(
     "text, thing, holder",
     [
@@ -947,3 +954,10 @@ def test_out_of_its_own_shelter_and_a_phrase_after_it():
     assert {("cat_1", "on", "basket_1"), ("basket_1", "near", "stove_1")} <= found
     # "behind it" after "in front of" stays the subject's back
     assert ("dog_1", "behind", "cat_1") in rels("A cat sits in front of the fireplace, and a dog lies behind it.")
+
+
+def test_it_after_between_names_the_thing_between():
+    # the pair is "them"; "it" is the thing that stands between the two
+    found = rels("A potter at a wide bench between the kiln and the well sets a jug on it.")
+    assert ("bottle_1", "on", "bench_1") in found and ("bottle_1", "on", "kiln_1") not in found
+    assert ("cat_1", "on", "crate_1") in rels("A crate stands between the cart and the well, and a cat sleeps on it.")

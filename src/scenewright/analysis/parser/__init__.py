@@ -96,7 +96,9 @@ Decisions worth knowing:
   table" a round table.
 - ``over`` means ``above`` after a hanging verb (hang, hover, float...) anywhere earlier in the
   clause part or for a small (tabletop or hanging) thing, else ``near`` (a tree leaning over a
-  pond); a tabletop thing hung "from the ceiling" hangs. ``X under Y`` puts Y ``on`` X when X is
+  pond); a tabletop thing hung "from the ceiling" hangs. A tall standing thing ``above`` a thing
+  is ``near`` it (a tree above a pond) unless it is a flat board or a storage unit with a wall form
+  ("a sign above the counter", "a shelf above the desk"): those hang. ``X under Y`` puts Y ``on`` X when X is
   flat (a rug under a table), else X ``near`` Y.
 - ``in`` a seat, a vehicle, a container or on a surface → ``on`` it ("a man in a rocking chair", "a
   duck floats in the tub", "a rabbit in a cage"), and a person or an animal is on every

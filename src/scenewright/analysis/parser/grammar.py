@@ -85,6 +85,8 @@ _PLATFORM_HEIGHT, _PLATFORM_AREA = 3.5, 4.0
 #: Height (m) at most of a host that a small thing "over" it sits on ("a pot over the fire"); over
 #: a taller one (a table) it hangs above.
 _LOW_HOST = 1.0
+#: m, the depth at most of a flat standing board (a sign, a panel, a curtain) that may as well hang on a wall.
+_FLAT_DEPTH = 0.15
 #: Pronouns that name a person or an animal ("someone": the owner of a body part no possessive
 #: names, "a glass in one hand").
 _PERSONAL = ("him", "her", "himself", "herself", "someone")

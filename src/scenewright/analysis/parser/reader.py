@@ -13,6 +13,7 @@ from scenewright.analysis.parser.grammar import (
     _CHAIN_KINDS,
     _COPULAS,
     _ENCLOSURES,
+    _FLAT_DEPTH,
     _FORMATIONS,
     _FORMATION_NOUNS,
     _GROUND_KINDS,
@@ -51,6 +52,7 @@ from scenewright.analysis.parser.nouns import (
 )
 from scenewright.analysis.parser.phrases import _Rel, _find_relations, _phrase_table
 from scenewright.analysis.parser.references import _References
+from scenewright.analysis.parser.room import WALL_UNIT_HEIGHTS
 from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
 from scenewright.analysis.parser.support import FLAT_HOST
 from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _split, _tokenise
@@ -1235,6 +1237,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # a post next to it": the wagon)
         own_subject = list(prev_subject) if c.main and srcs == c.main else []
         prefer = [*c.last_target, *prev_subject] if c.last_target else own_subject
+        if target == "it" and c.last_kind == "between":
+            # "a woman at a table between the pen and the press spreads a fleece on it": the pair is
+            # "them"; "it" is what stands between them
+            prefer = [*c.last_srcs, *prefer]
         if not srcs and c.opens and starts_with_rel:
             prefer = list(self.topic)  # "Behind them, five soldiers sit": them of the sentence before
         who = srcs or ([] if c.opens else list(prev_subject))  # "..., watching them": the subject before
@@ -1564,6 +1570,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 continue
             self.relations.append((resolved, s, target, instance))
 
+    def _mountable(self, s: int) -> bool:
+        """Whether a standing thing also comes fixed to a wall, so "above" a thing names it up there
+        ("a sign above the counter", "a shelf above the desk"): a flat board (a sign, a panel) or a
+        storage unit that has a wall form (:data:`WALL_UNIT_HEIGHTS`); a tree or a tower does not."""
+        g = self.groups[s]
+        return min(g.size[:2]) <= _FLAT_DEPTH or g.category in WALL_UNIT_HEIGHTS
+
     def _kind(self, kind: str, s: int, t: int, hang: bool = False) -> str:
         src = self.groups[s]
         target = self.catalogue[self.groups[t].category]
@@ -1579,7 +1592,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "on"
             return "above" if hang or src.rests in ("hanging", "surface") else "near"
         walled = any(m.group == s for k, m in self.by_start.items() if k in self.on_wall)
-        if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not (hang or walled):
+        if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not (hang or walled or self._mountable(s)):
             return "near"  # a tree "above" a pond cannot float: read it as near (a rack on the wall can hang)
         if kind == "under" and self._overhead(t):
             return "under hung"  # "chairs under a ceiling fan": the fan hangs above them
