@@ -961,3 +961,12 @@ def test_it_after_between_names_the_thing_between():
     found = rels("A potter at a wide bench between the kiln and the well sets a jug on it.")
     assert ("bottle_1", "on", "bench_1") in found and ("bottle_1", "on", "kiln_1") not in found
     assert ("cat_1", "on", "crate_1") in rels("A crate stands between the cart and the well, and a cat sleeps on it.")
+
+
+def test_one_who_talks_to_someone_is_near_them_and_a_phrase_after_places_the_talker():
+    assert ("nurse_1", "near", "porter_1") in rels("A nurse chats with a porter.")
+    found = rels("The abbess speaks to a gardener at the desk.")
+    assert {("abbess_1", "near", "gardener_1"), ("abbess_1", "near", "desk_1")} <= found
+    assert ("abbess_1", "face to", "gardener_1") not in found
+    # looking at someone still turns one to them
+    assert ("nurse_1", "face to", "porter_1") in rels("A nurse looks at a porter.")

@@ -38,7 +38,9 @@ Decisions worth knowing:
   ("a birdcage hangs from the ceiling").
 
 - ``beside`` / ``next to`` / ``alongside`` / ``leans against`` → ``side of``; ``near`` / ``close to`` / ``by`` →
-  ``near``; ``opposite`` / ``across from`` → ``in front of`` + ``face to``; ``flanked by`` and
+  ``near``, and so is one who ``talks to`` / ``speaks to`` / ``chats with`` someone (the
+  annotated sets: with them, not turned to them; a phrase after the addressee still places the
+  talker); ``opposite`` / ``across from`` → ``in front of`` + ``face to``; ``flanked by`` and
   ``on either side of`` → one flanker ``left of`` and one ``right of`` (one thing named "on each
   side of" is two, one a side, even beside a door that is no object); ``around`` /
   ``surrounding`` / ``surrounded by`` → the surrounding objects shared among the target's
