@@ -970,3 +970,10 @@ def test_one_who_talks_to_someone_is_near_them_and_a_phrase_after_places_the_tal
     assert ("abbess_1", "face to", "gardener_1") not in found
     # looking at someone still turns one to them
     assert ("nurse_1", "face to", "porter_1") in rels("A nurse looks at a porter.")
+
+
+def test_it_after_a_plural_head_reaches_back_to_the_single_thing_before_the_with_part():
+    found = rels("Three crates stand in front of the shed, with a lamp on either side of it.")
+    assert {("table_lamp_1", "left of", "shed_1"), ("table_lamp_2", "right of", "shed_1")} <= found
+    # each one's own, and one member's "on top", stay with the head
+    assert ("table_lamp_1", "above", "desk_1") in rels("Two desks stand by the wall, each with a lamp hanging above it.")

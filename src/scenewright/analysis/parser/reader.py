@@ -1263,8 +1263,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             targets = self._pronoun(target, c, srcs, prefer)
         elif c.head is not None and target == "it" and all(self.groups[h].count > 1 for h in c.head):
             # "two tents, with a campfire in front of them and four logs around it": "it" is
-            # no plural head but the single thing named last
-            single = [g for g in reversed(c.groups) if g not in srcs and self.groups[g].count == 1]
+            # no plural head but the single thing named last, before the with-part too ("benches
+            # stand in front of the hall, with a flag on either side of it")
+            # (not each one's, "each with a lamp above it", nor one member's "on top")
+            written = self.toks[p.end - 1].text == "it"
+            before = list(reversed(self.history)) if c.each is None and written else []
+            single = [
+                g for g in [*reversed(c.groups), *before]
+                if g not in srcs and g not in c.head and self.groups[g].count == 1
+            ]  # fmt: skip
             targets = single[:1] or targets
         elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
             targets = c.wsub_before[-1:]  # "... and a computer beside it": beside the till
