@@ -977,3 +977,9 @@ def test_it_after_a_plural_head_reaches_back_to_the_single_thing_before_the_with
     assert {("table_lamp_1", "left of", "shed_1"), ("table_lamp_2", "right of", "shed_1")} <= found
     # each one's own, and one member's "on top", stay with the head
     assert ("table_lamp_1", "above", "desk_1") in rels("Two desks stand by the wall, each with a lamp hanging above it.")
+
+
+def test_across_from_after_acting_from_a_perch_places_the_doers_on_it():
+    found = rels("Two girls launch a rocket from a wooden platform across from the barn.")
+    assert {("girl_1", "on", "platform_1"), ("girl_1", "in front of", "barn_1"), ("girl_1", "face to", "barn_1")} <= found
+    assert ("platform_1", "in front of", "barn_1") not in found

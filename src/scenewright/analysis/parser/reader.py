@@ -1015,6 +1015,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if chained and c.last_target and c.last_target_end == last_event_end and all(b in _ADVERBS for b in between):
             srcs = list(c.last_target)
             rider = c.main or ([] if c.first else list(prev_subject))
+            if not all(self._living(g) for g in rider):
+                # "scientists launch a balloon from a platform across from the huts": the clause's
+                # subjects the last phrase put on the target ride it, not the thing they act on
+                on = [r[1] for r in self.relations if r[0] == "on" and r[2] in c.last_target]
+                rider = [g for g in c.subjects if g in on and self._living(g)] or rider
             if self._rider_placed(c, rider, kind):
                 srcs = list(rider)  # "he sits on a stool at the workbench": he is at it, on his stool
             elif self._sits_on_instead(c, rider, p):
