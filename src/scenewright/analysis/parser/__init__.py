@@ -136,7 +136,10 @@ Decisions worth knowing:
   idling at the barrier", "a ring light that hangs from the ceiling"; before the subject's own
   verb a participle stays the subject's); a person on a seat is what *at*, *across from*,
   *facing* and, after a seat, *between* / *under* / *behind* place ("sits on a stool at the workbench"),
-  while *beside* / *near* place the seat; "with" right after the second end of *between* is that
+  while *beside* / *near* place the seat (the one on it is the clause's living subject the phrase
+  before put there, also when the verb acts on a thing: "launch a rocket from a platform across
+  from the barn" places the launchers); "it" right after a *between* names the thing between, not
+  one of the pair; "with" right after the second end of *between* is that
   end's. X *under* a thing that hangs, is hung, is on a wall or is a thin board → that thing
   ``above`` X ("chairs under a ceiling fan"). "Between the first and second van", "between
   the second and the third" (of the row named before), "the two nearest benches" are members of
