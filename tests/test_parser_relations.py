@@ -452,6 +452,13 @@ def test_a_tall_thing_on_the_wall_can_be_above():
     assert ("pine_tree_1", "near", "pond_1") in rels("A tall pine stands above the pond.")
 
 
+def test_a_board_or_a_shelf_above_a_thing_is_fixed_up_there():
+    # a flat board and a unit with a wall form come mounted; a tree does not
+    assert ("sign_1", "above", "desk_1") in rels("A painted sign above the writing desk welcomes guests.")
+    assert ("bookshelf_1", "above", "sofa_1") in rels("A bookcase above the old sofa holds atlases.")
+    assert ("tree_1", "near", "well_1") in rels("An old oak above the well sways in the wind.")
+
+
 @pytest.mark.parametrize(
     "text, thing, holder",
     [
@@ -973,3 +980,32 @@ def test_a_body_part_of_a_named_person_carries_like_his_own():
 def test_who_after_a_comma_is_the_one_named_before_it():
     found = rels("A boy naps on the rug beside his aunt, who knits in an armchair.")
     assert ("aunt_1", "on", "armchair_1") in found and ("boy_1", "on", "rug_1") in found
+
+
+def test_it_after_between_names_the_thing_between():
+    # the pair is "them"; "it" is the thing that stands between the two
+    found = rels("A potter at a wide bench between the kiln and the well sets a jug on it.")
+    assert ("bottle_1", "on", "bench_1") in found and ("bottle_1", "on", "kiln_1") not in found
+    assert ("cat_1", "on", "crate_1") in rels("A crate stands between the cart and the well, and a cat sleeps on it.")
+
+
+def test_one_who_talks_to_someone_is_near_them_and_a_phrase_after_places_the_talker():
+    assert ("nurse_1", "near", "porter_1") in rels("A nurse chats with a porter.")
+    found = rels("The abbess speaks to a gardener at the desk.")
+    assert {("abbess_1", "near", "gardener_1"), ("abbess_1", "near", "desk_1")} <= found
+    assert ("abbess_1", "face to", "gardener_1") not in found
+    # looking at someone still turns one to them
+    assert ("nurse_1", "face to", "porter_1") in rels("A nurse looks at a porter.")
+
+
+def test_it_after_a_plural_head_reaches_back_to_the_single_thing_before_the_with_part():
+    found = rels("Three crates stand in front of the shed, with a lamp on either side of it.")
+    assert {("table_lamp_1", "left of", "shed_1"), ("table_lamp_2", "right of", "shed_1")} <= found
+    # each one's own, and one member's "on top", stay with the head
+    assert ("table_lamp_1", "above", "desk_1") in rels("Two desks stand by the wall, each with a lamp hanging above it.")
+
+
+def test_across_from_after_acting_from_a_perch_places_the_doers_on_it():
+    found = rels("Two girls launch a rocket from a wooden platform across from the barn.")
+    assert {("girl_1", "on", "platform_1"), ("girl_1", "in front of", "barn_1"), ("girl_1", "face to", "barn_1")} <= found
+    assert ("platform_1", "in front of", "barn_1") not in found

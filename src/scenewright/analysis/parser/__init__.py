@@ -38,7 +38,9 @@ Decisions worth knowing:
   ("a birdcage hangs from the ceiling").
 
 - ``beside`` / ``next to`` / ``alongside`` / ``leans against`` → ``side of``; ``near`` / ``close to`` / ``by`` →
-  ``near``; ``opposite`` / ``across from`` → ``in front of`` + ``face to``; ``flanked by`` and
+  ``near``, and so is one who ``talks to`` / ``speaks to`` / ``chats with`` someone (the
+  annotated sets: with them, not turned to them; a phrase after the addressee still places the
+  talker); ``opposite`` / ``across from`` → ``in front of`` + ``face to``; ``flanked by`` and
   ``on either side of`` → one flanker ``left of`` and one ``right of`` (one thing named "on each
   side of" is two, one a side, even beside a door that is no object); ``around`` /
   ``surrounding`` / ``surrounded by`` → the surrounding objects shared among the target's
@@ -96,7 +98,9 @@ Decisions worth knowing:
   table" a round table.
 - ``over`` means ``above`` after a hanging verb (hang, hover, float...) anywhere earlier in the
   clause part or for a small (tabletop or hanging) thing, else ``near`` (a tree leaning over a
-  pond); a tabletop thing hung "from the ceiling" hangs. ``X under Y`` puts Y ``on`` X when X is
+  pond); a tabletop thing hung "from the ceiling" hangs. A tall standing thing ``above`` a thing
+  is ``near`` it (a tree above a pond) unless it is a flat board or a storage unit with a wall form
+  ("a sign above the counter", "a shelf above the desk"): those hang. ``X under Y`` puts Y ``on`` X when X is
   flat (a rug under a table), else X ``near`` Y.
 - ``in`` a seat, a vehicle, a container or on a surface → ``on`` it ("a man in a rocking chair", "a
   duck floats in the tub", "a rabbit in a cage"), and a person or an animal is on every
@@ -132,7 +136,10 @@ Decisions worth knowing:
   idling at the barrier", "a ring light that hangs from the ceiling"; before the subject's own
   verb a participle stays the subject's); a person on a seat is what *at*, *across from*,
   *facing* and, after a seat, *between* / *under* / *behind* place ("sits on a stool at the workbench"),
-  while *beside* / *near* place the seat; "with" right after the second end of *between* is that
+  while *beside* / *near* place the seat (the one on it is the clause's living subject the phrase
+  before put there, also when the verb acts on a thing: "launch a rocket from a platform across
+  from the barn" places the launchers); "it" right after a *between* names the thing between, not
+  one of the pair; "with" right after the second end of *between* is that
   end's. X *under* a thing that hangs, is hung, is on a wall or is a thin board → that thing
   ``above`` X ("chairs under a ceiling fan"). "Between the first and second van", "between
   the second and the third" (of the row named before), "the two nearest benches" are members of

@@ -27,9 +27,10 @@ _OPPOSITE_SIDES = {"in front of": "behind", "left of": "right of", "right of": "
 #: ("reads a book on the bench", "eats a sandwich at the table").
 _HOLDER_KINDS = ("on", "at", "in", "between", "under")
 #: Phrase kinds read as one of the scene's relations whatever they join ("benches along the fence"
-#: stand by it, parallel to it on either face, not off one of its ends as "side of" would put them).
+#: stand by it, parallel to it on either face, not off one of its ends as "side of" would put them;
+#: one who "talks to" someone stands with them, as the annotated sets read it, not turned to them).
 _KIND_RELATION = {"left": "left of", "right": "right of", "flank elliptic": "flank", "hanging from": "above",
-                  "leaning on": "side of", "along": "near"}  # fmt: skip
+                  "leaning on": "side of", "along": "near", "talking to": "near"}  # fmt: skip
 #: Phrase kinds that place their target by the thing before them ("a desk flanked by two lamps",
 #: "a snowmobile towing a sled": the sled behind it), and the relation the target gets.
 _REVERSED = {"flanked by": "flank", "surrounded by": "around", "near by": "near", "on by": "on", "towing": "behind"}
@@ -85,6 +86,8 @@ _PLATFORM_HEIGHT, _PLATFORM_AREA = 3.5, 4.0
 #: Height (m) at most of a host that a small thing "over" it sits on ("a pot over the fire"); over
 #: a taller one (a table) it hangs above.
 _LOW_HOST = 1.0
+#: m, the depth at most of a flat standing board (a sign, a panel, a curtain) that may as well hang on a wall.
+_FLAT_DEPTH = 0.15
 #: Pronouns that name a person or an animal ("someone": the owner of a body part no possessive
 #: names, "a glass in one hand").
 _PERSONAL = ("him", "her", "himself", "herself", "someone")

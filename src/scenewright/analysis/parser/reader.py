@@ -13,6 +13,7 @@ from scenewright.analysis.parser.grammar import (
     _CHAIN_KINDS,
     _COPULAS,
     _ENCLOSURES,
+    _FLAT_DEPTH,
     _FORMATIONS,
     _FORMATION_NOUNS,
     _GROUND_KINDS,
@@ -52,6 +53,7 @@ from scenewright.analysis.parser.nouns import (
 )
 from scenewright.analysis.parser.phrases import _Rel, _find_relations, _phrase_table
 from scenewright.analysis.parser.references import _References
+from scenewright.analysis.parser.room import WALL_UNIT_HEIGHTS
 from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
 from scenewright.analysis.parser.support import FLAT_HOST
 from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _split, _Tok, _tokenise
@@ -1132,6 +1134,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if chained and c.last_target and c.last_target_end == last_event_end and all(b in _ADVERBS for b in between):
             srcs = list(c.last_target)
             rider = c.main or ([] if c.first else list(prev_subject))
+            if not all(self._living(g) for g in rider):
+                # "scientists launch a balloon from a platform across from the huts": the clause's
+                # subjects the last phrase put on the target ride it, not the thing they act on
+                on = [r[1] for r in self.relations if r[0] == "on" and r[2] in c.last_target]
+                rider = [g for g in c.subjects if g in on and self._living(g)] or rider
             across = kind == "opposite" and self._across_from_doer(c, target, None, last_event_end)
             if self._rider_placed(c, rider, kind) and not across:
                 srcs = list(rider)  # "he sits on a stool at the workbench": he is at it, on his stool
@@ -1376,6 +1383,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # a post next to it": the wagon)
         own_subject = list(prev_subject) if c.main and srcs == c.main else []
         prefer = [*c.last_target, *prev_subject] if c.last_target else own_subject
+        if target == "it" and c.last_kind == "between":
+            # "a woman at a table between the pen and the press spreads a fleece on it": the pair is
+            # "them"; "it" is what stands between them
+            prefer = [*c.last_srcs, *prefer]
         if not srcs and c.opens and starts_with_rel:
             prefer = list(self.topic)  # "Behind them, five soldiers sit": them of the sentence before
         who = srcs or ([] if c.opens else list(prev_subject))  # "..., watching them": the subject before
@@ -1398,8 +1409,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             targets = self._pronoun(target, c, srcs, prefer)
         elif c.head is not None and target == "it" and all(self.groups[h].count > 1 for h in c.head):
             # "two tents, with a campfire in front of them and four logs around it": "it" is
-            # no plural head but the single thing named last
-            single = [g for g in reversed(c.groups) if g not in srcs and self.groups[g].count == 1]
+            # no plural head but the single thing named last, before the with-part too ("benches
+            # stand in front of the hall, with a flag on either side of it")
+            # (not each one's, "each with a lamp above it", nor one member's "on top")
+            written = self.toks[p.end - 1].text == "it"
+            before = list(reversed(self.history)) if c.each is None and written else []
+            single = [
+                g for g in [*reversed(c.groups), *before]
+                if g not in srcs and g not in c.head and self.groups[g].count == 1
+            ]  # fmt: skip
             targets = single[:1] or targets
         elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
             targets = c.wsub_before[-1:]  # "... and a computer beside it": beside the till
@@ -1729,6 +1747,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 continue
             self.relations.append((resolved, s, target, instance))
 
+    def _mountable(self, s: int) -> bool:
+        """Whether a standing thing also comes fixed to a wall, so "above" a thing names it up there
+        ("a sign above the counter", "a shelf above the desk"): a flat board (a sign, a panel) or a
+        storage unit that has a wall form (:data:`WALL_UNIT_HEIGHTS`); a tree or a tower does not."""
+        g = self.groups[s]
+        return min(g.size[:2]) <= _FLAT_DEPTH or g.category in WALL_UNIT_HEIGHTS
+
     def _kind(self, kind: str, s: int, t: int, hang: bool = False) -> str:
         src = self.groups[s]
         target = self.catalogue[self.groups[t].category]
@@ -1744,7 +1769,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "on"
             return "above" if hang or src.rests in ("hanging", "surface") else "near"
         walled = any(m.group == s for k, m in self.by_start.items() if k in self.on_wall)
-        if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not (hang or walled):
+        if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not (hang or walled or self._mountable(s)):
             return "near"  # a tree "above" a pond cannot float: read it as near (a rack on the wall can hang)
         if kind == "under" and self._overhead(t):
             return "under hung"  # "chairs under a ceiling fan": the fan hangs above them
