@@ -171,3 +171,15 @@ def test_counted_things_of_a_container_are_there_in_it():
     assert ("egg_4", "on", "nest_1") in got
     parsed = parse_scene("A vase of tulips stands on the table.")
     assert [o.category for o in parsed.objects] == ["vase", "table"]
+
+
+def test_a_plant_in_a_planter_stands_on_it_one_planter_each():
+    """"Lemon trees grow in wooden planters": each tree on a planter of its own (planters with
+    no count of their own), kept there by the support check although its crown is wider."""
+    parsed = parse_scene("Three lemon trees grow in wooden planters along the terrace.")
+    got = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert {("tree_3", "on", "planter_3"), ("tree_1", "on", "planter_1")} <= got
+    assert [o.category for o in parsed.objects].count("planter") == 3
+    parsed = parse_scene("A bay tree stands in a big stone planter by the door.")
+    assert ("tree_1", "on", "planter_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert not parsed.repairs

@@ -1363,6 +1363,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "four astronauts sit on stools": one each
         elif tm is not None and kind == "hanging from" and len(srcs) == 1 and self._hooks_each(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "a dozen lanterns hang from posts": one each
+        elif tm is not None and kind == "in" and len(srcs) == 1 and self._planters_each(srcs[0], tm):
+            self.groups[targets[0]].count = self.groups[srcs[0]].count  # "four trees grow in planters": one each
         sitter = self._seat_owner(c, srcs, tm) if tm is not None else None
         if sitter is not None:
             self._relate("on", [sitter], targets[0], instance=instance)
@@ -1406,6 +1408,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         return (
             _is_plural(self.toks, m) and not m.counted and not m.definite and m.group >= 0
             and m.group not in self.numbered and self._carrier(m.group, ("seats",))
+        )  # fmt: skip
+
+    def _planters_each(self, plant: int, m: _Mention) -> bool:
+        """Planters named in the plural with no count of their own, new here, that plants grow
+        in ("orange trees in terracotta planters"): one for each, as a seat for each sitter."""
+        planted = self.catalogue[self.groups[plant].category].shape in _PLANT_SHAPES
+        return (
+            planted and _is_plural(self.toks, m) and not m.counted and not m.definite and m.group >= 0
+            and m.group not in self.numbered and self.groups[m.group].category == "planter"
         )  # fmt: skip
 
     def _sits_on_instead(self, c: _Clause, rider: list[int], p: _Phrase) -> bool:
@@ -1603,6 +1614,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "no relation"  # in a tent, in the lighthouse: inside it, out of the layout
             if self._living(s) and (self._carrier(t, _VESSEL_KINDS) or self._carrier(t, by_family=False)):
                 return "on"  # (in a guessed structure, a dome or an igloo, one is inside it)
+            if self.catalogue[src.category].shape in _PLANT_SHAPES and self.groups[t].category == "planter":
+                return "on"  # "orange trees grow in terracotta planters": each stands in its own
             holds = target.shape in _SEATS or target.support or self._carrier(t, _VESSEL_KINDS)
             return "on" if holds and target.size[2] <= 2.5 else "no relation"
         if kind in ("from", "on a carrier"):
