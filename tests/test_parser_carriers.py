@@ -183,3 +183,31 @@ def test_a_plant_in_a_planter_stands_on_it_one_planter_each():
     parsed = parse_scene("A bay tree stands in a big stone planter by the door.")
     assert ("tree_1", "on", "planter_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
     assert not parsed.repairs
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # a body part "of" someone carries as "her lap" does
+        ("A toddler dozes on the lap of her grandmother by the stove.", ("toddler_1", "on", "grandmother_1")),
+        ("A parrot rides on the shoulder of a pirate by the mast.", ("bird_1", "on", "pirate_1")),
+        # "back" alone ends a phrase ("at the back"), but "the back of a horse" names the horse
+        ("A girl sits on the back of a horse.", ("girl_1", "on", "horse_1")),
+        # "has" with a participle and no object of its own is no "has" of owning
+        ("A boy has fallen asleep on the lap of his uncle.", ("boy_1", "on", "uncle_1")),
+        # ", who sits ..." after a living thing: that one sits there
+        ("A toddler dozes on the lap of her grandmother, who sits in a rocking chair.", ("grandmother_1", "on", "chair_1")),
+        ("A girl waves to her uncle, who stands on the pier.", ("uncle_1", "on", "pier_1")),
+        # a verb that puts one "into" a seat or a vehicle
+        ("Three karts wait at the line, each with a driver strapped into its seat.", ("driver_3", "on", "kart_3")),
+        ("A farmer climbs into his tractor by the barn.", ("farmer_1", "on", "tractor_1")),
+    ],
+)
+def test_on_a_person_or_a_vehicle_by_other_words(text, expected):
+    assert expected in rels(text)
+
+
+def test_a_body_part_of_someone_near_stays_near_and_the_sitter_is_not_the_sentence_subject():
+    assert ("dog_1", "near", "shepherd_1") in rels("A puppy curls up at the feet of the old shepherd.")
+    got = rels("A toddler dozes on the lap of her grandmother, who sits in a rocking chair.")
+    assert ("toddler_1", "on", "chair_1") not in got and ("toddler_1", "on", "grandmother_1") in got

@@ -396,7 +396,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # a clause after a semicolon opens like a sentence ("...; behind it, three cars wait")
                 c = _Clause(first=ci == 0 or toks[cs - 1].text in (";", ":"))
                 before = len(self.relations)
-                self._clause(c, cs, ce, prev_subject)
+                self._clause(c, cs, ce, self._who_after(cs) or prev_subject)
                 if c.fronted:
                     srcs = c.main_groups
                     targets_all = {t for _, ts, _ in c.fronted for t in ts}
@@ -441,6 +441,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.relations[:0] = held  # before any other support the list gave them
         self._aboard_their_vehicle(mentions)
         self._one_per_holder()
+
+    def _who_after(self, cs: int) -> list[int]:
+        """", who sits in the front row" right after a living thing: that one is the clause's
+        subject ("a boy asleep on the lap of his father, who sits ..."), not the sentence's."""
+        if cs < 1 or self.toks[cs].text != "who" or self.toks[cs - 1].text != ",":
+            return []
+        named = next((m for m in self.by_start.values() if m.end == cs - 1), None)
+        return [named.group] if named is not None and named.group >= 0 and self._living(named.group) else []
 
     def _aboard_their_vehicle(self, mentions) -> None:
         """"A train waits at the platform, its driver leaning out": a person a vehicle's "its"
@@ -693,7 +701,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if given is not None and self._living(holder[-1]):
                 c.deeds.append((list(holder), given[0]))  # "a robot hands one of them a toolbox": by them
                 hand, tool_end = True, given[1]
-            if w == "with" or w in _HOLD or (w, nxt) in _HOLD_PAIRS or w in ("has", "have") or hand:
+            # ("a boy has fallen asleep on the lap of ...": "has" that carries a participle with no
+            # object of its own owns nothing; "has leaned his bicycle against" still reads as before)
+            after = toks[k + 2].text if k + 2 < ce else ""
+            perfect = w in ("has", "have") and _participle(nxt) and after not in _DETERMINERS and not (
+                {k + 1, k + 2} & set(self.by_start)
+            )
+            if w == "with" or w in _HOLD or (w, nxt) in _HOLD_PAIRS or (w in ("has", "have") and not perfect) or hand:
                 if w in _HOLD and w.endswith("ing") and c.head is not None and c.wsub:
                     # "with a small table beside them holding a teapot": the with-thing holds it
                     c.head, c.wsub, c.hold, c.expect_new = list(c.wsub[-1:]), [], True, False

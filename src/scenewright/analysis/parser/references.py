@@ -83,6 +83,8 @@ class _References:
                     singular(toks[k].text) for k in range(pos, m.start - 1)
                     if toks[k + 1].text == "of" and singular(toks[k].text) in (*_BUILDING_PARTS, *perch)
                 ), None)  # fmt: skip
+                if g >= 0 and self._living(g):  # "on the lap of her father": on him, as "on her lap"
+                    self._body_part = self._part_of_one(pos, m.start)
                 part = toks[m.end].text if m.end < ce and toks[m.end - 1].text.endswith("'s") else ""
                 if singular(part) in _BUILDING_PARTS:
                     self._part = singular(part)
@@ -117,8 +119,10 @@ class _References:
             if w in ("a", "an", "the") and j > pos and not (after_determiner or hyphened) and toks[j - 1].text != "of":
                 break
             modifier = w not in _STOP and w[0].isalnum() and j + 1 in self.by_start
+            # "on the back of a horse": a part "of" something, though "back" alone ends a phrase
+            part_of = self._part_word(w) and j + 1 < ce and toks[j + 1].text == "of"
             if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
-                hyphened or modifier
+                hyphened or modifier or part_of
             ) or (
                 w not in _STOP and w[0].isalnum() and (after_determiner or not _is_verb(w) or self._part_word(w))
             ):
@@ -200,6 +204,15 @@ class _References:
             return None
         self._body_part = relation
         return _PERSON_POSSESSIVES[toks[k].text], j + 1
+
+    def _part_of_one(self, pos: int, end: int) -> str | None:
+        """The relation of a body part named "of" someone between ``pos`` and ``end`` ("the lap
+        of", "the broad shoulders of", "the feet of"), the other way round of "her lap"."""
+        parts = load_vocabulary().body_parts
+        return next((
+            parts[self.toks[k].text] for k in range(pos, end - 1)
+            if self.toks[k + 1].text == "of" and self.toks[k].text in parts
+        ), None)  # fmt: skip
 
     def _building_of_part(self, pos: int, end: int) -> int | None:
         """The building (or vehicle) a part of one names when no thing is named ("on the roof",
