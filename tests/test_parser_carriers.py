@@ -211,3 +211,23 @@ def test_a_body_part_of_someone_near_stays_near_and_the_sitter_is_not_the_senten
     assert ("dog_1", "near", "shepherd_1") in rels("A puppy curls up at the feet of the old shepherd.")
     got = rels("A toddler dozes on the lap of her grandmother, who sits in a rocking chair.")
     assert ("toddler_1", "on", "chair_1") not in got and ("toddler_1", "on", "grandmother_1") in got
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # a part one sits in or perches on names the thing that has it
+        ("A glider waits on the field, and a pilot sits in the cockpit of the glider.", ("pilot_1", "on", "glider_1")),
+        ("Sparrows drink from the birdbath's rim.", ("sparrow_3", "on", "bird_bath_1")),
+        (
+            "A birdbath stands on the lawn. Two sparrows bathe from the rim of the birdbath.",
+            ("sparrow_2", "on", "bird_bath_1"),
+        ),
+    ],
+)
+def test_on_a_thing_by_its_seat_or_rim(text, expected):
+    assert expected in rels(text)
+
+
+def test_a_thing_taken_from_a_perch_noun_places_nobody_on_it():
+    assert not any(r == "on" and t == "barrel_1" for _, r, t in rels("A cooper lifts a lid from the barrel."))

@@ -1628,6 +1628,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "no relation"  # in a tent, in the lighthouse: inside it, out of the layout
             if self._living(s) and (self._carrier(t, _VESSEL_KINDS) or self._carrier(t, by_family=False)):
                 return "on"  # (in a guessed structure, a dome or an igloo, one is inside it)
+            if self._living(s) and self._perch_part:
+                return "on"  # "a pilot strapped into its seat", "in the cockpit of the glider": on what has it
             if self.catalogue[src.category].shape in _PLANT_SHAPES and self.groups[t].category == "planter":
                 return "on"  # "orange trees grow in terracotta planters": each stands in its own
             holds = target.shape in _SEATS or target.support or self._carrier(t, _VESSEL_KINDS)

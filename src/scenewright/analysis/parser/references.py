@@ -86,7 +86,7 @@ class _References:
                 if g >= 0 and self._living(g):  # "on the lap of her father": on him, as "on her lap"
                     self._body_part = self._part_of_one(pos, m.start)
                 part = toks[m.end].text if m.end < ce and toks[m.end - 1].text.endswith("'s") else ""
-                if singular(part) in _BUILDING_PARTS:
+                if singular(part) in (*_BUILDING_PARTS, *perch):  # (a perch's: "drink from the fountain's rim")
                     self._part = singular(part)
                     return ([g] if g >= 0 else None), m.end + 1  # "on the diner's roof": by the diner, on its roof
                 return ([g] if g >= 0 else None), m.end
