@@ -231,3 +231,10 @@ def test_on_a_thing_by_its_seat_or_rim(text, expected):
 
 def test_a_thing_taken_from_a_perch_noun_places_nobody_on_it():
     assert not any(r == "on" and t == "barrel_1" for _, r, t in rels("A cooper lifts a lid from the barrel."))
+
+
+def test_pulling_on_a_rope_stands_nobody_on_it():
+    """"Haul on ropes", "tugs on a rope": a deed on the thing, not a place to stand; the place
+    phrase after it places the doers."""
+    got = rels("Three deckhands heave on ropes beside the capstan.")
+    assert ("deckhand_1", "side of", "capstan_1") in got and not any(r == "on" for _, r, _ in got)
