@@ -238,3 +238,9 @@ def test_pulling_on_a_rope_stands_nobody_on_it():
     phrase after it places the doers."""
     got = rels("Three deckhands heave on ropes beside the capstan.")
     assert ("deckhand_1", "side of", "capstan_1") in got and not any(r == "on" for _, r, _ in got)
+
+
+def test_the_top_with_nothing_after_it_is_the_top_of_the_latest_tower():
+    got = rels("A stone lighthouse guards the harbour, and a keeper peers out from the top.")
+    assert ("keeper_1", "on", "lighthouse_1") in got
+    assert not rels("A market stall sells pies, and a boy waves from the top.")

@@ -13,6 +13,7 @@ from scenewright.analysis.parser.grammar import (
     _OPPOSITE_SIDES,
     _OWNER_PARTS,
     _PERSON_POSSESSIVES,
+    _PLATFORM_HEIGHT,
     _ROOFED_VEHICLES,
 )
 from scenewright.analysis.parser.nouns import _HOLDING_PARTS, _PLACING_VERBS, _is_plural, _position_adjective
@@ -151,6 +152,11 @@ class _References:
         if owner and side < ce and toks[side].text in _OWNER_PARTS:
             self._part = toks[side].text
             return owner, side + 1  # "piled against its side", "drink at its near edge": by the owner
+        if [t.text for t in toks[pos : pos + 2]] == ["the", "top"] and (pos + 2 >= ce or toks[pos + 2].text != "of"):
+            tower = next((g.index for g in reversed(self.groups) if self._tall_perch(g.index)), None)
+            if tower is not None:
+                self._part = "top"
+                return [tower], pos + 2  # "with a ranger looking out from the top": the watchtower's
         if lead < ce and toks[lead].text == "the" and j == lead + 2 and singular(toks[lead + 1].text) in load_vocabulary().part_owners:
             self._part = singular(toks[lead + 1].text)
             return "the part", j  # "lies in the water": the water of the pond named before
@@ -204,6 +210,11 @@ class _References:
             return None
         self._body_part = relation
         return _PERSON_POSSESSIVES[toks[k].text], j + 1
+
+    def _tall_perch(self, g: int) -> bool:
+        """A perch too tall to climb onto like a platform (a tower, a mast): what "the top" names
+        when nothing follows."""
+        return self._carrier(g, ("perches",)) and self.groups[g].size[2] > _PLATFORM_HEIGHT
 
     def _part_of_one(self, pos: int, end: int) -> str | None:
         """The relation of a body part named "of" someone between ``pos`` and ``end`` ("the lap
