@@ -244,3 +244,11 @@ def test_the_top_with_nothing_after_it_is_the_top_of_the_latest_tower():
     got = rels("A stone lighthouse guards the harbour, and a keeper peers out from the top.")
     assert ("keeper_1", "on", "lighthouse_1") in got
     assert not rels("A market stall sells pies, and a boy waves from the top.")
+
+
+def test_sitting_in_a_row_is_sitting_on_one_of_the_seats_in_rows():
+    """"Sits in the front row": one of the seats named in rows before (not the room's front);
+    with no seats named there is nothing to sit on."""
+    got = rels("Rows of pews face the pulpit. A widow sits in the front row, and her nephew waits by the door.")
+    assert ("widow_1", "on", "bench_1") in got
+    assert not any(s == "widow_1" and r == "on" for s, r, _ in rels("A widow sits in the front row."))

@@ -152,6 +152,12 @@ class _References:
         if owner and side < ce and toks[side].text in _OWNER_PARTS:
             self._part = toks[side].text
             return owner, side + 1  # "piled against its side", "drink at its near edge": by the owner
+        row = next((k for k in range(pos + 1, min(ce, pos + 3)) if toks[k].text == "row"), None)
+        if row is not None and toks[pos].text == "the" and self._sitting_before(pos):
+            rows = (g.index for g in reversed(self.groups) if g.count > 1 and self._carrier(g.index, ("seats",)))
+            seats = next(rows, None)
+            if seats is not None:
+                return [seats], row + 1  # "his father, who sits in the front row": on one of the rows of seats
         if [t.text for t in toks[pos : pos + 2]] == ["the", "top"] and (pos + 2 >= ce or toks[pos + 2].text != "of"):
             tower = next((g.index for g in reversed(self.groups) if self._tall_perch(g.index)), None)
             if tower is not None:
@@ -210,6 +216,10 @@ class _References:
             return None
         self._body_part = relation
         return _PERSON_POSSESSIVES[toks[k].text], j + 1
+
+    def _sitting_before(self, pos: int) -> bool:
+        """A verb of sitting right before the phrase at ``pos`` ("sits in the front row")."""
+        return pos >= 2 and self.toks[pos - 2].text in load_vocabulary().postures.get("sitting", ())
 
     def _tall_perch(self, g: int) -> bool:
         """A perch too tall to climb onto like a platform (a tower, a mast): what "the top" names
