@@ -252,3 +252,11 @@ def test_sitting_in_a_row_is_sitting_on_one_of_the_seats_in_rows():
     got = rels("Rows of pews face the pulpit. A widow sits in the front row, and her nephew waits by the door.")
     assert ("widow_1", "on", "bench_1") in got
     assert not any(s == "widow_1" and r == "on" for s, r, _ in rels("A widow sits in the front row."))
+
+
+def test_where_clause_after_a_platform_puts_the_living_on_it():
+    """", where a boy feeds the ducks" after a jetty: on the jetty, though his deed relates him
+    to the ducks; after a thing one cannot stand on, near it as before."""
+    got = rels("Three punts are moored by a long wooden jetty, where a girl throws crumbs to the gulls.")
+    assert ("girl_1", "on", "pier_1") in got
+    assert ("cat_1", "near", "stove_1") in rels("A stove stands in the corner, where a cat sleeps.")

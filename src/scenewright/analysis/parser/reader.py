@@ -478,7 +478,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
 
     def _where(self, cs: int, c: _Clause, since: int) -> None:
         """"... next to the ticket booth, where an attendant waits": what a where-clause names and
-        places nowhere else is near the place before "where" (the last thing named before it)."""
+        places nowhere else is near the place before "where" (the last thing named before it); on
+        it when that is a platform the living can stand on (a jetty, a stage)."""
         if cs < 1 or self.toks[cs - 1].text != "where":
             return
         # the subjects up to their verb ("a mother pushing a pram": the pram is hers)
@@ -489,8 +490,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         )  # fmt: skip
         named = {m.group for m in self.by_start.values() if m.start < verb}
         subjects = [g for g in c.subjects or c.main_groups[:1] if g in named]
-        if not subjects or any(r[1] in subjects for r in self.relations[since:]):
+        if not subjects:
             return
+        placed = [r[0] for r in self.relations[since:] if r[1] in subjects]
         # the noun right before, else, for people, the last thing named shortly before ("a barrier
         # guides the queue, where two men wait": the queue is no thing, the barrier is)
         before = [m for m in self.by_start.values() if cs - 10 <= m.start and m.end < cs and m.group >= 0]
@@ -498,7 +500,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         gap = [t.text for t in self.toks[last.end : cs - 1]] if last is not None else []
         people = all(self._living(g) for g in subjects)
         place = last.group if last is not None and (people or all(w == "," for w in gap)) else None
-        if place is not None and place not in subjects:
+        if place is None or place in subjects:
+            return
+        if people and self._platform(place, subjects[0]):
+            # "a little wooden jetty, where a boy feeds the ducks": on the platform, whatever he does there
+            if not any(kind in ("on", "above") for kind in placed):
+                self._relate("on", subjects, place)
+        elif not placed:
             self._relate("near", subjects, place)
 
     def _on_wall_after(self, end: int) -> bool:
