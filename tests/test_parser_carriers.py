@@ -190,3 +190,92 @@ def test_a_board_people_stand_on_is_a_platform_not_a_sign():
 def test_from_a_rim_or_an_edge_one_perches_on_its_owner():
     found = {(r.source, r.relation, r.target) for r in parse_scene("Two finches drink from the birdbath's rim.").relations}
     assert ("finch_1", "on", "bird_bath_1") in found
+
+
+def test_a_plant_in_a_planter_stands_on_it_one_planter_each():
+    """"Lemon trees grow in wooden planters": each tree on a planter of its own (planters with
+    no count of their own), kept there by the support check although its crown is wider."""
+    parsed = parse_scene("Three lemon trees grow in wooden planters along the terrace.")
+    got = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert {("tree_3", "on", "planter_3"), ("tree_1", "on", "planter_1")} <= got
+    assert [o.category for o in parsed.objects].count("planter") == 3
+    parsed = parse_scene("A bay tree stands in a big stone planter by the door.")
+    assert ("tree_1", "on", "planter_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert not parsed.repairs
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # a body part "of" someone carries as "her lap" does
+        ("A toddler dozes on the lap of her grandmother by the stove.", ("toddler_1", "on", "grandmother_1")),
+        ("A parrot rides on the shoulder of a pirate by the mast.", ("bird_1", "on", "pirate_1")),
+        # "back" alone ends a phrase ("at the back"), but "the back of a horse" names the horse
+        ("A girl sits on the back of a horse.", ("girl_1", "on", "horse_1")),
+        # "has" with a participle and no object of its own is no "has" of owning
+        ("A boy has fallen asleep on the lap of his uncle.", ("boy_1", "on", "uncle_1")),
+        # ", who sits ..." after a living thing: that one sits there
+        ("A toddler dozes on the lap of her grandmother, who sits in a rocking chair.", ("grandmother_1", "on", "chair_1")),
+        ("A girl waves to her uncle, who stands on the pier.", ("uncle_1", "on", "pier_1")),
+        # a verb that puts one "into" a seat or a vehicle
+        ("Three karts wait at the line, each with a driver strapped into its seat.", ("driver_3", "on", "kart_3")),
+        ("A farmer climbs into his tractor by the barn.", ("farmer_1", "on", "tractor_1")),
+    ],
+)
+def test_on_a_person_or_a_vehicle_by_other_words(text, expected):
+    assert expected in rels(text)
+
+
+def test_a_body_part_of_someone_near_stays_near_and_the_sitter_is_not_the_sentence_subject():
+    assert ("dog_1", "near", "shepherd_1") in rels("A puppy curls up at the feet of the old shepherd.")
+    got = rels("A toddler dozes on the lap of her grandmother, who sits in a rocking chair.")
+    assert ("toddler_1", "on", "chair_1") not in got and ("toddler_1", "on", "grandmother_1") in got
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # a part one sits in or perches on names the thing that has it
+        ("A glider waits on the field, and a pilot sits in the cockpit of the glider.", ("pilot_1", "on", "glider_1")),
+        ("Sparrows drink from the birdbath's rim.", ("sparrow_3", "on", "bird_bath_1")),
+        (
+            "A birdbath stands on the lawn. Two sparrows bathe from the rim of the birdbath.",
+            ("sparrow_2", "on", "bird_bath_1"),
+        ),
+    ],
+)
+def test_on_a_thing_by_its_seat_or_rim(text, expected):
+    assert expected in rels(text)
+
+
+def test_a_thing_taken_from_a_perch_noun_places_nobody_on_it():
+    assert not any(r == "on" and t == "barrel_1" for _, r, t in rels("A cooper lifts a lid from the barrel."))
+
+
+def test_pulling_on_a_rope_stands_nobody_on_it():
+    """"Haul on ropes", "tugs on a rope": a deed on the thing, not a place to stand; the place
+    phrase after it places the doers."""
+    got = rels("Three deckhands heave on ropes beside the capstan.")
+    assert ("deckhand_1", "side of", "capstan_1") in got and not any(r == "on" for _, r, _ in got)
+
+
+def test_the_top_with_nothing_after_it_is_the_top_of_the_latest_tower():
+    got = rels("A stone lighthouse guards the harbour, and a keeper peers out from the top.")
+    assert ("keeper_1", "on", "lighthouse_1") in got
+    assert not rels("A market stall sells pies, and a boy waves from the top.")
+
+
+def test_sitting_in_a_row_is_sitting_on_one_of_the_seats_in_rows():
+    """"Sits in the front row": one of the seats named in rows before (not the room's front);
+    with no seats named there is nothing to sit on."""
+    got = rels("Rows of pews face the pulpit. A widow sits in the front row, and her nephew waits by the door.")
+    assert ("widow_1", "on", "bench_1") in got
+    assert not any(s == "widow_1" and r == "on" for s, r, _ in rels("A widow sits in the front row."))
+
+
+def test_where_clause_after_a_platform_puts_the_living_on_it():
+    """", where a boy feeds the ducks" after a jetty: on the jetty, though his deed relates him
+    to the ducks; after a thing one cannot stand on, near it as before."""
+    got = rels("Three punts are moored by a long wooden jetty, where a girl throws crumbs to the gulls.")
+    assert ("girl_1", "on", "pier_1") in got
+    assert ("cat_1", "near", "stove_1") in rels("A stove stands in the corner, where a cat sleeps.")

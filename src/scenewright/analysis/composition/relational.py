@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 from collections import Counter, defaultdict
 from collections.abc import Callable
+from dataclasses import replace
 
 from scenewright.analysis.composition import roles
 from scenewright.analysis.composition.footprint import GAP, Footprint, clear, push
@@ -84,6 +85,7 @@ def place_related(
     for r in relations:
         incoming[r.target].append(r)
     flat = {o.id for o in objects if o.size[2] < 0.1}
+    lent = _lend_sides(outgoing, relations, flat, by_id)
     placed: dict[str, Footprint] = {}
     side_use: Counter[tuple[str, str]] = Counter()
     main = main_object(objects, relations)
@@ -101,7 +103,7 @@ def place_related(
     def beside(obj: ParsedObject, t: Footprint, target: str, rel: str, turn: bool) -> Footprint:
         """``obj`` on the ``rel`` side of ``t``, the n-th there, pushed clear."""
         (dx, dy), face_yaw = SIDES[rel]
-        probe = Footprint(0, 0, 0, face_yaw if turn else 0.0, obj.size)
+        probe = Footprint(0, 0, 0, face_yaw if turn else 0.0, lent.get(obj.id, obj.size))
         n = side_use[(target, rel)]
         side_use[(target, rel)] += 1
         along = (probe.d if dx else probe.w) + GAP
@@ -176,6 +178,35 @@ def place_related(
             others = [v for k, v in placed.items() if k != obj.id and frozenset((k, obj.id)) not in resting]
             _turn_clear(obj, placed, placed[target], [v for v in others if v.h >= 0.1], relations, by_id)
     return placed
+
+
+#: Relations a thing resting on a host lends that host: where the thing is, its host is.
+_LENT = (*SIDES, "side of", "near")
+
+
+def _lend_sides(
+    outgoing: dict[str, list[ParsedRelation]], relations: list[ParsedRelation], flat: set[str], by_id
+) -> dict[str, tuple[float, float, float]]:
+    """A host the text places nowhere, carrying one thing the text places ("four trees grow around
+    the pond in planters", "a cat sleeps on a cushion by the stove"), goes where that thing's
+    side relations say: the host is placed first, as far out as the wider of the two needs (a
+    tree's crown overhangs its planter), and the thing sits on it. Returns those hosts' reach."""
+    lent: dict[str, tuple[float, float, float]] = {}
+    riders: dict[str, list[str]] = defaultdict(list)
+    for r in relations:
+        if r.relation == "on" and r.target not in flat:
+            riders[r.target].append(r.source)
+    for host, on in riders.items():
+        # (a seat is left out: its sitter's relations already reach it, and lending them only
+        # spreads the seats wider: "four astronauts sit on stools around a table")
+        if len(on) != 1 or anchor(outgoing[host], flat) is not None or roles.kind(by_id[host].category) in roles.SEATS:
+            continue
+        sides = [replace(r, source=host) for r in outgoing[on[0]] if r.relation in _LENT and r.target != host]
+        if sides:
+            outgoing[host].extend(sides)
+            wide, size = by_id[on[0]].size, by_id[host].size
+            lent[host] = (max(wide[0], size[0]), max(wide[1], size[1]), size[2])
+    return lent
 
 
 def _slide(p: Footprint, t: Footprint, direction: tuple[float, float], others: list[Footprint]) -> Footprint:

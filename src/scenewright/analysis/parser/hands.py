@@ -29,6 +29,7 @@ from scenewright.analysis.parser.words import (
     _is_verb,
     _verb_stem,
 )
+from scenewright.core.catalogue import singular
 
 if TYPE_CHECKING:
     from scenewright.analysis.parser.reader import _Clause
@@ -247,6 +248,8 @@ class _Hands:
         "two children feed ducks from a footbridge"; not "pulls a rope from the barrel")."""
         perch = self._next_mention(k + 1, len(self.toks))
         ridden = perch is None or load_vocabulary().carries(perch.category, perch.phrase, _RIDDEN)
+        if self._perch_part_after(k):
+            return self._after_verb(k, worn=True)
         if not self._after_verb(k, worn=True) or not ridden:
             return False  # ("feeds the goats from a bucket": what the feed comes out of)
         j = k - 1
@@ -261,6 +264,18 @@ class _Hands:
                 return False  # the verb: it acts on nothing named ("jumps from the ledge")
             j -= 1
         return False
+
+    def _perch_part_after(self, k: int) -> bool:
+        """A part one perches on, of a thing, right after ``k``: "from the fountain's rim", "from
+        the rim of the trough" (not the thing itself: "pulls a rope from the barrel")."""
+        toks, parts = self.toks, load_vocabulary().carriers.get("perches", ())
+        reach = min(len(toks), k + 6)
+        end = next((j for j in range(k + 1, reach) if not toks[j].text[:1].isalnum()), reach)
+        return any(
+            singular(toks[j].text) in parts
+            and (toks[j - 1].text.endswith("'s") or (j + 1 < end and toks[j + 1].text == "of"))
+            for j in range(k + 2, end)
+        )
 
     def _taken_from(self) -> list[_Rel]:
         """"Lifts a tray from the counter", "two porters lift cases off it", "takes a jar out of

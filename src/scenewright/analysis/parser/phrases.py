@@ -93,9 +93,11 @@ def _qualifies_noun(toks: list[_Tok], end: int, kind: str) -> bool:
     """"on the left wall", "on the left bench": the side word is the next noun's adjective, so
     the phrase is only its preposition (a wall is no object: nothing is left of anything).
     "A ring of stones", "two circles of chairs": a verb of going around that is also a noun is
-    the noun before its "of"."""
+    the noun before its "of". "In the front row": the row's adjective."""
     if kind == "around" and end < len(toks) and toks[end].text == "of":
         return True
+    if kind.startswith("anchor") and end < len(toks) and toks[end].text in ("row", "rows"):
+        return True  # "sits in the front row": a row of seats, not the front of the room
     if kind not in ("left", "right") or end >= len(toks):
         return False
     w = toks[end].text

@@ -424,7 +424,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.rel_at = {
             r.start: r for r in found
             if r.kind != "from" or self._verb_before(r.start, self._lookout) or self._from_to(r.end, starts)
-            or self._seat_after(r, mentions) or self._from_perch_part(r.end)
+            or self._seat_after(r, mentions)
         }  # fmt: skip
         self._rows_then_with(mentions)
         #: Mentions the text puts on a wall ("a luggage rack on the wall"): hung, so "above" holds.
@@ -454,7 +454,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # a clause after a semicolon opens like a sentence ("...; behind it, three cars wait")
                 c = _Clause(first=ci == 0 or toks[cs - 1].text in (";", ":"))
                 before = len(self.relations)
-                self._clause(c, cs, ce, prev_subject)
+                self._clause(c, cs, ce, self._who_after(cs) or prev_subject)
                 if c.fronted:
                     srcs = c.main_groups
                     targets_all = {t for _, ts, _ in c.fronted for t in ts}
@@ -510,6 +510,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if kind == "on" and group.category == "panel" and group.guessed and self._living(s) and not group.sized:
                 group.category, group.size = platform.category, platform.size
 
+    def _who_after(self, cs: int) -> list[int]:
+        """", who sits in the front row" right after a living thing: that one is the clause's
+        subject ("a boy asleep on the lap of his father, who sits ..."), not the sentence's."""
+        if cs < 1 or self.toks[cs].text != "who" or self.toks[cs - 1].text != ",":
+            return []
+        named = next((m for m in self.by_start.values() if m.end == cs - 1), None)
+        return [named.group] if named is not None and named.group >= 0 and self._living(named.group) else []
+
     def _aboard_their_vehicle(self, mentions) -> None:
         """"A train waits at the platform, its driver leaning out": a person a vehicle's "its"
         names is its crew, on it (the latest vehicle named before in the sentence), unless the text
@@ -543,7 +551,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
 
     def _where(self, cs: int, c: _Clause, since: int) -> None:
         """"... next to the ticket booth, where an attendant waits": what a where-clause names and
-        places nowhere else is near the place before "where" (the last thing named before it)."""
+        places nowhere else is near the place before "where" (the last thing named before it); on
+        it when that is a platform the living can stand on (a jetty, a stage)."""
         if cs < 1 or self.toks[cs - 1].text != "where":
             return
         # the subjects up to their verb ("a mother pushing a pram": the pram is hers)
@@ -554,8 +563,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         )  # fmt: skip
         named = {m.group for m in self.by_start.values() if m.start < verb}
         subjects = [g for g in c.subjects or c.main_groups[:1] if g in named]
-        if not subjects or any(r[1] in subjects for r in self.relations[since:]):
+        if not subjects:
             return
+        placed = [r[0] for r in self.relations[since:] if r[1] in subjects]
         # the noun right before, else, for people, the last thing named shortly before ("a barrier
         # guides the queue, where two men wait": the queue is no thing, the barrier is)
         before = [m for m in self.by_start.values() if cs - 10 <= m.start and m.end < cs and m.group >= 0]
@@ -563,7 +573,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         gap = [t.text for t in self.toks[last.end : cs - 1]] if last is not None else []
         people = all(self._living(g) for g in subjects)
         place = last.group if last is not None and (people or all(w == "," for w in gap)) else None
-        if place is not None and place not in subjects:
+        if place is None or place in subjects:
+            return
+        if people and self._platform(place, subjects[0]):
+            # "a little wooden jetty, where a boy feeds the ducks": on the platform, whatever he does there
+            if not any(kind in ("on", "above") for kind in placed):
+                self._relate("on", subjects, place)
+        elif not placed:
             self._relate("near", subjects, place)
 
     def _on_wall_after(self, end: int) -> bool:
@@ -726,13 +742,6 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             plural = [g for g in [*self.history, *c.groups] if self.groups[g].count > 1]
             if plural:
                 c.main = plural[-1:]
-                k += 1
-        if not c.first and k < ce and toks[k].text == "who":
-            # "near her mother, who sits on the sofa": the one named right before the comma
-            comma = k - 1 if k > 0 and toks[k - 1].text == "," else k
-            named = [m.group for m in self.by_start.values() if m.end == comma and m.group >= 0]
-            if named and self._living(named[0]):
-                c.main = named[:1]
                 k += 1
         j = k
         # an adverb that opens a relation phrase is part of it ("Far from the house, ...")
@@ -1644,16 +1653,6 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         taken = any(m.end == rel.start and max(self._size(m)) <= _HANDHELD_SIZE for m in mentions)
         return seat is not None and not taken and load_vocabulary().carries(seat.category, seat.phrase, ("seats",))
 
-    def _from_perch_part(self, start: int) -> bool:
-        """"From" names a part one perches on ("doves drink from the fountain's rim", "a gull
-        dives from the edge of the pier"): where the doer is."""
-        words = [t.text for t in self.toks[start : start + 4]]
-        if words[:1] == ["the"]:
-            words = words[1:]
-        perches = load_vocabulary().carriers.get("perches", ())
-        owned = len(words) > 1 and words[0].endswith("'s") and singular(words[1]) in perches
-        return owned or (len(words) > 1 and words[1] == "of" and singular(words[0]) in perches)
-
     def _from_to(self, start: int, starts: set[int]) -> bool:
         """"From it to a refinery", "from the gate to the barn": a thing, then "to" and another
         thing; what runs or carries from one to the other is between them."""
@@ -1795,6 +1794,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "no relation"  # in a tent, in the lighthouse: inside it, out of the layout
             if self._living(s) and (self._carrier(t, _VESSEL_KINDS) or self._carrier(t, by_family=False)):
                 return "on"  # (in a guessed structure, a dome or an igloo, one is inside it)
+            if self._living(s) and self._perch_part:
+                return "on"  # "a pilot strapped into its seat", "in the cockpit of the glider": on what has it
+            if self.catalogue[src.category].shape in _PLANT_SHAPES and self.groups[t].category == "planter":
+                return "on"  # "orange trees grow in terracotta planters": each stands in its own
             holds = target.shape in _SEATS or target.support or self._carrier(t, _VESSEL_KINDS)
             return "on" if holds and target.size[2] <= 2.5 else "no relation"
         if kind in ("from", "on a carrier"):

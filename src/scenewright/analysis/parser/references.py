@@ -13,6 +13,7 @@ from scenewright.analysis.parser.grammar import (
     _OPPOSITE_SIDES,
     _OWNER_PARTS,
     _PERSON_POSSESSIVES,
+    _PLATFORM_HEIGHT,
     _ROOFED_VEHICLES,
 )
 from scenewright.analysis.parser.nouns import _HOLDING_PARTS, _PLACING_VERBS, _is_plural, _position_adjective
@@ -83,8 +84,10 @@ class _References:
                     singular(toks[k].text) for k in range(pos, m.start - 1)
                     if toks[k + 1].text == "of" and singular(toks[k].text) in (*_BUILDING_PARTS, *perch)
                 ), None)  # fmt: skip
+                if g >= 0 and self._living(g):  # "on the lap of her father": on him, as "on her lap"
+                    self._body_part = self._part_of_one(pos, m.start)
                 part = toks[m.end].text if m.end < ce and toks[m.end - 1].text.endswith("'s") else ""
-                if singular(part) in _BUILDING_PARTS or singular(part) in perch:  # ("the fountain's rim")
+                if singular(part) in (*_BUILDING_PARTS, *perch):  # (a perch's: "drink from the fountain's rim")
                     self._part = singular(part)
                     return ([g] if g >= 0 else None), m.end + 1  # "on the diner's roof": by the diner, on its roof
                 return ([g] if g >= 0 else None), m.end
@@ -117,8 +120,11 @@ class _References:
             if w in ("a", "an", "the") and j > pos and not (after_determiner or hyphened) and toks[j - 1].text != "of":
                 break
             modifier = w not in _STOP and w[0].isalnum() and j + 1 in self.by_start
+            # "on the back of a horse": a part "of" something, though "back" alone ends a phrase
+            # ("on every side of": a phrase of its own, one a side)
+            part_of = self._part_word(w) and w not in ("side", "sides") and j + 1 < ce and toks[j + 1].text == "of"
             if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
-                hyphened or modifier
+                hyphened or modifier or part_of
             ) or (
                 w not in _STOP and w[0].isalnum() and (after_determiner or not _is_verb(w) or self._part_word(w))
             ):
@@ -147,6 +153,17 @@ class _References:
         if owner and side < ce and toks[side].text in _OWNER_PARTS:
             self._part = toks[side].text
             return owner, side + 1  # "piled against its side", "drink at its near edge": by the owner
+        row = next((k for k in range(pos + 1, min(ce, pos + 3)) if toks[k].text == "row"), None)
+        if row is not None and toks[pos].text == "the" and self._sitting_before(pos):
+            rows = (g.index for g in reversed(self.groups) if g.count > 1 and self._carrier(g.index, ("seats",)))
+            seats = next(rows, None)
+            if seats is not None:
+                return [seats], row + 1  # "his father, who sits in the front row": on one of the rows of seats
+        if [t.text for t in toks[pos : pos + 2]] == ["the", "top"] and (pos + 2 >= ce or toks[pos + 2].text != "of"):
+            tower = next((g.index for g in reversed(self.groups) if self._tall_perch(g.index)), None)
+            if tower is not None:
+                self._part = "top"
+                return [tower], pos + 2  # "with a ranger looking out from the top": the watchtower's
         if lead < ce and toks[lead].text == "the" and j == lead + 2 and singular(toks[lead + 1].text) in load_vocabulary().part_owners:
             self._part = singular(toks[lead + 1].text)
             return "the part", j  # "lies in the water": the water of the pond named before
@@ -176,7 +193,7 @@ class _References:
         several = [g.index for g in self.groups if g.count > 1]
         return several[-1] if several and self._living(several[-1]) else None
 
-    def _body_part_at(self, pos: int, ce: int, starts) -> tuple[str | list[int], int] | None:
+    def _body_part_at(self, pos: int, ce: int, starts) -> tuple[str, int] | None:
         """"on her knees", "at his feet", "in their arms": a part of a person places by the
         person ("her" → the woman); the part's relation (carried on, or near) is kept for
         :meth:`_relation`."""
@@ -189,17 +206,6 @@ class _References:
             # "a glass in one hand", "a sword in each hand", ", baton in hand": whoever the clause is about
             self._body_part = vocabulary.body_parts[toks[k].text]
             return "someone", k + 1
-        if k + 3 < ce and toks[k].text == "the" and toks[k + 2].text == "of" and toks[k + 1].text in vocabulary.body_parts:
-            # "asleep on the lap of her father", "rides on the shoulders of his uncle": the owner named
-            at = next((j for j in range(k + 3, min(k + 6, ce)) if j in starts), None)
-            owner = starts[at] if at is not None and isinstance(starts, dict) else None
-            if at is not None and owner is None:
-                return "someone", at + 1  # (asked only whether the phrase names anything)
-            if owner is not None and self._lives(owner.category):
-                g = self._resolve(owner, self.size_of.get(owner.start, []))
-                if g >= 0:
-                    self._body_part = vocabulary.body_parts[toks[k + 1].text]
-                    return [g], owner.end
         if k + 1 >= ce or toks[k].text not in _PERSON_POSSESSIVES:
             return None
         j = k + 1
@@ -211,6 +217,24 @@ class _References:
             return None
         self._body_part = relation
         return _PERSON_POSSESSIVES[toks[k].text], j + 1
+
+    def _sitting_before(self, pos: int) -> bool:
+        """A verb of sitting right before the phrase at ``pos`` ("sits in the front row")."""
+        return pos >= 2 and self.toks[pos - 2].text in load_vocabulary().postures.get("sitting", ())
+
+    def _tall_perch(self, g: int) -> bool:
+        """A perch too tall to climb onto like a platform (a tower, a mast): what "the top" names
+        when nothing follows."""
+        return self._carrier(g, ("perches",)) and self.groups[g].size[2] > _PLATFORM_HEIGHT
+
+    def _part_of_one(self, pos: int, end: int) -> str | None:
+        """The relation of a body part named "of" someone between ``pos`` and ``end`` ("the lap
+        of", "the broad shoulders of", "the feet of"), the other way round of "her lap"."""
+        parts = load_vocabulary().body_parts
+        return next((
+            parts[self.toks[k].text] for k in range(pos, end - 1)
+            if self.toks[k + 1].text == "of" and self.toks[k].text in parts
+        ), None)  # fmt: skip
 
     def _building_of_part(self, pos: int, end: int) -> int | None:
         """The building (or vehicle) a part of one names when no thing is named ("on the roof",

@@ -9,6 +9,7 @@ from dataclasses import replace
 
 from scenewright.analysis.parser.model import ParsedObject, ParsedRelation
 from scenewright.analysis.parser.vocabulary import load_vocabulary
+from scenewright.analysis.parser.words import _PLANT_SHAPES
 
 
 _SUPPORT_PREFERENCE = {
@@ -227,6 +228,8 @@ def can_hold(host: ParsedObject, thing: ParsedObject, catalogue) -> bool:
         return True
     if catalogue[thing.category].shape in _LIVING_SHAPES and max(host.size[:2]) >= _PERCH_SIDE:
         return True
+    if host.category == "planter" and catalogue[thing.category].shape in _PLANT_SHAPES:
+        return True  # a tree grows out of its planter, its crown far wider than the pot
     if thing.category in _FLOOR_FURNITURE:
         return False
     area = thing.size[0] * thing.size[1] <= _AREA_SLACK * host.size[0] * host.size[1]
