@@ -396,6 +396,7 @@ VARIANTS = [
     ("cart", "wooden sledge", "dark_wood"), ("cart", "sleigh", "fabric"), ("cart", "wheelbarrow", "rubber"),
     ("machine", "weighing scales", "brass"), ("vehicle", "touring caravan", "canvas_alt"),
     ("generic", "dragon egg", "scales"), ("container", "nest", "straw"),
+    ("boat", "papyrus boat", "straw"), ("boat", "bamboo raft boat", "straw"), ("panel", "board platform", "dark_wood"),
 ]
 
 
