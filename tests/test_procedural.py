@@ -397,7 +397,7 @@ VARIANTS = [
     ("machine", "weighing scales", "brass"), ("vehicle", "touring caravan", "canvas_alt"),
     ("generic", "dragon egg", "scales"), ("container", "nest", "straw"),
     ("boat", "papyrus boat", "straw"), ("boat", "bamboo raft boat", "straw"), ("panel", "board platform", "dark_wood"),
-    ("generic", "signal fire thing", "flame"),
+    ("generic", "signal fire thing", "flame"), ("house", "log cabin", "wood"), ("house", "fishing hut", "wood"),
 ]
 
 
