@@ -1,4 +1,4 @@
-from scenewright.analysis.composition.hosts import HAND, LONGEST, TOP_SHARE, fit_unsized, lengthen
+from scenewright.analysis.composition.hosts import HAND, LONGEST, PLATFORM, RAISED, TOP_SHARE, fit_unsized, laid_flat, lengthen
 from scenewright.analysis.parser import ParsedObject, ParsedRelation, ParsedScene
 
 
@@ -83,3 +83,22 @@ def test_a_thing_nobody_knows_on_a_seat_a_rock_or_another_unknown_keeps_its_size
     stranger = unsized("oddling_1", "oddling")
     for host in (obj("bench_1", "bench", (1.6, 0.6, 0.85)), obj("rock_1", "rock", (1.2, 1.0, 0.8)), unsized("lift_1", "lift")):
         assert fit_unsized(scene([host, stranger], [on("oddling_1", host.id)]))[1].size == stranger.size, host.id
+
+
+def test_a_board_people_or_animals_stand_on_lies_flat_and_one_with_a_notice_stays_upright():
+    """"Four plasterers stand on a plank panel", "a goat on a board": a low deck, long enough for
+    them; a board with a notice pinned on it is still a sign."""
+    board = obj("panel_1", "panel", (1.2, 0.08, 1.6))
+    men = [obj(f"figure_{i}", "figure", (0.55, 0.35, 1.75)) for i in range(4)]
+    flat = laid_flat(scene([board, *men], [on(m.id, "panel_1") for m in men]))[0]
+    assert flat.size[2] == RAISED and flat.size[1] >= 1.0 and flat.size[0] >= 4 * 0.55
+    assert PLATFORM in flat.description
+    goat = obj("animal_1", "animal", (0.4, 1.0, 0.8))
+    assert laid_flat(scene([board, goat], [on("animal_1", "panel_1")]))[0].size[2] == RAISED
+    plasterer = ParsedObject(id="plasterer_1", category="thing", name="plasterer", description="plasterer",
+                             size=(0.6, 0.6, 0.6), group=0, guessed=True)  # an agent noun nobody listed
+    assert laid_flat(scene([board, plasterer], [on("plasterer_1", "panel_1")]))[0].size[2] == RAISED
+    notice = obj("paper_1", "paper", (0.3, 0.01, 0.4))
+    assert laid_flat(scene([board, notice], [on("paper_1", "panel_1")]))[0].size == board.size
+    table = obj("table_1", "table", (1.8, 0.9, 0.76))
+    assert laid_flat(scene([table, men[0]], [on(men[0].id, "table_1")]))[0].size == table.size

@@ -396,7 +396,16 @@ VARIANTS = [
     ("cart", "wooden sledge", "dark_wood"), ("cart", "sleigh", "fabric"), ("cart", "wheelbarrow", "rubber"),
     ("machine", "weighing scales", "brass"), ("vehicle", "touring caravan", "canvas_alt"),
     ("generic", "dragon egg", "scales"), ("container", "nest", "straw"),
+    ("boat", "papyrus boat", "straw"), ("boat", "bamboo raft boat", "straw"), ("panel", "board platform", "dark_wood"),
+    ("generic", "signal fire thing", "flame"), ("house", "log cabin", "wood"), ("house", "fishing hut", "wood"),
 ]
+
+
+def test_a_thing_headed_by_fire_burns_and_one_fire_is_only_for_does_not():
+    """"a signal fire" is a fire; "a fire blanket" or "fire sand bucket" is for fires."""
+    assert "flame" in build_model("generic", (0.6, 0.6, 0.6), "realistic", 1, name="beacon fires thing").geometry
+    for name in ("fire blanket thing", "fire sand bucket thing"):
+        assert "flame" not in build_model("generic", (0.6, 0.6, 0.6), "realistic", 1, name=name).geometry
 
 
 @pytest.mark.parametrize(("shape", "name", "role"), VARIANTS)

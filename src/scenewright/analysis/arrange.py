@@ -60,6 +60,7 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
     parsed = mounts.on_posts(parsed)  # outdoors a clock made for a wall stands on a post
     parsed = mounts.over_holders(parsed)  # onions hang over the bear, not over the spoon it holds
     parsed = replace(parsed, objects=posture.pose(parsed))  # people sit and lie as the text says
+    parsed = replace(parsed, objects=hosts.laid_flat(parsed))  # shearers stand on a board laid flat
     parsed = replace(parsed, objects=hosts.fit_unsized(parsed))  # a baton nobody sized fits a hand
     parsed = replace(parsed, objects=hosts.lengthen(parsed))  # a cabinet long enough for two aquariums
     relations = share_supports(parsed) + formations.stack_relations(parsed.objects)

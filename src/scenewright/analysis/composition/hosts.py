@@ -17,6 +17,12 @@ a person or an animal holds is hand-sized (:data:`HAND`), one put on furniture m
 things (a table, a shelf: the catalogue's ``support``) keeps to a share of its top
 (:data:`TOP_SHARE`), proportions kept (:func:`fit_unsized`). What stands on a seat, a rock, a lift
 or another unknown thing is left alone: a thing nobody knows there is as likely someone.
+
+A board or a panel is drawn upright, a sign; one that people or animals stand ``on`` ("shearers on
+a raised wooden board", "a goat on a plank") is a floor: it lies flat as a low platform
+(:data:`RAISED` high) long enough for them side by side (:func:`laid_flat`), and says so in its
+description, so the mesh draws a deck and what stands on it stands on the deck, not on the top
+edge of a sign 1.6 m up.
 """
 
 from __future__ import annotations
@@ -26,7 +32,7 @@ from dataclasses import replace
 
 from scenewright.analysis.parser import ParsedObject, ParsedScene
 from scenewright.analysis.composition.mounts import LIVING
-from scenewright.analysis.parser.vocabulary import GENERIC
+from scenewright.analysis.parser.vocabulary import GENERIC, load_vocabulary
 from scenewright.core.catalogue import load_catalogue
 
 #: Procedural shapes that are drawn well at any width.
@@ -43,6 +49,42 @@ ROOM_ON_TOP = 1.5
 HAND = 0.3
 #: Share of its host's smaller top side the longest side of a thing nobody sized keeps to.
 TOP_SHARE = 0.5
+#: m, the height of a board or panel laid flat as a platform for who stands on it (a step up).
+RAISED = 0.3
+#: m, the least depth of such a platform: a person stands on it with room to work.
+PLATFORM_DEPTH = 1.5
+#: Word the description of a board laid flat gets: the panel mesh draws a platform for it.
+PLATFORM = "platform"
+
+
+def laid_flat(parsed: ParsedScene) -> list[ParsedObject]:
+    """The parse's objects, each panel someone or an animal stands ``on`` (the living, or an agent
+    noun nobody listed that the reader would take for a person were it seen acting) laid flat:
+    :data:`RAISED` high, at least :data:`PLATFORM_DEPTH` deep, as long as its load side by side."""
+    catalogue = load_catalogue()
+    vocabulary = load_vocabulary()
+    by_id = {o.id: o for o in parsed.objects}
+
+    def stands(o: ParsedObject) -> bool:
+        entry = catalogue.get(o.category)
+        if entry is not None and entry.shape in ("figure", "animal"):
+            return True
+        return o.category == GENERIC and vocabulary.guess_agent(o.name.split()[-1], True) is not None
+
+    loads: dict[str, list[ParsedObject]] = defaultdict(list)
+    for r in parsed.relations:
+        if r.relation == "on" and r.source in by_id and r.target in by_id and stands(by_id[r.source]):
+            loads[r.target].append(by_id[r.source])
+    out = []
+    for o in parsed.objects:
+        entry = catalogue.get(o.category)
+        on = loads.get(o.id, [])
+        if on and entry is not None and entry.shape == "panel" and PLATFORM not in o.description:
+            width = max(o.size[0], min(sum(s.size[0] + GAP for s in on) + GAP, LONGEST))
+            depth = max(PLATFORM_DEPTH, max(s.size[1] for s in on) + 2 * GAP)
+            o = replace(o, size=(width, depth, RAISED), description=f"{o.description} {PLATFORM}".strip())
+        out.append(o)
+    return out
 
 
 def lengthen(parsed: ParsedScene) -> list[ParsedObject]:

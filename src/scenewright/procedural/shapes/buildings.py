@@ -54,12 +54,17 @@ def building(m: Model) -> None:
     m.box("accent", (-m.sx / 2 + 0.3, -m.sy / 2, min(2.7, 0.85 * fh)), (m.sx / 2 - 0.3, -m.sy / 2 + 1.5 * inset, min(3.0, 0.95 * fh)))
 
 
+#: Words of houses built of timber (a log cabin, a hut, a wooden shed): their walls are wood, not render.
+_TIMBER = ("log", "cabin", "hut", "shack", "shed", "wooden", "timber")
+
+
 def house(m: Model) -> None:
-    m.main = "wall"
+    """A gabled house: walls (of wood for a cabin, a hut or a shed), a roof, a door, windows, a chimney."""
+    m.main = "wood" if m.has(*_TIMBER) else "wall"
     eave = 0.55 * m.sz
     over = 0.06 * min(m.sx, m.sy)
-    m.box("wall", (-m.sx / 2 + over, -m.sy / 2 + over, 0), (m.sx / 2 - over, m.sy / 2 - over, eave))
-    m.extrude("wall", [(-m.sy / 2 + over, eave), (m.sy / 2 - over, eave), (0, m.sz - 0.05 * m.sz)], "x",
+    m.box(m.main, (-m.sx / 2 + over, -m.sy / 2 + over, 0), (m.sx / 2 - over, m.sy / 2 - over, eave))
+    m.extrude(m.main, [(-m.sy / 2 + over, eave), (m.sy / 2 - over, eave), (0, m.sz - 0.05 * m.sz)], "x",
               -m.sx / 2 + over, m.sx / 2 - over)
     t = 0.04 * m.sz
     for s in (-1, 1):

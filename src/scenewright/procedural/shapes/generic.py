@@ -5,10 +5,12 @@ name with no hint at all."""
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 from scenewright.procedural.builder import Model
-from scenewright.procedural.shapes import structures
+from scenewright.procedural.shapes import outdoor, structures
 from scenewright.procedural.shapes.families import FAMILIES, family_of
 
 
@@ -154,8 +156,12 @@ def _balloon(m: Model) -> None:
 
 def generic(m: Model) -> None:
     """Soft things, instruments, pumpkins, balls, eggs, ramps, goals, chimneys, rails, orreries and
-    party balloons by name; else the family the name calls (a horse the catalogue files here is an animal);
+    party balloons by name; a fire (a driftwood fire, a cooking fire: "fire" heads the name) as a
+    campfire; else the family the name calls (a horse the catalogue files here is an animal);
     only a name with no hint at all gets the draped lump."""
+    if _FIRE.search(m.name):
+        outdoor._campfire(m)
+        return
     variants = (
         (("guitar", "violin", "cello"), _guitar),
         (("cushion", "pillow", "pouf"), _cushion),
@@ -180,6 +186,11 @@ def generic(m: Model) -> None:
         FAMILIES[family](m)
         return
     _draped(m)
+
+
+#: A name whose head is "fire" (the category's word may follow: "driftwood fire thing"); not a fire
+#: engine, a fire extinguisher or a fire bucket, where "fire" says what the thing is for.
+_FIRE = re.compile(r"\bfires?(?: thing)?$")
 
 
 def _draped(m: Model) -> None:

@@ -213,7 +213,7 @@ def _platform(m: Model) -> None:
     run = min(0.3 * m.sx, max(1.5 * H, 0.3))
     deck_end = W - run
     masonry = m.has("stone", "brick", "concrete", "masonry", "marble")
-    if m.has("wood", "wooden", "timber", "plank", "boardwalk") or (H > 1.2 and not masonry):
+    if m.has("wood", "wooden", "timber", "plank", "board", "boardwalk") or (H > 1.2 and not masonry):
         m.main = "wood"
         t = min(0.1, 0.3 * H)
         boards = max(3, int(m.sy / 0.25))
@@ -345,7 +345,11 @@ def structure(m: Model) -> None:
 def panel(m: Model) -> None:
     """A flat upright board: a screen on feet, a banner between poles, a notice board on
     legs, a tilted solar panel, a windsock (filed with panels as a thing that flies); else a
-    painted board on two feet."""
+    painted board on two feet; a board laid flat for people to stand on (said to be a platform,
+    analysis/composition/hosts.py) a platform."""
+    if m.has("platform", "dais"):
+        _platform(m)
+        return
     W, D, H = m.sx / 2, m.sy / 2, m.sz
     t = min(0.3 * D, 0.03 * max(m.sx, m.sz)) + 0.005
     if m.named("solar panel", "solar"):

@@ -176,14 +176,18 @@ _SQUARE_RIG = ("longship", "viking", "galleon", "junk", "square", "caravel")
 #: Words of boats open to the sky, rowed, paddled or poled: a gunwale and thwarts, no cabin.
 _OPEN = ("rowing", "rowboat", "row boat", "canoe", "kayak", "dinghy", "punt", "gondola", "longship", "viking", "raft",
          "skiff", "coracle", "lifeboat", "fishing boat", "whaler")
+#: Words of what boats are made of by hand from plants (a reed boat, a dugout, a bark canoe): such a
+#: boat is open, and its hull shows that stuff instead of paint.
+_PLANT_HULL = ("reed", "papyrus", "rush", "bamboo", "bark", "dugout", "log", "wicker", "birch")
 
 
 def boat(m: Model) -> None:
     """A hull tapering to a bow at the front; by its words an open boat (gunwale and thwarts:
     rowing boat, canoe, longship), a sailing boat (mast and sail, square-rigged for a longship
     or a galleon) or, else, a motor boat with a cabin."""
-    m.main = "paint"
-    open_ = m.has(*_OPEN)
+    plant = m.has(*_PLANT_HULL)
+    m.main = "straw" if plant else "paint"
+    open_ = plant or m.has(*_OPEN)
     sail = m.has(*_SAILS) or m.sz > 1.5 * m.sx
     hull_h = (0.3 if sail or open_ else 0.55) * m.sz
     top = 0.7 * hull_h if open_ else hull_h  # an open boat's floor lies below its gunwale
@@ -194,7 +198,7 @@ def boat(m: Model) -> None:
     bottom = hull.vertices[:, 2] < 1e-9
     hull.vertices[bottom, 0] *= 0.3
     hull.vertices[bottom, 1] = hull.vertices[bottom, 1] * 0.85 + 0.05 * L
-    m.add("paint", P.flatten(hull))
+    m.add(m.main, P.flatten(hull))
     planks = P.prism([(x * 0.94, y * 0.96) for x, y in deck], 0.02 * m.sz + 0.01)
     m.add("wood", P.flatten(P.transform(planks, P.affine(np.eye(3), (0, 0, top - 0.01)))))
     if open_:
