@@ -499,16 +499,6 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.relations[:0] = held  # before any other support the list gave them
         self._aboard_their_vehicle(mentions)
         self._one_per_holder()
-        self._boards_underfoot()
-
-    def _boards_underfoot(self) -> None:
-        """A board, a panel, a sheet nobody listed that people or animals stand on is a raised floor,
-        not a sign ("three shearers work on a raised wooden board"): a platform, low and wide."""
-        platform = load_vocabulary().match(("platform",))
-        for kind, s, t, _ in self.relations:
-            group = self.groups[t]
-            if kind == "on" and group.category == "panel" and group.guessed and self._living(s) and not group.sized:
-                group.category, group.size = platform.category, platform.size
 
     def _who_after(self, cs: int) -> list[int]:
         """", who sits in the front row" right after a living thing: that one is the clause's
