@@ -700,3 +700,25 @@ def test_a_text_that_opens_inside_a_place_is_indoor_whatever_stands_there():
 )
 def test_the_opening_place_word_decides_indoor(text, indoor):
     assert parse_scene(text).indoor is indoor
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a participle right after "between the second and the third" names no noun of the pair
+        "Three carts wait in a line and a boy walks between the second and the third holding a lamp.",
+        # a text cut off after a describing participle
+        "A cosy attic. At the foot of the bed sits a toy chest painted",
+    ],
+)
+def test_text_cut_short_or_without_commas_reads_without_error(text):
+    assert parse_scene(text).objects
+
+
+def test_every_annotated_text_reads_when_cut_short_or_stripped_of_commas():
+    """Users paste half sentences and skip commas: the reader answers, whatever it makes of them."""
+    for path in sorted((PROMPTS.parent / "prompts-fresh-9").glob("*.json")):
+        words = json.loads(path.read_text())["text"].split()
+        for cut in (len(words) // 3, len(words) // 2, 2 * len(words) // 3):
+            parse_scene(" ".join(words[:cut]))
+        parse_scene(" ".join(words).replace(",", ""))

@@ -2081,7 +2081,8 @@ def _post_description(toks: list[_Tok], end: int, starts: set[int]) -> tuple[lis
         noun_ok = made_of or i not in starts
         return w[:1].isalpha() and w not in _STOP and noun_ok and not _is_verb(w)
 
-    while k - first < _MAX_LOOK_WORDS and (describes(k) or (toks[k].text in ("and", "or") and describes(k + 1))):
+    joins = ("and", "or")
+    while k - first < _MAX_LOOK_WORDS and (describes(k) or (k < len(toks) and toks[k].text in joins and describes(k + 1))):
         k += 1
     if k == first:
         return [], end  # "a table covered in books": contents, no look

@@ -436,7 +436,9 @@ class _References:
         if j >= ce or toks[j].text not in _ORDINALS:
             return None
         ordinals = (_ORDINALS[toks[k].text], _ORDINALS[toks[j].text])
-        if j + 1 >= ce or not toks[j + 1].text[:1].isalpha():
+        after = toks[j + 1].text if j + 1 < ce else "."
+        verb = j + 1 not in self.by_start and (after.endswith("ing") or _is_verb(after))
+        if not after[:1].isalpha() or verb:  # ("between the second and the third holding a lamp")
             return None, ordinals, j + 1
         m = next((self.by_start[i] for i in range(j + 1, min(ce, j + 4)) if i in self.by_start), None)
         if m is None:
