@@ -709,6 +709,8 @@ def test_the_opening_place_word_decides_indoor(text, indoor):
         "Three carts wait in a line and a boy walks between the second and the third holding a lamp.",
         # a text cut off after a describing participle
         "A cosy attic. At the foot of the bed sits a toy chest painted",
+        # a side of the thing's own ("to its right") as the first phrase read
+        "a row. Each cot has a lamp to its right and a stool beside it.",
     ],
 )
 def test_text_cut_short_or_without_commas_reads_without_error(text):

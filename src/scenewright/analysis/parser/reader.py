@@ -222,6 +222,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self._part: str | None = None
         #: That part is one a person or an animal stands or perches on ("from the barn's roof").
         self._perch_part = False
+        #: "On each of its arms": how many parts the last target names, one thing on each.
+        self._parts_each = 0
         #: Where the sentence before this one starts in ``history``: a posture verb's "in it"
         #: looks for a seat no further back.
         self._recent_from = 0
@@ -1075,6 +1077,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if kind == "near" and toks[rel.start].text == "against" and stacked:
             kind = "side of"  # "drums are stacked against the hut": the stack rests on its side
         # "To her left a globe sits": the possessive is the target, the noun after the subject
+        if kind in _OWN_SIDES:  # (no target read: nothing of the last one's parts carries over)
+            self._body_part = self._part = None
+            self._parts_each = 0
         target, end = self._target_at(rel.end, ce) if kind not in _OWN_SIDES else (None, rel.end)
         if kind in ("on", "at") and target is None and (side := self._owners_side(rel.end, ce)) is not None:
             kind, target, end = side  # "a cart is on the artist's right": right of the artist
