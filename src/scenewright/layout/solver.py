@@ -88,10 +88,15 @@ FORWARD_REJECTS = 32
 REJECT_SPREAD = 0.2
 #: The most poses forward checking may reject in one go, however often it was jumped back into.
 MAX_REJECTS = 128
-#: Poses of a refusing dependent :meth:`_Search.aim` pairs with every untried candidate, and the
-#: seed of the generator it draws them with (its own, so the search's draws stay as they were).
-AIM_POSES = 400
+#: Poses of a refusing dependent :meth:`_Search.aim` pairs with the next untried candidates (at
+#: most :data:`AIM_UNTRIED` of them), and the seed of the generator it draws them with (its own,
+#: so the search's draws stay as they were).
+AIM_POSES = 120
+AIM_UNTRIED = 400
 AIM_SEED = 0
+#: Poses forward checking may reject once aimed: the pairing is judged on a sample, without the
+#: facing's turn, so when the first few it put first fail, it has misjudged that dependent.
+AIM_REJECTS = 8
 #: Search nodes per object each of the first searches may use; the last one gets what is left
 #: of the whole budget, :data:`NODES_PER_OBJECT` per object.
 ATTEMPT_NODES = 6
@@ -911,9 +916,9 @@ class _Search:
         stands near a table beyond the bench), the allowance runs out on the wrong side and the
         search jumps back again and again. Here the dependent's poses that meet its other
         constraints (a sample, drawn with its own generator so the search's draws stay as they
-        were) are paired with every untried candidate, its relations to this object judged on
-        each pair, and the candidates some pose pairs with go first, in their order, with a fresh
-        allowance. Only a dependent whose relations to this object are relative, distance or
+        were) are paired with the next untried candidates, its relations to this object judged on
+        each pair, and the candidates some pose pairs with go first, in their order, with a small
+        fresh allowance (:data:`AIM_REJECTS`). Only a dependent whose relations to this object are relative, distance or
         facing ones is aimed for (a facing is left to the real check, which still decides).
         Only reruns aim (:func:`_restarts`): a first search that places everything stays the
         layout it was.
@@ -936,19 +941,21 @@ class _Search:
         if not len(theirs.lo):
             return False
         k = node.cursor
-        untried = self.boxes_of(node.item, node.centres[k:], node.yaws[k:])[:, None]
-        pairs = np.ones((len(node.centres) - k, len(theirs.lo)), dtype=bool)
+        end = min(len(node.centres), k + AIM_UNTRIED)
+        untried = self.boxes_of(node.item, node.centres[k:end], node.yaws[k:end])[:, None]
+        pairs = np.ones((end - k, len(theirs.lo)), dtype=bool)
         for c in mine:
             pairs &= rel.holds(c.relation, theirs[None], untried)
         good = pairs.any(axis=1)
         if not good.any():
             return False
-        order = np.concatenate([np.arange(k), k + np.flatnonzero(good), k + np.flatnonzero(~good)])
+        order = np.concatenate([np.arange(k), k + np.flatnonzero(good), k + np.flatnonzero(~good),
+                                np.arange(end, len(node.centres))])
         node.centres, node.yaws, node.lo, node.hi = node.centres[order], node.yaws[order], node.lo[order], node.hi[order]
         node.turns = {f: y[order] for f, y in node.turns.items()}
         start = k - k % CHUNK  # the broad phase of the chunk under way, for its new candidates
         node.hits = self.world.overlaps(node.columns, node.lo[start : start + CHUNK], node.hi[start : start + CHUNK])
-        node.reject_allowance = node.forward_rejects + FORWARD_REJECTS
+        node.reject_allowance = node.forward_rejects + AIM_REJECTS
         log.debug("%s: %d untried candidates leave %s a position; they go first",
                   node.item.obj.id, int(good.sum()), item.obj.id)
         return True
