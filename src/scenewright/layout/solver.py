@@ -1312,7 +1312,10 @@ def _dfs(
             if d > back:
                 nodes[d] = None
         nodes[depth] = None
-        half = half_extents(search.objects[i].size, search.objects[i].rotation)
+        # In a rerun, one whose poses a dependent refused moves the culprit by that one's size too:
+        # a nest whose egg leaves a dragon curled round it no room moves a dragon's length, not an egg's.
+        movers = [i] + ([node.refuser] if search.aiming and node is not None and node.refuser is not None else [])
+        half = np.max([half_extents(search.objects[x].size, search.objects[x].rotation) for x in movers], axis=0)
         target = nodes[back]
         assert target is not None, "a placed object has its node"
         target.conflict |= culprits - {j}
