@@ -1312,9 +1312,12 @@ def _dfs(
             if d > back:
                 nodes[d] = None
         nodes[depth] = None
-        # In a rerun, one whose poses a dependent refused moves the culprit by that one's size too:
-        # a nest whose egg leaves a dragon curled round it no room moves a dragon's length, not an egg's.
-        movers = [i] + ([node.refuser] if search.aiming and node is not None and node.refuser is not None else [])
+        # In a rerun, one whose every pose a dependent refused moves the culprit by that one's size
+        # too: a nest whose egg leaves a dragon curled round it no room moves a dragon's length, not
+        # an egg's. (Not when the allowance ran out first: candidates were left to try there.)
+        refused = (search.aiming and node is not None and node.refuser is not None
+                   and node.cursor >= len(node.centres) and not node.blockers)
+        movers = [i] + ([node.refuser] if refused else [])
         half = np.max([half_extents(search.objects[x].size, search.objects[x].rotation) for x in movers], axis=0)
         target = nodes[back]
         assert target is not None, "a placed object has its node"
