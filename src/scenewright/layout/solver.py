@@ -13,7 +13,8 @@ Three things keep the search from blowing up where plain backtracking would:
 
 - Forward checking: a pose is taken only if every object that depends on this one can still
   meet its constraints on the objects placed so far. How many poses it may reject adapts:
-  each time a later object's failure jumps back into this one, its allowance doubles.
+  each time a later object's failure jumps back into this one, its allowance doubles. In a
+  rerun, an allowance used up on one dependent first puts the poses that leave it room first.
 - Conflict-directed backjumping: when an object has no valid pose, the search jumps back to
   the latest object that blocked it or shaped its candidates (its targets and theirs),
   moves that one clear of where it was, and re-places what came after. Repeated failures
@@ -918,8 +919,9 @@ class _Search:
         constraints (a sample, drawn with its own generator so the search's draws stay as they
         were) are paired with the next untried candidates, its relations to this object judged on
         each pair, and the candidates some pose pairs with go first, in their order, with a small
-        fresh allowance (:data:`AIM_REJECTS`). Only a dependent whose relations to this object are relative, distance or
-        facing ones is aimed for (a facing is left to the real check, which still decides).
+        fresh allowance (:data:`AIM_REJECTS`). Only a dependent whose relations to this object are
+        relative, distance or facing ones is aimed for (a facing is left to the real check, which
+        still decides).
         Only reruns aim (:func:`_restarts`): a first search that places everything stays the
         layout it was.
         """
