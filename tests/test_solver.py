@@ -510,12 +510,14 @@ def _class_on_a_pew(dx, dy):
     """A teacher near a desk at the front wall, a pew (placed first, the larger) behind the desk
     and two pupils on it in front of the teacher, facing her: she must stand beyond the pew, away
     from where her candidates start."""
-    objects = [box("desk", -1.0 + dx, -2.2, size=(1.8, 0.9, 0.76)), box("pew", -0.8 + dx, -1.2 + dy, size=(1.6, 0.6, 0.45)),
+    objects = [box("desk", -1.0 + dx, -2.2, size=(1.8, 0.9, 0.76)),
+               box("pew", -0.8 + dx, -1.2 + dy, size=(1.6, 0.6, 0.45)),
                box("teacher", 0.5 + dx, -2.3, size=(0.5, 0.8, 1.7)),
                box("pupil_1", -0.9 + dx, -1.1 + dy, size=(0.5, 0.6, 1.2)),
                box("pupil_2", -1.2 + dx, -1.1 + dy, size=(0.5, 0.6, 1.2))]
     constraints = [c("near", "teacher", "desk")] + [
-        c(r, f"pupil_{k}", t) for k in (1, 2) for r, t in (("on", "pew"), ("in front of", "teacher"), ("face to", "teacher"))]
+        c(r, f"pupil_{k}", t) for k in (1, 2)
+        for r, t in (("on", "pew"), ("in front of", "teacher"), ("face to", "teacher"))]
     return objects, constraints
 
 

@@ -953,7 +953,8 @@ class _Search:
             return False
         order = np.concatenate([np.arange(k), k + np.flatnonzero(good), k + np.flatnonzero(~good),
                                 np.arange(end, len(node.centres))])
-        node.centres, node.yaws, node.lo, node.hi = node.centres[order], node.yaws[order], node.lo[order], node.hi[order]
+        node.centres, node.yaws = node.centres[order], node.yaws[order]
+        node.lo, node.hi = node.lo[order], node.hi[order]
         node.turns = {f: y[order] for f, y in node.turns.items()}
         start = k - k % CHUNK  # the broad phase of the chunk under way, for its new candidates
         node.hits = self.world.overlaps(node.columns, node.lo[start : start + CHUNK], node.hi[start : start + CHUNK])
