@@ -13,7 +13,8 @@ Three things keep the search from blowing up where plain backtracking would:
 
 - Forward checking: a pose is taken only if every object that depends on this one can still
   meet its constraints on the objects placed so far. How many poses it may reject adapts:
-  each time a later object's failure jumps back into this one, its allowance doubles.
+  each time a later object's failure jumps back into this one, its allowance doubles. In a
+  rerun, an allowance used up on one dependent first puts the poses that leave it room first.
 - Conflict-directed backjumping: when an object has no valid pose, the search jumps back to
   the latest object that blocked it or shaped its candidates (its targets and theirs),
   moves that one clear of where it was, and re-places what came after. Repeated failures
@@ -88,6 +89,15 @@ FORWARD_REJECTS = 32
 REJECT_SPREAD = 0.2
 #: The most poses forward checking may reject in one go, however often it was jumped back into.
 MAX_REJECTS = 128
+#: Poses of a refusing dependent :meth:`_Search.aim` pairs with the next untried candidates (at
+#: most :data:`AIM_UNTRIED` of them), and the seed of the generator it draws them with (its own,
+#: so the search's draws stay as they were).
+AIM_POSES = 120
+AIM_UNTRIED = 400
+AIM_SEED = 0
+#: Poses forward checking may reject once aimed: the pairing is judged on a sample, without the
+#: facing's turn, so when the first few it put first fail, it has misjudged that dependent.
+AIM_REJECTS = 8
 #: Search nodes per object each of the first searches may use; the last one gets what is left
 #: of the whole budget, :data:`NODES_PER_OBJECT` per object.
 ATTEMPT_NODES = 6
@@ -236,14 +246,18 @@ class _Node:
     narrow_cap: int = 0  # the most it may make (0: no limit)
     walk_rejects: int = 0  # poses rejected for cutting the walking paths
     walk_base: int | None = None  # objects out of reach (and doors stuck) without it
+    refuser: int | None = None  # the dependent that forward checking last found without a pose
+    aimed: bool = False  # its untried candidates were ordered for that dependent (:meth:`_Search.aim`)
 
 
 class _Search:
     """One search's state: the poses placed so far, their collision world, the candidates."""
 
     def __init__(self, objects, constraints, meshes, bounds, fixed, seed, spread=0.0, keep_yaw=(), room=None,
-                 corridors=False):
+                 corridors=False, aiming=False):
         self.objects = list(objects)
+        #: Whether forward checking that runs out of allowance aims (:meth:`aim`): in reruns.
+        self.aiming = aiming
         self.index = {o.id: i for i, o in enumerate(self.objects)}
         self.room = None if room is None else RoomShape(room, corridors)
         #: The rectangle (lo, hi) every footprint must stay in: the bounds, the room's extent.
@@ -889,9 +903,65 @@ class _Search:
                 log.debug("%s cannot help %s: its other targets must move", self.objects[i].id, item.obj.id)
                 return "hopeless"
             node.forward_rejects += 1
+            node.refuser = s
             log.debug("%s rejected: %s would have no position", self.objects[i].id, self.objects[s].id)
             return "reject"
         return "ok"
+
+    def aim(self, node: _Node) -> bool:
+        """When forward checking has used up a node's allowance on one dependent, put first the
+        untried candidates at which that dependent could still stand, once; returns whether any.
+
+        Candidates come nearest the anchor first, so when a dependent's other targets leave it room
+        only on one side of this object (children on a bench across from the grandmother, who
+        stands near a table beyond the bench), the allowance runs out on the wrong side and the
+        search jumps back again and again. Here the dependent's poses that meet its other
+        constraints (a sample, drawn with its own generator so the search's draws stay as they
+        were) are paired with the next untried candidates, its relations to this object judged on
+        each pair, and the candidates some pose pairs with go first, in their order, with a small
+        fresh allowance (:data:`AIM_REJECTS`). Only a dependent whose relations to this object are
+        relative, distance or facing ones is aimed for (a facing is left to the real check, which
+        still decides).
+        Only reruns aim (:func:`_restarts`): a first search that places everything stays the
+        layout it was.
+        """
+        s, i = node.refuser, node.item.index
+        if not self.aiming or s is None or node.aimed or node.cursor >= len(node.centres):
+            return False
+        node.aimed = True
+        item = self.items[s]  # this object is taken again by now: its relations are the ones to it
+        mine = [c for c, t in item.own if t == i and c.relation != "face to"]
+        rest = [(c, t) for c, t in self.active(item) if t != i]
+        if not mine or not rest or any(c.relation not in (*SWEPT, "near", "far") for c in mine):
+            return False
+        saved, self.rng = self.rng, np.random.default_rng(AIM_SEED)
+        try:
+            found = self.poses(replace(item, own=rest), "check")
+        finally:
+            self.rng = saved
+        theirs = found.boxes[np.flatnonzero(found.ok & found.inside)[:AIM_POSES]]
+        if not len(theirs.lo):
+            return False
+        k = node.cursor
+        end = min(len(node.centres), k + AIM_UNTRIED)
+        untried = self.boxes_of(node.item, node.centres[k:end], node.yaws[k:end])[:, None]
+        pairs = np.ones((end - k, len(theirs.lo)), dtype=bool)
+        for c in mine:
+            pairs &= rel.holds(c.relation, theirs[None], untried)
+        good = pairs.any(axis=1)
+        if not good.any():
+            return False
+        order = np.concatenate([np.arange(k), k + np.flatnonzero(good), k + np.flatnonzero(~good),
+                                np.arange(end, len(node.centres))])
+        node.centres, node.yaws = node.centres[order], node.yaws[order]
+        node.lo, node.hi = node.lo[order], node.hi[order]
+        node.turns = {f: y[order] for f, y in node.turns.items()}
+        start = k - k % CHUNK  # the broad phase of the chunk under way, for its new candidates
+        node.hits = self.world.overlaps(node.columns, node.lo[start : start + CHUNK], node.hi[start : start + CHUNK])
+        node.reject_allowance = node.forward_rejects + AIM_REJECTS
+        log.debug("%s: %d untried candidates leave %s a position; they go first",
+                  node.item.obj.id, int(good.sum()), item.obj.id)
+        return True
 
     def blocked(self, node: _Node, limited: bool) -> _Failure:
         item = node.item
@@ -1100,7 +1170,7 @@ def _restarts(objects, constraints, meshes, bounds, fixed, keep_yaw, seed, start
     trouble: set[int] = set()
     for attempt in range(RESTARTS):
         search = _Search(objects, constraints, meshes, bounds, fixed, seed + attempt, spread=0.15 * attempt,
-                         keep_yaw=keep_yaw, room=room, corridors=corridors)
+                         keep_yaw=keep_yaw, room=room, corridors=corridors, aiming=attempt > 0)
         budget = node_limit - used
         if attempt < RESTARTS - 1:
             budget = min(budget, ATTEMPT_NODES * len(objects) + 100)
@@ -1195,7 +1265,7 @@ def _dfs(
                 fallback = k if fallback is None else fallback
                 # Its neighbours would most likely fail the same way: look a little farther.
                 node.avoid.append((node.centres[k, :2].copy(), REJECT_SPREAD))
-                if verdict == "hopeless" or node.forward_rejects >= node.reject_allowance:
+                if verdict == "hopeless" or (node.forward_rejects >= node.reject_allowance and not search.aim(node)):
                     k = None
                     break
                 k = search.next_free(node)
@@ -1245,7 +1315,13 @@ def _dfs(
             if d > back:
                 nodes[d] = None
         nodes[depth] = None
-        half = half_extents(search.objects[i].size, search.objects[i].rotation)
+        # In a rerun, one whose every pose a dependent refused moves the culprit by that one's size
+        # too: a nest whose egg leaves a dragon curled round it no room moves a dragon's length, not
+        # an egg's. (Not when the allowance ran out first: candidates were left to try there.)
+        refused = (search.aiming and node is not None and node.refuser is not None
+                   and node.cursor >= len(node.centres) and not node.blockers)
+        movers = [i] + ([node.refuser] if refused else [])
+        half = np.max([half_extents(search.objects[x].size, search.objects[x].rotation) for x in movers], axis=0)
         target = nodes[back]
         assert target is not None, "a placed object has its node"
         target.conflict |= culprits - {j}
