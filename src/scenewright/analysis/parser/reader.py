@@ -41,6 +41,7 @@ from scenewright.analysis.parser.hands import _Hands
 from scenewright.analysis.parser.kinds import _Kinds
 from scenewright.analysis.parser.nouns import (
     UNCOUNTED,
+    _COMPARED,
     _Group,
     _Mention,
     _find_mentions,
@@ -627,7 +628,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         words = [t.text for t in self.toks[end : end + 4]]
         if words[:3] == ["the", "size", "of"]:
             k = end + 3
-        elif len(words) > 2 and words[0] == "as" and words[2] == "as":
+        elif len(words) > 2 and words[0] == "as" and words[1] in _COMPARED and words[2] == "as":
             k = end + 3
         else:
             return None
