@@ -224,6 +224,24 @@ def test_a_right_of_a_row_is_beside_its_end():
     assert ("bench_1", "right of", "locker_5") in found
 
 
+def test_one_thing_beside_a_plural_is_beside_every_member():
+    found = rels("Four canoes rest on the shingle in a row. Behind the canoes, a boathouse looks out to sea.")
+    assert {("boathouse_1", "behind", f"boat_{i}") for i in range(1, 5)} <= found
+    # seen from the side it still takes the row's end
+    assert ("bench_1", "right of", "locker_5") in rels("Five lockers stand in a row, and a bench stands to the right of them.")
+
+
+def test_a_pile_is_one_thing_to_what_is_put_by_it():
+    parsed = parse_scene("Pigeons circle above a heap of tyres, and a cat sleeps on a pile of sacks.")
+    assert {o.formation for o in parsed.objects if o.name in ("tyre", "sack")} == {"stack"}
+    found = {(r.source, r.relation, r.target) for r in parsed.relations}
+    above = {r.target for r in parsed.relations if r.relation == "above"}
+    tyres = sorted(o.id for o in parsed.objects if o.name == "tyre")
+    sacks = [o.id for o in parsed.objects if o.name == "sack"]
+    assert above == {tyres[0]}  # the pile stands where its bottom stands
+    assert ("cat_1", "on", sacks[-1]) in found  # on top of the pile
+
+
 def test_enclosures_hold_contents_and_poles_are_parts():
     parsed = parse_scene("A greenhouse holds tomato plants. A windsock on a tall pole stands by the hangar.")
     assert [o.category for o in parsed.objects if o.category not in ("greenhouse", "warehouse")] == ["panel"]

@@ -30,6 +30,12 @@ def _figure(text: str, name: str):
         # riders sit on a vehicle or an animal unless the text has them stand on it
         ("A soldier on horseback waits by the tent.", "soldier", "sitting"),
         ("A van stops by the gate, and a boy stands on its bonnet.", "boy", None),
+        # the verbs of another clause or another subject pose nobody else
+        ("A customer waits at the counter, holding a hat, while a brass till sits on the counter.", "customer", None),
+        ("Three scouts march past the well, and a grey cat lies on the wall.", "scout", None),
+        ("A hound sleeps at the feet of an old shepherd.", "shepherd", None),
+        ("A lorry full of waving farmhands rolls past, and a boy stands on the gate.", "farmhand", "sitting"),
+        ("Under the oak tree sits an old shepherd.", "shepherd", "sitting"),
     ],
 )
 def test_posture_read_from_host_and_verbs(text, name, posture):

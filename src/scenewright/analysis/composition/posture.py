@@ -2,7 +2,7 @@
 
 The reader records no posture, so it is read here from two things the parse does hold: the
 host a person is put ``on`` (a seat or a cushion → sitting; a bed, a rug, a blanket → lying)
-and the verbs of the sentence that names them ("sits", "dozes", "is asleep", "lies"). A
+and the verbs of the clause that names them ("sits", "dozes", "is asleep", "lies"). A
 posed person keeps the standing size the catalogue gave their kind, folded to the pose's box
 (:func:`posed_size`), and the pose word joins their description, where the figure generator
 reads it (``procedural/shapes/creatures.py``), so the mesh and its box agree.
@@ -44,12 +44,22 @@ def posture_in(text: str) -> str | None:
     return None
 
 
-def _sentence_of(parsed: ParsedScene, obj: ParsedObject) -> str:
-    """The first sentence of the text that names the object (its name's last word)."""
+#: Where one clause of a sentence gives way to another with a subject of its own ("a customer
+#: waits at the counter, while a till sits on it": the till sits, not the customer).
+_CLAUSE_BREAK = re.compile(r"[.!?;]\s+|,?\s+\b(?:while|whilst|whereas|but)\b|,\s+(?:and|as)\b")
+#: A clause opening with a place puts its verb before its subject ("on the bench sits an old man").
+_PLACE_FIRST = re.compile(r"^\s*(?:on|in|at|by|beside|behind|under|near|inside|outside|against|next|across|between)\b")
+
+
+def _clause_of(parsed: ParsedScene, obj: ParsedObject) -> str:
+    """What the first clause naming the object (its name's last word) says of it: the words from
+    its name on, or the whole clause when that opens with a place and so puts the verb first.
+    A verb before the name is another's ("a dog sleeps at the feet of an old man")."""
     head = obj.name.lower().split()[-1] if obj.name.strip() else obj.category
-    for sentence in re.split(r"(?<=[.!?;])\s+", parsed.text):
-        if re.search(rf"\b{re.escape(head)}s?\b", sentence.lower()):
-            return sentence
+    for clause in _CLAUSE_BREAK.split(parsed.text.lower()):
+        found = re.search(rf"\b{re.escape(head)}s?\b", clause)
+        if found:
+            return clause if _PLACE_FIRST.match(clause) else clause[found.start() :]
     return ""
 
 
@@ -70,15 +80,15 @@ def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
         return "lying"
     if any(h in SITTING_HOSTS for h in hosts):
         return "sitting"
-    sentence = _sentence_of(parsed, obj).lower()
+    clause = _clause_of(parsed, obj)
     vocabulary = load_vocabulary()
     if any(vocabulary.carries(h, h, ("vehicles", "mounts")) for h in hosts):
         # riders sit ("a soldier on horseback", "children in the bus") unless they stand on it
-        return None if _mentions(sentence, vocabulary.postures["standing"]) else posture_in(sentence) or "sitting"
-    found = posture_in(sentence)
+        return None if _mentions(clause, vocabulary.postures["standing"]) else posture_in(clause) or "sitting"
+    found = posture_in(clause)
     if found:
         return found
-    if _mentions(sentence, ("asleep", "sleeps", "sleeping", "naps", "napping")):
+    if _mentions(clause, ("asleep", "sleeps", "sleeping", "naps", "napping")):
         return "lying"
     return None
 

@@ -67,6 +67,8 @@ _BETWEEN_SIDES = {
 }  # fmt: skip
 
 
+_SIDES = ("left of", "right of", "in front of", "behind")
+
 #: Relations that put a pair front to back, read as "in front of" when choosing between's axis.
 _FACING = {"opposite": "in front of", "face to": "in front of", "at seat": "in front of"}
 
@@ -135,9 +137,16 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
             continue
         if instance is not None:
             tgt = replace(tgt, ids=[tgt.ids[instance]])
+        elif reader.formations.get(t) == "stack":
+            # a pile is one thing to what is put by it: gulls above a pile of boxes, a cat on top of it
+            tgt = replace(tgt, ids=[tgt.ids[-1] if kind == "on" else tgt.ids[0]])
         elif kind in ("left of", "right of") and reader.formations.get(t) == "row" and len(src.ids) < len(tgt.ids):
             # "a change machine to the right of them" (a row): beside the row's end, not its first
             tgt = replace(tgt, ids=[tgt.ids[-1] if kind == "right of" else tgt.ids[0]])
+        elif kind in _SIDES and len(src.ids) == 1 and len(tgt.ids) > 1 and not paired:
+            # "a cottage behind the boats": behind all of them, not the first while the rest stand anywhere
+            out += [ParsedRelation(src.ids[0], kind, b) for b in tgt.ids]
+            continue
         pairs = _instance_pairs(src, tgt, paired)
         if kind == "opposite":
             for a, b in pairs:
