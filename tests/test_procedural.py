@@ -568,3 +568,20 @@ def test_rest_height_is_where_the_mesh_has_its_seat(category, style):
         heights += list(centre[up & middle, 2] / size[2])
     assert heights, "no upward surface near the middle"
     assert min(heights, key=lambda h: abs(h - entry.rest_height)) == pytest.approx(entry.rest_height, abs=0.04)
+
+
+def test_a_truck_s_trade_shapes_its_body():
+    """A fire engine is painted to the tail with a ladder on its roof, a pickup's bed is open (what
+    rides in the back shows), a plain lorry carries a box."""
+    def truck(name: str) -> Model:
+        model = Model((2.5, 8.0, 3.2), resolve_style("realistic"), np.random.default_rng(0), name=name)
+        SHAPES["truck"](model)
+        return model
+
+    fire, pickup, lorry = truck("fire engine truck"), truck("pickup truck"), truck("lorry truck")
+    assert "canvas_alt" not in fire.parts and "canvas_alt" not in pickup.parts and "canvas_alt" in lorry.parts
+    tail = [p for p in fire.parts["paint"] if p.vertices[:, 1].max() > 3.9]
+    assert tail and max(p.vertices[:, 2].max() for p in tail) > 0.8 * 3.2
+    assert max(p.vertices[:, 2].max() for p in fire.parts["metal"]) > 0.85 * 3.2  # the roof ladder
+    bed = [p for p in pickup.parts["paint"] if p.vertices[:, 1].min() > -1.0]
+    assert bed and max(p.vertices[:, 2].max() for p in bed) < 0.5 * 3.2

@@ -83,7 +83,31 @@ def truck(m: Model) -> None:
     m.box("paint", (-m.sx / 2 + 0.1 * m.sx * 0.3, -L, chassis), (m.sx / 2 - 0.03 * m.sx, -L + cab_len, 0.75 * m.sz))
     m.extrude("glass", [(-L + 0.01, 0.5 * m.sz), (-L + cab_len * 0.9, 0.5 * m.sz), (-L + cab_len * 0.9, 0.72 * m.sz),
                         (-L + 0.01, 0.72 * m.sz)], "x", -m.sx / 2 + 0.05 * m.sx, m.sx / 2 - 0.05 * m.sx)
-    m.box("canvas_alt", (-m.sx / 2 + 0.02 * m.sx, -L + cab_len + 0.04 * m.sy, chassis), (m.sx / 2 - 0.02 * m.sx, L, m.sz))
+    y0 = -L + cab_len + 0.04 * m.sy
+    if m.named("pickup", "pick-up", "ute"):  # an open bed with low sides: what rides in the back shows
+        m.box("paint", (-m.sx / 2 + 0.02 * m.sx, y0, chassis), (m.sx / 2 - 0.02 * m.sx, L, chassis + 0.05 * m.sz))
+        for x0 in (-0.48 * m.sx, 0.45 * m.sx):
+            m.box("paint", (x0, y0, chassis), (x0 + 0.03 * m.sx, L, 0.45 * m.sz))
+        m.box("paint", (-m.sx / 2 + 0.02 * m.sx, L - 0.03 * m.sy, chassis), (m.sx / 2 - 0.02 * m.sx, L, 0.45 * m.sz))
+    elif m.named("fire engine", "fire engines", "fire truck", "fire trucks", "fire appliance"):
+        # painted all over, roller shutters down the sides, a ladder on the roof
+        m.box("paint", (-m.sx / 2 + 0.02 * m.sx, y0, chassis), (m.sx / 2 - 0.02 * m.sx, L, 0.85 * m.sz))
+        for x in (-1, 1):
+            for k in range(3):
+                ya = y0 + (k + 0.1) * (L - y0) / 3
+                m.box("metal", (x * (m.sx / 2 - 0.02 * m.sx), ya, 0.35 * m.sz),
+                      (x * (m.sx / 2 - 0.01 * m.sx), ya + 0.8 * (L - y0) / 3, 0.78 * m.sz), rounded=0.0)  # fmt: skip
+        for x in (-0.25 * m.sx, 0.25 * m.sx):
+            m.box("metal", (x - 0.02 * m.sx, y0 - 0.15 * cab_len, 0.88 * m.sz), (x + 0.02 * m.sx, L, 0.91 * m.sz), rounded=0.0)
+        for k in range(int((L - y0) / 0.4) + 1):
+            y = y0 - 0.15 * cab_len + k * 0.4
+            if y < L:
+                m.box("metal", (-0.25 * m.sx, y, 0.885 * m.sz), (0.25 * m.sx, y + 0.04, 0.905 * m.sz), rounded=0.0)
+        for x in (-0.25 * m.sx, 0.25 * m.sx):
+            m.box("dark_metal", (x - 0.02 * m.sx, y0, 0.85 * m.sz), (x + 0.02 * m.sx, y0 + 0.04 * m.sy, 0.88 * m.sz), rounded=0.0)
+            m.box("dark_metal", (x - 0.02 * m.sx, L - 0.06 * m.sy, 0.85 * m.sz), (x + 0.02 * m.sx, L - 0.02 * m.sy, 0.88 * m.sz), rounded=0.0)
+    else:
+        m.box("canvas_alt", (-m.sx / 2 + 0.02 * m.sx, y0, chassis), (m.sx / 2 - 0.02 * m.sx, L, m.sz))
     if food:
         y0, y1 = -L + cab_len + 0.12 * m.sy, L - 0.1 * m.sy
         m.box("dark_plastic", (-m.sx / 2 + 0.01 * m.sx, y0, 0.5 * m.sz), (-m.sx / 2 + 0.02 * m.sx, y1, 0.8 * m.sz), rounded=0.0)
