@@ -137,3 +137,16 @@ def test_small_dog_breeds_are_animals():
 def test_a_part_word_that_is_the_verb_of_one_thing_is_no_part():
     # "hides" after a singular subject is its verb, not the hides of a crab
     assert "hermit crab" in {o.name for o in parse_scene("A hermit crab hides under a shell.").objects}
+
+
+def test_a_bare_plural_after_ones_verb_is_what_the_verb_acts_on():
+    """"A girl holds balloons": after a singular subject the -s word is its verb, so the bare
+    plural after it is a thing it holds, not a verb nor a kind of balloon ("two robots stand
+    guard" keeps its idiom)."""
+    parsed = parse_scene("A street performer juggles clubs beside the fountain.")
+    assert [o.name for o in parsed.objects].count("club") == 3
+    assert {r.target for r in parsed.relations if r.source.startswith("club")} == {"street_performer_1"}
+    assert "shears" in names("The gardener holds shears.")
+    found = parse_scene("A farmhand carries pails to the stable.")
+    assert not any(r.source.startswith("stable") for r in found.relations)  # where they go, not carried
+    assert names("Two robots stand guard.") == {"robot"}

@@ -261,13 +261,20 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             machine = match_phrase(tuple(kind))
             if machine is not None and load_catalogue()[machine].shape == "robot":
                 cat, entry = machine, None  # "a robot bartender" is a robot that tends the bar
-        verb_before = s > 0 and _is_verb(toks[s - 1].text) and not _opens_phrase(toks, s - 1)  # not "a news helicopter"
+        # "two robots stand guard": a bare word right after a verb is part of it (not "a news
+        # helicopter"), unless it is a plural the verb of the noun before acts on ("a girl holds
+        # balloons", "a clown juggles balls")
+        plural = e - s == 1 and singular(words[-1]) != words[-1]
+        verb_of_noun = k > 0 and raw[k - 1][1] == s - 1 and singular(toks[s - 2].text) == toks[s - 2].text and (
+            _match_at(toks, s - 1) is None and toks[s - 1].text not in _PART_NOUNS | {p + "s" for p in _PART_NOUNS}
+        )  # ("a simurgh with peacock feathers perches": a noun between, the plural after it its verb)
+        verb_before = s > 0 and _is_verb(toks[s - 1].text) and not _opens_phrase(toks, s - 1) and not (plural and verb_of_noun)
         # "a robot with six arms ladles stew": a plural names no kind of the next word, so a plural
         # right after one is a verb
         before = toks[s - 1] if s > 0 else None
         verb_before = verb_before or (
             before is not None and before.text[:1].isalpha() and before.text not in _STOP and not toks[s].joined
-            and singular(before.text) != before.text and e - s == 1 and singular(words[-1]) != words[-1]
+            and singular(before.text) != before.text and plural and not verb_of_noun
         )  # fmt: skip
         if entry is not None and (verb_before or (k > 0 and raw[k - 1][1] == s and not kind)):
             continue  # "two robots stand guard", "fox statues guard the path": a verb here
@@ -1127,7 +1134,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             # or what a thing is put by ("a horse waits beside the bunkhouse")
         out.append((head, head + 1, entry.category, entry))
         covered.add(head)
-    out += _bare_subjects(toks, covered) + _landforms(toks, covered) + _owners_of_parts(toks, covered)
+    out += _bare_subjects(toks, covered) + _bare_objects(toks, covered) + _landforms(toks, covered)
+    out += _owners_of_parts(toks, covered)
     out += _loose_parts(toks, covered) + _buildings(toks, covered)
     return out + _unknown_heads(toks, raw, covered) + _possessed(toks, covered)
 
@@ -1466,6 +1474,28 @@ def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
         entry = _guess(toks, head, toks[k:head])
         out.append((head, head + 1, entry.category, entry))
         covered.add(head)
+    return out
+
+
+def _bare_objects(toks: list[_Tok], covered: set[int]) -> list:
+    """A bare plural nobody listed right after the -s verb of a named one, ending the phrase:
+    what the verb acts on ("a street performer juggles clubs beside the fountain")."""
+    vocabulary = load_vocabulary()
+    out: list = []
+    for k in range(2, len(toks)):
+        word, verb, subject = toks[k].text, toks[k - 1].text, toks[k - 2].text
+        after = toks[k + 1].text if k + 1 < len(toks) else "."
+        if k in covered or k - 1 in covered or k - 2 not in covered or toks[k].quoted:
+            continue
+        if singular(word) == word or singular(subject) != subject or not (_is_verb(verb) and singular(verb) != verb):
+            continue
+        if _match_at(toks, k - 1) is not None or word.endswith("wards"):
+            continue  # "a simurgh with peacock feathers perches": a noun there, no verb; "drives towards"
+        if not (after in _STOP or not after[:1].isalpha()) or not vocabulary.is_thing_word(word) or _participle(word):
+            continue
+        entry = _guess(toks, k, toks[k - 1 : k])
+        out.append((k, k + 1, entry.category, entry))
+        covered.add(k)
     return out
 
 
@@ -1999,6 +2029,9 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         ):
             break  # "two volunteers unload crates", "a man and his son unload crates": the verb of
             # the subject before, no kind of crate
+        bare = singular(toks[m.end - 1].text) != toks[m.end - 1].text and not adjectives
+        if j == prev_end and j > 0 and bare and _is_verb(w) and singular(toks[j - 1].text) == toks[j - 1].text:
+            break  # "a girl holds balloons": the verb of the one before, no kind of balloon
         adjectives.insert(0, t.orig)
         j -= 1
     if count is None and j >= 1 and (toks[j - 1].text, toks[j].text) in _CROWDED:
