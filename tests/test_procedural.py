@@ -215,6 +215,9 @@ def test_colour_words_recolour_the_main_part(description, check):
 def test_colour_before_a_part_noun_goes_to_that_part():
     lamp = base_colours(build_model("table_lamp", (0.35, 0.35, 0.6), "realistic", 1, "a white lamp with a green shade"))
     assert lamp["shade"][1] > lamp["shade"][0] and min(lamp["ceramic"]) > 0.8
+    # a house's door takes its own colour, and whitewash is white, not the walls' default render
+    cottage = base_colours(build_model("house", (6.0, 5.0, 5.0), "realistic", 1, "a whitewashed cottage with a blue door"))
+    assert cottage["dark_wood"][2] > 2 * cottage["dark_wood"][0] and min(cottage["wall"]) > 0.7
 
 
 def test_vehicles_come_in_many_colours_unless_their_trade_or_the_text_fixes_one():

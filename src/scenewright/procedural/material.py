@@ -29,7 +29,8 @@ COLOURS: dict[str, tuple[float, float, float]] = {
     "beige": (0.87, 0.8, 0.66), "khaki": (0.74, 0.7, 0.5), "cream": (0.96, 0.93, 0.82),
     "ivory": (0.97, 0.95, 0.88), "white": (0.93, 0.93, 0.93), "black": (0.04, 0.04, 0.04),
     "grey": (0.5, 0.5, 0.5), "gray": (0.5, 0.5, 0.5), "charcoal": (0.2, 0.2, 0.22),
-    "silver": (0.78, 0.79, 0.8), "golden": (1.0, 0.77, 0.34),
+    "silver": (0.78, 0.79, 0.8), "golden": (1.0, 0.77, 0.34), "whitewashed": (0.92, 0.91, 0.88),
+    "limewashed": (0.92, 0.91, 0.88),
 }
 
 _MODIFIERS = {
@@ -94,6 +95,7 @@ PART_NOUNS: dict[str, tuple[str, ...]] = {
     "blanket": ("fabric",), "duvet": ("fabric",), "bedding": ("fabric",), "headboard": ("wood",),
     "wheels": ("rubber",), "tyres": ("rubber",), "tires": ("rubber",), "windows": ("glass",), "walls": ("wall",),
     "stripes": ("canvas",), "sail": ("canvas_alt",), "cabin": ("wall",), "top": ("marble",), "countertop": ("marble",),
+    "door": ("dark_wood",), "front door": ("dark_wood",),
 }
 _PART_RE = re.compile(
     r"\s+(?:(%s)\s+)?(%s)s?\b" % (_MATERIAL_WORDS, "|".join(sorted(PART_NOUNS, key=len, reverse=True)))
