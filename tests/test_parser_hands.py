@@ -336,3 +336,13 @@ def test_the_owner_of_a_body_part_acted_on_is_a_thing_and_the_tool_is_the_doers(
     found = rels("A groom scrubs the pony's flank with a sponge.")
     assert ("sponge_1", "on", "groom_1") in found
     assert ("groom_1", "near", "horse_1") in found
+
+
+def test_every_thing_of_a_with_list_is_in_hand():
+    """"A knight with a sword and a shield": the list goes on after "and" or a comma with a
+    determiner; a phrase of place still ends it ("waves a flag from a gantry")."""
+    assert {("sword_1", "on", "knight_1"), ("shield_1", "on", "knight_1")} <= rels(
+        "A knight with a sword and a shield stands by the gate.")
+    found = rels("A gardener strolls past with a rake, a hoe and a watering can.")
+    assert {s for s, r, t in found if r == "on" and t == "gardener_1"} >= {"rake_1", "hoe_1"}
+    assert ("guard_1", "on", "gantry_1") in rels("A guard waves a flag from a gantry.")

@@ -882,7 +882,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                         c.wsub_before, closed = list(c.wsub), True
                     # ("one holding a lamp, the other a rope": the second holder's thing, its verb left out)
                     other = [w for w in gap if w != ","][:2] in (["the", "other"], ["another", "a"], ["another", "an"])
-                    if c.hand and c.wsub and not other and any(w in _STOP and w not in ("and", "or") for w in gap):
+                    # (a list goes on: "with a sword and a shield", "a sword, a shield and a helmet")
+                    listed = gap in (["and", *gap[1:2]], [",", *gap[1:2]]) and all(w in _DETERMINERS for w in gap[1:])
+                    if c.hand and c.wsub and not other and not listed and any(
+                        w in _STOP and w not in ("and", "or") for w in gap
+                    ):
                         # "waves a flag from a gantry": what is in hand is the noun right after
                         self._close_with(c)
                         c.head, c.wsub, c.hand, c.hold = None, [], False, False
