@@ -150,3 +150,11 @@ def test_a_bare_plural_after_ones_verb_is_what_the_verb_acts_on():
     found = parse_scene("A farmhand carries pails to the stable.")
     assert not any(r.source.startswith("stable") for r in found.relations)  # where they go, not carried
     assert names("Two robots stand guard.") == {"robot"}
+
+
+def test_a_joint_subject_of_two_animals_keeps_the_second():
+    """"A dog and a cat play on the rug": "cat" before a verb of both is no kind of a "cat play"
+    (while "a dog bed" stays a bed)."""
+    assert names("A dog and a cat play on the rug.") == {"dog", "cat", "rug"}
+    assert names("A goat and a horse graze.") == {"goat", "horse"}
+    assert "dog bed" in names("A basket and a dog bed.")

@@ -339,7 +339,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         qualifies = follow[:1].isalpha() and follow not in _STOP and (
             not _is_verb(follow) or singular(follow) in vocabulary.not_things and opener not in _SINGULAR_DETERMINERS
         )  # ("of tiny stone tiles": a plural part, no verb; "a brass lamp glows" has one)
-        if len(words) == 1 and words[0] in _MODIFIER_NOUNS and qualifies and not follow.endswith(("ed", "ing")):
+        if len(words) == 1 and words[0] in _MODIFIER_NOUNS and qualifies and not follow.endswith(("ed", "ing")) and (
+            not _joint_verb(toks, e, cat)
+        ):  # ("a dog and a cat play": the verb of both)
             continue  # "a stone path", "a glass roof": an adjective here
         if s > 0 and toks[s - 1].text in _PROJECTED and cat not in _SHOWS_PROJECTION:
             cat, entry = "hologram", None  # "holographic koi" are light, not fish: place and size them as one
@@ -1077,7 +1079,7 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
                 break
             # (a plural verb form cannot follow "a": "a washing line hangs" has no verb "line")
             plural_form = x in _FINITE and not x.endswith("s") and w in ("a", "an", "another")
-            if j > i + 1 and not plural and (_is_verb(x) and not plural_form or _plural_verb(toks, j)):
+            if j > i + 1 and not plural and (_is_verb(x) and not plural_form or _plural_verb(toks, j) or _joint_verb_at(toks, j)):
                 break  # "a ladder stands", "two mechanics on a scissor lift work on its joint"
             if head is not None and x in _PLACE_ADVERBS:
                 break  # "a lantern hangs from a beam overhead": where, not a kind of beam
@@ -1607,6 +1609,8 @@ def _joint_verb(toks: list[_Tok], k: int, category: str) -> bool:
     vocabulary = load_vocabulary()
     verbs = vocabulary.person_verbs | vocabulary.animal_verbs | _HANG_VERBS
     takes = after in _STOP or (singular(after) != after and singular(after) not in _FINITE and after not in verbs)
+    # (or a verb of the living that ends the clause, "a goat and a horse graze."; not "a dog bed.")
+    takes = takes or not after[:1].isalpha() and any(word + ending in verbs for ending in ("s", "es"))
     if not word[:1].isalpha() or word in _STOP or singular(word) != word or not takes:
         return False
     return category in _LIVING or load_catalogue()[category].shape in _LIVING
