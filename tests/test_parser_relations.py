@@ -231,6 +231,12 @@ def test_one_thing_beside_a_plural_is_beside_every_member():
     assert ("bench_1", "right of", "locker_5") in rels("Five lockers stand in a row, and a bench stands to the right of them.")
 
 
+def test_between_them_in_a_with_part_is_the_head_and_what_it_faces():
+    found = rels("An armchair faces the stove, with a footstool between them.")
+    assert {("ottoman_1", "near", "armchair_1"), ("ottoman_1", "near", "stove_1")} <= found
+    assert ("ottoman_1", "behind", "armchair_1") in found  # the pair stands front to back
+
+
 def test_a_pile_is_one_thing_to_what_is_put_by_it():
     parsed = parse_scene("Pigeons circle above a heap of tyres, and a cat sleeps on a pile of sacks.")
     assert {o.formation for o in parsed.objects if o.name in ("tyre", "sack")} == {"stack"}

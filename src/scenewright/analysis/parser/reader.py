@@ -1430,6 +1430,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             targets = single[:1] or targets
         elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
             targets = c.wsub_before[-1:]  # "... and a computer beside it": beside the till
+        elif kind == "between" and target == "them" and targets == c.head and len(targets) == 1:
+            # "a sofa faces a TV, with a coffee table between them": the head and what it faces
+            recent = [*c.last_target, *reversed(c.groups), *list(reversed(self.history))[:2]]
+            other = [g for g in recent if g not in srcs and g not in targets]
+            pair = [targets[0], *other[:1]]
+            targets = pair if len(pair) == 2 and all(self.groups[g].count == 1 for g in pair) else targets
         candidates = [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)]
         targets = self._part_owner(part, targets, candidates, srcs)
         if c.head is None and target in ("it", "them") and part is None and kind in ("in", "on", "from"):
