@@ -588,3 +588,19 @@ def test_a_truck_s_trade_shapes_its_body():
     assert max(p.vertices[:, 2].max() for p in fire.parts["metal"]) > 0.85 * 3.2  # the roof ladder
     bed = [p for p in pickup.parts["paint"] if p.vertices[:, 1].min() > -1.0]
     assert bed and max(p.vertices[:, 2].max() for p in bed) < 0.5 * 3.2
+
+
+def test_a_castle_and_a_church_are_no_office_blocks():
+    """A castle has battlements and corner towers with pointed roofs over its walls, a church a
+    spire over its nave; neither has an office block's glass door."""
+    def build(name: str, size) -> Model:
+        model = Model(size, resolve_style("realistic"), np.random.default_rng(0), name=f"{name} building")
+        SHAPES["building"](model)
+        return model
+
+    castle = build("castle", (30.0, 26.0, 18.0))
+    assert "glass" not in castle.parts and len(castle.parts["roof"]) >= 5
+    assert max(p.vertices[:, 2].max() for p in castle.parts["roof"]) > 0.9 * 18.0
+    church = build("church", (12.0, 24.0, 18.0))
+    spire = max(church.parts["roof"], key=lambda p: p.vertices[:, 2].max())
+    assert spire.vertices[:, 2].max() > 0.95 * 18.0 and spire.vertices[:, 1].mean() < 0  # at the front

@@ -34,6 +34,12 @@ def _windows(m: Model, x0, x1, z0, z1, y: float, facing: int, floors: int, along
 
 
 def building(m: Model) -> None:
+    if m.named("castle", "fort", "fortress", "citadel", "keep", "stronghold"):
+        _castle(m)
+        return
+    if m.named("church", "chapel", "cathedral", "kirk", "basilica"):
+        _church(m)
+        return
     m.main = "wall"
     parapet = min(1.0, 0.05 * m.sz)
     top = m.sz - parapet
@@ -52,6 +58,53 @@ def building(m: Model) -> None:
     m.box("glass", (-door / 2, -m.sy / 2 + 0.02, 0), (door / 2, -m.sy / 2 + inset, min(2.5, 0.8 * fh)), rounded=0.0)
     # The awning reaches into the wall, so its back face is not in the plane of the sills'.
     m.box("accent", (-m.sx / 2 + 0.3, -m.sy / 2, min(2.7, 0.85 * fh)), (m.sx / 2 - 0.3, -m.sy / 2 + 1.5 * inset, min(3.0, 0.95 * fh)))
+
+
+def _castle(m: Model) -> None:
+    """Curtain walls with battlements round a courtyard, a round tower with a pointed roof at each
+    corner, a tall keep behind and a gate in the front wall: a castle seen from anywhere."""
+    m.main = "stone"
+    r = min(0.13 * min(m.sx, m.sy), 0.22 * m.sz)
+    wall_h, t = 0.45 * m.sz, max(0.4, 0.03 * min(m.sx, m.sy))
+    x0, x1, y0, y1 = -m.sx / 2 + r, m.sx / 2 - r, -m.sy / 2 + r, m.sy / 2 - r
+    for lo, hi in (((x0, y0 - t / 2), (x1, y0 + t / 2)), ((x0, y1 - t / 2), (x1, y1 + t / 2)),
+                   ((x0 - t / 2, y0), (x0 + t / 2, y1)), ((x1 - t / 2, y0), (x1 + t / 2, y1))):
+        m.box("stone", (*lo, 0), (*hi, wall_h), rounded=0.0)
+    merlon = max(0.5, t)  # battlements along the front and back walls
+    for y in (y0, y1):
+        n = max(2, int((x1 - x0) / (2 * merlon)))
+        for k in range(n):
+            x = x0 + (k + 0.5) * (x1 - x0) / n
+            m.box("stone", (x - merlon / 2, y - t / 2, wall_h), (x + merlon / 2, y + t / 2, wall_h + merlon), rounded=0.0)
+    tower_h = 0.7 * m.sz
+    for x, y in ((x0, y0), (x1, y0), (x0, y1), (x1, y1)):
+        m.post("stone", x, y, 0, tower_h, r, fraction=1.0)
+        m.cylinder("roof", (x, y, tower_h), (x, y, tower_h + 0.3 * m.sz - 0.02), 1.15 * r, 0.02)
+    kw, kd = 0.3 * m.sx, 0.25 * m.sy
+    m.box("stone", (-kw / 2, y1 - t - kd, 0), (kw / 2, y1 - t, 0.8 * m.sz), rounded=0.0)
+    m.extrude("roof", [(y1 - t - kd, 0.8 * m.sz), (y1 - t, 0.8 * m.sz), (y1 - t - kd / 2, m.sz)], "x", -kw / 2, kw / 2)
+    gate_w = min(3.0, 0.2 * m.sx)
+    m.box("dark_wood", (-gate_w / 2, y0 - t / 2 - 0.05, 0), (gate_w / 2, y0 - t / 2, 0.7 * wall_h), rounded=0.0)
+
+
+def _church(m: Model) -> None:
+    """A gabled nave with a bell tower and spire at its front, a door under the tower."""
+    m.main = "stone"
+    tw = min(0.3 * m.sx, 0.25 * m.sy)
+    eave = 0.4 * m.sz
+    y_nave = -m.sy / 2 + tw
+    m.box("stone", (-m.sx / 2, y_nave, 0), (m.sx / 2, m.sy / 2, eave), rounded=0.0)
+    m.extrude("roof", [(y_nave, eave), (m.sy / 2, eave), (m.sy / 2, eave + 0.02), ((y_nave + m.sy / 2) / 2, 0.65 * m.sz),
+                       (y_nave, eave + 0.02)], "x", -m.sx / 2 - 0.1, m.sx / 2 + 0.1)  # fmt: skip
+    tower_h = 0.7 * m.sz
+    m.box("stone", (-tw / 2, -m.sy / 2, 0), (tw / 2, y_nave + 0.05, tower_h), rounded=0.0)
+    m.cylinder("roof", (0, -m.sy / 2 + tw / 2, tower_h), (0, -m.sy / 2 + tw / 2, m.sz), 0.72 * tw, 0.02)
+    door = min(1.6, 0.6 * tw)
+    m.box("dark_wood", (-door / 2, -m.sy / 2 - 0.05, 0), (door / 2, -m.sy / 2, min(3.0, 0.3 * tower_h)), rounded=0.0)
+    for k in range(3):  # tall windows down each side of the nave
+        y = y_nave + (k + 0.5) * (m.sy / 2 - y_nave) / 3
+        for x in (-m.sx / 2 - 0.03, m.sx / 2):
+            m.box("glass", (x, y - 0.4, 0.3 * eave), (x + 0.03, y + 0.4, 0.85 * eave), rounded=0.0)
 
 
 #: Words of houses built of timber (a log cabin, a hut, a wooden shed): their walls are wood, not render.
