@@ -274,3 +274,13 @@ def test_where_clause_after_a_platform_puts_the_living_on_it():
     got = rels("Three punts are moored by a long wooden jetty, where a girl throws crumbs to the gulls.")
     assert ("girl_1", "on", "pier_1") in got
     assert ("cat_1", "near", "stove_1") in rels("A stove stands in the corner, where a cat sleeps.")
+
+
+def test_living_things_with_a_container_are_in_it():
+    """"A pond with three ducks", "a cage with two parrots": the animals are in what they came
+    with (a person's dog keeps by the person)."""
+    found = {(r.source, r.relation, r.target) for r in parse_scene("A duck pond with three geese lies by the mill.").relations}
+    assert {(f"goose_{i}", "on", "pond_1") for i in (1, 2, 3)} <= found
+    found = {(r.source, r.relation, r.target) for r in parse_scene("A cage with two canaries hangs by the window.").relations}
+    assert {("canary_1", "on", "cage_1"), ("canary_2", "on", "cage_1")} <= found
+    assert ("dog_1", "near", "shepherd_1") in {(r.source, r.relation, r.target) for r in parse_scene("A shepherd with a dog.").relations}

@@ -1048,6 +1048,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     self._relate("near", [follower], anchor)
                     c.produced = True
                     continue
+                alive = self._living(g) or self.groups[g].category == "fish"
+                kept = alive and not self._living(h) and self._carrier(h, ("containers",))
+                if kept and not placed:  # "a pond with koi", "a cage with two parrots": in it
+                    self._relate("on", [g], h)
+                    c.produced = True
+                    continue
                 if c.hold or held or (rests == "surface" and self.catalogue[self.groups[h].category].support):
                     self._relate("on", [g], h, instance=1 if g in c.others and self.groups[h].count > 1 else None)
                     c.produced = True
