@@ -158,3 +158,9 @@ def test_a_joint_subject_of_two_animals_keeps_the_second():
     assert names("A dog and a cat play on the rug.") == {"dog", "cat", "rug"}
     assert names("A goat and a horse graze.") == {"goat", "horse"}
     assert "dog bed" in names("A basket and a dog bed.")
+
+
+def test_a_cell_one_is_in_is_the_setting():
+    parsed = parse_scene("A prison cell with a narrow bunk in one corner and a bucket beside it.")
+    assert parsed.indoor and "cell" not in " ".join(o.name for o in parsed.objects)
+    assert ("bucket_1", "side of") in {(r.source, r.relation) for r in parsed.relations if r.target.startswith("bed")}

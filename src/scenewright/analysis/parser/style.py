@@ -105,7 +105,7 @@ def detect_ground(text: str, indoor: bool) -> str:
 #: Places whose setting is a building: a scene "in a hangar" is an interior.
 _INDOOR_PLACES = {"hangar", "warehouse", "factory", "garage", "workshop", "library", "museum", "tavern", "inn", "pub",
                   "attic", "basement", "cellar", "loft", "lobby", "hallway", "corridor", "chamber", "church",
-                  "cathedral", "chapel", "temple", "dungeon", "crypt", "bunker", "vault", "gym", "spa", "bakery",
+                  "cathedral", "chapel", "temple", "dungeon", "cell", "crypt", "bunker", "vault", "gym", "spa", "bakery",
                   "salon", "theatre", "theater", "cinema", "ballroom", "lounge", "pantry", "diner", "restaurant",
                   "bar", "arcade", "mall", "station", "hospital", "clinic", "nursery", "school", "kitchen", "bedroom",
                   "barn", "house", "cottage", "cabin", "hut", "shed", "shack", "stable", "greenhouse", "farmhouse",
