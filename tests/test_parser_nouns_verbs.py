@@ -161,6 +161,6 @@ def test_a_joint_subject_of_two_animals_keeps_the_second():
 
 
 def test_a_cell_one_is_in_is_the_setting():
-    parsed = parse_scene("A prison cell with a narrow bunk in one corner and a bucket beside it.")
+    parsed = parse_scene("A prison cell with a straw bed in one corner, a bucket beside it, and a stool.")
     assert parsed.indoor and "cell" not in " ".join(o.name for o in parsed.objects)
     assert ("bucket_1", "side of") in {(r.source, r.relation) for r in parsed.relations if r.target.startswith("bed")}
