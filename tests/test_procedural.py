@@ -189,6 +189,29 @@ def test_a_named_look_shifts_the_ground_texture_too():
     assert np.abs(colour[..., 1] - colour[..., 0]).mean() > 5
 
 
+def test_a_print_look_draws_every_role_in_its_few_inks():
+    poster = resolve_style("a Bauhaus poster")  # a style name: its look word names the look
+    assert poster.name == "poster" and poster.inks
+    colours = {role: poster.surface(role).color for role in ROLES}
+    assert all(c in poster.inks for c in colours.values())
+    assert colours["skin"] != colours["clothes"] and colours["wall"] == max(poster.inks, key=sum)  # paper, not skin
+    tile = ground_texture("grass", "comic", seed=3).astype(float) + 1
+    ratios = tile / tile.sum(axis=2, keepdims=True)
+    assert np.ptp(ratios.reshape(-1, 3), axis=0).max() < 0.02  # one flat ink, only its lightness varies
+
+
+def test_a_one_ink_look_draws_every_colour_between_its_ink_and_its_paper():
+    engraving = resolve_style("copperplate engraving")
+    dark, light = (np.array(c) for c in engraving.duotone)
+    for role in ("wood", "fabric", "leaf", "brick", "paint"):
+        colour = np.array(engraving.surface(role).color)
+        t = (colour - dark) / (light - dark)
+        assert np.allclose(t, t[0], atol=1e-6) and 0 <= t[0] <= 1, role
+    assert sum(engraving.surface("dark_wood").color) < sum(engraving.surface("paper").color)
+    tile = ground_texture("wood_floor", "blueprint", seed=2).astype(int)
+    assert (tile[..., 2] > tile[..., 0]).all()  # blue, down to the ground
+
+
 def test_unknown_style_falls_back_to_realistic_with_a_note(caplog):
     resolve_style.cache_clear()
     with caplog.at_level(logging.WARNING):

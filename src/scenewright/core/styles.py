@@ -16,7 +16,7 @@ from scenewright.settings import STYLES
 
 #: What a look may change of its base: palette and shading only, so every look draws the same
 #: geometry as a base style (the shared-face test covers the bases).
-PALETTE = ("saturation", "value", "pastel", "roughness", "metallic_scale", "flat")
+PALETTE = ("saturation", "value", "pastel", "roughness", "metallic_scale", "flat", "duotone", "inks")
 
 
 @dataclass(frozen=True)
@@ -60,8 +60,24 @@ def load_looks() -> dict[str, Look]:
     return looks
 
 
+@lru_cache(maxsize=1)
+def media_heads() -> frozenset[str]:
+    """Nouns that name a picture or a made image ("a copperplate *engraving* of a port", "woven as a
+    *tapestry*"): a phrase ending in one, where a text says what it is, names the scene's look."""
+    raw = json.loads(resources.files("scenewright.data").joinpath("styles.json").read_text(encoding="utf-8"))
+    return frozenset(normalise(w) for w in raw["media"])
+
+
 def find_look(name: str) -> Look | None:
     """The look a free-text style name means: a look's name or any word for it ("Ukiyo-e",
-    "cartoon-style", "low poly"), else None."""
+    "cartoon-style", "low poly"), else the first look a word of it names ("an Art Deco travel
+    poster" is art deco, "children's crayon drawing" crayon: a style's name is all style), else None."""
     key = normalise(name).removesuffix(" style")
-    return next((look for look in load_looks().values() if key in look.words or key in look.styled), None)
+    looks = load_looks().values()
+    exact = next((look for look in looks if key in look.words or key in look.styled), None)
+    if exact is not None:
+        return exact
+    padded = f" {key} "
+    named = [(padded.find(f" {w} "), -len(w), look.name) for look in looks for w in (*look.words, *look.styled)
+             if f" {w} " in padded]
+    return load_looks()[min(named)[2]] if named else None
