@@ -290,6 +290,8 @@ def test_style(text, style):
         ("A lighthouse done in cross-stitch, gulls above it.", "textile"),
         ("In the style of a comic strip: a detective chases a thief over a roof.", "comic"),
         ("A bakery drawn in soft pastels, a baker at the oven.", "pastel"),
+        ("A market square in the style of old engravings.", "engraving"),  # a plural medium
+        ("A farm drawn in bright crayons, three pigs by the gate.", "crayon"),
         ("An orchard, cut from layered paper, with a ladder against a tree.", "realistic"),  # "cut from": no frame
         ("A pier painted like a pointillist canvas.", "impressionist"),
         ("A fishing village, as a Japanese woodblock print.", "ukiyo-e"),

@@ -37,9 +37,14 @@ _PHRASE_ENDS = {"of", "with", "and", "or", "in", "on", "at", "by", "from", "near
 _MEDIUM_WORDS = 6
 
 
-def _medium_phrases(text: str) -> list[str]:
-    """Phrases that name what the scene is a picture of, normalised (:func:`_media`)."""
-    return [" ".join(words) for words, _ in _media(text)]
+def _medium_phrases(text: str) -> list[tuple[str, str]]:
+    """Phrases that name what the scene is a picture of, normalised (:func:`_media`): each as written
+    and with its plurals made singular ("in the style of old engravings", "drawn in crayons")."""
+    phrases = []
+    for words, _ in _media(text):
+        single = [w[:-1] if len(w) > 3 and w.endswith("s") and not w.endswith("ss") else w for w in words]
+        phrases.append((" ".join(words), " ".join(single)))
+    return phrases
 
 
 def _media(text: str) -> list[tuple[list[str], tuple[int, int]]]:
@@ -91,7 +96,7 @@ def detect_style(text: str, default: str = DEFAULT_STYLE) -> str:
     that also describe things ("gothic", "poster", "mosaic") name the look only before "style" or in
     the phrase that says what the picture is (:func:`_medium_phrases`)."""
     low = f" {normalise(text)} "
-    media = [(low.find(f" {p} "), f" {p} ") for p in _medium_phrases(text)]
+    media = [(low.find(f" {p} "), f" {form} ") for p, single in _medium_phrases(text) for form in {p, single}]
     best: tuple[int, int, int, str] | None = None
     for look in load_looks().values():
         for w in (*look.words, *look.styled):
