@@ -18,6 +18,7 @@ from hypothesis import strategies as st
 
 from scenewright.backends import MeshRequest, create_backend
 from scenewright.core.catalogue import load_catalogue
+from scenewright.core.styles import find_look
 from scenewright.errors import InputError
 from scenewright.geometry import GLTF_TO_SCENE
 from scenewright.procedural import SHAPES
@@ -210,6 +211,8 @@ def test_a_one_ink_look_draws_every_colour_between_its_ink_and_its_paper():
     assert sum(engraving.surface("dark_wood").color) < sum(engraving.surface("paper").color)
     tile = ground_texture("wood_floor", "blueprint", seed=2).astype(int)
     assert (tile[..., 2] > tile[..., 0]).all()  # blue, down to the ground
+    # paper is lit flat and bright, not under a blue sky; a look that says nothing lights as its base
+    assert (find_look("engraving").lit, find_look("voxel").lit, find_look("film noir").lit) == ("cartoon", "low-poly", "realistic")
 
 
 def test_unknown_style_falls_back_to_realistic_with_a_note(caplog):

@@ -32,6 +32,9 @@ class Look:
     palette: dict = field(default_factory=dict)
     #: Role → (r, g, b, metallic, roughness).
     overrides: dict = field(default_factory=dict)
+    #: The base style whose lights a render uses (its ``like`` unless the look says: an engraving is
+    #: drawn like a realistic scene but lit flat, like paper).
+    lit: str = ""
 
 
 def normalise(words: str) -> str:
@@ -46,14 +49,15 @@ def load_looks() -> dict[str, Look]:
     looks = {}
     for name, entry in raw["looks"].items():
         like = entry.get("like", name)
-        unknown = set(entry) - {"words", "styled", "like", "overrides", *PALETTE}
-        if like not in STYLES or unknown:
-            raise ValueError(f"styles.json: look {name!r} must be drawn like one of {', '.join(STYLES)} "
+        lit = entry.get("lit", like)
+        unknown = set(entry) - {"words", "styled", "like", "lit", "overrides", *PALETTE}
+        if like not in STYLES or lit not in STYLES or unknown:
+            raise ValueError(f"styles.json: look {name!r} must be drawn and lit like one of {', '.join(STYLES)} "
                              f"and change only {', '.join(PALETTE)} and overrides (got {sorted(unknown) or like!r})")
         styled = tuple(normalise(w) for w in entry.get("styled", ()))
         words = tuple(normalise(w) for w in (name, *entry["words"]) if normalise(w) not in styled)
         looks[name] = Look(name, words, styled, like,
-                           {k: entry[k] for k in PALETTE if k in entry}, entry.get("overrides", {}))
+                           {k: entry[k] for k in PALETTE if k in entry}, entry.get("overrides", {}), lit)
     missing = set(STYLES) - set(looks)
     if missing:
         raise ValueError(f"styles.json: the base styles {sorted(missing)} have no entry")

@@ -145,7 +145,7 @@ def _hsv(color, saturation: float = 1.0, value: float = 1.0, toward_white: float
 
 
 #: The power a duotone lifts lightness by before it is drawn between ink and paper.
-INK_LIFT = 0.5
+INK_LIFT = 0.75
 
 
 def _ink(color, duotone):
