@@ -295,6 +295,12 @@ def test_style(text, style):
         ("An orchard, cut from layered paper, with a ladder against a tree.", "realistic"),  # "cut from": no frame
         ("A pier painted like a pointillist canvas.", "impressionist"),
         ("A fishing village, as a Japanese woodblock print.", "ukiyo-e"),
+        ("A black-and-white photograph of a railway yard with two engines.", "film noir"),
+        ("A marble frieze of a chariot race, four horses to each chariot.", "relief"),
+        ("A harbour in the style of Monet, three yachts at anchor.", "impressionist"),
+        ("A shadow puppet play of a dragon fighting a knight.", "paper cut"),
+        ("A sculpture of a horse stands in the square.", "realistic"),
+        ("An origami crane sits on a desk beside a lamp.", "realistic"),
         ("A forge woven into a tapestry: three smiths at anvils.", "textile"),
         # the first named look wins; a picture named as a thing of the scene is no look
         ("A pop art kitchen with a toaster and a kettle.", "comic"),
