@@ -333,6 +333,7 @@ def test_style_of_a_picture_from_its_medium(text, style):
         ("A village croquet game on a Sunday.", False, "grass"),  # a game played on grass outweighs the village
         ("A vineyard rendered as a mosaic of small glass tiles.", False, "grass"),  # the picture's tiles: no floor
         ("A blue-and-white tile panel of a rose garden, a fountain in it.", False, "grass"),
+        ("A farmyard drawn in crayon on a snowy morning.", False, "snow"),  # the scene's words after the medium
     ],
 )
 def test_ground(text, indoor, kind):

@@ -54,12 +54,19 @@ def _media(text: str) -> list[tuple[list[str], tuple[int, int]]]:
     needle-felted miniature: ..."; ``media`` in ``data/styles.json``) and its clause places nothing
     ("A painting of a ship hangs above the fireplace" is a thing of the scene)."""
     low = text.lower()
-    found = [(_noun_phrase(m.group(1)), m.span(1)) for m in _MADE_AS.finditer(low)]
+    found = [(_noun_phrase(m.group(1)), (m.start(1), m.start(1) + _medium_end(m.group(1)))) for m in _MADE_AS.finditer(low)]
     clause = re.split(r"[.,:;!?()]|\s[-–—]\s", low, maxsplit=1)[0]
     opening = _noun_phrase(re.sub(r"^\W*(?:(?:an?|the)\s+)?", "", clause))
     if opening and (opening[-1] in media_heads() or _names_a_look(opening)) and not _PLACED.search(clause):
         found.append((opening, (0, len(clause.split(" of ")[0]))))
     return [(w, span) for w, span in found if w and len(w) <= _MEDIUM_WORDS and w[-1] not in _COLOUR_NOUNS]
+
+
+def _medium_end(words: str) -> int:
+    """Where the medium's own words end: its "of ..." is what it is made of ("a floor mosaic of tiny stone
+    tiles"), any other phrase end goes back to the scene ("done in cross-stitch, with a tiled floor")."""
+    ends = re.search(r"\b(?:" + "|".join(sorted(_PHRASE_ENDS - {"of"})) + r")\b", words)
+    return ends.start() if ends else len(words)
 
 
 def without_media(text: str) -> str:
