@@ -54,7 +54,7 @@ def _media(text: str) -> list[tuple[list[str], tuple[int, int]]]:
     needle-felted miniature: ..."; ``media`` in ``data/styles.json``) and its clause places nothing
     ("A painting of a ship hangs above the fireplace" is a thing of the scene)."""
     low = text.lower()
-    found = [(_noun_phrase(m.group(1)), (m.start(1), m.start(1) + _medium_end(m.group(1)))) for m in _MADE_AS.finditer(low)]
+    found = [(_noun_phrase(m[1]), (m.start(1), m.start(1) + _medium_end(m[1]))) for m in _MADE_AS.finditer(low)]
     clause = re.split(r"[.,:;!?()]|\s[-–—]\s", low, maxsplit=1)[0]
     opening = _noun_phrase(re.sub(r"^\W*(?:(?:an?|the)\s+)?", "", clause))
     if opening and (opening[-1] in media_heads() or _names_a_look(opening)) and not _PLACED.search(clause):
@@ -65,7 +65,7 @@ def _media(text: str) -> list[tuple[list[str], tuple[int, int]]]:
 def _medium_end(words: str) -> int:
     """Where the medium's own words end: its "of ..." is what it is made of ("a floor mosaic of tiny stone
     tiles"), any other phrase end goes back to the scene ("done in cross-stitch, with a tiled floor")."""
-    ends = re.search(r"\b(?:" + "|".join(sorted(_PHRASE_ENDS - {"of"})) + r")\b", words)
+    ends = re.search(r"(?<![\w-])(?:" + "|".join(sorted(_PHRASE_ENDS - {"of"})) + r")(?![\w-])", words)
     return ends.start() if ends else len(words)
 
 
