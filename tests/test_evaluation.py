@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from PIL import Image
 
-from scenewright.bench.analysis import score_objects
+from scenewright.bench.analysis import same_look, score_objects
 from scenewright.errors import BackendError, InputError, MissingExtra
 from scenewright.evaluation import ABLATED, FULL, evaluate_scene
 from scenewright.evaluation.ablation import initial_objects, without_solver
@@ -555,3 +555,11 @@ def test_a_relation_and_its_inverse_score_as_the_same_fact_but_other_relations_k
     assert (turned["relations_correct"], turned["relations_predicted"]) == (4, 5)
     behind = score_objects(prompt, objects, [("s", "behind", "c")])  # an inverse of another side is no match
     assert behind["relations_recalled"] == 0 and behind["wrong_relations"] == ["shed | behind | cart"]
+
+
+def test_a_style_annotation_counts_as_the_look_it_names():
+    # annotations name a style as a writer would; the reader names the look that draws it
+    assert same_look("engraving", "copperplate engraving") and same_look("art deco", "Art Deco travel poster")
+    assert same_look("gothic", "gothic") and same_look("comic", "pop art comic")
+    assert not same_look("realistic", "copperplate engraving") and not same_look("poster", "Art Deco travel poster")
+    assert not same_look("realistic", "baroque glitch") and same_look("baroque glitch", "baroque glitch")

@@ -272,6 +272,54 @@ def test_style(text, style):
 
 
 @pytest.mark.parametrize(
+    "text, style",
+    [
+        # a picture noun opening the text, with the medium's words before it
+        ("An etching of a windmill beside a canal, two barges moored below it.", "engraving"),
+        ("A kid's drawing of a zoo: a giraffe, two zebras and a keeper.", "crayon"),
+        ("A three-colour screenprint of a bicycle repair shop.", "poster"),
+        ("A pencil sketch of a garage with two vans.", "sketch"),
+        ("A charcoal sketch of a stable, where a horse stands in its stall.", "sketch"),  # the scene's verb
+        ("A mezzotint of a storm at sea, one brig under sail.", "engraving"),  # the look's own word as the noun
+        ("A graphic novel panel showing a lab with two robots.", "comic"),
+        ("A quilted patchwork panel of an orchard with four apple trees.", "textile"),
+        ("An acrylic painting of a fishing village at noon.", "painting"),
+        # a verb of making, "in the style of"
+        ("A bus depot shown as a blueprint, with three buses.", "blueprint"),
+        ("A fox den rendered like a stained-glass window.", "mosaic"),
+        ("A lighthouse done in cross-stitch, gulls above it.", "textile"),
+        ("In the style of a comic strip: a detective chases a thief over a roof.", "comic"),
+        ("A bakery drawn in soft pastels, a baker at the oven.", "pastel"),
+        ("A market square in the style of old engravings.", "engraving"),  # a plural medium
+        ("A farm drawn in bright crayons, three pigs by the gate.", "crayon"),
+        ("An orchard, cut from layered paper, with a ladder against a tree.", "realistic"),  # "cut from": no frame
+        ("A pier painted like a pointillist canvas.", "impressionist"),
+        ("A fishing village, as a Japanese woodblock print.", "ukiyo-e"),
+        ("A black-and-white photograph of a railway yard with two engines.", "film noir"),
+        ("A marble frieze of a chariot race, four horses to each chariot.", "relief"),
+        ("A harbour in the style of Monet, three yachts at anchor.", "impressionist"),
+        ("A shadow puppet play of a dragon fighting a knight.", "paper cut"),
+        ("A sculpture of a horse stands in the square.", "realistic"),
+        ("An origami crane sits on a desk beside a lamp.", "realistic"),
+        ("A forge woven into a tapestry: three smiths at anvils.", "textile"),
+        # the first named look wins; a picture named as a thing of the scene is no look
+        ("A pop art kitchen with a toaster and a kettle.", "comic"),
+        ("An art nouveau tea room with six tables.", "art nouveau"),
+        ("A solarpunk rooftop drawn as a risograph poster.", "solarpunk"),
+        ("A study with a poster of a ship above the desk.", "realistic"),
+        ("A painting of a ship hangs above the fireplace in a small study.", "realistic"),
+        ("A classroom: a box of crayons and a chalk drawing on each desk.", "realistic"),
+        ("A chapel with a stained-glass window above the altar.", "realistic"),
+        ("A small print shop on a corner, its press by the window.", "realistic"),
+        ("A nursery with walls painted in pastel colours and a cot.", "realistic"),
+        ("A mosaic floor in a bath house, a bench along one wall.", "realistic"),
+    ],
+)
+def test_style_of_a_picture_from_its_medium(text, style):
+    assert detect_style(text) == style
+
+
+@pytest.mark.parametrize(
     "text, indoor, kind",
     [
         ("A town square paved with cobblestones.", False, "cobblestone"),
@@ -283,6 +331,9 @@ def test_style(text, style):
         ("A clearing.", False, "grass"),
         ("A hall with a marble floor.", True, "marble"),
         ("A village croquet game on a Sunday.", False, "grass"),  # a game played on grass outweighs the village
+        ("A vineyard rendered as a mosaic of small glass tiles.", False, "grass"),  # the picture's tiles: no floor
+        ("A blue-and-white tile panel of a rose garden, a fountain in it.", False, "grass"),
+        ("A farmyard drawn in crayon on a snowy morning.", False, "snow"),  # the scene's words after the medium
     ],
 )
 def test_ground(text, indoor, kind):

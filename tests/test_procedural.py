@@ -18,6 +18,7 @@ from hypothesis import strategies as st
 
 from scenewright.backends import MeshRequest, create_backend
 from scenewright.core.catalogue import load_catalogue
+from scenewright.core.styles import find_look
 from scenewright.errors import InputError
 from scenewright.geometry import GLTF_TO_SCENE
 from scenewright.procedural import SHAPES
@@ -187,6 +188,31 @@ def test_a_named_look_shifts_the_ground_texture_too():
     assert np.abs(grey[..., 0] - grey[..., 1]).max() <= 1 and np.abs(grey[..., 1] - grey[..., 2]).max() <= 1
     colour = ground_texture("grass", "realistic", seed=3).astype(int)
     assert np.abs(colour[..., 1] - colour[..., 0]).mean() > 5
+
+
+def test_a_print_look_draws_every_role_in_its_few_inks():
+    poster = resolve_style("a Bauhaus poster")  # a style name: its look word names the look
+    assert poster.name == "poster" and poster.inks
+    colours = {role: poster.surface(role).color for role in ROLES}
+    assert all(c in poster.inks for c in colours.values())
+    assert colours["skin"] != colours["clothes"] and colours["wall"] == max(poster.inks, key=sum)  # paper, not skin
+    tile = ground_texture("grass", "comic", seed=3).astype(float) + 1
+    ratios = tile / tile.sum(axis=2, keepdims=True)
+    assert np.ptp(ratios.reshape(-1, 3), axis=0).max() < 0.02  # one flat ink, only its lightness varies
+
+
+def test_a_one_ink_look_draws_every_colour_between_its_ink_and_its_paper():
+    engraving = resolve_style("copperplate engraving")
+    dark, light = (np.array(c) for c in engraving.duotone)
+    for role in ("wood", "fabric", "leaf", "brick", "paint"):
+        colour = np.array(engraving.surface(role).color)
+        t = (colour - dark) / (light - dark)
+        assert np.allclose(t, t[0], atol=1e-6) and 0 <= t[0] <= 1, role
+    assert sum(engraving.surface("dark_wood").color) < sum(engraving.surface("paper").color)
+    tile = ground_texture("wood_floor", "blueprint", seed=2).astype(int)
+    assert (tile[..., 2] > tile[..., 0]).all()  # blue, down to the ground
+    # paper is lit flat and bright, not under a blue sky; a look that says nothing lights as its base
+    assert (find_look("engraving").lit, find_look("voxel").lit, find_look("film noir").lit) == ("cartoon", "low-poly", "realistic")
 
 
 def test_unknown_style_falls_back_to_realistic_with_a_note(caplog):

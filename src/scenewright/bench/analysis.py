@@ -19,6 +19,7 @@ from pathlib import Path
 
 from scenewright.analysis.parser import parse_scene
 from scenewright.core.relations import INVERSE
+from scenewright.core.styles import find_look
 from scenewright.evaluation.annotations import Prompt, assign_keys, default_prompt_dir, load_prompts
 
 __all__ = ["Prompt", "default_prompt_dir", "load_prompts", "run_parse_bench", "score_objects", "score_prompt", "summarise"]
@@ -95,8 +96,16 @@ def score_prompt(prompt: Prompt) -> dict:
         "domain": prompt.domain,
         **row,
         "relations_inferred": sum(r.inferred for r in parsed.relations),
-        "style_correct": parsed.style == prompt.style,
+        "style_correct": same_look(parsed.style, prompt.style),
     }
+
+
+def same_look(read: str, annotated: str) -> bool:
+    """Whether the reader named the look an annotation names: annotations name a style as a writer
+    would ("copperplate engraving", "Art Deco travel poster"), the reader by the look that draws it
+    (``data/styles.json``), so a name the table knows counts as its look."""
+    look = find_look(annotated)
+    return read == annotated or (look is not None and look.name == read)
 
 
 def ratio(a: int, b: int) -> float:

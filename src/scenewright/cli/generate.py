@@ -86,7 +86,7 @@ def generate_command(
     style: Annotated[
         str | None,
         typer.Option(
-            "--style", help=f"Visual style ({', '.join(STYLES)}, or a look such as voxel, watercolour or film noir); default: named in the text, else realistic."
+            "--style", help=f"Visual style ({', '.join(STYLES)}, or a look such as voxel, watercolour, film noir, engraving or poster, or a name that says one, as copperplate engraving); default: named in the text, else realistic."
         ),
     ] = None,
     seed: Annotated[int, typer.Option("--seed", help="Seed of the layout search and procedural looks.")] = 0,

@@ -16,7 +16,7 @@ from scenewright.settings import STYLES
 
 #: What a look may change of its base: palette and shading only, so every look draws the same
 #: geometry as a base style (the shared-face test covers the bases).
-PALETTE = ("saturation", "value", "pastel", "roughness", "metallic_scale", "flat")
+PALETTE = ("saturation", "value", "pastel", "roughness", "metallic_scale", "flat", "duotone", "inks")
 
 
 @dataclass(frozen=True)
@@ -32,6 +32,9 @@ class Look:
     palette: dict = field(default_factory=dict)
     #: Role → (r, g, b, metallic, roughness).
     overrides: dict = field(default_factory=dict)
+    #: The base style whose lights a render uses (its ``like`` unless the look says: an engraving is
+    #: drawn like a realistic scene but lit flat, like paper).
+    lit: str = ""
 
 
 def normalise(words: str) -> str:
@@ -46,22 +49,39 @@ def load_looks() -> dict[str, Look]:
     looks = {}
     for name, entry in raw["looks"].items():
         like = entry.get("like", name)
-        unknown = set(entry) - {"words", "styled", "like", "overrides", *PALETTE}
-        if like not in STYLES or unknown:
-            raise ValueError(f"styles.json: look {name!r} must be drawn like one of {', '.join(STYLES)} "
+        lit = entry.get("lit", like)
+        unknown = set(entry) - {"words", "styled", "like", "lit", "overrides", *PALETTE}
+        if like not in STYLES or lit not in STYLES or unknown:
+            raise ValueError(f"styles.json: look {name!r} must be drawn and lit like one of {', '.join(STYLES)} "
                              f"and change only {', '.join(PALETTE)} and overrides (got {sorted(unknown) or like!r})")
         styled = tuple(normalise(w) for w in entry.get("styled", ()))
         words = tuple(normalise(w) for w in (name, *entry["words"]) if normalise(w) not in styled)
         looks[name] = Look(name, words, styled, like,
-                           {k: entry[k] for k in PALETTE if k in entry}, entry.get("overrides", {}))
+                           {k: entry[k] for k in PALETTE if k in entry}, entry.get("overrides", {}), lit)
     missing = set(STYLES) - set(looks)
     if missing:
         raise ValueError(f"styles.json: the base styles {sorted(missing)} have no entry")
     return looks
 
 
+@lru_cache(maxsize=1)
+def media_heads() -> frozenset[str]:
+    """Nouns that name a picture or a made image ("a copperplate *engraving* of a port", "woven as a
+    *tapestry*"): a phrase ending in one, where a text says what it is, names the scene's look."""
+    raw = json.loads(resources.files("scenewright.data").joinpath("styles.json").read_text(encoding="utf-8"))
+    return frozenset(normalise(w) for w in raw["media"])
+
+
 def find_look(name: str) -> Look | None:
     """The look a free-text style name means: a look's name or any word for it ("Ukiyo-e",
-    "cartoon-style", "low poly"), else None."""
+    "cartoon-style", "low poly"), else the first look a word of it names ("an Art Deco travel
+    poster" is art deco, "children's crayon drawing" crayon: a style's name is all style), else None."""
     key = normalise(name).removesuffix(" style")
-    return next((look for look in load_looks().values() if key in look.words or key in look.styled), None)
+    looks = load_looks().values()
+    exact = next((look for look in looks if key in look.words or key in look.styled), None)
+    if exact is not None:
+        return exact
+    padded = f" {key} "
+    named = [(padded.find(f" {w} "), -len(w), look.name) for look in looks for w in (*look.words, *look.styled)
+             if f" {w} " in padded]
+    return load_looks()[min(named)[2]] if named else None

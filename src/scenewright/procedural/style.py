@@ -144,6 +144,31 @@ def _hsv(color, saturation: float = 1.0, value: float = 1.0, toward_white: float
     return (r + (1 - r) * w, g + (1 - g) * w, b + (1 - b) * w)
 
 
+#: The power a duotone lifts lightness by before it is drawn between ink and paper.
+INK_LIFT = 0.75
+
+
+def _ink(color, duotone):
+    """A colour as one ink on paper draws it: its lightness between the dark and the light, lifted
+    (an engraving or a sketch is mostly paper, its darks the lines)."""
+    (dark, light), lum = duotone, (0.299 * color[0] + 0.587 * color[1] + 0.114 * color[2]) ** INK_LIFT
+    return tuple(d + (l_ - d) * lum for d, l_ in zip(dark, light))
+
+
+def _opponent(color):
+    """Lightness and two colour-difference axes (red–green, yellow–blue), the colour ones weighted
+    twice: a pale wall is nearer white than a pale skin tone, which is nearer by RGB alone."""
+    r, g, b = color[0], color[1], color[2]
+    return (0.299 * r + 0.587 * g + 0.114 * b, 2 * (r - g), 2 * ((r + g) / 2 - b))
+
+
+def nearest_ink(color, inks):
+    """The ink a print with few inks draws a colour in: the nearest one (a skin tone the cream, a
+    wood the tan, a red the red)."""
+    seen = _opponent(color)
+    return min(inks, key=lambda ink: sum((a - b) ** 2 for a, b in zip(seen, _opponent(ink))))
+
+
 @dataclass(frozen=True)
 class Style:
     #: A base style's name or a named look's (``data/styles.json``); the ground texture follows
@@ -164,6 +189,10 @@ class Style:
     roughness: float | None = None
     metallic_scale: float = 1.0
     neon: bool = False
+    #: A print or drawing in one ink: (dark, light) sRGB, every colour's lightness drawn between them.
+    duotone: tuple | None = None
+    #: A print in a few flat inks (sRGB): every colour becomes the nearest.
+    inks: tuple | None = None
     overrides: dict[str, Surface] = field(default_factory=dict)
 
     @property
@@ -188,7 +217,12 @@ class Style:
 
     def restyle(self, base: Surface, role: str, neon_color=NEONS[0]) -> Surface:
         """Apply this style's palette shift to a surface (also to colours the text asked for)."""
-        color = _hsv(base.color, self.saturation, self.value, self.pastel)
+        if self.inks:  # the inks are the print's own colours, not shifted
+            color = nearest_ink(base.color, self.inks)
+        else:
+            color = _hsv(base.color, self.saturation, self.value, self.pastel)
+        if self.duotone:
+            color = _ink(color, self.duotone)
         metallic = base.metallic * self.metallic_scale
         roughness = base.roughness if self.roughness is None else self.roughness
         emissive = base.emissive
@@ -237,7 +271,11 @@ def _drawn_like(look: Look) -> Style:
     if look.name == look.like:
         return base
     overrides = {**base.overrides, **{role: Surface(tuple(v[:3]), v[3], v[4]) for role, v in look.overrides.items()}}
-    return replace(base, name=look.name, overrides=overrides, **look.palette)
+    palette = dict(look.palette)
+    for key in ("duotone", "inks"):
+        if key in palette:
+            palette[key] = tuple(tuple(c) for c in palette[key])
+    return replace(base, name=look.name, overrides=overrides, **palette)
 
 
 @lru_cache(maxsize=64)

@@ -15,7 +15,7 @@ from collections.abc import Callable
 import numpy as np
 from PIL import Image
 
-from scenewright.procedural.style import STYLE_TABLE, resolve_style
+from scenewright.procedural.style import INK_LIFT, STYLE_TABLE, nearest_ink, resolve_style
 
 log = logging.getLogger(__name__)
 
@@ -300,7 +300,16 @@ def _look(img, look, base):
     """A named look's palette over its base style's filter: a film-noir ground is grey too."""
     img = _saturate(img, look.saturation / max(base.saturation, 1e-6)) * (look.value / base.value)
     whiten = max(0.0, look.pastel - base.pastel)
-    return img + (1 - img) * whiten
+    img = img + (1 - img) * whiten
+    if look.duotone:
+        dark, light = (np.array(c, float) for c in look.duotone)
+        lum = np.clip(img @ np.array([0.299, 0.587, 0.114]), 0, 1) ** INK_LIFT
+        img = dark + (light - dark) * lum[..., None]
+    if look.inks:  # one flat ink, the nearest to the ground's own colour, its grain barely showing
+        ink = np.array(nearest_ink(tuple(img.reshape(-1, 3).mean(axis=0)), look.inks), float)
+        lum = img @ np.array([0.299, 0.587, 0.114])
+        img = ink * (0.88 + 0.12 * lum / max(float(lum.mean()), 1e-6))[..., None]
+    return img
 
 
 def ground_texture(kind: str, style: str, seed: int, size: int = SIZE) -> np.ndarray:

@@ -236,7 +236,7 @@ def render(
             "frame": frame,
             "boxes": {oid: box.tolist() for oid, box in box_corners(scene).items()},
             "weights": view_weights(scene),
-            "style": look.like if (look := find_look(scene.style)) else "realistic",  # a named look lights as its base
+            "style": look.lit if (look := find_look(scene.style)) else "realistic",  # a named look lights as its base
             **_ground_and_room(scene, folder, views),
             "views": list(views),
             "keep_all": keep_all,

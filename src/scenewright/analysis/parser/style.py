@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import re
 
-from scenewright.core.styles import load_looks, normalise
+from scenewright.core.styles import load_looks, media_heads, normalise
 from scenewright.scene import DEFAULT_STYLE
 
 #: Ground kinds the procedural ground textures understand.
@@ -15,25 +15,108 @@ GROUND_KINDS = (
 )  # fmt: skip
 
 
-def detect_style(text: str, default: str = DEFAULT_STYLE) -> str:
-    """The look the text names ("cartoon-style", "Cyberpunk.", "a voxel-art quarry"; the words are
-    ``data/styles.json``'s), else ``default``.
+#: A verb of making before "as", "like", "in" or "into", "in the style of", or a clause opening "as" or
+#: "like": the words after it, up to "of" or the clause's end, say what the picture is ("drawn as a Soviet
+#: constructivist poster", "painted like an impressionist canvas", "rendered in cross-stitch", "in the
+#: style of a pulp magazine cover", "A fishing village, as a woodblock print.").
+_MADE_AS = re.compile(
+    r"\b(?:(?:drawn|rendered|painted|printed|done|made|sketched|woven|stitched|embroidered|etched|engraved|carved|"
+    r"cut|shown|depicted|illustrated|imagined|pictured|styled|crafted|modelled|modeled|sculpted|knitted|felted)\s+"
+    r"(?:as|like|in|into)|in\s+the\s+(?:style|manner)\s+of|[,:;(]\s*(?:as|like))\s+(?:(?:an?|the)\s+)?([^.,:;!?()]*)"
+)
+#: A verb that puts the opening picture somewhere: "A painting of a ship hangs above the fireplace" is
+#: a thing in the room, "A painting of a harbour at dawn." the scene's look.
+_PLACED = re.compile(r"\b(?:is|are|hangs?|hung|sits?|stands?|leans?|rests?|lies|covers?|fills?|decorates?|"
+                     r"dominates?|propped|pinned|taped|mounted)\b")
+#: "Walls painted in pastel colours" name colours, not a medium.
+_COLOUR_NOUNS = {"colour", "colours", "color", "colors", "shade", "shades", "tone", "tones", "hue", "hues", "tints"}
+#: Words that end a medium phrase: "a poster" in "a study with a poster" is a thing in it.
+_PHRASE_ENDS = {"of", "with", "and", "or", "in", "on", "at", "by", "from", "near", "under", "above", "over", "behind",
+                "beside", "for", "to", "where", "that", "which", "while", "as", "showing", "depicting", "featuring"}
+#: The longest medium phrase read: "a two-colour risograph print", not a whole clause.
+_MEDIUM_WORDS = 6
 
-    A word followed by "style" wins over a word used in passing; otherwise the first named."""
+
+def _medium_phrases(text: str) -> list[tuple[str, str]]:
+    """Phrases that name what the scene is a picture of, normalised (:func:`_media`): each as written
+    and with its plurals made singular ("in the style of old engravings", "drawn in crayons")."""
+    phrases = []
+    for words, _ in _media(text):
+        single = [w[:-1] if len(w) > 3 and w.endswith("s") and not w.endswith("ss") else w for w in words]
+        phrases.append((" ".join(words), " ".join(single)))
+    return phrases
+
+
+def _media(text: str) -> list[tuple[list[str], tuple[int, int]]]:
+    """Each phrase that says what the picture is, as words, and the span of the text it is said in:
+    after a verb of making (:data:`_MADE_AS`, the words up to the clause's end), or opening the text
+    when it ends in a picture noun or a look's word ("A child's crayon drawing of a ...", "A
+    needle-felted miniature: ..."; ``media`` in ``data/styles.json``) and its clause places nothing
+    ("A painting of a ship hangs above the fireplace" is a thing of the scene)."""
+    low = text.lower()
+    found = [(_noun_phrase(m[1]), (m.start(1), m.start(1) + _medium_end(m[1]))) for m in _MADE_AS.finditer(low)]
+    clause = re.split(r"[.,:;!?()]|\s[-–—]\s", low, maxsplit=1)[0]
+    opening = _noun_phrase(re.sub(r"^\W*(?:(?:an?|the)\s+)?", "", clause))
+    if opening and (opening[-1] in media_heads() or _names_a_look(opening)) and not _PLACED.search(clause):
+        found.append((opening, (0, len(clause.split(" of ")[0]))))
+    return [(w, span) for w, span in found if w and len(w) <= _MEDIUM_WORDS and w[-1] not in _COLOUR_NOUNS]
+
+
+def _medium_end(words: str) -> int:
+    """Where the medium's own words end: its "of ..." is what it is made of ("a floor mosaic of tiny stone
+    tiles"), any other phrase end goes back to the scene ("done in cross-stitch, with a tiled floor")."""
+    ends = re.search(r"(?<![\w-])(?:" + "|".join(sorted(_PHRASE_ENDS - {"of"})) + r")(?![\w-])", words)
+    return ends.start() if ends else len(words)
+
+
+def without_media(text: str) -> str:
+    """The text, lowercased, with what its picture is made of blanked out: "rendered as a floor mosaic
+    of tiny stone tiles" says nothing of the ground the scene stands on."""
+    low = text.lower()
+    for _, (start, end) in _media(text):
+        low = low[:start] + " " * (end - start) + low[end:]
+    return low
+
+
+def _names_a_look(phrase: list[str]) -> bool:
+    """Whether a phrase ends in a look's word ("a mezzotint", "a floor mosaic"): the picture's own noun."""
+    tail = f" {' '.join(phrase)}"
+    return any(tail.endswith(f" {w}") for look in load_looks().values() for w in (*look.words, *look.styled))
+
+
+def _noun_phrase(words: str) -> list[str]:
+    """The normalised words before the first that ends a noun phrase ("of", "with", "and", "on" ...;
+    not inside a hyphened word: "a blue-and-white tile panel")."""
+    out: list[str] = []
+    for token in words.split():
+        if normalise(token) in _PHRASE_ENDS:
+            break
+        out += normalise(token).split()
+    return out
+
+
+def detect_style(text: str, default: str = DEFAULT_STYLE) -> str:
+    """The look the text names ("cartoon-style", "Cyberpunk.", "a voxel-art quarry", "A linocut print
+    of ...", "drawn as a blueprint"; the words are ``data/styles.json``'s), else ``default``.
+
+    A word followed by "style" wins over a word used in passing; otherwise the first named. Words
+    that also describe things ("gothic", "poster", "mosaic") name the look only before "style" or in
+    the phrase that says what the picture is (:func:`_medium_phrases`)."""
     low = f" {normalise(text)} "
-    best: tuple[int, int, str] | None = None
+    media = [(low.find(f" {p} "), f" {form} ") for p, single in _medium_phrases(text) for form in {p, single}]
+    best: tuple[int, int, int, str] | None = None
     for look in load_looks().values():
         for w in (*look.words, *look.styled):
+            ranks = [(1, at + phrase.find(f" {w} "), -len(w), look.name) for at, phrase in media if f" {w} " in phrase]
             pos = low.find(f" {w} ")
-            if pos < 0:
-                continue
-            styled = low[pos + len(w) + 2 :].startswith(("style", "styled", "look", "aesthetic"))
-            if w in look.styled and not styled:
-                continue
-            rank = (0 if styled else 1, pos, look.name)
-            if best is None or rank < best:
-                best = rank
-    return best[2] if best else default
+            if pos >= 0:
+                styled = low[pos + len(w) + 2 :].startswith(("style", "styled", "look", "aesthetic"))
+                if styled or w not in look.styled:
+                    ranks.append((0 if styled else 1, pos, -len(w), look.name))
+            for rank in ranks:
+                if best is None or rank < best:
+                    best = rank
+    return best[3] if best else default
 
 
 #: Words for the ground itself, anywhere in the text: they name the floor ("a tiled floor", "on the sand").
@@ -83,6 +166,7 @@ def detect_ground(text: str, indoor: bool) -> str:
     """A ground kind from :data:`GROUND_KINDS`: a word for the ground itself, else the setting's
     place word (the first one named, the opening sentence first), else wood floor indoors and
     grass outdoors."""
+    text = without_media(text)
     sentences = re.split(r"[.!?]", text.lower())
     low = " " + " ".join(re.findall(r"[a-zé]+", text.lower())) + " "
     opening = len(" " + " ".join(re.findall(r"[a-zé]+", sentences[0])) + " ") if sentences else 0
