@@ -146,7 +146,9 @@ class _Clause:
     expect_new: bool = False
     groups: list[int] = field(default_factory=list)
     main_groups: list[int] = field(default_factory=list)
-    fronted: list[tuple[str, list[int], bool]] = field(default_factory=list)
+    #: Phrases opening the clause before its subject: (kind, targets, one per member, the members
+    #: of the target meant: "Between the second and the third, a miner kneels").
+    fronted: list[tuple[str, list[int], bool, tuple[int | None, ...]]] = field(default_factory=list)
     last_kind: str = ""
     #: The clause opens with a noun phrase the catalogue does not know ("a small ice rink lies...").
     unknown_subject: bool = False
@@ -446,7 +448,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._sentence_from = sentence_from
             prev_subject: list[int] = []
             self.doers = []
-            pending: list[tuple[str, list[int]]] = []
+            pending: list[tuple[str, list[int], tuple[int | None, ...]]] = []
             last_rels: list[tuple[str, list[int]]] = []
             clauses = self._merge_lists(sentence)
             for ci, (cs, ce) in enumerate(clauses):
@@ -460,23 +462,25 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 self._clause(c, cs, ce, self._who_after(cs) or prev_subject)
                 if c.fronted:
                     srcs = c.main_groups
-                    targets_all = {t for _, ts, _ in c.fronted for t in ts}
+                    targets_all = {t for _, ts, _, _ in c.fronted for t in ts}
                     srcs = [g for g in srcs if g not in targets_all]
                     if srcs:
-                        for kind, targets, each in c.fronted:
+                        for kind, targets, each, members in c.fronted:
                             if each:  # "beside every table stand two chairs"
                                 self._per_each(srcs[:1], targets[0])
                             for t in targets:
-                                self._relate(kind, self._beneath(kind, srcs, before), t)
-                        c.rels = [(kind, targets) for kind, targets, _ in c.fronted]
+                                for one in members:
+                                    self._relate(kind, self._beneath(kind, srcs, before), t, instance=one)
+                        c.rels = [(kind, targets) for kind, targets, _, _ in c.fronted]
                     else:
-                        pending = [(kind, targets) for kind, targets, _ in c.fronted]
+                        pending = [(kind, targets, members) for kind, targets, _, members in c.fronted]
                 elif pending and c.main_groups:
                     # "Around it, toadstools and crystals glitter": every coordinated subject
                     subjects = c.subjects or c.main_groups[:1]
-                    for kind, targets in pending:
+                    for kind, targets, members in pending:
                         for t in targets:
-                            self._relate(kind, self._beneath(kind, subjects, before), t)
+                            for one in members:
+                                self._relate(kind, self._beneath(kind, subjects, before), t, instance=one)
                     pending = []
                 elif not c.produced and c.groups and last_rels and not standalone and self._is_list(cs, ce, strict=True):
                     # "On the desk there is a lamp, a laptop and a mug": the list shares the relation
@@ -945,6 +949,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             k for k in range(start, ce)
             if (k in self.by_start and k not in self.content_at) or self.toks[k].text in pronouns
         ]  # fmt: skip
+        # "and between the second and the third a farmer kneels": two of a row named before, no noun
+        words = [t.text for t in self.toks[start : start + 5] if t.text != "the"]
+        pair = len(words) >= 3 and words[0] in _ORDINALS and words[1] == "and" and words[2] in _ORDINALS
+        if pair and not any(k in self.by_start for k in range(start, start + 5)):
+            named.append(start)
         return len(named) >= 2 or not any(_is_verb(t.text) for t in self.toks[start:ce])
 
     def _do_deeds(self, c: _Clause) -> None:
@@ -1044,6 +1053,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     self._relate("near", [follower], anchor)
                     c.produced = True
                     continue
+                if not (c.hold or placed) and self._carrier(g, ("vehicles",)) and self._carrier(h, ("vehicles", "mounts")):
+                    # "a snowmobile with a trailer", "a pony with a cart": the load behind what pulls it
+                    self._relate("behind", [g], h)
+                    self.towed[h] = g
+                    c.produced = True
+                    continue
                 if c.hold or held or (rests == "surface" and self.catalogue[self.groups[h].category].support):
                     self._relate("on", [g], h, instance=1 if g in c.others and self.groups[h].count > 1 else None)
                     c.produced = True
@@ -1100,7 +1115,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # ("hens around her feet" stay around her; "a surfboard under his arm", "an axe across his
         # knees", "a bag over her shoulder", "a snake around his neck" are carried)
         carried = ("on", "on top", "in", "under", "over", "around", "no relation", "on a carrier")
-        if (body == "near" and kind != "around") or (body == "on" and kind in carried):
+        if (body in ("near", "side of") and kind != "around") or (body == "on" and kind in carried):
             kind = body
         elif body == "on" and kind == "at":  # "a shelf at his back": behind him, not carried
             kind, body = "behind" if any(t.text == "back" for t in toks[rel.end : end]) else "near", None
@@ -1321,6 +1336,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # "to its left", "to her left", "at its foot": the side of what the possessive names
             owner = next(t.text for t in toks[rel.start : rel.end] if t.text in _POSSESSED)
             kind, target = _OWN_SIDES[kind], _POSSESSED[owner]
+            # "at its feet": of what has feet (the giraffe, not the fence named after it)
+            p.part = part = next((t.text for t in toks[rel.start : rel.end] if t.text in load_vocabulary().part_owners), part)
         if kind == "on top" and target is None:
             kind = "on"
             target = "it" if c.head is not None else None
@@ -1353,8 +1370,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # "a bench sits beneath a willow on the right": a side of the scene, which the
             # willow is on, not a side of the willow ("to the right" after it stays the willow's)
             targets = []
-        elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
-            # "a bed with a nightstand on either side": a with-thing's side is its head's
+        elif target is None and (kind in ("left", "right", "flank elliptic", "above elliptic") or rel.elliptic):
+            # "a bed with a nightstand on either side": a with-thing's side is its head's ("films the
+            # tents from high above": above them)
             owner = list(c.head) if c.head is not None and srcs == c.wsub else []
             targets = list(c.last_target) or owner or [g for g in self.history[-1:] if g not in srcs]
         elif target is None:
@@ -1396,7 +1414,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             prefer = list(self.topic)  # "Behind them, five soldiers sit": them of the sentence before
         who = srcs or ([] if c.opens else list(prev_subject))  # "..., watching them": the subject before
         own = [t for s in who for t in c.supports.get(s, [])]
-        targets: list[int] = list(c.head) if c.head is not None else self._pronoun(target, c, who + own, prefer, kind)
+        # what one goes along is not where one goes ("tourists walk along the pier towards it": the ferry)
+        toward = any(t.text in ("toward", "towards") for t in self.toks[rel.start : rel.end])
+        path = list(c.last_target) if toward and c.last_kind == "along" else []
+        prefer = [g for g in prefer if g not in path]
+        targets: list[int] = (
+            list(c.head) if c.head is not None else self._pronoun(target, c, who + own, prefer, kind, others=path)
+        )
         # (a scarecrow or a mannequin has a person's shape but is "it")
         owner = c.head is not None and c.head == [c.each]
         if c.head is not None and not owner and all(self._living(h) and self.groups[h].category == "figure" or (
@@ -1404,7 +1428,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         ) for h in c.head):  # fmt: skip
             # "a man on the bench, with his terrier asleep under it": "it" is no person
             # ("each camel has a bucket in front of it": the camel, as "each" made it the owner)
-            targets = self._pronoun(target, c, srcs, prefer, others=c.head)
+            targets = self._pronoun(target, c, srcs, prefer, kind, others=c.head)
         below = [r[2] for r in self.relations if c.head and r[1] in c.head and r[0] == "above"]
         if below and all(self.groups[h].rests == "hanging" for h in c.head) and not any(
             self.groups[g].rests == "hanging" for g in srcs
@@ -1427,6 +1451,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         elif c.head is not None and c.wsub_before and srcs == c.wsub and self._small(*srcs, c.wsub_before[-1]):
             targets = c.wsub_before[-1:]  # "... and a computer beside it": beside the till
         candidates = [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)]
+        if target == "it":  # ("two goats graze at its feet": one thing's, not theirs)
+            candidates = [g for g in candidates if self.groups[g].count == 1]
         targets = self._part_owner(part, targets, candidates, srcs)
         if c.head is None and target in ("it", "them") and part is None and kind in ("in", "on", "from"):
             targets = self._seat(c, srcs, prefer, rel.start, target == "them", kind == "in") or targets
@@ -1471,7 +1497,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return end  # "Across the bridge, a troll waits": on its far side, no place of the layout
         if starts_with_rel and c.opens and not c.produced and isinstance(targets, list) and targets:
             tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
-            c.fronted.append((kind, targets, tm is not None and tm.each))
+            c.fronted.append((kind, targets, tm is not None and tm.each, p.ordinals or (None,)))
             if isinstance(target, list):  # "On a mound behind the giraffes, ...": the mound is behind them
                 c.last_target, c.last_target_end, c.last_kind = targets, end, kind
             return end
