@@ -1096,3 +1096,17 @@ def test_on_a_persons_body_part_named_by_a_possessive_noun_is_on_that_person():
     found = rels("Fans wave from the stands, and a little girl sits on her mother's shoulders.")
     assert ("girl_1", "on", "mother_1") in found
     assert ("boy_1", "on", "uncle_1") in rels("A little boy sits on his uncle's knee.")
+
+
+def test_between_the_first_two_or_the_last_two_of_a_row():
+    found = rels("Five carts wait side by side. A boy stands between the first two.")
+    assert {("boy_1", "near", "cart_1"), ("boy_1", "near", "cart_2")} <= found
+    parsed = parse_scene("Five carts wait side by side. A boy stands between the last two carts.")
+    assert sum(o.category == "cart" for o in parsed.objects) == 5
+    assert {("boy_1", "near", "cart_4"), ("boy_1", "near", "cart_5")} <= rels(parsed.text)
+
+
+def test_one_on_a_perch_between_two_is_the_one_between_and_the_row_is_not_what_each_has():
+    text = "Four carts wait side by side, each with a driver in its seat. A judge stands on a podium between the first two."
+    found = rels(text)
+    assert {("judge_1", "near", "cart_1"), ("judge_1", "near", "cart_2")} <= found, found

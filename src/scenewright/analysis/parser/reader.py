@@ -1092,15 +1092,19 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         stacked = any(r.end == rel.start and r.kind == "stack" for r in self.rel_at.values())
         if kind == "near" and toks[rel.start].text == "against" and stacked:
             kind = "side of"  # "drums are stacked against the hut": the stack rests on its side
+        # "between the first and second car", "between the last two carts": two of one group (read
+        # before the target, which would make "the last two carts" two new carts)
+        pair = self._ordinal_pair(rel.end, ce) if kind == "between" else None
         # "To her left a globe sits": the possessive is the target, the noun after the subject
-        if kind in _OWN_SIDES:  # (no target read: nothing of the last one's parts carries over)
+        if kind in _OWN_SIDES or pair is not None:  # (no target read: nothing of the last one's parts carries over)
             self._body_part = self._part = None
             self._parts_each = 0
-        target, end = self._target_at(rel.end, ce) if kind not in _OWN_SIDES else (None, rel.end)
+        own = kind in _OWN_SIDES or pair is not None
+        target, end = self._target_at(rel.end, ce) if not own else (None, rel.end)
         if kind in ("on", "at") and target is None and (side := self._owners_side(rel.end, ce)) is not None:
             kind, target, end = side  # "a cart is on the artist's right": right of the artist
-        ordinals: tuple[int, int] | None = None  # "between the first and second car": two of one group
-        if kind == "between" and target is None and (pair := self._ordinal_pair(rel.end, ce)) is not None:
+        ordinals: tuple[int, int] | None = None
+        if pair is not None:
             group, ordinals, end = pair
             several = [group] if group is not None else self._one_of(c, c.main, prev_subject)
             target, self._target_start = several or None, -1
@@ -1638,8 +1642,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         """Whether a phrase after "a person sits on X" places the person, not X: what the person
         faces after any target ("kneels at a low table across from the vats", "ponies tied to a
         fence across from the caravans"), where the person works ("sits on a stool at a
-        workbench"), and after a seat, what the person sits between, under, behind or at the foot
-        of ("in folding chairs between them", "rest on a bench at the foot of a cross", "lounges in
+        workbench"), after a seat or a perch what the person is between ("in folding chairs between
+        them", "stands on a platform between the first two"; "dozes on a cushion between the rack and
+        the stove" places the cushion), and after a seat, what the person sits under, behind or at the
+        foot of ("rest on a bench at the foot of a cross", "lounges in
         an armchair behind the desk": one works behind a desk as at it; but "a cat naps in a basket
         at the foot of the stove" places the basket); after "under", what one sits on ("sits
         beneath the bridge on a boulder"). Beside, near, in front of place the seat ("a
@@ -1653,7 +1659,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if c.last_kind not in ("on", "in", "on top"):
             return False
         seat = all(self.catalogue[self.groups[g].category].shape in _SEATS for g in c.last_target)
-        return kind == "at" or (seat and kind in ("between", "under", "behind", "foot of"))
+        perch = all(self._carrier(g, ("perches",)) for g in c.last_target)
+        return kind == "at" or ((seat or perch) and kind == "between") or (seat and kind in ("under", "behind", "foot of"))
 
     @staticmethod
     def _describes(words: list[str], after_verb: bool) -> bool:

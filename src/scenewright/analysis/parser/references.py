@@ -21,6 +21,7 @@ from scenewright.analysis.parser.nouns import _HOLDING_PARTS, _PLACING_VERBS, _i
 from scenewright.analysis.parser.support import usual_host
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import (
+    ORDINALS,
     _DETERMINERS,
     _NUMBERS,
     _ORDINALS,
@@ -399,9 +400,13 @@ class _References:
     def _one_of(self, c: _Clause, srcs: list[int], prev_subject: list[int]) -> list[int]:
         """The group "the tallest one", "the nearest one" picks from: the subject of this clause
         or the one before when it is several ("three stalls ..., and a drone hovers above the
-        nearest one"), else the latest group of several mentioned."""
+        nearest one"), else the latest group of several mentioned; not what each of a group has
+        ("five racers wait, each with a pilot in its seat. A marshal stands between the first two":
+        the racers)."""
         order = [*c.subjects, *prev_subject, *reversed(c.groups), *reversed(self.history)]
-        return next(([g] for g in order if g not in srcs and self.groups[g].count > 1), [])
+        apiece = {g for g, _ in self.pair_each}
+        several = [g for g in order if g not in srcs and self.groups[g].count > 1]
+        return next(([g] for g in several if g not in apiece), several[:1])
 
     def _person(self, c: _Clause, srcs: list[int], word: str) -> list[int]:
         """Whom "him" / "her" (or "their" before a body part) names: the clause's own living
@@ -451,17 +456,22 @@ class _References:
         return None if owner is None else (f"{toks[k + 1].text} of", [owner], k + 2)
 
     def _ordinal_pair(self, pos: int, ce: int) -> tuple[int | None, tuple[int, int], int] | None:
-        """"(between) the first and second ramp", "the first and the last car": the group the noun
-        names back, the two ordinals, and where the noun ends; no group when no noun follows
-        ("between the second and the third": of the row named before)."""
+        """"(between) the first and second ramp", "the first and the last car", "the last two
+        carts": the group the noun names back, the two ordinals, and where the noun ends; no group
+        when no noun follows ("between the second and the third", "between the first two": of the
+        row named before)."""
         toks = self.toks
         k = pos + (pos < ce and toks[pos].text == "the")
-        if k + 2 >= ce or toks[k].text not in _ORDINALS or toks[k + 1].text != "and":
-            return None
-        j = k + 2 + (toks[k + 2].text == "the")
-        if j >= ce or toks[j].text not in _ORDINALS:
-            return None
-        ordinals = (_ORDINALS[toks[k].text], _ORDINALS[toks[j].text])
+        if k + 1 < ce and (toks[k].text in ORDINALS or toks[k].text == "last") and toks[k + 1].text == "two":
+            first = _ORDINALS[toks[k].text]
+            j, ordinals = k + 1, ((first, first + 1) if first >= 0 else (first - 1, first))
+        else:
+            if k + 2 >= ce or toks[k].text not in _ORDINALS or toks[k + 1].text != "and":
+                return None
+            j = k + 2 + (toks[k + 2].text == "the")
+            if j >= ce or toks[j].text not in _ORDINALS:
+                return None
+            ordinals = (_ORDINALS[toks[k].text], _ORDINALS[toks[j].text])
         after = toks[j + 1].text if j + 1 < ce else "."
         verb = j + 1 not in self.by_start and (after.endswith("ing") or _is_verb(after))
         # ("between the second and the third holding a lamp"; "... and between the second and the
