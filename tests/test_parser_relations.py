@@ -1110,3 +1110,18 @@ def test_one_on_a_perch_between_two_is_the_one_between_and_the_row_is_not_what_e
     text = "Four carts wait side by side, each with a driver in its seat. A judge stands on a podium between the first two."
     found = rels(text)
     assert {("judge_1", "near", "cart_1"), ("judge_1", "near", "cart_2")} <= found, found
+
+
+def test_beside_it_after_a_host_with_a_small_thing_on_it_is_the_host_the_clause_before_was_about():
+    text = "A black stove stands in the alcove with a kettle cooling on it, and brass ladles hang on the wall beside it."
+    assert ("ladle_1", "side of", "stove_1") in rels(text)
+    # the small thing the clause before was about is the peer ("a computer on the counter")
+    assert ("radio_1", "side of", "monitor_1") in rels("A computer sits on the counter, and a radio stands beside it.")
+
+
+def test_a_thing_by_ones_own_seat_is_no_thing_in_hand_and_a_team_is_by_what_it_draws():
+    found = rels("Three monks sit on stone benches by the fountain, with a jug of water beside each bench.")
+    assert ("bottle_1", "side of", "bench_1") in found and ("bottle_1", "on", "monk_1") not in found
+    assert ("monk_1", "side of", "bench_1") not in found
+    found = rels("A carriage with two ponies waits by the gate.")
+    assert {("horse_1", "near", "cart_1"), ("horse_2", "near", "cart_1")} <= found

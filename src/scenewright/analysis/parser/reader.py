@@ -1059,6 +1059,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     self.towed[h] = g
                     c.produced = True
                     continue
+                if not (c.hold or placed) and self._living(g) and self._carrier(g, ("mounts",)) and (
+                    self._carrier(h, ("vehicles",))
+                ):  # "a stagecoach with four horses": the team that draws it is by it
+                    self._relate("near", [g], h)
+                    c.produced = True
+                    continue
                 if c.hold or held or (rests == "surface" and self.catalogue[self.groups[h].category].support):
                     self._relate("on", [g], h, instance=1 if g in c.others and self.groups[h].count > 1 else None)
                     c.produced = True
@@ -1196,6 +1202,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # (what a person holds or carries is in hand as well: "a waiter carries a tray between the tables")
             holding = c.hand or c.hold and all(self._living(h) for h in c.head)
             in_hand = holding and target not in _PERSONAL and (kind in _GROUND_KINDS or kind in _HOLDER_KINDS)
+            # ("senators sit on benches, with an amphora beside each bench": by their own seat, not in hand)
+            seats = {r[2] for r in self.relations if r[0] == "on" and r[1] in c.head}
+            if in_hand and c.wsub and isinstance(target, list) and any(t in seats for t in target):
+                in_hand = c.hand = False
             # ("with his terrier asleep under it": a living with-thing is no thing in hand, its phrase places it)
             in_hand = in_hand and not any(self._living(g) for g in c.wsub)
             # ("a groom waits with the ponies beside a shed": the groom is there, the ponies with him)

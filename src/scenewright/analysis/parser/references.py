@@ -440,6 +440,8 @@ class _References:
         beside = kind in ("side of", "near", "left of", "right of")
         if not beside or not srcs or len(targets) != 1 or not self._small(*srcs):
             return targets
+        if c.head is None and self.topic[:1] == targets:
+            return targets  # "a stove stands there with a kettle on it, and ladles hang beside it": the stove
         recent = [*self.history[-3:], *c.groups]  # this clause, or the one just before the "with"
         on_it = [r[1] for r in self.relations if r[0] == "on" and r[2] == targets[0] and r[1] in recent]
         peers = [g for g in on_it if g not in srcs and self._small(g)]
