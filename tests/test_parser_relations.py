@@ -1125,3 +1125,10 @@ def test_a_thing_by_ones_own_seat_is_no_thing_in_hand_and_a_team_is_by_what_it_d
     assert ("monk_1", "side of", "bench_1") not in found
     found = rels("A carriage with two ponies waits by the gate.")
     assert {("horse_1", "near", "cart_1"), ("horse_2", "near", "cart_1")} <= found
+
+
+def test_what_is_on_an_animals_own_part_is_on_the_animal():
+    assert ("bell_1", "on", "dog_1") in rels("A big hound with a bell on its collar sleeps by the door.")
+    # a person's with-part: "its back" is a thing's that has one
+    found = rels("The wizard dozes in an armchair by the fireplace, with an owl perched on its back.")
+    assert ("owl_1", "on", "armchair_1") in found

@@ -1436,7 +1436,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             list(c.head) if c.head is not None else self._pronoun(target, c, who + own, prefer, kind, others=path)
         )
         # (a scarecrow or a mannequin has a person's shape but is "it")
-        owner = c.head is not None and c.head == [c.each]
+        # ("a hound with a bell on its collar": an animal's own part is its, not something else's)
+        own_part = part is not None and c.head is not None and all(
+            self._living(h) and not self._person_at(h) for h in c.head
+        )
+        owner = c.head is not None and (c.head == [c.each] or own_part)
         if c.head is not None and not owner and all(self._living(h) and self.groups[h].category == "figure" or (
             self._living(h) and self.catalogue[self.groups[h].category].shape != "figure"
         ) for h in c.head):  # fmt: skip
