@@ -1132,3 +1132,11 @@ def test_what_is_on_an_animals_own_part_is_on_the_animal():
     # a person's with-part: "its back" is a thing's that has one
     found = rels("The wizard dozes in an armchair by the fireplace, with an owl perched on its back.")
     assert ("owl_1", "on", "armchair_1") in found
+
+
+def test_above_them_is_above_living_things_when_no_thing_of_the_sentence_fits():
+    found = rels("Two boats sit by the shed. Pigeons perch along the fence, and a lantern hangs above them.")
+    assert ("lantern_1", "above", "bird_1") in found and ("lantern_1", "above", "boat_1") not in found
+    # a thing of the sentence first ("ladles hang from the ceiling above it": the stove, not the bear)
+    found = rels("A bear stirs a pot on the stove, and ladles hang from the ceiling above it.")
+    assert ("ladle_1", "above", "stove_1") in found

@@ -311,15 +311,18 @@ class _References:
 
         # what a living thing watches is first a living thing ("a fox sits on the drum, watching them")
         watcher = kind == "face to" and bool(srcs) and all(self._living(g) for g in srcs)
-        # what hangs or stands above "it" is above a thing first ("a bear stirs a pot on the stove,
-        # and ladles hang from the ceiling above it": the stove)
-        overhead = kind in ("above", "over")
-        # what stands "under it" is under something taller ("a tractor drives towards a crane, and
-        # a truck waits under it": the crane, not the tractor)
-        tallest = max((self.groups[g].size[2] for g in srcs), default=0.0) if kind == "under" else 0.0
         # what is "at the foot of it" is at the foot of a thing this sentence names (a tree, a tower),
         # not of an animal ("a goat grazes by an apple tree, and chickens scratch at the foot of it")
         local = {*self.history[self._sentence_from :], *c.groups}
+        # what hangs or stands above "it" is above a thing of this sentence first ("a bear stirs a pot on
+        # the stove, and ladles hang from the ceiling above it": the stove; "pigeons perch along the
+        # fence, and a flag flaps above them": the pigeons, not boats of a sentence before)
+        overhead = kind in ("above", "over") and any(
+            g in local and not self._living(g) and (self.groups[g].count > 1) == plural for g in recent
+        )
+        # what stands "under it" is under something taller ("a tractor drives towards a crane, and
+        # a truck waits under it": the crane, not the tractor)
+        tallest = max((self.groups[g].size[2] for g in srcs), default=0.0) if kind == "under" else 0.0
         footed = kind == "foot of" and any(
             g in local and not self._living(g) and (self.groups[g].count > 1) == plural for g in recent
         )
