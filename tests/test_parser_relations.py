@@ -1140,3 +1140,9 @@ def test_above_them_is_above_living_things_when_no_thing_of_the_sentence_fits():
     # a thing of the sentence first ("ladles hang from the ceiling above it": the stove, not the bear)
     found = rels("A bear stirs a pot on the stove, and ladles hang from the ceiling above it.")
     assert ("ladle_1", "above", "stove_1") in found
+
+
+def test_what_several_hold_between_them_does_not_move_them():
+    found = rels("The captain stands at the wheel. Behind him, two sailors hold up a banner between them.")
+    assert ("sailor_1", "behind", "captain_1") in found and ("flagpole_1", "on", "sailor_1") in found
+    assert not any(s.startswith("sailor") and r in ("left of", "right of") for s, r, _ in found), found

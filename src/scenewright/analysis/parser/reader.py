@@ -1251,6 +1251,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     return end  # "a woman with clippers in her hand": no object named in hand, none placed
                 if lifted:
                     return end  # held over one's own head: in hand, nothing more
+                if in_hand and kind == "between" and target == "them" and all(self.groups[h].count > 1 for h in srcs):
+                    return end  # "two porters hold up a portrait between them": in their hands, no place of theirs
                 named = any(w not in _STOP and w[:1].isalpha() for w in gap)
                 if named and not closed and p.part is not None and target in ("it", "them"):
                     return end  # "a stall ..., with a cash tin on its counter": what is on its own part is no object
