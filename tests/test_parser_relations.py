@@ -1146,3 +1146,8 @@ def test_what_several_hold_between_them_does_not_move_them():
     found = rels("The captain stands at the wheel. Behind him, two sailors hold up a banner between them.")
     assert ("sailor_1", "behind", "captain_1") in found and ("flagpole_1", "on", "sailor_1") in found
     assert not any(s.startswith("sailor") and r in ("left of", "right of") for s, r, _ in found), found
+
+
+def test_who_climbs_down_or_up_a_thing_is_on_it():
+    assert ("elf_1", "on", "ladder_1") in rels("Three elves climb down a ladder from the loft.")
+    assert ("boy_1", "on", "ladder_1") in rels("Two boys climb up a rope ladder to the tree house.")
