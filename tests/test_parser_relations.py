@@ -1151,3 +1151,10 @@ def test_what_several_hold_between_them_does_not_move_them():
 def test_who_climbs_down_or_up_a_thing_is_on_it():
     assert ("elf_1", "on", "ladder_1") in rels("Three elves climb down a ladder from the loft.")
     assert ("boy_1", "on", "ladder_1") in rels("Two boys climb up a rope ladder to the tree house.")
+
+
+def test_aiming_a_thing_at_someone_faces_them():
+    found = rels("Three goblins creep up the hill. A guard aims a crossbow at them from the tower.")
+    assert {("guard_1", "face to", "goblin_1"), ("crossbow_1", "on", "guard_1")} <= found
+    assert ("guard_1", "near", "goblin_1") not in found
+    assert ("man_1", "near", "table_1") in rels("A man sits at the table.")  # "at" a thing stays at it

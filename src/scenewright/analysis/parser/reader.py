@@ -1122,6 +1122,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             kind = "no relation"  # "two men face each other across the bench": the bench is between them
         if kind == "face to" and self._across_from(rel.start, end):
             kind = "opposite"  # "a sofa faces the piano from across the room", "Across the street, a kiosk faces the shelter"
+        verb = self._acting_verb(rel.start) if kind == "at" else None
+        if verb is not None and _phrase_table().get((verb, toks[rel.start].text)) == "face to":
+            kind = "face to"  # "aims a crossbow at them", "shouts a warning at them": as "aims at them"
         # ("hens around her feet" stay around her; "a surfboard under his arm", "an axe across his
         # knees", "a bag over her shoulder", "a snake around his neck" are carried)
         carried = ("on", "on top", "in", "under", "over", "around", "no relation", "on a carrier")
@@ -1277,6 +1280,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             srcs = list(c.deeds[-1][0])  # "two children feed ducks from a footbridge": the children are on it
         if kind == "from" and not any(self._living(g) for g in srcs):
             # "a guard waves a flag from the tower": the one who waves is up there
+            srcs = [g for g in c.subjects if self._living(g)] or srcs
+        if kind == "face to" and rel.kind == "at":  # "a guard aims a crossbow at them": the guard faces them
             srcs = [g for g in c.subjects if self._living(g)] or srcs
         p.kind, p.srcs = kind, srcs
         return None
