@@ -48,7 +48,9 @@ Decisions worth knowing:
   that are no seats cover the four sides between them, the first at corners ("two children run
   around the well"); one thing "around" another is ``near`` it, unless it moves (a person, an
   animal, a vehicle: "a dog runs around the tree"), which takes a corner, facing it; ``from A to
-  B`` → between A and B; a person, an animal or a vehicle going ``towards`` a thing faces it, unless
+  B`` → between A and B; ``before`` ("kneels before her") → in front of + face to; ``followed by`` /
+  ``chased by`` → the follower behind; ``from high above`` → above the last target ("films the balloons
+  from high above": facing them too); a person, an animal or a vehicle going ``towards`` a thing faces it, unless
   the verb moves an object there ("pushes a cart toward the kiosk"); X ``towing`` / ``pulling`` Y →
   Y behind X, and the next phrase places X ("a pony pulls a cart between two shafts"); what
   turns or spins ``above`` a thing is aloft ("a hologram turns above the table"); ``across`` a

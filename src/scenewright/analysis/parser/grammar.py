@@ -29,11 +29,13 @@ _HOLDER_KINDS = ("on", "at", "in", "between", "under")
 #: Phrase kinds read as one of the scene's relations whatever they join ("benches along the fence"
 #: stand by it, parallel to it on either face, not off one of its ends as "side of" would put them;
 #: one who "talks to" someone stands with them, as the annotated sets read it, not turned to them).
-_KIND_RELATION = {"left": "left of", "right": "right of", "flank elliptic": "flank", "hanging from": "above",
-                  "leaning on": "side of", "along": "near", "talking to": "near"}  # fmt: skip
+_KIND_RELATION = {"left": "left of", "right": "right of", "flank elliptic": "flank", "above elliptic": "above",
+                  "hanging from": "above", "leaning on": "side of", "along": "near", "talking to": "near"}  # fmt: skip
 #: Phrase kinds that place their target by the thing before them ("a desk flanked by two lamps",
-#: "a snowmobile towing a sled": the sled behind it), and the relation the target gets.
-_REVERSED = {"flanked by": "flank", "surrounded by": "around", "near by": "near", "on by": "on", "towing": "behind"}
+#: "a snowmobile towing a sled": the sled behind it; "passengers, followed by porters": the porters
+#: behind them), and the relation the target gets.
+_REVERSED = {"flanked by": "flank", "surrounded by": "around", "near by": "near", "on by": "on", "towing": "behind",
+             "followed by": "behind"}  # fmt: skip
 #: Seat shapes: what is "at" a desk or a table faces it from the front.
 _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
 

@@ -77,7 +77,9 @@ class _Hands:
         j = k - 1
         while j >= 0 and k - j <= 5 and self.toks[j].text not in (",", ".", ";", "and", "while"):
             w = self.toks[j].text
-            if j in self.rel_at or (held and j in self.by_start and self._hand_object(j, k) is not None):
+            # (a verb of looking opens a phrase of its own and still acts: "films it on a tablet")
+            looking = j in self.rel_at and self.rel_at[j].kind == "face to" and _is_verb(w)
+            if j in self.rel_at and not looking or (held and j in self.by_start and self._hand_object(j, k) is not None):
                 return None
             verb = self._participle_at(j) or self._finite_at(j) or (_is_verb(w) and w not in _STOP)
             if verb and j not in self.named_at:
@@ -198,7 +200,10 @@ class _Hands:
         return False
 
     def _placed_by_pronoun(self, end: int, ce: int) -> bool:
-        """A phrase right after a thing places it by "it" or "them" ("a kettle on it")."""
+        """A phrase right after a thing, or after the list it opens, places it by "it" or "them" ("a
+        kettle on it", "with an inkwell and three quills on it")."""
+        while end < ce and self.toks[end].text in (",", "and") and (m := self._next_mention(end + 1, ce)) is not None:
+            end = m.end
         rel = self.rel_at.get(end)
         return rel is not None and rel.end < ce and self.toks[rel.end].text in ("it", "them", "its", "their")
 

@@ -1775,12 +1775,15 @@ def _does_what_people_do(toks: list[_Tok], k: int) -> bool:
 
 def _after_preposition(toks: list[_Tok], head: int) -> bool:
     """The noun phrase ending at ``head`` follows a preposition ("on the bank", "behind the old
-    mill"): the object of a place phrase, which a comma after it closes."""
+    mill"), or is joined by "and" / "or" to one that does ("between the desk and the table"): the
+    object of a place phrase, which a comma after it closes."""
     j = head - 1
     while j >= 0 and head - j <= 4 and (toks[j].text in _DETERMINERS or (
         toks[j].text[:1].isalpha() and toks[j].text not in _STOP
     )):
         j -= 1
+    if j >= 1 and toks[j].text in ("and", "or") and toks[j - 1].text[:1].isalpha() and toks[j - 1].text not in _STOP:
+        return _after_preposition(toks, j - 1)
     return j >= 0 and toks[j].text in _STOP and toks[j].text not in _DETERMINERS and toks[j].text[:1].isalpha() and (
         toks[j].text not in ("and", "or", "but", "while", "where", "which", "who", "that", "as", "than")
     )

@@ -146,7 +146,9 @@ class _Clause:
     expect_new: bool = False
     groups: list[int] = field(default_factory=list)
     main_groups: list[int] = field(default_factory=list)
-    fronted: list[tuple[str, list[int], bool]] = field(default_factory=list)
+    #: Phrases opening the clause before its subject: (kind, targets, one per member, the members
+    #: of the target meant: "Between the second and the third, a miner kneels").
+    fronted: list[tuple[str, list[int], bool, tuple[int | None, ...]]] = field(default_factory=list)
     last_kind: str = ""
     #: The clause opens with a noun phrase the catalogue does not know ("a small ice rink lies...").
     unknown_subject: bool = False
@@ -446,7 +448,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._sentence_from = sentence_from
             prev_subject: list[int] = []
             self.doers = []
-            pending: list[tuple[str, list[int]]] = []
+            pending: list[tuple[str, list[int], tuple[int | None, ...]]] = []
             last_rels: list[tuple[str, list[int]]] = []
             clauses = self._merge_lists(sentence)
             for ci, (cs, ce) in enumerate(clauses):
@@ -460,23 +462,25 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 self._clause(c, cs, ce, self._who_after(cs) or prev_subject)
                 if c.fronted:
                     srcs = c.main_groups
-                    targets_all = {t for _, ts, _ in c.fronted for t in ts}
+                    targets_all = {t for _, ts, _, _ in c.fronted for t in ts}
                     srcs = [g for g in srcs if g not in targets_all]
                     if srcs:
-                        for kind, targets, each in c.fronted:
+                        for kind, targets, each, members in c.fronted:
                             if each:  # "beside every table stand two chairs"
                                 self._per_each(srcs[:1], targets[0])
                             for t in targets:
-                                self._relate(kind, self._beneath(kind, srcs, before), t)
-                        c.rels = [(kind, targets) for kind, targets, _ in c.fronted]
+                                for one in members:
+                                    self._relate(kind, self._beneath(kind, srcs, before), t, instance=one)
+                        c.rels = [(kind, targets) for kind, targets, _, _ in c.fronted]
                     else:
-                        pending = [(kind, targets) for kind, targets, _ in c.fronted]
+                        pending = [(kind, targets, members) for kind, targets, _, members in c.fronted]
                 elif pending and c.main_groups:
                     # "Around it, toadstools and crystals glitter": every coordinated subject
                     subjects = c.subjects or c.main_groups[:1]
-                    for kind, targets in pending:
+                    for kind, targets, members in pending:
                         for t in targets:
-                            self._relate(kind, self._beneath(kind, subjects, before), t)
+                            for one in members:
+                                self._relate(kind, self._beneath(kind, subjects, before), t, instance=one)
                     pending = []
                 elif not c.produced and c.groups and last_rels and not standalone and self._is_list(cs, ce, strict=True):
                     # "On the desk there is a lamp, a laptop and a mug": the list shares the relation
@@ -949,6 +953,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             k for k in range(start, ce)
             if (k in self.by_start and k not in self.content_at) or self.toks[k].text in pronouns
         ]  # fmt: skip
+        # "and between the second and the third a farmer kneels": two of a row named before, no noun
+        words = [t.text for t in self.toks[start : start + 5] if t.text != "the"]
+        pair = len(words) >= 3 and words[0] in _ORDINALS and words[1] == "and" and words[2] in _ORDINALS
+        if pair and not any(k in self.by_start for k in range(start, start + 5)):
+            named.append(start)
         return len(named) >= 2 or not any(_is_verb(t.text) for t in self.toks[start:ce])
 
     def _do_deeds(self, c: _Clause) -> None:
@@ -1054,6 +1063,18 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     self._relate("on", [g], h)
                     c.produced = True
                     continue
+                if not (c.hold or placed) and self._carrier(g, ("vehicles",)) and self._carrier(h, ("vehicles", "mounts")):
+                    # "a snowmobile with a trailer", "a pony with a cart": the load behind what pulls it
+                    self._relate("behind", [g], h)
+                    self.towed[h] = g
+                    c.produced = True
+                    continue
+                if not (c.hold or placed) and self._living(g) and self._carrier(g, ("mounts",)) and (
+                    self._carrier(h, ("vehicles",))
+                ):  # "a stagecoach with four horses": the team that draws it is by it
+                    self._relate("near", [g], h)
+                    c.produced = True
+                    continue
                 if c.hold or held or (rests == "surface" and self.catalogue[self.groups[h].category].support):
                     self._relate("on", [g], h, instance=1 if g in c.others and self.groups[h].count > 1 else None)
                     c.produced = True
@@ -1087,15 +1108,19 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         stacked = any(r.end == rel.start and r.kind == "stack" for r in self.rel_at.values())
         if kind == "near" and toks[rel.start].text == "against" and stacked:
             kind = "side of"  # "drums are stacked against the hut": the stack rests on its side
+        # "between the first and second car", "between the last two carts": two of one group (read
+        # before the target, which would make "the last two carts" two new carts)
+        pair = self._ordinal_pair(rel.end, ce) if kind == "between" else None
         # "To her left a globe sits": the possessive is the target, the noun after the subject
-        if kind in _OWN_SIDES:  # (no target read: nothing of the last one's parts carries over)
+        if kind in _OWN_SIDES or pair is not None:  # (no target read: nothing of the last one's parts carries over)
             self._body_part = self._part = None
             self._parts_each = 0
-        target, end = self._target_at(rel.end, ce) if kind not in _OWN_SIDES else (None, rel.end)
+        own = kind in _OWN_SIDES or pair is not None
+        target, end = self._target_at(rel.end, ce) if not own else (None, rel.end)
         if kind in ("on", "at") and target is None and (side := self._owners_side(rel.end, ce)) is not None:
             kind, target, end = side  # "a cart is on the artist's right": right of the artist
-        ordinals: tuple[int, int] | None = None  # "between the first and second car": two of one group
-        if kind == "between" and target is None and (pair := self._ordinal_pair(rel.end, ce)) is not None:
+        ordinals: tuple[int, int] | None = None
+        if pair is not None:
             group, ordinals, end = pair
             several = [group] if group is not None else self._one_of(c, c.main, prev_subject)
             target, self._target_start = several or None, -1
@@ -1107,10 +1132,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             kind = "no relation"  # "two men face each other across the bench": the bench is between them
         if kind == "face to" and self._across_from(rel.start, end):
             kind = "opposite"  # "a sofa faces the piano from across the room", "Across the street, a kiosk faces the shelter"
+        verb = self._acting_verb(rel.start) if kind == "at" else None
+        if verb is not None and _phrase_table().get((verb, toks[rel.start].text)) == "face to":
+            kind = "face to"  # "aims a crossbow at them", "shouts a warning at them": as "aims at them"
         # ("hens around her feet" stay around her; "a surfboard under his arm", "an axe across his
         # knees", "a bag over her shoulder", "a snake around his neck" are carried)
         carried = ("on", "on top", "in", "under", "over", "around", "no relation", "on a carrier")
-        if (body == "near" and kind != "around") or (body == "on" and kind in carried):
+        if (body in ("near", "side of") and kind != "around") or (body == "on" and kind in carried):
             kind = body
         elif body == "on" and kind == "at":  # "a shelf at his back": behind him, not carried
             kind, body = "behind" if any(t.text == "back" for t in toks[rel.end : end]) else "near", None
@@ -1187,6 +1215,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # (what a person holds or carries is in hand as well: "a waiter carries a tray between the tables")
             holding = c.hand or c.hold and all(self._living(h) for h in c.head)
             in_hand = holding and target not in _PERSONAL and (kind in _GROUND_KINDS or kind in _HOLDER_KINDS)
+            # ("senators sit on benches, with an amphora beside each bench": by their own seat, not in hand)
+            seats = {r[2] for r in self.relations if r[0] == "on" and r[1] in c.head}
+            if in_hand and c.wsub and isinstance(target, list) and any(t in seats for t in target):
+                in_hand = c.hand = False
             # ("with his terrier asleep under it": a living with-thing is no thing in hand, its phrase places it)
             in_hand = in_hand and not any(self._living(g) for g in c.wsub)
             # ("a groom waits with the ponies beside a shed": the groom is there, the ponies with him)
@@ -1232,6 +1264,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     return end  # "a woman with clippers in her hand": no object named in hand, none placed
                 if lifted:
                     return end  # held over one's own head: in hand, nothing more
+                if in_hand and kind == "between" and target == "them" and all(self.groups[h].count > 1 for h in srcs):
+                    return end  # "two porters hold up a portrait between them": in their hands, no place of theirs
                 named = any(w not in _STOP and w[:1].isalpha() for w in gap)
                 if named and not closed and p.part is not None and target in ("it", "them"):
                     return end  # "a stall ..., with a cash tin on its counter": what is on its own part is no object
@@ -1256,6 +1290,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             srcs = list(c.deeds[-1][0])  # "two children feed ducks from a footbridge": the children are on it
         if kind == "from" and not any(self._living(g) for g in srcs):
             # "a guard waves a flag from the tower": the one who waves is up there
+            srcs = [g for g in c.subjects if self._living(g)] or srcs
+        if kind == "face to" and rel.kind == "at":  # "a guard aims a crossbow at them": the guard faces them
             srcs = [g for g in c.subjects if self._living(g)] or srcs
         p.kind, p.srcs = kind, srcs
         return None
@@ -1331,6 +1367,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # "to its left", "to her left", "at its foot": the side of what the possessive names
             owner = next(t.text for t in toks[rel.start : rel.end] if t.text in _POSSESSED)
             kind, target = _OWN_SIDES[kind], _POSSESSED[owner]
+            # "at its feet": of what has feet (the giraffe, not the fence named after it)
+            p.part = part = next((t.text for t in toks[rel.start : rel.end] if t.text in load_vocabulary().part_owners), part)
         if kind == "on top" and target is None:
             kind = "on"
             target = "it" if c.head is not None else None
@@ -1363,8 +1401,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # "a bench sits beneath a willow on the right": a side of the scene, which the
             # willow is on, not a side of the willow ("to the right" after it stays the willow's)
             targets = []
-        elif target is None and (kind in ("left", "right", "flank elliptic") or rel.elliptic):
-            # "a bed with a nightstand on either side": a with-thing's side is its head's
+        elif target is None and (kind in ("left", "right", "flank elliptic", "above elliptic") or rel.elliptic):
+            # "a bed with a nightstand on either side": a with-thing's side is its head's ("films the
+            # tents from high above": above them)
             owner = list(c.head) if c.head is not None and srcs == c.wsub else []
             targets = list(c.last_target) or owner or [g for g in self.history[-1:] if g not in srcs]
         elif target is None:
@@ -1406,15 +1445,25 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             prefer = list(self.topic)  # "Behind them, five soldiers sit": them of the sentence before
         who = srcs or ([] if c.opens else list(prev_subject))  # "..., watching them": the subject before
         own = [t for s in who for t in c.supports.get(s, [])]
-        targets: list[int] = list(c.head) if c.head is not None else self._pronoun(target, c, who + own, prefer, kind)
+        # what one goes along is not where one goes ("tourists walk along the pier towards it": the ferry)
+        toward = any(t.text in ("toward", "towards") for t in self.toks[rel.start : rel.end])
+        path = list(c.last_target) if toward and c.last_kind == "along" else []
+        prefer = [g for g in prefer if g not in path]
+        targets: list[int] = (
+            list(c.head) if c.head is not None else self._pronoun(target, c, who + own, prefer, kind, others=path)
+        )
         # (a scarecrow or a mannequin has a person's shape but is "it")
-        owner = c.head is not None and c.head == [c.each]
+        # ("a hound with a bell on its collar": an animal's own part is its, not something else's)
+        own_part = part is not None and c.head is not None and all(
+            self._living(h) and not self._person_at(h) for h in c.head
+        )
+        owner = c.head is not None and (c.head == [c.each] or own_part)
         if c.head is not None and not owner and all(self._living(h) and self.groups[h].category == "figure" or (
             self._living(h) and self.catalogue[self.groups[h].category].shape != "figure"
         ) for h in c.head):  # fmt: skip
             # "a man on the bench, with his terrier asleep under it": "it" is no person
             # ("each camel has a bucket in front of it": the camel, as "each" made it the owner)
-            targets = self._pronoun(target, c, srcs, prefer, others=c.head)
+            targets = self._pronoun(target, c, srcs, prefer, kind, others=c.head)
         below = [r[2] for r in self.relations if c.head and r[1] in c.head and r[0] == "above"]
         if below and all(self.groups[h].rests == "hanging" for h in c.head) and not any(
             self.groups[g].rests == "hanging" for g in srcs
@@ -1443,6 +1492,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             pair = [targets[0], *other[:1]]
             targets = pair if len(pair) == 2 and all(self.groups[g].count == 1 for g in pair) else targets
         candidates = [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)]
+        if target == "it":  # ("two goats graze at its feet": one thing's, not theirs)
+            candidates = [g for g in candidates if self.groups[g].count == 1]
         targets = self._part_owner(part, targets, candidates, srcs)
         if c.head is None and target in ("it", "them") and part is None and kind in ("in", "on", "from"):
             targets = self._seat(c, srcs, prefer, rel.start, target == "them", kind == "in") or targets
@@ -1487,7 +1538,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return end  # "Across the bridge, a troll waits": on its far side, no place of the layout
         if starts_with_rel and c.opens and not c.produced and isinstance(targets, list) and targets:
             tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
-            c.fronted.append((kind, targets, tm is not None and tm.each))
+            c.fronted.append((kind, targets, tm is not None and tm.each, p.ordinals or (None,)))
             if isinstance(target, list):  # "On a mound behind the giraffes, ...": the mound is behind them
                 c.last_target, c.last_target_end, c.last_kind = targets, end, kind
             return end
@@ -1628,8 +1679,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         """Whether a phrase after "a person sits on X" places the person, not X: what the person
         faces after any target ("kneels at a low table across from the vats", "ponies tied to a
         fence across from the caravans"), where the person works ("sits on a stool at a
-        workbench"), and after a seat, what the person sits between, under, behind or at the foot
-        of ("in folding chairs between them", "rest on a bench at the foot of a cross", "lounges in
+        workbench"), after a seat or a perch what the person is between ("in folding chairs between
+        them", "stands on a platform between the first two"; "dozes on a cushion between the rack and
+        the stove" places the cushion), and after a seat, what the person sits under, behind or at the
+        foot of ("rest on a bench at the foot of a cross", "lounges in
         an armchair behind the desk": one works behind a desk as at it; but "a cat naps in a basket
         at the foot of the stove" places the basket); after "under", what one sits on ("sits
         beneath the bridge on a boulder"). Beside, near, in front of place the seat ("a
@@ -1643,7 +1696,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if c.last_kind not in ("on", "in", "on top"):
             return False
         seat = all(self.catalogue[self.groups[g].category].shape in _SEATS for g in c.last_target)
-        return kind == "at" or (seat and kind in ("between", "under", "behind", "foot of"))
+        perch = all(self._carrier(g, ("perches",)) for g in c.last_target)
+        return kind == "at" or ((seat or perch) and kind == "between") or (seat and kind in ("under", "behind", "foot of"))
 
     @staticmethod
     def _describes(words: list[str], after_verb: bool) -> bool:

@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 from scenewright.analysis.parser.grammar import (
     _BUILDING_PARTS,
     _ENCLOSURES,
+    _FLAT_HOLDERS,
     _GROUND_KINDS,
     _OPPOSITE_SIDES,
     _OWNER_PARTS,
@@ -17,8 +18,10 @@ from scenewright.analysis.parser.grammar import (
     _ROOFED_VEHICLES,
 )
 from scenewright.analysis.parser.nouns import _HOLDING_PARTS, _PLACING_VERBS, _is_plural, _position_adjective
+from scenewright.analysis.parser.support import usual_host
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import (
+    ORDINALS,
     _DETERMINERS,
     _NUMBERS,
     _ORDINALS,
@@ -87,6 +90,9 @@ class _References:
                 if g >= 0 and self._living(g):  # "on the lap of her father": on him, as "on her lap"
                     self._body_part = self._part_of_one(pos, m.start)
                 part = toks[m.end].text if m.end < ce and toks[m.end - 1].text.endswith("'s") else ""
+                if g >= 0 and self._living(g) and part in load_vocabulary().body_parts:
+                    self._body_part = load_vocabulary().body_parts[part]
+                    return [g], m.end + 1  # "on her father's shoulders": on him, as "on his shoulders"
                 if singular(part) in (*_BUILDING_PARTS, *perch):  # (a perch's: "drink from the fountain's rim")
                     self._part = singular(part)
                     return ([g] if g >= 0 else None), m.end + 1  # "on the diner's roof": by the diner, on its roof
@@ -209,8 +215,8 @@ class _References:
         if k + 1 >= ce or toks[k].text not in _PERSON_POSSESSIVES:
             return None
         j = k + 1
-        while j < ce - 1 and j - k <= 2 and load_vocabulary().is_adjective(toks[j].text):
-            j += 1  # "at her tiny feet"
+        while j < ce - 1 and j - k <= 2 and load_vocabulary().is_adjective(toks[j].text) and not toks[j].text.endswith("'s"):
+            j += 1  # "at her tiny feet" (not "on her father's shoulders": the father's)
         part = toks[j].text if j < ce else ""
         relation = load_vocabulary().body_parts.get(part)
         if relation is None or j in starts:  # "on her back porch": a thing named, not a part
@@ -295,21 +301,28 @@ class _References:
         # what someone has in hand goes where they go: nothing stands by "it" ("a man holds a rope, and a
         # dog barks at the swans gliding alongside it": the boat)
         in_hand = {g for g, _ in self.carried} if kind in _GROUND_KINDS else set()
+        # nor is anything set "on it" but on a tray ("the chief reads a logbook at his desk; a radio
+        # crackles on it": the desk)
+        if kind in ("on", "on top"):
+            in_hand = {g for g, _ in self.carried if self.groups[g].category not in _FLAT_HOLDERS}
 
         def aside(g: int) -> bool:
             return (big and self._small(g) and g in tabletop) or g in in_hand
 
         # what a living thing watches is first a living thing ("a fox sits on the drum, watching them")
         watcher = kind == "face to" and bool(srcs) and all(self._living(g) for g in srcs)
-        # what hangs or stands above "it" is above a thing first ("a bear stirs a pot on the stove,
-        # and ladles hang from the ceiling above it": the stove)
-        overhead = kind in ("above", "over")
-        # what stands "under it" is under something taller ("a tractor drives towards a crane, and
-        # a truck waits under it": the crane, not the tractor)
-        tallest = max((self.groups[g].size[2] for g in srcs), default=0.0) if kind == "under" else 0.0
         # what is "at the foot of it" is at the foot of a thing this sentence names (a tree, a tower),
         # not of an animal ("a goat grazes by an apple tree, and chickens scratch at the foot of it")
         local = {*self.history[self._sentence_from :], *c.groups}
+        # what hangs or stands above "it" is above a thing of this sentence first ("a bear stirs a pot on
+        # the stove, and ladles hang from the ceiling above it": the stove; "pigeons perch along the
+        # fence, and a flag flaps above them": the pigeons, not boats of a sentence before)
+        overhead = kind in ("above", "over") and any(
+            g in local and not self._living(g) and (self.groups[g].count > 1) == plural for g in recent
+        )
+        # what stands "under it" is under something taller ("a tractor drives towards a crane, and
+        # a truck waits under it": the crane, not the tractor)
+        tallest = max((self.groups[g].size[2] for g in srcs), default=0.0) if kind == "under" else 0.0
         footed = kind == "foot of" and any(
             g in local and not self._living(g) and (self.groups[g].count > 1) == plural for g in recent
         )
@@ -317,10 +330,19 @@ class _References:
         # who sit on seats "around it" sit around a thing, as at a table ("two hoglets sit on stools around it")
         seated = kind == "around" and any(c.supports.get(s) for s in srcs)
 
+        # a small thing "on it" among hosts of this sentence is on one it is usually set on ("a clerk sits at
+        # a desk across from the fireplace, with an inkwell on it": the desk)
+        this_sentence = {*self.history[self._sentence_from :], *c.groups}
+        usual = [g for g in this_sentence if kind == "on" and srcs and self._small(*srcs) and self._usual_host(g, srcs)]
+
+        def likeness(g: int) -> bool:  # a scarecrow, a mannequin: "it", and what circles above it is above it
+            return self._person_at(g) and not self._human(g)
+
         def kind_fits(g: int) -> bool:
             return (
-                (not watcher or self._living(g)) and not ((overhead or seated) and self._living(g))
+                (not watcher or self._living(g)) and not ((overhead or seated) and self._living(g) and not likeness(g))
                 and self.groups[g].size[2] > tallest and not (footed and (self._living(g) or g not in local))
+                and not (usual and g in this_sentence and g not in usual)
             )  # fmt: skip
 
         # the members, not what each of them has ("six cows, each hooked up to a pump. The farmer
@@ -337,6 +359,12 @@ class _References:
                     return [g]
         # "them" after two single things ("an armchair ... a bookcase ..., between them")
         return list(dict.fromkeys(recent))[:2] if plural else []
+
+    def _usual_host(self, g: int, things: list[int]) -> bool:
+        """Whether ``g`` is a host these things are usually set on (:func:`.support.usual_host`)."""
+        return self.catalogue[self.groups[g].category].support and all(
+            usual_host(self.groups[g].category, self.groups[t].category) for t in things
+        )
 
     def _part_owner(self, part: str | None, targets: list[int], candidates: list[int], srcs: list[int]) -> list[int]:
         """The owner of a part named with "its" ("an owl perched on its back"): what the pronoun
@@ -375,9 +403,13 @@ class _References:
     def _one_of(self, c: _Clause, srcs: list[int], prev_subject: list[int]) -> list[int]:
         """The group "the tallest one", "the nearest one" picks from: the subject of this clause
         or the one before when it is several ("three stalls ..., and a drone hovers above the
-        nearest one"), else the latest group of several mentioned."""
+        nearest one"), else the latest group of several mentioned; not what each of a group has
+        ("five racers wait, each with a pilot in its seat. A marshal stands between the first two":
+        the racers)."""
         order = [*c.subjects, *prev_subject, *reversed(c.groups), *reversed(self.history)]
-        return next(([g] for g in order if g not in srcs and self.groups[g].count > 1), [])
+        apiece = {g for g, _ in self.pair_each}
+        several = [g for g in order if g not in srcs and self.groups[g].count > 1]
+        return next(([g] for g in several if g not in apiece), several[:1])
 
     def _person(self, c: _Clause, srcs: list[int], word: str) -> list[int]:
         """Whom "him" / "her" (or "their" before a body part) names: the clause's own living
@@ -398,10 +430,12 @@ class _References:
                 and (word != "them living" or group.count > 1)
             )  # fmt: skip
 
-        # "her dachshund naps in a hatbox beside her": a person before an animal the text calls "her"
-        return next(([g] for g in order if fits(g) and self._person_at(g)), []) or next(
-            ([g] for g in order if fits(g)), []
-        )
+        # "her dachshund naps in a hatbox beside her": a person before an animal the text calls "her";
+        # a robot the text calls "him" is one ("a robot DJ works the decks, a speaker either side of him")
+        def personal(g: int) -> bool:
+            return self._person_at(g) or self.catalogue[self.groups[g].category].shape == "robot"
+
+        return next(([g] for g in order if fits(g) and personal(g)), []) or next(([g] for g in order if fits(g)), [])
 
     def _peer(self, kind: str, srcs: list[int], targets: list[int], c: _Clause) -> list[int]:
         """A small thing beside "it", where "it" came out as a host with a small thing just
@@ -409,6 +443,8 @@ class _References:
         beside = kind in ("side of", "near", "left of", "right of")
         if not beside or not srcs or len(targets) != 1 or not self._small(*srcs):
             return targets
+        if c.head is None and self.topic[:1] == targets:
+            return targets  # "a stove stands there with a kettle on it, and ladles hang beside it": the stove
         recent = [*self.history[-3:], *c.groups]  # this clause, or the one just before the "with"
         on_it = [r[1] for r in self.relations if r[0] == "on" and r[2] == targets[0] and r[1] in recent]
         peers = [g for g in on_it if g not in srcs and self._small(g)]
@@ -425,20 +461,27 @@ class _References:
         return None if owner is None else (f"{toks[k + 1].text} of", [owner], k + 2)
 
     def _ordinal_pair(self, pos: int, ce: int) -> tuple[int | None, tuple[int, int], int] | None:
-        """"(between) the first and second ramp", "the first and the last car": the group the noun
-        names back, the two ordinals, and where the noun ends; no group when no noun follows
-        ("between the second and the third": of the row named before)."""
+        """"(between) the first and second ramp", "the first and the last car", "the last two
+        carts": the group the noun names back, the two ordinals, and where the noun ends; no group
+        when no noun follows ("between the second and the third", "between the first two": of the
+        row named before)."""
         toks = self.toks
         k = pos + (pos < ce and toks[pos].text == "the")
-        if k + 2 >= ce or toks[k].text not in _ORDINALS or toks[k + 1].text != "and":
-            return None
-        j = k + 2 + (toks[k + 2].text == "the")
-        if j >= ce or toks[j].text not in _ORDINALS:
-            return None
-        ordinals = (_ORDINALS[toks[k].text], _ORDINALS[toks[j].text])
+        if k + 1 < ce and (toks[k].text in ORDINALS or toks[k].text == "last") and toks[k + 1].text == "two":
+            first = _ORDINALS[toks[k].text]
+            j, ordinals = k + 1, ((first, first + 1) if first >= 0 else (first - 1, first))
+        else:
+            if k + 2 >= ce or toks[k].text not in _ORDINALS or toks[k + 1].text != "and":
+                return None
+            j = k + 2 + (toks[k + 2].text == "the")
+            if j >= ce or toks[j].text not in _ORDINALS:
+                return None
+            ordinals = (_ORDINALS[toks[k].text], _ORDINALS[toks[j].text])
         after = toks[j + 1].text if j + 1 < ce else "."
         verb = j + 1 not in self.by_start and (after.endswith("ing") or _is_verb(after))
-        if not after[:1].isalpha() or verb:  # ("between the second and the third holding a lamp")
+        # ("between the second and the third holding a lamp"; "... and between the second and the
+        # third a farmer kneels": an article opens the subject, no noun of the pair)
+        if not after[:1].isalpha() or verb or after in ("a", "an"):
             return None, ordinals, j + 1
         m = next((self.by_start[i] for i in range(j + 1, min(ce, j + 4)) if i in self.by_start), None)
         if m is None:

@@ -44,6 +44,12 @@ _GENERAL_HOSTS = frozenset({
 })  # fmt: skip
 
 
+def usual_host(host: str, thing: str) -> bool:
+    """Whether a thing of category ``thing`` is usually set on a ``host``: a general host, or one
+    its preferences name (a candle on a fireplace; an inkwell on a desk, not on a fireplace)."""
+    return host in _GENERAL_HOSTS or host in _SUPPORT_PREFERENCE.get(thing, ())
+
+
 def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation], catalogue) -> list[ParsedRelation]:
     """Surface things with no stated support go on the best support present; hanging things
     with no stated target hang above the nearest-mentioned large object."""
@@ -75,7 +81,7 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
                 s for s in supports
                 if s.id != obj.id and s.id not in partners.get(obj.id, ())
                 and s.size[0] >= obj.size[0] * 0.9 and s.size[1] >= obj.size[1] * 0.9
-                and (s.category in _GENERAL_HOSTS or s.category in prefs)
+                and usual_host(s.category, obj.category)
             ]  # fmt: skip
             if obj.id in beside:
                 host = beside[obj.id]  # the partner's host, or the ground by it

@@ -222,6 +222,7 @@ def _validate(raw: dict) -> Vocabulary:
         body_parts={
             **{w: "on" for w in people.get("body_parts_on", ())},
             **{w: "near" for w in people.get("body_parts_near", ())},
+            **{w: "side of" for w in people.get("body_parts_beside", ())},  # "his helmet at his side"
         },
         part_owners={k: frozenset(v) for k, v in raw.get("part_owners", {}).items() if k != "about"},
         person_verbs=frozenset(raw.get("person_verbs", ())),
