@@ -136,8 +136,12 @@ class _Hands:
     def _bearer_before(self, k: int) -> int | None:
         """The person named right before a participle of holding or use at ``k``, with no comma
         between: the one who holds ("ducks gather around a boy holding a loaf": the boy's, not the
-        ducks'; "..., holding a lamp" after a comma is the subject's)."""
+        ducks'; "..., holding a lamp" after a comma is the subject's); the thing a relative pronoun
+        right before a verb of holding follows ("a post that holds a lantern")."""
         w = self.toks[k].text
+        if w in _HOLD and k > 0 and self.toks[k - 1].text in ("that", "which") and k - 1 in self.ends:
+            # "skaters glide around a pillar that holds up a disco ball": the pillar bears it
+            return next((m.group for m in self.by_start.values() if m.end == k - 1 and m.group >= 0), None)
         if not (w.endswith("ing") and w in _DEED_VERBS) or k not in self.ends:
             return None
         named = next((m.group for m in self.by_start.values() if m.end == k and m.group >= 0), None)
@@ -198,7 +202,13 @@ class _Hands:
         return False
 
     def _placed_by_pronoun(self, end: int, ce: int) -> bool:
-        """A phrase right after a thing places it by "it" or "them" ("a kettle on it")."""
+        """A phrase right after a thing, or after the list it opens, places it by "it" or "them"
+        ("a kettle on it", "an inkwell and three quills on it")."""
+        while end < ce and self.toks[end].text in ("and", ","):
+            more = self._next_mention(end + 1, ce)
+            if more is None:
+                break
+            end = more.end
         rel = self.rel_at.get(end)
         return rel is not None and rel.end < ce and self.toks[rel.end].text in ("it", "them", "its", "their")
 
