@@ -68,8 +68,6 @@ _HUTCH_HEIGHT = 1.5
 _NARROW_TOP = 0.3
 #: Where a hung thing hangs from indoors.
 _CEILING_WORDS = ("ceiling", "ceilings", "beam", "beams", "rafter", "rafters")
-#: Words that make a thing that usually hangs (a mirror) one that stands on the floor.
-_STANDING_FORMS = ("full length", "standing", "free standing", "freestanding", "floor", "cheval")
 #: m, the least height of such a thing standing on the floor: a person sees all of themselves in it.
 _STANDING_HEIGHT = 1.6
 #: What a thing set down "on the floor" stands on: the ground itself, no host.

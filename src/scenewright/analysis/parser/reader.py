@@ -36,7 +36,6 @@ from scenewright.analysis.parser.grammar import (
     _REVERSED,
     _RIDDEN,
     _SEATS,
-    _STANDING_FORMS,
     _STANDING_HEIGHT,
     _STANDING_PARTS,
     _VESSEL_KINDS,
@@ -58,7 +57,7 @@ from scenewright.analysis.parser.nouns import (
 )
 from scenewright.analysis.parser.phrases import _Rel, _find_relations, _phrase_table
 from scenewright.analysis.parser.references import _References
-from scenewright.analysis.parser.room import WALL_UNIT_HEIGHTS
+from scenewright.analysis.parser.room import WALL_UNIT_HEIGHTS, standing_form
 from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
 from scenewright.analysis.parser.support import FLAT_HOST
 from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _split, _Tok, _tokenise
@@ -302,7 +301,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         base = stretched(scaled(m.guess.size, describing) if m.guess is not None else cat.size, describing)
         size = _apply_sizes(base, sizes) if sizes else base
         rests = m.guess.rests if m.guess is not None else cat.rests
-        if rests == "hanging" and any(f" {form} " in f" {description} " for form in _STANDING_FORMS):
+        if rests == "hanging" and standing_form(description):
             rests = "ground"  # "a full-length mirror", "a cheval mirror": stands on the floor, full height
             size = size if sizes else (size[0], size[1], max(size[2], _STANDING_HEIGHT))
         # "a candle burns on every table", no table named before: several tables, as many as an
