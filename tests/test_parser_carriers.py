@@ -359,3 +359,10 @@ def test_what_the_subject_works_after_a_fronted_surface_is_up_there_too():
 def test_a_mirror_in_a_standing_form_stands_on_the_floor():
     mirror = next(o for o in parse_scene("A tailor pins a hem in front of a full-length mirror.").objects if o.category == "mirror")
     assert mirror.rests == "ground" and mirror.size[2] >= 1.6
+
+
+def test_people_on_uncounted_ground_covers_are_on_them_one_each():
+    parsed = parse_scene("Two boys do push-ups on blankets beside the tent.")
+    blankets = [o.id for o in parsed.objects if o.category == "picnic_blanket"]
+    assert len(blankets) == 2
+    assert {(r.source, r.target) for r in parsed.relations if r.relation == "on"} >= {("boy_1", blankets[0])}

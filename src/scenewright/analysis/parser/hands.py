@@ -96,9 +96,13 @@ class _Hands:
     def _works_on(self, k: int, target) -> bool:
         """Whether a person's verb "on" a thing that carries nobody, at ``k``, is work done at it,
         not standing on it ("a chef slices bread on a board", "two mechanics work on the engine";
-        but "reads a book on the bench": a seat, "stands on a crate": a posture)."""
+        but "reads a book on the bench": a seat, "stands on a crate": a posture, "stretch on mats": a
+        cover on the ground)."""
         w = self._acting_verb(k)
-        carrier = isinstance(target, list) and target and self._carrier(target[0])
+        # (a cover on the ground carries whoever is on it: "two girls stretch on mats")
+        carrier = isinstance(target, list) and target and (
+            self._carrier(target[0]) or self.catalogue[self.groups[target[0]].category].shape == "rug"
+        )
         return w is not None and isinstance(target, list) and bool(target) and not carrier and not self._still(w)
 
     @staticmethod

@@ -1640,9 +1640,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         return end
 
     def _seats_each(self, m: _Mention) -> bool:
-        """Seats named in the plural with no count of their own, new here ("on padded stools"):
-        as many as sit on them."""
-        return self._uncounted_new(m) and self._carrier(m.group, ("seats",))
+        """Seats or ground covers named in the plural with no count of their own, new here ("on
+        padded stools", "stretch on mats"): as many as sit or lie on them."""
+        cover = m.group >= 0 and self.catalogue[self.groups[m.group].category].shape == "rug"
+        return self._uncounted_new(m) and (self._carrier(m.group, ("seats",)) or cover)
 
     def _planted(self, g: int) -> bool:
         """Several plants: each grows in a pot, tub or planter of its own."""
