@@ -290,6 +290,8 @@ def test_where_clause_after_a_platform_puts_the_living_on_it():
         # "in the back" of a vehicle this sentence names
         ("A rusty van is parked by the fence, a sleepy terrier in the back.", ("dog_1", "on", "truck_1")),
         ("A boy in the back of the jeep waves at the zebras.", ("boy_1", "on", "car_1")),
+        # birds that perch or roost along a thing are on it
+        ("A row of crows perch along the old wall of the barn.", ("crow_1", "on", "barn_1")),
         # one at a thing on a low wide perch stands on the perch too
         ("A priest stands at an altar on a low dais.", ("priest_1", "on", "dais_1")),
     ],
