@@ -368,3 +368,9 @@ def test_people_on_uncounted_ground_covers_are_on_them_one_each():
     blankets = [o.id for o in parsed.objects if o.category == "picnic_blanket"]
     assert len(blankets) == 2
     assert {(r.source, r.target) for r in parsed.relations if r.relation == "on"} >= {("boy_1", blankets[0])}
+
+
+def test_a_load_pulled_onto_the_puller_rides_it_not_behind():
+    found = rels("A recovery lorry winches a wrecked van onto its flatbed.")  # (both read as trucks)
+    assert ("truck_2", "on", "truck_1") in found
+    assert not any(r[1] == "behind" for r in found)

@@ -1499,6 +1499,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         head = p.srcs or list(prev_subject)
         if kind == "towing" and isinstance(targets, list):
             targets = [t for t in targets if not self._small(t)]  # "pulls a pint": no load behind
+        # "a tow truck hauls a hatchback onto its flatbed": a load pulled onto the puller itself rides it
+        onto = kind == "towing" and [t.text for t in self.toks[p.end : p.end + 2]] in (
+            ["onto", "its"], ["onto", "it"], ["into", "its"], ["into", "it"]
+        )
+        if onto and isinstance(targets, list) and targets:
+            c.produced, c.expect_new = True, False
+            c.last_target, c.last_target_end, c.last_kind = list(targets), p.end, "on"
+            return p.end
         if isinstance(targets, list) and targets and head:
             active = _REVERSED[kind]
             if c.each is not None:  # "three tables, each surrounded by two chairs": two per table
