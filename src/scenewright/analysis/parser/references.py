@@ -227,12 +227,16 @@ class _References:
         return pos >= 2 and self.toks[pos - 2].text in load_vocabulary().postures.get("sitting", ())
 
     def _owner_of_part(self, m, ce: int) -> tuple[list[int] | str | None, int] | None:
-        """"On the ladder of the nearer one", "in the basket of the red balloon": a thing named new
-        with "the" and then "of" a thing named before is a part of that one (no object of its
-        own): the target is the owner. Not of a living owner (a body part reads its own way), nor
-        when such a thing was named before ("the ladder of the truck" after "a ladder")."""
+        """A thing named new with "the" that is a part of one named before (no object of its own):
+        the owner is the target, and where the phrase ends. "On the ladder of the nearer one" (of
+        a thing named before); "in the nearest basket" (a carrier part of a group, one member);
+        "a woman at the wheel" (a part, by ``part_owners``, of a thing this sentence names). Not a
+        living thing (a body part reads its own way), nor one named before ("the ladder" after "a
+        ladder"); None when none of these."""
         toks = self.toks
-        if not m.definite or m.group >= 0 or self._lives(m.category) or any(g.category == m.category for g in self.groups):
+        head = singular(toks[m.end - 1].text)
+        named = any(g.category == m.category and singular(g.name.split()[-1]) == head for g in self.groups)
+        if not m.definite or m.group >= 0 or self._lives(m.category) or named:
             return None
         picked = [a.lower() for a in m.adjectives if a.lower() in _ORDINALS or a.lower().endswith("est")]
         if picked and load_vocabulary().carries(m.category, m.phrase.lower(), ("containers", "seats", "vehicles")):
@@ -248,9 +252,9 @@ class _References:
             if owners:
                 self._target_start = m.start
                 self.instance[m.start] = _ORDINALS.get(picked[0], 0)
-                self._part = singular(toks[m.end - 1].text)
+                self._part = head
                 return owners[:1], m.end
-        owners = load_vocabulary().part_owners.get(singular(toks[m.end - 1].text), ())
+        owners = load_vocabulary().part_owners.get(head, ())
         if owners and (m.end >= ce or toks[m.end].text != "of"):
             # "a tractor drives past, a woman at the wheel": the part of a thing this sentence names
             stop = max((k for k in range(m.start) if toks[k].text in (".", "!", "?")), default=-1)
@@ -258,7 +262,7 @@ class _References:
             cats = [(g, self.groups[g].category) for g in here]
             have = [g for g, cat in cats if cat in owners or self.catalogue[cat].shape in owners]
             if have:
-                self._part = singular(toks[m.end - 1].text)
+                self._part = head
                 return have[-1:], m.end
         if m.end + 1 >= ce or toks[m.end].text != "of":
             return None
@@ -274,7 +278,7 @@ class _References:
         target, end = self._target_at(m.end + 1, ce)
         if not target:
             return None
-        self._part = singular(toks[m.end - 1].text)
+        self._part = head
         return target, end
 
     def _tall_perch(self, g: int) -> bool:
