@@ -1503,10 +1503,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         onto = kind == "towing" and [t.text for t in self.toks[p.end : p.end + 2]] in (
             ["onto", "its"], ["onto", "it"], ["into", "its"], ["into", "it"]
         )
-        if onto and isinstance(targets, list) and targets:
+        if onto and isinstance(targets, list) and targets and head and p.end in self.rel_at:
+            for h in head:
+                self._relate("on", targets, h)
             c.produced, c.expect_new = True, False
-            c.last_target, c.last_target_end, c.last_kind = list(targets), p.end, "on"
-            return p.end
+            c.last_target, c.last_target_end = [], -1
+            return self._target_at(self.rel_at[p.end].end, p.ce)[1]  # (past "onto its flatbed")
         if isinstance(targets, list) and targets and head:
             active = _REVERSED[kind]
             if c.each is not None:  # "three tables, each surrounded by two chairs": two per table
