@@ -137,7 +137,7 @@ class _Hands:
         m = self._next_mention(k + 1, ce)
         return m is not None and m.count <= 1 and not _is_plural(self.toks, m)
 
-    def _bearer_before(self, k: int, ce: int) -> int | None:
+    def _bearer_before(self, k: int) -> int | None:
         """The person named right before a participle of holding or use at ``k``, with no comma
         between: the one who holds ("ducks gather around a boy holding a loaf": the boy's, not the
         ducks'; "..., holding a lamp" after a comma is the subject's); the thing a relative pronoun
@@ -146,8 +146,7 @@ class _Hands:
         if w in _HOLD and k > 0 and self.toks[k - 1].text in ("that", "which") and k - 1 in self.ends:
             # "skaters glide around a pillar that holds up a disco ball": the pillar bears it
             return next((m.group for m in self.by_start.values() if m.end == k - 1 and m.group >= 0), None)
-        # (any participle whose thing is in hand: "followed by porters wheeling their luggage")
-        if not (w.endswith("ing") and (w in _DEED_VERBS or self._used_at(k, ce))) or k not in self.ends:
+        if not (w.endswith("ing") and w in _DEED_VERBS) or k not in self.ends:
             return None
         named = next((m.group for m in self.by_start.values() if m.end == k and m.group >= 0), None)
         return named if named is not None and self._person_at(named) else None

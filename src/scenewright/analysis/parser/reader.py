@@ -822,7 +822,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # ", holding a lamp": the subject before
             holder = c.main or (self.doers if participial else []) or list(prev_subject)
             # ("ducks gather around a boy holding a loaf": the person right before the participle)
-            bearer = self._bearer_before(k, ce)
+            bearer = self._bearer_before(k)
             holder = [bearer] if bearer is not None else holder
             # (a hand verb that opens a relation phrase is no holding: "waves at a passing van")
             # (an animal has in hand what it plays with or eats: "a bear bangs a spoon")
