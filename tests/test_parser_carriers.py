@@ -380,3 +380,10 @@ def test_what_one_wheels_on_a_barrow_is_on_the_barrow_not_in_hand():
     found = rels("Behind the stall, a gardener wheels a sack of soil on a barrow.")
     assert ("sack_1", "on", "barrow_1") in found
     assert not any(r[0] == "gardener_1" and r[1] == "on" for r in found)
+
+
+def test_a_bird_that_sits_on_a_branch_is_on_the_tree_named_before():
+    found = rels("A fox sleeps under an old beech tree, and a crow perches on a branch.")
+    assert ("crow_1", "on", "tree_1") in found
+    # (not without a verb of sitting: "a squirrel drops a nut on a branch" names no perch)
+    assert not any(r[0] == "squirrel_1" and r[1] == "on" for r in rels("An oak stands by the wall. A squirrel drops a nut on a branch."))

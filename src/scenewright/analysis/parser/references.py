@@ -171,6 +171,11 @@ class _References:
         if lead < ce and toks[lead].text == "the" and j == lead + 2 and singular(toks[lead + 1].text) in load_vocabulary().part_owners:
             self._part = singular(toks[lead + 1].text)
             return "the part", j  # "lies in the water": the water of the pond named before
+        if lead < ce and toks[lead].text in ("a", "an") and j == lead + 2 and self._verb_before(pos, self._posture):
+            word = singular(toks[lead + 1].text)  # "an owl sits on a branch": a branch of the tree named before
+            if word in load_vocabulary().part_owners and word in load_vocabulary().carriers.get("perches", ()):
+                self._part = word
+                return "the part", j
         return None, pos
 
     def _possessor(self, pos: int, end: int) -> int | None:
