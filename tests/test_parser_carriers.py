@@ -284,3 +284,116 @@ def test_living_things_with_a_container_are_in_it():
     found = {(r.source, r.relation, r.target) for r in parse_scene("A cage with two canaries hangs by the window.").relations}
     assert {("canary_1", "on", "cage_1"), ("canary_2", "on", "cage_1")} <= found
     assert ("dog_1", "near", "shepherd_1") in {(r.source, r.relation, r.target) for r in parse_scene("A shepherd with a dog.").relations}
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # climbing or sliding along a thing puts one on it ("climbs down from" leaves it)
+        ("A tall mast rises from the quay, and a young deckhand shins up it.", ("deckhand_1", "on", "mast_1")),
+        ("Two monkeys climb down a rope ladder beside the hut.", ("monkey_2", "on", "ladder_1")),
+        # a part named "of" a thing named before is that thing's ("the cab of the crane")
+        ("Two cranes stand by the dock, and a worker sits on the ladder of the taller one.", ("worker_1", "on", "crane_1")),
+        # a carrier part nobody named picks one of the group before ("the first basket" of the
+        # gondolas, which the catalogue reads as boats)
+        ("Four gondolas hang from the cable. A skier waits in the first basket.", ("skier_1", "on", "boat_1")),
+        # "in the back" of a vehicle this sentence names
+        ("A rusty van is parked by the fence, a sleepy terrier in the back.", ("dog_1", "on", "truck_1")),
+        ("A boy in the back of the jeep waves at the zebras.", ("boy_1", "on", "car_1")),
+        # birds that perch or roost along a thing are on it
+        ("A row of crows perch along the old wall of the barn.", ("crow_1", "on", "barn_1")),
+        # one at a thing on a low wide perch stands on the perch too
+        ("A priest stands at an altar on a low dais.", ("priest_1", "on", "dais_1")),
+    ],
+)
+def test_on_what_carries_them_by_a_part_or_a_verb_of_going(text, expected):
+    assert expected in rels(text)
+
+
+def test_a_carrier_part_of_a_group_names_no_object_of_its_own():
+    objects = [o.category for o in parse_scene("Four gondolas hang from the cable. A skier waits in the first basket.").objects]
+    assert "basket" not in objects
+
+
+def test_things_on_uncounted_stands_get_a_stand_each_as_many_as_they_come_to():
+    parsed = parse_scene("Stone sculptures rest on plinths at each corner of the cloister.")
+    stands = [o.id for o in parsed.objects if o.category == "pedestal"]
+    assert len(stands) == 4
+    assert {r.target for r in parsed.relations if r.relation == "on"} == set(stands)
+
+
+def test_a_thing_set_down_on_the_floor_goes_on_no_table():
+    parsed = parse_scene("A tailor works at a wide table. A teapot sits on the floor beside the door.")
+    assert not any(r.source == "teapot_1" for r in parsed.relations if r.relation == "on")
+
+
+def test_things_that_fill_shelves_are_on_them_and_the_shelves_take_the_next_phrase():
+    found = rels("A potter sits at her wheel. Clay jugs fill three shelves on the wall behind her.")
+    assert any(r[1] == "on" and r[2].startswith("bookshelf") for r in found)
+    assert ("bookshelf_1", "behind", "potter_1") in found
+
+
+def test_a_person_who_fills_a_thing_stands_by_it():
+    assert not any(r[0] == "girl_1" and r[1] == "on" for r in rels("A girl fills a bucket at the pump."))
+
+
+def test_a_with_list_placed_by_it_is_no_thing_in_hand():
+    found = rels("A scribe sits at a desk, with a candle and two scrolls on it.")
+    assert ("candle_1", "on", "desk_1") in found
+    assert not any(r[0] == "scribe_1" and r[1] == "on" for r in found)
+
+
+def test_on_it_after_one_who_works_at_a_thing_is_on_that_thing():
+    found = rels("A jeweller sits at a bench across from the window, polishing a ring, with a loupe and two files on it.")
+    assert {("loupe_1", "on", "bench_1"), ("file_2", "on", "bench_1")} <= found
+
+
+def test_one_at_the_wheel_of_a_vehicle_this_sentence_names_is_on_it():
+    assert ("man_1", "on", "tractor_1") in rels("A tractor rumbles up the lane, an old man at the wheel.")
+
+
+def test_a_thing_hung_in_a_tower_is_carried_by_it():
+    assert ("bell_1", "on", "tower_1") in rels("A bronze bell hangs in the old clock tower.")
+
+
+def test_a_thing_a_relative_says_holds_another_bears_it_once():
+    parsed = parse_scene("Five children dance around a maypole that holds up a paper lantern.")
+    lanterns = [o.id for o in parsed.objects if o.category == "lantern"]
+    assert len(lanterns) == 1
+    assert not any(r.source == lanterns[0] and r.target.startswith("child") for r in parsed.relations)
+
+
+def test_what_the_subject_works_after_a_fronted_surface_is_up_there_too():
+    # (a bandstand is read as a gazebo)
+    assert ("drum_kit_1", "on", "gazebo_1") in rels("On the bandstand, a bearded drummer plays a drum kit.")
+
+
+def test_a_mirror_in_a_standing_form_stands_on_the_floor():
+    mirror = next(o for o in parse_scene("A tailor pins a hem in front of a full-length mirror.").objects if o.category == "mirror")
+    assert mirror.rests == "ground" and mirror.size[2] >= 1.6
+
+
+def test_people_on_uncounted_ground_covers_are_on_them_one_each():
+    parsed = parse_scene("Two boys do push-ups on blankets beside the tent.")
+    blankets = [o.id for o in parsed.objects if o.category == "picnic_blanket"]
+    assert len(blankets) == 2
+    assert {(r.source, r.target) for r in parsed.relations if r.relation == "on"} >= {("boy_1", blankets[0])}
+
+
+def test_a_load_pulled_onto_the_puller_rides_it_not_behind():
+    found = rels("A recovery lorry winches a wrecked van onto its flatbed.")  # (both read as trucks)
+    assert ("truck_2", "on", "truck_1") in found
+    assert not any(r[1] == "behind" for r in found)
+
+
+def test_what_one_wheels_on_a_barrow_is_on_the_barrow_not_in_hand():
+    found = rels("Behind the stall, a gardener wheels a sack of soil on a barrow.")
+    assert ("sack_1", "on", "barrow_1") in found
+    assert not any(r[0] == "gardener_1" and r[1] == "on" for r in found)
+
+
+def test_a_bird_that_sits_on_a_branch_is_on_the_tree_named_before():
+    found = rels("A fox sleeps under an old beech tree, and a crow perches on a branch.")
+    assert ("crow_1", "on", "tree_1") in found
+    # (not without a verb of sitting: "a squirrel drops a nut on a branch" names no perch)
+    assert not any(r[0] == "squirrel_1" and r[1] == "on" for r in rels("An oak stands by the wall. A squirrel drops a nut on a branch."))

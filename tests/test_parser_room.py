@@ -217,3 +217,10 @@ def test_a_thing_hung_from_something_overhead_that_is_no_thing_hangs_from_the_ce
     got = {(r.source, r.relation) for r in wall_phrases(parsed)}
     assert ("floodlight_6", "on ceiling") in got
     assert not any(s.startswith("camera") or s.startswith("dolly") for s, _ in got)
+
+
+def test_a_wall_thing_named_in_a_standing_form_stands_against_the_wall():
+    standing = wall_phrases(parse_scene("A cheval mirror stands against the left wall beside the wardrobe."))
+    hung = wall_phrases(parse_scene("A round mirror hangs on the left wall."))
+    assert [r.relation for r in standing] == ["against wall"]
+    assert [r.relation for r in hung] == ["on wall"]

@@ -13,7 +13,7 @@ from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
-from scenewright.analysis.parser.room import CEILING_THINGS, WALL_THINGS
+from scenewright.analysis.parser.room import CEILING_THINGS, hangs_by_kind
 from scenewright.layout.relations import Boxes, RoomTarget, holds
 from scenewright.layout.room import FLOOR, SLACK, RoomShape, boxes_of
 from scenewright.scene import Scene
@@ -53,7 +53,7 @@ def room_metrics(scene: Scene) -> RoomMetrics | None:
     out.above_ceiling = [o.id for o, by in zip(objects, shape.above_ceiling(boxes)) if by > 0]
     out.blocked_openings = [f"{o.kind} {k} on wall_{o.wall}: {', '.join(ids)}" for k, o, ids in shape.blocked_openings(objects)]
     mounted = {c.source: c.relation for c in scene.constraints if c.relation in ("on wall", "on ceiling")}
-    wall = [o for o in objects if mounted.get(o.id) == "on wall" or (o.id not in mounted and o.category in WALL_THINGS)]
+    wall = [o for o in objects if mounted.get(o.id) == "on wall" or (o.id not in mounted and hangs_by_kind(o))]
     ceiling = [o for o in objects if mounted.get(o.id) == "on ceiling" or (o.id not in mounted and o.category in CEILING_THINGS)]
     target = RoomTarget.of(room)
     out.not_on_wall = [o.id for o in wall if not holds("on wall", Boxes.of(o), target)]

@@ -24,7 +24,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from scenewright.analysis.parser import ParsedRelation, ParsedScene
-from scenewright.analysis.parser.room import WALL_THINGS
+from scenewright.analysis.parser.room import hangs_by_kind
 from scenewright.core.catalogue import POST, POSTED, load_catalogue
 
 #: m, the least depth of a posted thing's box: the post stands behind its face.
@@ -44,7 +44,7 @@ def on_posts(parsed: ParsedScene) -> ParsedScene:
     catalogue = load_catalogue()
     hung = {r.source for r in parsed.relations if r.relation == "above" and r.inferred}
     lights = {o.id for o in parsed.objects if o.id in hung and o.category in catalogue and catalogue[o.category].shape in LIGHTS}
-    posted = {o.id for o in parsed.objects if (o.category in WALL_THINGS or o.id in lights) and o.id not in held}
+    posted = {o.id for o in parsed.objects if (hangs_by_kind(o) or o.id in lights) and o.id not in held}
     if not posted:
         return parsed
     objects = [

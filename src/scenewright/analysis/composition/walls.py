@@ -20,7 +20,7 @@ import math
 from typing import Sequence
 
 from scenewright.analysis.composition import roles
-from scenewright.analysis.parser.room import CEILING_THINGS, WALL_THINGS
+from scenewright.analysis.parser.room import CEILING_THINGS, hangs_by_kind
 from scenewright.core.relations import ABOVE, OPPOSITE_SIDES
 from scenewright.layout.relations import FLUSH, lowest_above, rest_share
 from scenewright.scene import CEILING_TARGET, ROOM_RELATIONS, ROOM_TARGET, Constraint, SceneObject
@@ -106,7 +106,7 @@ def _mounted(objects: Sequence[SceneObject], constraints: Sequence[Constraint]) 
     from the ceiling")."""
     above = {c.source for c in constraints if c.relation == "above"}
     mounted = {o.id: ("on wall", ROOM_TARGET) for o in objects
-               if o.category in WALL_THINGS or (o.id in above and _flat(o))}
+               if hangs_by_kind(o) or (o.id in above and _flat(o))}
     mounted |= {o.id: ("on ceiling", CEILING_TARGET) for o in objects if o.category in CEILING_THINGS}
     return mounted | {c.source: (c.relation, c.target) for c in constraints if c.relation in ("on wall", "on ceiling")}
 

@@ -48,6 +48,8 @@ _CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in", "from",
                 "on a carrier", "covering")  # fmt: skip
 #: Parts of a thing one stands on: "at" one is on the thing ("at its top", "at its prow", "at the stern").
 _STANDING_PARTS = ("top", "roof", "rooftop", "deck", "prow", "bow", "stern")
+#: Parts of a vehicle one steers it by: "at" one is on the vehicle ("a woman at the wheel").
+_DRIVING_PARTS = ("wheel", "helm", "tiller")
 #: Sides of a thing named by a possessive ("against its side"): the owner places.
 _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
 #: "Piled with" or "covered in" on a cart or a table is a load of things standing on it when they are
@@ -68,6 +70,10 @@ _HUTCH_HEIGHT = 1.5
 _NARROW_TOP = 0.3
 #: Where a hung thing hangs from indoors.
 _CEILING_WORDS = ("ceiling", "ceilings", "beam", "beams", "rafter", "rafters")
+#: m, the least height of such a thing standing on the floor: a person sees all of themselves in it.
+_STANDING_HEIGHT = 1.6
+#: What a thing set down "on the floor" stands on: the ground itself, no host.
+_FLOOR_WORDS = ("floor", "floorboards", "ground", "deck")
 #: Vehicles with a roof and doors of their own.
 _ROOFED_VEHICLES = ("car", "truck", "bus", "vehicle")
 #: Parts of a building that place a thing by the building itself when nothing else is named.

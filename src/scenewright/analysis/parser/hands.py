@@ -98,9 +98,13 @@ class _Hands:
     def _works_on(self, k: int, target) -> bool:
         """Whether a person's verb "on" a thing that carries nobody, at ``k``, is work done at it,
         not standing on it ("a chef slices bread on a board", "two mechanics work on the engine";
-        but "reads a book on the bench": a seat, "stands on a crate": a posture)."""
+        but "reads a book on the bench": a seat, "stands on a crate": a posture, "stretch on mats": a
+        cover on the ground)."""
         w = self._acting_verb(k)
-        carrier = isinstance(target, list) and target and self._carrier(target[0])
+        # (a cover on the ground carries whoever is on it: "two girls stretch on mats")
+        carrier = isinstance(target, list) and target and (
+            self._carrier(target[0]) or self.catalogue[self.groups[target[0]].category].shape == "rug"
+        )
         return w is not None and isinstance(target, list) and bool(target) and not carrier and not self._still(w)
 
     @staticmethod
@@ -138,8 +142,12 @@ class _Hands:
     def _bearer_before(self, k: int) -> int | None:
         """The person named right before a participle of holding or use at ``k``, with no comma
         between: the one who holds ("ducks gather around a boy holding a loaf": the boy's, not the
-        ducks'; "..., holding a lamp" after a comma is the subject's)."""
+        ducks'; "..., holding a lamp" after a comma is the subject's); the thing a relative pronoun
+        right before a verb of holding follows ("a post that holds a lantern")."""
         w = self.toks[k].text
+        if w in _HOLD and k > 0 and self.toks[k - 1].text in ("that", "which") and k - 1 in self.ends:
+            # "skaters glide around a pillar that holds up a disco ball": the pillar bears it
+            return next((m.group for m in self.by_start.values() if m.end == k - 1 and m.group >= 0), None)
         if not (w.endswith("ing") and w in _DEED_VERBS) or k not in self.ends:
             return None
         named = next((m.group for m in self.by_start.values() if m.end == k and m.group >= 0), None)

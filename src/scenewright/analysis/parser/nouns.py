@@ -732,6 +732,11 @@ def _plural_is_verb(toks: list[_Tok], s: int, nxt: tuple) -> bool:
     follow = toks[end].text if end < len(toks) else ""
     if follow in _OBJECT_OPENERS or follow in _NUMBERS:
         return True
+    j = s - 1
+    while j >= 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+        j -= 1  # (back over describing words to the article)
+    if follow in _MOTION_PARTICLES and j >= 0 and toks[j].text in ("a", "an", "another"):
+        return True  # "a trainee slides down it": no plural is the head of "a ..."
     if _counted_plural(toks, s):
         return False
     person = load_vocabulary().match(tuple(t.text for t in toks[s : nxt[0]]))
@@ -1101,7 +1106,12 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         # a counted plural before a singular known word is its subject ("two stokers shovel coal")
         subject = plural and singular(toks[head].text) != toks[head].text and j < n
         subject = subject and singular(toks[j].text) == toks[j].text
-        if j < n and j in covered and not subject:
+        # a known plural right after one thing, going on to an object or a particle of going, is
+        # its verb ("a trainee slides down it"): no plural is the head of "a ..."
+        follow = toks[j + 1].text if j + 1 < n else ""
+        verb = j < n and w in ("a", "an", "another") and singular(toks[j].text) != toks[j].text
+        verb = verb and (follow in _OBJECT_OPENERS or follow in _MOTION_PARTICLES)
+        if j < n and j in covered and not subject and not verb:
             continue  # the words before a known noun are its adjectives ("a shiny [robot]")
         word = toks[head].text
         if word.endswith("ing") and j < n and toks[j].text in _OBJECT_OPENERS:

@@ -12,8 +12,10 @@ from scenewright.analysis.parser.grammar import (
     _CEILING_WORDS,
     _CHAIN_KINDS,
     _COPULAS,
+    _DRIVING_PARTS,
     _ENCLOSURES,
     _FLAT_DEPTH,
+    _FLOOR_WORDS,
     _FORMATIONS,
     _FORMATION_NOUNS,
     _GROUND_KINDS,
@@ -34,6 +36,7 @@ from scenewright.analysis.parser.grammar import (
     _REVERSED,
     _RIDDEN,
     _SEATS,
+    _STANDING_HEIGHT,
     _STANDING_PARTS,
     _VESSEL_KINDS,
 )
@@ -54,7 +57,7 @@ from scenewright.analysis.parser.nouns import (
 )
 from scenewright.analysis.parser.phrases import _Rel, _find_relations, _phrase_table
 from scenewright.analysis.parser.references import _References
-from scenewright.analysis.parser.room import WALL_UNIT_HEIGHTS
+from scenewright.analysis.parser.room import WALL_UNIT_HEIGHTS, standing_form
 from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
 from scenewright.analysis.parser.support import FLAT_HOST
 from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _split, _Tok, _tokenise
@@ -200,6 +203,8 @@ class _Phrase:
     parts_each: int = 0
     srcs: list[int] = field(default_factory=list)
     targets: list[int] | str = field(default_factory=list)
+    #: Who stands at the thing the phrase places, on the same perch ("stands at a lectern on a stage").
+    riders: list[int] = field(default_factory=list)
 
 
 class _Reader(_Contents, _References, _Kinds, _Hands):
@@ -250,6 +255,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.topic: list[int] = []
         #: Puller → the load it pulls ("a horse pulls a plough"): what is behind the puller is behind its load.
         self.towed: dict[int, int] = {}
+        #: Stand → the things on it, one a stand, as many as they come to by the end ("busts on
+        #: pedestals at each corner": four pedestals).
+        self.one_each: dict[int, int] = {}
+        #: Living thing → what the text has it "at" (a desk, a stall): "on it" after it names that first.
+        self.worked_at: dict[int, int] = {}
 
     # ---- groups
 
@@ -293,6 +303,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         base = stretched(scaled(m.guess.size, describing) if m.guess is not None else cat.size, describing)
         size = _apply_sizes(base, sizes) if sizes else base
         rests = m.guess.rests if m.guess is not None else cat.rests
+        if rests == "hanging" and standing_form(description):
+            rests = "ground"  # "a full-length mirror", "a cheval mirror": stands on the floor, full height
+            size = size if sizes else (size[0], size[1], max(size[2], _STANDING_HEIGHT))
         # "a candle burns on every table", no table named before: several tables, as many as an
         # uncounted plural names (not what a deed is done to: "counting every sack")
         words = range(m.start - 1, max(m.start - 5, -1), -1)
@@ -465,22 +478,28 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     targets_all = {t for _, ts, _, _ in c.fronted for t in ts}
                     srcs = [g for g in srcs if g not in targets_all]
                     if srcs:
+                        worked = self._worked_there(c, srcs, before)
                         for kind, targets, each, members in c.fronted:
                             if each:  # "beside every table stand two chairs"
                                 self._per_each(srcs[:1], targets[0])
                             for t in targets:
                                 for one in members:
                                     self._relate(kind, self._beneath(kind, srcs, before), t, instance=one)
+                                if kind in ("on", "on top"):
+                                    self._relate(kind, [g for g in worked if g not in targets_all], t)
                         c.rels = [(kind, targets) for kind, targets, _, _ in c.fronted]
                     else:
                         pending = [(kind, targets, members) for kind, targets, _, members in c.fronted]
                 elif pending and c.main_groups:
                     # "Around it, toadstools and crystals glitter": every coordinated subject
                     subjects = c.subjects or c.main_groups[:1]
+                    worked = self._worked_there(c, subjects, before)
                     for kind, targets, members in pending:
                         for t in targets:
                             for one in members:
                                 self._relate(kind, self._beneath(kind, subjects, before), t, instance=one)
+                            if kind in ("on", "on top"):
+                                self._relate(kind, [g for g in worked if g != t], t)
                     pending = []
                 elif not c.produced and c.groups and last_rels and not standalone and self._is_list(cs, ce, strict=True):
                     # "On the desk there is a lamp, a laptop and a mug": the list shares the relation
@@ -504,8 +523,20 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         held = [("on", by_start[s].group, by_start[h].group, None) for s, h in self.held_of
                 if by_start[s].group >= 0 and by_start[h].group >= 0]  # fmt: skip
         self.relations[:0] = held  # before any other support the list gave them
+        for stand, things in self.one_each.items():
+            self.groups[stand].count = self.groups[things].count
         self._aboard_their_vehicle(mentions)
         self._one_per_holder()
+
+    def _worked_there(self, c: _Clause, subjects: list[int], since: int) -> list[int]:
+        """What the living subjects of a clause after a fronted surface phrase act on, which
+        nothing else places: up there with them ("On a raised platform, a robot works two
+        turntables"; "On the stage, a drummer plays a drum kit")."""
+        if not subjects or not all(self._living(g) for g in subjects):
+            return []
+        placed = {r[1] for r in self.relations[since:]}
+        acted = {t for _, t in c.deeds}
+        return [g for g in c.groups if g not in subjects and g not in placed and g in acted and not self._living(g)]
 
     def _who_after(self, cs: int) -> list[int]:
         """", who sits in the front row" right after a living thing: that one is the clause's
@@ -1119,6 +1150,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         target, end = self._target_at(rel.end, ce) if not own else (None, rel.end)
         if kind in ("on", "at") and target is None and (side := self._owners_side(rel.end, ce)) is not None:
             kind, target, end = side  # "a cart is on the artist's right": right of the artist
+        if toks[rel.start].text == "in" and target is None and (ride := self._vehicle_part(rel.start + 1, ce)):
+            kind, (target, end) = "in", ride  # "a pickup truck with its lights on, a collie in the back"
+        inside = [t.text for t in toks[rel.start : rel.start + 3]] == ["in", "the", "back"]
+        if inside and isinstance(target, list) and target and self._carrier(target[0], ("vehicles",)):
+            kind = "in"  # "a boy in the back of the van": in it, not behind it
         ordinals: tuple[int, int] | None = None
         if pair is not None:
             group, ordinals, end = pair
@@ -1142,11 +1178,25 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             kind = body
         elif body == "on" and kind == "at":  # "a shelf at his back": behind him, not carried
             kind, body = "behind" if any(t.text == "back" for t in toks[rel.end : end]) else "near", None
-        if kind == "at" and (part in _STANDING_PARTS or self._perch_part and part != "edge"):
+        if kind == "in" and part is not None and load_vocabulary().carries("thing", part, ("containers", "seats", "vehicles")):
+            kind = "on"  # "stands in the nearest basket" (a balloon's): on what has it
+        if kind == "at" and (part in _STANDING_PARTS or part in _DRIVING_PARTS or self._perch_part and part != "edge"):
             kind = "on"  # "a shuttle docked at its top", "the captain stands at its prow": as "on" it
         if kind == "along" and part is not None and self._hung_before(rel.start):
             kind = "on"  # "shields hang along the ship's side": the ship carries them
         return _Phrase(rel, ce, kind, target, end, ordinals, body, part, parts_each)
+
+    def _vehicle_part(self, pos: int, ce: int) -> tuple[list[int], int] | None:
+        """"In the back", "in the cab": a part (``part_owners``) of a vehicle this sentence names,
+        no object, so the vehicle (the latest such); and where the part ends."""
+        k = pos + (pos < ce and self.toks[pos].text in ("the", "its"))
+        if k >= ce or (k + 1 < ce and self.toks[k + 1].text[:1].isalpha()):
+            return None
+        owners = load_vocabulary().part_owners.get(singular(self.toks[k].text), ())
+        stop = max((j for j in range(pos) if self.toks[j].text in (".", "!", "?")), default=-1)
+        here = [m.group for j, m in sorted(self.by_start.items()) if stop < j < pos and m.group >= 0]
+        vehicles = [g for g in here if self.groups[g].category in owners and self._carrier(g, ("vehicles",))]
+        return (vehicles[-1:], k + 1) if vehicles else None
 
     def _across_from(self, start: int, end: int) -> bool:
         """Whether a facing phrase faces its target from across a place (no object: "from across the
@@ -1185,6 +1235,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             across = kind == "opposite" and self._across_from_doer(c, target, None, last_event_end)
             if self._rider_placed(c, rider, kind) and not across:
                 srcs = list(rider)  # "he sits on a stool at the workbench": he is at it, on his stool
+            elif self._at_on_perch(c, rider, kind, target):
+                p.riders = list(rider)  # "stands at a lectern on a low stage": both are on the stage
             elif self._sits_on_instead(c, rider, p):
                 srcs = list(rider)  # "a troll sits beneath the bridge on a boulder": he is on it, not the bridge
             each = target == "each one" or (
@@ -1293,6 +1345,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             srcs = [g for g in c.subjects if self._living(g)] or srcs
         if kind == "face to" and rel.kind == "at":  # "a guard aims a crossbow at them": the guard faces them
             srcs = [g for g in c.subjects if self._living(g)] or srcs
+        if kind == "covering" and toks[rel.start].text.startswith("fill") and any(self._living(g) for g in srcs):
+            kind = "near"  # "a girl fills a jug at the pump": by what she fills, not in it
         p.kind, p.srcs = kind, srcs
         return None
 
@@ -1443,6 +1497,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             prefer = [*c.last_srcs, *prefer]
         if not srcs and c.opens and starts_with_rel:
             prefer = list(self.topic)  # "Behind them, five soldiers sit": them of the sentence before
+        if target == "it" and kind == "on" and srcs and self._small(*srcs):
+            # "a clerk sits at a desk across from the fireplace, with an inkwell on it": the desk he works at
+            at = [self.worked_at[g] for g in [*prefer, *self.doers, *prev_subject] if g in self.worked_at]
+            prefer = [*at[:1], *prefer]
         who = srcs or ([] if c.opens else list(prev_subject))  # "..., watching them": the subject before
         own = [t for s in who for t in c.supports.get(s, [])]
         # what one goes along is not where one goes ("tourists walk along the pier towards it": the ferry)
@@ -1508,6 +1566,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         head = p.srcs or list(prev_subject)
         if kind == "towing" and isinstance(targets, list):
             targets = [t for t in targets if not self._small(t)]  # "pulls a pint": no load behind
+        # "a tow truck hauls a hatchback onto its flatbed": a load pulled onto the puller itself rides it
+        onto = kind == "towing" and [t.text for t in self.toks[p.end : p.end + 2]] in (
+            ["onto", "its"], ["onto", "it"], ["into", "its"], ["into", "it"]
+        )
+        if onto and isinstance(targets, list) and targets and head and p.end in self.rel_at:
+            for h in head:
+                self._relate("on", targets, h)
+            c.produced, c.expect_new = True, False
+            c.last_target, c.last_target_end = [], -1
+            return self._target_at(self.rel_at[p.end].end, p.ce)[1]  # (past "onto its flatbed")
         if isinstance(targets, list) and targets and head:
             active = _REVERSED[kind]
             if c.each is not None:  # "three tables, each surrounded by two chairs": two per table
@@ -1563,7 +1631,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             for g in srcs:  # "three paper lanterns hang from the ceiling over the counter": hung, not set down
                 if self.groups[g].rests != "hanging" and not self._living(g):  # also "a birdcage hangs from the ceiling"
                     self.groups[g].rests = "hanging"
+        if kind == "on" and target is None and self._on_floor(rel.end):
+            for g in srcs:  # "a helmet sits on the floor beneath each peg": on no table or desk
+                if self.groups[g].rests == "surface" and not self._living(g):
+                    self.groups[g].rests = "ground"
         if not srcs or not targets:
+            if target is None and c.last_target and c.last_target_end == rel.start:
+                # "fill two shelves on the wall behind her": the shelves are behind her
+                while end < p.ce and end not in self.rel_at and end not in self.by_start and toks[end].text not in (",", "and"):
+                    end += 1
+                c.last_target_end = end
             return end
         if targets == "each other":
             # "face each other", "sit across from each other" (in front of and facing, each way)
@@ -1592,6 +1669,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._per_each(targets, srcs[0])  # "two soldiers on horseback": a horse each
         elif tm is not None and kind == "on" and len(srcs) == 1 and self._living(srcs[0]) and self._seats_each(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "four astronauts sit on stools": one each
+        elif tm is not None and kind == "on" and len(srcs) == 1 and self._stands_each(srcs[0], tm):
+            self.one_each[targets[0]] = srcs[0]  # "busts stand on pedestals (at each corner)": one each
         elif tm is not None and kind == "in" and len(srcs) == 1 and self._planted(srcs[0]) and self._uncounted_new(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "four fig trees in planters": one each
         elif tm is not None and kind == "hanging from" and len(srcs) == 1 and self._hooks_each(tm):
@@ -1618,6 +1697,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 self.carried.update((s, t) for s in srcs)
             elif kind == "hanging from" and self._thin(t):
                 self.carried.update((s, t) for s in srcs)  # "a lantern hangs from a post": it carries it
+        for t in targets if p.riders else ():
+            self._relate(kind, p.riders, t)
+        if kind == "at" and targets:
+            self.worked_at.update((s, targets[-1]) for s in srcs if self._living(s))
         c.produced = True
         c.rels = [(kind, targets)]
         if kind in ("on", "in", "on top"):
@@ -1634,9 +1717,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         return end
 
     def _seats_each(self, m: _Mention) -> bool:
-        """Seats named in the plural with no count of their own, new here ("on padded stools"):
-        as many as sit on them."""
-        return self._uncounted_new(m) and self._carrier(m.group, ("seats",))
+        """Seats or ground covers named in the plural with no count of their own, new here ("on
+        padded stools", "stretch on mats"): as many as sit or lie on them."""
+        cover = m.group >= 0 and self.catalogue[self.groups[m.group].category].shape == "rug"
+        return self._uncounted_new(m) and (self._carrier(m.group, ("seats",)) or cover)
 
     def _planted(self, g: int) -> bool:
         """Several plants: each grows in a pot, tub or planter of its own."""
@@ -1644,12 +1728,27 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         plant = self.catalogue[category].shape in _PLANT_SHAPES or category == "potted_plant"
         return self.groups[g].count > 1 and plant
 
+    def _stands_each(self, g: int, m: _Mention) -> bool:
+        """Several things on stands named in the plural with no count, new here, each stand no
+        wider than one of them ("busts on pedestals", "vases on plinths"): a stand each."""
+        thing, stand = self.groups[g].size, self.groups[m.group].size if m.group >= 0 else (0, 0)
+        several = self.groups[g].count > 1 and not self._living(g)
+        return several and self._uncounted_new(m) and stand[0] * stand[1] <= thing[0] * thing[1]
+
     def _uncounted_new(self, m: _Mention) -> bool:
         """A plural with no count of its own, new here ("in clay pots", "on stools")."""
         return (
             _is_plural(self.toks, m) and not m.counted and not m.definite and m.group >= 0
             and m.group not in self.numbered
         )  # fmt: skip
+
+    def _at_on_perch(self, c: _Clause, rider: list[int], kind: str, target) -> bool:
+        """Whether the living subject "at" a thing the phrase puts on a low wide perch stands on
+        that perch too ("a priest stands at an altar on a dais", "a vendor waits at a stall on the
+        pier")."""
+        if c.last_kind != "at" or kind not in ("on", "on top") or not isinstance(target, list) or not target:
+            return False
+        return bool(rider) and all(self._living(g) and self._platform(target[0], g) for g in rider)
 
     def _sits_on_instead(self, c: _Clause, rider: list[int], p: _Phrase) -> bool:
         """Whether an ``on`` / ``in`` phrase after a place of a sitting or lying living thing seats
@@ -1798,6 +1897,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             k -= 1
         return any(self.toks[i].text in _CEILING_WORDS for i in range(k + 1, min(pos + 4, len(self.toks))))
 
+    def _on_floor(self, pos: int) -> bool:
+        """"On the floor", "on the bare ground" at ``pos``: the ground itself (no object), where a
+        small thing set down stands on no host."""
+        for t in self.toks[pos : pos + 3]:
+            if t.text in _FLOOR_WORDS:
+                return True
+            if not t.text[:1].isalpha():
+                return False
+        return False
+
     def _relate(self, kind: str, srcs: list[int], target: int, hang: bool = False, instance=None) -> None:
         for s in srcs:
             resolved = self._kind(kind, s, target, hang)
@@ -1856,6 +1965,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "on"  # "a dog in each kennel", "hens in the coop": a hutch holds them as a cage does
             if self._living(s) and target.shape in _ENCLOSURES and self._carrier(t, ("perches",)):
                 return "on"  # "a band plays in the bandstand": an open shelter's floor carries them
+            if hang and not self._living(s) and (target.shape == "tower" or self._carrier(t, ("perches",))):
+                return "on"  # "a bell hangs in the small tower": the tower carries it, as a post would
             if target.shape in _ENCLOSURES or target.shape == "tower":
                 return "no relation"  # in a tent, in the lighthouse: inside it, out of the layout
             if self._living(s) and (self._carrier(t, _VESSEL_KINDS) or self._carrier(t, by_family=False)):

@@ -4,6 +4,7 @@ possessive's part ("its back", "at his feet"), an ordinal pair ("the first and s
 
 from __future__ import annotations
 
+from math import prod
 from typing import TYPE_CHECKING
 
 from scenewright.analysis.parser.grammar import (
@@ -61,6 +62,9 @@ class _References:
         while j < ce and j - pos < (9 if "of" in [t.text for t in toks[pos + 1 : j]] else 6):
             if j in self.by_start:
                 m = self.by_start[j]
+                owned = self._owner_of_part(m, ce)
+                if owned is not None:
+                    return owned
                 self._target_start = m.start
                 owner = _OWNER_PRONOUNS.get(toks[lead].text) if lead < ce else None
                 people = self._people_own() if owner == "them" else None
@@ -173,6 +177,11 @@ class _References:
         if lead < ce and toks[lead].text == "the" and j == lead + 2 and singular(toks[lead + 1].text) in load_vocabulary().part_owners:
             self._part = singular(toks[lead + 1].text)
             return "the part", j  # "lies in the water": the water of the pond named before
+        if lead < ce and toks[lead].text in ("a", "an") and j == lead + 2 and self._verb_before(pos, self._posture):
+            word = singular(toks[lead + 1].text)  # "an owl sits on a branch": a branch of the tree named before
+            if word in load_vocabulary().part_owners and word in load_vocabulary().carriers.get("perches", ()):
+                self._part = word
+                return "the part", j
         return None, pos
 
     def _possessor(self, pos: int, end: int) -> int | None:
@@ -227,6 +236,61 @@ class _References:
     def _sitting_before(self, pos: int) -> bool:
         """A verb of sitting right before the phrase at ``pos`` ("sits in the front row")."""
         return pos >= 2 and self.toks[pos - 2].text in load_vocabulary().postures.get("sitting", ())
+
+    def _owner_of_part(self, m, ce: int) -> tuple[list[int] | str | None, int] | None:
+        """A thing named new with "the" that is a part of one named before (no object of its own):
+        the owner is the target, and where the phrase ends. "On the ladder of the nearer one" (of
+        a thing named before); "in the nearest basket" (a carrier part of a group, one member);
+        "a woman at the wheel" (a part, by ``part_owners``, of a thing this sentence names). Not a
+        living thing (a body part reads its own way), nor one named before ("the ladder" after "a
+        ladder"); None when none of these."""
+        toks = self.toks
+        head = singular(toks[m.end - 1].text)
+        named = any(g.category == m.category and singular(g.name.split()[-1]) == head for g in self.groups)
+        if not m.definite or m.group >= 0 or self._lives(m.category) or named:
+            return None
+        picked = [a.lower() for a in m.adjectives if a.lower() in _ORDINALS or a.lower().endswith("est")]
+        if picked and load_vocabulary().carries(m.category, m.phrase.lower(), ("containers", "seats", "vehicles")):
+            # "three balloons inflate, each tethered to a truck. A pilot stands in the nearest
+            # basket": none was named, so one of a group named before has it (the sentence
+            # before first, in its order: its subject before what it is tied to)
+            size = m.guess.size if m.guess is not None else self.catalogue[m.category].size
+            owners = [
+                g for g in [*self.history[self._recent_from : self._sentence_from], *reversed(self.history)]
+                if self.groups[g].count > 1 and not self._living(g)
+                and prod(self.groups[g].size) > prod(size)  # (bigger than its part)
+            ]  # fmt: skip
+            if owners:
+                self._target_start = m.start
+                self.instance[m.start] = _ORDINALS.get(picked[0], 0)
+                self._part = head
+                return owners[:1], m.end
+        owners = load_vocabulary().part_owners.get(head, ())
+        if owners and (m.end >= ce or toks[m.end].text != "of"):
+            # "a tractor drives past, a woman at the wheel": the part of a thing this sentence names
+            stop = max((k for k in range(m.start) if toks[k].text in (".", "!", "?")), default=-1)
+            here = [n.group for k, n in sorted(self.by_start.items()) if stop < k < m.start and n.group >= 0]
+            cats = [(g, self.groups[g].category) for g in here]
+            have = [g for g, cat in cats if cat in owners or self.catalogue[cat].shape in owners]
+            if have:
+                self._part = head
+                return have[-1:], m.end
+        if m.end + 1 >= ce or toks[m.end].text != "of":
+            return None
+        if toks[m.end + 1].text not in ("the", "its"):
+            return None
+        owner = self.by_start.get(m.end + 1) or self._next_mention(m.end + 1, ce)
+        if owner is not None:
+            known = any(g.category == owner.category for g in self.groups) and not self._lives(owner.category)
+            if not known:
+                return None
+        elif not any(toks[k].text in ("one", "it") for k in range(m.end + 1, min(m.end + 4, ce))):
+            return None  # ("the nearer one", "the front one": one of a group named before)
+        target, end = self._target_at(m.end + 1, ce)
+        if not target:
+            return None
+        self._part = head
+        return target, end
 
     def _tall_perch(self, g: int) -> bool:
         """A perch too tall to climb onto like a platform (a tower, a mast): what "the top" names

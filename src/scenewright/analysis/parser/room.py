@@ -324,6 +324,24 @@ def place_openings(room: Room, wanted: Sequence[tuple[str, str | None, int]]) ->
 #: Categories hung on a wall, and hung from the ceiling, when the scene has a room.
 WALL_THINGS = frozenset({"picture_frame", "mirror", "wall_clock", "projector_screen", "lifebuoy"})
 CEILING_THINGS = frozenset({"ceiling_fan", "pendant_lamp", "punching_bag"})
+
+
+#: Words that make a thing that usually hangs (a mirror) one that stands on the floor.
+STANDING_FORMS = ("full length", "standing", "free standing", "freestanding", "floor", "cheval")
+
+
+def standing_form(name: str) -> bool:
+    """Whether a name says a thing that usually hangs stands on the floor ("a full-length
+    mirror", "a cheval mirror")."""
+    return any(f" {form} " in f" {name.lower()} " for form in STANDING_FORMS)
+
+
+def hangs_by_kind(o) -> bool:
+    """Whether a parsed or a scene object hangs on a wall by its kind (:data:`WALL_THINGS`), not
+    named or described in a standing form."""
+    words = f"{o.name} {getattr(o, 'description', '')} {getattr(o, 'visual_description', '')}"
+    return o.category in WALL_THINGS and not standing_form(words)
+
 #: Words for a room's wall (a ship's bulkhead is its wall); "window" only for a thing hung there.
 _WALL_WORDS = r"(wall|corner|bulkhead|window)"
 _WALL_PHRASE = re.compile(r"\b(against|along|on|by|to|in|at|onto|from)\s+(?:the\s+|a\s+|one\s+)?(?:(back|rear|far|left|right|front)(?:[- ]hand)?\s+)?" + _WALL_WORDS + r"s?\b")
@@ -409,7 +427,7 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
             # nor "a mirror hangs above the rack, and a fan stands in the corner").
             between = sentence[at:phrase.start()]
             preposition, side, what = phrase.group(1), phrase.group(2), phrase.group(3)
-            wall_thing = o.category in WALL_THINGS and what == "wall"
+            wall_thing = hangs_by_kind(o) and what == "wall"
             if o.anchor is None and not wall_thing and _names_between(between, names, name):
                 break
             if what == "window" and not _MOUNTED.search(between):
@@ -417,7 +435,7 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
             target = f"wall_{RECTANGLE_WALLS[_SIDE_WORDS[side]]}" if side and _SIDE_WORDS.get(side) else "room"
             if what == "corner":
                 relation = "in corner"
-            elif o.category in WALL_THINGS or preposition in ("on", "onto") or _MOUNTED.search(between):
+            elif hangs_by_kind(o) or preposition in ("on", "onto") or _MOUNTED.search(between):
                 relation = "on wall"  # a thing on a wall, or hung or mounted there, is fixed to it
             else:
                 relation = "against wall"

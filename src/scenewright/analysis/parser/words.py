@@ -153,7 +153,7 @@ _PUT_OR_WORKED = {
     "stir", "chop", "cut", "slice", "dice", "knead", "hammer", "weld", "forge", "fry", "grill", "roast",
     "bake", "cook", "boil", "wash", "scrub", "sweep", "mop", "water", "repair", "fix", "assemble", "build",
     "open", "close", "lock", "unlock", "shoe", "dig", "rake", "shovel", "split", "saw", "plough", "plow",
-    "light", "stoke", "tend", "fan", "push",
+    "light", "stoke", "tend", "fan", "push", "wheel", "trundle",
 }  # fmt: skip
 #: Verbs of sense, pursuit, trade and going, by their stem: what they take reaches the doer from afar
 #: or stays where it is ("watches a kite", "kicks a ball", "sells lanterns", "leads a pony").
