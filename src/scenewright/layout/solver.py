@@ -239,6 +239,8 @@ class _Node:
     conflict: set[int] = field(default_factory=set)
     blockers: Counter = field(default_factory=Counter)
     avoid: list[tuple[np.ndarray, float]] = field(default_factory=list)
+    shunned: np.ndarray | None = None  # which candidates of the chunk under way lie in an avoided place
+    shunned_by: int = 0  # how many of ``avoid`` ``shunned`` has taken in
     forward_rejects: int = 0
     reject_allowance: int = FORWARD_REJECTS
     wide: bool = False  # drawn from the wide set, after the usual one ran out
@@ -851,12 +853,20 @@ class _Search:
         while node.cursor < len(node.centres):
             k = node.cursor
             node.cursor += 1
-            if k % CHUNK == 0:  # broad phase for the next chunk of candidates
+            start = k - k % CHUNK
+            if k == start:  # broad phase for the next chunk of candidates
                 node.hits = self.world.overlaps(node.columns, node.lo[k : k + CHUNK], node.hi[k : k + CHUNK])
-            if node.avoid:
-                where = np.array([p for p, _ in node.avoid])
-                if np.any(np.linalg.norm(where - node.centres[k, :2], axis=1) < [d for _, d in node.avoid]):
-                    continue
+            if k == start or node.shunned is None:
+                node.shunned, node.shunned_by = np.zeros(len(node.centres[start : start + CHUNK]), dtype=bool), 0
+            if node.shunned_by < len(node.avoid):
+                # The chunk's candidates near the places avoided since it was last looked at, at once.
+                where = np.array([p for p, _ in node.avoid[node.shunned_by :]])
+                reach = np.array([d for _, d in node.avoid[node.shunned_by :]])
+                gaps = np.linalg.norm(node.centres[start : start + CHUNK, None, :2] - where[None], axis=2)
+                node.shunned |= (gaps < reach).any(axis=1)
+                node.shunned_by = len(node.avoid)
+            if node.shunned[k - start]:
+                continue
             touching = node.columns[node.hits[k % CHUNK]]
             if len(touching) == 0:
                 return k
@@ -958,6 +968,7 @@ class _Search:
         node.turns = {f: y[order] for f, y in node.turns.items()}
         start = k - k % CHUNK  # the broad phase of the chunk under way, for its new candidates
         node.hits = self.world.overlaps(node.columns, node.lo[start : start + CHUNK], node.hi[start : start + CHUNK])
+        node.shunned = None
         node.reject_allowance = node.forward_rejects + AIM_REJECTS
         log.debug("%s: %d untried candidates leave %s a position; they go first",
                   node.item.obj.id, int(good.sum()), item.obj.id)
