@@ -714,12 +714,14 @@ class _Search:
         never = [c for (c, _, _), s in zip(pairs, sat) if not s.any()]
         # A constraint that fails here may only fail among the primary's candidates: ask its own.
         never = [c for c in never if not self.alone(item, c)]
-        if never:
-            return _Failure("no candidate position satisfies " + "; ".join(f"'{c}'" for c in never), never)
+        # Its height follows from its support's, which no move in plan changes: no jump back can help.
         over = self.over_ceiling(item)
+        if never:
+            return _Failure("no candidate position satisfies " + "; ".join(f"'{c}'" for c in never), never,
+                            inherent=over is not None)
         if ok.any() and over is not None:
-            # Its height is its support's, which no move in plan changes: no jump back can help.
-            return _Failure(f"resting on {self.objects[over].id} it reaches past the {self.room.room.height:g} m "
+            how = "resting on" if any(c.relation == "on" and t == over for c, t in item.own) else "above"
+            return _Failure(f"{how} {self.objects[over].id} it reaches past the {self.room.room.height:g} m "
                             "ceiling", [c for c, _, _ in pairs], inherent=True)
         if ok.any():
             w, d = self.area[1] - self.area[0]
@@ -736,14 +738,19 @@ class _Search:
         return _Failure(reason, given_up or [c for c, _, _ in pairs])
 
     def over_ceiling(self, item: _Item) -> int | None:
-        """What the object rests ``on``, when resting there it reaches past the room's ceiling:
-        its height is its support's top, the same wherever in plan the two stand, so no pose of
-        any object helps it (a stack too tall for the room). None otherwise."""
+        """What the object rests ``on`` or hangs ``above``, when there it reaches past the room's
+        ceiling: its lowest height follows from that one's top, the same wherever in plan the two
+        stand, so no pose of any object helps it (a stack too tall for the room, a lamp over a
+        cupboard that reaches the ceiling). None otherwise."""
         ranked = sorted(self.active(item), key=lambda ct: PRIORITY[ct[0].relation])
-        if self.room is None or not ranked or ranked[0][0].relation != "on":
+        if self.room is None or not ranked or ranked[0][0].relation not in ("on", "above"):
             return None
-        support = ranked[0][1]
-        top = float(self.box(support).top) + 2 * item.half_z
+        relation, support = ranked[0][0].relation, ranked[0][1]
+        box = self.box(support)
+        if relation == "on":
+            top = float(box.top) + 2 * item.half_z
+        else:
+            top = rel.lowest_above(item.half_z, float(box.lo[2]), float(box.hi[2])) + item.half_z
         return support if top - self.room.room.height > ROOM_SLACK else None
 
     def given_up(self, item: _Item) -> list[Constraint]:
