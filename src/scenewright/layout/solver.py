@@ -21,8 +21,8 @@ Three things keep the search from blowing up where plain backtracking would:
   escalate to earlier culprits, and move them farther.
 - Bounded effort and restarts: each object may cause :data:`MAX_JUMPS` jumps; past that, or
   past the work limit, it is given up. An incomplete run is repeated (up to
-  :data:`RESTARTS`) with the troublesome objects and everything they depend on placed first;
-  the most complete layout wins.
+  :data:`RESTARTS`, each with a bounded budget) with the troublesome objects and everything
+  they depend on placed first; the most complete layout wins.
 
 An object given up on is still placed: at its nearest miss, the collision-free pose (inside
 the bounds where there is one) that violates its constraints least. It is reported with the
@@ -1178,13 +1178,14 @@ def _restarts(objects, constraints, meshes, bounds, fixed, keep_yaw, seed, start
     """Run the search up to :data:`RESTARTS` times until one places everything; keep the best.
 
     Every run but the last has a node budget of :data:`ATTEMPT_NODES` per object; the last
-    :data:`LAST_NODES` times that (within what is left): on the development scenes a last run that
-    completes uses at most 1.6 times a first run's budget, while one that cannot goes on rejecting
-    and jumping back for up to ten times it. A rerun puts the objects that gave trouble (left unplaced, or forced
-    backjumps) and everything they depend on first — the "squeaky wheel": placed while the
-    scene is still empty, they fit — and scatters the other starting anchors a little more
-    each time. A run whose every failure is a contradiction among one object's constraints
-    ends the search: no rerun can mend that.
+    :data:`LAST_NODES` times that (within what is left): a last run that completes has needed at
+    most 1.6 times a first run's budget, while one that cannot ran on rejecting and jumping back
+    through all that was left (five times a first run's budget, to the CPU deadline). A rerun
+    puts the objects that gave trouble (left unplaced, or forced backjumps) and everything they
+    depend on first — the "squeaky wheel": placed while the scene is still empty, they fit — and
+    scatters the other starting anchors a little more each time. A run whose every failure is a
+    contradiction among one object's constraints (or one no pose mends: it reaches past the
+    ceiling) ends the search: no rerun can mend that.
     """
     best = None
     used = 0
