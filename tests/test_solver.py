@@ -586,3 +586,49 @@ def test_a_rerun_moves_a_support_by_what_its_load_must_leave_room_for(seed):
     by_id = {o.id: o for o in result.objects}
     for con in result.constraints:
         assert check(con.relation, by_id[con.source], by_id[con.target]), str(con)
+
+
+def _searches(objects, constraints, **kw):
+    """The layout, and the node budget of each search :func:`solve` ran."""
+    from scenewright.layout import solver
+
+    budgets = []
+    dfs = solver._dfs
+
+    def watched(search, deadline, node_limit, first=frozenset()):
+        budgets.append(node_limit)
+        return dfs(search, deadline, node_limit, first)
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(solver, "_dfs", watched)
+        return solve(objects, constraints, **kw), budgets
+
+
+@pytest.mark.parametrize("tall", [2.3, 1.2])
+def test_a_lamp_over_a_cupboard_that_reaches_the_ceiling_is_given_up_at_once(tall):
+    # Hung above a wardrobe that nearly reaches the ceiling, a lantern has no height it can
+    # take wherever the two stand: no rerun can mend that, so one search is all the solve runs
+    # (before, four, each jumping back into the wardrobe). A lower wardrobe leaves it room.
+    room = Room.rectangle(4.0, 4.0, height=3.0)
+    objects = [box("wardrobe", 1.0, 1.0, size=(1.0, 0.6, tall)), box("lantern", 0.0, 0.0, z=2.2, size=(0.3, 0.3, 0.4)),
+               box("stool", -1.0, 0.0, size=(0.4, 0.4, 0.45))]
+    constraints = [c("above", "lantern", "wardrobe"), c("near", "stool", "wardrobe")]
+    result, budgets = _searches(objects, constraints, room=room, seed=0)
+    if tall > 2.0:
+        assert [u.id for u in result.report.unplaced] == ["lantern"]
+        assert [str(x) for x in result.report.unplaced[0].failed] == ["lantern above wardrobe"]
+        assert len(budgets) == 1
+    else:
+        assert result.report.complete
+
+
+def test_the_last_rerun_searches_twice_as_long_as_the_first_not_all_that_is_left():
+    # Nine crates a metre wide cannot all stand in a 2.2 m room: every search fails, and the last
+    # one stops at twice a first search's nodes rather than running on through the whole budget.
+    from scenewright.layout.solver import ATTEMPT_NODES, LAST_NODES, RESTARTS
+
+    objects = [box(f"crate_{k}", 0.1 * k, 0.0, size=(1.0, 1.0, 0.5)) for k in range(9)]
+    result, budgets = _searches(objects, [], room=Room.rectangle(2.2, 2.2), seed=0)
+    assert not result.report.complete
+    first = ATTEMPT_NODES * len(objects) + 100
+    assert budgets[:RESTARTS] == [first] * (RESTARTS - 1) + [LAST_NODES * first]

@@ -21,8 +21,8 @@ Three things keep the search from blowing up where plain backtracking would:
   escalate to earlier culprits, and move them farther.
 - Bounded effort and restarts: each object may cause :data:`MAX_JUMPS` jumps; past that, or
   past the work limit, it is given up. An incomplete run is repeated (up to
-  :data:`RESTARTS`) with the troublesome objects and everything they depend on placed first;
-  the most complete layout wins.
+  :data:`RESTARTS`, each with a bounded budget) with the troublesome objects and everything
+  they depend on placed first; the most complete layout wins.
 
 An object given up on is still placed: at its nearest miss, the collision-free pose (inside
 the bounds where there is one) that violates its constraints least. It is reported with the
@@ -98,9 +98,11 @@ AIM_SEED = 0
 #: Poses forward checking may reject once aimed: the pairing is judged on a sample, without the
 #: facing's turn, so when the first few it put first fail, it has misjudged that dependent.
 AIM_REJECTS = 8
-#: Search nodes per object each of the first searches may use; the last one gets what is left
-#: of the whole budget, :data:`NODES_PER_OBJECT` per object.
+#: Search nodes per object each of the first searches may use; the last one gets
+#: :data:`LAST_NODES` times as many, at most what is left of the whole budget
+#: (:data:`NODES_PER_OBJECT` per object).
 ATTEMPT_NODES = 6
+LAST_NODES = 2
 NODES_PER_OBJECT = 80
 #: Distance (m) a turned pose must gain over the model's yaw to be tried first.
 TURN_COST = 0.3
@@ -239,6 +241,8 @@ class _Node:
     conflict: set[int] = field(default_factory=set)
     blockers: Counter = field(default_factory=Counter)
     avoid: list[tuple[np.ndarray, float]] = field(default_factory=list)
+    shunned: np.ndarray | None = None  # which candidates of the chunk under way lie in an avoided place
+    shunned_by: int = 0  # how many of ``avoid`` ``shunned`` has taken in
     forward_rejects: int = 0
     reject_allowance: int = FORWARD_REJECTS
     wide: bool = False  # drawn from the wide set, after the usual one ran out
@@ -712,12 +716,14 @@ class _Search:
         never = [c for (c, _, _), s in zip(pairs, sat) if not s.any()]
         # A constraint that fails here may only fail among the primary's candidates: ask its own.
         never = [c for c in never if not self.alone(item, c)]
-        if never:
-            return _Failure("no candidate position satisfies " + "; ".join(f"'{c}'" for c in never), never)
+        # Its height follows from its support's, which no move in plan changes: no jump back can help.
         over = self.over_ceiling(item)
+        if never:
+            return _Failure("no candidate position satisfies " + "; ".join(f"'{c}'" for c in never), never,
+                            inherent=over is not None)
         if ok.any() and over is not None:
-            # Its height is its support's, which no move in plan changes: no jump back can help.
-            return _Failure(f"resting on {self.objects[over].id} it reaches past the {self.room.room.height:g} m "
+            how = "resting on" if any(c.relation == "on" and t == over for c, t in item.own) else "above"
+            return _Failure(f"{how} {self.objects[over].id} it reaches past the {self.room.room.height:g} m "
                             "ceiling", [c for c, _, _ in pairs], inherent=True)
         if ok.any():
             w, d = self.area[1] - self.area[0]
@@ -734,14 +740,19 @@ class _Search:
         return _Failure(reason, given_up or [c for c, _, _ in pairs])
 
     def over_ceiling(self, item: _Item) -> int | None:
-        """What the object rests ``on``, when resting there it reaches past the room's ceiling:
-        its height is its support's top, the same wherever in plan the two stand, so no pose of
-        any object helps it (a stack too tall for the room). None otherwise."""
+        """What the object rests ``on`` or hangs ``above``, when there it reaches past the room's
+        ceiling: its lowest height follows from that one's top, the same wherever in plan the two
+        stand, so no pose of any object helps it (a stack too tall for the room, a lamp over a
+        cupboard that reaches the ceiling). None otherwise."""
         ranked = sorted(self.active(item), key=lambda ct: PRIORITY[ct[0].relation])
-        if self.room is None or not ranked or ranked[0][0].relation != "on":
+        if self.room is None or not ranked or ranked[0][0].relation not in ("on", "above"):
             return None
-        support = ranked[0][1]
-        top = float(self.box(support).top) + 2 * item.half_z
+        relation, support = ranked[0][0].relation, ranked[0][1]
+        box = self.box(support)
+        if relation == "on":
+            top = float(box.top) + 2 * item.half_z
+        else:
+            top = rel.lowest_above(item.half_z, float(box.lo[2]), float(box.hi[2])) + item.half_z
         return support if top - self.room.room.height > ROOM_SLACK else None
 
     def given_up(self, item: _Item) -> list[Constraint]:
@@ -851,12 +862,20 @@ class _Search:
         while node.cursor < len(node.centres):
             k = node.cursor
             node.cursor += 1
-            if k % CHUNK == 0:  # broad phase for the next chunk of candidates
+            start = k - k % CHUNK
+            if k == start:  # broad phase for the next chunk of candidates
                 node.hits = self.world.overlaps(node.columns, node.lo[k : k + CHUNK], node.hi[k : k + CHUNK])
-            if node.avoid:
-                where = np.array([p for p, _ in node.avoid])
-                if np.any(np.linalg.norm(where - node.centres[k, :2], axis=1) < [d for _, d in node.avoid]):
-                    continue
+            if k == start or node.shunned is None:
+                node.shunned, node.shunned_by = np.zeros(len(node.centres[start : start + CHUNK]), dtype=bool), 0
+            if node.shunned_by < len(node.avoid):
+                # The chunk's candidates near the places avoided since it was last looked at, at once.
+                where = np.array([p for p, _ in node.avoid[node.shunned_by :]])
+                reach = np.array([d for _, d in node.avoid[node.shunned_by :]])
+                gaps = np.linalg.norm(node.centres[start : start + CHUNK, None, :2] - where[None], axis=2)
+                node.shunned |= (gaps < reach).any(axis=1)
+                node.shunned_by = len(node.avoid)
+            if node.shunned[k - start]:
+                continue
             touching = node.columns[node.hits[k % CHUNK]]
             if len(touching) == 0:
                 return k
@@ -958,6 +977,7 @@ class _Search:
         node.turns = {f: y[order] for f, y in node.turns.items()}
         start = k - k % CHUNK  # the broad phase of the chunk under way, for its new candidates
         node.hits = self.world.overlaps(node.columns, node.lo[start : start + CHUNK], node.hi[start : start + CHUNK])
+        node.shunned = None
         node.reject_allowance = node.forward_rejects + AIM_REJECTS
         log.debug("%s: %d untried candidates leave %s a position; they go first",
                   node.item.obj.id, int(good.sum()), item.obj.id)
@@ -1158,11 +1178,14 @@ def _restarts(objects, constraints, meshes, bounds, fixed, keep_yaw, seed, start
     """Run the search up to :data:`RESTARTS` times until one places everything; keep the best.
 
     Every run but the last has a node budget of :data:`ATTEMPT_NODES` per object; the last
-    has what is left. A rerun puts the objects that gave trouble (left unplaced, or forced
-    backjumps) and everything they depend on first — the "squeaky wheel": placed while the
-    scene is still empty, they fit — and scatters the other starting anchors a little more
-    each time. A run whose every failure is a contradiction among one object's constraints
-    ends the search: no rerun can mend that.
+    :data:`LAST_NODES` times that (within what is left): a last run that completes has needed at
+    most 1.6 times a first run's budget, while one that cannot ran on rejecting and jumping back
+    through all that was left (five times a first run's budget, to the CPU deadline). A rerun
+    puts the objects that gave trouble (left unplaced, or forced backjumps) and everything they
+    depend on first — the "squeaky wheel": placed while the scene is still empty, they fit — and
+    scatters the other starting anchors a little more each time. A run whose every failure is a
+    contradiction among one object's constraints (or one no pose mends: it reaches past the
+    ceiling) ends the search: no rerun can mend that.
     """
     best = None
     used = 0
@@ -1171,9 +1194,8 @@ def _restarts(objects, constraints, meshes, bounds, fixed, keep_yaw, seed, start
     for attempt in range(RESTARTS):
         search = _Search(objects, constraints, meshes, bounds, fixed, seed + attempt, spread=0.15 * attempt,
                          keep_yaw=keep_yaw, room=room, corridors=corridors, aiming=attempt > 0)
-        budget = node_limit - used
-        if attempt < RESTARTS - 1:
-            budget = min(budget, ATTEMPT_NODES * len(objects) + 100)
+        budget = (ATTEMPT_NODES * len(objects) + 100) * (LAST_NODES if attempt == RESTARTS - 1 else 1)
+        budget = min(budget, node_limit - used)
         report, troubled, inherent = _dfs(search, deadline, budget, first=search.ancestors(trouble))
         trouble |= troubled
         used += report.nodes
