@@ -1014,3 +1014,87 @@ def test_an_opening_sentence_that_only_names_a_building_is_where_the_scene_stand
     # the text comes back to it from outside: a building of the scene
     outside = parse_scene("A stone barn at dawn. Two goats graze beside the barn.")
     assert any(o.name.endswith("barn") for o in outside.objects)
+
+
+def words_of(text: str) -> Counter:
+    """Last word of each object's name → how many."""
+    return Counter(o.name.split()[-1].lower() for o in parse_scene(text).objects)
+
+
+@pytest.mark.parametrize(
+    ("text", "gone"),
+    [
+        ("A dog barks at the flames beside the hut.", "flame"),  # fire's light, like smoke
+        ("A trawler rolls in a heavy swell.", "swell"),  # the sea's state
+        ("A scarecrow stands in a mown hayfield.", "hayfield"),  # a compound ending in a place word
+        ("A tractor ploughs the farmland behind the barn.", "farmland"),
+        ("A hiker points at the summit with her stick.", "summit"),  # the top of a mountain is a place
+        ("A glider rests on the grass, its two propellers turning.", "propeller"),  # a thing's parts, counted
+        ("A small van waits at the gate, its ramp lowered.", "ramp"),  # "its" part
+        ("Two tow trucks stand side by side, and a driver climbs the ladder of the nearer one.", "ladder"),
+    ],
+)
+def test_places_weather_and_named_parts_are_no_things(text, gone):
+    assert gone not in words_of(text)
+
+
+def test_a_garland_is_no_place_compound():
+    assert words_of("A garland hangs over the door of the cottage.")["garland"] == 1
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("A lantern hangs from a hook beside the door.", "hook", 1),  # a part named with "a" where a thing hangs
+        ("A plumber walks past a stack of copper pipes.", "pipe", 3),  # a stack of long things is several
+        ("Two sailors doze under a pair of striped awnings.", "awning", 2),
+        ("A bear sleeps in the cave with its two cubs.", "cub", 2),  # "its" young are there
+        ("A weathervane stands on a tall pole beside the barn.", "pole", 1),  # not a flag's pole
+        ("A windsock flaps on a mast above the deck.", "mast", 1),  # a mast is a structure of its own
+    ],
+)
+def test_parts_named_as_things_of_their_own_are_things(text, word, many):
+    assert words_of(text)[word] == many
+
+
+@pytest.mark.parametrize(
+    ("text", "word"),
+    [
+        ("A skeleton dangles from a ceiling hook beside the shelf.", "hook"),  # the room's fitting
+        ("A biker holds her helmet under one arm.", "arm"),  # a body's part
+        ("A market stall with a striped awning stands by the well.", "awning"),  # the stall's
+        ("A torn flag flutters on a pole stuck in the sand.", "pole"),  # the flag's pole
+        ("A bucket and a riddle on a metal frame stand by the shed.", "frame"),  # (whose frame it is)
+    ],
+)
+def test_parts_of_something_stay_parts(text, word):
+    assert word not in words_of(text)
+
+
+@pytest.mark.parametrize(
+    ("text", "kept"),
+    [
+        ("A pop art comic panel of a flying saucer landing in a meadow, all bold dots. A cow stares at it.", "saucer"),
+        ("A comic panel of a robot dancing in a kitchen. The robot spins by a fridge.", "robot"),
+    ],
+)
+def test_a_comic_panel_is_the_medium_and_what_it_shows_is_there(text, kept):
+    got = words_of(text)
+    assert "panel" not in got
+    assert got[kept] == 1
+
+
+@pytest.mark.parametrize(
+    ("text", "gone"),
+    [
+        ("A glider lands on the strip. A pilot waves from the open cabin door.", "cabin"),  # the glider's
+        ("A barge drifts past the lock, and a boy sleeps in the cabin.", "cabin"),
+        ("A yacht rocks at the jetty.", "rock"),  # after "a", a plural is the verb
+    ],
+)
+def test_the_inside_of_a_vehicle_and_a_verb_after_a_singular_are_no_things(text, gone):
+    assert gone not in words_of(text)
+
+
+def test_a_cabin_with_no_vehicle_about_is_a_cabin():
+    assert words_of("A cat sleeps by the cabin door.")["cabin"] == 1

@@ -15,6 +15,8 @@ from scenewright.analysis.parser.phrases import _phrase_table
 from scenewright.analysis.parser.tokens import _Tok
 from scenewright.analysis.parser.vocabulary import GENERIC, Entry, load_vocabulary
 from scenewright.analysis.parser.words import (
+    _APPROXIMATE,
+    CROWD,
     _DEFINITE,
     _DETERMINERS,
     _NUMBERS,
@@ -253,7 +255,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "the shrine stands well behind the gate": an adverb, not a well
         if _idiom_here(toks, s, e):
             continue  # "a brig lies at anchor", "a guard stands on duty": no anchor there
-        if _owned_part(toks, s, e, mentions):
+        if _owned_part(toks, s, e, mentions) or _part_of_after(toks, s, e, raw[k + 1 :], mentions) or (
+            _inside_of_vehicle(toks, s, e, mentions)
+        ):
             continue  # "a console, reading its screens": the console's screens, no monitors of their own
         kind, modifier = modifier, []
         cat, entry = _kind_of_plant(kind, cat, entry)
@@ -311,8 +315,12 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue
         if " ".join(words) in places and s > 0 and toks[s - 1].text in _DEFINITE:
             continue  # "the middle of the cabin" after "The captain's cabin of a ship": the setting again
-        if picture_end is not None and all(t.text[:1].isalpha() and t.text not in _STOP or t.text in ("a", "an")
-                                           for t in toks[picture_end + 1 : s]):  # fmt: skip
+        shape = load_catalogue()[cat].shape
+        alive = cat in _LIVING or shape in _LIVING
+        shown = not alive and not vocabulary.carries(cat, " ".join(words), ("vehicles",))
+        if picture_end is not None and shown and all(
+            t.text[:1].isalpha() and t.text not in _STOP or t.text in ("a", "an") for t in toks[picture_end + 1 : s]
+        ):  # ("a comic panel of a flying saucer": the saucer is there)
             places.append(" ".join(words))  # "... painting of a windy headland": the place it shows
             picture_end = None
             continue
@@ -362,6 +370,8 @@ def _elided_at(toks: list[_Tok], i: int) -> int | None:
     w = toks[i].text
     if w == "others" and i > 0 and toks[i - 1].text in _NUMBERS:
         return i  # ("two others sweep the steps": a plural noun could not follow)
+    if _herd_count(toks, i):
+        return i
     if w == "another":
         k = i
     elif w in ("a", "an") and i + 1 < len(toks) and toks[i + 1].text in ORDINALS:
@@ -370,6 +380,25 @@ def _elided_at(toks: list[_Tok], i: int) -> int | None:
         return None
     verb = toks[k + 1].text if k + 1 < len(toks) else ""
     return k if _is_verb(verb) else None  # (a singular noun after "another" ends in no -s)
+
+
+#: Collective nouns of animals: "a herd of twenty" with no noun after it is twenty of the animal named before.
+_HERDS = {"herd", "herds", "flock", "flocks", "pack", "school", "shoal", "swarm", "pod", "pride", "troop", "gaggle",
+          "colony", "litter", "drove"}  # fmt: skip
+
+
+def _herd_count(toks: list[_Tok], i: int) -> bool:
+    """A count that stands for its animals: "a herd of (about) twenty" followed by no noun ("...
+    from a herd of about twenty grazing past the tents", "a flock of thirty, wheeling")."""
+    if toks[i].text not in _NUMBERS or _NUMBERS[toks[i].text] < 2 or i + 1 >= len(toks) or toks[i + 1].joined:
+        return False
+    k = i - 1 - (i > 0 and toks[i - 1].text in _APPROXIMATE)
+    if k < 1 or toks[k].text != "of" or toks[k - 1].text not in _HERDS:
+        return False
+    after = toks[i + 1].text
+    return not after[:1].isalpha() or after in _STOP or _match_at(toks, i + 1) is None and (
+        _is_verb(after) or _participle(after)
+    )
 
 
 def _elided_members(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention]:
@@ -388,11 +417,16 @@ def _elided_members(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention
             continue
         before = [m for m in mentions if since < m.start and m.end <= i and not m.alias]
         lives = [m for m in before if load_catalogue()[m.category].shape in _LIVING]
+        if _herd_count(toks, k):  # (a herd is of animals: the latest that is no person)
+            lives = [m for m in lives if not _person_mention(m)]
+            if not lives:
+                continue
         # (one that does something is more of the people or animals, when there are: "two smiths
         # work at a pair of anvils while a third pumps the bellows")
         plural = [m for m in before if _is_plural(toks, m)]
         # ("another" is one more of a single one too: "a monk reads, while another draws water")
-        order = [lives, plural] if toks[i].text == "another" else [[m for m in plural if m in lives], plural]
+        any_one = toks[i].text == "another" or _herd_count(toks, k)
+        order = [lives, plural] if any_one else [[m for m in plural if m in lives], plural]
         chosen = next((group[-1] for group in order if group), None)
         if chosen is None:
             continue
@@ -502,6 +536,26 @@ def _owned_part(toks: list[_Tok], s: int, e: int, mentions: list[_Mention]) -> b
     return bool(owners) and any(m.category in owners or catalogue[m.category].shape in owners for m in mentions)
 
 
+def _part_of_after(toks: list[_Tok], s: int, e: int, later: list, mentions: list[_Mention]) -> bool:
+    """"The ladder of the nearer one", "the ramp of the van": a part (``part_owners``) named by
+    "the ... of" its owner, a thing that has such a part (the next noun, or for "one" the thing
+    named lately that has one): the owner's part, placed by the owner, no thing of its own."""
+    if e - s != 1 or s == 0 or toks[s - 1].text != "the" or e + 1 >= len(toks) or toks[e].text != "of":
+        return False
+    owners = load_vocabulary().part_owners.get(singular(toks[s].text))
+    if not owners:
+        return False
+    k = e + 1
+    while k < len(toks) and k - e <= 4 and toks[k].text[:1].isalpha() and toks[k].text not in ("one", "ones"):
+        k += 1
+    catalogue = load_catalogue()
+    if k < len(toks) and toks[k].text in ("one", "ones"):
+        candidates = [m.category for m in mentions[-3:]]
+    else:
+        candidates = [later[0][2]] if later and later[0][0] <= e + 4 else []
+    return any(c in owners or catalogue[c].shape in owners for c in candidates)
+
+
 def _idiom_here(toks: list[_Tok], s: int, e: int) -> bool:
     """A bare singular noun right after "at" ("at anchor", "at sea"), a phrase of manner or state,
     not a thing: no determiner, count or describing word, and the phrase ends there."""
@@ -525,6 +579,23 @@ def _part_of_vessel(toks: list[_Tok], s: int, e: int) -> bool:
     opening = j < 0 or toks[j].text in (".", "!", "?")
     part = " ".join(t.text for t in toks[s:e])
     return opening and (part in _PLACE_PARTS or part in load_vocabulary().places) and e < len(toks) and toks[e].text == "of"
+
+
+def _inside_of_vehicle(toks: list[_Tok], s: int, e: int, mentions: list[_Mention]) -> bool:
+    """"The open cabin door" after a seaplane, "the cockpit" after a glider: the inside of a
+    vehicle named in this sentence or the one before (``_PLACE_PARTS``, with "the" or "its"), no
+    cabin or hall of its own."""
+    if " ".join(t.text for t in toks[s:e]) not in _PLACE_PARTS:
+        return False
+    j = s - 1
+    while j >= 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+        j -= 1
+    if j < 0 or toks[j].text not in ("the", "its"):
+        return False
+    stops = [k for k in range(s) if toks[k].text in (".", "!", "?")]
+    since = stops[-2] if len(stops) > 1 else -1
+    vocabulary = load_vocabulary()
+    return any(m.start > since and vocabulary.carries(m.category, m.phrase, ("vehicles",)) for m in mentions)
 
 
 #: Categories and shapes that can hold a scene inside them ("the engine room of a starship").
@@ -552,13 +623,16 @@ def _owns_opening_place(toks: list[_Tok], s: int) -> bool:
 
 def _picture_of_scene(toks: list[_Tok], s: int, e: int, category: str) -> bool:
     """The description opens with the picture it is ("A watercolour painting of a headland", "An
-    illustration of a market"): a picture followed by "of", with only describing words before it."""
-    if category != "picture_frame" or e >= len(toks) or toks[e].text != "of":
+    illustration of a market", "A pop art comic panel of a flying saucer"): a picture, or a panel,
+    followed by "of", with only describing words before it."""
+    if category not in ("picture_frame", "panel") or e >= len(toks) or toks[e].text != "of":
         return False
     if not all(t.text[:1].isalpha() and t.text not in _STOP or t.text in ("a", "an") for t in toks[:s]):
         return False
     k = e  # a sentence that only names the picture: "A painting of a ship hangs ..." is a thing
     while k < len(toks) and toks[k].text not in (".", "!", "?") and not _verb_word(toks[k].text):
+        if toks[k].text == "all" and toks[k - 1].text == ",":
+            return True  # ", all bold dots and outlines": how it looks, to the end
         k += 1
     return k >= len(toks) or toks[k].text in (".", "!", "?")
 
@@ -725,6 +799,11 @@ def _plural_is_verb(toks: list[_Tok], s: int, nxt: tuple) -> bool:
         return True
     if _counted_plural(toks, s):
         return False
+    j = s - 1
+    while j >= 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+        j -= 1
+    if j >= 0 and toks[j].text in _SINGULAR_DETERMINERS and toks[nxt[1] - 1].text not in load_vocabulary().pair_nouns:
+        return True  # "a yacht rocks at the jetty": after "a", a compound would end in a singular
     person = load_vocabulary().match(tuple(t.text for t in toks[s : nxt[0]]))
     if person is not None and person.category == "figure":
         return True  # "the baker slides loaves into the oven": a person names no kind of slide
@@ -1043,7 +1122,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         ) or _shares_article(toks, i, covered)
         if not counter or w == "one" and i + 1 < n and toks[i + 1].text in ("of", "another", "other"):
             continue
-        if _elided_at(toks, i) is not None or (i + 1 < n and _elided_at(toks, i + 1) is not None):
+        rough = i + 2 < n and toks[i + 1].text in _APPROXIMATE and _elided_at(toks, i + 2) is not None
+        if _elided_at(toks, i) is not None or (i + 1 < n and _elided_at(toks, i + 1) is not None) or rough:
             continue  # "a third waits": more of a group named before (:func:`_elided_members`)
         if i + 1 < n and toks[i + 1].joined and w not in ("a", "an", "another", "the", *_OWNERS):
             continue  # "a six-wheeled rover": a number hyphened to a word describes, counts nothing
@@ -1116,6 +1196,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         ) or (j < n and toks[j].text == "of"):
             continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"
         entry = _guess(toks, head, toks[max(i - 1, 0) : head])
+        if w in _NUMBERS and i > 0 and toks[i - 1].text == "its" and entry.category == GENERIC:
+            continue  # "its four propellers gleaming": a thing's parts, counted ("its two cubs" are there)
         opening = i == 0 or not toks[i - 1].text[:1].isalpha()
         placed = w == "the" and opening and j < n and toks[j].text in _PLACING_VERBS
         # ("near", "by" and "past" the landmarks and the fittings of a place too: "near the airlock")
@@ -1406,11 +1488,20 @@ def _buildings(toks: list[_Tok], covered: set[int]) -> list:
     return out
 
 
+#: Prepositions that hang a thing from another or put it under or against one: a part named after
+#: one with "a" is a thing ("hangs from a hook"; "a sieve on a wooden frame" is the sieve's frame).
+_PUT_ON = {"from", "under", "beneath", "underneath", "against"}
+#: What a fitting is fixed to: "a ceiling hook", "a wall hook" are the room's.
+_FITTED = {"ceiling", "wall", "roof"}
+
+
 def _loose_parts(toks: list[_Tok], covered: set[int]) -> list:
     """A part of a body or a machine is no object ("its left arm", "a robot with six arms"), but
     one the text detaches is a thing of its own: a detaching word before it ("spare heads", "a
     severed claw") or right after it ("its left arm removed and lying on a workbench"), or a
-    part that opens a clause as its own subject ("a crane hook hangs from a rail")."""
+    part that opens a clause as its own subject ("a crane hook hangs from a rail"), or one named
+    with "a" or a count where a thing is put ("hangs from a hook", "a stack of drill pipes", "under
+    two awnings"; not "a stall with an awning", whose awning it is)."""
     vocabulary = load_vocabulary()
     out: list = []
     for k, t in enumerate(toks):
@@ -1427,8 +1518,17 @@ def _loose_parts(toks: list[_Tok], covered: set[int]) -> list:
         # door it is), nor "a sieve on a wooden frame stand" (the verb of a plural subject before)
         whose = j > 0 and toks[j - 1].text in ("with", "of", "has", "have", "having")
         verb = (after in _PLACING_VERBS or after in ("is", "are")) and after.endswith("s") == (opener in ("a", "an"))
-        own = (opener in ("a", "an") or opener in _NUMBERS) and verb and not whose
-        if before & vocabulary.detached or after in vocabulary.detached or own:
+        counted = opener in ("a", "an") or opener in _NUMBERS
+        own = counted and verb and not whose
+        # (the thing something is put on, hung from or stacked as: "a helmet hangs from a hook")
+        put = counted and j > 0 and toks[j - 1].text in _PUT_ON or opener == "of" and j > 0 and toks[
+            j - 1
+        ].text in _QUANTITY
+        one = vocabulary.singular(t.text)
+        # (not "a hook of the crane", "a ceiling hook": a fitting of the room, "under one arm": a body's)
+        put = put and after != "of" and not before & _FITTED and one not in vocabulary.body_parts
+        put = put and one not in _LIVING_PARTS
+        if before & vocabulary.detached or after in vocabulary.detached or own or put:
             out.append((k, k + 1, entry.category, entry))
             covered.add(k)
     return out
@@ -1487,7 +1587,9 @@ def _heap_of_stuff(toks: list[_Tok], i: int, covered: set[int]) -> bool:
     after = toks[i + 2].text if i + 2 < len(toks) else "."
     ends = not after[:1].isalpha() or (after in _STOP and after not in ("of", "and"))
     # (a verb may follow stuff, "a heap of rubble blocks the door", not a colour: "a pile of old bricks")
-    stuff = ends and load_vocabulary().is_adjective(w) or (ends or _is_verb(after)) and w in load_vocabulary().not_things
+    # (a part word is a noun there, not a verb: "a stack of copper pipes")
+    verb = _is_verb(after) and singular(after) not in load_vocabulary().not_things
+    stuff = ends and load_vocabulary().is_adjective(w) or (ends or verb) and w in load_vocabulary().not_things
     return stuff and i + 1 not in covered and w[:1].isalpha() and w not in _STOP and singular(w) == w
 
 
@@ -1921,11 +2023,15 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
     adjectives: list[str] = []
     count: int | None = None
     counted = False
+    if _herd_count(toks, m.start):  # "a herd of about twenty": the count is the mention
+        j, count, counted = -1, _NUMBERS[toks[m.start].text], True
     while j >= prev_end and j >= 0 and m.start - j <= 7:
         t = toks[j]
         w = t.text
         if w in _NUMBERS and not toks[j + 1].joined:
             count, counted = _NUMBERS[w], True
+            if t.joined and j > 0 and toks[j - 1].text in _NUMBERS and _NUMBERS[toks[j - 1].text] >= 20:
+                count += _NUMBERS[toks[j - 1].text]  # "twenty-five"
             if w == "dozen" and j > 0 and toks[j - 1].text in _NUMBERS:
                 count *= _NUMBERS[toks[j - 1].text]  # "two dozen candles"
             # "above one bench", "between every two benches", "the two nearest benches": of those
@@ -1951,7 +2057,10 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             break
         if w == "of" and j > 0 and toks[j - 1].text in _QUANTITY:
             q = toks[j - 1].text
-            small = (m.guess.rests if m.guess is not None else load_catalogue()[m.category].rests) == "surface"
+            # (a stack of long things, "a stack of drill pipes", is several of them)
+            size = m.guess.size if m.guess is not None else load_catalogue()[m.category].size
+            rests = m.guess.rests if m.guess is not None else load_catalogue()[m.category].rests
+            small = rests == "surface" and max(size) < 1.0
             pair = q in ("pair", "pairs") and toks[m.end - 1].text in load_vocabulary().pair_nouns  # "a pair of shears"
             # "a stack of plates", "a pile of parchment", "a line of bunting": one heap of small
             # things, one lot of stuff (no count noun); "a flock of sheep" are sheep
@@ -2005,8 +2114,12 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         # "a grandstand packed with cheering peasants": a crowd ("full of goldfish": a plural
         # that looks singular, since a bare singular thing is never what a place is full of)
         count = _VAGUE["many"]
+    total = _total_after(toks, m) if plural else None
+    if total is not None:  # "Rows of bidders sit ..., a dozen in all"
+        count, counted = total, True
     if count is None:
         count = UNCOUNTED if plural else 1
+    count = min(count, CROWD)
     if m.category == "books" and not counted:
         count = 1
     if plural and count == 1 and counted and not m.each and toks[max(m.start - 1, 0)].text not in ("a", "an"):
@@ -2039,6 +2152,26 @@ def _per_unit(toks: list[_Tok], end: int) -> int | None:
             "in", "per", "to"
         ) and words[2] in ("each", "every", "a") and singular(words[3]) in _UNIT_NOUNS:  # fmt: skip
             return _NUMBERS[words[0]]
+        k += 1
+    return None
+
+
+_TOTALS = {("in", "all"), ("in", "total"), ("all", "told")}
+
+
+def _total_after(toks: list[_Tok], m: _Mention) -> int | None:
+    """The count in ", a dozen in all" / ", twenty in total" / ", thirty altogether" later in the
+    sentence of its first noun ("Rows of pupils sit on benches, twenty in all"), else None."""
+    start = max((k for k in range(m.start) if toks[k].text in (".", "!", "?")), default=-1) + 1
+    if any(_match_at(toks, k) for k in range(start, m.start)):
+        return None  # (a total tells how many of the sentence's subject there are)
+    k = m.end
+    while k < len(toks) and toks[k].text not in (".", "!", "?", ";"):
+        if toks[k - 1].text == ",":
+            a = k + (toks[k].text in ("a", "an"))
+            words = [t.text for t in toks[a : a + 3]]
+            if words and words[0] in _NUMBERS and (tuple(words[1:3]) in _TOTALS or words[1:2] == ["altogether"]):
+                return _NUMBERS[words[0]]
         k += 1
     return None
 

@@ -52,6 +52,8 @@ class Vocabulary:
     shape_words: dict[str, tuple[float, float, float]]
     suffixes: tuple[tuple[str, str], ...]
     longest: int
+    #: Endings of a compound that names a place ("hayfield", "farmland") → the shortest stem before them.
+    place_endings: dict[str, int] = field(default_factory=dict)
     #: Phrases that beat the catalogue noun they end with ("arcade cabinet").
     overrides: frozenset[tuple[str, ...]] = frozenset()
     #: Person words "she"/"her" and "he"/"him" can name ("grandmother", "wizard").
@@ -141,13 +143,20 @@ class Vocabulary:
         or adjective, and shaped like a noun."""
         w = word.lower()
         one = singular(w)
-        if w in self.not_things or one in self.not_things or w in self.adjectives:
+        if w in self.not_things or one in self.not_things or w in self.adjectives or self.is_place_compound(one):
             return False
         if not w.isalpha() or len(w) < 3:
             return False
         # an ending makes an adjective only after a stem of its own ("tallest", not "nest" or "chest")
         endings = ("ly", "ous", "ful", "ish", "less", "able", "ible", "ive", "ed", "est")
         return not any(w.endswith(e) and len(w) - len(e) >= _MIN_STEM for e in endings)
+
+    def is_place_compound(self, word: str) -> bool:
+        """A compound nobody listed that ends in a place word ("a mown hayfield", "the farmland"):
+        ground the scene stands on, no thing in it."""
+        if (word,) in self.entries:
+            return False
+        return any(word.endswith(e) and len(word) - len(e) >= stem for e, stem in self.place_endings.items())
 
     def is_adjective(self, word: str) -> bool:
         """A describing word rather than a noun that names the kind ("rusty" vs "street")."""
@@ -216,6 +225,7 @@ def _validate(raw: dict) -> Vocabulary:
         shape_words={k: (float(v[0]), float(v[1]), float(v[2])) for k, v in raw.get("shape_words", {}).items()},
         suffixes=tuple(sorted(raw["suffixes"].items(), key=lambda kv: -len(kv[0]))),
         longest=max(len(k) for k in entries),
+        place_endings={k: int(v) for k, v in raw.get("place_endings", {}).items()},
         overrides=frozenset(tuple(words(p)) for p in raw.get("over_catalogue", ())),
         female=frozenset(people.get("female", ())),
         male=frozenset(people.get("male", ())),
