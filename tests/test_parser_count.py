@@ -138,3 +138,18 @@ def test_rough_and_large_counts_are_read_and_capped_at_a_crowd(text, word, many)
 )
 def test_a_total_after_the_subject_counts_it(text, word, many):
     assert counts(text)[word] == many
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("Deer drink at the pond beyond the fence.", "deer", 3),  # no determiner: several
+        ("A wooden frame hung with drying fish stands by the tent.", "fish", 3),
+        ("The deer drinks from the pond.", "deer", 1),
+        ("A sheep grazes by the wall.", "sheep", 1),
+        ("Five sheep lie by the gate.", "sheep", 5),
+        ("A farmer leads a flock of sheep past the barn.", "sheep", 6),  # the quantity word counts them
+    ],
+)
+def test_a_bare_noun_whose_plural_is_its_singular_is_several(text, word, many):
+    assert counts(text)[word] == many

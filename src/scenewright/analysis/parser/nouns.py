@@ -215,6 +215,11 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         words = [t.text for t in toks[s:e]]
         # a singular noun before another names its kind ("glass table", "dragon statue"); a plural
         # one is the subject of a verb that looks like a noun ("pylons guard the altar")
+        several = bool(words) and words[-1] in _SAME_PLURALS and _bare(toks, s)
+        if nxt and nxt[0] == e and several and (nxt[3] is None or nxt[3].category == GENERIC):
+            if nxt[1] - nxt[0] == 1 and not toks[nxt[0]].text.endswith("s"):
+                raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])  # "sheep graze by the wall": their verb
+                nxt = None
         if nxt and nxt[0] == e and singular(words[-1]) == words[-1]:
             last = toks[nxt[1] - 1].text
             if singular(last) != last and _plural_is_verb(toks, s, nxt):  # "a knight guards the gate": a verb
@@ -284,6 +289,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a mushroom-shaped lamp", "a goldfish-scooping stall", "glass-domed huts": a look or a use
         # "three sheep graze": after a count, a compound would end in a plural ("three fish tanks")
         verb_after = _counted_plural(toks, s) and e < n and not toks[e].joined and singular(follow) == follow
+        verb_after = verb_after or several
         if entry is not None and singular(words[-1]) == words[-1] and _names_kind(toks, e) and not verb_after:
             continue  # "a bear face", "a train compartment", "camel-hair tents": a kind, not a thing
         if _use_compound(toks, s, e, cat):
@@ -291,7 +297,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         if _owner_of_named_part(toks, s, e):
             continue  # "a crawler with a crane arm", "a hat of peacock feathers": whose part, no crane
         if e < n and toks[e].text[:1].isalpha() and toks[e].text not in _STOP and not toks[e].joined and (
-            not _is_verb(toks[e].text) and not _participle(toks[e].text) and _match_at(toks, e) is None
+            not several and not _is_verb(toks[e].text) and not _participle(toks[e].text) and _match_at(toks, e) is None
             and _unknown_opening_place(toks, e, e + 1)
         ):
             continue  # "An otter sanctuary by a river.": the kind of the place nobody listed the opening names
@@ -1994,6 +2000,12 @@ def _is_plural(toks: list[_Tok], m: _Mention) -> bool:
     if "of" in words[1:]:
         words = words[: words.index("of", 1)]  # "bottles of wine": the measure is the head
     last = words[-1]
+    if last in _SAME_PLURALS:  # "sheep graze", "a rack hung with drying fish": no determiner, so several
+        j = m.start - 1
+        while j >= 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+            j -= 1
+        # (after "of" the quantity word counts them, "a flock of sheep", or they are a holder's contents)
+        return _bare(toks, m.start) and (j < 0 or toks[j].text != "of")
     if m.guess is not None and tuple(t.text for t in toks[m.start : m.end]) in load_vocabulary().entries:
         return False  # "a triceratops" is listed as it is written
     if last in load_vocabulary().pair_nouns or last.endswith("'s"):
@@ -2001,6 +2013,16 @@ def _is_plural(toks: list[_Tok], m: _Mention) -> bool:
     return load_vocabulary().singular(last) != last or last in ("people", "cacti", "shelves", "benches", "glasses")
 
 
+def _bare(toks: list[_Tok], s: int) -> bool:
+    """No determiner or count before the noun phrase at ``s`` (past its describing words)."""
+    j = s - 1
+    while j >= 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+        j -= 1
+    return j < 0 or toks[j].text not in _DETERMINERS and toks[j].text not in _NUMBERS and toks[j].text not in _VAGUE
+
+
+#: Nouns whose plural is written as the singular: several when no determiner or count comes before.
+_SAME_PLURALS = {"sheep", "deer", "reindeer", "moose", "bison", "elk", "fish", "salmon", "trout", "swine"}
 #: Place nouns that qualify the next noun after a determiner ("the middle bench", "the end stall").
 _POSITION_WORDS = {"middle", "centre", "center", "corner", "end", "front", "back", "top", "bottom", "side"}
 
