@@ -1098,3 +1098,21 @@ def test_the_inside_of_a_vehicle_and_a_verb_after_a_singular_are_no_things(text,
 
 def test_a_cabin_with_no_vehicle_about_is_a_cabin():
     assert words_of("A cat sleeps by the cabin door.")["cabin"] == 1
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("Chains hang from the beams above the anvil.", "chain", 3),  # a bare plural part opening a sentence
+        ("Two boys climb on the heavy roller parked by the shed.", "roller", 1),  # "the" thing placed by a participle
+        ("A pair of six-legged pack beasts drink from a trough.", "beast", 2),  # a hyphened count describes
+    ],
+)
+def test_more_ways_a_noun_names_a_thing(text, word, many):
+    assert words_of(text)[word] == many
+
+
+def test_a_hyphened_look_before_a_tile_panel_keeps_it_the_medium():
+    got = words_of("A blue-and-white tile panel of a village square. Two monks walk by a well.")
+    assert "panel" not in got
+    assert got["monk"] == 2

@@ -633,8 +633,8 @@ def _picture_of_scene(toks: list[_Tok], s: int, e: int, category: str) -> bool:
     followed by "of", with only describing words before it."""
     if category not in ("picture_frame", "panel") or e >= len(toks) or toks[e].text != "of":
         return False
-    if not all(t.text[:1].isalpha() and t.text not in _STOP or t.text in ("a", "an") for t in toks[:s]):
-        return False
+    if not all(t.text[:1].isalpha() and (t.text not in _STOP or t.joined) or t.text in ("a", "an") for t in toks[:s]):
+        return False  # (a hyphened look is a describing word: "a blue-and-white tile panel of")
     k = e  # a sentence that only names the picture: "A painting of a ship hangs ..." is a thing
     while k < len(toks) and toks[k].text not in (".", "!", "?") and not _verb_word(toks[k].text):
         if toks[k].text == "all" and toks[k - 1].text == ",":
@@ -1146,6 +1146,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             continue  # the count of a phrase read by its own rules
         head = None
         looks: set[int] = set()  # "a whale-shaped weathervane": a known noun in a hyphened look
+        while j + 1 < n and toks[j].text in _NUMBERS and toks[j + 1].joined:
+            j += 2  # "a pair of six-legged beasts": a hyphened count describes
         while j < n and j - i <= 5:
             x = toks[j].text
             if j in covered and j + 1 < n and toks[j + 1].joined and toks[j + 1].text in _LIKENESS:
@@ -1205,7 +1207,7 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         if w in _NUMBERS and i > 0 and toks[i - 1].text == "its" and entry.category == GENERIC:
             continue  # "its four propellers gleaming": a thing's parts, counted ("its two cubs" are there)
         opening = i == 0 or not toks[i - 1].text[:1].isalpha()
-        placed = w == "the" and opening and j < n and toks[j].text in _PLACING_VERBS
+        placed = w == "the" and j < n and (opening and toks[j].text in _PLACING_VERBS or toks[j].text in _STANDING)
         # ("near", "by" and "past" the landmarks and the fittings of a place too: "near the airlock")
         by = (_placed_by(toks, i, _BY_KINDS - {"near"}) or _outside_part_of(toks, i)) and not _named_before(toks, head)
         by = by and (j >= n or toks[j].text not in ("one", "ones"))
@@ -1505,7 +1507,8 @@ def _loose_parts(toks: list[_Tok], covered: set[int]) -> list:
     """A part of a body or a machine is no object ("its left arm", "a robot with six arms"), but
     one the text detaches is a thing of its own: a detaching word before it ("spare heads", "a
     severed claw") or right after it ("its left arm removed and lying on a workbench"), or a
-    part that opens a clause as its own subject ("a crane hook hangs from a rail"), or one named
+    part that opens a clause as its own subject ("a crane hook hangs from a rail", "Chains hang
+    from the beams"), or one named
     with "a" or a count where a thing is put ("hangs from a hook", "a stack of drill pipes", "under
     two awnings"; not "a stall with an awning", whose awning it is)."""
     vocabulary = load_vocabulary()
@@ -1525,7 +1528,9 @@ def _loose_parts(toks: list[_Tok], covered: set[int]) -> list:
         whose = j > 0 and toks[j - 1].text in ("with", "of", "has", "have", "having")
         verb = (after in _PLACING_VERBS or after in ("is", "are")) and after.endswith("s") == (opener in ("a", "an"))
         counted = opener in ("a", "an") or opener in _NUMBERS
-        own = counted and verb and not whose
+        # (a bare plural that opens a sentence too: "Chains hang from the ceiling")
+        bare = (j < 0 or opener in (".", "!", "?", ";")) and vocabulary.singular(t.text) != t.text
+        own = (counted or bare) and verb and not whose
         # (the thing something is put on, hung from or stacked as: "a helmet hangs from a hook")
         put = counted and j > 0 and toks[j - 1].text in _PUT_ON or opener == "of" and j > 0 and toks[
             j - 1
@@ -1670,6 +1675,11 @@ def _unknown_heads(toks: list[_Tok], raw: list, covered: set[int]) -> list:
         out.append((k, k + 1, entry.category, entry))
         covered.add(k)
     return out
+
+
+#: Participles that say where a thing stands: "the heavy roller parked by the hut" names a thing.
+_STANDING = {"parked", "moored", "propped", "standing", "lying", "resting", "leaning", "tethered", "stacked",
+             "beached", "docked"}  # fmt: skip
 
 
 def _joint_verb(toks: list[_Tok], k: int, category: str) -> bool:
