@@ -1116,3 +1116,17 @@ def test_a_hyphened_look_before_a_tile_panel_keeps_it_the_medium():
     got = words_of("A blue-and-white tile panel of a village square. Two monks walk by a well.")
     assert "panel" not in got
     assert got["monk"] == 2
+
+
+@pytest.mark.parametrize(
+    ("text", "category", "many"),
+    [
+        ("Two hippos wallow in a mud pool beside the river.", "pond", 1),  # in water: a thing, not the setting
+        ("A crab hides in a rock pool.", "pond", 1),
+        ("A dragon soars over a smoking volcano.", "rock", 1),  # a landform a thing is over
+        ("A bat flies over a hill behind the farm.", "rock", 1),
+        ("A village beside a mountain. A cart waits by the well.", "rock", 0),  # the opening's setting
+    ],
+)
+def test_landmarks_something_is_in_or_over_are_things(text, category, many):
+    assert sum(1 for o in parse_scene(text).objects if o.category == category) == many

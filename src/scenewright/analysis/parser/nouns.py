@@ -913,9 +913,11 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     ):
         j -= 1
     if j >= 0 and toks[j].text in _INSIDE:
-        return True
-    if head in load_vocabulary().landforms and j >= 0 and _landform_part(toks, j):
-        return False  # "a dragon sleeps on top of a hill": the hill is a thing here
+        # (in water one is in a thing of the scene: "two hippos wallow in a mud pool", not its setting)
+        water = match_phrase((head,)) == "pond" and toks[j + 1].text in ("a", "an") and not _verbless_opening(toks, j)
+        return not water
+    if head in load_vocabulary().landforms and j >= 0 and (_landform_part(toks, j) or _by_landform(toks, j)):
+        return False  # "a dragon sleeps on top of a hill", "flies over a volcano": the hill is a thing here
     if j >= 0 and toks[j].text in _DETERMINERS and _placed_by(toks, j) and not _verbless_opening(toks, j):
         return False  # "a mule waits beside the tavern": a building of the scene (_buildings)
     if _outside_part_of(toks, j + 1) and not _verbless_opening(toks, j):
@@ -1404,14 +1406,26 @@ def _landform_part(toks: list[_Tok], k: int) -> bool:
     return not _verbless_opening(toks, k)
 
 
+#: Prepositions that put a thing by a landform seen in the scene: "a dragon circles over a volcano".
+_BY_LANDFORM = {"over", "above", "beside", "behind", "past", "near", "towards", "toward"}
+
+
+def _by_landform(toks: list[_Tok], k: int) -> bool:
+    """``k`` is one of ``_BY_LANDFORM`` before "a"/"an" outside the opening that names the setting
+    ("a pterodactyl flies over a smoking volcano"; not "A village beside a mountain.")."""
+    return 0 < k < len(toks) - 1 and toks[k].text in _BY_LANDFORM and toks[k + 1].text in ("a", "an") and (
+        not _verbless_opening(toks, k)
+    )
+
+
 def _landforms(toks: list[_Tok], covered: set[int]) -> list:
     """A hill, a dune or a cliff sets the scene, but one the text puts a thing on top of or at
     the foot of is a thing of the scene ("a dragon sleeps on top of a flat-topped hill"); not
-    "at the top of the slope", a part of the place."""
+    "at the top of the slope", a part of the place; nor one a thing is by or over (``_by_landform``)."""
     forms = load_vocabulary().landforms
     out: list = []
-    for k in range(2, len(toks)):
-        if not _landform_part(toks, k):
+    for k in range(1, len(toks)):
+        if not (k >= 2 and _landform_part(toks, k) or _by_landform(toks, k)):
             continue
         j = k + 1
         while j < len(toks) and j - k <= 5 and j not in covered and toks[j].text[:1].isalpha() and (
