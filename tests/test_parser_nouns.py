@@ -1130,3 +1130,15 @@ def test_a_hyphened_look_before_a_tile_panel_keeps_it_the_medium():
 )
 def test_landmarks_something_is_in_or_over_are_things(text, category, many):
     assert sum(1 for o in parse_scene(text).objects if o.category == category) == many
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("Three mannequins, each topped with a felt hat, stand by the door.", "hat", 3),  # put on them, not worn
+        ("A girl with a red cap stands by the swing.", "cap", 0),  # worn
+        ("Two ground crew hold the rope beside the van.", "crew", 2),  # crew counted as people
+    ],
+)
+def test_clothing_put_on_a_holder_is_a_thing_and_crew_are_people(text, word, many):
+    assert words_of(text)[word] == many

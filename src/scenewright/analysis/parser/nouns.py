@@ -1174,8 +1174,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
                 # a "home recording studio"
             head = j
             j += 1
-            if plural and singular(x) != x:
-                break  # "three zorbs glow": the plural noun ends the phrase
+            if plural and (singular(x) != x or x in _PEOPLE_GROUPS):
+                break  # "three zorbs glow", "two ground crew hold": the plural noun ends the phrase
         known = any(k in covered and k not in looks for k in range(i + 1, head + 1)) if head is not None else False
         if head is None or known or toks[head].quoted:
             continue
@@ -1201,11 +1201,15 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         # "a tesla coil", "a drum set": a measure word after the noun of its kind is the thing itself
         kind = toks[head - 1].text  # ("a washing line": what it is for)
         compound = word in _MEASURE_THINGS and head > i + 1 and (not vocabulary.is_adjective(kind) or kind.endswith("ing"))
+        # "two ground crew": a people group counted is so many of its people ("a film crew" is none)
+        members = _NUMBERS.get(w, 0) > 1 and word in _PEOPLE_GROUPS and not (j < n and toks[j].text == "of")
         if not (vocabulary.is_thing_word(word) or held or counted_place or stock or compound) or (
-            word in _QUANTITY and not counted_place and not compound
+            word in _QUANTITY and not counted_place and not compound and not members
         ) or (j < n and toks[j].text == "of"):
             continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"
-        entry = _guess(toks, head, toks[max(i - 1, 0) : head])
+        entry = vocabulary.family("figure") if members else _guess(toks, head, toks[max(i - 1, 0) : head])
+        if entry.category == GENERIC and singular(word) in vocabulary.clothing:
+            entry = Entry(GENERIC, vocabulary.clothing_size, "surface")  # "a felt hat" on a stand: its own size
         if w in _NUMBERS and i > 0 and toks[i - 1].text == "its" and entry.category == GENERIC:
             continue  # "its four propellers gleaming": a thing's parts, counted ("its two cubs" are there)
         opening = i == 0 or not toks[i - 1].text[:1].isalpha()
@@ -1622,6 +1626,10 @@ def _heap_of_stuff(toks: list[_Tok], i: int, covered: set[int]) -> bool:
 _LAID = {"hung", "draped", "folded", "spread", "laid", "piled", "heaped", "strewn", "thrown", "slung", "pegged"}
 
 
+#: Participles before "with" that put the with-thing on its holder ("a stand topped with a hat").
+_TOPPED = {"topped", "crowned", "hung", "draped", "piled", "stacked", "loaded", "laden", "heaped", "strung"}
+
+
 def _laid_out(toks: list[_Tok], head: int, j: int) -> bool:
     """The clothing word at ``head`` is the subject of a placing verb ("leather coats hang on a
     rail", "a cloak lies on the bench") or is put somewhere ("a shawl draped over the chair"): a
@@ -1633,6 +1641,8 @@ def _laid_out(toks: list[_Tok], head: int, j: int) -> bool:
         if _is_verb(toks[k].text):
             break  # ("skirts a fleece spread out on it": the object of a deed)
         k -= 1
+    if k > 0 and toks[k].text == "with" and toks[k - 1].text in _TOPPED:
+        return True  # "three hat stands, each topped with a felt hat": put on the stand, not worn
     if k >= 0 and toks[k].text in ("with", "in", "wearing", "without", "and", "or"):
         return False  # "a boy with a red cap stands by the swing": the boy's verb, his cap
     after = toks[j].text
