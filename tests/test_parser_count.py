@@ -153,3 +153,14 @@ def test_a_total_after_the_subject_counts_it(text, word, many):
 )
 def test_a_bare_noun_whose_plural_is_its_singular_is_several(text, word, many):
     assert counts(text)[word] == many
+
+
+@pytest.mark.parametrize(
+    ("text", "many"),
+    [
+        ("Onlookers gather behind a rope barrier.", 5),  # a crowd word, bare: many
+        ("Two onlookers wait by the gate.", 2),
+    ],
+)
+def test_a_bare_crowd_of_onlookers_is_many(text, many):
+    assert counts(text)["onlooker"] == many

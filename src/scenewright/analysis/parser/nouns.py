@@ -2173,6 +2173,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
     total = _total_after(toks, m) if plural else None
     if total is not None:  # "Rows of bidders sit ..., a dozen in all"
         count, counted = total, True
+    if count is None and plural and singular(toks[m.end - 1].text) in load_vocabulary().crowd_words:
+        count = _VAGUE["many"]  # "spectators gather behind the rope": a crowd, not a few
     if count is None:
         count = UNCOUNTED if plural else 1
     count = min(count, CROWD)

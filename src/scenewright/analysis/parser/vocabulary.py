@@ -81,6 +81,8 @@ class Vocabulary:
     clothing: frozenset[str] = frozenset()
     #: The size (m) of a piece of clothing that is a thing (held, hung up, laid out, put on a stand).
     clothing_size: tuple[float, float, float] = (0.4, 0.3, 0.2)
+    #: People who come as a crowd: a bare plural of one is many ("spectators gather").
+    crowd_words: frozenset[str] = frozenset()
     #: Kind (seats, vehicles, mounts, perches, containers) → the categories, shapes, families
     #: and head words of things a person or an animal is on when it is in or on them.
     carriers: dict[str, frozenset[str]] = field(default_factory=dict)
@@ -242,6 +244,7 @@ def _validate(raw: dict) -> Vocabulary:
         relational=frozenset(people.get("relational", ())),
         pair_nouns=frozenset(raw.get("pair_nouns", ())),
         clothing=frozenset(lists.get("clothing", ())),
+        crowd_words=frozenset(raw.get("crowd_words", ())),
         clothing_size=tuple(float(v) for v in raw.get("clothing_size", (0.4, 0.3, 0.2))),  # type: ignore[arg-type]
         materials=frozenset(lists.get("materials", ())),
         carriers={k: frozenset(v) for k, v in raw.get("carriers", {}).items() if k != "about"},
