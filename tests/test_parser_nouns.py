@@ -1142,3 +1142,16 @@ def test_landmarks_something_is_in_or_over_are_things(text, category, many):
 )
 def test_clothing_put_on_a_holder_is_a_thing_and_crew_are_people(text, word, many):
     assert words_of(text)[word] == many
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "category"),
+    [
+        ("A cadet slides down the rope.", "slide", None),  # after "a", a plural is the verb
+        ("A dalmatian naps in a dog bed.", "dalmatian", "animal"),  # a dog breed, not an "-ian" person
+        ("The chief sits at a metal desk.", "chief", "figure"),
+    ],
+)
+def test_a_verb_after_a_singular_and_listed_words(text, word, category):
+    got = {o.name.split()[-1]: o.category for o in parse_scene(text).objects}
+    assert got.get(word) == category

@@ -1182,7 +1182,10 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         # a counted plural before a singular known word is its subject ("two stokers shovel coal")
         subject = plural and singular(toks[head].text) != toks[head].text and j < n
         subject = subject and singular(toks[j].text) == toks[j].text
-        if j < n and j in covered and not subject:
+        # ("a trainee slides down it": after "a", a plural is the verb, not the noun its word describes)
+        verb_next = w in ("a", "an", "another") and j < n and j in covered and head == j - 1
+        verb_next = verb_next and singular(toks[j].text) != toks[j].text and toks[j].text not in vocabulary.pair_nouns
+        if j < n and j in covered and not subject and not verb_next:
             continue  # the words before a known noun are its adjectives ("a shiny [robot]")
         word = toks[head].text
         if word.endswith("ing") and j < n and toks[j].text in _OBJECT_OPENERS:
