@@ -1155,3 +1155,11 @@ def test_clothing_put_on_a_holder_is_a_thing_and_crew_are_people(text, word, man
 def test_a_verb_after_a_singular_and_listed_words(text, word, category):
     got = {o.name.split()[-1]: o.category for o in parse_scene(text).objects}
     assert got.get(word) == category
+
+
+def test_the_second_end_of_a_fronted_between_is_no_apposition():
+    got = {o.name.split()[-1]: o.category for o in parse_scene(
+        "Between the forge and the kiln, a potter in a leather apron waits by a wheel."
+    ).objects}
+    assert got.get("kiln") != "figure"
+    assert got.get("potter") == "figure"

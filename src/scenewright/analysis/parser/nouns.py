@@ -1892,6 +1892,8 @@ def _after_preposition(toks: list[_Tok], head: int) -> bool:
         toks[j].text[:1].isalpha() and toks[j].text not in _STOP
     )):
         j -= 1
+    if j > 0 and toks[j].text in ("and", "or"):
+        return _after_preposition(toks, j)  # "between the desk and the table, a captain waits": both ends
     return j >= 0 and toks[j].text in _STOP and toks[j].text not in _DETERMINERS and toks[j].text[:1].isalpha() and (
         toks[j].text not in ("and", "or", "but", "while", "where", "which", "who", "that", "as", "than")
     )
