@@ -1163,3 +1163,7 @@ def test_the_second_end_of_a_fronted_between_is_no_apposition():
     ).objects}
     assert got.get("kiln") != "figure"
     assert got.get("potter") == "figure"
+
+
+def test_a_stack_of_compound_parts_is_several_of_them():
+    assert words_of("A mason walks past a stack of scaffold pipes.")["pipe"] == 3

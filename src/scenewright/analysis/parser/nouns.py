@@ -810,6 +810,8 @@ def _plural_is_verb(toks: list[_Tok], s: int, nxt: tuple) -> bool:
         j -= 1
     if j >= 0 and toks[j].text in _SINGULAR_DETERMINERS and toks[nxt[1] - 1].text not in load_vocabulary().pair_nouns:
         return True  # "a yacht rocks at the jetty": after "a", a compound would end in a singular
+    if j > 0 and toks[j].text == "of" and toks[j - 1].text in _QUANTITY:
+        return False  # "a stack of drill pipes": what a quantity counts is a noun phrase
     person = load_vocabulary().match(tuple(t.text for t in toks[s : nxt[0]]))
     if person is not None and person.category == "figure":
         return True  # "the baker slides loaves into the oven": a person names no kind of slide
