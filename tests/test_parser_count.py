@@ -164,3 +164,7 @@ def test_a_bare_noun_whose_plural_is_its_singular_is_several(text, word, many):
 )
 def test_a_bare_crowd_of_onlookers_is_many(text, many):
     assert counts(text)["onlooker"] == many
+
+
+def test_a_count_in_digits_is_taken_as_meant():
+    assert counts("30 chairs stand in rows in the hall.")["chair"] == 30

@@ -2085,7 +2085,7 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
     j = m.start - 1
     adjectives: list[str] = []
     count: int | None = None
-    counted = False
+    counted = exact = False  # (exact: written in digits, "1000000 seats": kept, for the object limit to refuse)
     if _herd_count(toks, m.start):  # "a herd of about twenty": the count is the mention
         j, count, counted = -1, _NUMBERS[toks[m.start].text], True
     while j >= prev_end and j >= 0 and m.start - j <= 7:
@@ -2110,7 +2110,7 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
                 adjectives.insert(0, t.orig)  # "27-inch", "4 m tall": a size, not a count
                 j -= 1
                 continue
-            count, counted = int(float(w)), True
+            count, counted, exact = int(float(w)), True, True
             break
         if w in _VAGUE:
             count = _VAGUE[w]
@@ -2184,7 +2184,7 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         count = _VAGUE["many"]  # "spectators gather behind the rope": a crowd, not a few
     if count is None:
         count = UNCOUNTED if plural else 1
-    count = min(count, CROWD)
+    count = count if exact else min(count, CROWD)
     if m.category == "books" and not counted:
         count = 1
     if plural and count == 1 and counted and not m.each and toks[max(m.start - 1, 0)].text not in ("a", "an"):

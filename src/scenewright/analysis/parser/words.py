@@ -12,8 +12,9 @@ _NUMBERS = {
     "eight": 8, "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "dozen": 12, "fifteen": 15, "twenty": 20,
     "thirty": 30, "forty": 40, "fifty": 50, "hundred": 100,
 }  # fmt: skip
-#: The most of one kind a count gives: "a herd of fifty goats" or "a hundred fans" stand as two dozen,
-#: so a crowd reads as a crowd and the scene stays light enough to lay out and render.
+#: The most of one kind a count in words gives: "a herd of fifty goats" or "a hundred fans" stand as two
+#: dozen, so a crowd reads as a crowd and the scene stays light enough to lay out and render (a count in
+#: digits is taken as meant, and the object limit refuses one too large).
 CROWD = 24
 #: Words that make the count after them a rough one ("about twenty", "some thirty"): no things.
 _APPROXIMATE = {"about", "around", "roughly", "nearly", "almost", "approximately", "perhaps", "maybe"}
