@@ -593,9 +593,7 @@ def _inside_of_vehicle(toks: list[_Tok], s: int, e: int, mentions: list[_Mention
     cabin or hall of its own."""
     if " ".join(t.text for t in toks[s:e]) not in _PLACE_PARTS:
         return False
-    j = s - 1
-    while j >= 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
-        j -= 1
+    j = _phrase_opener(toks, s)
     if j < 0 or toks[j].text not in ("the", "its"):
         return False
     stops = [k for k in range(s) if toks[k].text in (".", "!", "?")]
@@ -805,9 +803,7 @@ def _plural_is_verb(toks: list[_Tok], s: int, nxt: tuple) -> bool:
         return True
     if _counted_plural(toks, s):
         return False
-    j = s - 1
-    while j >= 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
-        j -= 1
+    j = _phrase_opener(toks, s)
     if j >= 0 and toks[j].text in _SINGULAR_DETERMINERS and toks[nxt[1] - 1].text not in load_vocabulary().pair_nouns:
         return True  # "a yacht rocks at the jetty": after "a", a compound would end in a singular
     if j > 0 and toks[j].text == "of" and toks[j - 1].text in _QUANTITY:
@@ -2042,9 +2038,7 @@ def _is_plural(toks: list[_Tok], m: _Mention) -> bool:
         words = words[: words.index("of", 1)]  # "bottles of wine": the measure is the head
     last = words[-1]
     if last in _SAME_PLURALS:  # "sheep graze", "a rack hung with drying fish": no determiner, so several
-        j = m.start - 1
-        while j >= 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
-            j -= 1
+        j = _phrase_opener(toks, m.start)
         # (after "of" the quantity word counts them, "a flock of sheep", or they are a holder's contents)
         return _bare(toks, m.start) and (j < 0 or toks[j].text != "of")
     if m.guess is not None and tuple(t.text for t in toks[m.start : m.end]) in load_vocabulary().entries:
@@ -2056,9 +2050,7 @@ def _is_plural(toks: list[_Tok], m: _Mention) -> bool:
 
 def _bare(toks: list[_Tok], s: int) -> bool:
     """No determiner or count before the noun phrase at ``s`` (past its describing words)."""
-    j = s - 1
-    while j >= 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
-        j -= 1
+    j = _phrase_opener(toks, s)
     return j < 0 or toks[j].text not in _DETERMINERS and toks[j].text not in _NUMBERS and toks[j].text not in _VAGUE
 
 
