@@ -96,3 +96,75 @@ def test_a_thing_at_each_corner_or_end_is_one_a_part(text, word, many):
 )
 def test_each_place_not_named_before_is_several(text, word, many):
     assert counts(text)[word] == many
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("A boy feeds a goat from a herd of about twenty grazing past the barn.", "goat", 21),
+        ("A ranger watches a flock of thirty wheeling over the marsh behind a heron.", "heron", 1),
+        ("A farmer leads a cow towards a herd of ten, resting under an oak.", "cow", 11),
+    ],
+)
+def test_a_herd_of_a_number_is_that_many_of_the_animal_before(text, word, many):
+    assert counts(text)[word] == many
+    assert not {"about", "grazing", "wheeling", "resting"} & set(counts(text))
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("A shepherd minds a herd of about fifteen goats on the slope.", "goat", 15),
+        ("Some thirty geese waddle past the barn.", "goose", 24),
+        ("A crowd of a hundred fans cheers behind the barrier.", "fan", 24),
+        ("Twenty-five chairs stand in the hall.", "chair", 24),
+        ("Twenty-two lanterns hang over the square.", "lantern", 22),
+        ("Eleven monks walk past the gate.", "monk", 11),
+    ],
+)
+def test_rough_and_large_counts_are_read_and_capped_at_a_crowd(text, word, many):
+    assert counts(text)[word] == many
+    assert "about" not in counts(text)
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("Rows of pupils sit on benches facing the blackboard, a dozen in all, each holding a candle.", "pupil", 12),
+        ("Rows of pupils sit on benches facing the blackboard, a dozen in all, each holding a candle.", "candle", 12),
+        ("Monks kneel on cushions along the wall, nine in total.", "monk", 9),
+        ("Monks kneel on cushions along the wall, nine in total.", "cushion", 9),
+    ],
+)
+def test_a_total_after_the_subject_counts_it(text, word, many):
+    assert counts(text)[word] == many
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("Deer drink at the pond beyond the fence.", "deer", 3),  # no determiner: several
+        ("A wooden frame hung with drying fish stands by the tent.", "fish", 3),
+        ("The deer drinks from the pond.", "deer", 1),
+        ("A sheep grazes by the wall.", "sheep", 1),
+        ("Five sheep lie by the gate.", "sheep", 5),
+        ("A farmer leads a flock of sheep past the barn.", "sheep", 6),  # the quantity word counts them
+    ],
+)
+def test_a_bare_noun_whose_plural_is_its_singular_is_several(text, word, many):
+    assert counts(text)[word] == many
+
+
+@pytest.mark.parametrize(
+    ("text", "many"),
+    [
+        ("Onlookers gather behind a rope barrier.", 5),  # a crowd word, bare: many
+        ("Two onlookers wait by the gate.", 2),
+    ],
+)
+def test_a_bare_crowd_of_onlookers_is_many(text, many):
+    assert counts(text)["onlooker"] == many
+
+
+def test_a_count_in_digits_is_taken_as_meant():
+    assert counts("30 chairs stand in rows in the hall.")["chair"] == 30

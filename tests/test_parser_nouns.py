@@ -1014,3 +1014,156 @@ def test_an_opening_sentence_that_only_names_a_building_is_where_the_scene_stand
     # the text comes back to it from outside: a building of the scene
     outside = parse_scene("A stone barn at dawn. Two goats graze beside the barn.")
     assert any(o.name.endswith("barn") for o in outside.objects)
+
+
+def words_of(text: str) -> Counter:
+    """Last word of each object's name → how many."""
+    return Counter(o.name.split()[-1].lower() for o in parse_scene(text).objects)
+
+
+@pytest.mark.parametrize(
+    ("text", "gone"),
+    [
+        ("A dog barks at the flames beside the hut.", "flame"),  # fire's light, like smoke
+        ("A trawler rolls in a heavy swell.", "swell"),  # the sea's state
+        ("A scarecrow stands in a mown hayfield.", "hayfield"),  # a compound ending in a place word
+        ("A tractor ploughs the farmland behind the barn.", "farmland"),
+        ("A hiker points at the summit with her stick.", "summit"),  # the top of a mountain is a place
+        ("A glider rests on the grass, its two propellers turning.", "propeller"),  # a thing's parts, counted
+        ("A small van waits at the gate, its ramp lowered.", "ramp"),  # "its" part
+        ("Two tow trucks stand side by side, and a driver climbs the ladder of the nearer one.", "ladder"),
+    ],
+)
+def test_places_weather_and_named_parts_are_no_things(text, gone):
+    assert gone not in words_of(text)
+
+
+def test_a_garland_is_no_place_compound():
+    assert words_of("A garland hangs over the door of the cottage.")["garland"] == 1
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("A lantern hangs from a hook beside the door.", "hook", 1),  # a part named with "a" where a thing hangs
+        ("A plumber walks past a stack of copper pipes.", "pipe", 3),  # a stack of long things is several
+        ("Two sailors doze under a pair of striped awnings.", "awning", 2),
+        ("A bear sleeps in the cave with its two cubs.", "cub", 2),  # "its" young are there
+        ("A weathervane stands on a tall pole beside the barn.", "pole", 1),  # not a flag's pole
+        ("A windsock flaps on a mast above the deck.", "mast", 1),  # a mast is a structure of its own
+    ],
+)
+def test_parts_named_as_things_of_their_own_are_things(text, word, many):
+    assert words_of(text)[word] == many
+
+
+@pytest.mark.parametrize(
+    ("text", "word"),
+    [
+        ("A skeleton dangles from a ceiling hook beside the shelf.", "hook"),  # the room's fitting
+        ("A biker holds her helmet under one arm.", "arm"),  # a body's part
+        ("A market stall with a striped awning stands by the well.", "awning"),  # the stall's
+        ("A torn flag flutters on a pole stuck in the sand.", "pole"),  # the flag's pole
+        ("A bucket and a riddle on a metal frame stand by the shed.", "frame"),  # (whose frame it is)
+    ],
+)
+def test_parts_of_something_stay_parts(text, word):
+    assert word not in words_of(text)
+
+
+@pytest.mark.parametrize(
+    ("text", "kept"),
+    [
+        ("A pop art comic panel of a flying saucer landing in a meadow, all bold dots. A cow stares at it.", "saucer"),
+        ("A comic panel of a robot dancing in a kitchen. The robot spins by a fridge.", "robot"),
+    ],
+)
+def test_a_comic_panel_is_the_medium_and_what_it_shows_is_there(text, kept):
+    got = words_of(text)
+    assert "panel" not in got
+    assert got[kept] == 1
+
+
+@pytest.mark.parametrize(
+    ("text", "gone"),
+    [
+        ("A glider lands on the strip. A pilot waves from the open cabin door.", "cabin"),  # the glider's
+        ("A barge drifts past the lock, and a boy sleeps in the cabin.", "cabin"),
+        ("A yacht rocks at the jetty.", "rock"),  # after "a", a plural is the verb
+    ],
+)
+def test_the_inside_of_a_vehicle_and_a_verb_after_a_singular_are_no_things(text, gone):
+    assert gone not in words_of(text)
+
+
+def test_a_cabin_with_no_vehicle_about_is_a_cabin():
+    assert words_of("A cat sleeps by the cabin door.")["cabin"] == 1
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("Chains hang from the beams above the anvil.", "chain", 3),  # a bare plural part opening a sentence
+        ("Two boys climb on the heavy roller parked by the shed.", "roller", 1),  # "the" thing placed by a participle
+        ("A pair of six-legged pack beasts drink from a trough.", "beast", 2),  # a hyphened count describes
+    ],
+)
+def test_more_ways_a_noun_names_a_thing(text, word, many):
+    assert words_of(text)[word] == many
+
+
+def test_a_hyphened_look_before_a_tile_panel_keeps_it_the_medium():
+    got = words_of("A blue-and-white tile panel of a village square. Two monks walk by a well.")
+    assert "panel" not in got
+    assert got["monk"] == 2
+
+
+@pytest.mark.parametrize(
+    ("text", "category", "many"),
+    [
+        ("Two hippos wallow in a mud pool beside the river.", "pond", 1),  # in water: a thing, not the setting
+        ("A crab hides in a rock pool.", "pond", 1),
+        ("A dragon soars over a smoking volcano.", "rock", 1),  # a landform a thing is over
+        ("A bat flies over a hill behind the farm.", "rock", 1),
+        ("A village beside a mountain. A cart waits by the well.", "rock", 0),  # the opening's setting
+    ],
+)
+def test_landmarks_something_is_in_or_over_are_things(text, category, many):
+    assert sum(1 for o in parse_scene(text).objects if o.category == category) == many
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("Three mannequins, each topped with a felt hat, stand by the door.", "hat", 3),  # put on them, not worn
+        ("A girl with a red cap stands by the swing.", "cap", 0),  # worn
+        ("Two ground crew hold the rope beside the van.", "crew", 2),  # crew counted as people
+    ],
+)
+def test_clothing_put_on_a_holder_is_a_thing_and_crew_are_people(text, word, many):
+    assert words_of(text)[word] == many
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "category"),
+    [
+        ("A cadet slides down the rope.", "slide", None),  # after "a", a plural is the verb
+        ("A dalmatian naps in a dog bed.", "dalmatian", "animal"),  # a dog breed, not an "-ian" person
+        ("The chief sits at a metal desk.", "chief", "figure"),
+    ],
+)
+def test_a_verb_after_a_singular_and_listed_words(text, word, category):
+    got = {o.name.split()[-1]: o.category for o in parse_scene(text).objects}
+    assert got.get(word) == category
+
+
+def test_the_second_end_of_a_fronted_between_is_no_apposition():
+    got = {o.name.split()[-1]: o.category for o in parse_scene(
+        "Between the forge and the kiln, a potter in a leather apron waits by a wheel."
+    ).objects}
+    assert got.get("kiln") != "figure"
+    assert got.get("potter") == "figure"
+
+
+def test_a_stack_of_compound_parts_is_several_of_them():
+    assert words_of("A mason walks past a stack of scaffold pipes.")["pipe"] == 3

@@ -161,7 +161,11 @@ Decisions worth knowing:
   crystal ball (a phrase opening with a describing word gives way to a longer thing inside it).
 - Vague counts: a pair / a couple / both → 2; a few / several / some / a bare plural → 3;
   many / lots of → 5; ``each with a lamp``, ``every desk has a lamp`` and ``each surrounded by
-  two chairs`` give that many per object of the group, placed by their own one.
+  two chairs`` give that many per object of the group, placed by their own one. A bare plural of a
+  crowd word ("spectators gather") is 5; "about twenty" is 20; a count in words is at most two dozen
+  (``CROWD``: "a hundred fans"), one in digits is taken as meant; "a herd of about twenty grazing"
+  (no noun) is twenty more of the animal named before; ", a dozen in all" counts the sentence's
+  first noun; "sheep" or "deer" with no determiner are several.
 - Stated sizes (``2 meters wide``, ``a 3 m tall statue``) set that dimension; the others
   scale by the same factor so the object keeps its proportions.
 - Things that rest on a surface but have no stated support get an inferred ``on`` to the

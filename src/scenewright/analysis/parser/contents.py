@@ -12,6 +12,7 @@ from scenewright.analysis.parser.grammar import (
     _LOAD_HOSTS,
     _LOAD_SIZE,
     _MOUNTS,
+    _POLE_BORNE,
     _VESSEL_KINDS,
 )
 from scenewright.analysis.parser.nouns import _Mention, _is_plural
@@ -116,8 +117,10 @@ class _Contents:
             return False
         if w == "of" and prev.end == j and holder and (not m.definite or prev.category in _DEPICTIONS):
             return True  # "a vase of tulips", "a statue of a horse", "a hologram of the star map"
-        if w == "on" and j - prev.end <= 2 and singular(m.phrase.split()[-1].lower()) in _MOUNTS:
+        borne = prev.category in _POLE_BORNE or self.catalogue[prev.category].shape in _POLE_BORNE
+        if w == "on" and j - prev.end <= 2 and singular(m.phrase.split()[-1].lower()) in _MOUNTS and borne:
             return True  # "a windsock on a tall pole", "a flag flutters on a pole": the pole is its part
+            # (not "a dish stands on a tall pole")
         plant = self.catalogue[prev.category].shape in ("potted_plant", "bush", "flower_bed")
         return w == "in" and j - prev.end <= 2 and m.category in ("pot", "planter", "vase") and plant
 

@@ -84,8 +84,11 @@ _BUILDING_PARTS = ("roof", "rooftop", "porch", "step", "doorstep", "chimney", "e
 _VESSEL_KINDS = ("seats", "vehicles", "containers")
 #: Carrier kinds a person sits, rides or stands on, and never has in hand ("rows with a canoe").
 _RIDDEN = ("seats", "vehicles", "mounts", "perches")
-#: What a thing is mounted on as a part of it ("lanterns on tall poles").
-_MOUNTS = ("pole", "stick", "mast", "stake", "spike")
+#: What a thing is mounted on as a part of it ("lanterns on tall poles"), when it is one of the
+#: ``_POLE_BORNE`` (a flag, a lantern, a sign, a flat board such as a windsock or a banner); a mast is
+#: a structure of its own, and so is the pole a dish or a camera stands on.
+_MOUNTS = ("pole", "stick", "stake", "spike")
+_POLE_BORNE = ("flagpole", "lantern", "sign", "billboard", "menu_board", "torch", "panel")
 #: Verbs that join a subject to what it is, not to a thing it acts on.
 _COPULAS = ("is", "are", "was", "were", "be", "has", "have", "had", "seems", "looks")
 #: A perch no taller than this, and this many times a thing's footprint, is a platform whose middle

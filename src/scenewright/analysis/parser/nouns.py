@@ -15,6 +15,8 @@ from scenewright.analysis.parser.phrases import _phrase_table
 from scenewright.analysis.parser.tokens import _Tok
 from scenewright.analysis.parser.vocabulary import GENERIC, Entry, load_vocabulary
 from scenewright.analysis.parser.words import (
+    _APPROXIMATE,
+    CROWD,
     _DEFINITE,
     _DETERMINERS,
     _NUMBERS,
@@ -213,6 +215,11 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         words = [t.text for t in toks[s:e]]
         # a singular noun before another names its kind ("glass table", "dragon statue"); a plural
         # one is the subject of a verb that looks like a noun ("pylons guard the altar")
+        several = bool(words) and words[-1] in _SAME_PLURALS and _bare(toks, s)
+        if nxt and nxt[0] == e and several and (nxt[3] is None or nxt[3].category == GENERIC):
+            if nxt[1] - nxt[0] == 1 and not toks[nxt[0]].text.endswith("s"):
+                raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])  # "sheep graze by the wall": their verb
+                nxt = None
         if nxt and nxt[0] == e and singular(words[-1]) == words[-1]:
             last = toks[nxt[1] - 1].text
             if singular(last) != last and _plural_is_verb(toks, s, nxt):  # "a knight guards the gate": a verb
@@ -253,7 +260,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "the shrine stands well behind the gate": an adverb, not a well
         if _idiom_here(toks, s, e):
             continue  # "a brig lies at anchor", "a guard stands on duty": no anchor there
-        if _owned_part(toks, s, e, mentions):
+        if _owned_part(toks, s, e, mentions) or _part_of_after(toks, s, e, raw[k + 1 :], mentions) or (
+            _inside_of_vehicle(toks, s, e, mentions)
+        ):
             continue  # "a console, reading its screens": the console's screens, no monitors of their own
         kind, modifier = modifier, []
         cat, entry = _kind_of_plant(kind, cat, entry)
@@ -287,6 +296,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a mushroom-shaped lamp", "a goldfish-scooping stall", "glass-domed huts": a look or a use
         # "three sheep graze": after a count, a compound would end in a plural ("three fish tanks")
         verb_after = _counted_plural(toks, s) and e < n and not toks[e].joined and singular(follow) == follow
+        verb_after = verb_after or several
         if entry is not None and singular(words[-1]) == words[-1] and _names_kind(toks, e) and not verb_after:
             continue  # "a bear face", "a train compartment", "camel-hair tents": a kind, not a thing
         if _use_compound(toks, s, e, cat):
@@ -294,7 +304,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         if _owner_of_named_part(toks, s, e):
             continue  # "a crawler with a crane arm", "a hat of peacock feathers": whose part, no crane
         if e < n and toks[e].text[:1].isalpha() and toks[e].text not in _STOP and not toks[e].joined and (
-            not _is_verb(toks[e].text) and not _participle(toks[e].text) and _match_at(toks, e) is None
+            not several and not _is_verb(toks[e].text) and not _participle(toks[e].text) and _match_at(toks, e) is None
             and _unknown_opening_place(toks, e, e + 1)
         ):
             continue  # "An otter sanctuary by a river.": the kind of the place nobody listed the opening names
@@ -318,8 +328,12 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue
         if " ".join(words) in places and s > 0 and toks[s - 1].text in _DEFINITE:
             continue  # "the middle of the cabin" after "The captain's cabin of a ship": the setting again
-        if picture_end is not None and all(t.text[:1].isalpha() and t.text not in _STOP or t.text in ("a", "an")
-                                           for t in toks[picture_end + 1 : s]):  # fmt: skip
+        shape = load_catalogue()[cat].shape
+        alive = cat in _LIVING or shape in _LIVING
+        shown = not alive and not vocabulary.carries(cat, " ".join(words), ("vehicles",))
+        if picture_end is not None and shown and all(
+            t.text[:1].isalpha() and t.text not in _STOP or t.text in ("a", "an") for t in toks[picture_end + 1 : s]
+        ):  # ("a comic panel of a flying saucer": the saucer is there)
             places.append(" ".join(words))  # "... painting of a windy headland": the place it shows
             picture_end = None
             continue
@@ -371,6 +385,8 @@ def _elided_at(toks: list[_Tok], i: int) -> int | None:
     w = toks[i].text
     if w == "others" and i > 0 and toks[i - 1].text in _NUMBERS:
         return i  # ("two others sweep the steps": a plural noun could not follow)
+    if _herd_count(toks, i):
+        return i
     if w == "another":
         k = i
     elif w in ("a", "an") and i + 1 < len(toks) and toks[i + 1].text in ORDINALS:
@@ -379,6 +395,25 @@ def _elided_at(toks: list[_Tok], i: int) -> int | None:
         return None
     verb = toks[k + 1].text if k + 1 < len(toks) else ""
     return k if _is_verb(verb) else None  # (a singular noun after "another" ends in no -s)
+
+
+#: Collective nouns of animals: "a herd of twenty" with no noun after it is twenty of the animal named before.
+_HERDS = {"herd", "herds", "flock", "flocks", "pack", "school", "shoal", "swarm", "pod", "pride", "troop", "gaggle",
+          "colony", "litter", "drove"}  # fmt: skip
+
+
+def _herd_count(toks: list[_Tok], i: int) -> bool:
+    """A count that stands for its animals: "a herd of (about) twenty" followed by no noun ("...
+    from a herd of about twenty grazing past the tents", "a flock of thirty, wheeling")."""
+    if toks[i].text not in _NUMBERS or _NUMBERS[toks[i].text] < 2 or i + 1 >= len(toks) or toks[i + 1].joined:
+        return False
+    k = i - 1 - (i > 0 and toks[i - 1].text in _APPROXIMATE)
+    if k < 1 or toks[k].text != "of" or toks[k - 1].text not in _HERDS:
+        return False
+    after = toks[i + 1].text
+    return not after[:1].isalpha() or after in _STOP or _match_at(toks, i + 1) is None and (
+        _is_verb(after) or _participle(after)
+    )
 
 
 def _elided_members(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention]:
@@ -397,11 +432,16 @@ def _elided_members(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention
             continue
         before = [m for m in mentions if since < m.start and m.end <= i and not m.alias]
         lives = [m for m in before if load_catalogue()[m.category].shape in _LIVING]
+        if _herd_count(toks, k):  # (a herd is of animals: the latest that is no person)
+            lives = [m for m in lives if not _person_mention(m)]
+            if not lives:
+                continue
         # (one that does something is more of the people or animals, when there are: "two smiths
         # work at a pair of anvils while a third pumps the bellows")
         plural = [m for m in before if _is_plural(toks, m)]
         # ("another" is one more of a single one too: "a monk reads, while another draws water")
-        order = [lives, plural] if toks[i].text == "another" else [[m for m in plural if m in lives], plural]
+        any_one = toks[i].text == "another" or _herd_count(toks, k)
+        order = [lives, plural] if any_one else [[m for m in plural if m in lives], plural]
         chosen = next((group[-1] for group in order if group), None)
         if chosen is None:
             continue
@@ -511,6 +551,26 @@ def _owned_part(toks: list[_Tok], s: int, e: int, mentions: list[_Mention]) -> b
     return bool(owners) and any(m.category in owners or catalogue[m.category].shape in owners for m in mentions)
 
 
+def _part_of_after(toks: list[_Tok], s: int, e: int, later: list, mentions: list[_Mention]) -> bool:
+    """"The ladder of the nearer one", "the ramp of the van": a part (``part_owners``) named by
+    "the ... of" its owner, a thing that has such a part (the next noun, or for "one" the thing
+    named lately that has one): the owner's part, placed by the owner, no thing of its own."""
+    if e - s != 1 or s == 0 or toks[s - 1].text != "the" or e + 1 >= len(toks) or toks[e].text != "of":
+        return False
+    owners = load_vocabulary().part_owners.get(singular(toks[s].text))
+    if not owners:
+        return False
+    k = e + 1
+    while k < len(toks) and k - e <= 4 and toks[k].text[:1].isalpha() and toks[k].text not in ("one", "ones"):
+        k += 1
+    catalogue = load_catalogue()
+    if k < len(toks) and toks[k].text in ("one", "ones"):
+        candidates = [m.category for m in mentions[-3:]]
+    else:
+        candidates = [later[0][2]] if later and later[0][0] <= e + 4 else []
+    return any(c in owners or catalogue[c].shape in owners for c in candidates)
+
+
 def _idiom_here(toks: list[_Tok], s: int, e: int) -> bool:
     """A bare singular noun right after "at" ("at anchor", "at sea"), a phrase of manner or state,
     not a thing: no determiner, count or describing word, and the phrase ends there."""
@@ -534,6 +594,21 @@ def _part_of_vessel(toks: list[_Tok], s: int, e: int) -> bool:
     opening = j < 0 or toks[j].text in (".", "!", "?")
     part = " ".join(t.text for t in toks[s:e])
     return opening and (part in _PLACE_PARTS or part in load_vocabulary().places) and e < len(toks) and toks[e].text == "of"
+
+
+def _inside_of_vehicle(toks: list[_Tok], s: int, e: int, mentions: list[_Mention]) -> bool:
+    """"The open cabin door" after a seaplane, "the cockpit" after a glider: the inside of a
+    vehicle named in this sentence or the one before (``_PLACE_PARTS``, with "the" or "its"), no
+    cabin or hall of its own."""
+    if " ".join(t.text for t in toks[s:e]) not in _PLACE_PARTS:
+        return False
+    j = _phrase_opener(toks, s)
+    if j < 0 or toks[j].text not in ("the", "its"):
+        return False
+    stops = [k for k in range(s) if toks[k].text in (".", "!", "?")]
+    since = stops[-2] if len(stops) > 1 else -1
+    vocabulary = load_vocabulary()
+    return any(m.start > since and vocabulary.carries(m.category, m.phrase, ("vehicles",)) for m in mentions)
 
 
 #: Categories and shapes that can hold a scene inside them ("the engine room of a starship").
@@ -561,13 +636,16 @@ def _owns_opening_place(toks: list[_Tok], s: int) -> bool:
 
 def _picture_of_scene(toks: list[_Tok], s: int, e: int, category: str) -> bool:
     """The description opens with the picture it is ("A watercolour painting of a headland", "An
-    illustration of a market"): a picture followed by "of", with only describing words before it."""
-    if category != "picture_frame" or e >= len(toks) or toks[e].text != "of":
+    illustration of a market", "A pop art comic panel of a flying saucer"): a picture, or a panel,
+    followed by "of", with only describing words before it."""
+    if category not in ("picture_frame", "panel") or e >= len(toks) or toks[e].text != "of":
         return False
-    if not all(t.text[:1].isalpha() and t.text not in _STOP or t.text in ("a", "an") for t in toks[:s]):
-        return False
+    if not all(t.text[:1].isalpha() and (t.text not in _STOP or t.joined) or t.text in ("a", "an") for t in toks[:s]):
+        return False  # (a hyphened look is a describing word: "a blue-and-white tile panel of")
     k = e  # a sentence that only names the picture: "A painting of a ship hangs ..." is a thing
     while k < len(toks) and toks[k].text not in (".", "!", "?") and not _verb_word(toks[k].text):
+        if toks[k].text == "all" and toks[k - 1].text == ",":
+            return True  # ", all bold dots and outlines": how it looks, to the end
         k += 1
     return k >= len(toks) or toks[k].text in (".", "!", "?")
 
@@ -739,6 +817,11 @@ def _plural_is_verb(toks: list[_Tok], s: int, nxt: tuple) -> bool:
         return True  # "a trainee slides down it": no plural is the head of "a ..."
     if _counted_plural(toks, s):
         return False
+    j = _phrase_opener(toks, s)
+    if j >= 0 and toks[j].text in _SINGULAR_DETERMINERS and toks[nxt[1] - 1].text not in load_vocabulary().pair_nouns:
+        return True  # "a yacht rocks at the jetty": after "a", a compound would end in a singular
+    if j > 0 and toks[j].text == "of" and toks[j - 1].text in _QUANTITY:
+        return False  # "a stack of drill pipes": what a quantity counts is a noun phrase
     person = load_vocabulary().match(tuple(t.text for t in toks[s : nxt[0]]))
     if person is not None and person.category == "figure":
         return True  # "the baker slides loaves into the oven": a person names no kind of slide
@@ -842,9 +925,11 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     ):
         j -= 1
     if j >= 0 and toks[j].text in _INSIDE:
-        return True
-    if head in load_vocabulary().landforms and j >= 0 and _landform_part(toks, j):
-        return False  # "a dragon sleeps on top of a hill": the hill is a thing here
+        # (in water one is in a thing of the scene: "two hippos wallow in a mud pool", not its setting)
+        water = match_phrase((head,)) == "pond" and toks[j + 1].text in ("a", "an") and not _verbless_opening(toks, j)
+        return not water
+    if head in load_vocabulary().landforms and j >= 0 and (_landform_part(toks, j) or _by_landform(toks, j)):
+        return False  # "a dragon sleeps on top of a hill", "flies over a volcano": the hill is a thing here
     if j >= 0 and toks[j].text in _DETERMINERS and _placed_by(toks, j) and not _verbless_opening(toks, j):
         return False  # "a mule waits beside the tavern": a building of the scene (_buildings)
     if _outside_part_of(toks, j + 1) and not _verbless_opening(toks, j):
@@ -1057,7 +1142,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         ) or _shares_article(toks, i, covered)
         if not counter or w == "one" and i + 1 < n and toks[i + 1].text in ("of", "another", "other"):
             continue
-        if _elided_at(toks, i) is not None or (i + 1 < n and _elided_at(toks, i + 1) is not None):
+        rough = i + 2 < n and toks[i + 1].text in _APPROXIMATE and _elided_at(toks, i + 2) is not None
+        if _elided_at(toks, i) is not None or (i + 1 < n and _elided_at(toks, i + 1) is not None) or rough:
             continue  # "a third waits": more of a group named before (:func:`_elided_members`)
         if i + 1 < n and toks[i + 1].joined and w not in ("a", "an", "another", "the", *_OWNERS):
             continue  # "a six-wheeled rover": a number hyphened to a word describes, counts nothing
@@ -1074,6 +1160,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             continue  # the count of a phrase read by its own rules
         head = None
         looks: set[int] = set()  # "a whale-shaped weathervane": a known noun in a hyphened look
+        while j + 1 < n and toks[j].text in _NUMBERS and toks[j + 1].joined:
+            j += 2  # "a pair of six-legged beasts": a hyphened count describes
         while j < n and j - i <= 5:
             x = toks[j].text
             if j in covered and j + 1 < n and toks[j + 1].joined and toks[j + 1].text in _LIKENESS:
@@ -1098,20 +1186,18 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
                 # a "home recording studio"
             head = j
             j += 1
-            if plural and singular(x) != x:
-                break  # "three zorbs glow": the plural noun ends the phrase
+            if plural and (singular(x) != x or x in _PEOPLE_GROUPS):
+                break  # "three zorbs glow", "two ground crew hold": the plural noun ends the phrase
         known = any(k in covered and k not in looks for k in range(i + 1, head + 1)) if head is not None else False
         if head is None or known or toks[head].quoted:
             continue
         # a counted plural before a singular known word is its subject ("two stokers shovel coal")
         subject = plural and singular(toks[head].text) != toks[head].text and j < n
         subject = subject and singular(toks[j].text) == toks[j].text
-        # a known plural right after one thing, going on to an object or a particle of going, is
-        # its verb ("a trainee slides down it"): no plural is the head of "a ..."
-        follow = toks[j + 1].text if j + 1 < n else ""
-        verb = j < n and w in ("a", "an", "another") and singular(toks[j].text) != toks[j].text
-        verb = verb and (follow in _OBJECT_OPENERS or follow in _MOTION_PARTICLES)
-        if j < n and j in covered and not subject and not verb:
+        # ("a trainee slides down it": after "a", a plural is the verb, not the noun its word describes)
+        verb_next = w in ("a", "an", "another") and j < n and j in covered and head == j - 1
+        verb_next = verb_next and singular(toks[j].text) != toks[j].text and toks[j].text not in vocabulary.pair_nouns
+        if j < n and j in covered and not subject and not verb_next:
             continue  # the words before a known noun are its adjectives ("a shiny [robot]")
         word = toks[head].text
         if word.endswith("ing") and j < n and toks[j].text in _OBJECT_OPENERS:
@@ -1130,13 +1216,19 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         # "a tesla coil", "a drum set": a measure word after the noun of its kind is the thing itself
         kind = toks[head - 1].text  # ("a washing line": what it is for)
         compound = word in _MEASURE_THINGS and head > i + 1 and (not vocabulary.is_adjective(kind) or kind.endswith("ing"))
+        # "two ground crew": a people group counted is so many of its people ("a film crew" is none)
+        members = _NUMBERS.get(w, 0) > 1 and word in _PEOPLE_GROUPS and not (j < n and toks[j].text == "of")
         if not (vocabulary.is_thing_word(word) or held or counted_place or stock or compound) or (
-            word in _QUANTITY and not counted_place and not compound
+            word in _QUANTITY and not counted_place and not compound and not members
         ) or (j < n and toks[j].text == "of"):
             continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"
-        entry = _guess(toks, head, toks[max(i - 1, 0) : head])
+        entry = vocabulary.family("figure") if members else _guess(toks, head, toks[max(i - 1, 0) : head])
+        if entry.category == GENERIC and singular(word) in vocabulary.clothing:
+            entry = Entry(GENERIC, vocabulary.clothing_size, "surface")  # "a felt hat" on a stand: its own size
+        if w in _NUMBERS and i > 0 and toks[i - 1].text == "its" and entry.category == GENERIC:
+            continue  # "its four propellers gleaming": a thing's parts, counted ("its two cubs" are there)
         opening = i == 0 or not toks[i - 1].text[:1].isalpha()
-        placed = w == "the" and opening and j < n and toks[j].text in _PLACING_VERBS
+        placed = w == "the" and j < n and (opening and toks[j].text in _PLACING_VERBS or toks[j].text in _STANDING)
         # ("near", "by" and "past" the landmarks and the fittings of a place too: "near the airlock")
         by = (_placed_by(toks, i, _BY_KINDS - {"near"}) or _outside_part_of(toks, i)) and not _named_before(toks, head)
         by = by and (j >= n or toks[j].text not in ("one", "ones"))
@@ -1334,14 +1426,26 @@ def _landform_part(toks: list[_Tok], k: int) -> bool:
     return not _verbless_opening(toks, k)
 
 
+#: Prepositions that put a thing by a landform seen in the scene: "a dragon circles over a volcano".
+_BY_LANDFORM = {"over", "above", "beside", "behind", "past", "near", "towards", "toward"}
+
+
+def _by_landform(toks: list[_Tok], k: int) -> bool:
+    """``k`` is one of ``_BY_LANDFORM`` before "a"/"an" outside the opening that names the setting
+    ("a pterodactyl flies over a smoking volcano"; not "A village beside a mountain.")."""
+    return 0 < k < len(toks) - 1 and toks[k].text in _BY_LANDFORM and toks[k + 1].text in ("a", "an") and (
+        not _verbless_opening(toks, k)
+    )
+
+
 def _landforms(toks: list[_Tok], covered: set[int]) -> list:
     """A hill, a dune or a cliff sets the scene, but one the text puts a thing on top of or at
     the foot of is a thing of the scene ("a dragon sleeps on top of a flat-topped hill"); not
-    "at the top of the slope", a part of the place."""
+    "at the top of the slope", a part of the place; nor one a thing is by or over (``_by_landform``)."""
     forms = load_vocabulary().landforms
     out: list = []
-    for k in range(2, len(toks)):
-        if not _landform_part(toks, k):
+    for k in range(1, len(toks)):
+        if not (k >= 2 and _landform_part(toks, k) or _by_landform(toks, k)):
             continue
         j = k + 1
         while j < len(toks) and j - k <= 5 and j not in covered and toks[j].text[:1].isalpha() and (
@@ -1426,11 +1530,21 @@ def _buildings(toks: list[_Tok], covered: set[int]) -> list:
     return out
 
 
+#: Prepositions that hang a thing from another or put it under or against one: a part named after
+#: one with "a" is a thing ("hangs from a hook"; "a sieve on a wooden frame" is the sieve's frame).
+_PUT_ON = {"from", "under", "beneath", "underneath", "against"}
+#: What a fitting is fixed to: "a ceiling hook", "a wall hook" are the room's.
+_FITTED = {"ceiling", "wall", "roof"}
+
+
 def _loose_parts(toks: list[_Tok], covered: set[int]) -> list:
     """A part of a body or a machine is no object ("its left arm", "a robot with six arms"), but
     one the text detaches is a thing of its own: a detaching word before it ("spare heads", "a
     severed claw") or right after it ("its left arm removed and lying on a workbench"), or a
-    part that opens a clause as its own subject ("a crane hook hangs from a rail")."""
+    part that opens a clause as its own subject ("a crane hook hangs from a rail", "Chains hang
+    from the beams"), or one named
+    with "a" or a count where a thing is put ("hangs from a hook", "a stack of drill pipes", "under
+    two awnings"; not "a stall with an awning", whose awning it is)."""
     vocabulary = load_vocabulary()
     out: list = []
     for k, t in enumerate(toks):
@@ -1447,8 +1561,19 @@ def _loose_parts(toks: list[_Tok], covered: set[int]) -> list:
         # door it is), nor "a sieve on a wooden frame stand" (the verb of a plural subject before)
         whose = j > 0 and toks[j - 1].text in ("with", "of", "has", "have", "having")
         verb = (after in _PLACING_VERBS or after in ("is", "are")) and after.endswith("s") == (opener in ("a", "an"))
-        own = (opener in ("a", "an") or opener in _NUMBERS) and verb and not whose
-        if before & vocabulary.detached or after in vocabulary.detached or own:
+        counted = opener in ("a", "an") or opener in _NUMBERS
+        # (a bare plural that opens a sentence too: "Chains hang from the ceiling")
+        bare = (j < 0 or opener in (".", "!", "?", ";")) and vocabulary.singular(t.text) != t.text
+        own = (counted or bare) and verb and not whose
+        # (the thing something is put on, hung from or stacked as: "a helmet hangs from a hook")
+        put = counted and j > 0 and toks[j - 1].text in _PUT_ON or opener == "of" and j > 0 and toks[
+            j - 1
+        ].text in _QUANTITY
+        one = vocabulary.singular(t.text)
+        # (not "a hook of the crane", "a ceiling hook": a fitting of the room, "under one arm": a body's)
+        put = put and after != "of" and not before & _FITTED and one not in vocabulary.body_parts
+        put = put and one not in _LIVING_PARTS
+        if before & vocabulary.detached or after in vocabulary.detached or own or put:
             out.append((k, k + 1, entry.category, entry))
             covered.add(k)
     return out
@@ -1529,12 +1654,18 @@ def _heap_of_stuff(toks: list[_Tok], i: int, covered: set[int]) -> bool:
     after = toks[i + 2].text if i + 2 < len(toks) else "."
     ends = not after[:1].isalpha() or (after in _STOP and after not in ("of", "and"))
     # (a verb may follow stuff, "a heap of rubble blocks the door", not a colour: "a pile of old bricks")
-    stuff = ends and load_vocabulary().is_adjective(w) or (ends or _is_verb(after)) and w in load_vocabulary().not_things
+    # (a part word is a noun there, not a verb: "a stack of copper pipes")
+    verb = _is_verb(after) and singular(after) not in load_vocabulary().not_things
+    stuff = ends and load_vocabulary().is_adjective(w) or (ends or verb) and w in load_vocabulary().not_things
     return stuff and i + 1 not in covered and w[:1].isalpha() and w not in _STOP and singular(w) == w
 
 
 #: Participles of clothing put down or hung up, not worn ("a coat draped over the chair").
 _LAID = {"hung", "draped", "folded", "spread", "laid", "piled", "heaped", "strewn", "thrown", "slung", "pegged"}
+
+
+#: Participles before "with" that put the with-thing on its holder ("a stand topped with a hat").
+_TOPPED = {"topped", "crowned", "hung", "draped", "piled", "stacked", "loaded", "laden", "heaped", "strung"}
 
 
 def _laid_out(toks: list[_Tok], head: int, j: int) -> bool:
@@ -1548,6 +1679,8 @@ def _laid_out(toks: list[_Tok], head: int, j: int) -> bool:
         if _is_verb(toks[k].text):
             break  # ("skirts a fleece spread out on it": the object of a deed)
         k -= 1
+    if k > 0 and toks[k].text == "with" and toks[k - 1].text in _TOPPED:
+        return True  # "three hat stands, each topped with a felt hat": put on the stand, not worn
     if k >= 0 and toks[k].text in ("with", "in", "wearing", "without", "and", "or"):
         return False  # "a boy with a red cap stands by the swing": the boy's verb, his cap
     after = toks[j].text
@@ -1604,6 +1737,11 @@ def _unknown_heads(toks: list[_Tok], raw: list, covered: set[int]) -> list:
         out.append((k, k + 1, entry.category, entry))
         covered.add(k)
     return out
+
+
+#: Participles that say where a thing stands: "the heavy roller parked by the hut" names a thing.
+_STANDING = {"parked", "moored", "propped", "standing", "lying", "resting", "leaning", "tethered", "stacked",
+             "beached", "docked"}  # fmt: skip
 
 
 def _joint_verb(toks: list[_Tok], k: int, category: str) -> bool:
@@ -1939,6 +2077,10 @@ def _is_plural(toks: list[_Tok], m: _Mention) -> bool:
     if "of" in words[1:]:
         words = words[: words.index("of", 1)]  # "bottles of wine": the measure is the head
     last = words[-1]
+    if last in _SAME_PLURALS:  # "sheep graze", "a rack hung with drying fish": no determiner, so several
+        j = _phrase_opener(toks, m.start)
+        # (after "of" the quantity word counts them, "a flock of sheep", or they are a holder's contents)
+        return _bare(toks, m.start) and (j < 0 or toks[j].text != "of")
     if m.guess is not None and tuple(t.text for t in toks[m.start : m.end]) in load_vocabulary().entries:
         return False  # "a triceratops" is listed as it is written
     if last in load_vocabulary().pair_nouns or last.endswith("'s"):
@@ -1946,6 +2088,14 @@ def _is_plural(toks: list[_Tok], m: _Mention) -> bool:
     return load_vocabulary().singular(last) != last or last in ("people", "cacti", "shelves", "benches", "glasses")
 
 
+def _bare(toks: list[_Tok], s: int) -> bool:
+    """No determiner or count before the noun phrase at ``s`` (past its describing words)."""
+    j = _phrase_opener(toks, s)
+    return j < 0 or toks[j].text not in _DETERMINERS and toks[j].text not in _NUMBERS and toks[j].text not in _VAGUE
+
+
+#: Nouns whose plural is written as the singular: several when no determiner or count comes before.
+_SAME_PLURALS = {"sheep", "deer", "reindeer", "moose", "bison", "elk", "fish", "salmon", "trout", "swine"}
 #: Place nouns that qualify the next noun after a determiner ("the middle bench", "the end stall").
 _POSITION_WORDS = {"middle", "centre", "center", "corner", "end", "front", "back", "top", "bottom", "side"}
 
@@ -1967,12 +2117,16 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
     j = m.start - 1
     adjectives: list[str] = []
     count: int | None = None
-    counted = False
+    counted = exact = False  # (exact: written in digits, "1000000 seats": kept, for the object limit to refuse)
+    if _herd_count(toks, m.start):  # "a herd of about twenty": the count is the mention
+        j, count, counted = -1, _NUMBERS[toks[m.start].text], True
     while j >= prev_end and j >= 0 and m.start - j <= 7:
         t = toks[j]
         w = t.text
         if w in _NUMBERS and not toks[j + 1].joined:
             count, counted = _NUMBERS[w], True
+            if t.joined and j > 0 and toks[j - 1].text in _NUMBERS and _NUMBERS[toks[j - 1].text] >= 20:
+                count += _NUMBERS[toks[j - 1].text]  # "twenty-five"
             if w == "dozen" and j > 0 and toks[j - 1].text in _NUMBERS:
                 count *= _NUMBERS[toks[j - 1].text]  # "two dozen candles"
             # "above one bench", "between every two benches", "the two nearest benches": of those
@@ -1988,7 +2142,7 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
                 adjectives.insert(0, t.orig)  # "27-inch", "4 m tall": a size, not a count
                 j -= 1
                 continue
-            count, counted = int(float(w)), True
+            count, counted, exact = int(float(w)), True, True
             break
         if w in _VAGUE:
             count = _VAGUE[w]
@@ -1998,7 +2152,10 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             break
         if w == "of" and j > 0 and toks[j - 1].text in _QUANTITY:
             q = toks[j - 1].text
-            small = (m.guess.rests if m.guess is not None else load_catalogue()[m.category].rests) == "surface"
+            # (a stack of long things, "a stack of drill pipes", is several of them)
+            size = m.guess.size if m.guess is not None else load_catalogue()[m.category].size
+            rests = m.guess.rests if m.guess is not None else load_catalogue()[m.category].rests
+            small = rests == "surface" and max(size) < 1.0
             pair = q in ("pair", "pairs") and toks[m.end - 1].text in load_vocabulary().pair_nouns  # "a pair of shears"
             # "a stack of plates", "a pile of parchment", "a line of bunting": one heap of small
             # things, one lot of stuff (no count noun); "a flock of sheep" are sheep
@@ -2055,8 +2212,14 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         # "a grandstand packed with cheering peasants": a crowd ("full of goldfish": a plural
         # that looks singular, since a bare singular thing is never what a place is full of)
         count = _VAGUE["many"]
+    total = _total_after(toks, m) if plural else None
+    if total is not None:  # "Rows of bidders sit ..., a dozen in all"
+        count, counted = total, True
+    if count is None and plural and singular(toks[m.end - 1].text) in load_vocabulary().crowd_words:
+        count = _VAGUE["many"]  # "spectators gather behind the rope": a crowd, not a few
     if count is None:
         count = UNCOUNTED if plural else 1
+    count = count if exact else min(count, CROWD)
     if m.category == "books" and not counted:
         count = 1
     if plural and count == 1 and counted and not m.each and toks[max(m.start - 1, 0)].text not in ("a", "an"):
@@ -2089,6 +2252,26 @@ def _per_unit(toks: list[_Tok], end: int) -> int | None:
             "in", "per", "to"
         ) and words[2] in ("each", "every", "a") and singular(words[3]) in _UNIT_NOUNS:  # fmt: skip
             return _NUMBERS[words[0]]
+        k += 1
+    return None
+
+
+_TOTALS = {("in", "all"), ("in", "total"), ("all", "told")}
+
+
+def _total_after(toks: list[_Tok], m: _Mention) -> int | None:
+    """The count in ", a dozen in all" / ", twenty in total" / ", thirty altogether" later in the
+    sentence of its first noun ("Rows of pupils sit on benches, twenty in all"), else None."""
+    start = max((k for k in range(m.start) if toks[k].text in (".", "!", "?")), default=-1) + 1
+    if any(_match_at(toks, k) for k in range(start, m.start)):
+        return None  # (a total tells how many of the sentence's subject there are)
+    k = m.end
+    while k < len(toks) and toks[k].text not in (".", "!", "?", ";"):
+        if toks[k - 1].text == ",":
+            a = k + (toks[k].text in ("a", "an"))
+            words = [t.text for t in toks[a : a + 3]]
+            if words and words[0] in _NUMBERS and (tuple(words[1:3]) in _TOTALS or words[1:2] == ["altogether"]):
+                return _NUMBERS[words[0]]
         k += 1
     return None
 

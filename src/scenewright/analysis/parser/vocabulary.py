@@ -52,6 +52,8 @@ class Vocabulary:
     shape_words: dict[str, tuple[float, float, float]]
     suffixes: tuple[tuple[str, str], ...]
     longest: int
+    #: Endings of a compound that names a place ("hayfield", "farmland") → the shortest stem before them.
+    place_endings: dict[str, int] = field(default_factory=dict)
     #: Phrases that beat the catalogue noun they end with ("arcade cabinet").
     overrides: frozenset[tuple[str, ...]] = frozenset()
     #: Person words "she"/"her" and "he"/"him" can name ("grandmother", "wizard").
@@ -77,6 +79,10 @@ class Vocabulary:
     pair_nouns: frozenset[str] = frozenset()
     #: What people wear: no object while worn, a thing when held ("his hat in his hands").
     clothing: frozenset[str] = frozenset()
+    #: The size (m) of a piece of clothing that is a thing (held, hung up, laid out, put on a stand).
+    clothing_size: tuple[float, float, float] = (0.4, 0.3, 0.2)
+    #: People who come as a crowd: a bare plural of one is many ("spectators gather").
+    crowd_words: frozenset[str] = frozenset()
     #: Kind (seats, vehicles, mounts, perches, containers) → the categories, shapes, families
     #: and head words of things a person or an animal is on when it is in or on them.
     carriers: dict[str, frozenset[str]] = field(default_factory=dict)
@@ -141,13 +147,20 @@ class Vocabulary:
         or adjective, and shaped like a noun."""
         w = word.lower()
         one = singular(w)
-        if w in self.not_things or one in self.not_things or w in self.adjectives:
+        if w in self.not_things or one in self.not_things or w in self.adjectives or self.is_place_compound(one):
             return False
         if not w.isalpha() or len(w) < 3:
             return False
         # an ending makes an adjective only after a stem of its own ("tallest", not "nest" or "chest")
         endings = ("ly", "ous", "ful", "ish", "less", "able", "ible", "ive", "ed", "est")
         return not any(w.endswith(e) and len(w) - len(e) >= _MIN_STEM for e in endings)
+
+    def is_place_compound(self, word: str) -> bool:
+        """A compound nobody listed that ends in a place word ("a mown hayfield", "the farmland"):
+        ground the scene stands on, no thing in it."""
+        if (word,) in self.entries:
+            return False
+        return any(word.endswith(e) and len(word) - len(e) >= stem for e, stem in self.place_endings.items())
 
     def is_adjective(self, word: str) -> bool:
         """A describing word rather than a noun that names the kind ("rusty" vs "street")."""
@@ -216,6 +229,7 @@ def _validate(raw: dict) -> Vocabulary:
         shape_words={k: (float(v[0]), float(v[1]), float(v[2])) for k, v in raw.get("shape_words", {}).items()},
         suffixes=tuple(sorted(raw["suffixes"].items(), key=lambda kv: -len(kv[0]))),
         longest=max(len(k) for k in entries),
+        place_endings={k: int(v) for k, v in raw.get("place_endings", {}).items()},
         overrides=frozenset(tuple(words(p)) for p in raw.get("over_catalogue", ())),
         female=frozenset(people.get("female", ())),
         male=frozenset(people.get("male", ())),
@@ -231,6 +245,8 @@ def _validate(raw: dict) -> Vocabulary:
         relational=frozenset(people.get("relational", ())),
         pair_nouns=frozenset(raw.get("pair_nouns", ())),
         clothing=frozenset(lists.get("clothing", ())),
+        crowd_words=frozenset(raw.get("crowd_words", ())),
+        clothing_size=tuple(float(v) for v in raw.get("clothing_size", (0.4, 0.3, 0.2))),  # type: ignore[arg-type]
         materials=frozenset(lists.get("materials", ())),
         carriers={k: frozenset(v) for k, v in raw.get("carriers", {}).items() if k != "about"},
         postures={k: tuple(v) for k, v in raw.get("postures", {}).items() if k != "about"},

@@ -9,15 +9,22 @@ from __future__ import annotations
 
 _NUMBERS = {
     "one": 1, "single": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7,
-    "eight": 8, "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "dozen": 12, "twenty": 20,
+    "eight": 8, "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "dozen": 12, "fifteen": 15, "twenty": 20,
+    "thirty": 30, "forty": 40, "fifty": 50, "hundred": 100,
 }  # fmt: skip
+#: The most of one kind a count in words gives: "a herd of fifty goats" or "a hundred fans" stand as two
+#: dozen, so a crowd reads as a crowd and the scene stays light enough to lay out and render (a count in
+#: digits is taken as meant, and the object limit refuses one too large).
+CROWD = 24
+#: Words that make the count after them a rough one ("about twenty", "some thirty"): no things.
+_APPROXIMATE = {"about", "around", "roughly", "nearly", "almost", "approximately", "perhaps", "maybe"}
 _VAGUE = {"few": 3, "several": 3, "some": 3, "various": 3, "many": 5, "numerous": 5, "multiple": 3, "both": 2}
 #: Nouns that count or arrange what follows "of" ("a row of lamps", "stacks of crates").
 _QUANTITY = {
     "pair": 2, "pairs": 4, "couple": 2, "row": 3, "rows": 6, "line": 3, "set": 3, "group": 3, "cluster": 3,
     "stack": 3, "stacks": 4, "pile": 3, "piles": 4, "heap": 3, "heaps": 4, "bunch": 3, "bunches": 4,
     "bundle": 3, "bundles": 4, "lane": 3, "lanes": 6, "queue": 4, "handful": 3, "collection": 3,
-    "coils": 3, "coil": 1, "ring": 4, "circle": 4, "lot": 5, "lots": 5, "plenty": 5, "dozens": 12,
+    "coils": 3, "coil": 1, "ring": 4, "circle": 4, "lot": 5, "lots": 5, "plenty": 5, "dozens": 12, "hundreds": 20,
     "series": 3, "trio": 3, "clusters": 5, "grove": 4, "patch": 1, "flock": 6, "herd": 6, "flocks": 12,
     "herds": 12, "string": 1, "school": 8, "shoal": 8, "swarm": 10, "pod": 4, "pack": 5, "pride": 5, "troop": 6,
     "litter": 4, "gaggle": 6, "colony": 10, "fleet": 5, "convoy": 4, "crew": 4, "team": 5, "squad": 5, "gang": 4,
@@ -36,7 +43,7 @@ _PLACE_ADVERBS = {"overhead", "nearby", "aloft", "upstairs", "downstairs", "asho
                   "uphill", "downhill", "downstream", "upstream", "yonder"}  # fmt: skip
 #: Words that end a noun phrase when reading backwards for adjectives.
 _STOP = (
-    set(_NUMBERS) | set(_VAGUE) | _DETERMINERS | _PRONOUNS
+    set(_NUMBERS) | set(_VAGUE) | _DETERMINERS | _PRONOUNS | _APPROXIMATE
     | {
         "and", "or", "but", "with", "of", "in", "on", "at", "to", "from", "by", "for", "into", "onto",
         "near", "beside", "behind", "above", "under", "below", "over", "between", "around", "is",
