@@ -68,6 +68,8 @@ class _Kinds:
         canoe" is no paddle)."""
         if self._lives(category):
             return False
+        if category in load_vocabulary().carried_in_hand:
+            return True  # "ladies with parasols": a parasol of one's own is the hand-held kind
         if tool:
             return max(size) <= _TOOL_SIZE and not load_vocabulary().carries(category, name, _RIDDEN)
         return rests == "surface" or max(size) <= _HANDHELD_SIZE

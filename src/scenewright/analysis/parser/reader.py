@@ -307,10 +307,17 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             j -= 1  # (past describing words: "their two fat ponies" is counted anyway)
         if default == UNCOUNTED and j >= 0 and self.toks[j].text == "their":
             self.theirs.add(g.index)
+        elif j >= 0 and self.toks[j].text == "their" and not m.counted and self._pair_noun(m):
+            g.count = UNCOUNTED  # "skiers with their skis on their shoulders": a pair each, as many as they
+            self.theirs.add(g.index)
         if (m.counted and m.count > 1) or (not m.counted and m.count != default):  # "three", "many"
             self.numbered.add(g.index)
         self._formation_before(m, g)
         return g.index
+
+    def _pair_noun(self, m: _Mention) -> bool:
+        """A plural that names one thing ("skis", "shears"): ``pair_nouns`` in ``data/vocabulary.json``."""
+        return self.toks[m.end - 1].text in load_vocabulary().pair_nouns
 
     def _formation_before(self, m: _Mention, g: _Group) -> None:
         """"Two rows of chairs", "a stack of crates", "a ring of stones": the formation the
@@ -440,6 +447,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.named_at = {k for m in mentions for k in range(m.start - len(m.adjectives), m.end)}
         self.rel_at.update((r.start, r) for r in found if r.kind == "from" and self._acts_from(r.start))
         self.rel_at.update((r.start, r) for r in self._taken_from())
+        self.rel_at.update((r.start, r) for r in self._aimed_at())
         sentence_from = 0
         for sentence in _split(toks):
             self._recent_from, sentence_from = sentence_from, len(self.history)
@@ -501,6 +509,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 if by_start[s].group >= 0 and by_start[h].group >= 0]  # fmt: skip
         self.relations[:0] = held  # before any other support the list gave them
         self._aboard_their_vehicle(mentions)
+        self._left_by_owner(mentions)
         self._one_per_holder()
 
     def _who_after(self, cs: int) -> list[int]:
@@ -866,7 +875,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 if c.each is not None and (c.head is not None or c.each_deed) and not m.definite and g != c.each:
                     self.groups[g].count = max(1, m.count) * self.groups[c.each].count
                     self.pair_each.add((g, c.each))
-                if m.each and c.head is None and not c.verb_seen:
+                # (not what a participle acts on: "noting every crate on a clipboard")
+                words = range(m.start - 1, max(m.start - 6, -1), -1)
+                opener = next((j for j in words if toks[j].text in ("each", "every")), 0)
+                acted_on = opener > 0 and self._participle_at(opener - 1)
+                if m.each and c.head is None and not c.verb_seen and not acted_on:
                     c.each = g  # "every desk has a lamp": a lamp per desk
                     # "each cow hooked up to a pump": a deed of each member, its things once per member
                     deed = m.end < ce and _participle(toks[m.end].text) and m.end not in self.rel_at
@@ -1100,7 +1113,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # ("hens around her feet" stay around her; "a surfboard under his arm", "an axe across his
         # knees", "a bag over her shoulder", "a snake around his neck" are carried)
         carried = ("on", "on top", "in", "under", "over", "around", "no relation", "on a carrier")
-        if (body == "near" and kind != "around") or (body == "on" and kind in carried):
+        if (body in ("near", "side of") and kind != "around") or (body == "on" and kind in carried):
             kind = body
         elif body == "on" and kind == "at":  # "a shelf at his back": behind him, not carried
             kind, body = "behind" if any(t.text == "back" for t in toks[rel.end : end]) else "near", None
@@ -1176,7 +1189,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # ("reads a book on the bench", "sharpen their spears on a grindstone": the readers and sharpeners)
             # (what a person holds or carries is in hand as well: "a waiter carries a tray between the tables")
             holding = c.hand or c.hold and all(self._living(h) for h in c.head)
-            in_hand = holding and target not in _PERSONAL and (kind in _GROUND_KINDS or kind in _HOLDER_KINDS)
+            # (the holder faces what is aimed at: "aims a pitchfork at them")
+            in_hand = holding and target not in _PERSONAL and (kind in (*_GROUND_KINDS, *_HOLDER_KINDS, "face to"))
             # ("with his terrier asleep under it": a living with-thing is no thing in hand, its phrase places it)
             in_hand = in_hand and not any(self._living(g) for g in c.wsub)
             # ("a groom waits with the ponies beside a shed": the groom is there, the ponies with him)
@@ -1340,11 +1354,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         elif target == "the part":  # "in the water": the latest thing that has such a part
             candidates = [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)]
             targets = self._part_owner(part, [], [*candidates, *reversed(range(len(self.groups)))], srcs)
-        elif target in _PERSONAL or target == "them living":
+        elif target in _PERSONAL or target in ("them living", "it living"):
             # "a pirate stands behind the chest with a shovel beside him": the person, not the chest
             targets = self._person(c, srcs, target)
-            if not targets and target == "them living":  # "to their left" of things: them
-                targets = self._pronoun("them", c, srcs, list(c.last_target))
+            if not targets and target in ("them living", "it living"):  # "to their left" of things: them
+                targets = self._pronoun(target.split()[0], c, srcs, list(c.last_target))
         elif isinstance(target, str) and target != "each other":
             targets = self._pronoun_target(c, p, target, kind, srcs, prev_subject, starts_with_rel)
         elif target is None and kind in ("left", "right") and toks[rel.start].text == "on" and (
