@@ -450,3 +450,8 @@ def test_a_parasol_of_ones_own_is_carried(text, held):
 def test_a_parasol_one_sits_under_is_no_thing_in_hand():
     found = rels("A lifeguard sits under a parasol.")
     assert ("umbrella_1", "on", "lifeguard_1") not in found
+
+
+def test_an_agent_noun_working_with_hand_tools_is_a_person_holding_one_each():
+    found = rels("A line of gleaners cut the barley with scythes.")
+    assert {("scythe_1", "on", "gleaner_1"), ("scythe_2", "on", "gleaner_2")} <= found, found

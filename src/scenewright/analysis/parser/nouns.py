@@ -1603,7 +1603,7 @@ def _guess(toks: list[_Tok], head: int, before: list[_Tok]) -> Entry:
     human = human or _dressed(toks, head + 1) or _role_subject(toks, head) or _addressed(toks, head)
     human = human or _goes_on_doing(toks, head)
     moody = any(t.text in vocabulary.moods for t in before)
-    acts = moody or _acts_as_person(toks, head + 1) or _equipped(toks, head + 1) or _has_hands(toks, head + 1)
+    acts = moody or _acts_as_person(toks, head + 1) or _equipped(toks, head + 1) or _has_hands(toks, head)
     if entry.category == GENERIC or (human and entry.category == "machine"):
         entry = vocabulary.guess_agent(word, acts, human) or entry
     found = _verb_after(toks, head + 1)
@@ -1733,16 +1733,28 @@ def _equipped(toks: list[_Tok], k: int) -> bool:
     return False
 
 
-def _has_hands(toks: list[_Tok], k: int) -> bool:
-    """A thing in "his" or "her" hand, arm or lap later in the clause of the subject ending at
-    ``k`` ("a cartographer leans over the table with a compass in his hand", "a courier waits
-    with a parcel under her arm"): an agent noun with hands is a person."""
+def _opens_clause(toks: list[_Tok], head: int) -> bool:
+    """The noun phrase of ``head`` opens its sentence or clause: a subject, not what a verb or a
+    phrase takes ("leans over the nearer one"); "a row of reapers" opens with the row."""
+    opener = _phrase_opener(toks, head)
+    while opener > 0 and toks[opener].text == "of":
+        opener = _phrase_opener(toks, opener - 1)
+    return opener <= 0 or toks[opener - 1].text in (".", "!", "?", ";", ",", *_CLAUSE_WORDS)
+
+
+def _has_hands(toks: list[_Tok], head: int) -> bool:
+    """A thing in "his" or "her" hand, arm or lap later in the clause of the subject at ``head``,
+    or a hand tool its verb works with ("a cartographer leans over the table with a compass in
+    his hand", "a courier waits with a parcel under her arm", "reapers cut the wheat with
+    sickles"): an agent noun with hands is a person."""
+    if not _opens_clause(toks, head):
+        return False
     parts = load_vocabulary().body_parts
-    for j in range(k, min(len(toks) - 1, k + 16)):
+    for j in range(head + 1, min(len(toks) - 1, head + 17)):
         w = toks[j].text
-        if w in (".", ";", "!", "?"):
+        if w in (".", ";", "!", "?", "and") or w in _CLAUSE_WORDS:
             return False
-        if w in ("his", "her") and parts.get(toks[j + 1].text) == "on":
+        if w in ("his", "her") and parts.get(toks[j + 1].text) == "on" or _equipped(toks, j):
             return True
     return False
 
@@ -1751,8 +1763,7 @@ def _goes_on_doing(toks: list[_Tok], head: int) -> bool:
     """The subject at ``head``, opening its sentence or clause, goes on, after the comma that
     closes its verb's phrase, with what only people do ("the chief sits at a desk in the corner,
     reading a logbook"; not "leans over the nearer one, stirring it": no subject)."""
-    opener = _phrase_opener(toks, head)
-    if opener > 0 and toks[opener - 1].text not in (".", "!", "?", ";", ",", *_CLAUSE_WORDS):
+    if not _opens_clause(toks, head):
         return False
     vocabulary = load_vocabulary()
     for j in range(head + 1, min(len(toks) - 1, head + 13)):
