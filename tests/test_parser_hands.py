@@ -392,7 +392,7 @@ def test_a_thing_left_against_something_named_stays_there():
     [
         # an agent noun nobody listed with a thing in "his" hand is a person
         ("The cartographer leans over a broad table with a brass compass in his hand.", ("compass_1", "on", "cartographer_1")),
-        ("A courier waits by the kiosk with a parcel under her arm.", ("parcel_1", "on", "courier_1")),
+        ("A chandler waits by the kiosk with a parcel under her arm.", ("parcel_1", "on", "chandler_1")),
         # the piece small things are worked onto
         ("The tailor sits at a table, stitching beads onto a purse.", ("purse_1", "on", "tailor_1")),
         # a with-tool past where the verb takes its thing from
@@ -418,7 +418,7 @@ def test_what_is_written_down_is_not_in_hand():
         # a robot carries what it comes with, as an animal does
         ("A waiter robot rolls past the tables with a tray of cakes.", ("plate_1", "on", "robot_1")),
         # a word nobody listed that goes on to read is a person, the reader of what it reads
-        ("The warden sits on the wall, reading a letter.", ("letter_1", "on", "warden_1")),
+        ("The reeve sits on the wall, reading a letter.", ("letter_1", "on", "reeve_1")),
     ],
 )
 def test_who_holds(text, held):
