@@ -455,3 +455,7 @@ def test_a_parasol_one_sits_under_is_no_thing_in_hand():
 def test_an_agent_noun_working_with_hand_tools_is_a_person_holding_one_each():
     found = rels("A line of gleaners cut the barley with scythes.")
     assert {("scythe_1", "on", "gleaner_1"), ("scythe_2", "on", "gleaner_2")} <= found, found
+
+
+def test_the_book_one_writes_in_is_in_hand():
+    assert ("ledger_1", "on", "clerk_1") in rels("A clerk sits at the counter and writes in a ledger.")

@@ -123,6 +123,9 @@ _HAND_PAIRS = {
     ("watch", "through"), ("sketches", "on"), ("sketching", "on"), ("sketch", "on"), ("writes", "on"),
     ("writing", "on"), ("write", "on"), ("scribbles", "on"), ("scribbling", "on"), ("draws", "on"),
     ("drawing", "on"), ("draw", "on"), ("types", "on"), ("typing", "on"), ("type", "on"),
+    # the book one writes in ("writes in a ledger", "sketching in a notebook")
+    *((verb, "in") for verb in ("writes", "writing", "write", "scribbles", "scribbling", "sketches", "sketching",
+                                "jots", "jotting", "notes", "noting")),
     # the piece one works small things onto ("stitching beads onto a purse", "glues shells onto a box")
     *((verb, "onto") for verb in ("stitches", "stitching", "stitch", "sews", "sewing", "sew", "glues", "gluing",
                                   "glue", "pins", "pinning", "pin", "threads", "threading", "thread")),
