@@ -441,6 +441,7 @@ def test_a_word_after_the_nearer_is_no_person_for_what_the_subject_goes_on_doing
     [
         ("Ladies with parasols stroll along the towpath.", ("umbrella_1", "on", "lady_1")),
         ("Two girls sit on a bench, sharing an umbrella.", ("umbrella_1", "on", "girl_1")),
+        ("A singer with a microphone sits on a bench.", ("microphone_1", "on", "singer_1")),
     ],
 )
 def test_a_parasol_of_ones_own_is_carried(text, held):
