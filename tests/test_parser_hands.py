@@ -460,3 +460,23 @@ def test_an_agent_noun_working_with_hand_tools_is_a_person_holding_one_each():
 
 def test_the_book_one_writes_in_is_in_hand():
     assert ("ledger_1", "on", "clerk_1") in rels("A clerk sits at the counter and writes in a ledger.")
+
+
+@pytest.mark.parametrize(
+    ("text", "held"),
+    [
+        # a posture verb that takes a small thing has it in hand
+        ("A waiter balancing a tray weaves between the tables.", ("plate_1", "on", "waiter_1")),
+        ("A violinist tucks a violin under her chin.", ("guitar_1", "on", "violinist_1")),
+        # an absolute phrase whose participle says the thing is held
+        ("A knight kneels by the altar, his sword raised.", ("sword_1", "on", "knight_1")),
+        ("A girl waits at the gate, her lantern held high.", ("lantern_1", "on", "girl_1")),
+    ],
+)
+def test_held_in_other_words(text, held):
+    assert held in rels(text), rels(text)
+
+
+def test_a_balanced_tray_goes_where_its_holder_goes():
+    found = rels("A waiter balancing a tray weaves between the tables.")
+    assert not any(r[0] == "plate_1" and r[2].startswith("table") for r in found), found

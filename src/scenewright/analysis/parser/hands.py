@@ -43,6 +43,9 @@ _HERD_LENGTH = 1.0
 
 #: Participles of a thing left somewhere that do not end in -ed ("his rifle laid across the rock").
 _LEFT_PARTICIPLES = {"laid", "set", "left", "put", "stuck", "leaning", "lying", "resting", "standing", "propped"}
+#: Participles of a thing still in its owner's hand ("his sword raised", "her lantern held high").
+_HELD_PARTICIPLES = {"raised", "held", "drawn", "clutched", "gripped", "lifted", "aloft", "brandished", "shouldered",
+                     "levelled", "leveled", "outstretched"}  # fmt: skip
 
 #: The verbs of the hand tables: verbs, whatever their ending says ("play", "carry").
 _DEED_VERBS = _USE_VERBS | _HAND_VERBS | _HOLD | _LEAD_VERBS | _GIVE_VERBS
@@ -125,7 +128,7 @@ class _Hands:
 
     def _used_at(self, k: int, ce: int) -> bool:
         """Whether the word at ``k`` is a verb a person does with the thing right after it in hand:
-        any verb but those of :data:`_NOT_IN_HAND`, posture or looking out, when the thing is small
+        any verb but those of :data:`_NOT_IN_HAND` or looking out, when the thing is small
         enough to hold ("checks a wristwatch next to the kiosk": in hand, and he is by the kiosk;
         "turning a small jug"; "two men haul a trunk up the stairs")."""
         w = self.toks[k].text
@@ -133,7 +136,8 @@ class _Hands:
             return False
         vocabulary = load_vocabulary()
         aimed = _verb_stem(w, _AIM_VERBS)  # ("points from the tower" is looking out, "points a camera" aims it)
-        if _verb_stem(w, _NOT_IN_HAND) or vocabulary.is_posture_verb(w) or w in vocabulary.lookout_verbs and not aimed:
+        # (a posture verb that takes a thing small enough to hold has it in hand: "balances a tray")
+        if _verb_stem(w, _NOT_IN_HAND) or w in vocabulary.lookout_verbs and not aimed:
             return False
         verb = w.endswith("ing") or _is_verb(w) or self._finite_at(k)
         # (what one aims is a tool or a weapon, as long as a pitchfork)
@@ -310,7 +314,8 @@ class _Hands:
     def _left_by_owner(self, mentions: list[_Mention]) -> None:
         """", his lance planted in the grass", "and her bicycle parked nearby": a person's thing in
         an absolute phrase (after a comma or "and", its participle next) that nothing places is
-        left by its owner, the latest person of the sentence the possessive agrees with."""
+        left by its owner, the latest person of the sentence the possessive agrees with; in hand
+        when the participle says it is held ("his sword raised")."""
         placed = {r[1] for r in self.relations if r[0] != "face to"} | {g for g, _ in self.carried}
         vocabulary = load_vocabulary()
         for k, m in enumerate(mentions):
@@ -319,7 +324,7 @@ class _Hands:
                 continue
             owned, after = self.toks[j].text, self.toks[m.end].text
             absolute = self.toks[j - 1].text in (",", "and") and owned in _PERSON_POSSESSIVES
-            participle = after.endswith(("ed", "en")) or after in _LEFT_PARTICIPLES
+            participle = after.endswith(("ed", "en")) or after in _LEFT_PARTICIPLES or after in _HELD_PARTICIPLES
             if not absolute or self._living(m.group) or not participle:
                 continue
             for before in reversed(mentions[:k]):
@@ -327,7 +332,10 @@ class _Hands:
                     break
                 g = before.group
                 if g >= 0 and self._person_at(g) and vocabulary.agrees(owned, self.groups[g].name.split()[-1]):
-                    self.relations.append(("near", m.group, g, None))
+                    held = after in _HELD_PARTICIPLES and self._handheld(m.group)
+                    self.relations.append(("on" if held else "near", m.group, g, None))
+                    if held:
+                        self.carried.add((m.group, g))
                     break
 
     def _taken_from(self) -> list[_Rel]:
