@@ -480,3 +480,21 @@ def test_held_in_other_words(text, held):
 def test_a_balanced_tray_goes_where_its_holder_goes():
     found = rels("A waiter balancing a tray weaves between the tables.")
     assert not any(r[0] == "plate_1" and r[2].startswith("table") for r in found), found
+
+
+@pytest.mark.parametrize(
+    ("text", "held"),
+    [
+        ("A girl feeds the ducks from a paper bag.", ("backpack_1", "on", "girl_1")),
+        ("A woman pours tea from a pot at the table.", ("pot_1", "on", "woman_1")),
+        ("A chef tosses pancakes in a frying pan by the stove.", ("pot_1", "on", "chef_1")),
+    ],
+)
+def test_what_feed_or_drink_comes_from_and_the_pan_tossed_in_are_in_hand(text, held):
+    found = rels(text)
+    assert held in found and not any(r[0].startswith(("girl", "woman", "chef")) and r[1] == "on" for r in found), found
+
+
+def test_a_wheeled_trolley_is_pushed_not_held():
+    found = rels("A porter wheels a trolley past the kiosk.")
+    assert ("shopping_cart_1", "on", "porter_1") not in found and ("porter_1", "near", "shopping_cart_1") in found, found

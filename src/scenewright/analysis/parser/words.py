@@ -123,6 +123,11 @@ _HAND_PAIRS = {
     ("watch", "through"), ("sketches", "on"), ("sketching", "on"), ("sketch", "on"), ("writes", "on"),
     ("writing", "on"), ("write", "on"), ("scribbles", "on"), ("scribbling", "on"), ("draws", "on"),
     ("drawing", "on"), ("draw", "on"), ("types", "on"), ("typing", "on"), ("type", "on"),
+    # what the feed or the drink comes out of ("feeds the ducks from a paper bag", "pours tea from a pot")
+    *((verb, "from") for verb in ("feeds", "feeding", "feed", "pours", "pouring", "pour", "scatters",
+                                  "scattering", "scatter")),
+    # the pan one tosses in ("tosses pancakes in a frying pan")
+    *((verb, "in") for verb in ("tosses", "tossing", "toss", "flips", "flipping", "flip")),
     # the book one writes in ("writes in a ledger", "sketching in a notebook")
     *((verb, "in") for verb in ("writes", "writing", "write", "scribbles", "scribbling", "sketches", "sketching",
                                 "jots", "jotting", "notes", "noting")),
@@ -160,7 +165,7 @@ _PUT_OR_WORKED = {
     "stir", "chop", "cut", "slice", "dice", "knead", "hammer", "weld", "forge", "fry", "grill", "roast",
     "bake", "cook", "boil", "wash", "scrub", "sweep", "mop", "water", "repair", "fix", "assemble", "build",
     "open", "close", "lock", "unlock", "shoe", "dig", "rake", "shovel", "split", "saw", "plough", "plow",
-    "light", "stoke", "tend", "fan", "push",
+    "light", "stoke", "tend", "fan", "push", "wheel", "trundle",
 }  # fmt: skip
 #: Verbs of sense, pursuit, trade and going, by their stem: what they take reaches the doer from afar
 #: or stays where it is ("watches a kite", "kicks a ball", "sells lanterns", "leads a pony").
