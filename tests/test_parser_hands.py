@@ -471,6 +471,8 @@ def test_the_book_one_writes_in_is_in_hand():
         # an absolute phrase whose participle says the thing is held
         ("A knight kneels by the altar, his sword raised.", ("sword_1", "on", "knight_1")),
         ("A girl waits at the gate, her lantern held high.", ("lantern_1", "on", "girl_1")),
+        # held whatever else the phrase says, one each of "their"
+        ("Two anglers sit on stools by the pond, their fishing rods out over the water.", ("fishing_rod_2", "on", "angler_2")),
     ],
 )
 def test_held_in_other_words(text, held):

@@ -45,7 +45,7 @@ _HERD_LENGTH = 1.0
 _LEFT_PARTICIPLES = {"laid", "set", "left", "put", "stuck", "leaning", "lying", "resting", "standing", "propped"}
 #: Participles of a thing still in its owner's hand ("his sword raised", "her lantern held high").
 _HELD_PARTICIPLES = {"raised", "held", "drawn", "clutched", "gripped", "lifted", "aloft", "brandished", "shouldered",
-                     "levelled", "leveled", "outstretched"}  # fmt: skip
+                     "levelled", "leveled", "outstretched", "out", "up", "high", "ready"}  # fmt: skip
 
 #: The verbs of the hand tables: verbs, whatever their ending says ("play", "carry").
 _DEED_VERBS = _USE_VERBS | _HAND_VERBS | _HOLD | _LEAD_VERBS | _GIVE_VERBS
@@ -315,27 +315,30 @@ class _Hands:
         """", his lance planted in the grass", "and her bicycle parked nearby": a person's thing in
         an absolute phrase (after a comma or "and", its participle next) that nothing places is
         left by its owner, the latest person of the sentence the possessive agrees with; in hand
-        when the participle says it is held ("his sword raised")."""
+        when the participle says it is held ("his sword raised"), whatever the rest of the phrase
+        says ("their rods out over the water": where the holders reach, not where the rods stand)."""
         placed = {r[1] for r in self.relations if r[0] != "face to"} | {g for g, _ in self.carried}
         vocabulary = load_vocabulary()
         for k, m in enumerate(mentions):
             j = m.start - len(m.adjectives) - 1
-            if m.content or m.group < 0 or m.group in placed or j < 1 or m.end >= len(self.toks):
+            if m.content or m.group < 0 or j < 1 or m.end >= len(self.toks):
                 continue
             owned, after = self.toks[j].text, self.toks[m.end].text
             absolute = self.toks[j - 1].text in (",", "and") and owned in _PERSON_POSSESSIVES
-            participle = after.endswith(("ed", "en")) or after in _LEFT_PARTICIPLES or after in _HELD_PARTICIPLES
-            if not absolute or self._living(m.group) or not participle:
+            participle = after.endswith(("ed", "en")) or after in _LEFT_PARTICIPLES
+            group = self.groups[m.group]
+            raised = after in _HELD_PARTICIPLES and self._holdable(group.category, group.name, group.size, group.rests, True)
+            if not absolute or self._living(m.group) or not (participle and m.group not in placed or raised):
                 continue
             for before in reversed(mentions[:k]):
                 if any(t.text in (".", ";", "!", "?") for t in self.toks[before.end : m.start]):
                     break
                 g = before.group
                 if g >= 0 and self._person_at(g) and vocabulary.agrees(owned, self.groups[g].name.split()[-1]):
-                    held = after in _HELD_PARTICIPLES and self._handheld(m.group)
-                    self.relations.append(("on" if held else "near", m.group, g, None))
-                    if held:
+                    if raised:
+                        self.relations[:] = [r for r in self.relations if r[1] != m.group or r[0] == "face to"]
                         self.carried.add((m.group, g))
+                    self.relations.append(("on" if raised else "near", m.group, g, None))
                     break
 
     def _taken_from(self) -> list[_Rel]:
