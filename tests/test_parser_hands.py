@@ -361,6 +361,7 @@ def test_pointing_from_a_perch_is_still_looking_out():
     [
         ("A goat with a bell on its collar grazes by the fence.", ("bell_1", "on", "goat_1")),
         ("A hound with a bell on its neck sleeps by the gate.", ("bell_1", "on", "dog_1")),
+        ("A dog with a stick in its mouth runs past the bench.", ("stick_1", "on", "dog_1")),
         # a thing's "its" still names the thing
         ("A scarecrow with a crow on its shoulder stands in the field.", ("crow_1", "on", "scarecrow_1")),
     ],
