@@ -501,3 +501,19 @@ def test_what_feed_or_drink_comes_from_and_the_pan_tossed_in_are_in_hand(text, h
 def test_a_wheeled_trolley_is_pushed_not_held():
     found = rels("A porter wheels a trolley past the kiosk.")
     assert ("shopping_cart_1", "on", "porter_1") not in found and ("porter_1", "near", "shopping_cart_1") in found, found
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["A man with a lantern and a cup stands by the gate.", "A girl holds a lantern and a cup by the sink."],
+)
+def test_a_list_of_things_in_hand_goes_on_over_and(text):
+    found = rels(text)
+    assert {r[0] for r in found if r[1] == "on"} >= {"table_lamp_1", "cup_1"} or {"lantern_1", "cup_1"} <= {
+        r[0] for r in found if r[1] == "on"
+    }, found
+
+
+def test_a_list_placed_by_its_own_phrase_is_not_in_hand():
+    found = rels("A clerk sits at a desk, copying letters, with an inkwell and three quills on it.")
+    assert {("inkwell_1", "on", "desk_1"), ("quill_1", "on", "desk_1")} <= found, found

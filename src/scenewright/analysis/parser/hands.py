@@ -220,6 +220,16 @@ class _Hands:
         rel = self.rel_at.get(end)
         return rel is not None and rel.end < ce and self.toks[rel.end].text in ("it", "them", "its", "their")
 
+    def _list_end(self, end: int, ce: int) -> int:
+        """Where a list of things that goes on from a thing ending at ``end`` ends ("an inkwell
+        and three quills", "a cup, a spoon and a fork")."""
+        while end < ce and self.toks[end].text in ("and", ","):
+            m = self._next_mention(end + 1, ce)
+            if m is None:
+                break
+            end = m.end
+        return end
+
     def _placed_after(self, end: int, ce: int) -> bool:
         """A relation phrase right after a thing, or after one word that describes it ("a bible
         open on a lectern", "an urn beside each bench")."""

@@ -841,12 +841,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 c.company = fellow and w == "with" and self._after_verb(k, worn=True)
                 # ("a guard stands at the gate with a spear": nothing stands on a gate, the spear is his)
                 tool = self._hand_object(k + 1, ce, tool=True) if w == "with" else None
-                armed = tool is not None and not self._placed_by_pronoun(tool.end, ce) and all(
+                # ("with an inkwell and three quills on it": the phrase after the list places them all)
+                listed = self._list_end(tool.end, ce) if tool is not None else k
+                armed = tool is not None and not self._placed_by_pronoun(listed, ce) and all(
                     self._person_at(h) for h in c.head
                 ) and not any(self.catalogue[self.groups[t].category].support for t in c.last_target)
                 # ("walks behind them with a broom": what a person works with is in hand, unless a
                 # phrase of its own places it: "with a bible open on a lectern")
-                if armed and (after_target or not self._placed_after(tool.end, ce)):
+                if armed and (after_target or not self._placed_after(listed, ce)):
                     hand = True
                 if after_target and not fellow and not armed and (
                     (w == "with" and not mine and (self._animate(*c.head) or between)) or (w, nxt) in _HOLD_PAIRS
@@ -895,7 +897,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                         c.wsub_before, closed = list(c.wsub), True
                     # ("one holding a lamp, the other a rope": the second holder's thing, its verb left out)
                     other = [w for w in gap if w != ","][:2] in (["the", "other"], ["another", "a"], ["another", "an"])
-                    if c.hand and c.wsub and not other and any(w in _STOP and w not in ("and", "or") for w in gap):
+                    # ("holds a cup and a spoon": a list of things in hand goes on over "and a")
+                    listed = gap[:1] in (["and"], ["or"]) and all(w in _DETERMINERS or w in _NUMBERS for w in gap[1:])
+                    stop = any(w in _STOP and w not in ("and", "or") for w in gap)
+                    if c.hand and c.wsub and not other and stop and not listed:
                         # "waves a flag from a gantry": what is in hand is the noun right after
                         self._close_with(c)
                         c.head, c.wsub, c.hand, c.hold = None, [], False, False
