@@ -352,8 +352,9 @@ def test_what_one_aims_is_in_hand_and_the_aimer_faces_the_target(text, held, fac
     assert {held, faced} <= found, found
 
 
-def test_pointing_from_a_perch_is_still_looking_out():
+def test_pointing_or_aiming_from_a_perch_is_still_looking_out():
     assert ("boy_1", "on", "tower_1") in rels("A boy points at the moon from the tower.")
+    assert ("hunter_1", "on", "tower_1") in rels("A hunter aims a rifle at the geese from the tower.")
 
 
 @pytest.mark.parametrize(
