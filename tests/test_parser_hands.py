@@ -347,3 +347,185 @@ def test_every_thing_of_a_with_list_is_in_hand():
     found = rels("A gardener strolls past with a rake, a hoe and a watering can.")
     assert {s for s, r, t in found if r == "on" and t == "gardener_1"} >= {"rake_1", "hoe_1"}
     assert ("guard_1", "on", "gantry_1") in rels("A guard waves a flag from a gantry.")
+
+
+@pytest.mark.parametrize(
+    ("text", "held", "faced"),
+    [
+        ("A hunter in a cap aims a rifle at the geese.", ("rifle_1", "on", "hunter_1"), ("hunter_1", "face to", "goose_1")),
+        ("A girl points a camera at the swans.", ("camera_1", "on", "girl_1"), ("girl_1", "face to", "swan_1")),
+        # a long tool is aimed in hand too
+        ("A farmer aims a pitchfork at the wolves.", ("pitchfork_1", "on", "farmer_1"), ("farmer_1", "face to", "wolf_1")),
+    ],
+)
+def test_what_one_aims_is_in_hand_and_the_aimer_faces_the_target(text, held, faced):
+    found = rels(text)
+    assert {held, faced} <= found, found
+
+
+def test_pointing_or_aiming_from_a_perch_is_still_looking_out():
+    assert ("boy_1", "on", "tower_1") in rels("A boy points at the moon from the tower.")
+    assert ("hunter_1", "on", "tower_1") in rels("A hunter aims a rifle at the geese from the tower.")
+
+
+@pytest.mark.parametrize(
+    ("text", "carried"),
+    [
+        ("A goat with a bell on its collar grazes by the fence.", ("bell_1", "on", "goat_1")),
+        ("A hound with a bell on its neck sleeps by the gate.", ("bell_1", "on", "dog_1")),
+        ("A dog with a stick in its mouth runs past the bench.", ("stick_1", "on", "dog_1")),
+        # a thing's "its" still names the thing
+        ("A scarecrow with a crow on its shoulder stands in the field.", ("crow_1", "on", "scarecrow_1")),
+    ],
+)
+def test_a_thing_on_an_animals_body_is_carried_by_the_animal(text, carried):
+    assert carried in rels(text)
+
+
+@pytest.mark.parametrize(
+    ("text", "left"),
+    [
+        ("A soldier kneels by the well, his spear planted in the sand.", ("spear_1", "near", "soldier_1")),
+        ("A girl sleeps under a tree, her basket forgotten in the grass.", ("basket_1", "near", "girl_1")),
+        ("A hiker rests on a rock, his bicycle parked nearby.", ("bicycle_1", "near", "hiker_1")),
+        ("A soldier waits by the well, his shield at his side.", ("shield_1", "side of", "soldier_1")),
+    ],
+)
+def test_a_persons_thing_left_in_an_absolute_phrase_is_by_its_owner(text, left):
+    assert left in rels(text)
+
+
+def test_a_thing_left_against_something_named_stays_there():
+    found = rels("A hiker rests on a rock, his bicycle leaning against a tree.")
+    assert ("bicycle_1", "side of", "tree_1") in found and ("bicycle_1", "near", "hiker_1") not in found
+
+
+@pytest.mark.parametrize(
+    ("text", "held"),
+    [
+        # an agent noun nobody listed with a thing in "his" hand is a person
+        ("The cartographer leans over a broad table with a brass compass in his hand.", ("compass_1", "on", "cartographer_1")),
+        ("A chandler waits by the kiosk with a parcel under her arm.", ("parcel_1", "on", "chandler_1")),
+        # the piece small things are worked onto
+        ("The tailor sits at a table, stitching beads onto a purse.", ("purse_1", "on", "tailor_1")),
+        # a with-tool past where the verb takes its thing from
+        ("A farmer draws water from the pump with a bucket.", ("bucket_1", "on", "farmer_1")),
+        # what one writes down on is in hand, what is written about is not
+        ("A clerk sits under an oak, noting every crate on a clipboard.", ("clipboard_1", "on", "clerk_1")),
+    ],
+)
+def test_more_ways_to_have_a_thing_in_hand(text, held):
+    assert held in rels(text), rels(text)
+
+
+def test_what_is_written_down_is_not_in_hand():
+    found = rels("A clerk sits under an oak, noting every crate on a clipboard.")
+    assert ("crate_1", "on", "clerk_1") not in found and ("clipboard_1", "on", "crate_1") not in found, found
+
+
+@pytest.mark.parametrize(
+    ("text", "held"),
+    [
+        # "who" and a verb of holding: the one named right before holds
+        ("A nurse chats with a boy who holds a kite.", ("kite_1", "on", "boy_1")),
+        # a robot carries what it comes with, as an animal does
+        ("A waiter robot rolls past the tables with a tray of cakes.", ("plate_1", "on", "robot_1")),
+        # a word nobody listed that goes on to read is a person, the reader of what it reads
+        ("The reeve sits on the wall, reading a letter.", ("letter_1", "on", "reeve_1")),
+    ],
+)
+def test_who_holds(text, held):
+    assert held in rels(text), rels(text)
+
+
+def test_a_pair_of_their_own_each():
+    parsed = parse_scene("Two skiers wait by the lift with their skis on their shoulders.")
+    assert Counter(o.category for o in parsed.objects)["skis"] == 2
+    assert {("skis_1", "on", "skier_1"), ("skis_2", "on", "skier_2")} <= rels(parsed.text)
+
+
+def test_a_word_after_the_nearer_is_no_person_for_what_the_subject_goes_on_doing():
+    parsed = parse_scene("A brewer leans over the nearer one, stirring it with a paddle.")
+    assert all(o.category != "figure" or o.id.startswith("brewer") for o in parsed.objects)
+
+
+@pytest.mark.parametrize(
+    ("text", "held"),
+    [
+        ("Ladies with parasols stroll along the towpath.", ("umbrella_1", "on", "lady_1")),
+        ("Two girls sit on a bench, sharing an umbrella.", ("umbrella_1", "on", "girl_1")),
+        ("A singer with a microphone sits on a bench.", ("microphone_1", "on", "singer_1")),
+    ],
+)
+def test_a_parasol_of_ones_own_is_carried(text, held):
+    assert held in rels(text)
+
+
+def test_a_parasol_one_sits_under_is_no_thing_in_hand():
+    found = rels("A lifeguard sits under a parasol.")
+    assert ("umbrella_1", "on", "lifeguard_1") not in found
+
+
+def test_an_agent_noun_working_with_hand_tools_is_a_person_holding_one_each():
+    found = rels("A line of gleaners cut the barley with scythes.")
+    assert {("scythe_1", "on", "gleaner_1"), ("scythe_2", "on", "gleaner_2")} <= found, found
+
+
+def test_the_book_one_writes_in_is_in_hand():
+    assert ("ledger_1", "on", "clerk_1") in rels("A clerk sits at the counter and writes in a ledger.")
+
+
+@pytest.mark.parametrize(
+    ("text", "held"),
+    [
+        # a posture verb that takes a small thing has it in hand
+        ("A waiter balancing a tray weaves between the tables.", ("plate_1", "on", "waiter_1")),
+        ("A violinist tucks a violin under her chin.", ("guitar_1", "on", "violinist_1")),
+        # an absolute phrase whose participle says the thing is held
+        ("A knight kneels by the altar, his sword raised.", ("sword_1", "on", "knight_1")),
+        ("A girl waits at the gate, her lantern held high.", ("lantern_1", "on", "girl_1")),
+        # held whatever else the phrase says, one each of "their"
+        ("Two anglers sit on stools by the pond, their fishing rods out over the water.", ("fishing_rod_2", "on", "angler_2")),
+    ],
+)
+def test_held_in_other_words(text, held):
+    assert held in rels(text), rels(text)
+
+
+def test_a_balanced_tray_goes_where_its_holder_goes():
+    found = rels("A waiter balancing a tray weaves between the tables.")
+    assert not any(r[0] == "plate_1" and r[2].startswith("table") for r in found), found
+
+
+@pytest.mark.parametrize(
+    ("text", "held"),
+    [
+        ("A girl feeds the ducks from a paper bag.", ("backpack_1", "on", "girl_1")),
+        ("A woman pours tea from a pot at the table.", ("pot_1", "on", "woman_1")),
+        ("A chef tosses pancakes in a frying pan by the stove.", ("pot_1", "on", "chef_1")),
+    ],
+)
+def test_what_feed_or_drink_comes_from_and_the_pan_tossed_in_are_in_hand(text, held):
+    found = rels(text)
+    assert held in found and not any(r[0].startswith(("girl", "woman", "chef")) and r[1] == "on" for r in found), found
+
+
+def test_a_wheeled_trolley_is_pushed_not_held():
+    found = rels("A porter wheels a trolley past the kiosk.")
+    assert ("shopping_cart_1", "on", "porter_1") not in found and ("porter_1", "near", "shopping_cart_1") in found, found
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["A man with a lantern and a cup stands by the gate.", "A girl holds a lantern and a cup by the sink."],
+)
+def test_a_list_of_things_in_hand_goes_on_over_and(text):
+    found = rels(text)
+    assert {r[0] for r in found if r[1] == "on"} >= {"table_lamp_1", "cup_1"} or {"lantern_1", "cup_1"} <= {
+        r[0] for r in found if r[1] == "on"
+    }, found
+
+
+def test_a_list_placed_by_its_own_phrase_is_not_in_hand():
+    found = rels("A clerk sits at a desk, copying letters, with an inkwell and three quills on it.")
+    assert {("inkwell_1", "on", "desk_1"), ("quill_1", "on", "desk_1")} <= found, found

@@ -70,7 +70,12 @@ Decisions worth knowing:
   the pot on it, the doer near it). Companions keep ``near`` ("with its handler"), a led animal by
   its person ("walks a dachshund beside the van": the man beside it); "each holding" gives one to
   each of the people; "sharing a thermos" is one thermos; a giver holds the gift, ``near`` whom it
-  goes to; a rider over a bridge is on it (the mount is).
+  goes to; a rider over a bridge is on it (the mount is). What one aims is in hand and the aimer
+  faces the target ("aims a pitchfork at them"); "a bell on its collar" is on the animal; a
+  person's thing in an absolute phrase is by its owner ("his lance planted in the grass": near
+  him, "his helmet at his side": beside him), in hand when held ("his sword raised"); what one
+  writes in or on, feeds or pours from is in hand ("recording every sack on a scroll"), and a
+  parasol or a microphone a person is given is the hand-held kind (``carried_in_hand``).
 - "on the left wall" places nothing: a side word before a noun is that noun's adjective, and
   walls are no objects. A part named by a possessive is its owner ("above its door" → above
   it), since doors, roofs and porches are not objects either.

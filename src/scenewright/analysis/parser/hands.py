@@ -13,6 +13,7 @@ from scenewright.analysis.parser.nouns import _Mention, _is_plural
 from scenewright.analysis.parser.phrases import _Rel
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import (
+    _AIM_VERBS,
     _DETERMINERS,
     _GIVE_VERBS,
     _HAND_PAIRS,
@@ -24,6 +25,7 @@ from scenewright.analysis.parser.words import (
     _NUMBERS,
     _ORDINALS,
     _PUT_OR_WORKED,
+    _RECORD_VERBS,
     _STOP,
     _USE_VERBS,
     _is_verb,
@@ -38,6 +40,12 @@ if TYPE_CHECKING:
 #: waits with two cows": by the animals), where a smaller one keeps by its person ("a man walks
 #: a dachshund", "a girl with her dog").
 _HERD_LENGTH = 1.0
+
+#: Participles of a thing left somewhere that do not end in -ed ("his rifle laid across the rock").
+_LEFT_PARTICIPLES = {"laid", "set", "left", "put", "stuck", "leaning", "lying", "resting", "standing", "propped"}
+#: Participles of a thing still in its owner's hand ("his sword raised", "her lantern held high").
+_HELD_PARTICIPLES = {"raised", "held", "drawn", "clutched", "gripped", "lifted", "aloft", "brandished", "shouldered",
+                     "levelled", "leveled", "outstretched", "out", "up", "high", "ready"}  # fmt: skip
 
 #: The verbs of the hand tables: verbs, whatever their ending says ("play", "carry").
 _DEED_VERBS = _USE_VERBS | _HAND_VERBS | _HOLD | _LEAD_VERBS | _GIVE_VERBS
@@ -56,7 +64,8 @@ class _Hands:
         if rel is not None and (w, self.toks[rel.end - 1].text) in _HAND_PAIRS:
             end = rel.end  # "peering through a loupe": a phrase of its own (near), but the loupe is in hand
         elif w == "with":
-            end = k + 1 if self._after_verb(k, worn=True) else None
+            # (past where the verb takes its thing from: "draws water from the pump with a bucket")
+            end = k + 1 if self._after_verb(k, over=("from", "off", "out", "of"), worn=True) else None
         elif any(p == w for _, p in _HAND_PAIRS) and self._pair_before(k):
             end = k + 2 if w == "out" and k + 1 < ce and self.toks[k + 1].text == "of" else k + 1
         elif w == "on" and self._device_verb_before(k):
@@ -90,10 +99,14 @@ class _Hands:
     def _device_verb_before(self, k: int) -> bool:
         """A verb a person does with a small thing "on" which at ``k`` comes before it in the same
         clause part, with nothing in hand between ("films it on a tablet", "plays a tune on a
-        flute"; "sharpens a knife on a whetstone" works the knife there): no posture, placing or
-        work in place ("sits on a cushion", "sets a cup on a tray", "chops onions on a board")."""
+        flute"; "sharpens a knife on a whetstone" works the knife there), or a verb of writing down
+        ("noting every crate on a clipboard"): no posture, placing or work in place ("sits on a
+        cushion", "sets a cup on a tray", "chops onions on a board")."""
         w = self._acting_verb(k, held=True)
-        return w is not None and not (_verb_stem(w, _PUT_OR_WORKED) or self._still(w))
+        if w is None:  # ("noting every crate on a clipboard": the crates are what is written down)
+            w = self._acting_verb(k)
+            return w is not None and _verb_stem(w, _RECORD_VERBS)
+        return not (_verb_stem(w, _PUT_OR_WORKED) or self._still(w))
 
     def _works_on(self, k: int, target) -> bool:
         """Whether a person's verb "on" a thing that carries nobody, at ``k``, is work done at it,
@@ -121,17 +134,20 @@ class _Hands:
 
     def _used_at(self, k: int, ce: int) -> bool:
         """Whether the word at ``k`` is a verb a person does with the thing right after it in hand:
-        any verb but those of :data:`_NOT_IN_HAND`, posture or looking out, when the thing is small
+        any verb but those of :data:`_NOT_IN_HAND` or looking out, when the thing is small
         enough to hold ("checks a wristwatch next to the kiosk": in hand, and he is by the kiosk;
         "turning a small jug"; "two men haul a trunk up the stairs")."""
         w = self.toks[k].text
         if k in self.named_at or k in self.content_at or w in _STOP or w in _COPULAS or not w.isalpha():
             return False
         vocabulary = load_vocabulary()
-        if _verb_stem(w, _NOT_IN_HAND) or vocabulary.is_posture_verb(w) or w in vocabulary.lookout_verbs:
+        aimed = _verb_stem(w, _AIM_VERBS)  # ("points from the tower" is looking out, "points a camera" aims it)
+        # (a posture verb that takes a thing small enough to hold has it in hand: "balances a tray")
+        if _verb_stem(w, _NOT_IN_HAND) or w in vocabulary.lookout_verbs and not aimed:
             return False
         verb = w.endswith("ing") or _is_verb(w) or self._finite_at(k)
-        return verb and w not in _HANG_VERBS and self._hand_object(k + 1, ce) is not None
+        # (what one aims is a tool or a weapon, as long as a pitchfork)
+        return verb and w not in _HANG_VERBS and self._hand_object(k + 1, ce, tool=aimed) is not None
 
     def _one_thing_after(self, k: int, ce: int) -> bool:
         """The noun phrase right after ``k`` names one thing ("a trunk", not "trunks", "two trunks"
@@ -140,17 +156,20 @@ class _Hands:
         return m is not None and m.count <= 1 and not _is_plural(self.toks, m)
 
     def _bearer_before(self, k: int) -> int | None:
-        """The person named right before a participle of holding or use at ``k``, with no comma
-        between: the one who holds ("ducks gather around a boy holding a loaf": the boy's, not the
-        ducks'; "..., holding a lamp" after a comma is the subject's); the thing a relative pronoun
+        """The person named right before a participle of holding or use at ``k``, or before "who"
+        and such a verb, with no comma between: the one who holds ("ducks gather around a boy
+        holding a loaf": the boy's, not the ducks'; "talking to a biker who holds her helmet";
+        "..., holding a lamp" after a comma is the subject's); the thing a relative pronoun
         right before a verb of holding follows ("a post that holds a lantern")."""
         w = self.toks[k].text
         if w in _HOLD and k > 0 and self.toks[k - 1].text in ("that", "which") and k - 1 in self.ends:
             # "skaters glide around a pillar that holds up a disco ball": the pillar bears it
             return next((m.group for m in self.by_start.values() if m.end == k - 1 and m.group >= 0), None)
-        if not (w.endswith("ing") and w in _DEED_VERBS) or k not in self.ends:
+        who = k > 0 and self.toks[k - 1].text == "who" and w in _DEED_VERBS
+        end = k - 1 if who else k
+        if not (who or w.endswith("ing") and w in _DEED_VERBS) or end not in self.ends:
             return None
-        named = next((m.group for m in self.by_start.values() if m.end == k and m.group >= 0), None)
+        named = next((m.group for m in self.by_start.values() if m.end == end and m.group >= 0), None)
         return named if named is not None and self._person_at(named) else None
 
     def _keeps_by(self, g: int, h: int) -> tuple[int, int]:
@@ -162,14 +181,13 @@ class _Hands:
         return (h, g) if herd else (g, h)
 
     def _borne(self, g: int, h: int) -> bool:
-        """A small thing an animal has with it is on the animal, as a person's is in hand: what it
-        wears, carries or has in its mouth ("three mules, each with a bell", "a dog with a
-        ball"); nothing as big as the animal ("a horse with a cart"); a robot's with-things are
-        its parts ("a robot with six arms")."""
+        """A small thing an animal or a robot has with it is on it, as a person's is in hand: what
+        it wears, carries or has in its mouth ("three mules, each with a bell", "a dog with a
+        ball", "a robot with a tray of drinks"); nothing as big as the animal ("a horse with a
+        cart"). (A robot's arms are parts, no things: "a robot with six arms".)"""
         animal, thing = self.groups[h], self.groups[g]
         return (
-            self._living(h) and not self._person_at(h) and self.catalogue[animal.category].shape != "robot"
-            and self._handheld(g)
+            self._living(h) and not self._person_at(h) and self._handheld(g)
             and max(thing.size) < 0.5 * max(animal.size)
         )  # fmt: skip
 
@@ -214,6 +232,16 @@ class _Hands:
             end = m.end
         rel = self.rel_at.get(end)
         return rel is not None and rel.end < ce and self.toks[rel.end].text in ("it", "them", "its", "their")
+
+    def _list_end(self, end: int, ce: int) -> int:
+        """Where a list of things that goes on from a thing ending at ``end`` ends ("an inkwell
+        and three quills", "a cup, a spoon and a fork")."""
+        while end < ce and self.toks[end].text in ("and", ","):
+            m = self._next_mention(end + 1, ce)
+            if m is None:
+                break
+            end = m.end
+        return end
 
     def _placed_after(self, end: int, ce: int) -> bool:
         """A relation phrase right after a thing, or after one word that describes it ("a bible
@@ -289,6 +317,52 @@ class _Hands:
             and (toks[j - 1].text.endswith("'s") or (j + 1 < end and toks[j + 1].text == "of"))
             for j in range(k + 2, end)
         )
+
+    def _aimed_at(self) -> list[_Rel]:
+        """"Aims a pitchfork at them", "points a torch at the door": the thing aimed is in hand
+        (:meth:`_used_at`), so the "at" phrase after it turns its holder to the target rather than
+        standing the thing by it."""
+        out = []
+        for k, rel in self.rel_at.items():
+            thing = next((m for m in self.by_start.values() if m.end == k), None)
+            if rel.kind != "at" or thing is None:
+                continue
+            j = thing.start - len(thing.adjectives) - 1
+            while j >= 0 and (self.toks[j].text in _DETERMINERS or self.toks[j].text in _NUMBERS):
+                j -= 1
+            if j >= 0 and _verb_stem(self.toks[j].text, _AIM_VERBS) and self._hand_object(j + 1, k, tool=True):
+                out.append(_Rel("face to", k, rel.end))
+        return out
+
+    def _left_by_owner(self, mentions: list[_Mention]) -> None:
+        """", his lance planted in the grass", "and her bicycle parked nearby": a person's thing in
+        an absolute phrase (after a comma or "and", its participle next) that nothing places is
+        left by its owner, the latest person of the sentence the possessive agrees with; in hand
+        when the participle says it is held ("his sword raised"), whatever the rest of the phrase
+        says ("their rods out over the water": where the holders reach, not where the rods stand)."""
+        placed = {r[1] for r in self.relations if r[0] != "face to"} | {g for g, _ in self.carried}
+        vocabulary = load_vocabulary()
+        for k, m in enumerate(mentions):
+            j = m.start - len(m.adjectives) - 1
+            if m.content or m.group < 0 or j < 1 or m.end >= len(self.toks):
+                continue
+            owned, after = self.toks[j].text, self.toks[m.end].text
+            absolute = self.toks[j - 1].text in (",", "and") and owned in _PERSON_POSSESSIVES
+            participle = after.endswith(("ed", "en")) or after in _LEFT_PARTICIPLES
+            group = self.groups[m.group]
+            raised = after in _HELD_PARTICIPLES and self._holdable(group.category, group.name, group.size, group.rests, True)
+            if not absolute or self._living(m.group) or not (participle and m.group not in placed or raised):
+                continue
+            for before in reversed(mentions[:k]):
+                if any(t.text in (".", ";", "!", "?") for t in self.toks[before.end : m.start]):
+                    break
+                g = before.group
+                if g >= 0 and self._person_at(g) and vocabulary.agrees(owned, self.groups[g].name.split()[-1]):
+                    if raised:
+                        self.relations[:] = [r for r in self.relations if r[1] != m.group or r[0] == "face to"]
+                        self.carried.add((m.group, g))
+                    self.relations.append(("on" if raised else "near", m.group, g, None))
+                    break
 
     def _taken_from(self) -> list[_Rel]:
         """"Lifts a tray from the counter", "two porters lift cases off it", "takes a jar out of

@@ -12,7 +12,7 @@ from functools import lru_cache
 from scenewright.core.catalogue import load_catalogue, match_phrase, phrase_index, singular
 from scenewright.analysis.parser.grammar import _BUILDING_PARTS, _LIVING
 from scenewright.analysis.parser.phrases import _phrase_table
-from scenewright.analysis.parser.tokens import _Tok
+from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _Tok
 from scenewright.analysis.parser.vocabulary import GENERIC, Entry, load_vocabulary
 from scenewright.analysis.parser.words import (
     _APPROXIMATE,
@@ -1783,8 +1783,9 @@ def _guess(toks: list[_Tok], head: int, before: list[_Tok]) -> Entry:
     fronted = _after_preposition(toks, head)  # "On the bank, an old woman grills ...": no apposition
     human = _does_what_people_do(toks, head + 1) or (_person_apposition(toks, head + 1) and not fronted)
     human = human or _dressed(toks, head + 1) or _role_subject(toks, head) or _addressed(toks, head)
+    human = human or _goes_on_doing(toks, head)
     moody = any(t.text in vocabulary.moods for t in before)
-    acts = moody or _acts_as_person(toks, head + 1) or _equipped(toks, head + 1)
+    acts = moody or _acts_as_person(toks, head + 1) or _equipped(toks, head + 1) or _has_hands(toks, head)
     if entry.category == GENERIC or (human and entry.category == "machine"):
         entry = vocabulary.guess_agent(word, acts, human) or entry
     found = _verb_after(toks, head + 1)
@@ -1911,6 +1912,48 @@ def _equipped(toks: list[_Tok], k: int) -> bool:
             return entry is not None and entry.category == "tool"
         if not w[:1].isalpha() or w in _STOP and w not in _DETERMINERS and w != "of":
             return False
+    return False
+
+
+def _opens_clause(toks: list[_Tok], head: int) -> bool:
+    """The noun phrase of ``head`` opens its sentence or clause: a subject, not what a verb or a
+    phrase takes ("leans over the nearer one"); "a row of reapers" opens with the row."""
+    opener = _phrase_opener(toks, head)
+    while opener > 0 and toks[opener].text == "of":
+        opener = _phrase_opener(toks, opener - 1)
+    return opener <= 0 or toks[opener - 1].text in (".", "!", "?", ";", ",", *_CLAUSE_WORDS)
+
+
+def _has_hands(toks: list[_Tok], head: int) -> bool:
+    """A thing in "his" or "her" hand, arm or lap later in the clause of the subject at ``head``,
+    or a hand tool its verb works with ("a cartographer leans over the table with a compass in
+    his hand", "a courier waits with a parcel under her arm", "reapers cut the wheat with
+    sickles"): an agent noun with hands is a person."""
+    if not _opens_clause(toks, head):
+        return False
+    parts = load_vocabulary().body_parts
+    for j in range(head + 1, min(len(toks) - 1, head + 17)):
+        w = toks[j].text
+        if w in (".", ";", "!", "?", "and") or w in _CLAUSE_WORDS:
+            return False
+        if w in ("his", "her") and parts.get(toks[j + 1].text) == "on" or _equipped(toks, j):
+            return True
+    return False
+
+
+def _goes_on_doing(toks: list[_Tok], head: int) -> bool:
+    """The subject at ``head``, opening its sentence or clause, goes on, after the comma that
+    closes its verb's phrase, with what only people do ("the chief sits at a desk in the corner,
+    reading a logbook"; not "leans over the nearer one, stirring it": no subject)."""
+    if not _opens_clause(toks, head):
+        return False
+    vocabulary = load_vocabulary()
+    for j in range(head + 1, min(len(toks) - 1, head + 13)):
+        if toks[j].text in (".", ";", "!", "?") or toks[j].text in _CLAUSE_WORDS or toks[j].text == "and":
+            return False
+        if toks[j].text == ",":
+            w = toks[j + 1].text
+            return w.endswith("ing") and w in vocabulary.person_verbs and w not in vocabulary.animal_verbs
     return False
 
 

@@ -322,10 +322,17 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             j -= 1  # (past describing words: "their two fat ponies" is counted anyway)
         if default == UNCOUNTED and j >= 0 and self.toks[j].text == "their":
             self.theirs.add(g.index)
+        elif j >= 0 and self.toks[j].text == "their" and not m.counted and self._pair_noun(m):
+            g.count = UNCOUNTED  # "skiers with their skis on their shoulders": a pair each, as many as they
+            self.theirs.add(g.index)
         if (m.counted and m.count > 1) or (not m.counted and m.count != default):  # "three", "many"
             self.numbered.add(g.index)
         self._formation_before(m, g)
         return g.index
+
+    def _pair_noun(self, m: _Mention) -> bool:
+        """A plural that names one thing ("skis", "shears"): ``pair_nouns`` in ``data/vocabulary.json``."""
+        return self.toks[m.end - 1].text in load_vocabulary().pair_nouns
 
     def _formation_before(self, m: _Mention, g: _Group) -> None:
         """"Two rows of chairs", "a stack of crates", "a ring of stones": the formation the
@@ -455,6 +462,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.named_at = {k for m in mentions for k in range(m.start - len(m.adjectives), m.end)}
         self.rel_at.update((r.start, r) for r in found if r.kind == "from" and self._acts_from(r.start))
         self.rel_at.update((r.start, r) for r in self._taken_from())
+        self.rel_at.update((r.start, r) for r in self._aimed_at())
         sentence_from = 0
         for sentence in _split(toks):
             self._recent_from, sentence_from = sentence_from, len(self.history)
@@ -526,6 +534,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         for stand, things in self.one_each.items():
             self.groups[stand].count = self.groups[things].count
         self._aboard_their_vehicle(mentions)
+        self._left_by_owner(mentions)
         self._one_per_holder()
 
     def _worked_there(self, c: _Clause, subjects: list[int], since: int) -> list[int]:
@@ -867,12 +876,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 c.company = fellow and w == "with" and self._after_verb(k, worn=True)
                 # ("a guard stands at the gate with a spear": nothing stands on a gate, the spear is his)
                 tool = self._hand_object(k + 1, ce, tool=True) if w == "with" else None
-                armed = tool is not None and not self._placed_by_pronoun(tool.end, ce) and all(
+                # ("with an inkwell and three quills on it": the phrase after the list places them all)
+                listed = self._list_end(tool.end, ce) if tool is not None else k
+                armed = tool is not None and not self._placed_by_pronoun(listed, ce) and all(
                     self._person_at(h) for h in c.head
                 ) and not any(self.catalogue[self.groups[t].category].support for t in c.last_target)
                 # ("walks behind them with a broom": what a person works with is in hand, unless a
                 # phrase of its own places it: "with a bible open on a lectern")
-                if armed and (after_target or not self._placed_after(tool.end, ce)):
+                if armed and (after_target or not self._placed_after(listed, ce)):
                     hand = True
                 if after_target and not fellow and not armed and (
                     (w == "with" and not mine and (self._animate(*c.head) or between)) or (w, nxt) in _HOLD_PAIRS
@@ -901,7 +912,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 if c.each is not None and (c.head is not None or c.each_deed) and not m.definite and g != c.each:
                     self.groups[g].count = max(1, m.count) * self.groups[c.each].count
                     self.pair_each.add((g, c.each))
-                if m.each and c.head is None and not c.verb_seen:
+                # (not what a participle acts on: "noting every crate on a clipboard")
+                words = range(m.start - 1, max(m.start - 6, -1), -1)
+                opener = next((j for j in words if toks[j].text in ("each", "every")), 0)
+                acted_on = opener > 0 and self._participle_at(opener - 1)
+                if m.each and c.head is None and not c.verb_seen and not acted_on:
                     c.each = g  # "every desk has a lamp": a lamp per desk
                     # "each cow hooked up to a pump": a deed of each member, its things once per member
                     deed = m.end < ce and _participle(toks[m.end].text) and m.end not in self.rel_at
@@ -917,11 +932,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                         c.wsub_before, closed = list(c.wsub), True
                     # ("one holding a lamp, the other a rope": the second holder's thing, its verb left out)
                     other = [w for w in gap if w != ","][:2] in (["the", "other"], ["another", "a"], ["another", "an"])
-                    # (a list goes on: "with a sword and a shield", "a sword, a shield and a helmet")
-                    listed = gap in (["and", *gap[1:2]], [",", *gap[1:2]]) and all(w in _DETERMINERS for w in gap[1:])
-                    if c.hand and c.wsub and not other and not listed and any(
-                        w in _STOP and w not in ("and", "or") for w in gap
-                    ):
+                    # (a list of things in hand goes on over "and a" or ", a": "holds a cup and a spoon",
+                    # "with a sword, a shield and a helmet")
+                    listed = gap[:1] in (["and"], ["or"], [","]) and all(w in _DETERMINERS or w in _NUMBERS for w in gap[1:])
+                    stop = any(w in _STOP and w not in ("and", "or") for w in gap)
+                    if c.hand and c.wsub and not other and stop and not listed:
                         # "waves a flag from a gantry": what is in hand is the noun right after
                         self._close_with(c)
                         c.head, c.wsub, c.hand, c.hold = None, [], False, False
@@ -1266,7 +1281,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # ("reads a book on the bench", "sharpen their spears on a grindstone": the readers and sharpeners)
             # (what a person holds or carries is in hand as well: "a waiter carries a tray between the tables")
             holding = c.hand or c.hold and all(self._living(h) for h in c.head)
-            in_hand = holding and target not in _PERSONAL and (kind in _GROUND_KINDS or kind in _HOLDER_KINDS)
+            # (the holder faces what is aimed at: "aims a pitchfork at them")
+            in_hand = holding and target not in _PERSONAL and (kind in (*_GROUND_KINDS, *_HOLDER_KINDS, "face to"))
             # ("senators sit on benches, with an amphora beside each bench": by their own seat, not in hand)
             seats = {r[2] for r in self.relations if r[0] == "on" and r[1] in c.head}
             if in_hand and c.wsub and isinstance(target, list) and any(t in seats for t in target):
@@ -1442,11 +1458,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         elif target == "the part":  # "in the water": the latest thing that has such a part
             candidates = [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)]
             targets = self._part_owner(part, [], [*candidates, *reversed(range(len(self.groups)))], srcs)
-        elif target in _PERSONAL or target == "them living":
+        elif target in _PERSONAL or target in ("them living", "it living"):
             # "a pirate stands behind the chest with a shovel beside him": the person, not the chest
             targets = self._person(c, srcs, target)
-            if not targets and target == "them living":  # "to their left" of things: them
-                targets = self._pronoun("them", c, srcs, list(c.last_target))
+            if not targets and target in ("them living", "it living"):  # "to their left" of things: them
+                targets = self._pronoun(target.split()[0], c, srcs, list(c.last_target))
         elif isinstance(target, str) and target != "each other":
             targets = self._pronoun_target(c, p, target, kind, srcs, prev_subject, starts_with_rel)
         elif target is None and kind in ("left", "right") and toks[rel.start].text == "on" and (

@@ -221,6 +221,11 @@ class _References:
             # "a glass in one hand", "a sword in each hand", ", baton in hand": whoever the clause is about
             self._body_part = vocabulary.body_parts[toks[k].text]
             return "someone", k + 1
+        if k + 1 < ce and toks[k].text == "its" and vocabulary.body_parts.get(toks[k + 1].text) == "on":
+            if singular(toks[k + 1].text) not in vocabulary.part_owners and k + 1 not in starts:
+                # "a dog with a bell on its neck": carried by an animal's body, a part no thing has
+                self._body_part = "on"
+                return "it living", k + 2
         if k + 1 >= ce or toks[k].text not in _PERSON_POSSESSIVES:
             return None
         j = k + 1
@@ -476,8 +481,8 @@ class _References:
         return next(([g] for g in several if g not in apiece), several[:1])
 
     def _person(self, c: _Clause, srcs: list[int], word: str) -> list[int]:
-        """Whom "him" / "her" (or "their" before a body part) names: the clause's own living
-        subject, else the latest living thing mentioned before, of a sex the pronoun agrees
+        """Whom "him" / "her" (or "their" before a body part, "it living" for "its") names: the
+        clause's own living subject, else the latest living thing mentioned before, of a sex the pronoun agrees
         with ("her" is not the dad) and, for "their", several."""
         # "..., with his cat at his feet": the with-part's owner before the things it lists; then
         # the doers of the clause before ("... while her cousin waits beside her, a map under his
@@ -494,6 +499,8 @@ class _References:
                 and (word != "them living" or group.count > 1)
             )  # fmt: skip
 
+        if word == "it living":  # "its neck": an animal's, never a person's
+            return next(([g] for g in order if fits(g) and not self._person_at(g)), [])
         # "her dachshund naps in a hatbox beside her": a person before an animal the text calls "her";
         # a robot the text calls "him" is one ("a robot DJ works the decks, a speaker either side of him")
         def personal(g: int) -> bool:

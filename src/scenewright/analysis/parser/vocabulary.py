@@ -60,10 +60,13 @@ class Vocabulary:
     female: frozenset[str] = frozenset()
     male: frozenset[str] = frozenset()
     #: Body parts after "his"/"her"/"their": the relation they give to that person
-    #: (``on``: "a laptop on her knees"; ``near``: "a dog at his feet").
+    #: (``on``: "a laptop on her knees"; ``near``: "a dog at his feet"; ``side of``: "at his side").
     body_parts: dict[str, str] = field(default_factory=dict)
     #: Part word → the categories or shapes that have such a part ("its back": a seat's).
     part_owners: dict[str, frozenset[str]] = field(default_factory=dict)
+    #: Catalogue things that stand on the ground at the catalogue's size but that a person the text
+    #: gives one carries in hand ("ladies with parasols").
+    carried_in_hand: frozenset[str] = frozenset()
     #: What people do: an agent noun nobody listed that does one of these is a person.
     person_verbs: frozenset[str] = frozenset()
     #: Moods and looks only people have ("a bored attendant"): an agent noun with one is a person.
@@ -242,6 +245,7 @@ def _validate(raw: dict) -> Vocabulary:
         person_verbs=frozenset(raw.get("person_verbs", ())),
         animal_verbs=frozenset(raw.get("animal_verbs", ())),
         moods=frozenset(people.get("moods", ())),
+        carried_in_hand=frozenset(people.get("carried_in_hand", ())),
         relational=frozenset(people.get("relational", ())),
         pair_nouns=frozenset(raw.get("pair_nouns", ())),
         clothing=frozenset(lists.get("clothing", ())),

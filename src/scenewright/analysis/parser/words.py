@@ -119,7 +119,8 @@ _GIVE_VERBS = {"hands", "handing", "hand", "gives", "giving", "give", "passes", 
 _SHARE_VERBS = {"share", "shares", "sharing"}
 #: A verb, then (after what it takes, if anything) a preposition whose thing a person has in hand:
 #: "sips from a glass", "sipping coffee from a paper cup", "counting coins out of a pouch",
-#: "sketching on a clipboard", "peering through a loupe", "watching the ships through a spyglass".
+#: "sketching on a clipboard", "peering through a loupe", "watching the ships through a spyglass",
+#: "stitching beads onto a purse".
 _HAND_PAIRS = {
     ("sips", "from"), ("sipping", "from"), ("sip", "from"), ("drinks", "from"), ("drinking", "from"),
     ("drink", "from"), ("tastes", "from"), ("tasting", "from"), ("taste", "from"), ("eats", "from"),
@@ -129,6 +130,17 @@ _HAND_PAIRS = {
     ("watch", "through"), ("sketches", "on"), ("sketching", "on"), ("sketch", "on"), ("writes", "on"),
     ("writing", "on"), ("write", "on"), ("scribbles", "on"), ("scribbling", "on"), ("draws", "on"),
     ("drawing", "on"), ("draw", "on"), ("types", "on"), ("typing", "on"), ("type", "on"),
+    # what the feed or the drink comes out of ("feeds the ducks from a paper bag", "pours tea from a pot")
+    *((verb, "from") for verb in ("feeds", "feeding", "feed", "pours", "pouring", "pour", "scatters",
+                                  "scattering", "scatter")),
+    # the pan one tosses in ("tosses pancakes in a frying pan")
+    *((verb, "in") for verb in ("tosses", "tossing", "toss", "flips", "flipping", "flip")),
+    # the book one writes in ("writes in a ledger", "sketching in a notebook")
+    *((verb, "in") for verb in ("writes", "writing", "write", "scribbles", "scribbling", "sketches", "sketching",
+                                "jots", "jotting", "notes", "noting")),
+    # the piece one works small things onto ("stitching beads onto a purse", "glues shells onto a box")
+    *((verb, "onto") for verb in ("stitches", "stitching", "stitch", "sews", "sewing", "sew", "glues", "gluing",
+                                  "glue", "pins", "pinning", "pin", "threads", "threading", "thread")),
 }  # fmt: skip
 #: Verbs whose object a person has in hand while doing them, when it is small enough to hold
 #: ("eats a sandwich", "plays a flute", "lifts a barbell", "two scouts sharpen their spears"); a
@@ -166,13 +178,21 @@ _PUT_OR_WORKED = {
 #: or stays where it is ("watches a kite", "kicks a ball", "sells lanterns", "leads a pony").
 _FROM_AFAR = {
     "watch", "see", "eye", "admire", "observe", "chase", "follow", "kick", "throw", "face", "guard",
-    "approach", "pursue", "film", "photograph", "point", "sell", "serve", "hunt", "stalk", "sniff",
+    "approach", "pursue", "film", "photograph", "sell", "serve", "hunt", "stalk", "sniff",
     "ignore", "greet", "wait", "guide", "lead", "walk", "ride", "drive", "steer", "board", "climb", "cross",
     "enter", "circle", "block",
 }  # fmt: skip
+#: Verbs of aiming, by their stem: what they take is a tool or a weapon in the doer's hand, however
+#: long ("aims a pitchfork at them", "points a torch at the door"), and the doer faces what it is
+#: aimed at.
+_AIM_VERBS = {"aim", "point", "level", "train"}
+#: Verbs of writing things down, by their stem: what they take is what is written about, not in
+#: hand, and the sheet or device they are done "on" is ("recording every sack on a scroll", "noting
+#: each crate on a clipboard").
+_RECORD_VERBS = {"record", "note", "log", "list", "tally", "jot", "register", "catalogue", "catalog", "copy"}
 #: Verbs whose small object is not in hand: any other verb a person does to a thing small enough to
 #: hold has it in hand ("checks a wristwatch", "turning a small jug", "haul a trunk up the stairs").
-_NOT_IN_HAND = _PUT_OR_WORKED | _FROM_AFAR
+_NOT_IN_HAND = _PUT_OR_WORKED | _FROM_AFAR | _RECORD_VERBS
 #: Words that start a with-thing's own placing ("with a till at one end and a computer ...").
 _OWN_PLACE = {"at", "in", "along", "against", "under", "inside"}
 #: How many of these parts a thing has: "a lamp at each corner" is four lamps, "a cone at each
