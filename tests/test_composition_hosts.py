@@ -1,4 +1,4 @@
-from scenewright.analysis.composition.hosts import HAND, LONGEST, PLATFORM, RAISED, TOP_SHARE, fit_unsized, laid_flat, lengthen
+from scenewright.analysis.composition.hosts import CARRIED, HAND, LONGEST, PLATFORM, RAISED, TOP_SHARE, fit_unsized, laid_flat, lengthen
 from scenewright.analysis.parser import ParsedObject, ParsedRelation, ParsedScene
 
 
@@ -102,3 +102,12 @@ def test_a_board_people_or_animals_stand_on_lies_flat_and_one_with_a_notice_stay
     assert laid_flat(scene([board, notice], [on("paper_1", "panel_1")]))[0].size == board.size
     table = obj("table_1", "table", (1.8, 0.9, 0.76))
     assert laid_flat(scene([table, men[0]], [on(men[0].id, "table_1")]))[0].size == table.size
+
+
+def test_a_parasol_a_person_carries_is_the_hand_held_kind_and_one_on_the_ground_is_not():
+    lady = obj("figure_1", "figure", (0.5, 0.3, 1.75))
+    held = ParsedObject("umbrella_1", "umbrella", "parasol", "parasol", (2.2, 2.2, 2.3), group=1)
+    out = {o.id: o for o in fit_unsized(scene([lady, held], [on("umbrella_1", "figure_1")]))}
+    assert max(out["umbrella_1"].size) == CARRIED and out["umbrella_1"].size[0] == out["umbrella_1"].size[1]
+    table = obj("table_1", "table", (1.8, 0.9, 0.76))
+    assert fit_unsized(scene([table, held], []))[1].size == held.size  # shading a table: the patio kind

@@ -164,3 +164,13 @@ def test_a_cell_one_is_in_is_the_setting():
     parsed = parse_scene("A prison cell with a straw bed in one corner, a bucket beside it, and a stool.")
     assert parsed.indoor and "cell" not in " ".join(o.name for o in parsed.objects)
     assert ("bucket_1", "side of") in {(r.source, r.relation) for r in parsed.relations if r.target.startswith("bed")}
+
+
+def test_a_word_the_setting_gives_a_sense_reads_in_that_sense():
+    """In a kitchen "an island" is the kitchen island and "a range" the cooker; elsewhere, or as a
+    measure ("a range of spices"), they are not."""
+    kitchen = parse_scene("A small kitchen with an island under the window and a range against the wall.")
+    assert {o.category for o in kitchen.objects} >= {"counter", "stove"}
+    assert "counter" not in {o.category for o in parse_scene("A desert island with two palm trees.").objects}
+    spices = parse_scene("A cosy kitchen. A range of spices sits on the shelf.")
+    assert "stove" not in {o.category for o in spices.objects}

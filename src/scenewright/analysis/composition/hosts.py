@@ -47,6 +47,9 @@ GROWN = frozenset({"rock"})
 ROOM_ON_TOP = 1.5
 #: m, the longest side of a thing nobody sized that a person or an animal has in hand.
 HAND = 0.3
+#: m, the longest side of a thing drawn at the size it stands on the ground that a person carries
+#: (``carried_in_hand``: a parasol over one's head, not a patio umbrella).
+CARRIED = 1.0
 #: Share of its host's smaller top side the longest side of a thing nobody sized keeps to.
 TOP_SHARE = 0.5
 #: m, the height of a board or panel laid flat as a platform for who stands on it (a step up).
@@ -118,16 +121,20 @@ def lengthen(parsed: ParsedScene) -> list[ParsedObject]:
 def fit_unsized(parsed: ParsedScene) -> list[ParsedObject]:
     """The parse's objects, each guessed ``thing`` held by the living or put ``on`` a support
     scaled down, proportions kept, to a hand's size (:data:`HAND`) or to :data:`TOP_SHARE` of
-    its host's top; never up."""
+    its host's top, and each thing people carry that the catalogue sizes as it stands on the
+    ground (a parasol) held by the living to :data:`CARRIED`; never up."""
     catalogue = load_catalogue()
+    carried = load_vocabulary().carried_in_hand
     by_id = {o.id: o for o in parsed.objects}
     hosts = {r.source: by_id[r.target] for r in parsed.relations if r.relation == "on" and r.target in by_id}
     out = []
     for o in parsed.objects:
         host = hosts.get(o.id)
         entry = catalogue.get(host.category) if host is not None else None
-        if o.guessed and o.category == GENERIC and entry is not None and (entry.shape in LIVING or entry.support):
-            longest = HAND if entry.shape in LIVING else TOP_SHARE * min(host.size[:2])
+        unsized = o.guessed and o.category == GENERIC and entry is not None and (entry.shape in LIVING or entry.support)
+        held = entry is not None and entry.shape in LIVING and (o.category in carried or o.name.split()[-1] in carried)
+        if unsized or held:
+            longest = CARRIED if held else HAND if entry.shape in LIVING else TOP_SHARE * min(host.size[:2])
             factor = longest / max(o.size)
             if factor < 1.0:
                 o = replace(o, size=tuple(round(v * factor, 4) for v in o.size))

@@ -166,11 +166,26 @@ def _counted_plural(toks: list[_Tok], i: int) -> bool:
     return False
 
 
+def _read_in_setting(toks: list[_Tok]) -> None:
+    """A word whose sense the setting fixes (``setting_senses``) reads as that sense from here on
+    ("a kitchen with an island": the kitchen island), its own word kept as its name."""
+    senses = load_vocabulary().setting_senses
+    if not any(t.text in senses for t in toks):
+        return
+    setting = _opening_place_word(toks)
+    for k, t in enumerate(toks):
+        sense = senses.get(t.text)
+        after = toks[k + 1].text if k + 1 < len(toks) else "."
+        if sense is not None and setting in sense[1] and after != "of" and k > 0 and toks[k - 1].text != "kitchen":
+            t.text = sense[0]
+
+
 def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
     """Longest-first catalogue and vocabulary matches, with a noun followed by another noun read
     as a modifier ("glass table", "stone path"), then the nouns nobody listed (a generic thing
     each); also the place words that set the scene instead of standing in it ("a sci-fi hangar
     with a spaceship", "a farmhouse kitchen")."""
+    _read_in_setting(toks)
     n = len(toks)
     vocabulary = load_vocabulary()
     raw: list[tuple[int, int, str, Entry | None]] = []

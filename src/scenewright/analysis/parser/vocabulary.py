@@ -67,6 +67,9 @@ class Vocabulary:
     #: Catalogue things that stand on the ground at the catalogue's size but that a person the text
     #: gives one carries in hand ("ladies with parasols").
     carried_in_hand: frozenset[str] = frozenset()
+    #: A word's sense in a setting: word → (the word it means there, the settings where it does):
+    #: "an island" in a kitchen is a kitchen island, "a range" there a cooker.
+    setting_senses: dict[str, tuple[str, frozenset[str]]] = field(default_factory=dict)
     #: What people do: an agent noun nobody listed that does one of these is a person.
     person_verbs: frozenset[str] = frozenset()
     #: Moods and looks only people have ("a bored attendant"): an agent noun with one is a person.
@@ -242,6 +245,9 @@ def _validate(raw: dict) -> Vocabulary:
             **{w: "side of" for w in people.get("body_parts_beside", ())},  # "his helmet at his side"
         },
         part_owners={k: frozenset(v) for k, v in raw.get("part_owners", {}).items() if k != "about"},
+        setting_senses={
+            k: (v["as"], frozenset(v["in"])) for k, v in raw.get("setting_senses", {}).items() if k != "about"
+        },
         person_verbs=frozenset(raw.get("person_verbs", ())),
         animal_verbs=frozenset(raw.get("animal_verbs", ())),
         moods=frozenset(people.get("moods", ())),
