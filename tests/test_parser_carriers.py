@@ -397,3 +397,9 @@ def test_a_bird_that_sits_on_a_branch_is_on_the_tree_named_before():
     assert ("crow_1", "on", "tree_1") in found
     # (not without a verb of sitting: "a squirrel drops a nut on a branch" names no perch)
     assert not any(r[0] == "squirrel_1" and r[1] == "on" for r in rels("An oak stands by the wall. A squirrel drops a nut on a branch."))
+
+
+def test_one_who_watches_from_what_carries_nobody_stands_by_it():
+    found = rels("Two goats graze on the slope while a shepherd watches them from the fence.")
+    assert ("shepherd_1", "near", "fence_1") in found
+    assert ("heron_1", "on", "rock_1") in rels("A heron watches from a flat rock.")

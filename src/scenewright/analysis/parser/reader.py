@@ -1995,8 +1995,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return "on" if holds and target.size[2] <= 2.5 else "no relation"
         if kind in ("from", "on a carrier"):
             # "a heron watches from a rock", "a guard waves from the tower", "a peacock struts across
-            # its roof", "a cat peeks out of the box": on it (across anything else one only passes)
-            return "on" if self._living(s) and (self._carrier(t) or self._perch_part) else "no relation"
+            # its roof", "a cat peeks out of the box": on it (across anything else one only passes);
+            # one who watches or waves from what carries nobody stands by it ("watches them from the gate")
+            if self._living(s) and (self._carrier(t) or self._perch_part):
+                return "on"
+            return "near" if kind == "from" and self._living(s) else "no relation"
         if kind == "hanging from":
             # from a beam: above it; from a tree: beside it; from anything else (a post, a stall, a
             # barrier, a tower's railing) it is carried by that thing, on it
