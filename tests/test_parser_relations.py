@@ -1182,3 +1182,11 @@ def test_aiming_a_thing_at_someone_faces_them():
     assert {("guard_1", "face to", "goblin_1"), ("crossbow_1", "on", "guard_1")} <= found
     assert ("guard_1", "near", "goblin_1") not in found
     assert ("man_1", "near", "table_1") in rels("A man sits at the table.")  # "at" a thing stays at it
+
+
+def test_where_one_takes_a_thing_to_is_where_one_is():
+    """"Carries a tray to the table": the carrier is near the table (the tray in hand); "set up to
+    the left of it" stays the longer phrase."""
+    assert {("waiter_1", "near", "table_1"), ("plate_1", "on", "waiter_1")} <= rels("A waiter carries a tray to the table.")
+    assert ("groom_1", "near", "trough_1") in rels("A groom leads the mare to the trough.")
+    assert ("swing_1", "left of", "slide_1") in rels("A red slide stands in the middle, and two swings are set up to the left of it.")

@@ -64,6 +64,7 @@ from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _split, _Tok, _tok
 from scenewright.analysis.parser.vocabulary import GENERIC, load_vocabulary, scaled, stretched
 from scenewright.analysis.parser.words import (
     _ADVERBS,
+    _CARRY_VERBS,
     _DETERMINERS,
     _FINITE,
     _GIVE_VERBS,
@@ -451,6 +452,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if r.kind != "from" or self._verb_before(r.start, self._lookout) or self._from_to(r.end, starts)
             or self._seat_after(r, mentions)
         }  # fmt: skip
+        # "carries a tray to the table": where one goes with it is a place one is near
+        self.rel_at = {
+            k: replace(r, kind="near") if r.kind == "to" else r
+            for k, r in self.rel_at.items() if r.kind != "to" or self._destination(r.end, starts)
+        }
         self._rows_then_with(mentions)
         #: Mentions the text puts on a wall ("a luggage rack on the wall"): hung, so "above" holds.
         self.on_wall = {m.start for m in mentions if self._on_wall_after(m.end)}
@@ -1833,6 +1839,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         seat = next((m for m in mentions if rel.end <= m.start < rel.end + 4), None)
         taken = any(m.end == rel.start and max(self._size(m)) <= _HANDHELD_SIZE for m in mentions)
         return seat is not None and not taken and load_vocabulary().carries(seat.category, seat.phrase, ("seats",))
+
+    def _destination(self, end: int, starts: set[int]) -> bool:
+        """"To" names where one goes with what one carries or leads ("carries a tray to the table",
+        "leads the mare to the trough") when a thing follows it and a verb of going or carrying comes
+        before it in the clause; not an infinitive ("stops to drink"), a receiver ("gives it to her")
+        or the end of a span ("from the gate to the barn")."""
+        k = end + 1 if end < len(self.toks) and self.toks[end].text in _DETERMINERS else end
+        span = any(t.text == "from" for t in self.toks[max(0, end - 7) : end - 1])
+        return k in starts and not span and self._verb_before(end - 1, lambda w: w in _CARRY_VERBS)
 
     def _from_to(self, start: int, starts: set[int]) -> bool:
         """"From it to a refinery", "from the gate to the barn": a thing, then "to" and another

@@ -109,6 +109,13 @@ _HAND_VERBS = {"waves", "waving", "wields", "wielding", "brandishes", "brandishi
                "raising", "juggle", "juggles", "juggling"}  # fmt: skip
 #: Verbs of taking an animal along ("a man walks a dachshund beside the van"): the animal keeps by
 #: its person, whom what follows places.
+#: Verbs of going or of taking something somewhere: what follows "to" after them is where one goes
+#: ("carries a tray to the table", "wheels the barrow to the shed").
+_CARRY_VERBS = {f"{stem}{end}" for stem in ("carr", "hurr") for end in ("y", "ies", "ying")} | {
+    f"{stem}{end}" for stem in ("bring", "lead", "wheel", "push", "pull", "drag", "haul", "roll", "walk", "head",
+                                "return", "trundle", "steer", "tow") for end in ("", "s", "es", "ing", "ed")
+} | {"takes", "take", "taking", "drives", "drive", "driving", "runs", "run", "running", "goes", "go", "going",
+     "dragging", "brought", "led", "took", "drove", "went", "ran"}  # fmt: skip
 _LEAD_VERBS = {"walk", "walks", "walking", "lead", "leads", "leading", "guide", "guides", "guiding"}
 #: Verbs of giving ("a robot hands one of them a toolbox"): the giver has the thing in hand and
 #: stands by whom it is given to.
