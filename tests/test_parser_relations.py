@@ -1190,3 +1190,8 @@ def test_where_one_takes_a_thing_to_is_where_one_is():
     assert {("waiter_1", "near", "table_1"), ("plate_1", "on", "waiter_1")} <= rels("A waiter carries a tray to the table.")
     assert ("groom_1", "near", "trough_1") in rels("A groom leads the mare to the trough.")
     assert ("swing_1", "left of", "slide_1") in rels("A red slide stands in the middle, and two swings are set up to the left of it.")
+
+
+def test_flowers_a_vase_comes_with_are_its_contents():
+    parsed = parse_scene("A tall vase with lilies in it stands on the sideboard.")
+    assert "flower_bed" not in {o.category for o in parsed.objects}  # no lily beds, as "a vase of lilies"

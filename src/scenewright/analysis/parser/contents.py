@@ -122,6 +122,9 @@ class _Contents:
             return True  # "a windsock on a tall pole", "a flag flutters on a pole": the pole is its part
             # (not "a dish stands on a tall pole")
         plant = self.catalogue[prev.category].shape in ("potted_plant", "bush", "flower_bed")
+        if w == "with" and prev.end == j and prev.category == "vase" and not m.counted:
+            # "a vase with roses in it": its flowers, as "a vase of roses" (not three flower beds)
+            return self.catalogue[m.category].shape in ("potted_plant", "bush", "flower_bed")
         return w == "in" and j - prev.end <= 2 and m.category in ("pot", "planter", "vase") and plant
 
     def _each_full(self, m: _Mention, before: list[_Mention], j: int) -> None:
