@@ -1182,3 +1182,29 @@ def test_aiming_a_thing_at_someone_faces_them():
     assert {("guard_1", "face to", "goblin_1"), ("crossbow_1", "on", "guard_1")} <= found
     assert ("guard_1", "near", "goblin_1") not in found
     assert ("man_1", "near", "table_1") in rels("A man sits at the table.")  # "at" a thing stays at it
+
+
+def test_what_is_lined_up_after_a_deed_takes_the_next_phrase():
+    # "pours wine into glasses lined up on it": the glasses are on the table, the pourer by it
+    found = rels("Chairs stand around a long table where a waiter pours wine into glasses lined up on it.")
+    assert ("cup_1", "on", "table_1") in found and ("waiter_1", "near", "table_1") in found
+    assert ("waiter_1", "on", "table_1") not in found
+
+
+def test_a_thing_set_beside_an_animal_is_by_the_animal():
+    # "with a bowl beside it" after an animal's own phrase: by the animal, not by its landmark
+    assert ("bowl_1", "side of", "dog_1") in rels("A dog dozes under a tall oak, with a bowl beside it.")
+    # (a thing on "it" is still on the landmark; a person's with-thing still goes by the landmark)
+    assert ("basket_1", "on", "bed_1") in rels("A dog dozes at the foot of the bed, with a basket on it.")
+    assert ("dog_1", "near", "bench_1") in rels("A man sits on the bench, with his terrier asleep under it.")
+
+
+def test_its_steps_after_a_pagoda_name_the_pagoda():
+    assert ("priest_1", "on", "pagoda_1") in rels("A pagoda stands near the pond, and a priest sits on its steps.")
+
+
+def test_among_things_is_near_them():
+    assert ("well_1", "near", "house_1") in rels("An old well sits among the cottages.")
+    # "among the oak's branches": up in the tree named before
+    found = rels("A tall oak grows by the pond. Three owls sit among the oak's branches.")
+    assert ("owl_1", "near", "tree_1") in found

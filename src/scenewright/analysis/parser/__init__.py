@@ -37,7 +37,7 @@ Decisions worth knowing:
   and the repair is listed in ``ParsedScene.repairs``. A small thing hung from the ceiling hangs
   ("a birdcage hangs from the ceiling").
 
-- ``beside`` / ``next to`` / ``alongside`` / ``leans against`` → ``side of``; ``near`` / ``close to`` / ``by`` →
+- ``beside`` / ``next to`` / ``alongside`` / ``leans against`` → ``side of``; ``near`` / ``close to`` / ``by`` / ``among`` →
   ``near``, and so is one who ``talks to`` / ``speaks to`` / ``chats with`` someone (the
   annotated sets: with them, not turned to them; a phrase after the addressee still places the
   talker); ``opposite`` / ``across from`` → ``in front of`` + ``face to``; ``flanked by`` and

@@ -1342,7 +1342,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         else:
             srcs = list(c.main)
             acted = c.deeds[-1][1] if c.deeds and c.deed_end == last_event_end else None
-            if kind in ("on", "in", "on top", "over") and acted is not None and self._small(acted):
+            if kind in _FORMATIONS and acted is not None and self._small(acted) and rel.start == last_event_end:
+                # "pours squash into cups lined up on it": the cups are lined up, and the phrase after
+                # goes on placing them (the pourer by them: :meth:`_do_deeds`)
+                srcs, c.deed_end = [acted], p.end
+            elif kind in ("on", "in", "on top", "over") and acted is not None and self._small(acted):
                 # "a smith hammers a horseshoe on the anvil", "a cook stirs a pot over the fire": the
                 # thing acted on is there (its doer by it: :meth:`_do_deeds`)
                 srcs = [acted]
@@ -1532,6 +1536,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._living(h) and not self._person_at(h) for h in c.head
         )
         owner = c.head is not None and (c.head == [c.each] or own_part)
+        # ("an old pony dozes under an oak, with a bucket beside it": a thing set by an animal is by it)
+        owner = owner or (c.head is not None and kind in _GROUND_KINDS and all(
+            self._living(h) and not self._person_at(h) for h in c.head
+        ) and not any(self._living(g) for g in srcs))
         if c.head is not None and not owner and all(self._living(h) and self.groups[h].category == "figure" or (
             self._living(h) and self.catalogue[self.groups[h].category].shape != "figure"
         ) for h in c.head):  # fmt: skip
