@@ -1208,3 +1208,10 @@ def test_among_things_is_near_them():
     # "among the oak's branches": up in the tree named before
     found = rels("A tall oak grows by the pond. Three owls sit among the oak's branches.")
     assert ("owl_1", "near", "tree_1") in found
+
+
+def test_each_of_them_after_a_clause_names_its_subject():
+    # "them" after the subject before is that subject, with "each" too (not the mats they lie on)
+    found = rels("Four lambs lie on the mats near the gate, and a girl kneels beside each of them with a bottle.")
+    assert ("girl_1", "side of", "lamb_1") in found and ("girl_4", "side of", "lamb_4") in found
+    assert not any(s.startswith("girl") and t.startswith("yoga_mat") for s, _, t in found)

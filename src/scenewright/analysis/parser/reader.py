@@ -1454,7 +1454,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if all(g in self.history for g in srcs) and any(g not in self.history for g in c.main):
                 # "a register on the counter in front of each of them": one register each, not a counter
                 srcs = [g for g in c.main if g not in self.history]
-            targets = self._pronoun("them", c, srcs, list(c.last_target))
+            prefer = list(c.last_target)
+            if not prefer and toks[p.end - 1].text == "them" and c.main and srcs == c.main:
+                # "four lambs lie on the mats, and a girl kneels beside each of them": the lambs, as
+                # "beside them" ("beneath each one" stays the latest group: the pegs, not the coats)
+                prefer = list(dict.fromkeys(prev_subject))
+            targets = self._pronoun("them", c, srcs, prefer)
             if targets:  # one per member for what this clause brings in, not for "the counter" named before
                 self._per_each([s for s in srcs if s in c.groups and s not in self.history], targets[0])
         elif target == "that one":
