@@ -1215,3 +1215,15 @@ def test_each_of_them_after_a_clause_names_its_subject():
     found = rels("Four lambs lie on the mats near the gate, and a girl kneels beside each of them with a bottle.")
     assert ("girl_1", "side of", "lamb_1") in found and ("girl_4", "side of", "lamb_4") in found
     assert not any(s.startswith("girl") and t.startswith("yoga_mat") for s, _, t in found)
+
+
+def test_a_flag_a_person_has_is_in_hand():
+    assert ("flagpole_1", "on", "guard_1") in rels("A guard with a flag sits on a tractor.")
+
+
+def test_whom_one_argues_with_is_placed_by_a_phrase_on_the_arguer():
+    # "argues with a porter across from her": the porter is across from her (not she from him)
+    found = rels("In the corner, a woman holds a cup and argues with a porter across from her.")
+    assert {("porter_1", "in front of", "woman_1"), ("porter_1", "face to", "woman_1")} <= found
+    # (a phrase on anything else still places the arguer: "a trader argues with a buyer beside the stall")
+    assert ("trader_1", "side of", "market_stall_1") in rels("A trader argues with a buyer beside the stall.")

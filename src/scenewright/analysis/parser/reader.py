@@ -1306,9 +1306,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             )
             # "a trader argues with a buyer beside it", "a squire waits with the horses by a tower": the
             # company a verb names goes along with its subject, who is what the phrase places
-            # ("a man sits on the bench, with his terrier asleep under it": the terrier)
+            # ("a man sits on the bench, with his terrier asleep under it": the terrier; "argues with a
+            # porter across from her": the porter, placed by her)
             with_at = next((k for k in range(rel.start - 1, max(rel.start - 8, 0), -1) if toks[k].text == "with"), 0)
-            company = with_at > 0 and _is_verb(toks[with_at - 1].text) and all(
+            company = with_at > 0 and _is_verb(toks[with_at - 1].text) and target not in _PERSONAL and all(
                 self._living(g) for g in [*c.wsub, *c.head]
             )
             if c.wsub and not closed and not c.expect_new and not in_hand and not company:
