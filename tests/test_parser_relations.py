@@ -1227,3 +1227,11 @@ def test_whom_one_argues_with_is_placed_by_a_phrase_on_the_arguer():
     assert {("porter_1", "in front of", "woman_1"), ("porter_1", "face to", "woman_1")} <= found
     # (a phrase on anything else still places the arguer: "a trader argues with a buyer beside the stall")
     assert ("trader_1", "side of", "market_stall_1") in rels("A trader argues with a buyer beside the stall.")
+
+
+def test_he_and_she_open_phrases_about_one_of_the_pair():
+    found = rels("A king and a queen sit in the hall, he on a throne, she resting on a sofa.")
+    assert {("king_1", "on", "throne_1"), ("queen_1", "on", "sofa_1")} <= found
+    assert ("queen_1", "on", "throne_1") not in found
+    found = rels("A prince and a princess wave from the balcony, she holding a fan, he waving a flag.")
+    assert ("flagpole_1", "on", "prince_1") in found

@@ -798,6 +798,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         phrase_end = -1  # where the last relation phrase and its target end
         while k < ce:
             w = toks[k].text
+            if not c.first and w in ("he", "she") and (k == cs or toks[k - 1].text == ",") and k + 1 < ce and (
+                toks[k + 1].text.endswith("ing") or k + 1 in self.rel_at
+            ):  # "a wizard and a witch face each other, he riding a tortoise, she on a carpet": an
+                # absolute phrase about the one the pronoun names
+                self._close_with(c)
+                c.head, c.wsub = None, []
+                people = [*c.main, *prev_subject, *self.topic, *self.history[self._sentence_from :]]
+                c.main = self._named_by(w, people) or c.main
+                k = last_event_end = k + 1
+                continue
             lead = _each_lead(toks, k, ce) if k not in self.by_start else k
             if lead > k:  # "every one of them with a spade": as "each with a spade"
                 w, k = "each", lead
@@ -1504,6 +1514,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     continue
                 c.groups.append(t)
         p.rel, p.kind, p.target, p.srcs, p.targets, p.end = rel, kind, target, srcs, targets, end
+
+    def _named_by(self, pronoun: str, candidates: list[int]) -> list[int]:
+        """The person "he" or "she" names among ``candidates``: one whose name says that sex first
+        (a witch for "she", not the gnome before her), else the first who may be of it."""
+        vocabulary = load_vocabulary()
+        other = "he" if pronoun == "she" else "she"
+        people = [g for g in dict.fromkeys(candidates) if self._person_at(g)]
+        fits = [g for g in people if vocabulary.agrees(pronoun, self.groups[g].name.split()[-1])]
+        sexed = [g for g in fits if not vocabulary.agrees(other, self.groups[g].name.split()[-1])]
+        return (sexed or fits)[:1]
 
     def _pronoun_target(
         self, c: _Clause, p: _Phrase, target: str, kind: str, srcs: list[int], prev_subject, starts_with_rel
