@@ -1235,3 +1235,8 @@ def test_he_and_she_open_phrases_about_one_of_the_pair():
     assert ("queen_1", "on", "throne_1") not in found
     found = rels("A prince and a princess wave from the balcony, she holding a fan, he waving a flag.")
     assert ("flagpole_1", "on", "prince_1") in found
+
+
+def test_on_the_edge_or_end_of_a_thing_is_on_it():
+    assert ("boy_1", "on", "bed_1") in rels("A boy sits on the edge of the bed.")
+    assert ("cat_1", "on", "sofa_1") in rels("A cat naps on the end of the sofa.")
