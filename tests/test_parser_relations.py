@@ -1240,3 +1240,8 @@ def test_he_and_she_open_phrases_about_one_of_the_pair():
 def test_on_the_edge_or_end_of_a_thing_is_on_it():
     assert ("boy_1", "on", "bed_1") in rels("A boy sits on the edge of the bed.")
     assert ("cat_1", "on", "sofa_1") in rels("A cat naps on the end of the sofa.")
+
+
+def test_a_small_thing_rung_is_rung_by_hand():
+    found = rels("A monk sits on the steps ringing a bell.")
+    assert ("bell_1", "on", "monk_1") in found and not any(r == "face to" for _, r, _ in found)

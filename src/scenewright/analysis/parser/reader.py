@@ -445,7 +445,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # or one done to something too big to hold (below); "pulls a rope from the barrel" names
         # where the rope comes from
         found = [r for r in _find_relations(toks, taken)
-                 if (r.kind != "at" or self._names_thing(r.end, starts)) and (r.kind != "covering" or self._covers(r))]
+                 if (r.kind != "at" or self._names_thing(r.end, starts)) and (r.kind != "covering" or self._covers(r))
+                 and not self._rung(r, mentions)]
         self.rel_at = {
             r.start: r for r in found
             if r.kind != "from" or self._verb_before(r.start, self._lookout) or self._from_to(r.end, starts)
@@ -1921,6 +1922,17 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             uncounted = s not in self.numbered and self.groups[s].count == UNCOUNTED
             if (self.groups[s].count == 1 or uncounted) and s not in self.history:
                 self.groups[s].count = sides * (UNCOUNTED if row and uncounted else 1)
+
+    def _rung(self, r: _Rel, mentions: list[_Mention]) -> bool:
+        """"A monk sits on the steps ringing a bell": a tabletop thing that is "rung" is rung by hand,
+        no ring around it ("standing stones ringing the pool", "caravans ring a campfire" are)."""
+        if self.toks[r.start].text not in ("ring", "rings", "ringing"):
+            return False
+        m = next((m for m in mentions if r.end <= m.start <= r.end + 3), None)
+        if m is None:
+            return False
+        record = m.guess if m.guess is not None else self.catalogue[m.category]
+        return record.rests == "surface" and not self._lives(m.category)
 
     def _covers(self, r: _Rel) -> bool:
         """Whether a verb of covering ("crowd", "cover", "line") is one here: a noun phrase follows
