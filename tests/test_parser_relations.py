@@ -1195,3 +1195,66 @@ def test_where_one_takes_a_thing_to_is_where_one_is():
 def test_flowers_a_vase_comes_with_are_its_contents():
     parsed = parse_scene("A tall vase with lilies in it stands on the sideboard.")
     assert "flower_bed" not in {o.category for o in parsed.objects}  # no lily beds, as "a vase of lilies"
+
+
+def test_what_is_lined_up_after_a_deed_takes_the_next_phrase():
+    # "pours wine into glasses lined up on it": the glasses are on the table, the pourer by it
+    found = rels("Chairs stand around a long table where a waiter pours wine into glasses lined up on it.")
+    assert ("cup_1", "on", "table_1") in found and ("waiter_1", "near", "table_1") in found
+    assert ("waiter_1", "on", "table_1") not in found
+
+
+def test_a_thing_set_beside_an_animal_is_by_the_animal():
+    # "with a bowl beside it" after an animal's own phrase: by the animal, not by its landmark
+    assert ("bowl_1", "side of", "dog_1") in rels("A dog dozes under a tall oak, with a bowl beside it.")
+    # (a thing on "it" is still on the landmark; a person's with-thing still goes by the landmark)
+    assert ("basket_1", "on", "bed_1") in rels("A dog dozes at the foot of the bed, with a basket on it.")
+    assert ("dog_1", "near", "bench_1") in rels("A man sits on the bench, with his terrier asleep under it.")
+
+
+def test_its_steps_after_a_pagoda_name_the_pagoda():
+    assert ("priest_1", "on", "pagoda_1") in rels("A pagoda stands near the pond, and a priest sits on its steps.")
+
+
+def test_among_things_is_near_them():
+    assert ("well_1", "near", "house_1") in rels("An old well sits among the cottages.")
+    # "among the oak's branches": up in the tree named before
+    found = rels("A tall oak grows by the pond. Three owls sit among the oak's branches.")
+    assert ("owl_1", "near", "tree_1") in found
+
+
+def test_each_of_them_after_a_clause_names_its_subject():
+    # "them" after the subject before is that subject, with "each" too (not the mats they lie on)
+    found = rels("Four lambs lie on the mats near the gate, and a girl kneels beside each of them with a bottle.")
+    assert ("girl_1", "side of", "lamb_1") in found and ("girl_4", "side of", "lamb_4") in found
+    assert not any(s.startswith("girl") and t.startswith("yoga_mat") for s, _, t in found)
+
+
+def test_a_flag_a_person_has_is_in_hand():
+    assert ("flagpole_1", "on", "guard_1") in rels("A guard with a flag sits on a tractor.")
+
+
+def test_whom_one_argues_with_is_placed_by_a_phrase_on_the_arguer():
+    # "argues with a porter across from her": the porter is across from her (not she from him)
+    found = rels("In the corner, a woman holds a cup and argues with a porter across from her.")
+    assert {("porter_1", "in front of", "woman_1"), ("porter_1", "face to", "woman_1")} <= found
+    # (a phrase on anything else still places the arguer: "a trader argues with a buyer beside the stall")
+    assert ("trader_1", "side of", "market_stall_1") in rels("A trader argues with a buyer beside the stall.")
+
+
+def test_he_and_she_open_phrases_about_one_of_the_pair():
+    found = rels("A king and a queen sit in the hall, he on a throne, she resting on a sofa.")
+    assert {("king_1", "on", "throne_1"), ("queen_1", "on", "sofa_1")} <= found
+    assert ("queen_1", "on", "throne_1") not in found
+    found = rels("A prince and a princess wave from the balcony, she holding a fan, he waving a flag.")
+    assert ("flagpole_1", "on", "prince_1") in found
+
+
+def test_on_the_edge_or_end_of_a_thing_is_on_it():
+    assert ("boy_1", "on", "bed_1") in rels("A boy sits on the edge of the bed.")
+    assert ("cat_1", "on", "sofa_1") in rels("A cat naps on the end of the sofa.")
+
+
+def test_a_small_thing_rung_is_rung_by_hand():
+    found = rels("A monk sits on the steps ringing a bell.")
+    assert ("bell_1", "on", "monk_1") in found and not any(r == "face to" for _, r, _ in found)

@@ -37,7 +37,7 @@ Decisions worth knowing:
   and the repair is listed in ``ParsedScene.repairs``. A small thing hung from the ceiling hangs
   ("a birdcage hangs from the ceiling").
 
-- ``beside`` / ``next to`` / ``alongside`` / ``leans against`` → ``side of``; ``near`` / ``close to`` / ``by`` →
+- ``beside`` / ``next to`` / ``alongside`` / ``leans against`` → ``side of``; ``near`` / ``close to`` / ``by`` / ``among`` →
   ``near``, and so is one who ``talks to`` / ``speaks to`` / ``chats with`` someone (the
   annotated sets: with them, not turned to them; a phrase after the addressee still places the
   talker); ``opposite`` / ``across from`` → ``in front of`` + ``face to``; ``flanked by`` and
@@ -128,7 +128,8 @@ Decisions worth knowing:
   shop's roof", "the porch steps") places by its owner: one named in the same sentence, else the
   latest building, else the latest vehicle.
 - People: "he"/"him"/"his" and "she"/"her" name a person of that sex (``people`` in
-  ``data/vocabulary.json``), the clause's subject or a with-part's owner first; a body part after
+  ``data/vocabulary.json``), the clause's subject or a with-part's owner first ("a king and a queen
+  sit in the hall, he on a throne, she on a sofa": each phrase about the one it names); a body part after
   a person's possessive places by the person ("a laptop on her knees" → on her, and the repair
   leaves it there; "a dog at his feet" → near him). "Their" of people names their own things, one
   each ("two teenagers on their motorbikes"); of things, a part ("lanterns on their roofs").

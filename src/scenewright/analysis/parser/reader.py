@@ -446,7 +446,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # or one done to something too big to hold (below); "pulls a rope from the barrel" names
         # where the rope comes from
         found = [r for r in _find_relations(toks, taken)
-                 if (r.kind != "at" or self._names_thing(r.end, starts)) and (r.kind != "covering" or self._covers(r))]
+                 if (r.kind != "at" or self._names_thing(r.end, starts)) and (r.kind != "covering" or self._covers(r))
+                 and not self._rung(r, mentions)]
         self.rel_at = {
             r.start: r for r in found
             if r.kind != "from" or self._verb_before(r.start, self._lookout) or self._from_to(r.end, starts)
@@ -804,6 +805,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         phrase_end = -1  # where the last relation phrase and its target end
         while k < ce:
             w = toks[k].text
+            if not c.first and w in ("he", "she") and (k == cs or toks[k - 1].text == ",") and k + 1 < ce and (
+                toks[k + 1].text.endswith("ing") or k + 1 in self.rel_at
+            ):  # "a wizard and a witch face each other, he riding a tortoise, she on a carpet": an
+                # absolute phrase about the one the pronoun names
+                self._close_with(c)
+                c.head, c.wsub = None, []
+                people = [*c.main, *prev_subject, *self.topic, *self.history[self._sentence_from :]]
+                c.main = self._named_by(w, people) or c.main
+                k = last_event_end = k + 1
+                continue
             lead = _each_lead(toks, k, ce) if k not in self.by_start else k
             if lead > k:  # "every one of them with a spade": as "each with a spade"
                 w, k = "each", lead
@@ -1312,9 +1323,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             )
             # "a trader argues with a buyer beside it", "a squire waits with the horses by a tower": the
             # company a verb names goes along with its subject, who is what the phrase places
-            # ("a man sits on the bench, with his terrier asleep under it": the terrier)
+            # ("a man sits on the bench, with his terrier asleep under it": the terrier; "argues with a
+            # porter across from her": the porter, placed by her)
             with_at = next((k for k in range(rel.start - 1, max(rel.start - 8, 0), -1) if toks[k].text == "with"), 0)
-            company = with_at > 0 and _is_verb(toks[with_at - 1].text) and all(
+            company = with_at > 0 and _is_verb(toks[with_at - 1].text) and target not in _PERSONAL and all(
                 self._living(g) for g in [*c.wsub, *c.head]
             )
             if c.wsub and not closed and not c.expect_new and not in_hand and not company:
@@ -1348,7 +1360,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         else:
             srcs = list(c.main)
             acted = c.deeds[-1][1] if c.deeds and c.deed_end == last_event_end else None
-            if kind in ("on", "in", "on top", "over") and acted is not None and self._small(acted):
+            if kind in _FORMATIONS and acted is not None and self._small(acted) and rel.start == last_event_end:
+                # "pours squash into cups lined up on it": the cups are lined up, and the phrase after
+                # goes on placing them (the pourer by them: :meth:`_do_deeds`)
+                srcs, c.deed_end = [acted], p.end
+            elif kind in ("on", "in", "on top", "over") and acted is not None and self._small(acted):
                 # "a smith hammers a horseshoe on the anvil", "a cook stirs a pot over the fire": the
                 # thing acted on is there (its doer by it: :meth:`_do_deeds`)
                 srcs = [acted]
@@ -1456,7 +1472,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if all(g in self.history for g in srcs) and any(g not in self.history for g in c.main):
                 # "a register on the counter in front of each of them": one register each, not a counter
                 srcs = [g for g in c.main if g not in self.history]
-            targets = self._pronoun("them", c, srcs, list(c.last_target))
+            prefer = list(c.last_target)
+            if not prefer and toks[p.end - 1].text == "them" and c.main and srcs == c.main:
+                # "four lambs lie on the mats, and a girl kneels beside each of them": the lambs, as
+                # "beside them" ("beneath each one" stays the latest group: the pegs, not the coats)
+                prefer = list(dict.fromkeys(prev_subject))
+            targets = self._pronoun("them", c, srcs, prefer)
             if targets:  # one per member for what this clause brings in, not for "the counter" named before
                 self._per_each([s for s in srcs if s in c.groups and s not in self.history], targets[0])
         elif target == "that one":
@@ -1501,6 +1522,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 c.groups.append(t)
         p.rel, p.kind, p.target, p.srcs, p.targets, p.end = rel, kind, target, srcs, targets, end
 
+    def _named_by(self, pronoun: str, candidates: list[int]) -> list[int]:
+        """The person "he" or "she" names among ``candidates``: one whose name says that sex first
+        (a witch for "she", not the gnome before her), else the first who may be of it."""
+        vocabulary = load_vocabulary()
+        other = "he" if pronoun == "she" else "she"
+        people = [g for g in dict.fromkeys(candidates) if self._person_at(g)]
+        fits = [g for g in people if vocabulary.agrees(pronoun, self.groups[g].name.split()[-1])]
+        sexed = [g for g in fits if not vocabulary.agrees(other, self.groups[g].name.split()[-1])]
+        return (sexed or fits)[:1]
+
     def _pronoun_target(
         self, c: _Clause, p: _Phrase, target: str, kind: str, srcs: list[int], prev_subject, starts_with_rel
     ) -> list[int]:
@@ -1538,6 +1569,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._living(h) and not self._person_at(h) for h in c.head
         )
         owner = c.head is not None and (c.head == [c.each] or own_part)
+        # ("an old pony dozes under an oak, with a bucket beside it": a thing set by an animal is by it)
+        owner = owner or (c.head is not None and kind in _GROUND_KINDS and all(
+            self._living(h) and not self._person_at(h) for h in c.head
+        ) and not any(self._living(g) for g in srcs))
         if c.head is not None and not owner and all(self._living(h) and self.groups[h].category == "figure" or (
             self._living(h) and self.catalogue[self.groups[h].category].shape != "figure"
         ) for h in c.head):  # fmt: skip
@@ -1902,6 +1937,17 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             uncounted = s not in self.numbered and self.groups[s].count == UNCOUNTED
             if (self.groups[s].count == 1 or uncounted) and s not in self.history:
                 self.groups[s].count = sides * (UNCOUNTED if row and uncounted else 1)
+
+    def _rung(self, r: _Rel, mentions: list[_Mention]) -> bool:
+        """"A monk sits on the steps ringing a bell": a tabletop thing that is "rung" is rung by hand,
+        no ring around it ("standing stones ringing the pool", "caravans ring a campfire" are)."""
+        if self.toks[r.start].text not in ("ring", "rings", "ringing"):
+            return False
+        m = next((m for m in mentions if r.end <= m.start <= r.end + 3), None)
+        if m is None:
+            return False
+        record = m.guess if m.guess is not None else self.catalogue[m.category]
+        return record.rests == "surface" and not self._lives(m.category)
 
     def _covers(self, r: _Rel) -> bool:
         """Whether a verb of covering ("crowd", "cover", "line") is one here: a noun phrase follows

@@ -132,7 +132,11 @@ class _References:
             modifier = w not in _STOP and w[0].isalnum() and j + 1 in self.by_start
             # "on the back of a horse": a part "of" something, though "back" alone ends a phrase
             # ("on every side of": a phrase of its own, one a side)
-            part_of = self._part_word(w) and w not in ("side", "sides") and j + 1 < ce and toks[j + 1].text == "of"
+            # ("sits on the edge of the bed": an edge or an end any thing has, the thing's; "the top of
+            # a mast" is no place on it)
+            part_of = (self._part_word(w) or w in ("edge", "end")) and w not in ("side", "sides") and (
+                j + 1 < ce and toks[j + 1].text == "of"
+            )
             if w in _DETERMINERS or w in _NUMBERS or w in _ORDINALS or w == "of" or _position_adjective(toks, j) or (
                 hyphened or modifier or part_of
             ) or (
