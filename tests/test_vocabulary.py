@@ -203,3 +203,16 @@ def test_no_data_file_names_a_key_twice(name):
         return dict(pairs)
 
     json.loads(resources.files("scenewright.data").joinpath(name).read_text(encoding="utf-8"), object_pairs_hook=unique)
+
+
+@pytest.mark.parametrize(
+    "text,name",
+    [
+        ("A baker kneads dough while his colleague sweeps the floor.", "colleague"),
+        ("A partner waits at the gate.", "partner"),
+        ("The old sailor rows the dinghy and his companion bails water.", "companion"),
+    ],
+)
+def test_a_word_for_whose_someone_is_names_a_person(text, name):
+    # "her colleague holds a bag": a relational word nobody listed is a person, not a thing
+    assert objects(text)[name] == ("figure", True)

@@ -891,6 +891,8 @@ def _names_kind(toks: list[_Tok], e: int) -> bool:
         return False  # "two mechanics on a lift work on it", "a yew and a rowan shade the gate": a verb
     if _joint_verb_at(toks, e):
         return False  # "a farmer and his son wade into the pond"
+    if e + 2 < len(toks) and (toks[e + 1].text, toks[e + 2].text) in (("each", "other"), ("one", "another")):
+        return False  # "a nurse and a doctor face each other": only a subject of two does it, so a verb
     if t.joined or (w in load_vocabulary().not_things and singular(w) == w and w not in _FINITE):
         return True  # "camel-hair tents", "a bear face"
     if w in _IRREGULAR_PARTICIPLES:

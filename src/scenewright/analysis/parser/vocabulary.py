@@ -175,9 +175,12 @@ class Vocabulary:
         return w.endswith(_ADJECTIVE_ENDINGS) or not w.isalpha()
 
     def guess(self, head: str) -> Entry:
-        """A family for a noun nobody listed, from its ending ("…saurus" → animal), else a thing."""
+        """A family for a noun nobody listed, from its ending ("…saurus" → animal) or as a word that
+        says whose someone is ("her colleague"), else a thing."""
         catalogue = load_catalogue()
         one = singular(head.lower())
+        if one in self.relational:
+            return self._family("figure")  # "her colleague", "a companion": a word for whose someone is names a person
         for suffix, family in self.suffixes:
             if one.endswith(suffix) and len(one) - len(suffix) >= _MIN_STEM:
                 return self._family(family)
