@@ -1233,7 +1233,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         placed = w == "the" and j < n and (opening and toks[j].text in _PLACING_VERBS or toks[j].text in _STANDING)
         # ("near", "by" and "past" the landmarks and the fittings of a place too: "near the airlock";
         # what hangs "above" one is no place either: "a hook above the loading pit")
-        by = (_placed_by(toks, i, (_BY_KINDS - {"near"}) | {"above"}) or _outside_part_of(toks, i)) and not _named_before(toks, head)
+        by = _placed_by(toks, i, (_BY_KINDS - {"near"}) | {"above"}) or _outside_part_of(toks, i)
+        by = by and not _named_before(toks, head)
         by = by and (j >= n or toks[j].text not in ("one", "ones"))
         if definite and entry.category != "figure" and not placed and not by:
             continue  # "the far end", "her turn": after "the" or "her", only a person is read, a

@@ -27,10 +27,10 @@ _PERSON_ENDINGS = ("ist", "ian", "eer", "maker", "smith", "wright")
 _AGENT_ENDINGS = ("er", "or", "ant", "ent")
 #: Letters a word keeps before an ending for the ending to tell its family ("gator" is no machine).
 _MIN_STEM = 3
-#: Endings of English adjectives ("rusty", "glowing", "magical", "robotic", "woollen").
 #: Letters an "-ish" describing word keeps before its ending ("reddish", "greenish"); fewer make a
 #: noun ("finish", "radish", "parish").
 _ISH_STEM = 4
+#: Endings of English adjectives ("rusty", "glowing", "magical", "robotic", "woollen").
 _ADJECTIVE_ENDINGS = ("ly", "ous", "ful", "ish", "less", "able", "ible", "ive", "ed", "est", "y", "ing", "al", "ic",
                       "en", "ern", "ar", "ant", "ent", "ese", "ian")  # fmt: skip
 
@@ -176,7 +176,7 @@ class Vocabulary:
         if self.match((w,)) is not None or w in self.places:
             return False
         if w.endswith("ish") and len(w) - len("ish") < _ISH_STEM:
-            return not w.isalpha()  # "a finish tape", "a polish tin": nouns; "reddish", "childish" keep a word before
+            return not w.isalpha()  # "a finish tape", "a polish jar": nouns; "reddish", "childish" keep a word before
         return w.endswith(_ADJECTIVE_ENDINGS) or not w.isalpha()
 
     def guess(self, head: str) -> Entry:
