@@ -1167,3 +1167,21 @@ def test_the_second_end_of_a_fronted_between_is_no_apposition():
 
 def test_a_stack_of_compound_parts_is_several_of_them():
     assert words_of("A mason walks past a stack of scaffold pipes.")["pipe"] == 3
+
+
+@pytest.mark.parametrize(
+    "text, pair",
+    [
+        ("A sailor and a baker face each other across the quay.", {"sailor", "baker"}),
+        ("A goose and a lamb face one another by the pond.", {"goose", "lamb"}),
+    ],
+)
+def test_a_pair_that_faces_each_other_is_two_things(text, pair):
+    # "face" after the second of two is their verb, not the face of a baker ("a bear face")
+    assert pair <= names(text)
+
+
+def test_an_unlisted_thing_after_above_the_is_a_thing():
+    # "a hook swings above the grease trough": what something hangs over stands in the scene
+    assert "grease trough" in names("A rusty hook swings above the grease trough.")
+    assert names("A hawk circles above the horizon.") == {"hawk"}

@@ -203,3 +203,23 @@ def test_no_data_file_names_a_key_twice(name):
         return dict(pairs)
 
     json.loads(resources.files("scenewright.data").joinpath(name).read_text(encoding="utf-8"), object_pairs_hook=unique)
+
+
+@pytest.mark.parametrize(
+    "text,name",
+    [
+        ("A baker kneads dough while his colleague sweeps the floor.", "colleague"),
+        ("A partner waits at the gate.", "partner"),
+        ("The old sailor rows the dinghy and his companion bails water.", "companion"),
+    ],
+)
+def test_a_word_for_whose_someone_is_names_a_person(text, name):
+    # "her colleague holds a bag": a relational word nobody listed is a person, not a thing
+    assert objects(text)[name] == ("figure", True)
+
+
+def test_a_short_word_in_ish_names_a_kind_and_a_long_one_describes():
+    # "finish", "polish": nouns that name the kind of the next one; "greenish", "bluish" describe it
+    assert objects("A finish ribbon is stretched between two stakes.")["finish ribbon"][0] == GENERIC
+    found = {o.name for o in parse_scene("A greenish bottle and a bluish jug stand on the shelf.").objects}
+    assert {"bottle", "jug"} <= found

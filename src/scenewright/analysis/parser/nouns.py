@@ -906,6 +906,8 @@ def _names_kind(toks: list[_Tok], e: int) -> bool:
         return False  # "two mechanics on a lift work on it", "a yew and a rowan shade the gate": a verb
     if _joint_verb_at(toks, e):
         return False  # "a farmer and his son wade into the pond"
+    if e + 2 < len(toks) and (toks[e + 1].text, toks[e + 2].text) in (("each", "other"), ("one", "another")):
+        return False  # "a nurse and a doctor face each other": only a subject of two does it, so a verb
     if t.joined or (w in load_vocabulary().not_things and singular(w) == w and w not in _FINITE):
         return True  # "camel-hair tents", "a bear face"
     if w in _IRREGULAR_PARTICIPLES:
@@ -1244,8 +1246,10 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             continue  # "its four propellers gleaming": a thing's parts, counted ("its two cubs" are there)
         opening = i == 0 or not toks[i - 1].text[:1].isalpha()
         placed = w == "the" and j < n and (opening and toks[j].text in _PLACING_VERBS or toks[j].text in _STANDING)
-        # ("near", "by" and "past" the landmarks and the fittings of a place too: "near the airlock")
-        by = (_placed_by(toks, i, _BY_KINDS - {"near"}) or _outside_part_of(toks, i)) and not _named_before(toks, head)
+        # ("near", "by" and "past" the landmarks and the fittings of a place too: "near the airlock";
+        # what hangs "above" one is no place either: "a hook above the loading pit")
+        by = _placed_by(toks, i, (_BY_KINDS - {"near"}) | {"above"}) or _outside_part_of(toks, i)
+        by = by and not _named_before(toks, head)
         by = by and (j >= n or toks[j].text not in ("one", "ones"))
         if definite and entry.category != "figure" and not placed and not by:
             continue  # "the far end", "her turn": after "the" or "her", only a person is read, a

@@ -27,6 +27,9 @@ _PERSON_ENDINGS = ("ist", "ian", "eer", "maker", "smith", "wright")
 _AGENT_ENDINGS = ("er", "or", "ant", "ent")
 #: Letters a word keeps before an ending for the ending to tell its family ("gator" is no machine).
 _MIN_STEM = 3
+#: Letters an "-ish" describing word keeps before its ending ("reddish", "greenish"); fewer make a
+#: noun ("finish", "radish", "parish").
+_ISH_STEM = 4
 #: Endings of English adjectives ("rusty", "glowing", "magical", "robotic", "woollen").
 _ADJECTIVE_ENDINGS = ("ly", "ous", "ful", "ish", "less", "able", "ible", "ive", "ed", "est", "y", "ing", "al", "ic",
                       "en", "ern", "ar", "ant", "ent", "ese", "ian")  # fmt: skip
@@ -175,12 +178,17 @@ class Vocabulary:
             return True
         if self.match((w,)) is not None or w in self.places:
             return False
+        if w.endswith("ish") and len(w) - len("ish") < _ISH_STEM:
+            return not w.isalpha()  # "a finish tape", "a polish jar": nouns; "reddish", "childish" keep a word before
         return w.endswith(_ADJECTIVE_ENDINGS) or not w.isalpha()
 
     def guess(self, head: str) -> Entry:
-        """A family for a noun nobody listed, from its ending ("…saurus" → animal), else a thing."""
+        """A family for a noun nobody listed, from its ending ("…saurus" → animal) or as a word that
+        says whose someone is ("her colleague"), else a thing."""
         catalogue = load_catalogue()
         one = singular(head.lower())
+        if one in self.relational:
+            return self._family("figure")  # "her colleague", "a companion": a word for whose someone is names a person
         for suffix, family in self.suffixes:
             if one.endswith(suffix) and len(one) - len(suffix) >= _MIN_STEM:
                 return self._family(family)
