@@ -124,7 +124,7 @@ def fit_unsized(parsed: ParsedScene) -> list[ParsedObject]:
     its host's top, and each thing people carry that the catalogue sizes as it stands on the
     ground (a parasol) held by the living to :data:`CARRIED`; never up."""
     catalogue = load_catalogue()
-    carried = load_vocabulary().carried_in_hand
+    vocabulary = load_vocabulary()
     by_id = {o.id: o for o in parsed.objects}
     hosts = {r.source: by_id[r.target] for r in parsed.relations if r.relation == "on" and r.target in by_id}
     out = []
@@ -132,7 +132,7 @@ def fit_unsized(parsed: ParsedScene) -> list[ParsedObject]:
         host = hosts.get(o.id)
         entry = catalogue.get(host.category) if host is not None else None
         unsized = o.guessed and o.category == GENERIC and entry is not None and (entry.shape in LIVING or entry.support)
-        held = entry is not None and entry.shape in LIVING and (o.category in carried or o.name.split()[-1] in carried)
+        held = entry is not None and entry.shape in LIVING and vocabulary.carried_by_hand(o.category, o.name)
         if unsized or held:
             longest = CARRIED if held else HAND if entry.shape in LIVING else TOP_SHARE * min(host.size[:2])
             factor = longest / max(o.size)

@@ -67,8 +67,6 @@ _BETWEEN_SIDES = {
 }  # fmt: skip
 
 
-_SIDES = ("left of", "right of", "in front of", "behind")
-
 #: Relations that put a pair front to back, read as "in front of" when choosing between's axis.
 _FACING = {"opposite": "in front of", "face to": "in front of", "at seat": "in front of"}
 
@@ -143,7 +141,7 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
         elif kind in ("left of", "right of") and reader.formations.get(t) == "row" and len(src.ids) < len(tgt.ids):
             # "a change machine to the right of them" (a row): beside the row's end, not its first
             tgt = replace(tgt, ids=[tgt.ids[-1] if kind == "right of" else tgt.ids[0]])
-        elif kind in _SIDES and len(src.ids) == 1 and len(tgt.ids) > 1 and not paired:
+        elif kind in _BETWEEN_SIDES and len(src.ids) == 1 and len(tgt.ids) > 1 and not paired:
             # "a cottage behind the boats": behind all of them, not the first while the rest stand anywhere
             out += [ParsedRelation(src.ids[0], kind, b) for b in tgt.ids]
             continue

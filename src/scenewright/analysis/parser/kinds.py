@@ -16,7 +16,6 @@ from scenewright.analysis.parser.grammar import (
 from scenewright.analysis.parser.nouns import _Mention, _is_plural
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import _HANG_VERBS
-from scenewright.core.catalogue import singular
 
 
 class _Kinds:
@@ -69,8 +68,7 @@ class _Kinds:
         canoe" is no paddle)."""
         if self._lives(category):
             return False
-        carried = load_vocabulary().carried_in_hand
-        if category in carried or singular(name.split()[-1]) in carried:
+        if load_vocabulary().carried_by_hand(category, name):
             return True  # "ladies with parasols", "a singer with a microphone": one's own is the hand-held kind
         if tool:
             return max(size) <= _TOOL_SIZE and not load_vocabulary().carries(category, name, _RIDDEN)

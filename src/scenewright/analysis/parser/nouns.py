@@ -176,7 +176,7 @@ def _read_in_setting(toks: list[_Tok]) -> None:
     for k, t in enumerate(toks):
         sense = senses.get(t.text)
         after = toks[k + 1].text if k + 1 < len(toks) else "."
-        if sense is not None and setting in sense[1] and after != "of" and k > 0 and toks[k - 1].text != "kitchen":
+        if sense is not None and setting in sense[1] and after != "of":
             t.text = sense[0]
 
 
@@ -289,9 +289,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         # helicopter"), unless it is a plural the verb of the noun before acts on ("a girl holds
         # balloons", "a clown juggles balls")
         plural = e - s == 1 and singular(words[-1]) != words[-1]
-        verb_of_noun = k > 0 and raw[k - 1][1] == s - 1 and singular(toks[s - 2].text) == toks[s - 2].text and (
-            _match_at(toks, s - 1) is None and toks[s - 1].text not in _PART_NOUNS | {p + "s" for p in _PART_NOUNS}
-        )  # ("a simurgh with peacock feathers perches": a noun between, the plural after it its verb)
+        verb_of_noun = k > 0 and raw[k - 1][1] == s - 1 and _verb_of_one(toks, s - 1)
         verb_before = s > 0 and _is_verb(toks[s - 1].text) and not _opens_phrase(toks, s - 1) and not (plural and verb_of_noun)
         # "a robot with six arms ladles stew": a plural names no kind of the next word, so a plural
         # right after one is a verb
@@ -1633,20 +1631,27 @@ def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
     return out
 
 
+def _verb_of_one(toks: list[_Tok], k: int) -> bool:
+    """The word at ``k`` is the -s verb of the singular noun right before it ("a girl *holds*"),
+    not a plural noun there ("peacock *feathers*")."""
+    w = toks[k].text
+    return k > 0 and _is_verb(w) and singular(w) != w and singular(toks[k - 1].text) == toks[k - 1].text and (
+        _match_at(toks, k) is None and singular(w) not in _PART_NOUNS
+    )
+
+
 def _bare_objects(toks: list[_Tok], covered: set[int]) -> list:
     """A bare plural nobody listed right after the -s verb of a named one, ending the phrase:
     what the verb acts on ("a street performer juggles clubs beside the fountain")."""
     vocabulary = load_vocabulary()
     out: list = []
     for k in range(2, len(toks)):
-        word, verb, subject = toks[k].text, toks[k - 1].text, toks[k - 2].text
+        word = toks[k].text
         after = toks[k + 1].text if k + 1 < len(toks) else "."
         if k in covered or k - 1 in covered or k - 2 not in covered or toks[k].quoted:
             continue
-        if singular(word) == word or singular(subject) != subject or not (_is_verb(verb) and singular(verb) != verb):
-            continue
-        if _match_at(toks, k - 1) is not None or word.endswith("wards"):
-            continue  # "a simurgh with peacock feathers perches": a noun there, no verb; "drives towards"
+        if singular(word) == word or not _verb_of_one(toks, k - 1) or word.endswith("wards"):
+            continue  # ("drives towards": an adverb)
         if not (after in _STOP or not after[:1].isalpha()) or not vocabulary.is_thing_word(word) or _participle(word):
             continue
         entry = _guess(toks, k, toks[k - 1 : k])
@@ -2266,7 +2271,7 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             break  # "two volunteers unload crates", "a man and his son unload crates": the verb of
             # the subject before, no kind of crate
         bare = singular(toks[m.end - 1].text) != toks[m.end - 1].text and not adjectives
-        if j == prev_end and j > 0 and bare and _is_verb(w) and singular(toks[j - 1].text) == toks[j - 1].text:
+        if j == prev_end and bare and _verb_of_one(toks, j):
             break  # "a girl holds balloons": the verb of the one before, no kind of balloon
         adjectives.insert(0, t.orig)
         j -= 1

@@ -121,6 +121,12 @@ class Vocabulary:
         names = (head,) if record.family and not by_family else (category, record.shape, head)
         return any(n in self.carriers[k] for k in (kinds or tuple(self.carriers)) for n in names)
 
+    def carried_by_hand(self, category: str, name: str) -> bool:
+        """Whether a thing of ``category`` named ``name`` is one people carry in hand though the
+        catalogue sizes it as it stands on the ground (``carried_in_hand``: a parasol)."""
+        head = singular(name.lower().split()[-1]) if name.strip() else ""
+        return category in self.carried_in_hand or head in self.carried_in_hand
+
     def is_posture_verb(self, word: str) -> bool:
         """A verb of sitting, lying or standing ("dozes", "perched", "stands")."""
         return any(word in verbs for verbs in self.postures.values())
