@@ -332,3 +332,10 @@ def test_a_stack_taller_than_one_can_reach_stands_in_columns_side_by_side():
     for r in made.relations:
         if r.source in o and r.target in o:
             assert rel.check(r.relation, o[r.source], o[r.target]), r
+
+
+def test_a_person_at_a_console_turns_to_it():
+    made = compose(parse_scene("A cramped radio room. A radio operator sits at the control panel by the door."))
+    objects = _by_id(made.objects)
+    operator = next(k for k in objects if k.startswith("radio_operator") or k.startswith("operator"))
+    assert (operator, "face to", "control_panel_1") in {(r.source, r.relation, r.target) for r in made.relations}

@@ -710,6 +710,16 @@ def test_long_stretches_and_floor_things_on_a_desk_are_its_tabletop_kind():
     assert by["vase_1"].size[2] == pytest.approx(1.2)  # a stated size stays
 
 
+def test_a_thing_nobody_listed_on_a_table_or_in_hand_is_tabletop_sized():
+    """A guess is a 0.6 m lump; on a counter or in someone's hand the text says it is small, and
+    every one of a phrase gets the same size (the ones stacked on the first too)."""
+    parsed = parse_scene("A clerk holds a zorbicle by the counter, and a stack of quillets lies on the counter.")
+    sizes = {o.name: max(o.size) for o in parsed.objects if o.category == "thing"}
+    assert sizes and all(side <= 0.35 + 1e-6 for side in sizes.values()), sizes
+    lone = [max(o.size) for o in parse_scene("A zorbicle stands by the gate.").objects if o.category == "thing"]
+    assert lone == [pytest.approx(0.6)]
+
+
 @pytest.mark.parametrize(
     ("text", "indoor", "names"),
     [

@@ -72,6 +72,17 @@ def test_worn_clothing_is_no_object(text, worn):
     assert any(n.split()[-1] in ("drummer", "boy", "nurse") for n in got)
 
 
+def test_what_a_person_wears_dresses_their_figure():
+    """The clothing goes into the person's description, whose colour the figure's clothes take."""
+    got = {o.name: o.description for o in parse_scene(
+        "A grocer in a mustard apron and a brown cap weighs plums, a girl with a blue scarf waits, and a "
+        "porter with a trolley and a crate stands by the door."
+    ).objects}
+    assert got["grocer"] == "grocer in a mustard apron and a brown cap"
+    assert got["girl"] == "girl with a blue scarf"
+    assert got["porter"] == "porter"
+
+
 def test_men_and_women_key_as_man_and_woman():
     parsed = parse_scene("Two men and three women chat beside a fountain, and two firemen stand by the truck.")
     categories = Counter(o.id.rsplit("_", 1)[0] for o in parsed.objects)

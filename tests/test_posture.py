@@ -70,3 +70,30 @@ def test_figure_mesh_fills_the_posed_box(posture):
     if posture == "sitting":  # the seat is the lowest part, under the body, not the feet in front
         low = verts[verts[:, 2] < verts[:, 2].min() + 0.02]
         assert low[:, 1].max() > verts[:, 1].min() + 0.3 * extent[1]
+
+
+@pytest.mark.parametrize(
+    ("text", "name", "stool"),
+    [
+        ("Two clerks sit at the long counter of the bank.", "clerk", True),
+        ("A radio operator sits at a folding table, a lamp beside him.", "operator", True),
+        ("A girl sits on the rug by the fire.", "girl", False),
+        ("A monk kneels at the altar.", "monk", False),
+        ("A farmer sits on a hay bale.", "farmer", False),
+    ],
+)
+def test_one_who_sits_with_no_seat_named_sits_on_a_stool_of_their_own(text, name, stool):
+    """Sitting at a counter with no seat named is not sitting on the floor before it: the figure
+    brings a stool, in its box and in its mesh; on a rug, on one's knees or on a seat, none."""
+    composed = compose(parse_scene(text))
+    person = next(o for o in composed.objects if o.name.endswith(name))
+    assert ("stool" in person.visual_description) == stool
+    if stool:
+        standing = next(o for o in parse_scene(f"A {name} stands.").objects if o.name.endswith(name))
+        assert person.size.z == pytest.approx(posed_size(standing.size, "sitting", stool=True)[2])
+        size = (person.size.x, person.size.y, person.size.z)
+        model = Model(size, resolve_style("realistic"), np.random.default_rng(0), name=name,
+                      description=person.visual_description)
+        SHAPES["figure"](model)
+        body = np.concatenate([p.vertices for role, parts in model.parts.items() if role != "dark_wood" for p in parts])
+        assert body[:, 2].min() > 0.4  # the body sits on the stool, nothing of it on the floor

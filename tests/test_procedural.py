@@ -630,3 +630,34 @@ def test_a_castle_and_a_church_are_no_office_blocks():
     church = build("church", (12.0, 24.0, 18.0))
     spire = max(church.parts["roof"], key=lambda p: p.vertices[:, 2].max())
     assert spire.vertices[:, 2].max() > 0.95 * 18.0 and spire.vertices[:, 1].mean() < 0  # at the front
+
+
+def test_a_dome_habitat_is_a_dome_not_a_tower_block_or_a_truss():
+    """A habitat dome, an igloo or a geodesic dome is a round shell with its door toward the
+    viewer, whether the catalogue files it as a building or the open vocabulary as a structure."""
+    for name, shape in (("dome habitat", "building"), ("igloo", "structure")):
+        model = Model((8.0, 8.0, 4.0), resolve_style("realistic"), np.random.default_rng(0), name=name)
+        SHAPES[shape](model)
+        shell = max(model.parts["wall"], key=lambda p: len(p.vertices))
+        top = shell.vertices[shell.vertices[:, 2] > 0.9 * 4.0]
+        assert len(top) and np.abs(top[:, :2]).max() < 0.25 * 8.0  # rounded up to a crown
+        assert "truss" not in model.parts and "concrete" not in model.parts
+        door = [p for p in model.parts["dark_metal"] if p.vertices[:, 1].max() < -3.5]
+        assert door, name
+
+
+def test_a_pagoda_has_tiers_of_roofs_narrowing_upward():
+    model = Model((6.0, 6.0, 10.0), resolve_style("realistic"), np.random.default_rng(0), name="pagoda")
+    SHAPES["building"](model)
+    roofs = sorted(model.parts["roof"], key=lambda p: p.vertices[:, 2].min())
+    assert len(roofs) >= 3 and "glass" not in model.parts
+    widths = [np.ptp(p.vertices[:, 0]) for p in roofs]
+    assert widths == sorted(widths, reverse=True)
+
+
+def test_a_helmet_is_a_rounded_shell_not_a_toolbox():
+    model = Model((0.25, 0.3, 0.25), resolve_style("realistic"), np.random.default_rng(0), name="helmet")
+    SHAPES["tool"](model)
+    shell = model.parts["paint"][0].vertices
+    top = shell[shell[:, 2] > 0.95 * 0.25]
+    assert len(top) and np.abs(top[:, :2]).max() < 0.06

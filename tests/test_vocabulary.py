@@ -92,6 +92,20 @@ def test_sizes_follow_the_head_word_and_size_words():
     assert elephant.size[2] > 2.5 > pig.size[2]
 
 
+def test_size_words_resize_things_within_bounds():
+    """A name already says a typical size, so size words move it only so far ("a giant
+    drilling rig" is no 40 m tower); a person's barely at all ("a tall woman" is no giant)."""
+    sizes = {o.description: o.size for o in parse_scene(
+        "A small wardrobe, a wardrobe, a huge wardrobe and a colossal sofa. A tall woman waves."
+    ).objects}
+    wardrobe = sizes["wardrobe"][2]
+    assert 0.35 * wardrobe <= sizes["small wardrobe"][2] < wardrobe < sizes["huge wardrobe"][2] <= 1.6 * wardrobe
+    sofa = next(o for o in parse_scene("A sofa.").objects).size
+    assert sizes["colossal sofa"][0] == pytest.approx(1.6 * sofa[0], abs=1e-3)
+    woman = next(o for o in parse_scene("A woman waves.").objects).size
+    assert woman[2] < sizes["tall woman"][2] <= 1.1 * woman[2] + 1e-3
+
+
 def test_guessed_things_rest_where_their_kind_rests():
     parsed = parse_scene("A workbench with a hammer, and an anvil beside it.")
     rests = {o.name: o.rests for o in parsed.objects if o.guessed}

@@ -15,6 +15,7 @@ from scenewright.analysis.composition import roles
 from scenewright.analysis.composition.footprint import Footprint
 from scenewright.analysis.composition.units import Layout, Unit
 from scenewright.analysis.parser import ParsedRelation
+from scenewright.core.catalogue import load_catalogue
 from scenewright.geometry import yaw_towards
 
 #: How far a seat stands from the table it is pulled up to.
@@ -307,13 +308,20 @@ RULES = (bed, bars, desks, dining, lounge, lamps, rugs)
 
 def facing_focal(objects, relations: list[ParsedRelation]) -> list[ParsedRelation]:
     """A seat the text puts by a fireplace or a TV ("an armchair by the fireplace") turns to it,
-    as a designer would set it: one inferred ``face to`` per such seat that faces nothing yet."""
+    and so does a person by what they work at ("sailors sit at the console", "a cook by the
+    stove"), as a designer would set them: one inferred ``face to`` per such seat or person that
+    faces nothing yet and rests on nothing that turns them."""
     kind = {o.id: roles.kind(o.category) for o in objects}
+    person = {o.id for o in objects if load_catalogue()[o.category].shape == "figure"}
+    seated = {r.source for r in relations if r.relation == "on"}
     facing = {r.source for r in relations if r.relation == "face to"}
     out = []
     for r in relations:
-        by_focal = r.relation in ("near", "side of", "left of", "right of") and kind.get(r.target) in roles.FOCAL
-        if by_focal and kind.get(r.source) in roles.SEATS and r.source not in facing:
+        if r.relation not in ("near", "side of", "left of", "right of") or r.source in facing:
+            continue
+        by_focal = kind.get(r.target) in roles.FOCAL and kind.get(r.source) in roles.SEATS
+        at_work = r.relation == "near" and kind.get(r.target) in roles.WORKPLACES and r.source in person - seated
+        if by_focal or at_work:
             out.append(ParsedRelation(source=r.source, relation="face to", target=r.target, inferred=True))
             facing.add(r.source)
     return out

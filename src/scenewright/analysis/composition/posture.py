@@ -29,6 +29,14 @@ SITTING_HOSTS = roles.SEATS | frozenset({"cushion", "swing", "log", "rock", "sta
 SIT_DEPTH = 0.52
 SIT_HEIGHT = 0.56
 _FIGURES = frozenset({"figure"})
+#: What a person who sits with no seat named sits on, written into their description, and its
+#: height (m): "two sailors sit at the sonar console" sit at it, not on the floor before it.
+OWN_SEAT = "sitting on a stool"
+STOOL_HEIGHT = 0.45
+#: Verbs of sitting on a seat, and words that put the one who sits on the ground or on their knees.
+_SEATED = ("sit", "sits", "sitting", "seated", "sat")
+_GROUNDED = ("floor", "ground", "grass", "lawn", "sand", "beach", "rug", "mat", "carpet", "step", "steps", "lap", "knees",
+             "cross-legged", "kneel", "kneels", "kneeling", "squat", "squats", "squatting", "crouches", "heels", "snow")
 
 
 def _mentions(text: str, words) -> bool:
@@ -93,11 +101,20 @@ def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
     return None
 
 
-def posed_size(size: tuple[float, float, float], posture: str | None) -> tuple[float, float, float]:
-    """The box of a person of standing ``size`` in ``posture``."""
+def seat_implied(parsed: ParsedScene, obj: ParsedObject) -> bool:
+    """Whether a sitting person sits on a seat the text does not name: nothing carries them and
+    their clause has them sit, not on the ground or on their knees ("sits at the desk")."""
+    if any(r.source == obj.id and r.relation == "on" for r in parsed.relations):
+        return False
+    clause = _clause_of(parsed, obj)
+    return _mentions(clause, _SEATED) and not _mentions(clause, _GROUNDED)
+
+
+def posed_size(size: tuple[float, float, float], posture: str | None, stool: bool = False) -> tuple[float, float, float]:
+    """The box of a person of standing ``size`` in ``posture`` (on a stool of their own)."""
     w, d, h = size
     if posture == "sitting":
-        return (w, round(SIT_DEPTH * h, 3), round(SIT_HEIGHT * h, 3))
+        return (w, round(SIT_DEPTH * h, 3), round(SIT_HEIGHT * h + (STOOL_HEIGHT if stool else 0.0), 3))
     if posture == "lying":  # on the back along the depth, head to the back
         return (w, h, d)
     return size
@@ -105,13 +122,16 @@ def posed_size(size: tuple[float, float, float], posture: str | None) -> tuple[f
 
 def pose(parsed: ParsedScene) -> list[ParsedObject]:
     """The parse's objects with every person put in the posture the text gives them: the
-    pose's box, and the pose word added to the description when it does not say it."""
+    pose's box, and the pose word added to the description when it does not say it (with the
+    stool they sit on when the text names no seat)."""
     posed = []
     for obj in parsed.objects:
         posture = posture_of(parsed, obj)
         if posture is None:
             posed.append(obj)
             continue
-        description = obj.description if posture_in(obj.description) == posture else f"{obj.description}, {posture}"
-        posed.append(replace(obj, size=posed_size(obj.size, posture), description=description))
+        stool = posture == "sitting" and seat_implied(parsed, obj)
+        said = f"{obj.description}, {OWN_SEAT}" if stool else f"{obj.description}, {posture}"
+        description = obj.description if posture_in(obj.description) == posture and not stool else said
+        posed.append(replace(obj, size=posed_size(obj.size, posture, stool), description=description))
     return posed

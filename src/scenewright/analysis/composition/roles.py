@@ -31,6 +31,11 @@ ROUND_TABLES = frozenset({"round_table"})
 COFFEE_TABLES = frozenset({"coffee_table"})
 #: What a lounge's seats face.
 FOCAL = frozenset({"tv_stand", "fireplace", "tv", "piano"})
+#: What a person the text puts by it works at, facing it ("two sailors sit at the sonar console").
+WORKPLACES = DESKS | TABLES | BARS | frozenset({
+    "control_panel", "piano", "easel", "stove", "grill", "lectern", "sink", "microscope", "market_stall", "kiosk",
+    "vending_machine",
+})  # fmt: skip
 BEDS = frozenset({"bed", "crib"})
 NIGHTSTANDS = frozenset({"nightstand"})
 #: What stands at the foot of a bed.

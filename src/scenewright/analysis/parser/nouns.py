@@ -739,6 +739,33 @@ def _worn(toks: list[_Tok], s: int, e: int) -> bool:
     return j >= 0 and toks[j].text in _WEARING
 
 
+def worn_description(toks: list[_Tok], end: int) -> list[str]:
+    """What a person is said to wear right after their noun ending at ``end`` ("a vet in a green
+    coat", "with a red cap", "wearing a yellow hat and grey overalls"), as words for their description, so the figure
+    is dressed in the colours the text gives; [] when no clothing follows."""
+    if end >= len(toks) or toks[end].text not in _WEARING | {"with"}:
+        return []
+    clothing = load_vocabulary().clothing
+    k, last = end + 1, None
+    while k < len(toks) and k - end <= 10 and toks[k].text[:1].isalpha() and (
+        toks[k].text not in _STOP or toks[k].text in _DETERMINERS or toks[k].text == "and"
+    ):
+        if toks[k].text in clothing or singular(toks[k].text) in clothing:
+            last = k
+        elif toks[k].text == "and" and last != k - 1:
+            break  # "in a green coat and a cap", not "in green and a dog"
+        k += 1
+    if last is None:
+        return []
+    words: list[str] = []
+    for t in toks[end : last + 1]:
+        if t.joined and words:
+            words[-1] += "-" + t.text
+        else:
+            words.append(t.text)
+    return words
+
+
 def _worn_by(toks: list[_Tok], s: int, mentions: list[_Mention]) -> bool:
     """The noun at ``s`` follows "in" right after a person ("a diver in a drysuit"): what the
     person wears, since people are in clothes, not in things nobody listed."""
@@ -2270,6 +2297,9 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         ):
             break  # "two volunteers unload crates", "a man and his son unload crates": the verb of
             # the subject before, no kind of crate
+        if adjectives and (w in load_vocabulary().clothing or singular(w) in load_vocabulary().clothing):
+            adjectives = []  # "fishermen in red caps cast nets": what they wear ends there, the word
+            break  # after it is their verb, no kind of net
         bare = singular(toks[m.end - 1].text) != toks[m.end - 1].text and not adjectives
         if j == prev_end and bare and _verb_of_one(toks, j):
             break  # "a girl holds balloons": the verb of the one before, no kind of balloon

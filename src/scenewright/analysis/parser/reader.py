@@ -54,6 +54,7 @@ from scenewright.analysis.parser.nouns import (
     _participle,
     _post_description,
     _read_count,
+    worn_description,
 )
 from scenewright.analysis.parser.phrases import _Rel, _find_relations, _phrase_table
 from scenewright.analysis.parser.references import _References
@@ -301,7 +302,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             describing = describing[:-1]
         name = " ".join([*kind, name])
         description = " ".join([*describing, name, *m.post]).strip()
-        base = stretched(scaled(m.guess.size, describing) if m.guess is not None else cat.size, describing)
+        bounds = "person" if cat.shape == "figure" else "thing"
+        base = stretched(scaled(m.guess.size if m.guess is not None else cat.size, describing, bounds), describing)
         size = _apply_sizes(base, sizes) if sizes else base
         rests = m.guess.rests if m.guess is not None else cat.rests
         if rests == "hanging" and standing_form(description):
@@ -669,6 +671,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         starts = {m.start for m in mentions} | set(self.rel_at)
         for m in mentions:
             m.post, end = _post_description(self.toks, m.end, starts)
+            if not m.post and self.catalogue[m.category].shape == "figure":
+                m.post = worn_description(self.toks, m.end)
             for other in mentions:
                 other.content = other.content or m.end < other.start < end
 

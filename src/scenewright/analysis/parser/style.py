@@ -143,8 +143,10 @@ _GROUND_MATERIALS = [
 #: description names, its opening sentence first), so "a savannah enclosure at a city zoo" is
 #: dirt, not the city's asphalt, and a landing pad further on does not floor a construction site.
 _GROUND_PLACES = [
-    ("metal deck", ("landing pad", "spaceport", "space station", "starship", "spaceship", "space ship")),
+    ("metal deck", ("landing pad", "spaceport", "space station", "starship", "spaceship", "space ship", "submarine",
+                    "engine room", "airlock")),
     ("sand", ("beach", "desert", "oasis")),
+    ("snow", ("comet", "glacier", "ice field", "ice sheet", "ice floe", "arctic", "antarctic", "polar", "tundra")),
     ("rubber", ("gym",)),
     ("tiles", ("bathroom", "kitchen", "laboratory", "lab", "spa", "laundromat", "hospital", "clinic", "pharmacy")),
     ("carpet", ("bedroom", "nursery", "office", "conference")),
@@ -155,7 +157,7 @@ _GROUND_PLACES = [
                     "store", "boutique", "hall", "bakery", "tavern", "attic")),
     ("stone", ("plaza", "courtyard", "castle", "temple", "cave", "cavern", "dungeon", "crypt", "smithy", "forge")),
     ("dirt", ("farm", "farmyard", "barnyard", "stable yard", "paddock", "dusty", "village", "campsite", "orchard",
-              "trail", "planet", "rocky", "crater", "martian", "mars", "wasteland", "savannah", "savanna",
+              "trail", "planet", "asteroid", "lunar", "regolith", "rocky", "crater", "martian", "mars", "wasteland", "savannah", "savanna",
               "construction site", "building site", "quarry", "enclosure", "ranch", "arena")),
     ("grass", ("meadow", "park", "garden", "field", "backyard", "yard", "forest", "zoo", "airfield", "clearing",
                "glade", "wedding", "picnic", "golf")),

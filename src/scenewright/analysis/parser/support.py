@@ -185,6 +185,9 @@ _FLOOR_FURNITURE = {"sofa", "armchair", "bed", "wardrobe", "bookshelf", "office_
 #: A floor-standing thing the text puts on a table-like host is its tabletop kind: at most this
 #: share of the host's height ("two speakers on the desk" are desk speakers, not floor ones).
 _ON_TOP_HEIGHT = 0.6
+#: The longest side (m) of a thing nobody listed that the text puts on a table, a desk or a counter,
+#: or in someone's hand.
+_TABLETOP_SIDE = 0.35
 #: Hosts no taller than this are furniture one puts things on (a desk, a counter, a sideboard).
 _FURNITURE_HEIGHT = 1.3
 
@@ -207,6 +210,12 @@ def fit_on_hosts(
             area = (host.size[0] * host.size[1] / (thing.size[0] * thing.size[1])) ** 0.5
             scale[thing.id] = min(scale.get(thing.id, 1.0), side, area)
             continue
+        held = host.category == "figure"
+        if thing.category == _UNKNOWN and (held or host.category in _GENERAL_HOSTS) and max(thing.size) > _TABLETOP_SIDE:
+            # "a stack of files on each table", "pointing with a laser pointer": what nobody listed
+            # that lies on a table or is held is a tabletop thing
+            scale[thing.id] = min(scale.get(thing.id, 1.0), _TABLETOP_SIDE / max(thing.size))
+            continue
         if (thing.rests or catalogue[thing.category].rests) != "ground" or host.category not in _GENERAL_HOSTS:
             continue
         if host.size[2] > _FURNITURE_HEIGHT or thing.category in _FLOOR_FURNITURE:
@@ -214,8 +223,13 @@ def fit_on_hosts(
         limit = _ON_TOP_HEIGHT * host.size[2]
         if thing.size[2] > limit:
             scale[thing.id] = min(scale.get(thing.id, 1.0), limit / thing.size[2])
+    # the members of one phrase share its size ("a stack of files": the ones stacked on the first too)
+    group_scale: dict[int, float] = {}
+    for oid, factor in scale.items():
+        group_scale[by_id[oid].group] = min(group_scale.get(by_id[oid].group, 1.0), factor)
     return [
-        replace(o, size=tuple(round(v * scale[o.id], 4) for v in o.size)) if o.id in scale else o  # type: ignore[misc]
+        replace(o, size=tuple(round(v * group_scale[o.group], 4) for v in o.size))  # type: ignore[misc]
+        if o.group in group_scale and o.id not in fixed else o
         for o in objects
     ]
 

@@ -51,6 +51,9 @@ class Vocabulary:
     places: frozenset[str]
     adjectives: frozenset[str]
     size_words: dict[str, float]
+    #: How far size words may take a thing ("thing") or a person ("person") from the size its
+    #: name gives: a name already says a typical one.
+    size_word_bounds: dict[str, tuple[float, float]]
     #: Words that stretch one side of any thing ("a long desk" is wider): x, y, z factors.
     shape_words: dict[str, tuple[float, float, float]]
     suffixes: tuple[tuple[str, str], ...]
@@ -246,6 +249,7 @@ def _validate(raw: dict) -> Vocabulary:
         places=frozenset(lists["places"]),
         adjectives=frozenset(raw["adjectives"]),
         size_words={k: float(v) for k, v in raw["size_words"].items()},
+        size_word_bounds={k: (float(v[0]), float(v[1])) for k, v in raw["size_word_bounds"].items()},
         shape_words={k: (float(v[0]), float(v[1]), float(v[2])) for k, v in raw.get("shape_words", {}).items()},
         suffixes=tuple(sorted(raw["suffixes"].items(), key=lambda kv: -len(kv[0]))),
         longest=max(len(k) for k in entries),
@@ -302,12 +306,17 @@ def load_vocabulary() -> Vocabulary:
     return _validate(json.loads(text))
 
 
-def scaled(size: tuple[float, float, float], adjectives: list[str]) -> tuple[float, float, float]:
-    """``size`` scaled by the size words among ``adjectives`` ("a giant tortoise", "a tiny dragon")."""
+def scaled(size: tuple[float, float, float], adjectives: list[str], bounds: str | None = None) -> tuple[float, float, float]:
+    """``size`` scaled by the size words among ``adjectives`` ("a giant tortoise", "a tiny dragon"),
+    kept within the ``size_word_bounds`` of that name when given ("a small fridge" is an
+    under-counter one, "a tall man" no giant)."""
     factor = 1.0
-    table = load_vocabulary().size_words
+    vocabulary = load_vocabulary()
     for adjective in adjectives:
-        factor *= table.get(adjective.lower(), 1.0)
+        factor *= vocabulary.size_words.get(adjective.lower(), 1.0)
+    if bounds is not None:
+        lo, hi = vocabulary.size_word_bounds[bounds]
+        factor = min(max(factor, lo), hi)
     return (round(size[0] * factor, 4), round(size[1] * factor, 4), round(size[2] * factor, 4))
 
 

@@ -33,12 +33,80 @@ def _windows(m: Model, x0, x1, z0, z1, y: float, facing: int, floors: int, along
                 m.box("concrete", (s0, a - 0.05, lo - 0.06), (s1, b + 0.05, lo), rounded=0.0)
 
 
+def _dome(m: Model) -> None:
+    """A dome on a low ring wall (a habitat dome, an igloo, a geodesic dome): ribs over the
+    shell, a ring of round windows and an entrance tunnel toward the viewer."""
+    m.main = "wall"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    tunnel = 0.22 * D
+    R, Ry, cy = W, D - 0.5 * tunnel, 0.5 * tunnel  # the shell leaves the tunnel room in front
+    ring = 0.12 * H
+    quarter = np.linspace(0.0, np.pi / 2, 10)
+    shell = [(np.cos(t), ring + (H - ring) * np.sin(t)) for t in quarter[:-1]] + [(0.02, H)]
+    m.lathe("wall", [(1.0, 0.0), *shell], centre=(0, cy, 0), scale=(R, Ry))
+    m.lathe("dark_metal", [(1.02, 0.0), (1.02, ring)], centre=(0, cy, 0), scale=(R, Ry), fraction=0.8)
+    rib = 0.012 * max(R, H) + 0.01
+    for k in range(6):  # meridian ribs from the ring up to the crown
+        a = np.pi * k / 6
+        for t0, t1 in zip(quarter[:-1], quarter[1:]):
+            p0 = (np.cos(t0) * R * np.cos(a), cy + np.cos(t0) * Ry * np.sin(a), ring + (H - ring) * np.sin(t0))
+            p1 = (np.cos(t1) * R * np.cos(a), cy + np.cos(t1) * Ry * np.sin(a), ring + (H - ring) * np.sin(t1))
+            for sign in (1, -1):
+                q0 = (sign * p0[0], cy + sign * (p0[1] - cy), p0[2])
+                q1 = (sign * p1[0], cy + sign * (p1[1] - cy), p1[2])
+                m.cylinder("dark_metal", q0, q1, rib, fraction=0.3)
+    t = np.pi / 5  # windows a fifth of the way up the shell, between the ribs
+    for k in range(6):
+        a = np.pi * (k + 0.5) / 6 + np.pi
+        if abs(np.sin(a) + 1) < 0.3:
+            continue  # none over the entrance
+        x, y = 0.99 * np.cos(t) * R * np.cos(a), cy + 0.99 * np.cos(t) * Ry * np.sin(a)
+        m.ball("glass", (x, y, ring + (H - ring) * np.sin(t)), (0.12 * R, 0.12 * Ry, 0.1 * H), fraction=0.4)
+    door_w, door_h = min(0.35 * R, 1.2), min(0.45 * H, 2.4)
+    m.box("wall", (-door_w, -D, 0), (door_w, cy - 0.8 * Ry, door_h), rounded=0.2 * door_w)
+    m.box("dark_metal", (-0.7 * door_w, -D - 0.01, 0), (0.7 * door_w, -D + 0.02, 0.85 * door_h))
+
+
+def _pagoda(m: Model) -> None:
+    """Tiers of walls each under a wide roof with a lifted rim, narrowing upward, the ground tier
+    tallest, a spire on top and a door toward the viewer: a pagoda, not an office block."""
+    m.main = "wall"
+    tiers = 3 if m.sz < 8.0 else 5
+    spire = 0.12 * m.sz
+    heights = np.array([1.6] + [1.0] * (tiers - 1))
+    heights *= (m.sz - spire) / heights.sum()
+    c = np.sqrt(0.5)
+    turn = P.affine(np.array([[c, -c, 0.0], [c, c, 0.0], [0.0, 0.0, 1.0]]), (0.0, 0.0, 0.0))  # a lathe's square, edge on
+    z0 = 0.0
+    for k, h in enumerate(heights):
+        shrink = 1.0 - 0.45 * k / max(1, tiers - 1)
+        hx, hy = 0.36 * m.sx * shrink, 0.36 * m.sy * shrink
+        eave = z0 + h - 0.4 * heights[-1]
+        m.box("wall", (-hx, -hy, z0), (hx, hy, eave), rounded=0.0)
+        # the roof: a square frustum broad at the eaves, its rim lifted
+        eave_x, eave_y = min(0.5 * m.sx, 1.45 * hx), min(0.5 * m.sy, 1.45 * hy)
+        rise = 0.4 * heights[-1]
+        roof = P.lathe([(np.sqrt(2), eave), (np.sqrt(2), eave + 0.2 * rise), (0.6 * np.sqrt(2), eave + 0.6 * rise),
+                        (0.5 * np.sqrt(2), eave + rise)], 4)
+        m.add("roof", P.transform(P.transform(roof, turn), P.affine(np.diag([eave_x, eave_y, 1.0]), (0, 0, 0))))
+        z0 += h
+    m.cylinder("brass", (0, 0, z0), (0, 0, m.sz), 0.05 * min(m.sx, m.sy), 0.01)
+    door = min(1.2, 0.25 * m.sx)
+    m.box("dark_wood", (-door / 2, -0.36 * m.sy - 0.03, 0), (door / 2, -0.36 * m.sy + 0.01, min(2.2, 0.6 * heights[0])), rounded=0.0)
+
+
 def building(m: Model) -> None:
     if m.named("castle", "fort", "fortress", "citadel", "keep", "stronghold"):
         _castle(m)
         return
     if m.named("church", "chapel", "cathedral", "kirk", "basilica"):
         _church(m)
+        return
+    if m.named("dome", "domed", "igloo"):
+        _dome(m)
+        return
+    if m.named("pagoda"):
+        _pagoda(m)
         return
     m.main = "wall"
     parapet = min(1.0, 0.05 * m.sz)

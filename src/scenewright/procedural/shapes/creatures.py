@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from scenewright.analysis.composition.posture import SIT_HEIGHT, posture_in
+from scenewright.analysis.composition.posture import OWN_SEAT, SIT_HEIGHT, STOOL_HEIGHT, posture_in
 from scenewright.procedural import parts as P
 from scenewright.procedural.builder import Model
 
@@ -344,17 +344,27 @@ def figure(m: Model) -> None:
     if posture is None:
         _standing(m)
         return
-    # Draw the standing person at the size the pose was folded from, then fold it.
-    w, d, h = m.sx, m.sy, m.sz
+    # Draw the standing person at the size the pose was folded from, then fold it (onto the
+    # stool of its own when the text named no seat).
+    stool = STOOL_HEIGHT if posture == "sitting" and OWN_SEAT in m.text.lower() and m.sz > 2 * STOOL_HEIGHT else 0.0
+    w, d, h = m.sx, m.sy, m.sz - stool
     standing = (w, _DEPTH * h / SIT_HEIGHT, h / SIT_HEIGHT) if posture == "sitting" else (w, h, d)
     inner = Model(standing, m.style, m.rng, main=m.main, name=m.name)
     inner.text = m.text
     _standing(inner)
     fold = _sit if posture == "sitting" else _lie
+    lift = P.affine(np.eye(3), (0.0, 0.0, stool))
     for role, parts in inner.parts.items():
         for part in parts:
-            m.add(role, fold(part, inner))
+            m.add(role, P.transform(fold(part, inner), lift) if stool else fold(part, inner))
     m.main = inner.main
+    if stool:
+        seat_y, r = 0.35 * inner.sy, min(0.2, 0.45 * w)
+        m.cylinder("dark_wood", (0, seat_y, stool - 0.04), (0, seat_y, stool), r, r, fraction=0.5)
+        for a in (np.pi / 2, np.pi / 2 + 2 * np.pi / 3, np.pi / 2 + 4 * np.pi / 3):
+            foot = (0.9 * r * np.cos(a), seat_y + 0.9 * r * np.sin(a), 0.0)
+            m.cylinder("dark_wood", foot, (0.6 * r * np.cos(a), seat_y + 0.6 * r * np.sin(a), stool - 0.04), 0.02, 0.02,
+                       fraction=0.3)
 
 
 #: A standing person's depth as a share of their height (the catalogue's figure: 0.3 of 1.75 m).

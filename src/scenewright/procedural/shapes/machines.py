@@ -708,6 +708,16 @@ def _scroll(m: Model) -> None:
     f.box("accent", (0.45 * L, -0.62 * A, -0.42 * r), (0.55 * L, -0.58 * A, 0.42 * r), rounded=0.0)
 
 
+def _helmet(m: Model) -> None:
+    """A helmet: a rounded shell, a rim round its edge and a dark visor across the front."""
+    m.main = "paint"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    shell = [(1.0, 0.0), (0.99, 0.25 * H), (0.9, 0.55 * H), (0.65, 0.82 * H), (0.3, 0.97 * H), (0.02, H)]
+    m.lathe("paint", shell, scale=(W, D))
+    m.lathe("dark_plastic", [(1.02, 0.0), (1.02, 0.08 * H)], scale=(W, D), fraction=0.7)
+    m.box("dark_plastic", (-0.6 * W, -D * 1.0, 0.2 * H), (0.6 * W, -0.55 * D, 0.55 * H), rounded=0.1 * W)
+
+
 def _toolbox(m: Model) -> None:
     m.main = "paint"
     W, D, H = m.sx / 2, m.sy / 2, m.sz
@@ -971,7 +981,7 @@ def tool(m: Model) -> None:
     wrench, a long-handled tool (shovel, fork, rake, broom, golf club), a sword, a lens, papers
     or a scroll, a telescope, a traffic cone, a trophy, a radio, a weathervane, a skateboard,
     a tyre, a spoked wheel, a microscope, a skull, a till, a power tool, a compass, shears, a tape measure, a
-    grindstone on its frame, a shoemaker's last, a potter's wheel, a gadget; else a toolbox. The variant named first
+    grindstone on its frame, a shoemaker's last, a potter's wheel, a helmet, a gadget; else a toolbox. The variant named first
     wins ("radio scanner" is a radio)."""
     variants = (
         (("anvil",), _anvil),
@@ -1003,6 +1013,7 @@ def tool(m: Model) -> None:
         # after the names that hold "wheel" as a modifier ("wheel gun"): a tie goes to the earlier
         (("wheel", "bicycle wheel", "bike wheel", "cartwheel", "cart wheel", "wagon wheel"), _wheel),
         (("toolbox", "tool box", "tool chest", "toolkit", "kit"), _toolbox),
+        (("helmet", "hard hat", "hardhat", "crash helmet"), _helmet),
         (("gadget", "device", "remote", "walkie-talkie", "scanner", "detector", "controller", "calculator",
           "phone", "tablet"), _gadget),
     )

@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from scenewright.procedural.builder import Model
-from scenewright.procedural.shapes.buildings import _crane, _dish, _windmill
+from scenewright.procedural.shapes.buildings import _crane, _dish, _dome, _windmill
 from scenewright.procedural.shapes.props import _basket, _chest, _creel
 
 
@@ -318,9 +318,10 @@ def _ramp(m: Model) -> None:
         m.box("wood", (-W + deck + run, -D, 0), (W - deck - run, D, 0.01 * H), rounded=0.0)
 
 def structure(m: Model) -> None:
-    """A large open structure; its name picks it: ferris wheel, windmill, crane, carousel,
+    """A large open structure; its name picks it: dome, ferris wheel, windmill, crane, carousel,
     platform, stage, scaffold, launch pad, grandstand, siege engine, skate ramp; else a truss gantry."""
     variants = (
+        (("dome", "igloo", "geodesic dome", "habitat dome", "dome habitat"), _dome),
         (("windsock", "wind sock", "wind cone"), _windsock),
         (("satellite dish", "radar dish", "radar", "dish", "radio telescope"), _dish),
         (("ferris wheel", "big wheel", "observation wheel", "wheel"), _ferris_wheel),
