@@ -5,8 +5,8 @@ The group's main object (the one most relations point at) stands at the origin. 
 object goes where its strongest relation says — on its support, to the named side of its
 target, within reach for ``near`` — targets first, and is pushed outward until its footprint
 is clear. Objects facing a target, and seats beside one, are turned toward it. Where a
-relation leaves a degree free, the roles decide: a seat near a desk or table pulls up in
-front of it, a nightstand beside a bed stands at the bed's head.
+relation leaves a degree free, the roles decide: a seat near a desk or table, and a person near
+what they work at, pull up in front of it, a nightstand beside a bed stands at the bed's head.
 """
 
 from __future__ import annotations
@@ -148,9 +148,12 @@ def place_related(
             z = t.z + t.h / 2 + obj.size[2] / 2 + (ABOVE if rel == "above" else 0.0)
             placed[obj.id] = Footprint(dx, dy, z, t.yaw, obj.size)
             return
-        seat_at_table = roles.kind(obj.category) in roles.SEATS and roles.kind(by_id[anchored.target].category) in (
+        target_kind = roles.kind(by_id[anchored.target].category)
+        seat_at_table = roles.kind(obj.category) in roles.SEATS and target_kind in (
             roles.DESKS | roles.TABLES | roles.COFFEE_TABLES
         )
+        # one who works at a desk, a console or a stove stands (or sits) at its front, turned to it
+        seat_at_table = seat_at_table or (obj.category == "figure" and target_kind in roles.WORKPLACES)
         if rel == "side of":
             left, right = side_use[(anchored.target, "left of")], side_use[(anchored.target, "right of")]
             rel = "left of" if left <= right else "right of"
