@@ -2,6 +2,8 @@
 what hangs, sides named by a possessive, fronted pronouns, participles and relatives, people on
 seats, where-clauses, side by side."""
 
+import pytest
+
 from scenewright.analysis.parser import parse_scene
 
 
@@ -198,3 +200,15 @@ def test_a_possessive_before_the_target_is_no_verb():
 def test_around_a_persons_feet_is_around_the_person():
     found = rels("An old woman scatters grain for a few hens around her feet.")
     assert {("hen_1", "face to", "woman_1"), ("hen_2", "face to", "woman_1")} <= found
+
+
+@pytest.mark.parametrize(
+    ("text", "seated", "on_seat"),
+    [
+        ("A shepherd shears a ewe on a low stool by the pen.", "shepherd_1", True),
+        ("A girl strokes a kitten on the sofa.", "cat_1", True),
+    ],
+)
+def test_on_a_seat_after_an_animal_too_big_for_it_seats_the_one_who_acts(text, seated, on_seat):
+    found = rels(text)
+    assert any(s == seated and r == "on" and t.startswith(("stool", "sofa")) for s, r, t in found) == on_seat, found

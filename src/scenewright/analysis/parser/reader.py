@@ -1372,6 +1372,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # "a smith hammers a horseshoe on the anvil", "a cook stirs a pot over the fire": the
                 # thing acted on is there (its doer by it: :meth:`_do_deeds`)
                 srcs = [acted]
+            elif kind == "on" and acted is not None and isinstance(target, list) and self._doer_seated(c, acted, target[0]):
+                # "a woman milks a goat on a stool": the goat is too big for the stool; she sits on it
+                srcs = [d for d in c.deeds[-1][0] if self._person_at(d)]
             elif kind == "opposite" and self._across_from_doer(c, target, acted, last_event_end):
                 # "two dogs watch the flock across from them": the flock is across from the dogs;
                 # "they queue at a kiosk across from it": the kiosk (no kiosk is across from itself)
@@ -1391,6 +1394,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             kind = "near"  # "a girl fills a jug at the pump": by what she fills, not in it
         p.kind, p.srcs = kind, srcs
         return None
+
+    def _doer_seated(self, c: _Clause, acted: int, seat: int) -> bool:
+        """Whether "on" a seat after an animal acted on puts the person who acts on the seat: the
+        animal's footprint is larger than the seat's ("milks a goat on a stool", not "strokes a
+        cat on the sofa")."""
+        doers = c.deeds[-1][0] if c.deeds else []
+        if not self._living(acted) or not any(self._person_at(d) for d in doers) or not self._carrier(seat, ("seats",)):
+            return False
+        animal, host = self.groups[acted].size, self.groups[seat].size
+        return animal[0] * animal[1] > host[0] * host[1]
 
     def _across_from_doer(self, c: _Clause, target, acted: int | None, last_event_end: int) -> bool:
         """Whether "across from" a pronoun, right after what the subject acts on, looks at or is at,
