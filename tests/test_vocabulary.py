@@ -237,3 +237,9 @@ def test_a_short_word_in_ish_names_a_kind_and_a_long_one_describes():
     assert objects("A finish ribbon is stretched between two stakes.")["finish ribbon"][0] == GENERIC
     found = {o.name for o in parse_scene("A greenish bottle and a bluish jug stand on the shelf.").objects}
     assert {"bottle", "jug"} <= found
+
+
+def test_a_word_for_a_machine_and_a_bird_is_the_bird_when_it_does_what_birds_do():
+    got = {o.id: o.category for o in parse_scene("Three cranes wade by the lake. A crane lifts a crate onto the pier.").objects}
+    assert [got[k] for k in ("crane_1", "crane_2", "crane_3")] == ["bird"] * 3
+    assert got["crane_4"] == "crane"

@@ -372,6 +372,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a stone path", "a glass roof": an adjective here
         if s > 0 and toks[s - 1].text in _PROJECTED and cat not in _SHOWS_PROJECTION:
             cat, entry = "hologram", None  # "holographic koi" are light, not fish: place and size them as one
+        animal = vocabulary.animal_senses.get(singular(words[-1])) if len(words) == 1 else None
+        if animal is not None and (_verb_after(toks, e) or ("",))[0] in vocabulary.animal_only_verbs:
+            cat, entry = animal.category, animal  # "two cranes wade in the reeds": the birds
         if singular(words[-1]) == "one" and mentions and (entry is None or entry.category == GENERIC):
             # "a tall pine tree ..., with a few smaller ones": more of the thing named before
             # (the sentence's subject, not the landmark it stands by)

@@ -76,6 +76,10 @@ class Vocabulary:
     #: A word's sense in a setting: word → (the word it means there, the settings where it does):
     #: "an island" in a kitchen is a kitchen island, "a range" there a cooker.
     setting_senses: dict[str, tuple[str, frozenset[str]]] = field(default_factory=dict)
+    #: A word the catalogue files as a thing that also names an animal, read as the animal when
+    #: its verb is one only animals do ("two cranes wade in the reeds": birds, not machines).
+    animal_senses: dict[str, Entry] = field(default_factory=dict)
+    animal_only_verbs: frozenset[str] = frozenset()
     #: What people do: an agent noun nobody listed that does one of these is a person.
     person_verbs: frozenset[str] = frozenset()
     #: Moods and looks only people have ("a bored attendant"): an agent noun with one is a person.
@@ -263,6 +267,11 @@ def _validate(raw: dict) -> Vocabulary:
             **{w: "side of" for w in people.get("body_parts_beside", ())},  # "his helmet at his side"
         },
         part_owners={k: frozenset(v) for k, v in raw.get("part_owners", {}).items() if k != "about"},
+        animal_senses={
+            k: Entry(v[0], (float(v[1]), float(v[2]), float(v[3])), "ground")
+            for k, v in raw.get("animal_senses", {}).items() if k not in ("about", "verbs")
+        },
+        animal_only_verbs=frozenset(raw.get("animal_senses", {}).get("verbs", ())),
         setting_senses={
             k: (v["as"], frozenset(v["in"])) for k, v in raw.get("setting_senses", {}).items() if k != "about"
         },
