@@ -1196,3 +1196,8 @@ def test_an_unlisted_thing_after_above_the_is_a_thing():
     # "a hook swings above the grease trough": what something hangs over stands in the scene
     assert "grease trough" in names("A rusty hook swings above the grease trough.")
     assert names("A hawk circles above the horizon.") == {"hawk"}
+
+
+def test_a_colour_a_light_glows_in_is_its_look():
+    got = {o.name: o.description for o in parse_scene("Two paper lanterns glow red over the gate, and a lamp glows by the bed.").objects}
+    assert got["paper lantern"] == "paper lantern glowing red" and got["lamp"] == "lamp"

@@ -2386,10 +2386,14 @@ def _units_before(toks: list[_Tok], k: int) -> int | None:
 #: Markers after which a bare plural is a crowd ("packed with fans", "full of goldfish").
 _CROWDED = {("packed", "with"), ("crowded", "with"), ("full", "of"), ("filled", "with"), ("teeming", "with"),
             ("swarming", "with"), ("thronged", "with"), ("crammed", "with")}  # fmt: skip
+#: A light's colour is its look after a finite verb too ("four habitats glow orange"), written as
+#: the participle ("glowing orange").
+_FINITE_LOOKS = {"glows": "glowing", "glow": "glowing", "gleams": "gleaming", "gleam": "gleaming", "shines": "shining",
+                 "shine": "shining"}  # fmt: skip
 #: Participles that describe the look of the noun before them ("painted red", "made of steel").
 _LOOK_PARTICIPLES = {"glowing", "gleaming", "shining", "painted", "covered", "made", "coated", "upholstered",
                      "carved", "lacquered", "varnished", "dyed", "tinted", "trimmed", "wrapped", "draped",
-                     "clad", "plated", "cast", "forged", "woven", "built", "lit", "finished"}  # fmt: skip
+                     "clad", "plated", "cast", "forged", "woven", "built", "lit", "finished", *_FINITE_LOOKS}  # fmt: skip
 _LOOK_PREPOSITIONS = {"in", "of", "from", "with"}
 #: After these, every noun is what the thing is made of ("made of steel and glass").
 _MADE_OF = {("made", "of"), ("made", "from"), ("built", "of"), ("built", "from"), ("carved", "from"),
@@ -2425,4 +2429,5 @@ def _post_description(toks: list[_Tok], end: int, starts: set[int]) -> tuple[lis
             words[-1] += "-" + t.text
         else:
             words.append(t.text)
+    words[0] = _FINITE_LOOKS.get(words[0], words[0])
     return words, k
