@@ -243,3 +243,9 @@ def test_a_word_for_a_machine_and_a_bird_is_the_bird_when_it_does_what_birds_do(
     got = {o.id: o.category for o in parse_scene("Three cranes wade by the lake. A crane lifts a crate onto the pier.").objects}
     assert [got[k] for k in ("crane_1", "crane_2", "crane_3")] == ["bird"] * 3
     assert got["crane_4"] == "crane"
+
+
+def test_a_plural_after_of_is_a_noun_not_a_verb():
+    """"a cluster of hot dog stands" are stands, not dogs that stand."""
+    got = {o.category for o in parse_scene("A ferris wheel turns above a cluster of hot dog stands.").objects}
+    assert "market_stall" in got and "dog" not in got

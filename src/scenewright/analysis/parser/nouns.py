@@ -119,7 +119,8 @@ def _match_at(toks: list[_Tok], i: int) -> tuple[int, str, Entry | None] | None:
         # a catalogue head keeps its kind ("a toy chest" is a chest) unless the vocabulary says
         # otherwise ("an arcade cabinet"); "a fig plant stands" has a verb, not a plant stand
         verb = length > 1 and words[-1] != singular(words[-1]) and singular(words[-1]) in _FINITE
-        verb = verb and not _counted_plural(toks, i)  # "two music stands" are stands
+        # "two music stands", "a cluster of hot dog stands" are stands
+        verb = verb and not _counted_plural(toks, i) and not (i > 0 and toks[i - 1].text == "of")
         head_known = length > 1 and match_phrase(words[-1:]) and not vocabulary.over_catalogue(words)
         if entry is not None and not verb and not head_known:
             return i + length, entry.category, entry
