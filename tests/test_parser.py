@@ -786,3 +786,9 @@ def test_every_annotated_text_reads_when_cut_short_or_stripped_of_commas():
         for cut in (len(words) // 3, len(words) // 2, 2 * len(words) // 3):
             parse_scene(" ".join(words[:cut]))
         parse_scene(" ".join(words).replace(",", ""))
+
+
+def test_a_person_on_a_desk_keeps_a_person_s_size():
+    """Things that stand on the floor shrink to a tabletop kind on a desk; a person sitting on it does not."""
+    by = {o.category: o.size for o in parse_scene("A clerk sits on the edge of the desk.").objects}
+    assert by["figure"][2] > 1.5

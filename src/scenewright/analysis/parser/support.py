@@ -220,6 +220,8 @@ def fit_on_hosts(
             continue
         if host.size[2] > _FURNITURE_HEIGHT or thing.category in _FLOOR_FURNITURE:
             continue
+        if catalogue[thing.category].shape in _LIVING_SHAPES:
+            continue  # "a reporter sits on the edge of the desk": a person on a desk is no figurine
         limit = _ON_TOP_HEIGHT * host.size[2]
         if thing.size[2] > limit:
             scale[thing.id] = min(scale.get(thing.id, 1.0), limit / thing.size[2])
