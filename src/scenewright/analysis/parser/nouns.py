@@ -745,8 +745,8 @@ def _worn(toks: list[_Tok], s: int, e: int) -> bool:
 
 def worn_description(toks: list[_Tok], end: int) -> list[str]:
     """What a person is said to wear right after their noun ending at ``end`` ("a vet in a green
-    coat", "with a red cap", "wearing a yellow hat and grey overalls"), as words for their description, so the figure
-    is dressed in the colours the text gives; [] when no clothing follows."""
+    coat", "with a red cap", "wearing a yellow hat and grey overalls"), as words for their
+    description, so the figure is dressed in the colours the text gives; [] when none follows."""
     if end >= len(toks) or toks[end].text not in _WEARING | {"with"}:
         return []
     clothing = load_vocabulary().clothing
@@ -759,10 +759,13 @@ def worn_description(toks: list[_Tok], end: int) -> list[str]:
         elif toks[k].text == "and" and last != k - 1:
             break  # "in a green coat and a cap", not "in green and a dog"
         k += 1
-    if last is None:
-        return []
+    return [] if last is None else _written(toks[end : last + 1])
+
+
+def _written(toks: list[_Tok]) -> list[str]:
+    """The words of ``toks`` as written, a hyphened word whole ("neon-pink")."""
     words: list[str] = []
-    for t in toks[end : last + 1]:
+    for t in toks:
         if t.joined and words:
             words[-1] += "-" + t.text
         else:
@@ -2424,11 +2427,6 @@ def _post_description(toks: list[_Tok], end: int, starts: set[int]) -> tuple[lis
         k += 1
     if k == first:
         return [], end  # "a table covered in books": contents, no look
-    words: list[str] = []
-    for t in toks[end:k]:
-        if t.joined and words:  # "neon-pink"
-            words[-1] += "-" + t.text
-        else:
-            words.append(t.text)
+    words = _written(toks[end:k])
     words[0] = _FINITE_LOOKS.get(words[0], words[0])
     return words, k
