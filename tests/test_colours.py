@@ -17,6 +17,7 @@ from scenewright.procedural.material import MATERIALS
         ("in dark walnut and pale gold leaf", ["dark walnut", "pale gold"]),  # a material's own colour
         ("a crimson-and-cream check", ["crimson", "cream"]),
         ("red, red and more red", ["red"]),
+        ("faded reds and ochres", ["red", "ochre"]),  # plurals name the colour
         ("a quiet evening", []),
     ],
 )

@@ -333,6 +333,8 @@ def test_style(text, style):
         ("A lighthouse on a cliff, drawn in red.", "sketch in red"),
         ("A village, knitted in wool, three sheep on a hill.", "textile"),
         ("A cart, drawn into the yard by a mule.", "realistic"),
+        ("A bakery shown as a panel from a graphic novel.", "comic"),  # a picture noun's "from" a look
+        ("A party with a man dressed as a comic book hero.", "realistic"),
     ],
 )
 def test_style_of_a_picture_from_its_medium(text, style):
@@ -349,6 +351,11 @@ def test_style_of_a_picture_from_its_medium(text, style):
         ("A harbour in the style of a Blue Period painting.", "painting"),  # a capital: a name, no colour
         ("A farmyard drawn as a woodcut with a red barn and a white fence.", "engraving"),  # the scene's colours
         ("A bathhouse rendered as a mosaic of small marble tiles.", "mosaic"),  # one material: what it is made of
+        ("A tram depot as a Soviet propaganda poster in red and black.", "poster in red and black"),
+        ("A shipyard as a tapestry in faded reds and blues.", "textile in red and blue"),  # shaded, plural
+        ("A garden party as a stained-glass window in ruby and emerald.", "mosaic in ruby and emerald"),
+        ("A snowy square in the style of a Christmas card, in crimson and holly green.",
+         "realistic in crimson and green"),  # colours, no look
         ("A vineyard as a Persian miniature, in turquoise, saffron and dark green.",
          "painting in turquoise and saffron"),  # as many as a style's name holds
     ],

@@ -32,6 +32,7 @@ COLOURS: dict[str, tuple[float, float, float]] = {
     "ochre": (0.8, 0.55, 0.18), "sienna": (0.63, 0.32, 0.18), "umber": (0.39, 0.28, 0.18),
     "vermilion": (0.89, 0.26, 0.2), "ultramarine": (0.15, 0.2, 0.65), "lapis": (0.15, 0.25, 0.6),
     "saffron": (0.96, 0.77, 0.19), "sepia": (0.44, 0.26, 0.08), "verdigris": (0.26, 0.6, 0.5),
+    "ruby": (0.7, 0.07, 0.2), "sapphire": (0.06, 0.2, 0.6),
 }  # fmt: skip
 
 #: Words that shade a colour word after them ("dark blue", "pale gold").
@@ -75,10 +76,14 @@ def colour_of(match: re.Match) -> tuple[float, float, float]:
     return MODIFIERS[modifier](COLOURS[name]) if modifier else COLOURS[name]
 
 
+_WORDS = {*COLOURS, *MATERIAL_COLOURS, *MODIFIERS}
+
+
 @lru_cache(maxsize=1)
 def palette_re() -> re.Pattern:
-    """A run of colour and material words side by side ("cobalt blue", "white porcelain", "gold leaf" → gold)."""
-    word = r"(?:(?:%s)[\s-]+)?(?:%s)" % (
+    """A run of colour and material words side by side ("cobalt blue", "white porcelain", "gold leaf" → gold;
+    "reds and blues" are colours too)."""
+    word = r"(?:(?:%s)[\s-]+)?(?:%s)s?" % (
         "|".join(MODIFIERS), "|".join(sorted({*COLOURS, *MATERIAL_COLOURS}, key=len, reverse=True)))
     return re.compile(rf"\b{word}(?:[\s-]+{word})*\b")
 
@@ -89,7 +94,7 @@ def palette(text: str) -> list[tuple[str, tuple[float, float, float]]]:
     "gold leaf"); a colour word before a material names the colour ("white porcelain" is white)."""
     found: dict[tuple[float, float, float], str] = {}
     for run in palette_re().finditer(text.lower()):
-        words = run[0].replace("-", " ").split()
+        words = [w[:-1] if w not in _WORDS and w[:-1] in _WORDS else w for w in run[0].replace("-", " ").split()]
         colour = COLOUR_RE.search(" ".join(words))
         if colour is not None:  # the colour words of the run, its materials only what they are made of
             rgb, words = colour_of(colour), [w for w in words if w in COLOURS or w not in MATERIAL_COLOURS]

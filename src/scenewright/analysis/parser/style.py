@@ -95,7 +95,10 @@ def _media(text: str) -> list[_Medium]:
                              normalise(m["verb"] or m["builds"] or "") or None, whole))
     for m in _AS.finditer(low):
         words, end = _noun_phrase(m["phrase"])
-        if _names_a_look(words) and all(m.start("phrase") != f.span[0] for f in found):
+        head = _without_colours(words)  # a look's noun, or a picture noun with a look's word ("a stained-glass window")
+        if (_names_a_look(head) or head[-1:] and head[-1] in media_heads() and _holds_a_look(head)) and all(
+            m.start("phrase") != f.span[0] for f in found
+        ):
             found.append(_Medium(words, (m.start("phrase"), m.start("phrase") + end)))
     clause = re.split(r"[.,:;!?()]|\s[-–—]\s", low, maxsplit=1)[0]
     start = re.match(r"^\W*(?:(?:an?|the)\s+)?", clause).end()
@@ -146,9 +149,29 @@ def without_media(text: str) -> str:
 
 
 def _names_a_look(phrase: list[str]) -> bool:
-    """Whether a phrase ends in a look's word ("a mezzotint", "a floor mosaic"): the picture's own noun."""
-    tail = f" {' '.join(phrase)}"
+    """Whether a phrase ends in a look's word ("a mezzotint", "a floor mosaic"): the picture's own noun, the
+    colours it is in aside ("a propaganda poster in red and black")."""
+    tail = f" {' '.join(_without_colours(phrase))}"
     return any(tail.endswith(f" {w}") for look in load_looks().values() for w in (*look.words, *look.styled))
+
+
+def _without_colours(phrase: list[str]) -> list[str]:
+    """A phrase without the "in ..." or "on ..." that ends it and says only its colours."""
+    for at in range(len(phrase) - 1, 0, -1):
+        if phrase[at] in ("in", "on"):
+            tail = " ".join(phrase[at + 1 :])
+            if palette_re().search(tail) and _only_colours(tail):
+                return phrase[:at]
+            break
+    return phrase
+
+
+def _only_colours(words: str) -> bool:
+    """Whether words say colours and nothing else: filler words, and a word or two shading them ("all gold leaf
+    and lapis blue", "faded reds and holly green")."""
+    rest = palette_re().sub(" | ", normalise(words)).split()
+    shading = [w for i, w in enumerate(rest) if w not in _PALETTE_FILLERS | {"|"}]
+    return len(shading) <= 2 and all(rest.index(w) + 1 < len(rest) and rest[rest.index(w) + 1] == "|" for w in shading)
 
 
 def _holds_a_look(phrase: list[str]) -> bool:
@@ -164,14 +187,15 @@ def _goes_on(out: list[str], word: str, rest: str, joins: tuple[str, ...]) -> bo
     porcelain"); ``joins`` the words of these that may go on."""
     if word not in joins:
         return False
-    if word in ("of", "from"):
-        return bool(out) and (out[-1] in media_parts() or out[-1] in _COLOUR_NOUNS)
     if not out:
         return False
-    rest = re.sub(r"^(?:(?:flat|bold|loud|wild|soft|rich|plain|pure|strong)\s+)+", "", rest)
     padded = f"{rest} "
-    return palette_re().match(rest) is not None or any(
-        padded.startswith(f"{w} ") for look in load_looks().values() for w in (*look.words, *look.styled))
+    look_next = any(padded.startswith(f"{w} ") for look in load_looks().values() for w in (*look.words, *look.styled))
+    if word in ("of", "from"):  # "a panel from a graphic novel", not "a quilted panel of an orchard"
+        return out[-1] in media_parts() or out[-1] in _COLOUR_NOUNS or (out[-1] in media_heads() and look_next)
+    # a word or two may shade the colours: "in faded reds and blues", "in deep sea greens"
+    starts = [0, *(m.end() for m in re.finditer(" ", rest))][:3]
+    return look_next or any(palette_re().match(rest, at) for at in starts)
 
 
 def _noun_phrase(words: str, joins: tuple[str, ...] = ("of", "from", "and", "in", "on")) -> tuple[list[str], int]:
@@ -199,8 +223,8 @@ def _palette(text: str, media: list[_Medium]) -> list[str]:
     named: list[str] = []
     for medium in media:
         phrases, end = [_common_words(text, *medium.span)], medium.span[1]
-        while (after := _PALETTE_AFTER.match(text, end)) and palette_re().search(after[1].lower()) and not (
-            set(palette_re().sub(" ", normalise(after[1])).split()) - _PALETTE_FILLERS
+        while (after := _PALETTE_AFTER.match(text, end)) and palette_re().search(after[1].lower()) and _only_colours(
+            after[1]
         ):
             phrases.append(_common_words(text, *after.span(1)))
             end = after.end()
