@@ -350,6 +350,8 @@ def test_style_of_a_picture_from_its_medium(text, style):
         ("Golden fields drawn as a woodcut in black and red.", "engraving in black and red"),
         ("A harbour in the style of a Blue Period painting.", "painting"),  # a capital: a name, no colour
         ("A farmyard drawn as a woodcut with a red barn and a white fence.", "engraving"),  # the scene's colours
+        ("A beach hut, as blue as the sea, with a deckchair.", "realistic"),  # a comparison, no picture
+        ("A barn painted in red, with a white fence and two cows.", "realistic"),  # paint makes things too
         ("A bathhouse rendered as a mosaic of small marble tiles.", "mosaic"),  # one material: what it is made of
         ("A tram depot as a Soviet propaganda poster in red and black.", "poster in red and black"),
         ("A shipyard as a tapestry in faded reds and blues.", "textile in red and blue"),  # shaded, plural

@@ -26,8 +26,8 @@ _MADE_AS = re.compile(
     r"\b(?:(?P<verb>drawn|rendered|painted|printed|done|made|sketched|woven|stitched|embroidered|etched|engraved|"
     r"carved|cut|shown|depicted|illustrated|imagined|pictured|styled|crafted|modelled|modeled|sculpted|knitted|"
     r"felted|dyed|glazed|inlaid)\s+(?:as|like|in|into)|(?P<builds>built|shot|photographed|filmed|captured|cast|"
-    r"moulded|molded)\s+(?:as|like)|in\s+the\s+(?:style|manner)\s+of|[,:;(]\s*(?:as|like))\s+(?:(?:an?|the)\s+)?"
-    r"(?P<manner>(?:style|manner)\s+of\s+(?:(?:an?|the)\s+)?)?(?P<phrase>[^.,:;!?()]*)"
+    r"moulded|molded)\s+(?:as|like)|(?P<style_of>in\s+the\s+(?:style|manner)\s+of)|[,:;(]\s*(?:as|like))\s+"
+    r"(?:(?:an?|the)\s+)?(?P<manner>(?:style|manner)\s+of\s+(?:(?:an?|the)\s+)?)?(?P<phrase>[^.,:;!?()]*)"
 )
 #: "as a ..." with no verb before it: the picture only when its phrase names a look ("A lavender farm as a
 #: 1950s travel poster"; not "a porter dressed as a clown").
@@ -59,13 +59,15 @@ _PALETTE_AFTER = re.compile(r"\s*[,:;]\s*(?:(?:all|in|mostly|entirely)\s+)?([^.,
 @dataclass(frozen=True)
 class _Medium:
     """A phrase that says what the picture is: its normalised words, the span of the text it is said in,
-    its verb of making, and whether it is said of the whole picture (opening the text, after a comma, "as
-    a ..."), which a phrase said of one thing ("walls painted in pastel colours") is not."""
+    its verb of making, whether it is said of the whole picture (opening the text, after a comma, "as
+    a ..."), which a phrase said of one thing ("walls painted in pastel colours") is not, and whether it
+    follows "in the style of", which says a picture whatever its words."""
 
     words: list[str]
     span: tuple[int, int]
     verb: str | None = None
     whole: bool = True
+    style_of: bool = False
 
 
 def _medium_phrases(media: list[_Medium]) -> list[tuple[str, str]]:
@@ -90,9 +92,10 @@ def _media(text: str) -> list[_Medium]:
     for m in _MADE_AS.finditer(low):
         words, end = _noun_phrase(m["phrase"])
         opens = re.search(r"(?:^|[,.:;!?(])\s*$", low[: m.start()]) is not None  # a clause of its own
-        whole = not (m["verb"] or m["builds"]) or bool(m["manner"]) or opens
-        found.append(_Medium(words, (m.start("phrase"), m.start("phrase") + max(end, _medium_end(m["phrase"]))),
-                             normalise(m["verb"] or m["builds"] or "") or None, whole))
+        style_of = bool(m["style_of"] or m["manner"])
+        verb = normalise(m["verb"] or m["builds"] or "") or None
+        span = (m.start("phrase"), m.start("phrase") + max(end, _medium_end(m["phrase"])))
+        found.append(_Medium(words, span, verb, not verb or style_of or opens, style_of))
     for m in _AS.finditer(low):
         words, end = _noun_phrase(m["phrase"])
         head = _without_colours(words)  # a look's noun, or a picture noun with a look's word ("a stained-glass window")
@@ -266,9 +269,10 @@ def detect_style(text: str, default: str = DEFAULT_STYLE) -> str:
     made = next((made_looks()[m.verb] for m in found if m.whole and m.verb in made_looks() and _says_a_medium(m.words)),
                 None)  # fmt: skip
     name = best[3] if best else made or default
-    # a phrase that names no look gives colours when only a picture is made so ("…, drawn in red"), not paint
-    # or weaving, which make things too ("A cottage, painted in white, ...")
-    said = [m for m in found if _holds_a_look(m.words) or (m.whole and (m.verb is None or m.verb in made_looks()))]
+    # a phrase that names no look gives colours after "in the style of" or when only a picture is made so
+    # ("…, drawn in red"), not paint or weaving, which make things too ("A cottage, painted in white, ..."),
+    # nor a bare ", as" ("A beach hut, as blue as the sea")
+    said = [m for m in found if _holds_a_look(m.words) or m.style_of or (m.whole and m.verb in made_looks())]
     colours = _palette(text, said)
     while colours and len(f"{name} in {' and '.join(colours)}") > MAX_STYLE_CHARS:
         colours.pop()
