@@ -335,6 +335,8 @@ def test_style(text, style):
         ("A cart, drawn into the yard by a mule.", "realistic"),
         ("A bakery shown as a panel from a graphic novel.", "comic"),  # a picture noun's "from" a look
         ("A party with a man dressed as a comic book hero.", "realistic"),
+        ("A willow-pattern plate of a river crossing, two boats on the water.", "ceramic"),  # a thing as the picture
+        ("A plate of spaghetti and two forks.", "realistic"),
     ],
 )
 def test_style_of_a_picture_from_its_medium(text, style):

@@ -220,8 +220,10 @@ def test_a_look_named_in_colours_draws_in_them():
     two = resolve_style("textile in teal and saffron")  # flat inks, with a shade and a tint of them
     assert two.name == "textile" and two.duotone is None and len(two.inks) == 4
     assert {COLOURS["teal"], COLOURS["saffron"]} < set(two.inks) and min(map(sum, two.inks)) < sum(COLOURS["teal"])
-    porcelain = resolve_style("ceramic in navy and cream")  # a look in one ink: its dark and its light
-    assert porcelain.duotone == (COLOURS["navy"], COLOURS["cream"]) and porcelain.inks is None
+    porcelain = resolve_style("ceramic in navy and teal")  # a look in one ink: its dark and its light
+    assert porcelain.duotone == (COLOURS["navy"], COLOURS["teal"]) and porcelain.inks is None
+    noir = resolve_style("textile in black and white")  # a colour with no hue: a tonal range, not two inks
+    assert noir.duotone == (COLOURS["black"], COLOURS["white"]) and noir.inks is None
     wood = resolve_style("marquetry in cherry and birch")  # a look of flat inks snaps to the named ones
     assert set(wood.inks) == {MATERIAL_COLOURS["cherry"], MATERIAL_COLOURS["birch"]}
     assert {wood.surface(role).color for role in ("wood", "fabric", "leaf", "paint")} <= set(wood.inks)

@@ -280,15 +280,18 @@ def _drawn_like(look: Look) -> Style:
 
 #: How far a one-colour palette's dark and light lie from its colour: toward black, toward white.
 SHADE, TINT = 0.45, 0.85
+#: The saturation below which a named colour has no hue of its own (white, cream, grey, black).
+NO_HUE = 0.16
 
 
 def _in_colours(style: Style, colours: list) -> Style:
     """A look drawn in the colours its name gives ("textile in indigo and ochre", "blue and white
     porcelain"). One colour is a duotone of its own shade and tint (a red chalk drawing); a look drawn in
-    one ink takes two as its dark and light (cobalt on white porcelain), a look printed in flat inks takes
-    them as its inks (two woods of a marquetry); any other look paints in them as flat inks, with the
-    darkest one's shade and the lightest one's tint for shadow and ground (a batik in indigo and ochre:
-    a blend of two hues would be a third, muddy one)."""
+    one ink takes two as its dark and light (cobalt on white porcelain), and so does any look when one of
+    the two has no hue (a film noir "all black and white", a woodcut in red on cream); a look printed in
+    flat inks takes them as its inks (two woods of a marquetry); any other look paints in them as flat inks,
+    with the darkest one's shade and the lightest one's tint for shadow and ground (a batik in indigo and
+    ochre: a blend of two hues would be a third, muddy one)."""
     def lightness(c):
         return 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2]
 
@@ -296,7 +299,7 @@ def _in_colours(style: Style, colours: list) -> Style:
     shade, tint = tuple(SHADE * x for x in dark), tuple(x + (1 - x) * TINT for x in light)
     if len(colours) == 1:
         return replace(style, inks=None, duotone=(shade, tint))
-    if len(colours) == 2 and style.duotone:
+    if len(colours) == 2 and (style.duotone or min(colorsys.rgb_to_hsv(*c)[1] for c in colours) < NO_HUE):
         return replace(style, inks=None, duotone=(dark, light))
     return replace(style, duotone=None, inks=tuple(colours) if style.inks else (shade, *colours, tint))
 
