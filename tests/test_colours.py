@@ -12,7 +12,7 @@ from scenewright.procedural.material import MATERIALS
 @pytest.mark.parametrize(
     "text, names",
     [
-        ("sage green and rust red", ["green", "red"]),  # a word before a colour word qualifies it
+        ("sage green and brick red", ["green", "red"]),  # a word before a colour word qualifies it
         ("navy blue on white linen", ["navy blue", "white"]),  # a colour before a material is the colour
         ("in dark walnut and pale gold leaf", ["dark walnut", "pale gold"]),  # a material's own colour
         ("a crimson-and-cream check", ["crimson", "cream"]),

@@ -337,6 +337,8 @@ def test_style(text, style):
         ("A party with a man dressed as a comic book hero.", "realistic"),
         ("A willow-pattern plate of a river crossing, two boats on the water.", "ceramic"),  # a thing as the picture
         ("A plate of spaghetti and two forks.", "realistic"),
+        ("A textile mill with four looms.", "realistic"),  # a look's name that names things too
+        ("A fox den done as a woven textile in rust and cream.", "textile in rust and cream"),
     ],
 )
 def test_style_of_a_picture_from_its_medium(text, style):

@@ -32,7 +32,7 @@ COLOURS: dict[str, tuple[float, float, float]] = {
     "ochre": (0.8, 0.55, 0.18), "sienna": (0.63, 0.32, 0.18), "umber": (0.39, 0.28, 0.18),
     "vermilion": (0.89, 0.26, 0.2), "ultramarine": (0.15, 0.2, 0.65), "lapis": (0.15, 0.25, 0.6),
     "saffron": (0.96, 0.77, 0.19), "sepia": (0.44, 0.26, 0.08), "verdigris": (0.26, 0.6, 0.5),
-    "ruby": (0.7, 0.07, 0.2), "sapphire": (0.06, 0.2, 0.6),
+    "ruby": (0.7, 0.07, 0.2), "sapphire": (0.06, 0.2, 0.6), "rust": (0.6, 0.25, 0.1),
 }  # fmt: skip
 
 #: Words that shade a colour word after them ("dark blue", "pale gold").
