@@ -126,11 +126,12 @@ def _length(words: list[str]) -> int:
 
 def _says_a_medium(words: list[str]) -> bool:
     """Whether a phrase after a verb of making names colours, materials or a picture ("drawn in red", "knitted
-    in wool", "sketched as a map"), not where a thing goes ("a cart, drawn into the yard")."""
+    in wool", "sketched as a postcard"), not where a thing goes ("a cart, drawn into the yard")."""
     return _says_colours(words) or bool(named_colours(" ".join(words))) or words[-1] in media_heads()
 
 
 def _says_colours(words: list[str]) -> bool:
+    """Whether a phrase names colours as such ("in loud Fauvist colours", "in shades of blue")."""
     return any(w in _COLOUR_NOUNS for w in words)
 
 
