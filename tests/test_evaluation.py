@@ -563,3 +563,5 @@ def test_a_style_annotation_counts_as_the_look_it_names():
     assert same_look("gothic", "gothic") and same_look("comic", "pop art comic")
     assert not same_look("realistic", "copperplate engraving") and not same_look("poster", "Art Deco travel poster")
     assert not same_look("realistic", "baroque glitch") and same_look("baroque glitch", "baroque glitch")
+    # the colours the reader read with the look do not change it
+    assert same_look("textile in indigo and ochre", "batik") and not same_look("textile in red", "copperplate engraving")

@@ -16,7 +16,8 @@ from gltf_validator import assert_valid
 from scenewright.cli import main
 from scenewright.folder import SceneFolder
 from scenewright.gltf import json_chunk, keep_materials, srgb_to_linear
-from scenewright.procedural.material import COLOURS, MATERIALS
+from scenewright.core.colours import COLOURS
+from scenewright.procedural.material import MATERIALS
 
 
 def to_srgb(linear) -> np.ndarray:

@@ -19,7 +19,7 @@ from scenewright.analysis.parser import (
     relation_phrases,
 )
 from scenewright.cli import main
-from scenewright.scene import RELATION_TYPES, STYLES
+from scenewright.scene import MAX_STYLE_CHARS, RELATION_TYPES, STYLES
 
 PROMPTS = Path(__file__).resolve().parents[1] / "benchmarks" / "prompts"
 
@@ -313,10 +313,62 @@ def test_style(text, style):
         ("A small print shop on a corner, its press by the window.", "realistic"),
         ("A nursery with walls painted in pastel colours and a cot.", "realistic"),
         ("A mosaic floor in a bath house, a bench along one wall.", "realistic"),
+        # "as a ..." naming a look, a part of a picture, the opening noun's "in ...", verbs that build or film
+        ("A bus station as a 1960s airline poster, three coaches at the kerb.", "poster"),
+        ("A porter dressed as a clown stands by the door.", "realistic"),
+        ("A fishing harbour as a page from a medieval bestiary, two boats at the quay.", "painting"),
+        ("A bakery in cherry and birch marquetry, two ovens along the wall.", "marquetry in cherry and birch"),
+        ("A hall with a parquetry floor and a piano.", "realistic"),  # a floor, not the picture
+        ("A railway junction, built as a small model railway, two engines in the sidings.", "diorama"),
+        ("A ski lodge photographed as a tilt-shift miniature.", "diorama"),
+        ("A museum hall where a diorama of a volcano stands by the stairs.", "realistic"),
+        # a medium's kind: cloth, glaze
+        ("A goat farm done in the style of a silk scarf in teal and saffron.", "textile in teal and saffron"),
+        ("A mountain shrine painted in ultramarine on cream porcelain.", "ceramic in ultramarine and cream"),
+        # colours said of the whole picture, not of one thing
+        ("A street fair, painted in wild Fauvist colours, with a carousel.", "fauvist"),
+        ("A kitchen, painted in warm colours, with a table.", "realistic"),
+        ("A cottage, painted in white, with a red door.", "realistic"),
+        # a verb that only makes pictures makes its look when the phrase names colours or a material
+        ("A lighthouse on a cliff, drawn in red.", "sketch in red"),
+        ("A village, knitted in wool, three sheep on a hill.", "textile"),
+        ("A cart, drawn into the yard by a mule.", "realistic"),
+        ("A bakery shown as a panel from a graphic novel.", "comic"),  # a picture noun's "from" a look
+        ("A party with a man dressed as a comic book hero.", "realistic"),
+        ("A willow-pattern plate of a river crossing, two boats on the water.", "ceramic"),  # a thing as the picture
+        ("A plate of spaghetti and two forks.", "realistic"),
+        ("A textile mill with four looms.", "realistic"),  # a look's name that names things too
+        ("A fox den done as a woven textile in rust and cream.", "textile in rust and cream"),
     ],
 )
 def test_style_of_a_picture_from_its_medium(text, style):
     assert detect_style(text) == style
+
+
+@pytest.mark.parametrize(
+    "text, style",
+    [
+        ("A fishing harbour as a page from a medieval bestiary, all vermilion and gold. Two boats.",
+         "painting in vermilion and gold"),  # an "all ..." after the medium
+        ("A fire station, as a poster in flat orange, teal and cream shapes.", "poster in orange and teal and cream"),
+        ("Golden fields drawn as a woodcut in black and red.", "engraving in black and red"),
+        ("A harbour in the style of a Blue Period painting.", "painting"),  # a capital: a name, no colour
+        ("A farmyard drawn as a woodcut with a red barn and a white fence.", "engraving"),  # the scene's colours
+        ("A beach hut, as blue as the sea, with a deckchair.", "realistic"),  # a comparison, no picture
+        ("A barn painted in red, with a white fence and two cows.", "realistic"),  # paint makes things too
+        ("A bathhouse rendered as a mosaic of small marble tiles.", "mosaic"),  # one material: what it is made of
+        ("A tram depot as a Soviet propaganda poster in red and black.", "poster in red and black"),
+        ("A shipyard as a tapestry in faded reds and blues.", "textile in red and blue"),  # shaded, plural
+        ("A garden party as a stained-glass window in ruby and emerald.", "mosaic in ruby and emerald"),
+        ("A snowy square in the style of a Christmas card, in crimson and holly green.",
+         "realistic in crimson and green"),  # colours, no look
+        ("A vineyard as a Persian miniature, in turquoise, saffron and dark green.",
+         "painting in turquoise and saffron"),  # as many as a style's name holds
+    ],
+)
+def test_the_colours_a_medium_is_named_in_are_its_palette(text, style):
+    assert detect_style(text) == style
+    assert len(style) <= MAX_STYLE_CHARS
 
 
 @pytest.mark.parametrize(

@@ -23,6 +23,7 @@ from scenewright.errors import InputError
 from scenewright.geometry import GLTF_TO_SCENE
 from scenewright.procedural import SHAPES
 from scenewright.procedural.builder import Model
+from scenewright.core.colours import COLOURS, MATERIAL_COLOURS
 from scenewright.procedural.material import described_surfaces, find_colour, find_material
 from scenewright.backends.procedural_meshes import ProceduralMeshes
 from scenewright.procedural.meshes import build_glb, build_model, choose_shape, keyword_shape
@@ -213,6 +214,25 @@ def test_a_one_ink_look_draws_every_colour_between_its_ink_and_its_paper():
     assert (tile[..., 2] > tile[..., 0]).all()  # blue, down to the ground
     # paper is lit flat and bright, not under a blue sky; a look that says nothing lights as its base
     assert (find_look("engraving").lit, find_look("voxel").lit, find_look("film noir").lit) == ("cartoon", "low-poly", "realistic")
+
+
+def test_a_look_named_in_colours_draws_in_them():
+    two = resolve_style("textile in teal and saffron")  # flat inks, with a shade and a tint of them
+    assert two.name == "textile" and two.duotone is None and len(two.inks) == 4
+    assert {COLOURS["teal"], COLOURS["saffron"]} < set(two.inks) and min(map(sum, two.inks)) < sum(COLOURS["teal"])
+    porcelain = resolve_style("ceramic in navy and teal")  # a look in one ink: its dark and its light
+    assert porcelain.duotone == (COLOURS["navy"], COLOURS["teal"]) and porcelain.inks is None
+    noir = resolve_style("textile in black and white")  # a colour with no hue: a tonal range, not two inks
+    assert noir.duotone == (COLOURS["black"], COLOURS["white"]) and noir.inks is None
+    wood = resolve_style("marquetry in cherry and birch")  # a look of flat inks snaps to the named ones
+    assert set(wood.inks) == {MATERIAL_COLOURS["cherry"], MATERIAL_COLOURS["birch"]}
+    assert {wood.surface(role).color for role in ("wood", "fabric", "leaf", "paint")} <= set(wood.inks)
+    one = resolve_style("sketch in crimson")  # one colour: its own shade and tint
+    dark, light = one.duotone
+    assert dark[0] > dark[1] and light[0] > light[1] and sum(dark) < sum(light)
+    many = resolve_style("poster in red and yellow and teal")
+    assert many.inks == (COLOURS["red"], COLOURS["yellow"], COLOURS["teal"]) and many.duotone is None
+    assert resolve_style("ceramic").duotone == tuple(tuple(c) for c in find_look("ceramic").palette["duotone"])
 
 
 def test_unknown_style_falls_back_to_realistic_with_a_note(caplog):

@@ -43,6 +43,6 @@ class ProceduralImages:
         from scenewright.procedural.textures import ground_texture, normalise_kind, png_bytes
 
         texture_kind = normalise_kind(kind, text)
-        style_name = resolve_style(style).name
-        image = ground_texture(texture_kind, style_name, seed_of(f"{texture_kind}|{style_name}|{text}"))
+        style_name = resolve_style(style).name  # the seed's: "cartoon-style" draws the ground "cartoon" does
+        image = ground_texture(texture_kind, style, seed_of(f"{texture_kind}|{style_name}|{text}"))  # in its colours
         return png_bytes(image)

@@ -103,9 +103,10 @@ def score_prompt(prompt: Prompt) -> dict:
 def same_look(read: str, annotated: str) -> bool:
     """Whether the reader named the look an annotation names: annotations name a style as a writer
     would ("copperplate engraving", "Art Deco travel poster"), the reader by the look that draws it
-    (``data/styles.json``), so a name the table knows counts as its look."""
-    look = find_look(annotated)
-    return read == annotated or (look is not None and look.name == read)
+    (``data/styles.json``) and the colours it is named in ("textile in indigo and ochre"), so a name
+    the table knows counts as its look."""
+    look, drawn = find_look(annotated), find_look(read)
+    return read == annotated or (look is not None and drawn is not None and look.name == drawn.name)
 
 
 def ratio(a: int, b: int) -> float:

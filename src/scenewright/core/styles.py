@@ -8,10 +8,12 @@ backends, which draw it; so a look added there is read and drawn with no code.
 from __future__ import annotations
 
 import json
+import re
 from dataclasses import dataclass, field
 from functools import lru_cache
 from importlib import resources
 
+from scenewright.core.colours import palette
 from scenewright.settings import STYLES
 
 #: What a look may change of its base: palette and shading only, so every look draws the same
@@ -45,9 +47,8 @@ def normalise(words: str) -> str:
 @lru_cache(maxsize=1)
 def load_looks() -> dict[str, Look]:
     """Look name → :class:`Look`, checked once: every base style is there, every ``like`` is a base."""
-    raw = json.loads(resources.files("scenewright.data").joinpath("styles.json").read_text(encoding="utf-8"))
     looks = {}
-    for name, entry in raw["looks"].items():
+    for name, entry in _table()["looks"].items():
         like = entry.get("like", name)
         lit = entry.get("lit", like)
         unknown = set(entry) - {"words", "styled", "like", "lit", "overrides", *PALETTE}
@@ -65,11 +66,33 @@ def load_looks() -> dict[str, Look]:
 
 
 @lru_cache(maxsize=1)
+def _table() -> dict:
+    return json.loads(resources.files("scenewright.data").joinpath("styles.json").read_text(encoding="utf-8"))
+
+
+@lru_cache(maxsize=1)
 def media_heads() -> frozenset[str]:
     """Nouns that name a picture or a made image ("a copperplate *engraving* of a port", "woven as a
     *tapestry*"): a phrase ending in one, where a text says what it is, names the scene's look."""
-    raw = json.loads(resources.files("scenewright.data").joinpath("styles.json").read_text(encoding="utf-8"))
-    return frozenset(normalise(w) for w in raw["media"])
+    return frozenset(normalise(w) for w in _table()["media"])
+
+
+@lru_cache(maxsize=1)
+def media_parts() -> frozenset[str]:
+    """Nouns for a piece of a picture, whose "of" or "from" names the medium ("a page of an illuminated
+    manuscript", "a detail from a fresco")."""
+    return frozenset(normalise(w) for w in _table()["parts"])
+
+
+@lru_cache(maxsize=1)
+def made_looks() -> dict[str, str]:
+    """Verb of making → the look it makes when its phrase names none ("…, painted in blue and gold" is a
+    painting, "…, woven in red and black" a textile); every look one of :func:`load_looks`."""
+    made = {normalise(verb): look for verb, look in _table()["made"].items()}
+    unknown = set(made.values()) - set(load_looks())
+    if unknown:
+        raise ValueError(f"styles.json: 'made' names looks that are not there: {sorted(unknown)}")
+    return made
 
 
 def find_look(name: str) -> Look | None:
@@ -85,3 +108,15 @@ def find_look(name: str) -> Look | None:
     named = [(padded.find(f" {w} "), -len(w), look.name) for look in looks for w in (*look.words, *look.styled)
              if f" {w} " in padded]
     return load_looks()[min(named)[2]] if named else None
+
+
+@lru_cache(maxsize=1)
+def _look_words() -> re.Pattern:
+    words = {w for look in load_looks().values() for w in (*look.words, *look.styled)}
+    return re.compile(r"(?<![\w])(?:%s)(?![\w])" % "|".join(re.escape(w) for w in sorted(words, key=len, reverse=True)))
+
+
+def named_colours(text: str) -> list[tuple[str, tuple[float, float, float]]]:
+    """The colours a style's name or phrase gives (:func:`~scenewright.core.colours.palette`), the looks' own
+    words aside: "blue and white porcelain" is blue and white, "ceramic" or "stained glass" names no colour."""
+    return palette(_look_words().sub(" | ", normalise(text)))

@@ -11,71 +11,31 @@ import re
 from collections.abc import Callable, Collection
 from dataclasses import replace
 
+from scenewright.core.colours import COLOUR_RE, MATERIAL_COLOURS, colour_of
 from scenewright.procedural.style import Surface
 
-COLOURS: dict[str, tuple[float, float, float]] = {
-    "red": (0.75, 0.1, 0.1), "crimson": (0.7, 0.06, 0.15), "scarlet": (0.85, 0.12, 0.08),
-    "maroon": (0.42, 0.06, 0.08), "burgundy": (0.45, 0.07, 0.15), "orange": (0.95, 0.5, 0.1),
-    "amber": (0.95, 0.65, 0.1), "yellow": (0.95, 0.85, 0.2), "mustard": (0.8, 0.65, 0.15),
-    "olive": (0.45, 0.45, 0.15), "lime": (0.6, 0.85, 0.2), "green": (0.15, 0.55, 0.2),
-    "emerald": (0.05, 0.55, 0.35), "mint": (0.6, 0.9, 0.75), "teal": (0.05, 0.5, 0.5),
-    "turquoise": (0.2, 0.8, 0.75), "cyan": (0.1, 0.85, 0.9), "aqua": (0.3, 0.85, 0.85),
-    "sky blue": (0.5, 0.75, 0.95), "blue": (0.12, 0.3, 0.75), "navy": (0.06, 0.1, 0.32),
-    "cobalt": (0.05, 0.25, 0.65), "indigo": (0.25, 0.1, 0.5), "purple": (0.45, 0.15, 0.6),
-    "violet": (0.55, 0.3, 0.8), "lavender": (0.75, 0.65, 0.9), "lilac": (0.8, 0.65, 0.85),
-    "magenta": (0.85, 0.1, 0.65), "pink": (0.95, 0.55, 0.7), "rose": (0.9, 0.4, 0.5),
-    "peach": (0.98, 0.72, 0.58), "coral": (0.95, 0.45, 0.38), "salmon": (0.95, 0.55, 0.48),
-    "brown": (0.4, 0.25, 0.13), "chocolate": (0.3, 0.17, 0.08), "tan": (0.78, 0.64, 0.45),
-    "beige": (0.87, 0.8, 0.66), "khaki": (0.74, 0.7, 0.5), "cream": (0.96, 0.93, 0.82),
-    "ivory": (0.97, 0.95, 0.88), "white": (0.93, 0.93, 0.93), "black": (0.04, 0.04, 0.04),
-    "grey": (0.5, 0.5, 0.5), "gray": (0.5, 0.5, 0.5), "charcoal": (0.2, 0.2, 0.22),
-    "silver": (0.78, 0.79, 0.8), "golden": (1.0, 0.77, 0.34), "whitewashed": (0.92, 0.91, 0.88),
-    "limewashed": (0.92, 0.91, 0.88),
-}
-
-_MODIFIERS = {
-    "dark": lambda c: tuple(0.45 * x for x in c),
-    "deep": lambda c: tuple(0.6 * x for x in c),
-    "light": lambda c: tuple(x + (1 - x) * 0.45 for x in c),
-    "pale": lambda c: tuple(x + (1 - x) * 0.5 for x in c),
-    "pastel": lambda c: tuple(x + (1 - x) * 0.55 for x in c),
-    "bright": lambda c: tuple(min(1.0, 1.2 * x) for x in c),
-    "vivid": lambda c: tuple(min(1.0, 1.2 * x) for x in c),
-    "muted": lambda c: tuple(0.7 * x + 0.3 * sum(c) / 3 for x in c),
-}
-
+#: How each material's surface takes the light: metallic, roughness (its colour is ``MATERIAL_COLOURS``').
+_FINISH: dict[str, tuple[float, float]] = {
+    "wood": (0.0, 0.6), "oak": (0.0, 0.6), "walnut": (0.0, 0.55), "pine": (0.0, 0.65), "mahogany": (0.0, 0.45),
+    "cherry": (0.0, 0.5), "teak": (0.0, 0.55), "birch": (0.0, 0.6), "maple": (0.0, 0.6), "bamboo": (0.0, 0.55),
+    "ebony": (0.0, 0.4), "wicker": (0.0, 0.85), "rattan": (0.0, 0.85), "metal": (1.0, 0.35), "steel": (1.0, 0.3),
+    "iron": (1.0, 0.6), "aluminium": (1.0, 0.3), "aluminum": (1.0, 0.3), "chrome": (1.0, 0.06), "brass": (1.0, 0.3),
+    "copper": (1.0, 0.3), "bronze": (1.0, 0.4), "gold": (1.0, 0.2), "silver": (1.0, 0.15), "marble": (0.0, 0.2),
+    "granite": (0.0, 0.4), "stone": (0.0, 0.9), "concrete": (0.0, 0.95), "brick": (0.0, 0.9), "leather": (0.0, 0.5),
+    "velvet": (0.0, 1.0), "fabric": (0.0, 0.95), "linen": (0.0, 0.95), "cotton": (0.0, 0.95), "wool": (0.0, 1.0),
+    "plastic": (0.0, 0.45), "ceramic": (0.0, 0.2), "porcelain": (0.0, 0.15), "rubber": (0.0, 0.9),
+    "paper": (0.0, 0.9), "jade": (0.0, 0.25),
+}  # fmt: skip
 MATERIALS: dict[str, Surface] = {
-    "wood": Surface((0.55, 0.38, 0.22), 0.0, 0.6), "oak": Surface((0.66, 0.49, 0.3), 0.0, 0.6),
-    "walnut": Surface((0.34, 0.21, 0.12), 0.0, 0.55), "pine": Surface((0.82, 0.66, 0.44), 0.0, 0.65),
-    "mahogany": Surface((0.42, 0.16, 0.09), 0.0, 0.45), "cherry": Surface((0.55, 0.24, 0.14), 0.0, 0.5),
-    "teak": Surface((0.6, 0.42, 0.22), 0.0, 0.55), "birch": Surface((0.86, 0.76, 0.6), 0.0, 0.6),
-    "bamboo": Surface((0.8, 0.7, 0.42), 0.0, 0.55), "ebony": Surface((0.08, 0.06, 0.05), 0.0, 0.4),
-    "wicker": Surface((0.76, 0.6, 0.38), 0.0, 0.85), "rattan": Surface((0.76, 0.6, 0.38), 0.0, 0.85),
-    "metal": Surface((0.62, 0.63, 0.65), 1.0, 0.35), "steel": Surface((0.66, 0.67, 0.7), 1.0, 0.3),
-    "iron": Surface((0.3, 0.3, 0.31), 1.0, 0.6), "aluminium": Surface((0.85, 0.86, 0.88), 1.0, 0.3),
-    "aluminum": Surface((0.85, 0.86, 0.88), 1.0, 0.3), "chrome": Surface((0.92, 0.92, 0.94), 1.0, 0.06),
-    "brass": Surface((0.78, 0.6, 0.28), 1.0, 0.3), "copper": Surface((0.8, 0.45, 0.3), 1.0, 0.3),
-    "bronze": Surface((0.6, 0.42, 0.22), 1.0, 0.4), "gold": Surface((1.0, 0.77, 0.34), 1.0, 0.2),
-    "silver": Surface((0.9, 0.9, 0.92), 1.0, 0.15),
-    "glass": Surface((0.82, 0.9, 0.95), 0.0, 0.05, alpha=0.35, transmission=1.0),
-    "crystal": Surface((0.85, 0.92, 1.0), 0.0, 0.05, alpha=0.5, transmission=0.9), "marble": Surface((0.92, 0.91, 0.88), 0.0, 0.2),
-    "granite": Surface((0.45, 0.44, 0.43), 0.0, 0.4), "stone": Surface((0.56, 0.55, 0.52), 0.0, 0.9),
-    "concrete": Surface((0.62, 0.61, 0.58), 0.0, 0.95), "brick": Surface((0.6, 0.28, 0.2), 0.0, 0.9),
-    "leather": Surface((0.36, 0.2, 0.12), 0.0, 0.5), "velvet": Surface((0.45, 0.08, 0.15), 0.0, 1.0),
-    "fabric": Surface((0.6, 0.6, 0.6), 0.0, 0.95), "linen": Surface((0.85, 0.82, 0.74), 0.0, 0.95),
-    "cotton": Surface((0.9, 0.9, 0.88), 0.0, 0.95), "wool": Surface((0.8, 0.76, 0.68), 0.0, 1.0),
-    "plastic": Surface((0.9, 0.9, 0.88), 0.0, 0.45), "ceramic": Surface((0.94, 0.94, 0.92), 0.0, 0.2),
-    "porcelain": Surface((0.96, 0.96, 0.95), 0.0, 0.15), "rubber": Surface((0.06, 0.06, 0.06), 0.0, 0.9),
-    "paper": Surface((0.92, 0.9, 0.84), 0.0, 0.9), "jade": Surface((0.3, 0.65, 0.45), 0.0, 0.25),
-    "neon": Surface((0.2, 0.2, 0.2), 0.0, 0.3, (0.0, 0.9, 1.0)),
+    **{name: Surface(MATERIAL_COLOURS[name], metallic, roughness) for name, (metallic, roughness) in _FINISH.items()},
+    "glass": Surface(MATERIAL_COLOURS["glass"], 0.0, 0.05, alpha=0.35, transmission=1.0),
+    "crystal": Surface(MATERIAL_COLOURS["crystal"], 0.0, 0.05, alpha=0.5, transmission=0.9),
+    "neon": Surface(MATERIAL_COLOURS["neon"], 0.0, 0.3, (0.0, 0.9, 1.0)),
 }
 _ADJECTIVES = {"wooden": "wood", "metallic": "metal", "metal": "metal", "golden": "gold", "stony": "stone",
                "glassy": "glass", "leathery": "leather", "marbled": "marble", "plush": "velvet",
                "upholstered": "fabric", "iron-wrought": "iron", "wrought-iron": "iron", "chromed": "chrome"}
 
-_COLOUR_RE = re.compile(
-    r"\b(?:(%s)[\s-]+)?(%s)\b" % ("|".join(_MODIFIERS), "|".join(sorted(COLOURS, key=len, reverse=True)))
-)
 _MATERIAL_WORDS = "|".join(sorted(list(MATERIALS) + list(_ADJECTIVES), key=len, reverse=True))
 _MATERIAL_RE = re.compile(r"\b(%s)\b" % _MATERIAL_WORDS)
 #: Words that make the described colour a light's: "a glowing pink vending machine", "a neon blue sign".
@@ -102,16 +62,10 @@ _PART_RE = re.compile(
 )
 
 
-def _colour(match: re.Match) -> tuple[float, float, float]:
-    modifier, name = match.groups()
-    colour = COLOURS[name]
-    return _MODIFIERS[modifier](colour) if modifier else colour
-
-
 def find_colour(text: str) -> tuple[float, float, float] | None:
     """The first colour phrase ("dark blue", "pastel pink", "red") of a description."""
-    match = _COLOUR_RE.search(text.lower())
-    return _colour(match) if match else None
+    match = COLOUR_RE.search(text.lower())
+    return colour_of(match) if match else None
 
 
 def _material(word: str) -> Surface:
@@ -150,14 +104,14 @@ def described_surfaces(
     found: dict[str, Surface] = {}
     taken: list[tuple[int, int]] = []
     main_colour = None
-    for match in _COLOUR_RE.finditer(text):
+    for match in COLOUR_RE.finditer(text):
         part = _PART_RE.match(text, match.end())
         role = next((r for r in PART_NOUNS[part.group(2)] if r in roles), None) if part else None
         if role is not None and role != main:
-            found.setdefault(role, _surface(base(role), part.group(1), _colour(match)))
+            found.setdefault(role, _surface(base(role), part.group(1), colour_of(match)))
             taken.append((match.start(), part.end()))
         elif main_colour is None:
-            main_colour = _colour(match)
+            main_colour = colour_of(match)
     material = next(
         (m.group(1) for m in _MATERIAL_RE.finditer(text) if not any(a <= m.start() < b for a, b in taken)), None
     )

@@ -12,7 +12,7 @@ import logging
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
-from scenewright.core.styles import Look, find_look, load_looks
+from scenewright.core.styles import Look, find_look, load_looks, named_colours
 from scenewright.scene import DEFAULT_STYLE, STYLES
 
 log = logging.getLogger(__name__)
@@ -278,12 +278,39 @@ def _drawn_like(look: Look) -> Style:
     return replace(base, name=look.name, overrides=overrides, **palette)
 
 
+#: How far a one-colour palette's dark and light lie from its colour: toward black, toward white.
+SHADE, TINT = 0.45, 0.85
+#: The saturation below which a named colour has no hue of its own (white, cream, grey, black).
+NO_HUE = 0.16
+
+
+def _in_colours(style: Style, colours: list) -> Style:
+    """A look drawn in the colours its name gives ("textile in indigo and ochre", "blue and white
+    porcelain"). One colour is a duotone of its own shade and tint (a red chalk drawing); a look drawn in
+    one ink takes two as its dark and light (cobalt on white porcelain), and so does any look when one of
+    the two has no hue (a film noir "all black and white", a woodcut in red on cream); a look printed in
+    flat inks takes them as its inks (two woods of a marquetry); any other look paints in them as flat inks,
+    with the darkest one's shade and the lightest one's tint for shadow and ground (a batik in indigo and
+    ochre: a blend of two hues would be a third, muddy one)."""
+    def lightness(c):
+        return 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2]
+
+    dark, light = min(colours, key=lightness), max(colours, key=lightness)
+    shade, tint = tuple(SHADE * x for x in dark), tuple(x + (1 - x) * TINT for x in light)
+    if len(colours) == 1:
+        return replace(style, inks=None, duotone=(shade, tint))
+    if len(colours) == 2 and (style.duotone or min(colorsys.rgb_to_hsv(*c)[1] for c in colours) < NO_HUE):
+        return replace(style, inks=None, duotone=(dark, light))
+    return replace(style, duotone=None, inks=tuple(colours) if style.inks else (shade, *colours, tint))
+
+
 @lru_cache(maxsize=64)
 def resolve_style(text: str | None) -> Style:
-    """The style a free-text name means (a look's name or any word for it, ``data/styles.json``);
-    unknown names fall back to realistic with a note."""
+    """The style a free-text name means (a look's name or any word for it, ``data/styles.json``), in the
+    colours the name gives (:func:`_in_colours`); unknown names fall back to realistic with a note."""
     look = find_look(text or DEFAULT_STYLE)
     if look is not None:
-        return _drawn_like(look)
+        colours = [rgb for _, rgb in named_colours(text or "")]
+        return _in_colours(_drawn_like(look), colours) if colours else _drawn_like(look)
     log.warning("unknown style %r: using realistic (known: %s)", text, ", ".join(load_looks()))
     return STYLE_TABLE[DEFAULT_STYLE]

@@ -4,9 +4,11 @@
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 
-from scenewright.core.styles import load_looks, media_heads, normalise
-from scenewright.scene import DEFAULT_STYLE
+from scenewright.core.colours import COLOUR_RE, palette_re
+from scenewright.core.styles import load_looks, made_looks, media_heads, media_parts, named_colours, normalise
+from scenewright.scene import DEFAULT_STYLE, MAX_STYLE_CHARS
 
 #: Ground kinds the procedural ground textures understand.
 GROUND_KINDS = (
@@ -18,48 +20,119 @@ GROUND_KINDS = (
 #: A verb of making before "as", "like", "in" or "into", "in the style of", or a clause opening "as" or
 #: "like": the words after it, up to "of" or the clause's end, say what the picture is ("drawn as a Soviet
 #: constructivist poster", "painted like an impressionist canvas", "rendered in cross-stitch", "in the
-#: style of a pulp magazine cover", "A fishing village, as a woodblock print.").
+#: style of a pulp magazine cover", "A fishing village, as a woodblock print."). Verbs that also build or
+#: film things say it only before "as" or "like" ("built as a tiny diorama", "shot as a tilt-shift photo").
 _MADE_AS = re.compile(
-    r"\b(?:(?:drawn|rendered|painted|printed|done|made|sketched|woven|stitched|embroidered|etched|engraved|carved|"
-    r"cut|shown|depicted|illustrated|imagined|pictured|styled|crafted|modelled|modeled|sculpted|knitted|felted)\s+"
-    r"(?:as|like|in|into)|in\s+the\s+(?:style|manner)\s+of|[,:;(]\s*(?:as|like))\s+(?:(?:an?|the)\s+)?([^.,:;!?()]*)"
+    r"\b(?:(?P<verb>drawn|rendered|painted|printed|done|made|sketched|woven|stitched|embroidered|etched|engraved|"
+    r"carved|cut|shown|depicted|illustrated|imagined|pictured|styled|crafted|modelled|modeled|sculpted|knitted|"
+    r"felted|dyed|glazed|inlaid)\s+(?:as|like|in|into)|(?P<builds>built|shot|photographed|filmed|captured|cast|"
+    r"moulded|molded)\s+(?:as|like)|(?P<style_of>in\s+the\s+(?:style|manner)\s+of)|[,:;(]\s*(?:as|like))\s+"
+    r"(?:(?:an?|the)\s+)?(?P<manner>(?:style|manner)\s+of\s+(?:(?:an?|the)\s+)?)?(?P<phrase>[^.,:;!?()]*)"
 )
+#: "as a ..." with no verb before it: the picture only when its phrase names a look ("A lavender farm as a
+#: 1950s travel poster"; not "a porter dressed as a clown").
+_AS = re.compile(r"\bas\s+(?:(?:an?|the)\s+)?(?P<phrase>[^.,:;!?()]*)")
 #: A verb that puts the opening picture somewhere: "A painting of a ship hangs above the fireplace" is
 #: a thing in the room, "A painting of a harbour at dawn." the scene's look.
 _PLACED = re.compile(r"\b(?:is|are|hangs?|hung|sits?|stands?|leans?|rests?|lies|covers?|fills?|decorates?|"
                      r"dominates?|propped|pinned|taped|mounted)\b")
-#: "Walls painted in pastel colours" name colours, not a medium.
+#: "Walls painted in pastel colours" name colours, not a medium; said of the whole picture ("A parade,
+#: painted in loud Fauvist colours") they are its palette.
 _COLOUR_NOUNS = {"colour", "colours", "color", "colors", "shade", "shades", "tone", "tones", "hue", "hues", "tints"}
 #: Words that end a medium phrase: "a poster" in "a study with a poster" is a thing in it.
 _PHRASE_ENDS = {"of", "with", "and", "or", "in", "on", "at", "by", "from", "near", "under", "above", "over", "behind",
-                "beside", "for", "to", "where", "that", "which", "while", "as", "showing", "depicting", "featuring"}
+                "beside", "for", "to", "where", "that", "which", "while", "as", "showing", "depicting", "featuring",
+                "so", "like"}
+_ARTICLES = {"a", "an", "the"}
 #: The longest medium phrase read: "a two-colour risograph print", not a whole clause.
 _MEDIUM_WORDS = 6
+#: Words a clause of colours after the medium may hold besides them ("all gold leaf and lapis blue", "in flat
+#: red, yellow and black shapes").
+_PALETTE_FILLERS = {"and", "or", "with", "of", "a", "an", "the", "leaf", "touches", "flecks", "accents", "plus", "on",
+                    "over", "against", "flat", "bold", "shapes", "blocks", "areas", "lines", "strokes", "washes",
+                    "patches", *_COLOUR_NOUNS}
+#: The palette after the medium, as its own clause: ", all gold leaf and lapis blue", ", in red and black", or
+#: the list of colours going on (", yellow and black").
+_PALETTE_AFTER = re.compile(r"\s*[,:;]\s*(?:(?:all|in|mostly|entirely)\s+)?([^.,:;!?()]*)")
 
 
-def _medium_phrases(text: str) -> list[tuple[str, str]]:
-    """Phrases that name what the scene is a picture of, normalised (:func:`_media`): each as written
-    and with its plurals made singular ("in the style of old engravings", "drawn in crayons")."""
+@dataclass(frozen=True)
+class _Medium:
+    """A phrase that says what the picture is: its normalised words, the span of the text it is said in,
+    its verb of making, whether it is said of the whole picture (opening the text, after a comma, "as
+    a ..."), which a phrase said of one thing ("walls painted in pastel colours") is not, and whether it
+    follows "in the style of", which says a picture whatever its words."""
+
+    words: list[str]
+    span: tuple[int, int]
+    verb: str | None = None
+    whole: bool = True
+    style_of: bool = False
+
+
+def _medium_phrases(media: list[_Medium]) -> list[tuple[str, str]]:
+    """The phrases, each as written and with its plurals made singular ("in the style of old engravings",
+    "drawn in crayons")."""
     phrases = []
-    for words, _ in _media(text):
-        single = [w[:-1] if len(w) > 3 and w.endswith("s") and not w.endswith("ss") else w for w in words]
-        phrases.append((" ".join(words), " ".join(single)))
+    for medium in media:
+        single = [w[:-1] if len(w) > 3 and w.endswith("s") and not w.endswith("ss") else w for w in medium.words]
+        phrases.append((" ".join(medium.words), " ".join(single)))
     return phrases
 
 
-def _media(text: str) -> list[tuple[list[str], tuple[int, int]]]:
-    """Each phrase that says what the picture is, as words, and the span of the text it is said in:
-    after a verb of making (:data:`_MADE_AS`, the words up to the clause's end), or opening the text
-    when it ends in a picture noun or a look's word ("A child's crayon drawing of a ...", "A
-    needle-felted miniature: ..."; ``media`` in ``data/styles.json``) and its clause places nothing
-    ("A painting of a ship hangs above the fireplace" is a thing of the scene)."""
+def _media(text: str) -> list[_Medium]:
+    """Each phrase that says what the picture is (:class:`_Medium`): after a verb of making (:data:`_MADE_AS`,
+    the words up to the clause's end); after "as" when it names a look (:data:`_AS`); opening the text when
+    it ends in a picture noun or a look's word ("A child's crayon drawing of a ...", "A needle-felted
+    miniature: ..."; ``media`` in ``data/styles.json``) and its clause places nothing ("A painting of a ship
+    hangs above the fireplace" is a thing of the scene), or its opening noun's "in ..." names a look ("A
+    harbour in walnut and maple marquetry")."""
     low = text.lower()
-    found = [(_noun_phrase(m[1]), (m.start(1), m.start(1) + _medium_end(m[1]))) for m in _MADE_AS.finditer(low)]
+    found = []
+    for m in _MADE_AS.finditer(low):
+        words, end = _noun_phrase(m["phrase"])
+        opens = re.search(r"(?:^|[,.:;!?(])\s*$", low[: m.start()]) is not None  # a clause of its own
+        style_of = bool(m["style_of"] or m["manner"])
+        verb = normalise(m["verb"] or m["builds"] or "") or None
+        span = (m.start("phrase"), m.start("phrase") + max(end, _medium_end(m["phrase"])))
+        found.append(_Medium(words, span, verb, not verb or style_of or opens, style_of))
+    for m in _AS.finditer(low):
+        words, end = _noun_phrase(m["phrase"])
+        head = _without_colours(words)  # a look's noun, or a picture noun with a look's word ("a stained-glass window")
+        if (_names_a_look(head) or head[-1:] and head[-1] in media_heads() and _holds_a_look(head)) and all(
+            m.start("phrase") != f.span[0] for f in found
+        ):
+            found.append(_Medium(words, (m.start("phrase"), m.start("phrase") + end)))
     clause = re.split(r"[.,:;!?()]|\s[-–—]\s", low, maxsplit=1)[0]
-    opening = _noun_phrase(re.sub(r"^\W*(?:(?:an?|the)\s+)?", "", clause))
+    start = re.match(r"^\W*(?:(?:an?|the)\s+)?", clause).end()
+    opening, end = _noun_phrase(clause[start:], joins=("of", "from", "and"))  # its "in ..." comes next
     if opening and (opening[-1] in media_heads() or _names_a_look(opening)) and not _PLACED.search(clause):
-        found.append((opening, (0, len(clause.split(" of ")[0]))))
-    return [(w, span) for w, span in found if w and len(w) <= _MEDIUM_WORDS and w[-1] not in _COLOUR_NOUNS]
+        found.append(_Medium(opening, (0, len(clause.split(" of ")[0]))))
+    after = re.match(r"\s*in\s+(?:(?:an?|the)\s+)?", clause[start + end :])
+    if opening and after:
+        at = start + end + after.end()
+        words, length = _noun_phrase(clause[at:])
+        if _names_a_look(words):
+            found.append(_Medium(words, (at, at + length)))
+    return [f for f in found
+            if f.words and _length(f.words) <= _MEDIUM_WORDS and (f.whole or not _says_colours(f.words))]
+
+
+def _length(words: list[str]) -> int:
+    """A medium phrase's length, its colours and the words joining them aside ("a batik cloth in indigo and
+    ochre" is two words long)."""
+    return sum(w not in {"and", "in", "on", "of", "from", *_ARTICLES} and not palette_re().fullmatch(w) for w in words)
+
+
+def _says_a_medium(words: list[str]) -> bool:
+    """Whether a phrase after a verb of making names colours, materials or a picture ("drawn in red", "knitted
+    in wool", "sketched as a postcard"), not where a thing goes ("a cart, drawn into the yard")."""
+    return _says_colours(words) or bool(named_colours(" ".join(words))) or words[-1] in media_heads()
+
+
+def _says_colours(words: list[str]) -> bool:
+    """Whether a phrase names colours as such ("in loud Fauvist colours", "in shades of blue")."""
+    return any(w in _COLOUR_NOUNS for w in words)
 
 
 def _medium_end(words: str) -> int:
@@ -73,37 +146,115 @@ def without_media(text: str) -> str:
     """The text, lowercased, with what its picture is made of blanked out: "rendered as a floor mosaic
     of tiny stone tiles" says nothing of the ground the scene stands on."""
     low = text.lower()
-    for _, (start, end) in _media(text):
+    for medium in _media(text):
+        start, end = medium.span
         low = low[:start] + " " * (end - start) + low[end:]
     return low
 
 
 def _names_a_look(phrase: list[str]) -> bool:
-    """Whether a phrase ends in a look's word ("a mezzotint", "a floor mosaic"): the picture's own noun."""
-    tail = f" {' '.join(phrase)}"
+    """Whether a phrase ends in a look's word ("a mezzotint", "a floor mosaic"): the picture's own noun, the
+    colours it is in aside ("a propaganda poster in red and black")."""
+    tail = f" {' '.join(_without_colours(phrase))}"
     return any(tail.endswith(f" {w}") for look in load_looks().values() for w in (*look.words, *look.styled))
 
 
-def _noun_phrase(words: str) -> list[str]:
-    """The normalised words before the first that ends a noun phrase ("of", "with", "and", "on" ...;
-    not inside a hyphened word: "a blue-and-white tile panel")."""
-    out: list[str] = []
-    for token in words.split():
-        if normalise(token) in _PHRASE_ENDS:
+def _without_colours(phrase: list[str]) -> list[str]:
+    """A phrase without the "in ..." or "on ..." that ends it and says only its colours."""
+    for at in range(len(phrase) - 1, 0, -1):
+        if phrase[at] in ("in", "on"):
+            tail = " ".join(phrase[at + 1 :])
+            if palette_re().search(tail) and _only_colours(tail):
+                return phrase[:at]
             break
-        out += normalise(token).split()
-    return out
+    return phrase
+
+
+def _only_colours(words: str) -> bool:
+    """Whether words say colours and nothing else: filler words, and a word or two shading them ("all gold leaf
+    and lapis blue", "faded reds and holly green")."""
+    rest = palette_re().sub(" | ", normalise(words)).split()
+    shading = [w for i, w in enumerate(rest) if w not in _PALETTE_FILLERS | {"|"}]
+    return len(shading) <= 2 and all(rest.index(w) + 1 < len(rest) and rest[rest.index(w) + 1] == "|" for w in shading)
+
+
+def _holds_a_look(phrase: list[str]) -> bool:
+    """Whether a look's word is in a phrase ("a silk scarf in teal and saffron")."""
+    padded = f" {' '.join(phrase)} "
+    return any(f" {w} " in padded for look in load_looks().values() for w in (*look.words, *look.styled))
+
+
+def _goes_on(out: list[str], word: str, rest: str, joins: tuple[str, ...]) -> bool:
+    """Whether a word that ends a noun phrase goes on with the medium: a part's "of" or "from" ("a page of
+    an illuminated manuscript", "shades of blue"), an "and", "in" or "on" before a colour, a material or a
+    look's word ("walnut and maple marquetry", "a batik cloth in indigo and ochre", "cobalt blue on white
+    porcelain"); ``joins`` the words of these that may go on."""
+    if word not in joins:
+        return False
+    if not out:
+        return False
+    padded = f"{rest} "
+    look_next = any(padded.startswith(f"{w} ") for look in load_looks().values() for w in (*look.words, *look.styled))
+    if word in ("of", "from"):  # "a panel from a graphic novel", not "a quilted panel of an orchard"
+        return out[-1] in media_parts() or out[-1] in _COLOUR_NOUNS or (out[-1] in media_heads() and look_next)
+    # a word or two may shade the colours: "in faded reds and blues", "in deep sea greens"
+    starts = [0, *(m.end() for m in re.finditer(" ", rest))][:3]
+    return look_next or any(palette_re().match(rest, at) for at in starts)
+
+
+def _noun_phrase(words: str, joins: tuple[str, ...] = ("of", "from", "and", "in", "on")) -> tuple[list[str], int]:
+    """The normalised words before the first that ends a noun phrase ("of", "with", "and", "on" ...;
+    not inside a hyphened word: "a blue-and-white tile panel"; :func:`_goes_on` where the medium goes
+    on over one of ``joins``), and where they end in ``words``."""
+    out: list[str] = []
+    tokens = [(m.end(), normalise(m[0])) for m in re.finditer(r"\S+", words)]
+    end = 0
+    for i, (stop, token) in enumerate(tokens):
+        if token in _PHRASE_ENDS:
+            rest = " ".join(t for _, t in tokens[i + 1 :]).split()
+            rest = " ".join(rest[1:] if rest and rest[0] in _ARTICLES else rest)
+            if not _goes_on(out, token, rest, joins):
+                break
+        out += token.split()
+        end = stop
+    return out, end
+
+
+def _palette(text: str, media: list[_Medium]) -> list[str]:
+    """The colours the picture is named in: those of its medium phrases that name a look or are said of the
+    whole picture, and of an "all ..." or "in ..." after one that holds only colours ("…, all gold leaf and
+    lapis blue"); each as its words ("cobalt blue", "walnut")."""
+    named: list[str] = []
+    for medium in media:
+        phrases, end = [_common_words(text, *medium.span)], medium.span[1]
+        while (after := _PALETTE_AFTER.match(text, end)) and palette_re().search(after[1].lower()) and _only_colours(
+            after[1]
+        ):
+            phrases.append(_common_words(text, *after.span(1)))
+            end = after.end()
+        named += [words for phrase in phrases for words, _ in named_colours(phrase) if words not in named]
+    # one material alone says what the picture is made of ("a mosaic of tiny stone tiles"), not its colours
+    return named if len(named) > 1 or any(COLOUR_RE.search(words) for words in named) else []
+
+
+def _common_words(text: str, start: int, end: int) -> str:
+    """The text from ``start`` to ``end`` with its names blanked: a capital inside a sentence makes "Golden"
+    in "a Dutch Golden Age oil painting" part of a name, no colour."""
+    return re.sub(r"(?<=[\w,;:] )[A-Z][\w-]*", lambda m: "|".ljust(len(m[0])), text)[start:end].lower()
 
 
 def detect_style(text: str, default: str = DEFAULT_STYLE) -> str:
     """The look the text names ("cartoon-style", "Cyberpunk.", "a voxel-art quarry", "A linocut print
-    of ...", "drawn as a blueprint"; the words are ``data/styles.json``'s), else ``default``.
+    of ...", "drawn as a blueprint"; the words are ``data/styles.json``'s), else the look a verb of making
+    said of the whole picture makes ("…, drawn in red"), else ``default``; with the colours its
+    medium is named in ("textile in indigo and ochre", :func:`_palette`) as far as a style's name holds them.
 
     A word followed by "style" wins over a word used in passing; otherwise the first named. Words
     that also describe things ("gothic", "poster", "mosaic") name the look only before "style" or in
-    the phrase that says what the picture is (:func:`_medium_phrases`)."""
+    the phrase that says what the picture is (:func:`_media`)."""
     low = f" {normalise(text)} "
-    media = [(low.find(f" {p} "), f" {form} ") for p, single in _medium_phrases(text) for form in {p, single}]
+    found = _media(text)
+    media = [(low.find(f" {p} "), f" {form} ") for p, single in _medium_phrases(found) for form in {p, single}]
     best: tuple[int, int, int, str] | None = None
     for look in load_looks().values():
         for w in (*look.words, *look.styled):
@@ -116,7 +267,17 @@ def detect_style(text: str, default: str = DEFAULT_STYLE) -> str:
             for rank in ranks:
                 if best is None or rank < best:
                     best = rank
-    return best[3] if best else default
+    made = next((made_looks()[m.verb] for m in found if m.whole and m.verb in made_looks() and _says_a_medium(m.words)),
+                None)  # fmt: skip
+    name = best[3] if best else made or default
+    # a phrase that names no look gives colours after "in the style of" or when only a picture is made so
+    # ("…, drawn in red"), not paint or weaving, which make things too ("A cottage, painted in white, ..."),
+    # nor a bare ", as" ("A beach hut, as blue as the sea")
+    said = [m for m in found if _holds_a_look(m.words) or m.style_of or (m.whole and m.verb in made_looks())]
+    colours = _palette(text, said)
+    while colours and len(f"{name} in {' and '.join(colours)}") > MAX_STYLE_CHARS:
+        colours.pop()
+    return f"{name} in {' and '.join(colours)}" if colours else name
 
 
 #: Words for the ground itself, anywhere in the text: they name the floor ("a tiled floor", "on the sand").

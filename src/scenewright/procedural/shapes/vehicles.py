@@ -6,9 +6,9 @@ import re
 
 import numpy as np
 
+from scenewright.core.colours import COLOURS
 from scenewright.procedural import parts as P
 from scenewright.procedural.builder import Model
-from scenewright.procedural.material import COLOURS
 from scenewright.procedural.shapes.frames import ring
 
 
