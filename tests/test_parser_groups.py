@@ -122,3 +122,23 @@ def test_a_leader_is_a_person():
 def test_kind_words_before_a_bare_plural_object_make_one_name():
     text = "A forklift robot carries steel girders up the ramp."
     assert counts(text)["girder"] == 3
+
+
+def test_a_describing_word_that_ends_its_phrase_is_the_noun():
+    # "baby" describes before a noun ("a baby elephant") and names one at the end ("a sleeping baby")
+    assert counts("A father rocks a sleeping baby by the fire.")["baby"] == 1
+    assert counts("A baby goat skips past the trough.")["goat"] == 1
+    assert counts("A baby goat skips past the trough.")["baby"] == 0
+
+
+def test_a_small_living_thing_held_is_in_arms():
+    assert ("kitten", "on", "girl") in relations("A girl holds a kitten by the window.")
+    assert ("pony", "on", "girl") not in relations("A girl holds a pony by the gate.")
+
+
+def test_what_a_seat_or_perch_is_packed_with_is_a_crowd_on_it():
+    text = "Terraces packed with supporters rise behind the pitch, and a jetty crowded with picnickers juts out."
+    assert counts(text)["picnicker"] >= 3 and ("picnicker", "on", "jetty") in relations(text)
+    # a cart's load is no crowd
+    load = parse_scene("A wheelbarrow packed with dags stands by the shed.")
+    assert {o.category for o in load.objects} == {"cart", "shed"}

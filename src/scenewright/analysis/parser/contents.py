@@ -150,7 +150,7 @@ class _Contents:
 
     def _holds_living(self, holder: _Mention) -> bool:
         """What people or animals it is full of stand on: a carrier ("a stand packed with
-        fans", "a boat full of children") or a thing with a top."""
+        fans", "a boat full of children", "a jetty crowded with anglers") or a thing with a top."""
         vocabulary, category, name = load_vocabulary(), holder.category, holder.phrase
         vessel = vocabulary.carries(category, name, _VESSEL_KINDS) or vocabulary.carries(category, name, by_family=False)
         return self.catalogue[category].support or vessel  # ("a dome full of visitors": inside it)

@@ -229,6 +229,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
     for k, (s, e, cat, entry) in enumerate(raw):
         nxt = raw[k + 1] if k + 1 < len(raw) else None
         words = [t.text for t in toks[s:e]]
+        if entry is not None and e - s == 1 and nxt and nxt[0] == e and words[0] in vocabulary.adjectives:
+            raw[k] = (s, s, cat, entry)  # "a baby elephant": a describing word before a noun ("a sleeping
+            continue  # baby" ends its phrase: a baby)
         # the head of "suits of armour" is "suits": plural, so "two suits of armour guard the door" has a verb
         head = words[words.index("of") - 1] if "of" in words[1:] else words[-1] if words else ""
         # a singular noun before another names its kind ("glass table", "dragon statue"); a plural
@@ -1287,6 +1290,7 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         out.append((head, head + 1, entry.category, entry))
         covered.add(head)
     out += _bare_subjects(toks, covered) + _bare_objects(toks, covered) + _landforms(toks, covered)
+    out += _crowds(toks, raw, covered)
     out += _owners_of_parts(toks, covered)
     out += _loose_parts(toks, covered) + _buildings(toks, covered)
     return out + _unknown_heads(toks, raw, covered) + _possessed(toks, covered)
@@ -1659,6 +1663,31 @@ def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
         entry = _guess(toks, head, toks[k:head])
         out.append((head, head + 1, entry.category, entry))
         covered.add(head)
+    return out
+
+
+#: Markers after which what a seat or a perch holds is a crowd on it.
+_PACKED = {("packed", "with"), ("crowded", "with"), ("thronged", "with"), ("teeming", "with")}
+
+
+def _crowds(toks: list[_Tok], raw: list, covered: set[int]) -> list:
+    """A bare plural nobody listed that a seat or a perch is packed or crowded with, as the whole
+    phrase after the marker ("grandstands packed with fans", "a pier crowded with anglers"): the
+    people on it, a crowd (a wheelbarrow full of dags, a cart packed with gourds: its load)."""
+    vocabulary = load_vocabulary()
+    ends = {e: (cat, " ".join(t.text for t in toks[s:e])) for s, e, cat, _ in raw}
+    out: list = []
+    for k in range(3, len(toks)):
+        word, after = toks[k].text, toks[k + 1].text if k + 1 < len(toks) else "."
+        if k in covered or (toks[k - 2].text, toks[k - 1].text) not in _PACKED or k - 2 not in ends:
+            continue
+        ends_phrase = after in _STOP or not after[:1].isalpha()
+        if singular(word) == word or not vocabulary.is_thing_word(word) or not ends_phrase:
+            continue
+        category, name = ends[k - 2]
+        if vocabulary.carries(category, name, ("seats", "perches")):
+            out.append((k, k + 1, "figure", vocabulary.family("figure")))
+            covered.add(k)
     return out
 
 

@@ -1176,7 +1176,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 if c.hold or held or (rests == "surface" and self.catalogue[self.groups[h].category].support):
                     self._relate("on", [g], h, instance=1 if g in c.others and self.groups[h].count > 1 else None)
                     c.produced = True
-                    if held or (c.hold and self._person_at(h) and not self._living(g)):
+                    # ("a mother holds a sleeping baby", "carries a lamb": in arms, a small living thing too)
+                    small = not self._living(g) or max(self.groups[g].size) <= _HANDHELD_SIZE
+                    if held or (c.hold and self._person_at(h) and small):
                         if not c.shared:
                             self.in_hand.append((g, h))
                         self.carried.add((g, h))
