@@ -1215,7 +1215,12 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
                 looks.add(j)
                 j += 1
                 continue
-            if j in covered or not x[:1].isalpha() or x in _STOP:
+            if j in covered and w == "of" and _kind_before_plural(toks, j, covered):
+                looks.add(j)  # "a cluster of hot dog stands": no "dog" can follow "of" alone, it names the stands' kind
+                j += 1
+                continue
+            kind_of = j - 1 in looks and w == "of"  # ("hot dog stands": a noun, though "stands" is a verb too)
+            if j in covered or not x[:1].isalpha() or (x in _STOP and not kind_of):
                 break
             # (a plural verb form cannot follow "a": "a washing line hangs" has no verb "line")
             plural_form = x in _FINITE and not x.endswith("s") and w in ("a", "an", "another")
@@ -1294,6 +1299,19 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
     out += _owners_of_parts(toks, covered)
     out += _loose_parts(toks, covered) + _buildings(toks, covered)
     return out + _unknown_heads(toks, raw, covered) + _possessed(toks, covered)
+
+
+def _kind_before_plural(toks: list[_Tok], j: int, covered: set[int]) -> bool:
+    """The singular count noun at ``j`` (after "<quantity> of") stands right before a plural
+    nobody listed that ends the phrase: it names that plural's kind ("a row of oak saplings" aside,
+    "a cluster of hot dog stands")."""
+    word = toks[j].text
+    if j + 1 >= len(toks) or j + 1 in covered or singular(word) != word or word in _SAME_PLURALS:
+        return False  # ("a flock of sheep grazes": the flock's verb)
+    if _stuff_word(toks, j, set()):
+        return False
+    nxt, after = toks[j + 1].text, toks[j + 2].text if j + 2 < len(toks) else "."
+    return singular(nxt) != nxt and nxt[:1].isalpha() and (after in _STOP or not after[:1].isalpha())
 
 
 def _shares_article(toks: list[_Tok], i: int, covered: set[int]) -> bool:
