@@ -148,3 +148,9 @@ def test_a_noun_after_a_quantity_of_names_the_kind_of_the_plural_after_it():
     # no "cat" can follow "a row of" alone: "cat stands" are stands of a kind, though "stands" is a verb too
     assert counts("A balloon drifts over a row of cat stands.")["stand"] == 3
     assert counts("A flock of sheep grazes by the wall.")["sheep"] >= 3
+
+
+def test_separate_things_are_one_each():
+    text = "Three clerks sit at separate desks facing the window."
+    assert counts(text)["desk"] == 3
+    assert counts("Two porters wait by separate carts.")["cart"] == 2

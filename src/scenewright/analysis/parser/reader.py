@@ -92,6 +92,9 @@ from scenewright.analysis.parser.words import (
 from scenewright.core.catalogue import Category, load_catalogue, match_phrase, singular
 
 
+#: Describing words that give each of several its own ("at separate tables", "in individual pens").
+_APIECE = {"separate", "individual"}
+
 #: m, a seat narrower than this holds one sitter ("two rows of chairs": a chair each, not of benches).
 _ONE_SEAT_WIDTH = 1.0
 
@@ -1774,6 +1777,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._per_each(targets, c.each)  # "each in a leather seat": one seat apiece
         elif tm is not None and kind == "on" and self._bare(tm) and len(srcs) == 1 and self._living(srcs[0]):
             self._per_each(targets, srcs[0])  # "two soldiers on horseback": a horse each
+        elif tm is not None and len(srcs) == 1 and self._uncounted_new(tm) and _APIECE & {a.lower() for a in tm.adjectives}:
+            self.groups[targets[0]].count = self.groups[srcs[0]].count  # "two lawyers stand at separate tables": one each
         elif tm is not None and kind == "on" and len(srcs) == 1 and self._living(srcs[0]) and self._seats_each(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "four astronauts sit on stools": one each
         elif tm is not None and kind == "on" and len(srcs) == 1 and self._stands_each(srcs[0], tm):
