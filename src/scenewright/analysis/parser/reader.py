@@ -1777,8 +1777,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._per_each(targets, c.each)  # "each in a leather seat": one seat apiece
         elif tm is not None and kind == "on" and self._bare(tm) and len(srcs) == 1 and self._living(srcs[0]):
             self._per_each(targets, srcs[0])  # "two soldiers on horseback": a horse each
-        elif tm is not None and len(srcs) == 1 and self._uncounted_new(tm) and _APIECE & {a.lower() for a in tm.adjectives}:
-            self.groups[targets[0]].count = self.groups[srcs[0]].count  # "two lawyers stand at separate tables": one each
+        elif tm is not None and len(srcs) == 1 and self._uncounted_new(tm) and self._apiece(tm):
+            self.groups[targets[0]].count = self.groups[srcs[0]].count  # "two lawyers at separate tables": one each
         elif tm is not None and kind == "on" and len(srcs) == 1 and self._living(srcs[0]) and self._seats_each(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "four astronauts sit on stools": one each
         elif tm is not None and kind == "on" and len(srcs) == 1 and self._stands_each(srcs[0], tm):
@@ -1850,6 +1850,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         thing, stand = self.groups[g].size, self.groups[m.group].size if m.group >= 0 else (0, 0)
         several = self.groups[g].count > 1 and not self._living(g)
         return several and self._uncounted_new(m) and stand[0] * stand[1] <= thing[0] * thing[1]
+
+    @staticmethod
+    def _apiece(m: _Mention) -> bool:
+        """Whether its describing words give each of several its own ("separate tables")."""
+        return bool(_APIECE & {a.lower() for a in m.adjectives})
 
     def _uncounted_new(self, m: _Mention) -> bool:
         """A plural with no count of its own, new here ("in clay pots", "on stools")."""
