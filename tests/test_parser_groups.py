@@ -154,3 +154,8 @@ def test_separate_things_are_one_each():
     text = "Three clerks sit at separate desks facing the window."
     assert counts(text)["desk"] == 3
     assert counts("Two porters wait by separate carts.")["cart"] == 2
+
+
+def test_a_bare_plural_subject_goes_on_past_what_sorts_it_comes_in():
+    assert counts("A harbour at noon. Gliders of every shape fly above the boats.")["glider"] == 3
+    assert counts("A harbour at noon. Zorbs of all sizes roll along the quay.")["zorb"] == 3

@@ -1649,6 +1649,10 @@ def _loose_parts(toks: list[_Tok], covered: set[int]) -> list:
     return out
 
 
+#: Words after "of" that say what sorts a plural comes in ("of every shape", "of all sizes").
+_VARIETY = {"every", "all", "many", "different", "various", "each"}
+
+
 def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
     """Bare plurals nobody listed that open a sentence or a clause after ", and" as its subject
     ("Noodle cartons and soda cans litter the floor"): no count, but a verb (or "and" and another
@@ -1669,6 +1673,8 @@ def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
                 break
         if head is not None and j + 2 < n and toks[j].text == "of" and _stuff_word(toks, j + 1, covered):
             j += 2  # "Bales of wool are stacked": units of stuff, counted by the unit
+        elif head is not None and j + 3 < n and toks[j].text == "of" and toks[j + 1].text in _VARIETY:
+            j += 3  # "Kites of every shape fly above the grass": what sort they are, then the verb
         after = toks[j].text if j < n else "."
         verb = after[:1].isalpha() and (after not in _STOP or after in _FINITE)
         # a listed noun there is a verb when an object follows it ("cans litter the floor")
