@@ -159,3 +159,9 @@ def test_separate_things_are_one_each():
 def test_a_bare_plural_subject_goes_on_past_what_sorts_it_comes_in():
     assert counts("A harbour at noon. Gliders of every shape fly above the boats.")["glider"] == 3
     assert counts("A harbour at noon. Zorbs of all sizes roll along the quay.")["zorb"] == 3
+
+
+def test_a_ship_called_her_stays_a_ship():
+    # "her" names ships too: only "his", or "her" with clothing or a body part, makes its owner a person
+    scene = parse_scene("The steamer waits at the quay; her funnel smokes.")
+    assert all(o.category != "figure" for o in scene.objects if o.name == "steamer")

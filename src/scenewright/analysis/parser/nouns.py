@@ -1282,7 +1282,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         opening = i == 0 or not toks[i - 1].text[:1].isalpha()
         placed = w == "the" and j < n and (opening and toks[j].text in _PLACING_VERBS or toks[j].text in _STANDING)
         # "...; his leather glove lies on it": a thing of his that a clause opens with, put somewhere
-        put = owner and opening and j + 1 < n and toks[j].text in _PLACING_VERBS and toks[j + 1].text in _STOP
+        placing = j < n and (toks[j].text in _PLACING_VERBS or f"{toks[j].text}s" in _PLACING_VERBS)
+        put = owner and opening and placing and j + 1 < n and toks[j + 1].text in _STOP
         # ("near", "by" and "past" the landmarks and the fittings of a place too: "near the airlock";
         # what hangs "above" one is no place either: "a hook above the loading pit")
         by = _placed_by(toks, i, (_BY_KINDS - {"near"}) | {"above"}) or _outside_part_of(toks, i)
@@ -2061,16 +2062,20 @@ def _has_hands(toks: list[_Tok], head: int) -> bool:
 
 def _owner_next(toks: list[_Tok], head: int) -> bool:
     """The subject at ``head`` opens its sentence, and the clause after its own (past a semicolon
-    or ", and") opens with "his" or "her" ("the falconer stands at a table; his glove lies on it"):
-    who has a his or a her is a person."""
+    or ", and") opens with "his" ("the falconer stands at a table; his glove lies on it"), or with
+    "her" and clothing or a body part ("her apron hangs on a hook"; a ship is a "her" too: "the
+    steamer waits; her funnel smokes"): who has a his is a person."""
     if not _opens_clause(toks, head):
         return False
-    for j in range(head + 1, min(len(toks) - 1, head + 16)):
+    vocabulary = load_vocabulary()
+    for j in range(head + 1, min(len(toks) - 2, head + 16)):
         w = toks[j].text
         if w in (".", "!", "?") or w in _CLAUSE_WORDS:
             return False
         if w == ";" or (w == "and" and toks[j - 1].text == ","):
-            return toks[j + 1].text in ("his", "her")
+            owner, owned = toks[j + 1].text, toks[j + 2].text
+            worn = owned in vocabulary.clothing or singular(owned) in vocabulary.clothing or owned in vocabulary.body_parts
+            return owner == "his" or (owner == "her" and worn)
     return False
 
 
