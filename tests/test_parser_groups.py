@@ -165,3 +165,8 @@ def test_a_ship_called_her_stays_a_ship():
     # "her" names ships too: only "his", or "her" with clothing or a body part, makes its owner a person
     scene = parse_scene("The steamer waits at the quay; her funnel smokes.")
     assert all(o.category != "figure" for o in scene.objects if o.name == "steamer")
+
+
+def test_clothing_listed_in_the_plural_put_somewhere_is_there():
+    text = "The glazier stands at the kiln; her gloves lie on the bench."
+    assert counts(text)["glove"] >= 1 and ("glove", "on", "bench") in relations(text)

@@ -1785,8 +1785,9 @@ def _laid_out(toks: list[_Tok], head: int, j: int) -> bool:
     """The clothing word at ``head`` is the subject of a placing verb ("leather coats hang on a
     rail", "a cloak lies on the bench") or is put somewhere ("a shawl draped over the chair"): a
     thing of the scene, not worn."""
-    if singular(toks[head].text) not in load_vocabulary().clothing or j >= len(toks):
-        return False
+    clothing = load_vocabulary().clothing
+    if (singular(toks[head].text) not in clothing and toks[head].text not in clothing) or j >= len(toks):
+        return False  # (listed as worn: "gloves", "boots")
     k = head - 1
     while k >= 0 and toks[k].text[:1].isalpha() and (toks[k].text in _DETERMINERS or toks[k].text not in _STOP):
         if _is_verb(toks[k].text):
