@@ -44,7 +44,7 @@ class _Contents:
                 toks[j].text not in _STOP and toks[j].text[0].isalnum() and (toks[j].text,) not in phrases
             )) and m.start - j < 5:  # fmt: skip
                 j -= 1  # (a relation phrase ends the noun phrase: "jars of fluid crowd every shelf")
-            if (prev is not None and self._held_inside(m, prev)) or self._wares(m):
+            if (prev is not None and self._held_inside(m, prev)) or self._wares(m, prev):
                 m.content = chain = True
                 continue
             if j < 1 or prev is None:
@@ -58,10 +58,11 @@ class _Contents:
             m.content = content
             chain = content
 
-    def _wares(self, m: _Mention) -> bool:
+    def _wares(self, m: _Mention, seller: _Mention | None) -> bool:
         """"A stall selling pies", "a cart serving hot drinks": a bare plural after a verb of
-        trade is what is sold, not things of the layout ("a vendor sells two balloons" are there);
-        a bare noun right after a verb of cooking is the food ("a woman grills fish")."""
+        trade is what is sold, not things of the layout ("a vendor sells two balloons" are there,
+        and so is the stock a person sells from the hand: "a vendor sells balloons", "a boy
+        hawking flags"); a bare noun right after a verb of cooking is the food ("a woman grills fish")."""
         head = m.phrase.split()[-1].lower()
         if m.counted or m.definite:
             return False
@@ -74,7 +75,10 @@ class _Contents:
             self.toks[k].text in (",", "and", "or") or self.toks[k].text not in _STOP and self.toks[k].text[:1].isalpha()
         ):
             k -= 1
-        return k >= 0 and self.toks[k].text in _WARES_VERBS
+        if k < 0 or self.toks[k].text not in _WARES_VERBS:
+            return False
+        hawker = seller is not None and seller.end in (k, k - 1) and self.catalogue[seller.category].shape == "figure"
+        return not (hawker and load_vocabulary().carried_by_hand(m.category, m.phrase))
 
     def _held_inside(self, m: _Mention, prev: _Mention) -> bool:
         """"A greenhouse holds tomato plants": what a building or a tent holds is inside it, its
@@ -85,7 +89,8 @@ class _Contents:
     def _is_content(self, m: _Mention, prev: _Mention, j: int) -> bool:
         w = self.toks[j].text
         marker = (self.toks[j - 1].text, w)
-        if marker in _LOADS and self.catalogue[prev.category].shape in _LOAD_HOSTS and max(self._size(m)) >= _LOAD_SIZE:
+        host = self.catalogue[prev.category]
+        if marker in _LOADS and (host.shape in _LOAD_HOSTS or host.support) and max(self._size(m)) >= _LOAD_SIZE:
             return False  # "a luggage cart piled with suitcases": they stand on the cart
         alive = self._lives(m.category) or m.category == "fish"
         if marker in _CONTENT_MARKERS and j - prev.end <= 2:
@@ -145,7 +150,7 @@ class _Contents:
 
     def _holds_living(self, holder: _Mention) -> bool:
         """What people or animals it is full of stand on: a carrier ("a stand packed with
-        fans", "a boat full of children") or a thing with a top."""
+        fans", "a boat full of children", "a jetty crowded with anglers") or a thing with a top."""
         vocabulary, category, name = load_vocabulary(), holder.category, holder.phrase
         vessel = vocabulary.carries(category, name, _VESSEL_KINDS) or vocabulary.carries(category, name, by_family=False)
         return self.catalogue[category].support or vessel  # ("a dome full of visitors": inside it)

@@ -55,6 +55,9 @@ def _around_sides(n: int, src: _Group, tgt: _Group, corners: bool) -> list[tuple
 
 def _instance_pairs(src: _Group, tgt: _Group, paired: bool) -> list[tuple[str, str]]:
     n, m = len(src.ids), len(tgt.ids)
+    if paired and m > n and m % n == 0:  # "each pair pulling a plough": a plough to each pair
+        unit = m // n
+        return [(src.ids[i], tgt.ids[i * unit + j]) for i in range(n) for j in range(unit)]
     if paired or (n == m and n > 1):
         return [(src.ids[i], tgt.ids[i % m]) for i in range(n)]
     return [(s, tgt.ids[i % m]) for i, s in enumerate(src.ids)]

@@ -52,11 +52,16 @@ _STANDING_PARTS = ("top", "roof", "rooftop", "deck", "prow", "bow", "stern")
 _DRIVING_PARTS = ("wheel", "helm", "tiller")
 #: Sides of a thing named by a possessive ("against its side"): the owner places.
 _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
-#: "Piled with" or "covered in" on a cart or a table is a load of things standing on it when they are
-#: this big or bigger ("a cart piled with suitcases", "a desk covered in monitors"); smaller ones
-#: ("piled with apples", "covered in crumbs") stay its contents.
-_LOADS = {("piled", "with"), ("stacked", "with"), ("heaped", "with"), ("covered", "in"), ("covered", "with")}
-_LOAD_HOSTS = ("cart", "truck", "table", "round_table", "desk", "counter", "bookshelf", "shop_shelf")
+#: "Piled with" or "covered in" on a cart, a stall, a shelf or anything with a top is a load of things
+#: standing on it when they are this big or bigger ("a cart piled with suitcases", "a desk covered in
+#: monitors", "a stall piled with crates of apples", "shelves packed with sacks"); smaller ones
+#: ("piled with apples", "covered in crumbs") stay its contents, and so does what a thing is "filled
+#: with" ("shelves filled with boxes and bottles": its stock).
+_LOADS = {("piled", "with"), ("stacked", "with"), ("heaped", "with"), ("covered", "in"), ("covered", "with"),
+          ("packed", "with"), ("laden", "with"), ("loaded", "with"), ("lined", "with"), ("stocked", "with"),
+          ("crammed", "with")}  # fmt: skip
+_LOAD_HOSTS = ("cart", "truck", "table", "round_table", "desk", "counter", "bookshelf", "shop_shelf", "market_stall",
+               "boat")  # fmt: skip
 _LOAD_SIZE = 0.3
 #: Things that show what follows their "of", even a definite one ("a statue of the king").
 _DEPICTIONS = ("statue", "hologram", "picture_frame", "sign", "billboard")

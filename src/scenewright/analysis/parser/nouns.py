@@ -95,7 +95,8 @@ _MODIFIER_NOUNS = {"glass", "stone", "rock", "crystal", "box", "plant", "flower"
 
 #: Adjectives that make any thing a projection.
 _PROJECTED = {"holographic", "hologram", "projected", "virtual"}
-#: Things that keep their kind when holographic: a sign with a holographic face is still a sign.
+#: Things that keep their kind when holographic: a sign with a holographic face is still a sign
+#: (and so is a thing with a top, which projects: "a holographic table").
 _SHOWS_PROJECTION = {"sign", "billboard", "menu_board"}
 
 
@@ -207,11 +208,11 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
                 continue
         of = found is not None and found[0] - i == 1 and found[0] + 1 < n and toks[found[0]].text == "of"
         # ("a family of four" is the family; "a quartet of four fiddlers" are the fiddlers)
-        members = toks[i].text in _PEOPLE_GROUPS and (
+        members = singular(toks[i].text) in _PEOPLE_GROUPS and (
             toks[found[0] + 1].text not in _NUMBERS or _match_at(toks, found[0] + 2) is not None
         ) if of else False
         counts = of and toks[found[0] + 1].text not in _DETERMINERS  # ("the tower of the castle" is a tower)
-        if counts and (toks[i].text in _QUANTITY and toks[i].text not in _PEOPLE_GROUPS or members):
+        if counts and (toks[i].text in _QUANTITY and singular(toks[i].text) not in _PEOPLE_GROUPS or members):
             i += 1  # "a crowd of fans", "a couple of crates", "a choir of monks": a count, not the crowd
             continue  # ("a family of four" is the family)
         if found:
@@ -229,6 +230,11 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
     for k, (s, e, cat, entry) in enumerate(raw):
         nxt = raw[k + 1] if k + 1 < len(raw) else None
         words = [t.text for t in toks[s:e]]
+        if entry is not None and e - s == 1 and nxt and nxt[0] == e and words[0] in vocabulary.adjectives:
+            raw[k] = (s, s, cat, entry)  # "a baby elephant": a describing word before a noun ("a sleeping
+            continue  # baby" ends its phrase: a baby)
+        # the head of "suits of armour" is "suits": plural, so "two suits of armour guard the door" has a verb
+        head = words[words.index("of") - 1] if "of" in words[1:] else words[-1] if words else ""
         # a singular noun before another names its kind ("glass table", "dragon statue"); a plural
         # one is the subject of a verb that looks like a noun ("pylons guard the altar")
         several = bool(words) and words[-1] in _SAME_PLURALS and _bare(toks, s)
@@ -236,12 +242,12 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             if nxt[1] - nxt[0] == 1 and not toks[nxt[0]].text.endswith("s"):
                 raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])  # "sheep graze by the wall": their verb
                 nxt = None
-        if nxt and nxt[0] == e and singular(words[-1]) == words[-1]:
+        if nxt and nxt[0] == e and singular(head) == head:
             last = toks[nxt[1] - 1].text
             if singular(last) != last and _plural_is_verb(toks, s, nxt):  # "a knight guards the gate": a verb
                 raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])
                 nxt = None
-        if nxt and nxt[0] == e and singular(words[-1]) == words[-1]:
+        if nxt and nxt[0] == e and singular(head) == head:
             kind_word = nxt[1] - nxt[0] == 1 and singular(toks[nxt[0]].text) in _KIND_WORDS
             if not (nxt[3] is not None and entry is None and kind_word):
                 modifier += words
@@ -256,7 +262,10 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a lighthouse keeper's cottage": the kind of keeper, no lighthouse
         if _owner_of_setting(toks, s, e, cat):
             continue  # "a kitchen in the cottage of the three bears": whose place it is, not who is there
-        if _worn(toks, s, e) or (entry is not None and entry.category == GENERIC and _worn_by(toks, s, mentions)):
+        # (a word nobody listed that the guess makes a person by the verb after it is worn too: "a grower
+        # in a hairnet kneels")
+        unlisted = entry is not None and (entry.category == GENERIC or vocabulary.match(tuple(words)) is None)
+        if _worn(toks, s, e) or (unlisted and _worn_by(toks, s, e, mentions)):
             continue  # "a knight in battered armour": what he wears, not a thing standing there; "a diver
             # in a drysuit": a word nobody listed that a person is in
         if _in_look_list(toks, s):
@@ -371,7 +380,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             not _joint_verb(toks, e, cat)
         ):  # ("a dog and a cat play": the verb of both)
             continue  # "a stone path", "a glass roof": an adjective here
-        if s > 0 and toks[s - 1].text in _PROJECTED and cat not in _SHOWS_PROJECTION:
+        projector = cat in _SHOWS_PROJECTION or load_catalogue()[cat].support
+        if s > 0 and toks[s - 1].text in _PROJECTED and not projector:
             cat, entry = "hologram", None  # "holographic koi" are light, not fish: place and size them as one
         animal = vocabulary.animal_senses.get(singular(words[-1])) if len(words) == 1 else None
         if animal is not None and (_verb_after(toks, e) or ("",))[0] in vocabulary.animal_only_verbs:
@@ -391,8 +401,27 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
     if opening_place is not None and not any(opening_place.split()[-1] in p.split() for p in places):
         places.insert(0, opening_place)
     _short_for_compound(toks, mentions)
+    _parts_of_each(toks, mentions)
     mentions = sorted(mentions + _elided_members(toks, mentions), key=lambda m: m.start)
     return _alias_mentions(toks, mentions), places
+
+
+def _parts_of_each(toks: list[_Tok], mentions: list[_Mention]) -> None:
+    """"Racks line the walls, every shelf packed with sacks": "every" or "each" before a part word
+    (``part_owners``) of a thing this sentence named before is that thing's part, so the phrase
+    names the things themselves (every rack), not a new one of the part's own catalogue word."""
+    owners = load_vocabulary().part_owners
+    catalogue = load_catalogue()
+    for k, m in enumerate(mentions):
+        word = singular(toks[m.end - 1].text)
+        if m.end - m.start != 1 or m.start < 1 or toks[m.start - 1].text not in ("each", "every") or word not in owners:
+            continue
+        stop = max((j for j in range(m.start) if toks[j].text in (".", "!", "?")), default=-1)
+        owner = next((o for o in reversed(mentions[:k]) if o.start > stop and o.category != m.category and (
+            o.category in owners[word] or catalogue[o.category].shape in owners[word]
+        )), None)  # fmt: skip
+        if owner is not None:
+            m.category, m.guess, m.alias = owner.category, owner.guess, True
 
 
 def _elided_at(toks: list[_Tok], i: int) -> int | None:
@@ -773,15 +802,18 @@ def _written(toks: list[_Tok]) -> list[str]:
     return words
 
 
-def _worn_by(toks: list[_Tok], s: int, mentions: list[_Mention]) -> bool:
-    """The noun at ``s`` follows "in" right after a person ("a diver in a drysuit"): what the
-    person wears, since people are in clothes, not in things nobody listed."""
+def _worn_by(toks: list[_Tok], s: int, e: int, mentions: list[_Mention]) -> bool:
+    """The noun at ``s`` follows "in" right after a person ("a diver in a drysuit"), or right after
+    a noun and before what only people do ("a grower in a hairnet kneels"): what the person wears,
+    since people are in clothes, not in things nobody listed."""
     j = s - 1
     while j >= 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
         j -= 1
     if j < 1 or toks[j].text not in ("a", "an") or toks[j - 1].text != "in":
         return False
-    return bool(mentions) and mentions[-1].end == j - 1 and _person_mention(mentions[-1])
+    if not mentions or mentions[-1].end != j - 1:
+        return False
+    return _person_mention(mentions[-1]) or _does_what_people_do(toks, e)
 
 
 #: Participles before "like" that make what follows a look ("shaped like a fish", "painted like a comic").
@@ -1217,7 +1249,12 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
                 looks.add(j)
                 j += 1
                 continue
-            if j in covered or not x[:1].isalpha() or x in _STOP:
+            if j in covered and w == "of" and _kind_before_plural(toks, j, covered):
+                looks.add(j)  # "a cluster of hot dog stands": no "dog" can follow "of" alone, it names the stands' kind
+                j += 1
+                continue
+            kind_of = j - 1 in looks and w == "of"  # ("hot dog stands": a noun, though "stands" is a verb too)
+            if j in covered or not x[:1].isalpha() or (x in _STOP and not kind_of):
                 break
             # (a plural verb form cannot follow "a": "a washing line hangs" has no verb "line")
             plural_form = x in _FINITE and not x.endswith("s") and w in ("a", "an", "another")
@@ -1278,21 +1315,38 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             continue  # "its four propellers gleaming": a thing's parts, counted ("its two cubs" are there)
         opening = i == 0 or not toks[i - 1].text[:1].isalpha()
         placed = w == "the" and j < n and (opening and toks[j].text in _PLACING_VERBS or toks[j].text in _STANDING)
+        # "...; his leather glove lies on it": a thing of his that a clause opens with, put somewhere
+        placing = j < n and (toks[j].text in _PLACING_VERBS or f"{toks[j].text}s" in _PLACING_VERBS)
+        put = owner and opening and placing and j + 1 < n and toks[j + 1].text in _STOP
         # ("near", "by" and "past" the landmarks and the fittings of a place too: "near the airlock";
         # what hangs "above" one is no place either: "a hook above the loading pit")
         by = _placed_by(toks, i, (_BY_KINDS - {"near"}) | {"above"}) or _outside_part_of(toks, i)
         by = by and not _named_before(toks, head)
         by = by and (j >= n or toks[j].text not in ("one", "ones"))
-        if definite and entry.category != "figure" and not placed and not by:
+        if definite and entry.category != "figure" and not placed and not put and not by:
             continue  # "the far end", "her turn": after "the" or "her", only a person is read, a
             # subject that opens a clause standing somewhere ("The periscope rises in the middle"),
             # or what a thing is put by ("a horse waits beside the bunkhouse")
         out.append((head, head + 1, entry.category, entry))
         covered.add(head)
     out += _bare_subjects(toks, covered) + _bare_objects(toks, covered) + _landforms(toks, covered)
+    out += _crowds(toks, raw, covered)
     out += _owners_of_parts(toks, covered)
     out += _loose_parts(toks, covered) + _buildings(toks, covered)
     return out + _unknown_heads(toks, raw, covered) + _possessed(toks, covered)
+
+
+def _kind_before_plural(toks: list[_Tok], j: int, covered: set[int]) -> bool:
+    """The singular count noun at ``j`` (after "<quantity> of") stands right before a plural
+    nobody listed that ends the phrase: it names that plural's kind ("a row of oak saplings" aside,
+    "a cluster of hot dog stands")."""
+    word = toks[j].text
+    if j + 1 >= len(toks) or j + 1 in covered or singular(word) != word or word in _SAME_PLURALS:
+        return False  # ("a flock of sheep grazes": the flock's verb)
+    if _stuff_word(toks, j, set()):
+        return False
+    nxt, after = toks[j + 1].text, toks[j + 2].text if j + 2 < len(toks) else "."
+    return singular(nxt) != nxt and nxt[:1].isalpha() and (after in _STOP or not after[:1].isalpha())
 
 
 def _shares_article(toks: list[_Tok], i: int, covered: set[int]) -> bool:
@@ -1630,6 +1684,10 @@ def _loose_parts(toks: list[_Tok], covered: set[int]) -> list:
     return out
 
 
+#: Words after "of" that say what sorts a plural comes in ("of every shape", "of all sizes").
+_VARIETY = {"every", "all", "many", "different", "various", "each"}
+
+
 def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
     """Bare plurals nobody listed that open a sentence or a clause after ", and" as its subject
     ("Noodle cartons and soda cans litter the floor"): no count, but a verb (or "and" and another
@@ -1650,6 +1708,8 @@ def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
                 break
         if head is not None and j + 2 < n and toks[j].text == "of" and _stuff_word(toks, j + 1, covered):
             j += 2  # "Bales of wool are stacked": units of stuff, counted by the unit
+        elif head is not None and j + 3 < n and toks[j].text == "of" and toks[j + 1].text in _VARIETY:
+            j += 3  # "Kites of every shape fly above the grass": what sort they are, then the verb
         after = toks[j].text if j < n else "."
         verb = after[:1].isalpha() and (after not in _STOP or after in _FINITE)
         # a listed noun there is a verb when an object follows it ("cans litter the floor")
@@ -1665,6 +1725,31 @@ def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
     return out
 
 
+#: Markers after which what a seat or a perch holds is a crowd on it.
+_PACKED = {("packed", "with"), ("crowded", "with"), ("thronged", "with"), ("teeming", "with")}
+
+
+def _crowds(toks: list[_Tok], raw: list, covered: set[int]) -> list:
+    """A bare plural nobody listed that a seat or a perch is packed or crowded with, as the whole
+    phrase after the marker ("grandstands packed with fans", "a pier crowded with anglers"): the
+    people on it, a crowd (a wheelbarrow full of dags, a cart packed with gourds: its load)."""
+    vocabulary = load_vocabulary()
+    ends = {e: (cat, " ".join(t.text for t in toks[s:e])) for s, e, cat, _ in raw}
+    out: list = []
+    for k in range(3, len(toks)):
+        word, after = toks[k].text, toks[k + 1].text if k + 1 < len(toks) else "."
+        if k in covered or (toks[k - 2].text, toks[k - 1].text) not in _PACKED or k - 2 not in ends:
+            continue
+        ends_phrase = after in _STOP or not after[:1].isalpha()
+        if singular(word) == word or not vocabulary.is_thing_word(word) or not ends_phrase:
+            continue
+        category, name = ends[k - 2]
+        if vocabulary.carries(category, name, ("seats", "perches")):
+            out.append((k, k + 1, "figure", vocabulary.family("figure")))
+            covered.add(k)
+    return out
+
+
 def _verb_of_one(toks: list[_Tok], k: int) -> bool:
     """The word at ``k`` is the -s verb of the singular noun right before it ("a girl *holds*"),
     not a plural noun there ("peacock *feathers*")."""
@@ -1675,16 +1760,20 @@ def _verb_of_one(toks: list[_Tok], k: int) -> bool:
 
 
 def _bare_objects(toks: list[_Tok], covered: set[int]) -> list:
-    """A bare plural nobody listed right after the -s verb of a named one, ending the phrase:
-    what the verb acts on ("a street performer juggles clubs beside the fountain")."""
+    """A bare plural nobody listed after the -s verb of a named one, ending the phrase: what the
+    verb acts on ("a street performer juggles clubs beside the fountain"), also after a word that
+    says its kind ("a robot carries ice blocks up the ramp")."""
     vocabulary = load_vocabulary()
     out: list = []
     for k in range(2, len(toks)):
         word = toks[k].text
         after = toks[k + 1].text if k + 1 < len(toks) else "."
-        if k in covered or k - 1 in covered or k - 2 not in covered or toks[k].quoted:
+        kind = k > 2 and k - 2 not in covered and k - 3 in covered and toks[k - 1].text[:1].isalpha()
+        kind = kind and toks[k - 1].text not in _STOP and singular(toks[k - 1].text) == toks[k - 1].text
+        verb = k - 2 if kind and not _participle(toks[k - 1].text) else k - 1
+        if k in covered or k - 1 in covered or verb - 1 not in covered or toks[k].quoted:
             continue
-        if singular(word) == word or not _verb_of_one(toks, k - 1) or word.endswith("wards"):
+        if singular(word) == word or not _verb_of_one(toks, verb) or word.endswith("wards"):
             continue  # ("drives towards": an adverb)
         if not (after in _STOP or not after[:1].isalpha()) or not vocabulary.is_thing_word(word) or _participle(word):
             continue
@@ -1730,8 +1819,9 @@ def _laid_out(toks: list[_Tok], head: int, j: int) -> bool:
     """The clothing word at ``head`` is the subject of a placing verb ("leather coats hang on a
     rail", "a cloak lies on the bench") or is put somewhere ("a shawl draped over the chair"): a
     thing of the scene, not worn."""
-    if singular(toks[head].text) not in load_vocabulary().clothing or j >= len(toks):
-        return False
+    clothing = load_vocabulary().clothing
+    if (singular(toks[head].text) not in clothing and toks[head].text not in clothing) or j >= len(toks):
+        return False  # (listed as worn: "gloves", "boots")
     k = head - 1
     while k >= 0 and toks[k].text[:1].isalpha() and (toks[k].text in _DETERMINERS or toks[k].text not in _STOP):
         if _is_verb(toks[k].text):
@@ -1844,6 +1934,7 @@ def _guess(toks: list[_Tok], head: int, before: list[_Tok]) -> Entry:
     human = human or _goes_on_doing(toks, head)
     moody = any(t.text in vocabulary.moods for t in before)
     acts = moody or _acts_as_person(toks, head + 1) or _equipped(toks, head + 1) or _has_hands(toks, head)
+    acts = acts or _owner_next(toks, head)
     if entry.category == GENERIC or (human and entry.category == "machine"):
         entry = vocabulary.guess_agent(word, acts, human) or entry
     found = _verb_after(toks, head + 1)
@@ -1910,12 +2001,17 @@ def _seat_after(toks: list[_Tok], k: int) -> bool:
 
 def _dressed(toks: list[_Tok], k: int) -> bool:
     """Clothing follows the noun ending at ``k`` after "in" or "wearing" ("a perfumer in a velvet
-    waistcoat", "a refueller in a hi-vis vest"): an agent noun that wears clothes is a person."""
+    waistcoat", "a refueller in a hi-vis vest"), or a word nobody listed that what only people do
+    follows ("a grower in a hairnet kneels"): an agent noun that wears clothes is a person."""
     if k >= len(toks) or toks[k].text not in _WEARING:
         return False
-    clothing = load_vocabulary().clothing
-    for t in toks[k + 1 : k + 6]:
+    vocabulary = load_vocabulary()
+    clothing = vocabulary.clothing
+    for i, t in enumerate(toks[k + 1 : k + 6], start=k + 1):
         if t.text in clothing or singular(t.text) in clothing:
+            return True
+        unlisted = vocabulary.match((t.text,)) is None and match_phrase((t.text,)) is None
+        if unlisted and t.text[:1].isalpha() and t.text not in _STOP and _does_what_people_do(toks, i + 1):
             return True
         if not t.text[:1].isalpha() or t.text in _STOP and t.text not in _DETERMINERS:
             return False
@@ -1996,6 +2092,25 @@ def _has_hands(toks: list[_Tok], head: int) -> bool:
             return False
         if w in ("his", "her") and parts.get(toks[j + 1].text) == "on" or _equipped(toks, j):
             return True
+    return False
+
+
+def _owner_next(toks: list[_Tok], head: int) -> bool:
+    """The subject at ``head`` opens its sentence, and the clause after its own (past a semicolon
+    or ", and") opens with "his" ("the falconer stands at a table; his glove lies on it"), or with
+    "her" and clothing or a body part ("her apron hangs on a hook"; a ship is a "her" too: "the
+    steamer waits; her funnel smokes"): who has a his is a person."""
+    if not _opens_clause(toks, head):
+        return False
+    vocabulary = load_vocabulary()
+    for j in range(head + 1, min(len(toks) - 2, head + 16)):
+        w = toks[j].text
+        if w in (".", "!", "?") or w in _CLAUSE_WORDS:
+            return False
+        if w == ";" or (w == "and" and toks[j - 1].text == ","):
+            owner, owned = toks[j + 1].text, toks[j + 2].text
+            worn = owned in vocabulary.clothing or singular(owned) in vocabulary.clothing or owned in vocabulary.body_parts
+            return owner == "his" or (owner == "her" and worn)
     return False
 
 
@@ -2202,8 +2317,10 @@ _POSITION_WORDS = {"middle", "centre", "center", "corner", "end", "front", "back
 
 
 def _position_adjective(toks: list[_Tok], j: int) -> bool:
-    """"the middle bench": a place noun between a determiner and a noun works as an adjective."""
-    return toks[j].text in _POSITION_WORDS and j > 0 and toks[j - 1].text in _DETERMINERS and (
+    """"the middle bench", "the two middle racks": a place noun between a determiner (or a count)
+    and a noun works as an adjective."""
+    before = toks[j - 1].text if j > 0 else ""
+    return toks[j].text in _POSITION_WORDS and (before in _DETERMINERS or before in _NUMBERS) and (
         j + 1 < len(toks) and toks[j + 1].text[:1].isalpha() and toks[j + 1].text not in _STOP
     )
 
@@ -2257,7 +2374,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             size = m.guess.size if m.guess is not None else load_catalogue()[m.category].size
             rests = m.guess.rests if m.guess is not None else load_catalogue()[m.category].rests
             small = rests == "surface" and max(size) < 1.0
-            pair = q in ("pair", "pairs") and toks[m.end - 1].text in load_vocabulary().pair_nouns  # "a pair of shears"
+            # "a pair of shears", "a set of brass scales": one thing that is named in the plural
+            pair = q in ("pair", "pairs", "set") and toks[m.end - 1].text in load_vocabulary().pair_nouns
             # "a stack of plates", "a pile of parchment", "a line of bunting": one heap of small
             # things, one lot of stuff (no count noun); "a flock of sheep" are sheep
             shape = load_catalogue()[m.category].shape
@@ -2307,9 +2425,9 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         if adjectives and (w in load_vocabulary().clothing or singular(w) in load_vocabulary().clothing):
             adjectives = []  # "fishermen in red caps cast nets": what they wear ends there, the word
             break  # after it is their verb, no kind of net
-        bare = singular(toks[m.end - 1].text) != toks[m.end - 1].text and not adjectives
+        bare = singular(toks[m.end - 1].text) != toks[m.end - 1].text
         if j == prev_end and bare and _verb_of_one(toks, j):
-            break  # "a girl holds balloons": the verb of the one before, no kind of balloon
+            break  # "a girl holds (red) balloons": the verb of the one before, no kind of balloon
         adjectives.insert(0, t.orig)
         j -= 1
     if count is None and j >= 1 and (toks[j - 1].text, toks[j].text) in _CROWDED:
@@ -2346,12 +2464,19 @@ _QUANTITY_ONE = {"row", "line", "stack", "pile", "set", "group", "cluster", "rin
 _UNIT_NOUNS = {"row", "line", "column", "stack", "pile", "group", "cluster", "ring", "circle", "set", "rank", "tier"}
 
 
+#: Units a group of groups names its members by ("four teams of horses, each pair pulling a plough").
+_MEMBER_UNITS = ("pair", "couple", "trio")
+
+
 def _per_unit(toks: list[_Tok], end: int) -> int | None:
     """The count in ", five in each row" after a noun phrase, in its sentence ("two rows of
-    machines face each other, five in each row"), else None."""
+    machines face each other, five in each row"), or the unit ", each pair ..." names ("four
+    teams of horses, each pair pulling a plough": two a team), else None."""
     k = end
     while k < len(toks) and toks[k].text not in (".", "!", "?", ";"):
         words = [t.text for t in toks[k : k + 4]]
+        if toks[k - 1].text == "," and words[0] in ("each", "every") and words[1:2] and words[1] in _MEMBER_UNITS:
+            return _QUANTITY[words[1]]
         if (k == end or toks[k - 1].text == ",") and len(words) == 4 and words[0] in _NUMBERS and words[1] in (
             "in", "per", "to"
         ) and words[2] in ("each", "every", "a") and singular(words[3]) in _UNIT_NOUNS:  # fmt: skip

@@ -14,6 +14,7 @@ from importlib import resources
 
 from scenewright.analysis.parser.sizes import _NUM_WORD
 from scenewright.analysis.parser.tokens import _Tok
+from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import _DEFINITE, _STOP, _UNITS, _is_verb
 from scenewright.core.relations import FAR, NEAR
 
@@ -89,6 +90,26 @@ def _distance_at(toks: list[_Tok], i: int) -> _Rel | None:
     return _Rel(kind, i, k + 1 if has_from else k, elliptic=not has_from)
 
 
+#: Words for the lines things stand in ("in two long rows").
+_LINE_WORDS = ("rows", "lines", "columns", "ranks")
+#: Describing words between the count and the line word that leave the phrase a formation.
+_MAX_LINE_WORDS = 2
+
+
+def _rows_at(toks: list[_Tok], i: int) -> _Rel | None:
+    """"In two long rows", "in three straight lines": the rows formation with describing words
+    the listed phrases ("in two rows", "in two neat rows") do not spell out."""
+    if toks[i].text != "in" or i + 2 >= len(toks) or _NUM_WORD.get(toks[i + 1].text, 0) < 2:
+        return None
+    for j in range(i + 2, min(i + 3 + _MAX_LINE_WORDS, len(toks))):
+        w = toks[j].text
+        if w in _LINE_WORDS:
+            return _Rel("rows", i, j + 1)
+        if w in _STOP or not w.isalpha() or not load_vocabulary().is_adjective(w):
+            return None
+    return None
+
+
 def _qualifies_noun(toks: list[_Tok], end: int, kind: str) -> bool:
     """"on the left wall", "on the left bench": the side word is the next noun's adjective, so
     the phrase is only its preposition (a wall is no object: nothing is left of anything).
@@ -117,7 +138,7 @@ def _find_relations(toks: list[_Tok], taken: set[int]) -> list[_Rel]:
         if i in taken or (i > 0 and toks[i - 1].text in _ARTICLES):
             i += 1
             continue
-        hit = _distance_at(toks, i)
+        hit = _distance_at(toks, i) or _rows_at(toks, i)
         for length in range(min(_MAX_REL, len(toks) - i), 0, -1):
             if hit or any(k in taken for k in range(i, i + length)):
                 continue

@@ -45,6 +45,7 @@ from scenewright.analysis.parser.kinds import _Kinds
 from scenewright.analysis.parser.nouns import (
     UNCOUNTED,
     _COMPARED,
+    _MEMBER_UNITS,
     _Group,
     _Mention,
     _find_mentions,
@@ -84,11 +85,19 @@ from scenewright.analysis.parser.words import (
     _STOP,
     _TURN_VERBS,
     _USE_VERBS,
+    _QUANTITY,
     _VAGUE,
+    _WARES_VERBS,
     _is_verb,
 )
 from scenewright.core.catalogue import Category, load_catalogue, match_phrase, singular
 
+
+#: Describing words that give each of several its own ("at separate tables", "in individual pens").
+_APIECE = {"separate", "individual"}
+
+#: m, a seat narrower than this holds one sitter ("two rows of chairs": a chair each, not of benches).
+_ONE_SEAT_WIDTH = 1.0
 
 #: How many sides "every side" / "all sides" names: a square's.
 _ALL_SIDES = 4
@@ -113,8 +122,9 @@ def _each_lead(toks: list[_Tok], k: int, ce: int) -> int:
     words then read as one "each"); ``k`` if none opens there."""
     words = [t.text for t in toks[k : min(k + 4, ce)]]
     j = k + 1
-    if words[:2] in (["each", "one"], ["every", "one"]):
-        j += 1
+    unit = words[:1] in (["each"], ["every"]) and len(words) > 1 and words[1] in _MEMBER_UNITS
+    if words[:2] in (["each", "one"], ["every", "one"]) or unit:
+        j += 1  # ("each pair pulling a plough": each of the pairs of the group before)
     elif words[:1] != ["each"]:
         return k
     if [t.text for t in toks[j : j + 2]] in (["of", "them"], ["of", "these"], ["of", "those"]):
@@ -169,6 +179,8 @@ class _Clause:
     #: "each" opened a deed ("each bent over an anvil", "each shaping a pot"): every thing the
     #: clause names after it comes once per member, not only its with-parts.
     each_deed: bool = False
+    #: How many members "each" takes at a time: "each pair pulling a plough" is a plough a pair.
+    each_unit: int = 1
     #: The group whose members each have their own target of the next placing ("each in a seat").
     each_own: int | None = None
     #: The subject's own verb has come ("a guard waves at ..."), so a participle after a target
@@ -260,6 +272,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         #: Stand → the things on it, one a stand, as many as they come to by the end ("busts on
         #: pedestals at each corner": four pedestals).
         self.one_each: dict[int, int] = {}
+        #: Where "of" follows "in two rows" after living subjects → those subjects ("twelve jurors sit in
+        #: two rows of chairs"): the seats the rows are made of carry them, one each.
+        self.rows_of: dict[int, list[int]] = {}
         #: Living thing → what the text has it "at" (a desk, a stall): "on it" after it names that first.
         self.worked_at: dict[int, int] = {}
 
@@ -545,6 +560,24 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self._aboard_their_vehicle(mentions)
         self._left_by_owner(mentions)
         self._one_per_holder()
+        self._seated_rows(mentions)
+
+    def _seated_rows(self, mentions: list[_Mention]) -> None:
+        """"Twelve jurors sit in two rows of chairs": the rows are the seats', one seat a sitter
+        when a seat holds one (however many the quantity word made: "in three rows of benches"
+        keeps three benches), the sitters on them."""
+        for of, sitters in self.rows_of.items():
+            seat = next((m for m in mentions if of < m.start <= of + 3 and m.group >= 0), None)
+            if seat is None or self.catalogue[seat.category].shape not in _SEATS:
+                continue
+            g = seat.group
+            if self.groups[g].size[0] < _ONE_SEAT_WIDTH:
+                self.groups[g].count = sum(self.groups[h].count for h in sitters)
+            self.formations[g] = self.formations.get(sitters[0], "rows")
+            if sitters[0] in self.lines:
+                self.lines[g] = self.lines[sitters[0]]
+            for h in sitters:
+                self.relations.append(("on", h, g, None))
 
     def _worked_there(self, c: _Clause, subjects: list[int], since: int) -> list[int]:
         """What the living subjects of a clause after a fronted surface phrase act on, which
@@ -820,6 +853,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 k = last_event_end = k + 1
                 continue
             lead = _each_lead(toks, k, ce) if k not in self.by_start else k
+            unit = _QUANTITY.get(toks[k + 1].text, 1) if lead > k and toks[k + 1].text in _MEMBER_UNITS else 1
             if lead > k:  # "every one of them with a spade": as "each with a spade"
                 w, k = "each", lead
             nxt = toks[k + 1].text if k + 1 < ce else ""
@@ -829,7 +863,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             each_hold = (nxt, toks[k + 2].text if k + 2 < ce else "") in _HOLD_PAIRS
             # "four pilots sit at the console, each in a leather seat": a seat apiece
             each_seat = k + 1 in self.rel_at and self.rel_at[k + 1].kind in ("in", "on", "at")
-            each_deed = _participle(nxt) and k + 1 not in self.rel_at and k + 1 not in self.by_start
+            # ("each pair pulling a plough": a plough a pair, pulled)
+            towing = k + 1 in self.rel_at and self.rel_at[k + 1].kind == "towing"
+            each_deed = _participle(nxt) and (k + 1 not in self.rel_at or towing) and k + 1 not in self.by_start
             if w == "each" and (each_part or each_passive or each_hold or each_seat or each_deed):
                 plural = [g for g in [*self.history, *c.groups] if self.groups[g].count > 1]
                 # "four astronauts sit on stools around a table, each holding a pouch": the holders
@@ -840,7 +876,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 if (holding or each_deed) and people:
                     plural = people[:1]
                 if plural:
-                    c.each, c.each_deed = plural[-1], each_deed and bool(people)
+                    c.each, c.each_deed, c.each_unit = plural[-1], each_deed and bool(people), unit
                 k += 1
                 continue
             members = c.main or list(prev_subject)
@@ -863,6 +899,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             hand = k not in self.rel_at and bool(holder) and (
                 (w in _HAND_VERBS and self._person_at(holder[-1]))
                 or (w in _USE_VERBS and self._living(holder[-1]) and self._hand_object(k + 1, ce) is not None)
+                # ("a vendor sells balloons": a person sells what they can hold from the hand)
+                or (w in _WARES_VERBS and self._person_at(holder[-1]) and self._hand_object(k + 1, ce) is not None)
                 or (self._person_at(holder[-1]) and self._used_at(k, ce))
             )
             # "sipping coffee from a paper cup", "practises with five clubs": in the doer's hand
@@ -931,7 +969,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 if g < 0:
                     continue
                 if c.each is not None and (c.head is not None or c.each_deed) and not m.definite and g != c.each:
-                    self.groups[g].count = max(1, m.count) * self.groups[c.each].count
+                    self.groups[g].count = max(1, m.count) * max(1, self.groups[c.each].count // c.each_unit)
                     self.pair_each.add((g, c.each))
                 # (not what a participle acts on: "noting every crate on a clipboard")
                 words = range(m.start - 1, max(m.start - 6, -1), -1)
@@ -1145,7 +1183,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 if c.hold or held or (rests == "surface" and self.catalogue[self.groups[h].category].support):
                     self._relate("on", [g], h, instance=1 if g in c.others and self.groups[h].count > 1 else None)
                     c.produced = True
-                    if held or (c.hold and self._person_at(h) and not self._living(g)):
+                    # ("a mother holds a sleeping baby", "carries a lamb": in arms, a small living thing too)
+                    small = not self._living(g) or max(self.groups[g].size) <= _HANDHELD_SIZE
+                    if held or (c.hold and self._person_at(h) and small):
                         if not c.shared:
                             self.in_hand.append((g, h))
                         self.carried.add((g, h))
@@ -1296,14 +1336,18 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 for k in range(last_event_end, rel.start + 1)  # "with parrots inside hangs from": its own verb
                 if k not in self.content_at and toks[k - 1].text not in ("of", "in")  # "a farmer in dungarees"
                 and toks[k - 1].text not in _DETERMINERS
-                and (k - 1 not in self.content_at or toks[k].text in _FINITE)
+                # (after a plural it is a verb: "a stall piled with crates of apples stands by the gate")
+                and (
+                    k - 1 not in self.content_at or toks[k].text in _FINITE or singular(toks[k - 1].text) != toks[k - 1].text
+                )
             )
             # "a dad with his putter beside the windmill": what is in hand goes where its holder is
             # ("reads a book on the bench", "sharpen their spears on a grindstone": the readers and sharpeners)
             # (what a person holds or carries is in hand as well: "a waiter carries a tray between the tables")
             holding = c.hand or c.hold and all(self._living(h) for h in c.head)
-            # (the holder faces what is aimed at: "aims a pitchfork at them")
-            in_hand = holding and target not in _PERSONAL and (kind in (*_GROUND_KINDS, *_HOLDER_KINDS, "face to"))
+            # (the holder faces what is aimed at: "aims a pitchfork at them"; "eats a pie at the foot of the
+            # tower": the eater is there)
+            in_hand = holding and target not in _PERSONAL and kind in (*_GROUND_KINDS, *_HOLDER_KINDS, "face to", "foot of")
             # ("senators sit on benches, with an amphora beside each bench": by their own seat, not in hand)
             seats = {r[2] for r in self.relations if r[0] == "on" and r[1] in c.head}
             if in_hand and c.wsub and isinstance(target, list) and any(t in seats for t in target):
@@ -1459,8 +1503,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                         self.relations.append(("side of", g, g, None))
                     if kind == "rows" and lines:
                         self.lines.setdefault(g, lines)
+                    uncounted = g not in self.numbered and self.groups[g].count == UNCOUNTED
+                    if kind == "rows" and lines and lines > 1 and uncounted:
+                        self.groups[g].count = lines * UNCOUNTED  # "cars are parked in two long rows": a few a row
                 elif place:
                     self.anchors.setdefault(g, place.removeprefix("anchor "))
+            seated = bool(srcs) and all(self._living(g) for g in srcs)
+            if kind == "rows" and rel.end < ce and toks[rel.end].text == "of" and seated:
+                self.rows_of[rel.end] = list(srcs)
             if kind.startswith("anchor ") and toks[rel.end - 1].text != "of":
                 return rel.end  # "In the centre a huge spellbook floats ...": the noun after is the subject
             return end
@@ -1653,7 +1703,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if isinstance(targets, list) and targets and head:
             active = _REVERSED[kind]
             if c.each is not None:  # "three tables, each surrounded by two chairs": two per table
-                self._per_each([t for t in targets if t != c.each], c.each)
+                self._per_each([t for t in targets if t != c.each], c.each, c.each_unit)
             for t in targets:
                 for h in head:
                     self._relate(active, [t], h)
@@ -1697,7 +1747,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         """Relate the sources to the targets, one per member where "each" / "every" says so, and
         keep what the clause's next phrase chains on."""
         toks, rel, kind, target, targets, srcs, end = self.toks, p.rel, p.kind, p.target, p.targets, p.srcs, p.end
-        if kind in ("flank", "flank elliptic") and not toks[rel.start].text.startswith("flank"):
+        # "a fiddler and a piper stand on either side of the stage": one a side, each once
+        one_each = kind in ("flank", "flank elliptic") and len(srcs) == 2
+        one_each = one_each and all(self.groups[g].count == 1 for g in srcs)
+        if kind in ("flank", "flank elliptic") and not toks[rel.start].text.startswith("flank") and not one_each:
             self._one_a_side(srcs)  # also beside what is no object: "on each side of the elevator"
         hang = kind == "hanging from" or self._hung_before(rel.start)
         hang = hang or any(t.text in _HANG_VERBS for t in toks[rel.start : rel.end])  # "hangs over the bar"
@@ -1741,6 +1794,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._per_each(targets, c.each)  # "each in a leather seat": one seat apiece
         elif tm is not None and kind == "on" and self._bare(tm) and len(srcs) == 1 and self._living(srcs[0]):
             self._per_each(targets, srcs[0])  # "two soldiers on horseback": a horse each
+        elif tm is not None and len(srcs) == 1 and self._uncounted_new(tm) and self._apiece(tm):
+            self.groups[targets[0]].count = self.groups[srcs[0]].count  # "two lawyers at separate tables": one each
         elif tm is not None and kind == "on" and len(srcs) == 1 and self._living(srcs[0]) and self._seats_each(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "four astronauts sit on stools": one each
         elif tm is not None and kind == "on" and len(srcs) == 1 and self._stands_each(srcs[0], tm):
@@ -1763,7 +1818,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         )
         for t in targets if not crown else ():
             for one in p.ordinals or (instance,):
-                self._relate(kind, srcs, t, hang, one)
+                if one_each:
+                    self._relate("left of", srcs[:1], t, hang, one)
+                    self._relate("right of", srcs[1:], t, hang, one)
+                else:
+                    self._relate(kind, srcs, t, hang, one)
             # a person holds nothing on top, but carries what is on a knee or an arm ("a crow on each of
             # its arms": a scarecrow's too)
             limb = p.part is not None and load_vocabulary().body_parts.get(p.part) == "on" and self._person_at(t)
@@ -1808,6 +1867,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         thing, stand = self.groups[g].size, self.groups[m.group].size if m.group >= 0 else (0, 0)
         several = self.groups[g].count > 1 and not self._living(g)
         return several and self._uncounted_new(m) and stand[0] * stand[1] <= thing[0] * thing[1]
+
+    @staticmethod
+    def _apiece(m: _Mention) -> bool:
+        """Whether its describing words give each of several its own ("separate tables")."""
+        return bool(_APIECE & {a.lower() for a in m.adjectives})
 
     def _uncounted_new(self, m: _Mention) -> bool:
         """A plural with no count of its own, new here ("in clay pots", "on stools")."""
@@ -1938,11 +2002,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "corner"
         return None
 
-    def _per_each(self, srcs: list[int], target: int) -> None:
-        """As many of each source as it says, for every one of the target group."""
+    def _per_each(self, srcs: list[int], target: int, unit: int = 1) -> None:
+        """As many of each source as it says, for every one (every ``unit``: a pair) of the target group."""
         for src in srcs:
             if (src, target) not in self.pair_each:
-                self.groups[src].count *= self.groups[target].count
+                self.groups[src].count *= max(1, self.groups[target].count // unit)
                 self.pair_each.add((src, target))
 
     def _one_a_side(self, srcs: list[int], sides: int = 2, row: bool = False) -> None:

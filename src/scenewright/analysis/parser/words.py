@@ -23,7 +23,7 @@ _VAGUE = {"few": 3, "several": 3, "some": 3, "various": 3, "many": 5, "numerous"
 _QUANTITY = {
     "pair": 2, "pairs": 4, "couple": 2, "row": 3, "rows": 6, "line": 3, "set": 3, "group": 3, "cluster": 3,
     "stack": 3, "stacks": 4, "pile": 3, "piles": 4, "heap": 3, "heaps": 4, "bunch": 3, "bunches": 4,
-    "bundle": 3, "bundles": 4, "lane": 3, "lanes": 6, "queue": 4, "handful": 3, "collection": 3,
+    "bundle": 3, "bundles": 4, "lane": 3, "lanes": 6, "queue": 4, "handful": 3, "collection": 3, "teams": 10,
     "coils": 3, "coil": 1, "ring": 4, "circle": 4, "lot": 5, "lots": 5, "plenty": 5, "dozens": 12, "hundreds": 20,
     "series": 3, "trio": 3, "clusters": 5, "grove": 4, "patch": 1, "flock": 6, "herd": 6, "flocks": 12,
     "herds": 12, "string": 1, "school": 8, "shoal": 8, "swarm": 10, "pod": 4, "pack": 5, "pride": 5, "troop": 6,
@@ -72,7 +72,8 @@ _CONTENT_HEADS = {"vase", "bowl", "basket", "bucket", "plate", "bottle", "cup", 
                   "barrel", "shipping_container", "flower_bed", "cauldron", "sandbox", "hologram"}  # fmt: skip
 _CONTENT_MARKERS = {("full", "of"), ("filled", "with"), ("packed", "with"), ("overflowing", "with"),
                     ("covered", "in"), ("covered", "with"), ("stacked", "with"), ("heaped", "with"),
-                    ("stocked", "with"), ("lined", "with"), ("piled", "with"), ("overflow", "with")}  # fmt: skip
+                    ("stocked", "with"), ("lined", "with"), ("piled", "with"), ("overflow", "with"),
+                    ("crowded", "with")}  # fmt: skip
 #: Verbs of trade: the bare plural after them is what is sold or served, not things of the layout
 #: ("a stall selling pies", "a cart serving hot drinks"; but "a vendor sells two balloons").
 _WARES_VERBS = {"sell", "sells", "selling", "sold", "serve", "serves", "serving", "served", "offer", "offers",
@@ -101,7 +102,8 @@ _HOLD = {"holds", "hold", "holding", "carries", "carry", "carrying", "supports",
          "bears", "bearing", "displays", "displaying"}  # fmt: skip
 _HOLD_PAIRS = {("loaded", "with"), ("laden", "with"), ("topped", "with"), ("set", "with"), ("laid", "with"), ("decorated", "with"),
                ("piled", "with"), ("stacked", "with"), ("heaped", "with"), ("covered", "in"),
-               ("covered", "with")}  # fmt: skip
+               ("covered", "with"), ("packed", "with"), ("lined", "with"), ("stocked", "with"),
+               ("crammed", "with")}  # fmt: skip
 #: Verbs whose object a person has in hand ("waves a flag"): the thing is carried by its holder, as
 #: with "holds".
 _HAND_VERBS = {"waves", "waving", "wields", "wielding", "brandishes", "brandishing", "clutches", "clutching",
