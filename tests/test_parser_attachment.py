@@ -198,3 +198,70 @@ def test_a_possessive_before_the_target_is_no_verb():
 def test_around_a_persons_feet_is_around_the_person():
     found = rels("An old woman scatters grain for a few hens around her feet.")
     assert {("hen_1", "face to", "woman_1"), ("hen_2", "face to", "woman_1")} <= found
+
+
+def test_a_person_on_a_makeshift_seat_is_what_the_place_after_places():
+    found = rels("A fisherman sits on an upturned crate beside the shed, mending a net.")
+    assert {("fisherman_1", "on", "crate_1"), ("fisherman_1", "side of", "shed_1")} <= found
+    found = rels("The lorry is parked by the road, with two drivers sitting on a log in front of it.")
+    assert ("driver_1", "in front of", "truck_1") in found and ("log_1", "in front of", "truck_1") not in found
+    # a piece of seating is set out by itself, and what an animal perches on was there before it
+    assert ("stool_1", "side of", "fireplace_1") in rels("A poet sits on a stool beside the fireplace.")
+    assert ("crate_1", "side of", "shed_1") in rels("A cat sits on a crate beside the shed.")
+
+
+def test_it_is_no_thing_its_own_phrase_just_placed_the_same_things_by():
+    found = rels("A barn stands at the top of the field. Two ploughs rest along the hedge behind it.")
+    assert ("plough_1", "behind", "barn_1") in found
+    assert ("plough_1", "behind", "hedge_1") not in found
+    # a phrase after its own target still chains on it
+    assert ("side_table_1", "right of", "desk_1") in rels("A globe sits on a side table to the right of the desk.")
+
+
+def test_them_after_one_living_subject_is_the_living_pair():
+    found = rels("A fawn lays its head in the lap of a shepherd who sits on a log beneath an oak. Behind them, a fox waits.")
+    assert {("fox_1", "behind", "fawn_1"), ("fox_1", "behind", "shepherd_1")} <= found
+    assert ("shepherd_1", "near", "tree_1") in found and ("fox_1", "behind", "tree_1") not in found
+    # several living ones just named are "them"
+    found = rels("Two boys chase a goat across the yard, and a heron watches them from the roof.")
+    assert ("heron_1", "face to", "boy_1") in found
+
+
+def test_its_awning_is_of_what_has_an_awning():
+    assert ("scale_1", "on", "market_stall_1") in rels("A cheese stall stands by the well. A brass scale hangs from its awning.")
+
+
+def test_two_named_on_either_side_stand_one_a_side():
+    found = rels("A lamp and a vase stand on either side of the clock.")
+    assert found == {("table_lamp_1", "left of", "wall_clock_1"), ("vase_1", "right of", "wall_clock_1")}
+    assert [o.id for o in parse_scene("Two lamps stand on either side of the clock.").objects].count("table_lamp_2") == 1
+
+
+def test_them_after_single_things_is_the_ones_named_together():
+    text = "A singer and a fiddler stand on either side of a harp, and the harpist sits at it on a stool. A drummer plays behind them."
+    found = rels(text)
+    assert {("drummer_1", "behind", "singer_1"), ("drummer_1", "behind", "fiddler_1")} <= found
+    assert not any(s == "drummer_1" and t in ("stool_1", "harp_1") for s, _, t in found)
+
+
+def test_who_chases_a_living_thing_around_a_place_is_around_it():
+    found = rels("Three girls chase a puppy around the old well.")
+    assert {("girl_1", "face to", "well_1"), ("girl_2", "face to", "well_1"), ("girl_3", "face to", "well_1")} <= found
+    assert not any(s == "dog_1" and t == "well_1" for s, _, t in found)
+
+
+def test_the_middle_one_is_the_member_halfway_along():
+    assert rels("Three kiosks stand in a row. A bench waits in front of the middle one.") == {("bench_1", "in front of", "kiosk_2")}
+    assert ("dog_1", "near", "bench_5") in rels("Five benches stand in a row, and a dog sleeps under the last one.")
+
+
+def test_a_clause_opening_with_is_after_an_apposition_goes_on_about_the_noun_before():
+    found = rels("The old barge, a rusty hulk, is moored beside a fisherman sitting on a crate.")
+    assert ("fisherman_1", "on", "crate_1") in found
+    assert any(s.startswith(("barge", "hulk")) and r == "side of" and t == "fisherman_1" for s, r, t in found)
+
+
+def test_what_people_at_a_table_share_is_on_the_table():
+    found = rels("Two hikers sit at a picnic table sharing a flask.")
+    assert ("flask_1", "on", "picnic_table_1") in found and ("flask_1", "on", "hiker_1") not in found
+    assert ("flask_1", "on", "hiker_1") in rels("Two hikers sit on a bench sharing a flask.")

@@ -2168,9 +2168,9 @@ _POSITION_WORDS = {"middle", "centre", "center", "corner", "end", "front", "back
 
 
 def _position_adjective(toks: list[_Tok], j: int) -> bool:
-    """"the middle bench": a place noun between a determiner and a noun works as an adjective."""
+    """"the middle bench", "the middle one": a place noun between a determiner and a noun works as an adjective."""
     return toks[j].text in _POSITION_WORDS and j > 0 and toks[j - 1].text in _DETERMINERS and (
-        j + 1 < len(toks) and toks[j + 1].text[:1].isalpha() and toks[j + 1].text not in _STOP
+        j + 1 < len(toks) and toks[j + 1].text[:1].isalpha() and (toks[j + 1].text not in _STOP or toks[j + 1].text == "one")
     )
 
 

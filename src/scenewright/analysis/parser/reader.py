@@ -25,6 +25,8 @@ from scenewright.analysis.parser.grammar import (
     _KIND_RELATION,
     _LOAD_HOSTS,
     _LOW_HOST,
+    _MAKESHIFT_HEIGHT,
+    _MAKESHIFT_LENGTH,
     _NARROW_TOP,
     _OWN_SIDES,
     _PERSONAL,
@@ -139,6 +141,8 @@ class _Clause:
     hand: bool = False
     #: The holders share the one thing in hand ("sharing a thermos"): not one each.
     shared: bool = False
+    #: ... and a verb of sharing says so: at a table, the thing is on it.
+    sharing: bool = False
     #: The with-things are living ones a verb's doer is with ("a groom waits with the ponies"):
     #: the doer keeps the clause's next placing, they keep by the doer.
     company: bool = False
@@ -261,6 +265,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.one_each: dict[int, int] = {}
         #: Living thing → what the text has it "at" (a desk, a stall): "on it" after it names that first.
         self.worked_at: dict[int, int] = {}
+        #: The latest subjects named together ("a singer and a fiddler stand ..."): "them" when no
+        #: group of several is meant.
+        self.together: list[int] = []
 
     # ---- groups
 
@@ -399,15 +406,18 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 if m.counted and _is_plural(self.toks, m) and self.groups[found].count < m.count:
                     self.groups[found].count = m.count  # "the two nearest benches" after "a bench": two at least
                 if not _is_plural(self.toks, m) and self.groups[found].count > 1 and not m.each:
-                    adj = [a.lower() for a in m.adjectives]
-                    # "the middle table" of four: the one halfway along
-                    middle = self.groups[found].count // 2 if {"middle", "central", "centre", "center"} & {*adj} else 0
-                    self.instance[m.start] = next((_ORDINALS[a] for a in adj if a in _ORDINALS), middle)
+                    self.instance[m.start] = self._member([a.lower() for a in m.adjectives], found)
                 return found
         if m.alias:
             return -1
         m.group = self._new_group(m, sizes)
         return m.group
+
+    def _member(self, words: list[str], g: int) -> int:
+        """Which of a group's members the describing words name: "the middle table" of four the one
+        halfway along, "the second", "the last", "the nearest"; else the first."""
+        middle = self.groups[g].count // 2 if {"middle", "central", "centre", "center"} & {*words} else 0
+        return next((_ORDINALS[w] for w in words if w in _ORDINALS), middle)
 
     # ---- the parse
 
@@ -528,6 +538,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 last_rels = c.rels or last_rels
                 if c.main_groups:
                     prev_subject = c.main_groups[:1] if not c.main else c.main
+                if len(c.subjects) > 1:
+                    self.together = list(c.subjects)
                 about = c.subjects or c.main_groups  # "In the centre stands a workbench; on it ..."
                 if about:
                     placed_by = [r[2] for r in self.relations[before:] if r[1] in about]
@@ -799,7 +811,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if not c.first and not participial and k == cs and k < ce and k not in self.by_start and k not in self.rel_at:
             if _is_verb(toks[k].text) and prev_subject and all(self._living(g) for g in prev_subject):
                 c.main = list(prev_subject)
-        c.opens = c.first or (starts_with_rel and k > cs and self._subject_after(self.rel_at[j].end, ce))
+        # (", is tied to a post" after an apposition goes on about the noun before it: no phrase of its own)
+        copula = toks[cs].text in _COPULAS
+        c.finite = copula  # (its verb: "... is tethered to a man sitting on a stool": the man sits)
+        c.opens = c.first or (starts_with_rel and k > cs and not copula and self._subject_after(self.rel_at[j].end, ce))
         c.unknown_subject = j > k and toks[k].text in ("a", "an", "the") and j not in self.by_start and not starts_with_rel
         last_event_end = cs
         phrase_end = -1  # where the last relation phrase and its target end
@@ -917,6 +932,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 c.hold, c.hand = w in _HOLD or (w, nxt) in _HOLD_PAIRS or hand, hand
                 # ("two men haul a trunk": one thing a verb of several has in hand is theirs together)
                 c.shared = w in _SHARE_VERBS or (w != "with" and c.each is None and self._one_thing_after(k, ce))
+                c.sharing = w in _SHARE_VERBS
                 k = tool_end if tool_end is not None else k + (2 if (w, nxt) in _HOLD_PAIRS else 1)
                 last_event_end = k
                 continue
@@ -1138,6 +1154,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     self._relate("near", [g], h)
                     c.produced = True
                     continue
+                if c.sharing and self._small(g) and h in self.worked_at and not self._living(g):
+                    # "a couple sits at the nearest table sharing a bottle": on the table they share it at
+                    self._relate("on", [g], self.worked_at[h])
+                    c.produced = True
+                    continue
                 if c.hold or held or (rests == "surface" and self.catalogue[self.groups[h].category].support):
                     self._relate("on", [g], h, instance=1 if g in c.others and self.groups[h].count > 1 else None)
                     c.produced = True
@@ -1259,13 +1280,19 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if chained and c.last_target and c.last_target_end == last_event_end and all(b in _ADVERBS for b in between):
             srcs = list(c.last_target)
             rider = c.main or ([] if c.first else list(prev_subject))
-            if not all(self._living(g) for g in rider):
+            on = [r[1] for r in self.relations if r[0] == "on" and r[2] in c.last_target]
+            # the living things the last phrase seated there ride it: "a unicorn rests its head in the
+            # lap of a nun who sits on a bench beneath a tree" (the nun), "with three judges sitting on
+            # hay bales in front of it" (the with-things)
+            seated = [g for g in c.last_srcs if g in on and self._living(g)]
+            if seated:
+                rider = seated
+            elif not all(self._living(g) for g in rider):
                 # "scientists launch a balloon from a platform across from the huts": the clause's
                 # subjects the last phrase put on the target ride it, not the thing they act on
-                on = [r[1] for r in self.relations if r[0] == "on" and r[2] in c.last_target]
                 rider = [g for g in c.subjects if g in on and self._living(g)] or rider
             across = kind == "opposite" and self._across_from_doer(c, target, None, last_event_end)
-            if self._rider_placed(c, rider, kind) and not across:
+            if self._rider_placed(c, rider, kind, rel.start) and not across:
                 srcs = list(rider)  # "he sits on a stool at the workbench": he is at it, on his stool
             elif self._at_on_perch(c, rider, kind, target):
                 p.riders = list(rider)  # "stands at a lectern on a low stage": both are on the stage
@@ -1559,6 +1586,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # what one goes along is not where one goes ("tourists walk along the pier towards it": the ferry)
         toward = any(t.text in ("toward", "towards") for t in self.toks[rel.start : rel.end])
         path = list(c.last_target) if toward and c.last_kind == "along" else []
+        # nor is "it" what the phrase right before placed the same things by ("three hives stand along
+        # the fence behind it": behind the cottage named before, not the fence)
+        chain = srcs and srcs == c.last_srcs and c.last_target_end == rel.start and kind in _GROUND_KINDS
+        path += list(c.last_target) if target == "it" and chain else []
         prefer = [g for g in prefer if g not in path]
         targets: list[int] = (
             list(c.head) if c.head is not None else self._pronoun(target, c, who + own, prefer, kind, others=path)
@@ -1680,7 +1711,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         """Relate the sources to the targets, one per member where "each" / "every" says so, and
         keep what the clause's next phrase chains on."""
         toks, rel, kind, target, targets, srcs, end = self.toks, p.rel, p.kind, p.target, p.targets, p.srcs, p.end
-        if kind in ("flank", "flank elliptic") and not toks[rel.start].text.startswith("flank"):
+        # "a singer and a fiddler stand on either side of the harp": one a side, as named
+        one_each = kind in ("flank", "flank elliptic") and len(srcs) == 2 and all(self.groups[g].count == 1 for g in srcs)
+        if kind in ("flank", "flank elliptic") and not toks[rel.start].text.startswith("flank") and not one_each:
             self._one_a_side(srcs)  # also beside what is no object: "on each side of the elevator"
         hang = kind == "hanging from" or self._hung_before(rel.start)
         hang = hang or any(t.text in _HANG_VERBS for t in toks[rel.start : rel.end])  # "hangs over the bar"
@@ -1712,6 +1745,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return end
         assert isinstance(targets, list)
         instance = self.instance.get(self._target_start) if isinstance(target, list) else None
+        if target == "that one" and self.groups[targets[0]].count > 1:  # "in front of the middle one"
+            named = [t.text for t in toks[rel.end : end - 1] if t.text not in _DETERMINERS]
+            instance = self._member(named, targets[0])
         tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
         if c.each_own is not None and tm is not None and not tm.definite and not tm.each:
             srcs = [c.each_own]
@@ -1746,7 +1782,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         )
         for t in targets if not crown else ():
             for one in p.ordinals or (instance,):
-                self._relate(kind, srcs, t, hang, one)
+                for sides, placed in ([("left of", srcs[:1]), ("right of", srcs[1:])] if one_each else [(kind, srcs)]):
+                    self._relate(sides, placed, t, hang, one)
             # a person holds nothing on top, but carries what is on a knee or an arm ("a crow on each of
             # its arms": a scarecrow's too)
             limb = p.part is not None and load_vocabulary().body_parts.get(p.part) == "on" and self._person_at(t)
@@ -1831,7 +1868,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         """A post, a pole, a hook: too narrow on top to put anything on, only to hang it from."""
         return max(self.groups[g].size[:2]) < _NARROW_TOP
 
-    def _rider_placed(self, c: _Clause, rider: list[int], kind: str) -> bool:
+    def _rider_placed(self, c: _Clause, rider: list[int], kind: str, pos: int) -> bool:
         """Whether a phrase after "a person sits on X" places the person, not X: what the person
         faces after any target ("kneels at a low table across from the vats", "ponies tied to a
         fence across from the caravans"), where the person works ("sits on a stool at a
@@ -1841,8 +1878,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         foot of ("rest on a bench at the foot of a cross", "lounges in
         an armchair behind the desk": one works behind a desk as at it; but "a cat naps in a basket
         at the foot of the stove" places the basket); after "under", what one sits on ("sits
-        beneath the bridge on a boulder"). Beside, near, in front of place the seat ("a
-        bard sits on a stool beside the fire"): so the annotated sets read it, four texts to one."""
+        beneath the bridge on a boulder"). A person on a makeshift seat (:meth:`_makeshift_seat`) is
+        also what a place on the ground places: the bucket or the bale comes along under them ("a
+        diver rests on a sledge beside it", "judges sitting on hay bales in front of it", "lies on a
+        creeper beneath it"). Beside, near, in front of otherwise place the seat: furniture is set
+        out by the designer ("a bard sits on a stool beside the fire"), and what an animal perches on
+        was there before it ("a gull on a bollard beside the boat")."""
         if not rider or not all(self._living(g) for g in rider):
             return False
         if kind in ("opposite", "face to"):
@@ -1853,7 +1894,22 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return False
         seat = all(self.catalogue[self.groups[g].category].shape in _SEATS for g in c.last_target)
         perch = all(self._carrier(g, ("perches",)) for g in c.last_target)
+        people = all(self._person_at(g) for g in rider)
+        if people and c.last_kind in ("on", "in") and kind in (*_GROUND_KINDS, "under") and all(
+            self._makeshift_seat(g, self._verb_before(pos, self._posture)) for g in c.last_target
+        ):
+            return True
         return kind == "at" or ((seat or perch) and kind == "between") or (seat and kind in ("under", "behind", "foot of"))
+
+    def _makeshift_seat(self, g: int, seated: bool) -> bool:
+        """A low perch, container or vehicle no bigger than a seat for one that is no piece of
+        seating (an upturned bucket, a hay bale, a sledge, a crate), or, ``seated`` (a verb of sitting
+        or lying before), any lifeless thing that low and small ("lies on a creeper"); not a stool, a
+        motorbike, a pillar or a stage."""
+        size = self.groups[g].size
+        seat = self.catalogue[self.groups[g].category].shape in _SEATS or self._carrier(g, ("seats",))
+        perch = self._carrier(g, ("perches", "containers", "vehicles")) or (seated and not self._living(g))
+        return perch and not seat and size[2] <= _MAKESHIFT_HEIGHT and max(size[:2]) <= _MAKESHIFT_LENGTH
 
     @staticmethod
     def _describes(words: list[str], after_verb: bool) -> bool:
