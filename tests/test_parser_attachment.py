@@ -265,3 +265,9 @@ def test_what_people_at_a_table_share_is_on_the_table():
     found = rels("Two hikers sit at a picnic table sharing a flask.")
     assert ("flask_1", "on", "picnic_table_1") in found and ("flask_1", "on", "hiker_1") not in found
     assert ("flask_1", "on", "hiker_1") in rels("Two hikers sit on a bench sharing a flask.")
+
+
+def test_what_is_guided_from_one_thing_into_another_runs_between_them():
+    found = rels("Three miners guide a hose from the pump into a steel tank.")
+    assert {("hose_1", "near", "pump_1"), ("hose_1", "near", "tank_1"), ("miner_1", "near", "hose_1")} <= found
+    assert not any(s.startswith("miner") and t in ("pump_1", "tank_1") for s, _, t in found)

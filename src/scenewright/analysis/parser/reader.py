@@ -1403,9 +1403,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._pair_before(rel.start) or self._works_on(rel.start, target)
         ):  # "a girl writes on the blackboard", "a chef slices bread on a board": at it, not on it
             kind = "near"
-        if kind == "from" and c.deeds and c.deed_end in (last_event_end, rel.start):
+        # ("guide a hose from it into a tank": what runs from one to the other is between them, the doers by it)
+        span = kind == "from" and self._from_to(rel.end, set(self.by_start))
+        if kind == "from" and not span and c.deeds and c.deed_end in (last_event_end, rel.start):
             srcs = list(c.deeds[-1][0])  # "two children feed ducks from a footbridge": the children are on it
-        if kind == "from" and not any(self._living(g) for g in srcs):
+        if kind == "from" and not span and not any(self._living(g) for g in srcs):
             # "a guard waves a flag from the tower": the one who waves is up there
             srcs = [g for g in c.subjects if self._living(g)] or srcs
         if kind == "face to" and rel.kind == "at":  # "a guard aims a crossbow at them": the guard faces them
@@ -1535,10 +1537,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         else:
             targets = target
         end, ce = p.end, p.ce
-        if kind == "from" and end < ce and toks[end].text == "to" and isinstance(targets, list) and targets:
+        span = ("to", "into", "onto")  # "guide a hose from it into a tank": it runs from one to the other
+        if kind == "from" and end < ce and toks[end].text in span and isinstance(targets, list) and targets:
             kind = "between"  # "a conveyor carries ore from it to a refinery": between the two
         if kind == "between" and isinstance(targets, list) and targets:
-            if end < ce and toks[end].text == ("to" if rel.kind == "from" else "and"):
+            if end < ce and toks[end].text in (span if rel.kind == "from" else ("and",)):
                 second, end2 = self._target_at(end + 1, ce)
                 if isinstance(second, list):
                     targets, end = targets + second, end2
@@ -1941,14 +1944,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         return k in starts and not span and self._verb_before(end - 1, lambda w: w in _CARRY_VERBS)
 
     def _from_to(self, start: int, starts: set[int]) -> bool:
-        """"From it to a refinery", "from the gate to the barn": a thing, then "to" and another
-        thing; what runs or carries from one to the other is between them."""
+        """"From it to a refinery", "from the gate to the barn", "from it into a tank": a thing, then
+        "to" (or "into", "onto") and another thing; what runs or carries from one to the other is between them."""
         k = start
-        while k < len(self.toks) and k - start < 6 and self.toks[k].text != "to":
+        span = ("to", "into", "onto")
+        while k < len(self.toks) and k - start < 6 and self.toks[k].text not in span:
             if not self.toks[k].text[:1].isalnum():
                 return False
             k += 1
-        return k < len(self.toks) and self.toks[k].text == "to" and k > start and self._names_thing(start, starts) and (
+        return k < len(self.toks) and self.toks[k].text in span and k > start and self._names_thing(start, starts) and (
             self._names_thing(k + 1, starts)
         )
 
