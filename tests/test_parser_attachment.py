@@ -271,3 +271,8 @@ def test_what_is_guided_from_one_thing_into_another_runs_between_them():
     found = rels("Three miners guide a hose from the pump into a steel tank.")
     assert {("hose_1", "near", "pump_1"), ("hose_1", "near", "tank_1"), ("miner_1", "near", "hose_1")} <= found
     assert not any(s.startswith("miner") and t in ("pump_1", "tank_1") for s, _, t in found)
+
+
+def test_who_waves_from_a_buildings_balcony_is_on_the_building():
+    found = rels("A crowd fills the square. A bishop waves from the balcony of the old house.")
+    assert ("bishop_1", "on", "house_1") in found

@@ -1375,7 +1375,7 @@ def _possessed(toks: list[_Tok], covered: set[int]) -> list:
 
 
 #: Parts only a building seen from outside shows: its owner, a place word, is a building of the scene.
-_OUTSIDE_PARTS = {"roof", "rooftop", "chimney", "eave", "gable", "facade", "porch", "veranda", "doorstep"}
+_OUTSIDE_PARTS = {"roof", "rooftop", "chimney", "eave", "gable", "facade", "porch", "veranda", "doorstep", "balcony"}
 
 
 #: Parts of an animal's or a person's body beyond those a thing is carried on ("the horse's mane").
