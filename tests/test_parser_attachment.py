@@ -276,3 +276,9 @@ def test_what_is_guided_from_one_thing_into_another_runs_between_them():
 def test_who_waves_from_a_buildings_balcony_is_on_the_building():
     found = rels("A crowd fills the square. A bishop waves from the balcony of the old house.")
     assert ("bishop_1", "on", "house_1") in found
+
+
+def test_on_it_names_an_animal_only_when_it_can_bear_the_things():
+    found = rels("A long sorting table stands by the door. A terrier trots along the table, sniffing the parcels on it.")
+    assert ("parcel_1", "on", "table_1") in found
+    assert not any(r == "on" and t == "dog_1" for s, r, t in found)

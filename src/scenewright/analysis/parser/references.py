@@ -426,9 +426,14 @@ class _References:
         def likeness(g: int) -> bool:  # a scarecrow, a mannequin: "it", and what circles above it is above it
             return self._person_at(g) and not self._human(g)
 
+        # what is "on it" is on an animal only when the animal can bear it ("checking the suitcases on it",
+        # after "a sniffer dog trots along the belt": the belt)
+        laden = kind in ("on", "on top") and bool(srcs) and not any(self._living(s) for s in srcs)
+
         def kind_fits(g: int) -> bool:
+            unborne = laden and self._living(g) and not all(self._borne(s, g) for s in srcs)
             return (
-                (not watcher or self._living(g)) and not ((overhead or seated) and self._living(g) and not likeness(g))
+                not unborne and (not watcher or self._living(g)) and not ((overhead or seated) and self._living(g) and not likeness(g))
                 and self.groups[g].size[2] > tallest and not (footed and (self._living(g) or g not in local))
                 and not (usual and g in this_sentence and g not in usual)
             )  # fmt: skip
