@@ -282,3 +282,8 @@ def test_on_it_names_an_animal_only_when_it_can_bear_the_things():
     found = rels("A long sorting table stands by the door. A terrier trots along the table, sniffing the parcels on it.")
     assert ("parcel_1", "on", "table_1") in found
     assert not any(r == "on" and t == "dog_1" for s, r, t in found)
+
+
+def test_a_participle_right_after_the_verbs_object_is_the_objects():
+    found = rels("A boy leads a pony pulling a small cart.")
+    assert ("cart_1", "behind", "horse_1") in found and ("cart_1", "behind", "boy_1") not in found

@@ -1386,6 +1386,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     kind = "near"  # one works on a grindstone or an anvil standing at it
         else:
             srcs = list(c.main)
+            # "a farmer guides a buffalo pulling a plough": a participle right after the verb's object is the object's
+            before = next((m.group for m in self.by_start.values() if m.end == rel.start), -1)
+            if c.finite and toks[rel.start].text.endswith("ing") and before in c.main_groups and before not in c.main:
+                srcs = [before]
             acted = c.deeds[-1][1] if c.deeds and c.deed_end == last_event_end else None
             if kind in _FORMATIONS and acted is not None and self._small(acted) and rel.start == last_event_end:
                 # "pours squash into cups lined up on it": the cups are lined up, and the phrase after
