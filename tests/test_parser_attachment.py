@@ -287,3 +287,13 @@ def test_on_it_names_an_animal_only_when_it_can_bear_the_things():
 def test_a_participle_right_after_the_verbs_object_is_the_objects():
     found = rels("A boy leads a pony pulling a small cart.")
     assert ("cart_1", "behind", "horse_1") in found and ("cart_1", "behind", "boy_1") not in found
+
+
+def test_what_one_watches_do_is_theirs():
+    found = rels("A crowd watches two jugglers perform beside the fountain.")
+    assert {("juggler_1", "side of", "fountain_1"), ("crowd_1", "face to", "juggler_1")} <= found
+    assert ("crowd_1", "side of", "fountain_1") not in found
+    found = rels("A girl watches three swallows circle the barn.")
+    assert ("swallow_1", "face to", "barn_1") in found and ("girl_1", "face to", "barn_1") not in found
+    # a place phrase after the watched names where the watcher is
+    assert ("guard_1", "side of", "tower_1") in rels("A guard watches the gate beside the tower.")

@@ -1303,6 +1303,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             )
             if each and c.last_srcs and all(t in self.history for t in c.last_target):
                 srcs = list(c.last_srcs)  # "a register on the counter in front of each of them": one each, not the counter
+        elif self._seen_doing(c, rel, between, last_event_end):
+            srcs = list(c.last_target)  # "watching a swarm of bats circle the chandelier": the bats circle it
         elif c.last_target and c.last_target_end == last_event_end and self._describes(between, c.target_after_verb):
             srcs = list(c.last_target)  # "a lorry idling at the barrier", "a lamp that hangs above the bar"
             if target is None:  # "a fork stuck in the soil beside it": the description goes on
@@ -1917,6 +1919,19 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         seat = self.catalogue[self.groups[g].category].shape in _SEATS or self._carrier(g, ("seats",))
         perch = self._carrier(g, ("perches", "containers", "vehicles")) or (seated and not self._living(g))
         return perch and not seat and size[2] <= _MAKESHIFT_HEIGHT and max(size[:2]) <= _MAKESHIFT_LENGTH
+
+    def _seen_doing(self, c: _Clause, rel: _Rel, between: list[str], last_event_end: int) -> bool:
+        """Whether the phrase tells what the things one watches or sees do: a verb right after them
+        ("watching a swarm of bats circle the chandelier", "watches two jugglers perform beside the
+        fountain"), the phrase's own word or one word before it; they, not the watcher, are placed."""
+        if c.last_kind != "face to" or not c.last_target or c.last_target_end != last_event_end:
+            return False
+        if not self._verb_before(last_event_end, lambda w: w in load_vocabulary().lookout_verbs):
+            return False
+        words = [w for w in between if w not in _ADVERBS]
+        if not words:
+            return self.toks[rel.start].text not in _STOP
+        return len(words) == 1 and words[0] not in _STOP and words[0][:1].isalpha()
 
     @staticmethod
     def _describes(words: list[str], after_verb: bool) -> bool:
