@@ -297,3 +297,11 @@ def test_what_one_watches_do_is_theirs():
     assert ("swallow_1", "face to", "barn_1") in found and ("girl_1", "face to", "barn_1") not in found
     # a place phrase after the watched names where the watcher is
     assert ("guard_1", "side of", "tower_1") in rels("A guard watches the gate beside the tower.")
+
+
+def test_the_plural_of_another_name_is_not_the_one_thing_before():
+    # (a heron and ducks are both catalogue birds)
+    assert [o.category for o in parse_scene("A heron watches the ducks.").objects].count("bird") == 4
+    assert ("heron_1", "face to", "bird_1") in rels("A heron watches the ducks.")
+    # the swings of a swing set are the set
+    assert len(parse_scene("A swing set stands by the fence. Two kids play on the swings.").objects) == 4

@@ -370,12 +370,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # a camel is not "the pig", nor "the cookhouse" the bunkhouse: in a family, or between
             # two guessed words, one thing only by the same head noun
             family = self.catalogue[m.category].family
+            # (nor are "the ducks" the one heron named before: several of a name the one does not
+            # have are new; "the swings" are the swing set's)
+            several = _is_plural(self.toks, m) and m.count != 1
             found = next(
                 (
                     g.index for g in reversed(self.groups)
                     if g.category == m.category and (
-                        not (family or m.guess is not None and g.guessed) or singular(g.name.split()[-1]) == head
-                    )
+                        not (family or m.guess is not None and g.guessed)
+                        or singular(g.name.split()[-1]) == head
+                    ) and not (several and g.count == 1 and head not in map(singular, g.name.split()))
                 ),
                 None,
             )  # fmt: skip
