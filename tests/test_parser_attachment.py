@@ -305,3 +305,7 @@ def test_the_plural_of_another_name_is_not_the_one_thing_before():
     assert ("heron_1", "face to", "bird_1") in rels("A heron watches the ducks.")
     # the swings of a swing set are the set
     assert len(parse_scene("A swing set stands by the fence. Two kids play on the swings.").objects) == 4
+
+
+def test_what_shelters_a_thing_is_near_it():
+    assert ("tree_1", "near", "bench_1") in rels("An old oak shelters a bench.")
