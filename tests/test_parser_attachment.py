@@ -309,3 +309,9 @@ def test_the_plural_of_another_name_is_not_the_one_thing_before():
 
 def test_what_shelters_a_thing_is_near_it():
     assert ("tree_1", "near", "bench_1") in rels("An old oak shelters a bench.")
+
+
+def test_an_animals_seat_takes_the_phrase_after_it():
+    found = rels("A ginger cat dozes on a stool at the foot of the dresser.")
+    assert ("stool_1", "in front of", "dresser_1") in found and ("cat_1", "in front of", "dresser_1") not in found
+    assert ("hiker_1", "in front of", "statue_1") in rels("Two hikers rest on a bench at the foot of a statue.")

@@ -1912,7 +1912,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._makeshift_seat(g, self._verb_before(pos, self._posture)) for g in c.last_target
         ):
             return True
-        return kind == "at" or ((seat or perch) and kind == "between") or (seat and kind in ("under", "behind", "foot of"))
+        # (an animal's seat was there before it: "a cat watches from a stool at the foot of the counter")
+        return kind == "at" or ((seat or perch) and kind == "between") or (
+            seat and people and kind in ("under", "behind", "foot of")
+        )
 
     def _makeshift_seat(self, g: int, seated: bool) -> bool:
         """A low perch, container or vehicle no bigger than a seat for one that is no piece of
