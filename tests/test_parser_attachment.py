@@ -315,3 +315,11 @@ def test_an_animals_seat_takes_the_phrase_after_it():
     found = rels("A ginger cat dozes on a stool at the foot of the dresser.")
     assert ("stool_1", "in front of", "dresser_1") in found and ("cat_1", "in front of", "dresser_1") not in found
     assert ("hiker_1", "in front of", "statue_1") in rels("Two hikers rest on a bench at the foot of a statue.")
+
+
+def test_ones_own_small_thing_one_does_something_on_is_in_hand():
+    found = rels("Two parents watch the parade on their phones.")
+    assert {("telephone_1", "on", "parent_1"), ("telephone_2", "on", "parent_2")} <= found
+    assert not any(s.startswith("parent") and r == "on" for s, r, _ in found)
+    assert ("plumber_1", "on", "toolbox_1") in rels("A plumber sits on his toolbox.")
+    assert ("girl_1", "face to", "kite_1") in rels("A girl films a kite on her phone.")

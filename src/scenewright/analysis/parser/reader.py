@@ -1757,6 +1757,17 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             c.produced = True
             return end
         assert isinstance(targets, list)
+        own = rel.end < len(toks) and toks[rel.end].text in _PERSON_POSSESSIVES
+        devices = all(self._small(t) and not self.catalogue[self.groups[t].category].support for t in targets)
+        seated = self._verb_before(rel.start, self._posture)  # ("sits on his toolbox": on it)
+        if kind == "on" and own and devices and not seated and all(self._person_at(g) for g in srcs):
+            # "two parents watch the race on their phones": one's own small thing one does something on
+            # is in hand, as "chat on their phones" has it
+            for s in srcs:
+                self._relate("on", targets, s)
+            self.carried.update((t, s) for t in targets for s in srcs)
+            c.produced = True
+            return end
         instance = self.instance.get(self._target_start) if isinstance(target, list) else None
         if target == "that one" and self.groups[targets[0]].count > 1:  # "in front of the middle one"
             named = [t.text for t in toks[rel.end : end - 1] if t.text not in _DETERMINERS]
