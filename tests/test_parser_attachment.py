@@ -212,3 +212,128 @@ def test_around_a_persons_feet_is_around_the_person():
 def test_on_a_seat_after_an_animal_too_big_for_it_seats_the_one_who_acts(text, seated, on_seat):
     found = rels(text)
     assert any(s == seated and r == "on" and t.startswith(("stool", "sofa")) for s, r, t in found) == on_seat, found
+
+
+def test_a_person_on_a_makeshift_seat_is_what_the_place_after_places():
+    found = rels("A fisherman sits on an upturned crate beside the shed, mending a net.")
+    assert {("fisherman_1", "on", "crate_1"), ("fisherman_1", "side of", "shed_1")} <= found
+    found = rels("The lorry is parked by the road, with two drivers sitting on a log in front of it.")
+    assert ("driver_1", "in front of", "truck_1") in found and ("log_1", "in front of", "truck_1") not in found
+    # a piece of seating is set out by itself, and what an animal perches on was there before it
+    assert ("stool_1", "side of", "fireplace_1") in rels("A poet sits on a stool beside the fireplace.")
+    assert ("crate_1", "side of", "shed_1") in rels("A cat sits on a crate beside the shed.")
+
+
+def test_it_is_no_thing_its_own_phrase_just_placed_the_same_things_by():
+    found = rels("A barn stands at the top of the field. Two ploughs rest along the hedge behind it.")
+    assert ("plough_1", "behind", "barn_1") in found
+    assert ("plough_1", "behind", "hedge_1") not in found
+    # a phrase after its own target still chains on it
+    assert ("side_table_1", "right of", "desk_1") in rels("A globe sits on a side table to the right of the desk.")
+
+
+def test_them_after_one_living_subject_is_the_living_pair():
+    found = rels("A fawn lays its head in the lap of a shepherd who sits on a log beneath an oak. Behind them, a fox waits.")
+    assert {("fox_1", "behind", "fawn_1"), ("fox_1", "behind", "shepherd_1")} <= found
+    assert ("shepherd_1", "near", "tree_1") in found and ("fox_1", "behind", "tree_1") not in found
+    # several living ones just named are "them"
+    found = rels("Two boys chase a goat across the yard, and a heron watches them from the roof.")
+    assert ("heron_1", "face to", "boy_1") in found
+
+
+def test_its_awning_is_of_what_has_an_awning():
+    assert ("scale_1", "on", "market_stall_1") in rels("A cheese stall stands by the well. A brass scale hangs from its awning.")
+
+
+def test_two_named_on_either_side_stand_one_a_side():
+    found = rels("A lamp and a vase stand on either side of the clock.")
+    assert found == {("table_lamp_1", "left of", "wall_clock_1"), ("vase_1", "right of", "wall_clock_1")}
+    assert [o.id for o in parse_scene("Two lamps stand on either side of the clock.").objects].count("table_lamp_2") == 1
+
+
+def test_them_after_single_things_is_the_ones_named_together():
+    text = "A singer and a fiddler stand on either side of a harp, and the harpist sits at it on a stool. A drummer plays behind them."
+    found = rels(text)
+    assert {("drummer_1", "behind", "singer_1"), ("drummer_1", "behind", "fiddler_1")} <= found
+    assert not any(s == "drummer_1" and t in ("stool_1", "harp_1") for s, _, t in found)
+
+
+def test_who_chases_a_living_thing_around_a_place_is_around_it():
+    found = rels("Three girls chase a puppy around the old well.")
+    assert {("girl_1", "face to", "well_1"), ("girl_2", "face to", "well_1"), ("girl_3", "face to", "well_1")} <= found
+    assert not any(s == "dog_1" and t == "well_1" for s, _, t in found)
+
+
+def test_the_middle_one_is_the_member_halfway_along():
+    assert rels("Three kiosks stand in a row. A bench waits in front of the middle one.") == {("bench_1", "in front of", "kiosk_2")}
+    assert ("dog_1", "near", "bench_5") in rels("Five benches stand in a row, and a dog sleeps under the last one.")
+
+
+def test_a_clause_opening_with_is_after_an_apposition_goes_on_about_the_noun_before():
+    found = rels("The old barge, a rusty hulk, is moored beside a fisherman sitting on a crate.")
+    assert ("fisherman_1", "on", "crate_1") in found
+    assert any(s.startswith(("barge", "hulk")) and r == "side of" and t == "fisherman_1" for s, r, t in found)
+
+
+def test_what_people_at_a_table_share_is_on_the_table():
+    found = rels("Two hikers sit at a picnic table sharing a flask.")
+    assert ("flask_1", "on", "picnic_table_1") in found and ("flask_1", "on", "hiker_1") not in found
+    assert ("flask_1", "on", "hiker_1") in rels("Two hikers sit on a bench sharing a flask.")
+
+
+def test_what_is_guided_from_one_thing_into_another_runs_between_them():
+    found = rels("Three miners guide a hose from the pump into a steel tank.")
+    assert {("hose_1", "near", "pump_1"), ("hose_1", "near", "tank_1"), ("miner_1", "near", "hose_1")} <= found
+    assert not any(s.startswith("miner") and t in ("pump_1", "tank_1") for s, _, t in found)
+
+
+def test_who_waves_from_a_buildings_balcony_is_on_the_building():
+    found = rels("A crowd fills the square. A bishop waves from the balcony of the old house.")
+    assert ("bishop_1", "on", "house_1") in found
+
+
+def test_on_it_names_an_animal_only_when_it_can_bear_the_things():
+    found = rels("A long sorting table stands by the door. A terrier trots along the table, sniffing the parcels on it.")
+    assert ("parcel_1", "on", "table_1") in found
+    assert not any(r == "on" and t == "dog_1" for s, r, t in found)
+
+
+def test_a_participle_right_after_the_verbs_object_is_the_objects():
+    found = rels("A boy leads a pony pulling a small cart.")
+    assert ("cart_1", "behind", "horse_1") in found and ("cart_1", "behind", "boy_1") not in found
+
+
+def test_what_one_watches_do_is_theirs():
+    found = rels("A crowd watches two jugglers perform beside the fountain.")
+    assert {("juggler_1", "side of", "fountain_1"), ("crowd_1", "face to", "juggler_1")} <= found
+    assert ("crowd_1", "side of", "fountain_1") not in found
+    found = rels("A girl watches three swallows circle the barn.")
+    assert ("swallow_1", "face to", "barn_1") in found and ("girl_1", "face to", "barn_1") not in found
+    # a place phrase after the watched names where the watcher is
+    assert ("guard_1", "side of", "tower_1") in rels("A guard watches the gate beside the tower.")
+
+
+def test_the_plural_of_another_name_is_not_the_one_thing_before():
+    # (a heron and ducks are both catalogue birds)
+    assert [o.category for o in parse_scene("A heron watches the ducks.").objects].count("bird") == 4
+    assert ("heron_1", "face to", "bird_1") in rels("A heron watches the ducks.")
+    # the swings of a swing set are the set
+    assert len(parse_scene("A swing set stands by the fence. Two kids play on the swings.").objects) == 4
+
+
+def test_what_shelters_a_thing_is_near_it():
+    assert ("tree_1", "near", "bench_1") in rels("An old oak shelters a bench.")
+
+
+def test_an_animals_seat_takes_the_phrase_after_it():
+    found = rels("A ginger cat dozes on a stool at the foot of the dresser.")
+    assert ("stool_1", "in front of", "dresser_1") in found and ("cat_1", "in front of", "dresser_1") not in found
+    assert ("hiker_1", "in front of", "statue_1") in rels("Two hikers rest on a bench at the foot of a statue.")
+
+
+def test_ones_own_small_thing_one_does_something_on_is_in_hand():
+    found = rels("Two parents watch the parade on their phones.")
+    assert {("telephone_1", "on", "parent_1"), ("telephone_2", "on", "parent_2")} <= found
+    assert not any(s.startswith("parent") and r == "on" for s, r, _ in found)
+    assert ("plumber_1", "on", "toolbox_1") in rels("A plumber sits on his toolbox.")
+    assert ("girl_1", "face to", "kite_1") in rels("A girl films a kite on her phone.")

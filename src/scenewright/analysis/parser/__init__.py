@@ -146,7 +146,8 @@ Decisions worth knowing:
   *facing* and, after a seat, *between* / *under* / *behind* place ("sits on a stool at the workbench"),
   while *beside* / *near* place the seat (the one on it is the clause's living subject the phrase
   before put there, also when the verb acts on a thing: "launch a rocket from a platform across
-  from the barn" places the launchers); "it" right after a *between* names the thing between, not
+  from the barn" places the launchers), and what every place phrase places when the seat is a makeshift
+  one (an upturned bucket, a hay bale, a sledge: "judges sitting on hay bales in front of it"); "it" right after a *between* names the thing between, not
   one of the pair; "with" right after the second end of *between* is that
   end's. X *under* a thing that hangs, is hung, is on a wall or is a thin board → that thing
   ``above`` X ("chairs under a ceiling fan"). "Between the first and second van", "between

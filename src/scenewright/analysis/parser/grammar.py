@@ -38,6 +38,9 @@ _REVERSED = {"flanked by": "flank", "surrounded by": "around", "near by": "near"
              "followed by": "behind"}  # fmt: skip
 #: Seat shapes: what is "at" a desk or a table faces it from the front.
 _SEATS = ("chair", "office_chair", "stool", "armchair", "bench", "sofa")
+#: m, the height and the longest side at most of a makeshift seat (an upturned bucket, a hay bale, a
+#: sledge): a person sits or lies on it where they are placed, it comes along.
+_MAKESHIFT_HEIGHT, _MAKESHIFT_LENGTH = 1.0, 2.5
 
 #: After these, a phrase right after the target places the target: "a lamp on a table left of the
 #: sofa", "astronauts beside a lab bench to the right of the console", "sniffs at a cooler near the
@@ -82,7 +85,7 @@ _FLOOR_WORDS = ("floor", "floorboards", "ground", "deck")
 #: Vehicles with a roof and doors of their own.
 _ROOFED_VEHICLES = ("car", "truck", "bus", "vehicle")
 #: Parts of a building that place a thing by the building itself when nothing else is named.
-_BUILDING_PARTS = ("roof", "rooftop", "porch", "step", "doorstep", "chimney", "eave", "gable", "veranda", "facade", "door", "doorway")
+_BUILDING_PARTS = ("roof", "rooftop", "porch", "step", "doorstep", "chimney", "eave", "gable", "veranda", "facade", "door", "doorway", "balcony")
 #: Carriers anything smaller is on when it is *in* them ("in the tub", "in the canoe", "a broom in the
 #: bucket"); a person or an animal is on every kind of carrier it is in ("fans in the stand"), a
 #: guessed structure only when its name is listed (one in a dome is inside it).

@@ -376,6 +376,8 @@ class _Hands:
             end = k + 2 if tok.text == "out" and k + 1 < len(toks) and toks[k + 1].text == "of" else k + 1
             if tok.text == "out" and end == k + 1:
                 continue
+            if tok.text == "from" and self._from_to(end, set(self.by_start)):
+                continue  # "guide a hose from it into a tank": it runs between them, no thing taken
             thing = next((m for m in self.by_start.values() if m.end == k), None)
             if thing is None or self._hand_object(thing.start, k) is None or not self._after_verb(thing.start, worn=True):
                 continue  # ("a man from the village": no thing taken)

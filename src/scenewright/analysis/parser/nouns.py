@@ -1463,7 +1463,7 @@ def _possessed(toks: list[_Tok], covered: set[int]) -> list:
 
 
 #: Parts only a building seen from outside shows: its owner, a place word, is a building of the scene.
-_OUTSIDE_PARTS = {"roof", "rooftop", "chimney", "eave", "gable", "facade", "porch", "veranda", "doorstep"}
+_OUTSIDE_PARTS = {"roof", "rooftop", "chimney", "eave", "gable", "facade", "porch", "veranda", "doorstep", "balcony"}
 
 
 #: Parts of an animal's or a person's body beyond those a thing is carried on ("the horse's mane").
@@ -2317,11 +2317,11 @@ _POSITION_WORDS = {"middle", "centre", "center", "corner", "end", "front", "back
 
 
 def _position_adjective(toks: list[_Tok], j: int) -> bool:
-    """"the middle bench", "the two middle racks": a place noun between a determiner (or a count)
-    and a noun works as an adjective."""
+    """"the middle bench", "the two middle racks", "the middle one": a place noun between a
+    determiner (or a count) and a noun works as an adjective."""
     before = toks[j - 1].text if j > 0 else ""
     return toks[j].text in _POSITION_WORDS and (before in _DETERMINERS or before in _NUMBERS) and (
-        j + 1 < len(toks) and toks[j + 1].text[:1].isalpha() and toks[j + 1].text not in _STOP
+        j + 1 < len(toks) and toks[j + 1].text[:1].isalpha() and (toks[j + 1].text not in _STOP or toks[j + 1].text == "one")
     )
 
 

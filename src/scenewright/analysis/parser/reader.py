@@ -25,6 +25,8 @@ from scenewright.analysis.parser.grammar import (
     _KIND_RELATION,
     _LOAD_HOSTS,
     _LOW_HOST,
+    _MAKESHIFT_HEIGHT,
+    _MAKESHIFT_LENGTH,
     _NARROW_TOP,
     _OWN_SIDES,
     _PERSONAL,
@@ -150,6 +152,8 @@ class _Clause:
     hand: bool = False
     #: The holders share the one thing in hand ("sharing a thermos"): not one each.
     shared: bool = False
+    #: ... and a verb of sharing says so: at a table, the thing is on it.
+    sharing: bool = False
     #: The with-things are living ones a verb's doer is with ("a groom waits with the ponies"):
     #: the doer keeps the clause's next placing, they keep by the doer.
     company: bool = False
@@ -277,6 +281,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.rows_of: dict[int, list[int]] = {}
         #: Living thing → what the text has it "at" (a desk, a stall): "on it" after it names that first.
         self.worked_at: dict[int, int] = {}
+        #: The latest subjects named together ("a singer and a fiddler stand ..."): "them" when no
+        #: group of several is meant.
+        self.together: list[int] = []
 
     # ---- groups
 
@@ -380,12 +387,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # a camel is not "the pig", nor "the cookhouse" the bunkhouse: in a family, or between
             # two guessed words, one thing only by the same head noun
             family = self.catalogue[m.category].family
+            # (nor are "the ducks" the one heron named before: several of a name the one does not
+            # have are new; "the swings" are the swing set's)
+            several = _is_plural(self.toks, m) and m.count != 1
             found = next(
                 (
                     g.index for g in reversed(self.groups)
                     if g.category == m.category and (
-                        not (family or m.guess is not None and g.guessed) or singular(g.name.split()[-1]) == head
-                    )
+                        not (family or m.guess is not None and g.guessed)
+                        or singular(g.name.split()[-1]) == head
+                    ) and not (several and g.count == 1 and head not in map(singular, g.name.split()))
                 ),
                 None,
             )  # fmt: skip
@@ -416,15 +427,18 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 if m.counted and _is_plural(self.toks, m) and self.groups[found].count < m.count:
                     self.groups[found].count = m.count  # "the two nearest benches" after "a bench": two at least
                 if not _is_plural(self.toks, m) and self.groups[found].count > 1 and not m.each:
-                    adj = [a.lower() for a in m.adjectives]
-                    # "the middle table" of four: the one halfway along
-                    middle = self.groups[found].count // 2 if {"middle", "central", "centre", "center"} & {*adj} else 0
-                    self.instance[m.start] = next((_ORDINALS[a] for a in adj if a in _ORDINALS), middle)
+                    self.instance[m.start] = self._member([a.lower() for a in m.adjectives], found)
                 return found
         if m.alias:
             return -1
         m.group = self._new_group(m, sizes)
         return m.group
+
+    def _member(self, words: list[str], g: int) -> int:
+        """Which of a group's members the describing words name: "the middle table" of four the one
+        halfway along, "the second", "the last", "the nearest"; else the first."""
+        middle = self.groups[g].count // 2 if {"middle", "central", "centre", "center"} & {*words} else 0
+        return next((_ORDINALS[w] for w in words if w in _ORDINALS), middle)
 
     # ---- the parse
 
@@ -545,6 +559,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 last_rels = c.rels or last_rels
                 if c.main_groups:
                     prev_subject = c.main_groups[:1] if not c.main else c.main
+                if len(c.subjects) > 1:
+                    self.together = list(c.subjects)
                 about = c.subjects or c.main_groups  # "In the centre stands a workbench; on it ..."
                 if about:
                     placed_by = [r[2] for r in self.relations[before:] if r[1] in about]
@@ -836,7 +852,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if not c.first and not participial and k == cs and k < ce and k not in self.by_start and k not in self.rel_at:
             if _is_verb(toks[k].text) and prev_subject and all(self._living(g) for g in prev_subject):
                 c.main = list(prev_subject)
-        c.opens = c.first or (starts_with_rel and k > cs and self._subject_after(self.rel_at[j].end, ce))
+        # (", is tied to a post" after an apposition goes on about the noun before it: no phrase of its own)
+        copula = toks[cs].text in _COPULAS
+        c.finite = copula  # (its verb: "... is tethered to a man sitting on a stool": the man sits)
+        c.opens = c.first or (starts_with_rel and k > cs and not copula and self._subject_after(self.rel_at[j].end, ce))
         c.unknown_subject = j > k and toks[k].text in ("a", "an", "the") and j not in self.by_start and not starts_with_rel
         last_event_end = cs
         phrase_end = -1  # where the last relation phrase and its target end
@@ -959,6 +978,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 c.hold, c.hand = w in _HOLD or (w, nxt) in _HOLD_PAIRS or hand, hand
                 # ("two men haul a trunk": one thing a verb of several has in hand is theirs together)
                 c.shared = w in _SHARE_VERBS or (w != "with" and c.each is None and self._one_thing_after(k, ce))
+                c.sharing = w in _SHARE_VERBS
                 k = tool_end if tool_end is not None else k + (2 if (w, nxt) in _HOLD_PAIRS else 1)
                 last_event_end = k
                 continue
@@ -1180,6 +1200,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     self._relate("near", [g], h)
                     c.produced = True
                     continue
+                if c.sharing and self._small(g) and h in self.worked_at and not self._living(g):
+                    # "a couple sits at the nearest table sharing a bottle": on the table they share it at
+                    self._relate("on", [g], self.worked_at[h])
+                    c.produced = True
+                    continue
                 if c.hold or held or (rests == "surface" and self.catalogue[self.groups[h].category].support):
                     self._relate("on", [g], h, instance=1 if g in c.others and self.groups[h].count > 1 else None)
                     c.produced = True
@@ -1303,13 +1328,19 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if chained and c.last_target and c.last_target_end == last_event_end and all(b in _ADVERBS for b in between):
             srcs = list(c.last_target)
             rider = c.main or ([] if c.first else list(prev_subject))
-            if not all(self._living(g) for g in rider):
+            on = [r[1] for r in self.relations if r[0] == "on" and r[2] in c.last_target]
+            # the living things the last phrase seated there ride it: "a unicorn rests its head in the
+            # lap of a nun who sits on a bench beneath a tree" (the nun), "with three judges sitting on
+            # hay bales in front of it" (the with-things)
+            seated = [g for g in c.last_srcs if g in on and self._living(g)]
+            if seated:
+                rider = seated
+            elif not all(self._living(g) for g in rider):
                 # "scientists launch a balloon from a platform across from the huts": the clause's
                 # subjects the last phrase put on the target ride it, not the thing they act on
-                on = [r[1] for r in self.relations if r[0] == "on" and r[2] in c.last_target]
                 rider = [g for g in c.subjects if g in on and self._living(g)] or rider
             across = kind == "opposite" and self._across_from_doer(c, target, None, last_event_end)
-            if self._rider_placed(c, rider, kind) and not across:
+            if self._rider_placed(c, rider, kind, rel.start) and not across:
                 srcs = list(rider)  # "he sits on a stool at the workbench": he is at it, on his stool
             elif self._at_on_perch(c, rider, kind, target):
                 p.riders = list(rider)  # "stands at a lectern on a low stage": both are on the stage
@@ -1320,6 +1351,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             )
             if each and c.last_srcs and all(t in self.history for t in c.last_target):
                 srcs = list(c.last_srcs)  # "a register on the counter in front of each of them": one each, not the counter
+        elif self._seen_doing(c, rel, between, last_event_end):
+            srcs = list(c.last_target)  # "watching a swarm of bats circle the chandelier": the bats circle it
         elif c.last_target and c.last_target_end == last_event_end and self._describes(between, c.target_after_verb):
             srcs = list(c.last_target)  # "a lorry idling at the barrier", "a lamp that hangs above the bar"
             if target is None:  # "a fork stuck in the soil beside it": the description goes on
@@ -1407,6 +1440,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     kind = "near"  # one works on a grindstone or an anvil standing at it
         else:
             srcs = list(c.main)
+            # "a farmer guides a buffalo pulling a plough": a participle right after the verb's object is the object's
+            before = next((m.group for m in self.by_start.values() if m.end == rel.start), -1)
+            if c.finite and toks[rel.start].text.endswith("ing") and before in c.main_groups and before not in c.main:
+                srcs = [before]
             acted = c.deeds[-1][1] if c.deeds and c.deed_end == last_event_end else None
             if kind in _FORMATIONS and acted is not None and self._small(acted) and rel.start == last_event_end:
                 # "pours squash into cups lined up on it": the cups are lined up, and the phrase after
@@ -1427,9 +1464,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._pair_before(rel.start) or self._works_on(rel.start, target)
         ):  # "a girl writes on the blackboard", "a chef slices bread on a board": at it, not on it
             kind = "near"
-        if kind == "from" and c.deeds and c.deed_end in (last_event_end, rel.start):
+        # ("guide a hose from it into a tank": what runs from one to the other is between them, the doers by it)
+        span = kind == "from" and self._from_to(rel.end, set(self.by_start))
+        if kind == "from" and not span and c.deeds and c.deed_end in (last_event_end, rel.start):
             srcs = list(c.deeds[-1][0])  # "two children feed ducks from a footbridge": the children are on it
-        if kind == "from" and not any(self._living(g) for g in srcs):
+        if kind == "from" and not span and not any(self._living(g) for g in srcs):
             # "a guard waves a flag from the tower": the one who waves is up there
             srcs = [g for g in c.subjects if self._living(g)] or srcs
         if kind == "face to" and rel.kind == "at":  # "a guard aims a crossbow at them": the guard faces them
@@ -1575,10 +1614,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         else:
             targets = target
         end, ce = p.end, p.ce
-        if kind == "from" and end < ce and toks[end].text == "to" and isinstance(targets, list) and targets:
+        span = ("to", "into", "onto")  # "guide a hose from it into a tank": it runs from one to the other
+        if kind == "from" and end < ce and toks[end].text in span and isinstance(targets, list) and targets:
             kind = "between"  # "a conveyor carries ore from it to a refinery": between the two
         if kind == "between" and isinstance(targets, list) and targets:
-            if end < ce and toks[end].text == ("to" if rel.kind == "from" else "and"):
+            if end < ce and toks[end].text in (span if rel.kind == "from" else ("and",)):
                 second, end2 = self._target_at(end + 1, ce)
                 if isinstance(second, list):
                     targets, end = targets + second, end2
@@ -1626,6 +1666,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # what one goes along is not where one goes ("tourists walk along the pier towards it": the ferry)
         toward = any(t.text in ("toward", "towards") for t in self.toks[rel.start : rel.end])
         path = list(c.last_target) if toward and c.last_kind == "along" else []
+        # nor is "it" what the phrase right before placed the same things by ("three hives stand along
+        # the fence behind it": behind the cottage named before, not the fence)
+        chain = srcs and srcs == c.last_srcs and c.last_target_end == rel.start and kind in _GROUND_KINDS
+        path += list(c.last_target) if target == "it" and chain else []
         prefer = [g for g in prefer if g not in path]
         targets: list[int] = (
             list(c.head) if c.head is not None else self._pronoun(target, c, who + own, prefer, kind, others=path)
@@ -1781,7 +1825,21 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             c.produced = True
             return end
         assert isinstance(targets, list)
+        own = rel.end < len(toks) and toks[rel.end].text in _PERSON_POSSESSIVES
+        devices = all(self._small(t) and not self.catalogue[self.groups[t].category].support for t in targets)
+        seated = self._verb_before(rel.start, self._posture)  # ("sits on his toolbox": on it)
+        if kind == "on" and own and devices and not seated and all(self._person_at(g) for g in srcs):
+            # "two parents watch the race on their phones": one's own small thing one does something on
+            # is in hand, as "chat on their phones" has it
+            for s in srcs:
+                self._relate("on", targets, s)
+            self.carried.update((t, s) for t in targets for s in srcs)
+            c.produced = True
+            return end
         instance = self.instance.get(self._target_start) if isinstance(target, list) else None
+        if target == "that one" and self.groups[targets[0]].count > 1:  # "in front of the middle one"
+            named = [t.text for t in toks[rel.end : end - 1] if t.text not in _DETERMINERS]
+            instance = self._member(named, targets[0])
         tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
         if c.each_own is not None and tm is not None and not tm.definite and not tm.each:
             srcs = [c.each_own]
@@ -1912,7 +1970,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         """A post, a pole, a hook: too narrow on top to put anything on, only to hang it from."""
         return max(self.groups[g].size[:2]) < _NARROW_TOP
 
-    def _rider_placed(self, c: _Clause, rider: list[int], kind: str) -> bool:
+    def _rider_placed(self, c: _Clause, rider: list[int], kind: str, pos: int) -> bool:
         """Whether a phrase after "a person sits on X" places the person, not X: what the person
         faces after any target ("kneels at a low table across from the vats", "ponies tied to a
         fence across from the caravans"), where the person works ("sits on a stool at a
@@ -1922,8 +1980,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         foot of ("rest on a bench at the foot of a cross", "lounges in
         an armchair behind the desk": one works behind a desk as at it; but "a cat naps in a basket
         at the foot of the stove" places the basket); after "under", what one sits on ("sits
-        beneath the bridge on a boulder"). Beside, near, in front of place the seat ("a
-        bard sits on a stool beside the fire"): so the annotated sets read it, four texts to one."""
+        beneath the bridge on a boulder"). A person on a makeshift seat (:meth:`_makeshift_seat`) is
+        also what a place on the ground places: the bucket or the bale comes along under them ("a
+        diver rests on a sledge beside it", "judges sitting on hay bales in front of it", "lies on a
+        creeper beneath it"). Beside, near, in front of otherwise place the seat: furniture is set
+        out by the designer ("a bard sits on a stool beside the fire"), and what an animal perches on
+        was there before it ("a gull on a bollard beside the boat")."""
         if not rider or not all(self._living(g) for g in rider):
             return False
         if kind in ("opposite", "face to"):
@@ -1934,7 +1996,38 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return False
         seat = all(self.catalogue[self.groups[g].category].shape in _SEATS for g in c.last_target)
         perch = all(self._carrier(g, ("perches",)) for g in c.last_target)
-        return kind == "at" or ((seat or perch) and kind == "between") or (seat and kind in ("under", "behind", "foot of"))
+        people = all(self._person_at(g) for g in rider)
+        if people and c.last_kind in ("on", "in") and kind in (*_GROUND_KINDS, "under") and all(
+            self._makeshift_seat(g, self._verb_before(pos, self._posture)) for g in c.last_target
+        ):
+            return True
+        # (an animal's seat was there before it: "a cat watches from a stool at the foot of the counter")
+        return kind == "at" or ((seat or perch) and kind == "between") or (
+            seat and people and kind in ("under", "behind", "foot of")
+        )
+
+    def _makeshift_seat(self, g: int, seated: bool) -> bool:
+        """A low perch, container or vehicle no bigger than a seat for one that is no piece of
+        seating (an upturned bucket, a hay bale, a sledge, a crate), or, ``seated`` (a verb of sitting
+        or lying before), any lifeless thing that low and small ("lies on a creeper"); not a stool, a
+        motorbike, a pillar or a stage."""
+        size = self.groups[g].size
+        seat = self.catalogue[self.groups[g].category].shape in _SEATS or self._carrier(g, ("seats",))
+        perch = self._carrier(g, ("perches", "containers", "vehicles")) or (seated and not self._living(g))
+        return perch and not seat and size[2] <= _MAKESHIFT_HEIGHT and max(size[:2]) <= _MAKESHIFT_LENGTH
+
+    def _seen_doing(self, c: _Clause, rel: _Rel, between: list[str], last_event_end: int) -> bool:
+        """Whether the phrase tells what the things one watches or sees do: a verb right after them
+        ("watching a swarm of bats circle the chandelier", "watches two jugglers perform beside the
+        fountain"), the phrase's own word or one word before it; they, not the watcher, are placed."""
+        if c.last_kind != "face to" or not c.last_target or c.last_target_end != last_event_end:
+            return False
+        if not self._verb_before(last_event_end, lambda w: w in load_vocabulary().lookout_verbs):
+            return False
+        words = [w for w in between if w not in _ADVERBS]
+        if not words:
+            return self.toks[rel.start].text not in _STOP
+        return len(words) == 1 and words[0] not in _STOP and words[0][:1].isalpha()
 
     @staticmethod
     def _describes(words: list[str], after_verb: bool) -> bool:
@@ -1966,14 +2059,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         return k in starts and not span and self._verb_before(end - 1, lambda w: w in _CARRY_VERBS)
 
     def _from_to(self, start: int, starts: set[int]) -> bool:
-        """"From it to a refinery", "from the gate to the barn": a thing, then "to" and another
-        thing; what runs or carries from one to the other is between them."""
+        """"From it to a refinery", "from the gate to the barn", "from it into a tank": a thing, then
+        "to" (or "into", "onto") and another thing; what runs or carries from one to the other is between them."""
         k = start
-        while k < len(self.toks) and k - start < 6 and self.toks[k].text != "to":
+        span = ("to", "into", "onto")
+        while k < len(self.toks) and k - start < 6 and self.toks[k].text not in span:
             if not self.toks[k].text[:1].isalnum():
                 return False
             k += 1
-        return k < len(self.toks) and self.toks[k].text == "to" and k > start and self._names_thing(start, starts) and (
+        return k < len(self.toks) and self.toks[k].text in span and k > start and self._names_thing(start, starts) and (
             self._names_thing(k + 1, starts)
         )
 

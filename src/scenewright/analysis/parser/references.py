@@ -346,11 +346,26 @@ class _References:
         the latest earlier mention, of the right number; never a source, one of ``others`` or
         what a source rests on."""
         plural = word in ("them", "themselves")
+        # "a unicorn rests its head in the lap of a nun who sits on a bench beneath a tree. Across from
+        # them, ...": "them" after a subject that is one living thing names it and the other living one
+        # just named with it, not the things they are on or under
+        just = [*prefer, *self.history[self._recent_from :]]
+        living = [g for g in dict.fromkeys(just) if g not in srcs and self._living(g) and self.groups[g].count == 1]
+        lone = bool(prefer) and self.groups[prefer[0]].count == 1 and self._living(prefer[0])
+        # (several living ones just named are "them": "children chase a dog ..., and a lighthouse watches over them")
+        lone = lone and not any(self.groups[g].count > 1 and self._living(g) for g in just if g not in srcs)
         # "a fish stall and a noodle stall face each other, and a girl stands between them": two
         # single things of this clause, or of the subject before, are "them"
-        for pair in ([g for g in c.groups if g not in srcs], [g for g in prefer if g not in srcs]):
+        for pair in ([g for g in c.groups if g not in srcs], living[:2] if lone else [], [g for g in prefer if g not in srcs]):
             if plural and len(pair) >= 2 and all(self.groups[g].count == 1 for g in pair):
                 return pair[-2:]
+        # "a singer and a fiddler stand on either side of the harp, and the harpist sits at it. A drummer
+        # plays behind them": the ones named together, every one of them, when none of the things
+        # just named is several
+        together = [g for g in self.together if g not in srcs and self.groups[g].count == 1]
+        several = any(self.groups[g].count > 1 for g in [*prefer, *self.history[self._recent_from :]] if g not in srcs)
+        if plural and len(together) > 1 and not several:
+            return together
         # never what a source rests on ("a parrot in a cage watches it": not the cage)
         hosts = {r[2] for r in self.relations if r[0] == "on" and r[1] in srcs}
         skip = {*srcs, *(others or ()), *hosts}
@@ -411,9 +426,14 @@ class _References:
         def likeness(g: int) -> bool:  # a scarecrow, a mannequin: "it", and what circles above it is above it
             return self._person_at(g) and not self._human(g)
 
+        # what is "on it" is on an animal only when the animal can bear it ("checking the suitcases on it",
+        # after "a sniffer dog trots along the belt": the belt)
+        laden = kind in ("on", "on top") and bool(srcs) and not any(self._living(s) for s in srcs)
+
         def kind_fits(g: int) -> bool:
+            unborne = laden and self._living(g) and not all(self._borne(s, g) for s in srcs)
             return (
-                (not watcher or self._living(g)) and not ((overhead or seated) and self._living(g) and not likeness(g))
+                not unborne and (not watcher or self._living(g)) and not ((overhead or seated) and self._living(g) and not likeness(g))
                 and self.groups[g].size[2] > tallest and not (footed and (self._living(g) or g not in local))
                 and not (usual and g in this_sentence and g not in usual)
             )  # fmt: skip

@@ -118,7 +118,10 @@ _CARRY_VERBS = {f"{stem}{end}" for stem in ("carr", "hurr") for end in ("y", "ie
                                 "return", "trundle", "steer", "tow") for end in ("", "s", "es", "ing", "ed")
 } | {"takes", "take", "taking", "drives", "drive", "driving", "runs", "run", "running", "goes", "go", "going",
      "dragging", "brought", "led", "took", "drove", "went", "ran"}  # fmt: skip
-_LEAD_VERBS = {"walk", "walks", "walking", "lead", "leads", "leading", "guide", "guides", "guiding"}
+#: Verbs of going with a living thing one leads or chases: where the doer goes ("walks a dachshund
+#: beside the van", "children chase a dog around the well") is the doer's place, the other keeps by them.
+_LEAD_VERBS = {"walk", "walks", "walking", "lead", "leads", "leading", "guide", "guides", "guiding",
+               "chase", "chases", "chasing"}  # fmt: skip
 #: Verbs of giving ("a robot hands one of them a toolbox"): the giver has the thing in hand and
 #: stands by whom it is given to.
 _GIVE_VERBS = {"hands", "handing", "hand", "gives", "giving", "give", "passes", "passing", "pass", "offers",
