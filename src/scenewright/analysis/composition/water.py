@@ -1,0 +1,141 @@
+"""Water prior: in a scene by a river, a lake or the sea, what floats goes on the water, the rest on land.
+
+The water lies at the back of the scene (+Y, away from the viewer) beyond one straight shore
+(:class:`~scenewright.scene.Water`): the land's things are set out as on dry ground, the shore
+runs just behind the last of them, and the units made only of floating things (a boat with its
+rowers, swans around it) move out beyond it, side by side. A pier, jetty or landing stage
+reaches from the shore into the water, and takes what the text put beside or on it along.
+Relations still win: a unit that mixes land things and floating things stays on land, as
+the text related them.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+from scenewright.analysis.composition.footprint import GAP, Footprint, bbox
+from scenewright.analysis.composition.units import Layout, Unit
+
+#: Categories of things that float whenever the scene has water.
+FLOATING = frozenset({"boat", "buoy"})
+#: Head words of vessels the catalogue may file under another category ("a seaplane", "a barge").
+VESSELS = frozenset({
+    "ferry", "barge", "sampan", "narrowboat", "longship", "seaplane", "punt", "gondola", "trawler", "tugboat",
+    "houseboat", "catamaran", "canoe", "kayak", "raft", "yacht", "ship", "steamer", "pontoon", "dinghy",
+})  # fmt: skip
+#: Categories that reach from the shore into the water.
+REACHING = frozenset({"pier"})
+#: Not up in the air: "a balloon floats above the quay" is no swimmer.
+_AIRBORNE = r"(?!\s+(?:above|over|overhead|high|up|through the air|in the (?:air|sky)))"
+#: Verbs that put a thing (a swan, a seal, a wading heron, an elephant bathing) in the water.
+_IN_WATER = (rf"(?:swim(?:s|ming)?|swam|paddl(?:e|es|ed|ing)|wad(?:e|es|ed|ing)|bath(?:e|es|ed|ing)|bob(?:s|bed|bing)?|"
+             rf"(?:float|drift|glid)(?:e|es|s|ed|ing)?){_AIRBORNE}")
+#: Words that put a boat ashore: "pulled up on the shingle", "lies upside down", "a wrecked dinghy".
+_ASHORE = r"(?:pulled up|dragged|hauled|beached|stranded|wrecked|upturned|overturned|upside down|lies|lie|lying)"
+#: Relations that moor a floating thing along a pier's side.
+_ALONGSIDE = frozenset({"left of", "right of", "side of", "near"})
+#: Open ground between the land's last thing and the shore, and between the shore and a floating thing.
+SHORE_GAP = 1.0
+#: How far a pier's near end reaches back over the land, so it joins the shore.
+PIER_ON_LAND = 0.5
+
+
+def _said(name: str, text: str, verbs: str) -> bool:
+    """Whether ``text`` says the thing ``name`` (or its plural) does one of ``verbs``, within a few
+    words of its name in the same clause ("swans glide", "a mother elephant and her calf bathe",
+    "a rowing boat lies upside down"; "a wrecked dinghy" before the name)."""
+    noun = re.escape(name.lower())
+    after = rf"\b{noun}(?:e?s)?\b(?:\s+[\w']+){{0,3}}?\s+{verbs}\b"
+    before = rf"\b{verbs}\s+(?:[\w']+\s+){{0,2}}?{noun}\b"
+    low = text.lower()
+    return bool(re.search(after, low) or re.search(before, low))
+
+
+def floats(name: str, category: str | None, text: str) -> bool:
+    """Whether the thing named ``name`` floats in the scene ``text`` describes: a boat or buoy
+    (by category or a vessel's head word) unless the text puts it ashore, or any thing the text
+    says swims, paddles, wades, floats, drifts, glides or bathes."""
+    words = name.lower().split()
+    if category in FLOATING or (words and words[-1] in VESSELS):
+        return not _said(name, text, _ASHORE)
+    return bool(words) and _said(name, text, _IN_WATER)
+
+
+def by_water(layout: Layout, text: str) -> float:
+    """Set the floating units out on the water beyond the land and the piers across the shore;
+    the shore line's y. Called once the land is arranged."""
+    afloat = {o.id for o in layout.objects if floats(o.name, o.category, text)}
+    reaching = {o.id for o in layout.objects if layout.kind(o.id) in REACHING}
+    water, land = [], []
+    for unit in layout.top_units():
+        grounded = {i for i in unit.ids if layout.on_ground(i)}
+        (water if grounded and grounded <= afloat | reaching else land).append(unit)
+    prints = [p for u in land for p in layout.ground_prints(u.ids)]
+    shore = (bbox(prints)[3] if prints else 0.0) + SHORE_GAP
+    placed: list[Footprint] = []
+    for unit in sorted(water, key=lambda u: not (set(u.ids) & reaching)):  # piers first, boats around them
+        piers = [i for i in unit.ids if i in reaching and layout.on_ground(i)]
+        if piers:
+            _reach_out(layout, unit, piers[0], afloat)
+            y0 = bbox(layout.placed[i] for i in piers)[1] - (shore - PIER_ON_LAND)
+        else:
+            y0 = bbox(layout.ground_prints(unit.ids))[1] - (shore + SHORE_GAP)
+        layout.move(unit, 0.0, -y0)
+        x0, _, x1, _ = layout.box(unit)
+        direction = 1.0 if x0 + x1 >= 0 else -1.0
+        for _ in range(400):  # along the shore, clear of what is afloat already
+            if layout.is_clear(unit, placed, GAP):
+                break
+            layout.move(unit, direction * 0.25, 0.0)
+        placed += layout.ground_prints(unit.ids)
+    return shore
+
+
+def _reach_out(layout: Layout, unit: Unit, pier: str, afloat: set[str]) -> None:
+    """The pier (with what stands on it) turned to run away from the viewer, and the floating
+    things the text puts beside or near it moored along its sides, alternately left and right,
+    from its far end in: "two trawlers moored beside the pier"."""
+    p = layout.placed[pier]
+    if p.w > p.d:
+        _turn_about(layout, layout.with_load(pier), p.x, p.y, 90.0)
+    beside = {r.source if r.target == pier else r.target for r in layout.relations
+              if pier in (r.source, r.target) and r.relation in _ALONGSIDE}
+    moored = [i for i in unit.ids if i in beside and i in afloat and layout.on_ground(i)]
+    water = p.y - p.d / 2 + PIER_ON_LAND + GAP  # where the water starts, a gap out
+    ends = {-1.0: p.y + p.d / 2, 1.0: p.y + p.d / 2}  # where the next boat on each side ends, from the far end
+    for k, i in enumerate(moored):
+        m = layout.placed[i]
+        side = -1.0 if m.x < p.x or (m.x == p.x and k % 2 == 0) else 1.0
+        x = p.x + side * (p.w / 2 + m.w / 2 + GAP)
+        y = max(ends[side] - m.d / 2, water + m.d / 2)  # a boat longer than the pier stays off the shore
+        ends[side] = y - m.d / 2 - GAP
+        _shift(layout, i, x - m.x, y - m.y)
+    # the unit's other floating things, out of the pier's way to the side they stand on
+    taken = [layout.placed[j] for j in layout.with_load(pier)] + [layout.placed[j] for j in moored]
+    for i in unit.ids:
+        m = layout.placed[i]
+        if i in afloat and i not in moored and layout.on_ground(i):
+            side = -1.0 if m.x < p.x else 1.0
+            for _ in range(200):
+                if not any(m.plan_overlaps(q, GAP) for q in taken):
+                    break
+                _shift(layout, i, side * 0.25, 0.0)
+            taken.append(m)
+
+
+def _shift(layout: Layout, object_id: str, dx: float, dy: float) -> None:
+    """Move a thing and everything resting on it."""
+    for j in layout.with_load(object_id):
+        layout.placed[j].x += dx
+        layout.placed[j].y += dy
+
+
+def _turn_about(layout: Layout, ids: list[str], cx: float, cy: float, degrees: float) -> None:
+    """Turn the footprints ``ids`` about (cx, cy) by ``degrees``."""
+    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
+    for i in ids:
+        q = layout.placed[i]
+        rx, ry = q.x - cx, q.y - cy
+        q.x, q.y = cx + c * rx - s * ry, cy + s * rx + c * ry
+        q.turn(q.yaw + degrees)
