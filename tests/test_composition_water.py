@@ -83,3 +83,10 @@ def test_a_pier_runs_from_the_shore_out_over_the_water_with_its_boats_moored_alo
 
 def test_a_scene_on_dry_land_has_no_shore():
     assert compose(parse_scene("A park with a bench, a lamp post and two oak trees.")).shore is None
+
+
+def test_a_group_with_its_floating_thing_behind_the_rest_straddles_the_shore():
+    text = "A quiet river bank at dawn. A heron wades behind an old angler who sits on a folding stool."
+    composition = compose(parse_scene(text))
+    by_id = {o.id: o for o in composition.objects}
+    assert by_id["heron_1"].position.y > composition.shore > by_id["stool_1"].position.y

@@ -5,7 +5,8 @@ The water lies at the back of the scene (+Y, away from the viewer) beyond one st
 runs just behind the last of them, and the units made only of floating things (a boat with its
 rowers, swans around it) move out beyond it, side by side. A pier, jetty or landing stage
 reaches from the shore into the water, and takes what the text put beside or on it along.
-Relations still win: a unit that mixes land things and floating things stays on land, as
+Relations still win: a unit that mixes land things and floating things straddles the shore
+when its relations set the floating ones behind the rest, and otherwise stays on land, as
 the text related them.
 """
 
@@ -67,13 +68,27 @@ def by_water(layout: Layout, text: str) -> float:
     the shore line's y. Called once the land is arranged."""
     afloat = {o.id for o in layout.objects if floats(o.name, o.category, text)}
     reaching = {o.id for o in layout.objects if layout.kind(o.id) in REACHING}
-    water, land = [], []
+    water, astride, land = [], [], []
     for unit in layout.top_units():
         grounded = {i for i in unit.ids if layout.on_ground(i)}
-        (water if grounded and grounded <= afloat | reaching else land).append(unit)
+        if grounded and grounded <= afloat | reaching:
+            water.append(unit)
+        elif _split_line(layout, unit, afloat, reaching) is not None:
+            astride.append(unit)
+        else:
+            land.append(unit)
     prints = [p for u in land for p in layout.ground_prints(u.ids)]
     shore = (bbox(prints)[3] if prints else 0.0) + SHORE_GAP
     placed: list[Footprint] = []
+    for unit in astride:  # its floating things behind the shore, its land things before it
+        layout.move(unit, 0.0, shore - _split_line(layout, unit, afloat, reaching))
+        x0, _, x1, _ = layout.box(unit)
+        direction = 1.0 if x0 + x1 >= 0 else -1.0
+        for _ in range(400):
+            if layout.is_clear(unit, prints + placed, GAP):
+                break
+            layout.move(unit, direction * 0.25, 0.0)
+        placed += layout.ground_prints(unit.ids)
     for unit in sorted(water, key=lambda u: not (set(u.ids) & reaching)):  # piers first, boats around them
         piers = [i for i in unit.ids if i in reaching and layout.on_ground(i)]
         if piers:
@@ -90,6 +105,19 @@ def by_water(layout: Layout, text: str) -> float:
             layout.move(unit, direction * 0.25, 0.0)
         placed += layout.ground_prints(unit.ids)
     return shore
+
+
+def _split_line(layout: Layout, unit: Unit, afloat: set[str], reaching: set[str]) -> float | None:
+    """The y of a line across ``unit`` with its floating things all behind it and its land
+    things all before it, as its relations set them out ("a dog barks at the swans around the
+    boat", the boat behind the dog); ``None`` when the unit is not that way round."""
+    grounded = [i for i in unit.ids if layout.on_ground(i) and i not in reaching]
+    wet = [layout.placed[i] for i in grounded if i in afloat]
+    dry = [layout.placed[i] for i in grounded if i not in afloat]
+    if not wet or not dry:
+        return None
+    front, back = bbox(wet)[1], bbox(dry)[3]
+    return (front + back) / 2 if front >= back else None
 
 
 def _reach_out(layout: Layout, unit: Unit, pier: str, afloat: set[str]) -> None:
