@@ -17,6 +17,7 @@ import re
 
 from scenewright.analysis.composition.footprint import GAP, Footprint, bbox
 from scenewright.analysis.composition.units import Layout, Unit
+from scenewright.layout import relations as rel
 
 #: Categories of things that float whenever the scene has water.
 FLOATING = frozenset({"boat", "buoy"})
@@ -70,6 +71,7 @@ def by_water(layout: Layout, text: str) -> float:
     reaching = {o.id for o in layout.objects if layout.kind(o.id) in REACHING}
     water, astride, land = [], [], []
     for unit in layout.top_units():
+        _float_back(layout, unit, afloat, reaching)
         grounded = {i for i in unit.ids if layout.on_ground(i)}
         if grounded and grounded <= afloat | reaching:
             water.append(unit)
@@ -105,6 +107,35 @@ def by_water(layout: Layout, text: str) -> float:
             layout.move(unit, direction * 0.25, 0.0)
         placed += layout.ground_prints(unit.ids)
     return shore
+
+
+def _float_back(layout: Layout, unit: Unit, afloat: set[str], reaching: set[str]) -> None:
+    """The unit's floating things (with their loads) moved together to just behind its land
+    things, when every relation that held still holds: "near", "face to", a side among the
+    floating things themselves do not say which side of the land things the water is ("a
+    terrier barks at the swans gliding alongside the narrowboat")."""
+    grounded = [i for i in unit.ids if layout.on_ground(i) and i not in reaching]
+    wet = [i for i in grounded if i in afloat]
+    dry = [i for i in grounded if i not in afloat]
+    if not wet or not dry:
+        return
+    front, back = bbox(layout.placed[i] for i in wet)[1], bbox(layout.placed[i] for i in dry)[3]
+    if front >= back:
+        return
+    moving = list(dict.fromkeys(j for i in wet for j in layout.with_load(i)))
+    held = _held(layout, set(moving))
+    for j in moving:
+        layout.placed[j].y += back + GAP - front
+    if not held <= _held(layout, set(moving)):
+        for j in moving:
+            layout.placed[j].y -= back + GAP - front
+
+
+def _held(layout: Layout, ids: set[str]) -> set[int]:
+    """The relations touching ``ids`` that hold at the current poses, by their index."""
+    touched = [(k, r) for k, r in enumerate(layout.relations) if r.source in ids or r.target in ids]
+    objects = {i: layout.scene_object(i) for _, r in touched for i in (r.source, r.target)}
+    return {k for k, r in touched if rel.check(r.relation, objects[r.source], objects[r.target])}
 
 
 def _split_line(layout: Layout, unit: Unit, afloat: set[str], reaching: set[str]) -> float | None:
