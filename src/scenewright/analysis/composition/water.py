@@ -58,10 +58,15 @@ def floats(name: str, category: str | None, text: str) -> bool:
     """Whether the thing named ``name`` floats in the scene ``text`` describes: a boat or buoy
     (by category or a vessel's head word) unless the text puts it ashore, or any thing the text
     says swims, paddles, wades, floats, drifts, glides or bathes."""
-    words = name.lower().split()
-    if category in FLOATING or (words and words[-1] in VESSELS):
+    if vessel(name, category):
         return not _said(name, text, _ASHORE)
-    return bool(words) and _said(name, text, _IN_WATER)
+    return bool(name.strip()) and _said(name, text, _IN_WATER)
+
+
+def vessel(name: str, category: str | None) -> bool:
+    """A boat, ship or buoy, by its category or its head word."""
+    words = name.lower().split()
+    return category in FLOATING or bool(words and words[-1] in VESSELS)
 
 
 def by_water(layout: Layout, text: str) -> float:
@@ -82,14 +87,10 @@ def by_water(layout: Layout, text: str) -> float:
     prints = [p for u in land for p in layout.ground_prints(u.ids)]
     shore = (bbox(prints)[3] if prints else 0.0) + SHORE_GAP
     placed: list[Footprint] = []
+    landings: list[Footprint] = []  # piers reaching out, for boats to gather at
     for unit in astride:  # its floating things behind the shore, its land things before it
         layout.move(unit, 0.0, shore - _split_line(layout, unit, afloat, reaching))
-        x0, _, x1, _ = layout.box(unit)
-        direction = 1.0 if x0 + x1 >= 0 else -1.0
-        for _ in range(400):
-            if layout.is_clear(unit, prints + placed, GAP):
-                break
-            layout.move(unit, direction * 0.25, 0.0)
+        _slide_clear(layout, unit, prints + placed)
         placed += layout.ground_prints(unit.ids)
     for unit in sorted(water, key=lambda u: not (set(u.ids) & reaching)):  # piers first, boats around them
         piers = [i for i in unit.ids if i in reaching and layout.on_ground(i)]
@@ -98,13 +99,9 @@ def by_water(layout: Layout, text: str) -> float:
             y0 = bbox(layout.placed[i] for i in piers)[1] - (shore - PIER_ON_LAND)
         else:
             y0 = bbox(layout.ground_prints(unit.ids))[1] - (shore + SHORE_GAP)
-        layout.move(unit, 0.0, -y0)
-        x0, _, x1, _ = layout.box(unit)
-        direction = 1.0 if x0 + x1 >= 0 else -1.0
-        for _ in range(400):  # along the shore, clear of what is afloat already
-            if layout.is_clear(unit, placed, GAP):
-                break
-            layout.move(unit, direction * 0.25, 0.0)
+        layout.move(unit, _to_landing(layout, unit, landings), -y0)
+        _slide_clear(layout, unit, placed)
+        landings += [layout.placed[i] for i in piers]
         placed += layout.ground_prints(unit.ids)
     return shore
 
@@ -136,6 +133,34 @@ def _held(layout: Layout, ids: set[str]) -> set[int]:
     touched = [(k, r) for k, r in enumerate(layout.relations) if r.source in ids or r.target in ids]
     objects = {i: layout.scene_object(i) for _, r in touched for i in (r.source, r.target)}
     return {k for k, r in touched if rel.check(r.relation, objects[r.source], objects[r.target])}
+
+
+#: m, the step and the farthest reach of a slide along the shore.
+_SLIDE_STEP, _SLIDE_REACH = 0.25, 100.0
+
+
+def _to_landing(layout: Layout, unit: Unit, landings: list[Footprint]) -> float:
+    """How far along x a unit with a boat moves to start at the nearest pier: boats the text
+    sets nowhere in particular gather at the landing, as in a harbour ("a sampan" in a ferry
+    crossing with a jetty); 0 when there is no pier, the unit has its own, or holds no boat."""
+    if not landings or any(layout.kind(i) in REACHING for i in unit.ids):
+        return 0.0
+    if not any(vessel(layout.by_id[i].name, layout.by_id[i].category) for i in unit.ids):
+        return 0.0  # a swan or a seal swims where it was
+    x0, _, x1, _ = layout.box(unit)
+    centre = (x0 + x1) / 2
+    return min((p.x - centre for p in landings), key=abs)
+
+
+def _slide_clear(layout: Layout, unit: Unit, others: list[Footprint]) -> None:
+    """Move ``unit`` along the shore to the nearest spot, either way, where it is clear of
+    ``others``: a boat stays as near as it can to where its group set it out (by the jetty)."""
+    for k in range(int(2 * _SLIDE_REACH / _SLIDE_STEP) + 1):
+        dx = (k + 1) // 2 * _SLIDE_STEP * (1 if k % 2 else -1)
+        layout.move(unit, dx, 0.0)
+        if layout.is_clear(unit, others, GAP):
+            return
+        layout.move(unit, -dx, 0.0)
 
 
 def _split_line(layout: Layout, unit: Unit, afloat: set[str], reaching: set[str]) -> float | None:
