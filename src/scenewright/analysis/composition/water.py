@@ -92,7 +92,8 @@ def by_water(layout: Layout, text: str) -> float:
         layout.move(unit, 0.0, shore - _split_line(layout, unit, afloat, reaching))
         _slide_clear(layout, unit, prints + placed)
         placed += layout.ground_prints(unit.ids)
-    for unit in sorted(water, key=lambda u: not (set(u.ids) & reaching)):  # piers first, boats around them
+    # piers first, then the boats that gather at them, then what swims around them
+    for unit in sorted(water, key=lambda u: (not set(u.ids) & reaching, not _has_vessel(layout, u))):
         piers = [i for i in unit.ids if i in reaching and layout.on_ground(i)]
         if piers:
             _reach_out(layout, unit, piers[0], afloat)
@@ -145,11 +146,15 @@ def _to_landing(layout: Layout, unit: Unit, landings: list[Footprint]) -> float:
     crossing with a jetty); 0 when there is no pier, the unit has its own, or holds no boat."""
     if not landings or any(layout.kind(i) in REACHING for i in unit.ids):
         return 0.0
-    if not any(vessel(layout.by_id[i].name, layout.by_id[i].category) for i in unit.ids):
+    if not _has_vessel(layout, unit):
         return 0.0  # a swan or a seal swims where it was
     x0, _, x1, _ = layout.box(unit)
     centre = (x0 + x1) / 2
     return min((p.x - centre for p in landings), key=abs)
+
+
+def _has_vessel(layout: Layout, unit: Unit) -> bool:
+    return any(vessel(layout.by_id[i].name, layout.by_id[i].category) for i in unit.ids)
 
 
 def _slide_clear(layout: Layout, unit: Unit, others: list[Footprint]) -> None:
