@@ -43,6 +43,9 @@ def test_what_floats_is_read_from_its_kind_and_what_the_text_says_it_does():
     assert not floats("kayak", "boat", text)  # ashore
     assert not floats("goose", "bird", text)
     assert not floats("lantern", "lantern", text)  # up in the air
+    text = "Two swans glide past a crate. Swimming ducks follow a wrecked canoe."
+    assert floats("duck", "bird", text) and not floats("canoe", "boat", text)
+    assert not floats("crate", "crate", text)  # what a swimmer passes does not swim
 
 
 def _ground(composition):
@@ -90,3 +93,13 @@ def test_a_group_with_its_floating_thing_behind_the_rest_straddles_the_shore():
     composition = compose(parse_scene(text))
     by_id = {o.id: o for o in composition.objects}
     assert by_id["heron_1"].position.y > composition.shore > by_id["stool_1"].position.y
+
+
+def test_a_boat_the_text_sets_nowhere_moors_at_the_pier_before_the_swimmers_take_the_spots():
+    text = ("A small harbour on a grey day. Two swans glide past a crate. A ferry is tied up beside a stone "
+            "jetty. A dinghy bobs in the water, and a net hangs on a shed.")
+    composition = compose(parse_scene(text))
+    pier = next(o for o in composition.objects if o.category == "pier")
+    dinghy = next(o for o in composition.objects if o.name == "dinghy")
+    gap = abs(dinghy.position.x - pier.position.x) - pier.size.y / 2 - dinghy.size.x / 2
+    assert gap < 1.0 and dinghy.position.y > composition.shore

@@ -46,10 +46,11 @@ PIER_ON_LAND = 0.5
 def _said(name: str, text: str, verbs: str) -> bool:
     """Whether ``text`` says the thing ``name`` (or its plural) does one of ``verbs``, within a few
     words of its name in the same clause ("swans glide", "a mother elephant and her calf bathe",
-    "a rowing boat lies upside down"; "a wrecked dinghy" before the name)."""
+    "a rowing boat lies upside down"), or as a participle just before it ("a wrecked dinghy",
+    "swimming ducks"; not "swans glide past a crate")."""
     noun = re.escape(name.lower())
     after = rf"\b{noun}(?:e?s)?\b(?:\s+[\w']+){{0,3}}?\s+{verbs}\b"
-    before = rf"\b{verbs}\s+(?:[\w']+\s+){{0,2}}?{noun}\b"
+    before = rf"\b(?={verbs})[\w-]+(?:ed|ing)\s+(?:[\w']+\s+)?{noun}(?:e?s)?\b"  # a participle before it
     low = text.lower()
     return bool(re.search(after, low) or re.search(before, low))
 
