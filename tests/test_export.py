@@ -203,3 +203,45 @@ def test_blender_imports_one_object_per_id_in_the_scene_frame(tmp_path):
         bottom_centre = np.array(obj.position.tuple()) - [0.0, 0.0, obj.size.z / 2]
         np.testing.assert_allclose(location, bottom_centre, atol=1e-4)
         assert kind == "EMPTY"
+
+
+def test_a_scene_by_water_gets_a_named_translucent_water_node_beyond_the_shore(tmp_path):
+    from scenewright.scene import WATER_LEVEL, Water
+
+    scene, folder = _scene(tmp_path, _objects())
+    scene.ground.water = Water(shore=1.0)
+    data = assemble(scene, folder).read_bytes()
+    tree = _glb_json(data)
+    roots = [tree["nodes"][i]["name"] for i in tree["scenes"][tree["scene"]]["nodes"]]
+    assert "water" in roots and "ground" in roots
+    material = next(m for m in tree["materials"] if m.get("name") == "water")
+    assert material["alphaMode"] == "BLEND" and material["pbrMetallicRoughness"]["roughnessFactor"] < 0.2
+    colour = material["pbrMetallicRoughness"]["baseColorFactor"]
+    assert colour[2] > colour[0] and colour[3] < 1.0  # blue, and the ground shows through
+    loaded = trimesh.load_scene(io.BytesIO(data), file_type="glb")
+    transform, name = loaded.graph.get("water")
+    water = loaded.geometry[name].copy()
+    water.apply_transform(GLTF_TO_SCENE @ transform)
+    assert np.allclose(water.vertices[:, 2], WATER_LEVEL)
+    assert np.all(water.face_normals[:, 2] > 0.99)
+    assert water.vertices[:, 1].min() == pytest.approx(1.0)  # from the shore back
+    transform, name = loaded.graph.get("ground")
+    ground = loaded.geometry[name].copy()
+    ground.apply_transform(GLTF_TO_SCENE @ transform)
+    assert water.vertices[:, 1].max() == pytest.approx(ground.vertices[:, 1].max())
+
+
+def test_a_scene_on_dry_land_has_no_water_node(tmp_path):
+    scene, folder = _scene(tmp_path, _objects())
+    tree = _glb_json(assemble(scene, folder).read_bytes())
+    assert all(n["name"] != "water" for n in tree["nodes"])
+
+
+@pytest.mark.node
+def test_a_scene_by_water_is_valid_gltf(tmp_path):
+    from scenewright.scene import Water
+
+    scene, folder = _scene(tmp_path, _objects())
+    scene.ground.water = Water(shore=0.5)
+    report = assert_valid(assemble(scene, folder))
+    assert report["issues"]["messages"] == []

@@ -449,3 +449,29 @@ def test_generate_refuses_an_unknown_preview_before_it_starts(tmp_path, capsys):
     out = tmp_path / "s"
     assert main(["generate", "a chair", "--out", str(out), "--preview", "ultra"]) == 2
     assert "--preview 'ultra'" in capsys.readouterr().err and not out.exists()
+
+
+@pytest.mark.blender
+@pytest.mark.skipif(not has_bpy, reason="needs the render extra (bpy)")
+def test_the_water_beyond_the_shore_is_rendered_blue_and_hides_nothing_above_it(tmp_path):
+    from PIL import Image
+
+    from scenewright.scene import Water
+
+    scene, folder = box_folder(
+        tmp_path,
+        Scene(
+            text="a crate on a quay and a buoy in the harbour",
+            objects=[
+                SceneObject(id="crate_1", name="crate", position=Vec3(x=-1, y=-1, z=0.25), size=Vec3(x=0.5, y=0.5, z=0.5)),
+                SceneObject(id="buoy_1", name="buoy", position=Vec3(x=1, y=3, z=0.4), size=Vec3(x=0.8, y=0.8, z=0.8)),
+            ],
+        ),
+    )
+    scene.ground.water = Water(shore=1.0)
+    render(scene, folder, draft=True, views=["front"])
+    info = render_info(folder)
+    assert all(pixels > 0 for pixels in info["visible"]["front"].values()), info["visible"]
+    image = np.asarray(Image.open(folder.renders / "front.png").convert("RGB")).astype(float)
+    water = image[image.shape[0] // 6 : image.shape[0] // 3, : image.shape[1] // 4]  # left, beyond the shore
+    assert water[..., 2].mean() > water[..., 0].mean() + 10

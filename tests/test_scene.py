@@ -147,3 +147,16 @@ def test_a_clockwise_floor_is_turned_round():
 def test_a_bad_room_is_refused_naming_what_is_wrong(fields, words):
     with pytest.raises(ValidationError, match=words):
         Room(**fields)
+
+
+def test_the_water_of_the_ground_round_trips_and_an_older_ground_loads_without_it(tmp_path):
+    from scenewright.scene import Water
+
+    scene = Scene(text="a rowing boat on a lake", objects=[_obj(position=Vec3(z=0.375))])
+    scene.ground.water = Water(shore=2.5)
+    again = Scene.load(scene.save(tmp_path / "scene.json"))
+    assert again.ground.water == Water(shore=2.5) and again == scene
+    old = tmp_path / "old.json"
+    old.write_text(json.dumps({"text": "a bench", "schema_version": SCHEMA_VERSION,
+                               "ground": {"kind": "grass", "texture": None, "description": ""}}))
+    assert Scene.load(old).ground.water is None

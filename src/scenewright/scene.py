@@ -257,10 +257,27 @@ class RemovedObject(_Model):
     _reason_length = field_validator("reason")(_at_most(MAX_DESCRIPTION_CHARS))
 
 
+#: m, the water's surface above the ground: a hull or a swimmer's body sits a little in it.
+WATER_LEVEL = 0.05
+
+
+class Water(_Model):
+    """Open water the scene lies by: it covers the ground beyond the shore line ``shore``
+    (y, metres), the back of the scene seen from the viewer, to the ground's far edge.
+
+    The back, because a viewer stands on the land looking out, so the land's things stand in
+    front of the boats and both are seen; and one straight shore is what a designer sketches
+    for a quay, a beach or a river bank."""
+
+    shore: float
+
+
 class Ground(_Model):
     kind: str = "grass"
     texture: str | None = None
     description: str = ""
+    #: The water beyond the shore, for a scene by a river, a lake, the sea; none on dry land.
+    water: Water | None = None
 
     # limits (docs/security.md)
     _kind_length = field_validator("kind")(_at_most(MAX_NAME_CHARS))

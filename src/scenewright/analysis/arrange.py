@@ -27,7 +27,7 @@ from collections import defaultdict
 from dataclasses import dataclass, replace
 
 from scenewright.analysis.composition import (
-    anchors, edges, formations, groups, hosts, mounts, outdoor, packing, posture, relational, roles,
+    anchors, edges, formations, groups, hosts, mounts, outdoor, packing, posture, relational, roles, water,
 )
 from scenewright.analysis.composition.footprint import bbox
 from scenewright.analysis.composition.lines import unline
@@ -47,6 +47,8 @@ class Composition:
     #: Groups to move as one to where the text anchors one of their members in the room
     #: (:func:`~scenewright.analysis.composition.anchors.into_room`, once the room is known).
     anchored: tuple[AnchoredGroup, ...] = ()
+    #: The shore line's y when the scene lies by water (``composition.water``), the water beyond it.
+    shore: float | None = None
 
 
 #: Rules that join units into groups, in order: a host's own partners before shared ones.
@@ -98,24 +100,29 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
     outdoor.park(layout, vehicles)
     outdoor.scatter(layout, natural, random.Random(seed))
     unline(layout, layout.relations_hold)
+    shore = water.by_water(layout, parsed.text) if parsed.water else None
     if not centred:
-        _centre(layout)
+        dy = _centre(layout)
+        shore = shore + dy if shore is not None else None
     return Composition([layout.scene_object(o.id) for o in parsed.objects], layout.relations,
-                       tuple(walled[id(u)] for u in layout.top_units() if id(u) in walled))
+                       tuple(walled[id(u)] for u in layout.top_units() if id(u) in walled),
+                       None if shore is None else round(shore, 4))
 
 
-def _centre(layout: Layout) -> None:
+def _centre(layout: Layout) -> float:
     """Everything moved so that what stands on the ground is centred on the origin: a room is
     built centred there around the first poses, so a composition set out to one side (groups
-    packed behind the first one) would start half outside its room and be squeezed along a wall."""
+    packed behind the first one) would start half outside its room and be squeezed along a wall.
+    Returns how far everything moved along y (the shore moves with it)."""
     prints = layout.ground_prints(list(layout.placed))
     if not prints:
-        return
+        return 0.0
     x0, y0, x1, y1 = bbox(prints)
     dx, dy = -(x0 + x1) / 2, -(y0 + y1) / 2
     for p in layout.placed.values():
         p.x += dx
         p.y += dy
+    return dy
 
 
 def _member_at(layout: Layout, unit: Unit, anchor: str) -> str | None:

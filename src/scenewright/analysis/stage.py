@@ -67,6 +67,7 @@ def _objects(scene: Scene, vlm: VisionLanguageModel, reference: bytes | None, ro
         STAGE, f"found {len(objects)} objects", step="objects", backend=vlm.name, ids=[o.id for o in objects]
     )
     scene.room = room_for(scene.text, objects, parse_room_option(room), answer.room, answer.proposes_room)
+    scene.ground.water = answer.water if scene.room is None else None  # a room's floor has no water
     if scene.room is not None and answer.anchored:  # "a sofa at the back of the room", with its group
         scene.objects = into_room(scene.objects, scene.room, answer.anchored)
     if scene.room is not None:

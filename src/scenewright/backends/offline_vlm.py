@@ -19,7 +19,7 @@ from scenewright.core.protocols import Answer
 from scenewright.core.relations import BINDING
 from scenewright.analysis.parser.room import WALL_THINGS, wall_phrases
 from scenewright.errors import BackendError, InputError
-from scenewright.scene import ROOM_RELATIONS, ROOM_TARGET, Constraint, Event, LayoutReport, Room, SceneObject
+from scenewright.scene import ROOM_RELATIONS, ROOM_TARGET, Constraint, Event, LayoutReport, Room, SceneObject, Water
 
 if TYPE_CHECKING:
     from scenewright.core.plan import EditPlan
@@ -96,8 +96,9 @@ class OfflineVLM:
                 )
             )
         composition = self.composition(text)
+        water = None if composition.shore is None else Water(shore=composition.shore)
         return Answer([o.model_copy(deep=True) for o in composition.objects], tuple(repairs),
-                      anchored=composition.anchored)
+                      anchored=composition.anchored, water=water)
 
     def write_constraints(
         self, text: str, objects: Sequence[SceneObject], reference: bytes | None, room: Room | None = None

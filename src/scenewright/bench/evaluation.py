@@ -21,6 +21,7 @@ from scenewright.evaluation.annotations import Prompt
 from scenewright.evaluation.composition import LINE, in_a_line, spread
 from scenewright.evaluation.room import room_metrics
 from scenewright.evaluation.stated import stated
+from scenewright.evaluation.water import by_water
 from scenewright.scene import Scene
 from scenewright.settings import Settings
 
@@ -57,7 +58,9 @@ def layout_row(scene: Scene, prompt: Prompt) -> dict:
     """Relations realised, supports right and spread of one finished scene."""
     result = stated(scene, prompt)
     value, ground = spread(scene)
+    water = by_water(scene)
     return {
+        "by_water": None if water is None else vars(water),
         "relations_realised": result.realised,
         "relations_stated": result.relations,
         "supports_right": result.supports_right,
@@ -76,7 +79,12 @@ def layout_figures(rows: list[dict]) -> dict:
         for kind, n in r["supports_skipped"].items():
             skipped[kind] = skipped.get(kind, 0) + n
     spreads = [r["spread"] for r in rows if r["spread"] is not None]
+    wet = [r["by_water"] for r in rows if r["by_water"] is not None]
     return {
+        # scenes by water: floating things over the water, the other ground things on land
+        "scenes_by_water": len(wet),
+        "floating_afloat": ratio(sum(w["afloat"] for w in wet), sum(w["floating"] for w in wet)),
+        "grounded_ashore": ratio(sum(w["ashore"] for w in wet), sum(w["grounded"] for w in wet)),
         "relations_realised": ratio(sum(r["relations_realised"] for r in rows), sum(r["relations_stated"] for r in rows)),
         "supports_right": ratio(sum(r["supports_right"] for r in rows), sum(r["supports_checked"] for r in rows)),
         "supports_skipped": skipped,

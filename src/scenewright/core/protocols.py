@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Generic, Protocol, TypeVar, runtime_checkable
 
 from scenewright.core.plan import EditPlan
-from scenewright.scene import Constraint, Event, Room, SceneObject, Vec3
+from scenewright.scene import Constraint, Event, Room, SceneObject, Vec3, Water
 
 if TYPE_CHECKING:
     from scenewright.scene import LayoutReport, Scene
@@ -52,6 +52,8 @@ class Answer(Generic[T]):
     proposes_room: bool = False
     #: ``describe_objects``: groups to move as one to where the text anchors them in the room.
     anchored: tuple[AnchoredGroup, ...] = ()
+    #: ``describe_objects``: the water the objects were laid out by, None on dry land.
+    water: Water | None = None
 
 
 @runtime_checkable

@@ -25,7 +25,7 @@ import numpy as np
 
 from scenewright.assets.load import AssetMeshes
 from scenewright.errors import InputError
-from scenewright.export.ground import PLAIN_COLOUR, ground_plane
+from scenewright.export.ground import PLAIN_COLOUR, WATER_COLOUR, ground_plane, water_plane
 from scenewright.export.splice import Glb, GlbWriter
 from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder
@@ -36,6 +36,7 @@ from scenewright.version import __version__
 log = logging.getLogger(__name__)
 
 GROUND_NODE = "ground"
+WATER_NODE = "water"
 ROOM_NODE = "room"
 #: Bumped when the room's meshes or materials are made differently, so a ``scene.glb`` written
 #: before does not hand its room on.
@@ -175,9 +176,21 @@ def _add_ground(out: GlbWriter, scene: Scene, folder: SceneFolder) -> None:
     out.mesh(GROUND_NODE, vertices, faces, material, normals=np.tile([0.0, 1.0, 0.0], (len(vertices), 1)), uv=flipped)
 
 
+def _add_water(out: GlbWriter, scene: Scene) -> None:
+    """The water beyond the shore (:func:`~scenewright.export.ground.water_plane`): one plane,
+    blue, smooth and alpha-blended, so the ground's edge shows faintly through it."""
+    assert scene.ground.water is not None
+    vertices = water_plane(scene.objects, scene.bounds, scene.ground.water)
+    pbr = {"baseColorFactor": list(WATER_COLOUR), "metallicFactor": 0.0, "roughnessFactor": 0.05}
+    material = out.add("materials", {"name": WATER_NODE, "pbrMetallicRoughness": pbr, "alphaMode": "BLEND",
+                                     "doubleSided": False})
+    out.mesh(WATER_NODE, vertices, np.array([[0, 1, 2], [0, 2, 3]]), material,
+             normals=np.tile([0.0, 1.0, 0.0], (len(vertices), 1)))
+
+
 def scene_glb(scene: Scene, folder: SceneFolder, meshes: AssetMeshes | None = None) -> GlbWriter:
-    """The glTF of ``scene.glb`` (a node per object, named by id, and the ground, or the room
-    when the scene has one: its floor is the ground then), ready for more nodes or its bytes.
+    """The glTF of ``scene.glb`` (a node per object, named by id, and the ground with the water
+    beyond its shore, or the room when the scene has one: its floor is the ground then), ready for more nodes or its bytes.
     ``meshes`` holds the asset files the caller has read already."""
     paths = _asset_paths(scene, folder)
     store = meshes if meshes is not None else AssetMeshes()
@@ -188,6 +201,8 @@ def scene_glb(scene: Scene, folder: SceneFolder, meshes: AssetMeshes | None = No
         _add_room(out, scene, folder)
     else:
         _add_ground(out, scene, folder)
+        if scene.ground.water is not None:
+            _add_water(out, scene)
     return out
 
 

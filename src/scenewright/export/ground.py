@@ -16,7 +16,7 @@ import numpy as np
 
 from scenewright.geometry import SCENE_TO_GLTF, world_box
 from scenewright.gltf import srgb_to_linear
-from scenewright.scene import Room, SceneObject
+from scenewright.scene import WATER_LEVEL, Room, SceneObject, Water
 
 log = logging.getLogger(__name__)
 
@@ -65,6 +65,20 @@ def ground_plane(
     # Counter-clockwise seen from above (scene +Z), so the face normal points up (glTF +Y).
     faces = np.array([[0, 1, 2], [0, 2, 3]])
     return vertices, faces, scene_xy / TILE_METRES
+
+
+#: The water's look, as a linear glTF factor: a deep blue-green, three quarters opaque.
+WATER_COLOUR = (*srgb_to_linear((0.16, 0.36, 0.48)), 0.8)
+
+
+def water_plane(objects: Sequence[SceneObject], bounds: tuple[float, float] | None, water: Water) -> np.ndarray:
+    """The water's four corners in glTF frame (+Y up), counter-clockwise seen from above: the
+    ground's width, from the shore to the ground's far edge (at least a margin past the shore)."""
+    (x0, _), (x1, y1) = ground_extent(objects, bounds)
+    y1 = max(y1, water.shore + MARGIN_METRES)
+    scene_xy = np.array([[x0, water.shore], [x1, water.shore], [x1, y1], [x0, y1]])
+    scene_pts = np.column_stack([scene_xy, np.full(4, WATER_LEVEL), np.ones(4)])
+    return (scene_pts @ SCENE_TO_GLTF.T)[:, :3]
 
 
 def ground_mesh(objects: Sequence[SceneObject], bounds: tuple[float, float] | None, texture: Path | None):

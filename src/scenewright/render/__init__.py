@@ -36,7 +36,7 @@ from scenewright.files import write_atomic
 from scenewright.folder import SceneFolder, as_folder
 from scenewright.geometry import object_matrix, world_box
 from scenewright.render.views import VIEWS, cut_away, object_weights
-from scenewright.scene import Scene
+from scenewright.scene import WATER_LEVEL, Scene
 from scenewright.settings import Settings
 
 if TYPE_CHECKING:
@@ -136,7 +136,9 @@ def _ground_and_room(scene: Scene, folder: SceneFolder, views: Sequence[str]) ->
     ground inside; outside it the worker's ground is plain and sits under the floor slab, so
     the two never fight for the same pixels."""
     if scene.room is None:
-        return {"ground_texture": _ground_texture(scene, folder), "ground_kind": scene.ground.kind}
+        water = scene.ground.water
+        return {"ground_texture": _ground_texture(scene, folder), "ground_kind": scene.ground.kind,
+                **({"water": {"shore": water.shore, "level": WATER_LEVEL}} if water is not None else {})}
     from scenewright.procedural.room import FLOOR_THICKNESS
 
     return {

@@ -69,15 +69,16 @@ def _object_id(obj, ids: set[str]) -> str | None:
 
 
 def _is_ground(obj) -> bool:
+    """Whether the node is the GLB's ground or water (or under it): the worker lays its own."""
     while obj is not None:
-        if obj.name.lower().startswith("ground"):
+        if obj.name.lower().startswith(("ground", "water")):
             return True
         obj = obj.parent
     return False
 
 
 def import_scene(glb: str, ids: list[str]) -> dict[str, list]:
-    """Import the GLB, drop its ground node (the worker lays its own), index each object's meshes."""
+    """Import the GLB, drop its ground and water nodes (the worker lays its own), index each object's meshes."""
     bpy.ops.import_scene.gltf(filepath=glb)
     known = set(ids)
     parts: dict[str, list] = {object_id: [] for object_id in ids}
@@ -133,12 +134,19 @@ def add_ground(low, high, texture: str | None, kind: str, horizon, z: float = 0.
     else:
         colour = GROUND_COLOURS.get(kind, (0.45, 0.43, 0.4))
         bsdf.inputs["Base Color"].default_value = (*colour, 1.0)
+    _haze(mat, bsdf, horizon, (cx, cy, z), reach)
+    mesh.materials.append(mat)
+
+
+def _haze(mat, bsdf, horizon, centre, reach: float) -> None:
+    """Fade the plane's ``bsdf`` into ``horizon`` with distance from ``centre``, for camera rays only."""
+    nodes, links = mat.node_tree.nodes, mat.node_tree.links
     haze = nodes.new("ShaderNodeEmission")
     haze.inputs["Color"].default_value = (*horizon, 1.0)
     distance = nodes.new("ShaderNodeVectorMath")
     distance.operation = "DISTANCE"
     links.new(nodes.new("ShaderNodeTexCoord").outputs["Object"], distance.inputs[0])
-    distance.inputs[1].default_value = (cx, cy, z)
+    distance.inputs[1].default_value = centre
     fade = nodes.new("ShaderNodeMapRange")
     fade.interpolation_type = "SMOOTHSTEP"
     fade.inputs["From Min"].default_value = reach * 3.0
@@ -156,6 +164,32 @@ def add_ground(low, high, texture: str | None, kind: str, horizon, z: float = 0.
     # The haze only colours what the camera sees (it is zero for every other ray), so Cycles
     # must not spend light samples on the huge plane as if it were a lamp.
     mat.cycles.emission_sampling = "NONE"
+
+
+#: The water's colour (linear) and how much of the ground beneath shows through it.
+WATER_COLOUR = (0.03, 0.11, 0.19)
+WATER_ALPHA = 0.85
+
+
+def add_water(low, high, shore: float, level: float, horizon) -> None:
+    """The water beyond the shore: a smooth blue plane from the shore line to the horizon, as
+    wide as the ground, hazed like it with distance."""
+    cx, cy = (low[0] + high[0]) / 2.0, (low[1] + high[1]) / 2.0
+    reach = max(high[0] - low[0], high[1] - low[1], 8.0) / 2.0
+    half = reach * 60.0
+    verts = [(cx - half, shore, level), (cx + half, shore, level), (cx + half, cy + half, level),
+             (cx - half, cy + half, level)]
+    mesh = bpy.data.meshes.new("water")
+    mesh.from_pydata(verts, [], [(0, 1, 2, 3)])
+    water = bpy.data.objects.new("water", mesh)
+    bpy.context.scene.collection.objects.link(water)
+    water.pass_index = 0
+    mat, nodes, _ = _material("water")
+    bsdf = nodes["Principled BSDF"]
+    bsdf.inputs["Base Color"].default_value = (*WATER_COLOUR, 1.0)
+    bsdf.inputs["Roughness"].default_value = 0.08
+    bsdf.inputs["Alpha"].default_value = WATER_ALPHA
+    _haze(mat, bsdf, horizon, (cx, cy, level), reach)
     mesh.materials.append(mat)
 
 
@@ -330,6 +364,8 @@ def run(job: dict) -> dict:
     world_colour, world_strength = LIGHTING.get(job["style"], LIGHTING["realistic"])[:2]
     horizon = tuple(c * world_strength for c in world_colour)
     add_ground(low, high, job.get("ground_texture"), job.get("ground_kind", ""), horizon, job.get("ground_z", 0.0))
+    if job.get("water"):
+        add_water(low, high, job["water"]["shore"], job["water"]["level"], horizon)
     hidden = {view: set(names) for view, names in job.get("hidden", {}).items()}
     transform = add_lighting(job["style"], low, high)
     width, height = job["resolution"]

@@ -190,12 +190,12 @@ from scenewright.analysis.parser.model import ParsedObject, ParsedRelation, Pars
 from scenewright.analysis.parser.phrases import relation_phrases
 from scenewright.analysis.parser.reader import _Reader
 from scenewright.analysis.parser.room import wall_units
-from scenewright.analysis.parser.style import GROUND_KINDS, _is_indoor, detect_ground, detect_style
+from scenewright.analysis.parser.style import GROUND_KINDS, _is_indoor, detect_ground, detect_style, detect_water
 from scenewright.analysis.parser.support import _infer_support, fit_on_hosts, onto_stack_tops, repair_supports
 
 __all__ = [
     "GROUND_KINDS", "ParsedObject", "ParsedRelation", "ParsedScene",
-    "detect_ground", "detect_style", "parse_scene", "relation_phrases",
+    "detect_ground", "detect_style", "detect_water", "parse_scene", "relation_phrases",
 ]  # fmt: skip
 
 
@@ -234,5 +234,6 @@ def parse_scene(text: str) -> ParsedScene:
         indoor=indoor,
         places=reader.places,
         repairs=repairs,
+        water=detect_water(text, indoor),
     )
     return replace(parsed, objects=wall_units(parsed))  # a shelf fixed to a wall is a wall shelf

@@ -57,6 +57,8 @@ class ParsedScene:
     places: list[str] = field(default_factory=list)
     #: What the parse changed from the text's literal reading, and why ("x on y: y cannot hold it").
     repairs: list[str] = field(default_factory=list)
+    #: The setting lies by open water (:func:`~scenewright.analysis.parser.style.detect_water`).
+    water: bool = False
 
     def constraints(self) -> list[Constraint]:
         return [r.constraint() for r in self.relations]

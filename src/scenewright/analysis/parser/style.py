@@ -349,6 +349,39 @@ def detect_ground(text: str, indoor: bool) -> str:
     return "wood floor" if indoor else "grass"
 
 
+#: Words that set a scene by open water: the water lies beyond the land the scene stands on. A pond
+#: or a pool is a thing of the scene (it has a size and a place), not its setting; so is a stream a
+#: bridge crosses, too narrow to be the water the scene lies by.
+_WATER_PLACES = ("river", "riverside", "riverbank", "lake", "lakeside", "lakeshore", "sea", "seaside", "seafront",
+                 "ocean", "harbour", "harbor", "harbourside", "bay", "canal", "towpath", "lagoon", "cove", "shore",
+                 "shoreline", "beach", "coast", "quay", "quayside", "wharf", "waterfront", "marina", "fjord",
+                 "estuary", "tideline")
+#: A bank of a river, not a bank of money: "on the far bank", "along the banks", "the river bank" (a
+#: robber runs from the bank, a guard stands on the bank's steps).
+_BANK = re.compile(r"\b(?:on|along) the (?:\w+ )?banks?\b(?!\s+(?:steps|vault|counter|building|doors?|roof)\b)|"
+                   r"\b(?:river|canal) ?banks?\b")
+#: Water that is not open, by the words before and after its name: frozen or dry ("a frozen lake",
+#: "the sea ice", "a dry river bed").
+_NOT_OPEN_BEFORE = re.compile(r"\b(?:frozen|icy|iced|dry|dried)\s+(?:\w+\s+)?$")
+_NOT_OPEN_AFTER = re.compile(r"^\s*(?:ice|bed)\b")
+
+
+def detect_water(text: str, indoor: bool) -> bool:
+    """Whether the scene lies by open water: an outdoor text whose words name a river, a lake,
+    the sea, a harbour, a shore or a bank (:data:`_WATER_PLACES`). A water named frozen or dry
+    anywhere makes the whole text's water so ("a frozen lake ... pine trees line the far
+    shore"). A room has no water, whatever its windows look out on ("a captain's cabin ... sea
+    charts")."""
+    if indoor:
+        return False
+    low = " ".join(re.findall(r"[a-zé']+", without_media(text).lower()))
+    named = list(re.finditer(r"\b(?:" + "|".join(_WATER_PLACES) + r")\b", low))
+    if any(_NOT_OPEN_BEFORE.search(low[max(0, m.start() - 20) : m.start()]) or _NOT_OPEN_AFTER.search(low[m.end() :])
+           for m in named):
+        return False
+    return bool(named) or bool(_BANK.search(low))
+
+
 #: Places whose setting is a building: a scene "in a hangar" is an interior.
 _INDOOR_PLACES = {"hangar", "warehouse", "factory", "garage", "workshop", "library", "museum", "tavern", "inn", "pub",
                   "attic", "basement", "cellar", "loft", "lobby", "hallway", "corridor", "chamber", "church",
