@@ -323,3 +323,9 @@ def test_ones_own_small_thing_one_does_something_on_is_in_hand():
     assert not any(s.startswith("parent") and r == "on" for s, r, _ in found)
     assert ("plumber_1", "on", "toolbox_1") in rels("A plumber sits on his toolbox.")
     assert ("girl_1", "face to", "kite_1") in rels("A girl films a kite on her phone.")
+
+
+def test_a_participle_right_after_a_thing_in_hand_describes_the_thing():
+    found = rels("A tailor at a long table cuts a cloth spread out on it.")
+    assert ("cloth_1", "on", "table_1") in found
+    assert not any(s == "tailor_1" and r == "on" for s, r, _ in found)

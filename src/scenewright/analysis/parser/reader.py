@@ -1362,7 +1362,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             company = with_at > 0 and _is_verb(toks[with_at - 1].text) and target not in _PERSONAL and all(
                 self._living(g) for g in [*c.wsub, *c.head]
             )
-            if c.wsub and not closed and not c.expect_new and not in_hand and not company:
+            # ("skirts a fleece spread out on it": a participle right after the thing in hand describes the thing)
+            told = [toks[k].text for k in range(last_event_end, rel.start)]
+            described = 0 < len(told) <= 2 and _participle(told[0]) and told[0] not in _HOLD and "," not in told
+            described = described and not any(self._living(g) for g in c.wsub)
+            if c.wsub and (described or not closed and not c.expect_new and not in_hand and not company):
                 srcs = list(c.wsub)
                 if kind in ("on", "above", "over", "on top", "under"):
                     c.wsub_related.update(srcs)
