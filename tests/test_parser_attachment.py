@@ -337,3 +337,14 @@ def test_ones_own_small_thing_one_does_something_on_is_in_hand():
     assert not any(s.startswith("parent") and r == "on" for s, r, _ in found)
     assert ("plumber_1", "on", "toolbox_1") in rels("A plumber sits on his toolbox.")
     assert ("girl_1", "face to", "kite_1") in rels("A girl films a kite on her phone.")
+
+
+def test_a_participle_right_after_a_thing_in_hand_describes_the_thing():
+    found = rels("A tailor at a long table cuts a cloth spread out on it.")
+    assert ("cloth_1", "on", "table_1") in found
+    assert not any(s == "tailor_1" and r == "on" for s, r, _ in found)
+
+
+def test_it_after_a_clause_that_acts_on_a_thing_names_the_thing():
+    found = rels("By the window, a waiter robot refills an espresso machine, and a tiny drone hovers beside it.")
+    assert ("drone_1", "side of", "coffee_machine_1") in found and ("drone_1", "side of", "robot_1") not in found

@@ -284,6 +284,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         #: The latest subjects named together ("a singer and a fiddler stand ..."): "them" when no
         #: group of several is meant.
         self.together: list[int] = []
+        #: What the clause before acted on ("a robot refills a coffee machine"): "it" after it names that first.
+        self.acted_on: list[int] = []
 
     # ---- groups
 
@@ -567,6 +569,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     self.topic = list(dict.fromkeys([*about, *reversed(placed_by)]))
                     self.doers = [g for g in about if self._living(g)]
                 self.history.extend(c.groups)
+                self.acted_on = [t for _, t in c.deeds if not self._living(t)]
         by_start = {m.start: m for m in mentions}
         held = [("on", by_start[s].group, by_start[h].group, None) for s, h in self.held_of
                 if by_start[s].group >= 0 and by_start[h].group >= 0]  # fmt: skip
@@ -1410,7 +1413,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             company = with_at > 0 and _is_verb(toks[with_at - 1].text) and target not in _PERSONAL and all(
                 self._living(g) for g in [*c.wsub, *c.head]
             )
-            if c.wsub and not closed and not c.expect_new and not in_hand and not company:
+            # ("skirts a fleece spread out on it": a participle right after the thing in hand describes the thing)
+            told = [toks[k].text for k in range(last_event_end, rel.start)]
+            described = 0 < len(told) <= 2 and _participle(told[0]) and told[0] not in _HOLD and "," not in told
+            described = described and not any(self._living(g) for g in c.wsub)
+            if c.wsub and (described or not closed and not c.expect_new and not in_hand and not company):
                 srcs = list(c.wsub)
                 if kind in ("on", "above", "over", "on top", "under"):
                     c.wsub_related.update(srcs)
@@ -1650,6 +1657,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # then the subject before ("a wagon waits behind the fountain, and a donkey is tied to
         # a post next to it": the wagon)
         own_subject = list(prev_subject) if c.main and srcs == c.main else []
+        # ("a robot refills a coffee machine, and a drone hovers beside it": the machine)
+        own_subject = [*self.acted_on[-1:], *own_subject] if own_subject and kind in _GROUND_KINDS else own_subject
         prefer = [*c.last_target, *prev_subject] if c.last_target else own_subject
         if target == "it" and c.last_kind == "between":
             # "a woman at a table between the pen and the press spreads a fleece on it": the pair is
