@@ -246,11 +246,19 @@ def kiosk(m: Model) -> None:
 
 
 def market_stall(m: Model) -> None:
+    """A counter of goods at the front under a striped awning on four posts, and a trestle at
+    the back at the counter's height, where what the text puts on the stall stands (the
+    catalogue's ``rest_height``)."""
     m.main = "canvas"
     post = m.thick(0.05, 0.05 * m.sx)
     counter = 0.4 * m.sz
     front_top, back_top = 0.82 * m.sz, m.sz
     m.box("wood", (-m.sx / 2 + post, -m.sy / 2 + 0.12 * m.sy, 0), (m.sx / 2 - post, -m.sy / 2 + 0.45 * m.sy, counter))
+    y0, y1 = 0.02 * m.sy, m.sy / 2 - post - 0.03 * m.sy
+    m.box("wood", (-m.sx / 2 + post, y0, counter - 0.04 * m.sz), (m.sx / 2 - post, y1, counter))
+    for x in (-m.sx / 2 + 2 * post, m.sx / 2 - 2 * post):
+        for y in (y0 + post, y1 - post):
+            m.post("wood", x, y, 0.0, counter - 0.04 * m.sz, post / 3)
     for x in (-m.sx / 2 + post / 2, m.sx / 2 - post / 2):
         m.box("wood", (x - post / 2, -m.sy / 2 + 0.1 * m.sy, 0), (x + post / 2, -m.sy / 2 + 0.1 * m.sy + post, front_top))
         m.box("wood", (x - post / 2, m.sy / 2 - post - 0.01 * m.sy, 0), (x + post / 2, m.sy / 2 - 0.01 * m.sy, back_top))
