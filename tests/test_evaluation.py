@@ -373,6 +373,22 @@ def test_stated_relations_are_checked_in_the_layout_not_taken_from_constraints()
     assert (result.supports_right, result.supports_checked) == (7, 7)
 
 
+def test_side_gaps_measure_how_far_each_thing_stated_beside_another_stands_from_it():
+    prompt = annotation(
+        {"vending_machine": 1, "market_stall": 1, "camel": 1, "street_lamp": 2, "crate": 1},
+        [
+            ["camel", "right of", "market_stall"],  # 0.85 m from the stall's side
+            ["street_lamp", "left of", "market_stall"],  # either side: one pair, each lamp once
+            ["street_lamp", "right of", "market_stall"],
+            ["vending_machine", "behind", "camel"],  # the machine stands elsewhere: its gap counts too
+            ["crate", "on", "market_stall"],  # not a side: no gap
+        ],
+    )
+    gaps = stated(market(), prompt).side_gaps
+    lamp = float(np.hypot(0.4, 2.1))  # past the stall's corner
+    assert gaps == [pytest.approx(0.85), pytest.approx(lamp, abs=1e-3), pytest.approx(lamp, abs=1e-3), pytest.approx(7.65)]
+
+
 def test_between_needs_the_gap_not_just_nearness():
     a, b = thing("a_1", -2, 0, 0.5, 1, 1, 1), thing("b_1", 2, 0, 0.5, 1, 1, 1)
     assert between(thing("s_1", 0.5, 0.4, 0.3, 0.3, 0.3, 0.6), a, b)

@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 from scenewright.layout import audit, check, colliding_pairs, feedback_text, solve
 from scenewright.bench.layout import independent_collisions
 from scenewright.testing.problems import hard_problem, planted_problem
-from scenewright.layout.relations import Boxes, check_room
+from scenewright.layout.relations import Boxes, check_room, plan_gap
 from scenewright.scene import Constraint, Room, SceneObject, Vec3
 
 
@@ -632,3 +632,18 @@ def test_the_last_rerun_searches_twice_as_long_as_the_first_not_all_that_is_left
     assert not result.report.complete
     first = ATTEMPT_NODES * len(objects) + 100
     assert budgets[:RESTARTS] == [first] * (RESTARTS - 1) + [LAST_NODES * first]
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+@pytest.mark.parametrize("relation, dx, dy", [("left of", -0.9, 0.0), ("right of", 0.9, 0.0),
+                                              ("in front of", 0.0, -0.9), ("side of", 0.9, 0.0)])
+def test_a_thing_set_beside_its_target_stays_beside_it_when_the_target_moves(relation, dx, dy, seed):
+    # A sapling must leave its first spot (a kiln stands there); the ladder the first poses leaned
+    # against it goes with it, rather than to the spot of the half-plane nearest its old one,
+    # metres off along the kiln.
+    objects = [box("kiln", size=(6, 6, 1)), box("sapling", size=(1, 1, 3)), box("ladder", dx, dy, size=(0.6, 0.4, 2))]
+    result = solve(objects, [c(relation, "ladder", "sapling")], fixed=["kiln"], seed=seed, bounds=(30.0, 30.0))
+    by_id = {o.id: o for o in result.objects}
+    assert np.hypot(by_id["sapling"].position.x, by_id["sapling"].position.y) > 3.0  # it did move
+    assert check(relation, by_id["ladder"], by_id["sapling"])
+    assert plan_gap(by_id["ladder"], by_id["sapling"]) <= 0.5

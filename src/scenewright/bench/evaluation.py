@@ -70,6 +70,7 @@ def layout_row(scene: Scene, prompt: Prompt) -> dict:
         "ground_objects": ground,
         "not_realised": result.not_realised,
         "wrong_supports": result.wrong_supports,
+        "side_gaps": result.side_gaps,
     }
 
 
@@ -91,6 +92,21 @@ def layout_figures(rows: list[dict]) -> dict:
         "median_spread": round(statistics.median(spreads), 4) if spreads else None,
         f"scenes_spread_below_{LINE}": sum(in_a_line(r["spread"]) for r in rows),
         "scenes_with_spread": len(spreads),
+        **side_gap_figures([g for r in rows for g in r["side_gaps"]]),
+    }
+
+
+#: m, the gap within which two things stated side by side count as standing together.
+TOGETHER = 1.0
+
+
+def side_gap_figures(gaps: list[float]) -> dict:
+    """Median plan gap of the things stated beside, in front of or behind another, and the share
+    standing within :data:`TOGETHER` of it."""
+    return {
+        "median_side_gap": round(statistics.median(gaps), 3) if gaps else None,
+        f"side_gaps_within_{TOGETHER:g}m": ratio(sum(g <= TOGETHER for g in gaps), len(gaps)),
+        "side_gaps": len(gaps),
     }
 
 

@@ -23,7 +23,7 @@ import numpy as np
 from scenewright.evaluation.annotations import GROUND, UNCHECKED_SUPPORTS, Prompt, assign_keys
 from scenewright.geometry import world_box
 from scenewright.layout import check
-from scenewright.layout.relations import Boxes, RoomTarget, holds, rest_share
+from scenewright.layout.relations import Boxes, RoomTarget, holds, plan_gap, rest_share
 from scenewright.scene import Scene, SceneObject
 
 #: Metres a bottom may sit from z = 0 and still stand on the ground (as the physical metrics).
@@ -86,6 +86,10 @@ class Stated:
     supports_skipped: dict[str, int] = field(default_factory=dict)
     not_realised: list[str] = field(default_factory=list)
     wrong_supports: list[str] = field(default_factory=list)
+    #: Per instance of a thing stated beside, in front of or behind another, the plan gap (m) to
+    #: the nearest instance of that other: a designer puts such things together, and the side
+    #: checks alone accept a sink five metres down the wall from the rack it stands "next to".
+    side_gaps: list[float] = field(default_factory=list)
 
     def to_dict(self) -> dict:
         return {
@@ -94,6 +98,7 @@ class Stated:
             "supports_skipped": dict(self.supports_skipped),
             "not_realised": self.not_realised,
             "wrong_supports": self.wrong_supports,
+            "side_gaps": self.side_gaps,
         }
 
 
@@ -112,6 +117,8 @@ def _relation_holds(relation: str, sources: list[SceneObject], targets: list[Sce
 
 #: Relations that name one side of the target; several for one pair place a group round it.
 SIDES = ("left of", "right of", "in front of", "behind")
+#: Relations that put the source beside the target (:attr:`Stated.side_gaps`).
+BESIDE = (*SIDES, "side of")
 
 
 def _side_holds(relation: str, sides: set[str], sources: list[SceneObject], targets: list[SceneObject]) -> bool:
@@ -146,6 +153,7 @@ def stated(scene: Scene, prompt: Prompt) -> Stated:
             result.realised += 1
         else:
             result.not_realised.append(_why(f"{source} | between | {first} | {second}", found, source, first, second))
+    result.side_gaps = _side_gaps(prompt, found)
     resting = supports(scene.objects)
     room = None if scene.room is None else RoomTarget.of(scene.room)
     for key, objects in found.items():
@@ -172,6 +180,18 @@ def stated(scene: Scene, prompt: Prompt) -> Stated:
                 actual = ", ".join(hosts) if hosts else f"bottom at {bottom:.2f} m"
                 result.wrong_supports.append(f"{obj.id}: wants {wanted}, rests on {actual}")
     return result
+
+
+def _side_gaps(prompt: Prompt, found: Mapping[str, list[SceneObject]]) -> list[float]:
+    """Each source instance's plan gap to its nearest target instance, once per pair of keys
+    related by a :data:`BESIDE` relation (the four sides of *around* count as one pair)."""
+    pairs = dict.fromkeys((s, t) for s, r, t in sorted(prompt.relations) if r in BESIDE)
+    return [
+        round(min(plan_gap(s, t) for t in found[target] if t.id != s.id), 3)
+        for source, target in pairs
+        for s in found[source]
+        if any(t.id != s.id for t in found[target])
+    ]
 
 
 #: Supports an annotation may name that a room provides, and the relation that checks each.

@@ -327,6 +327,12 @@ def violation(relation: str, source: SceneObject, target: SceneObject) -> float:
     return float(violations(_known(relation), Boxes.of(source), Boxes.of(target)))
 
 
+def plan_gap(source: SceneObject, target: SceneObject) -> float:
+    """Metres between the two footprints in plan (0 when they touch or overlap): the measure
+    ``near`` and ``far`` judge, also how far apart things stated side by side stand."""
+    return float(_plan_gap(Boxes.of(source), Boxes.of(target)))
+
+
 # --- candidate generation ------------------------------------------------------------------
 
 @lru_cache(maxsize=32)

@@ -129,6 +129,8 @@ GAP_STEPS = np.linspace(0.05, 0.95, 37)
 KEPT = 10.0
 #: Yaws tried for an object whose orientation nothing fixes, besides the model's.
 AXIS_YAWS = (0.0, 90.0, 180.0, 270.0)
+#: m, the plan gap within which an object's first pose stands beside its target (:meth:`_Search.follow_target`).
+BESIDE_GAP = 1.0
 
 
 def _cpu() -> float:
@@ -273,6 +275,8 @@ class _Search:
         self.pos = np.array([o.position.tuple() for o in self.objects]).reshape(n, 3)
         #: Where each object's candidates start: its initial position, scattered on restarts.
         self.anchor = self.pos.copy()
+        #: The initial poses, which :meth:`follow_target` measures a target's move from.
+        self.start = self.pos.copy()
         self.anchor[:, :2] += self.rng.normal(0.0, spread, (n, 2)) if spread else 0.0
         self.yaw = np.array([o.yaw for o in self.objects], dtype=float)
         self.lo = np.zeros((n, 3))
@@ -488,7 +492,7 @@ class _Search:
         if ends is None and not own:
             ends = self.riders_gap(item)
         if anchor is None:
-            anchor = self.anchor[item.index]
+            anchor = self.follow_target(item, primary)
             if ceiling is not None and relation == "near":
                 # A thing hung near another hangs over it first (a lamp over its table), as a
                 # designer would hang it: its candidates spread from the target's centre.
@@ -575,6 +579,22 @@ class _Search:
             reach = float(np.hypot(*item.foot))
             swept = Boxes.at(centres, np.array([reach, reach, item.half_z]), yaws)
         return centres, yaws, boxes, turns, swept
+
+    def follow_target(self, item: _Item, primary: tuple[Constraint, int] | None) -> np.ndarray:
+        """The object's anchor, moved as far as the target of its leading relation has moved from
+        its initial pose. The first poses put the two side by side ("a ladder leaning against the
+        tree", "a judge behind the bench"); when the search stands the target somewhere else, the
+        source's candidates start beside it again, not at the point of the relation's half-plane
+        nearest the old spot, which can lie metres off along the other axis and still hold. Only an
+        object that started within :data:`BESIDE_GAP` of its target follows it: an offset the first
+        poses did not design is not worth keeping."""
+        anchor = self.anchor[item.index].copy()
+        if primary is None or primary[0].relation not in (*SWEPT, "near") or not self.posed[primary[1]]:
+            return anchor
+        t = primary[1]
+        if rel.plan_gap(self.objects[item.index], self.objects[t]) <= BESIDE_GAP:  # they started together
+            anchor[:2] += self.pos[t, :2] - self.start[t, :2]
+        return anchor
 
     def gap_between(self, own: list[tuple[Constraint, int]]) -> np.ndarray | None:
         """The centres (2, 2) of two targets the object must stand on opposite sides of (right
