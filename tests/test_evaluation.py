@@ -345,7 +345,7 @@ def market() -> Scene:
             thing("market_stall_1", 3, 0, 1.2, 2.5, 1.5, 2.4, category="market_stall"),
             thing("trash_can_1", 0, 0.1, 0.35, 0.4, 0.4, 0.7, category="trash_can"),
             thing("camel_1", 5.5, 0, 1.0, 0.8, 2.0, 2.0, category="horse", name="camel"),
-            thing("crate_1", 3, 0, 2.65, 0.5, 0.5, 0.5, category="crate"),
+            thing("crate_1", 3, 0, 1.21, 0.5, 0.5, 0.5, category="crate"),  # on the counter height under the awning
             thing("street_lamp_1", 1.2, -3, 1.5, 0.3, 0.3, 3.0, category="street_lamp"),
             thing("street_lamp_2", 4.8, -3, 1.5, 0.3, 0.3, 3.0, category="street_lamp"),
         ],
