@@ -96,18 +96,18 @@ def _pagoda(m: Model) -> None:
 
 
 def building(m: Model) -> None:
-    if m.named("castle", "fort", "fortress", "citadel", "keep", "stronghold"):
-        _castle(m)
-        return
-    if m.named("church", "chapel", "cathedral", "kirk", "basilica"):
-        _church(m)
-        return
-    if m.named("dome", "domed", "igloo"):
-        _dome(m)
-        return
-    if m.named("pagoda"):
-        _pagoda(m)
-        return
+    """A building its name picks: a castle, a church, a dome, a pagoda; else a block of floors
+    with windows on every side and a glass door under an awning at the front."""
+    variants = (
+        (("castle", "fort", "fortress", "citadel", "keep", "stronghold"), _castle),
+        (("church", "chapel", "cathedral", "kirk", "basilica"), _church),
+        (("dome", "domed", "igloo"), _dome),
+        (("pagoda",), _pagoda),
+    )
+    for words, build in variants:
+        if m.named(*words):
+            build(m)
+            return
     m.main = "wall"
     parapet = min(1.0, 0.05 * m.sz)
     top = m.sz - parapet
