@@ -844,3 +844,11 @@ def test_a_person_on_a_desk_keeps_a_person_s_size():
     """Things that stand on the floor shrink to a tabletop kind on a desk; a person sitting on it does not."""
     by = {o.category: o.size for o in parse_scene("A clerk sits on the edge of the desk.").objects}
     assert by["figure"][2] > 1.5
+
+
+def test_a_host_nobody_listed_widens_to_hold_a_listed_thing_on_it():
+    """The guess of a host's size yields to the text: a big listed thing stays on it."""
+    parsed = parse_scene("A huge iron cauldron sits on a zorbicle.")
+    by = {o.category: o for o in parsed.objects}
+    assert ("cauldron_1", "on", "zorbicle_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert by["thing"].size[0] >= by["cauldron"].size[0] - 1e-6 and by["thing"].size[2] == pytest.approx(0.6)

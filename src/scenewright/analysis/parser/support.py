@@ -196,15 +196,22 @@ def fit_on_hosts(
     objects: list[ParsedObject], relations: list[ParsedRelation], catalogue, fixed: set[str]
 ) -> list[ParsedObject]:
     """Objects with every floor-standing thing stated ``on`` a general host scaled down to a
-    tabletop size (its proportions kept), and a thing nobody listed (its size only a guess) as small
+    tabletop size (its proportions kept), a thing nobody listed (its size only a guess) as small
     as the host it is stated on needs ("two hoglets sit on pebble stools": the text knows better
-    than the guess); sizes the text states (``fixed``) stay."""
+    than the guess), and a host nobody listed as wide as a listed thing on it needs; sizes the
+    text states (``fixed``) stay."""
     by_id = {o.id: o for o in objects}
     scale: dict[str, float] = {}
+    widen: dict[int, float] = {}
     for r in relations:
         if r.relation != "on" or r.source in fixed:
             continue
         thing, host = by_id[r.source], by_id[r.target]
+        if host.category == _UNKNOWN != thing.category and r.target not in fixed and not can_hold(host, thing, catalogue):
+            # "a huge copper cauldron on an open fire": a host nobody listed is as wide as what is on it
+            need = max(max(thing.size[:2]) / max(host.size[:2]), (thing.size[0] * thing.size[1] / (host.size[0] * host.size[1])) ** 0.5)
+            widen[host.group] = max(widen.get(host.group, 1.0), need)
+            continue
         if thing.category == _UNKNOWN and host.category not in _NO_TOP and not can_hold(host, thing, catalogue):
             side = max(host.size[:2]) / max(thing.size[:2])
             area = (host.size[0] * host.size[1] / (thing.size[0] * thing.size[1])) ** 0.5
@@ -229,10 +236,15 @@ def fit_on_hosts(
     group_scale: dict[int, float] = {}
     for oid, factor in scale.items():
         group_scale[by_id[oid].group] = min(group_scale.get(by_id[oid].group, 1.0), factor)
-    return [
+    out = [
         replace(o, size=tuple(round(v * group_scale[o.group], 4) for v in o.size))  # type: ignore[misc]
         if o.group in group_scale and o.id not in fixed else o
         for o in objects
+    ]
+    return [
+        replace(o, size=(round(o.size[0] * widen[o.group], 4), round(o.size[1] * widen[o.group], 4), o.size[2]))
+        if o.group in widen and o.id not in fixed else o
+        for o in out
     ]
 
 
