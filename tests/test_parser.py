@@ -746,6 +746,10 @@ def test_compound_things_and_places(text, names):
         ("A research outpost on Mars. A rocket stands on the landing pad.", "dirt"),
         ("A rooftop garden in the city.", "concrete"),
         ("A quiet park. A lorry waits on the road behind the gate.", "grass"),
+        # a room of something is floored as what it is a room of
+        ("The chart room of an old diesel submarine, lit red.", "metal deck"),
+        ("The waiting room of a small dental clinic.", "tiles"),
+        ("The music room of a tall narrow house.", "wood floor"),
     ],
 )
 def test_the_setting_s_own_word_sets_the_ground(text, kind):

@@ -309,7 +309,8 @@ _GROUND_PLACES = [
     ("sand", ("beach", "desert", "oasis")),
     ("snow", ("comet", "glacier", "ice field", "ice sheet", "ice floe", "arctic", "antarctic", "polar", "tundra")),
     ("rubber", ("gym",)),
-    ("tiles", ("bathroom", "kitchen", "laboratory", "lab", "spa", "laundromat", "hospital", "clinic", "pharmacy")),
+    ("tiles", ("bathroom", "kitchen", "laboratory", "lab", "spa", "laundromat", "hospital", "clinic", "pharmacy",
+               "post office")),
     ("carpet", ("bedroom", "nursery", "office", "conference")),
     ("asphalt", ("road", "street", "alley", "alleyway", "parking", "highway", "city", "gas station")),
     ("concrete", ("pavement", "sidewalk", "station", "platform", "warehouse", "garage", "industrial", "dock", "harbour",
@@ -318,17 +319,30 @@ _GROUND_PLACES = [
                     "store", "boutique", "hall", "bakery", "tavern", "attic")),
     ("stone", ("plaza", "courtyard", "castle", "temple", "cave", "cavern", "dungeon", "crypt", "smithy", "forge")),
     ("dirt", ("farm", "farmyard", "barnyard", "stable yard", "paddock", "dusty", "village", "campsite", "orchard",
-              "trail", "planet", "asteroid", "lunar", "regolith", "rocky", "crater", "martian", "mars", "wasteland", "savannah", "savanna",
+              "trail", "planet", "asteroid", "regolith", "rocky", "crater", "martian", "mars", "wasteland", "savannah", "savanna",
               "construction site", "building site", "quarry", "enclosure", "ranch", "arena")),
     ("grass", ("meadow", "park", "garden", "field", "backyard", "yard", "forest", "zoo", "airfield", "clearing",
                "glade", "wedding", "picnic", "golf")),
 ]
 
 
+#: Place words for a room of something named after them: "the control room of a submarine" is floored as the submarine.
+_PART_ROOMS = frozenset({"room", "rooms", "hall", "cabin"})
+
+
+def _owner_floors(low: str, end: int) -> bool:
+    """Whether the words from ``end`` are "of" and, within six words, a place the ground table
+    knows ("room of an old diesel submarine")."""
+    if not low.startswith(" of ", end):
+        return False
+    owner = " " + " ".join(low[end + 4 :].split()[:6]) + " "
+    return any(f" {w} " in owner for _, words in _GROUND_PLACES for w in words)
+
+
 def detect_ground(text: str, indoor: bool) -> str:
     """A ground kind from :data:`GROUND_KINDS`: a word for the ground itself, else the setting's
-    place word (the first one named, the opening sentence first), else wood floor indoors and
-    grass outdoors."""
+    place word (the first one named, the opening sentence first; a room "of" something gives way
+    to what it is a room of), else wood floor indoors and grass outdoors."""
     text = without_media(text)
     sentences = re.split(r"[.!?]", text.lower())
     low = " " + " ".join(re.findall(r"[a-zé]+", text.lower())) + " "
@@ -338,8 +352,8 @@ def detect_ground(text: str, indoor: bool) -> str:
         for rank, (kind, words) in enumerate(table):
             for w in words:
                 pos = low.find(" " + w + " ")
-                if pos < 0:
-                    continue
+                if pos < 0 or (explicit and w in _PART_ROOMS and _owner_floors(low, pos + len(w) + 1)):
+                    continue  # ("the control room of a submarine": the submarine's floor)
                 # materials by their order of precedence; places by where the text names them
                 key = (explicit, rank, pos, kind) if explicit == 0 else (explicit, int(pos >= opening), pos, kind)
                 if best is None or key < best:
