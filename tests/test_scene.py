@@ -160,3 +160,11 @@ def test_the_water_of_the_ground_round_trips_and_an_older_ground_loads_without_i
     old.write_text(json.dumps({"text": "a bench", "schema_version": SCHEMA_VERSION,
                                "ground": {"kind": "grass", "texture": None, "description": ""}}))
     assert Scene.load(old).ground.water is None
+
+
+@pytest.mark.parametrize("shore", [float("nan"), float("inf"), 1e9])
+def test_a_shore_beyond_the_scene_s_reach_is_refused(shore):
+    from scenewright.scene import Water
+
+    with pytest.raises(ValidationError, match="shore"):
+        Water(shore=shore)

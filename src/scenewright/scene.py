@@ -269,7 +269,7 @@ class Water(_Model):
     front of the boats and both are seen; and one straight shore is what a designer sketches
     for a quay, a beach or a river bank."""
 
-    shore: float
+    shore: float = Field(ge=-MAX_COORDINATE, le=MAX_COORDINATE)
 
 
 class Ground(_Model):
