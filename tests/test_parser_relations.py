@@ -389,8 +389,17 @@ def test_a_thing_on_a_part_of_a_person_is_on_that_person_and_stays_there():
     assert ("bird_1", "on", "farmer_1") in rels("A farmer leans on the fence with a parrot on his shoulder.")
 
 
-def test_at_his_feet_is_near_him():
-    assert ("lantern_1", "near", "fisherman_1") in rels("An old fisherman sits on the pier with a lantern at his feet.")
+def test_at_his_feet_is_in_front_of_him_as_at_the_foot_of():
+    assert ("lantern_1", "in front of", "fisherman_1") in rels("An old fisherman sits on the pier with a lantern at his feet.")
+    assert ("cat_1", "in front of", "baker_1") in rels("A baker kneads dough at a table, a cat asleep at her feet.")
+
+
+def test_a_describing_word_after_a_noun_ends_its_phrase():
+    """An absolute clause ("..., a cat asleep on it") and a verbless opening name the thing before
+    the state word: no compound of a noun and "asleep", "left" or "forgotten"."""
+    assert ("cat_1", "on", "desk_1") in rels("A desk stands in the corner, a cat asleep on it.")
+    assert ("candle_1", "on", "crate_1") in rels("A crate stands by the door, a candle forgotten on it.")
+    assert ("goat_1", "on", "sofa_1") in rels("A goat asleep on the sofa.")
 
 
 def test_he_and_she_name_a_person_of_their_sex():

@@ -328,7 +328,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a crawler with a crane arm", "a hat of peacock feathers": whose part, no crane
         if e < n and toks[e].text[:1].isalpha() and toks[e].text not in _STOP and not toks[e].joined and (
             not several and not _is_verb(toks[e].text) and not _participle(toks[e].text) and _match_at(toks, e) is None
-            and _unknown_opening_place(toks, e, e + 1)
+            and toks[e].text not in vocabulary.adjectives and _unknown_opening_place(toks, e, e + 1)
         ):
             continue  # "An otter sanctuary by a river.": the kind of the place nobody listed the opening names
         follow_two = f"{follow} {toks[e + 1].text}" if e + 1 < n else ""
@@ -373,10 +373,12 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             part_end = e if part_end is None else None
             continue
         opener = next((t.text for t in reversed(toks[:s]) if not t.text[:1].isalpha() or t.text in _STOP), ".")
-        qualifies = follow[:1].isalpha() and follow not in _STOP and (
+        qualifies = follow[:1].isalpha() and follow not in _STOP and follow not in vocabulary.adjectives and (
             not _is_verb(follow) or singular(follow) in vocabulary.not_things and opener not in _SINGULAR_DETERMINERS
         )  # ("of tiny stone tiles": a plural part, no verb; "a brass lamp glows" has one)
-        if len(words) == 1 and words[0] in _MODIFIER_NOUNS and qualifies and not follow.endswith(("ed", "ing")) and (
+        # (a participle after it is its state, "a candle left on it"; hyphened, a kind: "a horse-drawn cart")
+        state = _participle(follow) and not (e < n and toks[e].joined and follow in _IRREGULAR_PARTICIPLES)
+        if len(words) == 1 and words[0] in _MODIFIER_NOUNS and qualifies and not state and (
             not _joint_verb(toks, e, cat)
         ):  # ("a dog and a cat play": the verb of both)
             continue  # "a stone path", "a glass roof": an adjective here
@@ -920,7 +922,7 @@ _KIND_WORDS = {"board", "panel", "screen", "machine", "device", "unit", "box", "
 _IRREGULAR_PARTICIPLES = {"strung", "hung", "spun", "built", "made", "lit", "set", "worn", "torn", "sunk", "stuck",
                           "swung", "bound", "wound", "laid", "held", "spread", "cast", "shot", "dug", "hidden",
                           "frozen", "broken", "woven", "fallen", "overgrown", "half", "full", "covered", "slung",
-                          "drawn", "bent", "kept", "cut", "split", "shut"}  # fmt: skip
+                          "drawn", "bent", "kept", "cut", "split", "shut", "left", "forgotten", "lost"}  # fmt: skip
 
 
 #: Parts of a body or a machine, and what covers a body: a noun right before one names whose part

@@ -1278,7 +1278,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # ("hens around her feet" stay around her; "a surfboard under his arm", "an axe across his
         # knees", "a bag over her shoulder", "a snake around his neck" are carried)
         carried = ("on", "on top", "in", "under", "over", "around", "no relation", "on a carrier")
-        if (body in ("near", "side of") and kind != "around") or (body == "on" and kind in carried):
+        if (body in ("near", "side of", "in front of") and kind != "around") or (body == "on" and kind in carried):
             kind = body
         elif body == "on" and kind == "at":  # "a shelf at his back": behind him, not carried
             kind, body = "behind" if any(t.text == "back" for t in toks[rel.end : end]) else "near", None

@@ -264,6 +264,7 @@ def _validate(raw: dict) -> Vocabulary:
         body_parts={
             **{w: "on" for w in people.get("body_parts_on", ())},
             **{w: "near" for w in people.get("body_parts_near", ())},
+            **{w: "in front of" for w in people.get("body_parts_front", ())},  # "a dog at his feet", as "at the foot of"
             **{w: "side of" for w in people.get("body_parts_beside", ())},  # "his helmet at his side"
         },
         part_owners={k: frozenset(v) for k, v in raw.get("part_owners", {}).items() if k != "about"},
