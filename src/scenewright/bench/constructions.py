@@ -17,7 +17,7 @@ from __future__ import annotations
 import random
 from collections import defaultdict
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from scenewright.bench.analysis import parse_figures, score_prompt
 from scenewright.core.catalogue import match_phrase
@@ -235,8 +235,8 @@ def _coordinated(draw: _Draw, shape: str, index: int) -> Case:
     sp, sc = draw.phrase(second)
     tp, _ = draw.phrase(target, 1)
     place = draw.pick(list(PLACES))
-    kind = first if first.kind == second.kind else Noun("", "", "thing")
-    verb = draw.verb(kind if kind.kind != "thing" or first.kind == "thing" else first, 2)
+    # (a verb both kinds do: "a dog and a barrel wait")
+    verb = draw.verb(first, 2) if first.kind == second.kind else draw.pick(("stand", "wait"))
     text = f"{_capital(fp)} and {sp} {verb} {place} {tp}."
     relations = {(n.key, r, target.key) for n in (first, second) for r in PLACES[place]}
     return _prompt(shape, index, text, [(first.key, fc), (second.key, sc), (target.key, 1)], relations)
@@ -331,18 +331,12 @@ def _between(draw: _Draw, shape: str, index: int) -> Case:
     second = draw.target(subject)
     while second.key == first.key:
         second = draw.target(subject)
-    np_, count = draw.phrase(subject, 1)
+    np_, _ = draw.phrase(subject, 1)
     fp, _ = draw.phrase(first, 1)
     sp, _ = draw.phrase(second, 1)
     text = f"{_capital(np_)} {draw.verb(subject, 1)} between {fp} and {sp}."
     case = _prompt(shape, index, text, [(subject.key, 1), (first.key, 1), (second.key, 1)])
-    return Case(shape, _with_between(case.prompt, (subject.key, first.key, second.key)))
-
-
-def _with_between(prompt: Prompt, triple: tuple[str, str, str]) -> Prompt:
-    from dataclasses import replace
-
-    return replace(prompt, between=frozenset({triple}))
+    return Case(shape, replace(case.prompt, between=frozenset({(subject.key, first.key, second.key)})))
 
 
 def _each_of(draw: _Draw, shape: str, index: int) -> Case:

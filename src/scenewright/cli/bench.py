@@ -92,6 +92,22 @@ def bench_parse(
     emit(run_parse_bench(prompts, details=details), as_json, indent=1 if details else None)
 
 
+@bench_app.command("constructions")
+def bench_constructions(
+    per_shape: Annotated[int, typer.Option("--per-shape", min=1, help="Sentences written of each shape.")] = 40,
+    seed: Annotated[int, typer.Option("--seed", help="Which fillings: the same seed writes the same sentences.")] = 0,
+    failures: Annotated[int, typer.Option("--failures", min=0, help="Misread sentences kept per shape.")] = 3,
+    as_json: JsonOption = True,
+) -> None:
+    """How the offline parser reads English sentence shapes (fronted and inverted place phrases,
+    absolute clauses, possessives, "each of"...) filled from word lists and annotated from how they
+    were built: per shape, the figures of `bench parse` and the share read right. A coverage figure
+    over sentences the project writes, not evidence on fresh text."""
+    from scenewright.bench.constructions import run_constructions_bench
+
+    emit(run_constructions_bench(per_shape, seed, failures), as_json, indent=1)
+
+
 @bench_app.command("analysis")
 def bench_analysis(
     objects: Annotated[int, typer.Option("--objects", min=1, help="Objects in the scene.")] = 15,
