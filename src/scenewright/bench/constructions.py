@@ -371,6 +371,57 @@ def _dressed(draw: _Draw, shape: str, index: int) -> Case:
     return _prompt(shape, index, text, [(person.key, 1), (target.key, 1)], relations)
 
 
+def _in_it(draw: _Draw, shape: str, index: int) -> Case:
+    """A holder with a living thing in it: the annotations put what is in a holder on it."""
+    holder = draw.pick(_nouns("thing", "cart/carts, wheelbarrow/wheelbarrows, basket/baskets, crate/crates, tub/tubs"))
+    rider = draw.pick(ANIMALS[:6])
+    target = draw.target(holder)
+    hp, _ = draw.phrase(holder, 1)
+    tp, _ = draw.phrase(target, 1)
+    rp, _ = draw.phrase(rider, 1, adjective=False)
+    text = f"{_capital(hp)} stands beside {tp} with {rp} in it."
+    relations = {(holder.key, "side of", target.key), (rider.key, "on", holder.key)}
+    return _prompt(shape, index, text, [(holder.key, 1), (target.key, 1), (rider.key, 1)], relations,
+                   {rider.key: holder.key})
+
+
+def _row_of(draw: _Draw, shape: str, index: int) -> Case:
+    subject = draw.pick(THINGS)
+    target = draw.target(subject)
+    n = draw.rng.choice((3, 4))
+    tp, _ = draw.phrase(target, 1)
+    place = draw.pick(list(PLACES))
+    text = f"A row of {NUMBERS[n]} {subject.plural} stands {place} {tp}."
+    relations = {(subject.key, r, target.key) for r in PLACES[place]}
+    return _prompt(shape, index, text, [(subject.key, n), (target.key, 1)], relations)
+
+
+def _nested(draw: _Draw, shape: str, index: int) -> Case:
+    """"A cat sleeps on a cushion on the sofa": the second place phrase places the first's thing."""
+    rider = draw.pick(ANIMALS[:6] + SMALL)
+    middle = draw.pick(_nouns("small", "cushion/cushions, tray/trays, mat/mats, blanket/blankets, box/boxes"))
+    host = draw.pick(HOSTS)
+    mp, _ = draw.phrase(middle, 1)
+    hp, _ = draw.phrase(host, 1)
+    rp, _ = draw.phrase(rider, 1)
+    text = f"{_capital(rp)} {'sleeps' if rider.kind == 'animal' else 'stands'} on {mp} on {hp}."
+    relations = {(rider.key, "on", middle.key), (middle.key, "on", host.key)}
+    return _prompt(shape, index, text, [(rider.key, 1), (middle.key, 1), (host.key, 1)], relations,
+                   {rider.key: middle.key, middle.key: host.key})
+
+
+def _one_of_them(draw: _Draw, shape: str, index: int) -> Case:
+    person, small = draw.pick(PEOPLE), draw.pick(SMALL)
+    seat = draw.pick(_nouns("host", "bench/benches, sofa/sofas"))
+    n = draw.rng.choice((2, 3, 4))
+    sp, _ = draw.phrase(seat, 1)
+    kp, _ = draw.phrase(small, 1)
+    text = f"{_capital(NUMBERS[n])} {person.plural} sit on {sp}, one of them {draw.pick(HOLD_VERBS[:3])} {kp}."
+    relations = {(person.key, "on", seat.key), (small.key, "on", person.key)}
+    return _prompt(shape, index, text, [(person.key, n), (seat.key, 1), (small.key, 1)], relations,
+                   {person.key: seat.key, small.key: person.key})
+
+
 #: Shape name → how one sentence of it is built.
 SHAPES: dict[str, Callable[[_Draw, str, int], Case]] = {
     "plain": _ground_shape(lambda np, verb, place, target, **_: f"{_capital(np)} {verb} {place} {target}."),
@@ -398,6 +449,10 @@ SHAPES: dict[str, Callable[[_Draw, str, int], Case]] = {
     "each_of": _each_of,
     "either_side": _either_side,
     "dressed": _dressed,
+    "in_it": _in_it,
+    "row_of": _row_of,
+    "nested": _nested,
+    "one_of_them": _one_of_them,
 }
 
 
