@@ -1201,3 +1201,13 @@ def test_an_unlisted_thing_after_above_the_is_a_thing():
 def test_a_colour_a_light_glows_in_is_its_look():
     got = {o.name: o.description for o in parse_scene("Two paper lanterns glow red over the gate, and a lamp glows by the bed.").objects}
     assert got["paper lantern"] == "paper lantern glowing red" and got["lamp"] == "lamp"
+
+
+def test_a_likeness_is_small_whatever_it_shows():
+    """"A toy spaceship", "a model lighthouse", a figurine or a bust: a thing of its own size, not the
+    catalogue's full-size one (a person called a model stays a person)."""
+    parsed = parse_scene("A toy spaceship and a model lighthouse stand on the shelf. A figurine sits beside a bust.")
+    size = {o.id: o.size for o in parsed.objects}
+    assert max(size["spaceship_1"]) <= 0.45 and max(size["lighthouse_1"]) <= 0.45
+    small = [o for o in parsed.objects if o.category == "statue"]
+    assert len(small) == 2 and all(max(o.size) <= 0.7 for o in small)

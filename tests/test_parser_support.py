@@ -113,12 +113,18 @@ def test_verbs_of_covering_put_things_on_their_host(text, expected, absent):
     assert not any(r == "on" and t.startswith("stage") for _, r, t in got)
 
 
-def test_a_thing_nobody_listed_is_sized_for_the_small_host_the_text_puts_it_on():
+def test_a_lifeless_thing_is_sized_for_the_small_host_the_text_puts_it_on():
     """"Two piglets nap on little cushions": a noun nobody listed has a guessed size, and the text
-    putting it on a stool or a cushion says it is small enough; a known thing is still repaired."""
-    parsed = parse_scene("Two sprites sit on pebble stools. A dinosaur skeleton stands on a barrel.")
+    putting it on a stool or a cushion says it is small enough; so does a listed lifeless thing ("a
+    spaceship on the bench" is a model of one). Floor furniture is still repaired: a sofa is never
+    a desk ornament."""
+    parsed = parse_scene(
+        "Two sprites sit on pebble stools. A dinosaur skeleton stands on a barrel. A spaceship rests on the "
+        "bench. A sofa stands on the desk."
+    )
     got = {(r.source, r.relation, r.target) for r in parsed.relations}
-    sprite = next(o for o in parsed.objects if o.id == "sprite_1")
-    stool = next(o for o in parsed.objects if o.id == "stool_1")
-    assert ("sprite_1", "on", "stool_1") in got and max(sprite.size[:2]) <= max(stool.size[:2])
-    assert ("dinosaur_skeleton_1", "side of", "barrel_1") in got
+    size = {o.id: o.size for o in parsed.objects}
+    assert ("sprite_1", "on", "stool_1") in got and max(size["sprite_1"][:2]) <= max(size["stool_1"][:2])
+    for thing, host in (("dinosaur_skeleton_1", "barrel_1"), ("spaceship_1", "bench_1")):
+        assert (thing, "on", host) in got and max(size[thing][:2]) <= max(size[host][:2])
+    assert ("sofa_1", "side of", "desk_1") in got

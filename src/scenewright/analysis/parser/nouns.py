@@ -112,7 +112,7 @@ def _match_at(toks: list[_Tok], i: int) -> tuple[int, str, Entry | None] | None:
         cat = match_phrase(words) or (match_phrase(("".join(words),)) if length == 2 else None)
         if _verb_ends_subject(toks, i, i + length):
             continue  # "a wizard in a pointed hat stands on ...", "the far wall looms": a verb, not a stand
-        if cat:
+        if cat and not vocabulary.over_catalogue(words):  # ("a figurine" is a statue of its own size)
             return i + length, cat, None
         entry = vocabulary.match(words)
         if entry is None and length > 1 and words[0].endswith("'s"):

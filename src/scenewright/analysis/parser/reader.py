@@ -65,7 +65,7 @@ from scenewright.analysis.parser.room import WALL_UNIT_HEIGHTS, standing_form
 from scenewright.analysis.parser.sizes import _apply_sizes, _read_sizes
 from scenewright.analysis.parser.support import FLAT_HOST
 from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _split, _Tok, _tokenise
-from scenewright.analysis.parser.vocabulary import GENERIC, load_vocabulary, scaled, stretched
+from scenewright.analysis.parser.vocabulary import GENERIC, load_vocabulary, replica, scaled, stretched
 from scenewright.analysis.parser.words import (
     _ADVERBS,
     _CARRY_VERBS,
@@ -328,6 +328,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         description = " ".join([*describing, name, *m.post]).strip()
         bounds = "person" if cat.shape == "figure" else "thing"
         base = stretched(scaled(m.guess.size if m.guess is not None else cat.size, describing, bounds), describing)
+        likeness_of = {*kind, *describing} & vocabulary.replica_words
+        if likeness_of and (cat.shape != "figure" or likeness_of - {"model"}):
+            base = replica(base)  # "a toy spaceship", "a model lighthouse", "toy soldiers" (not "a fashion model")
         size = _apply_sizes(base, sizes) if sizes else base
         rests = m.guess.rests if m.guess is not None else cat.rests
         if rests == "hanging" and standing_form(description):

@@ -196,10 +196,10 @@ def fit_on_hosts(
     objects: list[ParsedObject], relations: list[ParsedRelation], catalogue, fixed: set[str]
 ) -> list[ParsedObject]:
     """Objects with every floor-standing thing stated ``on`` a general host scaled down to a
-    tabletop size (its proportions kept), a thing nobody listed (its size only a guess) as small
-    as the host it is stated on needs ("two hoglets sit on pebble stools": the text knows better
-    than the guess), and a host nobody listed as wide as a listed thing on it needs; sizes the
-    text states (``fixed``) stay."""
+    tabletop size (its proportions kept), a lifeless thing as small as the host it is stated on
+    needs ("two hoglets sit on pebble stools", "a statue on the bookshelf": the text knows better
+    than the catalogue's size), and a host nobody listed as wide as a listed thing on it needs;
+    sizes the text states (``fixed``) stay."""
     by_id = {o.id: o for o in objects}
     scale: dict[str, float] = {}
     widen: dict[int, float] = {}
@@ -212,7 +212,13 @@ def fit_on_hosts(
             need = max(max(thing.size[:2]) / max(host.size[:2]), (thing.size[0] * thing.size[1] / (host.size[0] * host.size[1])) ** 0.5)
             widen[host.group] = max(widen.get(host.group, 1.0), need)
             continue
-        if thing.category == _UNKNOWN and host.category not in _NO_TOP and not can_hold(host, thing, catalogue):
+        # a thing nobody listed is as small as its host needs; so is a listed lifeless one the text
+        # puts on a standing host ("a marble statue on the bookshelf", "a spaceship on the desk": a
+        # statuette, a model), not a piece of floor furniture ("a sofa on the desk" is beside it)
+        listed = catalogue[thing.category].shape not in _LIVING_SHAPES and (
+            (host.rests or catalogue[host.category].rests) != "hanging" and thing.category not in _FLOOR_FURNITURE
+        )
+        if (thing.category == _UNKNOWN or listed) and host.category not in _NO_TOP and not can_hold(host, thing, catalogue):
             side = max(host.size[:2]) / max(thing.size[:2])
             area = (host.size[0] * host.size[1] / (thing.size[0] * thing.size[1])) ** 0.5
             scale[thing.id] = min(scale.get(thing.id, 1.0), side, area)

@@ -54,6 +54,9 @@ class Vocabulary:
     #: How far size words may take a thing ("thing") or a person ("person") from the size its
     #: name gives: a name already says a typical one.
     size_word_bounds: dict[str, tuple[float, float]]
+    #: Words that make a thing a small likeness ("a toy truck", "a model ship"), and how large one is.
+    replica_words: frozenset[str]
+    replica_side: float
     #: Words that stretch one side of any thing ("a long desk" is wider): x, y, z factors.
     shape_words: dict[str, tuple[float, float, float]]
     suffixes: tuple[tuple[str, str], ...]
@@ -254,6 +257,8 @@ def _validate(raw: dict) -> Vocabulary:
         adjectives=frozenset(raw["adjectives"]),
         size_words={k: float(v) for k, v in raw["size_words"].items()},
         size_word_bounds={k: (float(v[0]), float(v[1])) for k, v in raw["size_word_bounds"].items()},
+        replica_words=frozenset(raw["replicas"]["words"]),
+        replica_side=float(raw["replicas"]["largest_side"]),
         shape_words={k: (float(v[0]), float(v[1]), float(v[2])) for k, v in raw.get("shape_words", {}).items()},
         suffixes=tuple(sorted(raw["suffixes"].items(), key=lambda kv: -len(kv[0]))),
         longest=max(len(k) for k in entries),
@@ -327,6 +332,13 @@ def scaled(size: tuple[float, float, float], adjectives: list[str], bounds: str 
     if bounds is not None:
         lo, hi = vocabulary.size_word_bounds[bounds]
         factor = min(max(factor, lo), hi)
+    return (round(size[0] * factor, 4), round(size[1] * factor, 4), round(size[2] * factor, 4))
+
+
+def replica(size: tuple[float, float, float]) -> tuple[float, float, float]:
+    """The size of a likeness of a thing of ``size`` ("a toy spaceship", "a model windmill"): its
+    proportions, no side longer than a replica's."""
+    factor = min(1.0, load_vocabulary().replica_side / max(size))
     return (round(size[0] * factor, 4), round(size[1] * factor, 4), round(size[2] * factor, 4))
 
 
