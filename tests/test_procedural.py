@@ -48,7 +48,7 @@ FAMILIES = {
     "figure": ["person", "street musician", "violinist", "knight", "wizard", "astronaut", "scarecrow", "mannequin", "alien"],
     "machine": ["machine", "arcade cabinet", "generator", "compressor", "terminal", "printer", "kiln", "periscope", "crane game",
                 "sewing machine"],
-    "tank": ["fuel tank", "silo", "water tank", "boiler", "cauldron", "aquarium"],
+    "tank": ["fuel tank", "silo", "water tower", "boiler", "cauldron", "aquarium"],
     "structure": ["ferris wheel", "windmill", "crane", "carousel", "stage", "scaffold", "bleachers", "catapult", "quarter pipe"],
     "panel": ["notice board", "banner", "screen", "solar panel"],
     "container": ["box", "chest", "trunk", "sack", "basket", "rucksack", "travel case", "ice chest", "bird cage", "playpen",

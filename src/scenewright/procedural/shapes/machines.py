@@ -487,7 +487,7 @@ def tank(m: Model) -> None:
         (("fish tank", "aquarium", "terrarium", "vivarium"), _aquarium),
         (("cauldron", "pot", "kettle"), _cauldron),
         (("silo", "grain silo", "grain bin"), _silo),
-        (("water tower", "water tank"), _water_tower),
+        (("water tower",), _water_tower),  # (a water tank is a standing tank: indoors it has no legs and roof)
         (("furnace", "kiln", "smelter"), _furnace),
         (("boiler", "water heater", "still", "reactor"), _boiler),
         (("fuel tank", "oil tank", "gas tank", "propane", "tanker", "cistern", "gas cylinder", "pressure vessel"),
