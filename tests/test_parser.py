@@ -315,6 +315,7 @@ def test_style(text, style):
         ("A mosaic floor in a bath house, a bench along one wall.", "realistic"),
         # "as a ..." naming a look, a part of a picture, the opening noun's "in ...", verbs that build or film
         ("A bus station as a 1960s airline poster, three coaches at the kerb.", "poster"),
+        ("A roadside diner, drawn like a 1950s postcard.", "poster"),
         ("A porter dressed as a clown stands by the door.", "realistic"),
         ("A fishing harbour as a page from a medieval bestiary, two boats at the quay.", "painting"),
         ("A bakery in cherry and birch marquetry, two ovens along the wall.", "marquetry in cherry and birch"),

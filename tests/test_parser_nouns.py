@@ -1211,3 +1211,21 @@ def test_a_likeness_is_small_whatever_it_shows():
     assert max(size["spaceship_1"]) <= 0.45 and max(size["lighthouse_1"]) <= 0.45
     small = [o for o in parsed.objects if o.category == "statue"]
     assert len(small) == 2 and all(max(o.size) <= 0.7 for o in small)
+
+
+def test_a_comparative_describes_and_a_singular_in_s_names_a_kind():
+    """"A smaller triceratops skeleton": "smaller" is no thing, and "triceratops" is one kind of
+    skeleton, not a plural subject; an agent noun in "-er" stays a noun ("a trucker")."""
+    parsed = parse_scene("A smaller triceratops skeleton faces the door. A taller trucker leans on a bigger crate.")
+    assert sorted(o.name for o in parsed.objects) == ["crate", "triceratops skeleton", "trucker"]
+    assert singular("triceratops") == "triceratops" and singular("lens") == "lens"
+
+
+def test_the_kind_of_a_likeness_named_again_is_the_likeness():
+    """"Children sit in front of the T-rex" after "a T-rex skeleton": the skeleton, not a live
+    dinosaur; a dog after "a dog bowl" is still a dog (a bowl is no likeness)."""
+    parsed = parse_scene("A T-rex skeleton stands in the hall. Two children sit in front of the T-rex.")
+    assert [o.category for o in parsed.objects].count("dinosaur_skeleton") == len(parsed.objects) - 2
+    assert {(r.source, r.relation, r.target) for r in parsed.relations} >= {("child_1", "in front of", "dinosaur_skeleton_1")}
+    bowl = parse_scene("A dog bowl stands by the door, and the dog sleeps beside it.")
+    assert {o.category for o in bowl.objects} == {"bowl", "dog"}

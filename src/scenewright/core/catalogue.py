@@ -48,7 +48,10 @@ _WORD = re.compile(r"[^\W_]+(?:['’][^\W\d_]+)?")  # letters of any script: "ca
 _IRREGULAR = {"cacti": "cactus", "mice": "mouse", "geese": "goose", "people": "person", "children": "child",
               "taxis": "taxi", "buses": "bus", "octopuses": "octopus", "walruses": "walrus", "cactuses": "cactus",
               "thermoses": "thermos", "canvases": "canvas", "lenses": "lens", "atlases": "atlas",
-              "canvas": "canvas", "atlas": "atlas", "oxen": "ox", "axes": "axe", "pickaxes": "pickaxe"}
+              "canvas": "canvas", "atlas": "atlas", "oxen": "ox", "axes": "axe", "pickaxes": "pickaxe",
+              # nouns whose -s is no plural ("a triceratops skeleton" names one kind of skeleton)
+              "triceratops": "triceratops", "cyclops": "cyclops", "lens": "lens", "rhinoceros": "rhinoceros",
+              "species": "species", "series": "series", "dais": "dais", "chaos": "chaos"}
 #: Irregular plurals that also end closed compounds, whose plural is made by their last part.
 _COMPOUND_HEADS = ("children", "mice", "geese", "people")
 #: Plurals in -ves of nouns in -f or -fe other than those in -lf ("knives"); the rest drop the s ("hives").

@@ -2234,7 +2234,27 @@ def _alias_mentions(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention
         if j >= 0 and toks[j].text in _DEFINITE | {"each", "every"}:
             m = _Mention(heads[word], t.orig, i, i + 1, 1, False, True, alias=True)
             extra.append(m)
+    _likeness_aliases(toks, ordered)
     return sorted(mentions + extra, key=lambda m: m.start)
+
+
+def _likeness_aliases(toks: list[_Tok], ordered: list[_Mention]) -> None:
+    """"A T-rex skeleton ... children sit in front of the T-rex": the kind of a likeness named
+    again with "the" is that likeness, not a living one of its own."""
+    heads = load_vocabulary().likeness_heads
+    kinds: dict[tuple[str, ...], _Mention] = {}
+    for m in ordered:
+        words = tuple(t.text for t in toks[m.start : m.end])
+        definite = m.start > 0 and toks[m.start - 1].text in _DEFINITE
+        if definite and not m.alias and words in kinds and words[-1] not in heads:
+            m.alias, m.category = True, kinds[words].category
+            continue
+        if words and singular(words[-1]) in heads:
+            kind = tuple(w.lower() for w in m.modifier) or words[:-1]
+            while kind and kind[0] in _DETERMINERS:
+                kind = kind[1:]
+            if kind:
+                kinds.setdefault(kind, m)
 
 
 def _mark_appositions(toks: list[_Tok], mentions: list[_Mention]) -> None:

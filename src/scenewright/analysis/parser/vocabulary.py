@@ -57,6 +57,7 @@ class Vocabulary:
     #: Words that make a thing a small likeness ("a toy truck", "a model ship"), and how large one is.
     replica_words: frozenset[str]
     replica_side: float
+    likeness_heads: frozenset[str]
     #: Words that stretch one side of any thing ("a long desk" is wider): x, y, z factors.
     shape_words: dict[str, tuple[float, float, float]]
     suffixes: tuple[tuple[str, str], ...]
@@ -174,6 +175,8 @@ class Vocabulary:
         one = singular(w)
         if w in self.not_things or one in self.not_things or w in self.adjectives or self.is_place_compound(one):
             return False
+        if self.comparative(w):
+            return False  # "a smaller skeleton": no "smaller" of its own
         if not w.isalpha() or len(w) < 3:
             return False
         # an ending makes an adjective only after a stem of its own ("tallest", not "nest" or "chest")
@@ -187,10 +190,20 @@ class Vocabulary:
             return False
         return any(word.endswith(e) and len(word) - len(e) >= stem for e, stem in self.place_endings.items())
 
+    def comparative(self, word: str) -> bool:
+        """A listed describing word's comparative ("smaller", "bigger", "larger", "busier"): "-er"
+        makes agent nouns too ("a trucker", "a planter"), so only after a stem the list knows."""
+        if not word.endswith("er") or len(word) < 5:
+            return False
+        stem = word[:-2]
+        known = self.adjectives | self.size_words.keys()
+        doubled = len(stem) > 2 and stem[-1] == stem[-2] and stem[:-1] in known  # "bigger", "fatter"
+        return stem in known or stem + "e" in known or doubled or (stem.endswith("i") and stem[:-1] + "y" in known)
+
     def is_adjective(self, word: str) -> bool:
         """A describing word rather than a noun that names the kind ("rusty" vs "street")."""
         w = word.lower()
-        if w in self.adjectives or w in self.size_words:
+        if w in self.adjectives or w in self.size_words or self.comparative(w):
             return True
         if self.match((w,)) is not None or w in self.places:
             return False
@@ -259,6 +272,7 @@ def _validate(raw: dict) -> Vocabulary:
         size_word_bounds={k: (float(v[0]), float(v[1])) for k, v in raw["size_word_bounds"].items()},
         replica_words=frozenset(raw["replicas"]["words"]),
         replica_side=float(raw["replicas"]["largest_side"]),
+        likeness_heads=frozenset(raw["replicas"]["heads"]),
         shape_words={k: (float(v[0]), float(v[1]), float(v[2])) for k, v in raw.get("shape_words", {}).items()},
         suffixes=tuple(sorted(raw["suffixes"].items(), key=lambda kv: -len(kv[0]))),
         longest=max(len(k) for k in entries),
