@@ -754,7 +754,7 @@ def test_compound_things_and_places(text, names):
     ],
 )
 def test_the_setting_s_own_word_sets_the_ground(text, kind):
-    assert detect_ground(text, False) == kind
+    assert parse_scene(text).ground == kind
 
 
 def test_long_stretches_and_floor_things_on_a_desk_are_its_tabletop_kind():
@@ -857,3 +857,15 @@ def test_a_host_nobody_listed_widens_to_hold_a_listed_thing_on_it():
     by = {o.category: o for o in parsed.objects}
     assert ("cauldron_1", "on", "zorbicle_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
     assert by["thing"].size[0] >= by["cauldron"].size[0] - 1e-6 and by["thing"].size[2] == pytest.approx(0.6)
+
+
+def test_a_building_the_text_puts_things_outside_of_is_seen_from_outside():
+    """"A roadside diner in the desert ... a truck parked in front of the diner": the diner is a
+    building of an outdoor scene on the desert's sand, not a room; a street's ground is no floor."""
+    diner = parse_scene("A roadside diner in the desert at sunset. A red truck is parked in front of the diner.")
+    assert not diner.indoor and diner.ground == "sand"
+    assert ("truck_1", "in front of", "diner_1") in {(r.source, r.relation, r.target) for r in diner.relations}
+    bakery = parse_scene("A small bakery on a village street. A bench stands in front of the bakery.")
+    assert not bakery.indoor and bakery.ground not in ("wood floor", "tiles", "carpet")
+    inside = parse_scene("A cosy bakery at dawn. A baker kneads dough at the counter beside the oven.")
+    assert inside.indoor and inside.ground == "wood floor"

@@ -224,7 +224,9 @@ def parse_scene(text: str) -> ParsedScene:
     stated, repairs = repair_supports(objects, onto_stack_tops(objects, expanded), catalogue, carried)
     inferred = _infer_support(objects, stated, catalogue)
     relations = _acyclic(stated + inferred, [o.id for o in objects])
-    indoor = _is_indoor([o.category for o in objects], text, catalogue, reader.places)
+    # a place the text also puts things outside of ("a bench in front of the bakery") is seen from outside
+    outside = [p for p in reader.places if p in {o.name for o in objects}]
+    indoor = _is_indoor([o.category for o in objects], text, catalogue, [p for p in reader.places if p not in outside])
     parsed = ParsedScene(
         text=text,
         objects=objects,

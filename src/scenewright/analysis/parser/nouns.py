@@ -349,8 +349,11 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         ):  # "an abandoned factory floor with a conveyor belt"
             places.append(" ".join(words))
             continue
+        building = vocabulary.buildings.get((*words[:-1], singular(words[-1])))
         if " ".join(words) in places and s > 0 and toks[s - 1].text in _DEFINITE:
-            continue  # "the middle of the cabin" after "The captain's cabin of a ship": the setting again
+            if building is None or not _placed_by(toks, s - 1):
+                continue  # "the middle of the cabin" after "The captain's cabin of a ship": the setting again
+            cat, entry = building.category, building  # "a diner in the desert ... parked in front of the diner"
         shape = load_catalogue()[cat].shape
         alive = cat in _LIVING or shape in _LIVING
         shown = not alive and not vocabulary.carries(cat, " ".join(words), ("vehicles",))

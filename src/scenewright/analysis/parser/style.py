@@ -303,6 +303,8 @@ _GROUND_MATERIALS = [
 #: Words for places, and the ground each has: the setting's own word decides (the first one the
 #: description names, its opening sentence first), so "a savannah enclosure at a city zoo" is
 #: dirt, not the city's asphalt, and a landing pad further on does not floor a construction site.
+#: Ground kinds only a room's floor has: a place word of an outdoor scene does not give them.
+_FLOORS = ("wood floor", "tiles", "carpet", "rubber")
 _GROUND_PLACES = [
     ("metal deck", ("landing pad", "spaceport", "space station", "starship", "spaceship", "space ship", "submarine",
                     "engine room", "airlock")),
@@ -350,6 +352,8 @@ def detect_ground(text: str, indoor: bool) -> str:
     best: tuple[int, int, int, str] | None = None
     for explicit, table in ((0, _GROUND_MATERIALS), (1, _GROUND_PLACES)):
         for rank, (kind, words) in enumerate(table):
+            if explicit and not indoor and kind in _FLOORS:
+                continue  # outside "a small bakery on a village street": the street's ground, not its floor
             for w in words:
                 pos = low.find(" " + w + " ")
                 if pos < 0 or (explicit and w in _PART_ROOMS and _owner_floors(low, pos + len(w) + 1)):
@@ -423,6 +427,12 @@ _INSIDE = re.compile(r"\bceilings?\b|^\W*(?:inside|in the interior of|within)\b|
                      r"\b(?:ship|spaceship|starship|spacecraft|vessel|submarine|airship|boat|yacht|station)\b")
 
 
+#: Open land a building can stand in: an opening that sets its building there looks at it from outside
+#: as often as from inside.
+_OPEN_LAND = ("desert", "field", "fields", "forest", "woods", "hills", "mountains", "meadow", "prairie", "steppe",
+              "savannah", "tundra", "jungle", "countryside", "dunes", "wilderness", "moor", "moors", "valley")
+
+
 def _is_indoor(categories: list[str], text: str, catalogue, places: list[str] = ()) -> bool:
     """Whether the scene stands inside (and so gets a room, docs/rooms.md): the objects' tags,
     the places the reader found, and place words vote, those of the opening sentence (where a
@@ -440,7 +450,9 @@ def _is_indoor(categories: list[str], text: str, catalogue, places: list[str] = 
     # a building the opening sentence stands in outweighs what stands there ("A cow shed at milking
     # time: four cows ..."); one named further on counts as one voice among the objects
     stood_in = re.split(r"\bwith\b", opening, maxsplit=1)[0]  # (not "a graveyard, with a chapel at the end")
-    votes += sum(3 + 7 * (p in stood_in) for p in places if _building(p))
+    # (a building set in open land is seen from outside as often: "a roadside diner in the desert")
+    landscape = re.search(rf"\b(?:in|on|at)\s+(?:the|a|an)\s+(?:\w+\s+)?(?:{'|'.join(_OPEN_LAND)})\b", stood_in)
+    votes += sum(3 + 7 * (p in stood_in and not landscape) for p in places if _building(p))
     votes += 3 * len(_INSIDE.findall(low))
     for word in ("room", "kitchen", "bedroom", "bathroom", "office", "classroom", "lab", "apartment", "studio",
                  "café", "cafe", "shop", "store", "boutique", "gallery", "hall", "interior", "indoors", "smithy",
