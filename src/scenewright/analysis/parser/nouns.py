@@ -57,6 +57,8 @@ class _Mention:
     guess: Entry | None = None
     #: Nouns before the head that name its kind ("dragon" in "a dragon statue").
     modifier: list[str] = field(default_factory=list)
+    #: The likeness this phrase names again by its kind ("the T-rex" after "a T-rex skeleton").
+    likeness_of: _Mention | None = None
 
 
 @dataclass
@@ -2250,7 +2252,7 @@ def _likeness_aliases(toks: list[_Tok], ordered: list[_Mention]) -> None:
         words = tuple(t.text for t in toks[m.start : m.end])
         definite = m.start > 0 and toks[m.start - 1].text in _DEFINITE
         if definite and not m.alias and words in kinds and words[-1] not in heads:
-            m.alias, m.category = True, kinds[words].category
+            m.alias, m.category, m.likeness_of = True, kinds[words].category, kinds[words]
             continue
         if words and singular(words[-1]) in heads:
             kind = tuple(w.lower() for w in m.modifier) or words[:-1]

@@ -385,6 +385,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         its head noun: "the island" → the kitchen island); anything else is new."""
         if m.group >= 0:
             return m.group
+        if m.likeness_of is not None and m.likeness_of.group >= 0:
+            m.group = m.likeness_of.group
+            return m.group
         if (m.definite or m.each) and not sizes:
             vocabulary = load_vocabulary()
             last = self.toks[m.end - 1].text
