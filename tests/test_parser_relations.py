@@ -1267,3 +1267,10 @@ def test_on_the_edge_or_end_of_a_thing_is_on_it():
 def test_a_small_thing_rung_is_rung_by_hand():
     found = rels("A monk sits on the steps ringing a bell.")
     assert ("bell_1", "on", "monk_1") in found and not any(r == "face to" for _, r, _ in found)
+
+
+def test_them_names_one_thing_that_is_several():
+    """"A family sits at a picnic table. A fox watches them from behind a bush": a family is
+    several, so "them" names it, not the last plural thing."""
+    found = rels("Two gas pumps stand by the road. A family sits at a picnic table. A fox watches them from behind a bush.")
+    assert ("fox_1", "face to", "family_1") in found

@@ -448,10 +448,15 @@ class _References:
             (lambda g: True),
         ):  # fmt: skip
             for g in recent:
-                if (self.groups[g].count > 1) == plural and fits(g):
+                if self._several(g) == plural and fits(g):
                     return [g]
         # "them" after two single things ("an armchair ... a bookcase ..., between them")
         return list(dict.fromkeys(recent))[:2] if plural else []
+
+    def _several(self, g: int) -> bool:
+        """Whether "them" can name group ``g``: several of a thing, or one that is several ("a family")."""
+        group = self.groups[g]
+        return group.count > 1 or singular(group.name.split()[-1]) in load_vocabulary().collectives
 
     def _usual_host(self, g: int, things: list[int]) -> bool:
         """Whether ``g`` is a host these things are usually set on (:func:`.support.usual_host`)."""
