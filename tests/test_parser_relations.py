@@ -1274,3 +1274,12 @@ def test_them_names_one_thing_that_is_several():
     several, so "them" names it, not the last plural thing."""
     found = rels("Two gas pumps stand by the road. A family sits at a picnic table. A fox watches them from behind a bush.")
     assert ("fox_1", "face to", "family_1") in found
+
+
+def test_what_hangs_from_a_thing_is_above_what_follows_not_the_thing():
+    """"Bats hang from the bridge above the stalls": no bridge in the air; "a bell hangs in the
+    tower above the gate" still puts the tower above the gate."""
+    bats = rels("Two bats hang from the bridge above the stalls.")
+    assert not any(s.startswith("bridge") and r == "above" for s, r, _ in bats)
+    assert ("lantern_1", "above", "table_1") in rels("Lanterns hang from the branches of the oak above the table.")
+    assert ("tower_1", "above", "arch_1") in rels("A bell hangs in the small tower above the gate.")

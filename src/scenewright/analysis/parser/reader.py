@@ -1331,6 +1331,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         chained = (c.last_kind in _CHAIN_KINDS or kind in ("on", "on top")) and kind not in (
             "face to", "flank", "around", "no relation"
         )  # fmt: skip
+        if chained and kind in ("above", "over") and self._hung_before(rel.start, "from") and c.main:
+            # "bats hang from the bridge above the stalls": what hangs from a thing is above them, not the
+            # thing it hangs from (which stands on its own feet); "a bell hangs in the tower above the
+            # gate" still puts the tower there
+            chained = False
         if chained and isinstance(target, list) and target and c.last_target:
             # "a lamp on the table next to a teapot": what stands by a small thing is its peer, not the table
             chained = not self._small(target[0]) or self._small(c.last_target[0])
@@ -2146,14 +2151,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         after = self.toks[r.end].text if r.end < len(self.toks) else ""
         return after in _DETERMINERS or after in _NUMBERS or after in _VAGUE
 
-    def _hung_before(self, pos: int) -> bool:
+    def _hung_before(self, pos: int, then: str | None = None) -> bool:
         """A hanging (or turning) verb earlier in the same clause part ("three lanterns hang from the
         ceiling over the counter": the over is hung, not a tree leaning over; "a hologram turns above
-        the table")."""
+        the table"), with the word ``then`` right after it when given ("hang from")."""
         k = pos - 1
         while k >= 0 and pos - k <= 8 and self.toks[k].text not in (",", ".", ";", "and", "while"):
             if self.toks[k].text in _HANG_VERBS or self.toks[k].text in _TURN_VERBS:
-                return True
+                return then is None or (k + 1 < pos and self.toks[k + 1].text == then)
             k -= 1
         return False
 
