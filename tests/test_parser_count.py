@@ -168,3 +168,13 @@ def test_a_bare_crowd_of_onlookers_is_many(text, many):
 
 def test_a_count_in_digits_is_taken_as_meant():
     assert counts("30 chairs stand in rows in the hall.")["chair"] == 30
+
+
+def test_each_then_a_passive_phrase_gives_one_per_member():
+    """"Four stalls stand in a half circle, each lit by a lantern": four lanterns, one by each."""
+    parsed = parse_scene("Four stalls stand in a half circle, each lit by a green lantern.")
+    lanterns = [o for o in parsed.objects if o.category == "lantern"]
+    assert len(lanterns) == 4
+    assert {(r.source, r.target) for r in parsed.relations if r.relation == "near"} == {
+        (f"lantern_{i}", f"market_stall_{i}") for i in range(1, 5)
+    }

@@ -886,8 +886,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 w, k = "each", lead
             nxt = toks[k + 1].text if k + 1 < ce else ""
             each_part = nxt in ("with", "have", "has", "holding", "holds", "carrying", "bearing")
-            # "each surrounded by two chairs": the passive flankers come once per member too
-            each_passive = k + 1 in self.rel_at and self.rel_at[k + 1].kind in ("flanked by", "surrounded by")
+            # "each surrounded by two chairs", "each lit by a lantern": the passive ones come once per member too
+            each_passive = k + 1 in self.rel_at and self.rel_at[k + 1].kind in ("flanked by", "surrounded by", "near by")
             each_hold = (nxt, toks[k + 2].text if k + 2 < ce else "") in _HOLD_PAIRS
             # "four pilots sit at the console, each in a leather seat": a seat apiece
             each_seat = k + 1 in self.rel_at and self.rel_at[k + 1].kind in ("in", "on", "at")
