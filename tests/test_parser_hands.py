@@ -529,3 +529,12 @@ def test_a_list_of_things_in_hand_goes_on_over_and(text):
 def test_a_list_placed_by_its_own_phrase_is_not_in_hand():
     found = rels("A clerk sits at a desk, copying letters, with an inkwell and three quills on it.")
     assert {("inkwell_1", "on", "desk_1"), ("quill_1", "on", "desk_1")} <= found, found
+
+
+def test_what_is_worked_on_a_host_one_stands_at_lies_on_it():
+    """"A clerk stamps a letter on the counter": the letter is on the counter, the clerk at it; what
+    is sharpened on a stone stays in hand."""
+    found = rels("A clerk stamps a letter on the counter.")
+    assert {("clerk_1", "near", "counter_1"), ("letter_1", "on", "counter_1")} <= found
+    assert ("horseshoe_1", "on", "anvil_1") in rels("A blacksmith strikes a glowing horseshoe on an anvil.")
+    assert ("knife_1", "on", "cook_1") in rels("A cook sharpens a knife on a whetstone.")

@@ -76,6 +76,7 @@ from scenewright.analysis.parser.words import (
     _HANG_VERBS,
     _HOLD,
     _HOLD_PAIRS,
+    _HONE_VERBS,
     _LEAD_VERBS,
     _NUMBERS,
     _ORDINALS,
@@ -1442,6 +1443,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 c.groups.extend(g for g in target if g not in c.groups)
                 return p.end
             else:
+                in_hands = list(c.wsub)
                 self._close_with(c)
                 srcs = list(c.head)
                 c.head, c.wsub = None, []
@@ -1456,6 +1458,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     return end  # "a stall ..., with a cash tin on its counter": what is on its own part is no object
                 if in_hand and kind == "on" and isinstance(target, list) and not self._carrier(target[0], _RIDDEN):
                     kind = "near"  # one works on a grindstone or an anvil standing at it
+                    if not self._verb_before(rel.start, lambda w: w in _HONE_VERBS):
+                        self._set_down(in_hands, srcs, target[0])
         else:
             srcs = list(c.main)
             # "a farmer guides a buffalo pulling a plough": a participle right after the verb's object is the object's
@@ -1495,6 +1499,20 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             kind = "near"  # "a girl fills a jug at the pump": by what she fills, not in it
         p.kind, p.srcs = kind, srcs
         return None
+
+    def _set_down(self, things: list[int], holders: list[int], host: int) -> None:
+        """"A smith strikes a horseshoe on the anvil", "a clerk stamps a letter on the counter": what
+        is worked on a host one stands at lies on it, out of the hand (its doer by the host); what is
+        sharpened on a stone stays in hand (:data:`_HONE_VERBS`)."""
+        for g in things:
+            if self._living(g) or max(self.groups[g].size) > _HANDHELD_SIZE:
+                continue
+            for h in holders:
+                if (g, h) in self.carried:
+                    self.carried.discard((g, h))
+                    self.in_hand = [pair for pair in self.in_hand if pair != (g, h)]
+                    self.relations = [r for r in self.relations if r[:3] != ("on", g, h)]
+            self._relate("on", [g], host)
 
     def _doer_seated(self, c: _Clause, acted: int, seat: int) -> bool:
         """Whether "on" a seat after an animal acted on puts the person who acts on the seat: the

@@ -100,6 +100,9 @@ _FINITE = {"is", "are", "was", "were", "has", "have", "had", "stand", "sit", "li
 _ADVERBS = {"just", "right", "directly", "all", "both", "neatly", "slightly", "also", "then", "only", "far", "well"}
 _HOLD = {"holds", "hold", "holding", "carries", "carry", "carrying", "supports", "support", "supporting",
          "bears", "bearing", "displays", "displaying"}  # fmt: skip
+#: Verbs of holding a thing against a stone or a wheel: it stays in hand ("sharpen their spears on a grindstone").
+_HONE_VERBS = {"sharpen", "sharpens", "sharpening", "hone", "hones", "honing", "whet", "whets", "whetting",
+               "grind", "grinds", "grinding", "strop", "strops", "stropping"}  # fmt: skip
 _HOLD_PAIRS = {("loaded", "with"), ("laden", "with"), ("topped", "with"), ("set", "with"), ("laid", "with"), ("decorated", "with"),
                ("piled", "with"), ("stacked", "with"), ("heaped", "with"), ("covered", "in"),
                ("covered", "with"), ("packed", "with"), ("lined", "with"), ("stocked", "with"),
