@@ -1283,3 +1283,9 @@ def test_what_hangs_from_a_thing_is_above_what_follows_not_the_thing():
     assert not any(s.startswith("bridge") and r == "above" for s, r, _ in bats)
     assert ("lantern_1", "above", "table_1") in rels("Lanterns hang from the branches of the oak above the table.")
     assert ("tower_1", "above", "arch_1") in rels("A bell hangs in the small tower above the gate.")
+
+
+def test_a_part_named_with_its_side_places_by_its_owner():
+    """"A dog sleeps under the front bumper": by the truck the sentence names; "in the back seat" of a car."""
+    assert ("dog_1", "near", "truck_1") in rels("A truck waits by the gate, and a dog sleeps under the front bumper.")
+    assert ("child_1", "on", "car_1") in rels("A car is parked by the house, and a child sleeps in the back seat.")

@@ -129,3 +129,5 @@ _LIVING = frozenset({"figure", "animal", "bird", "robot"})
 
 #: No phrase makes more objects than this ("a million chairs"): the object limit then refuses the text.
 MAX_COUNT = 10_000
+#: Words that say which of a thing's parts a phrase names ("the front bumper", "the rear wheel").
+_SIDE_WORDS = frozenset({"front", "rear", "back", "left", "right", "near", "far", "upper", "lower", "top", "bottom"})

@@ -38,6 +38,7 @@ from scenewright.analysis.parser.grammar import (
     _REVERSED,
     _RIDDEN,
     _SEATS,
+    _SIDE_WORDS,
     _STANDING_HEIGHT,
     _STANDING_PARTS,
     _VESSEL_KINDS,
@@ -1301,6 +1302,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         """"In the back", "in the cab": a part (``part_owners``) of a vehicle this sentence names,
         no object, so the vehicle (the latest such); and where the part ends."""
         k = pos + (pos < ce and self.toks[pos].text in ("the", "its"))
+        while k + 1 < ce and self.toks[k].text in _SIDE_WORDS and self.toks[k + 1].text[:1].isalpha():
+            k += 1  # "under the front bumper", "by the rear wheel"
         if k >= ce or (k + 1 < ce and self.toks[k + 1].text[:1].isalpha()):
             return None
         owners = load_vocabulary().part_owners.get(singular(self.toks[k].text), ())

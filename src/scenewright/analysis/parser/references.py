@@ -17,6 +17,7 @@ from scenewright.analysis.parser.grammar import (
     _PERSON_POSSESSIVES,
     _PLATFORM_HEIGHT,
     _ROOFED_VEHICLES,
+    _SIDE_WORDS,
 )
 from scenewright.analysis.parser.nouns import _HOLDING_PARTS, _PLACING_VERBS, _is_plural, _position_adjective
 from scenewright.analysis.parser.support import usual_host
@@ -178,8 +179,11 @@ class _References:
             if tower is not None:
                 self._part = "top"
                 return [tower], pos + 2  # "with a ranger looking out from the top": the watchtower's
-        if lead < ce and toks[lead].text == "the" and j == lead + 2 and singular(toks[lead + 1].text) in load_vocabulary().part_owners:
-            self._part = singular(toks[lead + 1].text)
+        sided = lead + 1 < ce and toks[lead + 1].text in _SIDE_WORDS  # ("under the front bumper")
+        if lead < ce and toks[lead].text == "the" and j == lead + 2 + sided and (
+            singular(toks[j - 1].text) in load_vocabulary().part_owners
+        ):
+            self._part = singular(toks[j - 1].text)
             return "the part", j  # "lies in the water": the water of the pond named before
         if lead < ce and toks[lead].text in ("a", "an") and j == lead + 2 and self._verb_before(pos, self._posture):
             word = singular(toks[lead + 1].text)  # "an owl sits on a branch": a branch of the tree named before
