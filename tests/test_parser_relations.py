@@ -1289,3 +1289,11 @@ def test_a_part_named_with_its_side_places_by_its_owner():
     """"A dog sleeps under the front bumper": by the truck the sentence names; "in the back seat" of a car."""
     assert ("dog_1", "near", "truck_1") in rels("A truck waits by the gate, and a dog sleeps under the front bumper.")
     assert ("child_1", "on", "car_1") in rels("A car is parked by the house, and a child sleeps in the back seat.")
+
+
+def test_the_far_end_of_a_thing_is_its_end_and_of_the_room_the_back():
+    """"At the far end of the counter" places by the counter as "at the end of" it does; "at the far
+    end of the hall" is the back of the scene."""
+    assert rels("A jar stands at the far end of the counter.") == rels("A jar stands at the end of the counter.") != set()
+    hall = parse_scene("A tank stands at the far end of the hall.")
+    assert [o.anchor for o in hall.objects] == ["back"]

@@ -1569,6 +1569,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if toward and isinstance(p.target, list):  # named all the same: "..., and a truck waits under it"
                 c.groups.extend(g for g in p.target if g not in c.groups)
             return end  # "a shelf stacked with books": contents, no stack
+        of_thing = rel.end < ce and toks[rel.end].text == "of" and any(
+            k in self.by_start for k in range(rel.end + 1, min(rel.end + 3, ce))
+        )
+        if kind.startswith("anchor ") and of_thing:
+            p.kind = "end of"  # "at the far end of the counter": at the counter's end, as "at the end of" it
+            return None
         if kind in _FORMATIONS or kind.startswith("anchor ") or (p.target is None and kind in _PLACE_KINDS):
             # "three stalls stand in a row", "a sofa against the wall", "a rug in the middle of the room"
             place = _PLACE_KINDS.get(kind) or self._anchor_after(rel.end, ce) if not kind.startswith("anchor ") else kind
