@@ -1573,7 +1573,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             k in self.by_start for k in range(rel.end + 1, min(rel.end + 3, ce))
         )
         if kind.startswith("anchor ") and of_thing:
-            p.kind = "end of"  # "at the far end of the counter": at the counter's end, as "at the end of" it
+            p.kind = "near"  # "at the far end of the counter": by the counter, at its end
             return None
         if kind in _FORMATIONS or kind.startswith("anchor ") or (p.target is None and kind in _PLACE_KINDS):
             # "three stalls stand in a row", "a sofa against the wall", "a rug in the middle of the room"
