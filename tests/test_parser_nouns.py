@@ -1231,3 +1231,11 @@ def test_the_kind_of_a_likeness_named_again_is_the_likeness():
     assert ("child_1", "in front of", "dinosaur_skeleton_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
     bowl = parse_scene("A dog bowl stands by the door, and the dog sleeps beside it.")
     assert {o.category for o in bowl.objects} == {"bowl", "dog"}
+
+
+def test_a_distance_names_no_things_and_a_no_things_plural_has_a_verb():
+    """"Ten paces apart" is a distance, not ten paces; "the saloon doors swing" is what the doors do,
+    not a playground swing; "a tall parts cabinet" is still a cabinet."""
+    assert [o.name for o in parse_scene("Two duellists face each other ten paces apart.").objects] == ["duellist"] * 2
+    assert [o.name for o in parse_scene("The saloon doors swing behind the sheriff.").objects] == ["sheriff"]
+    assert [o.category for o in parse_scene("A compressor hums beside a tall parts cabinet.").objects] == ["machine", "cabinet"]

@@ -33,6 +33,7 @@ from scenewright.analysis.parser.words import (
     _PLACE_ADVERBS,
     _PLANT_SHAPES,
     _PREPOSITIONS,
+    _TURN_VERBS,
     _is_verb,
 )
 
@@ -314,6 +315,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "two robots stand guard", "fox statues guard the path": a verb here
         if _bare_plural_verb(toks, s, e) and not kind:
             continue  # "the farrier, a broad woman, shoes a grey mare": a verb taking its object
+        if _verb_of_no_thing(toks, s, e):
+            continue  # "the saloon doors swing behind him": what no-things do, not a swing
         if entry is None and k > 0 and raw[k - 1][1] == s and _plural_subject_before(toks, raw[k - 1], e):
             continue  # "two kids fish from the pier", "the children swing on the gate": a verb here
         follow = toks[e].text if e < n else ""
@@ -1237,6 +1240,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             continue  # "a six-wheeled rover": a number hyphened to a word describes, counts nothing
         if w in _NUMBERS and i > 1 and toks[i - 1].text == "of" and toks[i - 2].text in _PEOPLE_GROUPS:
             continue  # "a family of four shelters under the awning": how many, then the verb
+        if (w in _NUMBERS or w.isdigit()) and i + 1 < n and toks[i + 1].text in _UNITS:
+            continue  # "ten paces apart", "five yards from the gate": a distance, no things
         if w == "of" and _heap_of_stuff(toks, i, covered):
             entry = _guess(toks, i + 1, toks[i - 1 : i + 1])
             out.append((i + 1, i + 2, entry.category, entry))
@@ -1366,6 +1371,24 @@ def _shares_article(toks: list[_Tok], i: int, covered: set[int]) -> bool:
     after = toks[i + 2].text
     word = toks[i + 1].text
     return singular(word) == word and (not after[:1].isalpha() or after in _STOP or _is_verb(after))
+
+
+def _verb_of_no_thing(toks: list[_Tok], s: int, e: int) -> bool:
+    """A bare singular word right after a plural that names no thing ("doors", "flames") and before
+    a place phrase or the clause's end is that plural's verb: "the saloon doors swing behind
+    him", "its flames light the room" (not "the sports car", whose "sports" is no such plural)."""
+    word = toks[s].text
+    if e - s != 1 or s == 0 or singular(word) != word:
+        return False
+    vocabulary = load_vocabulary()
+    verbs = vocabulary.person_verbs | vocabulary.animal_verbs | _HANG_VERBS | _TURN_VERBS
+    if word not in verbs and word + "s" not in verbs:
+        return False  # (a word no verb list knows is a noun: "a tall parts cabinet")
+    before = toks[s - 1].text
+    if singular(before) == before or singular(before) not in vocabulary.not_things:
+        return False
+    after = toks[e].text if e < len(toks) else "."
+    return after in _STOP or after in _PREPOSITIONS or not after[:1].isalpha()
 
 
 def _bare_plural_verb(toks: list[_Tok], s: int, e: int) -> bool:

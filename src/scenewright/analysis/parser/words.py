@@ -62,6 +62,8 @@ _UNITS = {
     "m": 1.0, "meter": 1.0, "meters": 1.0, "metre": 1.0, "metres": 1.0, "cm": 0.01,
     "centimeter": 0.01, "centimeters": 0.01, "centimetre": 0.01, "centimetres": 0.01, "mm": 0.001,
     "ft": 0.3048, "foot": 0.3048, "feet": 0.3048, "inch": 0.0254, "inches": 0.0254,
+    "yard": 0.9144, "yards": 0.9144, "pace": 0.75, "paces": 0.75, "stride": 0.9, "strides": 0.9,
+    "step": 0.75, "steps": 0.75,
 }  # fmt: skip
 _DIMENSIONS = {"wide": "x", "width": "x", "across": "x", "long": "long", "length": "long", "deep": "y",
                "depth": "y", "tall": "z", "high": "z", "height": "z", "diameter": "d"}  # fmt: skip
