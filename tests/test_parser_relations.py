@@ -1297,3 +1297,9 @@ def test_the_far_end_of_a_thing_is_its_end_and_of_the_room_the_back():
     assert rels("A fish tank stands at the far end of the counter.") == {("aquarium_1", "near", "counter_1")}
     hall = parse_scene("A tank stands at the far end of the hall.")
     assert [o.anchor for o in hall.objects] == ["back"]
+
+
+def test_and_opening_a_subject_with_its_own_verb_opens_a_clause():
+    """"A barrel stands by the door and a cat sits on a low table": the cat is on it, not the barrel."""
+    assert rels("A barrel stands by the door and a cat sits on a low table.") == {("cat_1", "on", "coffee_table_1")}
+    assert rels("A barrel and a cat sit on the table.") == {("barrel_1", "on", "table_1"), ("cat_1", "on", "table_1")}

@@ -321,7 +321,7 @@ def _two_clauses(draw: _Draw, shape: str, index: int) -> Case:
         parts.append(f"{np_} {draw.verb(subject, count)} {place} {tp}")
         objects += [(subject.key, count), (target.key, 1)]
         relations |= {(subject.key, r, target.key) for r in PLACES[place]}
-    text = f"{_capital(parts[0])}{draw.pick((', and ', ' while ', ', while '))}{parts[1]}."
+    text = f"{_capital(parts[0])}{draw.pick((', and ', ' and ', ' while ', ', while '))}{parts[1]}."
     return _prompt(shape, index, text, objects, relations)
 
 

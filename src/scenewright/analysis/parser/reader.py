@@ -519,7 +519,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self.doers = []
             pending: list[tuple[str, list[int], tuple[int | None, ...]]] = []
             last_rels: list[tuple[str, list[int]]] = []
-            clauses = self._merge_lists(sentence)
+            clauses = self._merge_lists([part for cs, ce in sentence for part in self._split_at_and(cs, ce)])
             for ci, (cs, ce) in enumerate(clauses):
                 # "and the guide, standing on its bonnet, ...": a subject its participle goes on with
                 # ("while the tailor, a thin man ..., measures": a clause of its own, whose verb comes later)
@@ -770,6 +770,25 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
 
     def _size(self, m: _Mention) -> tuple[float, float, float]:
         return m.guess.size if m.guess is not None else self.catalogue[m.category].size
+
+    def _split_at_and(self, cs: int, ce: int) -> list[tuple[int, int]]:
+        """A clause cut where "and" opens a new subject with its own verb after a subject that had
+        one: "a barrel stands by the door and a cat sits on the table" is two clauses, as with a
+        comma before "and" (not "a barrel and a cat sit on it", nor "between the door and a chest")."""
+        toks = self.toks
+        for k in range(cs + 1, ce - 2):
+            if toks[k].text != "and":
+                continue
+            j = k + 1
+            while j < ce and j not in self.by_start and (toks[j].text in _DETERMINERS or toks[j].text in _NUMBERS
+                                                         or load_vocabulary().is_adjective(toks[j].text)):
+                j += 1
+            m = self.by_start.get(j)
+            if m is None or m.end >= ce or not self._finite_at(m.end):
+                continue
+            if any(e in self.ends and self._finite_at(e) for e in range(cs + 1, k)):
+                return [(cs, k), *self._split_at_and(k, ce)]
+        return [(cs, ce)]
 
     def _merge_lists(self, clauses: list[tuple[int, int]]) -> list[tuple[int, int]]:
         """Join a clause that only lists objects to the next one when that one places them
