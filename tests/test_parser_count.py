@@ -178,3 +178,9 @@ def test_each_then_a_passive_phrase_gives_one_per_member():
     assert {(r.source, r.target) for r in parsed.relations if r.relation == "near"} == {
         (f"lantern_{i}", f"market_stall_{i}") for i in range(1, 5)
     }
+
+
+def test_on_each_of_the_n_hosts_is_one_on_each_of_n():
+    parsed = parse_scene("A radio sits on each of the four crates.")
+    assert sorted(o.category for o in parsed.objects) == ["crate"] * 4 + ["radio"] * 4
+    assert {(r.source, r.target) for r in parsed.relations if r.relation == "on"} == {(f"radio_{i}", f"crate_{i}") for i in range(1, 5)}

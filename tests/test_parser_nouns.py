@@ -1239,3 +1239,13 @@ def test_a_distance_names_no_things_and_a_no_things_plural_has_a_verb():
     assert [o.name for o in parse_scene("Two duellists face each other ten paces apart.").objects] == ["duellist"] * 2
     assert [o.name for o in parse_scene("The saloon doors swing behind the sheriff.").objects] == ["sheriff"]
     assert [o.category for o in parse_scene("A compressor hums beside a tall parts cabinet.").objects] == ["machine", "cabinet"]
+
+
+def test_nouns_that_look_like_verbs_or_other_words_are_read_as_nouns():
+    """"Three grey bears sit" (not the verb "bears"), "two dwarves" (a dwarf each), "his pet" (an
+    animal, not the describing word of "a pet shop")."""
+    assert [o.name for o in parse_scene("Three grey bears sit behind a crate.").objects] == ["bear"] * 3 + ["crate"]
+    assert [o.name for o in parse_scene("Two dwarves haul a sack.").objects][:2] == ["dwarf", "dwarf"]
+    pets = parse_scene("A sailor waits by the door. His pet dozes beside a crate.")
+    assert ("pet_1", "side of", "crate_1") in {(r.source, r.relation, r.target) for r in pets.relations}
+    assert [o.name for o in parse_scene("A pillar bears a lamp.").objects] == ["pillar", "lamp"]

@@ -57,6 +57,7 @@ _COMPOUND_HEADS = ("children", "mice", "geese", "people")
 #: Plurals in -ves of nouns in -f or -fe other than those in -lf ("knives"); the rest drop the s ("hives").
 _F_PLURALS = {"knives": "knife", "wives": "wife", "lives": "life", "leaves": "leaf", "loaves": "loaf",
               "thieves": "thief", "sheaves": "sheaf", "scarves": "scarf", "hooves": "hoof", "wharves": "wharf",
+              "dwarves": "dwarf", "turves": "turf",
               "valves": "valve"}  # fmt: skip
 #: Nouns in -ie, whose plural the -ies → -y rule would get wrong ("pixies" are no "pixy").
 _IE_NOUNS = {"pixie", "zombie", "cookie", "movie", "hippie", "brownie", "magpie", "smoothie", "selfie", "genie",

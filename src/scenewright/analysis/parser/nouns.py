@@ -2400,6 +2400,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             # "above one bench", "between every two benches", "the two nearest benches": of those
             # already there, if any
             m.definite = w == "one" or (j > 0 and toks[j - 1].text in ("every", "each", *_DEFINITE))
+            # "on each of the four crates": each of them, as "on each crate"
+            m.each = m.each or [t.text for t in toks[max(0, j - 3) : j]] in (["each", "of", "the"], ["every", "one", "of"])
             break
         if toks[j + 1].joined and adjectives:  # "three-tiered", "red-and-white": one adjective
             adjectives[0] = f"{t.orig}-{adjectives[0]}"

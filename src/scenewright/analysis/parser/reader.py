@@ -343,7 +343,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         words = range(m.start - 1, max(m.start - 5, -1), -1)
         det = next((j for j in words if self.toks[j].text in ("each", "every")), -1)
         place = any(r.end == det for r in self.rel_at.values())
-        count = UNCOUNTED if m.each and place else min(max(1, m.count), MAX_COUNT)
+        count = (m.count if m.count > 1 else UNCOUNTED) if m.each and place else min(max(1, m.count), MAX_COUNT)
         g = _Group(len(self.groups), m.category, count, name, description, size, rests=rests)
         g.guessed = m.guess is not None
         g.sized = bool(sizes)
@@ -965,7 +965,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 holder, hand, tool_end = givers, True, given[1]
             # ("has fallen asleep", "have gathered": a tense, nothing held)
             owns = w in ("has", "have") and not (_participle(nxt) or nxt in ("been", "gone", "come", "grown"))
-            if w == "with" or w in _HOLD or (w, nxt) in _HOLD_PAIRS or owns or hand:
+            # ("three grey bears sit": a noun the reader found, not the verb "bears")
+            if w == "with" or (w in _HOLD and k not in self.by_start) or (w, nxt) in _HOLD_PAIRS or owns or hand:
                 if w in _HOLD and w.endswith("ing") and c.head is not None and c.wsub:
                     # "with a small table beside them holding a teapot": the with-thing holds it
                     c.head, c.wsub, c.hold, c.expect_new = list(c.wsub[-1:]), [], True, False
