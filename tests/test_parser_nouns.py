@@ -1249,3 +1249,11 @@ def test_nouns_that_look_like_verbs_or_other_words_are_read_as_nouns():
     pets = parse_scene("A sailor waits by the door. His pet dozes beside a crate.")
     assert ("pet_1", "side of", "crate_1") in {(r.source, r.relation, r.target) for r in pets.relations}
     assert [o.name for o in parse_scene("A pillar bears a lamp.").objects] == ["pillar", "lamp"]
+
+
+def test_the_members_of_a_group_nobody_listed_and_a_plural_hyphened_head_are_things():
+    """"A family of colonists" are colonists; "three slug-creatures crawl" are three creatures, a
+    plural second half heading its phrase (a singular one is a modifier: "a block-building game")."""
+    assert [o.name for o in parse_scene("A family of colonists sits on a bench.").objects][:1] == ["colonist"]
+    slugs = parse_scene("Three purple slug-creatures crawl over mossy rocks.")
+    assert [o.name for o in slugs.objects][:3] == ["slug creature"] * 3

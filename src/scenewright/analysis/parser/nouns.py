@@ -279,9 +279,10 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             # thing; "a lantern made from a snail shell": what the lantern is made of
         if e + 1 < n and toks[e].text == "in" and toks[e + 1].text in _MEASURES:
             continue  # "a room six tatami mats in size", "two cars in length": a measure, not things
-        if toks[s].joined and e - s == 1 and _names_kind(toks, e):
+        if toks[s].joined and e - s == 1 and singular(words[0]) == words[0] and _names_kind(toks, e):
             modifier = []
-            continue  # "a block-building game": half of a hyphened modifier, not a building
+            continue  # "a block-building game": half of a hyphened modifier, not a building (a plural
+            # half heads its phrase: "three slug-creatures crawl")
         if _gerund_here(toks, s, e):
             continue  # "two children are building a snowman": a verb, not a building
         if _adverb_here(toks, s, e):
@@ -1229,8 +1230,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         owner = w in _OWNERS  # only for a thing held ("his hat in his hands") or a person ("their sensei, ...")
         definite = owner or w == "the"  # only for a person ("the old watchmaker sits ...")
         counter = definite or w in ("a", "an", "another") or w in _NUMBERS or w in _VAGUE or w.isdigit() or (
-            w == "of" and i > 0 and toks[i - 1].text in _QUANTITY
-        ) or _shares_article(toks, i, covered)
+            w == "of" and i > 0 and (toks[i - 1].text in _QUANTITY or singular(toks[i - 1].text) in _PEOPLE_GROUPS)
+        ) or _shares_article(toks, i, covered)  # ("a family of colonists": the colonists, nobody listed)
         if not counter or w == "one" and i + 1 < n and toks[i + 1].text in ("of", "another", "other"):
             continue
         rough = i + 2 < n and toks[i + 1].text in _APPROXIMATE and _elided_at(toks, i + 2) is not None
@@ -1428,6 +1429,8 @@ def _plural_form_verb(word: str, after: str) -> bool:
 _PEOPLE_GROUPS = {"family", "couple", "crowd", "audience", "party", "group", "team", "crew", "band", "gang",
                   "troupe", "class", "congregation", "choir", "orchestra", "mob", "entourage", "retinue", "ensemble",
                   "quartet", "trio"}  # fmt: skip
+#: One named thing that is several ("a family", "a herd"): "them" can name it.
+COLLECTIVES = _PEOPLE_GROUPS | {"herd", "flock", "pack", "queue", "swarm"}
 
 
 def _listed_adjective(toks: list[_Tok], k: int) -> bool:

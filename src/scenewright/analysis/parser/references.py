@@ -19,7 +19,7 @@ from scenewright.analysis.parser.grammar import (
     _ROOFED_VEHICLES,
     _SIDE_WORDS,
 )
-from scenewright.analysis.parser.nouns import _HOLDING_PARTS, _PLACING_VERBS, _is_plural, _position_adjective
+from scenewright.analysis.parser.nouns import COLLECTIVES, _HOLDING_PARTS, _PLACING_VERBS, _is_plural, _position_adjective
 from scenewright.analysis.parser.support import usual_host
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import (
@@ -460,7 +460,7 @@ class _References:
     def _several(self, g: int) -> bool:
         """Whether "them" can name group ``g``: several of a thing, or one that is several ("a family")."""
         group = self.groups[g]
-        return group.count > 1 or singular(group.name.split()[-1]) in load_vocabulary().collectives
+        return group.count > 1 or singular(group.name.split()[-1]) in COLLECTIVES
 
     def _usual_host(self, g: int, things: list[int]) -> bool:
         """Whether ``g`` is a host these things are usually set on (:func:`.support.usual_host`)."""

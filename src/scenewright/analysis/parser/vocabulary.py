@@ -103,8 +103,6 @@ class Vocabulary:
     clothing_size: tuple[float, float, float] = (0.4, 0.3, 0.2)
     #: People who come as a crowd: a bare plural of one is many ("spectators gather").
     crowd_words: frozenset[str] = frozenset()
-    #: Words for one thing that is several ("a family", "a herd"): "them" can name it.
-    collectives: frozenset[str] = frozenset()
     #: Kind (seats, vehicles, mounts, perches, containers) → the categories, shapes, families
     #: and head words of things a person or an animal is on when it is in or on them.
     carriers: dict[str, frozenset[str]] = field(default_factory=dict)
@@ -305,7 +303,6 @@ def _validate(raw: dict) -> Vocabulary:
         pair_nouns=frozenset(raw.get("pair_nouns", ())),
         clothing=frozenset(lists.get("clothing", ())),
         crowd_words=frozenset(raw.get("crowd_words", ())),
-        collectives=frozenset(raw.get("collectives", ())),
         clothing_size=tuple(float(v) for v in raw.get("clothing_size", (0.4, 0.3, 0.2))),  # type: ignore[arg-type]
         materials=frozenset(lists.get("materials", ())),
         carriers={k: frozenset(v) for k, v in raw.get("carriers", {}).items() if k != "about"},
