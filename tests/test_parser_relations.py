@@ -1303,3 +1303,9 @@ def test_and_opening_a_subject_with_its_own_verb_opens_a_clause():
     """"A barrel stands by the door and a cat sits on a low table": the cat is on it, not the barrel."""
     assert rels("A barrel stands by the door and a cat sits on a low table.") == {("cat_1", "on", "coffee_table_1")}
     assert rels("A barrel and a cat sit on the table.") == {("barrel_1", "on", "table_1"), ("cat_1", "on", "table_1")}
+
+
+def test_a_formation_named_again_is_the_group_set_out_in_it():
+    """"A sheepdog lies on top of the stack" after "a stack of hay bales": on its top bale."""
+    found = rels("A tractor is parked beside a stack of hay bales, and a sheepdog lies on top of the stack.")
+    assert ("dog_1", "on", "hay_bale_3") in found

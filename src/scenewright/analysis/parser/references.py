@@ -37,6 +37,10 @@ if TYPE_CHECKING:
     from scenewright.analysis.parser.reader import _Clause
 
 
+#: Nouns for a formation named again ("the stack", "the row"), and the formation they name.
+_FORMATION_NOUNS = {"stack": "stack", "pile": "stack", "heap": "stack", "row": "row", "line": "row",
+                    "circle": "circle", "ring": "circle"}  # fmt: skip
+
 class _References:
     def _target_at(self, pos: int, ce: int) -> tuple[list[int] | str | None, int]:
         """The noun phrase (or pronoun) right after a relation phrase, and where it ends."""
@@ -179,6 +183,11 @@ class _References:
             if tower is not None:
                 self._part = "top"
                 return [tower], pos + 2  # "with a ranger looking out from the top": the watchtower's
+        formed = _FORMATION_NOUNS.get(singular(toks[lead + 1].text)) if lead + 1 < ce and toks[lead].text == "the" else None
+        if formed is not None and j == lead + 2:
+            group = next((g for g in reversed(self.history) if self.formations.get(g) == formed), None)
+            if group is not None:
+                return [group], j  # "a dog lies on top of the stack": the stack of hay bales named before
         sided = lead + 1 < ce and toks[lead + 1].text in _SIDE_WORDS  # ("under the front bumper")
         if lead < ce and toks[lead].text == "the" and j == lead + 2 + sided and (
             singular(toks[j - 1].text) in load_vocabulary().part_owners
