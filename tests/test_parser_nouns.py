@@ -1257,3 +1257,12 @@ def test_the_members_of_a_group_nobody_listed_and_a_plural_hyphened_head_are_thi
     assert [o.name for o in parse_scene("A family of colonists sits on a bench.").objects][:1] == ["colonist"]
     slugs = parse_scene("Three purple slug-creatures crawl over mossy rocks.")
     assert [o.name for o in slugs.objects][:3] == ["slug creature"] * 3
+
+
+def test_a_person_after_a_fronted_place_phrase_is_no_new_name_for_its_object():
+    """"At the foot of a scarecrow, a guard sits": the guard is there, not another name for the
+    scarecrow; "behind the counter stands the shopkeeper, a goblin" still renames the shopkeeper."""
+    assert [o.name for o in parse_scene("At the foot of a scarecrow, a guard sits.").objects] == ["scarecrow", "guard"]
+    shop = parse_scene("Behind the counter stands the shopkeeper, a green goblin in spectacles.")
+    assert sum(o.category != "counter" for o in shop.objects) == 1
+    assert [o.name for o in parse_scene("In the yard, a lonely ox at the foot of a cart.").objects] == ["ox", "cart"]

@@ -347,7 +347,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         if entry is not None and entry.category in (GENERIC, *_ENCLOSING) and _unknown_opening_place(toks, s, e):
             places.append(" ".join(words))
             continue  # "An art nouveau perfumery, all brass and glass.": a word nobody listed names the setting
-        if (places or opening_place) and _whereabouts_of_setting(toks, s):
+        if (places or opening_place) and _whereabouts_of_setting(toks, s, mentions[-1].end if mentions else -1):
             places.append(" ".join(words))
             continue  # "a wizard's study at the top of a tower": where the setting is, not a thing in it
         if _is_place(toks, s, e, raw[k + 1 :]) or (
@@ -1158,10 +1158,12 @@ _SETTING_PARTS = {"top", "foot", "base", "bottom", "summit", "roots", "root", "h
                   "belly", "hollow", "trunk", "branches", "crown"}  # fmt: skip
 
 
-def _whereabouts_of_setting(toks: list[_Tok], s: int) -> bool:
+def _whereabouts_of_setting(toks: list[_Tok], s: int, thing_end: int = -1) -> bool:
     """The noun at ``s`` owns the part of a thing the opening sentence puts its place at, with no
     verb before it: "A wizard's study at the top of a tower", "a fox's den beneath the roots of a
-    beech" name where the setting is (the tower, the beech), not a thing standing in the scene."""
+    beech" name where the setting is (the tower, the beech), not a thing standing in the scene; not
+    when a thing of the scene, ending at ``thing_end``, comes right before ("In the yard, an ox at the
+    foot of a cart")."""
     j = s - 1
     while j >= 0 and s - j <= 4 and (toks[j].text in _DETERMINERS or (
         toks[j].text[:1].isalpha() and toks[j].text not in _STOP
@@ -1169,7 +1171,7 @@ def _whereabouts_of_setting(toks: list[_Tok], s: int) -> bool:
         j -= 1
     if j < 3 or toks[j].text != "of" or toks[j - 1].text not in _SETTING_PARTS or toks[j - 2].text not in _DETERMINERS:
         return False
-    if toks[j - 3].text not in _SETTING_PREPOSITIONS and toks[j - 3].text not in _INSIDE:
+    if toks[j - 3].text not in _SETTING_PREPOSITIONS and toks[j - 3].text not in _INSIDE or thing_end == j - 3:
         return False
     start = max((k for k in range(j) if toks[k].text == ":"), default=-1) + 1
     return not any(t.text in (".", "!", "?", ";") or _verb_word(t.text) and not t.text.endswith("ing")
@@ -2183,7 +2185,7 @@ def _after_preposition(toks: list[_Tok], head: int) -> bool:
         return _after_preposition(toks, j - 1)
     return j >= 0 and toks[j].text in _STOP and toks[j].text not in _DETERMINERS and toks[j].text[:1].isalpha() and (
         toks[j].text not in ("and", "or", "but", "while", "where", "which", "who", "that", "as", "than")
-    )
+    ) and not _is_verb(toks[j].text)  # ("behind the counter stands the shopkeeper, a goblin": its subject)
 
 
 #: Words an apposition may open with before the person it names ("their sensei, a tiny old man, ...").
@@ -2313,7 +2315,9 @@ def _mark_appositions(toks: list[_Tok], mentions: list[_Mention]) -> None:
             # names that person's role
             m.category, m.guess = "figure", load_vocabulary().guess_agent(toks[m.start].text, False, human=True)
             later[0].content = True
-        elif _person_mention(m) and later and _person_mention(later[0]) and _renames(toks, m.end, later[0].start):
+        elif _person_mention(m) and later and _person_mention(later[0]) and _renames(toks, m.end, later[0].start) and (
+            not _after_preposition(toks, m.start)
+        ):  # (not "At the foot of a scarecrow, a guard sits": a fronted place phrase)
             # the role is the name ("the keeper, an old woman", "the owner, a bearded man"); a word
             # that only says whose ("its owner, a girl in goggles") gives way to the person
             relational = singular(m.phrase.split()[-1].lower()) in load_vocabulary().relational
