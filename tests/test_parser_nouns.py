@@ -1266,3 +1266,14 @@ def test_a_person_after_a_fronted_place_phrase_is_no_new_name_for_its_object():
     shop = parse_scene("Behind the counter stands the shopkeeper, a green goblin in spectacles.")
     assert sum(o.category != "counter" for o in shop.objects) == 1
     assert [o.name for o in parse_scene("In the yard, a lonely ox at the foot of a cart.").objects] == ["ox", "cart"]
+
+
+def test_a_body_word_makes_a_creature_and_a_holding_with_thing_a_person():
+    """"A six-legged grazer" is an animal; "a young tsarevich holding the reins" after "with" is a
+    person, so "beside him" names him; people with a cart ride it, ponies with it draw it."""
+    grazer = parse_scene("A cowgirl lassos a six-legged grazer.").objects[1]
+    assert grazer.name == "grazer" and grazer.category == "animal"
+    sleigh = parse_scene("A troika pulls a sleigh, with a young tsarevich holding the reins and a princess beside him.")
+    assert ("princess_1", "side of", "tsarevich_1") in {(r.source, r.relation, r.target) for r in sleigh.relations}
+    cart = {(r.source, r.relation, r.target) for r in parse_scene("A cart with two farmers waits by the gate.").relations}
+    assert ("farmer_1", "on", "cart_1") in cart

@@ -1962,6 +1962,9 @@ def _guess(toks: list[_Tok], head: int, before: list[_Tok]) -> Entry:
     word = toks[head].text
     entry = vocabulary.guess(word)
     if any(t.text == "with" for t in before):
+        after = toks[head + 1].text if head + 1 < len(toks) else ""
+        if entry.category == GENERIC and after.endswith("ing") and (after in _HOLD or after in _HAND_VERBS):
+            return vocabulary.guess_agent(word, True, True) or entry  # "with a tsarevich holding the reins"
         return entry
     fronted = _after_preposition(toks, head)  # "On the bank, an old woman grills ...": no apposition
     human = _does_what_people_do(toks, head + 1) or (_person_apposition(toks, head + 1) and not fronted)
@@ -1975,7 +1978,14 @@ def _guess(toks: list[_Tok], head: int, before: list[_Tok]) -> Entry:
     found = _verb_after(toks, head + 1)
     if entry.category == GENERIC and found is not None and found[0] in _VEHICLE_VERBS:
         entry = vocabulary.family("vehicle")  # "a zil is parked"
+    if entry.category == GENERIC and any(t.text.endswith(_BODY_MARKS) for t in before):
+        entry = vocabulary.family("animal")  # "a six-legged grazer", "a horned beast": a creature's body
     return entry
+
+
+#: Endings of describing words that give a thing nobody listed a creature's body.
+_BODY_MARKS = ("legged", "winged", "horned", "tusked", "tentacled", "furred", "feathered", "hoofed", "hooved", "clawed",
+               "fanged", "tailed", "eyed", "headed", "scaled")
 
 
 #: What only vehicles do: a word nobody listed that does it is a vehicle ("a snowcat idles").

@@ -1214,8 +1214,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     c.produced = True
                     continue
                 alive = self._living(g) or self.groups[g].category == "fish"
-                kept = alive and not self._living(h) and self._carrier(h, ("containers",))
-                if kept and not placed:  # "a pond with koi", "a cage with two parrots": in it
+                kept = alive and not self._living(h) and (
+                    self._carrier(h, ("containers",)) or self._person_at(g) and self._carrier(h, ("vehicles",))
+                )
+                if kept and not placed:  # "a pond with koi", "a cage with two parrots", "a sleigh with a prince": in it
                     self._relate("on", [g], h)
                     c.produced = True
                     continue
