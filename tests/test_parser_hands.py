@@ -529,3 +529,30 @@ def test_a_list_of_things_in_hand_goes_on_over_and(text):
 def test_a_list_placed_by_its_own_phrase_is_not_in_hand():
     found = rels("A clerk sits at a desk, copying letters, with an inkwell and three quills on it.")
     assert {("inkwell_1", "on", "desk_1"), ("quill_1", "on", "desk_1")} <= found, found
+
+
+@pytest.mark.parametrize(
+    "text, doer, thing",
+    [
+        ("A porter checks a trunk.", "porter_1", "trunk_1"),  # a verb of work, a thing one could carry
+        ("Two sailors scrub a keg.", "sailor_1", "barrel_1"),
+        ("An old smith studies the cauldron.", "smith_1", "cauldron_1"),
+        ("Three nuns clean a washing machine.", "nun_1", "washing_machine_1"),  # "clean" as a verb, no describing word
+    ],
+)
+def test_a_thing_too_big_for_the_hand_is_worked_on_where_it_stands(text, doer, thing):
+    found = rels(text)
+    assert (doer, "near", thing) in found and (thing, "on", doer) not in found, found
+
+
+def test_a_verb_of_carrying_takes_up_what_a_person_can_carry_and_no_more():
+    assert ("trunk_1", "on", "porter_1") in rels("A porter hoists a trunk.")
+    assert ("barrel_1", "on", "sailor_1") in rels("A sailor lugs a keg down the gangway.")
+    # a hand-sized thing is in hand whatever the verb
+    assert ("lantern_1", "on", "smith_1") in rels("An old smith studies a lantern.")
+
+
+def test_a_thing_flown_is_aloft_and_its_flyer_takes_the_place():
+    found = rels("Three girls fly a drone beside the lighthouse.")
+    assert ("girl_1", "side of", "lighthouse_1") in found, found
+    assert not any(s == "girl_1" and t == "drone_1" for s, _, t in found), found

@@ -1258,3 +1258,11 @@ def test_on_the_edge_or_end_of_a_thing_is_on_it():
 def test_a_small_thing_rung_is_rung_by_hand():
     found = rels("A monk sits on the steps ringing a bell.")
     assert ("bell_1", "on", "monk_1") in found and not any(r == "face to" for _, r, _ in found)
+
+
+@pytest.mark.parametrize("verb", ["sings", "reads", "waves", "listens"])
+def test_a_side_phrase_after_a_verb_is_where_the_doer_is(verb):
+    """"Sings to the left of the organ": no addressee, the side the singer stands on."""
+    found = rels(f"A choirboy {verb} to the left of the organ.")
+    assert ("choirboy_1", "left of", "organ_1") in found and not any(r == "face to" for _, r, _ in found), found
+    assert ("choirboy_1", "face to", "vicar_1") in rels(f"A choirboy {verb} to the vicar.")

@@ -5,6 +5,7 @@ hold, a carrier, a platform, hung overhead. A mixin of
 from __future__ import annotations
 
 from scenewright.analysis.parser.grammar import (
+    _HAND_VOLUME,
     _HANDHELD_SIZE,
     _LIVING,
     _PLATFORM_AREA,
@@ -14,7 +15,7 @@ from scenewright.analysis.parser.grammar import (
     _TOOL_SIZE,
 )
 from scenewright.analysis.parser.nouns import _Mention, _is_plural
-from scenewright.analysis.parser.vocabulary import load_vocabulary
+from scenewright.analysis.parser.vocabulary import GENERIC, load_vocabulary
 from scenewright.analysis.parser.words import _HANG_VERBS
 
 
@@ -61,17 +62,24 @@ class _Kinds:
         group = self.groups[g]
         return self._holdable(group.category, group.name, group.size, group.rests)
 
-    def _holdable(self, category: str, name: str, size, rests: str, tool: bool = False) -> bool:
+    def _holdable(
+        self, category: str, name: str, size, rests: str, tool: bool = False, used: bool = False
+    ) -> bool:
         """What :meth:`_handheld` says of a thing of this category, name, size and rest; with
         ``tool``, what a person works with in hand ("stirs it with a long paddle", "peers through
         a telescope"): up to ``_TOOL_SIZE`` long, and nothing one sits or rides on ("rows with a
-        canoe" is no paddle)."""
+        canoe" is no paddle); with ``used``, what a person has in hand while doing something with
+        it: a hand-sized thing, no bigger than ``_HAND_VOLUME`` ("inspects a lantern"; "inspects a
+        crate" is done by the crate), or one of unknown size ("reads a comic")."""
         if self._lives(category):
             return False
         if load_vocabulary().carried_by_hand(category, name):
             return True  # "ladies with parasols", "a singer with a microphone": one's own is the hand-held kind
         if tool:
             return max(size) <= _TOOL_SIZE and not load_vocabulary().carries(category, name, _RIDDEN)
+        # (a noun nobody listed has no size of its own to tell: "reads a comic")
+        if used and category != GENERIC and size[0] * size[1] * size[2] > _HAND_VOLUME:
+            return False
         return rests == "surface" or max(size) <= _HANDHELD_SIZE
 
     def _small(self, *groups: int) -> bool:

@@ -920,9 +920,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # (an animal has in hand what it plays with or eats: "a bear bangs a spoon")
             hand = k not in self.rel_at and bool(holder) and (
                 (w in _HAND_VERBS and self._person_at(holder[-1]))
-                or (w in _USE_VERBS and self._living(holder[-1]) and self._hand_object(k + 1, ce) is not None)
+                or (w in _USE_VERBS and self._living(holder[-1]) and self._used_object(k, ce) is not None)
                 # ("a vendor sells balloons": a person sells what they can hold from the hand)
-                or (w in _WARES_VERBS and self._person_at(holder[-1]) and self._hand_object(k + 1, ce) is not None)
+                or (w in _WARES_VERBS and self._person_at(holder[-1]) and self._used_object(k, ce) is not None)
                 or (self._person_at(holder[-1]) and self._used_at(k, ce))
             )
             # "sipping coffee from a paper cup", "practises with five clubs": in the doer's hand
@@ -1041,19 +1041,23 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     into = bool(c.deeds) and c.deed_end == last_event_end and any(
                         t.text in ("into", "onto") for t in toks[last_event_end : m.start]
                     )
+                    # "two boys fly a kite between the palms": what one flies is aloft, its flyer where the text says
+                    flown = verb_object and self._living(c.main[-1]) and any(
+                        t.text in _HANG_VERBS for t in toks[last_event_end : m.start]
+                    )
                     if into:
                         c.deeds[-1], c.deed_end = (c.deeds[-1][0], g), m.end
                     elif led:
                         follower, anchor = self._keeps_by(g, c.main[-1])
                         c.deeds.append(([follower], anchor))
-                    elif verb_object and self._living(c.main[-1]) and not c.expect_new:
+                    elif verb_object and self._living(c.main[-1]) and not c.expect_new and not flown:
                         c.deeds.append((list(c.main), g))
                         c.deed_end = m.end
                     small_object = verb_object and self._living(c.main[-1]) and self._small(g) and not c.expect_new
                     # "pulls a trailer of waving children past the pond": what the "of" after a
                     # phrase's target names is the target's load, not one the clause goes on about
                     load = phrase_end == m.start - len(m.adjectives) - 1 and toks[phrase_end].text == "of"
-                    if not (led or into or small_object or load):
+                    if not (led or into or small_object or load or flown):
                         c.main = [g] if c.expect_new or verb_object else [*c.main, g]
                     if not c.verb_seen:
                         c.subjects.append(g)
