@@ -556,3 +556,17 @@ def test_a_thing_flown_is_aloft_and_its_flyer_takes_the_place():
     found = rels("Three girls fly a drone beside the lighthouse.")
     assert ("girl_1", "side of", "lighthouse_1") in found, found
     assert not any(s == "girl_1" and t == "drone_1" for s, _, t in found), found
+
+
+def test_what_a_person_holds_or_grips_is_in_hand_only_when_a_person_could_carry_it():
+    found = rels("A deckhand grips the railing.")
+    assert ("deckhand_1", "near", "fence_1") in found and ("fence_1", "on", "deckhand_1") not in found, found
+    assert ("girl_1", "near", "wardrobe_1") in rels("A girl holds the wardrobe.")
+    assert ("ladder_1", "on", "painter_1") in rels("A painter carries a ladder.")  # long, of little bulk
+    assert ("sofa_1", "on", "porter_1") in rels("Two porters carry a sofa.")  # together
+
+
+def test_a_catalogue_word_the_vocabulary_sizes_smaller_is_in_hand_at_its_own_size():
+    """"A bust" is a statue, a hand high: in hand when clutched, examined or with its holder."""
+    assert ("statue_1", "on", "librarian_1") in rels("A librarian clutches a bust.")
+    assert ("statue_1", "on", "librarian_1") in rels("A librarian waits beside the desk, with a bust.")

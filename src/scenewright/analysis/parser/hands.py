@@ -9,6 +9,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from scenewright.analysis.parser.grammar import _COPULAS, _PERSON_POSSESSIVES, _RIDDEN
+from scenewright.analysis.parser.kinds import _handled
 from scenewright.analysis.parser.nouns import _Mention, _is_plural
 from scenewright.analysis.parser.phrases import _Rel
 from scenewright.analysis.parser.vocabulary import load_vocabulary
@@ -202,8 +203,11 @@ class _Hands:
         if m is None:
             return None
         record = m.guess if m.guess is not None else self.catalogue[m.category]
-        size = self.groups[m.group].size if m.group >= 0 else record.size
-        return m if self._holdable(m.category, m.phrase, size, record.rests, tool, used) else None
+        if m.group >= 0:
+            size, rests = self._handled_size(m.group)
+        else:
+            size, rests = _handled(m.phrase, m.guess is not None, record.size, record.rests)
+        return m if self._holdable(m.category, m.phrase, size, rests, tool, used) else None
 
     def _used_object(self, k: int, ce: int) -> _Mention | None:
         """What the verb at ``k`` has in hand, named right after it: a thing a person can carry

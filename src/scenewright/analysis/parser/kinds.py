@@ -5,6 +5,7 @@ hold, a carrier, a platform, hung overhead. A mixin of
 from __future__ import annotations
 
 from scenewright.analysis.parser.grammar import (
+    _CARRY_VOLUME,
     _HAND_VOLUME,
     _HANDHELD_SIZE,
     _LIVING,
@@ -17,6 +18,19 @@ from scenewright.analysis.parser.grammar import (
 from scenewright.analysis.parser.nouns import _Mention, _is_plural
 from scenewright.analysis.parser.vocabulary import GENERIC, load_vocabulary
 from scenewright.analysis.parser.words import _HANG_VERBS
+
+
+def _volume(size) -> float:
+    """m³ of a thing's box."""
+    return size[0] * size[1] * size[2]
+
+
+def _handled(name: str, guessed: bool, size, rests: str) -> tuple[tuple[float, float, float], str]:
+    """The size and rest of a thing named ``name`` as a hand takes it: a catalogue word the
+    vocabulary sizes smaller on its own is its kind's small one ("clutching a figurine": a statue
+    a hand high, no 2 m one)."""
+    own = None if guessed else load_vocabulary().match(tuple(name.split()[-1:]))
+    return (own.size, own.rests) if own is not None and _volume(own.size) < _volume(size) else (size, rests)
 
 
 class _Kinds:
@@ -59,8 +73,23 @@ class _Kinds:
     def _handheld(self, g: int) -> bool:
         """A thing a person carries with them: no living thing, and one that stands on tables or
         is small enough to hold ("a pickaxe", "a clipboard"), not "a man with a ladder"."""
+        size, rests = self._handled_size(g)
+        return self._holdable(self.groups[g].category, self.groups[g].name, size, rests)
+
+    def _carriable(self, g: int, h: int) -> bool:
+        """Whether the person or people ``h`` can carry the thing ``g`` in their hands or arms:
+        what they could have in hand or work with ("peers through a telescope"), or a long thing
+        of little bulk ("carries a ladder"); several people carry together what one cannot ("two
+        men carry a sofa"), not what one holds or grips ("grips the railing", "holds the sofa": by it)."""
         group = self.groups[g]
-        return self._holdable(group.category, group.name, group.size, group.rests)
+        size, rests = self._handled_size(g)
+        tool = self._holdable(group.category, group.name, size, rests, tool=True)
+        return self._handheld(g) or tool or _volume(size) <= _CARRY_VOLUME or self.groups[h].count > 1
+
+    def _handled_size(self, g: int) -> tuple[tuple[float, float, float], str]:
+        """The size and rest of the thing ``g`` as a hand takes it (:func:`_handled`)."""
+        group = self.groups[g]
+        return _handled(group.name, group.guessed, group.size, group.rests)
 
     def _holdable(
         self, category: str, name: str, size, rests: str, tool: bool = False, used: bool = False
@@ -78,7 +107,7 @@ class _Kinds:
         if tool:
             return max(size) <= _TOOL_SIZE and not load_vocabulary().carries(category, name, _RIDDEN)
         # (a noun nobody listed has no size of its own to tell: "reads a comic")
-        if used and category != GENERIC and size[0] * size[1] * size[2] > _HAND_VOLUME:
+        if used and category != GENERIC and _volume(size) > _HAND_VOLUME:
             return False
         return rests == "surface" or max(size) <= _HANDHELD_SIZE
 

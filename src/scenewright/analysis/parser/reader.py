@@ -1212,6 +1212,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     self._relate("on", [g], self.worked_at[h])
                     c.produced = True
                     continue
+                if (c.hold or held) and self._person_at(h) and not self._living(g) and not self._carriable(g, h):
+                    # ("a woman grips the railing", "a boy holds the wardrobe": too big to carry, by it)
+                    self._relate("near", [h], g)
+                    c.produced = True
+                    continue
                 if c.hold or held or (rests == "surface" and self.catalogue[self.groups[h].category].support):
                     self._relate("on", [g], h, instance=1 if g in c.others and self.groups[h].count > 1 else None)
                     c.produced = True
