@@ -570,3 +570,14 @@ def test_a_catalogue_word_the_vocabulary_sizes_smaller_is_in_hand_at_its_own_siz
     """"A bust" is a statue, a hand high: in hand when clutched, examined or with its holder."""
     assert ("statue_1", "on", "librarian_1") in rels("A librarian clutches a bust.")
     assert ("statue_1", "on", "librarian_1") in rels("A librarian waits beside the desk, with a bust.")
+
+
+def test_one_who_works_on_something_in_a_container_is_by_it_not_in_it():
+    found = rels("A cook rinses cups in the sink.")
+    assert ("cook_1", "near", "sink_1") in found and ("cook_1", "on", "sink_1") not in found, found
+    # (a seat holds whoever works in it; with no object, one is in the tub)
+    assert ("grandpa_1", "on", "armchair_1") in rels("A grandpa reads a book in the armchair.")
+    assert ("boy_1", "on", "bathtub_1") in rels("A boy splashes in a tub.")
+    # a phrase on a person after it places the worker, not the tub
+    found = rels("The baker kneads dough, while his son scrubs pans in a tub beside him.")
+    assert {("son_1", "near", "bathtub_1"), ("son_1", "side of", "baker_1")} <= found, found

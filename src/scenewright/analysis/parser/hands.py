@@ -111,15 +111,21 @@ class _Hands:
             return w is not None and _verb_stem(w, _RECORD_VERBS)
         return not (_verb_stem(w, _PUT_OR_WORKED) or self._still(w))
 
-    def _works_on(self, k: int, target) -> bool:
+    def _works_on(self, k: int, target, inside: bool = False) -> bool:
         """Whether a person's verb "on" a thing that carries nobody, at ``k``, is work done at it,
         not standing on it ("a chef slices bread on a board", "two mechanics work on the engine";
         but "reads a book on the bench": a seat, "stands on a crate": a posture, "stretch on mats": a
-        cover on the ground)."""
+        cover on the ground); with ``inside``, "in" it, when the verb acts on something there and
+        it is no seat, vehicle or perch ("rinses rice in a tub", "washes shirts in the sink"; not
+        "splashes in a tub", "reads a book in the armchair")."""
         w = self._acting_verb(k)
+        if inside and (w is None or self.toks[k - 1].text == w):
+            return False
+        # (what one is "in" while working: a seat, a vehicle, a perch; not a tub or a pen)
+        kinds = ("seats", "vehicles", "mounts", "perches") if inside else None
         # (a cover on the ground carries whoever is on it: "two girls stretch on mats")
         carrier = isinstance(target, list) and target and (
-            self._carrier(target[0]) or self.catalogue[self.groups[target[0]].category].shape == "rug"
+            self._carrier(target[0], kinds) or self.catalogue[self.groups[target[0]].category].shape == "rug"
         )
         return w is not None and isinstance(target, list) and bool(target) and not carrier and not self._still(w)
 

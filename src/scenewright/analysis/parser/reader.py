@@ -1358,6 +1358,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 p.riders = list(rider)  # "stands at a lectern on a low stage": both are on the stage
             elif self._sits_on_instead(c, rider, p):
                 srcs = list(rider)  # "a troll sits beneath the bridge on a boulder": he is on it, not the bridge
+            elif self._placed_by_person(c, p, rider):
+                srcs = list(rider)  # "his apprentice rinses rice in a tub beside him": he is beside him, not the tub
             each = target == "each one" or (
                 isinstance(target, list) and getattr(self.by_start.get(self._target_start), "each", False)
             )
@@ -1476,9 +1478,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # "two dogs watch the flock across from them": the flock is across from the dogs;
                 # "they queue at a kiosk across from it": the kiosk (no kiosk is across from itself)
                 srcs = [acted] if acted is not None else list(c.last_target)
-        if kind == "on" and srcs and all(self._person_at(g) for g in srcs) and (
-            self._pair_before(rel.start) or self._works_on(rel.start, target)
-        ):  # "a girl writes on the blackboard", "a chef slices bread on a board": at it, not on it
+        if kind in ("on", "in") and srcs and all(self._person_at(g) for g in srcs) and (
+            kind == "on" and self._pair_before(rel.start) or self._works_on(rel.start, target, inside=kind == "in")
+        ):  # "a girl writes on the blackboard", "a chef slices bread on a board", "rinses rice in a
+            # tub": at it, not on or in it
             kind = "near"
         # ("guide a hose from it into a tank": what runs from one to the other is between them, the doers by it)
         span = kind == "from" and self._from_to(rel.end, set(self.by_start))
@@ -1493,6 +1496,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             kind = "near"  # "a girl fills a jug at the pump": by what she fills, not in it
         p.kind, p.srcs = kind, srcs
         return None
+
+    def _placed_by_person(self, c: _Clause, p: _Phrase, rider: list[int]) -> bool:
+        """Whether a phrase chained on a lifeless thing the last phrase put a person by (``near``:
+        one works at it) places that person instead: its target is a person named by a pronoun, no
+        body part of theirs ("rinses rice in a tub beside him": the rinser is beside him; "a reel in
+        his hands" is his; "soldiers stand on the shelf behind him": the shelf is)."""
+        people = bool(c.last_srcs) and all(g in rider and self._person_at(g) for g in c.last_srcs)
+        lifeless = not any(self._living(t) for t in c.last_target)
+        return p.target in _PERSONAL and p.body is None and c.last_kind == "near" and people and lifeless
 
     def _doer_seated(self, c: _Clause, acted: int, seat: int) -> bool:
         """Whether "on" a seat after an animal acted on puts the person who acts on the seat: the
