@@ -538,3 +538,55 @@ def test_what_is_worked_on_a_host_one_stands_at_lies_on_it():
     assert {("clerk_1", "near", "counter_1"), ("letter_1", "on", "counter_1")} <= found
     assert ("horseshoe_1", "on", "anvil_1") in rels("A blacksmith strikes a glowing horseshoe on an anvil.")
     assert ("knife_1", "on", "cook_1") in rels("A cook sharpens a knife on a whetstone.")
+
+
+@pytest.mark.parametrize(
+    "text, doer, thing",
+    [
+        ("A porter checks a trunk.", "porter_1", "trunk_1"),  # a verb of work, a thing one could carry
+        ("Two sailors scrub a keg.", "sailor_1", "barrel_1"),
+        ("An old smith studies the cauldron.", "smith_1", "cauldron_1"),
+        ("Three nuns clean a washing machine.", "nun_1", "washing_machine_1"),  # "clean" as a verb, no describing word
+    ],
+)
+def test_a_thing_too_big_for_the_hand_is_worked_on_where_it_stands(text, doer, thing):
+    found = rels(text)
+    assert (doer, "near", thing) in found and (thing, "on", doer) not in found, found
+
+
+def test_a_verb_of_carrying_takes_up_what_a_person_can_carry_and_no_more():
+    assert ("trunk_1", "on", "porter_1") in rels("A porter hoists a trunk.")
+    assert ("barrel_1", "on", "sailor_1") in rels("A sailor lugs a keg down the gangway.")
+    # a hand-sized thing is in hand whatever the verb
+    assert ("lantern_1", "on", "smith_1") in rels("An old smith studies a lantern.")
+
+
+def test_a_thing_flown_is_aloft_and_its_flyer_takes_the_place():
+    found = rels("Three girls fly a drone beside the lighthouse.")
+    assert ("girl_1", "side of", "lighthouse_1") in found, found
+    assert not any(s == "girl_1" and t == "drone_1" for s, _, t in found), found
+
+
+def test_what_a_person_holds_or_grips_is_in_hand_only_when_a_person_could_carry_it():
+    found = rels("A deckhand grips the railing.")
+    assert ("deckhand_1", "near", "fence_1") in found and ("fence_1", "on", "deckhand_1") not in found, found
+    assert ("girl_1", "near", "wardrobe_1") in rels("A girl holds the wardrobe.")
+    assert ("ladder_1", "on", "painter_1") in rels("A painter carries a ladder.")  # long, of little bulk
+    assert ("sofa_1", "on", "porter_1") in rels("Two porters carry a sofa.")  # together
+
+
+def test_a_small_likeness_is_in_hand_at_its_own_size():
+    """"A bust" is a statue a hand high: in hand when clutched, examined or with its holder."""
+    assert ("bust_1", "on", "librarian_1") in rels("A librarian clutches a bust.")
+    assert ("bust_1", "on", "librarian_1") in rels("A librarian waits beside the desk, with a bust.")
+
+
+def test_one_who_works_on_something_in_a_container_is_by_it_not_in_it():
+    found = rels("A cook rinses cups in the sink.")
+    assert ("cook_1", "near", "sink_1") in found and ("cook_1", "on", "sink_1") not in found, found
+    # (a seat holds whoever works in it; with no object, one is in the tub)
+    assert ("grandpa_1", "on", "armchair_1") in rels("A grandpa reads a book in the armchair.")
+    assert ("boy_1", "on", "bathtub_1") in rels("A boy splashes in a tub.")
+    # a phrase on a person after it places the worker, not the tub
+    found = rels("The baker kneads dough, while his son scrubs pans in a tub beside him.")
+    assert {("son_1", "near", "bathtub_1"), ("son_1", "side of", "baker_1")} <= found, found

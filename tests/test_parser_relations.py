@@ -1309,3 +1309,11 @@ def test_a_formation_named_again_is_the_group_set_out_in_it():
     """"A sheepdog lies on top of the stack" after "a stack of hay bales": on its top bale."""
     found = rels("A tractor is parked beside a stack of hay bales, and a sheepdog lies on top of the stack.")
     assert ("dog_1", "on", "hay_bale_3") in found
+
+
+@pytest.mark.parametrize("verb", ["sings", "reads", "waves", "listens"])
+def test_a_side_phrase_after_a_verb_is_where_the_doer_is(verb):
+    """"Sings to the left of the organ": no addressee, the side the singer stands on."""
+    found = rels(f"A choirboy {verb} to the left of the organ.")
+    assert ("choirboy_1", "left of", "organ_1") in found and not any(r == "face to" for _, r, _ in found), found
+    assert ("choirboy_1", "face to", "vicar_1") in rels(f"A choirboy {verb} to the vicar.")

@@ -61,7 +61,10 @@ Decisions worth knowing:
   N ≤ 2, ``far`` when N > 8.
 - People and animals (``hands``): what one uses, works with or takes from is in hand, ``on`` the
   holder, when small enough to hold ("eats a sandwich", "practises with five clubs", "sipping
-  coffee from a paper cup", "a glass in one hand", "baskets on their backs"); the holder takes the
+  coffee from a paper cup", "a glass in one hand", "baskets on their backs"): hand-sized (a box of
+  at most 0.06 m³) for any verb, anything a person can carry for a verb of taking up in one's arms
+  ("hoists a trunk"), so "examines a crate" is done by the crate (``near``); what one holds or grips
+  that nobody could carry one stands by ("grips the railing"); the holder takes the
   next place phrase ("lifts a barbell next to the bales"), a seat or a perch carrying them and
   anything else worked at (``near``: "sharpen their spears on a grindstone"). A doer stands
   ``near`` what it acts on ("plays it", "scrubs its back", "forks straw into it", "pushes the front

@@ -114,6 +114,15 @@ _PERSONAL = ("him", "her", "himself", "herself", "someone")
 _PERSON_POSSESSIVES = {"his": "him", "her": "her", "their": "them living", "my": "him", "your": "him"}
 #: The longest side (m) of a thing a person has in hand when the text says "with" ("a wheel gun").
 _HANDHELD_SIZE = 1.1
+#: Room (m³, of its box) a thing takes at most to be hand-sized: what a person has in hand while
+#: doing something with it ("plays a guitar", "inspects a lantern"); a bigger thing they could
+#: carry (a crate, a barrel, a cauldron) is worked on where it stands ("cleans a barrel": by it)
+#: unless a verb of carrying takes it up ("carries a crate", "two men haul a trunk").
+_HAND_VOLUME = 0.06
+#: Room (m³, of its box) at most of a thing longer than ``_HANDHELD_SIZE`` that a person can still
+#: carry (a ladder, a sign, a sled); what a person holds or grips that is bigger (a sofa, a
+#: railing) they stand by.
+_CARRY_VOLUME = 0.25
 #: The longest side (m) of a tool a person works with in hand ("a long paddle", "a telescope").
 _TOOL_SIZE = 1.6
 #: Depth (m) at most of a board or a frame that hangs or leans rather than stands.

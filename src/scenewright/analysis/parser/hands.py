@@ -14,6 +14,8 @@ from scenewright.analysis.parser.phrases import _Rel
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import (
     _AIM_VERBS,
+    _BEAR_VERBS,
+    _DEFINITE,
     _DETERMINERS,
     _GIVE_VERBS,
     _HAND_PAIRS,
@@ -108,15 +110,21 @@ class _Hands:
             return w is not None and _verb_stem(w, _RECORD_VERBS)
         return not (_verb_stem(w, _PUT_OR_WORKED) or self._still(w))
 
-    def _works_on(self, k: int, target) -> bool:
+    def _works_on(self, k: int, target, inside: bool = False) -> bool:
         """Whether a person's verb "on" a thing that carries nobody, at ``k``, is work done at it,
         not standing on it ("a chef slices bread on a board", "two mechanics work on the engine";
         but "reads a book on the bench": a seat, "stands on a crate": a posture, "stretch on mats": a
-        cover on the ground)."""
+        cover on the ground); with ``inside``, "in" it, when the verb acts on something there and
+        it is no seat, vehicle or perch ("rinses rice in a tub", "washes shirts in the sink"; not
+        "splashes in a tub", "reads a book in the armchair")."""
         w = self._acting_verb(k)
+        if inside and (w is None or self.toks[k - 1].text == w):
+            return False
+        # (what one is "in" while working: a seat, a vehicle, a perch; not a tub or a pen)
+        kinds = ("seats", "vehicles", "mounts", "perches") if inside else None
         # (a cover on the ground carries whoever is on it: "two girls stretch on mats")
         carrier = isinstance(target, list) and target and (
-            self._carrier(target[0]) or self.catalogue[self.groups[target[0]].category].shape == "rug"
+            self._carrier(target[0], kinds) or self.catalogue[self.groups[target[0]].category].shape == "rug"
         )
         return w is not None and isinstance(target, list) and bool(target) and not carrier and not self._still(w)
 
@@ -147,7 +155,8 @@ class _Hands:
             return False
         verb = w.endswith("ing") or _is_verb(w) or self._finite_at(k)
         # (what one aims is a tool or a weapon, as long as a pitchfork)
-        return verb and w not in _HANG_VERBS and self._hand_object(k + 1, ce, tool=aimed) is not None
+        held = self._hand_object(k + 1, ce, tool=True) if aimed else self._used_object(k, ce)
+        return verb and w not in _HANG_VERBS and held is not None
 
     def _one_thing_after(self, k: int, ce: int) -> bool:
         """The noun phrase right after ``k`` names one thing ("a trunk", not "trunks", "two trunks"
@@ -191,15 +200,25 @@ class _Hands:
             and max(thing.size) < 0.5 * max(animal.size)
         )  # fmt: skip
 
-    def _hand_object(self, start: int, ce: int, tool: bool = False) -> _Mention | None:
+    def _hand_object(self, start: int, ce: int, tool: bool = False, used: bool = False) -> _Mention | None:
         """The thing named right after ``start`` when a person can have it in hand (with ``tool``,
-        one they work with): "eats a sandwich"."""
+        one they work with; with ``used``, one they have in hand while doing something with it:
+        "eats a sandwich")."""
         m = self._next_mention(start, ce)
         if m is None:
             return None
-        record = m.guess if m.guess is not None else self.catalogue[m.category]
-        size = self.groups[m.group].size if m.group >= 0 else record.size
-        return m if self._holdable(m.category, m.phrase, size, record.rests, tool) else None
+        if m.group >= 0:
+            size, rests = self.groups[m.group].size, self.groups[m.group].rests
+        else:
+            record = m.guess if m.guess is not None else self.catalogue[m.category]
+            size, rests = record.size, record.rests
+        return m if self._holdable(m.category, m.phrase, size, rests, tool, used) else None
+
+    def _used_object(self, k: int, ce: int) -> _Mention | None:
+        """What the verb at ``k`` has in hand, named right after it: a thing a person can carry
+        after a verb of taking it up in one's arms ("lifts a crate"), a hand-sized one after any
+        other ("eats a sandwich", "plays a guitar"; "cleans a barrel" is done by the barrel)."""
+        return self._hand_object(k + 1, ce, used=not _verb_stem(self.toks[k].text, _BEAR_VERBS))
 
     def _next_mention(self, start: int, ce: int) -> _Mention | None:
         """The noun phrase right after ``start``, past its determiners and describing words."""
@@ -278,8 +297,12 @@ class _Hands:
         after a noun phrase that is no phrase word, no noun and no describing word."""
         w = self.toks[j].text
         # ("feed", "weed" end as past participles do, "play", "carry" as "rusty" does, but are no
-        # describing words)
-        describing = load_vocabulary().is_adjective(w) and not w.endswith("eed") and w not in _DEED_VERBS
+        # describing words; "two elves clean a crate", "they empty the nets": a describing word
+        # in its plain form right before an article or a possessive is a verb, where a participle
+        # still describes: "lasts lining a shelf")
+        nxt = self.toks[j + 1].text if j + 1 < len(self.toks) else ""
+        acts = (nxt in _DEFINITE or nxt in ("a", "an")) and not w.endswith(("ing", "ed"))
+        describing = load_vocabulary().is_adjective(w) and not w.endswith("eed") and w not in _DEED_VERBS and not acts
         verb = w not in _STOP or _is_verb(w)  # ("sits", "stands" are stop words of noun phrases)
         return j in self.ends and j not in self.by_start and w.isalpha() and verb and not describing
 

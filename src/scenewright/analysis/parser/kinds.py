@@ -5,6 +5,8 @@ hold, a carrier, a platform, hung overhead. A mixin of
 from __future__ import annotations
 
 from scenewright.analysis.parser.grammar import (
+    _CARRY_VOLUME,
+    _HAND_VOLUME,
     _HANDHELD_SIZE,
     _LIVING,
     _PLATFORM_AREA,
@@ -14,8 +16,13 @@ from scenewright.analysis.parser.grammar import (
     _TOOL_SIZE,
 )
 from scenewright.analysis.parser.nouns import _Mention, _is_plural
-from scenewright.analysis.parser.vocabulary import load_vocabulary
+from scenewright.analysis.parser.vocabulary import GENERIC, load_vocabulary
 from scenewright.analysis.parser.words import _HANG_VERBS
+
+
+def _volume(size) -> float:
+    """m³ of a thing's box."""
+    return size[0] * size[1] * size[2]
 
 
 class _Kinds:
@@ -61,17 +68,33 @@ class _Kinds:
         group = self.groups[g]
         return self._holdable(group.category, group.name, group.size, group.rests)
 
-    def _holdable(self, category: str, name: str, size, rests: str, tool: bool = False) -> bool:
+    def _carriable(self, g: int, h: int) -> bool:
+        """Whether the person or people ``h`` can carry the thing ``g`` in their hands or arms:
+        what they could have in hand or work with ("peers through a telescope"), or a long thing
+        of little bulk ("carries a ladder"); several people carry together what one cannot ("two
+        men carry a sofa"), not what one holds or grips ("grips the railing", "holds the sofa": by it)."""
+        group = self.groups[g]
+        tool = self._holdable(group.category, group.name, group.size, group.rests, tool=True)
+        return self._handheld(g) or tool or _volume(group.size) <= _CARRY_VOLUME or self.groups[h].count > 1
+
+    def _holdable(
+        self, category: str, name: str, size, rests: str, tool: bool = False, used: bool = False
+    ) -> bool:
         """What :meth:`_handheld` says of a thing of this category, name, size and rest; with
         ``tool``, what a person works with in hand ("stirs it with a long paddle", "peers through
         a telescope"): up to ``_TOOL_SIZE`` long, and nothing one sits or rides on ("rows with a
-        canoe" is no paddle)."""
+        canoe" is no paddle); with ``used``, what a person has in hand while doing something with
+        it: a hand-sized thing, no bigger than ``_HAND_VOLUME`` ("inspects a lantern"; "inspects a
+        crate" is done by the crate), or one of unknown size ("reads a comic")."""
         if self._lives(category):
             return False
         if load_vocabulary().carried_by_hand(category, name):
             return True  # "ladies with parasols", "a singer with a microphone": one's own is the hand-held kind
         if tool:
             return max(size) <= _TOOL_SIZE and not load_vocabulary().carries(category, name, _RIDDEN)
+        # (a noun nobody listed has no size of its own to tell: "reads a comic")
+        if used and category != GENERIC and _volume(size) > _HAND_VOLUME:
+            return False
         return rests == "surface" or max(size) <= _HANDHELD_SIZE
 
     def _small(self, *groups: int) -> bool:

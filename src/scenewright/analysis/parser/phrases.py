@@ -130,8 +130,25 @@ def _qualifies_noun(toks: list[_Tok], end: int, kind: str) -> bool:
 _ARTICLES = (_DEFINITE - {"her", "that"}) | {"a", "an", "another"}
 
 
-def _find_relations(toks: list[_Tok], taken: set[int]) -> list[_Rel]:
+#: Kinds of phrase that name a side of their target ("to the right of", "at her left", "to
+#: either side of"): one that opens on the last word of another phrase is the place, and the
+#: other no phrase ("reads to the right of the cannon": nobody reads to a side).
+_SIDE_KINDS = {"left of", "right of", "left", "right", "its left", "its right", "side of", "flank", "flank elliptic"}
+
+
+def _listed_at(toks: list[_Tok], i: int, taken: set[int]) -> _Rel | None:
+    """The longest listed phrase that starts at ``i`` and overlaps no phrase already found."""
     table = _phrase_table()
+    for length in range(min(_MAX_REL, len(toks) - i), 0, -1):
+        if any(k in taken for k in range(i, i + length)):
+            continue
+        key = tuple(t.text for t in toks[i : i + length])
+        if key in table and not _qualifies_noun(toks, i + length, table[key]):
+            return _Rel(table[key], i, i + length)
+    return None
+
+
+def _find_relations(toks: list[_Tok], taken: set[int]) -> list[_Rel]:
     rels: list[_Rel] = []
     i = 0
     while i < len(toks):
@@ -139,13 +156,10 @@ def _find_relations(toks: list[_Tok], taken: set[int]) -> list[_Rel]:
             i += 1
             continue
         hit = _distance_at(toks, i) or _rows_at(toks, i)
-        for length in range(min(_MAX_REL, len(toks) - i), 0, -1):
-            if hit or any(k in taken for k in range(i, i + length)):
-                continue
-            key = tuple(t.text for t in toks[i : i + length])
-            if key in table and not _qualifies_noun(toks, i + length, table[key]):
-                hit = _Rel(table[key], i, i + length)
-                break
+        if hit is None and (hit := _listed_at(toks, i, taken)) is not None and hit.end - hit.start > 1:
+            side = _listed_at(toks, hit.end - 1, taken)
+            if side is not None and side.kind in _SIDE_KINDS:
+                hit = side  # "reads to the right of", "waves at her left": the side phrase
         if hit:
             rels.append(hit)
             i = hit.end

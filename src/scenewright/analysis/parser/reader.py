@@ -947,9 +947,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # (an animal has in hand what it plays with or eats: "a bear bangs a spoon")
             hand = k not in self.rel_at and bool(holder) and (
                 (w in _HAND_VERBS and self._person_at(holder[-1]))
-                or (w in _USE_VERBS and self._living(holder[-1]) and self._hand_object(k + 1, ce) is not None)
+                or (w in _USE_VERBS and self._living(holder[-1]) and self._used_object(k, ce) is not None)
                 # ("a vendor sells balloons": a person sells what they can hold from the hand)
-                or (w in _WARES_VERBS and self._person_at(holder[-1]) and self._hand_object(k + 1, ce) is not None)
+                or (w in _WARES_VERBS and self._person_at(holder[-1]) and self._used_object(k, ce) is not None)
                 or (self._person_at(holder[-1]) and self._used_at(k, ce))
             )
             # "sipping coffee from a paper cup", "practises with five clubs": in the doer's hand
@@ -1069,19 +1069,23 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     into = bool(c.deeds) and c.deed_end == last_event_end and any(
                         t.text in ("into", "onto") for t in toks[last_event_end : m.start]
                     )
+                    # "two boys fly a kite between the palms": what one flies is aloft, its flyer where the text says
+                    flown = verb_object and self._living(c.main[-1]) and any(
+                        t.text in _HANG_VERBS for t in toks[last_event_end : m.start]
+                    )
                     if into:
                         c.deeds[-1], c.deed_end = (c.deeds[-1][0], g), m.end
                     elif led:
                         follower, anchor = self._keeps_by(g, c.main[-1])
                         c.deeds.append(([follower], anchor))
-                    elif verb_object and self._living(c.main[-1]) and not c.expect_new:
+                    elif verb_object and self._living(c.main[-1]) and not c.expect_new and not flown:
                         c.deeds.append((list(c.main), g))
                         c.deed_end = m.end
                     small_object = verb_object and self._living(c.main[-1]) and self._small(g) and not c.expect_new
                     # "pulls a trailer of waving children past the pond": what the "of" after a
                     # phrase's target names is the target's load, not one the clause goes on about
                     load = phrase_end == m.start - len(m.adjectives) - 1 and toks[phrase_end].text == "of"
-                    if not (led or into or small_object or load):
+                    if not (led or into or small_object or load or flown):
                         c.main = [g] if c.expect_new or verb_object else [*c.main, g]
                     if not c.verb_seen:
                         c.subjects.append(g)
@@ -1238,6 +1242,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     self._relate("on", [g], self.worked_at[h])
                     c.produced = True
                     continue
+                if (c.hold or held) and self._person_at(h) and not self._living(g) and not self._carriable(g, h):
+                    # ("a woman grips the railing", "a boy holds the wardrobe": too big to carry, by it)
+                    self._relate("near", [h], g)
+                    c.produced = True
+                    continue
                 if c.hold or held or (rests == "surface" and self.catalogue[self.groups[h].category].support):
                     self._relate("on", [g], h, instance=1 if g in c.others and self.groups[h].count > 1 else None)
                     c.produced = True
@@ -1386,6 +1395,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 p.riders = list(rider)  # "stands at a lectern on a low stage": both are on the stage
             elif self._sits_on_instead(c, rider, p):
                 srcs = list(rider)  # "a troll sits beneath the bridge on a boulder": he is on it, not the bridge
+            elif self._placed_by_person(c, p, rider):
+                srcs = list(rider)  # "his apprentice rinses rice in a tub beside him": he is beside him, not the tub
             each = target == "each one" or (
                 isinstance(target, list) and getattr(self.by_start.get(self._target_start), "each", False)
             )
@@ -1507,9 +1518,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # "two dogs watch the flock across from them": the flock is across from the dogs;
                 # "they queue at a kiosk across from it": the kiosk (no kiosk is across from itself)
                 srcs = [acted] if acted is not None else list(c.last_target)
-        if kind == "on" and srcs and all(self._person_at(g) for g in srcs) and (
-            self._pair_before(rel.start) or self._works_on(rel.start, target)
-        ):  # "a girl writes on the blackboard", "a chef slices bread on a board": at it, not on it
+        if kind in ("on", "in") and srcs and all(self._person_at(g) for g in srcs) and (
+            kind == "on" and self._pair_before(rel.start) or self._works_on(rel.start, target, inside=kind == "in")
+        ):  # "a girl writes on the blackboard", "a chef slices bread on a board", "rinses rice in a
+            # tub": at it, not on or in it
             kind = "near"
         # ("guide a hose from it into a tank": what runs from one to the other is between them, the doers by it)
         span = kind == "from" and self._from_to(rel.end, set(self.by_start))
@@ -1538,6 +1550,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     self.in_hand = [pair for pair in self.in_hand if pair != (g, h)]
                     self.relations = [r for r in self.relations if r[:3] != ("on", g, h)]
             self._relate("on", [g], host)
+
+    def _placed_by_person(self, c: _Clause, p: _Phrase, rider: list[int]) -> bool:
+        """Whether a phrase chained on a lifeless thing the last phrase put a person by (``near``:
+        one works at it) places that person instead: its target is a person named by a pronoun, no
+        body part of theirs ("rinses rice in a tub beside him": the rinser is beside him; "a reel in
+        his hands" is his; "soldiers stand on the shelf behind him": the shelf is)."""
+        people = bool(c.last_srcs) and all(g in rider and self._person_at(g) for g in c.last_srcs)
+        lifeless = not any(self._living(t) for t in c.last_target)
+        return p.target in _PERSONAL and p.body is None and c.last_kind == "near" and people and lifeless
 
     def _doer_seated(self, c: _Clause, acted: int, seat: int) -> bool:
         """Whether "on" a seat after an animal acted on puts the person who acts on the seat: the

@@ -114,6 +114,10 @@ _HOLD_PAIRS = {("loaded", "with"), ("laden", "with"), ("topped", "with"), ("set"
 _HAND_VERBS = {"waves", "waving", "wields", "wielding", "brandishes", "brandishing", "clutches", "clutching",
                "grips", "gripping", "clasps", "clasping", "swinging", "twirls", "twirling", "raises",
                "raising", "juggle", "juggles", "juggling"}  # fmt: skip
+#: Verbs of taking a thing up in one's arms, by their stem (:func:`_verb_stem`): what they take is
+#: in arms whenever a person can carry it ("lifts a crate", "two men haul a trunk", "hugs a
+#: pillow"), where other verbs have in hand only a hand-sized thing ("examines a crate": by it).
+_BEAR_VERBS = {"lift", "hoist", "heave", "haul", "lug", "tote", "shoulder", "hug", "cradle", "cuddle", "embrace"}
 #: Verbs of taking an animal along ("a man walks a dachshund beside the van"): the animal keeps by
 #: its person, whom what follows places.
 #: Verbs of going or of taking something somewhere: what follows "to" after them is where one goes
