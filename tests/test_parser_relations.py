@@ -1317,3 +1317,8 @@ def test_a_side_phrase_after_a_verb_is_where_the_doer_is(verb):
     found = rels(f"A choirboy {verb} to the left of the organ.")
     assert ("choirboy_1", "left of", "organ_1") in found and not any(r == "face to" for _, r, _ in found), found
     assert ("choirboy_1", "face to", "vicar_1") in rels(f"A choirboy {verb} to the vicar.")
+
+
+def test_along_both_sides_of_a_thing_flanks_it():
+    found = rels("A long fire pit burns in the hall, with benches running along both sides of it.")
+    assert {("bench_1", "left of", "campfire_1"), ("bench_2", "right of", "campfire_1")} <= found
