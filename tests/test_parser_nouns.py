@@ -1277,3 +1277,11 @@ def test_a_body_word_makes_a_creature_and_a_holding_with_thing_a_person():
     assert ("princess_1", "side of", "tsarevich_1") in {(r.source, r.relation, r.target) for r in sleigh.relations}
     cart = {(r.source, r.relation, r.target) for r in parse_scene("A cart with two farmers waits by the gate.").relations}
     assert ("farmer_1", "on", "cart_1") in cart
+
+
+def test_an_adverb_between_a_subject_and_its_verb_names_no_kind():
+    """"An old windmill still turns": a windmill, no "windmill still"; "a copper still bubbles" is a still."""
+    assert [o.name for o in parse_scene("An old windmill still turns on the hill.").objects] == ["windmill"]
+    assert [o.name for o in parse_scene("A kettle now whistles on the stove.").objects] == ["kettle", "stove"]
+    assert [o.name for o in parse_scene("A dusty church organ still stands in the corner.").objects] == ["church organ"]
+    assert [o.name for o in parse_scene("A copper still bubbles in the corner.").objects] == ["still"]

@@ -245,6 +245,13 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             if nxt[1] - nxt[0] == 1 and not toks[nxt[0]].text.endswith("s"):
                 raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])  # "sheep graze by the wall": their verb
                 nxt = None
+        if nxt and nxt[0] == e and nxt[1] - nxt[0] == 1 and toks[e].text in _ADVERBS_OF_TIME and nxt[1] < n and (
+            words[-1] not in vocabulary.adjectives  # ("a copper still bubbles": a still)
+        ) and (
+            _is_verb(toks[nxt[1]].text) or toks[nxt[1]].text in _FINITE
+        ):  # "an old windmill still turns": an adverb, no distiller's still
+            raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])
+            nxt = None
         if nxt and nxt[0] == e and singular(head) == head:
             last = toks[nxt[1] - 1].text
             if singular(last) != last and _plural_is_verb(toks, s, nxt):  # "a knight guards the gate": a verb
@@ -983,6 +990,8 @@ def _names_kind(toks: list[_Tok], e: int) -> bool:
         return False  # "a farmer and his son wade into the pond"
     if e + 2 < len(toks) and (toks[e + 1].text, toks[e + 2].text) in (("each", "other"), ("one", "another")):
         return False  # "a nurse and a doctor face each other": only a subject of two does it, so a verb
+    if w in _ADVERBS_OF_TIME and not t.joined:
+        return False  # "a church organ still stands there": an adverb, no "organ still"
     if t.joined or (w in load_vocabulary().not_things and singular(w) == w and w not in _FINITE):
         return True  # "camel-hair tents", "a bear face"
     if w in _IRREGULAR_PARTICIPLES:
@@ -993,6 +1002,9 @@ def _names_kind(toks: list[_Tok], e: int) -> bool:
     )  # fmt: skip
 
 
+#: Adverbs without "-ly" that come between a subject and its verb ("the organ still stands").
+_ADVERBS_OF_TIME = {"still", "now", "always", "often", "also", "already", "never", "soon", "sometimes", "ever",
+                    "once", "together", "alone", "too", "again", "yet"}  # fmt: skip
 #: Words that open the setting's contents after a place word ("a hangar with...", "a hangar where...").
 _PLACE_OPENERS = {"with", "where", "full", "filled", "housing", "containing", "holding", "packed", "crammed"}
 _INSIDE = {"in", "inside", "within", "into", "throughout"}
@@ -1275,8 +1287,10 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             plural_form = x in _FINITE and not x.endswith("s") and w in ("a", "an", "another")
             if j > i + 1 and not plural and (_is_verb(x) and not plural_form or _plural_verb(toks, j) or _joint_verb_at(toks, j)):
                 break  # "a ladder stands", "two mechanics on a scissor lift work on its joint"
-            if head is not None and x in _PLACE_ADVERBS:
-                break  # "a lantern hangs from a beam overhead": where, not a kind of beam
+            adverb = x in _ADVERBS_OF_TIME and head is not None and not vocabulary.is_adjective(toks[head].text)
+            if head is not None and (x in _PLACE_ADVERBS or adverb):
+                break  # "a lantern hangs from a beam overhead", "an old windmill still turns": no kind of it
+                # (after a describing word it is the noun: "a copper still bubbles")
             ends = j + 1 >= n or toks[j + 1].text in _STOP or not toks[j + 1].text[:1].isalpha()
             # "a sake brewery drawn as a print": a place word is no describing word before its participle
             describing = head is not None and vocabulary.is_adjective(toks[head].text) and (
