@@ -1285,3 +1285,9 @@ def test_an_adverb_between_a_subject_and_its_verb_names_no_kind():
     assert [o.name for o in parse_scene("A kettle now whistles on the stove.").objects] == ["kettle", "stove"]
     assert [o.name for o in parse_scene("A dusty church organ still stands in the corner.").objects] == ["church organ"]
     assert [o.name for o in parse_scene("A copper still bubbles in the corner.").objects] == ["still"]
+
+
+def test_the_inverted_subject_after_a_fronted_place_phrase_is_a_thing():
+    """"Above the sleigh flies the Firebird": a thing nobody listed, named with "the" after its verb."""
+    parsed = parse_scene("Above the sleigh flies the Firebird.")
+    assert ("firebird_1", "above", "sled_1") in {(r.source, r.relation, r.target) for r in parsed.relations}

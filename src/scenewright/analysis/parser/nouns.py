@@ -1352,7 +1352,9 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         by = _placed_by(toks, i, (_BY_KINDS - {"near"}) | {"above"}) or _outside_part_of(toks, i)
         by = by and not _named_before(toks, head)
         by = by and (j >= n or toks[j].text not in ("one", "ones"))
-        if definite and entry.category != "figure" and not placed and not put and not by:
+        # "Above the sleigh flies the Firebird": the subject a fronted place phrase puts after its verb
+        inverted = w == "the" and i > 0 and _inverted_subject(toks, i - 1) and (j >= n or not toks[j].text[:1].isalpha())
+        if definite and entry.category != "figure" and not placed and not put and not by and not inverted:
             continue  # "the far end", "her turn": after "the" or "her", only a person is read, a
             # subject that opens a clause standing somewhere ("The periscope rises in the middle"),
             # or what a thing is put by ("a horse waits beside the bunkhouse")
@@ -1388,6 +1390,16 @@ def _shares_article(toks: list[_Tok], i: int, covered: set[int]) -> bool:
     after = toks[i + 2].text
     word = toks[i + 1].text
     return singular(word) == word and (not after[:1].isalpha() or after in _STOP or _is_verb(after))
+
+
+def _inverted_subject(toks: list[_Tok], k: int) -> bool:
+    """The verb at ``k`` follows a place phrase that opens its clause ("Above the sleigh flies",
+    "Beside the gate stands"), so the noun phrase after it is its subject."""
+    if not (_is_verb(toks[k].text) or toks[k].text in _FINITE or toks[k].text in _HANG_VERBS):
+        return False
+    start = max((j for j in range(k) if toks[j].text in (".", "!", "?", ";", ",")), default=-1) + 1
+    table = _phrase_table()
+    return any(tuple(t.text for t in toks[start : start + n]) in table for n in range(1, min(4, k - start) + 1))
 
 
 def _verb_of_no_thing(toks: list[_Tok], s: int, e: int) -> bool:
