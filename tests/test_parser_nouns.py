@@ -1291,3 +1291,10 @@ def test_the_inverted_subject_after_a_fronted_place_phrase_is_a_thing():
     """"Above the sleigh flies the Firebird": a thing nobody listed, named with "the" after its verb."""
     parsed = parse_scene("Above the sleigh flies the Firebird.")
     assert ("firebird_1", "above", "sled_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
+
+
+def test_a_word_before_a_count_or_an_article_is_a_verb_not_a_compound():
+    """"Next to a rusty table work two nurses": no "table work"; "a table lamp glows" is a lamp."""
+    parsed = parse_scene("Next to a rusty table work two nurses.")
+    assert {(r.source, r.relation, r.target) for r in parsed.relations} == {("nurse_1", "side of", "table_1"), ("nurse_2", "side of", "table_1")}
+    assert [o.name for o in parse_scene("A table lamp glows.").objects] == ["table lamp"]

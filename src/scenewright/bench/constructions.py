@@ -422,6 +422,31 @@ def _one_of_them(draw: _Draw, shape: str, index: int) -> Case:
                    {person.key: seat.key, small.key: person.key})
 
 
+def _group_of(draw: _Draw, shape: str, index: int) -> Case:
+    """"A group of three monks waits by the cart": the members are the things."""
+    person = draw.pick(PEOPLE)
+    target = draw.target(person)
+    n = draw.rng.choice((2, 3, 4))
+    tp, _ = draw.phrase(target, 1)
+    place = draw.pick(list(PLACES))
+    group = draw.pick(("group", "crowd", "band", "family", "team"))
+    text = f"A {group} of {NUMBERS[n]} {person.plural} waits {place} {tp}."
+    relations = {(person.key, r, target.key) for r in PLACES[place]}
+    return _prompt(shape, index, text, [(person.key, n), (target.key, 1)], relations)
+
+
+def _inverted_the(draw: _Draw, shape: str, index: int) -> Case:
+    """"Beside the gate stands the old sentinel": one subject, named with "the" after its verb."""
+    subject = draw.subject()
+    target = draw.target(subject)
+    words = f"{draw.pick(ADJECTIVES)} {subject.singular}" if draw.rng.random() < 0.5 else subject.singular
+    tp, _ = draw.phrase(target, 1)
+    place = draw.pick(list(PLACES))
+    text = f"{_capital(place)} {tp} {draw.verb(subject, 1)} the {words}."
+    relations = {(subject.key, r, target.key) for r in PLACES[place]}
+    return _prompt(shape, index, text, [(subject.key, 1), (target.key, 1)], relations)
+
+
 #: Shape name → how one sentence of it is built.
 SHAPES: dict[str, Callable[[_Draw, str, int], Case]] = {
     "plain": _ground_shape(lambda np, verb, place, target, **_: f"{_capital(np)} {verb} {place} {target}."),
@@ -431,6 +456,7 @@ SHAPES: dict[str, Callable[[_Draw, str, int], Case]] = {
     "fronted": _ground_shape(lambda np, verb, place, target, **_: f"{_capital(place)} {target} {np} {verb}."),
     "fronted_comma": _ground_shape(lambda np, verb, place, target, **_: f"{_capital(place)} {target}, {np} {verb}."),
     "inverted": _ground_shape(lambda np, verb, place, target, **_: f"{_capital(place)} {target} {verb} {np}."),
+    "inverted_the": _inverted_the,
     "there_is": _ground_shape(
         lambda np, verb, place, target, **_: f"There {'is' if np.split()[0] in ('a', 'an') else 'are'} {np} {place} {target}."
     ),
@@ -453,6 +479,7 @@ SHAPES: dict[str, Callable[[_Draw, str, int], Case]] = {
     "row_of": _row_of,
     "nested": _nested,
     "one_of_them": _one_of_them,
+    "group_of": _group_of,
 }
 
 

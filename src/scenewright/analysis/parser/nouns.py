@@ -257,6 +257,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             if singular(last) != last and _plural_is_verb(toks, s, nxt):  # "a knight guards the gate": a verb
                 raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])
                 nxt = None
+        if nxt and nxt[0] == e and nxt[1] - nxt[0] == 1 and _opens_a_phrase_after(toks, nxt[0]):
+            raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])  # "beside the table work two nurses": its verb
+            nxt = None
         if nxt and nxt[0] == e and singular(head) == head:
             kind_word = nxt[1] - nxt[0] == 1 and singular(toks[nxt[0]].text) in _KIND_WORDS
             if not (nxt[3] is not None and entry is None and kind_word):
@@ -390,6 +393,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue
         opener = next((t.text for t in reversed(toks[:s]) if not t.text[:1].isalpha() or t.text in _STOP), ".")
         qualifies = follow[:1].isalpha() and follow not in _STOP and follow not in vocabulary.adjectives and (
+            not _opens_a_phrase_after(toks, e)
+        ) and (
             not _is_verb(follow) or singular(follow) in vocabulary.not_things and opener not in _SINGULAR_DETERMINERS
         )  # ("of tiny stone tiles": a plural part, no verb; "a brass lamp glows" has one)
         # (a participle after it is its state, "a candle left on it"; hyphened, a kind: "a horse-drawn cart")
@@ -992,6 +997,8 @@ def _names_kind(toks: list[_Tok], e: int) -> bool:
         return False  # "a nurse and a doctor face each other": only a subject of two does it, so a verb
     if w in _ADVERBS_OF_TIME and not t.joined:
         return False  # "a church organ still stands there": an adverb, no "organ still"
+    if _opens_a_phrase_after(toks, e):
+        return False  # "beside the table work two nurses": a verb before its subject or object
     if t.joined or (w in load_vocabulary().not_things and singular(w) == w and w not in _FINITE):
         return True  # "camel-hair tents", "a bear face"
     if w in _IRREGULAR_PARTICIPLES:
@@ -1390,6 +1397,12 @@ def _shares_article(toks: list[_Tok], i: int, covered: set[int]) -> bool:
     after = toks[i + 2].text
     word = toks[i + 1].text
     return singular(word) == word and (not after[:1].isalpha() or after in _STOP or _is_verb(after))
+
+
+def _opens_a_phrase_after(toks: list[_Tok], k: int) -> bool:
+    """The word at ``k`` comes right before a count or an article, as a verb does before its
+    subject or object ("beside the table work two nurses"), never a noun of the phrase before."""
+    return k + 1 < len(toks) and not toks[k].joined and (toks[k + 1].text in _NUMBERS or toks[k + 1].text in ("a", "an", "the"))
 
 
 def _inverted_subject(toks: list[_Tok], k: int) -> bool:
