@@ -1322,3 +1322,8 @@ def test_a_side_phrase_after_a_verb_is_where_the_doer_is(verb):
 def test_along_both_sides_of_a_thing_flanks_it():
     found = rels("A long fire pit burns in the hall, with benches running along both sides of it.")
     assert {("bench_1", "left of", "campfire_1"), ("bench_2", "right of", "campfire_1")} <= found
+
+
+def test_outside_a_thing_is_near_it_and_an_accented_name_keeps_its_letters():
+    assert rels("A bench stands outside a small café.") == {("bench_1", "near", "cafe_1")}
+    assert ("car_1", "near", "house_1") in rels("Three houses stand in a row, and a car waits outside the nearest one.")

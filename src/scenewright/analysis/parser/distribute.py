@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import logging
 import re
+import unicodedata
 from collections import Counter
 from dataclasses import replace
 
@@ -22,7 +23,9 @@ def _ids(groups: list[_Group]) -> None:
     """``chair_1``, ``chair_2``...; a guessed thing by its own name (``fuel_tank_1``, not ``tank_1``)."""
     counters: Counter[str] = Counter()
     for g in groups:
-        base = (re.sub(r"[^a-z0-9]+", "_", g.name.lower()).strip("_") or g.category) if g.guessed else g.category
+        # (accents folded: "café" is cafe_1, not caf_1)
+        plain = unicodedata.normalize("NFKD", g.name.lower()).encode("ascii", "ignore").decode()
+        base = (re.sub(r"[^a-z0-9]+", "_", plain).strip("_") or g.category) if g.guessed else g.category
         for _ in range(g.count):
             counters[base] += 1
             g.ids.append(f"{base}_{counters[base]}")
