@@ -396,7 +396,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             not _opens_a_phrase_after(toks, e)
         ) and (
             not _is_verb(follow) or singular(follow) in vocabulary.not_things and opener not in _SINGULAR_DETERMINERS
-        )  # ("of tiny stone tiles": a plural part, no verb; "a brass lamp glows" has one)
+            and not (e + 1 < n and toks[e + 1].text in _VERB_PARTICLES)
+        )  # ("of tiny stone tiles": a plural part, no verb; "a brass lamp glows", "her dog barks at" have one)
         # (a participle after it is its state, "a candle left on it"; hyphened, a kind: "a horse-drawn cart")
         state = _participle(follow) and not (e < n and toks[e].joined and follow in _IRREGULAR_PARTICIPLES)
         if len(words) == 1 and words[0] in _MODIFIER_NOUNS and qualifies and not state and (
@@ -1009,6 +1010,9 @@ def _names_kind(toks: list[_Tok], e: int) -> bool:
     )  # fmt: skip
 
 
+#: Prepositions that follow a verb of motion or sound ("barks at", "runs to"): a plural-looking word
+#: before one is a verb, not the noun a word before it describes ("her dog barks at a seal").
+_VERB_PARTICLES = {"at", "to", "into", "onto", "toward", "towards", "across", "around", "over", "through", "past"}
 #: Adverbs without "-ly" that come between a subject and its verb ("the organ still stands").
 _ADVERBS_OF_TIME = {"still", "now", "always", "often", "also", "already", "never", "soon", "sometimes", "ever",
                     "once", "together", "alone", "too", "again", "yet"}  # fmt: skip
