@@ -1298,3 +1298,13 @@ def test_a_word_before_a_count_or_an_article_is_a_verb_not_a_compound():
     parsed = parse_scene("Next to a rusty table work two nurses.")
     assert {(r.source, r.relation, r.target) for r in parsed.relations} == {("nurse_1", "side of", "table_1"), ("nurse_2", "side of", "table_1")}
     assert [o.name for o in parse_scene("A table lamp glows.").objects] == ["table lamp"]
+
+
+def test_a_tower_the_opening_sets_the_scene_in_is_no_thing_of_it():
+    """"A laboratory in a castle tower." is inside the tower (no 12 m tower in the room); "a bell
+    hangs in the clock tower" puts a bell in a tower of the scene."""
+    lab = parse_scene("A mad scientist's laboratory in a castle tower. Flasks crowd a long workbench.")
+    assert "tower" not in {o.category for o in lab.objects} and lab.indoor
+    kitchen = parse_scene("A cosy kitchen in a lighthouse. A kettle sits on the stove.")
+    assert "lighthouse" not in {o.category for o in kitchen.objects}
+    assert ("bell_1", "on", "tower_1") in {(r.source, r.relation, r.target) for r in parse_scene("A bronze bell hangs in the old clock tower.").relations}

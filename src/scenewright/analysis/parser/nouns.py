@@ -1214,7 +1214,11 @@ def _enterable(toks: list[_Tok], s: int, e: int) -> bool:
     category = load_catalogue()[name] if name else None
     if (head,) in load_vocabulary().buildings:
         return True  # "a showroom in a converted bus depot": a building the vocabulary lists
-    return category is not None and category.shape == "house" and category.size[2] >= _STOREY
+    if category is None or category.size[2] < _STOREY:
+        return False
+    # (towers, lighthouses and windmills have rooms too, when the opening only names where the scene
+    # is: "A laboratory in a castle tower." is inside it, "a bell hangs in the clock tower" is not)
+    return category.shape == "house" or category.shape in ("tower", "windmill") and _verbless_opening(toks, s)
 
 
 def _verb_word(word: str) -> bool:
