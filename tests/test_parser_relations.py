@@ -1327,3 +1327,10 @@ def test_along_both_sides_of_a_thing_flanks_it():
 def test_outside_a_thing_is_near_it_and_an_accented_name_keeps_its_letters():
     assert rels("A bench stands outside a small café.") == {("bench_1", "near", "cafe_1")}
     assert ("car_1", "near", "house_1") in rels("Three houses stand in a row, and a car waits outside the nearest one.")
+
+
+def test_their_after_a_with_part_names_the_ones_named_together():
+    """"The king and queen watch from a pavilion, with a jester at their feet": at the king's and the
+    queen's feet, not at the feet of two knights named before."""
+    found = rels("Two knights charge along a barrier. The king and queen watch from a pavilion, with a jester sitting at their feet.")
+    assert {("jester_1", "in front of", "king_1"), ("jester_1", "in front of", "queen_1")} <= found

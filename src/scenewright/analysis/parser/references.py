@@ -543,6 +543,10 @@ class _References:
 
         if word == "it living":  # "its neck": an animal's, never a person's
             return next(([g] for g in order if fits(g) and not self._person_at(g)), [])
+        # "the king and queen watch ..., with a jester at their feet": the ones the clause names together
+        joint = [g for g in (c.subjects or c.head or []) if g not in srcs and self._living(g) and self.groups[g].count == 1]
+        if word == "them living" and len(joint) > 1:
+            return joint
         # "her dachshund naps in a hatbox beside her": a person before an animal the text calls "her";
         # a robot the text calls "him" is one ("a robot DJ works the decks, a speaker either side of him")
         def personal(g: int) -> bool:
