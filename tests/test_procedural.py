@@ -425,7 +425,7 @@ VARIANTS = [
     ("rock", "anthill", "soil"), ("rock", "outcrop", "leaf"), ("kiosk", "puppet theatre", "canvas_alt"),
     ("bowl", "crab pot", "brick"), ("cart", "ore cart", "metal"), ("generic", "gourd", "leaf"), ("generic", "beach ball", "paint"),
     ("barrel", "bass drum", "hide"), ("generic", "ramp", "wood"), ("fence", "stepladder", "dark_wood"),
-    ("fridge", "water dispenser", "glass"), ("bowl", "skillet", "dark_wood"), ("bowl", "tea pot", "accent"),
+    ("fridge", "water dispenser", "glass"), ("fridge", "petrol pump", "screen"), ("bowl", "skillet", "dark_wood"), ("bowl", "tea pot", "accent"),
     ("generic", "goalpost", "canvas_alt"), ("generic", "smokestack", "brick"), ("floor_lamp", "hat stand", "brass"),
     ("trash_can", "pillar box", "paper"), ("counter", "vitrine", "glass"), ("generic", "rail", "dark_metal"),
     ("generic", "orrery", "gold"),

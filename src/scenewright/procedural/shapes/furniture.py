@@ -579,7 +579,26 @@ def _water_cooler(m: Model) -> None:
             scale=(m.sx, m.sy))
 
 
+def _fuel_pump(m: Model) -> None:
+    """A fuel pump: a painted column on an island kerb, a lit price panel at the front, a lamp box
+    on top and a nozzle holstered on each side with its hose hanging in a loop."""
+    m.main = "paint"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    # (parts overlap a little instead of meeting face to face: tests/test_procedural_coplanar.py)
+    m.box("concrete", (-W, -D, 0), (W, D, 0.06 * H))
+    m.box("paint", (-0.8 * W, -0.7 * D, 0.05 * H), (0.8 * W, 0.7 * D, 0.83 * H))
+    m.box("screen", (-0.55 * W, -0.73 * D, 0.5 * H), (0.55 * W, -0.69 * D, 0.7 * H), rounded=0.0)
+    m.box("plastic", (-W, -0.8 * D, 0.84 * H), (W, 0.8 * D, H))
+    m.box("paint", (-0.98 * W, -0.82 * D, 0.82 * H), (0.98 * W, 0.82 * D, 0.85 * H), rounded=0.0)
+    for x in (-1, 1):
+        m.box("dark_plastic", (x * 0.78 * W, -0.25 * D, 0.38 * H), (x * 0.95 * W, 0.1 * D, 0.5 * H), rounded=0.0)
+        m.torus("dark_plastic", (x * 0.9 * W, -0.1 * D, 0.3 * H), 0.1 * H, 0.012, axis="x", arc=np.pi)
+
+
 def fridge(m: Model) -> None:
+    if m.named("fuel pump", "gas pump", "petrol pump", "fuel pumps", "gas pumps", "petrol pumps", "fuel dispenser"):
+        _fuel_pump(m)
+        return
     if m.named("vending machine", "arcade", "atm"):
         _vending_machine(m)
         return

@@ -81,8 +81,9 @@ def truck(m: Model) -> None:
     cab_len = 0.28 * m.sy
     m.box("dark_metal", (-0.4 * m.sx, -L + 0.05 * m.sy, 0.5 * wr), (0.4 * m.sx, L - 0.02 * m.sy, chassis))
     m.box("paint", (-m.sx / 2 + 0.1 * m.sx * 0.3, -L, chassis), (m.sx / 2 - 0.03 * m.sx, -L + cab_len, 0.75 * m.sz))
-    m.extrude("glass", [(-L + 0.01, 0.5 * m.sz), (-L + cab_len * 0.9, 0.5 * m.sz), (-L + cab_len * 0.9, 0.72 * m.sz),
-                        (-L + 0.01, 0.72 * m.sz)], "x", -m.sx / 2 + 0.05 * m.sx, m.sx / 2 - 0.05 * m.sx)
+    # the windows stand a hair proud of the cab's box, so the windscreen and the side windows show
+    m.extrude("glass", [(-L - 0.01, 0.5 * m.sz), (-L + cab_len * 0.9, 0.5 * m.sz), (-L + cab_len * 0.9, 0.72 * m.sz),
+                        (-L - 0.01, 0.72 * m.sz)], "x", -m.sx / 2 + 0.025 * m.sx, m.sx / 2 - 0.025 * m.sx)
     y0 = -L + cab_len + 0.04 * m.sy
     if m.named("pickup", "pick-up", "ute"):  # an open bed with low sides: what rides in the back shows
         m.box("paint", (-m.sx / 2 + 0.02 * m.sx, y0, chassis), (m.sx / 2 - 0.02 * m.sx, L, chassis + 0.05 * m.sz))
