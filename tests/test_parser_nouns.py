@@ -1308,3 +1308,12 @@ def test_a_tower_the_opening_sets_the_scene_in_is_no_thing_of_it():
     kitchen = parse_scene("A cosy kitchen in a lighthouse. A kettle sits on the stove.")
     assert "lighthouse" not in {o.category for o in kitchen.objects}
     assert ("bell_1", "on", "tower_1") in {(r.source, r.relation, r.target) for r in parse_scene("A bronze bell hangs in the old clock tower.").relations}
+
+
+def test_n_more_are_more_of_the_latest_subject_or_object():
+    """"A goat drinks while three more graze": three more goats; "lassos a six-legged grazer while four
+    more drink": grazers, not cowgirls (from the nouns4 branch)."""
+    goats = parse_scene("A goat drinks at the trough while three more graze by the fence.")
+    assert [o.name for o in goats.objects].count("goat") == 4
+    grazers = parse_scene("A cowgirl lassos a six-legged grazer while four more drink around a water trough.")
+    assert [o.name for o in grazers.objects].count("grazer") == 5

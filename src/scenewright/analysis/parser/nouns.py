@@ -455,6 +455,10 @@ def _elided_at(toks: list[_Tok], i: int) -> int | None:
     w = toks[i].text
     if w == "others" and i > 0 and toks[i - 1].text in _NUMBERS:
         return i  # ("two others sweep the steps": a plural noun could not follow)
+    if w == "more" and i > 0 and _NUMBERS.get(toks[i - 1].text, 0) > 1 and i + 1 < len(toks):
+        nxt, after = toks[i + 1].text, toks[i + 2].text if i + 2 < len(toks) else "."
+        if not nxt[:1].isalpha() or nxt in _STOP or _plural_form_verb(nxt, after):
+            return i  # "a goat drinks while three more graze": more of the kind before, no noun left out
     if _herd_count(toks, i):
         return i
     if w == "another":
@@ -510,8 +514,11 @@ def _elided_members(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention
         # work at a pair of anvils while a third pumps the bellows")
         plural = [m for m in before if _is_plural(toks, m)]
         # ("another" is one more of a single one too: "a monk reads, while another draws water")
-        any_one = toks[i].text == "another" or _herd_count(toks, k)
+        # (and so is "three more": "a goat drinks while three more graze")
+        any_one = toks[i].text in ("another", "more") or _herd_count(toks, k)
         order = [lives, plural] if any_one else [[m for m in plural if m in lives], plural]
+        if toks[i].text == "more":  # the latest subject or object, not a place: "lassos a grazer while four more drink"
+            order.insert(0, [m for m in before if not _after_preposition(toks, m.start)])
         chosen = next((group[-1] for group in order if group), None)
         if chosen is None:
             continue
@@ -2234,7 +2241,8 @@ def _after_preposition(toks: list[_Tok], head: int) -> bool:
     mill"), or is joined by "and" / "or" to one that does ("between the desk and the table"): the
     object of a place phrase, which a comma after it closes."""
     j = head - 1
-    while j >= 0 and head - j <= 4 and (toks[j].text in _DETERMINERS or (
+    # (a count is of the phrase too: "behind the two old mills", "lassos a six-legged grazer")
+    while j >= 0 and head - j <= 4 and (toks[j].text in _DETERMINERS or toks[j].text in _NUMBERS or (
         toks[j].text[:1].isalpha() and toks[j].text not in _STOP
     )):
         j -= 1
