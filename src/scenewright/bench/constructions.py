@@ -37,7 +37,7 @@ class Noun:
 
 
 def _nouns(kind: str, spec: str) -> tuple[Noun, ...]:
-    """``"cart carts, wolf wolves"`` → nouns: each entry is a singular and its plural."""
+    """``"cart/carts, wolf/wolves"`` → nouns: each entry is a singular and its plural."""
     out = []
     for entry in spec.split(","):
         one, many = entry.strip().split("/")

@@ -245,20 +245,13 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             if nxt[1] - nxt[0] == 1 and not toks[nxt[0]].text.endswith("s"):
                 raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])  # "sheep graze by the wall": their verb
                 nxt = None
-        if nxt and nxt[0] == e and nxt[1] - nxt[0] == 1 and toks[e].text in _ADVERBS_OF_TIME and nxt[1] < n and (
-            words[-1] not in vocabulary.adjectives  # ("a copper still bubbles": a still)
-        ) and (
-            _is_verb(toks[nxt[1]].text) or toks[nxt[1]].text in _FINITE
-        ):  # "an old windmill still turns": an adverb, no distiller's still
-            raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])
-            nxt = None
         if nxt and nxt[0] == e and singular(head) == head:
             last = toks[nxt[1] - 1].text
             if singular(last) != last and _plural_is_verb(toks, s, nxt):  # "a knight guards the gate": a verb
                 raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])
                 nxt = None
-        if nxt and nxt[0] == e and nxt[1] - nxt[0] == 1 and _opens_a_phrase_after(toks, nxt[0]):
-            raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])  # "beside the table work two nurses": its verb
+        if nxt and nxt[0] == e and nxt[1] - nxt[0] == 1 and _no_noun_after(toks, e, words[-1]):
+            raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])
             nxt = None
         if nxt and nxt[0] == e and singular(head) == head:
             kind_word = nxt[1] - nxt[0] == 1 and singular(toks[nxt[0]].text) in _KIND_WORDS
@@ -1412,6 +1405,17 @@ def _shares_article(toks: list[_Tok], i: int, covered: set[int]) -> bool:
     after = toks[i + 2].text
     word = toks[i + 1].text
     return singular(word) == word and (not after[:1].isalpha() or after in _STOP or _is_verb(after))
+
+
+def _no_noun_after(toks: list[_Tok], k: int, noun: str) -> bool:
+    """The one word at ``k``, right after the noun ``noun``, names no thing of its own: an adverb
+    before the verb ("an old windmill still turns"; after a describing word it is the noun: "a
+    copper still bubbles") or a verb before its subject or object ("beside the table work two nurses")."""
+    after = toks[k + 1].text if k + 1 < len(toks) else "."
+    adverb = toks[k].text in _ADVERBS_OF_TIME and noun not in load_vocabulary().adjectives and (
+        _is_verb(after) or after in _FINITE
+    )
+    return adverb or _opens_a_phrase_after(toks, k)
 
 
 def _opens_a_phrase_after(toks: list[_Tok], k: int) -> bool:

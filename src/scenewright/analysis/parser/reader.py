@@ -1479,7 +1479,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 c.groups.extend(g for g in target if g not in c.groups)
                 return p.end
             else:
-                in_hands = list(c.wsub)
+                # one works on a grindstone or an anvil standing at it; what is worked there lies on it
+                worked_on = in_hand and kind == "on" and isinstance(target, list) and not self._carrier(target[0], _RIDDEN)
+                if worked_on and not self._verb_before(rel.start, lambda w: w in _HONE_VERBS):
+                    self._set_down(c, target[0])
                 self._close_with(c)
                 srcs = list(c.head)
                 c.head, c.wsub = None, []
@@ -1492,10 +1495,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 named = any(w not in _STOP and w[:1].isalpha() for w in gap)
                 if named and not closed and p.part is not None and target in ("it", "them"):
                     return end  # "a stall ..., with a cash tin on its counter": what is on its own part is no object
-                if in_hand and kind == "on" and isinstance(target, list) and not self._carrier(target[0], _RIDDEN):
-                    kind = "near"  # one works on a grindstone or an anvil standing at it
-                    if not self._verb_before(rel.start, lambda w: w in _HONE_VERBS):
-                        self._set_down(in_hands, srcs, target[0])
+                if worked_on:
+                    kind = "near"
         else:
             srcs = list(c.main)
             # "a farmer guides a buffalo pulling a plough": a participle right after the verb's object is the object's
@@ -1537,19 +1538,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         p.kind, p.srcs = kind, srcs
         return None
 
-    def _set_down(self, things: list[int], holders: list[int], host: int) -> None:
-        """"A smith strikes a horseshoe on the anvil", "a clerk stamps a letter on the counter": what
-        is worked on a host one stands at lies on it, out of the hand (its doer by the host); what is
-        sharpened on a stone stays in hand (:data:`_HONE_VERBS`)."""
-        for g in things:
-            if self._living(g) or max(self.groups[g].size) > _HANDHELD_SIZE:
-                continue
-            for h in holders:
-                if (g, h) in self.carried:
-                    self.carried.discard((g, h))
-                    self.in_hand = [pair for pair in self.in_hand if pair != (g, h)]
-                    self.relations = [r for r in self.relations if r[:3] != ("on", g, h)]
-            self._relate("on", [g], host)
+    def _set_down(self, c: _Clause, host: int) -> None:
+        """"A smith strikes a horseshoe on the anvil", "a clerk stamps a letter on the counter": the
+        small lifeless things the clause's verb works lie on the host, so :meth:`_close_with` puts
+        them in no hand (what is sharpened on a stone stays in hand: :data:`_HONE_VERBS`)."""
+        for g in c.wsub:
+            if not self._living(g) and max(self.groups[g].size) <= _HANDHELD_SIZE and g not in c.wsub_related:
+                self._relate("on", [g], host)
+                c.wsub_related.add(g)
 
     def _placed_by_person(self, c: _Clause, p: _Phrase, rider: list[int]) -> bool:
         """Whether a phrase chained on a lifeless thing the last phrase put a person by (``near``:
