@@ -184,3 +184,15 @@ def test_on_each_of_the_n_hosts_is_one_on_each_of_n():
     parsed = parse_scene("A radio sits on each of the four crates.")
     assert sorted(o.category for o in parsed.objects) == ["crate"] * 4 + ["radio"] * 4
     assert {(r.source, r.target) for r in parsed.relations if r.relation == "on"} == {(f"radio_{i}", f"crate_{i}") for i in range(1, 5)}
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("Two mules wait by the well, each loaded with two bundles of firewood.", "firewood", 4),
+        ("Three sacks of flour lean against the cart.", "sack", 3),
+        ("Bundles of straw lie by the barn.", "straw", 4),
+    ],
+)
+def test_each_counted_lot_of_stuff_is_one_thing(text, word, many):
+    assert counts(text)[word] == many

@@ -293,7 +293,8 @@ def test_a_compound_written_open_is_the_closed_one():
 
 
 def test_a_known_noun_in_a_hyphened_look_does_not_hide_the_thing():
-    assert objects("A fox-shaped glimmerlamp hangs above the door.") == Counter({("thing", "glimmerlamp"): 1})
+    assert objects("A fox-shaped glimmerlamp hangs above the door.") == Counter({("table_lamp", "glimmerlamp"): 1})
+    assert objects("A fox-shaped zorbulite hangs above the door.") == Counter({("thing", "zorbulite"): 1})
 
 
 def test_a_string_of_things_is_one_string():
@@ -1317,3 +1318,17 @@ def test_n_more_are_more_of_the_latest_subject_or_object():
     assert [o.name for o in goats.objects].count("goat") == 4
     grazers = parse_scene("A cowgirl lassos a six-legged grazer while four more drink around a water trough.")
     assert [o.name for o in grazers.objects].count("grazer") == 5
+
+
+@pytest.mark.parametrize(
+    ("text", "name", "category"),
+    [
+        ("An old postmistress sorts letters behind the counter.", "postmistress", "figure"),
+        ("Two racehorses graze beside the fence.", "racehorse", "horse"),
+        ("Three baby stegosaurs sleep in a nest.", "stegosaur", "animal"),
+        ("Emperor penguins waddle past the huts.", "emperor penguin", "bird"),
+    ],
+)
+def test_a_noun_nobody_listed_is_the_listed_noun_it_ends_with(text, name, category):
+    found = {o.name.lower(): o.category for o in parse_scene(text).objects}
+    assert found.get(name) == category, found

@@ -926,8 +926,9 @@ def _plural_is_verb(toks: list[_Tok], s: int, nxt: tuple) -> bool:
     if j > 0 and toks[j].text == "of" and toks[j - 1].text in _QUANTITY:
         return False  # "a stack of drill pipes": what a quantity counts is a noun phrase
     person = load_vocabulary().match(tuple(t.text for t in toks[s : nxt[0]]))
+    bare = j < 0 or not toks[j].text[:1].isalpha()  # ("Emperor penguins waddle": a lone singular needs an article)
     if person is not None and person.category == "figure":
-        return True  # "the baker slides loaves into the oven": a person names no kind of slide
+        return not bare  # "the baker slides loaves into the oven": a person names no kind of slide
     if _is_verb(follow) or follow in _FINITE or follow.endswith("ing") and follow.isalpha():
         return False  # "glass domes holding birds": a participle after it makes it the noun
     return nxt[3] is not None
@@ -1252,6 +1253,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
     his putter")."""
     vocabulary = load_vocabulary()
     covered = {k for s, e, _, _ in raw for k in range(s, e)}
+    # a listed word that also describes may stand before a noun nobody listed ("three baby stegosaurs")
+    describers = {s for s, e, _, _ in raw if e - s == 1 and toks[s].text in vocabulary.adjectives}
     out = []
     n = len(toks)
     for i, t in enumerate(toks):
@@ -1296,7 +1299,7 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
                 j += 1
                 continue
             kind_of = j - 1 in looks and w == "of"  # ("hot dog stands": a noun, though "stands" is a verb too)
-            if j in covered or not x[:1].isalpha() or (x in _STOP and not kind_of):
+            if (j in covered and j not in describers) or not x[:1].isalpha() or (x in _STOP and not kind_of):
                 break
             # (a plural verb form cannot follow "a": "a washing line hangs" has no verb "line")
             plural_form = x in _FINITE and not x.endswith("s") and w in ("a", "an", "another")
@@ -1318,7 +1321,9 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             j += 1
             if plural and (singular(x) != x or x in _PEOPLE_GROUPS):
                 break  # "three zorbs glow", "two ground crew hold": the plural noun ends the phrase
-        known = any(k in covered and k not in looks for k in range(i + 1, head + 1)) if head is not None else False
+        known = head is not None and (
+            head in covered or any(k in covered and k not in looks | describers for k in range(i + 1, head))
+        )
         if head is None or known or toks[head].quoted:
             continue
         # a counted plural before a singular known word is its subject ("two stokers shovel coal")
@@ -1886,9 +1891,9 @@ def _stuff_word(toks: list[_Tok], k: int, covered: set[int]) -> bool:
 
 
 def _heap_of_stuff(toks: list[_Tok], i: int, covered: set[int]) -> bool:
-    """"of" at ``i`` joins one heap ("a pile", "a heap") to one word of stuff that ends the phrase
-    ("a pile of gold", "a heap of rubble."): a colour word there is the stuff too."""
-    if i < 1 or i + 1 >= len(toks) or toks[i - 1].text not in _HEAPS or singular(toks[i - 1].text) != toks[i - 1].text:
+    """"of" at ``i`` joins heaps ("a pile", "two bundles") to one word of stuff that ends the phrase
+    ("a pile of gold", "a heap of rubble.", "bundles of straw"): a colour word there is the stuff too."""
+    if i < 1 or i + 1 >= len(toks) or toks[i - 1].text not in _HEAPS:
         return False
     w = toks[i + 1].text
     after = toks[i + 2].text if i + 2 < len(toks) else "."
@@ -2520,7 +2525,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
                 long_unit = (width >= 1.0 and depth <= 0.6) or load_catalogue()[m.category].shape == "flower_bed"
                 # a row of tulips is a bed; each of "five pairs" is a pair, of "three rows" a row
                 per = 1 if q in ("row", "rows", "line", "lines") and long_unit else _QUANTITY.get(singular(q), count)
-                per = 1 if heaped or pair else per
+                # each of "two bundles of salt" is one lot of it
+                per = 1 if heaped or pair or stuff else per
                 count, counted = per * _NUMBERS[toks[k].text], True  # "three rows of shelves": a unit a row
             elif k >= 0 and toks[k].text == "of" and k > 0 and toks[k - 1].text in _QUANTITY:
                 count = _QUANTITY[toks[k - 1].text]  # "a lot of"

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from importlib import resources
 
-from scenewright.core.catalogue import load_catalogue, singular, words
+from scenewright.core.catalogue import load_catalogue, match_phrase, singular, words
 
 #: The family a thing nobody listed falls back to.
 GENERIC = "thing"
@@ -27,6 +27,9 @@ _PERSON_ENDINGS = ("ist", "ian", "eer", "maker", "smith", "wright")
 _AGENT_ENDINGS = ("er", "or", "ant", "ent")
 #: Letters a word keeps before an ending for the ending to tell its family ("gator" is no machine).
 _MIN_STEM = 3
+#: Letters the listed noun that ends a closed compound must have to name it ("racehorse" is a horse;
+#: "earring" is no ring, "carpet" no pet).
+_MIN_HEAD = 4
 #: Letters an "-ish" describing word keeps before its ending ("reddish", "greenish"); fewer make a
 #: noun ("finish", "radish", "parish").
 _ISH_STEM = 4
@@ -221,11 +224,27 @@ class Vocabulary:
         for suffix, family in self.suffixes:
             if one.endswith(suffix) and len(one) - len(suffix) >= _MIN_STEM:
                 return self._family(family)
+        tail = self._compound_head(one)
+        if tail is not None:
+            return tail  # "a postmistress", "six racehorses", "the schoolchildren": a closed compound is its last noun
         ending = next((e for e in _PERSON_ENDINGS if one.endswith(e)), None)
         if ending is not None and len(one) - len(ending) >= _MIN_STEM:
             return self._family("figure")  # "a florist", "two technicians", "a puppeteer", "a watchmaker"
         category = catalogue[GENERIC]
         return Entry(GENERIC, category.size, category.rests)
+
+    def _compound_head(self, word: str) -> Entry | None:
+        """The entry of the longest listed noun that ends ``word`` after a stem of its own, else None."""
+        catalogue = load_catalogue()
+        for i in range(_MIN_STEM, len(word) - _MIN_HEAD + 1):
+            tail = word[i:]
+            entry = self.match((tail,))
+            if entry is not None:
+                return entry
+            category = match_phrase((tail,))
+            if category is not None:
+                return Entry(category, catalogue[category].size, catalogue[category].rests)
+        return None
 
     def guess_agent(self, head: str, acts: bool, human: bool = False) -> Entry | None:
         """A person for a noun nobody listed when the text has it do what people do: an agent
