@@ -1334,3 +1334,15 @@ def test_their_after_a_with_part_names_the_ones_named_together():
     queen's feet, not at the feet of two knights named before."""
     found = rels("Two knights charge along a barrier. The king and queen watch from a pavilion, with a jester sitting at their feet.")
     assert {("jester_1", "in front of", "king_1"), ("jester_1", "in front of", "queen_1")} <= found
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Beyond the fence, a windmill turns slowly.",
+        "A windmill stands on the far side of the fence.",
+        "On the other side of the fence, a windmill turns.",
+    ],
+)
+def test_beyond_and_the_far_side_are_behind(text):
+    assert ("windmill_1", "behind", "fence_1") in rels(text)
