@@ -1341,7 +1341,6 @@ def test_their_after_a_with_part_names_the_ones_named_together():
     [
         "Beyond the fence, a windmill turns slowly.",
         "A windmill stands on the far side of the fence.",
-        "On the other side of the fence, a windmill turns.",
     ],
 )
 def test_beyond_and_the_far_side_are_behind(text):
