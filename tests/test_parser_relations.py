@@ -1345,3 +1345,16 @@ def test_their_after_a_with_part_names_the_ones_named_together():
 )
 def test_beyond_and_the_far_side_are_behind(text):
     assert ("windmill_1", "behind", "fence_1") in rels(text)
+
+
+@pytest.mark.parametrize(
+    ("text", "load", "carrier", "place"),
+    [
+        ("A cart of apples stands by the gate.", "apple", "cart_1", "arch_1"),
+        ("A porter pushes a trolley of suitcases past the desk.", "backpack", "shopping_cart_1", "desk_1"),
+    ],
+)
+def test_what_a_cart_is_of_rides_on_it_and_the_cart_stands_by_the_place(text, load, carrier, place):
+    found = rels(text)
+    loads = {s for s, r, t in found if r == "on" and t == carrier and s.startswith(load)}
+    assert loads and not any(s in loads and t == place for s, _, t in found), found

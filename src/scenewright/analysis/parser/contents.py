@@ -106,8 +106,10 @@ class _Contents:
             return not alive
         if self._listed_content(m.start):
             return not alive  # "crates overflow with apples, pumpkins and carrots"
-        if w == "of" and prev.end == j and prev.category in _FLAT_HOLDERS and not m.definite:
-            self.held_of.append((m.start, prev.start))  # "a tray of medicine bottles": bottles on the tray
+        flat = prev.category in _FLAT_HOLDERS or load_vocabulary().carries(prev.category, prev.phrase, ("vehicles",))
+        if w == "of" and prev.end == j and flat and not m.definite:
+            self.held_of.append((m.start, prev.start))  # "a tray of medicine bottles", "a trolley of books": on it
+            self.aboard.add(m.start)
             return False
         vessel = load_vocabulary().carries(prev.category, prev.phrase, _VESSEL_KINDS)
         if w == "of" and prev.end == j and self._lives(m.category) and vessel and not m.definite and (

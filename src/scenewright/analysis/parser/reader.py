@@ -467,8 +467,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.numbered: set[int] = set()
         #: Uncounted plurals after "their" ("walk their dogs"): one each of their owners.
         self.theirs: set[int] = set()
-        #: Starts of living things a holder is full of ("packed with laughing children"): aboard it,
-        #: no subject of the clause's verb.
+        #: Starts of living things a holder is full of ("packed with laughing children") and of what a
+        #: tray or a cart is "of" ("a cart of apples"): aboard it, no subject of the clause's verb.
         self.aboard: set[int] = set()
         self._mark_contents(mentions)
         _mark_appositions(toks, mentions)
