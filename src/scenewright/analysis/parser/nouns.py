@@ -1322,7 +1322,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             if plural and (singular(x) != x or x in _PEOPLE_GROUPS):
                 break  # "three zorbs glow", "two ground crew hold": the plural noun ends the phrase
         known = head is not None and (
-            head in covered or any(k in covered and k not in looks | describers for k in range(i + 1, head))
+            head in covered or any(k in covered and k not in looks and k != head - 1 for k in range(i + 1, head))
+            or (head - 1 in covered and head - 1 not in looks | describers)
         )
         if head is None or known or toks[head].quoted:
             continue
