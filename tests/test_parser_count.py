@@ -196,3 +196,11 @@ def test_on_each_of_the_n_hosts_is_one_on_each_of_n():
 )
 def test_each_counted_lot_of_stuff_is_one_thing(text, word, many):
     assert counts(text)[word] == many
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["Building blocks are stacked into a tower next to the toy chest.", "Toy blocks lie piled into a tower by the bed."],
+)
+def test_the_shape_a_group_is_set_out_in_is_no_thing(text):
+    assert counts(text)["tower"] == 0 and counts(text)["block"] >= 3

@@ -166,6 +166,20 @@ def test_a_shelf_fixed_to_a_wall_is_a_wall_shelf_and_a_free_standing_one_a_bookc
     assert ("bottle_1", "on", "bookshelf_1") in {(r.source, r.relation, r.target) for r in fixed.relations}
 
 
+def test_a_thing_nobody_listed_fixed_to_a_wall_lies_flat_against_it():
+    """A guessed thing of no shape on a wall is a board, a sheet guessed lying flat is stood up,
+    and both are as thin as a sheet; a tool hung there keeps its shape."""
+    found = {o.name: o for o in parse_scene(
+        "A cabin. A diploma hangs on the wall, a map is pinned to the left wall and a hammer hangs on the wall."
+    ).objects}
+    board, sheet = found["diploma"], found["map"]
+    assert board.category == "panel" and board.size[1] <= 0.05 and board.size[2] > 0.3
+    assert sheet.size[1] <= 0.05 < sheet.size[2]
+    assert found["hammer"].size == parse_scene("A hammer lies on the bench.").objects[0].size
+    lying = {o.name: o for o in parse_scene("A cabin. A map lies open on the table.").objects}
+    assert lying["map"].size[2] <= 0.05
+
+
 @pytest.mark.parametrize("text, floor, walls, ceiling", [
     ("A kitchen with white tiled walls and a stone floor.", "stone", "white tiled", None),
     ("A bar with brick walls, a wooden floor and a concrete ceiling.", "wood floor", "brick", "concrete"),

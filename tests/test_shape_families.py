@@ -170,3 +170,14 @@ def test_seats_of_a_grandstand_rise_to_the_back():
     seats = np.concatenate([stand[role].vertices for role in ("paint", "accent")])
     front, back = seats[seats[:, 1] < 0], seats[seats[:, 1] > 1]
     assert back[:, 2].max() > front[:, 2].max() + 0.5
+
+
+def test_a_thin_panel_is_a_sheet_without_feet_standing_or_lying():
+    """A calendar on a wall or a map on a table: its printed face starts near the edge it rests
+    on (feet would hold it off the wall or the table); a free-standing board stands on feet."""
+    upright = points("panel", (0.4, 0.02, 0.5), "calendar", roles={"paper"})
+    assert upright[:, 2].min() < 0.1 * 0.5 and np.ptp(upright[:, 1]) < 0.05
+    lying = points("panel", (0.6, 0.45, 0.01), "map")
+    assert np.ptp(lying[:, 2]) < 0.03 and np.ptp(lying[:, 1]) > 0.9 * 0.45
+    notice = points("panel", (1.2, 0.3, 1.6), "notice board", roles={"fur_light"})
+    assert notice[:, 2].min() > 0.3 * 1.6, "a free-standing board keeps its feet"

@@ -290,8 +290,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "two children are building a snowman": a verb, not a building
         if _adverb_here(toks, s, e):
             continue  # "the shrine stands well behind the gate": an adverb, not a well
-        if _idiom_here(toks, s, e):
-            continue  # "a brig lies at anchor", "a guard stands on duty": no anchor there
+        if _idiom_here(toks, s, e) or _shape_of_group(toks, s, e):
+            continue  # "a brig lies at anchor", "a guard stands on duty": no anchor there; "blocks
+            # stacked into a tower": how they are set out, no tower
         if _owned_part(toks, s, e, mentions) or _part_of_after(toks, s, e, raw[k + 1 :], mentions) or (
             _inside_of_vehicle(toks, s, e, mentions)
         ):
@@ -648,6 +649,18 @@ def _idiom_here(toks: list[_Tok], s: int, e: int) -> bool:
         return False
     after = toks[e].text if e < len(toks) else "."
     return not after[:1].isalpha() or after in _STOP
+
+
+#: Relation phrase kinds that set a group out in a shape ("in a circle", "stacked into a tower").
+_GROUP_SHAPES = {"row", "rows", "stack", "circle"}
+
+
+def _shape_of_group(toks: list[_Tok], s: int, e: int) -> bool:
+    """The one-word noun at ``s`` ends a phrase that sets a group out in a shape: no thing."""
+    table = _phrase_table()
+    return e - s == 1 and any(
+        table.get(tuple(t.text for t in toks[e - length : e])) in _GROUP_SHAPES for length in range(2, min(e, 4) + 1)
+    )
 
 
 #: Parts of a vessel or a building that are a setting when the text opens with "the X of a Y".

@@ -452,15 +452,27 @@ WALL_UNIT_HEIGHTS = {"bookshelf": 0.45, "shop_shelf": 0.45, "cabinet": 0.7}
 WALL_UNIT_DEPTH = 0.3
 
 
+#: m, the depth of a thing nobody listed that the text fixes to a wall ("a calendar hangs on the wall").
+WALL_SHEET_DEPTH = 0.05
+
+
 def wall_units(parsed: ParsedScene) -> list:
     """``parsed``'s objects, each storage unit the text fixes to a wall (:func:`wall_phrases`) the
-    size of a wall unit (:data:`WALL_UNIT_HEIGHTS`); the rest as they are."""
+    size of a wall unit (:data:`WALL_UNIT_HEIGHTS`), and each thing nobody listed that is fixed
+    there flat against it: a board if nothing says its shape ("a tide table hangs on the wall"),
+    stood up if it was guessed lying flat ("a map pinned to the wall"; a tool hangs as it is); the
+    rest as they are."""
     mounted = {r.source for r in wall_phrases(parsed) if r.relation == "on wall"}
     out = []
     for o in parsed.objects:
         height = WALL_UNIT_HEIGHTS.get(o.category)
-        if o.id in mounted and height is not None and o.size[2] > height:
-            o = replace(o, size=(o.size[0], min(o.size[1], WALL_UNIT_DEPTH), height))
+        width, depth, tall = o.size
+        if o.id in mounted and height is not None and tall > height:
+            o = replace(o, size=(width, min(depth, WALL_UNIT_DEPTH), height))
+        elif o.id in mounted and o.guessed and o.category == "thing":
+            o = replace(o, category="panel", size=(width, WALL_SHEET_DEPTH, tall), rests="hanging")
+        elif o.id in mounted and o.guessed and o.category != "tool" and tall < min(width, depth):
+            o = replace(o, size=(width, tall, depth), rests="hanging")
         out.append(o)
     return out
 

@@ -343,6 +343,25 @@ def structure(m: Model) -> None:
     _truss(m)
 
 
+#: m, the thickness at most of a panel that is a sheet: a calendar or a chart on a wall, a map on a table.
+_SHEET = 0.05
+
+
+def _sheet(m: Model) -> None:
+    """A printed sheet on a backing board, as thin as its size says, standing (hung on a wall) or
+    lying (spread on a table): no feet, which would hold it off the wall or the table."""
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.main = "paper"
+    if m.sy <= m.sz:  # upright, its face toward -y
+        m.box("paint", (-W, -D, 0), (W, D, H), rounded=0.0)
+        m.box("paper", (-0.92 * W, -D - 0.002, 0.06 * H), (0.92 * W, -D, 0.94 * H), rounded=0.0)
+        m.box("accent", (-0.8 * W, -D - 0.003, 0.7 * H), (0.8 * W, -D - 0.002, 0.85 * H), rounded=0.0)
+        return
+    m.box("paint", (-W, -D, 0), (W, D, H), rounded=0.0)  # lying, its face up
+    m.box("paper", (-0.92 * W, -0.92 * D, H), (0.92 * W, 0.92 * D, H + 0.002), rounded=0.0)
+    m.box("accent", (-0.8 * W, 0.5 * D, H + 0.002), (0.8 * W, 0.8 * D, H + 0.003), rounded=0.0)
+
+
 def panel(m: Model) -> None:
     """A flat upright board: a screen on feet, a banner between poles, a notice board on
     legs, a tilted solar panel, a windsock (filed with panels as a thing that flies); else a
@@ -384,6 +403,9 @@ def panel(m: Model) -> None:
         return
     if m.named("backdrop", "back drop", "scenery", "flat", "set piece", "cyclorama", "painted cloth"):
         _backdrop(m)
+        return
+    if min(m.sy, m.sz) <= _SHEET:
+        _sheet(m)
         return
     board_lo = (0.35 if m.named("notice board", "bulletin board", "noticeboard", "corkboard", "cork board") else 0.25) * H
     if m.named("screen", "display", "monitor", "video wall", "projection screen", "jumbotron", "hologram", "holo"):
