@@ -1358,3 +1358,21 @@ def test_what_a_cart_is_of_rides_on_it_and_the_cart_stands_by_the_place(text, lo
     found = rels(text)
     loads = {s for s, r, t in found if r == "on" and t == carrier and s.startswith(load)}
     assert loads and not any(s in loads and t == place for s, _, t in found), found
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("Two tables stand by the door. A lamp sits on the one on the right.", {("table_lamp_1", "on", "table_2")}),
+        ("Two tables stand by the door. A lamp sits on the left one.", {("table_lamp_1", "on", "table_1")}),
+        ("Two tall bookcases stand by the wall, and a ladder leans against the one on the left.",
+         {("ladder_1", "side of", "bookshelf_1")}),
+    ],
+)
+def test_the_side_that_picks_one_of_a_group_is_no_relation(text, expected):
+    assert rels(text) == expected
+
+
+def test_a_third_of_a_group_named_with_ics_is_one_more_of_them():
+    names = [o.name for o in parse_scene("Two mechanics rivet a boiler, and a third climbs a ladder.").objects]
+    assert names.count("mechanic") == 3

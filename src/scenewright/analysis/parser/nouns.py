@@ -517,7 +517,7 @@ def _elided_members(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention
         if chosen is None:
             continue
         *kind, head = chosen.phrase.split()
-        name = " ".join([*kind, singular(head) if head.islower() else head])
+        name = " ".join([*kind, load_vocabulary().singular(head) if head.islower() else head])  # ("a third" of "mechanics")
         m = _Mention(chosen.category, name, k, k + 1, 1, False, False)
         m.guess, m.modifier = chosen.guess, chosen.modifier
         out.append(m)

@@ -111,7 +111,7 @@ def _rows_at(toks: list[_Tok], i: int) -> _Rel | None:
 
 
 def _qualifies_noun(toks: list[_Tok], end: int, kind: str) -> bool:
-    """"on the left wall", "on the left bench": the side word is the next noun's adjective, so
+    """"on the left wall", "on the left bench", "on the left one": the side word is the next noun's adjective, so
     the phrase is only its preposition (a wall is no object: nothing is left of anything).
     "A ring of stones", "two circles of chairs": a verb of going around that is also a noun is
     the noun before its "of". "In the front row": the row's adjective."""
@@ -122,7 +122,7 @@ def _qualifies_noun(toks: list[_Tok], end: int, kind: str) -> bool:
     if kind not in ("left", "right") or end >= len(toks):
         return False
     w = toks[end].text
-    return w[0].isalpha() and w not in _STOP and not _is_verb(w)
+    return w in ("one", "ones") or (w[0].isalpha() and w not in _STOP and not _is_verb(w))  # ("on the left one")
 
 
 #: Words that open a noun phrase: a phrase word right after one is a noun's own word ("a border

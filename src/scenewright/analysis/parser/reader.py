@@ -1924,7 +1924,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return end
         instance = self.instance.get(self._target_start) if isinstance(target, list) else None
         if target == "that one" and self.groups[targets[0]].count > 1:  # "in front of the middle one"
-            named = [t.text for t in toks[rel.end : end - 1] if t.text not in _DETERMINERS]
+            named = [t.text for t in toks[rel.end : end] if t.text not in _DETERMINERS and t.text not in ("one", "on")]
             instance = self._member(named, targets[0])
         tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
         if c.each_own is not None and tm is not None and not tm.definite and not tm.each:

@@ -121,7 +121,9 @@ class _References:
             if w == "each" and of_them:
                 return "each one", j + 3  # "a clock hangs above each of them": as "each one"
             if w == "one" and j > pos and toks[j - 1].text not in _NUMBERS and (j + 1 >= ce or toks[j + 1].text != "of"):
-                return "that one", j + 1  # "at the foot of the tallest one": one of a group named before
+                side = [t.text for t in toks[j + 1 : j + 4]] in (["on", "the", "left"], ["on", "the", "right"])
+                # "at the foot of the tallest one": one of a group named before; "the one on the left"
+                return "that one", j + (4 if side else 1)
             # a word hyphen-joined to its neighbour, or right before the noun, describes the noun
             # ("a fold-down table", "a tall parts cabinet"), whatever verb it could also be
             hyphened = (j > pos and toks[j].joined) or (j + 1 < ce and toks[j + 1].joined)
