@@ -238,3 +238,13 @@ def test_a_wall_thing_named_in_a_standing_form_stands_against_the_wall():
     hung = wall_phrases(parse_scene("A round mirror hangs on the left wall."))
     assert [r.relation for r in standing] == ["against wall"]
     assert [r.relation for r in hung] == ["on wall"]
+
+
+@pytest.mark.parametrize(("text", "indoor"), [
+    ("A child's playroom in claymation style. A rocking horse stands by the window.", True),
+    ("A quiet tearoom. Two ladies sit at a small table.", True),
+    ("A research station in Antarctica. Three red huts stand in a row on the snow, and a snowcat waits.", False),
+    ("Mushrooms grow around a fallen log.", False),
+])
+def test_a_room_a_compound_names_is_inside_and_several_buildings_stand_outside(text, indoor):
+    assert parse_scene(text).indoor is indoor

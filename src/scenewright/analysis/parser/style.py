@@ -433,6 +433,12 @@ _OPEN_LAND = ("desert", "field", "fields", "forest", "woods", "hills", "mountain
               "savannah", "tundra", "jungle", "countryside", "dunes", "wilderness", "moor", "moors", "valley")
 
 
+#: What each of several buildings standing among the objects weighs against an indoor setting.
+_STANDING_BUILDING_VOTES = 5
+#: A room, also one a closed compound names ("a playroom", "the boardroom"; no mushroom).
+_ROOM_WORD = re.compile(r"\b(?!mush)\w*rooms?\b")
+
+
 def _is_indoor(categories: list[str], text: str, catalogue, places: list[str] = ()) -> bool:
     """Whether the scene stands inside (and so gets a room, docs/rooms.md): the objects' tags,
     the places the reader found, and place words vote, those of the opening sentence (where a
@@ -447,6 +453,10 @@ def _is_indoor(categories: list[str], text: str, catalogue, places: list[str] = 
     for name in categories:
         tags = catalogue[name].tags
         votes += ("indoor" in tags) - ("outdoor" in tags)
+    # buildings that stand in the scene are seen from outside ("three red huts stand on the snow"); one
+    # may be the setting itself ("the winter quarters, a big barn with sawdust on the floor")
+    buildings = sum(catalogue[name].shape in ("house", "building") and catalogue[name].size[2] >= 2.5 for name in categories)
+    votes -= _STANDING_BUILDING_VOTES * buildings * (buildings > 1)
     # a building the opening sentence stands in outweighs what stands there ("A cow shed at milking
     # time: four cows ..."); one named further on counts as one voice among the objects
     stood_in = re.split(r"\bwith\b", opening, maxsplit=1)[0]  # (not "a graveyard, with a chapel at the end")
@@ -454,7 +464,8 @@ def _is_indoor(categories: list[str], text: str, catalogue, places: list[str] = 
     landscape = re.search(rf"\b(?:in|on|at)\s+(?:the|a|an)\s+(?:\w+\s+)?(?:{'|'.join(_OPEN_LAND)})\b", stood_in)
     votes += sum(3 + 7 * (p in stood_in and not landscape) for p in places if _building(p))
     votes += 3 * len(_INSIDE.findall(low))
-    for word in ("room", "kitchen", "bedroom", "bathroom", "office", "classroom", "lab", "apartment", "studio",
+    votes += 2 * (bool(_ROOM_WORD.search(setting)) + bool(_ROOM_WORD.search(opening)))  # "a playroom", "a tearoom"
+    for word in ("kitchen", "bedroom", "bathroom", "office", "classroom", "lab", "apartment", "studio",
                  "café", "cafe", "shop", "store", "boutique", "gallery", "hall", "interior", "indoors", "smithy",
                  "cave", "cavern"):
         votes += 2 * (bool(re.search(rf"\b{word}\b", setting)) + bool(re.search(rf"\b{word}\b", opening)))
