@@ -181,3 +181,13 @@ def test_a_thin_panel_is_a_sheet_without_feet_standing_or_lying():
     assert np.ptp(lying[:, 2]) < 0.03 and np.ptp(lying[:, 1]) > 0.9 * 0.45
     notice = points("panel", (1.2, 0.3, 1.6), "notice board", roles={"fur_light"})
     assert notice[:, 2].min() > 0.3 * 1.6, "a free-standing board keeps its feet"
+
+
+def test_a_rocking_horse_stands_on_runners_and_toys_are_drawn_as_what_they_show():
+    runners = points("animal", (0.4, 1.0, 0.8), "rocking horse", roles={"dark_wood"})
+    assert np.ptp(runners[:, 1]) > 0.7 and runners[:, 2].min() < 0.02, "runners along its length, on the floor"
+    hooves = points("animal", (0.4, 1.0, 0.8), "rocking horse", roles={"dark_plastic"})
+    assert hooves[:, 2].min() > 0.02, "the hooves stand on the runners"
+    teddy = scene_frame(build_model("tool", (0.3, 0.25, 0.35), "realistic", 1, name="teddy bear"))
+    toolbox = scene_frame(build_model("tool", (0.3, 0.25, 0.35), "realistic", 1, name="toolbox"))
+    assert set(teddy) != set(toolbox)

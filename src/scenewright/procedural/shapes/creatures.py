@@ -110,13 +110,17 @@ def animal(m: Model) -> None:
             m.cylinder(coat, (s * 0.6 * bw, body_y - 0.7 * half, body_z), (s * 0.8 * bw, body_y - 0.95 * half, body_z - 0.4 * gz),
                        0.3 * leg, 0.2 * leg, fraction=0.4)
     else:
+        rocking = m.named("rocking horse", "rocking")
         for x in (-0.6 * bw, 0.6 * bw):
             for y in (body_y - 0.65 * half, body_y + 0.7 * half):
                 top = body_z - 0.2 * gz
-                m.cylinder(face, (x, y, top), (x, y, 0.0), leg, 0.8 * leg if b.leg < 0.12 else leg, fraction=0.5)
+                foot = _rocker_z(m, y - body_y, half, leg) if rocking else 0.0
+                m.cylinder(face, (x, y, top), (x, y, foot), leg, 0.8 * leg if b.leg < 0.12 else leg, fraction=0.5)
                 m.ball(coat, (x, y, top - 0.1 * leg_h), (1.5 * leg, 1.8 * leg, 0.3 * leg_h + gz * 0.3), fraction=0.5)
                 hoof = "dark_plastic" if kind not in ("elephant", "mammoth") else "horn"
-                m.ball(hoof, (x, y - 0.15 * leg, 0.2 * leg), (leg, 1.15 * leg, 0.2 * leg), fraction=0.4)
+                m.ball(hoof, (x, y - 0.15 * leg, foot + 0.2 * leg), (leg, 1.15 * leg, 0.2 * leg), fraction=0.4)
+        if rocking:
+            _rockers(m, bw, body_y, half, leg)
     # Neck and head.
     head = np.array([0.0, -b.head_y * m.sy / 2, b.head_z * m.sz])
     hr = b.head * m.sz
@@ -135,6 +139,22 @@ def animal(m: Model) -> None:
     _ears(m, b, face, head, hw, hr)
     _tail(m, b, coat, body_y + half, body_z, gz, bw)
     _features(m, kind, coat, head, hw, hr, snout, snout_len, body_y, half, body_z, gz, bw, shoulder)
+
+
+def _rocker_z(m: Model, along: float, half: float, leg: float) -> float:
+    """The height of a rocking horse's runner top ``along`` its length from the body's middle."""
+    return 0.12 * m.sz * (along / (1.35 * half)) ** 2 + leg
+
+
+def _rockers(m: Model, bw: float, body_y: float, half: float, leg: float) -> None:
+    """Two curved wooden runners the hooves stand on, joined at their ends: a rocking horse."""
+    ys = np.linspace(body_y - 1.35 * half, body_y + 1.35 * half, 9)
+    zs = [_rocker_z(m, y - body_y, half, leg) - 0.5 * leg for y in ys]
+    for x in (-0.6 * bw, 0.6 * bw):
+        for k in range(len(ys) - 1):
+            m.cylinder("dark_wood", (x, ys[k], zs[k]), (x, ys[k + 1], zs[k + 1]), 0.5 * leg, 0.5 * leg, fraction=0.4)
+    for k in (0, -1):
+        m.cylinder("dark_wood", (-0.6 * bw, ys[k], zs[k]), (0.6 * bw, ys[k], zs[k]), 0.4 * leg, 0.4 * leg, fraction=0.4)
 
 
 def _ears(m: Model, b: Build, coat: str, head, hw: float, hr: float) -> None:

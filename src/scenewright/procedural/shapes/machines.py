@@ -9,6 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from scenewright.procedural.builder import Model
+from scenewright.procedural.shapes import creatures
 from scenewright.procedural.shapes.frames import ring
 from scenewright.procedural.shapes.vehicles import _battle_tank
 
@@ -981,7 +982,8 @@ def tool(m: Model) -> None:
     wrench, a long-handled tool (shovel, fork, rake, broom, golf club), a sword, a lens, papers
     or a scroll, a telescope, a traffic cone, a trophy, a radio, a weathervane, a skateboard,
     a tyre, a spoked wheel, a microscope, a skull, a till, a power tool, a compass, shears, a tape measure, a
-    grindstone on its frame, a shoemaker's last, a potter's wheel, a helmet, a gadget; else a toolbox. The variant named first
+    grindstone on its frame, a shoemaker's last, a potter's wheel, a helmet, a gadget, a teddy bear
+    or a doll; else a toolbox. The variant named first
     wins ("radio scanner" is a radio)."""
     variants = (
         (("anvil",), _anvil),
@@ -1016,6 +1018,9 @@ def tool(m: Model) -> None:
         (("helmet", "hard hat", "hardhat", "crash helmet"), _helmet),
         (("gadget", "device", "remote", "walkie-talkie", "scanner", "detector", "controller", "calculator",
           "phone", "tablet"), _gadget),
+        # toys in hand: a small animal or person, which the parse keeps a thing that is held
+        (("teddy", "teddy bear", "plush toy", "stuffed animal", "soft toy", "cuddly toy"), creatures.animal),
+        (("doll", "rag doll", "action figure"), creatures.figure),
     )
     (m.first_named(variants) or _toolbox)(m)
 
