@@ -1376,3 +1376,8 @@ def test_the_side_that_picks_one_of_a_group_is_no_relation(text, expected):
 def test_a_third_of_a_group_named_with_ics_is_one_more_of_them():
     names = [o.name for o in parse_scene("Two mechanics rivet a boiler, and a third climbs a ladder.").objects]
     assert names.count("mechanic") == 3
+
+
+def test_what_is_scattered_across_a_table_is_on_it():
+    found = rels("Three maps are scattered across the table.")
+    assert {("map_1", "on", "table_1"), ("map_2", "on", "table_1"), ("map_3", "on", "table_1")} <= found
