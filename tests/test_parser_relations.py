@@ -1381,3 +1381,8 @@ def test_a_third_of_a_group_named_with_ics_is_one_more_of_them():
 def test_what_is_scattered_across_a_table_is_on_it():
     found = rels("Three maps are scattered across the table.")
     assert {("map_1", "on", "table_1"), ("map_2", "on", "table_1"), ("map_3", "on", "table_1")} <= found
+
+
+def test_a_thing_that_acts_from_the_roof_of_another_is_on_it():
+    text = "Three huts stand in a row. A satellite dish points at the sky from the roof of the middle hut."
+    assert ("pylon_1", "on", "house_2") in rels(text)

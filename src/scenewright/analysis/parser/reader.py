@@ -106,6 +106,9 @@ _ONE_SEAT_WIDTH = 1.0
 #: How many sides "every side" / "all sides" names: a square's.
 _ALL_SIDES = 4
 
+#: Parts on top of a thing: what does something "from the roof of" it is fixed there.
+_ROOF_PARTS = {"roof", "rooftop", "top"}
+
 
 def _every_side(toks: list[_Tok], k: int, ce: int) -> int:
     """How many sides "every side", "all sides" or "all four sides" at ``k`` names, or how many of
@@ -2321,6 +2324,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # one who watches or waves from what carries nobody stands by it ("watches them from the gate")
             if self._living(s) and (self._carrier(t) or self._perch_part):
                 return "on"
+            if kind == "from" and self._part in _ROOF_PARTS:
+                return "on"  # "a dish points at the sky from the roof of the hut": fixed up there
             return "near" if kind == "from" and self._living(s) else "no relation"
         if kind == "hanging from":
             # from a beam: above it; from a tree: beside it; from anything else (a post, a stall, a
