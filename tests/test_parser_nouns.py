@@ -1332,3 +1332,10 @@ def test_n_more_are_more_of_the_latest_subject_or_object():
 def test_a_noun_nobody_listed_is_the_listed_noun_it_ends_with(text, name, category):
     found = {o.name.lower(): o.category for o in parse_scene(text).objects}
     assert found.get(name) == category, found
+
+
+def test_a_statue_of_an_animal_is_about_its_animal_s_size():
+    found = {o.name: o for o in parse_scene("A cat statue sits on the shelf, and a knight statue stands by the door.").objects}
+    assert max(found["cat statue"].size) < 1.0 and found["knight statue"].size[2] >= 1.8
+    assert ("statue_1", "on", "bookshelf_1") in {(r.source, r.relation, r.target) for r in parse_scene(
+        "A cat statue sits on the shelf.").relations}

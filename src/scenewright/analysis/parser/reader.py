@@ -106,6 +106,9 @@ _ONE_SEAT_WIDTH = 1.0
 #: How many sides "every side" / "all sides" names: a square's.
 _ALL_SIDES = 4
 
+#: How much larger than its animal a statue of one is.
+_LIKENESS_SCALE = 1.3
+
 #: Parts on top of a thing: what does something "from the roof of" it is fixed there.
 _ROOF_PARTS = {"roof", "rooftop", "top"}
 
@@ -332,7 +335,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         name = " ".join([*kind, name])
         description = " ".join([*describing, name, *m.post]).strip()
         bounds = "person" if cat.shape == "figure" else "thing"
-        base = stretched(scaled(m.guess.size if m.guess is not None else cat.size, describing, bounds), describing)
+        base = m.guess.size if m.guess is not None else self._likeness_size(cat, kind) or cat.size
+        base = stretched(scaled(base, describing, bounds), describing)
         likeness_of = {*kind, *describing} & vocabulary.replica_words
         if likeness_of and (cat.shape != "figure" or likeness_of - {"model"}):
             base = replica(base)  # "a toy spaceship", "a model lighthouse", "toy soldiers" (not "a fashion model")
@@ -446,6 +450,18 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return -1
         m.group = self._new_group(m, sizes)
         return m.group
+
+    def _likeness_size(self, cat: Category, kind: list[str]) -> tuple[float, float, float] | None:
+        """The size of a statue of an animal ("a cat statue", "a horse statue"): its animal's,
+        a little larger; None for any other thing (a statue of a person stands taller than life)."""
+        if cat.shape != "statue" or not kind:
+            return None
+        entry = load_vocabulary().match(tuple(kind))
+        category = entry.category if entry is not None else match_phrase(tuple(kind))
+        if category is None or self.catalogue[category].shape not in ("animal", "bird"):
+            return None
+        size = entry.size if entry is not None else self.catalogue[category].size
+        return tuple(round(_LIKENESS_SCALE * v, 4) for v in size)
 
     def _member(self, words: list[str], g: int) -> int:
         """Which of a group's members the describing words name: "the middle table" of four the one
