@@ -1339,3 +1339,9 @@ def test_a_statue_of_an_animal_is_about_its_animal_s_size():
     assert max(found["cat statue"].size) < 1.0 and found["knight statue"].size[2] >= 1.8
     assert ("statue_1", "on", "bookshelf_1") in {(r.source, r.relation, r.target) for r in parse_scene(
         "A cat statue sits on the shelf.").relations}
+
+
+def test_a_place_word_a_clause_has_stand_somewhere_is_a_building_of_the_scene():
+    parsed = parse_scene("A dusty main street at noon. A saloon stands on the left, and two horses wait by the rail.")
+    assert "saloon" in {o.name for o in parsed.objects} and not parsed.indoor
+    assert "tavern" not in {o.name for o in parse_scene("A tavern at dusk. A bard sits by the fire.").objects}

@@ -1717,10 +1717,15 @@ def _agent_compound(rest: str) -> bool:
     return len(rest) >= 3 and rest.endswith(("er", "or", "man", "woman", "ist"))
 
 
+#: Verbs by which a building stands in a scene ("a saloon stands on the left", "a chapel rises behind it").
+_BUILDING_STANDS = {"stands", "sits", "rises", "looms", "towers", "squats", "perches", "nestles"}
+
+
 def _buildings(toks: list[_Tok], covered: set[int]) -> list:
     """A place word sets the scene ("a tavern at dusk"), but one a telling sentence puts a thing
     outside of is a building of the scene ("a mule waits beside the tavern", "milk churns stand at
-    the foot of the little waiting room"); inside it ("in the tavern") it stays the setting."""
+    the foot of the little waiting room"), and so is one a clause has stand somewhere ("a saloon
+    stands on the left"); inside it ("in the tavern") it stays the setting."""
     table = load_vocabulary().buildings
     out: list = []
     for k, t in enumerate(toks):
@@ -1738,7 +1743,11 @@ def _buildings(toks: list[_Tok], covered: set[int]) -> list:
             ):
                 j -= 1  # back over describing words ("the little waiting room", "a false-front saloon")
             placed = j >= 0 and (_placed_by(toks, j) or _outside_part_of(toks, j))  # ("on the roof of the inn")
-            if not placed or toks[j].text not in _DETERMINERS or _verbless_opening(toks, j):
+            # "a saloon stands on the left": a building a clause opens with, standing somewhere
+            stands = j >= 0 and toks[j].text in ("a", "an") and after in _BUILDING_STANDS and (
+                j == 0 or toks[j - 1].text in (".", "!", "?", ";", ",", "and")
+            )
+            if not stands and (not placed or toks[j].text not in _DETERMINERS or _verbless_opening(toks, j)):
                 break
             end = k + width
             out.append((k, end, entry.category, entry))
