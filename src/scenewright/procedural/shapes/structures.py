@@ -404,7 +404,7 @@ def panel(m: Model) -> None:
     if m.named("backdrop", "back drop", "scenery", "flat", "set piece", "cyclorama", "painted cloth"):
         _backdrop(m)
         return
-    if min(m.sy, m.sz) <= _SHEET:
+    if m.sy <= _SHEET or m.sz < min(m.sx, m.sy):  # (lying: "a map on the table", "a striped awning")
         _sheet(m)
         return
     board_lo = (0.35 if m.named("notice board", "bulletin board", "noticeboard", "corkboard", "cork board") else 0.25) * H
