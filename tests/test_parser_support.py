@@ -128,3 +128,10 @@ def test_a_lifeless_thing_is_sized_for_the_small_host_the_text_puts_it_on():
     for thing, host in (("dinosaur_skeleton_1", "barrel_1"), ("spaceship_1", "bench_1")):
         assert (thing, "on", host) in got and max(size[thing][:2]) <= max(size[host][:2])
     assert ("sofa_1", "side of", "desk_1") in got
+
+
+def test_furniture_stands_on_a_stage_as_on_a_floor_but_not_on_a_crate():
+    on = {(r.source, r.relation, r.target) for r in parse_scene("A low round stage holds a grand piano.").relations}
+    assert ("piano_1", "on", "stage_1") in on
+    on = {(r.source, r.relation, r.target) for r in parse_scene("A sofa sits on the crate.").relations}
+    assert ("sofa_1", "on", "crate_1") not in on

@@ -169,6 +169,8 @@ _NO_TOP = {"figure", "bird", "mannequin", "scarecrow"}
 _UNKNOWN = "thing"
 #: A host this low is ground-like (a rug, a pond, a pallet, a blanket): anything may stand on it.
 FLAT_HOST = 0.3
+#: m, the highest top of a thing one stands on that is a floor to furniture (a stage, a pier).
+_PLATFORM_TOP = 1.5
 #: How much larger than its host a thing may be and still rest on it (footprint, longest side):
 #: a statue overhangs its plinth, a bird its bollard.
 _AREA_SLACK, _SIDE_SLACK = 2.0, 1.6
@@ -271,7 +273,9 @@ def can_hold(host: ParsedObject, thing: ParsedObject, catalogue) -> bool:
     if host.category == "planter" and catalogue[thing.category].shape in _PLANT_SHAPES:
         return True  # a tree grows out of its planter, its crown far wider than the pot
     if thing.category in _FLOOR_FURNITURE:
-        return False
+        # a stage or a pier is a floor to what stands on it ("a low round stage holds a grand piano")
+        floor = load_vocabulary().carries(host.category, host.name, ("perches",)) and host.size[2] <= _PLATFORM_TOP
+        return floor and thing.size[0] * thing.size[1] <= host.size[0] * host.size[1]
     area = thing.size[0] * thing.size[1] <= _AREA_SLACK * host.size[0] * host.size[1]
     side = max(thing.size[:2]) <= _SIDE_SLACK * max(host.size[:2])
     return area and side
