@@ -1386,3 +1386,9 @@ def test_what_is_scattered_across_a_table_is_on_it():
 def test_a_thing_that_acts_from_the_roof_of_another_is_on_it():
     text = "Three huts stand in a row. A satellite dish points at the sky from the roof of the middle hut."
     assert ("pylon_1", "on", "house_2") in rels(text)
+
+
+def test_one_who_acts_on_a_small_living_thing_is_by_it():
+    found = rels("Three pups sleep on the sand, and a vet checks the smallest pup.")
+    assert any(s == "vet_1" and r == "near" and t.startswith("pup_") for s, r, t in found), found
+    assert ("woman_1", "near", "stove_1") in rels("A pot sits on the stove, and a woman stirs the pot.")

@@ -1142,9 +1142,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
     def _do_deeds(self, c: _Clause) -> None:
         """"A porter pushes a cart", "two engineers check the console": whoever acts on a thing
         too big to hold stands by it, unless the clause already relates the two; one who acts on
-        a small thing stands by what it is on ("stirs a pot on the stove": by the stove)."""
+        a small thing stands by what it is on ("stirs a pot on the stove": by the stove), or by it
+        when it lives ("a vet checks the smallest pup")."""
         for doers, thing in c.deeds:
-            if self._small(thing):
+            if self._small(thing) and not self._living(thing):
                 hosts = [r[2] for r in self.relations if r[0] == "on" and r[1] == thing and r[2] not in doers]
                 if not hosts:
                     continue
