@@ -1345,3 +1345,16 @@ def test_a_place_word_a_clause_has_stand_somewhere_is_a_building_of_the_scene():
     parsed = parse_scene("A dusty main street at noon. A saloon stands on the left, and two horses wait by the rail.")
     assert "saloon" in {o.name for o in parsed.objects} and not parsed.indoor
     assert "tavern" not in {o.name for o in parse_scene("A tavern at dusk. A bard sits by the fire.").objects}
+
+
+@pytest.mark.parametrize(
+    ("text", "word", "many"),
+    [
+        ("Two planks lean against the wall.", "plank", 2),
+        ("Three pipes lie on the floor by the boiler.", "pipe", 3),
+        ("A half-built airship hull hangs from chains above the floor.", "airship", 1),
+        ("A market stall with a striped awning stands by the well.", "awning", 0),
+    ],
+)
+def test_a_part_put_somewhere_on_its_own_is_a_thing(text, word, many):
+    assert sum(o.name.split()[-1] == word for o in parse_scene(text).objects) == many

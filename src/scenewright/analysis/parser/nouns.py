@@ -330,7 +330,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         # "three sheep graze": after a count, a compound would end in a plural ("three fish tanks")
         verb_after = _counted_plural(toks, s) and e < n and not toks[e].joined and singular(follow) == follow
         verb_after = verb_after or several
-        if entry is not None and singular(words[-1]) == words[-1] and _names_kind(toks, e) and not verb_after:
+        # ("an airship hull hangs from chains": a part put somewhere on its own stands for its thing)
+        whole = e + 1 < n and toks[e].text in _WHOLE_PARTS and _placed_verb(toks, e + 1)
+        if entry is not None and singular(words[-1]) == words[-1] and _names_kind(toks, e) and not verb_after and not whole:
             continue  # "a bear face", "a train compartment", "camel-hair tents": a kind, not a thing
         if _use_compound(toks, s, e, cat):
             continue  # "a sheep shearing shed", "a horse riding school": what the next thing is for
@@ -1367,7 +1369,13 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         compound = word in _MEASURE_THINGS and head > i + 1 and (not vocabulary.is_adjective(kind) or kind.endswith("ing"))
         # "two ground crew": a people group counted is so many of its people ("a film crew" is none)
         members = _NUMBERS.get(w, 0) > 1 and word in _PEOPLE_GROUPS and not (j < n and toks[j].text == "of")
-        if not (vocabulary.is_thing_word(word) or held or counted_place or stock or compound) or (
+        # "two planks lean against the wall": a part counted out and put somewhere is a thing of its
+        # own (not "its planks", "the hull")
+        # ("a tall bouldering wall rises along one side": a wall of its own, not the room's)
+        part = word in vocabulary.parts or word == "wall"
+        loose = w not in ("the", *_OWNERS) and part and j < n and _placed_verb(toks, j)
+        loose = loose and (i == 0 or toks[i - 1].text in (".", "!", "?", ";", ",", "and"))  # (its clause's subject)
+        if not (vocabulary.is_thing_word(word) or held or counted_place or stock or compound or loose) or (
             word in _QUANTITY and not counted_place and not compound and not members
         ) or (j < n and toks[j].text == "of"):
             continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"
@@ -1971,6 +1979,17 @@ def _opens_phrase(toks: list[_Tok], k: int) -> bool:
 
 #: Verbs that place their subject: a definite noun nobody listed before one is a thing of the scene.
 _PLACING_VERBS = _HANG_VERBS | {"stands", "sits", "lies", "rises", "rests", "leans", "waits", "towers", "looms"}
+
+
+#: Parts that, put somewhere on their own, stand for their whole thing ("an airship hull hangs from chains").
+_WHOLE_PARTS = {"hull", "chassis", "fuselage", "frame", "carcass"}
+
+
+def _placed_verb(toks: list[_Tok], k: int) -> bool:
+    """A verb at ``k`` that puts its subject somewhere, in either number ("lies", "lean", "are piled")."""
+    word = toks[k].text
+    laid = k + 1 < len(toks) and (toks[k + 1].text in _LAID or toks[k + 1].text in _STANDING)
+    return word in _PLACING_VERBS or f"{word}s" in _PLACING_VERBS or (word in ("are", "is") and laid)
 
 
 def _unknown_heads(toks: list[_Tok], raw: list, covered: set[int]) -> list:

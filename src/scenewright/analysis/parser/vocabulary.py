@@ -52,6 +52,8 @@ class Vocabulary:
     entries: dict[tuple[str, ...], Entry]
     not_things: frozenset[str]
     places: frozenset[str]
+    #: Parts of a thing ("hull", "planks", "pipes"): no thing where they belong to one.
+    parts: frozenset[str]
     adjectives: frozenset[str]
     size_words: dict[str, float]
     #: How far size words may take a thing ("thing") or a person ("person") from the size its
@@ -286,6 +288,7 @@ def _validate(raw: dict) -> Vocabulary:
         entries=entries,
         not_things=not_things,
         places=frozenset(lists["places"]),
+        parts=frozenset(lists["parts"]),
         adjectives=frozenset(raw["adjectives"]),
         size_words={k: float(v) for k, v in raw["size_words"].items()},
         size_word_bounds={k: (float(v[0]), float(v[1])) for k, v in raw["size_word_bounds"].items()},
