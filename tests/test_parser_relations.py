@@ -1392,3 +1392,9 @@ def test_one_who_acts_on_a_small_living_thing_is_by_it():
     found = rels("Three pups sleep on the sand, and a vet checks the smallest pup.")
     assert any(s == "vet_1" and r == "near" and t.startswith("pup_") for s, r, t in found), found
     assert ("woman_1", "near", "stove_1") in rels("A pot sits on the stove, and a woman stirs the pot.")
+
+
+def test_a_small_animal_under_a_table_is_by_it_and_a_rug_lies_under_it():
+    assert rels("A pair of mice nibble crumbs under the table.") >= {("mouse_1", "near", "table_1")}
+    assert ("table_1", "on", "mouse_1") not in rels("A pair of mice nibble crumbs under the table.")
+    assert ("table_1", "on", "rug_1") in rels("A rug lies under the table.")

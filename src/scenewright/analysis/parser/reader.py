@@ -2305,8 +2305,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return "near"  # a tree "above" a pond cannot float: read it as near (a rack on the wall can hang)
         if kind == "under" and self._overhead(t):
             return "under hung"  # "chairs under a ceiling fan": the fan hangs above them
-        if kind == "under":
-            return "under flat" if self.groups[s].size[2] < 0.1 and target.size[2] < 1.5 else "near"
+        if kind == "under":  # "a rug under the table" lies flat under it; "mice under the table" are by it
+            flat = self.groups[s].size[2] < 0.1 and target.size[2] < 1.5 and not self._living(s)
+            return "under flat" if flat else "near"
         if kind == "at":  # "an office chair at each desk": pulled up to it, facing it
             seat = self.catalogue[src.category].shape in _SEATS
             return "at seat" if seat and (target.support or target.shape in ("desk", "table", "counter")) else "near"
