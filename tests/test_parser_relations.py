@@ -1398,3 +1398,7 @@ def test_a_small_animal_under_a_table_is_by_it_and_a_rug_lies_under_it():
     assert rels("A pair of mice nibble crumbs under the table.") >= {("mouse_1", "near", "table_1")}
     assert ("table_1", "on", "mouse_1") not in rels("A pair of mice nibble crumbs under the table.")
     assert ("table_1", "on", "rug_1") in rels("A rug lies under the table.")
+
+
+def test_an_opening_with_a_verb_the_vocabulary_knows_as_a_noun_names_things():
+    assert ("ball_1", "on", "seal_1") in rels("A seal balances a ball on its nose.")

@@ -1167,13 +1167,20 @@ def _opening_place_word(toks: list[_Tok]) -> str | None:
     return None
 
 
+def _verb_with_object(toks: list[_Tok], k: int) -> bool:
+    """A verb at ``k``, also one the vocabulary knows as a noun when an object follows it ("a seal
+    balances a ball")."""
+    w = toks[k].text
+    return _verb_word(w) or (_is_verb(w) and k + 1 < len(toks) and toks[k + 1].text in ("a", "an", "the", "its", "his", "her", "their"))
+
+
 def _unknown_opening_place(toks: list[_Tok], s: int, e: int) -> bool:
     """A noun nobody listed heads a verbless opening sentence (or the part after its style line's
     colon) and is followed by where or when it is: "A busy perfumery, all brass and glass.",
     "Bold colours: a riverside regatta on a Sunday afternoon." name the setting, not a thing."""
     j = s - 1
     while j >= 0 and (toks[j].text in _DETERMINERS or toks[j].text[:1].isalpha() and toks[j].text not in _STOP
-                      and not _verb_word(toks[j].text)):  # fmt: skip
+                      and not _verb_with_object(toks, j)):  # fmt: skip
         j -= 1
     if j >= 0 and toks[j].text != ":" or any(t.text in (".", "!", "?") for t in toks[:s]):
         return False
