@@ -191,3 +191,9 @@ def test_a_rocking_horse_stands_on_runners_and_toys_are_drawn_as_what_they_show(
     teddy = scene_frame(build_model("tool", (0.3, 0.25, 0.35), "realistic", 1, name="teddy bear"))
     toolbox = scene_frame(build_model("tool", (0.3, 0.25, 0.35), "realistic", 1, name="toolbox"))
     assert set(teddy) != set(toolbox)
+
+
+def test_a_stagecoach_is_a_closed_coach_on_four_wheels_not_a_car():
+    coach = scene_frame(build_model("vehicle", (1.7, 3.2, 2.2), "realistic", 1, name="stagecoach"))
+    car = scene_frame(build_model("vehicle", (1.7, 3.2, 2.2), "realistic", 1, name="sedan"))
+    assert "glass" in coach and "dark_wood" in coach and set(coach) != set(car)

@@ -325,6 +325,38 @@ def _wheelbarrow(m: Model) -> None:
                    fraction=0.4)
 
 
+def _spokes(m: Model, x: float, y: float, r: float) -> None:
+    """A wooden wheel at (``x``, ``y``) of radius ``r``, its axle along x: a rim and four spokes across."""
+    m.torus("dark_wood", (x, y, r), r - 0.03, 0.03, axis="x")
+    for k in range(4):
+        a = np.pi * k / 4
+        # (each spoke a little thicker than the one before: crossing spokes would share their faces)
+        m.beam("dark_wood", (x, y - np.cos(a) * r, r - np.sin(a) * r), (x, y + np.cos(a) * r, r + np.sin(a) * r), 0.025 * (1 + 0.1 * k))
+
+
+def _coach(m: Model) -> None:
+    """A horse-drawn coach facing -y: a closed cabin with windows between small front and big
+    back wheels, a roof rail and the driver's box in front."""
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.main = "paint"
+    front_r, back_r = 0.22 * H, 0.3 * H
+    floor = 0.38 * H
+    m.box("paint", (-0.8 * W, -0.45 * D, floor), (0.8 * W, 0.6 * D, 0.88 * H))
+    m.box("dark_wood", (-0.85 * W, -0.5 * D, 0.88 * H), (0.85 * W, 0.65 * D, 0.92 * H))
+    for x in (-0.8 * W - 0.004, 0.8 * W):
+        m.box("glass", (x, -0.25 * D, 0.6 * H), (x + 0.004, 0.35 * D, 0.8 * H), rounded=0.0)
+    for x in (-0.9 * W, 0.9 * W):  # the roof rail
+        m.beam("dark_metal", (x, -0.45 * D, 0.98 * H), (x, 0.6 * D, 0.98 * H), 0.015)
+    m.box("dark_wood", (-0.7 * W, -0.95 * D, 0.55 * H), (0.7 * W, -0.5 * D, 0.62 * H))  # the driver's box
+    m.box("dark_wood", (-0.7 * W, -0.6 * D, 0.62 * H), (0.7 * W, -0.5 * D, 0.78 * H))
+    for x in (-0.92 * W, 0.92 * W):
+        _spokes(m, x, -0.55 * D, front_r)
+        _spokes(m, x, 0.7 * D, back_r)
+    for y, r in ((-0.55 * D, front_r), (0.7 * D, back_r)):
+        m.cylinder("dark_metal", (-W, y, r), (W, y, r), 0.025, fraction=0.4)
+    m.beam("wood", (0, -0.5 * D, floor), (0, -D, 0.3 * H), 0.03)  # the pole the horses pull by
+
+
 def cart(m: Model) -> None:
     """A wooden cart on two spoked wheels with shafts; a mine cart, a sledge, a wheelbarrow or
     a hand trolley (luggage, baggage, shopping...) by its words."""
@@ -339,6 +371,9 @@ def cart(m: Model) -> None:
         return
     if m.has(*_TROLLEY):
         _trolley(m)
+        return
+    if m.named("stagecoach", "coach", "carriage") and not m.named("baby carriage"):
+        _coach(m)
         return
     wr = 0.35 * m.sz
     bed_z = 0.5 * m.sz
@@ -358,12 +393,7 @@ def cart(m: Model) -> None:
                 c = (-0.28 * m.sx + i * 0.56 * m.sx / 3, -0.05 * m.sy + j * 0.5 * m.sy / 4, 0.8 * m.sz + (i + j) % 2 * s)
                 m.ball(role, c, (s, s, s), fraction=0.4)
     for s in (-1, 1):
-        x = s * (m.sx / 2 - 0.03)
-        m.torus("dark_wood", (x, 0.2 * m.sy, wr), wr - 0.03, 0.03, axis="x")
-        for k in range(4):
-            a = np.pi * k / 4
-            m.beam("dark_wood", (x, 0.2 * m.sy - np.cos(a) * wr, wr - np.sin(a) * wr),
-                   (x, 0.2 * m.sy + np.cos(a) * wr, wr + np.sin(a) * wr), 0.025 * (1 + 0.1 * k))
+        _spokes(m, s * (m.sx / 2 - 0.03), 0.2 * m.sy, wr)
         m.beam("wood", (s * 0.3 * m.sx, -0.1 * m.sy, bed_z + 0.03), (s * 0.25 * m.sx, -m.sy / 2, bed_z - 0.05), 0.05)
     m.cylinder("dark_metal", (-m.sx / 2, 0.2 * m.sy, wr), (m.sx / 2, 0.2 * m.sy, wr), 0.025, fraction=0.4)
     m.post("wood", 0, -0.05 * m.sy, 0, bed_z, 0.03)
@@ -927,7 +957,8 @@ def vehicle(m: Model) -> None:
         (("hot air balloon", "balloon"), _balloon),
         (("minecart", "mine cart", "mine car", "ore cart", "ore car"), _minecart),
         (("caravan", "camper trailer", "travel trailer", "trailer home", "mobile home"), _caravan),
-        (("cart", "wagon", "carriage", "wheelbarrow", "trolley", "chariot", "trailer"), cart),
+        (("cart", "wagon", "carriage", "stagecoach", "wheelbarrow", "trolley", "chariot",
+          "trailer"), cart),
         (("pram", "stroller", "pushchair", "baby carriage", "perambulator"), _pram),
         (("helicopter", "chopper", "gyrocopter"), _helicopter),
         (("airship", "blimp", "zeppelin", "dirigible"), _airship),
