@@ -1402,3 +1402,14 @@ def test_a_small_animal_under_a_table_is_by_it_and_a_rug_lies_under_it():
 
 def test_an_opening_with_a_verb_the_vocabulary_knows_as_a_noun_names_things():
     assert ("ball_1", "on", "seal_1") in rels("A seal balances a ball on its nose.")
+
+
+def test_what_is_moved_from_one_thing_onto_another_is_on_the_other():
+    found = rels("A fisherman unloads crates of fish from the nearest boat onto a handcart.")
+    assert {("crate_1", "on", "cart_1"), ("fisherman_1", "near", "crate_1")} <= found
+    assert not any(r in ("left of", "right of") for _, r, _ in found)
+
+
+def test_a_pool_of_water_is_a_pool_and_cabbages_fill_a_raised_bed():
+    assert ("pond_1", "near", "rock_1") in rels("A pool of water lies by the rocks.")
+    assert ("cabbage_1", "on", "raised_bed_1") in rels("Rows of cabbages fill the raised beds.")

@@ -678,7 +678,9 @@ def _part_of_vessel(toks: list[_Tok], s: int, e: int) -> bool:
         j -= 1
     opening = j < 0 or toks[j].text in (".", "!", "?")
     part = " ".join(t.text for t in toks[s:e])
-    return opening and (part in _PLACE_PARTS or part in load_vocabulary().places) and e < len(toks) and toks[e].text == "of"
+    # (what follows "of" is a thing named with its article: "a pool of water" is no part of the water)
+    owner = e + 1 < len(toks) and (toks[e + 1].text in _DETERMINERS or toks[e + 1].orig[:1].isupper())
+    return opening and (part in _PLACE_PARTS or part in load_vocabulary().places) and e < len(toks) and toks[e].text == "of" and owner
 
 
 def _inside_of_vehicle(toks: list[_Tok], s: int, e: int, mentions: list[_Mention]) -> bool:

@@ -1719,6 +1719,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             targets = target
         end, ce = p.end, p.ce
         span = ("to", "into", "onto")  # "guide a hose from it into a tank": it runs from one to the other
+        if kind == "from" and end < ce and toks[end].text == "onto" and isinstance(targets, list) and targets:
+            onto, end2 = self._target_at(end + 1, ce)
+            if isinstance(onto, list) and onto:  # "unloads crates from the boat onto a handcart": on the handcart
+                kind, target, targets, end = "on", onto, onto, end2
         if kind == "from" and end < ce and toks[end].text in span and isinstance(targets, list) and targets:
             kind = "between"  # "a conveyor carries ore from it to a refinery": between the two
         if kind == "between" and isinstance(targets, list) and targets:
@@ -2364,7 +2368,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if self._living(s):
                 return "on" if self._carrier(t) else "near"
             flat = self.groups[t].size[2] <= FLAT_HOST
-            return "on" if target.support or target.shape in _LOAD_HOSTS or flat else "side of"
+            # ("cabbages fill the raised beds": grown in a bed, they are on it)
+            bedded = target.shape == "flower_bed" and self.groups[s].rests == "surface"
+            return "on" if target.support or target.shape in _LOAD_HOSTS or flat or bedded else "side of"
         if kind == "centre of":  # "a vase in the middle of the table", "a throne in the centre of the stage": on it
             if src.rests == "surface" and target.support:
                 return "on"
