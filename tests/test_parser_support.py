@@ -135,3 +135,9 @@ def test_furniture_stands_on_a_stage_as_on_a_floor_but_not_on_a_crate():
     assert ("piano_1", "on", "stage_1") in on
     on = {(r.source, r.relation, r.target) for r in parse_scene("A sofa sits on the crate.").relations}
     assert ("sofa_1", "on", "crate_1") not in on
+
+
+def test_hung_things_the_text_puts_on_the_walls_hang_above_nothing_in_particular():
+    parsed = parse_scene("Dozens of clocks cover the walls, and a grandfather clock stands in the corner.")
+    assert not any(r.relation == "above" for r in parsed.relations)
+    assert any(r.relation == "above" and r.inferred for r in parse_scene("A mirror hangs there, and a dresser stands by the bed.").relations)

@@ -52,7 +52,7 @@ def usual_host(host: str, thing: str) -> bool:
 
 def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation], catalogue) -> list[ParsedRelation]:
     """Surface things with no stated support go on the best support present; hanging things
-    with no stated target hang above the nearest-mentioned large object."""
+    with no stated target or wall hang above the nearest-mentioned large object."""
     placed_vertically = {r.source for r in relations if r.relation in ("on", "above")}
     load: Counter[str] = Counter(r.target for r in relations if r.relation == "on")
     extra: list[ParsedRelation] = []
@@ -99,7 +99,7 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
             best = min(fitting, key=score)
             load[best.id] += 1
             extra.append(ParsedRelation(obj.id, "on", best.id, inferred=True))
-        elif rests == "hanging":
+        elif rests == "hanging" and obj.anchor is None:  # ("clocks cover the walls": on the walls, above nothing)
             hosts = [
                 o for o in objects
                 if o.id != obj.id and (o.rests or catalogue[o.category].rests) == "ground" and 0.3 < o.size[2] < 2.5
