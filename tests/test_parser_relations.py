@@ -358,7 +358,7 @@ def test_a_part_of_a_building_or_vehicle_places_by_its_owner():
     found = rels(text)
     assert {("sign_1", "on", "shop_1"), ("vending_machine_1", "side of", "shop_1")} <= found
     text = "Two tents stand side by side. A pickup truck is parked behind the tents with two kayaks on its roof."
-    assert ("boat_1", "on", "truck_1") in rels(text)
+    assert ("boat_1", "on", "pickup_truck_1") in rels(text)
 
 
 def test_hung_from_the_ceiling_is_hanging():
