@@ -248,3 +248,10 @@ def test_a_wall_thing_named_in_a_standing_form_stands_against_the_wall():
 ])
 def test_a_room_a_compound_names_is_inside_and_several_buildings_stand_outside(text, indoor):
     assert parse_scene(text).indoor is indoor
+
+
+def test_things_that_cover_or_line_the_walls_are_on_or_against_them_not_in_a_corner_named_later():
+    parsed = parse_scene("A watchmaker's workshop. Dozens of clocks cover the walls, and a grandfather clock stands in the corner.")
+    said = {(r.source, r.relation) for r in wall_phrases(parsed)}
+    assert ("wall_clock_1", "on wall") in said and ("wall_clock_1", "in corner") not in said
+    assert ("grandfather_clock_1", "in corner") in said

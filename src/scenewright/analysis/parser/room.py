@@ -344,7 +344,9 @@ def hangs_by_kind(o) -> bool:
 
 #: Words for a room's wall (a ship's bulkhead is its wall); "window" only for a thing hung there.
 _WALL_WORDS = r"(wall|corner|bulkhead|window)"
-_WALL_PHRASE = re.compile(r"\b(against|along|on|by|to|in|at|onto|from)\s+(?:the\s+|a\s+|one\s+)?(?:(back|rear|far|left|right|front)(?:[- ]hand)?\s+)?" + _WALL_WORDS + r"s?\b")
+#: (a verb that spreads things over a wall counts as its preposition: "clocks cover the walls")
+_WALL_PHRASE = re.compile(r"\b(against|along|on|by|to|in|at|onto|from|covers?|lines?|fills?|crowds?|adorns?|decorates?)\s+"
+                          r"(?:the\s+|a\s+|one\s+)?(?:(back|rear|far|left|right|front)(?:[- ]hand)?\s+)?" + _WALL_WORDS + r"s?\b")
 #: Verbs (and participles) that fix a thing to a wall or the ceiling.
 _FIXING = r"(?:hang|hangs|hanging|hung|mounted|fixed|pinned|nailed|fastened|bolted|screwed|hooked|attached|affixed|clamped|tacked|taped|glued|stuck|suspended)"
 #: "hangs from the ceiling", "suspended from the vaulted ceiling", "on the ceiling", "dangle from
@@ -380,6 +382,12 @@ def _named(text: str, name: str) -> tuple[int, int] | None:
     return None
 
 
+def _named_whole(text: str, name: str, whole: re.Pattern) -> tuple[int, int] | None:
+    """Where ``text`` names a thing by its whole name (``whole``): the span of its head word ``name``."""
+    found = whole.search(text)
+    return (found.end() - len(name), found.end()) if found else None
+
+
 def _head(o) -> str:
     """The word a thing is named by in the text (the last of its name)."""
     return o.name.lower().split()[-1] if o.name else o.category.replace("_", " ")
@@ -399,9 +407,12 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
     out = []
     for o in parsed.objects:
         name = _head(o)
-        for s, e in sentences:
+        # a name of several words is found as a whole first ("a grandfather clock" after "clocks")
+        full = re.compile(rf"\b{re.escape(' '.join(o.name.lower().split()))}\b") if " " in o.name.strip() else None
+        whole = [(s, e) for s, e in sentences if full is not None and full.search(low[s:e])]
+        for s, e in whole or sentences:
             sentence = low[s:e]
-            found = _named(sentence, name)
+            found = _named_whole(sentence, name, full) if whole else _named(sentence, name)
             if found is None:
                 continue
             if _WALL_WORDS_BEFORE.search(sentence[: found[0]]):
