@@ -1358,3 +1358,9 @@ def test_a_place_word_a_clause_has_stand_somewhere_is_a_building_of_the_scene():
 )
 def test_a_part_put_somewhere_on_its_own_is_a_thing(text, word, many):
     assert sum(o.name.split()[-1] == word for o in parse_scene(text).objects) == many
+
+
+def test_a_doll_s_house_is_a_toy_and_a_newspaper_stand_a_kiosk():
+    found = {o.name: o for o in parse_scene("A toy soldier guards a doll's house, and a newspaper stand sits by the door.").objects}
+    assert max(found["house"].size) < 1.0
+    assert found["newspaper stand"].category == "kiosk"
