@@ -1173,7 +1173,7 @@ def _verb_with_object(toks: list[_Tok], k: int) -> bool:
     """A verb at ``k``, also one the vocabulary knows as a noun when an object follows it ("a seal
     balances a ball")."""
     w = toks[k].text
-    return _verb_word(w) or (_is_verb(w) and k + 1 < len(toks) and toks[k + 1].text in ("a", "an", "the", "its", "his", "her", "their"))
+    return _verb_word(w) or (_is_verb(w) and k + 1 < len(toks) and toks[k + 1].text in _DEFINITE | {"a", "an"})
 
 
 def _unknown_opening_place(toks: list[_Tok], s: int, e: int) -> bool:
@@ -1345,9 +1345,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             j += 1
             if plural and (singular(x) != x or x in _PEOPLE_GROUPS):
                 break  # "three zorbs glow", "two ground crew hold": the plural noun ends the phrase
-        known = head is not None and (
-            head in covered or any(k in covered and k not in looks and k != head - 1 for k in range(i + 1, head))
-            or (head - 1 in covered and head - 1 not in looks | describers)
+        known = head is not None and any(
+            k in covered and k not in looks and not (k == head - 1 and k in describers) for k in range(i + 1, head + 1)
         )
         if head is None or known or toks[head].quoted:
             continue
@@ -1378,9 +1377,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         compound = word in _MEASURE_THINGS and head > i + 1 and (not vocabulary.is_adjective(kind) or kind.endswith("ing"))
         # "two ground crew": a people group counted is so many of its people ("a film crew" is none)
         members = _NUMBERS.get(w, 0) > 1 and word in _PEOPLE_GROUPS and not (j < n and toks[j].text == "of")
-        # "two planks lean against the wall": a part counted out and put somewhere is a thing of its
-        # own (not "its planks", "the hull")
-        # ("a tall bouldering wall rises along one side": a wall of its own, not the room's)
+        # "two planks lean against the wall", "a tall bouldering wall rises along one side": a part
+        # (or a wall) its clause puts somewhere is a thing of its own (not "its planks", "the hull")
         part = word in vocabulary.parts or word == "wall"
         loose = w not in ("the", *_OWNERS) and part and j < n and _placed_verb(toks, j)
         loose = loose and (i == 0 or toks[i - 1].text in (".", "!", "?", ";", ",", "and"))  # (its clause's subject)
