@@ -204,3 +204,8 @@ def test_each_counted_lot_of_stuff_is_one_thing(text, word, many):
 )
 def test_the_shape_a_group_is_set_out_in_is_no_thing(text):
     assert counts(text)["tower"] == 0 and counts(text)["block"] >= 3
+
+
+def test_counts_in_words_between_twelve_and_twenty_are_read():
+    found = counts("Fourteen players sit on the benches, and seventeen fans wave by the gate.")
+    assert found["player"] == 14 and found["fan"] == 17
