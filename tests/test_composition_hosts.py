@@ -111,3 +111,10 @@ def test_a_parasol_a_person_carries_is_the_hand_held_kind_and_one_on_the_ground_
     assert max(out["umbrella_1"].size) == CARRIED and out["umbrella_1"].size[0] == out["umbrella_1"].size[1]
     table = obj("table_1", "table", (1.8, 0.9, 0.76))
     assert fit_unsized(scene([table, held], []))[1].size == held.size  # shading a table: the patio kind
+
+
+def test_a_refectory_bench_is_as_long_as_its_twelve_sitters():
+    bench = obj("bench_1", "bench", (2.4, 0.6, 0.85))
+    monks = [obj(f"monk_{i}", "figure", (0.5, 0.35, 1.75)) for i in range(12)]
+    width = lengthen(scene([bench, *monks], [on(m.id, "bench_1") for m in monks]))[0].size[0]
+    assert width >= 12 * 0.5

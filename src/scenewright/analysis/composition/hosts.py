@@ -40,7 +40,7 @@ STRETCHABLE = frozenset({"table", "counter", "cabinet", "desk", "bench"})
 #: Space left between two things standing side by side on a host, and at its ends (m).
 GAP = 0.05
 #: No host is lengthened past this many metres (a banquet table, a shop counter).
-LONGEST = 4.0
+LONGEST = 7.0
 #: Procedural shapes that come in any size and grow as a whole (a boulder for three goats).
 GROWN = frozenset({"rock"})
 #: Top area a grown host gives its load, as a multiple of the load's own footprints.
