@@ -103,3 +103,8 @@ def test_a_boat_the_text_sets_nowhere_moors_at_the_pier_before_the_swimmers_take
     dinghy = next(o for o in composition.objects if o.name == "dinghy")
     gap = abs(dinghy.position.x - pier.position.x) - pier.size.y / 2 - dinghy.size.x / 2
     assert gap < 1.0 and dinghy.position.y > composition.shore
+
+
+def test_diving_birds_are_in_the_water():
+    text = "Four boats drift on the river, and the cormorants dive around the boats. A heron stands on the bank."
+    assert floats("cormorant", "bird", text) and not floats("heron", "bird", text)

@@ -30,8 +30,9 @@ VESSELS = frozenset({
 REACHING = frozenset({"pier"})
 #: Not up in the air: "a balloon floats above the quay" is no swimmer.
 _AIRBORNE = r"(?!\s+(?:above|over|overhead|high|up|through the air|in the (?:air|sky)))"
-#: Verbs that put a thing (a swan, a seal, a wading heron, an elephant bathing) in the water.
+#: Verbs that put a thing (a swan, a seal, a wading heron, a diving cormorant, an elephant bathing) in the water.
 _IN_WATER = (rf"(?:swim(?:s|ming)?|swam|paddl(?:e|es|ed|ing)|wad(?:e|es|ed|ing)|bath(?:e|es|ed|ing)|bob(?:s|bed|bing)?|"
+             rf"div(?:e|es|ed|ing)|dove|"
              rf"(?:float|drift|glid)(?:e|es|s|ed|ing)?){_AIRBORNE}")
 #: Words that put a boat ashore: "pulled up on the shingle", "lies upside down", "a wrecked dinghy".
 _ASHORE = r"(?:pulled up|dragged|hauled|beached|stranded|wrecked|upturned|overturned|upside down|lies|lie|lying)"
