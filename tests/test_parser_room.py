@@ -255,3 +255,7 @@ def test_things_that_cover_or_line_the_walls_are_on_or_against_them_not_in_a_cor
     said = {(r.source, r.relation) for r in wall_phrases(parsed)}
     assert ("wall_clock_1", "on wall") in said and ("wall_clock_1", "in corner") not in said
     assert ("grandfather_clock_1", "in corner") in said
+
+
+def test_a_broom_names_no_room():
+    assert not parse_scene("A farmyard. A broom leans by the fence, and a dog sleeps on the grass.").indoor

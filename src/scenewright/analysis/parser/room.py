@@ -470,7 +470,7 @@ WALL_SHEET_DEPTH = 0.05
 def wall_units(parsed: ParsedScene) -> list:
     """``parsed``'s objects, each storage unit the text fixes to a wall (:func:`wall_phrases`) the
     size of a wall unit (:data:`WALL_UNIT_HEIGHTS`), and each thing nobody listed that is fixed
-    there flat against it: a board if nothing says its shape ("a tide table hangs on the wall"),
+    there flat against it: a board if nothing says its shape ("a diploma hangs on the wall"),
     stood up if it was guessed lying flat ("a map pinned to the wall"; a tool hangs as it is); the
     rest as they are."""
     mounted = {r.source for r in wall_phrases(parsed) if r.relation == "on wall"}

@@ -436,8 +436,8 @@ _OPEN_LAND = ("desert", "field", "fields", "forest", "woods", "hills", "mountain
 
 #: What each of several buildings standing among the objects weighs against an indoor setting.
 _STANDING_BUILDING_VOTES = 5
-#: A room, also one a closed compound names ("a playroom", "the boardroom"; no mushroom).
-_ROOM_WORD = re.compile(r"\b(?!mush)\w*rooms?\b")
+#: A room, also one a closed compound names ("a playroom", "the boardroom"; no mushroom, no broom).
+_ROOM_WORD = re.compile(r"\b(?!(?:mush|b)rooms?\b)\w*rooms?\b")
 
 
 def _is_indoor(categories: list[str], text: str, catalogue, places: list[str] = ()) -> bool:

@@ -28,7 +28,7 @@ _AGENT_ENDINGS = ("er", "or", "ant", "ent")
 #: Letters a word keeps before an ending for the ending to tell its family ("gator" is no machine).
 _MIN_STEM = 3
 #: Letters the listed noun that ends a closed compound must have to name it ("racehorse" is a horse;
-#: "earring" is no ring, "carpet" no pet).
+#: a "carpet" is no pet, a "pheasant" no ant).
 _MIN_HEAD = 4
 #: Letters an "-ish" describing word keeps before its ending ("reddish", "greenish"); fewer make a
 #: noun ("finish", "radish", "parish").
