@@ -197,3 +197,9 @@ def test_a_stagecoach_is_a_closed_coach_on_four_wheels_not_a_car():
     coach = scene_frame(build_model("vehicle", (1.7, 3.2, 2.2), "realistic", 1, name="stagecoach"))
     car = scene_frame(build_model("vehicle", (1.7, 3.2, 2.2), "realistic", 1, name="sedan"))
     assert "glass" in coach and "dark_wood" in coach and set(coach) != set(car)
+
+
+def test_a_dollhouse_is_drawn_as_a_little_house_not_a_box():
+    dollhouse = scene_frame(build_model("container", (0.8, 0.4, 0.8), "realistic", 1, name="dollhouse"))
+    box = scene_frame(build_model("container", (0.8, 0.4, 0.8), "realistic", 1, name="box"))
+    assert set(dollhouse) != set(box) and len(dollhouse) > len(box)

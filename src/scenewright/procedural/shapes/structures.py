@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from scenewright.procedural.builder import Model
-from scenewright.procedural.shapes.buildings import _crane, _dish, _dome, _windmill
+from scenewright.procedural.shapes.buildings import _crane, _dish, _dome, _windmill, house
 from scenewright.procedural.shapes.props import _basket, _chest, _creel
 
 
@@ -653,7 +653,7 @@ def _nest(m: Model) -> None:
 def container(m: Model) -> None:
     """Something that holds things: a cardboard box, a treasure chest, a travel trunk, a
     suitcase, a backpack, a sack, a basket, a cool box, a cage, a pen, a lobster pot, a
-    spool, a hatbox, a nest; else a box. The variant named first wins ("ice chest cooler" is a cool box)."""
+    spool, a hatbox, a nest, a dollhouse; else a box. The variant named first wins ("ice chest cooler" is a cool box)."""
     variants = (
         (("chest", "treasure", "coffer"), _chest),
         (("trunk", "footlocker"), _trunk),
@@ -668,6 +668,7 @@ def container(m: Model) -> None:
         (("spool", "reel", "bobbin", "cable drum"), _spool),
         (("hatbox", "hat box"), _hatbox),
         (("nest", "nests"), _nest),
+        (("dollhouse", "dolls house", "doll house", "doll's house"), house),  # a little house with its roof
     )
     build = m.first_named(variants)
     if build is _chest:
