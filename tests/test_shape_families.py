@@ -203,3 +203,8 @@ def test_a_dollhouse_is_drawn_as_a_little_house_not_a_box():
     dollhouse = scene_frame(build_model("container", (0.8, 0.4, 0.8), "realistic", 1, name="dollhouse"))
     box = scene_frame(build_model("container", (0.8, 0.4, 0.8), "realistic", 1, name="box"))
     assert set(dollhouse) != set(box) and len(dollhouse) > len(box)
+
+
+def test_a_crayon_is_a_stick_with_a_tip_lying_along_its_length():
+    crayon = points("tool", (0.012, 0.09, 0.012), "crayon")
+    assert np.ptp(crayon[:, 1]) > 5 * np.ptp(crayon[:, 2])

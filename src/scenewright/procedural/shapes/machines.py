@@ -766,6 +766,21 @@ def _telescope(m: Model) -> None:
     m.cylinder("dark_metal", back, back + 0.12 * (back - front), 0.4 * r, fraction=0.4)
 
 
+def _pencil(m: Model) -> None:
+    """A pencil, a crayon or a pen lying along its longest side: a painted shaft and a sharpened tip."""
+    m.main = "accent"
+    along = "y" if m.sy >= m.sx else "x"
+    half = (m.sy if along == "y" else m.sx) / 2
+    r = min(m.sx if along == "y" else m.sy, m.sz) / 2
+    tip = 0.8 * half
+
+    def at(t: float) -> tuple[float, float, float]:
+        return (0.0, t, r) if along == "y" else (t, 0.0, r)
+
+    m.cylinder("accent", at(-half), at(tip - half * 0.1), r, r, fraction=0.4)
+    m.cylinder("wood", at(tip - half * 0.1), at(half), r, 0.15 * r, fraction=0.4)
+
+
 def _cone(m: Model) -> None:
     """A traffic cone: an orange cone with white bands on a square rubber base."""
     m.main = "accent"
@@ -1000,6 +1015,7 @@ def tool(m: Model) -> None:
         (("scroll", "parchment"), _scroll),
         (("telescope", "spyglass"), _telescope),
         (("traffic cone", "cone", "pylon cone"), _cone),
+        (("pencil", "crayon", "pen", "marker", "felt tip", "chalk"), _pencil),
         (("trophy", "award", "cup trophy"), _trophy),
         (("radio", "gramophone", "record player", "turntable", "stereo", "wireless"), _radio),
         (("weathervane", "weather vane", "wind vane"), _weathervane),
