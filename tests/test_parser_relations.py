@@ -1413,3 +1413,8 @@ def test_what_is_moved_from_one_thing_onto_another_is_on_the_other():
 def test_a_pool_of_water_is_a_pool_and_cabbages_fill_a_raised_bed():
     assert ("pond_1", "near", "rock_1") in rels("A pool of water lies by the rocks.")
     assert ("cabbage_1", "on", "raised_bed_1") in rels("Rows of cabbages fill the raised beds.")
+
+
+def test_clothes_a_new_clause_piles_on_a_chair_are_there_and_not_the_thing_before():
+    found = rels("A guitar leans against the wardrobe, and clothes are piled on a chair.")
+    assert ("guitar_1", "on", "chair_1") not in found and any(r == "on" and t == "chair_1" for _, r, t in found)

@@ -1965,7 +1965,8 @@ def _laid_out(toks: list[_Tok], head: int, j: int) -> bool:
         k -= 1
     if k > 0 and toks[k].text == "with" and toks[k - 1].text in _TOPPED:
         return True  # "three hat stands, each topped with a felt hat": put on the stand, not worn
-    if k >= 0 and toks[k].text in ("with", "in", "wearing", "without", "and", "or"):
+    clause = k > 0 and toks[k].text == "and" and toks[k - 1].text == ","  # (", and clothes are piled on a chair")
+    if k >= 0 and toks[k].text in ("with", "in", "wearing", "without", "and", "or") and not clause:
         return False  # "a boy with a red cap stands by the swing": the boy's verb, his cap
     after = toks[j].text
     if after in ("is", "are", "was", "were") and j + 1 < len(toks):
