@@ -1418,3 +1418,8 @@ def test_a_pool_of_water_is_a_pool_and_cabbages_fill_a_raised_bed():
 def test_clothes_a_new_clause_piles_on_a_chair_are_there_and_not_the_thing_before():
     found = rels("A guitar leans against the wardrobe, and clothes are piled on a chair.")
     assert ("guitar_1", "on", "chair_1") not in found and any(r == "on" and t == "chair_1" for _, r, t in found)
+
+
+def test_one_who_ladles_onto_a_plate_stands_by_it_and_a_stool_still_seats():
+    assert ("cook_1", "near", "plate_1") in rels("A cook ladles soup onto a plate.")
+    assert ("shepherd_1", "on", "stool_1") in rels("A shepherd shears a ewe on a low stool by the pen.")

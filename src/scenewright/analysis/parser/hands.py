@@ -42,6 +42,8 @@ if TYPE_CHECKING:
 #: waits with two cows": by the animals), where a smaller one keeps by its person ("a man walks
 #: a dachshund", "a girl with her dog").
 _HERD_LENGTH = 1.0
+#: m, the longest side at least of a carrier someone can be on while they work (not a plate or a bowl).
+_RIDEABLE = 0.5
 
 #: Participles of a thing left somewhere that do not end in -ed ("his rifle laid across the rock").
 _LEFT_PARTICIPLES = {"laid", "set", "left", "put", "stuck", "leaning", "lying", "resting", "standing", "propped"}
@@ -126,6 +128,9 @@ class _Hands:
         carrier = isinstance(target, list) and target and (
             self._carrier(target[0], kinds) or self.catalogue[self.groups[target[0]].category].shape == "rug"
         )
+        # (a plate or a bowl carries no one who works at it: "a cook ladles soup onto a plate"; a stool does)
+        if carrier and max(self.groups[target[0]].size[:2]) < _RIDEABLE and not self._carrier(target[0], ("seats",)):
+            carrier = False
         return w is not None and isinstance(target, list) and bool(target) and not carrier and not self._still(w)
 
     @staticmethod
