@@ -1364,3 +1364,8 @@ def test_a_doll_s_house_is_a_toy_and_a_newspaper_stand_a_kiosk():
     found = {o.name: o for o in parse_scene("A toy soldier guards a doll's house, and a newspaper stand sits by the door.").objects}
     assert max(found["house"].size) < 1.0
     assert found["newspaper stand"].category == "kiosk"
+
+
+def test_what_a_bookcase_overflows_with_is_its_content():
+    names = [o.name for o in parse_scene("A low bookcase overflows with paperbacks, and a rug lies in front of it.").objects]
+    assert "paperback" not in names and "bookcase" in names

@@ -76,7 +76,8 @@ _CONTENT_HEADS = {"vase", "bowl", "basket", "bucket", "plate", "bottle", "cup", 
 _CONTENT_MARKERS = {("full", "of"), ("filled", "with"), ("packed", "with"), ("overflowing", "with"),
                     ("covered", "in"), ("covered", "with"), ("stacked", "with"), ("heaped", "with"),
                     ("stocked", "with"), ("lined", "with"), ("piled", "with"), ("overflow", "with"),
-                    ("crowded", "with")}  # fmt: skip
+                    ("overflows", "with"), ("brims", "with"), ("brimming", "with"), ("bulges", "with"),
+                    ("bulging", "with"), ("crowded", "with")}  # fmt: skip
 #: Verbs of trade: the bare plural after them is what is sold or served, not things of the layout
 #: ("a stall selling pies", "a cart serving hot drinks"; but "a vendor sells two balloons").
 _WARES_VERBS = {"sell", "sells", "selling", "sold", "serve", "serves", "serving", "served", "offer", "offers",
