@@ -1423,3 +1423,8 @@ def test_clothes_a_new_clause_piles_on_a_chair_are_there_and_not_the_thing_befor
 def test_one_who_ladles_onto_a_plate_stands_by_it_and_a_stool_still_seats():
     assert ("cook_1", "near", "plate_1") in rels("A cook ladles soup onto a plate.")
     assert ("shepherd_1", "on", "stool_1") in rels("A shepherd shears a ewe on a low stool by the pen.")
+
+
+def test_one_who_leans_on_a_tool_holds_it_and_one_who_leans_on_a_fence_stands_by_it():
+    assert ("mop_1", "on", "caretaker_1") in rels("The caretaker leans on his mop beside a yellow bucket.")
+    assert ("girl_1", "side of", "fence_1") in rels("A girl leans on the fence.")

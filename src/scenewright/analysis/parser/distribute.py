@@ -175,7 +175,7 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
             for i, a in enumerate(src.ids):
                 b = tgt.ids[i % len(tgt.ids)]
                 out += [ParsedRelation(a, side, b) for side in sides[i // per]] + [ParsedRelation(a, "face to", b)]
-        elif kind == "under flat":
+        elif kind in ("under flat", "in hand"):  # the target on the source: a table on its rug, a mop in hand
             for a, b in pairs:
                 out.append(ParsedRelation(b, "on", a))
         elif kind == "under hung":  # "chairs under a ceiling fan": the fan above them

@@ -42,6 +42,7 @@ from scenewright.analysis.parser.grammar import (
     _STANDING_HEIGHT,
     _STANDING_PARTS,
     _VESSEL_KINDS,
+    _TOOL_SIZE,
 )
 from scenewright.analysis.parser.hands import _Hands
 from scenewright.analysis.parser.kinds import _Kinds
@@ -2307,6 +2308,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         walled = any(m.group == s for k, m in self.by_start.items() if k in self.on_wall)
         if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not (hang or walled or self._mountable(s)):
             return "near"  # a tree "above" a pond cannot float: read it as near (a rack on the wall can hang)
+        if kind == "leaning on" and self._person_at(s) and target.shape == "tool" and max(self.groups[t].size) <= _TOOL_SIZE:
+            self.carried.add((t, s))
+            return "in hand"  # "the caretaker leans on his mop": he holds it (he leans on a fence by it)
         if kind == "under" and self._overhead(t):
             return "under hung"  # "chairs under a ceiling fan": the fan hangs above them
         if kind == "under":  # "a rug under the table" lies flat under it; "mice under the table" are by it
