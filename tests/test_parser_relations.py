@@ -1428,3 +1428,8 @@ def test_one_who_ladles_onto_a_plate_stands_by_it_and_a_stool_still_seats():
 def test_one_who_leans_on_a_tool_holds_it_and_one_who_leans_on_a_fence_stands_by_it():
     assert ("mop_1", "on", "caretaker_1") in rels("The caretaker leans on his mop beside a yellow bucket.")
     assert ("girl_1", "side of", "fence_1") in rels("A girl leans on the fence.")
+
+
+def test_what_a_trailer_is_stacked_with_rides_on_it():
+    found = rels("A trailer stacked with hay bales waits by the gate.")
+    assert ("hay_bale_1", "on", "trailer_1") in found and ("trailer_1", "near", "arch_1") in found

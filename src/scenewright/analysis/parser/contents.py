@@ -90,7 +90,8 @@ class _Contents:
         w = self.toks[j].text
         marker = (self.toks[j - 1].text, w)
         host = self.catalogue[prev.category]
-        if marker in _LOADS and (host.shape in _LOAD_HOSTS or host.support) and max(self._size(m)) >= _LOAD_SIZE:
+        vehicle = load_vocabulary().carries(prev.category, prev.phrase, ("vehicles",))  # ("a trailer stacked with hay bales")
+        if marker in _LOADS and (host.shape in _LOAD_HOSTS or host.support or vehicle) and max(self._size(m)) >= _LOAD_SIZE:
             return False  # "a luggage cart piled with suitcases": they stand on the cart
         alive = self._lives(m.category) or m.category == "fish"
         if marker in _CONTENT_MARKERS and j - prev.end <= 2:
@@ -106,7 +107,7 @@ class _Contents:
             return not alive
         if self._listed_content(m.start):
             return not alive  # "crates overflow with apples, pumpkins and carrots"
-        flat = prev.category in _FLAT_HOLDERS or load_vocabulary().carries(prev.category, prev.phrase, ("vehicles",))
+        flat = prev.category in _FLAT_HOLDERS or vehicle
         if w == "of" and prev.end == j and flat and not m.definite:
             self.held_of.append((m.start, prev.start))  # "a tray of medicine bottles", "a trolley of books": on it
             self.aboard.add(m.start)
