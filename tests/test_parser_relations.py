@@ -1433,3 +1433,9 @@ def test_one_who_leans_on_a_tool_holds_it_and_one_who_leans_on_a_fence_stands_by
 def test_what_a_trailer_is_stacked_with_rides_on_it():
     found = rels("A trailer stacked with hay bales waits by the gate.")
     assert ("hay_bale_1", "on", "trailer_1") in found and ("trailer_1", "near", "arch_1") in found
+
+
+def test_one_who_holds_a_thing_steady_stands_by_it():
+    found = rels("A cheesemaker stands on a stepladder while his apprentice holds the ladder steady.")
+    assert ("apprentice_1", "near", "ladder_1") in found and ("ladder_1", "on", "apprentice_1") not in found
+    assert ("lantern_1", "on", "girl_1") in rels("A girl holds a lantern.")

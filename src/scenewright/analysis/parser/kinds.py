@@ -24,6 +24,9 @@ def _volume(size) -> float:
     """m³ of a thing's box."""
     return size[0] * size[1] * size[2]
 
+#: Words after a held thing that keep it where it stands: its holder steadies it ("holds the ladder steady").
+_STEADYING = {"steady", "still", "upright", "firm", "straight"}
+
 
 class _Kinds:
     def _living(self, g: int) -> bool:
@@ -67,6 +70,12 @@ class _Kinds:
         is small enough to hold ("a pickaxe", "a clipboard"), not "a man with a ladder"."""
         group = self.groups[g]
         return self._holdable(group.category, group.name, group.size, group.rests)
+
+    def _steadied(self, g: int) -> bool:
+        """A word right after the thing says it is held where it stands ("holds the ladder steady"),
+        not carried ("holds a pet carrier open" has it in hand)."""
+        ends = [m.end for m in self.by_start.values() if m.group == g and m.end < len(self.toks)]
+        return any(self.toks[e].text in _STEADYING for e in ends)
 
     def _carriable(self, g: int, h: int) -> bool:
         """Whether the person or people ``h`` can carry the thing ``g`` in their hands or arms:

@@ -1263,8 +1263,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     self._relate("on", [g], self.worked_at[h])
                     c.produced = True
                     continue
-                if (c.hold or held) and self._person_at(h) and not self._living(g) and not self._carriable(g, h):
-                    # ("a woman grips the railing", "a boy holds the wardrobe": too big to carry, by it)
+                steadied = c.hold and self._steadied(g)
+                if (c.hold or held) and self._person_at(h) and not self._living(g) and (not self._carriable(g, h) or steadied):
+                    # ("a woman grips the railing", "a boy holds the wardrobe": too big to carry, by it;
+                    # "his apprentice holds the ladder steady": he steadies it where it stands)
                     self._relate("near", [h], g)
                     c.produced = True
                     continue
