@@ -209,3 +209,8 @@ def test_the_shape_a_group_is_set_out_in_is_no_thing(text):
 def test_counts_in_words_between_twelve_and_twenty_are_read():
     found = counts("Fourteen players sit on the benches, and seventeen fans wave by the gate.")
     assert found["player"] == 14 and found["fan"] == 17
+
+
+def test_several_counted_on_each_side_are_that_many_a_side_and_on_either_side_one_each():
+    assert counts("Two players stand on each side of the net.")["player"] == 4
+    assert counts("Two lamps stand on either side of the bed.")["lamp"] == 2

@@ -1908,7 +1908,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         one_each = kind in ("flank", "flank elliptic") and len(srcs) == 2
         one_each = one_each and all(self.groups[g].count == 1 for g in srcs)
         if kind in ("flank", "flank elliptic") and not toks[rel.start].text.startswith("flank") and not one_each:
-            self._one_a_side(srcs)  # also beside what is no object: "on each side of the elevator"
+            # (counted on "each" side: that many a side, "two players stand on each side of the net")
+            apiece = any(t.text == "each" for t in toks[rel.start : rel.end])
+            self._one_a_side(srcs, apiece=apiece)  # also beside what is no object: "on each side of the elevator"
         hang = kind == "hanging from" or self._hung_before(rel.start)
         hang = hang or any(t.text in _HANG_VERBS for t in toks[rel.start : rel.end])  # "hangs over the bar"
         if hang and kind in ("above", "over", "hanging from") and self._from_ceiling(rel.start):
@@ -2216,15 +2218,18 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 self.groups[src].count *= max(1, self.groups[target].count // unit)
                 self.pair_each.add((src, target))
 
-    def _one_a_side(self, srcs: list[int], sides: int = 2, row: bool = False) -> None:
+    def _one_a_side(self, srcs: list[int], sides: int = 2, row: bool = False, apiece: bool = False) -> None:
         """"A lamp post on each side of the door": one thing named for both sides means two; so do
         things the text does not count ("trunks sit on either side of the table"); on every side of
         a thing, four; things that run along every side make a row on each ("arches run along
-        every side": as many a side as an uncounted plural names)."""
+        every side": as many a side as an uncounted plural names); several counted ``apiece`` ("two
+        players on each side of the net") are that many on every side."""
         for s in srcs:
             uncounted = s not in self.numbered and self.groups[s].count == UNCOUNTED
             if (self.groups[s].count == 1 or uncounted) and s not in self.history:
                 self.groups[s].count = sides * (UNCOUNTED if row and uncounted else 1)
+            elif apiece and s in self.numbered and self.groups[s].count > 1 and s not in self.history:
+                self.groups[s].count *= sides
 
     def _rung(self, r: _Rel, mentions: list[_Mention]) -> bool:
         """"A monk sits on the steps ringing a bell": a tabletop thing that is "rung" is rung by hand,
