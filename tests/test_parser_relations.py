@@ -1439,3 +1439,8 @@ def test_one_who_holds_a_thing_steady_stands_by_it():
     found = rels("A cheesemaker stands on a stepladder while his apprentice holds the ladder steady.")
     assert ("apprentice_1", "near", "ladder_1") in found and ("ladder_1", "on", "apprentice_1") not in found
     assert ("lantern_1", "on", "girl_1") in rels("A girl holds a lantern.")
+
+
+def test_what_hangs_from_its_own_hook_hangs_from_no_one_named_before():
+    found = rels("A dog sleeps by the door. A lantern hangs from its hook above the table.")
+    assert ("lantern_1", "on", "dog_1") not in found and ("lantern_1", "above", "table_1") in found

@@ -163,9 +163,10 @@ class _References:
         owner = _OWNER_PRONOUNS.get(toks[lead].text) if lead < ce else None
         if owner and j > lead + 1:
             self._part = singular(toks[j - 1].text)
-            # "a helicopter waits on its pad": what a thing is placed on with "its" and nobody names as a
-            # part of anything is its own, no object ("an owl perches on its back": the armchair's)
-            placed_on = pos >= 2 and toks[pos - 1].text in ("on", "upon") and toks[pos - 2].text in _PLACING_VERBS
+            # "a helicopter waits on its pad", "a cable car hangs from its wire": what a thing is placed
+            # on or hung from with "its" and nobody names as a part of anything is its own, no object
+            # ("an owl perches on its back": the armchair's)
+            placed_on = pos >= 2 and toks[pos - 1].text in ("on", "upon", "from") and toks[pos - 2].text in _PLACING_VERBS
             if placed_on and self._part not in load_vocabulary().part_owners:
                 self._part = None
                 return None, pos
