@@ -1444,3 +1444,8 @@ def test_one_who_holds_a_thing_steady_stands_by_it():
 def test_what_hangs_from_its_own_hook_hangs_from_no_one_named_before():
     found = rels("A dog sleeps by the door. A lantern hangs from its hook above the table.")
     assert ("lantern_1", "on", "dog_1") not in found and ("lantern_1", "above", "table_1") in found
+
+
+def test_the_back_seat_of_a_car_is_the_car_s():
+    found = rels("A Labrador watches from the back seat of an estate car.")
+    assert found == {("dog_1", "on", "car_1")}

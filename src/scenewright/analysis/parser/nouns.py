@@ -624,11 +624,17 @@ def _owned_part(toks: list[_Tok], s: int, e: int, mentions: list[_Mention]) -> b
     return bool(owners) and any(m.category in owners or catalogue[m.category].shape in owners for m in mentions)
 
 
+#: Side words before a part that say which one it is ("the back seat of the car").
+_PART_SIDES = {"back", "front", "rear", "left", "right", "near", "far", "top", "bottom", "upper", "lower"}
+
+
 def _part_of_after(toks: list[_Tok], s: int, e: int, later: list, mentions: list[_Mention]) -> bool:
-    """"The ladder of the nearer one", "the ramp of the van": a part (``part_owners``) named by
-    "the ... of" its owner, a thing that has such a part (the next noun, or for "one" the thing
-    named lately that has one): the owner's part, placed by the owner, no thing of its own."""
-    if e - s != 1 or s == 0 or toks[s - 1].text != "the" or e + 1 >= len(toks) or toks[e].text != "of":
+    """"The ladder of the nearer one", "the ramp of the van", "the back seat of an estate car": a
+    part (``part_owners``) named by "the ... of" its owner, a thing that has such a part (the next
+    noun, or for "one" the thing named lately that has one): the owner's part, placed by the
+    owner, no thing of its own."""
+    article = s - 1 - (s > 1 and toks[s - 1].text in _PART_SIDES)  # ("the back seat", "the front bench")
+    if e - s != 1 or article < 0 or toks[article].text != "the" or e + 1 >= len(toks) or toks[e].text != "of":
         return False
     owners = load_vocabulary().part_owners.get(singular(toks[s].text))
     if not owners:
