@@ -348,3 +348,22 @@ def test_a_participle_right_after_a_thing_in_hand_describes_the_thing():
 def test_it_after_a_clause_that_acts_on_a_thing_names_the_thing():
     found = rels("By the window, a waiter robot refills an espresso machine, and a tiny drone hovers beside it.")
     assert ("drone_1", "side of", "coffee_machine_1") in found and ("drone_1", "side of", "robot_1") not in found
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A girl feeds the goat. She sits on a bench.", ("girl_1", "on", "bench_1")),
+        ("A man stands by the gate. He holds a lantern.", ("lantern_1", "on", "man_1")),
+        ("Two boys play by the pond. They sit on a log.", ("boy_1", "on", "log_1")),
+        ("A robot stands by the door; it holds a tray.", ("plate_1", "on", "robot_1")),
+        # "she" is the woman, not the man named after her
+        ("A woman reads by the window and a man naps. She sits in an armchair.", ("woman_1", "on", "armchair_1")),
+    ],
+)
+def test_a_subject_pronoun_names_whom_the_text_went_on_about(text, expected):
+    assert expected in rels(text), rels(text)
+
+
+def test_it_is_no_subject_of_the_weather():
+    assert rels("It is a sunny day. A dog sits by a tree.") == {("dog_1", "near", "tree_1")}

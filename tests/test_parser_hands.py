@@ -26,6 +26,11 @@ def rels(text: str) -> set[tuple[str, str, str]]:
         ("Two porters with sacks on their backs climb the stairs.", "sack_1", "porter_1"),
         ("A puppy sits in a basket, chewing a slipper.", "slipper_1", "dog_1"),  # an animal's too
         ("A boy carries a surfboard under his arm.", "skis_1", "boy_1"),  # under a carrying part
+        ("An owner in a tweed suit lifts a pair of binoculars.", "binoculars_1", "owner_1"),  # a pair is the thing
+        ("An instructor shouts through a megaphone from the roof of a rover.", "megaphone_1", "instructor_1"),
+        ("A race official with a flag sits on a snowmobile.", "flagpole_1", "race_official_1"),  # the subject's verb after
+        ("A goat stands by the fence. A girl offers it a carrot.", "carrot_1", "girl_1"),
+        ("Soigneurs stand in front of the cars, each holding a bag.", "backpack_1", "soigneur_1"),  # not the cars'
     ],
 )
 def test_what_one_uses_is_in_hand(text, thing, holder):
@@ -590,3 +595,9 @@ def test_one_who_works_on_something_in_a_container_is_by_it_not_in_it():
     # a phrase on a person after it places the worker, not the tub
     found = rels("The baker kneads dough, while his son scrubs pans in a tub beside him.")
     assert {("son_1", "near", "bathtub_1"), ("son_1", "side of", "baker_1")} <= found, found
+
+
+def test_a_tool_named_first_leaves_the_verb_its_object():
+    """"A barber with a comb trims the hair of a pilot": the comb in hand, the barber by the pilot."""
+    found = rels("A barber with a comb trims the hair of a pilot.")
+    assert {("comb_1", "on", "barber_1"), ("barber_1", "near", "pilot_1")} <= found, found

@@ -28,6 +28,9 @@ def names(text: str) -> set[str]:
         ("A cooper is hooping a barrel next to the shed.", "cooper"),  # a deed done to a thing
         ("Two sawyers work in the pit.", "sawyer"),  # a plural's person verb, in its base form
         ("Four jurors sit on a long bench.", "juror"),  # sitting on a seat
+        ("A chauffeur waits by the limousine.", "chauffeur"),  # -eur
+        ("Fans in fancy dress line the barriers.", "fan"),  # a thing's word, dressed as people are
+        ("A coach with a stopwatch leans on a rowing machine.", "coach"),  # carrying a small thing
     ],
 )
 def test_person_nouns_are_figures_named_by_the_text(text, person):
@@ -1369,3 +1372,16 @@ def test_a_doll_s_house_is_a_toy_and_a_newspaper_stand_a_kiosk():
 def test_what_a_bookcase_overflows_with_is_its_content():
     names = [o.name for o in parse_scene("A low bookcase overflows with paperbacks, and a rug lies in front of it.").objects]
     assert "paperback" not in names and "bookcase" in names
+
+
+def test_the_other_sense_of_a_person_word_stays_a_thing():
+    found = {o.name: o.category for o in parse_scene("A tall fan whirrs in the corner. A coach is parked by the hotel.").objects}
+    assert found["fan"] != "figure" and found["coach"] == "bus", found
+
+
+def test_counted_things_of_a_stuff_are_the_things():
+    """"A dozen moulds of fresh curd": a word nobody listed before "of" is a thing when counted
+    and what follows names no owner; a measure or a part before "of" is none."""
+    assert objects("A trolley holds a dozen moulds of fresh curd.")[("thing", "mould")] == 12
+    assert not any(w == "side" for _, w in objects("Two sides of the hut are open."))
+    assert not any(w == "lane" for _, w in objects("Three lanes of cars queue in front of the ramp."))

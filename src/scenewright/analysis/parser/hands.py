@@ -232,6 +232,9 @@ class _Hands:
             if k in self.by_start:
                 return self.by_start[k]
             w = self.toks[k].text
+            if w == "of" and self.toks[k - 1].text in ("pair", "couple"):
+                k += 1  # "lifts a pair of binoculars": the pair is the thing
+                continue
             if w in _STOP and w not in _DETERMINERS and w not in _NUMBERS or not w[:1].isalpha():
                 return None
             k += 1
@@ -270,7 +273,9 @@ class _Hands:
     def _placed_after(self, end: int, ce: int) -> bool:
         """A relation phrase right after a thing, or after one word that describes it ("a bible
         open on a lectern", "an urn beside each bench")."""
-        return end in self.rel_at or (end + 1 < ce and self.toks[end].text.isalpha() and end + 1 in self.rel_at)
+        # ("an official with a flag sits on a snowmobile": the subject's verb, the official sits there)
+        word = self.toks[end].text if end < ce else ""
+        return end in self.rel_at or (end + 1 < ce and word.isalpha() and not _is_verb(word) and end + 1 in self.rel_at)
 
     def _after_verb(self, k: int, over: tuple[str, ...] = (), worn: bool = False) -> bool:
         """Whether the word at ``k`` comes right after a verb, or after a verb and what it acts on
@@ -457,8 +462,8 @@ class _Hands:
         if words == ["one", "of", "them"]:  # one of the people (or animals) named just before
             order = [*prev_subject, *self.topic, *reversed(self.history)]
             whom, end = [g for g in order if g not in giver and self.groups[g].count > 1 and self._living(g)], j + 3
-        elif words[:1] and words[0] in ("him", "her", "them"):
-            whom, end = self._person(c, giver, "them living" if words[0] == "them" else words[0]), j + 1
+        elif words[:1] and words[0] in ("him", "her", "them", "it"):  # ("offers it a mackerel": an animal)
+            whom, end = self._person(c, giver, f"{words[0]} living" if words[0] in ("them", "it") else words[0]), j + 1
         elif m is not None and self._lives(m.category):
             group = self._resolve(m, self.size_of.get(m.start, []))
             whom, end = ([group] if group >= 0 else []), m.end

@@ -406,6 +406,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         animal = vocabulary.animal_senses.get(singular(words[-1])) if len(words) == 1 else None
         if animal is not None and (_verb_after(toks, e) or ("",))[0] in vocabulary.animal_only_verbs:
             cat, entry = animal.category, animal  # "two cranes wade in the reeds": the birds
+        person = vocabulary.person_senses.get(singular(words[-1])) if len(words) == 1 else None
+        if person is not None and _as_person(toks, e):
+            cat, entry = person.category, person  # "fans in fancy dress line the barriers": people
         if singular(words[-1]) == "one" and mentions and (entry is None or entry.category == GENERIC):
             # "a tall pine tree ..., with a few smaller ones": more of the thing named before
             # (the sentence's subject, not the landmark it stands by)
@@ -1388,9 +1391,12 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         part = word in vocabulary.parts or word == "wall"
         loose = w not in ("the", *_OWNERS) and part and j < n and _placed_verb(toks, j)
         loose = loose and (i == 0 or toks[i - 1].text in (".", "!", "?", ";", ",", "and"))  # (its clause's subject)
+        # "a dozen moulds of fresh curd": counted things of a stuff are the things (not "two sides of the hut")
+        filled = _NUMBERS.get(w, 0) > 1 and one != word and j + 1 < n and toks[j + 1].text not in _DETERMINERS
+        filled = filled and word not in vocabulary.parts and word not in _QUANTITY
         if not (vocabulary.is_thing_word(word) or held or counted_place or stock or compound or loose) or (
             word in _QUANTITY and not counted_place and not compound and not members
-        ) or (j < n and toks[j].text == "of"):
+        ) or (j < n and toks[j].text == "of" and not filled):
             continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"
         entry = vocabulary.family("figure") if members else _guess(toks, head, toks[max(i - 1, 0) : head])
         if entry.category == GENERIC and singular(word) in vocabulary.clothing:
@@ -1852,6 +1858,9 @@ def _bare_subjects(toks: list[_Tok], covered: set[int]) -> list:
             j += 2  # "Bales of wool are stacked": units of stuff, counted by the unit
         elif head is not None and j + 3 < n and toks[j].text == "of" and toks[j + 1].text in _VARIETY:
             j += 3  # "Kites of every shape fly above the grass": what sort they are, then the verb
+        elif head is not None and j < n and toks[j].text == "in":
+            # "Fans in fancy dress line the barriers": what they wear, then the verb
+            j = next((x + 1 for x in range(j + 1, min(j + 5, n)) if toks[x].text in vocabulary.clothing), j)
         after = toks[j].text if j < n else "."
         verb = after[:1].isalpha() and (after not in _STOP or after in _FINITE)
         # a listed noun there is a verb when an object follows it ("cans litter the floor")
@@ -2126,6 +2135,20 @@ def _verb_after(toks: list[_Tok], k: int) -> tuple[str, int] | None:
 #: Particles and prepositions between a verb and what it takes ("leans over", "bends down to").
 _PARTICLES = {"over", "on", "at", "into", "onto", "across", "up", "down", "to", "towards", "toward", "from",
               "with", "beside", "behind", "against", "under", "through", "out", "off", "by"}  # fmt: skip
+
+
+def _as_person(toks: list[_Tok], k: int) -> bool:
+    """Whether the noun ending at ``k`` is a person by what follows it: a person's verb, clothes
+    ("fans in fancy dress") or a small thing in hand ("a coach with a stopwatch")."""
+    if _acts_as_person(toks, k):
+        return True
+    after = [t.text for t in toks[k : k + 4]]
+    if after[:1] == ["in"]:
+        return any(w in load_vocabulary().clothing for w in after[1:])
+    if after[:1] == ["with"]:
+        thing = next((m for m in (_match_at(toks, j) for j in range(k + 1, min(k + 4, len(toks)))) if m), None)
+        return thing is not None and load_catalogue()[thing[1]].rests == "surface"
+    return False
 
 
 def _acts_as_person(toks: list[_Tok], k: int) -> bool:

@@ -902,6 +902,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if not c.first and not participial and k == cs and k < ce and k not in self.by_start and k not in self.rel_at:
             if _is_verb(toks[k].text) and prev_subject and all(self._living(g) for g in prev_subject):
                 c.main = list(prev_subject)
+        if k + 1 < ce and toks[k].text in ("he", "she", "they", "it") and k + 1 not in self.by_start and (
+            k + 1 in self.rel_at or (_is_verb(toks[k + 1].text) and toks[k + 1].text not in _COPULAS)
+        ):  # "She sits on a bench", "They wait by the gate": whom the text went on about
+            named = self._subject_pronoun(toks[k].text, [*prev_subject, *self.topic, *reversed(self.history)])
+            if named:
+                c.main, k = named, k + 1
         # (", is tied to a post" after an apposition goes on about the noun before it: no phrase of its own)
         copula = toks[cs].text in _COPULAS
         c.finite = copula  # (its verb: "... is tethered to a man sitting on a stool": the man sits)
@@ -1071,6 +1077,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                         self._close_with(c)
                         c.head, c.wsub, c.hand, c.hold = None, [], False, False
                         c.main_groups.append(g)
+                        # ("a barber with a comb trims the hair of a pilot": the verb's, after the tool)
+                        start = next(j for j in range(last_event_end, m.start) if toks[j].text not in _DETERMINERS)
+                        start = max((mm.end for mm in self.by_start.values() if start <= mm.start < m.start), default=start)
+                        if closed and self._object_of_verb(c, start, m.start) and self._living(c.main[-1]):
+                            c.deeds.append((list(c.main), g))
+                            c.deed_end = m.end
                         last_event_end = m.end
                         continue
                     c.wsub = [g] if (c.expect_new or closed) else [*c.wsub, g]
@@ -1739,6 +1751,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     continue
                 c.groups.append(t)
         p.rel, p.kind, p.target, p.srcs, p.targets, p.end = rel, kind, target, srcs, targets, end
+
+    def _subject_pronoun(self, pronoun: str, candidates: list[int]) -> list[int]:
+        """What a subject pronoun that opens a clause names among ``candidates`` (most recent
+        first): "he"/"she" a person of that sex, "they" several living things, "it" a thing or an
+        animal that is no person."""
+        if pronoun in ("he", "she"):
+            return self._named_by(pronoun, candidates)
+        if pronoun == "they":
+            return next(([g] for g in candidates if self.groups[g].count > 1 and self._living(g)), [])
+        return next(([g] for g in candidates if not self._person_at(g)), [])
 
     def _named_by(self, pronoun: str, candidates: list[int]) -> list[int]:
         """The person "he" or "she" names among ``candidates``: one whose name says that sex first

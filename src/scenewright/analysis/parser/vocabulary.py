@@ -20,8 +20,9 @@ from scenewright.core.catalogue import load_catalogue, match_phrase, singular, w
 #: The family a thing nobody listed falls back to.
 GENERIC = "thing"
 #: Endings of nouns that name a person doing a trade or a study ("florist", "optician", "musketeer",
-#: "watchmaker", "locksmith", "shipwright"): one word, so "coffee maker" stays a machine.
-_PERSON_ENDINGS = ("ist", "ian", "eer", "maker", "smith", "wright")
+#: "watchmaker", "locksmith", "shipwright", "a soigneur", "a masseuse"): one word, so "coffee maker"
+#: stays a machine.
+_PERSON_ENDINGS = ("ist", "ian", "eer", "eur", "euse", "maker", "smith", "wright")
 #: Endings of agent nouns: a person when the text has them do what people do ("a picker is working"),
 #: a tool or a machine otherwise ("a heater", "a tractor").
 _AGENT_ENDINGS = ("er", "or", "ant", "ent")
@@ -89,6 +90,9 @@ class Vocabulary:
     #: its verb is one only animals do ("two cranes wade in the reeds": birds, not machines).
     animal_senses: dict[str, Entry] = field(default_factory=dict)
     animal_only_verbs: frozenset[str] = frozenset()
+    #: A word the catalogue files as a thing that also names a person, read as the person when the
+    #: text has it act, dress or carry as people do ("fans in fancy dress"; "a fan whirrs" is the machine).
+    person_senses: dict[str, Entry] = field(default_factory=dict)
     #: What people do: an agent noun nobody listed that does one of these is a person.
     person_verbs: frozenset[str] = frozenset()
     #: Moods and looks only people have ("a bored attendant"): an agent noun with one is a person.
@@ -267,6 +271,14 @@ class Vocabulary:
         return Entry(family, category.size, category.rests)
 
 
+def _senses(table: dict) -> dict[str, Entry]:
+    """A table of other senses (word -> [category, width, depth, height]) as entries on the ground."""
+    return {
+        k: Entry(v[0], (float(v[1]), float(v[2]), float(v[3])), "ground")
+        for k, v in table.items() if k not in ("about", "verbs")
+    }  # fmt: skip
+
+
 def _validate(raw: dict) -> Vocabulary:
     catalogue = load_catalogue()
     entries: dict[tuple[str, ...], Entry] = {}
@@ -309,11 +321,9 @@ def _validate(raw: dict) -> Vocabulary:
             **{w: "side of" for w in people.get("body_parts_beside", ())},  # "his helmet at his side"
         },
         part_owners={k: frozenset(v) for k, v in raw.get("part_owners", {}).items() if k != "about"},
-        animal_senses={
-            k: Entry(v[0], (float(v[1]), float(v[2]), float(v[3])), "ground")
-            for k, v in raw.get("animal_senses", {}).items() if k not in ("about", "verbs")
-        },
+        animal_senses=_senses(raw.get("animal_senses", {})),
         animal_only_verbs=frozenset(raw.get("animal_senses", {}).get("verbs", ())),
+        person_senses=_senses(raw.get("person_senses", {})),
         setting_senses={
             k: (v["as"], frozenset(v["in"])) for k, v in raw.get("setting_senses", {}).items() if k != "about"
         },

@@ -164,6 +164,11 @@ _HAND_PAIRS = {
     # the piece one works small things onto ("stitching beads onto a purse", "glues shells onto a box")
     *((verb, "onto") for verb in ("stitches", "stitching", "stitch", "sews", "sewing", "sew", "glues", "gluing",
                                   "glue", "pins", "pinning", "pin", "threads", "threading", "thread")),
+    # what one speaks into or through ("shouts through a megaphone", "shouting into radios")
+    *((verb, p) for verb in ("shouts", "shouting", "shout", "speaks", "speaking", "speak", "talks", "talking",
+                             "talk", "calls", "calling", "call", "yells", "yelling", "yell", "barks", "barking",
+                             "sings", "singing", "sing", "announces", "announcing", "announce")
+      for p in ("into", "through")),
 }  # fmt: skip
 #: Verbs whose object a person has in hand while doing them, when it is small enough to hold
 #: ("eats a sandwich", "plays a flute", "lifts a barbell", "two scouts sharpen their spears"); a
