@@ -601,3 +601,30 @@ def test_a_tool_named_first_leaves_the_verb_its_object():
     """"A barber with a comb trims the hair of a pilot": the comb in hand, the barber by the pilot."""
     found = rels("A barber with a comb trims the hair of a pilot.")
     assert {("comb_1", "on", "barber_1"), ("barber_1", "near", "pilot_1")} <= found, found
+
+
+def test_a_participle_after_the_object_goes_on_about_the_doer():
+    """", standing on a platform" after "a keeper feeds the tiger": the keeper stands there; a
+    vehicle the doer drives still tows ("drives a quad bike, towing a trailer")."""
+    found = rels("A keeper feeds the tiger from a bucket, standing on a platform.")
+    assert ("keeper_1", "on", "platform_1") in found and ("tiger_1", "on", "platform_1") not in found
+    found = rels("A farmhand drives a quad bike along the fence, towing a small trailer.")
+    assert ("trailer_1", "behind", "bicycle_1") in found, found
+
+
+def test_one_of_several_given_a_thing_has_the_only_one():
+    found = rels("A sea serpent rests on the quay. Three fishermen stand on the quay, one offering it a mackerel.")
+    assert [s for s, r, t in found if s.startswith("mackerel")] == ["mackerel_1"], found
+    assert ("fisherman_1", "near", "sea_serpent_1") in found
+
+
+@pytest.mark.parametrize(
+    "text, thing, holder",
+    [
+        ("A mahout scrubs the calf's back with a brush.", "brush_1", "mahout_1"),
+        ("Two founders in leather aprons steady the bell with long poles.", "pole_1", "founder_1"),
+        ("A cowboy swings a lasso at a runaway velociraptor.", "lasso_1", "cowboy_1"),
+    ],
+)
+def test_tools_people_work_with_are_in_hand(text, thing, holder):
+    assert (thing, "on", holder) in rels(text), rels(text)

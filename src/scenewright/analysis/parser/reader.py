@@ -897,6 +897,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         starts_with_rel = j in self.rel_at
         # ", sipping coffee from a cup": a clause that opens with a participle is the subject's before
         participial = not c.first and k < ce and toks[k].text.endswith("ing") and k not in self.by_start
+        towing = k in self.rel_at and self.rel_at[k].kind == "towing"  # ("drives a quad bike, towing a trailer")
+        if participial and self.doers and not towing:
+            prev_subject = list(self.doers)  # "a keeper feeds the tiger, standing on a platform": the keeper
         # "the baker, in a white apron, pushes a tray into the oven": a clause that opens with a
         # verb goes on about the living subject before (what it acts on is its object)
         if not c.first and not participial and k == cs and k < ce and k not in self.by_start and k not in self.rel_at:
@@ -1034,7 +1037,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 hand = hand or (w == "with" and mine and all(self._person_at(h) for h in c.head))
                 c.hold, c.hand = w in _HOLD or (w, nxt) in _HOLD_PAIRS or hand, hand
                 # ("two men haul a trunk": one thing a verb of several has in hand is theirs together)
-                c.shared = w in _SHARE_VERBS or (w != "with" and c.each is None and self._one_thing_after(k, ce))
+                # (what is given comes after whom it is given to: "one offering it a mackerel")
+                thing_at = k if given is None else given[1] - 1
+                c.shared = w in _SHARE_VERBS or (w != "with" and c.each is None and self._one_thing_after(thing_at, ce))
                 c.sharing = w in _SHARE_VERBS
                 k = tool_end if tool_end is not None else k + (2 if (w, nxt) in _HOLD_PAIRS else 1)
                 last_event_end = k

@@ -114,7 +114,7 @@ _HOLD_PAIRS = {("loaded", "with"), ("laden", "with"), ("topped", "with"), ("set"
 #: Verbs whose object a person has in hand ("waves a flag"): the thing is carried by its holder, as
 #: with "holds".
 _HAND_VERBS = {"waves", "waving", "wields", "wielding", "brandishes", "brandishing", "clutches", "clutching",
-               "grips", "gripping", "clasps", "clasping", "swinging", "twirls", "twirling", "raises",
+               "grips", "gripping", "clasps", "clasping", "swings", "swinging", "twirls", "twirling", "raises",
                "raising", "juggle", "juggles", "juggling"}  # fmt: skip
 #: Verbs of taking a thing up in one's arms, by their stem (:func:`_verb_stem`): what they take is
 #: in arms whenever a person can carry it ("lifts a crate", "two men haul a trunk", "hugs a
