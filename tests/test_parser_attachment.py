@@ -367,3 +367,8 @@ def test_a_subject_pronoun_names_whom_the_text_went_on_about(text, expected):
 
 def test_it_is_no_subject_of_the_weather():
     assert rels("It is a sunny day. A dog sits by a tree.") == {("dog_1", "near", "tree_1")}
+
+
+def test_they_before_a_plural_verb_names_the_animals_before():
+    found = rels("A farmer with a bucket feeds the chickens. They gather around her feet.")
+    assert any(s.startswith("bird") and t == "farmer_1" and r != "near" for s, r, t in found), found

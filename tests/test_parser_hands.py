@@ -628,3 +628,8 @@ def test_one_of_several_given_a_thing_has_the_only_one():
 )
 def test_tools_people_work_with_are_in_hand(text, thing, holder):
     assert (thing, "on", holder) in rels(text), rels(text)
+
+
+def test_each_after_two_named_together_gives_each_its_own():
+    found = rels("A dwarf and an elf sit at a long table, each with a tankard of ale.")
+    assert {("tankard_1", "on", "dwarf_1"), ("tankard_2", "on", "elf_1")} <= found, found

@@ -1385,3 +1385,8 @@ def test_counted_things_of_a_stuff_are_the_things():
     assert objects("A trolley holds a dozen moulds of fresh curd.")[("thing", "mould")] == 12
     assert not any(w == "side" for _, w in objects("Two sides of the hut are open."))
     assert not any(w == "lane" for _, w in objects("Three lanes of cars queue in front of the ramp."))
+
+
+def test_the_bar_of_a_tavern_is_its_counter():
+    found = {o.name: o.category for o in parse_scene("A fantasy tavern. The innkeeper polishes a glass behind the bar.").objects}
+    assert found["bar"] == "counter", found

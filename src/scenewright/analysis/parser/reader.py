@@ -194,6 +194,9 @@ class _Clause:
     each_deed: bool = False
     #: How many members "each" takes at a time: "each pair pulling a plough" is a plough a pair.
     each_unit: int = 1
+    #: Single subjects named together that "each" goes over ("a dwarf and an elf, each with a
+    #: tankard"): a with-thing of its own for every one.
+    each_of: list[int] = field(default_factory=list)
     #: The group whose members each have their own target of the next placing ("each in a seat").
     each_own: int | None = None
     #: The subject's own verb has come ("a guard waves at ..."), so a participle after a target
@@ -905,8 +908,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if not c.first and not participial and k == cs and k < ce and k not in self.by_start and k not in self.rel_at:
             if _is_verb(toks[k].text) and prev_subject and all(self._living(g) for g in prev_subject):
                 c.main = list(prev_subject)
+        # (after "they" a verb has no -s: "They gather around her feet")
+        verb = k + 1 < ce and (_is_verb(toks[k + 1].text) or toks[k].text == "they" and toks[k + 1].text not in _STOP)
         if k + 1 < ce and toks[k].text in ("he", "she", "they", "it") and k + 1 not in self.by_start and (
-            k + 1 in self.rel_at or (_is_verb(toks[k + 1].text) and toks[k + 1].text not in _COPULAS)
+            k + 1 in self.rel_at or (verb and toks[k + 1].text.isalpha() and toks[k + 1].text not in _COPULAS)
         ):  # "She sits on a bench", "They wait by the gate": whom the text went on about
             named = self._subject_pronoun(toks[k].text, [*prev_subject, *self.topic, *reversed(self.history)])
             if named:
@@ -944,6 +949,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # ("each pair pulling a plough": a plough a pair, pulled)
             towing = k + 1 in self.rel_at and self.rel_at[k + 1].kind == "towing"
             each_deed = _participle(nxt) and (k + 1 not in self.rel_at or towing) and k + 1 not in self.by_start
+            doers = c.subjects or self.doers
+            singles = [g for g in doers if self.groups[g].count == 1 and self._living(g)]
+            if w == "each" and each_part and len(singles) > 1 and singles == doers:
+                c.each_of = singles  # "a dwarf and an elf sit at a table, each with a tankard"
+                k += 1
+                continue
             if w == "each" and (each_part or each_passive or each_hold or each_seat or each_deed):
                 plural = [g for g in [*self.history, *c.groups] if self.groups[g].count > 1]
                 # "four astronauts sit on stools around a table, each holding a pouch": the holders
@@ -1004,7 +1015,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     continue
                 self._close_with(c)  # "holds a horseshoe with tongs": the horseshoe is held before the tongs come
                 own = holder if tool_end is not None or bearer is not None else (c.main or list(prev_subject))
-                c.head = [c.each] if c.each is not None else own
+                c.head = [c.each] if c.each is not None else list(c.each_of) or own
                 mine = nxt in _PERSON_POSSESSIVES  # "by the flag with his mallet": his, not the flag's
                 after_target = bool(c.last_target) and c.last_target_end == k
                 between = c.last_kind == "between"
@@ -1226,6 +1237,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             k -= 1
         return None
 
+    def _copy_group(self, g: int) -> int:
+        """A new group like ``g``: the same thing once more, for another owner."""
+        self.groups.append(replace(self.groups[g], index=len(self.groups), ids=[]))
+        return len(self.groups) - 1
+
     def _close_with(self, c: _Clause) -> None:
         """"A desk with a lamp", "a cart loaded with barrels": small things with no place of
         their own stand on what they came with; people and animals keep by each other ("a dog
@@ -1235,7 +1251,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         for g in c.wsub:
             if g in c.wsub_related:
                 continue
-            for h in c.head:
+            for i, h in enumerate(c.head):
+                if i and c.head == c.each_of:
+                    g = self._copy_group(g)  # one tankard each
                 if h == g or any(r[1] == g and r[2] == h for r in self.relations):
                     continue  # "with a stone lantern beside it": placed by the head, not on it
                 rests = self.groups[g].rests
