@@ -1390,3 +1390,15 @@ def test_counted_things_of_a_stuff_are_the_things():
 def test_the_bar_of_a_tavern_is_its_counter():
     found = {o.name: o.category for o in parse_scene("A fantasy tavern. The innkeeper polishes a glass behind the bar.").objects}
     assert found["bar"] == "counter", found
+
+
+@pytest.mark.parametrize(
+    "text, name",
+    [
+        ("A bronze statue of a rearing horse stands in the square.", "bronze rearing horse statue"),
+        ("A hologram of a planet floats above a round table.", "planet hologram"),  # a word nobody listed, up to its verb
+        ("A statue of a lion guards the door.", "lion statue"),
+    ],
+)
+def test_a_likeness_is_named_for_what_it_shows(text, name):
+    assert name in names(text), names(text)

@@ -34,7 +34,7 @@ from scenewright.scene import STYLES, Vec3
 from scenewright.settings import Settings
 
 VOCABULARY = """table round_table coffee_table desk chair armchair office_chair stool sofa bench bed
-bookshelf cabinet wardrobe nightstand counter table_lamp floor_lamp pendant_lamp rug tv monitor laptop
+bookshelf cabinet fireplace wardrobe nightstand counter table_lamp floor_lamp pendant_lamp rug tv monitor laptop
 potted_plant vase bathtub toilet sink stove fridge piano clock mirror picture_frame trash_can crate barrel
 books bottle cup bowl tree pine_tree palm_tree bush flower_bed rock fountain statue lamp_post sign fence
 arch bollard hydrant car truck bus bicycle boat building house kiosk market_stall tent umbrella swing slide
@@ -447,6 +447,8 @@ VARIANTS = [
     ("generic", "dragon egg", "scales"), ("container", "nest", "straw"),
     ("boat", "papyrus boat", "straw"), ("boat", "bamboo raft boat", "straw"), ("panel", "board platform", "dark_wood"),
     ("generic", "signal fire thing", "flame"), ("house", "log cabin", "wood"), ("house", "fishing hut", "wood"),
+    ("fireplace", "wood stove fireplace", "glass"), ("stove", "pot-bellied stove", "flame"), ("crystal", "planet hologram", "light"),
+    ("crystal", "dragon hologram", "light"),
 ]
 
 
@@ -681,3 +683,17 @@ def test_a_helmet_is_a_rounded_shell_not_a_toolbox():
     shell = model.parts["paint"][0].vertices
     top = shell[shell[:, 2] > 0.95 * 0.25]
     assert len(top) and np.abs(top[:, :2]).max() < 0.06
+
+
+def test_a_fireplace_burns_behind_its_surround():
+    """A fireplace is a brick surround with a fire in it, not a cabinet; a wood stove is iron,
+    "wood" naming what it burns, not what it is made of."""
+    fire = build_model("fireplace", (1.5, 0.5, 1.2), "realistic", 1, name="fireplace")
+    assert {"brick", "flame", "bark"} <= set(fire.geometry)
+    stove = build_model("fireplace", (0.6, 0.5, 1.8), "realistic", 1, "wood stove", name="wood stove fireplace")
+    assert stove.geometry["dark_metal"].visual.material.metallicFactor > 0.5
+
+
+def test_a_low_stage_is_a_deck_and_a_tall_one_has_a_truss():
+    assert "light" not in build_model("structure", (5.0, 3.0, 0.8), "realistic", 1, name="stage").geometry
+    assert "light" in build_model("structure", (8.0, 5.0, 4.0), "realistic", 1, name="stage").geometry

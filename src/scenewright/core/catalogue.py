@@ -25,7 +25,7 @@ from importlib import resources
 #: The procedural generators' names (the shape vocabulary of :mod:`scenewright.procedural.shapes`); ``generic`` is the fallback.
 SHAPE_NAMES = (
     "table", "round_table", "coffee_table", "desk", "chair", "armchair", "office_chair", "stool",
-    "sofa", "bench", "bed", "bookshelf", "cabinet", "wardrobe", "nightstand", "counter",
+    "sofa", "bench", "bed", "bookshelf", "cabinet", "fireplace", "wardrobe", "nightstand", "counter",
     "table_lamp", "floor_lamp", "pendant_lamp", "rug", "tv", "monitor", "laptop", "potted_plant",
     "vase", "bathtub", "toilet", "sink", "stove", "fridge", "piano", "clock", "mirror",
     "picture_frame", "trash_can", "crate", "barrel", "books", "bottle", "cup", "bowl", "tree",

@@ -41,7 +41,7 @@ VERSION = 2
 #: Effective density (kg/m³ of the mesh's solid volume) per procedural shape; see the module doc.
 DENSITY = {
     "table": 500, "round_table": 500, "coffee_table": 500, "desk": 400, "chair": 400, "armchair": 75,
-    "office_chair": 150, "stool": 450, "sofa": 70, "bench": 450, "bed": 120, "bookshelf": 450, "cabinet": 110,
+    "office_chair": 150, "stool": 450, "sofa": 70, "bench": 450, "bed": 120, "bookshelf": 450, "cabinet": 110, "fireplace": 1500,
     "wardrobe": 110, "nightstand": 200, "counter": 250, "table_lamp": 500, "floor_lamp": 900,
     "pendant_lamp": 150, "rug": 150, "tv": 400, "monitor": 400, "laptop": 600, "potted_plant": 300, "vase": 1000,
     "bathtub": 300, "toilet": 400, "sink": 400, "stove": 250, "fridge": 150, "piano": 300, "clock": 300,

@@ -57,6 +57,13 @@ class Model:
         self.tints: dict[str, tuple[float, float, float]] = {}
         #: Role → its glTF material, exact, as :meth:`finish` made it (trimesh keeps 8 bits).
         self.materials: dict[str, dict] = {}
+        #: Words of the name that say what kind of thing it is, not what it is made of ("a wood
+        #: stove" burns wood): a generator lists them, and no material is read from them.
+        self.kind_words: tuple[str, ...] = ()
+
+    def described_text(self) -> str:
+        """Name and description, with the words that only name its kind left out."""
+        return re.sub(rf"\b(?:{'|'.join(map(re.escape, self.kind_words))})\b", " ", self.text) if self.kind_words else self.text
 
     # Proportions -------------------------------------------------------------------------
     def thick(self, metres: float, limit: float | None = None) -> float:

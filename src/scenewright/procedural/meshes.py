@@ -119,7 +119,7 @@ def _drawn(shape: str, size, style: str, seed: int, description: str, name: str)
     # A style that repaints a role (steampunk's bronze-green paint) keeps its own colour there.
     tinted = {role: replace(resolved.base(role), color=colour) for role, colour in model.tints.items()
               if role not in resolved.overrides}
-    return model, {**tinted, **described_surfaces(f"{name} {description}", model.main, model.parts.keys(), resolved.base)}
+    return model, {**tinted, **described_surfaces(model.described_text(), model.main, model.parts.keys(), resolved.base)}
 
 
 def build_glb(shape: str, size, style: str, seed: int, description: str = "", name: str = "") -> bytes:

@@ -9,6 +9,7 @@ from dataclasses import dataclass, field, replace
 from scenewright.analysis.parser.contents import _Contents
 from scenewright.analysis.parser.grammar import (
     MAX_COUNT,
+    _DEPICTIONS,
     _CEILING_WORDS,
     _CHAIN_KINDS,
     _COPULAS,
@@ -301,6 +302,22 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
 
     # ---- groups
 
+    def _shown(self, m: _Mention) -> list[str]:
+        """What a likeness shows, named after "of" ("a statue of a rearing horse", "a hologram of
+        a planet"): the words that name it, which the likeness is named for (a rearing horse
+        statue, whose mesh is a horse on a plinth)."""
+        k = m.end + 1
+        if m.category not in _DEPICTIONS or k >= len(self.toks) or self.toks[m.end].text != "of":
+            return []
+        while k < len(self.toks) and self.toks[k].text in _DETERMINERS:
+            k += 1
+        start, named = k, k in self.named_at  # a thing named there: its words ("a rearing horse")
+        while k < len(self.toks) and k - start < 3 and self.toks[k].text[:1].isalpha() and (
+            k in self.named_at if named else self.toks[k].text not in _STOP and not _is_verb(self.toks[k].text)
+        ):  # (else a word nobody listed, "a planet", up to its verb)
+            k += 1
+        return [t.text for t in self.toks[start:k]]
+
     def _new_group(self, m: _Mention, sizes: list[tuple[str, float]]) -> int:
         adjectives = {a.lower() for a in m.adjectives}
         if m.category == "table" and adjectives & {"round", "circular"}:
@@ -336,7 +353,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # (a material, a place or a time before a catalogue thing does not: "an oak table")
             kind = describing[-1:]
             describing = describing[:-1]
-        name = " ".join([*kind, name])
+        *before, head = [*kind, *name.split()]
+        name = " ".join([*before, *self._shown(m), head])
         description = " ".join([*describing, name, *m.post]).strip()
         bounds = "person" if cat.shape == "figure" else "thing"
         base = m.guess.size if m.guess is not None else self._likeness_size(cat, kind) or cat.size

@@ -435,6 +435,42 @@ def cabinet(m: Model) -> None:
     _doors(m, -m.sx / 2 + 0.02, m.sx / 2 - 0.02, plinth + 0.02, m.sz - 0.05, 2 if m.sx > 0.6 else 1, -m.sy / 2 + 0.02)
 
 
+def fireplace(m: Model) -> None:
+    """A brick fireplace: a stone hearth slab in front, a surround with a dark firebox, logs
+    burning in it and a wooden mantel shelf; by its name a cast-iron wood stove."""
+    if m.named("wood stove", "woodstove", "stove"):
+        _wood_stove(m)
+        return
+    m.main = "brick"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    shelf, hearth = 0.08 * H, 0.05 * H
+    front, back = -0.55 * D, 0.5 * D  # the surround's face, the firebox's back wall
+    box_w, box_top = 0.55 * W, hearth + 0.55 * (H - shelf - hearth)
+    m.box("stone", (-W, -D, 0), (W, D, hearth))
+    m.box("brick", (-0.92 * W, back, hearth), (0.92 * W, D, H - shelf))  # the chimney breast behind
+    for x0, x1 in ((-0.92 * W, -box_w), (box_w, 0.92 * W)):
+        m.box("brick", (x0, front, hearth), (x1, back, H - shelf))
+    m.box("brick", (-box_w, front, box_top), (box_w, back, H - shelf))
+    m.box("dark_metal", (-box_w, back - 0.02, hearth), (box_w, back, box_top), rounded=0.0)  # sooted back
+    m.box("dark_wood", (-W, -0.75 * D, H - shelf), (W, D, H))
+    for k in (-1, 1):
+        m.cylinder("bark", (-0.6 * box_w, 0.1 * k * D, hearth + 0.05), (0.6 * box_w, -0.1 * k * D, hearth + 0.05),
+                   0.04, fraction=0.5)  # fmt: skip
+    m.lathe("flame", [(0.3 * box_w, 0.0), (0.18 * box_w, 0.4 * (box_top - hearth)), (0.0, 0.75 * (box_top - hearth))],
+            centre=(0.0, 0.0, hearth + 0.06), scale=(1.0, 0.45), fraction=0.5)  # fmt: skip
+
+
+def _wood_stove(m: Model) -> None:
+    m.main, m.kind_words = "dark_metal", ("wood", "woodstove")
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    body = 0.55 * H
+    m.legs("dark_metal", 0.03, 0, 0.12 * H, 0.025, square=True)
+    m.box("dark_metal", (-W, -D, 0.12 * H), (W, D, body))
+    m.box("glass", (-0.6 * W, -D - 0.01, 0.2 * H), (0.6 * W, -D, body - 0.08 * H), rounded=0.0)
+    m.box("flame", (-0.45 * W, -D + 0.01, 0.22 * H), (0.45 * W, -D + 0.02, 0.38 * H), rounded=0.0)
+    m.cylinder("dark_metal", (0, 0.3 * D, body), (0, 0.3 * D, H), min(0.08, 0.3 * W))
+
+
 def wardrobe(m: Model) -> None:
     m.box("wood", (-m.sx / 2 + 0.01, -m.sy / 2 + 0.03, 0.05), (m.sx / 2 - 0.01, m.sy / 2, m.sz - 0.06))
     m.box("dark_wood", (-m.sx / 2 + 0.03, -m.sy / 2 + 0.05, 0), (m.sx / 2 - 0.03, m.sy / 2 - 0.02, 0.05))
@@ -533,6 +569,9 @@ def sink(m: Model) -> None:
 
 
 def stove(m: Model) -> None:
+    if m.named("wood burner", "woodburner") or m.has("pot-bellied", "potbelly", "cast-iron", "iron", "wood-burning"):
+        _wood_stove(m)  # a stove that heats a room, not a kitchen range
+        return
     m.main = "metal"
     back = min(0.15, 0.15 * m.sz)
     top = m.sz - back
@@ -639,6 +678,6 @@ def piano(m: Model) -> None:
 SHAPES = {
     "table": table, "round_table": round_table, "coffee_table": coffee_table, "desk": desk, "chair": chair,
     "armchair": armchair, "office_chair": office_chair, "stool": stool, "sofa": sofa, "bench": bench, "bed": bed,
-    "bookshelf": bookshelf, "cabinet": cabinet, "wardrobe": wardrobe, "nightstand": nightstand, "counter": counter,
+    "bookshelf": bookshelf, "cabinet": cabinet, "fireplace": fireplace, "wardrobe": wardrobe, "nightstand": nightstand, "counter": counter,
     "bathtub": bathtub, "toilet": toilet, "sink": sink, "stove": stove, "fridge": fridge, "piano": piano,
 }

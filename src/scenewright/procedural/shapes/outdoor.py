@@ -459,7 +459,36 @@ def pillar(m: Model) -> None:
                        (1.1 * r, m.sz - base)])
 
 
+def _hologram(m: Model) -> None:
+    """A hologram: a projector disc with a ring of light, and above it, in glowing translucent
+    light, what it shows: the creature or person its name says, a planet (a globe with a ring),
+    else an orb inside orbit rings."""
+    m.main = "crystal"
+    r, H = min(m.sx, m.sy) / 2, m.sz
+    base = min(0.08 * H, 0.12)
+    m.cylinder("dark_metal", (0, 0, 0), (0, 0, base), 0.9 * r, 0.8 * r)
+    m.torus("light", (0, 0, base), 0.7 * r, 0.03 * r + 0.005)
+    family = family_of(" ".join(w for w in m.name.split() if not w.startswith("holo")))
+    if family in ("animal", "bird", "figure"):
+        # (a person in a standing person's footprint: a deeper box would draw one sitting)
+        box = (m.sx, m.sy) if family != "figure" else (min(m.sx, 0.3 * (H - base)), min(m.sy, 0.17 * (H - base)))
+        m.inset({"animal": animal, "bird": bird}.get(family, figure), (0, 0, 1.3 * base), (*box, H - 1.3 * base), "crystal")
+        return
+    ringed = m.has("planet", "saturn", "world")
+    globe = min(r / (1.55 if ringed else 1.35), (H - base) / 2.4)
+    centre = (0, 0, H - 1.15 * globe)
+    m.ball("crystal", centre, (globe, globe, globe))
+    if ringed:
+        m.torus("crystal", centre, 1.5 * globe, 0.04 * globe)
+    elif not m.has("globe", "earth", "moon", "sun", "star"):
+        for axis in ("x", "y"):
+            m.torus("crystal", centre, 1.3 * globe, 0.025 * globe, axis=axis)
+
+
 def crystal(m: Model) -> None:
+    if m.named("hologram", "holographic", "holo"):
+        _hologram(m)
+        return
     m.main = "crystal"
     r = min(m.sx, m.sy) / 2
     m.ball("stone", (0, 0, 0.05 * m.sz), (0.8 * r, 0.8 * r, 0.12 * m.sz), fraction=0.4)

@@ -109,17 +109,27 @@ def _cone_slice(m: Model, a0: float, a1: float, z0: float, z1: float):
     return P.flatten(P.Part(points, np.array([[0, 1, 2], [0, 2, 1]]), np.zeros_like(points)))
 
 
+#: m, the height a stage's box must pass to hold a lighting truss above its deck.
+_TRUSS_FROM = 2.2
+
+
 def _stage(m: Model) -> None:
-    """A stage: a raised platform with steps, a backdrop and a lighting truss on posts."""
+    """A stage: a raised platform with steps, and when it is tall enough to have them (its box
+    reaches past :data:`_TRUSS_FROM`) a backdrop and a lighting truss on posts; a low one is
+    the deck alone, whose top is where what stands on it stands."""
     m.main = "dark_wood"
     W, D, H = m.sx / 2, m.sy / 2, m.sz
-    deck = min(0.2 * H, 0.4 * D) + 0.05
+    deck = min(0.2 * H, 0.4 * D) + 0.05 if H > _TRUSS_FROM else H
     m.box("dark_wood", (-W, -D, 0), (W, D, deck))
     m.box("dark_plastic", (-W - 0.001, -D - 0.001, 0), (W + 0.001, -D + 0.01 * D, 0.97 * deck), rounded=0.0)
     steps = 3
     for k in range(steps):  # one tread each, side by side (nested blocks would share their sides)
         h = deck * (k + 1) / (steps + 1)
-        m.box("dark_wood", (0.55 * W, -D - (steps - k) * 0.06 * D, 0), (0.8 * W, -D - (steps - k - 1) * 0.06 * D, h))
+        y0, y1 = -D - (steps - k) * 0.06 * D, -D - (steps - k - 1) * 0.06 * D
+        m.box("dark_wood", (0.55 * W, y0, 0), (0.8 * W, y1 - 0.003, h))  # (a hair apart: no shared face)
+    if H <= _TRUSS_FROM:  # a valance along the front edge of the deck
+        m.box("canvas", (-W - 0.002, -D - 0.004, 0.75 * deck), (W + 0.002, -D + 0.005 * D, 0.98 * deck), rounded=0.0)
+        return
     m.box("canvas", (-0.95 * W, 0.85 * D, deck), (0.95 * W, D, 0.85 * H))
     post = 0.015 * m.sx + 0.03
     # Posts run from inside the deck to the middle of the truss; the side rails hang a little
