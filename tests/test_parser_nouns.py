@@ -1402,3 +1402,13 @@ def test_the_bar_of_a_tavern_is_its_counter():
 )
 def test_a_likeness_is_named_for_what_it_shows(text, name):
     assert name in names(text), names(text)
+
+
+def test_a_creature_in_apposition_to_a_role_is_the_thing():
+    """"Their boss, a gorilla in a bowler hat": one object, drawn as the gorilla it is."""
+    assert objects("Their boss, a gorilla in a bowler hat, sits on a crate.") == Counter({("animal", "gorilla"): 1, ("crate", "crate"): 1})
+
+
+def test_a_plural_verb_after_an_apposition_is_the_subject_s():
+    """"The captain, an old sailor, perches on the wheel": "perches" is the captain's verb."""
+    assert not any(w == "perch" for _, w in objects("The captain, an old sailor with one eye, perches on the wheel."))

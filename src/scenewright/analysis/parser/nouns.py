@@ -142,6 +142,9 @@ def _verb_ends_subject(toks: list[_Tok], i: int, end: int) -> bool:
     looms", "a tower looms")."""
     last = toks[end - 1].text
     transitive = end < len(toks) and toks[end].text in _OBJECT_OPENERS  # "... poles his boat"
+    verb_next = transitive or end < len(toks) and toks[end].text in _PARTICLES
+    if end - i == 1 and last != singular(last) and verb_next and toks[i - 1].text == "," and _closes_apposition(toks, i - 1):
+        return True  # "The captain, a parrot with one eye, perches on the wheel"
     if last == singular(last) or not (singular(last) in _FINITE or transitive) or _counted_plural(toks, i):
         return False
     j = i - 1
@@ -156,6 +159,21 @@ def _verb_ends_subject(toks: list[_Tok], i: int, end: int) -> bool:
         before[:1].isalpha() and before not in _STOP and singular(before) == before
         and not load_vocabulary().is_adjective(before) and not toks[i].joined
     )  # fmt: skip
+
+
+def _closes_apposition(toks: list[_Tok], k: int) -> bool:
+    """The comma at ``k`` closes an apposition to a sentence's definite subject ("The captain,
+    a parrot with one eye, ..."): what follows it is that subject's verb."""
+    j = k - 1
+    while j > 0 and toks[j].text not in (".", "!", "?", ";", ","):
+        j -= 1
+    if j < 2 or toks[j].text != "," or toks[j + 1].text not in ("a", "an"):
+        return False
+    start = j - 1
+    while start > 0 and toks[start - 1].text[:1].isalpha() and toks[start - 1].text not in _STOP:
+        start -= 1  # back over the subject's words to its determiner
+    opening = start < 2 or toks[start - 2].text in (".", "!", "?", ";")
+    return opening and start > 0 and (toks[start - 1].text == "the" or toks[start - 1].text in _POSSESSIVES)
 
 
 def _counted_plural(toks: list[_Tok], i: int) -> bool:
@@ -2479,6 +2497,10 @@ def _mark_appositions(toks: list[_Tok], mentions: list[_Mention]) -> None:
                 j -= 1  # "its new owner"
             relational = relational and j >= 0 and toks[j].text in _POSSESSIVES
             (m if relational else later[0]).content = True
+        elif _person_mention(m) and later and load_catalogue()[later[0].category].shape in ("animal", "bird", "robot") and (
+            _renames(toks, m.end, later[0].start) and not _after_preposition(toks, m.start)
+        ):  # "their boss, a gorilla in a bowler hat": the role is played by a creature, drawn as one
+            m.content = True
 
 
 def _person_mention(m: _Mention) -> bool:
