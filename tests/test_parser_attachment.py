@@ -372,3 +372,10 @@ def test_it_is_no_subject_of_the_weather():
 def test_they_before_a_plural_verb_names_the_animals_before():
     found = rels("A farmer with a bucket feeds the chickens. They gather around her feet.")
     assert any(s.startswith("bird") and t == "farmer_1" and r != "near" for s, r, t in found), found
+
+
+def test_a_pot_hanging_over_a_fireplace_stands_in_its_hearth():
+    assert rels("A fireplace burns in the corner with a cauldron hanging over it.") == {
+        ("cauldron_1", "in front of", "fireplace_1")
+    }
+    assert ("cauldron_1", "on", "campfire_1") in rels("A cauldron bubbles over the campfire.")

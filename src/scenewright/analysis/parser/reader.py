@@ -2371,6 +2371,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             vessel = src.rests == "surface" or self._carrier(s, ("containers",))
             if not hang and vessel and not target.support and self.groups[t].size[2] <= _LOW_HOST:
                 return "on"
+            if vessel and target.shape == "fireplace":
+                return "in front of"  # "a cauldron hanging over the fireplace": in its hearth, over the fire
             low = self.groups[t].size[2] <= _PLATFORM_HEIGHT
             if not hang and self._living(s) and self._carrier(t, ("perches",)) and low:
                 return "on"

@@ -179,8 +179,45 @@ def _church(m: Model) -> None:
 _TIMBER = ("log", "cabin", "hut", "shack", "shed", "wooden", "timber")
 
 
+def _barn(m: Model) -> None:
+    """A barn: red plank walls under a big gambrel roof whose ridge runs front to back, wide
+    double doors braced with white crosses in its front gable, a hay-loft door above them."""
+    m.main = "paint"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    eave, knee, over, t = 0.45 * H, 0.8 * H, 0.05 * min(m.sx, m.sy), 0.03 * H
+    m.box("paint", (-W + over, -D + over, 0), (W - over, D - over, eave))
+    # the gable ends, a gambrel's five sides, and the roof's four slopes laid over them
+    gable = [(-W + over, eave), (W - over, eave), (0.62 * (W - over), knee), (0.0, H - t), (-0.62 * (W - over), knee)]
+    m.extrude("paint", gable, "y", -D + over, D - over)
+    slope = [(-W, eave - t), (-0.64 * W, knee), (0.0, H), (0.64 * W, knee), (W, eave - t)]
+    for (x0, z0), (x1, z1) in zip(slope, slope[1:]):
+        nx, nz = -(z1 - z0), (x1 - x0)  # the slope's outward normal, to give the slab its thickness
+        k = t / max(1e-9, (nx * nx + nz * nz) ** 0.5)
+        quad = [(x0, z0), (x1, z1), (x1 + nx * k, z1 + nz * k), (x0 + nx * k, z0 + nz * k)]
+        m.extrude("roof", quad if _ccw(quad) else quad[::-1], "y", -D, D)
+    door_w, door_h = min(3.0, 0.5 * m.sx), min(3.2, 0.8 * eave)
+    front = -D + over
+    m.box("dark_wood", (-door_w / 2, front - 0.04, 0), (door_w / 2, front, door_h), rounded=0.0)
+    for x0, x1 in ((-door_w / 2, 0.0), (0.0, door_w / 2)):
+        # (the two braces of a cross a hair apart in depth: no shared face where they cross)
+        for k, ((xa, za), (xb, zb)) in enumerate((((x0, 0.0), (x1, door_h)), ((x0, door_h), (x1, 0.0)))):
+            m.beam("canvas_alt", (xa, front - 0.06 - 0.004 * k, za), (xb, front - 0.06 - 0.004 * k, zb), 0.1)
+        m.box("canvas_alt", (x0, front - 0.07, door_h - 0.1), (x1, front - 0.04, door_h), rounded=0.0)
+    loft = 0.35 * door_w
+    m.box("dark_wood", (-loft / 2, front - 0.04, eave + 0.05 * H), (loft / 2, front, eave + 0.05 * H + loft), rounded=0.0)
+
+
+def _ccw(outline) -> bool:
+    """Whether a 2D outline runs counter-clockwise (positive signed area)."""
+    return sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(outline, outline[1:] + outline[:1])) > 0
+
+
 def house(m: Model) -> None:
-    """A gabled house: walls (of wood for a cabin, a hut or a shed), a roof, a door, windows, a chimney."""
+    """A gabled house: walls (of wood for a cabin, a hut or a shed), a roof, a door, windows, a
+    chimney; by its name a barn."""
+    if m.named("barn", "stable", "stables", "cowshed", "byre"):
+        _barn(m)
+        return
     m.main = "wood" if m.has(*_TIMBER) else "wall"
     eave = 0.55 * m.sz
     over = 0.06 * min(m.sx, m.sy)

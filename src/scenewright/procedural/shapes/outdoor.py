@@ -460,13 +460,12 @@ def pillar(m: Model) -> None:
 
 
 def _hologram(m: Model) -> None:
-    """A hologram: a projector disc with a ring of light, and above it, in glowing translucent
-    light, what it shows: the creature or person its name says, a planet (a globe with a ring),
-    else an orb inside orbit rings."""
+    """A hologram: light alone, so it floats wherever the text puts it; a ring of light at its
+    foot, and above it, in glowing translucent light, what it shows: the creature or person its
+    name says, a planet (a globe with a ring), else an orb inside orbit rings."""
     m.main = "crystal"
     r, H = min(m.sx, m.sy) / 2, m.sz
     base = min(0.08 * H, 0.12)
-    m.cylinder("dark_metal", (0, 0, 0), (0, 0, base), 0.9 * r, 0.8 * r)
     m.torus("light", (0, 0, base), 0.7 * r, 0.03 * r + 0.005)
     family = family_of(" ".join(w for w in m.name.split() if not w.startswith("holo")))
     if family in ("animal", "bird", "figure"):
