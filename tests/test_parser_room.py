@@ -116,6 +116,12 @@ def test_wall_phrases_become_room_relations_with_their_wall():
                    ("picture_frame_1", "on wall", "wall_3")}
 
 
+def test_a_thing_leaning_on_a_wall_stands_against_it():
+    parsed = parse_scene("A bicycle leans on the wall. A clock hangs on the wall.")
+    got = {(r.source, r.relation, r.target) for r in wall_phrases(parsed)}
+    assert got == {("bicycle_1", "against wall", "room"), ("wall_clock_1", "on wall", "room")}
+
+
 def test_a_wall_thing_does_not_take_the_corner_of_the_next_clause():
     """A mirror is a wall thing, and a wall phrase after another thing still hangs it ("a mirror
     above the basin on the left wall"); a corner phrase there belongs to the thing named before it."""

@@ -358,6 +358,8 @@ _CEILING_PHRASE = re.compile(
     r"|\b(?:" + _FIXING + r"|dangles?|dangling|swings?)\s+from\s+the\s+(?:[\w-]+\s+){1,3}?overhead\b"
 )
 #: Verbs that put a thing *on* a wall rather than against it.
+#: Words by which a thing leans or rests on a wall it stands against ("a bicycle leaning on the wall").
+_LEANING = re.compile(r"\b(?:lean(?:s|ing|ed)?|propped|resting|rests)\b")
 _MOUNTED = re.compile(r"\b" + _FIXING + r"\b")
 #: Words before a thing's name that fix it to a wall: "a wall shelf", "a wall-mounted screen", "two
 #: framed butterfly cases" (what is framed hangs).
@@ -446,6 +448,8 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
             target = f"wall_{RECTANGLE_WALLS[_SIDE_WORDS[side]]}" if side and _SIDE_WORDS.get(side) else "room"
             if what == "corner":
                 relation = "in corner"
+            elif _LEANING.search(between) and not hangs_by_kind(o):
+                relation = "against wall"  # "a bicycle leaning on the wall" stands by it, not fixed up on it
             elif hangs_by_kind(o) or preposition in ("on", "onto") or _MOUNTED.search(between):
                 relation = "on wall"  # a thing on a wall, or hung or mounted there, is fixed to it
             else:
