@@ -118,3 +118,14 @@ def test_a_refectory_bench_is_as_long_as_its_twelve_sitters():
     monks = [obj(f"monk_{i}", "figure", (0.5, 0.35, 1.75)) for i in range(12)]
     width = lengthen(scene([bench, *monks], [on(m.id, "bench_1") for m in monks]))[0].size[0]
     assert width >= 12 * 0.5
+
+
+def test_a_counter_grows_to_take_the_stools_that_line_its_front():
+    """"Six stools line the counter": one row along its front, not two rows crowding a 2 m counter."""
+    counter = obj("counter_1", "counter", (2.0, 0.65, 0.92))
+    stools = [obj(f"stool_{i}", "stool", (0.4, 0.4, 0.75)) for i in range(6)]
+    front = [ParsedRelation(source=s.id, relation="in front of", target="counter_1") for s in stools]
+    assert lengthen(scene([counter, *stools], front))[0].size[0] >= 6 * 0.4
+    crowd = [obj(f"man_{i}", "figure", (0.5, 0.3, 1.75)) for i in range(6)]  # a queue is no row of seats
+    queue = [ParsedRelation(source=m.id, relation="in front of", target="counter_1") for m in crowd]
+    assert lengthen(scene([counter, *crowd], queue))[0].size == counter.size

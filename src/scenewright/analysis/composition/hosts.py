@@ -32,6 +32,7 @@ from dataclasses import replace
 
 from scenewright.analysis.parser import ParsedObject, ParsedScene
 from scenewright.analysis.composition.mounts import LIVING
+from scenewright.analysis.composition.roles import SEATS
 from scenewright.analysis.parser.vocabulary import GENERIC, load_vocabulary
 from scenewright.core.catalogue import load_catalogue
 
@@ -39,6 +40,8 @@ from scenewright.core.catalogue import load_catalogue
 STRETCHABLE = frozenset({"table", "counter", "cabinet", "desk", "bench"})
 #: Space left between two things standing side by side on a host, and at its ends (m).
 GAP = 0.05
+#: Space left between two seats side by side along a host's front (m): room to sit down.
+SEAT_GAP = 0.2
 #: No host is lengthened past this many metres (a banquet table, a shop counter).
 LONGEST = 7.0
 #: Procedural shapes that come in any size and grow as a whole (a boulder for three goats).
@@ -92,21 +95,29 @@ def laid_flat(parsed: ParsedScene) -> list[ParsedObject]:
 
 def lengthen(parsed: ParsedScene) -> list[ParsedObject]:
     """The parse's objects, each stretchable host as wide as the widths of what is ``on`` it
-    side by side, in as many rows as its depth takes (never narrower than it was, never past
-    :data:`LONGEST`)."""
+    side by side, in as many rows as its depth takes, and as the seats in front of it side by
+    side ("six stools line the counter": one row along its front); never narrower than it was,
+    never past :data:`LONGEST`."""
     catalogue = load_catalogue()
     by_id = {o.id: o for o in parsed.objects}
     loads: dict[str, list[ParsedObject]] = defaultdict(list)
+    seated: dict[str, list[ParsedObject]] = defaultdict(list)
     for r in parsed.relations:
-        if r.relation == "on" and r.source in by_id and r.target in by_id:
+        if r.source not in by_id or r.target not in by_id:
+            continue
+        if r.relation == "on":
             loads[r.target].append(by_id[r.source])
+        elif r.relation == "in front of" and by_id[r.source].category in SEATS:
+            seated[r.target].append(by_id[r.source])
     out = []
     for o in parsed.objects:
         entry = catalogue.get(o.category)
-        on = loads.get(o.id, [])
-        if (o.guessed or (entry is not None and entry.shape in STRETCHABLE)) and len(on) > 1:
-            rows = max(1, int(o.size[1] // max(s.size[1] + GAP for s in on)))  # a deep table holds rows
-            need = (sum(s.size[0] + GAP for s in on) + GAP) / rows
+        on, seats = loads.get(o.id, []), seated.get(o.id, [])
+        stretchable = o.guessed or (entry is not None and entry.shape in STRETCHABLE)
+        if stretchable and (len(on) > 1 or len(seats) > 1):
+            rows = max(1, int(o.size[1] // max((s.size[1] + GAP for s in on), default=o.size[1])))  # a deep table holds rows
+            need = (sum(s.size[0] + GAP for s in on) + GAP) / rows if on else 0.0
+            need = max(need, sum(s.size[0] + SEAT_GAP for s in seats))
             width = max(o.size[0], min(need, LONGEST))
             o = replace(o, size=(width, *o.size[1:]))
         elif entry is not None and entry.shape in GROWN and on:
