@@ -284,6 +284,10 @@ def test_style(text, style):
         ("A graphic novel panel showing a lab with two robots.", "comic"),
         ("A quilted patchwork panel of an orchard with four apple trees.", "textile"),
         ("An acrylic painting of a fishing village at noon.", "painting"),
+        ("A 1980s airbrush painting of a truck stop on a desert planet.", "painting"),  # a decade describes
+        ("Pencil storyboard frame: the ring of an orbital station, racks of lettuce in rows.", "sketch"),  # a colon
+        ("In the manner of a Byzantine icon: the refectory of a monastery.", "painting"),
+        ("A papier-mâché diorama of a fishing village.", "papercraft"),  # accents folded, the first named
         # a verb of making, "in the style of"
         ("A bus depot shown as a blueprint, with three buses.", "blueprint"),
         ("A fox den rendered like a stained-glass window.", "mosaic"),

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import re
+import unicodedata
 from dataclasses import dataclass, field
 from functools import lru_cache
 from importlib import resources
@@ -40,8 +41,10 @@ class Look:
 
 
 def normalise(words: str) -> str:
-    """Lowercase words joined by single spaces: "Ukiyo-e" and "ukiyo e" are one name."""
-    return " ".join("".join(c if c.isalnum() else " " for c in words.lower()).split())
+    """Lowercase words joined by single spaces, accents folded: "Ukiyo-e" and "ukiyo e" are one
+    name, and so are "papier-mâché" and "papier mache"."""
+    plain = "".join(c for c in unicodedata.normalize("NFKD", words.lower()) if not unicodedata.combining(c))
+    return " ".join("".join(c if c.isalnum() else " " for c in plain).split())
 
 
 @lru_cache(maxsize=1)

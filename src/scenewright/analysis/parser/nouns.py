@@ -750,11 +750,12 @@ def _owns_opening_place(toks: list[_Tok], s: int) -> bool:
 
 def _picture_of_scene(toks: list[_Tok], s: int, e: int, category: str) -> bool:
     """The description opens with the picture it is ("A watercolour painting of a headland", "An
-    illustration of a market", "A pop art comic panel of a flying saucer"): a picture, or a panel,
-    followed by "of", with only describing words before it."""
-    if category not in ("picture_frame", "panel") or e >= len(toks) or toks[e].text != "of":
+    illustration of a market", "A pop art comic panel of a flying saucer", "Pencil storyboard
+    frame: an orbital station"): a picture, or a panel, followed by "of" or a colon, with only
+    describing words (a decade too: "a 1980s airbrush painting") before it."""
+    if category not in ("picture_frame", "panel") or e >= len(toks) or toks[e].text not in ("of", ":"):
         return False
-    if not all(t.text[:1].isalpha() and (t.text not in _STOP or t.joined) or t.text in ("a", "an") for t in toks[:s]):
+    if not all(t.text[:1].isalnum() and (t.text not in _STOP or t.joined) or t.text in ("a", "an") for t in toks[:s]):
         return False  # (a hyphened look is a describing word: "a blue-and-white tile panel of")
     k = e  # a sentence that only names the picture: "A painting of a ship hangs ..." is a thing
     while k < len(toks) and toks[k].text not in (".", "!", "?") and not _verb_word(toks[k].text):
