@@ -1412,3 +1412,9 @@ def test_a_creature_in_apposition_to_a_role_is_the_thing():
 def test_a_plural_verb_after_an_apposition_is_the_subject_s():
     """"The captain, an old sailor, perches on the wheel": "perches" is the captain's verb."""
     assert not any(w == "perch" for _, w in objects("The captain, an old sailor with one eye, perches on the wheel."))
+
+
+def test_a_stand_after_a_determiner_is_a_thing_and_a_verb_elsewhere():
+    assert objects("A grey sofa faces a TV on a low stand.")[("tv_stand", "stand")] == 1
+    assert objects("A microphone on a tall stand faces the sofa.") == Counter({("tool", "microphone"): 1, ("sofa", "sofa"): 1})
+    assert objects("Two men stand by the fence.") == Counter({("figure", "man"): 2, ("fence", "fence"): 1})

@@ -203,6 +203,21 @@ def _read_in_setting(toks: list[_Tok]) -> None:
             t.text = sense[0]
 
 
+def _stand_at(toks: list[_Tok], i: int) -> tuple[int, str, None] | None:
+    """"A stand" as a noun, which no list can hold (it is a verb far more often): after a
+    determiner and describing words only, the stand a TV is on is a TV stand ("a TV on a low
+    stand"); any other is the thing's own ("a microphone on a tall stand")."""
+    if toks[i].text != "stand":
+        return None
+    j = i - 1
+    while j >= 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP and load_vocabulary().is_adjective(toks[j].text):
+        j -= 1
+    if j < 0 or toks[j].text not in ("a", "an", "the", "its", "his", "her", "their"):
+        return None
+    screen = any(match_phrase((t.text,)) in ("tv", "monitor") for t in toks[max(0, j - 6) : j])
+    return (i + 1, "tv_stand", None) if screen else None
+
+
 def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
     """Longest-first catalogue and vocabulary matches, with a noun followed by another noun read
     as a modifier ("glass table", "stone path"), then the nouns nobody listed (a generic thing
@@ -217,7 +232,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         if toks[i].quoted:
             i += 1
             continue  # "a sign reading 'Fresh Fish'": the words on the sign
-        found = _match_at(toks, i)
+        found = _match_at(toks, i) or _stand_at(toks, i)
         quantity = found is not None and found[2] is not None and "of" in (t.text for t in toks[i : found[0]])
         if found and (vocabulary.is_adjective(toks[i].text) or quantity):
             # "a glowing crystal ball": a phrase that opens with a describing word ("glowing
