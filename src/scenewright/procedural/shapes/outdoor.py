@@ -241,6 +241,8 @@ def statue(m: Model) -> None:
         return
     family = family_of(m.name)
     subject = {"animal": animal, "bird": bird}.get(family, figure)
+    if m.named("skeleton model", "human skeleton", "anatomical skeleton"):
+        subject = figure  # a classroom's skeleton is a person's, whatever its category files it under
     if m.named("skeleton", "fossil"):
         role = "horn"
     elif m.has("gold", "golden", "gilded"):

@@ -174,6 +174,19 @@ def _scaffold(m: Model) -> None:
         m.beam("metal", (xs[i], -D + tube, 0.05 * H), (xs[i + 1], -D + tube, H - tube), 0.8 * tube)
 
 
+def _mast(m: Model) -> None:
+    """A ship's mast: a tall wooden pole with two yards across it, a sail bent to each, and a
+    crow's nest near the top."""
+    m.main = "wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    r = min(0.12, 0.06 * min(m.sx, m.sy) + 0.05)
+    m.post("wood", 0, 0, 0, H, r, fraction=0.6)
+    for z0, z1, span in ((0.3 * H, 0.58 * H, 0.95), (0.62 * H, 0.82 * H, 0.75)):
+        m.cylinder("dark_wood", (-span * W, 0, z1), (span * W, 0, z1), 0.6 * r, fraction=0.4)  # the yard
+        m.box("canvas_alt", (-0.9 * span * W, -0.6 * D, z0), (0.9 * span * W, -0.55 * D, z1 - r), rounded=0.0)
+    m.cylinder("dark_wood", (0, 0, 0.88 * H), (0, 0, 0.92 * H), 3 * r, fraction=0.6)  # the crow's nest
+
+
 def _truss(m: Model) -> None:
     """A generic open structure: a gantry of two lattice towers joined by a truss."""
     m.main = "metal"
@@ -338,6 +351,7 @@ def structure(m: Model) -> None:
         (("windmill", "wind turbine"), _windmill),
         (("crane", "tower crane", "gantry crane"), _crane),
         (("carousel", "merry-go-round", "merry go round", "roundabout"), _carousel),
+        (("mast", "masts"), _mast),
         (("platform", "dais"), _platform),
         (("stage", "bandstand", "podium"), _stage),
         (("scaffold", "scaffolding"), _scaffold),
