@@ -118,6 +118,7 @@ def test_a_plant_word_before_a_generic_plant_names_the_plant():
         ("The interior of a small violin shop at dusk. A workbench stands by the window.", "shop"),
         ("A narrow tattoo parlour. A workbench stands by the window.", "parlour"),
         ("The skipper's cabin of an old trawler: a stool stands by the bunk. A lamp hangs in the cabin.", "cabin"),
+        ("A busy airport gate. Rows of seats face the window, and a cleaner pushes a trolley past the gate desk.", "gate"),
     ],
 )
 def test_the_shop_or_room_that_holds_the_scene_is_no_object(text, place):
