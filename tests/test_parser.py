@@ -873,3 +873,15 @@ def test_a_building_the_text_puts_things_outside_of_is_seen_from_outside():
     assert not bakery.indoor and bakery.ground not in ("wood floor", "tiles", "carpet")
     inside = parse_scene("A cosy bakery at dawn. A baker kneads dough at the counter beside the oven.")
     assert inside.indoor and inside.ground == "wood floor"
+
+
+@pytest.mark.parametrize(
+    ("text", "indoor"),
+    [
+        ("A space station docking bay. A small shuttle sits on the landing pad in the middle of the bay.", True),
+        ("A busy airport gate. Rows of seats face the large window.", True),
+        ("A quiet bay at dawn. Two boats float on the water.", False),  # a bay of the sea is no bay of a station
+    ],
+)
+def test_the_bays_of_a_station_and_an_airport_s_gates_are_rooms(text, indoor):
+    assert parse_scene(text).indoor is indoor
