@@ -448,7 +448,7 @@ VARIANTS = [
     ("boat", "papyrus boat", "straw"), ("boat", "bamboo raft boat", "straw"), ("panel", "board platform", "dark_wood"),
     ("generic", "signal fire thing", "flame"), ("house", "log cabin", "wood"), ("house", "fishing hut", "wood"),
     ("fireplace", "wood stove fireplace", "glass"), ("stove", "pot-bellied stove", "flame"), ("crystal", "planet hologram", "light"),
-    ("house", "red barn", "canvas_alt"), ("structure", "mast", "canvas_alt"),
+    ("house", "red barn", "canvas_alt"), ("structure", "mast", "canvas_alt"), ("truck", "ice cream van", "flower"),
     ("crystal", "dragon hologram", "light"),
 ]
 

@@ -73,7 +73,8 @@ def truck(m: Model) -> None:
     if m.named("tractor", "bulldozer", "harvester", "forklift", "golf cart"):
         vehicle(m)
         return
-    food = m.named("food truck", "ice cream truck", "food van")
+    food = m.named("food truck", "ice cream truck", "ice cream van", "food van")
+    roof = 0.72 * m.sz if m.named("ice cream") else m.sz
     _livery(m)
     wr = min(0.17 * m.sz, 0.07 * m.sy)
     chassis = 1.2 * wr
@@ -107,15 +108,19 @@ def truck(m: Model) -> None:
         for x in (-0.25 * m.sx, 0.25 * m.sx):
             m.box("dark_metal", (x - 0.02 * m.sx, y0, 0.85 * m.sz), (x + 0.02 * m.sx, y0 + 0.04 * m.sy, 0.88 * m.sz), rounded=0.0)
             m.box("dark_metal", (x - 0.02 * m.sx, L - 0.06 * m.sy, 0.85 * m.sz), (x + 0.02 * m.sx, L - 0.02 * m.sy, 0.88 * m.sz), rounded=0.0)
-    else:
-        m.box("canvas_alt", (-m.sx / 2 + 0.02 * m.sx, y0, chassis), (m.sx / 2 - 0.02 * m.sx, L, m.sz))
+    else:  # (an ice cream van's body stops short of the top: its cone stands on the roof)
+        m.box("canvas_alt", (-m.sx / 2 + 0.02 * m.sx, y0, chassis), (m.sx / 2 - 0.02 * m.sx, L, roof))
     if food:
         y0, y1 = -L + cab_len + 0.12 * m.sy, L - 0.1 * m.sy
-        m.box("dark_plastic", (-m.sx / 2 + 0.01 * m.sx, y0, 0.5 * m.sz), (-m.sx / 2 + 0.02 * m.sx, y1, 0.8 * m.sz), rounded=0.0)
-        m.box("wood", (-m.sx / 2, y0, 0.48 * m.sz), (-m.sx / 2 + 0.02 * m.sx, y1, 0.5 * m.sz), rounded=0.0)
-        m.extrude("canvas", [(-m.sx / 2 + 0.02 * m.sx, 0.83 * m.sz), (-m.sx / 2, 0.78 * m.sz), (-m.sx / 2, 0.8 * m.sz),
-                             (-m.sx / 2 + 0.02 * m.sx, 0.85 * m.sz)], "y", y0, y1)
-        m.box("light", (-m.sx / 2 + 0.005 * m.sx, y0, 0.87 * m.sz), (-m.sx / 2 + 0.02 * m.sx, y1, 0.95 * m.sz), rounded=0.0)
+        m.box("dark_plastic", (-m.sx / 2 + 0.01 * m.sx, y0, 0.5 * roof), (-m.sx / 2 + 0.02 * m.sx, y1, 0.8 * roof), rounded=0.0)
+        m.box("wood", (-m.sx / 2, y0, 0.48 * roof), (-m.sx / 2 + 0.02 * m.sx, y1, 0.5 * roof), rounded=0.0)
+        m.extrude("canvas", [(-m.sx / 2 + 0.02 * m.sx, 0.83 * roof), (-m.sx / 2, 0.78 * roof), (-m.sx / 2, 0.8 * roof),
+                             (-m.sx / 2 + 0.02 * m.sx, 0.85 * roof)], "y", y0, y1)
+        m.box("light", (-m.sx / 2 + 0.005 * m.sx, y0, 0.87 * roof), (-m.sx / 2 + 0.02 * m.sx, y1, 0.95 * roof), rounded=0.0)
+        if roof < m.sz:  # a giant cone on the roof says what it sells
+            r = 0.3 * (m.sz - roof)
+            m.lathe("wood", [(0.0, roof), (r, m.sz - 1.3 * r)], centre=(0, 0.5 * (y0 + y1), 0.0), fraction=0.5)
+            m.ball("flower", (0, 0.5 * (y0 + y1), m.sz - r), (r, r, r), fraction=0.5)
     for y in (-L + 0.14 * m.sy, L - 0.32 * m.sy, L - 0.15 * m.sy):
         for s in (-1, 1):
             _wheel(m, s * m.sx / 2, y, wr, 0.12 * m.sx, s)
