@@ -2174,12 +2174,9 @@ _PARTICLES = {"over", "on", "at", "into", "onto", "across", "up", "down", "to", 
 def _as_person(toks: list[_Tok], k: int) -> bool:
     """Whether the noun ending at ``k`` is a person by what follows it: a person's verb, clothes
     ("fans in fancy dress") or a small thing in hand ("a coach with a stopwatch")."""
-    if _acts_as_person(toks, k):
+    if _acts_as_person(toks, k) or _dressed(toks, k):
         return True
-    after = [t.text for t in toks[k : k + 4]]
-    if after[:1] == ["in"]:
-        return any(w in load_vocabulary().clothing for w in after[1:])
-    if after[:1] == ["with"]:
+    if k < len(toks) and toks[k].text == "with":
         thing = next((m for m in (_match_at(toks, j) for j in range(k + 1, min(k + 4, len(toks)))) if m), None)
         return thing is not None and load_catalogue()[thing[1]].rests == "surface"
     return False

@@ -9,10 +9,10 @@ from dataclasses import dataclass, field, replace
 from scenewright.analysis.parser.contents import _Contents
 from scenewright.analysis.parser.grammar import (
     MAX_COUNT,
-    _DEPICTIONS,
     _CEILING_WORDS,
     _CHAIN_KINDS,
     _COPULAS,
+    _DEPICTIONS,
     _DRIVING_PARTS,
     _ENCLOSURES,
     _FLAT_DEPTH,
@@ -1112,7 +1112,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                         c.head, c.wsub, c.hand, c.hold = None, [], False, False
                         c.main_groups.append(g)
                         # ("a barber with a comb trims the hair of a pilot": the verb's, after the tool)
-                        start = next(j for j in range(last_event_end, m.start) if toks[j].text not in _DETERMINERS)
+                        start = next((j for j in range(last_event_end, m.start) if toks[j].text not in _DETERMINERS), m.start)
                         start = max((mm.end for mm in self.by_start.values() if start <= mm.start < m.start), default=start)
                         if closed and self._object_of_verb(c, start, m.start) and self._living(c.main[-1]):
                             c.deeds.append((list(c.main), g))
