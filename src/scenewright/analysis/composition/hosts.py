@@ -115,9 +115,10 @@ def lengthen(parsed: ParsedScene) -> list[ParsedObject]:
         on, seats = loads.get(o.id, []), seated.get(o.id, [])
         stretchable = o.guessed or (entry is not None and entry.shape in STRETCHABLE)
         if stretchable and (len(on) > 1 or len(seats) > 1):
-            rows = max(1, int(o.size[1] // max((s.size[1] + GAP for s in on), default=o.size[1])))  # a deep table holds rows
-            need = (sum(s.size[0] + GAP for s in on) + GAP) / rows if on else 0.0
-            need = max(need, sum(s.size[0] + SEAT_GAP for s in seats))
+            need = sum(s.size[0] + SEAT_GAP for s in seats)
+            if on:
+                rows = max(1, int(o.size[1] // max(s.size[1] + GAP for s in on)))  # a deep table holds rows
+                need = max(need, (sum(s.size[0] + GAP for s in on) + GAP) / rows)
             width = max(o.size[0], min(need, LONGEST))
             o = replace(o, size=(width, *o.size[1:]))
         elif entry is not None and entry.shape in GROWN and on:

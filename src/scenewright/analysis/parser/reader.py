@@ -918,8 +918,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         starts_with_rel = j in self.rel_at
         # ", sipping coffee from a cup": a clause that opens with a participle is the subject's before
         participial = not c.first and k < ce and toks[k].text.endswith("ing") and k not in self.by_start
-        towing = k in self.rel_at and self.rel_at[k].kind == "towing"  # ("drives a quad bike, towing a trailer")
-        if participial and self.doers and not towing:
+        vehicle_tows = k in self.rel_at and self.rel_at[k].kind == "towing"  # ("drives a quad bike, towing a trailer")
+        if participial and self.doers and not vehicle_tows:
             prev_subject = list(self.doers)  # "a keeper feeds the tiger, standing on a platform": the keeper
         # "the baker, in a white apron, pushes a tray into the oven": a clause that opens with a
         # verb goes on about the living subject before (what it acts on is its object)
