@@ -736,8 +736,9 @@ def test_low_wide_buildings_are_not_office_blocks():
         # place words, of one or two words, set the scene
         ("A busy construction site on a sunny day. A crane stands at the back.", {"crane"}),
         ("Inside a village smithy, an anvil sits on a stump.", {"anvil", "stump"}),
-        # a noun hyphened to "shaped" or a use is a look
-        ("A mushroom-shaped lamp stands on the nightstand.", {"lamp", "nightstand"}),
+        # a noun hyphened to "shaped" names the thing's kind by its look; the thing stays what it is
+        ("A mushroom-shaped lamp stands on the nightstand.", {"mushroom lamp", "nightstand"}),
+        ("A dome-shaped habitat stands on a ridge.", {"dome habitat"}),
     ],
 )
 def test_compound_things_and_places(text, names):

@@ -170,3 +170,53 @@ def test_a_ship_called_her_stays_a_ship():
 def test_clothing_listed_in_the_plural_put_somewhere_is_there():
     text = "The glazier stands at the kiln; her gloves lie on the bench."
     assert counts(text)["glove"] >= 1 and ("glove", "on", "bench") in relations(text)
+
+
+def test_every_person_of_a_list_with_commas_is_one_and_each_is_placed():
+    text = "A tavern. A baker, a cook, a smith and a miller sit at a table."
+    assert counts(text) == Counter({"baker": 1, "cook": 1, "smith": 1, "miller": 1, "table": 1})
+    assert {(who, "near", "table") for who in ("baker", "cook", "smith", "miller")} <= relations(text)
+    # a person renamed between commas is still one ("the keeper, an old woman, feeds ...")
+    assert counts("A zoo. The keeper, an old woman, feeds the tiger.") == Counter({"keeper": 1, "tiger": 1})
+
+
+def test_the_members_a_colon_lists_are_the_plural_before_it():
+    text = ("A camp. Four adventurers sit around a crackling campfire on logs: a knight, an elf archer, "
+            "a dwarf with an axe and a wizard holding a staff.")
+    found = counts(text)
+    assert found["adventurer"] == 0 and all(found[w] == 1 for w in ("knight", "archer", "dwarf", "wizard"))
+    assert found["log"] == 4  # a log each, sat on
+    scene = parse_scene(text)
+    name = {o.id: o.name.split()[-1] for o in scene.objects}
+    sides = {name[r.source]: r.relation for r in scene.relations
+             if name[r.target] == "campfire" and r.relation in ("left of", "right of", "in front of", "behind")}
+    assert set(sides) == {"knight", "archer", "dwarf", "wizard"} and len(set(sides.values())) == 4
+    assert ("axe", "on", "dwarf") in relations(text) and ("staff", "on", "wizard") in relations(text)
+
+
+def test_single_people_around_one_thing_share_its_sides():
+    scene = parse_scene("A camp. A knight, an elf, a dwarf and a wizard sit around a campfire.")
+    sides = [r.relation for r in scene.relations if r.relation in ("left of", "right of", "in front of", "behind")]
+    assert sorted(sides) == sorted(["left of", "right of", "in front of", "behind"])
+
+
+@pytest.mark.parametrize(
+    ("text", "kind"),
+    [
+        ("A cafe. A round table with two chairs stands by the window.", "left of"),  # round it
+        ("A cafe. Three tables stand by the window, each with two chairs.", "in front of"),
+        ("An office. A desk with a chair stands by the window.", "in front of"),  # pulled up to its front
+    ],
+)
+def test_seats_that_come_with_a_table_are_pulled_up_to_it(text, kind):
+    found = relations(text)
+    seat = next(s for s, r, t in found if r == "face to")
+    assert (seat, kind, next(t for s, r, t in found if r == "face to")) in found
+
+
+def test_each_with_a_thing_in_front_of_them_is_the_sitters():
+    text = "A ramen bar. Five customers sit on tall stools along the counter, each with a bowl in front of them."
+    found = relations(text)
+    assert ("bowl", "in front of", "customer") in found and ("bowl", "in front of", "stool") not in found
+    # "each with ... on it" is each of the things
+    assert ("file", "on", "table") in relations("A court. Two lawyers stand at separate tables, each with a stack of files on it.")

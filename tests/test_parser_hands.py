@@ -633,3 +633,27 @@ def test_tools_people_work_with_are_in_hand(text, thing, holder):
 def test_each_after_two_named_together_gives_each_its_own():
     found = rels("A dwarf and an elf sit at a long table, each with a tankard of ale.")
     assert {("tankard_1", "on", "dwarf_1"), ("tankard_2", "on", "elf_1")} <= found, found
+
+
+def test_what_one_plays_or_reads_somewhere_stays_in_hand():
+    found = rels("A square. A bard plays a lute on the steps of the town hall.")
+    assert ("lute_1", "on", "bard_1") in found and ("lute_1", "on", "town_hall_1") not in found
+    assert ("horseshoe_1", "on", "anvil_1") in rels("A forge. A smith hammers a horseshoe on an anvil.")
+
+
+@pytest.mark.parametrize(
+    ("text", "held"),
+    [
+        ("A ward. A doctor writes on a clipboard.", True),  # light enough to lift
+        ("A lounge. A girl types on a laptop.", True),
+        ("A clinic. A nurse types on a computer.", False),  # a monitor stays where it stands
+    ],
+)
+def test_a_thing_one_works_on_is_in_hand_only_when_one_can_lift_it(text, held):
+    found = rels(text)
+    assert any(r == "on" and t.split("_")[0] in ("doctor", "girl", "nurse") for _, r, t in found) is held
+
+
+def test_what_one_works_at_where_a_desk_is_is_on_the_desk():
+    found = rels("A clinic. A parrot perches on the reception desk, where a nurse types on a computer.")
+    assert {("monitor_1", "on", "counter_1"), ("nurse_1", "near", "counter_1")} <= found

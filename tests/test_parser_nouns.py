@@ -1419,3 +1419,27 @@ def test_a_stand_after_a_determiner_is_a_thing_and_a_verb_elsewhere():
     assert objects("A grey sofa faces a TV on a low stand.")[("tv_stand", "stand")] == 1
     assert objects("A microphone on a tall stand faces the sofa.") == Counter({("tool", "microphone"): 1, ("sofa", "sofa"): 1})
     assert objects("Two men stand by the fence.") == Counter({("figure", "man"): 2, ("fence", "fence"): 1})
+
+
+@pytest.mark.parametrize(
+    ("text", "expected", "absent"),
+    [
+        ("A room. A girl plays a tune on a flute.", {"flute"}, {"tune"}),  # what is played is no thing
+        ("A tea room. A folding screen painted with cranes stands behind her.", {"folding screen"}, {"crane"}),
+        ("A room. A bonsai tree sits in an alcove beside a hanging scroll.", {"bonsai tree", "hanging scroll"}, {"alcove"}),
+        ("A hall. A desk stands there, with a hologram of the planet turning above it.", {"planet hologram"}, set()),
+    ],
+)
+def test_pictures_tunes_and_recesses_are_no_things(text, expected, absent):
+    found = names(text)
+    assert expected <= found and not {n for n in found if n.split()[-1] in absent}
+
+
+def test_the_plants_named_by_their_kind_are_the_ones_named_before():
+    scene = parse_scene("A garden. Rose bushes grow along the path. A monk tends the roses with shears.")
+    assert {o.category for o in scene.objects} >= {"bush"} and not any(o.name == "rose" for o in scene.objects)
+
+
+def test_a_thing_that_floats_above_the_floor_is_up_in_the_air():
+    airship = next(o for o in parse_scene("A hangar. A brass airship floats above the floor.").objects)
+    assert airship.rests == "hanging"

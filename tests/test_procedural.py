@@ -698,3 +698,30 @@ def test_a_fireplace_burns_behind_its_surround():
 def test_a_low_stage_is_a_deck_and_a_tall_one_has_a_truss():
     assert "light" not in build_model("structure", (5.0, 3.0, 0.8), "realistic", 1, name="stage").geometry
     assert "light" in build_model("structure", (8.0, 5.0, 4.0), "realistic", 1, name="stage").geometry
+
+
+def _figure_model(name: str, size, seed: int = 0) -> Model:
+    model = Model(size, resolve_style("realistic"), np.random.default_rng(seed), name=name)
+    SHAPES["figure"](model)
+    return model
+
+
+@pytest.mark.parametrize(("name", "size", "people"), [("couple", (1.0, 0.5, 1.75), 2), ("family", (1.4, 0.6, 1.75), 4),
+                                                     ("crowd", (3.0, 2.0, 1.75), 8)])
+def test_a_word_for_several_people_draws_that_many_inside_its_box(name, size, people):
+    one = len(_figure_model("person", (0.55, 0.3, 1.75)).parts["skin"])
+    group = _figure_model(name, size)
+    assert len(group.parts["skin"]) == people * one  # heads, hands and necks: one set each
+    points = np.vstack([p.vertices for parts in group.parts.values() for p in parts])
+    assert np.all(np.abs(points[:, 0]) <= size[0] / 2 + 1e-6) and np.all(np.abs(points[:, 1]) <= size[1] / 2 + 1e-6)
+    assert points[:, 2].max() <= size[2] + 1e-6
+    if name == "family":  # two grown-ups and two children: only the grown-ups' heads are up high
+        high = [p for p in group.parts["skin"] if p.vertices[:, 2].max() > 0.8 * size[2]]
+        alone = [p for p in _figure_model("person", (0.55, 0.3, 1.75)).parts["skin"] if p.vertices[:, 2].max() > 0.8 * 1.75]
+        assert alone and len(high) == 2 * len(alone)
+
+
+def test_people_dress_in_more_than_one_colour():
+    shirts = {_figure_model("person", (0.55, 0.3, 1.75), seed).tints["clothes"] for seed in range(12)}
+    assert len(shirts) >= 3
+    assert "clothes" not in _figure_model("knight", (0.55, 0.3, 1.75)).tints  # armour keeps its metal

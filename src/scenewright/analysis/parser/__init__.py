@@ -210,14 +210,14 @@ def parse_scene(text: str) -> ParsedScene:
     text = " ".join(text.split())
     reader = _Reader(text)
     reader.read()
-    _ids(reader.groups)
+    _ids(reader.groups, reader.listed)
     catalogue = reader.catalogue
     objects = [
         ParsedObject(
             i, g.category, g.name, g.description, g.size, g.index, g.guessed, g.rests,
             reader.anchors.get(g.index), reader.formations.get(g.index), reader.lines.get(g.index),
         )
-        for g in reader.groups
+        for g in reader.groups if g.index not in reader.listed
         for i in g.ids
     ]
     expanded = _acyclic(_expand(reader), [o.id for o in objects])

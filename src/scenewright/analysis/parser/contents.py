@@ -25,6 +25,7 @@ from scenewright.analysis.parser.words import (
     _DETERMINERS,
     _HOLD,
     _NUMBERS,
+    _PICTURE_MARKERS,
     _STOP,
     _WARES_VERBS,
 )
@@ -93,6 +94,8 @@ class _Contents:
         vehicle = load_vocabulary().carries(prev.category, prev.phrase, ("vehicles",))  # ("a trailer stacked with hay bales")
         if marker in _LOADS and (host.shape in _LOAD_HOSTS or host.support or vehicle) and max(self._size(m)) >= _LOAD_SIZE:
             return False  # "a luggage cart piled with suitcases": they stand on the cart
+        if marker in _PICTURE_MARKERS and j - prev.end <= 2:
+            return True
         alive = self._lives(m.category) or m.category == "fish"
         if marker in _CONTENT_MARKERS and j - prev.end <= 2:
             # "a bowl full of apples"; but "a tank full of guppies", "a stand packed with fans" are

@@ -19,16 +19,21 @@ from scenewright.layout.constraints import PlacementGraph
 log = logging.getLogger(__name__)
 
 
-def _ids(groups: list[_Group]) -> None:
-    """``chair_1``, ``chair_2``...; a guessed thing by its own name (``fuel_tank_1``, not ``tank_1``)."""
+def _ids(groups: list[_Group], listed: dict[int, list[int]]) -> None:
+    """``chair_1``, ``chair_2``...; a guessed thing by its own name (``fuel_tank_1``, not ``tank_1``).
+    A plural whose members are listed is theirs: what the text says of it, it says of them."""
     counters: Counter[str] = Counter()
     for g in groups:
+        if g.index in listed:
+            continue
         # (accents folded: "café" is cafe_1, not caf_1)
         plain = unicodedata.normalize("NFKD", g.name.lower()).encode("ascii", "ignore").decode()
         base = (re.sub(r"[^a-z0-9]+", "_", plain).strip("_") or g.category) if g.guessed else g.category
         for _ in range(g.count):
             counters[base] += 1
             g.ids.append(f"{base}_{counters[base]}")
+    for g, members in listed.items():
+        groups[g].ids = [i for m in members for i in groups[m].ids]
 
 
 def _around_sides(n: int, src: _Group, tgt: _Group, corners: bool) -> list[tuple[str, ...]]:
@@ -54,6 +59,29 @@ def _around_sides(n: int, src: _Group, tgt: _Group, corners: bool) -> list[tuple
     if n < 4:
         order = first + short
     return [(order[i % len(order)],) for i in range(n)]
+
+
+def _rings(reader: _Reader) -> dict[tuple[int, int], tuple[int, list[tuple[str, ...]]]]:
+    """Several single things around one thing ("a knight, an elf and a dwarf sit around the fire")
+    share its sides as one group would: (source, target) → where the source's members start in
+    the ring, and the sides of the whole ring."""
+    around: dict[int, list[int]] = {}
+    for kind, s, t, instance in reader.relations:
+        one = len(reader.groups[s].ids) == 1  # (a plural keeps its own ring: "toadstools and crystals around it")
+        if kind == "around" and one and instance is None and len(reader.groups[t].ids) == 1 and s not in around.get(t, []):
+            around.setdefault(t, []).append(s)
+    out: dict[tuple[int, int], tuple[int, list[tuple[str, ...]]]] = {}
+    for t, sources in around.items():
+        if len(sources) < 2:
+            continue
+        tgt, first = reader.groups[t], reader.groups[sources[0]]
+        seat_at = reader.catalogue[first.category].shape in _SEATS and reader.catalogue[tgt.category].support
+        sides = _around_sides(sum(len(reader.groups[s].ids) for s in sources), first, tgt, corners=not seat_at)
+        start = 0
+        for s in sources:
+            out[s, t] = (start, sides)
+            start += len(reader.groups[s].ids)
+    return out
 
 
 def _instance_pairs(src: _Group, tgt: _Group, paired: bool) -> list[tuple[str, str]]:
@@ -128,6 +156,7 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
             out += _between(reader, groups[s], ends[0], ends[1])
         else:
             out += [ParsedRelation(x, "near", ends[0]) for x in groups[s].ids]
+    ring = _rings(reader)
     for kind, s, t, instance in reader.relations:
         src, tgt = groups[s], groups[t]
         paired = (s, t) in reader.pair_each or (t, s) in reader.pair_each
@@ -161,6 +190,11 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
         elif kind == "flank":
             for i, (a, _) in enumerate(pairs):
                 out.append(ParsedRelation(a, ("left of", "right of")[i % 2], tgt.ids[(i // 2) % len(tgt.ids)]))
+        elif kind == "around" and (s, t) in ring:  # "a knight, an elf and a dwarf sit around a fire": one ring
+            start, sides = ring[s, t]
+            for i, a in enumerate(src.ids):
+                out += [ParsedRelation(a, side, tgt.ids[0]) for side in sides[start + i]]
+                out.append(ParsedRelation(a, "face to", tgt.ids[0]))
         elif kind == "around" and len(src.ids) == 1 and not (reader._living(s) or reader._carrier(s, ("vehicles",))):
             # one round ottoman "surrounds" a palm: it is near (a dog that runs around the tree, a
             # toy train that circles a chair, is at one side of it on its way, facing it, as one of

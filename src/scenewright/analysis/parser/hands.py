@@ -54,6 +54,10 @@ _HELD_PARTICIPLES = {"raised", "held", "drawn", "clutched", "gripped", "lifted",
 #: The verbs of the hand tables: verbs, whatever their ending says ("play", "carry").
 _DEED_VERBS = _USE_VERBS | _HAND_VERBS | _HOLD | _LEAD_VERBS | _GIVE_VERBS
 
+#: The most a thing one works "on" in hand takes up, in m³ (a tablet, a flute; not a monitor, a till
+#: or a microscope, which stay where they stand).
+_DEVICE_VOLUME = 0.02
+
 
 class _Hands:
     def _tool_after(self, k: int, ce: int) -> int | None:
@@ -72,6 +76,7 @@ class _Hands:
             end = k + 1 if self._after_verb(k, over=("from", "off", "out", "of"), worn=True) else None
         elif any(p == w for _, p in _HAND_PAIRS) and self._pair_before(k):
             end = k + 2 if w == "out" and k + 1 < ce and self.toks[k + 1].text == "of" else k + 1
+            device = w == "on"  # ("writes on a clipboard" in hand, "types on a computer" at it)
         elif w == "on" and self._device_verb_before(k):
             end, device = k + 1, True  # "films it on a tablet", "plays a tune on a flute"
         else:
@@ -139,11 +144,13 @@ class _Hands:
         return load_vocabulary().is_posture_verb(w) or w in _COPULAS or w in _HANG_VERBS
 
     def _device(self, m: _Mention) -> bool:
-        """A tabletop thing that holds nothing and carries nobody (a tablet, a flute, a notepad): what
-        one does something "on" with it in hand."""
+        """A tabletop thing that holds nothing and carries nobody (a tablet, a flute, a notepad), light
+        enough to lift: what one does something "on" with it in hand ("types on a computer" is done
+        at the desk)."""
         record = m.guess if m.guess is not None else self.catalogue[m.category]
         rests = self.groups[m.group].rests if m.group >= 0 else record.rests
-        return rests == "surface" and not getattr(record, "support", False)
+        x, y, z = self.groups[m.group].size if m.group >= 0 else record.size
+        return rests == "surface" and not getattr(record, "support", False) and x * y * z <= _DEVICE_VOLUME
 
     def _used_at(self, k: int, ce: int) -> bool:
         """Whether the word at ``k`` is a verb a person does with the thing right after it in hand:

@@ -60,6 +60,9 @@ class _Mention:
     modifier: list[str] = field(default_factory=list)
     #: The likeness this phrase names again by its kind ("the T-rex" after "a T-rex skeleton").
     likeness_of: _Mention | None = None
+    #: The ones a counted plural names after a colon ("four adventurers sit by the fire: a knight,
+    #: an elf, a dwarf and a wizard"): its members, each drawn as what it is.
+    members: list[_Mention] = field(default_factory=list)
 
 
 @dataclass
@@ -2474,6 +2477,28 @@ def _likeness_aliases(toks: list[_Tok], ordered: list[_Mention]) -> None:
                 kinds.setdefault(kind, m)
 
 
+def _mark_members(toks: list[_Tok], mentions: list[_Mention]) -> None:
+    """A counted plural whose sentence ends in a colon and a list of as many single things, each
+    opening an item ("Four adventurers sit around the fire: a knight, an elf archer, a dwarf with
+    an axe and a wizard"): the listed ones are its members."""
+    for k, m in enumerate(mentions):
+        if not (m.counted and m.count >= 2 and _is_plural(toks, m)):
+            continue
+        j = m.end
+        while j < len(toks) and toks[j].text not in (":", ".", "!", "?", ";"):
+            j += 1
+        if j >= len(toks) or toks[j].text != ":":
+            continue
+        end = next((i for i in range(j, len(toks)) if toks[i].text in (".", "!", "?", ";")), len(toks))
+        items = [
+            x for x in mentions[k + 1 :] if j < x.start < end and not x.content
+            and toks[x.start - 1 - len(x.adjectives)].text in ("a", "an")
+            and toks[x.start - 2 - len(x.adjectives)].text in (":", ",", "and")
+        ]  # fmt: skip
+        if len(items) == m.count and all(_person_mention(x) == _person_mention(m) for x in items):
+            m.members = items
+
+
 def _mark_appositions(toks: list[_Tok], mentions: list[_Mention]) -> None:
     """Noun phrases that only rename the one before are no objects of their own: a person after
     a person's comma ("the puppeteer, a round-faced woman, kneels"; the other way round after a
@@ -2500,7 +2525,7 @@ def _mark_appositions(toks: list[_Tok], mentions: list[_Mention]) -> None:
             m.category, m.guess = "figure", load_vocabulary().guess_agent(toks[m.start].text, False, human=True)
             later[0].content = True
         elif _person_mention(m) and later and _person_mention(later[0]) and _renames(toks, m.end, later[0].start) and (
-            not _after_preposition(toks, m.start)
+            not _after_preposition(toks, m.start) and not _listed_on(toks, later[0].end)
         ):  # (not "At the foot of a scarecrow, a guard sits": a fronted place phrase)
             # the role is the name ("the keeper, an old woman", "the owner, a bearded man"); a word
             # that only says whose ("its owner, a girl in goggles") gives way to the person
@@ -2514,6 +2539,17 @@ def _mark_appositions(toks: list[_Tok], mentions: list[_Mention]) -> None:
             _renames(toks, m.end, later[0].start) and not _after_preposition(toks, m.start)
         ):  # "their boss, a gorilla in a bowler hat": the role is played by a creature, drawn as one
             m.content = True
+
+
+def _listed_on(toks: list[_Tok], k: int) -> bool:
+    """A list goes on after the phrase ending at ``k`` (past its own "with ..." or "in ..."):
+    "a baker, a cook and a smith" names three people, where "the keeper, an old woman, feeds"
+    names one."""
+    while k < len(toks) and toks[k].text not in (",", ".", "!", "?", ";", ":", "and", "or") and not _verb_word(toks[k].text):
+        k += 1
+    if k < len(toks) and toks[k].text == ",":
+        return k + 1 < len(toks) and toks[k + 1].text in ("a", "an", "and") | _NUMBERS.keys()
+    return k < len(toks) and toks[k].text in ("and", "or")
 
 
 def _person_mention(m: _Mention) -> bool:

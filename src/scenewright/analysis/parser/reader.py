@@ -56,6 +56,7 @@ from scenewright.analysis.parser.nouns import (
     _find_mentions,
     _is_plural,
     _mark_appositions,
+    _mark_members,
     _opens_phrase,
     _participle,
     _post_description,
@@ -79,7 +80,7 @@ from scenewright.analysis.parser.words import (
     _HANG_VERBS,
     _HOLD,
     _HOLD_PAIRS,
-    _HONE_VERBS,
+    _KEPT_IN_HAND,
     _LEAD_VERBS,
     _NUMBERS,
     _ORDINALS,
@@ -314,7 +315,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         start, named = k, k in self.named_at  # a thing named there: its words ("a rearing horse")
         while k < len(self.toks) and k - start < 3 and self.toks[k].text[:1].isalpha() and (
             k in self.named_at if named else self.toks[k].text not in _STOP and not _is_verb(self.toks[k].text)
-        ):  # (else a word nobody listed, "a planet", up to its verb)
+            and not _participle(self.toks[k].text)
+        ):  # (else a word nobody listed, "a planet", up to its verb: "a hologram of the planet turning")
             k += 1
         return [t.text for t in self.toks[start:k]]
 
@@ -454,6 +456,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 found = next(
                     (g.index for g in reversed(self.groups) if g.name.split()[-1].endswith(head)), None
                 )
+            if found is None and not owned and several:  # "tends the roses" after "rose bushes": the bushes
+                found = next(
+                    (g.index for g in reversed(self.groups)
+                     if head in g.name.split()[:-1] and self.catalogue[g.category].shape in _PLANT_SHAPES),
+                    None,
+                )  # fmt: skip
             kinds = vocabulary.hypernyms.get(head, ()) if m.definite and m.end - m.start == 1 else ()
             if found is None and kinds:  # "the ship" after "a flying saucer": that thing again
                 found = next(
@@ -513,6 +521,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.aboard: set[int] = set()
         self._mark_contents(mentions)
         _mark_appositions(toks, mentions)
+        _mark_members(toks, mentions)
         self.size_of: dict[int, list[tuple[str, float]]] = {}
         for s, e, dim, value in _read_sizes(toks):
             owner = self._size_owner(mentions, s, e)
@@ -625,6 +634,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.relations[:0] = held  # before any other support the list gave them
         for stand, things in self.one_each.items():
             self.groups[stand].count = self.groups[things].count
+        #: A plural group → the groups of the members a colon lists (:func:`_mark_members`).
+        self.listed = {
+            m.group: [x.group for x in m.members] for m in mentions
+            if m.members and m.group >= 0 and all(x.group >= 0 for x in m.members)
+        }  # fmt: skip
         self._aboard_their_vehicle(mentions)
         self._left_by_owner(mentions)
         self._one_per_holder()
@@ -728,6 +742,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 self._relate("on", subjects, place)
         elif not placed:
             self._relate("near", subjects, place)
+        elif set(placed) == {"near"} and people and self.catalogue[self.groups[place].category].support:
+            # "the reception desk, where a nurse types on a computer": she is at the desk, and what
+            # she works at is on it
+            worked = [r[2] for r in self.relations[since:] if r[1] in subjects and not self._living(r[2])]
+            stands = {r[1] for r in self.relations if r[0] in ("on", "above")}
+            loose = [g for g in worked if g not in stands and self.groups[g].rests == "surface"]
+            if loose:
+                self._relate("on", loose, place)
+                self._relate("near", subjects, place)
 
     def _on_wall_after(self, end: int) -> bool:
         """"... on the wall", "mounted on the back wall", "hangs on a wall" right after a noun."""
@@ -859,6 +882,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             )
             if goes_on or (places and out and joined and not closed and self._is_list(*out[-1], strict=True)):
                 out[-1] = (out[-1][0], ce)
+                # "a baker, a cook, a smith and a miller sit at a table": every item before the last
+                # comma's belongs to the same list
+                while not goes_on and len(out) > 1 and self._is_list(*out[-2], strict=True) and all(
+                    t.text == "," for t in self.toks[out[-2][1] : out[-1][0]]
+                ):
+                    out[-2:] = [(out[-2][0], out[-1][1])]
                 continue
             out.append((cs, ce))
         return out
@@ -980,7 +1009,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 people = [
                     g for g in [*c.subjects, *prev_subject, *self.topic] if self.groups[g].count > 1 and self._living(g)
                 ]
-                if (holding or each_deed) and people:
+                # ("five customers sit on stools, each with a bowl in front of them": the sitters; "at
+                # tables, each with a stack of files on it": the tables)
+                own = bool(each_part and plural and people) and people[0] in (c.subjects or c.main_groups[:1] or prev_subject[:1])
+                said = {t.text for t in toks[k:ce]}
+                own = own and not self._living(plural[-1]) and bool(said & {"them", "their", "him", "her", "his"}) and not said & {"it", "its"}
+                if (holding or each_deed or own) and people:
                     plural = people[:1]
                 if plural:
                     c.each, c.each_deed, c.each_unit = plural[-1], each_deed and bool(people), unit
@@ -1026,8 +1060,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # ("three grey bears sit": a noun the reader found, not the verb "bears")
             if w == "with" or (w in _HOLD and k not in self.by_start) or (w, nxt) in _HOLD_PAIRS or owns or hand:
                 if w in _HOLD and w.endswith("ing") and c.head is not None and c.wsub:
-                    # "with a small table beside them holding a teapot": the with-thing holds it
-                    c.head, c.wsub, c.hold, c.expect_new = list(c.wsub[-1:]), [], True, False
+                    # "with a small table beside them holding a teapot": the with-thing holds it (what
+                    # came with the head before it stays the head's: "a dwarf with an axe and a wizard holding a staff")
+                    holder, c.wsub = c.wsub[-1:], c.wsub[:-1]
+                    self._close_with(c)
+                    c.head, c.wsub, c.hold, c.expect_new = holder, [], True, False
                     k += 1
                     last_event_end = k
                     continue
@@ -1316,6 +1353,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     self._relate("on", [g], self.worked_at[h])
                     c.produced = True
                     continue
+                if not (c.hold or placed) and self.catalogue[self.groups[g].category].shape in _SEATS and (
+                    self.catalogue[self.groups[h].category].support and not self._living(h)
+                ):  # "a round table with two chairs", "three tables, each with four stools": pulled up to it
+                    # (to a desk's or a counter's front: one works or is served on that side)
+                    self._relate("at seat" if self.groups[h].category in ("desk", "counter") else "around", [g], h)
+                    c.produced = True
+                    continue
                 steadied = c.hold and self._steadied(g)
                 if (c.hold or held) and self._person_at(h) and not self._living(g) and (not self._carriable(g, h) or steadied):
                     # ("a woman grips the railing", "a boy holds the wardrobe": too big to carry, by it;
@@ -1557,7 +1601,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             else:
                 # one works on a grindstone or an anvil standing at it; what is worked there lies on it
                 worked_on = in_hand and kind == "on" and isinstance(target, list) and not self._carrier(target[0], _RIDDEN)
-                if worked_on and not self._verb_before(rel.start, lambda w: w in _HONE_VERBS):
+                if worked_on and not self._verb_before(rel.start, lambda w: w in _KEPT_IN_HAND):
                     self._set_down(c, target[0])
                 self._close_with(c)
                 srcs = list(c.head)
@@ -1617,7 +1661,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
     def _set_down(self, c: _Clause, host: int) -> None:
         """"A smith strikes a horseshoe on the anvil", "a clerk stamps a letter on the counter": the
         small lifeless things the clause's verb works lie on the host, so :meth:`_close_with` puts
-        them in no hand (what is sharpened on a stone stays in hand: :data:`_HONE_VERBS`)."""
+        them in no hand (what is sharpened on a stone or played there stays in hand: :data:`_KEPT_IN_HAND`)."""
         for g in c.wsub:
             if not self._living(g) and max(self.groups[g].size) <= _HANDHELD_SIZE and g not in c.wsub_related:
                 self._relate("on", [g], host)
@@ -1980,6 +2024,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             for g in srcs:  # "three paper lanterns hang from the ceiling over the counter": hung, not set down
                 if self.groups[g].rests != "hanging" and not self._living(g):  # also "a birdcage hangs from the ceiling"
                     self.groups[g].rests = "hanging"
+        if kind in ("above", "over") and target is None and self._on_floor(rel.end):
+            for g in srcs:  # "an airship floats above the floor": up in the air, over what stands below
+                if not self._living(g):
+                    self.groups[g].rests = "hanging"
         if kind == "on" and target is None and self._on_floor(rel.end):
             for g in srcs:  # "a helmet sits on the floor beneath each peg": on no table or desk
                 if self.groups[g].rests == "surface" and not self._living(g):
@@ -2048,6 +2096,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 self.groups[g].count = p.parts_each
         if kind == "on" and p.body is None and all(self._person_at(g) for g in [*srcs, *targets]):
             kind = "near"  # "a nurse checks on a patient": by another person, never on one
+        if kind in ("on", "on top") and p.body is None:
+            srcs = self._carried_in(srcs)
         # "lanterns hang from the branches of an oak": up in its spread crown, by no side of it
         crown = kind == "hanging from" and any(
             "tree" in load_vocabulary().part_owners.get(singular(w.text), ()) for w in toks[rel.end : end]
@@ -2085,11 +2135,22 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         c.expect_new = True
         return end
 
+    def _carried_in(self, srcs: list[int]) -> list[int]:
+        """What goes on a thing when living things already in a container are put there: the
+        container ("a parrot in a cage perches on the desk": the cage is on the desk)."""
+        holders = [next((t for k, s, t, _ in self.relations if s == g and k in ("in", "on")), None) for g in srcs]
+        if all(h is not None and self._living(g) and self._carrier(h, ("containers",)) for g, h in zip(srcs, holders)):
+            return list(dict.fromkeys(holders))
+        return srcs
+
     def _seats_each(self, m: _Mention) -> bool:
         """Seats or ground covers named in the plural with no count of their own, new here ("on
         padded stools", "stretch on mats"): as many as sit or lie on them."""
         cover = m.group >= 0 and self.catalogue[self.groups[m.group].category].shape == "rug"
-        return self._uncounted_new(m) and (self._carrier(m.group, ("seats",)) or cover)
+        # ("sit around the fire on logs": any low lifeless thing sat on is a seat)
+        low = m.group >= 0 and not self._living(m.group) and self.groups[m.group].size[2] <= _MAKESHIFT_HEIGHT
+        sat = low and m.group not in self.formations and self._verb_before(m.start, self._posture)
+        return self._uncounted_new(m) and (self._carrier(m.group, ("seats",)) or cover or sat)
 
     def _planted(self, g: int) -> bool:
         """Several plants: each grows in a pot, tub or planter of its own."""
@@ -2133,6 +2194,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return False
         if not all(self._living(g) for g in rider) or not self._verb_before(p.rel.start, self._posture):
             return False
+        if c.last_kind == "around":  # "sit around a campfire on logs": a ring is not sat on
+            return True
         place, seat = self.groups[c.last_target[0]].size, self.groups[p.target[0]].size
         return place[0] * place[1] > seat[0] * seat[1]
 

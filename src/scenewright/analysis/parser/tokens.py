@@ -60,6 +60,8 @@ def _tokenise(text: str) -> list[_Tok]:
         joined = hyphen and m.start() == prev_end
         hyphen = False
         prev_end = m.end()
+        if joined and s.lower() == "shaped" and len(toks[-1].text) > 1 and toks[-1].text.isalpha():
+            continue  # "a dome-shaped habitat" is a dome habitat ("an L-shaped sofa" keeps its letter)
         toks.append(_Tok(s.lower().replace("’", "'"), s, joined, quoting and s != '"'))
         if s in (".", "!", "?"):
             quoting = False  # a quotation nobody closed ends with its sentence

@@ -78,6 +78,10 @@ _CONTENT_MARKERS = {("full", "of"), ("filled", "with"), ("packed", "with"), ("ov
                     ("stocked", "with"), ("lined", "with"), ("piled", "with"), ("overflow", "with"),
                     ("overflows", "with"), ("brims", "with"), ("brimming", "with"), ("bulges", "with"),
                     ("bulging", "with"), ("crowded", "with")}  # fmt: skip
+#: What a surface shows, not a thing that stands there ("a folding screen painted with cranes", "a
+#: cushion embroidered with roses").
+_PICTURE_MARKERS = {(verb, "with") for verb in ("painted", "embroidered", "printed", "stencilled", "stenciled",
+                                                "patterned", "etched", "engraved", "tattooed", "inlaid")}  # fmt: skip
 #: Verbs of trade: the bare plural after them is what is sold or served, not things of the layout
 #: ("a stall selling pies", "a cart serving hot drinks"; but "a vendor sells two balloons").
 _WARES_VERBS = {"sell", "sells", "selling", "sold", "serve", "serves", "serving", "served", "offer", "offers",
@@ -104,9 +108,15 @@ _FINITE = {"is", "are", "was", "were", "has", "have", "had", "stand", "sit", "li
 _ADVERBS = {"just", "right", "directly", "all", "both", "neatly", "slightly", "also", "then", "only", "far", "well"}
 _HOLD = {"holds", "hold", "holding", "carries", "carry", "carrying", "supports", "support", "supporting",
          "bears", "bearing", "displays", "displaying"}  # fmt: skip
-#: Verbs of holding a thing against a stone or a wheel: it stays in hand ("sharpen their spears on a grindstone").
-_HONE_VERBS = {"sharpen", "sharpens", "sharpening", "hone", "hones", "honing", "whet", "whets", "whetting",
-               "grind", "grinds", "grinding", "strop", "strops", "stropping"}  # fmt: skip
+#: Verbs whose object stays in hand wherever they are done: held against a stone or a wheel
+#: ("sharpen their spears on a grindstone"), or played, read, eaten there ("plays a lute on the
+#: steps of the town hall": the bard is there, the lute in hand).
+_KEPT_IN_HAND = {"sharpen", "sharpens", "sharpening", "hone", "hones", "honing", "whet", "whets", "whetting",
+                 "grind", "grinds", "grinding", "strop", "strops", "stropping",
+                 "play", "plays", "playing", "strum", "strums", "strumming", "read", "reads", "reading",
+                 "eat", "eats", "eating", "drink", "drinks", "drinking", "sip", "sips", "sipping",
+                 "blow", "blows", "blowing", "tune", "tunes", "tuning", "knit", "knits", "knitting",
+                 "hug", "hugs", "hugging", "cradle", "cradles", "cradling", "cuddle", "cuddles", "cuddling"}  # fmt: skip
 _HOLD_PAIRS = {("loaded", "with"), ("laden", "with"), ("topped", "with"), ("set", "with"), ("laid", "with"), ("decorated", "with"),
                ("piled", "with"), ("stacked", "with"), ("heaped", "with"), ("covered", "in"),
                ("covered", "with"), ("packed", "with"), ("lined", "with"), ("stocked", "with"),

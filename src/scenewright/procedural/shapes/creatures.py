@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from scenewright.analysis.composition.posture import OWN_SEAT, SIT_HEIGHT, STOOL_HEIGHT, posture_in
+from scenewright.core.colours import COLOURS
 from scenewright.procedural import parts as P
 from scenewright.procedural.builder import Model
 
@@ -357,9 +358,27 @@ def bird(m: Model) -> None:
            fraction=0.5)
 
 
+#: How many people a word for a group of them is drawn as ("a couple" two, "a crowd" eight).
+_GROUP_SIZES = {"couple": 2, "trio": 3, "quartet": 4, "family": 4, "band": 4, "crew": 4, "team": 5, "group": 4,
+                "party": 4, "gang": 4, "troupe": 5, "ensemble": 5, "entourage": 4, "choir": 8, "crowd": 8,
+                "mob": 8, "audience": 10, "class": 10, "orchestra": 10, "congregation": 10}  # fmt: skip
+#: Colours of shirts, coats and robes, and of trousers, one each per person.
+_SHIRTS = ("navy", "blue", "maroon", "green", "olive", "mustard", "teal", "grey", "white", "burgundy", "rust", "khaki")
+_TROUSERS = ("charcoal", "navy", "brown", "black", "khaki", "grey")
+#: The width one person of a group takes in its row (m).
+_PERSON_WIDTH = 0.45
+#: A child's height in a family, as a share of the adults'.
+_CHILD_HEIGHT = 0.62
+
+
 def figure(m: Model) -> None:
     """A person facing −Y, standing, or sitting or lying when the description says so (the
-    composition writes the pose the text gives, ``analysis/composition/posture.py``)."""
+    composition writes the pose the text gives, ``analysis/composition/posture.py``); a word
+    for several people ("a family", "a crowd") is that many of them."""
+    count = next((n for word, n in _GROUP_SIZES.items() if m.named(word)), 0)
+    if count:
+        _group(m, count)
+        return
     posture = None if m.named("scarecrow", "mannequin", "dress form", "dummy") else posture_in(m.text)
     if posture is None:
         _standing(m)
@@ -385,6 +404,30 @@ def figure(m: Model) -> None:
             foot = (0.9 * r * np.cos(a), seat_y + 0.9 * r * np.sin(a), 0.0)
             m.cylinder("dark_wood", foot, (0.6 * r * np.cos(a), seat_y + 0.6 * r * np.sin(a), stool - 0.04), 0.02, 0.02,
                        fraction=0.3)
+
+
+def _group(m: Model, count: int) -> None:
+    """Several people that are one object: side by side in as few rows as its footprint takes,
+    in the pose its description gives, a family's children smaller than its parents."""
+    per_row = max(1, min(count, int(m.sx // _PERSON_WIDTH)))
+    rows = -(-count // per_row)
+    w, d = m.sx / per_row, m.sy / rows
+    for k in range(count):
+        row, col = divmod(k, per_row)
+        child = m.named("family") and k >= 2
+        one = Model((min(0.9 * w, 0.55), min(0.9 * d, 0.35), m.sz * (_CHILD_HEIGHT if child else m.vary(0.92, 1.0))),
+                    m.style, m.rng, main=m.main, name="person")
+        one.text = m.text
+        figure(one)
+        for role, tint in one.tints.items():
+            m.tints.setdefault(role, tint)
+        # (the last row, if short, keeps to the middle)
+        in_row = min(per_row, count - row * per_row)
+        offset = ((col - (in_row - 1) / 2) * w, -m.sy / 2 + (row + 0.5) * d, 0.0)
+        for role, parts in one.parts.items():
+            for part in parts:
+                m.add(role, P.transform(part, P.affine(np.eye(3), offset)))
+        m.main = one.main
 
 
 #: A standing person's depth as a share of their height (the catalogue's figure: 0.3 of 1.75 m).
@@ -451,6 +494,11 @@ def _standing(m: Model) -> None:
     astronaut = m.named("astronaut", "cosmonaut", "spaceman")
     robe = m.named("wizard", "witch", "monk", "priest", "sorcerer", "mage")
     chef = m.named("chef", "cook", "baker")
+    if not (knight or astronaut or chef or alien):
+        # one of the colours people dress in, seeded by the object, so a crowd is not all in blue
+        # (a colour the text names still wins: it is described)
+        m.tints.setdefault("clothes", COLOURS[_SHIRTS[int(m.rng.integers(len(_SHIRTS)))]])
+        m.tints.setdefault("trousers", COLOURS[_TROUSERS[int(m.rng.integers(len(_TROUSERS)))]])
     skin = "alien" if alien else "skin"
     clothes = "metal" if knight else "fur_white" if astronaut or chef else skin if alien else "clothes"
     trousers = "metal" if knight else "fur_white" if astronaut else skin if alien else "trousers"
