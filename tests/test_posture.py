@@ -57,7 +57,7 @@ def test_composition_gives_the_pose_its_box_and_word():
     assert woman.size.z < 0.7 * standing.size[2]
 
 
-@pytest.mark.parametrize("posture", ["sitting", "lying"])
+@pytest.mark.parametrize("posture", ["sitting", "lying", "kneeling"])
 def test_figure_mesh_fills_the_posed_box(posture):
     """Folded from a standing person, the mesh's own extents are the posed box's shape, so
     fitting it to the box does not stretch the person."""
@@ -70,6 +70,10 @@ def test_figure_mesh_fills_the_posed_box(posture):
     if posture == "sitting":  # the seat is the lowest part, under the body, not the feet in front
         low = verts[verts[:, 2] < verts[:, 2].min() + 0.02]
         assert low[:, 1].max() > verts[:, 1].min() + 0.3 * extent[1]
+    if posture == "kneeling":  # the shins lie along the floor behind the knees
+        shins = np.concatenate([p.vertices for p in model.parts["trousers"]])
+        low = shins[shins[:, 2] < 0.1 * size[2]]
+        assert len(low) and low[:, 1].max() - low[:, 1].min() > 0.15 * size[2]
 
 
 @pytest.mark.parametrize(
@@ -97,3 +101,11 @@ def test_one_who_sits_with_no_seat_named_sits_on_a_stool_of_their_own(text, name
         SHAPES["figure"](model)
         body = np.concatenate([p.vertices for role, parts in model.parts.items() if role != "dark_wood" for p in parts])
         assert body[:, 2].min() > 0.4  # the body sits on the stool, nothing of it on the floor
+
+
+def test_one_who_kneels_kneels_on_whatever_carries_them():
+    parsed = parse_scene("A tea room. A woman in a kimono kneels on a tatami mat before a low table.")
+    woman = next(o for o in parsed.objects if o.name == "woman")
+    assert posture_of(parsed, woman) == "kneeling"
+    w, d, h = posed_size((0.5, 0.3, 1.75), "kneeling")
+    assert h < 1.75 and d > 0.3  # lower than standing, the shins back along the floor

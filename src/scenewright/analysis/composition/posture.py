@@ -1,4 +1,4 @@
-"""How a person rests: standing, sitting or lying, from what the text says of them.
+"""How a person rests: standing, kneeling, sitting or lying, from what the text says of them.
 
 The reader records no posture, so it is read here from two things the parse does hold: the
 host a person is put ``on`` (a seat or a cushion → sitting; a bed, a rug, a blanket → lying)
@@ -17,7 +17,9 @@ from scenewright.analysis.composition import roles
 from scenewright.analysis.parser import ParsedObject, ParsedScene
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 
-POSTURES = ("sitting", "lying")
+#: Kneeling first: one who kneels on a cushion or a mat kneels there (the reader counts the
+#: verbs of kneeling among those of sitting, for what carries them).
+POSTURES = ("kneeling", "sitting", "lying")
 #: Words of a description that pose its figure (``postures`` in ``data/vocabulary.json``, which
 #: the reader shares); the first of each list is the one written.
 POSTURE_WORDS: dict[str, tuple[str, ...]] = {p: load_vocabulary().postures[p] for p in POSTURES}
@@ -28,6 +30,9 @@ SITTING_HOSTS = roles.SEATS | frozenset({"cushion", "swing", "log", "rock", "sta
 #: seat at the box's bottom), as the figure generator folds a standing person.
 SIT_DEPTH = 0.52
 SIT_HEIGHT = 0.56
+#: The same for kneeling upright, the shins back along the floor.
+KNEEL_DEPTH = 0.31
+KNEEL_HEIGHT = 0.78
 _FIGURES = frozenset({"figure"})
 #: What a person who sits with no seat named sits on, written into their description, and its
 #: height (m): "two sailors sit at the sonar console" sit at it, not on the floor before it.
@@ -72,23 +77,25 @@ def _clause_of(parsed: ParsedScene, obj: ParsedObject) -> str:
 
 
 def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
-    """Sitting, lying or ``None`` for a person of the parse; ``None`` for anything else.
+    """Kneeling, sitting, lying or ``None`` for a person of the parse; ``None`` for anything else.
 
-    The host decides first (a person on a bed lies, on a chair sits, whatever the verb);
-    with no host, or a host of neither kind, the sentence's verbs do ("a boy sits at the
-    kotatsu"); "asleep"/"sleeps" alone is lying unless the host is a seat ("dozes in the
-    armchair" sits). On a vehicle or a ridden animal a person sits unless the sentence has
+    Kneeling is said in so many words and holds on any host. Else the host decides first (a
+    person on a bed lies, on a chair sits, whatever the verb); with no host, or a host of
+    neither kind, the sentence's verbs do ("a boy sits at the kotatsu"); "asleep"/"sleeps"
+    alone is lying unless the host is a seat ("dozes in the armchair" sits). On a vehicle or a ridden animal a person sits unless the sentence has
     them stand ("standing on its bonnet").
     """
     if obj.category not in _FIGURES:
         return None
+    clause = _clause_of(parsed, obj)
+    if _mentions(clause, POSTURE_WORDS["kneeling"]) or _mentions(obj.description.lower(), POSTURE_WORDS["kneeling"]):
+        return "kneeling"  # on whatever carries them ("kneels on a tatami mat")
     by_id = {o.id: o for o in parsed.objects}
     hosts = [by_id[r.target].category for r in parsed.relations if r.source == obj.id and r.relation == "on" and r.target in by_id]
     if any(h in LYING_HOSTS for h in hosts):
         return "lying"
     if any(h in SITTING_HOSTS for h in hosts):
         return "sitting"
-    clause = _clause_of(parsed, obj)
     vocabulary = load_vocabulary()
     if any(vocabulary.carries(h, h, ("vehicles", "mounts")) for h in hosts):
         # riders sit ("a soldier on horseback", "children in the bus") unless they stand on it
@@ -115,6 +122,8 @@ def posed_size(size: tuple[float, float, float], posture: str | None, stool: boo
     w, d, h = size
     if posture == "sitting":
         return (w, round(SIT_DEPTH * h, 3), round(SIT_HEIGHT * h + (STOOL_HEIGHT if stool else 0.0), 3))
+    if posture == "kneeling":
+        return (w, round(KNEEL_DEPTH * h, 3), round(KNEEL_HEIGHT * h, 3))
     if posture == "lying":  # on the back along the depth, head to the back
         return (w, h, d)
     return size

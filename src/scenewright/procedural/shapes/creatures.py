@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from scenewright.analysis.composition.posture import OWN_SEAT, SIT_HEIGHT, STOOL_HEIGHT, posture_in
+from scenewright.analysis.composition.posture import KNEEL_HEIGHT, OWN_SEAT, SIT_HEIGHT, STOOL_HEIGHT, posture_in
 from scenewright.core.colours import COLOURS
 from scenewright.procedural import parts as P
 from scenewright.procedural.builder import Model
@@ -387,11 +387,14 @@ def figure(m: Model) -> None:
     # stool of its own when the text named no seat).
     stool = STOOL_HEIGHT if posture == "sitting" and OWN_SEAT in m.text.lower() and m.sz > 2 * STOOL_HEIGHT else 0.0
     w, d, h = m.sx, m.sy, m.sz - stool
-    standing = (w, _DEPTH * h / SIT_HEIGHT, h / SIT_HEIGHT) if posture == "sitting" else (w, h, d)
+    standing = {
+        "sitting": (w, _DEPTH * h / SIT_HEIGHT, h / SIT_HEIGHT), "kneeling": (w, _DEPTH * h / KNEEL_HEIGHT, h / KNEEL_HEIGHT),
+    }.get(posture, (w, h, d))
     inner = Model(standing, m.style, m.rng, main=m.main, name=m.name)
     inner.text = m.text
     _standing(inner)
-    fold = _sit if posture == "sitting" else _lie
+    m.tints.update(inner.tints)
+    fold = {"sitting": _sit, "kneeling": _kneel}.get(posture, _lie)
     lift = P.affine(np.eye(3), (0.0, 0.0, stool))
     for role, parts in inner.parts.items():
         for part in parts:
@@ -430,6 +433,8 @@ def _group(m: Model, count: int) -> None:
         m.main = one.main
 
 
+#: A standing person's knee height as a share of their height: where the poses bend the leg.
+_KNEE = 0.25
 #: A standing person's depth as a share of their height (the catalogue's figure: 0.3 of 1.75 m).
 _DEPTH = 0.17
 
@@ -439,7 +444,7 @@ def _sit(part: P.Part, m: Model) -> P.Part:
     (the seat at the bottom of the box), below them the thigh turns forward and up to the knee
     and the shin down to the floor in front, each leg section turning with its bone."""
     H = m.sz
-    hip, knee = 0.48 * H, 0.25 * H
+    hip, knee = 0.48 * H, _KNEE * H
     thigh, shin = hip - knee, knee
     rise = np.radians(30.0)
     knee_at = np.array([0.0, -thigh * np.cos(rise), thigh * np.sin(rise)])
@@ -469,6 +474,23 @@ def _sit(part: P.Part, m: Model) -> P.Part:
     back = 0.35 * m.sy
     v[~legs, 1] += back
     v[legs, 1] += back
+    return P.Part(v, part.faces, n)
+
+
+def _kneel(part: P.Part, m: Model) -> P.Part:
+    """Fold a standing part into kneeling upright: the shins turn back to lie along the floor
+    behind the knees (the feet with them, soles up), and all above the knees comes down by
+    the shins' length; the box's middle stays the body's."""
+    H = m.sz
+    knee, shin_r = _KNEE * H, 0.045 * H
+    v, n = part.vertices.copy(), part.normals.copy()
+    shins = v[:, 2] < knee
+    # a quarter turn about x takes the leg's −z (down the shin) to +y (back): (x, y, z) → (x, knee − z, y)
+    t = knee - v[shins, 2]
+    v[shins] = np.stack([v[shins, 0], t, np.abs(v[shins, 1]) + shin_r], axis=1) if shins.any() else v[shins]
+    n[shins] = np.stack([n[shins, 0], -n[shins, 2], n[shins, 1]], axis=1) if shins.any() else n[shins]
+    v[~shins, 2] += 2 * shin_r - knee
+    v[:, 1] -= 0.5 * knee
     return P.Part(v, part.faces, n)
 
 
@@ -513,8 +535,9 @@ def _standing(m: Model) -> None:
     # Legs and feet (under a robe only the feet show).
     for s in (-1, 1):
         x = s * 0.3 * W
-        if not robe:
-            m.cylinder(trousers, (x, 0, hip_z), (x, 0, 0.05 * H), leg_r, 0.8 * leg_r, fraction=0.5)
+        if not robe:  # thigh and shin apart, so a pose bends the leg at the knee
+            m.cylinder(trousers, (x, 0, hip_z), (x, 0, _KNEE * H), leg_r, 0.9 * leg_r, fraction=0.5)
+            m.cylinder(trousers, (x, 0, _KNEE * H), (x, 0, 0.05 * H), 0.9 * leg_r, 0.8 * leg_r, fraction=0.5)
         m.box("dark_plastic" if not (astronaut or knight) else trousers, (x - 0.9 * leg_r, -0.95 * D, 0),
               (x + 0.9 * leg_r, 0.3 * D, 0.05 * H), rounded=0.3 * leg_r)
     if robe:
