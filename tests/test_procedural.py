@@ -441,7 +441,7 @@ VARIANTS = [
     ("boat", "rowing boat", "dark_wood"), ("boat", "viking longship", "canvas"), ("vehicle", "jet plane", "plastic"),
     ("vehicle", "twin-propeller airplane", "plastic"), ("vehicle", "flying saucer", "dark_metal"),
     ("bookshelf", "shelf bookshelf", "ceramic"), ("cart", "luggage cart", "rubber"), ("vehicle", "baggage trolley", "rubber"),
-    ("panel", "cricket scoreboard", "lacquer"), ("panel", "painted backdrop", "leaf"), ("tent", "forecourt canopy", "light"),
+    ("panel", "cricket scoreboard", "lacquer"), ("panel", "painted backdrop", "leaf"), ("panel", "folding screen", "paper"), ("tent", "forecourt canopy", "light"),
     ("cart", "wooden sledge", "dark_wood"), ("cart", "sleigh", "fabric"), ("cart", "wheelbarrow", "rubber"),
     ("machine", "weighing scales", "brass"), ("vehicle", "touring caravan", "canvas_alt"),
     ("generic", "dragon egg", "scales"), ("container", "nest", "straw"),

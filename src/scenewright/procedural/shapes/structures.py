@@ -1,9 +1,11 @@
 """Large open structures, upright panels and containers the catalogue does not know one by
 one: a windsock, a satellite or radar dish, a ferris wheel, crane, carousel, platform, stage, scaffold, grandstand, siege engine or skate
-ramp; a screen, banner or notice board; a box, trunk, suitcase, backpack, sack, basket, cool
+ramp; a screen, folding screen, banner or notice board; a box, trunk, suitcase, backpack, sack, basket, cool
 box, cage, pen or hatbox. Fronts face −Y."""
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 
@@ -431,6 +433,9 @@ def panel(m: Model) -> None:
     if m.sy <= _SHEET or m.sz < min(m.sx, m.sy):  # (lying: "a map on the table", "a striped awning")
         _sheet(m)
         return
+    if m.named("folding screen", "room divider", "divider", "privacy screen", "shoji screen", "shoji"):
+        _folding_screen(m)
+        return
     board_lo = (0.35 if m.named("notice board", "bulletin board", "noticeboard", "corkboard", "cork board") else 0.25) * H
     if m.named("screen", "display", "monitor", "video wall", "projection screen", "jumbotron", "hologram", "holo"):
         m.main = "dark_plastic"
@@ -464,6 +469,31 @@ def panel(m: Model) -> None:
     for x in (-0.8 * W, 0.8 * W):
         m.box("dark_wood" if notice else "dark_metal", (x - leg, -0.3 * t, 0), (x + leg, 0.5 * t + leg, board_lo + 0.1 * (H - board_lo)))
         m.box("dark_wood" if notice else "dark_metal", (x - 1.5 * leg, -D, 0), (x + 1.5 * leg, D, 0.03 * H))
+
+
+def _folding_screen(m: Model) -> None:
+    """A folding screen: four leaves of paper in dark wooden rails, hinged on posts and standing
+    in a zigzag across the footprint (a painted one shows its colours on the paper)."""
+    m.main = "paper"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    leaves, t, rail = 4, 0.012, 0.05 * H
+    joints = [(-W + k * m.sx / leaves, 0.8 * D * (1 if k % 2 else -1)) for k in range(leaves + 1)]
+    for (x0, y0), (x1, y1) in zip(joints, joints[1:]):
+        length = math.hypot(x1 - x0, y1 - y0)
+        ux, uy = (x1 - x0) / length, (y1 - y0) / length
+        nx, ny = -uy, ux  # the leaf's left, seen from above
+
+        def plan(w: float, end: float, x0=x0, y0=y0, x1=x1, y1=y1, ux=ux, uy=uy, nx=nx, ny=ny) -> list[tuple[float, float]]:
+            """The leaf's outline ``w`` either side of its line, ``end`` short of each post's middle."""
+            a, b = (x0 + ux * end, y0 + uy * end), (x1 - ux * end, y1 - uy * end)
+            return [(a[0] - nx * w, a[1] - ny * w), (b[0] - nx * w, b[1] - ny * w), (b[0] + nx * w, b[1] + ny * w), (a[0] + nx * w, a[1] + ny * w)]
+
+        # (the paper's edges inside the rails and the posts, so no face of one lies on another's)
+        m.extrude("paper", plan(t / 2, 0.03), "z", 0.8 * rail, H - 0.8 * rail)
+        for lo, hi in ((0.0, rail), (H - rail, H)):
+            m.extrude("dark_wood", plan(t, 0.024), "z", lo, hi)
+    for x, y in joints:
+        m.post("dark_wood", x, y, 0.0, H, 0.026, fraction=0.3)
 
 
 def _scoreboard(m: Model) -> None:
