@@ -141,3 +141,13 @@ def test_hung_things_the_text_puts_on_the_walls_hang_above_nothing_in_particular
     parsed = parse_scene("Dozens of clocks cover the walls, and a grandfather clock stands in the corner.")
     assert not any(r.relation == "above" for r in parsed.relations)
     assert any(r.relation == "above" and r.inferred for r in parse_scene("A mirror hangs there, and a dresser stands by the bed.").relations)
+
+
+def test_a_lamp_beside_a_seat_with_no_table_of_its_own_stands_on_the_floor():
+    scene = parse_scene("A bookshop. A counter stands by the door. A reading lamp stands beside a leather armchair in the corner.")
+    lamp = next(o for o in scene.objects if o.name == "reading lamp")
+    assert lamp.category == "floor_lamp" and lamp.rests == "ground"
+    assert not any(r.source == lamp.id and r.relation == "on" for r in scene.relations)
+    # with a nightstand there, the lamp is a table lamp on it
+    bedroom = parse_scene("A bedroom. A lamp stands beside the bed, and a nightstand is by the door.")
+    assert next(o for o in bedroom.objects if o.name == "lamp").category == "table_lamp"

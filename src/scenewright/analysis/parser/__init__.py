@@ -194,7 +194,7 @@ from scenewright.analysis.parser.phrases import relation_phrases
 from scenewright.analysis.parser.reader import _Reader
 from scenewright.analysis.parser.room import wall_units
 from scenewright.analysis.parser.style import GROUND_KINDS, _is_indoor, detect_ground, detect_style, detect_water
-from scenewright.analysis.parser.support import _infer_support, fit_on_hosts, onto_stack_tops, repair_supports
+from scenewright.analysis.parser.support import _infer_support, fit_on_hosts, onto_stack_tops, repair_supports, standing_lamps
 
 __all__ = [
     "GROUND_KINDS", "ParsedObject", "ParsedRelation", "ParsedScene",
@@ -221,7 +221,8 @@ def parse_scene(text: str) -> ParsedScene:
         for i in g.ids
     ]
     expanded = _acyclic(_expand(reader), [o.id for o in objects])
-    objects = fit_on_hosts(objects, expanded, catalogue, {i for g in reader.groups if g.sized for i in g.ids})
+    fixed = {i for g in reader.groups if g.sized for i in g.ids}
+    objects = fit_on_hosts(standing_lamps(objects, expanded, catalogue, fixed), expanded, catalogue, fixed)
     by_group = {g.index: g.ids for g in reader.groups}
     carried = frozenset((a, b) for s, t in reader.carried for a in by_group[s] for b in by_group[t])
     stated, repairs = repair_supports(objects, onto_stack_tops(objects, expanded), catalogue, carried)

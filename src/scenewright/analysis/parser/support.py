@@ -194,6 +194,27 @@ _TABLETOP_SIDE = 0.35
 _FURNITURE_HEIGHT = 1.3
 
 
+def standing_lamps(objects: list[ParsedObject], relations: list[ParsedRelation], catalogue, fixed: set[str]) -> list[ParsedObject]:
+    """A lamp the text sets beside a seat, on nothing, where no table of its own stands ("a
+    reading lamp beside a leather armchair in the corner"): a floor lamp, not a table lamp
+    taken to the nearest counter."""
+    by_id = {o.id: o for o in objects}
+    hosts = set(_SUPPORT_PREFERENCE["table_lamp"][:4])  # a nightstand, a desk, a side table, a dresser
+    if any(o.category in hosts for o in objects):
+        return objects
+    placed = {r.source for r in relations if r.relation in ("on", "above")}
+    by_seat = {
+        r.source for r in relations
+        if r.relation in _SIDES + ("near",) and catalogue[by_id[r.target].category].shape in _SEAT_SHAPES
+    }  # fmt: skip
+    floor = catalogue["floor_lamp"]
+    return [
+        replace(o, category="floor_lamp", size=floor.size, rests=floor.rests)
+        if o.category == "table_lamp" and o.id in by_seat and o.id not in placed and o.id not in fixed else o
+        for o in objects
+    ]
+
+
 def fit_on_hosts(
     objects: list[ParsedObject], relations: list[ParsedRelation], catalogue, fixed: set[str]
 ) -> list[ParsedObject]:
