@@ -1443,3 +1443,9 @@ def test_the_plants_named_by_their_kind_are_the_ones_named_before():
 def test_a_thing_that_floats_above_the_floor_is_up_in_the_air():
     airship = next(o for o in parse_scene("A hangar. A brass airship floats above the floor.").objects)
     assert airship.rests == "hanging"
+
+
+def test_a_landform_named_again_is_itself_not_a_rock_named_before():
+    scene = parse_scene("A desert outpost. An alien hides behind a boulder. A rover is parked at the foot of the ridge.")
+    name = {o.id: o.name for o in scene.objects}
+    assert any(name[r.source] == "rover" and name[r.target] == "ridge" for r in scene.relations)

@@ -427,7 +427,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             head = vocabulary.singular(last[:-2] if last.endswith("'s") else last)  # ("the calf's back": the calf)
             # a camel is not "the pig", nor "the cookhouse" the bunkhouse: in a family, or between
             # two guessed words, one thing only by the same head noun
-            family = self.catalogue[m.category].family
+            # (nor is "the ridge" the boulder named before: a landform is one by its own name)
+            family = self.catalogue[m.category].family or head in vocabulary.landforms
             # (nor are "the ducks" the one heron named before: several of a name the one does not
             # have are new; "the swings" are the swing set's)
             several = _is_plural(self.toks, m) and m.count != 1
