@@ -408,3 +408,11 @@ def test_one_who_watches_from_what_carries_nobody_stands_by_it():
 def test_a_living_thing_in_a_container_put_somewhere_brings_the_container():
     found = rels("A clinic. A parrot in a cage perches on the reception desk.")
     assert {("cage_1", "on", "counter_1"), ("bird_1", "on", "cage_1")} <= found
+
+
+def test_what_is_behind_a_towing_vehicle_is_behind_it_and_its_load_and_its_driver_drives_it():
+    found = rels("A lane. A tractor towing a trailer waits at the barrier. Behind it queue a van and two cyclists.")
+    assert {("truck_1", "behind", "tractor_1"), ("truck_1", "behind", "trailer_1"),
+            ("cyclist_2", "behind", "tractor_1"), ("cyclist_2", "behind", "trailer_1")} <= found
+    found = rels("A lane. A tractor towing a trailer waits at the barrier, its driver leaning out to watch.")
+    assert ("driver_1", "on", "tractor_1") in found

@@ -685,6 +685,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         names is its crew, on it (the latest vehicle named before in the sentence), unless the text
         puts them somewhere ("its passengers queue at a kiosk")."""
         placed = {r[1] for r in self.relations if r[0] != "face to"}
+        puller = {load: head for head, load in self.towed.items()}  # ("a tractor towing a trailer, its driver ...": the tractor's)
         for k, m in enumerate(mentions):
             g = m.group
             if m.content or g < 0 or g in placed or m.start == 0 or self.toks[m.start - 1].text != "its":
@@ -695,7 +696,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 if any(t.text in (".", ";", "!", "?") for t in self.toks[before.end : m.start]):
                     break
                 if before.group >= 0 and not before.content and self._carrier(before.group, ("vehicles",)):
-                    self.relations.append(("on", g, before.group, None))
+                    self.relations.append(("on", g, puller.get(before.group, before.group), None))
                     break
 
     def _one_per_holder(self) -> None:
@@ -2407,16 +2408,19 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
     def _relate(self, kind: str, srcs: list[int], target: int, hang: bool = False, instance=None) -> None:
         for s in srcs:
             resolved = self._kind(kind, s, target, hang)
-            # "a horse pulls a plough, and a farmer walks behind it": behind the plough, the train's tail
-            seen = {s}
-            while resolved == "behind" and target in self.towed and self.towed[target] not in seen:
-                seen.add(target)
-                target = self.towed[target]
+            # "a horse pulls a plough, and a farmer walks behind it": behind the plough, the train's
+            # tail, and so behind the horse too
+            seen, t = {s}, target
+            while resolved == "behind" and t in self.towed and self.towed[t] not in seen:
+                seen.add(t)
+                if s != t:
+                    self.relations.append((resolved, s, t, instance))
+                t = self.towed[t]
             if resolved == "on":
-                s = self._ridden(s, target)
-            if s == target or resolved == "no relation":
+                s = self._ridden(s, t)
+            if s == t or resolved == "no relation":
                 continue
-            self.relations.append((resolved, s, target, instance))
+            self.relations.append((resolved, s, t, instance))
 
     def _mountable(self, s: int) -> bool:
         """Whether a standing thing also comes fixed to a wall, so "above" a thing names it up there
