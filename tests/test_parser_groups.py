@@ -220,3 +220,14 @@ def test_each_with_a_thing_in_front_of_them_is_the_sitters():
     assert ("bowl", "in front of", "customer") in found and ("bowl", "in front of", "stool") not in found
     # "each with ... on it" is each of the things
     assert ("file", "on", "table") in relations("A court. Two lawyers stand at separate tables, each with a stack of files on it.")
+
+
+def test_his_thing_after_one_on_each_is_each_ones():
+    text = "Barracks in a castle tower. Six bunk beds line the walls, and a knight snores on each bed, his helmet on the floor beside the bed."
+    found = counts(text)
+    assert found["helmet"] == 6 and found["knight"] == 6
+    scene = parse_scene(text)
+    beside = {r.target for r in scene.relations if r.source.startswith("helmet")}
+    assert len(beside) == 6  # each by his own bed
+    # "her collie" after a flock is the girl's one collie
+    assert counts("A green. A girl drives a flock of geese towards a pen, her collie trotting behind them.")["collie"] == 1

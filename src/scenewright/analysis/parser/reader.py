@@ -267,8 +267,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         #: Where the sentence before this one starts in ``history``: a posture verb's "in it"
         #: looks for a seat no further back.
         self._recent_from = 0
-        #: Where this sentence starts in ``history``.
+        #: Groups one of which each member of a group has ("his helmet" after "a knight on each
+        #: bed"): "the bed" after them is each one's own.
+        self.apiece: set[int] = set()
+        #: Where this sentence starts in ``history``, and in ``groups``.
         self._sentence_from = 0
+        self._sentence_groups = 0
         #: The living subjects of the clause before in this sentence: whom a clause that opens with a
         #: participle is about ("a knight kneels before the queen, offering her a sword": the knight).
         self.doers: list[int] = []
@@ -385,6 +389,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             j -= 1  # (past describing words: "their two fat ponies" is counted anyway)
         if default == UNCOUNTED and j >= 0 and self.toks[j].text == "their":
             self.theirs.add(g.index)
+        elif j >= 0 and self.toks[j].text in ("his", "her") and g.count == 1 and not m.counted:
+            # "a knight snores on each bed, his helmet on the floor beside it": each knight's
+            owner = next((o for o in reversed(self.groups[self._sentence_groups : g.index]) if self._person_at(o.index)), None)
+            if owner is not None and owner.count > 1:
+                g.count = owner.count
+                self.apiece.add(g.index)
         elif j >= 0 and self.toks[j].text == "their" and not m.counted and self._pair_noun(m):
             g.count = UNCOUNTED  # "skiers with their skis on their shoulders": a pair each, as many as they
             self.theirs.add(g.index)
@@ -566,6 +576,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         for sentence in _split(toks):
             self._recent_from, sentence_from = sentence_from, len(self.history)
             self._sentence_from = sentence_from
+            self._sentence_groups = len(self.groups)
             prev_subject: list[int] = []
             self.doers = []
             pending: list[tuple[str, list[int], tuple[int | None, ...]]] = []
@@ -2407,6 +2418,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
 
     def _relate(self, kind: str, srcs: list[int], target: int, hang: bool = False, instance=None) -> None:
         for s in srcs:
+            if s in self.apiece and self.groups[target].count == self.groups[s].count:
+                instance = None  # ("his helmet on the floor beside the bed": each by his own)
             resolved = self._kind(kind, s, target, hang)
             # "a horse pulls a plough, and a farmer walks behind it": behind the plough, the train's
             # tail, and so behind the horse too
