@@ -416,3 +416,22 @@ def test_what_is_behind_a_towing_vehicle_is_behind_it_and_its_load_and_its_drive
             ("cyclist_2", "behind", "tractor_1"), ("cyclist_2", "behind", "trailer_1")} <= found
     found = rels("A lane. A tractor towing a trailer waits at the barrier, its driver leaning out to watch.")
     assert ("driver_1", "on", "tractor_1") in found
+
+
+@pytest.mark.parametrize(
+    ("text", "expected", "absent"),
+    [
+        # one drinks from a thing by it, not on it; from a perch one is on it
+        ("A street. A stray cat drinks from a puddle next to a rubbish bin.", ("cat_1", "near", "pond_1"), ("cat_1", "on", "pond_1")),
+        ("A valley. Three stegosaurs drink from a water trough.", ("stegosaur_3", "near", "water_trough_1"), None),
+        ("A canal. Two children feed ducks from a wooden footbridge.", ("child_2", "on", "bridge_1"), None),
+    ],
+)
+def test_drinking_from_a_thing_is_by_it(text, expected, absent):
+    found = rels(text)
+    assert expected in found and absent not in found
+
+
+def test_single_people_on_their_things_are_on_one_each():
+    found = rels("A hall. The king and queen sit on their thrones.")
+    assert {("king_1", "on", "throne_1"), ("queen_1", "on", "throne_2")} <= found

@@ -1449,3 +1449,8 @@ def test_a_landform_named_again_is_itself_not_a_rock_named_before():
     scene = parse_scene("A desert outpost. An alien hides behind a boulder. A rover is parked at the foot of the ridge.")
     name = {o.id: o.name for o in scene.objects}
     assert any(name[r.source] == "rover" and name[r.target] == "ridge" for r in scene.relations)
+
+
+def test_a_plural_noun_after_a_singular_subject_with_a_hyphened_count_is_its_verb():
+    found = names("A wedding. A long table with a three-tier cake stands under an apple tree.")
+    assert {"cake", "long table", "apple tree"} <= found and "cake stand" not in found

@@ -84,6 +84,19 @@ def _rings(reader: _Reader) -> dict[tuple[int, int], tuple[int, list[tuple[str, 
     return out
 
 
+def _one_each(reader: _Reader) -> dict[tuple[int, int], int]:
+    """Single things put on a group of as many ("the king and the queen sit on their thrones"):
+    (source, target) → which member of the target each is on."""
+    on: dict[int, list[int]] = {}
+    for kind, s, t, instance in reader.relations:
+        if kind == "on" and instance is None and len(reader.groups[s].ids) == 1 and s not in on.get(t, []):
+            on.setdefault(t, []).append(s)
+    return {
+        (s, t): k for t, sources in on.items()
+        if 1 < len(sources) <= len(reader.groups[t].ids) for k, s in enumerate(sources)
+    }  # fmt: skip
+
+
 def _instance_pairs(src: _Group, tgt: _Group, paired: bool) -> list[tuple[str, str]]:
     n, m = len(src.ids), len(tgt.ids)
     if paired and m > n and m % n == 0:  # "each pair pulling a plough": a plough to each pair
@@ -156,7 +169,7 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
             out += _between(reader, groups[s], ends[0], ends[1])
         else:
             out += [ParsedRelation(x, "near", ends[0]) for x in groups[s].ids]
-    ring = _rings(reader)
+    ring, seat = _rings(reader), _one_each(reader)
     for kind, s, t, instance in reader.relations:
         src, tgt = groups[s], groups[t]
         paired = (s, t) in reader.pair_each or (t, s) in reader.pair_each
@@ -190,6 +203,8 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
         elif kind == "flank":
             for i, (a, _) in enumerate(pairs):
                 out.append(ParsedRelation(a, ("left of", "right of")[i % 2], tgt.ids[(i // 2) % len(tgt.ids)]))
+        elif kind == "on" and (s, t) in seat:  # "the king and queen watch from their thrones": a throne each
+            out.append(ParsedRelation(src.ids[0], "on", tgt.ids[seat[s, t]]))
         elif kind == "around" and (s, t) in ring:  # "a knight, an elf and a dwarf sit around a fire": one ring
             start, sides = ring[s, t]
             for i, a in enumerate(src.ids):

@@ -151,7 +151,8 @@ def _verb_ends_subject(toks: list[_Tok], i: int, end: int) -> bool:
     if last == singular(last) or not (singular(last) in _FINITE or transitive) or _counted_plural(toks, i):
         return False
     j = i - 1
-    while j >= 0 and i - j <= 4 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+    # (past describing words, and the words hyphened into one: "a three-tier cake stands")
+    while j >= 0 and i - j <= 4 and (toks[j].text[:1].isalpha() and toks[j].text not in _STOP or toks[j + 1].joined):
         j -= 1
     if j >= 0 and j < i - 1 and toks[j].text in _SINGULAR_DETERMINERS:
         return True

@@ -76,6 +76,7 @@ from scenewright.analysis.parser.words import (
     _DETERMINERS,
     _FINITE,
     _GIVE_VERBS,
+    _HAND_PAIRS,
     _HAND_VERBS,
     _HANG_VERBS,
     _HOLD,
@@ -2500,8 +2501,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if kind in ("from", "on a carrier"):
             # "a heron watches from a rock", "a guard waves from the tower", "a peacock struts across
             # its roof", "a cat peeks out of the box": on it (across anything else one only passes);
-            # one who watches or waves from what carries nobody stands by it ("watches them from the gate")
-            if self._living(s) and (self._carrier(t) or self._perch_part):
+            # one who watches or waves from what carries nobody stands by it ("watches them from the gate");
+            # one drinks, eats or pours from a thing by it ("a cat drinks from a puddle", "stegosaurs
+            # drink from a trough")
+            taken = kind == "from" and not self._carrier(t, ("perches",)) and not self._perch_part and self._verb_before(
+                self._target_start, lambda w: (w, "from") in _HAND_PAIRS
+            )  # (not a perch: "two children feed ducks from a footbridge" are on it)
+            if self._living(s) and (self._carrier(t) or self._perch_part) and not taken:
                 return "on"
             if kind == "from" and self._part in _ROOF_PARTS:
                 return "on"  # "a dish points at the sky from the roof of the hut": fixed up there

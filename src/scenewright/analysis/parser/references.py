@@ -73,10 +73,12 @@ class _References:
                 self._target_start = m.start
                 owner = _OWNER_PRONOUNS.get(toks[lead].text) if lead < ce else None
                 people = self._people_own() if owner == "them" else None
-                if people is not None:  # "two teenagers sit on their motorbikes": people's things are things,
+                # ("the king and queen sit on their thrones": the single ones named together)
+                owners = self.groups[people].count if people is not None else self._named_together() if owner == "them" else 0
+                if owners:  # "two teenagers sit on their motorbikes": people's things are things,
                     owner = None  # one each when the text gives no count
                     if m.group < 0 and not m.counted and _is_plural(toks, m):
-                        m.count = self.groups[people].count
+                        m.count = owners
                 # "a rocket stands on its launch pad": what a thing is placed on is no part of it
                 # ("bells hang from its railing": the railing is)
                 own_support = pos >= 2 and toks[pos - 1].text in ("on", "upon") and toks[pos - 2].text in _PLACING_VERBS
@@ -227,6 +229,16 @@ class _References:
         roof)."""
         several = [g.index for g in self.groups if g.count > 1]
         return several[-1] if several and self._living(several[-1]) else None
+
+    def _named_together(self) -> int:
+        """How many living things, one each, the sentence has named last in a row ("the king and
+        the queen"): the owners "their" names when no group of several is meant; 0 if under two."""
+        n = 0
+        for g in reversed(self.groups[self._sentence_groups :]):
+            if g.count != 1 or not self._living(g.index):
+                break
+            n += 1
+        return n if n > 1 else 0
 
     def _body_part_at(self, pos: int, ce: int, starts) -> tuple[str, int] | None:
         """"on her knees", "at his feet", "in their arms": a part of a person places by the
