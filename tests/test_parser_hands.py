@@ -657,3 +657,8 @@ def test_a_thing_one_works_on_is_in_hand_only_when_one_can_lift_it(text, held):
 def test_what_one_works_at_where_a_desk_is_is_on_the_desk():
     found = rels("A clinic. A parrot perches on the reception desk, where a nurse types on a computer.")
     assert {("monitor_1", "on", "counter_1"), ("nurse_1", "near", "counter_1")} <= found
+
+
+def test_what_one_shapes_is_worked_where_it_is_not_held():
+    found = rels("A studio. A potter sits at her wheel, shaping a tall vase.")
+    assert not any(s == "vase_1" and t == "potter_1" for s, _, t in found)

@@ -358,7 +358,7 @@ def structure(m: Model) -> None:
         (("stage", "bandstand", "podium"), _stage),
         (("scaffold", "scaffolding"), _scaffold),
         (("launch pad", "landing pad", "helipad", "pad"), _pad),
-        (("grandstand", "bleachers", "stands", "tribune", "spectator stand", "viewing stand"), _grandstand),
+        (("grandstand", "bleachers", "stands", "tribune", "spectator stand", "viewing stand", "royal box"), _grandstand),
         (("trebuchet", "catapult", "ballista", "mangonel", "onager", "siege engine"), _trebuchet),
         (("half pipe", "halfpipe", "half-pipe", "quarter pipe", "skate ramp", "ramp"), _ramp),
     )
