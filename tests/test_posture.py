@@ -100,7 +100,9 @@ def test_one_who_sits_with_no_seat_named_sits_on_a_stool_of_their_own(text, name
                       description=person.visual_description)
         SHAPES["figure"](model)
         body = np.concatenate([p.vertices for role, parts in model.parts.items() if role != "dark_wood" for p in parts])
-        assert body[:, 2].min() > 0.4  # the body sits on the stool, nothing of it on the floor
+        torso = np.concatenate([p.vertices for p in model.parts["clothes"]])
+        assert torso[:, 2].min() > 0.3  # the body sits on the stool (0.45 m)
+        assert body[:, 2].min() < 0.1  # and its feet reach down to the floor
 
 
 def test_one_who_kneels_kneels_on_whatever_carries_them():

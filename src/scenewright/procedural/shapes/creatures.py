@@ -8,6 +8,7 @@ The object's length runs along y with its head toward −Y, as for vehicles.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 
@@ -394,7 +395,7 @@ def figure(m: Model) -> None:
     inner.text = m.text
     _standing(inner)
     m.tints.update(inner.tints)
-    fold = {"sitting": _sit, "kneeling": _kneel}.get(posture, _lie)
+    fold = {"sitting": partial(_sit, below=stool), "kneeling": _kneel}.get(posture, _lie)
     lift = P.affine(np.eye(3), (0.0, 0.0, stool))
     for role, parts in inner.parts.items():
         for part in parts:
@@ -439,16 +440,17 @@ _KNEE = 0.25
 _DEPTH = 0.17
 
 
-def _sit(part: P.Part, m: Model) -> P.Part:
-    """Fold a standing part into sitting with knees up: above the hips it moves down and back
-    (the seat at the bottom of the box), below them the thigh turns forward and up to the knee
-    and the shin down to the floor in front, each leg section turning with its bone."""
+def _sit(part: P.Part, m: Model, below: float = 0.0) -> P.Part:
+    """Fold a standing part into sitting: above the hips it moves down and back (the seat at
+    the bottom of the box), below them the thigh turns forward to the knee and the shin down to
+    the floor in front, each leg section turning with its bone. On the floor the knees come up;
+    on a stool ``below`` the seat the thighs lie level and the shins reach down toward the floor."""
     H = m.sz
     hip, knee = 0.48 * H, _KNEE * H
     thigh, shin = hip - knee, knee
-    rise = np.radians(30.0)
+    rise = np.radians(0.0 if below else 30.0)
     knee_at = np.array([0.0, -thigh * np.cos(rise), thigh * np.sin(rise)])
-    drop = np.arcsin(min(1.0, knee_at[2] / shin))
+    drop = np.arcsin(min(1.0, (knee_at[2] + below) / shin))
     v, n = part.vertices.copy(), part.normals.copy()
     legs = v[:, 2] < hip
     t = hip - v[legs, 2]  # how far down the leg from the hip
