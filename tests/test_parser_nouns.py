@@ -1454,3 +1454,7 @@ def test_a_landform_named_again_is_itself_not_a_rock_named_before():
 def test_a_plural_noun_after_a_singular_subject_with_a_hyphened_count_is_its_verb():
     found = names("A wedding. A long table with a three-tier cake stands under an apple tree.")
     assert {"cake", "long table", "apple tree"} <= found and "cake stand" not in found
+
+
+def test_a_participle_after_a_comma_is_no_kind_of_the_thing_after_it():
+    assert "sandwich" in names("A park. Three children sit on a blanket, eating sandwiches from a basket.")

@@ -2710,6 +2710,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         if adjectives and (w in load_vocabulary().clothing or singular(w) in load_vocabulary().clothing):
             adjectives = []  # "fishermen in red caps cast nets": what they wear ends there, the word
             break  # after it is their verb, no kind of net
+        if w.endswith("ing") and j > 0 and toks[j - 1].text in (",", ";", ":"):
+            break  # ", eating sandwiches from a basket": the participle of the one before, no kind of sandwich
         bare = singular(toks[m.end - 1].text) != toks[m.end - 1].text
         if j == prev_end and bare and _verb_of_one(toks, j):
             break  # "a girl holds (red) balloons": the verb of the one before, no kind of balloon
