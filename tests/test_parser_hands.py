@@ -662,3 +662,11 @@ def test_what_one_works_at_where_a_desk_is_is_on_the_desk():
 def test_what_one_shapes_is_worked_where_it_is_not_held():
     found = rels("A studio. A potter sits at her wheel, shaping a tall vase.")
     assert not any(s == "vase_1" and t == "potter_1" for s, _, t in found)
+
+
+def test_work_on_a_part_of_a_vehicle_is_by_it_and_its_engine_is_no_thing_of_its_own():
+    assert {("mechanic_1", "near", "plane_1"), ("mechanic_2", "near", "plane_1")} <= rels(
+        "A hangar. Two mechanics work on the engine of the plane."
+    )
+    assert ("sailor_1", "on", "boat_1") in rels("A deck. Two sailors stand on the deck of the ship.")
+    assert [o.name for o in parse_scene("A yard. A tractor waits with its engine running.").objects] == ["tractor"]

@@ -133,8 +133,12 @@ class _Hands:
         carrier = isinstance(target, list) and target and (
             self._carrier(target[0], kinds) or self.catalogue[self.groups[target[0]].category].shape == "rug"
         )
-        # (a plate or a bowl carries no one who works at it: "a cook ladles soup onto a plate"; a stool does)
+        # (a plate or a bowl carries no one who works at it: "a cook ladles soup onto a plate"; a stool does;
+        # nor does a part of a thing one stands on no part of: "work on the engine of the plane")
         if carrier and max(self.groups[target[0]].size[:2]) < _RIDEABLE and not self._carrier(target[0], ("seats",)):
+            carrier = False
+        of = next((j for j in range(k + 1, self._target_start) if self.toks[j].text == "of"), None)
+        if carrier and of is not None and singular(self.toks[of - 1].text) not in load_vocabulary().carriers.get("perches", ()):
             carrier = False
         return w is not None and isinstance(target, list) and bool(target) and not carrier and not self._still(w)
 
