@@ -1449,3 +1449,10 @@ def test_what_hangs_from_its_own_hook_hangs_from_no_one_named_before():
 def test_the_back_seat_of_a_car_is_the_car_s():
     found = rels("A Labrador watches from the back seat of an estate car.")
     assert found == {("dog_1", "on", "car_1")}
+
+
+def test_between_them_is_between_the_pair_and_the_list_goes_on_after_it():
+    scene = parse_scene("A room. A sofa faces the TV, with a coffee table between them and a rug under the table.")
+    found = {(r.source, r.relation, r.target) for r in scene.relations}
+    assert ("coffee_table_1", "on", "rug_1") in found
+    assert {("coffee_table_1", "near", "sofa_1"), ("coffee_table_1", "near", "tv_1")} <= found

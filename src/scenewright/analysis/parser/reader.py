@@ -1839,7 +1839,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 kind, target, targets, end = "on", onto, onto, end2
         if kind == "from" and end < ce and toks[end].text in span and isinstance(targets, list) and targets:
             kind = "between"  # "a conveyor carries ore from it to a refinery": between the two
-        if kind == "between" and isinstance(targets, list) and targets:
+        if kind == "between" and isinstance(targets, list) and targets and target != "them":
+            # (between "them" is between the pair already: "with a table between them and a rug under it")
             if end < ce and toks[end].text in (span if rel.kind == "from" else ("and",)):
                 second, end2 = self._target_at(end + 1, ce)
                 if isinstance(second, list):
