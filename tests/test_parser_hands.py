@@ -670,3 +670,10 @@ def test_work_on_a_part_of_a_vehicle_is_by_it_and_its_engine_is_no_thing_of_its_
     )
     assert ("sailor_1", "on", "boat_1") in rels("A deck. Two sailors stand on the deck of the ship.")
     assert [o.name for o in parse_scene("A yard. A tractor waits with its engine running.").objects] == ["tractor"]
+
+
+def test_what_a_thing_is_filled_with_goes_in_it_not_in_hand():
+    found = rels("An orchard. Pickers fill baskets with apples.")
+    assert ("apple_1", "on", "basket_1") in found and not any(t.startswith("picker") for _, _, t in found)
+    assert ("barrel_1", "on", "cart_1") in rels("A dock. Two men load the cart with barrels.")
+    assert ("spade_1", "on", "farmer_1") in rels("A field. A farmer digs with a spade.")  # a tool stays in hand

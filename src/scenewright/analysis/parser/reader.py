@@ -74,6 +74,7 @@ from scenewright.analysis.parser.words import (
     _ADVERBS,
     _CARRY_VERBS,
     _DETERMINERS,
+    _FILL_VERBS,
     _FINITE,
     _GIVE_VERBS,
     _HAND_PAIRS,
@@ -97,6 +98,7 @@ from scenewright.analysis.parser.words import (
     _VAGUE,
     _WARES_VERBS,
     _is_verb,
+    _verb_stem,
 )
 from scenewright.core.catalogue import Category, load_catalogue, match_phrase, singular
 
@@ -1113,9 +1115,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 if (w, nxt) in _HOLD_PAIRS and laden and laden[0] in c.groups:
                     c.head = laden[:1]
                 c.wsub, c.expect_new = [], False
+                # "pickers fill baskets with apples": what the verb fills takes what it is filled with
+                filled = w == "with" and c.deeds and c.deed_end == k and _verb_stem(self._acting_verb(k) or "", _FILL_VERBS)
+                if filled:
+                    c.head = [c.deeds[-1][1]]
                 # "with his putter": a possessive after "with" says the person has it in hand
                 hand = hand or (w == "with" and mine and all(self._person_at(h) for h in c.head))
-                c.hold, c.hand = w in _HOLD or (w, nxt) in _HOLD_PAIRS or hand, hand
+                c.hold, c.hand = w in _HOLD or (w, nxt) in _HOLD_PAIRS or hand or bool(filled), hand
                 # ("two men haul a trunk": one thing a verb of several has in hand is theirs together)
                 # (what is given comes after whom it is given to: "one offering it a mackerel")
                 thing_at = k if given is None else given[1] - 1

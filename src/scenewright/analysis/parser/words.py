@@ -198,6 +198,9 @@ _USE_VERBS = {
     "inspect", "inspects", "inspecting", "examine", "examines", "examining", "study", "studies", "studying",
     "count", "counts", "counting", "blow", "blows", "blowing", "tune", "tunes", "tuning",
 }  # fmt: skip
+#: Verbs of filling, by their stem (:func:`_verb_stem`): what comes "with" after their object is
+#: what goes in or on it, not a tool in hand ("pickers fill baskets with apples").
+_FILL_VERBS = {"fill", "load", "stuff", "pack", "stock", "heap", "pile", "stack", "cover", "line", "decorate"}
 #: Verbs of placing or of work done where the thing lies, by their stem (:func:`_verb_stem`): their
 #: small object is not in the doer's hand ("sets a cup on the tray", "stirs a pot on the stove",
 #: "chops onions", "pushes a pram"), nor is a small thing they are done "on".
