@@ -1456,3 +1456,22 @@ def test_between_them_is_between_the_pair_and_the_list_goes_on_after_it():
     found = {(r.source, r.relation, r.target) for r in scene.relations}
     assert ("coffee_table_1", "on", "rug_1") in found
     assert {("coffee_table_1", "near", "sofa_1"), ("coffee_table_1", "near", "tv_1")} <= found
+
+
+@pytest.mark.parametrize(
+    ("text", "expected", "absent"),
+    [
+        ("A toy shop. Teddy bears line the shelves.", ("teddy_bear_1", "on", "bookshelf_1"), None),
+        ("A bar. Stools line the counter.", ("stool_1", "in front of", "counter_1"), ("stool_1", "on", "counter_1")),
+        # a clause whose subject is no thing places nothing of the clause before
+        ("A temple. Monks kneel before a golden Buddha, and incense burns in a bronze bowl at its feet.",
+         ("monk_1", "in front of", "buddha_1"), ("monk_1", "on", "bowl_1")),
+    ],
+)
+def test_things_lining_shelves_are_on_them_and_a_bare_subject_is_its_own(text, expected, absent):
+    found = {(r.source, r.relation, r.target) for r in parse_scene(text).relations}
+    assert expected in found and absent not in found
+
+
+def test_twins_are_two():
+    assert Counter(o.category for o in parse_scene("A nursery. Twin babies sleep in a cot.").objects)["figure"] == 2

@@ -984,6 +984,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         c.finite = copula  # (its verb: "... is tethered to a man sitting on a stool": the man sits)
         c.opens = c.first or (starts_with_rel and k > cs and not copula and self._subject_after(self.rel_at[j].end, ce))
         c.unknown_subject = j > k and toks[k].text in ("a", "an", "the") and j not in self.by_start and not starts_with_rel
+        # ("..., and incense burns in a bronze bowl": a bare word no thing, then its verb)
+        c.unknown_subject = c.unknown_subject or (
+            not c.first and k + 1 < ce and k not in self.by_start and k not in self.content_at and toks[k].text[:1].isalpha()
+            and toks[k].text not in _STOP and k + 1 not in self.by_start and _is_verb(toks[k + 1].text)
+        )  # fmt: skip
         last_event_end = cs
         phrase_end = -1  # where the last relation phrase and its target end
         while k < ce:
@@ -1435,6 +1440,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             kind, target, end = side  # "a cart is on the artist's right": right of the artist
         if toks[rel.start].text == "in" and target is None and (ride := self._vehicle_part(rel.start + 1, ce)):
             kind, (target, end) = "in", ride  # "a pickup truck with its lights on, a collie in the back"
+        if rel.kind == "in front of" and toks[rel.start].text in ("line", "lines") and isinstance(target, list) and target and (
+            self.catalogue[self.groups[target[0]].category].shape == "bookshelf"
+        ):  # "jars line the shelves": on them, as "crowd the shelves" ("stools line the counter": in front)
+            kind = "covering"
         inside = [t.text for t in toks[rel.start : rel.start + 3]] == ["in", "the", "back"]
         if inside and isinstance(target, list) and target and self._carrier(target[0], ("vehicles",)):
             kind = "in"  # "a boy in the back of the van": in it, not behind it
