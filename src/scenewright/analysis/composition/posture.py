@@ -82,8 +82,8 @@ def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
     Kneeling is said in so many words and holds on any host. Else the host decides first (a
     person on a bed lies, on a chair sits, whatever the verb); with no host, or a host of
     neither kind, the sentence's verbs do ("a boy sits at the kotatsu"); "asleep"/"sleeps"
-    alone is lying unless the host is a seat ("dozes in the armchair" sits). On a vehicle or a ridden animal a person sits unless the sentence has
-    them stand ("standing on its bonnet").
+    alone is lying unless the host is a seat ("dozes in the armchair" sits). On a vehicle or a
+    ridden animal a person sits unless the sentence has them stand ("standing on its bonnet").
     """
     if obj.category not in _FIGURES:
         return None

@@ -61,38 +61,36 @@ def _around_sides(n: int, src: _Group, tgt: _Group, corners: bool) -> list[tuple
     return [(order[i % len(order)],) for i in range(n)]
 
 
+def _singles(reader: _Reader, kind: str) -> dict[int, list[int]]:
+    """Target group → the groups of one thing each the text relates to all of it by ``kind``, in
+    the order named (a plural keeps its own share: "toadstools and crystals around it")."""
+    out: dict[int, list[int]] = {}
+    for k, s, t, instance in reader.relations:
+        if k == kind and instance is None and len(reader.groups[s].ids) == 1 and s not in out.get(t, []):
+            out.setdefault(t, []).append(s)
+    return out
+
+
 def _rings(reader: _Reader) -> dict[tuple[int, int], tuple[int, list[tuple[str, ...]]]]:
     """Several single things around one thing ("a knight, an elf and a dwarf sit around the fire")
-    share its sides as one group would: (source, target) → where the source's members start in
-    the ring, and the sides of the whole ring."""
-    around: dict[int, list[int]] = {}
-    for kind, s, t, instance in reader.relations:
-        one = len(reader.groups[s].ids) == 1  # (a plural keeps its own ring: "toadstools and crystals around it")
-        if kind == "around" and one and instance is None and len(reader.groups[t].ids) == 1 and s not in around.get(t, []):
-            around.setdefault(t, []).append(s)
+    share its sides as one group would: (source, target) → where the source stands in the ring,
+    and the sides of the whole ring."""
     out: dict[tuple[int, int], tuple[int, list[tuple[str, ...]]]] = {}
-    for t, sources in around.items():
-        if len(sources) < 2:
-            continue
+    for t, sources in _singles(reader, "around").items():
         tgt, first = reader.groups[t], reader.groups[sources[0]]
+        if len(sources) < 2 or len(tgt.ids) != 1:
+            continue
         seat_at = reader.catalogue[first.category].shape in _SEATS and reader.catalogue[tgt.category].support
-        sides = _around_sides(sum(len(reader.groups[s].ids) for s in sources), first, tgt, corners=not seat_at)
-        start = 0
-        for s in sources:
-            out[s, t] = (start, sides)
-            start += len(reader.groups[s].ids)
+        sides = _around_sides(len(sources), first, tgt, corners=not seat_at)
+        out.update(((s, t), (k, sides)) for k, s in enumerate(sources))
     return out
 
 
 def _one_each(reader: _Reader) -> dict[tuple[int, int], int]:
     """Single things put on a group of as many ("the king and the queen sit on their thrones"):
     (source, target) → which member of the target each is on."""
-    on: dict[int, list[int]] = {}
-    for kind, s, t, instance in reader.relations:
-        if kind == "on" and instance is None and len(reader.groups[s].ids) == 1 and s not in on.get(t, []):
-            on.setdefault(t, []).append(s)
     return {
-        (s, t): k for t, sources in on.items()
+        (s, t): k for t, sources in _singles(reader, "on").items()
         if 1 < len(sources) <= len(reader.groups[t].ids) for k, s in enumerate(sources)
     }  # fmt: skip
 
@@ -206,10 +204,9 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
         elif kind == "on" and (s, t) in seat:  # "the king and queen watch from their thrones": a throne each
             out.append(ParsedRelation(src.ids[0], "on", tgt.ids[seat[s, t]]))
         elif kind == "around" and (s, t) in ring:  # "a knight, an elf and a dwarf sit around a fire": one ring
-            start, sides = ring[s, t]
-            for i, a in enumerate(src.ids):
-                out += [ParsedRelation(a, side, tgt.ids[0]) for side in sides[start + i]]
-                out.append(ParsedRelation(a, "face to", tgt.ids[0]))
+            place, sides = ring[s, t]
+            out += [ParsedRelation(src.ids[0], side, tgt.ids[0]) for side in sides[place]]
+            out.append(ParsedRelation(src.ids[0], "face to", tgt.ids[0]))
         elif kind == "around" and len(src.ids) == 1 and not (reader._living(s) or reader._carrier(s, ("vehicles",))):
             # one round ottoman "surrounds" a palm: it is near (a dog that runs around the tree, a
             # toy train that circles a chair, is at one side of it on its way, facing it, as one of

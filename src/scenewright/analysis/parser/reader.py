@@ -699,7 +699,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         names is its crew, on it (the latest vehicle named before in the sentence), unless the text
         puts them somewhere ("its passengers queue at a kiosk")."""
         placed = {r[1] for r in self.relations if r[0] != "face to"}
-        puller = {load: head for head, load in self.towed.items()}  # ("a tractor towing a trailer, its driver ...": the tractor's)
+        # ("a tractor towing a trailer, its driver leaning out": the tractor's)
+        puller = {load: head for head, load in self.towed.items()}
         for k, m in enumerate(mentions):
             g = m.group
             if m.content or g < 0 or g in placed or m.start == 0 or self.toks[m.start - 1].text != "its":
@@ -1032,9 +1033,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 ]
                 # ("five customers sit on stools, each with a bowl in front of them": the sitters; "at
                 # tables, each with a stack of files on it": the tables)
-                own = bool(each_part and plural and people) and people[0] in (c.subjects or c.main_groups[:1] or prev_subject[:1])
                 said = {t.text for t in toks[k:ce]}
-                own = own and not self._living(plural[-1]) and bool(said & {"them", "their", "him", "her", "his"}) and not said & {"it", "its"}
+                own = bool(each_part and plural and people) and not self._living(plural[-1])
+                own = own and people[0] in (c.subjects or c.main_groups[:1] or prev_subject[:1])
+                own = own and bool(said & {"them", "their", "him", "her", "his"}) and not said & {"it", "its"}
                 if (holding or each_deed or own) and people:
                     plural = people[:1]
                 if plural:

@@ -194,7 +194,9 @@ _TABLETOP_SIDE = 0.35
 _FURNITURE_HEIGHT = 1.3
 
 
-def standing_lamps(objects: list[ParsedObject], relations: list[ParsedRelation], catalogue, fixed: set[str]) -> list[ParsedObject]:
+def standing_lamps(
+    objects: list[ParsedObject], relations: list[ParsedRelation], catalogue, fixed: set[str]
+) -> list[ParsedObject]:
     """A lamp the text sets beside a seat, on nothing, where no table of its own stands ("a
     reading lamp beside a leather armchair in the corner"): a floor lamp, not a table lamp
     taken to the nearest counter."""

@@ -210,8 +210,8 @@ _PUT_OR_WORKED = {
     "prop", "pile", "load", "unload", "fill", "empty", "spread", "scatter", "tip", "dump", "lower", "store",
     "stock", "display", "pack", "unpack", "stuff",
     # work in place
-    "stir", "chop", "cut", "slice", "dice", "knead", "hammer", "weld", "forge", "shape", "sculpt", "mould", "mold", "glaze", "fry", "grill", "roast",
-    "bake", "cook", "boil", "wash", "scrub", "sweep", "mop", "water", "repair", "fix", "assemble", "build",
+    "stir", "chop", "cut", "slice", "dice", "knead", "hammer", "weld", "forge", "fry", "grill", "roast",
+    "shape", "sculpt", "mould", "mold", "glaze", "bake", "cook", "boil", "wash", "scrub", "sweep", "mop", "water", "repair", "fix", "assemble", "build",
     "open", "close", "lock", "unlock", "shoe", "dig", "rake", "shovel", "split", "saw", "plough", "plow",
     "light", "stoke", "tend", "fan", "push", "wheel", "trundle",
 }  # fmt: skip

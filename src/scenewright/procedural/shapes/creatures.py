@@ -373,8 +373,8 @@ _CHILD_HEIGHT = 0.62
 
 
 def figure(m: Model) -> None:
-    """A person facing −Y, standing, or sitting or lying when the description says so (the
-    composition writes the pose the text gives, ``analysis/composition/posture.py``); a word
+    """A person facing −Y, standing, or kneeling, sitting or lying when the description says so
+    (the composition writes the pose the text gives, ``analysis/composition/posture.py``); a word
     for several people ("a family", "a crowd") is that many of them."""
     count = next((n for word, n in _GROUP_SIZES.items() if m.named(word)), 0)
     if count:
@@ -487,10 +487,11 @@ def _kneel(part: P.Part, m: Model) -> P.Part:
     knee, shin_r = _KNEE * H, 0.045 * H
     v, n = part.vertices.copy(), part.normals.copy()
     shins = v[:, 2] < knee
-    # a quarter turn about x takes the leg's −z (down the shin) to +y (back): (x, y, z) → (x, knee − z, y)
+    # a quarter turn about x takes the leg's −z (down the shin) to +y (back); its round section,
+    # folded up to lie on the floor: (x, y, z) → (x, knee − z, |y| + r)
     t = knee - v[shins, 2]
-    v[shins] = np.stack([v[shins, 0], t, np.abs(v[shins, 1]) + shin_r], axis=1) if shins.any() else v[shins]
-    n[shins] = np.stack([n[shins, 0], -n[shins, 2], n[shins, 1]], axis=1) if shins.any() else n[shins]
+    v[shins] = np.stack([v[shins, 0], t, np.abs(v[shins, 1]) + shin_r], axis=1)
+    n[shins] = np.stack([n[shins, 0], -n[shins, 2], n[shins, 1]], axis=1)
     v[~shins, 2] += 2 * shin_r - knee
     v[:, 1] -= 0.5 * knee
     return P.Part(v, part.faces, n)

@@ -1,7 +1,7 @@
 """Large open structures, upright panels and containers the catalogue does not know one by
 one: a windsock, a satellite or radar dish, a ferris wheel, crane, carousel, platform, stage, scaffold, grandstand, siege engine or skate
-ramp; a screen, folding screen, banner or notice board; a box, trunk, suitcase, backpack, sack, basket, cool
-box, cage, pen or hatbox. Fronts face −Y."""
+ramp; a screen, a folding screen, a banner or a notice board; a box, trunk, suitcase, backpack, sack,
+basket, cool box, cage, pen or hatbox. Fronts face −Y."""
 
 from __future__ import annotations
 
@@ -478,22 +478,23 @@ def _folding_screen(m: Model) -> None:
     W, D, H = m.sx / 2, m.sy / 2, m.sz
     leaves, t, rail = 4, 0.012, 0.05 * H
     joints = [(-W + k * m.sx / leaves, 0.8 * D * (1 if k % 2 else -1)) for k in range(leaves + 1)]
-    for (x0, y0), (x1, y1) in zip(joints, joints[1:]):
-        length = math.hypot(x1 - x0, y1 - y0)
-        ux, uy = (x1 - x0) / length, (y1 - y0) / length
-        nx, ny = -uy, ux  # the leaf's left, seen from above
-
-        def plan(w: float, end: float, x0=x0, y0=y0, x1=x1, y1=y1, ux=ux, uy=uy, nx=nx, ny=ny) -> list[tuple[float, float]]:
-            """The leaf's outline ``w`` either side of its line, ``end`` short of each post's middle."""
-            a, b = (x0 + ux * end, y0 + uy * end), (x1 - ux * end, y1 - uy * end)
-            return [(a[0] - nx * w, a[1] - ny * w), (b[0] - nx * w, b[1] - ny * w), (b[0] + nx * w, b[1] + ny * w), (a[0] + nx * w, a[1] + ny * w)]
-
+    for a, b in zip(joints, joints[1:]):
         # (the paper's edges inside the rails and the posts, so no face of one lies on another's)
-        m.extrude("paper", plan(t / 2, 0.03), "z", 0.8 * rail, H - 0.8 * rail)
+        m.extrude("paper", _strip(a, b, t / 2, 0.03), "z", 0.8 * rail, H - 0.8 * rail)
         for lo, hi in ((0.0, rail), (H - rail, H)):
-            m.extrude("dark_wood", plan(t, 0.024), "z", lo, hi)
+            m.extrude("dark_wood", _strip(a, b, t, 0.024), "z", lo, hi)
     for x, y in joints:
         m.post("dark_wood", x, y, 0.0, H, 0.026, fraction=0.3)
+
+
+def _strip(a: tuple[float, float], b: tuple[float, float], half: float, inset: float) -> list[tuple[float, float]]:
+    """The counter-clockwise outline, seen from above, of a strip ``half`` either side of the line
+    from ``a`` to ``b``, its ends ``inset`` short of both."""
+    length = math.hypot(b[0] - a[0], b[1] - a[1])
+    ux, uy = (b[0] - a[0]) / length, (b[1] - a[1]) / length
+    p, q = (a[0] + ux * inset, a[1] + uy * inset), (b[0] - ux * inset, b[1] - uy * inset)
+    nx, ny = -uy * half, ux * half  # the strip's left
+    return [(p[0] - nx, p[1] - ny), (q[0] - nx, q[1] - ny), (q[0] + nx, q[1] + ny), (p[0] + nx, p[1] + ny)]
 
 
 def _scoreboard(m: Model) -> None:
