@@ -231,3 +231,13 @@ def test_his_thing_after_one_on_each_is_each_ones():
     assert len(beside) == 6  # each by his own bed
     # "her collie" after a flock is the girl's one collie
     assert counts("A green. A girl drives a flock of geese towards a pen, her collie trotting behind them.")["collie"] == 1
+
+
+def test_each_with_a_thing_after_people_on_seats_is_each_person():
+    text = "A taproom. Six customers sit on stools around a table, each with a glass of stout."
+    assert counts(text)["glass"] == 6 and ("glass", "on", "customer") in relations(text)
+
+
+def test_a_subjects_thing_in_hand_named_between_commas_leaves_the_subject_its_verb():
+    found = relations("A harbour. The coxswain, radio in hand, waits at the foot of the slipway.")
+    assert ("coxswain", "in front of", "slipway") in found and ("radio", "on", "coxswain") in found

@@ -1475,3 +1475,12 @@ def test_things_lining_shelves_are_on_them_and_a_bare_subject_is_its_own(text, e
 
 def test_twins_are_two():
     assert Counter(o.category for o in parse_scene("A nursery. Twin babies sleep in a cot.").objects)["figure"] == 2
+
+
+def test_a_taprooms_bar_is_its_counter_and_a_trailer_hitched_to_a_vehicle_is_behind_it():
+    found = {(r.source, r.relation, r.target) for r in parse_scene(
+        "A craft brewery taproom. Four tanks stand behind the bar, and a dog sleeps at the foot of the bar."
+    ).relations}
+    assert {("tank_1", "behind", "counter_1"), ("dog_1", "in front of", "counter_1")} <= found
+    assert ("trailer_1", "behind", "bicycle_1") in {(r.source, r.relation, r.target) for r in parse_scene(
+        "A beach. A jet ski waits on a trailer hitched to a quad bike.").relations}

@@ -632,7 +632,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     c.rels = last_rels
                 self._where(cs, c, before)
                 last_rels = c.rels or last_rels
-                if c.main_groups:
+                # ("The coxswain, radio in hand, waits ...": what is in the subject's hand is no subject)
+                held = {thing for thing, holder in [*self.in_hand, *self.carried] if holder in prev_subject}
+                if c.main_groups and not set(c.main_groups) <= held:
                     prev_subject = c.main_groups[:1] if not c.main else c.main
                 if len(c.subjects) > 1:
                     self.together = list(c.subjects)
@@ -1036,7 +1038,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 said = {t.text for t in toks[k:ce]}
                 own = bool(each_part and plural and people) and not self._living(plural[-1])
                 own = own and people[0] in (c.subjects or c.main_groups[:1] or prev_subject[:1])
-                own = own and bool(said & {"them", "their", "him", "her", "his"}) and not said & {"it", "its"}
+                # (or when the things are the seats they sit on: "six regulars sit on stools, each with a glass")
+                seats = self._carrier(plural[-1], ("seats",)) if plural else False
+                own = own and (bool(said & {"them", "their", "him", "her", "his"}) or seats) and not said & {"it", "its"}
                 if (holding or each_deed or own) and people:
                     plural = people[:1]
                 if plural:
