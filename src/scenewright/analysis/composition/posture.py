@@ -88,7 +88,7 @@ def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
     if obj.category not in _FIGURES:
         return None
     clause = _clause_of(parsed, obj)
-    if _mentions(clause, POSTURE_WORDS["kneeling"]) or _mentions(obj.description.lower(), POSTURE_WORDS["kneeling"]):
+    if "kneeling" in (posture_in(clause), posture_in(obj.description)):
         return "kneeling"  # on whatever carries them ("kneels on a tatami mat")
     by_id = {o.id: o for o in parsed.objects}
     hosts = [by_id[r.target].category for r in parsed.relations if r.source == obj.id and r.relation == "on" and r.target in by_id]
