@@ -286,7 +286,7 @@ def annotation(objects, relations, supports=None, **extra):
 
 
 def test_objects_match_keys_by_category_or_by_the_words_of_an_open_key():
-    keys = ["gas_canister", "canister", "sofa", "ferris_wheel", "bird"]
+    keys = ["gas_canister", "canister", "sofa", "ferris_wheel", "bird", "cormorant", "lamp_post", "post"]
     objects = [
         ("a", "sofa", "grey couch"),  # catalogue key: by category
         ("b", None, "white gas canisters"),  # open key, plural in the name; the longer key wins over "canister"
@@ -294,8 +294,12 @@ def test_objects_match_keys_by_category_or_by_the_words_of_an_open_key():
         ("d", "tower", "huge ferris wheel"),  # guessed as another category, still found by name
         ("e", "lamp", "seagull bird lamp"),  # "bird" is a catalogue key: never matched by name
         ("f", "chair", "wheel chair"),  # "ferris_wheel" needs both words
+        ("g", "bird", "black cormorant"),  # drawn as a bird, named a cormorant: the cormorant's key
+        ("h", "lamp_post", "gas lamp post"),  # its category's words are in its name: the lamp post, no post
     ]
-    assert assign_keys(objects, keys) == {"a": "sofa", "b": "gas_canister", "c": "canister", "d": "ferris_wheel"}
+    assert assign_keys(objects, keys) == {
+        "a": "sofa", "b": "gas_canister", "c": "canister", "d": "ferris_wheel", "g": "cormorant", "h": "lamp_post"
+    }
 
 
 def test_between_is_recalled_when_the_source_relates_to_both_targets_and_those_relations_are_correct():

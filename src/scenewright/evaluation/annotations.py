@@ -125,9 +125,11 @@ def _name_words(name: str) -> set[str]:
 def assign_keys(objects: Iterable[tuple[str, str | None, str]], keys: Iterable[str]) -> dict[str, str]:
     """Object id → the annotation key it counts as, for ``(id, category, name)`` triples.
 
-    Its category when that is a key; else, among the keys outside the catalogue, the one with
-    the most words that all appear in the name (``fuel_tank`` in "white fuel tank"). Objects
-    matching no key are left out.
+    Its category when that is a key, unless a key outside the catalogue has all its words, the
+    name's last word among them, in the name and the category's words are not all there (a "bot"
+    drawn as a robot is the ``bot``, a "gas lamp post" the ``lamp_post``); else, among the keys
+    outside the catalogue, the one with the most words that all appear in the name or the
+    category (``fuel_tank`` in "white fuel tank"). Objects matching no key are left out.
     """
     keys = list(keys)
     catalogue = load_catalogue()
@@ -137,10 +139,16 @@ def assign_keys(objects: Iterable[tuple[str, str | None, str]], keys: Iterable[s
     )
     out: dict[str, str] = {}
     for object_id, category, name in objects:
-        if category in keys:
-            out[object_id] = category
+        named = _name_words(name)
+        head = singular(words(name)[-1]) if words(name) else ""
+        own = next((key for key, need in open_keys if need and need <= named and head in need), None)
+        if category in keys and (own is None or _name_words(category.replace("_", " ")) <= named):
+            out[object_id] = category  # (a "gas lamp post" is the lamp post its name says, not a post)
             continue
-        have = _name_words(name) | (_name_words(category) if category else set())
+        if own is not None:
+            out[object_id] = own
+            continue
+        have = named | (_name_words(category) if category else set())
         for key, need in open_keys:
             if need and need <= have:
                 out[object_id] = key

@@ -30,6 +30,7 @@ from scenewright.analysis.parser.words import (
     _HAND_VERBS,
     _HANG_VERBS,
     _HOLD,
+    _KEPT_IN_HAND,
     _PLACE_ADVERBS,
     _PLANT_SHAPES,
     _PREPOSITIONS,
@@ -260,7 +261,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             i = found[0]
         else:
             i += 1
-    raw = sorted(raw + _unknown_nouns(toks, raw), key=lambda r: r[0])
+    unknown = _unknown_nouns(toks, raw)
+    guessed = {r[0] for r in unknown}  # (whatever family a guess gave them, nobody listed these)
+    raw = sorted(raw + unknown, key=lambda r: r[0])
     mentions: list[_Mention] = []
     places: list[str] = []
     opening_place = _opening_place_word(toks)
@@ -387,7 +390,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a throne hall", "a farmhouse kitchen", "a rocket launch site": the place, not the thing
         if _place_name(toks, s):
             continue  # "a dig on a hillside in southern Turkey": a country, not a bird
-        if entry is not None and entry.category in (GENERIC, *_ENCLOSING) and _unknown_opening_place(toks, s, e):
+        unlisted = s in guessed or entry is not None and entry.category in (GENERIC, *_ENCLOSING)
+        if unlisted and _unknown_opening_place(toks, s, e):
             places.append(" ".join(words))
             continue  # "An art nouveau perfumery, all brass and glass.": a word nobody listed names the setting
         if (places or opening_place) and _whereabouts_of_setting(toks, s, mentions[-1].end if mentions else -1):
@@ -1439,7 +1443,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         entry = vocabulary.family("figure") if members else _guess(toks, head, toks[max(i - 1, 0) : head])
         if entry.category == GENERIC and singular(word) in vocabulary.clothing:
             entry = Entry(GENERIC, vocabulary.clothing_size, "surface")  # "a felt hat" on a stand: its own size
-        if w in _NUMBERS and i > 0 and toks[i - 1].text == "its" and entry.category == GENERIC:
+        living = entry.category == "figure" or vocabulary.is_creature(word)
+        if w in _NUMBERS and i > 0 and toks[i - 1].text == "its" and not living:
             continue  # "its four propellers gleaming": a thing's parts, counted ("its two cubs" are there)
         opening = i == 0 or not toks[i - 1].text[:1].isalpha()
         placed = w == "the" and j < n and (opening and toks[j].text in _PLACING_VERBS or toks[j].text in _STANDING)
@@ -2126,12 +2131,17 @@ def _guess(toks: list[_Tok], head: int, before: list[_Tok]) -> Entry:
     verb after a "with" thing is its owner's ("a mechanic with a wheel gun kneels")."""
     vocabulary = load_vocabulary()
     word = toks[head].text
-    entry = vocabulary.guess(word)
+    entry = vocabulary.guess_by_form(word)
+    # what WordNet says the word names, for when the text tells nothing else ("a musher", "a sampan");
+    # no person for a thing read or held ("reads a comic")
+    known = vocabulary.guess_in_wordnet(word) if entry.category == GENERIC else None
+    handled = bool(before) and before[0].text in _HOLD | _HAND_VERBS | _KEPT_IN_HAND
+    known = None if known is not None and handled and known.category == "figure" else known
     if any(t.text == "with" for t in before):
         after = toks[head + 1].text if head + 1 < len(toks) else ""
         if entry.category == GENERIC and after.endswith("ing") and (after in _HOLD or after in _HAND_VERBS):
-            return vocabulary.guess_agent(word, True, True) or entry  # "with a tsarevich holding the reins"
-        return entry
+            return vocabulary.guess_agent(word, True, True) or known or entry  # "with a tsarevich holding the reins"
+        return known or entry
     fronted = _after_preposition(toks, head)  # "On the bank, an old woman grills ...": no apposition
     human = _does_what_people_do(toks, head + 1) or (_person_apposition(toks, head + 1) and not fronted)
     human = human or _dressed(toks, head + 1) or _role_subject(toks, head) or _addressed(toks, head)
@@ -2139,11 +2149,15 @@ def _guess(toks: list[_Tok], head: int, before: list[_Tok]) -> Entry:
     moody = any(t.text in vocabulary.moods for t in before)
     acts = moody or _acts_as_person(toks, head + 1) or _equipped(toks, head + 1) or _has_hands(toks, head)
     acts = acts or _owner_next(toks, head)
-    if entry.category == GENERIC or (human and entry.category == "machine"):
+    # what the text has it do beats what the word alone says: "the binder, an old woman, sits" is
+    # a person, "a maintenance crawler rolls" a vehicle (but "a cormorant watches" stays a bird)
+    creature = known is not None and vocabulary.is_creature(word)
+    if entry.category == GENERIC and not creature or (human and entry.category == "machine"):
         entry = vocabulary.guess_agent(word, acts, human) or entry
     found = _verb_after(toks, head + 1)
     if entry.category == GENERIC and found is not None and found[0] in _VEHICLE_VERBS:
         entry = vocabulary.family("vehicle")  # "a zil is parked"
+    entry = known if entry.category == GENERIC and known is not None else entry
     if entry.category == GENERIC and any(t.text.endswith(_BODY_MARKS) for t in before):
         entry = vocabulary.family("animal")  # "a six-legged grazer", "a horned beast": a creature's body
     return entry

@@ -42,6 +42,7 @@ from scenewright.analysis.parser.grammar import (
     _SIDE_WORDS,
     _STANDING_HEIGHT,
     _STANDING_PARTS,
+    _THRESHOLDS,
     _VESSEL_KINDS,
     _TOOL_SIZE,
 )
@@ -2504,6 +2505,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "left of"  # the head of a table is one of its ends
             return "near"
         if kind == "in":  # "a man in a rocking chair", "a duck floats in the tub", "children in the bus": on it
+            if self._part in _THRESHOLDS:
+                return "near"  # "a tailor works in the doorway of his shop": at its edge, by it
             if self._living(s) and target.shape in _ENCLOSURES and self.groups[t].size[2] < _HUTCH_HEIGHT:
                 return "on"  # "a dog in each kennel", "hens in the coop": a hutch holds them as a cage does
             if self._living(s) and target.shape in _ENCLOSURES and self._carrier(t, ("perches",)):

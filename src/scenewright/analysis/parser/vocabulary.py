@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from importlib import resources
 
+from scenewright.analysis.parser import wordnet
 from scenewright.core.catalogue import load_catalogue, match_phrase, singular, words
 
 #: The family a thing nobody listed falls back to.
@@ -26,6 +27,9 @@ _PERSON_ENDINGS = ("ist", "ian", "eer", "eur", "euse", "maker", "smith", "wright
 #: Endings of agent nouns: a person when the text has them do what people do ("a picker is working"),
 #: a tool or a machine otherwise ("a heater", "a tractor").
 _AGENT_ENDINGS = ("er", "or", "ant", "ent")
+#: WordNet kinds too broad (or too many things' names) to tell a shape: the walk up stops there.
+_VAGUE_KINDS = frozenset({"device", "instrumentality", "artifact", "whole", "object", "canvas", "support",
+                          "covering", "equipment", "implement", "structure", "creation", "commodity"})  # fmt: skip
 #: Letters a word keeps before an ending for the ending to tell its family ("gator" is no machine).
 _MIN_STEM = 3
 #: Letters the listed noun that ends a closed compound must have to name it ("racehorse" is a horse;
@@ -189,6 +193,11 @@ class Vocabulary:
         if not w.isalpha() or len(w) < 3:
             return False
         # an ending makes an adjective only after a stem of its own ("tallest", not "nest" or "chest")
+        # ("smaller ones": WordNet's "one" is the number, but here it stands for a noun said before)
+        listed = one == "one" or self.match((one,)) is not None or match_phrase((one,)) is not None
+        known = None if listed else wordnet.names_a_thing(one)  # "a bout": an event; "a jellyfish"
+        if known is not None:
+            return known
         endings = ("ly", "ous", "ful", "ish", "less", "able", "ible", "ive", "ed", "est")
         return not any(w.endswith(e) and len(w) - len(e) >= _MIN_STEM for e in endings)
 
@@ -221,6 +230,12 @@ class Vocabulary:
         return w.endswith(_ADJECTIVE_ENDINGS) or not w.isalpha()
 
     def guess(self, head: str) -> Entry:
+        """A family for a noun nobody listed: by its form (:meth:`guess_by_form`), else by what
+        WordNet says it is, else a thing."""
+        entry = self.guess_by_form(head)
+        return self.guess_in_wordnet(head) or entry if entry.category == GENERIC else entry
+
+    def guess_by_form(self, head: str) -> Entry:
         """A family for a noun nobody listed, from its ending ("…saurus" → animal) or as a word that
         says whose someone is ("her colleague"), else a thing."""
         catalogue = load_catalogue()
@@ -251,6 +266,36 @@ class Vocabulary:
             if category is not None:
                 return Entry(category, catalogue[category].size, catalogue[category].rests)
         return None
+
+    def guess_in_wordnet(self, word: str) -> Entry | None:
+        """What WordNet says ``word`` is ("a musher" is a traveller, a person; "a sampan" a skiff, a
+        small boat, a boat): a person is a figure; anything else the nearest of its kinds that the
+        vocabulary or the catalogue names, else an animal's family when it is one, else None (a
+        body part, a thing of no kind drawn, a word WordNet does not know)."""
+        one = singular(word.lower())
+        sense = wordnet.kind_of_sense(one)
+        # (an agent noun that may also be a made thing is a person when the text has it act as one:
+        # :meth:`guess_agent`)
+        agent = one.endswith(_AGENT_ENDINGS) and not wordnet.only_people(one)
+        if sense in ("noun.person", "noun.body", None):
+            return self._family("figure") if sense == "noun.person" and not agent else None
+        catalogue = load_catalogue()
+        for kind in wordnet.kinds(one):
+            if kind in _VAGUE_KINDS:
+                break  # above these a kind says nothing of a shape ("device": a harpsichord, a winch)
+            tokens = tuple(words(kind))
+            entry = self.match(tokens)
+            if entry is not None:
+                return entry
+            category = match_phrase(tokens)
+            if category is not None:
+                return Entry(category, catalogue[category].size, catalogue[category].rests)
+        return self._family("animal") if sense == "noun.animal" else None
+
+    @staticmethod
+    def is_creature(word: str) -> bool:
+        """Whether WordNet knows ``word`` as an animal first ("a heron", "two cormorants")."""
+        return wordnet.kind_of_sense(singular(word.lower())) == "noun.animal"
 
     def guess_agent(self, head: str, acts: bool, human: bool = False) -> Entry | None:
         """A person for a noun nobody listed when the text has it do what people do: an agent
