@@ -435,3 +435,8 @@ def test_drinking_from_a_thing_is_by_it(text, expected, absent):
 def test_single_people_on_their_things_are_on_one_each():
     found = rels("A hall. The king and queen sit on their thrones.")
     assert {("king_1", "on", "throne_1"), ("queen_1", "on", "throne_2")} <= found
+
+
+def test_one_in_the_doorway_of_a_building_stands_by_it_not_inside():
+    assert ("keeper_1", "near", "house_1") in rels("The keeper stands in the doorway of his brick hut.")
+    assert ("woman_1", "near", "barn_1") in rels("A woman waits in the entrance of the barn.")

@@ -277,6 +277,14 @@ def test_a_definite_noun_nobody_listed_that_opens_a_placed_clause_is_a_thing():
     assert objects("The quern sits on the table.")[("machine", "quern")] == 1  # a hand mill, to WordNet
 
 
+def test_a_room_or_a_facility_nobody_listed_that_opens_the_text_is_the_setting():
+    parsed = parse_scene("A small county courtroom during a trial. A judge sits at the bench.")
+    assert [o.name for o in parsed.objects] == ["judge", "bench"] and "courtroom" in parsed.places
+    parsed = parse_scene("The canteen of a prison carved into an asteroid. A guard stands by the counter.")
+    assert "prison" not in [o.name for o in parsed.objects]
+    assert "pagoda" in names("On the far bank, a pagoda rises between two pine trees.")  # a building in the scene
+
+
 def test_wordnet_tells_people_and_creatures_from_events_and_parts():
     got = objects("Three mushers wait beside their sleds. Two cormorants dry their wings on a post.")
     assert got[("figure", "musher")] == 3 and got[("bird", "cormorant")] == 2, got

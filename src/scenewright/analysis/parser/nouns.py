@@ -1097,9 +1097,9 @@ _PLACE_WORDS = 6
 def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     """A place word used as the setting: "inside a hangar", "a hangar with a spaceship" (when the
     with-part names things), not "a barn stands behind the pond"."""
-    places = load_vocabulary().places
+    vocabulary = load_vocabulary()
     head = singular(toks[e - 1].text)
-    named = head in places or (e >= 2 and f"{toks[e - 2].text} {head}" in places)
+    named = vocabulary.names_place(head) or (e >= 2 and f"{toks[e - 2].text} {head}" in vocabulary.places)
     building = not named and _enterable(toks, s, e)
     if not (named or building):
         return False
@@ -1141,7 +1141,9 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     # the description opens with the place ("A cyberpunk hangar on the edge of the city, late at night.")
     opening = j < 0 or (toks[j].text in (".", "!", "?") and j == s - 1)
     follow = toks[e].text if e < len(toks) else "."
-    if opening and later and not later_before(later, toks, e) and (follow in (",", ".", ":", ";") or follow in ("on", "at", "in")):
+    # ("A small courtroom during a trial.", "A schoolroom for young rabbits.": when and for whom)
+    settled = follow in (",", ".", ":", ";") or follow in ("on", "at", "in", "during", "before", "after", "for")
+    if opening and later and not later_before(later, toks, e) and settled:
         return True
     if e < len(toks) and toks[e].text in _PLACE_OPENERS:
         starts = {r[0] for r in later}

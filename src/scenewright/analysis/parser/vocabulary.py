@@ -201,6 +201,15 @@ class Vocabulary:
         endings = ("ly", "ous", "ful", "ish", "less", "able", "ible", "ive", "ed", "est")
         return not any(w.endswith(e) and len(w) - len(e) >= _MIN_STEM for e in endings)
 
+    def names_place(self, word: str) -> bool:
+        """Whether ``word`` (singular) is a place word: listed as one, or a word nobody listed that
+        WordNet knows as a room, a building, a facility or an area ("a courtroom", "a racecourse"),
+        which the text may set the scene in."""
+        if word in self.places:
+            return True
+        listed = self.match((word,)) is not None or match_phrase((word,)) is not None
+        return not listed and wordnet.is_place(word)
+
     def is_place_compound(self, word: str) -> bool:
         """A compound nobody listed that ends in a place word ("a mown hayfield", "the farmland"):
         ground the scene stands on, no thing in it."""

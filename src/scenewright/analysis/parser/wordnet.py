@@ -147,6 +147,20 @@ def _seen_sense(word: str) -> Sense | None:
     return common[0]
 
 
+#: Kinds whose members are places a scene can be set in ("a courtroom" is a room, "a racecourse"
+#: a facility, "a prison" an establishment).
+PLACE_KINDS = frozenset({"room", "building", "facility", "establishment", "institution", "region",
+                         "geographical area", "tract", "site", "district", "place of worship"})  # fmt: skip
+
+
+def is_place(word: str) -> bool:
+    """Whether the first common sense of ``word`` that names something visible is a kind of
+    place ("a gymnasium" is a school first, then a hall; "a boot" footwear before a car's boot)."""
+    meanings, tagged = _entry(word)
+    visible = next((s for s in meanings[: 1 if tagged == 1 else _COMMON] if s.lexname in VISIBLE), None)
+    return visible is not None and any(kind in PLACE_KINDS for kind in _kinds_of(visible))
+
+
 def only_people(word: str) -> bool:
     """Whether every sense of ``word`` that names something visible names a person ("a fencer",
     "a restorer"; not "a planter", also a pot, nor "a crawler", also a worm)."""
@@ -169,18 +183,21 @@ def kind_of_sense(word: str) -> str | None:
 def kinds(word: str) -> Iterator[str]:
     """What ``word``, in the sense it names something visible, is a kind of, nearest first, each
     kind by its first name ("cormorant" → "pelecaniform seabird", "seabird", "aquatic bird",
-    "bird", ...): its other names are often another thing's ("closet", "organ"). The walk stays
-    within the sense's own kind (animals, made things, food)."""
+    "bird", ...): its other names are often another thing's ("closet", "organ")."""
     visible = _seen_sense(word)
-    if visible is None:
-        return
-    layer, seen = list(visible.hypernyms), set()
+    return _kinds_of(visible) if visible is not None else iter(())
+
+
+def _kinds_of(meaning: Sense) -> Iterator[str]:
+    """The kinds above one sense, nearest first, within the sense's own kind of sense (animals,
+    made things, food): above it a word names other things (beer is no "agent")."""
+    layer, seen = list(meaning.hypernyms), set()
     for _ in range(_DEPTH):
         above = []
         for offset in layer:
             sense = _synset(offset)
-            if offset in seen or sense is None or sense.lexname != visible.lexname:
-                continue  # (above its own kind of sense a word names other things: beer is no "agent")
+            if offset in seen or sense is None or sense.lexname != meaning.lexname:
+                continue
             seen.add(offset)
             yield sense.words[0].lower().replace("_", " ")
             above += sense.hypernyms
