@@ -192,12 +192,12 @@ class Vocabulary:
             return False  # "a smaller skeleton": no "smaller" of its own
         if not w.isalpha() or len(w) < 3:
             return False
-        # an ending makes an adjective only after a stem of its own ("tallest", not "nest" or "chest")
-        # ("smaller ones": WordNet's "one" is the number, but here it stands for a noun said before)
-        listed = one == "one" or self.match((one,)) is not None or match_phrase((one,)) is not None
-        known = None if listed else wordnet.names_a_thing(one)  # "a bout": an event; "a jellyfish"
+        # what WordNet knows of a word nobody listed ("a bout" is an event, "a jellyfish" a thing; its
+        # "one" is the number, though "smaller ones" stand for a noun said before)
+        known = None if one == "one" or self._entry_of((one,)) is not None else wordnet.names_a_thing(one)
         if known is not None:
             return known
+        # an ending makes an adjective only after a stem of its own ("tallest", not "nest" or "chest")
         endings = ("ly", "ous", "ful", "ish", "less", "able", "ible", "ive", "ed", "est")
         return not any(w.endswith(e) and len(w) - len(e) >= _MIN_STEM for e in endings)
 
@@ -205,10 +205,7 @@ class Vocabulary:
         """Whether ``word`` (singular) is a place word: listed as one, or a word nobody listed that
         WordNet knows as a room, a building, a facility or an area ("a courtroom", "a racecourse"),
         which the text may set the scene in."""
-        if word in self.places:
-            return True
-        listed = self.match((word,)) is not None or match_phrase((word,)) is not None
-        return not listed and wordnet.is_place(word)
+        return word in self.places or (self._entry_of((word,)) is None and wordnet.is_place(word))
 
     def is_place_compound(self, word: str) -> bool:
         """A compound nobody listed that ends in a place word ("a mown hayfield", "the farmland"):
@@ -242,7 +239,7 @@ class Vocabulary:
         """A family for a noun nobody listed: by its form (:meth:`guess_by_form`), else by what
         WordNet says it is, else a thing."""
         entry = self.guess_by_form(head)
-        return self.guess_in_wordnet(head) or entry if entry.category == GENERIC else entry
+        return (self.guess_in_wordnet(head) or entry) if entry.category == GENERIC else entry
 
     def guess_by_form(self, head: str) -> Entry:
         """A family for a noun nobody listed, from its ending ("…saurus" → animal) or as a word that
@@ -265,16 +262,19 @@ class Vocabulary:
 
     def _compound_head(self, word: str) -> Entry | None:
         """The entry of the longest listed noun that ends ``word`` after a stem of its own, else None."""
-        catalogue = load_catalogue()
-        for i in range(_MIN_STEM, len(word) - _MIN_HEAD + 1):
-            tail = word[i:]
-            entry = self.match((tail,))
-            if entry is not None:
-                return entry
-            category = match_phrase((tail,))
-            if category is not None:
-                return Entry(category, catalogue[category].size, catalogue[category].rests)
-        return None
+        tails = (self._entry_of((word[i:],)) for i in range(_MIN_STEM, len(word) - _MIN_HEAD + 1))
+        return next((entry for entry in tails if entry is not None), None)
+
+    def _entry_of(self, tokens: tuple[str, ...]) -> Entry | None:
+        """The entry the vocabulary or else the catalogue has for a word tuple, else None."""
+        entry = self.match(tokens)
+        if entry is not None:
+            return entry
+        category = match_phrase(tokens)
+        if category is None:
+            return None
+        record = load_catalogue()[category]
+        return Entry(category, record.size, record.rests)
 
     def guess_in_wordnet(self, word: str) -> Entry | None:
         """What WordNet says ``word`` is ("a musher" is a traveller, a person; "a sampan" a skiff, a
@@ -288,17 +288,12 @@ class Vocabulary:
         agent = one.endswith(_AGENT_ENDINGS) and not wordnet.only_people(one)
         if sense in ("noun.person", "noun.body", None):
             return self._family("figure") if sense == "noun.person" and not agent else None
-        catalogue = load_catalogue()
         for kind in wordnet.kinds(one):
             if kind in _VAGUE_KINDS:
                 break  # above these a kind says nothing of a shape ("device": a harpsichord, a winch)
-            tokens = tuple(words(kind))
-            entry = self.match(tokens)
+            entry = self._entry_of(tuple(words(kind)))
             if entry is not None:
                 return entry
-            category = match_phrase(tokens)
-            if category is not None:
-                return Entry(category, catalogue[category].size, catalogue[category].rests)
         return self._family("animal") if sense == "noun.animal" else None
 
     @staticmethod
