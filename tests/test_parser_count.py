@@ -214,3 +214,9 @@ def test_counts_in_words_between_twelve_and_twenty_are_read():
 def test_several_counted_on_each_side_are_that_many_a_side_and_on_either_side_one_each():
     assert counts("Two players stand on each side of the net.")["player"] == 4
     assert counts("Two lamps stand on either side of the bed.")["lamp"] == 2
+
+
+def test_a_definite_plural_named_before_its_counted_group_is_that_group():
+    text = "A librarian holds up a picture book for the children to see. Nine children sit on a rug in front of him."
+    assert counts(text)["child"] == 9
+    assert counts("Two boys kick a ball. The boys laugh while three girls watch.")["boy"] == 2  # back, as before

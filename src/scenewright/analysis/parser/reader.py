@@ -523,6 +523,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         for m in mentions:
             _read_count(toks, m, prev_end)
             prev_end = m.end
+        _refer_forward(toks, mentions)
         #: (mention start, holder mention start): "a tray of bottles" puts the bottles on the tray.
         self.held_of: list[tuple[int, int]] = []
         #: (thing, person): a thing in its holder's hands ("a miner with a pickaxe").
@@ -2566,3 +2567,20 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             cover = self.groups[t].rests == "ground" and self.groups[t].size[2] < 0.1
             return "on" if cover or self._platform(t, s) else "near"
         return _KIND_RELATION.get(kind, kind)
+
+
+def _refer_forward(toks: list[_Tok], mentions: list[_Mention]) -> None:
+    """"Holding up a book for the children to see. Nine children sit on a rug": a definite plural
+    nothing before names is the counted group the text introduces later, which then refers back
+    to it (its count is theirs), rather than three more."""
+    for k, m in enumerate(mentions):
+        if not (m.definite and not m.counted and _is_plural(toks, m)):
+            continue
+        head = singular(m.phrase.split()[-1].lower())
+        same = [o for o in mentions if o.category == m.category and singular(o.phrase.split()[-1].lower()) == head]
+        if same[0] is not m:
+            continue  # named before: an ordinary reference back
+        later = next((o for o in same[1:] if o.counted and not o.definite), None)
+        if later is not None:
+            later.definite = True
+
