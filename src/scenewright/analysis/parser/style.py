@@ -106,7 +106,9 @@ def _media(text: str) -> list[_Medium]:
     clause = re.split(r"[.,:;!?()]|\s[-–—]\s", low, maxsplit=1)[0]
     start = re.match(r"^\W*(?:(?:an?|the)\s+)?", clause).end()
     opening, end = _noun_phrase(clause[start:], joins=("of", "from", "and"))  # its "in ..." comes next
-    if opening and (opening[-1] in media_heads() or _names_a_look(opening)) and not _PLACED.search(clause):
+    # ("A boy reads a comic book": an article inside, after no "of", opens the object of a verb)
+    told = any(w in _ARTICLES and before not in ("of", "from", "and") for before, w in zip(opening, opening[1:]))
+    if opening and not told and (opening[-1] in media_heads() or _names_a_look(opening)) and not _PLACED.search(clause):
         found.append(_Medium(opening, (0, len(clause.split(" of ")[0]))))
     after = re.match(r"\s*in\s+(?:(?:an?|the)\s+)?", clause[start + end :])
     if opening and after:
@@ -261,8 +263,11 @@ def detect_style(text: str, default: str = DEFAULT_STYLE) -> str:
             ranks = [(1, at + phrase.find(f" {w} "), -len(w), look.name) for at, phrase in media if f" {w} " in phrase]
             pos = low.find(f" {w} ")
             if pos >= 0:
+                # (a look's words hyphened describe the next noun: "a picture-book village", not the
+                # book a girl holds up)
+                hyphened = " " in w and f"{w.replace(' ', '-')} " in text.lower()
                 styled = low[pos + len(w) + 2 :].startswith(("style", "styled", "look", "aesthetic"))
-                if styled or w not in look.styled:
+                if styled or hyphened or w not in look.styled:
                     ranks.append((0 if styled else 1, pos, -len(w), look.name))
             for rank in ranks:
                 if best is None or rank < best:
