@@ -47,3 +47,7 @@ def test_without_the_data_every_word_is_unknown_and_the_reader_keeps_its_own_rul
         assert load_vocabulary().guess("cormorant").category == "thing"
     finally:
         wordnet._entry.cache_clear()
+
+
+def test_the_top_of_the_tree_still_names_things():
+    assert wordnet.names_a_thing("animal") and wordnet.names_a_thing("person")  # noun.Tops, as "event" is

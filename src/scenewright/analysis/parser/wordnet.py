@@ -25,8 +25,9 @@ from pathlib import Path
 VISIBLE = frozenset({"noun.artifact", "noun.animal", "noun.person", "noun.plant", "noun.food", "noun.object",
                      "noun.body", "noun.substance"})  # fmt: skip
 #: Kinds of sense that may still be seen: a document ("a logbook", "a scorecard") is writing to
-#: WordNet, a crew or a couple a group of people, a checkpoint a place.
-_SEEN_AS_WELL = frozenset({"noun.communication", "noun.group", "noun.location"})
+#: WordNet, a crew or a couple a group of people, a checkpoint a place; and the top of its tree
+#: holds "animal", "person" and "plant" beside "event".
+_SEEN_AS_WELL = frozenset({"noun.communication", "noun.group", "noun.location", "noun.Tops"})
 #: How many hypernym steps a kind may lie above the word and still tell what it looks like
 #: ("sampan → skiff → small boat → boat"); higher up they name no shape ("artifact", "whole").
 _DEPTH = 6
