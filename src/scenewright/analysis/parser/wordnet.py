@@ -132,15 +132,20 @@ def senses(word: str) -> tuple[Sense, ...]:
     return _entry(word)[0]
 
 
+def _common(word: str) -> tuple[Sense, ...]:
+    """The senses of ``word`` a reader may mean: its most frequent, and the next when WordNet's
+    corpus saw that one too, or saw neither ("a mare" is a horse: the corpus never met the lunar
+    plain)."""
+    meanings, tagged = _entry(word)
+    return meanings[: 1 if tagged == 1 else _COMMON]
+
+
 def _seen_sense(word: str) -> Sense | None:
     """The sense a reader takes ``word`` in: its most frequent, when that names something visible
     and no other common sense names another kind of visible thing ("a smoker" is a person or a
     bee-keeper's tool, "a claw" a creature's or a crane's: for the text to tell); None otherwise
-    ("a date" is a day before it is a companion, "a page" writing before a boy). The second sense
-    is common when the corpus saw it, or when it saw neither ("a mare" is a horse: the corpus never
-    met the lunar plain)."""
-    meanings, tagged = _entry(word)
-    common = meanings[: 1 if tagged == 1 else _COMMON]
+    ("a date" is a day before it is a companion, "a page" writing before a boy)."""
+    common = _common(word)
     if not common or common[0].lexname not in VISIBLE:
         return None
     if any(s.lexname in VISIBLE and s.lexname != common[0].lexname for s in common[1:]):
@@ -157,8 +162,7 @@ PLACE_KINDS = frozenset({"room", "building", "facility", "establishment", "insti
 def is_place(word: str) -> bool:
     """Whether the first common sense of ``word`` that names something visible is a kind of
     place ("a gymnasium" is a school first, then a hall; "a boot" footwear before a car's boot)."""
-    meanings, tagged = _entry(word)
-    visible = next((s for s in meanings[: 1 if tagged == 1 else _COMMON] if s.lexname in VISIBLE), None)
+    visible = next((s for s in _common(word) if s.lexname in VISIBLE), None)
     return visible is not None and any(kind in PLACE_KINDS for kind in _kinds_of(visible))
 
 
