@@ -139,8 +139,8 @@ def assign_keys(objects: Iterable[tuple[str, str | None, str]], keys: Iterable[s
     )
     out: dict[str, str] = {}
     for object_id, category, name in objects:
-        named = _name_words(name)
-        head = singular(words(name)[-1]) if words(name) else ""
+        named, said = _name_words(name), words(name)
+        head = singular(said[-1]) if said else ""
         own = next((key for key, need in open_keys if need and need <= named and head in need), None)
         if category in keys and (own is None or _name_words(category.replace("_", " ")) <= named):
             out[object_id] = category  # (a "gas lamp post" is the lamp post its name says, not a post)

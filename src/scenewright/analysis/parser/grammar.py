@@ -85,8 +85,8 @@ _FLOOR_WORDS = ("floor", "floorboards", "ground", "deck")
 #: Vehicles with a roof and doors of their own.
 _ROOFED_VEHICLES = ("car", "truck", "bus", "vehicle")
 #: Parts of a building that place a thing by the building itself when nothing else is named.
-_BUILDING_PARTS = ("roof", "rooftop", "porch", "step", "doorstep", "chimney", "eave", "gable", "veranda", "facade", "door", "doorway", "balcony",
-                   "entrance", "gateway")
+_BUILDING_PARTS = ("roof", "rooftop", "porch", "step", "doorstep", "chimney", "eave", "gable", "veranda", "facade",
+                   "door", "doorway", "balcony", "entrance", "gateway")
 #: Parts of a building one stands *in* at its edge, outside it: by the building ("in the doorway of his shop").
 _THRESHOLDS = ("door", "doorway", "entrance", "gateway")
 #: Carriers anything smaller is on when it is *in* them ("in the tub", "in the canoe", "a broom in the

@@ -2573,7 +2573,7 @@ def _refer_forward(toks: list[_Tok], mentions: list[_Mention]) -> None:
     """"Holding up a book for the children to see. Nine children sit on a rug": a definite plural
     nothing before names is the counted group the text introduces later, which then refers back
     to it (its count is theirs), rather than three more."""
-    for k, m in enumerate(mentions):
+    for m in mentions:
         if not (m.definite and not m.counted and _is_plural(toks, m)):
             continue
         head = singular(m.phrase.split()[-1].lower())
@@ -2583,4 +2583,3 @@ def _refer_forward(toks: list[_Tok], mentions: list[_Mention]) -> None:
         later = next((o for o in same[1:] if o.counted and not o.definite), None)
         if later is not None:
             later.definite = True
-
