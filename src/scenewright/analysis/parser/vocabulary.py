@@ -244,7 +244,6 @@ class Vocabulary:
     def guess_by_form(self, head: str) -> Entry:
         """A family for a noun nobody listed, from its ending ("…saurus" → animal) or as a word that
         says whose someone is ("her colleague"), else a thing."""
-        catalogue = load_catalogue()
         one = singular(head.lower())
         if one in self.relational:
             return self._family("figure")  # "her colleague", "a companion": a word for whose someone is names a person
@@ -257,8 +256,7 @@ class Vocabulary:
         ending = next((e for e in _PERSON_ENDINGS if one.endswith(e)), None)
         if ending is not None and len(one) - len(ending) >= _MIN_STEM:
             return self._family("figure")  # "a florist", "two technicians", "a puppeteer", "a watchmaker"
-        category = catalogue[GENERIC]
-        return Entry(GENERIC, category.size, category.rests)
+        return self._family(GENERIC)
 
     def _compound_head(self, word: str) -> Entry | None:
         """The entry of the longest listed noun that ends ``word`` after a stem of its own, else None."""
@@ -271,10 +269,7 @@ class Vocabulary:
         if entry is not None:
             return entry
         category = match_phrase(tokens)
-        if category is None:
-            return None
-        record = load_catalogue()[category]
-        return Entry(category, record.size, record.rests)
+        return self._family(category) if category is not None else None
 
     def guess_in_wordnet(self, word: str) -> Entry | None:
         """What WordNet says ``word`` is ("a musher" is a traveller, a person; "a sampan" a skiff, a

@@ -24,10 +24,10 @@ from pathlib import Path
 #: The kinds of sense (WordNet's lexicographer files) that name something a scene can show.
 VISIBLE = frozenset({"noun.artifact", "noun.animal", "noun.person", "noun.plant", "noun.food", "noun.object",
                      "noun.body", "noun.substance"})  # fmt: skip
-#: Kinds of sense that may still be seen: a document ("a logbook", "a scorecard") is writing to
-#: WordNet, a crew or a couple a group of people, a checkpoint a place; and the top of its tree
-#: holds "animal", "person" and "plant" beside "event".
-_SEEN_AS_WELL = frozenset({"noun.communication", "noun.group", "noun.location", "noun.Tops"})
+#: Kinds of sense a thing of the scene may be filed under: those, and writing ("a logbook", "a
+#: scorecard"), groups ("a crew"), places ("a checkpoint") and the top of the tree, where "animal",
+#: "person" and "plant" stand beside "event".
+_SEEN = VISIBLE | {"noun.communication", "noun.group", "noun.location", "noun.Tops"}
 #: How many hypernym steps a kind may lie above the word and still tell what it looks like
 #: ("sampan → skiff → small boat → boat"); higher up they name no shape ("artifact", "whole").
 _DEPTH = 6
@@ -176,7 +176,7 @@ def names_a_thing(word: str) -> bool | None:
     """Whether ``word`` can name something a scene shows, in any of its senses ("a bout", "the
     trial" cannot); None when WordNet does not know it."""
     meanings = senses(word)
-    return any(s.lexname in VISIBLE | _SEEN_AS_WELL for s in meanings) if meanings else None
+    return any(s.lexname in _SEEN for s in meanings) if meanings else None
 
 
 def kind_of_sense(word: str) -> str | None:
