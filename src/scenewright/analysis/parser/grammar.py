@@ -48,7 +48,7 @@ _MAKESHIFT_HEIGHT, _MAKESHIFT_LENGTH = 1.0, 2.5
 #: the table in front of the fireplace" (the table is), "lanterns hang from the branches of a tree
 #: behind the chairs" (the tree is).
 _CHAIN_KINDS = ("on", "on top", "near", "around", "side of", "at", "in", "from", "above", "over", "hanging from",
-                "on a carrier", "covering")  # fmt: skip
+                "on a carrier", "driving", "covering")  # fmt: skip
 #: Parts of a thing one stands on: "at" one is on the thing ("at its top", "at its prow", "at the stern").
 _STANDING_PARTS = ("top", "roof", "rooftop", "deck", "prow", "bow", "stern")
 #: Parts of a vehicle one steers it by: "at" one is on the vehicle ("a woman at the wheel").

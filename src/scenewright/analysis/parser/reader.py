@@ -554,6 +554,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # where the rope comes from
         found = [r for r in _find_relations(toks, taken)
                  if (r.kind != "at" or self._names_thing(r.end, starts)) and (r.kind != "covering" or self._covers(r))
+                 and (r.kind != "driving" or self._drives(r.end, mentions))
                  and not self._rung(r, mentions)]
         self.rel_at = {
             r.start: r for r in found
@@ -2160,6 +2161,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self.worked_at.update((s, targets[-1]) for s in srcs if self._living(s))
         c.produced = True
         c.rels = [(kind, targets)]
+        if kind == "driving":
+            c.main = list(targets)  # "drives a quad bike, towing a trailer": the bike tows it
         if kind in ("on", "in", "on top"):
             for s in srcs:
                 c.supports.setdefault(s, []).extend(targets)
@@ -2350,6 +2353,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._names_thing(k + 1, starts)
         )
 
+    def _drives(self, start: int, mentions: list[_Mention]) -> bool:
+        """A vehicle follows a driving verb ("drives a quad bike", "steers the barge"): the driver
+        is aboard. What one drives otherwise is herded, not ridden ("a collie drives the sheep")."""
+        m = next((m for m in mentions if m.start >= start), None)
+        between = [t.text for t in self.toks[start : m.start]] if m else []
+        near = m is not None and all(w in _DETERMINERS or (w[:1].isalpha() and w not in _STOP) for w in between)
+        return near and load_vocabulary().carries(m.category, m.phrase.lower(), ("vehicles",))
+
     def _names_thing(self, start: int, starts: set[int]) -> bool:
         """A noun phrase of a thing follows ("at each desk"), not a time or a part ("at one end")."""
         k = start
@@ -2524,6 +2535,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "on"  # "orange trees grow in terracotta planters": each stands in its own
             holds = target.shape in _SEATS or target.support or self._carrier(t, _VESSEL_KINDS)
             return "on" if holds and target.size[2] <= 2.5 else "no relation"
+        if kind == "driving":
+            return "on" if self._living(s) else "no relation"  # "a farmhand drives a quad bike": aboard it
         if kind in ("from", "on a carrier"):
             # "a heron watches from a rock", "a guard waves from the tower", "a peacock struts across
             # its roof", "a cat peeks out of the box": on it (across anything else one only passes);
