@@ -749,6 +749,18 @@ def test_a_place_word_a_telling_sentence_puts_a_thing_outside_of_is_a_building()
     assert not any(w == "bakery" for _, w in objects("A bakery beside the canal, with a cat on the counter."))
 
 
+def test_a_place_word_nobody_listed_as_a_building_is_one_by_its_wordnet_kind():
+    # rooms and businesses are built: placed above or by, they stand there
+    assert objects("A busy newsroom. A big clock hangs above the glass office.")[("house", "office")] == 1
+    assert objects("A quay at dawn. Two ambulances wait by the harbour office.")[("house", "office")] == 1
+    got = objects("A fishing boat lies on top of a warehouse, and a dog barks in the middle of the street.")
+    assert got[("warehouse", "warehouse")] == 1 and not any(w == "street" for _, w in got), got  # open ground is none
+    # a bar one stands behind is its counter; inside a room ("at the back of the shop") it stays the setting
+    assert objects("A jazz club. The bartender waits behind the long bar.")[("counter", "bar")] == 1
+    got = objects("A small boutique. The counter is at the back of the shop.")
+    assert not any(w == "shop" for _, w in got), got
+
+
 def test_a_definite_word_nobody_listed_that_a_thing_is_put_by_is_a_thing():
     got = objects("A timber camp. A mule waits beside the smokehouse, and a sled stands between the woodpile and the zorbulator.")
     assert got[("house", "smokehouse")] == 1  # "-house" names a house
@@ -812,7 +824,8 @@ def test_an_agent_noun_in_clothes_is_a_person():
 def test_what_a_thing_is_made_from_is_no_thing_of_its_own():
     got = objects("A lamp made from an old teapot hangs above a table, and a canoe carved out of a log lies on the bank.")
     assert not any(w in ("teapot", "log") for _, w in got) and any(w == "canoe" for _, w in got)
-    assert names("A stool made from a barrel stands by the bar.") == {"stool"}  # no kind of the next thing either
+    # no kind of the next thing either (the bar is the counter the stool stands by)
+    assert names("A stool made from a barrel stands by the bar.") == {"stool", "bar"}
 
 
 def test_a_train_of_things_counts_them():

@@ -402,9 +402,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         ):  # "an abandoned factory floor with a conveyor belt"
             places.append(" ".join(words))
             continue
-        building = vocabulary.buildings.get((*words[:-1], singular(words[-1])))
         if " ".join(words) in places and s > 0 and toks[s - 1].text in _DEFINITE:
-            if building is None or not _placed_by(toks, s - 1):
+            building = vocabulary.building(tuple(words)) if _placed_by(toks, s - 1) else None
+            if building is None:
                 continue  # "the middle of the cabin" after "The captain's cabin of a ship": the setting again
             cat, entry = building.category, building  # "a diner in the desert ... parked in front of the diner"
         shape = load_catalogue()[cat].shape
@@ -1114,19 +1114,15 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
         return not water
     if head in load_vocabulary().landforms and j >= 0 and (_landform_part(toks, j) or _by_landform(toks, j)):
         return False  # "a dragon sleeps on top of a hill", "flies over a volcano": the hill is a thing here
-    if j >= 0 and toks[j].text in _DETERMINERS and _placed_by(toks, j) and not _verbless_opening(toks, j):
-        return False  # "a mule waits beside the tavern": a building of the scene (_buildings)
-    if _outside_part_of(toks, j + 1) and not _verbless_opening(toks, j):
-        return False  # "pigeons sit on the roof of the tavern": seen from outside, a building of the scene
+    placed = toks[j + 1].text in _DETERMINERS and _placed_by(toks, j + 1, _OUTSIDE_KINDS) and not _inner_part_of(toks, j)
+    if (placed or _outside_part_of(toks, j + 1)) and not _verbless_opening(toks, j):
+        return False  # "a mule waits beside the tavern", "pigeons sit on the roof of the tavern": seen
+        # from outside, a building of the scene (_buildings)
     if _opening_setting(toks, s, e):
         return True
     if building:
         return False
-    # "on the top floor of a converted warehouse": a part of the place holds the scene
-    if j > 0 and toks[j].text == "of" and toks[j - 1].text in (
-        "floor", "top", "edge", "roof", "corner", "end", "back", "middle", "centre", "center", "rear", "interior",
-        "inside",
-    ):  # fmt: skip
+    if _inner_part_of(toks, j):
         return True
     listing = any(t.text in _PLACE_OPENERS for t in toks[:j])  # "a garden with a pond by the greenhouse"
     if j >= 0 and toks[j].text in _SETTING_PREPOSITIONS and _verbless_opening(toks, j) and not listing:
@@ -1155,6 +1151,20 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
                 break
             k += 1
     return False
+
+
+#: Parts of a place the scene can stand in ("on the top floor of a warehouse", "at the back of the shop").
+_INNER_PARTS = {"floor", "top", "edge", "roof", "corner", "end", "back", "middle", "centre", "center", "rear",
+                "interior", "inside"}  # fmt: skip
+
+
+def _inner_part_of(toks: list[_Tok], j: int) -> bool:
+    """The words up to ``j`` end in a part of the place after them ("on the top floor of [a
+    converted warehouse]", "at the back of [the shop]"): the place holds the scene (but "on top
+    of [a warehouse]" puts a thing on it)."""
+    return j > 0 and toks[j].text == "of" and toks[j - 1].text in _INNER_PARTS and not (
+        j > 1 and toks[j - 2].text in ("on", "onto")
+    )
 
 
 #: Prepositions that tie the opening's place to a wider one ("a base on a rocky shoulder").
@@ -1793,34 +1803,45 @@ def _agent_compound(rest: str) -> bool:
 _BUILDING_STANDS = {"stands", "sits", "rises", "looms", "towers", "squats", "perches", "nestles"}
 
 
+#: Phrase kinds that put a thing outside a building of the scene ("above the glass office").
+_OUTSIDE_KINDS = _BY_KINDS | {"above", "on top"}
+
+
+def _outside_of(toks: list[_Tok], i: int) -> bool:
+    """The noun phrase opening at ``i`` names what a thing stands outside of ("beside [the tavern]",
+    "above [the glass office]"), or a part of it seen from outside ("on the roof of [the inn]")."""
+    return _placed_by(toks, i, _OUTSIDE_KINDS) or _outside_part_of(toks, i)
+
+
 def _buildings(toks: list[_Tok], covered: set[int]) -> list:
     """A place word sets the scene ("a tavern at dusk"), but one a telling sentence puts a thing
     outside of is a building of the scene ("a mule waits beside the tavern", "milk churns stand at
     the foot of the little waiting room"), and so is one a clause has stand somewhere ("a saloon
     stands on the left"); inside it ("in the tavern") it stays the setting."""
-    table = load_vocabulary().buildings
+    vocabulary = load_vocabulary()
     out: list = []
     for k, t in enumerate(toks):
+        if not t.text[:1].isalpha() or t.text in _STOP or t.quoted:
+            continue
         for width in (2, 1):
-            words = tuple(u.text for u in toks[k : k + width])
-            entry = table.get((*words[:-1], singular(words[-1]))) if len(words) == width else None
-            if entry is None or any(x in covered for x in range(k, k + width)) or t.quoted:
+            if k + width > len(toks) or any(x in covered for x in range(k, k + width)):
                 continue
             after = toks[k + width].text if k + width < len(toks) else "."
             if after[:1].isalpha() and after not in _STOP and not _is_verb(after):
-                break  # "the tavern keeper": a longer phrase, read by the other rules
+                continue  # "the tavern keeper": a longer phrase, read by the other rules
             j = k - 1
             while j >= 0 and toks[j].text[:1].isalpha() and (
                 toks[j].text not in _STOP or toks[j].joined or toks[j + 1].joined
             ):
                 j -= 1  # back over describing words ("the little waiting room", "a false-front saloon")
-            placed = j >= 0 and (_placed_by(toks, j) or _outside_part_of(toks, j))  # ("on the roof of the inn")
             # "a saloon stands on the left": a building a clause opens with, standing somewhere
             stands = j >= 0 and toks[j].text in ("a", "an") and after in _BUILDING_STANDS and (
                 j == 0 or toks[j - 1].text in (".", "!", "?", ";", ",", "and")
             )
-            if not stands and (not placed or toks[j].text not in _DETERMINERS or _verbless_opening(toks, j)):
-                break
+            seen = j >= 0 and toks[j].text in _DETERMINERS and _outside_of(toks, j) and not _verbless_opening(toks, j)
+            entry = vocabulary.building(tuple(u.text for u in toks[k : k + width])) if stands or seen else None
+            if entry is None:
+                continue
             end = k + width
             out.append((k, end, entry.category, entry))
             covered.update(range(k, end))

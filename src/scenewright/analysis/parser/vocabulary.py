@@ -30,6 +30,12 @@ _AGENT_ENDINGS = ("er", "or", "ant", "ent")
 #: WordNet kinds too broad (or too many things' names) to tell a shape: the walk up stops there.
 _VAGUE_KINDS = frozenset({"device", "instrumentality", "artifact", "whole", "object", "canvas", "support",
                           "covering", "equipment", "implement", "structure", "creation", "commodity"})  # fmt: skip
+#: WordNet kinds of a place word that make it a room of a larger place ("an office", "a kitchen",
+#: "a wheelhouse"), drawn as a box of :data:`_ROOM_BOX` metres, or a building of the scene.
+_ROOM_KINDS = frozenset({"room", "compartment"})
+_ROOM_BOX = (4.0, 3.0, 3.0)
+_BUILDING_KINDS = frozenset({"building", "place of business", "establishment", "facility", "outbuilding",
+                             "farm building", "place of worship", "mercantile establishment"})  # fmt: skip
 #: Letters a word keeps before an ending for the ending to tell its family ("gator" is no machine).
 _MIN_STEM = 3
 #: Letters the listed noun that ends a closed compound must have to name it ("racehorse" is a horse;
@@ -206,6 +212,24 @@ class Vocabulary:
         WordNet knows as a room, a building, a facility or an area ("a courtroom", "a racecourse"),
         which the text may set the scene in."""
         return word in self.places or (self._entry_of((word,)) is None and wordnet.is_place(word))
+
+    def building(self, tokens: tuple[str, ...]) -> Entry | None:
+        """What a place word is when the text puts a thing outside it ("a clock hangs above the glass
+        office", "ambulances wait by the harbour office"): the building the vocabulary lists, else, for
+        a place word nobody listed as one, a room-sized box when WordNet files it under rooms, a house
+        when under buildings or businesses; None for open ground ("the street", "the square")."""
+        key = (*tokens[:-1], singular(tokens[-1])) if tokens else ()
+        if key in self.buildings or not key:
+            return self.buildings.get(key)
+        head = key[-1]
+        if len(key) > 1 and " ".join(key) not in self.places or not (head in self.places or self.names_place(head)):
+            return None  # ("the long bar", "the harbour office": the head word's)
+        built = set(wordnet.kinds(head))
+        if built & _ROOM_KINDS:
+            return Entry("house", _ROOM_BOX, load_catalogue()["house"].rests)
+        if built & _BUILDING_KINDS:
+            return self._family("house")
+        return None
 
     def is_place_compound(self, word: str) -> bool:
         """A compound nobody listed that ends in a place word ("a mown hayfield", "the farmland"):
