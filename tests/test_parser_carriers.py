@@ -31,6 +31,12 @@ def rels(text: str) -> set[tuple[str, str, str]]:
         ("A grandstand faces the pitch, and the mayor sits on a throne in the centre of it.", ("throne_1", "on", "grandstand_1")),
         # "rides" puts the rider on what is ridden
         ("A farmer rides a tractor across the field, and his dog runs beside it.", ("farmer_1", "on", "tractor_1")),
+        # one who drives, steers or pilots a vehicle is aboard it; two ride a mount
+        ("A farmhand drives a quad bike along the fence.", ("farmhand_1", "on", "bicycle_1")),
+        ("A bargee steers the narrowboat under the bridge.", ("bargee_1", "on", "narrowboat_1")),
+        ("Two children ride a giant tortoise past the gift shop.", ("child_2", "on", "tortoise_1")),
+        # what one does from a perch with nothing acted on is done up there, from a part of it too
+        ("A village green. A fiddler plays from the back of a hay cart.", ("fiddler_1", "on", "cart_1")),
         # "its" names no person: the boat's bow, not the fisherman's
         ("An old fisherman sits in his boat by the jetty, and a gull perches on its bow.", ("gull_1", "on", "boat_1")),
         # a sitting person's own seat is the one they sit on
@@ -440,3 +446,14 @@ def test_single_people_on_their_things_are_on_one_each():
 def test_one_in_the_doorway_of_a_building_stands_by_it_not_inside():
     assert ("keeper_1", "near", "house_1") in rels("The keeper stands in the doorway of his brick hut.")
     assert ("woman_1", "near", "barn_1") in rels("A woman waits in the entrance of the barn.")
+
+
+def test_what_one_drives_that_is_no_vehicle_is_herded_and_a_vehicle_tows_for_its_driver():
+    found = rels("A hillside. A collie drives five sheep towards a small pen.")
+    assert not any(r[0] == "collie_1" and r[1] == "on" for r in found), found
+    found = rels("A farm. A farmhand drives a quad bike along the fence, towing a small trailer.")
+    assert ("trailer_1", "behind", "bicycle_1") in found, found
+
+
+def test_one_who_leaves_a_perch_is_not_on_it():
+    assert not any(r[1] == "on" for r in rels("A lay-by. A driver climbs from the cab of a lorry."))

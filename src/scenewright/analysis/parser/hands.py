@@ -23,6 +23,7 @@ from scenewright.analysis.parser.words import (
     _HANG_VERBS,
     _HOLD,
     _LEAD_VERBS,
+    _LEAVING_VERBS,
     _NOT_IN_HAND,
     _NUMBERS,
     _ORDINALS,
@@ -332,6 +333,10 @@ class _Hands:
         that is named by a pronoun, lives or is too big to hold ("plays it from a narrow bench",
         "two children feed ducks from a footbridge"; not "pulls a rope from the barrel")."""
         perch = self._next_mention(k + 1, len(self.toks))
+        if perch is None and [t.text in _DETERMINERS for t in self.toks[k + 1 : k + 2]] == [True] and (
+            k + 3 < len(self.toks) and self.toks[k + 3].text == "of"
+        ):
+            perch = self._next_mention(k + 4, len(self.toks))  # "from the back of a hay cart": the cart's
         ridden = perch is None or load_vocabulary().carries(perch.category, perch.phrase, _RIDDEN)
         if self._perch_part_after(k):
             return self._after_verb(k, worn=True)
@@ -346,7 +351,9 @@ class _Hands:
             if m is not None:
                 return self._lives(m.category) or self._hand_object(j, k) is None
             if self._finite_at(j) or self._participle_at(j):
-                return False  # the verb: it acts on nothing named ("jumps from the ledge")
+                # the verb, acting on nothing named: what one does up there ("a fiddler plays from the
+                # back of a hay cart"), not where one leaves ("climbs from the cab")
+                return perch is not None and j == k - 1 and not _verb_stem(w, _LEAVING_VERBS)
             j -= 1
         return False
 

@@ -140,6 +140,11 @@ _CARRY_VERBS = {f"{stem}{end}" for stem in ("carr", "hurr") for end in ("y", "ie
 } | {"takes", "take", "taking", "drives", "drive", "driving", "runs", "run", "running", "goes", "go", "going",
      "dragging", "brought", "led", "took", "drove", "went", "ran"}  # fmt: skip
 #: Verbs of going with a living thing one leads or chases: where the doer goes ("walks a dachshund
+#: Verbs of leaving a place: "from" after one names where one was ("climbs from the cab", "steps
+#: from the bus"), not where one is.
+_LEAVING_VERBS = {"climb", "step", "fall", "emerge", "run", "walk", "come", "return", "escape", "flee", "hop",
+                  "slide", "tumble", "stumble", "descend", "dismount", "alight", "rise", "drift", "fly", "swing",
+                  "stream", "pour", "spill", "hang", "dangle", "leak", "drip", "float"}  # fmt: skip
 #: beside the van", "children chase a dog around the well") is the doer's place, the other keeps by them.
 _LEAD_VERBS = {"walk", "walks", "walking", "lead", "leads", "leading", "guide", "guides", "guiding",
                "chase", "chases", "chasing"}  # fmt: skip
