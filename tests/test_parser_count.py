@@ -220,3 +220,13 @@ def test_a_definite_plural_named_before_its_counted_group_is_that_group():
     text = "A librarian holds up a picture book for the children to see. Nine children sit on a rug in front of him."
     assert counts(text)["child"] == 9
     assert counts("Two boys kick a ball. The boys laugh while three girls watch.")["boy"] == 2  # back, as before
+
+
+def test_counted_sitters_in_seats_named_before_without_a_count_have_a_seat_each():
+    found = Counter(o.category for o in parse_scene(
+        "A small planetarium. Rows of reclining seats curve around the projector. Twenty children lie back in the seats."
+    ).objects)
+    assert found["chair"] == 20, found
+    # benches hold several: as many as before
+    found = Counter(o.category for o in parse_scene("A locker room with benches along the walls. Fourteen players sit on the benches.").objects)
+    assert found["bench"] < 14, found

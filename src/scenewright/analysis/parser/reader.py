@@ -2119,8 +2119,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._per_each(targets, srcs[0])  # "two soldiers on horseback": a horse each
         elif tm is not None and len(srcs) == 1 and self._uncounted_new(tm) and self._apiece(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "two lawyers at separate tables": one each
-        elif tm is not None and kind == "on" and len(srcs) == 1 and self._living(srcs[0]) and self._seats_each(tm):
-            self.groups[targets[0]].count = self.groups[srcs[0]].count  # "four astronauts sit on stools": one each
+        elif tm is not None and kind in ("on", "in") and len(srcs) == 1 and self._living(srcs[0]) and self._seats_each(tm):
+            # "four astronauts sit on stools": one each
+            self.groups[targets[0]].count = max(self.groups[srcs[0]].count, self.groups[targets[0]].count * tm.definite)
         elif tm is not None and kind == "on" and len(srcs) == 1 and self._stands_each(srcs[0], tm):
             self.one_each[targets[0]] = srcs[0]  # "busts stand on pedestals (at each corner)": one each
         elif tm is not None and kind == "in" and len(srcs) == 1 and self._planted(srcs[0]) and self._uncounted_new(tm):
@@ -2191,7 +2192,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # ("sit around the fire on logs": any low lifeless thing sat on is a seat)
         low = m.group >= 0 and not self._living(m.group) and self.groups[m.group].size[2] <= _MAKESHIFT_HEIGHT
         sat = low and m.group not in self.formations and self._verb_before(m.start, self._posture)
-        return self._uncounted_new(m) and (self._carrier(m.group, ("seats",)) or cover or sat)
+        # ("rows of seats ... Twenty children lie back in the seats": the seats named before, uncounted)
+        # (a count "rows of" seats got is the rows' guess; not benches: "sit on the benches along the walls")
+        guessed = m.group >= 0 and (m.group not in self.numbered or m.group in self.formations)
+        again = _is_plural(self.toks, m) and m.definite and guessed and self.groups[m.group].size[0] < _ONE_SEAT_WIDTH
+        return (self._uncounted_new(m) or again) and (self._carrier(m.group, ("seats",)) or cover or sat)
 
     def _planted(self, g: int) -> bool:
         """Several plants: each grows in a pot, tub or planter of its own."""
