@@ -1486,3 +1486,8 @@ def test_a_plural_noun_after_a_singular_subject_with_a_hyphened_count_is_its_ver
 
 def test_a_participle_after_a_comma_is_no_kind_of_the_thing_after_it():
     assert "sandwich" in names("A park. Three children sit on a blanket, eating sandwiches from a basket.")
+
+
+def test_a_word_hyphened_onto_a_describing_word_leaves_the_noun_after_it():
+    got = objects("Twenty pods stand in two rows, and a frost-covered colonist sleeps inside every pod.")
+    assert got[("figure", "colonist")] == 20, got

@@ -1386,7 +1386,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
                 j += 1
                 continue
             kind_of = j - 1 in looks and w == "of"  # ("hot dog stands": a noun, though "stands" is a verb too)
-            if (j in covered and j not in describers) or not x[:1].isalpha() or (x in _STOP and not kind_of):
+            # (a stop word hyphened on describes: "a frost-covered colonist")
+            if (j in covered and j not in describers) or not x[:1].isalpha() or (x in _STOP and not kind_of and not toks[j].joined):
                 break
             # (a plural verb form cannot follow "a": "a washing line hangs" has no verb "line")
             plural_form = x in _FINITE and not x.endswith("s") and w in ("a", "an", "another")
