@@ -230,3 +230,10 @@ def test_counted_sitters_in_seats_named_before_without_a_count_have_a_seat_each(
     # benches hold several: as many as before
     found = Counter(o.category for o in parse_scene("A locker room with benches along the walls. Fourteen players sit on the benches.").objects)
     assert found["bench"] < 14, found
+
+
+def test_their_uncounted_things_come_one_per_owner_wherever_they_are_put():
+    found = Counter(o.category for o in parse_scene(
+        "A dozen spacesuits hang on racks along the back wall, their helmets on a shelf above them."
+    ).objects)
+    assert found["tool"] == 12, found  # the helmets: the spacesuits', not the racks'

@@ -393,6 +393,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             j -= 1  # (past describing words: "their two fat ponies" is counted anyway)
         if default == UNCOUNTED and j >= 0 and self.toks[j].text == "their":
             self.theirs.add(g.index)
+            # (whose they are: the sentence's first several things, "spacesuits hang on racks, their helmets ...")
+            owner = next((o for o in self.groups[self._sentence_groups : g.index] if o.count > 1), None)
+            if owner is not None:
+                self.their_owner[g.index] = owner.index
         elif j >= 0 and self.toks[j].text in ("his", "her") and g.count == 1 and not m.counted:
             # "a knight snores on each bed, his helmet on the floor beside it": each knight's
             owner = next((o for o in reversed(self.groups[self._sentence_groups : g.index]) if self._person_at(o.index)), None)
@@ -532,6 +536,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.numbered: set[int] = set()
         #: Uncounted plurals after "their" ("walk their dogs"): one each of their owners.
         self.theirs: set[int] = set()
+        #: A "their" group → the several things named before it in its sentence, its owners.
+        self.their_owner: dict[int, int] = {}
         #: Starts of living things a holder is full of ("packed with laughing children") and of what a
         #: tray or a cart is "of" ("a cart of apples"): aboard it, no subject of the clause's verb.
         self.aboard: set[int] = set()
@@ -727,6 +733,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         scythes"), and so do those of "their" by their owners ("two girls walk their ponies")."""
         theirs = [(g, h) for _, a, b, _ in self.relations for g, h in ((a, b), (b, a)) if g in self.theirs]
         theirs = [(g, h) for g, h in theirs if self._living(h) and h not in self.theirs]
+        # ("a dozen spacesuits hang on racks, their helmets on a shelf": one each, placed elsewhere)
+        theirs += [(g, h) for g, h in self.their_owner.items() if g not in {t for t, _ in theirs} and h not in self.theirs]
         for g, h in [*self.in_hand, *theirs]:
             uncounted = g not in self.numbered and self.groups[g].count == UNCOUNTED
             if g not in self.numbered and self.groups[h].count > 1 and (self._handheld(g) or uncounted):
