@@ -172,7 +172,7 @@ Decisions worth knowing:
 - Vague counts: a pair / a couple / both → 2; a few / several / some / a bare plural → 3;
   many / lots of → 5; ``each with a lamp``, ``every desk has a lamp`` and ``each surrounded by
   two chairs`` give that many per object of the group, placed by their own one. A bare plural of a
-  crowd word ("spectators gather") is 5; "about twenty" is 20; a count in words is at most two dozen
+  crowd word ("spectators gather") is 5; "about twenty" is 20; a count in words is at most fifty
   (``CROWD``: "a hundred fans"), one in digits is taken as meant; "a herd of about twenty grazing"
   (no noun) is twenty more of the animal named before; ", a dozen in all" counts the sentence's
   first noun; "sheep" or "deer" with no determiner are several.

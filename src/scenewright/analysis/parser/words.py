@@ -13,10 +13,11 @@ _NUMBERS = {
     "fifteen": 15, "sixteen": 16, "seventeen": 17, "eighteen": 18, "nineteen": 19, "twenty": 20,
     "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90, "hundred": 100,
 }  # fmt: skip
-#: The most of one kind a count in words gives: "a herd of fifty goats" or "a hundred fans" stand as two
-#: dozen, so a crowd reads as a crowd and the scene stays light enough to lay out and render (a count in
-#: digits is taken as meant, and the object limit refuses one too large).
-CROWD = 24
+#: The most of one kind a count in words gives: "thirty guests" and "forty players" are as many, "a
+#: hundred fans" or "two hundred" stand as fifty, so a crowd reads as a crowd and the scene stays light
+#: enough to lay out and render (a count in digits is taken as meant, and the object limit refuses one
+#: too large).
+CROWD = 50
 #: Words that make the count after them a rough one ("about twenty", "some thirty"): no things.
 _APPROXIMATE = {"about", "around", "roughly", "nearly", "almost", "approximately", "perhaps", "maybe"}
 _VAGUE = {"few": 3, "several": 3, "some": 3, "various": 3, "many": 5, "numerous": 5, "multiple": 3, "both": 2}
