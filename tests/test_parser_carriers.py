@@ -457,3 +457,8 @@ def test_what_one_drives_that_is_no_vehicle_is_herded_and_a_vehicle_tows_for_its
 
 def test_one_who_leaves_a_perch_is_not_on_it():
     assert not any(r[1] == "on" for r in rels("A lay-by. A driver climbs from the cab of a lorry."))
+
+
+def test_what_is_hitched_to_a_load_pulls_it_and_a_hitched_load_trails():
+    assert ("mule_1", "in front of", "cart_1") in rels("A farm. A mule stands hitched to a cart.")
+    assert ("cart_1", "behind", "horse_1") in rels("A farm. A cart hitched to a pony waits by the gate.")

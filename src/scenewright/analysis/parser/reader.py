@@ -2548,6 +2548,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "on"  # "orange trees grow in terracotta planters": each stands in its own
             holds = target.shape in _SEATS or target.support or self._carrier(t, _VESSEL_KINDS)
             return "on" if holds and target.size[2] <= 2.5 else "no relation"
+        if kind == "hitched":  # "a cart hitched to a horse" trails it; "a mule stands hitched to a cart" pulls it
+            return "in front of" if self._living(s) and not self._living(t) else "behind"
         if kind == "driving":
             return "on" if self._living(s) else "no relation"  # "a farmhand drives a quad bike": aboard it
         if kind in ("from", "on a carrier"):
