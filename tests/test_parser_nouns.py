@@ -1491,3 +1491,8 @@ def test_a_participle_after_a_comma_is_no_kind_of_the_thing_after_it():
 def test_a_word_hyphened_onto_a_describing_word_leaves_the_noun_after_it():
     got = objects("Twenty pods stand in two rows, and a frost-covered colonist sleeps inside every pod.")
     assert got[("figure", "colonist")] == 20, got
+
+
+def test_what_happens_during_the_scene_is_no_thing_of_it():
+    got = objects("A television studio during a live cooking show. Two chefs work at a kitchen island.")
+    assert not any("show" in w for _, w in got) and got[("figure", "chef")] == 2, got

@@ -390,6 +390,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a throne hall", "a farmhouse kitchen", "a rocket launch site": the place, not the thing
         if _place_name(toks, s):
             continue  # "a dig on a hillside in southern Turkey": a country, not a bird
+        if _during(toks, s):
+            continue  # "a planetarium during a school visit", "during a live cooking show": when, no thing
         unlisted = s in guessed or entry is not None and entry.category in (GENERIC, *_ENCLOSING)
         if unlisted and _unknown_opening_place(toks, s, e):
             places.append(" ".join(words))
@@ -612,6 +614,15 @@ def _names_place_after(toks: list[_Tok], e: int) -> bool:
     after = toks[e + 2].text if e + 2 < len(toks) else "."
     places = load_vocabulary().places
     return (last in places or last in _VENUES) and (not after.isalpha() or after in _STOP)
+
+
+def _during(toks: list[_Tok], s: int) -> bool:
+    """The noun phrase at ``s`` follows "during" (past its article and describing words): an event
+    that says when the scene is, whatever its words can name elsewhere ("a visit", "a show")."""
+    j = s - 1
+    while j >= 0 and (toks[j].text in _DETERMINERS or toks[j].text[:1].isalpha() and toks[j].text not in _STOP):
+        j -= 1
+    return j >= 0 and toks[j].text == "during"
 
 
 def _place_name(toks: list[_Tok], s: int) -> bool:
