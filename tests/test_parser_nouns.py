@@ -1496,3 +1496,10 @@ def test_a_word_hyphened_onto_a_describing_word_leaves_the_noun_after_it():
 def test_what_happens_during_the_scene_is_no_thing_of_it():
     got = objects("A television studio during a live cooking show. Two chefs work at a kitchen island.")
     assert not any("show" in w for _, w in got) and got[("figure", "chef")] == 2, got
+
+
+def test_a_plural_before_a_place_word_is_a_subject_and_a_part_in_hand_is_a_thing():
+    got = objects("A beach. Two kids dig a hole at the foot of the referee's chair.")
+    assert got[("figure", "kid")] == 2, got  # "dig" is a verb here, no dig site
+    got = objects("A lodge. Three hunters sit at the table, each holding a long pipe.")
+    assert got[("tool", "pipe")] == 3, got

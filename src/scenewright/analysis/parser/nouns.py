@@ -384,7 +384,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         ):
             continue  # "An otter sanctuary by a river.": the kind of the place nobody listed the opening names
         follow_two = f"{follow} {toks[e + 1].text}" if e + 1 < n else ""
-        if follow in _VENUES or follow in vocabulary.places or follow_two in vocabulary.places or (
+        # (a plural names no kind of place: "two kids dig a hole" has a verb, no dig site)
+        placed_kind = singular(words[-1]) == words[-1] or words[-1] in _SAME_PLURALS
+        if placed_kind and (follow in _VENUES or follow in vocabulary.places or follow_two in vocabulary.places) or (
             follow and singular(follow) in _VENUES and len(words) == 1
         ) or _names_place_after(toks, e):
             continue  # "a throne hall", "a farmhouse kitchen", "a rocket launch site": the place, not the thing
@@ -1904,7 +1906,10 @@ def _loose_parts(toks: list[_Tok], covered: set[int]) -> list:
         # (not "a hook of the crane", "a ceiling hook": a fitting of the room, "under one arm": a body's)
         put = put and after != "of" and not before & _FITTED and one not in vocabulary.body_parts
         put = put and one not in _LIVING_PARTS
-        if before & vocabulary.detached or after in vocabulary.detached or own or put:
+        # (one in hand: "each holding a long pipe", "clutching a spoke")
+        held = counted and j > 0 and (toks[j - 1].text in _HOLD or toks[j - 1].text in _HAND_VERBS)
+        held = held and one not in vocabulary.body_parts and one not in _LIVING_PARTS
+        if before & vocabulary.detached or after in vocabulary.detached or own or put or held:
             out.append((k, k + 1, entry.category, entry))
             covered.add(k)
     return out
