@@ -67,7 +67,7 @@ _LOAD_HOSTS = ("cart", "truck", "table", "round_table", "desk", "counter", "book
                "boat")  # fmt: skip
 _LOAD_SIZE = 0.3
 #: Things that show what follows their "of", even a definite one ("a statue of the king").
-_DEPICTIONS = ("statue", "hologram", "picture_frame", "sign", "billboard")
+_DEPICTIONS = ("statue", "hologram", "picture_frame", "sign", "billboard", "panel")
 #: Flat holders whose "of" things stand on them as objects ("a tray of bottles", "a pallet of tires").
 _FLAT_HOLDERS = ("plate", "pallet")
 #: Shapes that hold what they hold inside, out of the layout ("a greenhouse holds tomato plants").

@@ -73,7 +73,7 @@ _DIMENSIONS = {"wide": "x", "width": "x", "across": "x", "long": "long", "length
 _CONTENT_HEADS = {"vase", "bowl", "basket", "bucket", "plate", "bottle", "cup", "pot", "crate", "cart", "statue",
                   "cabinet", "wardrobe", "display_case", "treasure_chest", "trash_can", "laundry_basket",
                   "picture_frame", "planter", "sign", "billboard", "shop_shelf", "bookshelf", "flask",
-                  "barrel", "shipping_container", "flower_bed", "cauldron", "sandbox", "hologram"}  # fmt: skip
+                  "barrel", "shipping_container", "flower_bed", "cauldron", "sandbox", "hologram", "panel"}  # fmt: skip
 _CONTENT_MARKERS = {("full", "of"), ("filled", "with"), ("packed", "with"), ("overflowing", "with"),
                     ("covered", "in"), ("covered", "with"), ("stacked", "with"), ("heaped", "with"),
                     ("stocked", "with"), ("lined", "with"), ("piled", "with"), ("overflow", "with"),
