@@ -757,6 +757,7 @@ def test_a_place_word_nobody_listed_as_a_building_is_one_by_its_wordnet_kind():
     assert got[("warehouse", "warehouse")] == 1 and not any(w == "street" for _, w in got), got  # open ground is none
     # a bar one stands behind is its counter; inside a room ("at the back of the shop") it stays the setting
     assert objects("A jazz club. The bartender waits behind the long bar.")[("counter", "bar")] == 1
+    assert objects("A tango hall. Across from the stage is a long bar.")[("counter", "bar")] == 1  # inverted
     got = objects("A small boutique. The counter is at the back of the shop.")
     assert not any(w == "shop" for _, w in got), got
 

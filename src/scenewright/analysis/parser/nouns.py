@@ -1853,7 +1853,9 @@ def _buildings(toks: list[_Tok], covered: set[int]) -> list:
                 j == 0 or toks[j - 1].text in (".", "!", "?", ";", ",", "and")
             )
             seen = j >= 0 and toks[j].text in _DETERMINERS and _outside_of(toks, j) and not _verbless_opening(toks, j)
-            entry = vocabulary.building(tuple(u.text for u in toks[k : k + width])) if stands or seen else None
+            # "Across from the stage is a long bar": the subject a fronted place phrase puts after its verb
+            inverted = j > 0 and toks[j].text in _DETERMINERS and _inverted_subject(toks, j - 1)
+            entry = vocabulary.building(tuple(u.text for u in toks[k : k + width])) if stands or seen or inverted else None
             if entry is None:
                 continue
             end = k + width
