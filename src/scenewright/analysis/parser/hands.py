@@ -333,9 +333,8 @@ class _Hands:
         that is named by a pronoun, lives or is too big to hold ("plays it from a narrow bench",
         "two children feed ducks from a footbridge"; not "pulls a rope from the barrel")."""
         perch = self._next_mention(k + 1, len(self.toks))
-        if perch is None and [t.text in _DETERMINERS for t in self.toks[k + 1 : k + 2]] == [True] and (
-            k + 3 < len(self.toks) and self.toks[k + 3].text == "of"
-        ):
+        part_of = k + 3 < len(self.toks) and self.toks[k + 1].text in _DETERMINERS and self.toks[k + 3].text == "of"
+        if perch is None and part_of:
             perch = self._next_mention(k + 4, len(self.toks))  # "from the back of a hay cart": the cart's
         ridden = perch is None or load_vocabulary().carries(perch.category, perch.phrase, _RIDDEN)
         if self._perch_part_after(k):

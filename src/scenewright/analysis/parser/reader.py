@@ -2128,8 +2128,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         elif tm is not None and len(srcs) == 1 and self._uncounted_new(tm) and self._apiece(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "two lawyers at separate tables": one each
         elif tm is not None and kind in ("on", "in") and len(srcs) == 1 and self._living(srcs[0]) and self._seats_each(tm):
-            # "four astronauts sit on stools": one each
-            self.groups[targets[0]].count = max(self.groups[srcs[0]].count, self.groups[targets[0]].count * tm.definite)
+            # "four astronauts sit on stools": one each (seats named before keep any more they had)
+            seats = self.groups[targets[0]].count if tm.definite else 0
+            self.groups[targets[0]].count = max(self.groups[srcs[0]].count, seats)
         elif tm is not None and kind == "on" and len(srcs) == 1 and self._stands_each(srcs[0], tm):
             self.one_each[targets[0]] = srcs[0]  # "busts stand on pedestals (at each corner)": one each
         elif tm is not None and kind == "in" and len(srcs) == 1 and self._planted(srcs[0]) and self._uncounted_new(tm):

@@ -222,8 +222,10 @@ class Vocabulary:
         if key in self.buildings or not key:
             return self.buildings.get(key)
         head = key[-1]
-        if len(key) > 1 and " ".join(key) not in self.places or not (head in self.places or self.names_place(head)):
+        if len(key) > 1 and " ".join(key) not in self.places:
             return None  # ("the long bar", "the harbour office": the head word's)
+        if not (head in self.places or self.names_place(head)):
+            return None
         built = set(wordnet.kinds(head))
         if built & _ROOM_KINDS:
             return Entry("house", _ROOM_BOX, load_catalogue()["house"].rests)
