@@ -52,7 +52,10 @@ Decisions worth knowing:
   ``chased by`` → the follower behind; ``from high above`` → above the last target ("films the balloons
   from high above": facing them too); a person, an animal or a vehicle going ``towards`` a thing faces it, unless
   the verb moves an object there ("pushes a cart toward the kiosk"); X ``towing`` / ``pulling`` Y →
-  Y behind X, and the next phrase places X ("a pony pulls a cart between two shafts"); what
+  Y behind X, and the next phrase places X ("a pony pulls a cart between two shafts"); X ``hitched
+  to`` Y → a living X in front of a load Y, a load X behind an animal Y; X ``drives`` / ``steers`` /
+  ``pilots`` a vehicle → on it, the vehicle taking the next phrase ("drives a quad bike, towing a
+  trailer"; "drives the sheep" is no phrase); what
   turns or spins ``above`` a thing is aloft ("a hologram turns above the table"); ``across`` a
   thing a living thing can stand on, or "leaning out of" / "peeks out of" one, → on it (across
   anything else, or fronted, nothing); "climbs out of" → near; ``at`` a part one stands on (its
