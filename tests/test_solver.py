@@ -1,3 +1,4 @@
+import itertools
 import subprocess
 import sys
 
@@ -277,6 +278,26 @@ def test_the_layout_does_not_depend_on_machine_load():
         hog.kill()
         hog.wait()
     assert loaded.objects == idle.objects and loaded.report.nodes == idle.report.nodes
+
+
+def test_the_search_ends_on_counted_work_not_on_the_clock(monkeypatch):
+    """With a budget too small for the problem, a clock racing past the time limit (short of
+    the backstop) gives the same layout as one that never moves."""
+    from scenewright.layout import solver
+
+    p = hard_problem(30, 1)
+
+    def solved(clock):
+        monkeypatch.setattr(solver, "_cpu", clock)
+        return solve(p.objects, p.constraints, meshes=p.meshes, bounds=p.bounds, seed=0, time_limit=0.3)
+
+    still = solved(lambda: 0.0)
+    calls = itertools.count()
+    racing = solved(lambda: 0.0 if next(calls) < 2 else 0.3 * solver.CPU_BACKSTOP - 0.1)
+    assert racing.objects == still.objects and racing.report.nodes == still.report.nodes
+    monkeypatch.undo()
+    ample = solve(p.objects, p.constraints, meshes=p.meshes, bounds=p.bounds, seed=0)
+    assert still.report.nodes < ample.report.nodes  # the budget did end the search
 
 
 def _room_case(table_size, lamp_size, relation):

@@ -52,6 +52,7 @@ class Settings:
     #: Simplify each generated mesh to about this many triangles (image-to-3D meshes run to
     #: hundreds of thousands, and layout slows with every one); ``None`` keeps them as they come.
     max_faces: int | None = 200_000
+    #: The layout search's budget per solve, in seconds of counted work (:mod:`.layout.solver`).
     time_limit: float = 10.0
     #: Seconds a command that writes a scene folder waits while another one is writing it.
     lock_timeout: float = 60.0

@@ -45,7 +45,7 @@ def bench_layout(
     sizes: Annotated[str | None, typer.Option(
         "--sizes", help="Object counts, comma-separated [default: 15,50,100; with --hard 10,30,60,100,200].")] = None,
     seeds: Annotated[int, typer.Option("--seeds", help="Problems per size.")] = 20,
-    time_limit: Annotated[float, typer.Option("--time-limit", help="Per-problem limit, CPU seconds.")] = 10.0,
+    time_limit: Annotated[float, typer.Option("--time-limit", help="Per-problem search budget, seconds of counted work (see `solve --help`).")] = 10.0,
     hard: Annotated[bool, typer.Option(
         "--hard", help="Arbitrary yaws, 2+ relations per object, facing pairs, stacks, dense rooms.")] = False,
     room_seeds: Annotated[int, typer.Option("--room-seeds", help="With --hard: dense rooms per floor share.")] = 3,

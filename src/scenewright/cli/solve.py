@@ -103,7 +103,7 @@ def solve_command(
     constraints_file: Annotated[Path, typer.Argument(metavar="CONSTRAINTS.json", help="A list of constraints.")],
     output: Annotated[Path, typer.Option("-o", "--output", help="Where to write LAYOUT.json.")],
     bounds: Annotated[str | None, typer.Option("--bounds", help="Scene footprint W,D in metres, centred.")] = None,
-    time_limit: Annotated[float, typer.Option("--time-limit", help="Search limit, CPU seconds.")] = 10.0,
+    time_limit: Annotated[float, typer.Option("--time-limit", help="Search budget: seconds of counted work on the reference machine (the same layout on any machine); CPU time stops it at 3x.")] = 10.0,
     seed: Annotated[int, typer.Option("--seed", help="Candidate sampling seed.")] = 0,
 ) -> None:
     """Place objects so that their constraints hold without collisions; exit 3 if some cannot be."""
