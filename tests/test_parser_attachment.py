@@ -379,3 +379,18 @@ def test_a_pot_hanging_over_a_fireplace_stands_in_its_hearth():
         ("cauldron_1", "in front of", "fireplace_1")
     }
     assert ("cauldron_1", "on", "campfire_1") in rels("A cauldron bubbles over the campfire.")
+
+
+def test_a_participle_saying_how_a_thing_is_set_down_places_that_thing():
+    """"clamped to", "resting across": the lifeless thing named right before the participle is
+    placed, not the one who sits under it; "lie across from" stays across from."""
+    found = rels("A fairy sits under a lamp clamped to the bench.")
+    assert ("table_lamp_1", "on", "bench_1") in found and ("fairy_1", "on", "bench_1") not in found
+    assert ("paddle_1", "on", "boat_1") in rels("A raft lies on the beach with a paddle resting across it.")
+    assert ("plank_1", "on", "barrel_1") in rels("A plank lies across two barrels.")
+    assert ("camel_1", "in front of", "tent_1") in rels("Two camels lie across from the yurts.")
+
+
+def test_people_filling_seats_sit_in_them():
+    assert ("spectator_1", "on", "chair_1") in rels("Spectators fill the seats behind the commentators.")
+    assert ("girl_1", "near", "bottle_1") in rels("A girl fills a jug at the pump.")

@@ -1435,8 +1435,17 @@ def test_a_likeness_is_named_for_what_it_shows(text, name):
 
 
 def test_a_creature_in_apposition_to_a_role_is_the_thing():
-    """"Their boss, a gorilla in a bowler hat": one object, drawn as the gorilla it is."""
-    assert objects("Their boss, a gorilla in a bowler hat, sits on a crate.") == Counter({("animal", "gorilla"): 1, ("crate", "crate"): 1})
+    """"Their boss, a gorilla in a bowler hat": one object, drawn as the gorilla it is and named
+    by its role too, and "the gorilla" after is the same one."""
+    text = "Their boss, a gorilla in a bowler hat, sits on a crate. Two officers creep towards the gorilla."
+    assert objects(text) == Counter({("animal", "gorilla"): 1, ("crate", "crate"): 1, ("figure", "officer"): 2})
+    assert [o.name for o in parse_scene(text).objects if o.category == "animal"] == ["boss gorilla"]
+
+
+def test_a_number_hyphened_to_a_word_describes_the_one_an_apposition_renames():
+    assert objects("The captain, a one-legged goblin, stands at a map table.") == Counter(
+        {("figure", "captain"): 1, ("table", "table"): 1}
+    )
 
 
 def test_a_plural_verb_after_an_apposition_is_the_subject_s():

@@ -1484,3 +1484,15 @@ def test_a_taprooms_bar_is_its_counter_and_a_trailer_hitched_to_a_vehicle_is_beh
     assert {("tank_1", "behind", "counter_1"), ("dog_1", "in front of", "counter_1")} <= found
     assert ("trailer_1", "behind", "bicycle_1") in {(r.source, r.relation, r.target) for r in parse_scene(
         "A beach. A jet ski waits on a trailer hitched to a quad bike.").relations}
+
+
+def test_at_each_with_nothing_after_is_at_each_of_them():
+    parsed = parse_scene("Two desks stand in the hall, with five players at each.")
+    assert [o.category for o in parsed.objects].count("figure") == 10
+    assert {("player_1", "near", "desk_1"), ("player_2", "near", "desk_2")} <= rels(parsed.text)
+
+
+def test_a_vehicles_tyres_are_its_own():
+    parsed = parse_scene("A truck stands by the gate, and a mechanic checks its tyres.")
+    assert "tyre" not in {o.name for o in parsed.objects}
+    assert ("mechanic_1", "near", "truck_1") in rels(parsed.text)

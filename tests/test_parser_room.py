@@ -265,3 +265,16 @@ def test_things_that_cover_or_line_the_walls_are_on_or_against_them_not_in_a_cor
 
 def test_a_broom_names_no_room():
     assert not parse_scene("A farmyard. A broom leans by the fence, and a dog sleeps on the grass.").indoor
+
+
+def test_a_sentence_opening_on_a_wall_puts_its_subject_there():
+    parsed = parse_scene("A chip shop. On the wall behind the otters, a menu board lists the day's catch. "
+                         "Along the back wall, three tall shelves hold jars.")
+    got = {(r.source, r.relation, r.target) for r in wall_phrases(parsed)}
+    assert ("menu_board_1", "on wall", "room") in got and ("bookshelf_1", "against wall", "wall_2") in got
+    assert not any(source.startswith("otter") for source, _, _ in got)
+
+
+def test_what_hangs_from_hooks_in_the_ceiling_hangs_from_the_ceiling():
+    parsed = parse_scene("A butcher's shop. Whole hams hang from hooks in the ceiling beams.")
+    assert ("ham_1", "on ceiling", "ceiling") in {(r.source, r.relation, r.target) for r in wall_phrases(parsed)}

@@ -64,6 +64,8 @@ class _Mention:
     #: The ones a counted plural names after a colon ("four adventurers sit by the fire: a knight,
     #: an elf, a dwarf and a wizard"): its members, each drawn as what it is.
     members: list[_Mention] = field(default_factory=list)
+    #: The role an apposition gives it, the first word of its name ("the bride, a white fox": the bride fox).
+    role: str | None = None
 
 
 @dataclass
@@ -2595,7 +2597,7 @@ def _mark_appositions(toks: list[_Tok], mentions: list[_Mention]) -> None:
         elif _person_mention(m) and later and load_catalogue()[later[0].category].shape in ("animal", "bird", "robot") and (
             _renames(toks, m.end, later[0].start) and not _after_preposition(toks, m.start)
         ):  # "their boss, a gorilla in a bowler hat": the role is played by a creature, drawn as one
-            m.content = True
+            m.content, later[0].role = True, m.phrase
 
 
 def _listed_on(toks: list[_Tok], k: int) -> bool:
@@ -2622,7 +2624,13 @@ def _renames(toks: list[_Tok], start: int, end: int, listed: bool = False) -> bo
     for join in joins:
         rest = words[len(join) :]
         if words[: len(join)] == join and rest and rest[0] in ("a", "an"):
-            return all(w not in _STOP and (w[:1].isalpha() or w == "-") for w in rest[1:])
+            # (a number hyphened to a word is a describing word: "a one-legged goblin")
+            first = start + len(join) + 1
+            return all(
+                (toks[k].text not in _STOP or toks[k].joined or k + 1 < end and toks[k + 1].joined)
+                and (toks[k].text[:1].isalpha() or toks[k].text == "-")
+                for k in range(first, end)
+            )
     return False
 
 

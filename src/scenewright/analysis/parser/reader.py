@@ -92,6 +92,7 @@ from scenewright.analysis.parser.words import (
     _PARTS_A_THING,
     _PLANT_SHAPES,
     _SHARE_VERBS,
+    _STATE_PARTICIPLES,
     _STOP,
     _TURN_VERBS,
     _USE_VERBS,
@@ -364,7 +365,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             kind = describing[-1:]
             describing = describing[:-1]
         *before, head = [*kind, *name.split()]
-        name = " ".join([*before, *self._shown(m), head])
+        # ("the bride, a white fox in a red veil": the bride fox, "the fox" after)
+        name = " ".join([*([m.role.lower()] if m.role else []), *before, *self._shown(m), head])
         description = " ".join([*describing, name, *m.post]).strip()
         bounds = "person" if cat.shape == "figure" else "thing"
         base = m.guess.size if m.guess is not None else self._likeness_size(cat, kind) or cat.size
@@ -1520,6 +1522,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         breaks = sum(toks[k].text == "," for k in range(opening, start))
         return toks[opening].text == "across" and toks[opening + 1].text != "from" and breaks == 1
 
+    def _set_down_as(self, start: int, thing: int) -> bool:
+        """Whether the phrase at ``start`` opens with a participle saying how the lifeless ``thing``
+        named right before it is set down ("a lamp clamped to the bench", "a paddle resting on it"):
+        the phrase places that thing, whatever the clause is about."""
+        word = self.toks[start].text
+        return (word.endswith("ed") or word in _STATE_PARTICIPLES) and not self._living(thing)
+
     def _sources(self, c: _Clause, p: _Phrase, prev_subject, last_event_end) -> int | None:
         """What the phrase places: the target before it when the phrase chains on it or a
         description of it goes on, the with-part's things, else the clause's subject (or the small
@@ -1685,6 +1694,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # "two dogs watch the flock across from them": the flock is across from the dogs;
                 # "they queue at a kiosk across from it": the kiosk (no kiosk is across from itself)
                 srcs = [acted] if acted is not None else list(c.last_target)
+        before = next((m.group for m in self.by_start.values() if m.end == rel.start), -1)
+        if before >= 0 and before not in c.main and self._set_down_as(rel.start, before):
+            srcs = [before]  # "sits under a lamp clamped to the bench", "with a gouge, a lamp clamped to its edge"
         if kind in ("on", "in") and srcs and all(self._person_at(g) for g in srcs) and (
             kind == "on" and self._pair_before(rel.start) or self._works_on(rel.start, target, inside=kind == "in")
         ):  # "a girl writes on the blackboard", "a chef slices bread on a board", "rinses rice in a
@@ -1699,8 +1711,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             srcs = [g for g in c.subjects if self._living(g)] or srcs
         if kind == "face to" and rel.kind == "at":  # "a guard aims a crossbow at them": the guard faces them
             srcs = [g for g in c.subjects if self._living(g)] or srcs
-        if kind == "covering" and toks[rel.start].text.startswith("fill") and any(self._living(g) for g in srcs):
-            kind = "near"  # "a girl fills a jug at the pump": by what she fills, not in it
+        seats = isinstance(target, list) and all(self.catalogue[self.groups[t].category].shape in _SEATS for t in target)
+        if kind == "covering" and toks[rel.start].text.startswith("fill") and any(self._living(g) for g in srcs) and not seats:
+            kind = "near"  # "a girl fills a jug at the pump": by what she fills, not in it (seats they fill, they sit on)
         p.kind, p.srcs = kind, srcs
         return None
 
@@ -2386,6 +2399,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return True  # "queuing at its window": by its owner
             if w == "one" and k > start + 1:
                 return True  # "playing at the nearest one": one of a group
+            if w == "each" and (k + 1 == len(self.toks) or not self.toks[k + 1].text[:1].isalpha()):
+                return True  # "two desks, with five players at each": at each of them
             if not (w in _DETERMINERS or w in ("each", "every") or (w[:1].isalpha() and w not in _STOP)):
                 return False
             k += 1
@@ -2582,9 +2597,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if kind == "covering":
             # "jars crowd every shelf", "crates cover a long table", "lasts lining a shelf": on what
             # has a top for them; "trees line the drive" stand beside it; people crowding a carrier
-            # ("tourists crowd the pier") are on it, by anything else near it
+            # ("tourists crowd the pier") are on it, and in seats they fill ("spectators fill the
+            # seats"), by anything else near it
             if self._living(s):
-                return "on" if self._carrier(t) else "near"
+                return "on" if self._carrier(t) or target.shape in _SEATS else "near"
             flat = self.groups[t].size[2] <= FLAT_HOST
             # ("cabbages fill the raised beds": grown in a bed, they are on it)
             bedded = target.shape == "flower_bed" and self.groups[s].rests == "surface"

@@ -352,12 +352,17 @@ _FIXING = r"(?:hang|hangs|hanging|hung|mounted|fixed|pinned|nailed|fastened|bolt
 #: "hangs from the ceiling", "suspended from the vaulted ceiling", "on the ceiling", "dangle from
 #: strings hooked to the ceiling", "fixed to the ceiling".
 _CEILING_PHRASE = re.compile(
-    r"\b(?:(?:" + _FIXING + r"|dangles?|dangling|swings?)\s+(?:[\w-]+\s+){0,4}?(?:from|to)|on)\s+the\s+(?:[\w-]+\s+){0,2}?ceiling\b"
+    # (or from something in it: "hams hang from hooks in the ceiling beams")
+    r"\b(?:(?:" + _FIXING + r"|dangles?|dangling|swings?)\s+(?:[\w-]+\s+){0,4}?(?:from|to)\s+(?:[\w-]+\s+(?:in|on)\s+)?|on\s+)"
+    r"the\s+(?:[\w-]+\s+){0,2}?ceiling\b"
     # what hangs from something "overhead" that is no thing of the scene hangs from the room's top
     # ("sandbags hang from the fly gallery overhead"; a named rack overhead carries its pans)
     r"|\b(?:" + _FIXING + r"|dangles?|dangling|swings?)\s+from\s+the\s+(?:[\w-]+\s+){1,3}?overhead\b"
 )
-#: Verbs that put a thing *on* a wall rather than against it.
+#: A sentence that opens on a wall ("On the wall behind the otters, a menu board lists the day's
+#: catch"): its subject is on (or against) that wall.
+_FRONTED_WALL = re.compile(r"\s*(on|against|along)\s+(?:the\s+|a\s+|one\s+)?(?:(back|rear|far|left|right|front)"
+                           r"(?:[- ]hand)?\s+)?walls?\b[^,]*,")
 #: Words by which a thing leans or rests on a wall it stands against ("a bicycle leaning on the wall").
 _LEANING = re.compile(r"\b(?:lean(?:s|ing|ed)?|propped|resting|rests)\b")
 _MOUNTED = re.compile(r"\b" + _FIXING + r"\b")
@@ -395,6 +400,11 @@ def _head(o) -> str:
     return o.name.lower().split()[-1] if o.name else o.category.replace("_", " ")
 
 
+def _wall_of(side: str | None) -> str:
+    """The wall a side word names ("back", "left"), else any wall of the room."""
+    return f"wall_{RECTANGLE_WALLS[_SIDE_WORDS[side]]}" if side and _SIDE_WORDS.get(side) else "room"
+
+
 def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
     """Room relations the text states: "against the (back) wall" → ``against wall``, "in the
     corner" → ``in corner``, a thing on, hung or mounted on "the left wall" (fixed, bolted, hung in
@@ -419,6 +429,13 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
                 continue
             if _WALL_WORDS_BEFORE.search(sentence[: found[0]]):
                 out.append(ParsedRelation(source=o.id, relation="on wall", target="room"))
+                break
+            fronted = _FRONTED_WALL.match(sentence)
+            subject = sentence[fronted.end() : found[0]] if fronted and fronted.end() <= found[0] else None
+            if subject is not None and len(subject.split()) <= 4 and not _names_between(subject, names, name):
+                against = fronted.group(1) != "on" and not hangs_by_kind(o)
+                out.append(ParsedRelation(source=o.id, relation="against wall" if against else "on wall",
+                                          target=_wall_of(fronted.group(2))))
                 break
             at = found[1]
             ceiling = _CEILING_PHRASE.search(sentence, at)
@@ -445,7 +462,7 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
                 break
             if what == "window" and not _MOUNTED.search(between):
                 break  # a thing hung in the window is on its wall; one standing there is not
-            target = f"wall_{RECTANGLE_WALLS[_SIDE_WORDS[side]]}" if side and _SIDE_WORDS.get(side) else "room"
+            target = _wall_of(side)
             if what == "corner":
                 relation = "in corner"
             elif _LEANING.search(between) and not hangs_by_kind(o):

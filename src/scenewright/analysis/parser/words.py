@@ -143,6 +143,8 @@ _CARRY_VERBS = {f"{stem}{end}" for stem in ("carr", "hurr") for end in ("y", "ie
 #: Verbs of going with a living thing one leads or chases: where the doer goes ("walks a dachshund
 #: Verbs of leaving a place: "from" after one names where one was ("climbs from the cab", "steps
 #: from the bus"), not where one is.
+#: Participles that say how a lifeless thing is set down, besides the regular "-ed" ones.
+_STATE_PARTICIPLES = {"laid", "slung", "hung", "set", "resting", "lying", "standing", "hanging", "leaning", "balanced"}
 _LEAVING_VERBS = {"climb", "step", "fall", "emerge", "run", "walk", "come", "return", "escape", "flee", "hop",
                   "slide", "tumble", "stumble", "descend", "dismount", "alight", "rise", "drift", "fly", "swing",
                   "stream", "pour", "spill", "hang", "dangle", "leak", "drip", "float"}  # fmt: skip
