@@ -462,3 +462,7 @@ def test_one_who_leaves_a_perch_is_not_on_it():
 def test_what_is_hitched_to_a_load_pulls_it_and_a_hitched_load_trails():
     assert ("mule_1", "in front of", "cart_1") in rels("A farm. A mule stands hitched to a cart.")
     assert ("cart_1", "behind", "horse_1") in rels("A farm. A cart hitched to a pony waits by the gate.")
+
+
+def test_one_who_passes_across_what_carries_nobody_is_by_it():
+    assert ("cat_1", "near", "counter_1") in rels("A cat walks across the counter.")

@@ -1518,3 +1518,9 @@ def test_a_plural_before_a_place_word_is_a_subject_and_a_part_in_hand_is_a_thing
 def test_what_a_mural_or_a_mosaic_shows_is_its_picture_not_a_thing():
     got = objects("A temple. A mosaic of a peacock covers the wall behind the booth.")
     assert any(c == "panel" and "mosaic" in w for c, w in got) and not any(c == "bird" for c, _ in got), got
+
+
+def test_creatures_beasts_and_monsters_are_animals():
+    assert objects("A hungry alien creature growls at a strange beast, and a monster roars.") == Counter(
+        {("animal", "creature"): 1, ("animal", "beast"): 1, ("animal", "monster"): 1}
+    )

@@ -2570,8 +2570,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return "on" if self._living(s) else "no relation"  # "a farmhand drives a quad bike": aboard it
         if kind in ("from", "on a carrier"):
             # "a heron watches from a rock", "a guard waves from the tower", "a peacock struts across
-            # its roof", "a cat peeks out of the box": on it (across anything else one only passes);
-            # one who watches or waves from what carries nobody stands by it ("watches them from the gate");
+            # its roof", "a cat peeks out of the box": on it; one who watches or waves from what
+            # carries nobody stands by it ("watches them from the gate"), as one who runs across it;
             # one drinks, eats or pours from a thing by it ("a cat drinks from a puddle", "stegosaurs
             # drink from a trough")
             taken = kind == "from" and not self._carrier(t, ("perches",)) and not self._perch_part and self._verb_before(
@@ -2581,7 +2581,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "on"
             if kind == "from" and self._part in _ROOF_PARTS:
                 return "on"  # "a dish points at the sky from the roof of the hut": fixed up there
-            return "near" if kind == "from" and self._living(s) else "no relation"
+            return "near" if self._living(s) else "no relation"
         if kind == "hanging from":
             # from a beam: above it; from a tree: beside it; from anything else (a post, a stall, a
             # barrier, a tower's railing) it is carried by that thing, on it
