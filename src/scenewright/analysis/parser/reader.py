@@ -2160,17 +2160,19 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             kind = "near"  # "a nurse checks on a patient": by another person, never on one
         if kind in ("on", "on top") and p.body is None:
             srcs = self._carried_in(srcs)
-        # "lanterns hang from the branches of an oak": up in its spread crown, by no side of it
+        # "lanterns hang from the branches of an oak": on it, up in its crown, as what perches there;
+        # by no side of it when the text says what they hang above ("... of the oak above the table")
         crown = kind == "hanging from" and any(
             "tree" in load_vocabulary().part_owners.get(singular(w.text), ()) for w in toks[rel.end : end]
         )
-        for t in targets if not crown else ():
+        over = crown and getattr(self.rel_at.get(end), "kind", None) in ("above", "over")
+        for t in targets if not over else ():
             for one in p.ordinals or (instance,):
                 if one_each:
                     self._relate("left of", srcs[:1], t, hang, one)
                     self._relate("right of", srcs[1:], t, hang, one)
                 else:
-                    self._relate(kind, srcs, t, hang, one)
+                    self._relate("on" if crown else kind, srcs, t, hang, one)
             # a person holds nothing on top, but carries what is on a knee or an arm ("a crow on each of
             # its arms": a scarecrow's too)
             limb = p.part is not None and load_vocabulary().body_parts.get(p.part) == "on" and self._person_at(t)
