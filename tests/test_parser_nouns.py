@@ -1524,3 +1524,7 @@ def test_creatures_beasts_and_monsters_are_animals():
     assert objects("A hungry alien creature growls at a strange beast, and a monster roars.") == Counter(
         {("animal", "creature"): 1, ("animal", "beast"): 1, ("animal", "monster"): 1}
     )
+
+
+def test_a_hub_is_a_place_and_what_it_is_for_no_thing():
+    assert objects("A drone delivery hub on the flat roof of a store.") == Counter()
