@@ -1529,3 +1529,10 @@ def test_creatures_and_beasts_are_animals_and_monsters_stand_up():
 
 def test_a_hub_is_a_place_and_what_it_is_for_no_thing():
     assert objects("A drone delivery hub on the flat roof of a store.") == Counter()
+
+
+def test_a_place_the_text_opens_with_stays_the_setting_whoever_runs_it():
+    assert objects("A toy shop staffed by robots. A robot stacks boxes on a shelf.")[("building", "shop")] == 0
+    assert objects("A chip shop run by otters, every piece folded from card. Three otters work behind the counter.") == Counter(
+        {("animal", "otter"): 3, ("counter", "counter"): 1}
+    )

@@ -108,8 +108,8 @@ LAST_NODES = 2
 NODES_PER_OBJECT = 80
 #: The work count: one unit per narrow-phase pair test, :data:`GENERATE_WORK` per generation of
 #: an object's candidates; :data:`WORK_PER_SECOND` units make one second of ``time_limit``. Both
-#: are CPU costs on the reference machine (the project's 2-core one), fitted over the 85 solves of
-#: two fresh batches: they predict a search's CPU time within 22 % (median) for the searches over 2 s.
+#: are CPU costs on the reference machine (the project's 2-core one), fitted over 85 solves of three
+#: fresh batches: they predict a search's CPU time within 20 % (median) for the searches over 2 s.
 GENERATE_WORK = 40
 WORK_PER_SECOND = 20_000
 CPU_BACKSTOP = 3.0

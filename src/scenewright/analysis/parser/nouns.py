@@ -1154,6 +1154,9 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     follow = toks[e].text if e < len(toks) else "."
     # ("A small courtroom during a trial.", "A schoolroom for young rabbits.": when and for whom)
     settled = follow in (",", ".", ":", ";") or follow in ("on", "at", "in", "during", "before", "after", "for")
+    # ("A fish and chip shop run by otters, ...", "a bakery staffed by mice": who keeps it)
+    kept = e + 1 < len(toks) and toks[e + 1].text == "by" and (follow.endswith("ed") or follow in ("run", "kept"))
+    settled = settled or kept
     if opening and later and not later_before(later, toks, e) and settled:
         return True
     if e < len(toks) and toks[e].text in _PLACE_OPENERS:
