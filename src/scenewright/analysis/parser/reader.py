@@ -1535,6 +1535,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         thing its verb acts on). Where the reading goes on when the phrase places nothing here."""
         toks, rel, kind, target, body, end = self.toks, p.rel, p.kind, p.target, p.body, p.end
         between = [t.text for t in toks[last_event_end : rel.start]]
+        before = next((m.group for m in self.by_start.values() if m.end == rel.start), -1)  # the noun right before
         # sources: the noun the phrase follows when nothing but adverbs lies between
         srcs: list[int]
         # "a globe on a side table to the right of the desk", "chairs around a table left of the sofa"
@@ -1675,7 +1676,6 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         else:
             srcs = list(c.main)
             # "a farmer guides a buffalo pulling a plough": a participle right after the verb's object is the object's
-            before = next((m.group for m in self.by_start.values() if m.end == rel.start), -1)
             if c.finite and toks[rel.start].text.endswith("ing") and before in c.main_groups and before not in c.main:
                 srcs = [before]
             acted = c.deeds[-1][1] if c.deeds and c.deed_end == last_event_end else None
@@ -1694,7 +1694,6 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # "two dogs watch the flock across from them": the flock is across from the dogs;
                 # "they queue at a kiosk across from it": the kiosk (no kiosk is across from itself)
                 srcs = [acted] if acted is not None else list(c.last_target)
-        before = next((m.group for m in self.by_start.values() if m.end == rel.start), -1)
         if before >= 0 and before not in c.main and self._set_down_as(rel.start, before):
             srcs = [before]  # "sits under a lamp clamped to the bench", "with a gouge, a lamp clamped to its edge"
         if kind in ("on", "in") and srcs and all(self._person_at(g) for g in srcs) and (
