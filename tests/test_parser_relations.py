@@ -882,6 +882,10 @@ def test_the_middle_one_of_a_group_is_halfway_along():
 def test_across_a_thing_one_can_stand_on_is_on_it():
     assert ("lizard_1", "on", "rock_1") in rels("A lizard scuttles across the boulder.")
     assert ("goose_1", "on", "bridge_1") in rels("A goose waddles across the bridge.")
+
+
+def test_one_who_passes_across_what_carries_nobody_is_by_it():
+    assert ("cat_1", "near", "counter_1") in rels("A cat walks across the counter.")
     assert ("cat_1", "on", "shed_1") in rels("A cat pads across the roof of the shed.")
     assert ("rifle_1", "on", "hunter_1") in rels("A hunter sits on a log, a rifle across his knees.")
     # a thing that rolls across, a fronted "across" (its far side), and "across" between two who face each other
