@@ -391,6 +391,12 @@ def test_the_colours_a_medium_is_named_in_are_its_palette(text, style):
         ("A vineyard rendered as a mosaic of small glass tiles.", False, "grass"),  # the picture's tiles: no floor
         ("A blue-and-white tile panel of a rose garden, a fountain in it.", False, "grass"),
         ("A farmyard drawn in crayon on a snowy morning.", False, "snow"),  # the scene's words after the medium
+        # indoors the open air's grounds come only from the floor's own words
+        ("An origami fox wedding in a banquet hall.", True, "wood floor"),
+        ("A quiz night in the village hall.", True, "wood floor"),
+        ("A cosy cabin on a snowy winter evening.", True, "wood floor"),
+        ("A milking shed with a dirt floor.", True, "dirt"),
+        ("A riding school with a sand-covered floor.", True, "sand"),
     ],
 )
 def test_ground(text, indoor, kind):

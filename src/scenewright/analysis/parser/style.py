@@ -308,6 +308,11 @@ _GROUND_MATERIALS = [
 #: dirt, not the city's asphalt, and a landing pad further on does not floor a construction site.
 #: Ground kinds only a room's floor has: a place word of an outdoor scene does not give them.
 _FLOORS = ("wood floor", "tiles", "carpet", "rubber")
+#: Ground kinds of the open air: indoors only a word that names the floor gives them ("a dirt
+#: floor", "a sand-covered floor"), never the place ("a village hall", "an esports arena", "an
+#: origami wedding in a banquet hall") nor the weather ("a winter evening in the workshop").
+_OPEN_GROUNDS = ("grass", "dirt", "sand", "snow")
+_FLOOR_NOUNS = (" floor ", " floors ", " ground ", " covered floor ")
 _GROUND_PLACES = [
     ("metal deck", ("landing pad", "spaceport", "space station", "starship", "spaceship", "space ship", "submarine",
                     "engine room", "airlock")),
@@ -347,7 +352,8 @@ def _owner_floors(low: str, end: int) -> bool:
 def detect_ground(text: str, indoor: bool) -> str:
     """A ground kind from :data:`GROUND_KINDS`: a word for the ground itself, else the setting's
     place word (the first one named, the opening sentence first; a room "of" something gives way
-    to what it is a room of), else wood floor indoors and grass outdoors."""
+    to what it is a room of), else wood floor indoors and grass outdoors. Indoors the open air's
+    grounds (:data:`_OPEN_GROUNDS`) come only from words for the floor."""
     text = without_media(text)
     sentences = re.split(r"[.!?]", text.lower())
     low = " " + " ".join(re.findall(r"[a-zé]+", text.lower())) + " "
@@ -357,10 +363,14 @@ def detect_ground(text: str, indoor: bool) -> str:
         for rank, (kind, words) in enumerate(table):
             if explicit and not indoor and kind in _FLOORS:
                 continue  # outside "a small bakery on a village street": the street's ground, not its floor
+            if explicit and indoor and kind in _OPEN_GROUNDS:
+                continue
             for w in words:
                 pos = low.find(" " + w + " ")
                 if pos < 0 or (explicit and w in _PART_ROOMS and _owner_floors(low, pos + len(w) + 1)):
                     continue  # ("the control room of a submarine": the submarine's floor)
+                if indoor and kind in _OPEN_GROUNDS and not low.startswith(_FLOOR_NOUNS, pos + len(w) + 1):
+                    continue
                 # materials by their order of precedence; places by where the text names them
                 key = (explicit, rank, pos, kind) if explicit == 0 else (explicit, int(pos >= opening), pos, kind)
                 if best is None or key < best:
