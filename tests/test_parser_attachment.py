@@ -394,3 +394,14 @@ def test_a_participle_saying_how_a_thing_is_set_down_places_that_thing():
 def test_people_filling_seats_sit_in_them():
     assert ("spectator_1", "on", "chair_1") in rels("Spectators fill the seats behind the commentators.")
     assert ("girl_1", "near", "bottle_1") in rels("A girl fills a jug at the pump.")
+
+
+def test_a_fronted_host_carries_what_its_subject_stands_or_sits_on():
+    """"On the counter, a cat sleeps in a basket": the basket is on the counter, the cat in it."""
+    assert {("basket_1", "on", "counter_1"), ("cat_1", "on", "basket_1")} <= rels("On the counter, a cat sleeps in a basket.")
+    assert {("stool_1", "on", "stage_1"), ("singer_1", "on", "stool_1")} <= rels("On the stage, a singer sits on a stool.")
+
+
+def test_who_acts_from_the_top_of_a_thing_is_on_it_not_what_they_act_on():
+    found = rels("Two squirrels scold the workers from the top of a lamp post.")
+    assert ("squirrel_1", "on", "lamp_post_1") in found and not any(s.startswith("worker") for s, _, _ in found)

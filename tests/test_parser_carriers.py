@@ -409,6 +409,8 @@ def test_one_who_watches_from_what_carries_nobody_stands_by_it():
     found = rels("Two goats graze on the slope while a shepherd watches them from the fence.")
     assert ("shepherd_1", "near", "fence_1") in found
     assert ("heron_1", "on", "rock_1") in rels("A heron watches from a flat rock.")
+    # (a plural's verb as well: "two teenagers dive from a rock")
+    assert ("teenager_1", "on", "rock_1") in rels("A pool. Two teenagers dive from a high flat rock.")
 
 
 def test_a_living_thing_in_a_container_put_somewhere_brings_the_container():

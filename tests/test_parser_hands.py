@@ -677,3 +677,33 @@ def test_what_a_thing_is_filled_with_goes_in_it_not_in_hand():
     assert ("apple_1", "on", "basket_1") in found and not any(t.startswith("picker") for _, _, t in found)
     assert ("barrel_1", "on", "cart_1") in rels("A dock. Two men load the cart with barrels.")
     assert ("spade_1", "on", "farmer_1") in rels("A field. A farmer digs with a spade.")  # a tool stays in hand
+
+
+@pytest.mark.parametrize(
+    "text, thing, holder",
+    [
+        ("A painter stands at an easel, a palette in one hand and a brush in the other.", "brush_1", "painter_1"),
+        ("A juggler holds a torch in one paw and a ball in the other paw.", "ball_1", "juggler_1"),
+        ("A goblin glowers from a lectern, a rubber stamp in his claw.", "rubber_stamp_1", "goblin_1"),
+        ("An eagle lands on the post with a fish in its talons.", "fish_1", "eagle_1"),
+        ("A hero holds a ball of red thread and a torch.", "torch_1", "hero_1"),  # the list goes on past "of"
+        ("A girl carries a basket of apples and a lantern.", "basket_1", "girl_1"),
+        ("A beaver saws. A pelican carries a bucket of nails in its beak.", "bucket_1", "pelican_1"),  # its own beak
+    ],
+)
+def test_held_in_the_other_hand_a_claw_or_a_list_past_what_a_thing_holds(text, thing, holder):
+    assert (thing, "on", holder) in rels(text), rels(text)
+
+
+def test_one_who_sits_on_a_rug_with_a_thing_in_hand_is_on_the_rug_the_thing_in_hand():
+    """A rug is no anvil: the musician sits on it, the flute stays in hand ("a smith strikes a
+    horseshoe on the anvil" still lays the horseshoe on the anvil)."""
+    found = rels("A musician with a flute sits on a carpet.")
+    assert {("musician_1", "on", "rug_1"), ("flute_1", "on", "musician_1")} <= found, found
+    assert ("horseshoe_1", "on", "anvil_1") in rels("A smith strikes a horseshoe on the anvil.")
+
+
+def test_a_mount_carrying_a_person_carries_them_on_its_back():
+    assert ("rider_1", "on", "elephant_1") in rels("An elephant chases a ball, carrying a rider.")
+    assert ("merchant_1", "on", "camel_1") in rels("A camel carrying a merchant waits at the gate.")
+    assert ("lamb_1", "on", "man_1") in rels("A man carries a lamb.")  # a person's arms as before

@@ -1466,6 +1466,12 @@ def test_a_stand_after_a_determiner_is_a_thing_and_a_verb_elsewhere():
         ("A tea room. A folding screen painted with cranes stands behind her.", {"folding screen"}, {"crane"}),
         ("A room. A bonsai tree sits in an alcove beside a hanging scroll.", {"bonsai tree", "hanging scroll"}, {"alcove"}),
         ("A hall. A desk stands there, with a hologram of the planet turning above it.", {"planet hologram"}, set()),
+        # what a screen or a window shows, up to its clause's end or the verb of what shows it
+        ("A control room. Consoles face a giant screen on the wall, showing the rocket on its pad.",
+         {"giant screen", "console"}, {"rocket", "pad"}),
+        ("A pub. A big screen on the wall shows a football match with two players.", {"big screen"}, {"player"}),
+        ("A chapel. A window showing a mermaid market on a harbour glows above the altar.", {"altar"}, {"market"}),
+        ("A den. A woman watches the TV showing a cat, and a dog sleeps on the rug.", {"tv", "dog", "rug"}, {"cat"}),
     ],
 )
 def test_pictures_tunes_and_recesses_are_no_things(text, expected, absent):
@@ -1536,3 +1542,11 @@ def test_a_place_the_text_opens_with_stays_the_setting_whoever_runs_it():
     assert objects("A chip shop run by otters, every piece folded from card. Three otters work behind the counter.") == Counter(
         {("animal", "otter"): 3, ("counter", "counter"): 1}
     )
+
+
+def test_a_hyphened_noun_nobody_listed_after_a_known_word_is_a_thing_not_dropped():
+    """"a bear fire-eater", "a sword-swallower": the known word names the kind of a thing nobody
+    listed, which is there; a known word before a hyphened look still stays the thing ("a camel-hair tent")."""
+    assert "bear fire eater" in names("A circus. A bear fire-eater stands by the tent.")
+    assert "sword swallower" in names("A circus. A sword-swallower stands by the tent.")
+    assert names("A camp. A camel-hair tent stands by the well.") == {"tent", "well"}

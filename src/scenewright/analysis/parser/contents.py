@@ -26,8 +26,11 @@ from scenewright.analysis.parser.words import (
     _HOLD,
     _NUMBERS,
     _PICTURE_MARKERS,
+    _SHOW_VERBS,
+    _SHOWING,
     _STOP,
     _WARES_VERBS,
+    _is_verb,
 )
 from scenewright.core.catalogue import singular
 
@@ -38,8 +41,12 @@ class _Contents:
         tulips", "a statue of a horse"), are contents, not objects of the scene."""
         toks, phrases = self.toks, _phrase_table()
         chain = False
+        self.pictures = self._pictures(mentions)
         for k, m in enumerate(mentions):
             prev = mentions[k - 1] if k else None
+            if any(v < m.start < e for v, e in self.pictures):
+                m.content = chain = True  # "a screen showing a football match with two players"
+                continue
             j = m.start - 1
             while j >= 0 and (toks[j].text in _DETERMINERS or toks[j].text in _NUMBERS or (
                 toks[j].text not in _STOP and toks[j].text[0].isalnum() and (toks[j].text,) not in phrases
@@ -80,6 +87,38 @@ class _Contents:
             return False
         hawker = seller is not None and seller.end in (k, k - 1) and self.catalogue[seller.category].shape == "figure"
         return not (hawker and load_vocabulary().carried_by_hand(m.category, m.phrase))
+
+    def _pictures(self, mentions: list[_Mention]) -> list[tuple[int, int]]:
+        """(verb, clause end) of each picture a screen, a picture or a window shows: what is in it
+        is no thing of the layout ("a giant screen on the front wall, showing the rocket on its
+        pad", "a stained-glass window depicts a ship")."""
+        toks, out = self.toks, []
+        for v, t in enumerate(toks):
+            if t.text not in _SHOW_VERBS:
+                continue
+            before = [m for m in mentions if m.end <= v]
+            gap = [t.text for t in toks[before[-1].end if before else 0 : v]]
+            if not before or len(gap) > 6 or any(w in (".", "!", "?", ";") for w in gap):
+                shower = any(w in _SHOWING for w in [t.text for t in toks[max(0, v - 2) : v]])
+            else:
+                shower = before[-1].category in _DEPICTIONS or before[-1].category in _SHOWING or any(
+                    w in _SHOWING for w in gap[-2:]
+                )
+            if shower:
+                end = next((e for e in range(v + 1, len(toks)) if self._picture_ends(e)), len(toks))
+                out.append((v, end))
+        return out
+
+    def _picture_ends(self, e: int) -> bool:
+        """Whether a picture's words end at ``e``: its clause ends, or the verb of the thing that
+        shows it comes ("a window showing a mermaid market on a harbour glows above the altar")."""
+        w, before = self.toks[e].text, self.toks[e - 1].text
+        if w in (",", ";", ".", "!", "?"):
+            return True
+        noun_before = before[:1].isalpha() and before not in _STOP and before not in _DETERMINERS and (
+            before not in _NUMBERS and not load_vocabulary().is_adjective(before)
+        )
+        return noun_before and _is_verb(w) and w not in _SHOW_VERBS
 
     def _held_inside(self, m: _Mention, prev: _Mention) -> bool:
         """"A greenhouse holds tomato plants": what a building or a tent holds is inside it, its

@@ -1351,6 +1351,18 @@ def later_before(later: list, toks: list[_Tok], e: int) -> bool:
 _MEASURE_THINGS = {"coil", "coils", "ring", "stack", "stacks", "column", "string", "set", "line"}
 
 
+def _hyphened_head_after(toks: list[_Tok], j: int, covered: set[int]) -> bool:
+    """Whether a hyphened word nobody listed follows the word at ``j`` within three words, with
+    only nouns between: the head of a compound the word at ``j`` qualifies ("bear taste-tester")."""
+    for k in range(j + 1, min(j + 4, len(toks))):
+        t = toks[k]
+        if not t.text[:1].isalpha() or t.text in _STOP:
+            return False
+        if t.joined and k not in covered:
+            return True
+    return False
+
+
 def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None]]) -> list:
     """Noun phrases whose head neither the catalogue nor the vocabulary knows ("a zorbulator",
     "three glimmerwings"): counted phrases only, and only heads that can name a thing; after
@@ -1397,6 +1409,10 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             x = toks[j].text
             if j in covered and j + 1 < n and toks[j + 1].joined and toks[j + 1].text in _LIKENESS:
                 looks.add(j)
+                j += 1
+                continue
+            if j in covered and j not in describers and _hyphened_head_after(toks, j, covered):
+                looks.add(j)  # "a polar bear taste-tester", "a sword-swallower": a known word names its kind
                 j += 1
                 continue
             if j in covered and w == "of" and _kind_before_plural(toks, j, covered):
@@ -2465,7 +2481,7 @@ def _in_hand(toks: list[_Tok], owner: int) -> bool:
 
 
 #: Body parts that hold what is named right before "in his/her/their ...".
-_HOLDING_PARTS = {"hand", "hands", "arms", "grip", "fist", "lap"}
+_HOLDING_PARTS = {"hand", "hands", "arms", "grip", "fist", "lap", "paw", "paws", "claw", "claws"}
 
 
 def _held(toks: list[_Tok], head: int) -> bool:

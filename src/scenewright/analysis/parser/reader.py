@@ -563,7 +563,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         found = [r for r in _find_relations(toks, taken)
                  if (r.kind != "at" or self._names_thing(r.end, starts)) and (r.kind != "covering" or self._covers(r))
                  and (r.kind != "driving" or self._drives(r.end, mentions))
-                 and not self._rung(r, mentions)]
+                 and not self._rung(r, mentions)
+                 and not any(s < r.start < e for s, e in self.pictures)]  # (where things stand in a picture)
         self.rel_at = {
             r.start: r for r in found
             if r.kind != "from" or self._verb_before(r.start, self._lookout) or self._from_to(r.end, starts)
@@ -801,7 +802,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         """What a fronted phrase of the ground ("Behind the chair, ...") places: each subject,
         or what the subject floats above or stands on in its own clause ("a hologram floats
         above a round table": the table is behind the chair). A person stays what it places: "Behind
-        it, a sergeant on a swivel chair types" puts the sergeant behind, the chair comes along."""
+        it, a sergeant on a swivel chair types" puts the sergeant behind, the chair comes along.
+        A fronted host carries what its subject sits or stands on ("On the desk, a kettle steams on
+        a camping stove": the stove is on the desk; "On the counter, a cat sleeps in a basket")."""
+        if kind in ("on", "on top"):
+            host = {r[1]: r[2] for r in self.relations[since:] if r[0] == "on" and r[2] not in subjects}
+            return list(dict.fromkeys(host.get(g, g) for g in subjects))
         if kind not in _GROUND_KINDS:
             return subjects
         under = {
@@ -1177,7 +1183,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     pass  # "a bus full of children waits": the bus waits
                 elif c.head is not None:
                     gap = [t.text for t in toks[last_event_end : m.start]]
-                    closed = any(_is_verb(w) for w in gap)
+                    # (what a thing is made of or holds is no verb and ends no list: "holds a ball of
+                    # red thread and a torch", "carries a basket of apples and a lantern")
+                    listed_gap = gap
+                    if gap[:1] == ["of"]:
+                        j = next((j for j in range(1, len(gap)) if gap[j] in _STOP or gap[j] in (",", *_DETERMINERS)), len(gap))
+                        listed_gap = gap[j:]
+                    closed = any(_is_verb(w) for w in listed_gap)
                     if c.wsub and any(w in _OWN_PLACE for w in gap):  # "a till at one end and a computer"
                         self._close_with(c)
                         c.wsub_before, closed = list(c.wsub), True
@@ -1185,8 +1197,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     other = [w for w in gap if w != ","][:2] in (["the", "other"], ["another", "a"], ["another", "an"])
                     # (a list of things in hand goes on over "and a" or ", a": "holds a cup and a spoon",
                     # "with a sword, a shield and a helmet")
-                    listed = gap[:1] in (["and"], ["or"], [","]) and all(w in _DETERMINERS or w in _NUMBERS for w in gap[1:])
-                    stop = any(w in _STOP and w not in ("and", "or") for w in gap)
+                    listed = listed_gap[:1] in (["and"], ["or"], [","]) and all(
+                        w in _DETERMINERS or w in _NUMBERS for w in listed_gap[1:]
+                    )
+                    stop = any(w in _STOP and w not in ("and", "or") for w in listed_gap)
                     if c.hand and c.wsub and not other and stop and not listed:
                         # "waves a flag from a gantry": what is in hand is the noun right after
                         self._close_with(c)
@@ -1365,6 +1379,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # ("a squire holds a horse by the reins": too big for arms, by him; "a girl with her dog": by her)
                 big = c.hold and max(self.groups[g].size) > _HANDHELD_SIZE
                 placed = any(r[1] == g for r in self.relations)
+                if c.hold and not placed and self._person_at(g) and not self._person_at(h) and self._carrier(h, ("mounts",)):
+                    # "elephants, each carrying a rider": the rider is up on it
+                    self._relate("on", [g], h)
+                    c.produced = True
+                    continue
                 if (big or c.hand or not c.hold) and self._living(g) and self._living(h) and not placed:
                     # ("a groom holds a pony by the reins": what one holds keeps by one, whatever its size)
                     follower, anchor = (g, h) if c.hold and not c.company else self._keeps_by(g, h)
@@ -1656,7 +1675,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return p.end
             else:
                 # one works on a grindstone or an anvil standing at it; what is worked there lies on it
+                # (one who sits or stands on it is on it: "a musician with a flute sits on a carpet")
                 worked_on = in_hand and kind == "on" and isinstance(target, list) and not self._carrier(target[0], _RIDDEN)
+                worked_on = worked_on and not self._verb_before(rel.start, self._posture)
                 if worked_on and not self._verb_before(rel.start, lambda w: w in _KEPT_IN_HAND):
                     self._set_down(c, target[0])
                 self._close_with(c)
@@ -1696,6 +1717,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 srcs = [acted] if acted is not None else list(c.last_target)
         if before >= 0 and before not in c.main and self._set_down_as(rel.start, before):
             srcs = [before]  # "sits under a lamp clamped to the bench", "with a gouge, a lamp clamped to its edge"
+        deed = c.deeds and c.deed_end in (last_event_end, rel.start)
+        if kind == "on" and toks[rel.start].text == "from" and deed:
+            srcs = list(c.deeds[-1][0])  # "two squirrels scold the workers from the top of a lamp post"
         if kind in ("on", "in") and srcs and all(self._person_at(g) for g in srcs) and (
             kind == "on" and self._pair_before(rel.start) or self._works_on(rel.start, target, inside=kind == "in")
         ):  # "a girl writes on the blackboard", "a chef slices bread on a board", "rinses rice in a
@@ -1703,7 +1727,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             kind = "near"
         # ("guide a hose from it into a tank": what runs from one to the other is between them, the doers by it)
         span = kind == "from" and self._from_to(rel.end, set(self.by_start))
-        if kind == "from" and not span and c.deeds and c.deed_end in (last_event_end, rel.start):
+        if kind == "from" and not span and deed:
             srcs = list(c.deeds[-1][0])  # "two children feed ducks from a footbridge": the children are on it
         if kind == "from" and not span and not any(self._living(g) for g in srcs):
             # "a guard waves a flag from the tower": the one who waves is up there

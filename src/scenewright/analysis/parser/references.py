@@ -41,6 +41,10 @@ if TYPE_CHECKING:
 _FORMATION_NOUNS = {"stack": "stack", "pile": "stack", "heap": "stack", "row": "row", "line": "row",
                     "circle": "circle", "ring": "circle"}  # fmt: skip
 
+#: Parts an animal holds things in: what is "in its beak" is in the grip of the one the clause is about.
+_GRIPS = frozenset({"mouth", "mouths", "jaws", "beak", "beaks", "paw", "paws", "claw", "claws", "talon", "talons"})
+
+
 class _References:
     def _target_at(self, pos: int, ce: int) -> tuple[list[int] | str | None, int]:
         """The noun phrase (or pronoun) right after a relation phrase, and where it ends."""
@@ -253,11 +257,17 @@ class _References:
             # "a glass in one hand", "a sword in each hand", ", baton in hand": whoever the clause is about
             self._body_part = vocabulary.body_parts[toks[k].text]
             return "someone", k + 1
+        if k == pos and [t.text for t in toks[k : k + 2]] == ["the", "other"] and self._hand_before(k):
+            # "a palette in one hand and a brush in the other": the other hand
+            self._body_part = "on"
+            return "someone", k + 3 if k + 2 < ce and toks[k + 2].text in _HOLDING_PARTS else k + 2
         if k + 1 < ce and toks[k].text == "its" and vocabulary.body_parts.get(toks[k + 1].text) == "on":
             if singular(toks[k + 1].text) not in vocabulary.part_owners and k + 1 not in starts:
-                # "a dog with a bell on its neck": carried by an animal's body, a part no thing has
+                # "a dog with a bell on its neck": carried by an animal's body, a part no thing has;
+                # what it holds "in its beak" or "in its paws" is in the grip of whoever the clause
+                # is about ("a pelican carries a bucket in its beak": the pelican's)
                 self._body_part = "on"
-                return "it living", k + 2
+                return "someone" if toks[k + 1].text in _GRIPS else "it living", k + 2
         if k + 1 >= ce or toks[k].text not in _PERSON_POSSESSIVES:
             return None
         j = k + 1
@@ -269,6 +279,15 @@ class _References:
             return None
         self._body_part = relation
         return _PERSON_POSSESSIVES[toks[k].text], j + 1
+
+    def _hand_before(self, pos: int) -> bool:
+        """Whether "one" and a part that holds come before ``pos`` in its sentence ("in one hand")."""
+        k = pos - 1
+        while k > 0 and self.toks[k].text not in (".", "!", "?", ";"):
+            if self.toks[k].text in _HOLDING_PARTS and self.toks[k - 1].text == "one":
+                return True
+            k -= 1
+        return False
 
     def _sitting_before(self, pos: int) -> bool:
         """A verb of sitting right before the phrase at ``pos`` ("sits in the front row")."""

@@ -83,6 +83,11 @@ _CONTENT_MARKERS = {("full", "of"), ("filled", "with"), ("packed", "with"), ("ov
 #: cushion embroidered with roses").
 _PICTURE_MARKERS = {(verb, "with") for verb in ("painted", "embroidered", "printed", "stencilled", "stenciled",
                                                 "patterned", "etched", "engraved", "tattooed", "inlaid")}  # fmt: skip
+#: What screens, pictures and windows do with what is on them: it is their picture, no thing of the
+#: layout ("a giant screen showing the rocket on its pad", "a window shows the Earth turning").
+_SHOW_VERBS = {"showing", "shows", "show", "displaying", "displays", "depicting", "depicts", "playing"}
+#: Things whose picture a show verb names (beside the depictions of the grammar): screens and windows.
+_SHOWING = {"tv", "monitor", "projector_screen", "laptop", "window", "windows", "screen", "screens", "mural", "tapestry"}
 #: Verbs of trade: the bare plural after them is what is sold or served, not things of the layout
 #: ("a stall selling pies", "a cart serving hot drinks"; but "a vendor sells two balloons").
 _WARES_VERBS = {"sell", "sells", "selling", "sold", "serve", "serves", "serving", "served", "offer", "offers",
