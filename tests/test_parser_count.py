@@ -239,3 +239,15 @@ def test_their_uncounted_things_come_one_per_owner_wherever_they_are_put():
         "A dozen spacesuits hang on racks along the back wall, their helmets on a shelf above them."
     ).objects)
     assert found["tool"] == 12, found  # the helmets: the spacesuits', not the racks'
+
+
+def test_one_at_each_one_of_a_group_and_a_seat_named_once_is_a_seat_each():
+    """"A clerk sits at each one on a comfy stool": a clerk per desk, a stool per clerk."""
+    scene = parse_scene("Three desks stand in a row. A clerk sits at each one on a comfy stool.")
+    assert Counter(o.category for o in scene.objects)["stool"] == 3
+    found = {(r.source, r.relation, r.target) for r in scene.relations}
+    assert {("clerk_3", "near", "desk_3"), ("clerk_3", "on", "stool_3")} <= found
+    # a word nobody listed that sits on a seat is a person, and gets a seat of its own too
+    mission = parse_scene("Three consoles face a screen. A flight controller sits at each one on a swivel chair.")
+    kinds = Counter(o.category for o in mission.objects)
+    assert kinds["figure"] == 3 and kinds["office_chair"] == 3

@@ -1352,14 +1352,15 @@ _MEASURE_THINGS = {"coil", "coils", "ring", "stack", "stacks", "column", "string
 
 
 def _hyphened_head_after(toks: list[_Tok], j: int, covered: set[int]) -> bool:
-    """Whether a hyphened word nobody listed follows the word at ``j`` within three words, with
-    only nouns between: the head of a compound the word at ``j`` qualifies ("bear taste-tester")."""
+    """Whether a hyphened noun of a doer nobody listed follows the word at ``j`` within three
+    words, with only nouns between: the head of a compound the word at ``j`` qualifies ("bear
+    taste-tester", "sword-swallower"; not "push-ups")."""
     for k in range(j + 1, min(j + 4, len(toks))):
         t = toks[k]
         if not t.text[:1].isalpha() or t.text in _STOP:
             return False
         if t.joined and k not in covered:
-            return True
+            return load_vocabulary().is_agent_noun(t.text)
     return False
 
 
@@ -1488,6 +1489,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         ) or (j < n and toks[j].text == "of" and not filled):
             continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"
         entry = vocabulary.family("figure") if members else _guess(toks, head, toks[max(i - 1, 0) : head])
+        if entry.category == GENERIC and any(vocabulary.is_creature(toks[k].text) for k in looks if toks[head].joined):
+            entry = vocabulary.family("figure")  # "a polar bear taste-tester": a creature in a role, as "a penguin chef"
         if entry.category == GENERIC and singular(word) in vocabulary.clothing:
             entry = Entry(GENERIC, vocabulary.clothing_size, "surface")  # "a felt hat" on a stand: its own size
         living = entry.category == "figure" or vocabulary.is_creature(word)
@@ -2275,8 +2278,10 @@ def _acts_as_person(toks: list[_Tok], k: int) -> bool:
     person_verbs = vocabulary.person_verbs
     if verb in person_verbs or (f"{verb}s" in person_verbs or f"{verb}es" in person_verbs) and verb.isalpha():
         return True  # ("three shearers work": the plural's verb, listed by its -s form)
-    if verb in vocabulary.postures.get("sitting", ()) and _seat_after(toks, k + skipped + 1):
-        return True  # "members sit on benches": sitting on a seat is what people do
+    after = k + skipped + 1
+    clause = next((p for p in range(after, min(after + 8, len(toks))) if not toks[p].text[:1].isalnum()), min(after + 8, len(toks)))
+    if verb in vocabulary.postures.get("sitting", ()) and any(_seat_after(toks, p) for p in range(after, clause)):
+        return True  # "members sit on benches", "a controller sits at each one on a swivel chair": people
     k += skipped
     owner = k + 1
     while owner < len(toks) and owner - k <= 2 and toks[owner].text in _PARTICLES:

@@ -1183,23 +1183,22 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     pass  # "a bus full of children waits": the bus waits
                 elif c.head is not None:
                     gap = [t.text for t in toks[last_event_end : m.start]]
-                    # (what a thing is made of or holds is no verb and ends no list: "holds a ball of
-                    # red thread and a torch", "carries a basket of apples and a lantern")
+                    # (a list of things in hand goes on over "and a" or ", a": "holds a cup and a spoon",
+                    # "with a sword, a shield and a helmet"; what a thing is made of or holds is no verb
+                    # and ends no list: "holds a ball of red thread and a torch")
                     listed_gap = gap
                     if gap[:1] == ["of"]:
                         j = next((j for j in range(1, len(gap)) if gap[j] in _STOP or gap[j] in (",", *_DETERMINERS)), len(gap))
                         listed_gap = gap[j:]
-                    closed = any(_is_verb(w) for w in listed_gap)
+                    listed = listed_gap[:1] in (["and"], ["or"], [","]) and all(
+                        w in _DETERMINERS or w in _NUMBERS for w in listed_gap[1:]
+                    )
+                    closed = any(_is_verb(w) for w in (listed_gap if listed else gap))
                     if c.wsub and any(w in _OWN_PLACE for w in gap):  # "a till at one end and a computer"
                         self._close_with(c)
                         c.wsub_before, closed = list(c.wsub), True
                     # ("one holding a lamp, the other a rope": the second holder's thing, its verb left out)
                     other = [w for w in gap if w != ","][:2] in (["the", "other"], ["another", "a"], ["another", "an"])
-                    # (a list of things in hand goes on over "and a" or ", a": "holds a cup and a spoon",
-                    # "with a sword, a shield and a helmet")
-                    listed = listed_gap[:1] in (["and"], ["or"], [","]) and all(
-                        w in _DETERMINERS or w in _NUMBERS for w in listed_gap[1:]
-                    )
                     stop = any(w in _STOP and w not in ("and", "or") for w in listed_gap)
                     if c.hand and c.wsub and not other and stop and not listed:
                         # "waves a flag from a gantry": what is in hand is the noun right after
@@ -1626,7 +1625,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             holding = c.hand or c.hold and all(self._living(h) for h in c.head)
             # (the holder faces what is aimed at: "aims a pitchfork at them"; "eats a pie at the foot of the
             # tower": the eater is there)
-            in_hand = holding and target not in _PERSONAL and kind in (*_GROUND_KINDS, *_HOLDER_KINDS, "face to", "foot of")
+            # ("two servants wave fans on either side of him": "him" is not the two, so someone else;
+            # but "three women, each with a basket at her feet": each one's own)
+            other = target in ("him", "her") and bool(c.head) and all(self.groups[h].count > 1 for h in c.head)
+            other = other and not self._each_before(rel.start)
+            in_hand = holding and (target not in _PERSONAL or other) and kind in (
+                *_GROUND_KINDS, *_HOLDER_KINDS, "face to", "foot of", "flank"
+            )
             # ("senators sit on benches, with an amphora beside each bench": by their own seat, not in hand)
             seats = {r[2] for r in self.relations if r[0] == "on" and r[1] in c.head}
             if in_hand and c.wsub and isinstance(target, list) and any(t in seats for t in target):
@@ -2163,7 +2168,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._per_each(targets, srcs[0])  # "two soldiers on horseback": a horse each
         elif tm is not None and len(srcs) == 1 and self._uncounted_new(tm) and self._apiece(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "two lawyers at separate tables": one each
-        elif tm is not None and kind in ("on", "in") and len(srcs) == 1 and self._living(srcs[0]) and self._seats_each(tm):
+        elif tm is not None and kind in ("on", "in") and len(srcs) == 1 and self._living(srcs[0]) and (
+            self._seats_each(tm) or self._seat_apiece(srcs[0], tm)
+        ):
             # "four astronauts sit on stools": one each (seats named before keep any more they had)
             seats = self.groups[targets[0]].count if tm.definite else 0
             self.groups[targets[0]].count = max(self.groups[srcs[0]].count, seats)
@@ -2244,6 +2251,25 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         guessed = m.group >= 0 and (m.group not in self.numbered or m.group in self.formations)
         again = _is_plural(self.toks, m) and m.definite and guessed and self.groups[m.group].size[0] < _ONE_SEAT_WIDTH
         return (self._uncounted_new(m) or again) and (self._carrier(m.group, ("seats",)) or cover or sat)
+
+    def _each_before(self, pos: int) -> bool:
+        """Whether "each" or "every" comes before ``pos`` in its sentence."""
+        k = pos - 1
+        while k >= 0 and self.toks[k].text not in (".", "!", "?"):
+            if self.toks[k].text in ("each", "every"):
+                return True
+            k -= 1
+        return False
+
+    def _seat_apiece(self, g: int, m: _Mention) -> bool:
+        """A seat named once, new here, for sitters the text gave one of to each of a group ("a
+        controller sits at each one on a swivel chair"): a seat of their own each."""
+        apiece = any(src == g for src, _ in self.pair_each) and self.groups[g].count > 1
+        k = m.start - 1
+        while k > 0 and m.start - k < 4 and self.toks[k].text not in _DETERMINERS and self.toks[k].text not in _STOP:
+            k -= 1  # back over its describing words ("a comfy stool")
+        one = k >= 0 and self.toks[k].text in ("a", "an") and self.groups[m.group].count == 1
+        return apiece and one and m.group >= 0 and self._carrier(m.group, ("seats",))
 
     def _planted(self, g: int) -> bool:
         """Several plants: each grows in a pot, tub or planter of its own."""
@@ -2422,8 +2448,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return True  # "at each desk", "at it", "at his feet"
             if k == start and w in _OWNER_PRONOUNS and k + 1 < len(self.toks) and self.toks[k + 1].text.isalpha():
                 return True  # "queuing at its window": by its owner
-            if w == "one" and k > start + 1:
-                return True  # "playing at the nearest one": one of a group
+            if w == "one" and (k > start + 1 or k > start and self.toks[start].text in ("each", "every")):
+                return True  # "playing at the nearest one", "sits at each one": one of a group
             if w == "each" and (k + 1 == len(self.toks) or not self.toks[k + 1].text[:1].isalpha()):
                 return True  # "two desks, with five players at each": at each of them
             if not (w in _DETERMINERS or w in ("each", "every") or (w[:1].isalpha() and w not in _STOP)):

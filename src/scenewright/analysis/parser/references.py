@@ -41,10 +41,6 @@ if TYPE_CHECKING:
 _FORMATION_NOUNS = {"stack": "stack", "pile": "stack", "heap": "stack", "row": "row", "line": "row",
                     "circle": "circle", "ring": "circle"}  # fmt: skip
 
-#: Parts an animal holds things in: what is "in its beak" is in the grip of the one the clause is about.
-_GRIPS = frozenset({"mouth", "mouths", "jaws", "beak", "beaks", "paw", "paws", "claw", "claws", "talon", "talons"})
-
-
 class _References:
     def _target_at(self, pos: int, ce: int) -> tuple[list[int] | str | None, int]:
         """The noun phrase (or pronoun) right after a relation phrase, and where it ends."""
@@ -263,11 +259,9 @@ class _References:
             return "someone", k + 3 if k + 2 < ce and toks[k + 2].text in _HOLDING_PARTS else k + 2
         if k + 1 < ce and toks[k].text == "its" and vocabulary.body_parts.get(toks[k + 1].text) == "on":
             if singular(toks[k + 1].text) not in vocabulary.part_owners and k + 1 not in starts:
-                # "a dog with a bell on its neck": carried by an animal's body, a part no thing has;
-                # what it holds "in its beak" or "in its paws" is in the grip of whoever the clause
-                # is about ("a pelican carries a bucket in its beak": the pelican's)
+                # "a dog with a bell on its neck": carried by an animal's body, a part no thing has
                 self._body_part = "on"
-                return "someone" if toks[k + 1].text in _GRIPS else "it living", k + 2
+                return "it living", k + 2
         if k + 1 >= ce or toks[k].text not in _PERSON_POSSESSIVES:
             return None
         j = k + 1

@@ -327,9 +327,13 @@ class Vocabulary:
         noun that acts (``acts``: "four pickers are working", "a picker sleeps"), or any noun
         that does what only people do (``human``: "a marshal waves", "their sensei, an old
         man, ..."); None otherwise ("a heater hums", "a tanuki sleeps")."""
-        one = singular(head.lower())
-        agent = one.endswith(_AGENT_ENDINGS) and len(one) - 2 >= _MIN_STEM
-        return self._family("figure") if (agent and acts) or human else None
+        return self._family("figure") if (self.is_agent_noun(head) and acts) or human else None
+
+    @staticmethod
+    def is_agent_noun(word: str) -> bool:
+        """Whether a word ends as a noun of one who does something ("tester", "swallower")."""
+        one = singular(word.lower())
+        return one.endswith(_AGENT_ENDINGS) and len(one) - 2 >= _MIN_STEM
 
     def family(self, family: str) -> Entry:
         """The entry of a shape family ("vehicle"), its size and rest the catalogue's."""

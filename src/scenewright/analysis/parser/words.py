@@ -131,7 +131,8 @@ _HOLD_PAIRS = {("loaded", "with"), ("laden", "with"), ("topped", "with"), ("set"
 #: with "holds".
 _HAND_VERBS = {"waves", "waving", "wields", "wielding", "brandishes", "brandishing", "clutches", "clutching",
                "grips", "gripping", "clasps", "clasping", "swings", "swinging", "twirls", "twirling", "raises",
-               "raising", "juggle", "juggles", "juggling"}  # fmt: skip
+               "raising", "juggle", "juggles", "juggling", "wave", "wield", "brandish", "clutch", "clasp", "twirl",
+               "raise"}  # fmt: skip
 #: Verbs of taking a thing up in one's arms, by their stem (:func:`_verb_stem`): what they take is
 #: in arms whenever a person can carry it ("lifts a crate", "two men haul a trunk", "hugs a
 #: pillow"), where other verbs have in hand only a hand-sized thing ("examines a crate": by it).
