@@ -1628,7 +1628,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # ("two servants wave fans on either side of him": "him" is not the two, so someone else;
             # but "three women, each with a basket at her feet": each one's own)
             other = target in ("him", "her") and bool(c.head) and all(self.groups[h].count > 1 for h in c.head)
-            other = other and not self._each_before(rel.start)
+            other = other and not self._said_before(rel.start, lambda k: toks[k].text in ("each", "every"))
             in_hand = holding and (target not in _PERSONAL or other) and kind in (
                 *_GROUND_KINDS, *_HOLDER_KINDS, "face to", "foot of", "flank"
             )
@@ -2252,11 +2252,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         again = _is_plural(self.toks, m) and m.definite and guessed and self.groups[m.group].size[0] < _ONE_SEAT_WIDTH
         return (self._uncounted_new(m) or again) and (self._carrier(m.group, ("seats",)) or cover or sat)
 
-    def _each_before(self, pos: int) -> bool:
-        """Whether "each" or "every" comes before ``pos`` in its sentence."""
+    def _said_before(self, pos: int, test) -> bool:
+        """Whether a word before ``pos`` in its sentence passes ``test`` (given the word's index)."""
         k = pos - 1
         while k >= 0 and self.toks[k].text not in (".", "!", "?"):
-            if self.toks[k].text in ("each", "every"):
+            if test(k):
                 return True
             k -= 1
         return False

@@ -253,7 +253,9 @@ class _References:
             # "a glass in one hand", "a sword in each hand", ", baton in hand": whoever the clause is about
             self._body_part = vocabulary.body_parts[toks[k].text]
             return "someone", k + 1
-        if k == pos and [t.text for t in toks[k : k + 2]] == ["the", "other"] and self._hand_before(k):
+        if k == pos and [t.text for t in toks[k : k + 2]] == ["the", "other"] and self._said_before(
+            k, lambda j: j > 0 and toks[j].text in _HOLDING_PARTS and toks[j - 1].text == "one"
+        ):
             # "a palette in one hand and a brush in the other": the other hand
             self._body_part = "on"
             return "someone", k + 3 if k + 2 < ce and toks[k + 2].text in _HOLDING_PARTS else k + 2
@@ -273,15 +275,6 @@ class _References:
             return None
         self._body_part = relation
         return _PERSON_POSSESSIVES[toks[k].text], j + 1
-
-    def _hand_before(self, pos: int) -> bool:
-        """Whether "one" and a part that holds come before ``pos`` in its sentence ("in one hand")."""
-        k = pos - 1
-        while k > 0 and self.toks[k].text not in (".", "!", "?", ";"):
-            if self.toks[k].text in _HOLDING_PARTS and self.toks[k - 1].text == "one":
-                return True
-            k -= 1
-        return False
 
     def _sitting_before(self, pos: int) -> bool:
         """A verb of sitting right before the phrase at ``pos`` ("sits in the front row")."""
