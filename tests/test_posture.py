@@ -25,6 +25,10 @@ def _figure(text: str, name: str):
         ("An old wizard dozes in a patched armchair by the fireplace.", "wizard", "sitting"),
         ("A boy and a girl sit across from each other at the kotatsu.", "boy", "sitting"),
         ("A man lies on a picnic blanket under a tree.", "man", "lying"),
+        # on a rug or a blanket the verb decides; with no verb of posture one lies
+        ("Three musicians with flutes sit on a carpet.", "musician", "sitting"),
+        ("A boy stands on the rug by the fire.", "boy", None),
+        ("A woman reads on a blanket.", "woman", "lying"),
         ("A knight stands guard beside the gate.", "knight", None),
         ("A chef stirs a pot on the stove.", "chef", None),
         # riders sit on a vehicle or an animal unless the text has them stand on it

@@ -25,6 +25,9 @@ POSTURES = ("kneeling", "sitting", "lying")
 POSTURE_WORDS: dict[str, tuple[str, ...]] = {p: load_vocabulary().postures[p] for p in POSTURES}
 #: Hosts a person lies on, and hosts a person sits on besides the seats of :mod:`.roles`.
 LYING_HOSTS = frozenset({"bed", "crib", "rug", "picnic_blanket", "hammock", "pet_bed", "bath_mat", "mat", "sun_lounger"})
+#: Lying hosts that are a floor to sit or stand on as well: on them the verb decides ("three
+#: musicians sit on a carpet", "a picnic on a blanket"), and with no verb of posture one lies.
+FLOOR_COVERS = frozenset({"rug", "picnic_blanket", "bath_mat", "mat"})
 SITTING_HOSTS = roles.SEATS | frozenset({"cushion", "swing", "log", "rock", "stairs", "bean_bag", "pouf", "kotatsu"})
 #: Shares of the standing height a sitting person's box takes in depth and height (knees up,
 #: seat at the box's bottom), as the figure generator folds a standing person.
@@ -80,8 +83,9 @@ def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
     """Kneeling, sitting, lying or ``None`` for a person of the parse; ``None`` for anything else.
 
     Kneeling is said in so many words and holds on any host. Else the host decides first (a
-    person on a bed lies, on a chair sits, whatever the verb); with no host, or a host of
-    neither kind, the sentence's verbs do ("a boy sits at the kotatsu"); "asleep"/"sleeps"
+    person on a bed lies, on a chair sits, whatever the verb), but on a rug or a blanket the
+    verb does ("sit on a carpet", "stands on the rug"); with no host, or a host of neither
+    kind, the sentence's verbs do ("a boy sits at the kotatsu"); "asleep"/"sleeps"
     alone is lying unless the host is a seat ("dozes in the armchair" sits). On a vehicle or a
     ridden animal a person sits unless the sentence has them stand ("standing on its bonnet").
     """
@@ -92,6 +96,11 @@ def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
         return "kneeling"  # on whatever carries them ("kneels on a tatami mat")
     by_id = {o.id: o for o in parsed.objects}
     hosts = [by_id[r.target].category for r in parsed.relations if r.source == obj.id and r.relation == "on" and r.target in by_id]
+    if hosts and all(h in FLOOR_COVERS for h in hosts):
+        if _mentions(clause, load_vocabulary().postures["standing"]):
+            return None
+        if posture_in(clause) is not None:
+            return posture_in(clause)
     if any(h in LYING_HOSTS for h in hosts):
         return "lying"
     if any(h in SITTING_HOSTS for h in hosts):
