@@ -99,8 +99,9 @@ def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
     if hosts and all(h in FLOOR_COVERS for h in hosts):
         if _mentions(clause, load_vocabulary().postures["standing"]):
             return None
-        if posture_in(clause) is not None:
-            return posture_in(clause)
+        said = posture_in(clause)
+        if said is not None:
+            return said
     if any(h in LYING_HOSTS for h in hosts):
         return "lying"
     if any(h in SITTING_HOSTS for h in hosts):

@@ -2264,12 +2264,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
     def _seat_apiece(self, g: int, m: _Mention) -> bool:
         """A seat named once, new here, for sitters the text gave one of to each of a group ("a
         controller sits at each one on a swivel chair"): a seat of their own each."""
-        apiece = any(src == g for src, _ in self.pair_each) and self.groups[g].count > 1
+        if m.group < 0 or self.groups[m.group].count != 1 or not self._carrier(m.group, ("seats",)):
+            return False
         k = m.start - 1
         while k > 0 and m.start - k < 4 and self.toks[k].text not in _DETERMINERS and self.toks[k].text not in _STOP:
             k -= 1  # back over its describing words ("a comfy stool")
-        one = k >= 0 and self.toks[k].text in ("a", "an") and self.groups[m.group].count == 1
-        return apiece and one and m.group >= 0 and self._carrier(m.group, ("seats",))
+        apiece = any(src == g for src, _ in self.pair_each) and self.groups[g].count > 1
+        return apiece and self.toks[k].text in ("a", "an")
 
     def _planted(self, g: int) -> bool:
         """Several plants: each grows in a pot, tub or planter of its own."""
