@@ -93,13 +93,13 @@ class _Contents:
         is no thing of the layout ("a giant screen on the front wall, showing the rocket on its
         pad", "a stained-glass window depicts a ship")."""
         toks, out = self.toks, []
-        for v, t in enumerate(toks):
-            if t.text not in _SHOW_VERBS:
+        for v, verb in enumerate(toks):
+            if verb.text not in _SHOW_VERBS:
                 continue
             before = [m for m in mentions if m.end <= v]
             gap = [t.text for t in toks[before[-1].end if before else 0 : v]]
             if not before or len(gap) > 6 or any(w in (".", "!", "?", ";") for w in gap):
-                shower = any(w in _SHOWING for w in [t.text for t in toks[max(0, v - 2) : v]])
+                shower = any(t.text in _SHOWING for t in toks[max(0, v - 2) : v])
             else:
                 shower = before[-1].category in _DEPICTIONS or before[-1].category in _SHOWING or any(
                     w in _SHOWING for w in gap[-2:]

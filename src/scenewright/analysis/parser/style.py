@@ -364,13 +364,13 @@ def detect_ground(text: str, indoor: bool) -> str:
             if explicit and not indoor and kind in _FLOORS:
                 continue  # outside "a small bakery on a village street": the street's ground, not its floor
             if explicit and indoor and kind in _OPEN_GROUNDS:
-                continue
+                continue  # in "a village hall" the village gives no floor
             for w in words:
                 pos = low.find(" " + w + " ")
                 if pos < 0 or (explicit and w in _PART_ROOMS and _owner_floors(low, pos + len(w) + 1)):
                     continue  # ("the control room of a submarine": the submarine's floor)
                 if indoor and kind in _OPEN_GROUNDS and not low.startswith(_FLOOR_NOUNS, pos + len(w) + 1):
-                    continue
+                    continue  # "snow falls outside the workshop" floors nothing; "a dirt floor" does
                 # materials by their order of precedence; places by where the text names them
                 key = (explicit, rank, pos, kind) if explicit == 0 else (explicit, int(pos >= opening), pos, kind)
                 if best is None or key < best:
