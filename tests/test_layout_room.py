@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 
 from scenewright.layout import audit, check, solve
 from scenewright.layout.relations import check_room
-from scenewright.layout.room import SLACK, RoomShape, boxes_of, problems, wall_facing
+from scenewright.layout.room import SLACK, RoomShape, access_trouble, boxes_of, problems, wall_facing
 from scenewright.scene import Constraint, Opening, Room, SceneObject, Vec3
 
 L_SHAPE = [(0.0, 0.0), (5.0, 0.0), (5.0, 2.5), (2.5, 2.5), (2.5, 5.0), (0.0, 5.0)]
@@ -76,6 +76,18 @@ def test_a_wall_of_furniture_across_the_room_leaves_the_far_side_unreachable():
     # With a gap the agent fits through, everything is reached.
     opened = [o for o in shelf_row if o.id != "shelf_1"]
     assert RoomShape(room).unreachable([*opened, behind, front]) == ([], [])
+
+
+def test_trouble_a_larger_room_could_cure_counts_each_object_out_of_reach():
+    """One sentence names every object out of reach; growing a room must still see seven of
+    them as worse than one (a troop bay kept seven seats unreachable over a grown room with one)."""
+    room = door_room()
+    shelf_row = [box(f"shelf_{k}", -1.5 + k, 0.0, 1.0, 0.4, 1.9) for k in range(4)]
+    one = [*shelf_row, box("chair_0", 0.0, 1.5, 0.5, 0.5, 0.9)]
+    three = [*one, box("chair_1", -1.2, 1.5, 0.5, 0.5, 0.9), box("chair_2", 1.2, 1.5, 0.5, 0.5, 0.9)]
+    assert len(problems(room, one)) == len(problems(room, three)) == 1
+    assert (access_trouble(room, one), access_trouble(room, three)) == (1, 3)
+    assert access_trouble(Room.rectangle(3, 3), [box("a", 0, 0)]) == 0  # no door: no larger floor cures that
 
 
 def test_a_room_without_a_door_is_reported():

@@ -332,9 +332,11 @@ def boxes_of(objects: Sequence[SceneObject]) -> Boxes:
                  np.array([float(b.yaw) for b in parts]), np.stack([b.foot for b in parts]))
 
 
-def access_problems(room: Room, objects: Sequence[SceneObject]) -> list[str]:
-    """The :func:`problems` a larger floor can cure: all but a missing door."""
-    return [p for p in problems(room, objects) if p != NO_DOOR]
+def access_trouble(room: Room, objects: Sequence[SceneObject]) -> int:
+    """How much of what :func:`problems` finds a larger floor can cure (all but a missing
+    door), counted by the things it is about: seven seats out of reach are worse than one,
+    though one sentence says each."""
+    return sum(count for sentence, count in _findings(room, objects) if sentence != NO_DOOR)
 
 
 #: The sentence :func:`problems` says of a room without a door.
@@ -344,25 +346,30 @@ NO_DOOR = "the room has no door"
 def problems(room: Room, objects: Sequence[SceneObject], floor_ids: set[str] | None = None) -> list[str]:
     """What is wrong with ``objects`` in ``room``, one sentence each: objects outside it,
     openings blocked, doors nobody can step through, floor objects nobody can walk to."""
+    return [sentence for sentence, _ in _findings(room, objects, floor_ids)]
+
+
+def _findings(room: Room, objects: Sequence[SceneObject], floor_ids: set[str] | None = None) -> list[tuple[str, int]]:
+    """:func:`problems`' sentences, each with how many objects or doors it is about."""
     shape = RoomShape(room)
     out = []
     if objects:
         outside = shape.outside_by(boxes_of(objects))
         for o, by in zip(objects, outside):
             if by > SLACK:
-                out.append(f"{o.id} is outside the room by {by:.2f} m")
+                out.append((f"{o.id} is outside the room by {by:.2f} m", 1))
         for o, by in zip(objects, shape.above_ceiling(boxes_of(objects))):
             if by > 0:
-                out.append(f"{o.id} reaches {by:.2f} m above the ceiling")
+                out.append((f"{o.id} reaches {by:.2f} m above the ceiling", 1))
     for k, opening, ids in shape.blocked_openings(objects):
-        out.append(f"{opening.kind} {k} on wall_{opening.wall} is blocked by {', '.join(ids)}")
+        out.append((f"{opening.kind} {k} on wall_{opening.wall} is blocked by {', '.join(ids)}", len(ids)))
     if not any(o.kind == "door" for o in room.openings):
-        out.append(NO_DOOR)
+        out.append((NO_DOOR, 1))
     unreachable, stuck = shape.unreachable(objects, floor_ids)
     for k in stuck:
-        out.append(f"door {k} on wall_{room.openings[k].wall} opens onto no free floor")
+        out.append((f"door {k} on wall_{room.openings[k].wall} opens onto no free floor", 1))
     if unreachable:
-        out.append(f"no walking path from a door reaches {', '.join(unreachable)}")
+        out.append((f"no walking path from a door reaches {', '.join(unreachable)}", len(unreachable)))
     return out
 
 

@@ -17,7 +17,7 @@ import numpy as np
 from scenewright.core.protocols import VisionLanguageModel
 from scenewright.folder import SceneFolder
 from scenewright.layout import LayoutResult, solve
-from scenewright.layout.room import access_problems, resized
+from scenewright.layout.room import access_trouble, resized
 from scenewright.scene import ROOM_RELATIONS, Constraint, Scene, SceneObject
 
 if TYPE_CHECKING:  # the meshes are an asset's AssetMesh: the collision world needs no mesh library
@@ -51,7 +51,7 @@ def _grown(scene: Scene, best: LayoutResult, meshes: Mapping[str, trimesh.Trimes
 
     def trouble(result: LayoutResult, room) -> tuple[int, int]:
         placed = [o for o in result.objects if o.id in result.report.placed]
-        return len(result.report.unplaced), len(access_problems(room, placed))
+        return len(result.report.unplaced), access_trouble(room, placed)
 
     room, score = scene.room, trouble(best, scene.room)
     bigger = room
@@ -62,8 +62,9 @@ def _grown(scene: Scene, best: LayoutResult, meshes: Mapping[str, trimesh.Trimes
         bigger = resized(bigger, round((x1 - x0) * GROW_STEP, 1), round((y1 - y0) * GROW_STEP, 1))
         result = solve(scene.objects, best.constraints, meshes=meshes, bounds=scene.bounds,
                        time_limit=time_limit / GROW_STEPS, seed=scene.seed, room=bigger)
-        if trouble(result, bigger) < score:
-            best, room, score = result, bigger, trouble(result, bigger)
+        now = trouble(result, bigger)
+        if now < score:
+            best, room, score = result, bigger, now
     if room is not scene.room:
         (x0, y0), (x1, y1) = np.min(room.floor, axis=0), np.max(room.floor, axis=0)
         left = "every object placed and within reach" if score == (0, 0) else f"{sum(score)} problems left"
