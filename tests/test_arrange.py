@@ -339,3 +339,14 @@ def test_a_person_at_a_console_turns_to_it():
     objects = _by_id(made.objects)
     operator = next(k for k in objects if k.startswith("radio_operator") or k.startswith("operator"))
     assert (operator, "face to", "control_panel_1") in {(r.source, r.relation, r.target) for r in made.relations}
+
+
+def test_one_who_sits_at_a_console_on_a_chair_has_the_chair_turned_to_it():
+    parsed = _scene("figure", "office_chair", "control_panel", relations=[
+        ("figure_1", "near", "control_panel_1", False), ("figure_1", "on", "office_chair_1", False)])
+    made = compose(parsed)
+    turned = {(r.source, r.relation, r.target) for r in made.relations}
+    assert ("office_chair_1", "face to", "control_panel_1") in turned
+    assert ("figure_1", "face to", "control_panel_1") not in turned  # the chair turns them
+    o = _by_id(made.objects)
+    assert _faces(o["office_chair_1"], o["control_panel_1"], within=30.0)

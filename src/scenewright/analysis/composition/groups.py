@@ -308,20 +308,26 @@ RULES = (bed, bars, desks, dining, lounge, lamps, rugs)
 
 def facing_focal(objects, relations: list[ParsedRelation]) -> list[ParsedRelation]:
     """A seat the text puts by a fireplace or a TV ("an armchair by the fireplace") turns to it,
-    and so does a person by what they work at ("sailors sit at the console", "a cook by the
-    stove"), as a designer would set them: one inferred ``face to`` per such seat or person that
-    faces nothing yet and rests on nothing that turns them."""
+    and so does a person by what they work at ("a cook by the stove"), or the seat they sit on
+    ("a controller sits at each console on a swivel chair": the chair turns, and them with it),
+    as a designer would set them: one inferred ``face to`` per such seat or person that faces
+    nothing yet."""
     kind = {o.id: roles.kind(o.category) for o in objects}
     person = {o.id for o in objects if load_catalogue()[o.category].shape == "figure"}
-    seated = {r.source for r in relations if r.relation == "on"}
+    seat_of = {r.source: r.target for r in relations if r.relation == "on"}
     facing = {r.source for r in relations if r.relation == "face to"}
     out = []
     for r in relations:
-        if r.relation not in ("near", "side of", "left of", "right of") or r.source in facing:
+        if r.relation not in ("near", "side of", "left of", "right of"):
             continue
-        by_focal = kind.get(r.target) in roles.FOCAL and kind.get(r.source) in roles.SEATS
-        at_work = r.relation == "near" and kind.get(r.target) in roles.WORKPLACES and r.source in person - seated
-        if by_focal or at_work:
-            out.append(ParsedRelation(source=r.source, relation="face to", target=r.target, inferred=True))
-            facing.add(r.source)
+        if kind.get(r.target) in roles.FOCAL and kind.get(r.source) in roles.SEATS:
+            turned = r.source
+        elif r.relation == "near" and kind.get(r.target) in roles.WORKPLACES and r.source in person:
+            turned = seat_of.get(r.source, r.source)
+        else:
+            continue
+        if {r.source, turned} & facing or (turned != r.source and kind.get(turned) not in roles.SEATS):
+            continue  # facing something already, or on what turns nobody (a cart, a rug)
+        out.append(ParsedRelation(source=turned, relation="face to", target=r.target, inferred=True))
+        facing.add(turned)
     return out
