@@ -201,6 +201,9 @@ class _Clause:
     each_deed: bool = False
     #: How many members "each" takes at a time: "each pair pulling a plough" is a plough a pair.
     each_unit: int = 1
+    #: The several that a clause opening "one of them" picks its doer from ("colonists sit in the
+    #: pews, one of them rocking a baby in her arms": "her" is one of them).
+    one_of: list[int] = field(default_factory=list)
     #: Single subjects named together that "each" goes over ("a dwarf and an elf, each with a
     #: tankard"): a with-thing of its own for every one.
     each_of: list[int] = field(default_factory=list)
@@ -972,6 +975,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         while k < ce and toks[k].text in ("and", "or", "but", "then", "also", "so", "there", "is", "are"):
             k += 1
         one_a_side = k + 1 < ce and toks[k].text == "one" and k + 1 in self.rel_at
+        if [t.text for t in toks[k : k + 3]] == ["one", "of", "them"]:
+            c.one_of = list(prev_subject)
         if one_a_side and self.rel_at[k + 1].kind.startswith("flank"):
             # "two speakers on the desk, one on each side of the console": the speakers flank it
             plural = [g for g in [*self.history, *c.groups] if self.groups[g].count > 1]
@@ -985,6 +990,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         starts_with_rel = j in self.rel_at
         # ", sipping coffee from a cup": a clause that opens with a participle is the subject's before
         participial = not c.first and k < ce and toks[k].text.endswith("ing") and k not in self.by_start
+        participle = k if participial and k not in self.rel_at else None
         vehicle_tows = k in self.rel_at and self.rel_at[k].kind == "towing"  # ("drives a quad bike, towing a trailer")
         if participial and self.doers and not vehicle_tows:
             prev_subject = list(self.doers)  # "a keeper feeds the tiger, standing on a platform": the keeper
@@ -1233,7 +1239,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     flown = verb_object and self._living(c.main[-1]) and any(
                         t.text in _HANG_VERBS for t in toks[last_event_end : m.start]
                     )
-                    if into:
+                    acting = participle is not None and self._participle_deed(participle, m, prev_subject, c)
+                    if acting:  # "a medic kneels between them, checking a stretcher": the medic by it
+                        c.deeds.append((list(self.doers or prev_subject), g))
+                        c.deed_end = m.end
+                    elif into:
                         c.deeds[-1], c.deed_end = (c.deeds[-1][0], g), m.end
                     elif led:
                         follower, anchor = self._keeps_by(g, c.main[-1])
@@ -1293,6 +1303,22 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 thing = hosts[-1]
             free = [d for d in doers if not any({r[1], r[2]} == {d, thing} for r in self.relations)]
             self._relate("near", free, thing)
+
+    def _participle_deed(self, k: int, m: _Mention, prev_subject: list[int], c: _Clause) -> bool:
+        """Whether ``m`` is what the participle at ``k`` that opens a clause acts on, for the
+        living subject before (", checking a stretcher", ", feeding a falcon"): the clause's
+        first thing, right after the participle, too big to have in hand or living, and a deed
+        (holding, watching, sitting are not)."""
+        doers = self.doers or prev_subject
+        word = self.toks[k].text
+        if c.main or c.deeds or not doers or not all(self._living(g) for g in doers):
+            return False
+        if not self._living(m.group) and max(self.groups[m.group].size) <= _HANDHELD_SIZE:
+            return False  # ", painting a toy sailboat", ", filling crates": worked on in hand or on the spot
+        if word in _HAND_VERBS or self._lookout(word) or word in _HANG_VERBS or word in _TURN_VERBS:
+            return False
+        gap = self.toks[k + 1 : m.start - len(m.adjectives)]
+        return all(t.text in _DETERMINERS or t.text in _NUMBERS for t in gap) and not c.main_groups[:-1]
 
     def _object_of_verb(self, c: _Clause, start: int, end: int) -> bool:
         """Whether the noun at ``end`` is the object of a verb that follows the clause's subject

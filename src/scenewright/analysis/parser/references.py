@@ -554,12 +554,17 @@ class _References:
             *c.subjects, *(c.head or []), *c.main_groups, *reversed(c.groups), *self.doers, *reversed(self.history)
         ]  # fmt: skip
         vocabulary = load_vocabulary()
+        # "him" / "her" is one, unless the clause is about several, each on their own ("each nurse
+        # holds a tray in her hand", "one of them rocks a baby in her arms"): "... facing the
+        # marines. Crates stand beside her": the sergeant
+        own = {*c.subjects, *(c.head or []), *c.main, *c.one_of}
 
         def fits(g: int) -> bool:
             group = self.groups[g]
             return (
                 g not in srcs and self._living(g) and vocabulary.agrees(word, group.name.split()[-1])
                 and (word != "them living" or group.count > 1)
+                and (word not in ("him", "her") or group.count == 1 or g in own)
             )  # fmt: skip
 
         if word == "it living":  # "its neck": an animal's, never a person's

@@ -103,10 +103,12 @@ _HANG_VERBS = {"hang", "hangs", "hanging", "hung", "strung", "hover", "hovers", 
                "floating", "suspended", "dangle", "dangles", "dangling", "fly", "flies", "flying",
                "soar", "soars", "soaring", "glow", "glows", "drift", "drifts", "mounted", "swing",
                "swings", "swim", "swims", "swimming"}  # fmt: skip
-#: Verbs of turning in place: what turns or spins above a thing is up in the air there (a hologram,
-#: a mobile, a fan), not a tall thing standing by it as a tree "above" a pond does.
+#: Verbs of turning or flickering in place: what turns, spins or flickers over a thing is up in
+#: the air there (a hologram, a mobile, a fan), not a tall thing standing by it as a tree "above"
+#: a pond does.
 _TURN_VERBS = {"turn", "turns", "turning", "spin", "spins", "spinning", "rotate", "rotates", "rotating",
-               "revolve", "revolves", "revolving", "twirl", "twirls", "twirling", "whirl", "whirls", "whirling"}  # fmt: skip
+               "revolve", "revolves", "revolving", "twirl", "twirls", "twirling", "whirl", "whirls", "whirling",
+               "flicker", "flickers", "flickering", "shimmer", "shimmers", "shimmering"}  # fmt: skip
 
 _PLANT_SHAPES = ("tree", "pine_tree", "palm_tree", "bush", "flower_bed")
 _FINITE = {"is", "are", "was", "were", "has", "have", "had", "stand", "sit", "lie", "rest", "hang", "grow",
