@@ -405,3 +405,34 @@ def test_a_fronted_host_carries_what_its_subject_stands_or_sits_on():
 def test_who_acts_from_the_top_of_a_thing_is_on_it_not_what_they_act_on():
     found = rels("Two squirrels scold the workers from the top of a lamp post.")
     assert ("squirrel_1", "on", "lamp_post_1") in found and not any(s.startswith("worker") for s, _, _ in found)
+
+
+@pytest.mark.parametrize("text, expected, wrong", [
+    # "her" is one: not the several just named, but the one before them
+    ("The sergeant stands near the ramp, facing the marines. Crates are stacked on a pallet beside her, "
+     "and a dog sits at her feet.", {("pallet_1", "side of", "sergeant_1"), ("dog_1", "in front of", "sergeant_1")},
+     ("pallet_1", "side of", "marine_1")),
+    # ... unless the clause picks one of them
+    ("Twelve pews face the altar. Colonists sit in the pews, one of them rocking a baby in her arms.",
+     {("baby_1", "on", "colonist_1")}, None),
+])
+def test_him_or_her_is_one_unless_the_clause_is_about_several(text, expected, wrong):
+    found = rels(text)
+    assert expected <= found and wrong not in found
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("A medic kneels by the door, checking a stretcher.", ("medic_1", "near", "stretcher_1")),
+    ("A girl sits on a log, feeding a falcon.", ("girl_1", "near", "falcon_1")),
+])
+def test_a_participle_that_acts_on_a_big_or_living_thing_puts_its_doer_by_it(text, expected):
+    assert expected in rels(text)
+
+
+def test_a_participle_on_a_thing_in_hand_places_nobody_by_it():
+    found = rels("An old toymaker sits on a stool at his bench, painting a toy sailboat.")
+    assert not any(r == "near" and t.startswith("boat") for _, r, t in found)
+
+
+def test_what_flickers_over_a_table_hangs_above_it():
+    assert ("hologram_1", "above", "table_1") in rels("A hologram flickers over a tactical table.")
