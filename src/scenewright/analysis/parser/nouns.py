@@ -364,6 +364,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "the farrier, a broad woman, shoes a grey mare": a verb taking its object
         if _verb_of_no_thing(toks, s, e):
             continue  # "the saloon doors swing behind him": what no-things do, not a swing
+        if e - s == 1 and [t.text for t in toks[max(0, s - 3) : s]] == ["of", "them", ","]:
+            continue  # "its passengers, a dozen of them, crowd along the parapet": the verb after the count
         if entry is None and k > 0 and raw[k - 1][1] == s and _plural_subject_before(toks, raw[k - 1], e):
             continue  # "two kids fish from the pier", "the children swing on the gate": a verb here
         follow = toks[e].text if e < n else ""
@@ -2808,12 +2810,12 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
     if count is None and j >= 1 and (toks[j - 1].text, toks[j].text) in _CROWDED:
         # "a grandstand packed with cheering peasants": a crowd ("full of goldfish": a plural
         # that looks singular, since a bare singular thing is never what a place is full of)
-        count = _VAGUE["many"]
+        count = _QUANTITY["crowd"]
     total = _total_after(toks, m) if plural else None
     if total is not None:  # "Rows of bidders sit ..., a dozen in all"
         count, counted = total, True
     if count is None and plural and singular(toks[m.end - 1].text) in load_vocabulary().crowd_words:
-        count = _VAGUE["many"]  # "spectators gather behind the rope": a crowd, not a few
+        count = _QUANTITY["crowd"]  # "spectators gather behind the rope": a crowd, not a few
     if count is None:
         count = UNCOUNTED if plural else 1
     count = count if exact else min(count, CROWD)
@@ -2865,7 +2867,12 @@ _TOTALS = {("in", "all"), ("in", "total"), ("all", "told")}
 
 def _total_after(toks: list[_Tok], m: _Mention) -> int | None:
     """The count in ", a dozen in all" / ", twenty in total" / ", thirty altogether" later in the
-    sentence of its first noun ("Rows of pupils sit on benches, twenty in all"), else None."""
+    sentence of its first noun ("Rows of pupils sit on benches, twenty in all"), or in ", a
+    dozen of them," right after the noun ("its passengers, a dozen of them, crowd along"), else None."""
+    a = m.end + 1 + (m.end + 1 < len(toks) and toks[m.end + 1].text in ("a", "an"))
+    words = [t.text for t in toks[a : a + 3]]
+    if toks[m.end : m.end + 1] and toks[m.end].text == "," and words[:1] and words[0] in _NUMBERS and words[1:] == ["of", "them"]:
+        return _NUMBERS[words[0]]
     start = max((k for k in range(m.start) if toks[k].text in (".", "!", "?")), default=-1) + 1
     if any(_match_at(toks, k) for k in range(start, m.start)):
         return None  # (a total tells how many of the sentence's subject there are)

@@ -30,7 +30,7 @@ _QUANTITY = {
     "series": 3, "trio": 3, "clusters": 5, "grove": 4, "patch": 1, "flock": 6, "herd": 6, "flocks": 12,
     "herds": 12, "string": 1, "school": 8, "shoal": 8, "swarm": 10, "pod": 4, "pack": 5, "pride": 5, "troop": 6,
     "litter": 4, "gaggle": 6, "colony": 10, "fleet": 5, "convoy": 4, "crew": 4, "team": 5, "squad": 5, "gang": 4,
-    "band": 4, "crowd": 8, "throng": 8, "procession": 6, "column": 4, "file": 4, "parade": 6, "train": 4,
+    "band": 4, "crowd": 10, "crowds": 10, "throng": 10, "procession": 6, "column": 4, "file": 4, "parade": 6, "train": 4,
     "caravan": 4, "tower": 4, "pyramid": 6,
 }  # fmt: skip
 _DETERMINERS = {"a", "an", "the", "this", "that", "these", "those", "its", "their", "his", "her", "our", "my",
