@@ -132,6 +132,17 @@ def test_a_wall_thing_does_not_take_the_corner_of_the_next_clause():
     assert not any(source == "mirror_1" for source, _, _ in got)
 
 
+def test_a_thing_at_the_far_end_does_not_take_the_wall_of_the_next_clause():
+    """At the back of the room is no wall's: the stage stays a low platform on the floor and the
+    screen named after it hangs (the stage was stood on end as a board 5 m high)."""
+    parsed = parse_scene("A pub. The quizmaster stands on a low stage at the far end with a microphone in his hand, "
+                         "and a projector screen hangs on the wall behind him.")
+    got = {(r.source, r.relation, r.target) for r in wall_phrases(parsed)}
+    assert got == {("projector_screen_1", "on wall", "room")}
+    stage = next(o for o in parsed.objects if o.name.endswith("stage"))
+    assert stage.size[2] < 1.0 < stage.size[1]
+
+
 def test_the_nearest_of_a_wall_and_a_ceiling_phrase_after_a_thing_places_it():
     """A thing takes the first phrase after its name: hung on the wall when the wall comes first,
     though the ceiling is named later in the sentence for something the parse did not keep; a

@@ -458,7 +458,9 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
             between = sentence[at:phrase.start()]
             preposition, side, what = phrase.group(1), phrase.group(2), phrase.group(3)
             wall_thing = hangs_by_kind(o) and what == "wall"
-            if o.anchor is None and not wall_thing and _names_between(between, names, name):
+            # (anchored at the back or in the middle of the room is no wall's: "a stage at the far
+            # end with a microphone in his hand, and a screen hangs on the wall" hangs the screen)
+            if o.anchor not in ("wall", "corner") and not wall_thing and _names_between(between, names, name):
                 break
             if what == "window" and not _MOUNTED.search(between):
                 break  # a thing hung in the window is on its wall; one standing there is not
