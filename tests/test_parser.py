@@ -888,6 +888,8 @@ def test_a_building_the_text_puts_things_outside_of_is_seen_from_outside():
         ("A space station docking bay. A small shuttle sits on the landing pad in the middle of the bay.", True),
         ("A busy airport gate. Rows of seats face the large window.", True),
         ("A quiet bay at dawn. Two boats float on the water.", False),  # a bay of the sea is no bay of a station
+        ("A sci-fi repair bay. A battered shuttle rests on a landing pad, and a robot welder kneels beside it.", True),
+        ("The loading bay of a warehouse at night. A forklift lifts a pallet.", True),
     ],
 )
 def test_the_bays_of_a_station_and_an_airport_s_gates_are_rooms(text, indoor):

@@ -413,6 +413,9 @@ def detect_water(text: str, indoor: bool) -> bool:
     return bool(named) or bool(_BANK.search(low))
 
 
+#: A bay that is a room of a ship, a station or a garage, not water: "a repair bay", "the troop bay".
+_ROOM_BAY = (r"(?:repair|loading|troop|medical|med|maintenance|launch|shuttle|service|storage|bomb|drone|mech|"
+             r"vehicle|assembly|cargo|docking|hangar|sick|engine|weapons|equipment|landing|hydroponics?) bay")
 #: Places whose setting is a building: a scene "in a hangar" is an interior.
 _INDOOR_PLACES = {"hangar", "warehouse", "factory", "garage", "workshop", "library", "museum", "tavern", "inn", "pub",
                   "attic", "basement", "cellar", "loft", "lobby", "hallway", "corridor", "chamber", "church",
@@ -480,8 +483,7 @@ def _is_indoor(categories: list[str], text: str, catalogue, places: list[str] = 
     votes += 2 * (bool(_ROOM_WORD.search(setting)) + bool(_ROOM_WORD.search(opening)))  # "a playroom", "a tearoom"
     for word in ("kitchen", "bedroom", "bathroom", "office", "classroom", "lab", "apartment", "studio",
                  "café", "cafe", "shop", "store", "boutique", "gallery", "hall", "interior", "indoors", "smithy",
-                 "cave", "cavern", "docking bay", "cargo bay", "hangar bay", "sick bay", "engine bay", "terminal",
-                 "departure lounge", "airport gate", "boarding gate"):
+                 "cave", "cavern", _ROOM_BAY, "terminal", "departure lounge", "airport gate", "boarding gate"):
         votes += 2 * (bool(re.search(rf"\b{word}\b", setting)) + bool(re.search(rf"\b{word}\b", opening)))
     for word in ("street", "park", "garden", "square", "market", "beach", "forest", "yard", "outdoor", "harbour",
                  "harbor", "village", "desert", "planet", "courtyard", "playground", "campsite", "field"):
