@@ -11,6 +11,7 @@ import pytest
 from scenewright.cli import main
 from scenewright.geometry import world_box
 from scenewright.evaluation.room import room_metrics
+from scenewright.layout import check
 from scenewright.layout.relations import check_room
 from scenewright.layout.room import problems
 from scenewright.scene import ROOM_RELATIONS, Scene
@@ -186,3 +187,17 @@ def test_a_thing_stacked_on_a_tall_thing_stays_under_the_ceiling(tmp_path):
     _assert_sits_in_its_room(scene)
     scaled = next(e for e in scene.provenance if e.data.get("scaled"))
     assert "potted_plant_1" in scaled.data["scaled"]
+
+
+def test_a_shelf_above_a_thing_hangs_on_the_wall_and_what_sits_on_it_keeps_its_size(tmp_path):
+    """A shelf "above" a thing is a wall shelf, not a 1.9 m bookcase in the air; the ceiling nobody
+    gave a height rises for the pelican on it, which was shrunk to 10 cm to fit under the first one."""
+    out = tmp_path / "theatre"
+    text = "A dark anatomy theatre. A human skeleton stands by the door, and a stuffed pelican watches from a shelf above it."
+    assert main(["generate", text, "--out", str(out), "--no-render"]) == 0
+    scene = _scene(out)
+    _assert_sits_in_its_room(scene)
+    shelf, pelican = scene.get("bookshelf_1"), scene.get("pelican_1")
+    assert shelf.size.z < 0.5 and check_room("on wall", shelf, scene.room, "room")
+    assert pelican.size.z > 0.3 and check("on", pelican, shelf)
+    assert not any(e.data.get("scaled") for e in scene.provenance)

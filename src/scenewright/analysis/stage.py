@@ -81,11 +81,14 @@ def _fit_under_ceiling(scene: Scene) -> None:
     """Scale down, proportions kept, every object taller than the room, and every thing stacked
     on another that would reach past the ceiling on it: a thing the text puts in a room stands
     in it (a "cat tree" read as a 6 m tree; a plant on top of a wardrobe under a low ceiling).
-    A thing is stacked when its first pose stands on another's top (within 2 cm, over it)."""
+    A thing is stacked when its first pose stands on another's top (within 2 cm, over it). What
+    stands on a hung thing (a pelican on a wall shelf) keeps its size: the ceiling a room nobody
+    gave a height gets is raised for it later (``lift``), or the solver says it does not fit."""
     assert scene.room is not None
     ceiling = scene.room.height - CEILING_CLEARANCE
     first = {o.id: (o.position.z - o.size.z / 2, o.position.z + o.size.z / 2) for o in scene.objects}
     tops: dict[str, float] = {}  # each object's top once fitted, lowest first
+    hung = {i for i, (bottom, _) in first.items() if bottom > 0.02 and all(abs(top - bottom) >= 0.02 for _, top in first.values())}
     shrunk = {}
     for obj in sorted(scene.objects, key=lambda o: first[o.id][0]):
         bottom = first[obj.id][0]
@@ -94,7 +97,7 @@ def _fit_under_ceiling(scene: Scene) -> None:
                      and abs(obj.position.y - scene.get(h).position.y) <= scene.get(h).size.y / 2 + 0.01), None)
         base = tops[host.id] if host is not None else 0.0
         limit = max(ceiling - base, MIN_STACKED)
-        if obj.size.z > limit:
+        if obj.size.z > limit and (host is None or host.id not in hung):
             k = limit / obj.size.z
             obj.size = Vec3(x=obj.size.x * k, y=obj.size.y * k, z=limit)
             shrunk[obj.id] = round(k, 3)

@@ -475,6 +475,13 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
                 relation = "against wall"
             out.append(ParsedRelation(source=o.id, relation=relation, target=target))
             break
+    # a storage unit the text puts above a thing is a shelf or a cabinet fixed to the wall over it
+    # ("a pelican watches from a shelf above the door", "a cabinet above the sink")
+    category = {o.id: o.category for o in parsed.objects}
+    for r in parsed.relations:
+        if r.relation == "above" and not r.inferred and category.get(r.source) in WALL_UNIT_HEIGHTS:
+            if not any(w.source == r.source for w in out):
+                out.append(ParsedRelation(source=r.source, relation="on wall", target="room"))
     return out
 
 
