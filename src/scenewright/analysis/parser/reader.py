@@ -1418,9 +1418,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     continue
                 alive = self._living(g) or self.groups[g].category == "fish"
                 kept = alive and not self._living(h) and (
-                    self._carrier(h, ("containers",)) or self._person_at(g) and self._carrier(h, ("vehicles",))
+                    self._carrier(h, ("containers", "seats")) or self._person_at(g) and self._carrier(h, ("vehicles",))
                 )
-                if kept and not placed:  # "a pond with koi", "a cage with two parrots", "a sleigh with a prince": in it
+                # "a pond with koi", "a cage with two parrots", "a sleigh with a prince", "beds, each with a
+                # sleeping patient": in it, on it
+                if kept and not placed:
                     self._relate("on", [g], h)
                     c.produced = True
                     continue

@@ -202,7 +202,7 @@ _HAND_PAIRS = {
 #: works on it where it lies ("stirs a pot on the stove"), so those verbs are not here.
 _USE_VERBS = {
     "eat", "eats", "eating", "munch", "munches", "munching", "nibble", "nibbles", "nibbling",
-    "chew", "chews", "chewing", "gnaw", "gnaws", "gnawing",
+    "chew", "chews", "chewing", "gnaw", "gnaws", "gnawing", "lick", "licks", "licking", "slurp", "slurps", "slurping",
     "read", "reads", "reading", "play", "plays", "playing", "strum", "strums", "strumming",
     "bang", "bangs", "banging", "shake", "shakes", "shaking", "ring", "rings", "ringing",
     "lift", "lifts", "lifting", "toss", "tosses", "tossing",
