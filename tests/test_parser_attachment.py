@@ -436,3 +436,10 @@ def test_a_participle_on_a_thing_in_hand_places_nobody_by_it():
 
 def test_what_flickers_over_a_table_hangs_above_it():
     assert ("hologram_1", "above", "table_1") in rels("A hologram flickers over a tactical table.")
+
+
+def test_each_after_a_with_part_is_each_of_what_it_comes_with():
+    found = rels("Three ghosts float around the water tower. Three crooked tombstones stand behind the jail "
+                 "with a crow perched on each.")
+    assert {("crow_1", "on", "tombstone_1"), ("crow_2", "on", "tombstone_2"), ("crow_3", "on", "tombstone_3")} <= found
+    assert not any(s.startswith("crow") and t.startswith("ghost") for s, _, t in found)
