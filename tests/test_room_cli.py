@@ -201,3 +201,16 @@ def test_a_shelf_above_a_thing_hangs_on_the_wall_and_what_sits_on_it_keeps_its_s
     assert shelf.size.z < 0.5 and check_room("on wall", shelf, scene.room, "room")
     assert pelican.size.z > 0.3 and check("on", pelican, shelf)
     assert not any(e.data.get("scaled") for e in scene.provenance)
+
+
+def test_a_host_under_a_low_ceiling_shrinks_to_keep_room_for_the_one_standing_on_it(tmp_path):
+    """The apprentice on a 2.5 m ladder under a 2.7 m ceiling was shrunk to 10 cm; the ladder
+    gives way instead."""
+    out = tmp_path / "library"
+    text = "A library with tall bookshelves. A young apprentice stands on a ladder between two of the bookshelves."
+    assert main(["generate", text, "--out", str(out), "--no-render"]) == 0
+    scene = _scene(out)
+    _assert_sits_in_its_room(scene)
+    apprentice, ladder = scene.get("apprentice_1"), scene.get("ladder_1")
+    assert apprentice.size.z > 1.5 and ladder.size.z < 1.1
+    assert check("on", apprentice, ladder)

@@ -13,6 +13,8 @@ from __future__ import annotations
 import logging
 from collections.abc import Callable
 
+from scenewright.analysis.parser.support import LIVING_SHAPES
+from scenewright.core.catalogue import load_catalogue
 from scenewright.core.protocols import ImageGenerator, VisionLanguageModel
 from scenewright.errors import InputError
 from scenewright.files import write_atomic
@@ -83,20 +85,24 @@ def _fit_under_ceiling(scene: Scene) -> None:
     in it (a "cat tree" read as a 6 m tree; a plant on top of a wardrobe under a low ceiling).
     A thing is stacked when its first pose stands on another's top (within 2 cm, over it). What
     stands on a hung thing (a pelican on a wall shelf) keeps its size: the ceiling a room nobody
-    gave a height gets is raised for it later (``lift``), or the solver says it does not fit."""
+    gave a height gets is raised for it later (``lift``), or the solver says it does not fit. A
+    host keeps room for the people and animals on it, so a stage or a ladder shrinks rather than
+    the quizmaster or the apprentice on it."""
     assert scene.room is not None
     ceiling = scene.room.height - CEILING_CLEARANCE
     first = {o.id: (o.position.z - o.size.z / 2, o.position.z + o.size.z / 2) for o in scene.objects}
-    tops: dict[str, float] = {}  # each object's top once fitted, lowest first
     hung = {i for i, (bottom, _) in first.items() if bottom > 0.02 and all(abs(top - bottom) >= 0.02 for _, top in first.values())}
+    order = sorted(scene.objects, key=lambda o: first[o.id][0])
+    host_of = {o.id: _first_host(o, order[:k], first) for k, o in enumerate(order)}
+    catalogue = load_catalogue()
+    living = {o.id: o.size.z for o in order if o.category in catalogue and catalogue[o.category].shape in LIVING_SHAPES}
+    tops: dict[str, float] = {}  # each object's top once fitted, lowest first
     shrunk = {}
-    for obj in sorted(scene.objects, key=lambda o: first[o.id][0]):
-        bottom = first[obj.id][0]
-        host = next((scene.get(h) for h in tops if bottom > 0.02 and abs(first[h][1] - bottom) < 0.02
-                     and abs(obj.position.x - scene.get(h).position.x) <= scene.get(h).size.x / 2 + 0.01
-                     and abs(obj.position.y - scene.get(h).position.y) <= scene.get(h).size.y / 2 + 0.01), None)
+    for obj in order:
+        bottom, host = first[obj.id][0], host_of[obj.id]
         base = tops[host.id] if host is not None else 0.0
-        limit = max(ceiling - base, MIN_STACKED)
+        riders = max((living[i] for i, h in host_of.items() if h is obj and i in living), default=0.0)
+        limit = max(ceiling - base - (riders if riders < ceiling - base - MIN_STACKED else 0.0), MIN_STACKED)
         if obj.size.z > limit and (host is None or host.id not in hung):
             k = limit / obj.size.z
             obj.size = Vec3(x=obj.size.x * k, y=obj.size.y * k, z=limit)
@@ -107,6 +113,15 @@ def _fit_under_ceiling(scene: Scene) -> None:
     if shrunk:
         scene.record(STAGE, f"scaled {len(shrunk)} objects down to fit under the {scene.room.height:g} m ceiling",
                      step="room", scaled=shrunk)
+
+
+def _first_host(obj, below, first: dict[str, tuple[float, float]]):
+    """What ``obj``'s first pose stands on among the objects ``below`` it: one whose top it
+    touches (within 2 cm) and whose footprint its centre is over; None on the floor."""
+    bottom = first[obj.id][0]
+    return next((h for h in below if bottom > 0.02 and abs(first[h.id][1] - bottom) < 0.02
+                 and abs(obj.position.x - h.position.x) <= h.size.x / 2 + 0.01
+                 and abs(obj.position.y - h.position.y) <= h.size.y / 2 + 0.01), None)
 
 
 def _object_images(

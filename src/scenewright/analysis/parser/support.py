@@ -65,7 +65,7 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
             partners.setdefault(r.source, set()).add(r.target)
     # a thing a person or an animal sits or lies on stays on the floor (a cushion, a basket)
     ridden = {r.target for r in relations
-              if r.relation == "on" and catalogue[by_id[r.source].category].shape in _LIVING_SHAPES}
+              if r.relation == "on" and catalogue[by_id[r.source].category].shape in LIVING_SHAPES}
     # the members of a stack above its first rest on the one below (the composition says so)
     first_of: dict[int, str] = {}
     for o in objects:
@@ -177,7 +177,7 @@ _AREA_SLACK, _SIDE_SLACK = 2.0, 1.6
 #: People and animals sit, stand and perch on things smaller than themselves (a man on a stool,
 #: a lynx on a mound, a dog on a low stool): any host whose top is a stool's or wider.
 _PERCH_SIDE = 0.35
-_LIVING_SHAPES = ("figure", "animal", "bird")
+LIVING_SHAPES = ("figure", "animal", "bird")
 #: Furniture that stands on the floor, never on another piece ("a sofa on the desk" is beside it).
 _FLOOR_FURNITURE = {"sofa", "armchair", "bed", "wardrobe", "bookshelf", "office_chair", "piano", "fridge",
                     "stove", "counter", "desk", "table", "round_table", "coffee_table", "bathtub", "treadmill",
@@ -240,7 +240,7 @@ def fit_on_hosts(
         # a thing nobody listed is as small as its host needs; so is a listed lifeless one the text
         # puts on a standing host ("a marble statue on the bookshelf", "a spaceship on the desk": a
         # statuette, a model), not a piece of floor furniture ("a sofa on the desk" is beside it)
-        listed = catalogue[thing.category].shape not in _LIVING_SHAPES and (
+        listed = catalogue[thing.category].shape not in LIVING_SHAPES and (
             (host.rests or catalogue[host.category].rests) != "hanging" and thing.category not in _FLOOR_FURNITURE
         )
         if (thing.category == _UNKNOWN or listed) and host.category not in _NO_TOP and not can_hold(host, thing, catalogue):
@@ -258,7 +258,7 @@ def fit_on_hosts(
             continue
         if host.size[2] > _FURNITURE_HEIGHT or thing.category in _FLOOR_FURNITURE:
             continue
-        if catalogue[thing.category].shape in _LIVING_SHAPES:
+        if catalogue[thing.category].shape in LIVING_SHAPES:
             continue  # "a reporter sits on the edge of the desk": a person on a desk is no figurine
         limit = _ON_TOP_HEIGHT * host.size[2]
         if thing.size[2] > limit:
@@ -291,7 +291,7 @@ def can_hold(host: ParsedObject, thing: ParsedObject, catalogue) -> bool:
         return inside and thing.size[0] <= host.size[0] and thing.size[1] <= host.size[1]
     if host.size[2] <= FLAT_HOST:
         return True
-    if catalogue[thing.category].shape in _LIVING_SHAPES and max(host.size[:2]) >= _PERCH_SIDE:
+    if catalogue[thing.category].shape in LIVING_SHAPES and max(host.size[:2]) >= _PERCH_SIDE:
         return True
     if host.category == "planter" and catalogue[thing.category].shape in _PLANT_SHAPES:
         return True  # a tree grows out of its planter, its crown far wider than the pot
