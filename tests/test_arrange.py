@@ -350,3 +350,18 @@ def test_one_who_sits_at_a_console_on_a_chair_has_the_chair_turned_to_it():
     assert ("figure_1", "face to", "control_panel_1") not in turned  # the chair turns them
     o = _by_id(made.objects)
     assert _faces(o["office_chair_1"], o["control_panel_1"], within=30.0)
+
+
+def test_a_row_stays_a_row_by_relations_between_its_members():
+    parsed = parse_scene("A motocross paddock. Five vans are parked in a row along the fence.")
+    made = compose(parsed)
+    chain = {(r.source, r.relation, r.target) for r in made.relations if r.inferred and r.relation == "right of"}
+    assert chain == {(f"truck_{k + 1}", "right of", f"truck_{k}") for k in range(1, 5)}
+    o = _by_id(made.objects)
+    assert all(rel.check("right of", o[f"truck_{k + 1}"], o[f"truck_{k}"]) for k in range(1, 5))
+
+
+def test_a_row_facing_a_thing_is_left_to_its_group():
+    parsed = parse_scene("A small hall. Five chairs stand in a row facing the tv.")
+    assert [o.formation for o in parsed.objects if o.category == "chair"] == ["row"] * 5
+    assert not [r for r in compose(parsed).relations if r.relation == "right of"]

@@ -56,6 +56,19 @@ def stack_relations(objects: list[ParsedObject]) -> list[ParsedRelation]:
     return out
 
 
+def row_relations(objects: list[ParsedObject], relations: list[ParsedRelation]) -> list[ParsedRelation]:
+    """"Five vans parked in a row": each member right of the one before, so the row the
+    composition sets out still stands when the solver moves its members for their own relations
+    (they stood bunched round the fence they were parked along). Members that face a thing, or
+    rest on one, are set out by their group (a row of chairs facing a stage) and left alone."""
+    held = {r.source for r in relations if r.relation in ("face to", "on", "above")}
+    out: list[ParsedRelation] = []
+    for objs in members(objects).values():
+        if objs[0].formation == "row" and not held & {o.id for o in objs}:
+            out += [ParsedRelation(objs[i].id, "right of", objs[i - 1].id, inferred=True) for i in range(1, len(objs))]
+    return out
+
+
 def slots(count: int, lines: int, width: float, depth: float) -> list[tuple[float, float]]:
     """Centres of ``count`` places ``width`` × ``depth`` in ``lines`` rows, the first row nearest
     the front (−y), each row centred on x = 0 and the block centred on y = 0."""
