@@ -1551,3 +1551,12 @@ def test_a_hyphened_noun_nobody_listed_after_a_known_word_is_a_thing_not_dropped
     assert ("figure", "bear fire eater") in {(o.category, o.name) for o in circus.objects}  # a creature in a role
     assert "sword swallower" in names("A circus. A sword-swallower stands by the tent.")
     assert names("A camp. A camel-hair tent stands by the well.") == {"tent", "well"}
+
+
+@pytest.mark.parametrize("text, present, absent", [
+    ("Senators from a dozen species sit in floating pods.", "senator", "species"),  # a kind of thing is no thing
+    ("Every seat at the back is taken by football fans, each holding a can.", "football fan", "football"),
+])
+def test_kinds_are_no_things_and_fans_of_a_sport_are_people(text, present, absent):
+    names = {o.name for o in parse_scene(text).objects}
+    assert present in names and absent not in names
