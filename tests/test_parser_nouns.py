@@ -1560,3 +1560,8 @@ def test_a_hyphened_noun_nobody_listed_after_a_known_word_is_a_thing_not_dropped
 def test_kinds_are_no_things_and_fans_of_a_sport_are_people(text, present, absent):
     names = {o.name for o in parse_scene(text).objects}
     assert present in names and absent not in names
+
+
+def test_the_top_deck_of_a_bus_is_where_the_scene_is_not_a_bus_in_it():
+    parsed = parse_scene("The top deck of a red double-decker bus on a rainy morning. An old lady sits on a seat.")
+    assert sorted(o.category for o in parsed.objects) == ["chair", "figure"]

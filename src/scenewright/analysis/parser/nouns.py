@@ -733,7 +733,8 @@ def _shape_of_group(toks: list[_Tok], s: int, e: int) -> bool:
 
 
 #: Parts of a vessel or a building that are a setting when the text opens with "the X of a Y".
-_PLACE_PARTS = {"bridge", "deck", "cockpit", "hold", "cabin", "interior", "inside", "galley", "hull", "flight deck"}
+_PLACE_PARTS = {"bridge", "deck", "cockpit", "hold", "cabin", "interior", "inside", "galley", "hull", "flight deck",
+                "top deck", "upper deck", "lower deck", "main deck", "gun deck", "passenger deck", "car deck"}
 
 
 def _part_of_vessel(toks: list[_Tok], s: int, e: int) -> bool:
