@@ -1565,3 +1565,8 @@ def test_kinds_are_no_things_and_fans_of_a_sport_are_people(text, present, absen
 def test_the_top_deck_of_a_bus_is_where_the_scene_is_not_a_bus_in_it():
     parsed = parse_scene("The top deck of a red double-decker bus on a rainy morning. An old lady sits on a seat.")
     assert sorted(o.category for o in parsed.objects) == ["chair", "figure"]
+
+
+def test_what_the_text_opens_inside_of_is_the_setting_whatever_it_is():
+    parsed = parse_scene("The inside of a genie's lamp. The genie, a huge blue man, lounges on a pile of cushions.")
+    assert sorted(o.category for o in parsed.objects) == ["cushion", "figure"] and parsed.indoor

@@ -289,3 +289,10 @@ def test_a_sentence_opening_on_a_wall_puts_its_subject_there():
 def test_what_hangs_from_hooks_in_the_ceiling_hangs_from_the_ceiling():
     parsed = parse_scene("A butcher's shop. Whole hams hang from hooks in the ceiling beams.")
     assert ("ham_1", "on ceiling", "ceiling") in {(r.source, r.relation, r.target) for r in wall_phrases(parsed)}
+
+
+def test_things_of_a_two_word_name_said_in_the_plural_take_their_wall():
+    parsed = parse_scene("A chamber. Three treasure chests stand around a brass table. Oil lamps hang on the walls.")
+    got = {(r.source, r.relation) for r in wall_phrases(parsed)}
+    lamps = [o.id for o in parsed.objects if o.name == "oil lamp"]
+    assert lamps and got == {(i, "on wall") for i in lamps}

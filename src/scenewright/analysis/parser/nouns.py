@@ -428,10 +428,12 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         if _picture_of_scene(toks, s, e, cat):
             picture_end = e  # "A soft watercolour painting of a windy headland": the medium, not a thing in it
             continue
+        opening = _opening_place(toks, s)
         if _part_of_vessel(toks, s, e) or (part_end is not None and _owner_of_part(toks, part_end, s)) or (
-            _owns_opening_place(toks, s)
-            and (cat in _ENCLOSING or cat == GENERIC or load_catalogue()[cat].shape in _ENCLOSING)
-        ):  # (a word nobody listed too: "the kennel room of an animal shelter")
+            opening is not None
+            and (opening in ("inside", "interior") or cat in _ENCLOSING or cat == GENERIC or load_catalogue()[cat].shape in _ENCLOSING)
+        ):  # (a word nobody listed too: "the kennel room of an animal shelter"; anything one is inside of:
+            # "The inside of a genie's lamp")
             # "The bridge of a small cargo spaceship, ...": the bridge and the ship are the setting
             places.append(" ".join(words))
             part_end = e if part_end is None else None
@@ -770,9 +772,9 @@ def _inside_of_vehicle(toks: list[_Tok], s: int, e: int, mentions: list[_Mention
 _ENCLOSING = {"house", "building", "tower", "spaceship", "boat", "vehicle", "bus", "truck", "tent", "structure"}
 
 
-def _owns_opening_place(toks: list[_Tok], s: int) -> bool:
-    """The noun at ``s`` owns the place the description opens with ("The engine room of a rusty
-    cargo starship", "The kitchen of an old farmhouse"): it is the setting, not a thing in it."""
+def _opening_place(toks: list[_Tok], s: int) -> str | None:
+    """The place the description opens with when the noun at ``s`` owns it ("The engine room of
+    a rusty cargo starship", "The kitchen of an old farmhouse"): a setting, not a thing in it."""
     j = s - 1
     # back over describing words and nouns of its kind ("a colony ship", "a small animal shelter",
     # "a long-haul freighter")
@@ -780,13 +782,13 @@ def _owns_opening_place(toks: list[_Tok], s: int) -> bool:
                       or toks[j].joined or j + 1 < s and toks[j + 1].joined):
         j -= 1  # fmt: skip
     if j < 1 or toks[j].text != "of":
-        return False
+        return None
     places = load_vocabulary().places
     for width in (2, 1):
         part = " ".join(t.text for t in toks[max(0, j - width) : j])
         if part in places or part in _PLACE_PARTS:
-            return _part_of_vessel(toks, j - width, j)
-    return False
+            return part if _part_of_vessel(toks, j - width, j) else None
+    return None
 
 
 def _picture_of_scene(toks: list[_Tok], s: int, e: int, category: str) -> bool:
@@ -1208,7 +1210,7 @@ def _opening_setting(toks: list[_Tok], s: int, e: int) -> bool:
     if not _verbless_opening(toks, s) or any(t.text in (",", ":", ";", "with", "and") for t in toks[:s]):
         return False
     if e < len(toks) and toks[e].text == "of":
-        return False  # "the captain's cabin of a sailing ship": whose it is decides (_owns_opening_place)
+        return False  # "the captain's cabin of a sailing ship": whose it is decides (_opening_place)
     k = e
     while k < len(toks) and toks[k].text not in (".", "!", "?", ";", ":", "with"):
         # ("at milking time", "in the Alps": no verbs)
