@@ -1570,3 +1570,9 @@ def test_the_top_deck_of_a_bus_is_where_the_scene_is_not_a_bus_in_it():
 def test_what_the_text_opens_inside_of_is_the_setting_whatever_it_is():
     parsed = parse_scene("The inside of a genie's lamp. The genie, a huge blue man, lounges on a pile of cushions.")
     assert sorted(o.category for o in parsed.objects) == ["cushion", "figure"] and parsed.indoor
+
+
+def test_a_bone_is_a_thing_and_bone_what_a_thing_is_made_of():
+    assert "bone" in {o.name for o in parse_scene("A pet tiger chews a bone.").objects}
+    pieces = parse_scene("Chess pieces carved from bone stand on the board.").objects
+    assert "bone" not in {o.name for o in pieces} and "bone" in pieces[0].description
