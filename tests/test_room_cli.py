@@ -189,14 +189,20 @@ def test_a_thing_stacked_on_a_tall_thing_stays_under_the_ceiling(tmp_path):
     assert "potted_plant_1" in scaled.data["scaled"]
 
 
-def test_a_shelf_above_a_thing_hangs_on_the_wall_and_what_sits_on_it_keeps_its_size(tmp_path):
-    """A shelf "above" a thing is a wall shelf, not a 1.9 m bookcase in the air; the ceiling nobody
-    gave a height rises for the pelican on it, which was shrunk to 10 cm to fit under the first one."""
-    out = tmp_path / "theatre"
-    text = "A dark anatomy theatre. A human skeleton stands by the door, and a stuffed pelican watches from a shelf above it."
+def _generated(tmp_path: Path, text: str) -> Scene:
+    """The scene ``generate`` writes for ``text``, checked to sit in its room."""
+    out = tmp_path / "scene"
     assert main(["generate", text, "--out", str(out), "--no-render"]) == 0
     scene = _scene(out)
     _assert_sits_in_its_room(scene)
+    return scene
+
+
+def test_a_shelf_above_a_thing_hangs_on_the_wall_and_what_sits_on_it_keeps_its_size(tmp_path):
+    """A shelf "above" a thing is a wall shelf, not a 1.9 m bookcase in the air; the ceiling nobody
+    gave a height rises for the pelican on it, which was shrunk to 10 cm to fit under the first one."""
+    scene = _generated(tmp_path, "A dark anatomy theatre. A human skeleton stands by the door, and a stuffed "
+                                 "pelican watches from a shelf above it.")
     shelf, pelican = scene.get("bookshelf_1"), scene.get("pelican_1")
     assert shelf.size.z < 0.5 and check_room("on wall", shelf, scene.room, "room")
     assert pelican.size.z > 0.3 and check("on", pelican, shelf)
@@ -206,11 +212,8 @@ def test_a_shelf_above_a_thing_hangs_on_the_wall_and_what_sits_on_it_keeps_its_s
 def test_a_host_under_a_low_ceiling_shrinks_to_keep_room_for_the_one_standing_on_it(tmp_path):
     """The apprentice on a 2.5 m ladder under a 2.7 m ceiling was shrunk to 10 cm; the ladder
     gives way instead."""
-    out = tmp_path / "library"
-    text = "A library with tall bookshelves. A young apprentice stands on a ladder between two of the bookshelves."
-    assert main(["generate", text, "--out", str(out), "--no-render"]) == 0
-    scene = _scene(out)
-    _assert_sits_in_its_room(scene)
+    scene = _generated(tmp_path, "A library with tall bookshelves. A young apprentice stands on a ladder between "
+                                 "two of the bookshelves.")
     apprentice, ladder = scene.get("apprentice_1"), scene.get("ladder_1")
     assert apprentice.size.z > 1.5 and ladder.size.z < 1.1
     assert check("on", apprentice, ladder)

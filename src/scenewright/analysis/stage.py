@@ -91,7 +91,8 @@ def _fit_under_ceiling(scene: Scene) -> None:
     assert scene.room is not None
     ceiling = scene.room.height - CEILING_CLEARANCE
     first = {o.id: (o.position.z - o.size.z / 2, o.position.z + o.size.z / 2) for o in scene.objects}
-    hung = {i for i, (bottom, _) in first.items() if bottom > 0.02 and all(abs(top - bottom) >= 0.02 for _, top in first.values())}
+    tops_first = [top for _, top in first.values()]
+    hung = {i for i, (bottom, _) in first.items() if bottom > 0.02 and all(abs(t - bottom) >= 0.02 for t in tops_first)}
     order = sorted(scene.objects, key=lambda o: first[o.id][0])
     host_of = {o.id: _first_host(o, order[:k], first) for k, o in enumerate(order)}
     catalogue = load_catalogue()

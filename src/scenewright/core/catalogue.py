@@ -45,7 +45,8 @@ POSTED = "on a post"
 
 _WORD = re.compile(r"[^\W_]+(?:['’][^\W\d_]+)?")  # letters of any script: "café" is one word
 #: Plurals that the suffix rules below would get wrong.
-_IRREGULAR = {"cacti": "cactus", "pegasi": "pegasus", "fungi": "fungus", "octopi": "octopus", "mice": "mouse", "geese": "goose", "people": "person", "children": "child",
+_IRREGULAR = {"cacti": "cactus", "mice": "mouse", "geese": "goose", "people": "person", "children": "child",
+              "pegasi": "pegasus", "fungi": "fungus", "octopi": "octopus",
               "taxis": "taxi", "buses": "bus", "octopuses": "octopus", "walruses": "walrus", "cactuses": "cactus",
               "thermoses": "thermos", "canvases": "canvas", "lenses": "lens", "atlases": "atlas",
               "canvas": "canvas", "atlas": "atlas", "oxen": "ox", "axes": "axe", "pickaxes": "pickaxe",

@@ -429,9 +429,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             picture_end = e  # "A soft watercolour painting of a windy headland": the medium, not a thing in it
             continue
         opening = _opening_place(toks, s)
+        enclosing = cat in _ENCLOSING or cat == GENERIC or load_catalogue()[cat].shape in _ENCLOSING
         if _part_of_vessel(toks, s, e) or (part_end is not None and _owner_of_part(toks, part_end, s)) or (
-            opening is not None
-            and (opening in ("inside", "interior") or cat in _ENCLOSING or cat == GENERIC or load_catalogue()[cat].shape in _ENCLOSING)
+            opening is not None and (enclosing or opening in ("inside", "interior"))
         ):  # (a word nobody listed too: "the kennel room of an animal shelter"; anything one is inside of:
             # "The inside of a genie's lamp")
             # "The bridge of a small cargo spaceship, ...": the bridge and the ship are the setting
@@ -2874,7 +2874,8 @@ def _total_after(toks: list[_Tok], m: _Mention) -> int | None:
     dozen of them," right after the noun ("its passengers, a dozen of them, crowd along"), else None."""
     a = m.end + 1 + (m.end + 1 < len(toks) and toks[m.end + 1].text in ("a", "an"))
     words = [t.text for t in toks[a : a + 3]]
-    if toks[m.end : m.end + 1] and toks[m.end].text == "," and words[:1] and words[0] in _NUMBERS and words[1:] == ["of", "them"]:
+    apposed = m.end < len(toks) and toks[m.end].text == ","
+    if apposed and words[:1] and words[0] in _NUMBERS and words[1:] == ["of", "them"]:
         return _NUMBERS[words[0]]
     start = max((k for k in range(m.start) if toks[k].text in (".", "!", "?")), default=-1) + 1
     if any(_match_at(toks, k) for k in range(start, m.start)):

@@ -1899,7 +1899,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 srcs = [g for g in c.main if g not in self.history]
             prefer = list(c.last_target)
             if c.head and srcs and all(s in c.wsub for s in srcs) and any(self.groups[h].count > 1 for h in c.head):
-                prefer = list(c.head)  # "tombstones stand behind the jail with a crow perched on each": on each tombstone
+                # "tombstones stand behind the jail with a crow perched on each": on each tombstone
+                prefer = list(c.head)
             if not prefer and toks[p.end - 1].text == "them" and c.main and srcs == c.main:
                 # "four lambs lie on the mats, and a girl kneels beside each of them": the lambs, as
                 # "beside them" ("beneath each one" stays the latest group: the pegs, not the coats)

@@ -420,7 +420,9 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
     for o in parsed.objects:
         name = _head(o)
         # a name of several words is found as a whole first ("a grandfather clock" after "clocks")
-        full = re.compile(rf"\b{re.escape(' '.join(o.name.lower().split()))}(?:e?s)?\b") if " " in o.name.strip() else None
+        # (and in the plural: "oil lamps hang on the walls")
+        written = re.escape(" ".join(o.name.lower().split()))
+        full = re.compile(rf"\b{written}(?:e?s)?\b") if " " in o.name.strip() else None
         whole = [(s, e) for s, e in sentences if full is not None and full.search(low[s:e])]
         for s, e in whole or sentences:
             sentence = low[s:e]
