@@ -96,14 +96,18 @@ def _fit_under_ceiling(scene: Scene) -> None:
     order = sorted(scene.objects, key=lambda o: first[o.id][0])
     host_of = {o.id: _first_host(o, order[:k], first) for k, o in enumerate(order)}
     catalogue = load_catalogue()
-    living = {o.id: o.size.z for o in order if o.category in catalogue and catalogue[o.category].shape in LIVING_SHAPES}
+    riders: dict[str, float] = {}  # host id -> the tallest person or animal standing on it
+    for o in order:
+        host = host_of[o.id]
+        if host is not None and o.category in catalogue and catalogue[o.category].shape in LIVING_SHAPES:
+            riders[host.id] = max(riders.get(host.id, 0.0), o.size.z)
     tops: dict[str, float] = {}  # each object's top once fitted, lowest first
     shrunk = {}
     for obj in order:
         bottom, host = first[obj.id][0], host_of[obj.id]
         base = tops[host.id] if host is not None else 0.0
-        riders = max((living[i] for i, h in host_of.items() if h is obj and i in living), default=0.0)
-        limit = max(ceiling - base - (riders if riders < ceiling - base - MIN_STACKED else 0.0), MIN_STACKED)
+        rider = riders.get(obj.id, 0.0)
+        limit = max(ceiling - base - (rider if rider < ceiling - base - MIN_STACKED else 0.0), MIN_STACKED)
         if obj.size.z > limit and (host is None or host.id not in hung):
             k = limit / obj.size.z
             obj.size = Vec3(x=obj.size.x * k, y=obj.size.y * k, z=limit)
