@@ -1576,3 +1576,40 @@ def test_a_bone_is_a_thing_and_bone_what_a_thing_is_made_of():
     assert "bone" in {o.name for o in parse_scene("A pet tiger chews a bone.").objects}
     pieces = parse_scene("Chess pieces carved from bone stand on the board.").objects
     assert "bone" not in {o.name for o in pieces} and "bone" in pieces[0].description
+
+
+@pytest.mark.parametrize(
+    "text, thing",
+    [
+        ("A cat lounges on the sofa.", "cat"),  # "lounges" after "a cat" is its verb, no cat lounge
+        ("A genie lounges on a pile of silk cushions.", "genie"),
+    ],
+)
+def test_a_plural_place_word_after_a_singular_thing_is_its_verb(text, thing):
+    scene = parse_scene(text)
+    assert thing in {o.name for o in scene.objects}
+    assert any(r.source.startswith(thing) and r.relation == "on" for r in scene.relations)
+    # a place word in the singular after its kind still names the place ("a hotel lounge")
+    assert {o.name for o in parse_scene("A cosy hotel lounge with a sofa.").objects} == {"sofa"}
+
+
+def test_a_heap_of_a_listed_stuff_in_the_plural_is_the_heap_not_its_verb():
+    """"A heap of gold coins lies ...": the coins are there, and "lies" is no thing."""
+    scene = parse_scene("A heap of gold coins lies in front of the tent.")
+    found = {o.name for o in scene.objects}
+    assert found == {"gold coin", "tent"}, found
+    assert any(r.relation == "in front of" and r.target == "tent_1" for r in scene.relations)
+    assert {o.name for o in parse_scene("A pile of jewels glitters on the table.").objects} == {"jewel", "table"}
+
+
+def test_cattle_are_several_animals_and_a_particle_makes_the_word_after_them_a_verb():
+    got = Counter(o.name for o in parse_scene("Cattle mill about near the old mill.").objects)
+    assert got["cattle"] > 1 and "cattle mill" not in got, got
+    assert objects("Five cattle drink from a trough.")[("animal", "cattle")] == 5
+
+
+def test_an_animal_on_a_stand_has_a_perch_and_a_microphone_s_stand_is_its_own():
+    scene = parse_scene("A parrot perches on a wooden stand next to the door.")
+    assert {o.name for o in scene.objects} == {"parrot", "stand"}
+    assert [(r.source, r.relation) for r in scene.relations if r.target == "stand_1"] == [("bird_1", "on")]
+    assert {o.name for o in parse_scene("A microphone on a tall stand.").objects} == {"microphone"}

@@ -1501,3 +1501,16 @@ def test_a_vehicles_tyres_are_its_own():
     parsed = parse_scene("A truck stands by the gate, and a mechanic checks its tyres.")
     assert "tyre" not in {o.name for o in parsed.objects}
     assert ("mechanic_1", "near", "truck_1") in rels(parsed.text)
+
+
+def test_the_back_of_the_setting_is_an_anchor_and_the_back_of_a_thing_is_behind_it():
+    for text in ("A bakery. A counter stands at the back of the shop.", "A shop. A long counter runs across the back."):
+        assert [o.anchor for o in parse_scene(text).objects] == ["back"], text
+    assert rels("A cat sits at the back of the sofa.") == {("cat_1", "behind", "sofa_1")}
+
+
+def test_one_who_works_every_thing_comes_once_per_thing():
+    scene = parse_scene("Eight looms stand in two rows, and a weaver minds every loom.")
+    assert Counter(o.category for o in scene.objects)["figure"] == 8
+    assert ("weaver_8", "near", "loom_8") in {(r.source, r.relation, r.target) for r in scene.relations}
+    assert Counter(o.name for o in parse_scene("A guard stands by the gate and watches the road.").objects)["guard"] == 1

@@ -210,10 +210,11 @@ def _read_in_setting(toks: list[_Tok]) -> None:
             t.text = sense[0]
 
 
-def _stand_at(toks: list[_Tok], i: int) -> tuple[int, str, None] | None:
+def _stand_at(toks: list[_Tok], i: int) -> tuple[int, str, Entry | None] | None:
     """"A stand" as a noun, which no list can hold (it is a verb far more often): after a
     determiner and describing words only, the stand a TV is on is a TV stand ("a TV on a low
-    stand"); any other is the thing's own ("a microphone on a tall stand")."""
+    stand"); an animal's is a perch of its own ("a parrot perches on a wooden stand"); any other
+    is the thing's own ("a microphone on a tall stand")."""
     if toks[i].text != "stand":
         return None
     j = i - 1
@@ -221,8 +222,14 @@ def _stand_at(toks: list[_Tok], i: int) -> tuple[int, str, None] | None:
         j -= 1
     if j < 0 or toks[j].text not in ("a", "an", "the", "its", "his", "her", "their"):
         return None
-    screen = any(match_phrase((t.text,)) in ("tv", "monitor") for t in toks[max(0, j - 6) : j])
-    return (i + 1, "tv_stand", None) if screen else None
+    before = toks[max(0, j - 6) : j]
+    if any(match_phrase((t.text,)) in ("tv", "monitor") for t in before):
+        return i + 1, "tv_stand", None
+    vocabulary = load_vocabulary()
+    if any(vocabulary.is_creature(t.text) for t in before if t.text[:1].isalpha() and t.text not in _STOP):
+        perch = vocabulary.match(("perch",))
+        return i + 1, perch.category, perch
+    return None
 
 
 def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
@@ -283,7 +290,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         # a singular noun before another names its kind ("glass table", "dragon statue"); a plural
         # one is the subject of a verb that looks like a noun ("pylons guard the altar")
         several = bool(words) and words[-1] in _SAME_PLURALS and _bare(toks, s)
-        if nxt and nxt[0] == e and several and (nxt[3] is None or nxt[3].category == GENERIC):
+        # ("cattle mill about": a word of any kind is their verb when a particle follows it)
+        moves = nxt is not None and nxt[1] < n and toks[nxt[1]].text in _MOTION_PARTICLES | {"about"}
+        if nxt and nxt[0] == e and several and (nxt[3] is None or nxt[3].category == GENERIC or moves):
             if nxt[1] - nxt[0] == 1 and not toks[nxt[0]].text.endswith("s"):
                 raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])  # "sheep graze by the wall": their verb
                 nxt = None
@@ -390,8 +399,11 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         follow_two = f"{follow} {toks[e + 1].text}" if e + 1 < n else ""
         # (a plural names no kind of place: "two kids dig a hole" has a verb, no dig site)
         placed_kind = singular(words[-1]) == words[-1] or words[-1] in _SAME_PLURALS
+        # ("a cat lounges on the sofa": after "a", a plural place word is the verb of the thing)
+        article = _phrase_opener(toks, s)
+        plural_verb = singular(follow) != follow and article >= 0 and toks[article].text in _SINGULAR_DETERMINERS
         if placed_kind and (follow in _VENUES or follow in vocabulary.places or follow_two in vocabulary.places) or (
-            follow and singular(follow) in _VENUES and len(words) == 1
+            follow and singular(follow) in _VENUES and len(words) == 1 and not plural_verb
         ) or _names_place_after(toks, e):
             continue  # "a throne hall", "a farmhouse kitchen", "a rocket launch site": the place, not the thing
         if _place_name(toks, s):
@@ -1398,11 +1410,12 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             continue  # "a family of four shelters under the awning": how many, then the verb
         if (w in _NUMBERS or w.isdigit()) and i + 1 < n and toks[i + 1].text in _UNITS:
             continue  # "ten paces apart", "five yards from the gate": a distance, no things
-        if w == "of" and _heap_of_stuff(toks, i, covered):
-            entry = _guess(toks, i + 1, toks[i - 1 : i + 1])
-            out.append((i + 1, i + 2, entry.category, entry))
-            covered.add(i + 1)
-            continue  # "a pile of gold", "a heap of rubble": one heap, named by its stuff
+        stuff_end = _heap_of_stuff(toks, i, covered) if w == "of" else 0
+        if stuff_end:
+            entry = _guess(toks, stuff_end - 1, toks[i - 1 : i + 1])
+            out.append((i + 1, stuff_end, entry.category, entry))
+            covered.update(range(i + 1, stuff_end))
+            continue  # "a pile of gold", "a heap of gold coins": one heap, named by its stuff
         plural = w not in ("a", "an", "another", "one", "the", "and", *_OWNERS) and not (w.isdigit() and int(w) == 1)
         j = i + 1
         if w == "a" and j < n and toks[j].text in ("few", "couple", "pair", "dozen"):
@@ -2057,19 +2070,26 @@ def _stuff_word(toks: list[_Tok], k: int, covered: set[int]) -> bool:
     )
 
 
-def _heap_of_stuff(toks: list[_Tok], i: int, covered: set[int]) -> bool:
-    """"of" at ``i`` joins heaps ("a pile", "two bundles") to one word of stuff that ends the phrase
-    ("a pile of gold", "a heap of rubble.", "bundles of straw"): a colour word there is the stuff too."""
+def _heap_of_stuff(toks: list[_Tok], i: int, covered: set[int]) -> int:
+    """Where the stuff ends that "of" at ``i`` joins a heap to ("a pile", "two bundles"), or 0: one
+    word of stuff that ends the phrase ("a pile of gold", "a heap of rubble.", "bundles of straw"),
+    a colour word there too, or a material the vocabulary lists in one or two words, plural or not
+    ("a heap of gold coins lies", "a pile of jewels")."""
     if i < 1 or i + 1 >= len(toks) or toks[i - 1].text not in _HEAPS:
-        return False
+        return 0
+    vocabulary = load_vocabulary()
     w = toks[i + 1].text
-    after = toks[i + 2].text if i + 2 < len(toks) else "."
+    two = i + 2 < len(toks) and f"{w} {toks[i + 2].text}" in vocabulary.materials
+    end = i + 3 if two else i + 2
+    after = toks[end].text if end < len(toks) else "."
     ends = not after[:1].isalpha() or (after in _STOP and after not in ("of", "and"))
     # (a verb may follow stuff, "a heap of rubble blocks the door", not a colour: "a pile of old bricks")
     # (a part word is a noun there, not a verb: "a stack of copper pipes")
-    verb = _is_verb(after) and singular(after) not in load_vocabulary().not_things
-    stuff = ends and load_vocabulary().is_adjective(w) or (ends or verb) and w in load_vocabulary().not_things
-    return stuff and i + 1 not in covered and w[:1].isalpha() and w not in _STOP and singular(w) == w
+    verb = (_is_verb(after) or _plural_verb(toks, end)) and singular(after) not in vocabulary.not_things
+    if two or w in vocabulary.materials and singular(w) != w:
+        return end if ends or verb else 0
+    stuff = ends and vocabulary.is_adjective(w) or (ends or verb) and w in vocabulary.not_things
+    return end if stuff and i + 1 not in covered and w[:1].isalpha() and w not in _STOP and singular(w) == w else 0
 
 
 #: Participles of clothing put down or hung up, not worn ("a coat draped over the chair").
@@ -2686,7 +2706,7 @@ def _bare(toks: list[_Tok], s: int) -> bool:
 
 
 #: Nouns whose plural is written as the singular: several when no determiner or count comes before.
-_SAME_PLURALS = {"sheep", "deer", "reindeer", "moose", "bison", "elk", "fish", "salmon", "trout", "swine"}
+_SAME_PLURALS = {"sheep", "deer", "reindeer", "moose", "bison", "elk", "fish", "salmon", "trout", "swine", "cattle"}
 #: Place nouns that qualify the next noun after a determiner ("the middle bench", "the end stall").
 _POSITION_WORDS = {"middle", "centre", "center", "corner", "end", "front", "back", "top", "bottom", "side"}
 

@@ -1251,6 +1251,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     elif verb_object and self._living(c.main[-1]) and not c.expect_new and not flown:
                         c.deeds.append((list(c.main), g))
                         c.deed_end = m.end
+                        if m.each:  # "a weaver minds every loom": one at each
+                            self._per_each(list(c.main), g)
                     small_object = verb_object and self._living(c.main[-1]) and self._small(g) and not c.expect_new
                     # "pulls a trailer of waving children past the pond": what the "of" after a
                     # phrase's target names is the target's load, not one the clause goes on about
@@ -1849,6 +1851,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if kind.startswith("anchor ") and of_thing:
             p.kind = "near"  # "at the far end of the counter": by the counter, at its end
             return None
+        end_of_place = {"behind": "back", "in front of": "front"}.get(kind)
+        if end_of_place and p.target is None and any(t.text in ("back", "rear", "front") for t in toks[rel.start : rel.end]):
+            kind = f"anchor {end_of_place}"  # "a counter at the back of the shop": the setting's back, no thing's
         if kind in _FORMATIONS or kind.startswith("anchor ") or (p.target is None and kind in _PLACE_KINDS):
             # "three stalls stand in a row", "a sofa against the wall", "a rug in the middle of the room"
             place = _PLACE_KINDS.get(kind) or self._anchor_after(rel.end, ce) if not kind.startswith("anchor ") else kind
