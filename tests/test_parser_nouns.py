@@ -1613,3 +1613,9 @@ def test_an_animal_on_a_stand_has_a_perch_and_a_microphone_s_stand_is_its_own():
     assert {o.name for o in scene.objects} == {"parrot", "stand"}
     assert [(r.source, r.relation) for r in scene.relations if r.target == "stand_1"] == [("bird_1", "on")]
     assert {o.name for o in parse_scene("A microphone on a tall stand.").objects} == {"microphone"}
+
+
+def test_a_bare_plural_after_the_verb_of_a_plural_subject_is_what_it_acts_on():
+    assert Counter(o.name for o in parse_scene("Kids fly kites on the beach.").objects) == {"kid": 3, "kite": 3}
+    # what one plays is a game, no thing ("deckhands play cards")
+    assert {o.name for o in parse_scene("Three deckhands play cards on a barrel.").objects} == {"deckhand", "barrel"}

@@ -1514,3 +1514,11 @@ def test_one_who_works_every_thing_comes_once_per_thing():
     assert Counter(o.category for o in scene.objects)["figure"] == 8
     assert ("weaver_8", "near", "loom_8") in {(r.source, r.relation, r.target) for r in scene.relations}
     assert Counter(o.name for o in parse_scene("A guard stands by the gate and watches the road.").objects)["guard"] == 1
+
+
+def test_their_things_after_a_group_of_things_are_the_people_s_own():
+    """"Fishermen mend nets beside their boats": the boats are there, one each (not the nets' parts)."""
+    found = Counter(o.category for o in parse_scene("Fishermen mend nets beside their boats.").objects)
+    assert found["boat"] == found["figure"] == 3, found
+    # a part of such things stays theirs: "pumpkins on their counters" are on the stalls
+    assert ("pumpkin_3", "on", "market_stall_3") in rels("Three stalls stand in a row with pumpkins on their counters.")

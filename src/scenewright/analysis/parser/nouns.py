@@ -1639,7 +1639,8 @@ def _plural_form_verb(word: str, after: str) -> bool:
     if not word[:1].isalpha() or word in _STOP or singular(word) != word:
         return False
     verbs = vocabulary.person_verbs | vocabulary.animal_verbs | _HANG_VERBS
-    return word in _FINITE or any(word + ending in verbs for ending in ("s", "es")) or after in _OBJECT_OPENERS
+    third = f"{word[:-1]}ies" if word.endswith("y") and word[-2:-1] not in "aeiou" else f"{word}s"  # ("fly": "flies")
+    return word in _FINITE or third in verbs or f"{word}es" in verbs or after in _OBJECT_OPENERS
 
 
 #: Nouns of a group of people, whose "of four" counts its members ("a family of four").
@@ -2037,10 +2038,18 @@ def _verb_of_one(toks: list[_Tok], k: int) -> bool:
     )
 
 
+def _verb_of_several(toks: list[_Tok], k: int) -> bool:
+    """The word at ``k`` is the verb of the plural noun right before it ("kids *fly* kites"); not
+    "play", whose bare plural is mostly a game ("deckhands play cards", "play doubles")."""
+    w, before, after = toks[k].text, toks[k - 1].text, toks[k + 1].text if k + 1 < len(toks) else "."
+    plural_subject = singular(before) != before and w != "play"
+    return k > 0 and plural_subject and _plural_form_verb(w, after) and _match_at(toks, k) is None
+
+
 def _bare_objects(toks: list[_Tok], covered: set[int]) -> list:
-    """A bare plural nobody listed after the -s verb of a named one, ending the phrase: what the
-    verb acts on ("a street performer juggles clubs beside the fountain"), also after a word that
-    says its kind ("a robot carries ice blocks up the ramp")."""
+    """A bare plural nobody listed after the verb of a named one, ending the phrase: what the
+    verb acts on ("a street performer juggles clubs beside the fountain", "kids fly kites"), also
+    after a word that says its kind ("a robot carries ice blocks up the ramp")."""
     vocabulary = load_vocabulary()
     out: list = []
     for k in range(2, len(toks)):
@@ -2051,7 +2060,7 @@ def _bare_objects(toks: list[_Tok], covered: set[int]) -> list:
         verb = k - 2 if kind and not _participle(toks[k - 1].text) else k - 1
         if k in covered or k - 1 in covered or verb - 1 not in covered or toks[k].quoted:
             continue
-        if singular(word) == word or not _verb_of_one(toks, verb) or word.endswith("wards"):
+        if singular(word) == word or not (_verb_of_one(toks, verb) or _verb_of_several(toks, verb)) or word.endswith("wards"):
             continue  # ("drives towards": an adverb)
         if not (after in _STOP or not after[:1].isalpha()) or not vocabulary.is_thing_word(word) or _participle(word):
             continue

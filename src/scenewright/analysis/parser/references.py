@@ -72,7 +72,7 @@ class _References:
                     return owned
                 self._target_start = m.start
                 owner = _OWNER_PRONOUNS.get(toks[lead].text) if lead < ce else None
-                people = self._people_own() if owner == "them" else None
+                people = self._people_own(toks[m.end - 1].text) if owner == "them" else None
                 # ("the king and queen sit on their thrones": the single ones named together)
                 owners = self.groups[people].count if people is not None else self._named_together() if owner == "them" else 0
                 if owners:  # "two teenagers sit on their motorbikes": people's things are things,
@@ -223,12 +223,17 @@ class _References:
         vocabulary = load_vocabulary()
         return word in vocabulary.body_parts or singular(word) in vocabulary.part_owners
 
-    def _people_own(self) -> int | None:
+    def _people_own(self, word: str) -> int | None:
         """The group "their" most likely names when it is people or animals: the latest group
         of several, when living (what such owners have is a thing of its own, not a part like a
-        roof)."""
+        roof); when ``word``, what "their" is before, is no part of a thing, the sentence's latest
+        living group of several ("fishermen mend nets beside their boats": the fishermen's)."""
         several = [g.index for g in self.groups if g.count > 1]
-        return several[-1] if several and self._living(several[-1]) else None
+        if several and self._living(several[-1]):
+            return several[-1]
+        if singular(word) in load_vocabulary().parts:
+            return None
+        return next((g for g in reversed(several) if g >= self._sentence_groups and self._living(g)), None)
 
     def _named_together(self) -> int:
         """How many living things, one each, the sentence has named last in a row ("the king and
