@@ -133,12 +133,13 @@ def test_a_wall_thing_does_not_take_the_corner_of_the_next_clause():
 
 
 def test_a_thing_at_the_far_end_does_not_take_the_wall_of_the_next_clause():
-    """At the back of the room is no wall's: the stage stays a low platform on the floor and the
-    screen named after it hangs (the stage was stood on end as a board 5 m high)."""
+    """The stage at the far end stands against the back wall, a low platform on the floor, and
+    the screen named after it hangs (the stage took the screen's "on the wall" and was stood on
+    end as a board 5 m high)."""
     parsed = parse_scene("A pub. The quizmaster stands on a low stage at the far end with a microphone in his hand, "
                          "and a projector screen hangs on the wall behind him.")
     got = {(r.source, r.relation, r.target) for r in wall_phrases(parsed)}
-    assert got == {("projector_screen_1", "on wall", "room")}
+    assert got == {("projector_screen_1", "on wall", "room"), ("stage_1", "against wall", "wall_2")}
     stage = next(o for o in parsed.objects if o.name.endswith("stage"))
     assert stage.size[2] < 1.0 < stage.size[1]
 
@@ -296,3 +297,19 @@ def test_things_of_a_two_word_name_said_in_the_plural_take_their_wall():
     got = {(r.source, r.relation) for r in wall_phrases(parsed)}
     lamps = [o.id for o in parsed.objects if o.name == "oil lamp"]
     assert lamps and got == {(i, "on wall") for i in lamps}
+
+
+def test_a_thing_at_the_back_of_the_room_stands_against_the_back_wall_unless_someone_is_behind_it():
+    def walls(text: str) -> set[tuple[str, str, str]]:
+        return {(r.source, r.relation, r.target) for r in wall_phrases(parse_scene(text))}
+
+    assert walls("A shop. A long counter runs across the back.") == {("counter_1", "against wall", "wall_2")}
+    assert walls("A bakery. A counter stands at the back of the shop, and a baker waits behind it.") == set()
+
+
+def test_a_thing_named_stand_takes_no_wall_phrase_from_the_verb_stand():
+    """"Three clocks stand against the left wall. ... a parrot on a wooden stand": the clocks' wall."""
+    got = {(r.source, r.relation, r.target) for r in wall_phrases(parse_scene(
+        "A shop. Three grandfather clocks stand against the left wall, and a parrot perches on a wooden stand."
+    ))}
+    assert got == {(f"grandfather_clock_{k}", "against wall", "wall_3") for k in (1, 2, 3)}

@@ -49,6 +49,7 @@ def room_constraints(objects: Sequence[SceneObject], constraints: Sequence[Const
         sides.setdefault(c.source, {}).setdefault(c.relation, set()).add(c.target)
     out: list[Constraint] = []
     at_wall: set[str] = set()  # what a thing on the wall hangs above: it stands at that wall
+    backed = {c.target for c in constraints if c.relation == "behind"}  # someone stands behind it
     for c in constraints:
         if c.source in mounted and c.relation == "above":
             if height is None or not reach.fits(c.source, c.target, height):
@@ -64,10 +65,11 @@ def room_constraints(objects: Sequence[SceneObject], constraints: Sequence[Const
             relation, target = mounted[o.id]
             out.append(Constraint(relation=relation, source=o.id, target=target))
         elif o.id in at_wall or (kinds[o.id] in roles.EDGE_STORAGE and "above" not in relations
-                                 and not _between(sides.get(o.id, {}))):
+                                 and not _between(sides.get(o.id, {})) and o.id not in backed):
             # Tall storage beside another thing stands at a wall all the same: "a bookshelf left
             # of the sofa" stands at the wall left of it, not in the middle of the floor. Between
-            # two things it stands in their gap, wherever that is.
+            # two things it stands in their gap, wherever that is; with someone behind it (a
+            # counter, "a baker waits behind it") it stands off the wall.
             out.append(Constraint(relation="against wall", source=o.id, target=ROOM_TARGET))
     return out
 

@@ -29,6 +29,8 @@ from typing import Sequence
 from scenewright.core.catalogue import load_catalogue, singular
 from scenewright.analysis.parser.model import ParsedRelation, ParsedScene
 from scenewright.analysis.parser.style import detect_ground
+from scenewright.analysis.parser.vocabulary import load_vocabulary
+from scenewright.analysis.parser.words import _DETERMINERS
 from scenewright.errors import InputError
 from scenewright.layout.room import COVERAGE, floor_needed
 from scenewright.layout.room import FLOOR as FLAT
@@ -382,10 +384,18 @@ def _names_between(text: str, names: set[str], own: str) -> bool:
 
 
 def _named(text: str, name: str) -> tuple[int, int] | None:
-    """Where ``text`` first names ``name``, singular or plural ("shelves" names a shelf)."""
+    """Where ``text`` first names ``name``, singular or plural ("shelves" names a shelf); a name
+    that is also a verb of standing names the thing only after a determiner or a describing word
+    ("a wooden stand", not "three clocks stand against the wall")."""
+    vocabulary = load_vocabulary()
+    before = ""
     for found in re.finditer(r"[\w-]+", text):
-        if found.group() == name or singular(found.group()) == name:
-            return found.span()
+        word = found.group()
+        if word == name or singular(word) == name:
+            noun = not vocabulary.is_posture_verb(word) or before in _DETERMINERS or bool(before) and vocabulary.is_adjective(before)
+            if noun:
+                return found.span()
+        before = word
     return None
 
 
@@ -412,12 +422,15 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
     ceiling``; "a wall shelf", "a wall-mounted screen" and "framed" things hang on a wall. The side
     picks the wall (:data:`RECTANGLE_WALLS`); no side means any wall (``room``). A thing is matched
     to the phrase in its own sentence, after its name (singular or plural); its fellow subjects
-    ("saws and chisels hang on the wall") come with it."""
+    ("saws and chisels hang on the wall") come with it. A thing on the floor the text puts at the
+    back of the room, with nothing behind it, stands against the back wall."""
     low = " ".join(parsed.text.lower().split())
     sentences = [(m.start(), m.end()) for m in re.finditer(r"[^.;!?]+", low)]
     names = {_head(o) for o in parsed.objects}
+    backed = {r.target for r in parsed.relations if r.relation == "behind"}
     out = []
     for o in parsed.objects:
+        placed = len(out)
         name = _head(o)
         # a name of several words is found as a whole first ("a grandfather clock" after "clocks")
         # (and in the plural: "oil lamps hang on the walls")
@@ -477,6 +490,10 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
                 relation = "against wall"
             out.append(ParsedRelation(source=o.id, relation=relation, target=target))
             break
+        if len(out) == placed and o.anchor == "back" and o.rests == "ground" and o.id not in backed:
+            # "a long counter runs across the back": against the back wall, not any wall (unless
+            # someone stands behind it: "a baker waits behind it")
+            out.append(ParsedRelation(source=o.id, relation="against wall", target=_wall_of("back")))
     # a storage unit the text puts above a thing is a shelf or a cabinet fixed to the wall over it
     # ("a pelican watches from a shelf above the door", "a cabinet above the sink")
     category = {o.id: o.category for o in parsed.objects}
