@@ -365,3 +365,20 @@ def test_a_row_facing_a_thing_is_left_to_its_group():
     parsed = parse_scene("A small hall. Five chairs stand in a row facing the tv.")
     assert [o.formation for o in parsed.objects if o.category == "chair"] == ["row"] * 5
     assert not [r for r in compose(parsed).relations if r.relation == "right of"]
+
+
+def test_a_stack_on_a_host_wide_enough_for_several_is_a_pile_of_layers_on_it():
+    """"Six crates are stacked on a pallet": four on the pallet (as many as its top takes), two on
+    them; not a column of four and a second column on the floor."""
+    made = compose(parse_scene("A warehouse. Six crates are stacked on a pallet in the corner."))
+    o = _by_id(made.objects)
+    crates = [v for v in made.objects if v.category == "crate"]
+    pallet = o["pallet_1"]
+    on_pallet = [c for c in crates if rel.check("on", c, pallet)]
+    assert len(crates) == 6 and len(on_pallet) == 4
+    for a in crates:
+        for b in crates:
+            assert a is b or not _plan_overlap(a, b) or abs(a.position.z - b.position.z) > 0.1
+    for r in made.relations:
+        if r.source in o and r.target in o:
+            assert rel.check(r.relation, o[r.source], o[r.target]), r

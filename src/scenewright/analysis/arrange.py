@@ -65,7 +65,8 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
     parsed = replace(parsed, objects=hosts.laid_flat(parsed))  # shearers stand on a board laid flat
     parsed = replace(parsed, objects=hosts.fit_unsized(parsed))  # a baton nobody sized fits a hand
     parsed = replace(parsed, objects=hosts.lengthen(parsed))  # a cabinet long enough for two aquariums
-    relations = share_supports(parsed) + formations.stack_relations(parsed.objects)
+    relations = share_supports(parsed)
+    relations += formations.stack_relations(parsed.objects, relations)
     relations += formations.row_relations(parsed.objects, relations)
     layout = Layout(parsed.objects, relations + groups.facing_focal(parsed.objects, relations))
     _place_related(layout)

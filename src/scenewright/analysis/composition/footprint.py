@@ -8,6 +8,14 @@ from collections.abc import Iterable
 
 #: Walking room between things the arranger sets out side by side.
 GAP = 0.3
+#: m, between things set side by side on one top (crates on a pallet, plates on a table).
+TOP_GAP = 0.05
+
+
+def fits_across(room: float, length: float) -> int:
+    """How many things ``length`` long stand side by side on a top ``room`` long: each centre
+    over the top, none hanging over it by more than a quarter of itself."""
+    return max(1, int((room + length / 4) / (length + TOP_GAP)))
 
 
 class Footprint:

@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 from collections import defaultdict
 
-from scenewright.analysis.composition.footprint import GAP
+from scenewright.analysis.composition.footprint import GAP, fits_across
 from scenewright.analysis.composition.units import Layout, Unit
 from scenewright.analysis.parser import ParsedObject, ParsedRelation
 from scenewright.geometry import front_direction, yaw_towards
@@ -40,19 +40,33 @@ def members(objects: list[ParsedObject]) -> dict[int, list[ParsedObject]]:
     return {g: objs for g, objs in by_group.items() if len(objs) > 1}
 
 
-def stack_relations(objects: list[ParsedObject]) -> list[ParsedRelation]:
+def stack_relations(objects: list[ParsedObject], relations: list[ParsedRelation]) -> list[ParsedRelation]:
     """"Three crates stacked": each member on the one below it, in columns no higher than
-    :data:`STACK_REACH`, each column's foot beside the one before."""
+    :data:`STACK_REACH`, each column's foot beside the one before. A stack on a host wide enough
+    for several ("six crates stacked on a pallet") is a pile of layers: the first layer on the
+    host, as many as its top takes, and each member above on the one under it."""
+    size = {o.id: o.size for o in objects}
+    host = {r.source: r.target for r in relations if r.relation == "on"}
     out: list[ParsedRelation] = []
     for objs in members(objects).values():
-        if objs[0].formation == "stack":
-            high = max(1, int(STACK_REACH / max(objs[0].size[2], 1e-3)))
+        if objs[0].formation != "stack":
+            continue
+        width, depth, height = objs[0].size
+        base = host.get(objs[0].id)
+        layer = fits_across(size[base][0], width) * fits_across(size[base][1], depth) if base in size else 1
+        if layer > 1:
             out += [
-                ParsedRelation(objs[i].id, "on", objs[i - 1].id, inferred=True)
-                if i % high
-                else ParsedRelation(objs[i].id, "side of", objs[i - high].id, inferred=True)
+                ParsedRelation(objs[i].id, "on", base if i < layer else objs[i - layer].id, inferred=True)
                 for i in range(1, len(objs))
             ]
+            continue
+        high = max(1, int(STACK_REACH / max(height, 1e-3)))
+        out += [
+            ParsedRelation(objs[i].id, "on", objs[i - 1].id, inferred=True)
+            if i % high
+            else ParsedRelation(objs[i].id, "side of", objs[i - high].id, inferred=True)
+            for i in range(1, len(objs))
+        ]
     return out
 
 

@@ -17,7 +17,7 @@ from collections.abc import Callable
 from dataclasses import replace
 
 from scenewright.analysis.composition import roles
-from scenewright.analysis.composition.footprint import GAP, Footprint, clear, push
+from scenewright.analysis.composition.footprint import GAP, Footprint, clear, fits_across, push
 from scenewright.analysis.parser import ParsedObject, ParsedRelation
 from scenewright.geometry import front_direction, yaw_towards
 from scenewright.layout import relations as rel
@@ -279,11 +279,11 @@ def _lay_under(obj: ParsedObject, relations: list[ParsedRelation], flat: set[str
 
 
 def _spread_on(n: int, t: Footprint, size: tuple[float, float, float]) -> tuple[float, float]:
-    """Centre of the n-th thing put on one support: a small grid over its top."""
-    if n == 0:
+    """Centre of the n-th thing put on one support: a grid over its top (:func:`fits_across`),
+    the first of one thing alone or of many small ones in the middle."""
+    cols, rows = fits_across(t.w, size[0]), fits_across(t.d, size[1])
+    if n == 0 and not 1 < cols * rows <= 4:
         return t.x, t.y
-    cols = max(1, int(t.w // max(size[0] + 0.05, 0.05)))
-    rows = max(1, int(t.d // max(size[1] + 0.05, 0.05)))
     slots = [(c, r) for r in range(rows) for c in range(cols)]
     c, r = slots[n % len(slots)]
     return t.x + (c + 0.5) * t.w / cols - t.w / 2, t.y + (r + 0.5) * t.d / rows - t.d / 2
