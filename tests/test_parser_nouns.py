@@ -1593,13 +1593,15 @@ def test_a_plural_place_word_after_a_singular_thing_is_its_verb(text, thing):
     assert {o.name for o in parse_scene("A cosy hotel lounge with a sofa.").objects} == {"sofa"}
 
 
-def test_a_heap_of_a_listed_stuff_in_the_plural_is_the_heap_not_its_verb():
-    """"A heap of gold coins lies ...": the coins are there, and "lies" is no thing."""
+def test_a_heap_of_a_listed_material_is_one_mound_and_its_verb_no_thing():
+    """"A heap of gold coins lies ...": one low mound of coins, and "lies" is no thing (the coins
+    were dropped, and three "lie"s stood there); a pile of a thing is still the things."""
     scene = parse_scene("A heap of gold coins lies in front of the tent.")
-    found = {o.name for o in scene.objects}
-    assert found == {"gold coin", "tent"}, found
-    assert any(r.relation == "in front of" and r.target == "tent_1" for r in scene.relations)
-    assert {o.name for o in parse_scene("A pile of jewels glitters on the table.").objects} == {"jewel", "table"}
+    assert [(o.name, o.category) for o in scene.objects] == [("heap of gold coins", "rock"), ("tent", "tent")]
+    assert scene.objects[0].size[2] < 0.5
+    assert {(r.source, r.relation, r.target) for r in scene.relations} == {("heap_of_gold_coins_1", "in front of", "tent_1")}
+    assert {o.name for o in parse_scene("A dragon sleeps on a pile of treasure.").objects} == {"dragon", "pile of treasure"}
+    assert Counter(o.category for o in parse_scene("A truck beside a pile of straw bales.").objects)["hay_bale"] == 3
 
 
 def test_cattle_are_several_animals_and_a_particle_makes_the_word_after_them_a_verb():

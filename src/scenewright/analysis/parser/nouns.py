@@ -1410,12 +1410,16 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             continue  # "a family of four shelters under the awning": how many, then the verb
         if (w in _NUMBERS or w.isdigit()) and i + 1 < n and toks[i + 1].text in _UNITS:
             continue  # "ten paces apart", "five yards from the gate": a distance, no things
-        stuff_end = _heap_of_stuff(toks, i, covered) if w == "of" else 0
+        stuff_end, listed = _heap_of_stuff(toks, i, covered) if w == "of" else (0, False)
+        if listed:  # "a heap of gold coins lies": one mound of them
+            out.append((i - 1, stuff_end, _MOUND.category, _MOUND))
+            covered.update(range(i - 1, stuff_end))
+            continue
         if stuff_end:
             entry = _guess(toks, stuff_end - 1, toks[i - 1 : i + 1])
             out.append((i + 1, stuff_end, entry.category, entry))
             covered.update(range(i + 1, stuff_end))
-            continue  # "a pile of gold", "a heap of gold coins": one heap, named by its stuff
+            continue  # "a pile of gold", "a heap of rubble": one heap, named by its stuff
         plural = w not in ("a", "an", "another", "one", "the", "and", *_OWNERS) and not (w.isdigit() and int(w) == 1)
         j = i + 1
         if w == "a" and j < n and toks[j].text in ("few", "couple", "pair", "dozen"):
@@ -2079,13 +2083,18 @@ def _stuff_word(toks: list[_Tok], k: int, covered: set[int]) -> bool:
     )
 
 
-def _heap_of_stuff(toks: list[_Tok], i: int, covered: set[int]) -> int:
-    """Where the stuff ends that "of" at ``i`` joins a heap to ("a pile", "two bundles"), or 0: one
-    word of stuff that ends the phrase ("a pile of gold", "a heap of rubble.", "bundles of straw"),
-    a colour word there too, or a material the vocabulary lists in one or two words, plural or not
-    ("a heap of gold coins lies", "a pile of jewels")."""
+#: A heap of a stuff the vocabulary lists as a material ("a pile of gold coins"): a low mound.
+_MOUND = Entry("rock", (0.8, 0.8, 0.35), "ground")
+
+
+def _heap_of_stuff(toks: list[_Tok], i: int, covered: set[int]) -> tuple[int, bool]:
+    """Where the stuff ends that "of" at ``i`` joins a heap to ("a pile", "two bundles"), or 0,
+    and whether that is one mound: a heap or a pile of a material the vocabulary lists, or of one
+    it lists in two words ("a heap of gold coins lies", "a pile of treasure"). A material in the
+    plural ("stacks of jewels") or one word of stuff that ends the phrase ("a heap of rubble.",
+    "bundles of straw", a colour word too) names the things the heap is of."""
     if i < 1 or i + 1 >= len(toks) or toks[i - 1].text not in _HEAPS:
-        return 0
+        return 0, False
     vocabulary = load_vocabulary()
     w = toks[i + 1].text
     two = i + 2 < len(toks) and f"{w} {toks[i + 2].text}" in vocabulary.materials
@@ -2095,10 +2104,12 @@ def _heap_of_stuff(toks: list[_Tok], i: int, covered: set[int]) -> int:
     # (a verb may follow stuff, "a heap of rubble blocks the door", not a colour: "a pile of old bricks")
     # (a part word is a noun there, not a verb: "a stack of copper pipes")
     verb = (_is_verb(after) or _plural_verb(toks, end)) and singular(after) not in vocabulary.not_things
-    if two or w in vocabulary.materials and singular(w) != w:
-        return end if ends or verb else 0
+    mound = toks[i - 1].text in ("heap", "pile") and w in vocabulary.materials
+    if i + 1 not in covered and (two or mound or w in vocabulary.materials and singular(w) != w):
+        return (end, mound or two) if ends or verb else (0, False)
     stuff = ends and vocabulary.is_adjective(w) or (ends or verb) and w in vocabulary.not_things
-    return end if stuff and i + 1 not in covered and w[:1].isalpha() and w not in _STOP and singular(w) == w else 0
+    one = stuff and i + 1 not in covered and w[:1].isalpha() and w not in _STOP and singular(w) == w
+    return (end, False) if one else (0, False)
 
 
 #: Participles of clothing put down or hung up, not worn ("a coat draped over the chair").
