@@ -1522,3 +1522,8 @@ def test_their_things_after_a_group_of_things_are_the_people_s_own():
     assert found["boat"] == found["figure"] == 3, found
     # a part of such things stays theirs: "pumpkins on their counters" are on the stalls
     assert ("pumpkin_3", "on", "market_stall_3") in rels("Three stalls stand in a row with pumpkins on their counters.")
+
+
+def test_on_the_top_shelf_or_bunk_of_a_thing_is_on_it():
+    assert rels("A bookshelf stands by the wall with a cat on the top shelf.") == {("cat_1", "on", "bookshelf_1")}
+    assert ("teddy_bear_1", "on", "bed_1") in rels("A bunk bed stands against the wall with a teddy bear on the top bunk.")

@@ -2625,6 +2625,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if kind == "at":  # "an office chair at each desk": pulled up to it, facing it
             seat = self.catalogue[src.category].shape in _SEATS
             return "at seat" if seat and (target.support or target.shape in ("desk", "table", "counter")) else "near"
+        if kind == "on top":  # "a cat on the top shelf": on the bookshelf the shelf is of
+            return "on"
         if kind == "foot of":  # "a chest at the foot of the bed", "a box at the foot of its steps": its front
             return "in front of"
         if kind == "head of":  # the headboard is a bed's back
