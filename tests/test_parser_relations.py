@@ -1527,3 +1527,25 @@ def test_their_things_after_a_group_of_things_are_the_people_s_own():
 def test_on_the_top_shelf_or_bunk_of_a_thing_is_on_it():
     assert rels("A bookshelf stands by the wall with a cat on the top shelf.") == {("cat_1", "on", "bookshelf_1")}
     assert ("teddy_bear_1", "on", "bed_1") in rels("A bunk bed stands against the wall with a teddy bear on the top bunk.")
+
+
+@pytest.mark.parametrize("aboard", ["on board", "on deck", "aboard"])
+def test_people_on_board_or_on_deck_are_on_the_vessel(aboard):
+    found = rels(f"A paddle boat chugs down the river with six tourists {aboard}, each holding a camera.")
+    assert ("tourist_6", "on", "boat_1") in found
+    assert {o.name for o in parse_scene(f"A fishing boat with two fishermen {aboard}.").objects} == {"fishing boat", "fisherman"}
+
+
+def test_deck_chairs_and_a_notice_board_are_still_things():
+    assert ("sailor_2", "on", "deck_chair_2") in rels("Two sailors sit on deck chairs.")
+
+
+def test_a_plural_after_a_plural_before_a_preposition_is_their_verb():
+    """"A family of monkeys swings from the branches": no swings; the monkeys are on the tree."""
+    scene = parse_scene("On the left bank, a family of monkeys swings from the branches of a huge banyan tree.")
+    assert {o.name for o in scene.objects} == {"monkey", "banyan tree"}
+    assert ("monkey_3", "on", "tree_1") in {(r.source, r.relation, r.target) for r in scene.relations}
+
+
+def test_people_who_work_on_a_thing_are_by_it_not_on_it():
+    assert rels("Two mechanics work on the car.") == {("mechanic_1", "near", "car_1"), ("mechanic_2", "near", "car_1")}

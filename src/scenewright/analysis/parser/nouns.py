@@ -296,6 +296,14 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             if nxt[1] - nxt[0] == 1 and not toks[nxt[0]].text.endswith("s"):
                 raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])  # "sheep graze by the wall": their verb
                 nxt = None
+        # "a family of monkeys swings from the branches": a plural right after a plural, before a
+        # preposition, is the verb (of the family), no kind of thing
+        after_next = toks[nxt[1]].text if nxt and nxt[1] < n else ""
+        if nxt and nxt[0] == e and nxt[1] - nxt[0] == 1 and singular(head) != head and after_next in _VERB_PARTICLES | {
+            "from", "on", "in", "above", "along", "by", "beside", "near"
+        } and singular(toks[nxt[0]].text) != toks[nxt[0]].text:
+            raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])
+            nxt = None
         if nxt and nxt[0] == e and singular(head) == head:
             last = toks[nxt[1] - 1].text
             if singular(last) != last and _plural_is_verb(toks, s, nxt):  # "a knight guards the gate": a verb

@@ -1114,7 +1114,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 if w in _HOLD and w.endswith("ing") and c.head is not None and c.wsub:
                     # "with a small table beside them holding a teapot": the with-thing holds it (what
                     # came with the head before it stays the head's: "a dwarf with an axe and a wizard holding a staff")
-                    holder, c.wsub = c.wsub[-1:], c.wsub[:-1]
+                    # (", each holding a camera" after "with six tourists aboard": they stay aboard)
+                    holder = c.wsub[-1:]
+                    c.wsub = c.wsub if c.each in holder else c.wsub[:-1]
                     self._close_with(c)
                     c.head, c.wsub, c.hold, c.expect_new = holder, [], True, False
                     k += 1

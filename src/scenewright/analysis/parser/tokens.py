@@ -65,7 +65,16 @@ def _tokenise(text: str) -> list[_Tok]:
         toks.append(_Tok(s.lower().replace("’", "'"), s, joined, quoting and s != '"'))
         if s in (".", "!", "?"):
             quoting = False  # a quotation nobody closed ends with its sentence
+        if len(toks) > 2 and [t.text for t in toks[-3:-1]] in (["on", "board"], ["on", "deck"]) and not (
+            toks[-1].text[:1].isalpha() and toks[-1].text not in _AFTER_ABOARD
+        ):  # "six tourists on deck", "with a crew on board": aboard, no board nor deck of their own
+            toks[-3:-1] = [_Tok("aboard", f"{toks[-3].orig} {toks[-2].orig}", toks[-3].joined, toks[-3].quoted)]
     return toks
+
+
+#: Words that may follow "on board" or "on deck" meaning aboard the vessel named before ("on deck
+#: and ...", "on board while ..."); any other word names a thing ("on deck chairs", "on board games").
+_AFTER_ABOARD = {"and", "while", "as", "with", "each", "watching", "waving", "holding", "looking"}
 
 
 _CLAUSE_BREAK = {",", ";", ":", "(", ")", '"'}
