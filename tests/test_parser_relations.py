@@ -1549,3 +1549,13 @@ def test_a_plural_after_a_plural_before_a_preposition_is_their_verb():
 
 def test_people_who_work_on_a_thing_are_by_it_not_on_it():
     assert rels("Two mechanics work on the car.") == {("mechanic_1", "near", "car_1"), ("mechanic_2", "near", "car_1")}
+
+
+def test_at_a_counted_group_places_by_it():
+    """"Six players rally at three tables": a count after "at" is no time of day."""
+    assert ("player_6", "near", "table_3") in rels("Six players rally at three green tables standing in a row.")
+
+
+def test_a_target_lined_up_after_the_verb_is_the_row_and_what_follows_is_its_place():
+    found = rels("A centurion shouts orders at twenty legionaries lined up in front of him, each holding a shield.")
+    assert ("legionary_20", "in front of", "centurion_1") in found and ("shield_20", "on", "legionary_20") in found

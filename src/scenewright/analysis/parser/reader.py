@@ -1600,7 +1600,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if chained and isinstance(target, list) and target and c.last_target:
             # "a lamp on the table next to a teapot": what stands by a small thing is its peer, not the table
             chained = not self._small(target[0]) or self._small(c.last_target[0])
-        if chained and c.last_target and c.last_target_end == last_event_end and all(b in _ADVERBS for b in between):
+        lined_up = kind in _FORMATIONS and c.target_after_verb and _participle(toks[rel.start].text)
+        if lined_up and c.last_target and c.last_target_end == rel.start:
+            # "shouts at twenty legionaries lined up in front of him": they stand in the row, and in front of him
+            srcs = c.main = list(c.last_target)
+        elif chained and c.last_target and c.last_target_end == last_event_end and all(b in _ADVERBS for b in between):
             srcs = list(c.last_target)
             rider = c.main or ([] if c.first else list(prev_subject))
             on = [r[1] for r in self.relations if r[0] == "on" and r[2] in c.last_target]
@@ -2491,7 +2495,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return True  # "playing at the nearest one", "sits at each one": one of a group
             if w == "each" and (k + 1 == len(self.toks) or not self.toks[k + 1].text[:1].isalpha()):
                 return True  # "two desks, with five players at each": at each of them
-            if not (w in _DETERMINERS or w in ("each", "every") or (w[:1].isalpha() and w not in _STOP)):
+            # ("at three tables": a count before the noun)
+            if not (w in _DETERMINERS or w in ("each", "every") or w in _NUMBERS or (w[:1].isalpha() and w not in _STOP)):
                 return False
             k += 1
         return False
