@@ -1621,3 +1621,9 @@ def test_a_bare_plural_after_the_verb_of_a_plural_subject_is_what_it_acts_on():
     assert Counter(o.name for o in parse_scene("Kids fly kites on the beach.").objects) == {"kid": 3, "kite": 3}
     # what one plays is a game, no thing ("deckhands play cards")
     assert {o.name for o in parse_scene("Three deckhands play cards on a barrel.").objects} == {"deckhand", "barrel"}
+
+
+def test_a_word_with_a_person_sense_described_as_a_person_is_one():
+    """"A grey-haired coach feeds balls ...": the coach is a person; a parked coach is a bus."""
+    assert objects("A grey-haired coach feeds balls to a teenager.")[("figure", "coach")] == 1
+    assert objects("A coach is parked by the hotel.")[("bus", "coach")] == 1

@@ -478,7 +478,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         if animal is not None and (_verb_after(toks, e) or ("",))[0] in vocabulary.animal_only_verbs:
             cat, entry = animal.category, animal  # "two cranes wade in the reeds": the birds
         person = vocabulary.person_senses.get(singular(words[-1])) if len(words) == 1 else None
-        if person is not None and _as_person(toks, e):
+        if person is not None and (_as_person(toks, e) or _looks_like_person(toks, s)):
             cat, entry = person.category, person  # "fans in fancy dress line the barriers": people
         if singular(words[-1]) == "one" and mentions and (entry is None or entry.category == GENERIC):
             # "a tall pine tree ..., with a few smaller ones": more of the thing named before
@@ -2317,6 +2317,15 @@ def _as_person(toks: list[_Tok], k: int) -> bool:
         thing = next((m for m in (_match_at(toks, j) for j in range(k + 1, min(k + 4, len(toks)))) if m), None)
         return thing is not None and load_catalogue()[thing[1]].rests == "surface"
     return False
+
+
+#: Describing words only people wear ("a grey-haired coach", "a bespectacled fan").
+_PERSON_LOOKS = ("haired", "bearded", "moustached", "mustachioed", "bespectacled", "freckled")
+
+
+def _looks_like_person(toks: list[_Tok], s: int) -> bool:
+    """Whether the describing words before the noun at ``s`` are a person's ("a grey-haired coach")."""
+    return any(t.text.endswith(_PERSON_LOOKS) for t in toks[_phrase_opener(toks, s) + 1 : s])
 
 
 def _acts_as_person(toks: list[_Tok], k: int) -> bool:
