@@ -1559,3 +1559,8 @@ def test_at_a_counted_group_places_by_it():
 def test_a_target_lined_up_after_the_verb_is_the_row_and_what_follows_is_its_place():
     found = rels("A centurion shouts orders at twenty legionaries lined up in front of him, each holding a shield.")
     assert ("legionary_20", "in front of", "centurion_1") in found and ("shield_20", "on", "legionary_20") in found
+
+
+def test_between_the_rows_is_between_two_rows_front_to_back():
+    found = rels("Eight power looms clatter in two rows. The foreman walks between the rows.")
+    assert {("foreman_1", "behind", "power_loom_1"), ("foreman_1", "in front of", "power_loom_5")} <= found

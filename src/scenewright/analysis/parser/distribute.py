@@ -116,24 +116,27 @@ _BETWEEN_SIDES = {
 _FACING = {"opposite": "in front of", "face to": "in front of", "at seat": "in front of"}
 
 
-def _between(reader: _Reader, src: _Group, a: str, b: str) -> list[ParsedRelation]:
-    """"A bin between the machine and the stall": the centre in the gap, as a side of each (right
-    of one, left of the other), along the axis the pair already stands on (front to back when
-    the text put one in front of the other), and near both."""
-    sides = ("right of", "left of")
+def _pair_axis(reader: _Reader, a: str, b: str) -> tuple[str, str]:
+    """The sides of ``a`` and ``b`` that put a thing between them, along the axis the text stands
+    the pair on: front to back when one is in front of (or facing) the other, else left to right."""
     for kind, s, t, _ in reader.relations:
         ids_s, ids_t = reader.groups[s].ids, reader.groups[t].ids
         if kind == "face to" and s == t and a in ids_s and b in ids_s:  # two sofas facing each other
-            sides = ("behind", "in front of")
-            break
+            return "behind", "in front of"
         kind = _FACING.get(kind, kind)  # a TV opposite the sofa: the pair stands front to back
         if kind in _BETWEEN_SIDES and a in ids_s and b in ids_t:  # a left of b: x right of a, left of b
             first, second = _BETWEEN_SIDES[kind]
-            sides = (second, first)
-            break
+            return second, first
         if kind in _BETWEEN_SIDES and b in ids_s and a in ids_t:
-            sides = _BETWEEN_SIDES[kind]
-            break
+            return _BETWEEN_SIDES[kind]
+    return "right of", "left of"
+
+
+def _between(reader: _Reader, src: _Group, a: str, b: str, sides: tuple[str, str] | None = None) -> list[ParsedRelation]:
+    """"A bin between the machine and the stall": the centre in the gap, as a side of each (right
+    of one, left of the other) along ``sides`` or the axis the pair already stands on
+    (:func:`_pair_axis`), and near both."""
+    sides = sides or _pair_axis(reader, a, b)
     out = []
     for x in src.ids:
         out += [ParsedRelation(x, sides[0], a), ParsedRelation(x, sides[1], b)]
@@ -161,10 +164,16 @@ def _expand_relations(reader: _Reader) -> list[ParsedRelation]:
         ends = [
             groups[t].ids[i] if i is not None else groups[t].ids[0] for t, i in targets
         ]  # "between the machine and the stall"
+        sides = None
         if len(targets) == 1 and len(groups[targets[0][0]].ids) >= 2 and targets[0][1] is None:
-            ends = groups[targets[0][0]].ids[:2]  # "between the two trees", "between them"
+            ids = groups[targets[0][0]].ids
+            lines = reader.lines.get(targets[0][0], 1) if targets[0][0] in reader.rows_named else 1
+            per = -(-len(ids) // lines)
+            # "between the two trees", "between them"; "walks between the rows": behind the first
+            # member of the front row, in front of the first of the next
+            ends, sides = (ids[:2], None) if lines < 2 else ([ids[0], ids[per]], ("behind", "in front of"))
         if len(ends) >= 2:
-            out += _between(reader, groups[s], ends[0], ends[1])
+            out += _between(reader, groups[s], ends[0], ends[1], sides)
         else:
             out += [ParsedRelation(x, "near", ends[0]) for x in groups[s].ids]
     ring, seat = _rings(reader), _one_each(reader)

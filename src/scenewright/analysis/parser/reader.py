@@ -292,6 +292,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.anchors: dict[int, str] = {}
         #: Group → the formation its members stand in (row, stack, circle).
         self.formations: dict[int, str] = {}
+        #: Groups the text names again as their rows ("walks between the rows").
+        self.rows_named: set[int] = set()
         #: Group → how many rows its ``rows`` formation has ("in two rows").
         self.lines: dict[int, int] = {}
         #: What the clause before was about: its subjects, then what they were placed by, latest

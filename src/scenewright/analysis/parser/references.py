@@ -190,7 +190,10 @@ class _References:
                 return [tower], pos + 2  # "with a ranger looking out from the top": the watchtower's
         formed = _FORMATION_NOUNS.get(singular(toks[lead + 1].text)) if lead + 1 < ce and toks[lead].text == "the" else None
         if formed is not None and j == lead + 2:
-            group = next((g for g in reversed(self.history) if self.formations.get(g) == formed), None)
+            # ("between the rows": the group set out in rows)
+            group = next((g for g in reversed(self.history) if self.formations.get(g) in (formed, f"{formed}s")), None)
+            if group is not None and toks[lead + 1].text != singular(toks[lead + 1].text):
+                self.rows_named.add(group)
             if group is not None:
                 return [group], j  # "a dog lies on top of the stack": the stack of hay bales named before
         sided = lead + 1 < ce and toks[lead + 1].text in _SIDE_WORDS  # ("under the front bumper")
