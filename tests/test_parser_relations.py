@@ -1564,3 +1564,15 @@ def test_a_target_lined_up_after_the_verb_is_the_row_and_what_follows_is_its_pla
 def test_between_the_rows_is_between_two_rows_front_to_back():
     found = rels("Eight power looms clatter in two rows. The foreman walks between the rows.")
     assert {("foreman_1", "behind", "power_loom_1"), ("foreman_1", "in front of", "power_loom_5")} <= found
+
+
+def test_a_target_said_asleep_is_where_the_phrase_after_it_puts_it():
+    assert rels("A delivery drone hovers over a girl asleep on a bench.") == {
+        ("drone_1", "above", "girl_1"), ("girl_1", "on", "bench_1")
+    }
+
+
+def test_each_carrying_after_a_placing_is_each_of_the_subjects_not_of_the_target():
+    found = rels("Four cargo drones hover above the wrecks, each carrying a crate.")
+    assert {("crate_4", "on", "drone_4"), ("drone_1", "above", "wreck_1")} <= found
+    assert not any(r[0].startswith("crate") and r[2].startswith("wreck") for r in found)

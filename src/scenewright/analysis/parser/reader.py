@@ -247,6 +247,10 @@ class _Phrase:
     riders: list[int] = field(default_factory=list)
 
 
+#: Machines that carry things as a person has them in hand ("a drone carrying a crate").
+_MACHINE_BEARERS = frozenset({"robot", "drone"})
+
+
 class _Reader(_Contents, _References, _Kinds, _Hands):
     """One pass over the text that builds groups of objects and relations between them. What is
     content (:mod:`.contents`), what a reference names (:mod:`.references`), what kind of thing
@@ -1070,6 +1074,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 own = own and (bool(said & {"them", "their", "him", "her", "his"}) or seats) and not said & {"it", "its"}
                 if (holding or each_deed or own) and people:
                     plural = people[:1]
+                elif holding and (carriers := [g for g in [*c.subjects, *prev_subject] if self.groups[g].count > 1]):
+                    plural = carriers[:1]  # "four cargo drones hover above the wrecks, each carrying a crate"
                 if plural:
                     c.each, c.each_deed, c.each_unit = plural[-1], each_deed and bool(people), unit
                 k += 1
@@ -1468,7 +1474,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     c.produced = True
                     # ("a mother holds a sleeping baby", "carries a lamb": in arms, a small living thing too)
                     small = not self._living(g) or max(self.groups[g].size) <= _HANDHELD_SIZE
-                    if held or (c.hold and self._person_at(h) and small):
+                    # ("four cargo drones, each carrying a crate": carried by a machine, as in hand)
+                    bearer = self._person_at(h) or self.groups[h].category in _MACHINE_BEARERS
+                    if held or (c.hold and bearer and small):
                         if not c.shared:
                             self.in_hand.append((g, h))
                         self.carried.add((g, h))
@@ -2434,6 +2442,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return self.toks[rel.start].text not in _STOP
         return len(words) == 1 and words[0] not in _STOP and words[0][:1].isalpha()
 
+    #: Words of how a thing is, after it, that the phrase after them goes on about ("a girl asleep on a bench").
+    _STATES = frozenset({"asleep", "awake", "alone", "aloft", "afloat", "ablaze", "adrift"})
+
     @staticmethod
     def _describes(words: list[str], after_verb: bool) -> bool:
         """Whether the words between a target and the next phrase open a description of the target:
@@ -2444,7 +2455,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return False
         if words[0] in _RELATIVES:
             return True
-        return after_verb and _participle(words[0])
+        return after_verb and (_participle(words[0]) or words[0] in _Reader._STATES)
 
     def _seat_after(self, rel: _Rel, mentions: list[_Mention]) -> bool:
         """A seat right after "from": whatever one does from a seat, one sits on it ("a servant
