@@ -1576,3 +1576,15 @@ def test_each_carrying_after_a_placing_is_each_of_the_subjects_not_of_the_target
     found = rels("Four cargo drones hover above the wrecks, each carrying a crate.")
     assert {("crate_4", "on", "drone_4"), ("drone_1", "above", "wreck_1")} <= found
     assert not any(r[0].startswith("crate") and r[2].startswith("wreck") for r in found)
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("A farmer pushes a wheelbarrow along the canal, and a goose waddles after her.", ("goose_1", "behind", "farmer_1")),
+        ("Two engineers follow the machine, each holding a sensor.", ("engineer_2", "behind", "machine_1")),
+        ("Jars of eyeballs crowd the shelf behind her.", ("bottle_3", "on", "bookshelf_1")),
+    ],
+)
+def test_who_follows_is_behind_and_things_that_crowd_a_shelf_are_on_it(text, expected):
+    assert expected in rels(text)

@@ -379,6 +379,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "two robots stand guard", "fox statues guard the path": a verb here
         if _bare_plural_verb(toks, s, e) and not kind:
             continue  # "the farrier, a broad woman, shoes a grey mare": a verb taking its object
+        if e - s == 1 and words[0] in ("crowd", "crowds") and _noun_before_object(toks, s, e):
+            continue  # "jars of jam crowd the shelf": their verb, no crowd
         if _verb_of_no_thing(toks, s, e):
             continue  # "the saloon doors swing behind him": what no-things do, not a swing
         if e - s == 1 and [t.text for t in toks[max(0, s - 3) : s]] == ["of", "them", ","]:
@@ -2317,6 +2319,14 @@ def _as_person(toks: list[_Tok], k: int) -> bool:
         thing = next((m for m in (_match_at(toks, j) for j in range(k + 1, min(k + 4, len(toks)))) if m), None)
         return thing is not None and load_catalogue()[thing[1]].rests == "surface"
     return False
+
+
+def _noun_before_object(toks: list[_Tok], s: int, e: int) -> bool:
+    """A noun (no describing word) right before ``s`` and a determiner or a count right after ``e``
+    ("jam [crowd] the shelf"): the word between is the verb of the noun's phrase."""
+    before, after = toks[s - 1].text if s else ".", toks[e].text if e < len(toks) else "."
+    noun = before[:1].isalpha() and before not in _STOP and not load_vocabulary().is_adjective(before)
+    return noun and (after in _DETERMINERS or after in _NUMBERS)
 
 
 #: Describing words only people wear ("a grey-haired coach", "a bespectacled fan").
