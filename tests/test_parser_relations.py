@@ -1588,3 +1588,10 @@ def test_each_carrying_after_a_placing_is_each_of_the_subjects_not_of_the_target
 )
 def test_who_follows_is_behind_and_things_that_crowd_a_shelf_are_on_it(text, expected):
     assert expected in rels(text)
+
+
+def test_one_chasing_a_small_thing_is_by_it_and_a_small_creature_is_on_what_it_is_in():
+    assert rels("A cat floats past the window, chasing a rubber ball.") == {("cat_1", "near", "rubber_ball_1")}
+    assert ("salamander_3", "on", "torch_1") in rels("Three salamanders bask in a brazier.")
+    # nothing is on a person it is "in": "nymphs dance with garlands in their hair"
+    assert not any(r[1] == "on" and r[2].startswith("nymph") for r in rels("Nymphs dance with garlands in their hair."))

@@ -1325,7 +1325,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         word = self.toks[k].text
         if c.main or c.deeds or not doers or not all(self._living(g) for g in doers):
             return False
-        if not self._living(m.group) and max(self.groups[m.group].size) <= _HANDHELD_SIZE:
+        chased = word in ("chasing", "stalking", "hunting", "herding")  # ", chasing a rubber ball": by it, whatever its size
+        if not self._living(m.group) and max(self.groups[m.group].size) <= _HANDHELD_SIZE and not chased:
             return False  # ", painting a toy sailboat", ", filling crates": worked on in hand or on the spot
         if word in _HAND_VERBS or self._lookout(word) or word in _HANG_VERBS or word in _TURN_VERBS:
             return False
@@ -2673,6 +2674,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if self.catalogue[src.category].shape in _PLANT_SHAPES and self.groups[t].category == "planter":
                 return "on"  # "orange trees grow in terracotta planters": each stands in its own
             holds = target.shape in _SEATS or target.support or self._carrier(t, _VESSEL_KINDS)
+            # ("three salamanders bask in a brazier": a small creature is on what it is in)
+            holds = holds or self._living(s) and not self._living(t) and max(src.size) < max(self.groups[t].size)
             return "on" if holds and target.size[2] <= 2.5 else "no relation"
         if kind == "hitched":  # "a cart hitched to a horse" trails it; "a mule stands hitched to a cart" pulls it
             return "in front of" if self._living(s) and not self._living(t) else "behind"
