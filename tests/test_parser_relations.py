@@ -1595,3 +1595,10 @@ def test_one_chasing_a_small_thing_is_by_it_and_a_small_creature_is_on_what_it_i
     assert ("salamander_3", "on", "torch_1") in rels("Three salamanders bask in a brazier.")
     # nothing is on a person it is "in": "nymphs dance with garlands in their hair"
     assert not any(r[1] == "on" and r[2].startswith("nymph") for r in rels("Nymphs dance with garlands in their hair."))
+
+
+def test_who_rows_paddles_or_sails_a_boat_is_aboard_it_and_a_paddle_boat_is_a_boat():
+    assert rels("Three pirates row a small boat toward the beach.") == {(f"pirate_{k}", "on", "boat_1") for k in (1, 2, 3)}
+    assert ("girl_1", "on", "boat_1") in rels("A girl paddles a canoe across the lake.")
+    assert [o.name for o in parse_scene("A striped paddle boat chugs down the river.").objects] == ["paddle boat"]
+    assert "galley" not in {o.name for o in parse_scene("Rows of blue seats stretch towards the galley.").objects}

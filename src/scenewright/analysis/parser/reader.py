@@ -571,7 +571,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # where the rope comes from
         found = [r for r in _find_relations(toks, taken)
                  if (r.kind != "at" or self._names_thing(r.end, starts)) and (r.kind != "covering" or self._covers(r))
-                 and (r.kind != "driving" or self._drives(r.end, mentions))
+                 and (r.kind != "driving" or self._drives(r, mentions))
                  and not self._rung(r, mentions)
                  and not any(s < r.start < e for s, e in self.pictures)]  # (where things stand in a picture)
         self.rel_at = {
@@ -2488,9 +2488,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._names_thing(k + 1, starts)
         )
 
-    def _drives(self, start: int, mentions: list[_Mention]) -> bool:
+    def _drives(self, r: _Rel, mentions: list[_Mention]) -> bool:
         """A vehicle follows a driving verb ("drives a quad bike", "steers the barge"): the driver
-        is aboard. What one drives otherwise is herded, not ridden ("a collie drives the sheep")."""
+        is aboard. What one drives otherwise is herded, not ridden ("a collie drives the sheep").
+        After a describing word the verb's word is the vehicle's kind ("a striped paddle boat")."""
+        before = self.toks[r.start - 1].text if r.start else "."
+        after = self.toks[r.end].text if r.end < len(self.toks) else "."
+        # (a verb has its subject before it and no "of" after: "Rows of seats stretch ...")
+        if not before[:1].isalpha() or before in _DETERMINERS or load_vocabulary().is_adjective(before) or after == "of":
+            return False
+        start = r.end
         m = next((m for m in mentions if m.start >= start), None)
         between = [t.text for t in self.toks[start : m.start]] if m else []
         near = m is not None and all(w in _DETERMINERS or (w[:1].isalpha() and w not in _STOP) for w in between)
