@@ -261,3 +261,18 @@ def test_what_is_put_on_a_cage_rests_on_its_floor_wherever_it_hangs(top, height,
     assert not check("on", box("canary", size=(0.1, 0.1, 0.1), z=top + 0.05), cage)  # not on its dome
     chest = cage.model_copy(update={"name": "toy chest"})
     assert rest_share(chest) == 1.0
+
+
+@settings(max_examples=60, deadline=None)
+@given(initial=st.floats(0.0, 8.0), half=st.floats(0.05, 0.5))
+def test_above_offers_its_lowest_level_whatever_the_initial_height(initial, half):
+    """A drone the arranger set above a low ceiling still has a level over the girl below it
+    that fits under the ceiling: the lowest one the relation allows is always among the heights."""
+    from scenewright.layout.relations import lowest_above, source_heights
+
+    target = Boxes.of(T)
+    heights = source_heights("above", half, target, initial)
+    lowest = lowest_above(half, float(target.lo[2]), float(target.hi[2]))
+    assert min(heights) == pytest.approx(lowest) and heights[0] == pytest.approx(max(initial, lowest))
+    for z in heights:
+        assert check("above", box("s", size=(0.2, 0.2, 2 * half), z=float(z)), T)

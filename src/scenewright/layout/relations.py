@@ -443,7 +443,8 @@ def source_heights(relation: str, half_z: float, target: Boxes, initial_z: float
     """Centre heights a vertical relation allows its source, preferred first (None: not vertical).
 
     ``on`` has one; ``above`` starts at the initial height or the lowest allowed one, and
-    offers a few higher levels so two hanging objects can share a footprint.
+    offers a few higher levels so two hanging objects can share a footprint, then the lowest
+    one (an initial height a ceiling is below leaves that).
     """
     if isinstance(target, RoomTarget):
         return room_heights(relation, half_z, target)
@@ -452,7 +453,9 @@ def source_heights(relation: str, half_z: float, target: Boxes, initial_z: float
         return np.array([float(target.top) + half_z])
     if relation == "above":
         lowest = lowest_above(half_z, float(target.lo[2]), top)
-        return max(initial_z, lowest) + np.array([0.0, 0.3, 0.7, 1.2])
+        levels = max(initial_z, lowest) + np.array([0.0, 0.3, 0.7, 1.2])
+        # the lowest allowed level last, for when the initial one is above the ceiling
+        return levels if initial_z <= lowest else np.append(levels, lowest)
     return None
 
 
