@@ -1602,3 +1602,8 @@ def test_who_rows_paddles_or_sails_a_boat_is_aboard_it_and_a_paddle_boat_is_a_bo
     assert ("girl_1", "on", "boat_1") in rels("A girl paddles a canoe across the lake.")
     assert [o.name for o in parse_scene("A striped paddle boat chugs down the river.").objects] == ["paddle boat"]
     assert "galley" not in {o.name for o in parse_scene("Rows of blue seats stretch towards the galley.").objects}
+
+
+def test_two_of_the_things_are_two_of_the_group_not_the_single_one_named_last():
+    found = rels("Three tables stand in a row. At a fourth table, a coach waits. A robot stands between two of the tables.")
+    assert {("robot_1", "right of", "table_1"), ("robot_1", "left of", "table_2")} <= found

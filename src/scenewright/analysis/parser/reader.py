@@ -461,16 +461,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # (nor are "the ducks" the one heron named before: several of a name the one does not
             # have are new; "the swings" are the swing set's)
             several = _is_plural(self.toks, m) and m.count != 1
-            found = next(
-                (
-                    g.index for g in reversed(self.groups)
-                    if g.category == m.category and (
-                        not (family or m.guess is not None and g.guessed)
-                        or singular(g.name.split()[-1]) == head
-                    ) and not (several and g.count == 1 and head not in map(singular, g.name.split()))
-                ),
-                None,
-            )  # fmt: skip
+            same = [
+                g for g in reversed(self.groups)
+                if g.category == m.category and (
+                    not (family or m.guess is not None and g.guessed)
+                    or singular(g.name.split()[-1]) == head
+                ) and not (several and g.count == 1 and head not in map(singular, g.name.split()))
+            ]  # fmt: skip
+            # ("two of the tables" after "three tables ... a fourth table": the three)
+            found = next((g.index for g in same if g.count > 1 or not several), same[0].index if same else None)
             # "the teacher's desk" is not one of the school desks, nor "the teacher's bench" a lab table
             owned = any(t.text.endswith("'s") for t in self.toks[max(0, m.start - 1) : m.end - 1])
             if owned and found is not None and singular(self.groups[found].name.split()[-1]) != head:
