@@ -1627,3 +1627,11 @@ def test_a_word_with_a_person_sense_described_as_a_person_is_one():
     """"A grey-haired coach feeds balls ...": the coach is a person; a parked coach is a bus."""
     assert objects("A grey-haired coach feeds balls to a teenager.")[("figure", "coach")] == 1
     assert objects("A coach is parked by the hotel.")[("bus", "coach")] == 1
+
+
+def test_a_waterfall_is_a_thing_of_its_own_name():
+    """A waterfall in the scene is a thing (it set the scene and vanished), and "the waterfall"
+    is not the rock named before it."""
+    scene = parse_scene("A kingfisher perches on a rock at the foot of the waterfall.")
+    assert {o.name for o in scene.objects} == {"kingfisher", "rock", "waterfall"}
+    assert {o.name for o in parse_scene("A thin waterfall drops into a round pool.").objects} == {"waterfall", "pool"}

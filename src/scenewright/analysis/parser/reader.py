@@ -461,9 +461,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # (nor are "the ducks" the one heron named before: several of a name the one does not
             # have are new; "the swings" are the swing set's)
             several = _is_plural(self.toks, m) and m.count != 1
+            # (nor is "the waterfall" the rock named before: a word the vocabulary sizes as its own
+            # thing is one by its own name)
+            own_name = m.guess is not None and load_vocabulary().match((head,)) is m.guess
             same = [
                 g for g in reversed(self.groups)
-                if g.category == m.category and (
+                if g.category == m.category and (not own_name or head in map(singular, g.name.split())) and (
                     not (family or m.guess is not None and g.guessed)
                     or singular(g.name.split()[-1]) == head
                 ) and not (several and g.count == 1 and head not in map(singular, g.name.split()))
