@@ -1635,3 +1635,9 @@ def test_a_waterfall_is_a_thing_of_its_own_name():
     scene = parse_scene("A kingfisher perches on a rock at the foot of the waterfall.")
     assert {o.name for o in scene.objects} == {"kingfisher", "rock", "waterfall"}
     assert {o.name for o in parse_scene("A thin waterfall drops into a round pool.").objects} == {"waterfall", "pool"}
+
+
+def test_strip_lights_hang_and_a_creature_named_with_the_is_there():
+    assert Counter(o.category for o in parse_scene("Long strip lights hang from the ceiling.").objects) == {"pendant_lamp": 3}
+    scene = parse_scene("Three brown bears stand at the top of the falls, snapping at the salmon leaping below them.")
+    assert "salmon" in {o.name for o in scene.objects}

@@ -1540,7 +1540,9 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         by = by and (j >= n or toks[j].text not in ("one", "ones"))
         # "Above the sleigh flies the Firebird": the subject a fronted place phrase puts after its verb
         inverted = w == "the" and i > 0 and _inverted_subject(toks, i - 1) and (j >= n or not toks[j].text[:1].isalpha())
-        if definite and entry.category != "figure" and not placed and not put and not by and not inverted:
+        # ("snapping at the salmon leaping below them": a creature the text names is there)
+        creature = vocabulary.is_creature(word) and not owner
+        if definite and entry.category != "figure" and not placed and not put and not by and not inverted and not creature:
             continue  # "the far end", "her turn": after "the" or "her", only a person is read, a
             # subject that opens a clause standing somewhere ("The periscope rises in the middle"),
             # or what a thing is put by ("a horse waits beside the bunkhouse")
