@@ -1607,3 +1607,9 @@ def test_who_rows_paddles_or_sails_a_boat_is_aboard_it_and_a_paddle_boat_is_a_bo
 def test_two_of_the_things_are_two_of_the_group_not_the_single_one_named_last():
     found = rels("Three tables stand in a row. At a fourth table, a coach waits. A robot stands between two of the tables.")
     assert {("robot_1", "right of", "table_1"), ("robot_1", "left of", "table_2")} <= found
+
+
+def test_a_seller_is_by_what_they_sell_from_and_hagglers_by_what_they_haggle_over():
+    assert rels("A robot vendor sells glowing fruit from a hover cart.") == {("robot_1", "near", "cart_1")}
+    assert rels("Two aliens haggle over a crate of crystals.") == {("alien_1", "near", "crate_1"), ("alien_2", "near", "crate_1")}
+    assert rels("A cat jumps over the crate.") == {("cat_1", "on", "crate_1")}

@@ -247,6 +247,8 @@ class _Phrase:
     riders: list[int] = field(default_factory=list)
 
 
+#: Verbs after which "over" a thing is by it, bent or quarrelling over it, not up on it.
+_OVER_VERBS = {"haggle", "argue", "quarrel", "bicker", "squabble", "fight", "bend", "lean", "hunch", "pore", "stoop"}
 #: Machines that carry things as a person has them in hand ("a drone carrying a crate").
 _MACHINE_BEARERS = frozenset({"robot", "drone"})
 
@@ -2638,7 +2640,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if vessel and target.shape == "fireplace":
                 return "in front of"  # "a cauldron hanging over the fireplace": in its hearth, over the fire
             low = self.groups[t].size[2] <= _PLATFORM_HEIGHT
-            if not hang and self._living(s) and self._carrier(t, ("perches",)) and low:
+            # ("two aliens haggle over a crate", "a clerk bends over the ledger": by it, not on it)
+            bent = self._verb_before(self._target_start, lambda w: _verb_stem(w, _OVER_VERBS))
+            if not hang and self._living(s) and self._carrier(t, ("perches",)) and low and not bent:
                 return "on"
             return "above" if hang or src.rests in ("hanging", "surface") else "near"
         walled = any(m.group == s for k, m in self.by_start.items() if k in self.on_wall)
@@ -2699,6 +2703,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             taken = kind == "from" and not self._carrier(t, ("perches",)) and not self._perch_part and self._verb_before(
                 self._target_start, lambda w: (w, "from") in _HAND_PAIRS
             )  # (not a perch: "two children feed ducks from a footbridge" are on it)
+            # ("a vendor sells fruit from a cart": by what one sells from, a cart or a stall)
+            taken = taken or kind == "from" and self._verb_before(self._target_start, lambda w: w in _WARES_VERBS)
             if self._living(s) and (self._carrier(t) or self._perch_part) and not taken:
                 return "on"
             if kind == "from" and self._part in _ROOF_PARTS:
