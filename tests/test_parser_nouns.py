@@ -1641,3 +1641,11 @@ def test_strip_lights_hang_and_a_creature_named_with_the_is_there():
     assert Counter(o.category for o in parse_scene("Long strip lights hang from the ceiling.").objects) == {"pendant_lamp": 3}
     scene = parse_scene("Three brown bears stand at the top of the falls, snapping at the salmon leaping below them.")
     assert "salmon" in {o.name for o in scene.objects}
+
+
+def test_a_mill_is_a_place_or_a_building_and_the_shed_of_one_is_the_setting():
+    """"The weaving shed of a cotton mill": the setting (a house stood in the shed, and the mill
+    was read as a potted plant through a thesaurus sense); an old mill by the river is a building."""
+    assert {o.name for o in parse_scene("The weaving shed of a Victorian cotton mill. Eight looms clatter.").objects} == {"loom"}
+    assert "mill" in {o.name for o in parse_scene("An old mill stands by the river, and a heron waits beside the mill.").objects}
+    assert Counter(o.name for o in parse_scene("Dozens of red cattle mill about behind a fence.").objects)["cattle"] > 1

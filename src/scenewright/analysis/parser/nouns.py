@@ -409,6 +409,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         follow_two = f"{follow} {toks[e + 1].text}" if e + 1 < n else ""
         # (a plural names no kind of place: "two kids dig a hole" has a verb, no dig site)
         placed_kind = singular(words[-1]) == words[-1] or words[-1] in _SAME_PLURALS
+        # ("cattle mill about": a place word before a particle is the verb)
+        placed_kind = placed_kind and not (e + 1 < n and toks[e + 1].text in _MOTION_PARTICLES | {"about"})
         # ("a cat lounges on the sofa": after "a", a plural place word is the verb of the thing)
         article = _phrase_opener(toks, s)
         plural_verb = singular(follow) != follow and article >= 0 and toks[article].text in _SINGULAR_DETERMINERS
@@ -452,7 +454,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue
         opening = _opening_place(toks, s)
         enclosing = cat in _ENCLOSING or cat == GENERIC or load_catalogue()[cat].shape in _ENCLOSING
-        if _part_of_vessel(toks, s, e) or (part_end is not None and _owner_of_part(toks, part_end, s)) or (
+        building = load_catalogue()[cat].shape in ("house", "building")
+        if _part_of_vessel(toks, s, e, building) or (part_end is not None and _owner_of_part(toks, part_end, s)) or (
             opening is not None and (enclosing or opening in ("inside", "interior"))
         ):  # (a word nobody listed too: "the kennel room of an animal shelter"; anything one is inside of:
             # "The inside of a genie's lamp")
@@ -761,8 +764,9 @@ _PLACE_PARTS = {"bridge", "deck", "cockpit", "hold", "cabin", "interior", "insid
                 "top deck", "upper deck", "lower deck", "main deck", "gun deck", "passenger deck", "car deck"}
 
 
-def _part_of_vessel(toks: list[_Tok], s: int, e: int) -> bool:
-    """The description opens with "The bridge of a ...", "The cockpit of an old plane"."""
+def _part_of_vessel(toks: list[_Tok], s: int, e: int, building: bool = False) -> bool:
+    """The description opens with "The bridge of a ...", "The cockpit of an old plane", or with
+    a ``building`` of another ("The weaving shed of a cotton mill")."""
     j = s - 1
     while j >= 0 and (
         toks[j].text in _DETERMINERS or toks[j].text[:1].isalpha() and toks[j].text not in _STOP
@@ -772,7 +776,8 @@ def _part_of_vessel(toks: list[_Tok], s: int, e: int) -> bool:
     part = " ".join(t.text for t in toks[s:e])
     # (what follows "of" is a thing named with its article: "a pool of water" is no part of the water)
     owner = e + 1 < len(toks) and (toks[e + 1].text in _DETERMINERS or toks[e + 1].orig[:1].isupper())
-    return opening and (part in _PLACE_PARTS or part in load_vocabulary().places) and e < len(toks) and toks[e].text == "of" and owner
+    place = building or part in _PLACE_PARTS or part in load_vocabulary().places
+    return opening and place and e < len(toks) and toks[e].text == "of" and owner
 
 
 def _inside_of_vehicle(toks: list[_Tok], s: int, e: int, mentions: list[_Mention]) -> bool:
@@ -1540,8 +1545,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         by = by and (j >= n or toks[j].text not in ("one", "ones"))
         # "Above the sleigh flies the Firebird": the subject a fronted place phrase puts after its verb
         inverted = w == "the" and i > 0 and _inverted_subject(toks, i - 1) and (j >= n or not toks[j].text[:1].isalpha())
-        # ("snapping at the salmon leaping below them": a creature the text names is there)
-        creature = vocabulary.is_creature(word) and not owner
+        # ("snapping at the salmon leaping below them": a creature the text has doing something is there)
+        creature = vocabulary.is_creature(word) and not owner and j < n and toks[j].text.endswith("ing")
         if definite and entry.category != "figure" and not placed and not put and not by and not inverted and not creature:
             continue  # "the far end", "her turn": after "the" or "her", only a person is read, a
             # subject that opens a clause standing somewhere ("The periscope rises in the middle"),
