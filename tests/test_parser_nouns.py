@@ -1649,3 +1649,10 @@ def test_a_mill_is_a_place_or_a_building_and_the_shed_of_one_is_the_setting():
     assert {o.name for o in parse_scene("The weaving shed of a Victorian cotton mill. Eight looms clatter.").objects} == {"loom"}
     assert "mill" in {o.name for o in parse_scene("An old mill stands by the river, and a heron waits beside the mill.").objects}
     assert Counter(o.name for o in parse_scene("Dozens of red cattle mill about behind a fence.").objects)["cattle"] > 1
+
+
+def test_a_giant_small_creature_is_a_monster_and_a_huge_big_one_stays_within_bounds():
+    """"An old merman rides a giant seahorse": a mount, not a 24 cm seahorse under him."""
+    size = {o.name: o.size for o in parse_scene("An old merman rides a giant seahorse. A giant spider lurks. A huge bear.").objects}
+    assert max(size["seahorse"]) >= 2.0 and max(size["spider"]) >= 2.0
+    assert max(size["bear"]) <= 1.6 * max(parse_scene("A bear.").objects[0].size) + 1e-6

@@ -379,7 +379,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # ("the bride, a white fox in a red veil": the bride fox, "the fox" after)
         name = " ".join([*([m.role.lower()] if m.role else []), *before, *self._shown(m), head])
         description = " ".join([*describing, name, *m.post]).strip()
-        bounds = "person" if cat.shape == "figure" else "thing"
+        bounds = "person" if cat.shape == "figure" else "creature" if self._lives(m.category) else "thing"
         base = m.guess.size if m.guess is not None else self._likeness_size(cat, kind) or cat.size
         base = stretched(scaled(base, describing, bounds), describing)
         likeness_of = {*kind, *describing} & vocabulary.replica_words

@@ -441,17 +441,27 @@ def load_vocabulary() -> Vocabulary:
     return _validate(json.loads(text))
 
 
+#: m per unit of a size word's factor, the least a creature called giant or huge is long.
+MONSTER_SIDE = 0.8
+
+
 def scaled(size: tuple[float, float, float], adjectives: list[str], bounds: str | None = None) -> tuple[float, float, float]:
     """``size`` scaled by the size words among ``adjectives`` ("a giant tortoise", "a tiny dragon"),
     kept within the ``size_word_bounds`` of that name when given ("a small fridge" is an
-    under-counter one, "a tall man" no giant)."""
+    under-counter one, "a tall man" no giant); a creature called giant or huge (``creature``) is
+    a monster's size however small its kind ("a giant spider")."""
     factor = 1.0
     vocabulary = load_vocabulary()
     for adjective in adjectives:
         factor *= vocabulary.size_words.get(adjective.lower(), 1.0)
+    said = factor
     if bounds is not None:
         lo, hi = vocabulary.size_word_bounds[bounds]
         factor = min(max(factor, lo), hi)
+    if bounds == "creature" and said >= 2.0:
+        # "a giant spider", "a huge seahorse": a creature of a story, its longest side at least
+        # MONSTER_SIDE metres per unit of the word's factor (a bear is big already)
+        factor = max(factor, said * MONSTER_SIDE / max(size))
     return (round(size[0] * factor, 4), round(size[1] * factor, 4), round(size[2] * factor, 4))
 
 
