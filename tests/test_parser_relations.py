@@ -1613,3 +1613,8 @@ def test_a_seller_is_by_what_they_sell_from_and_hagglers_by_what_they_haggle_ove
     assert rels("A robot vendor sells glowing fruit from a hover cart.") == {("robot_1", "near", "cart_1")}
     assert rels("Two aliens haggle over a crate of crystals.") == {("alien_1", "near", "crate_1"), ("alien_2", "near", "crate_1")}
     assert rels("A cat jumps over the crate.") == {("cat_1", "on", "crate_1")}
+
+
+def test_what_one_types_on_at_a_desk_is_on_the_desk():
+    assert rels("A clerk sits at a desk, typing on a laptop.") == {("clerk_1", "near", "desk_1"), ("laptop_1", "on", "desk_1")}
+    assert ("laptop_1", "on", "businessman_1") in rels("A businessman types on a laptop balanced on his knees.")

@@ -168,7 +168,7 @@ class _Clause:
     hand: bool = False
     #: The holders share the one thing in hand ("sharing a thermos"): not one each.
     shared: bool = False
-    #: ... and a verb of sharing says so: at a table, the thing is on it.
+    #: ... and a verb of sharing (or of typing) says so: at a table, the thing is on it.
     sharing: bool = False
     #: The with-things are living ones a verb's doer is with ("a groom waits with the ponies"):
     #: the doer keeps the clause's next placing, they keep by the doer.
@@ -1176,7 +1176,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # (what is given comes after whom it is given to: "one offering it a mackerel")
                 thing_at = k if given is None else given[1] - 1
                 c.shared = w in _SHARE_VERBS or (w != "with" and c.each is None and self._one_thing_after(thing_at, ce))
-                c.sharing = w in _SHARE_VERBS
+                typing = any(_verb_stem(t.text, {"type"}) for t in toks[max(0, k - 1) : k + 1])  # ("typing on a laptop")
+                c.sharing = w in _SHARE_VERBS or typing
                 k = tool_end if tool_end is not None else k + (2 if (w, nxt) in _HOLD_PAIRS else 1)
                 last_event_end = k
                 continue
@@ -1457,6 +1458,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     continue
                 if c.sharing and self._small(g) and h in self.worked_at and not self._living(g):
                     # "a couple sits at the nearest table sharing a bottle": on the table they share it at
+                    # ("a clerk sits at a desk, typing on a laptop": on the desk)
                     self._relate("on", [g], self.worked_at[h])
                     c.produced = True
                     continue
