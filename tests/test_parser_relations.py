@@ -1618,3 +1618,8 @@ def test_a_seller_is_by_what_they_sell_from_and_hagglers_by_what_they_haggle_ove
 def test_what_one_types_on_at_a_desk_is_on_the_desk():
     assert rels("A clerk sits at a desk, typing on a laptop.") == {("clerk_1", "near", "desk_1"), ("laptop_1", "on", "desk_1")}
     assert ("laptop_1", "on", "businessman_1") in rels("A businessman types on a laptop balanced on his knees.")
+
+
+def test_her_coach_is_a_person_with_a_stopwatch_and_a_sieve_one_sifts_through_is_in_hand():
+    assert ("stopwatch_1", "on", "coach_1") in rels("A girl balances on the beam while her coach stands beside it with a stopwatch.")
+    assert rels("A bearded volunteer sifts grit through a sieve.") == {("sieve_1", "on", "volunteer_1")}

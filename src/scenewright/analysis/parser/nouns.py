@@ -2342,8 +2342,11 @@ _PERSON_LOOKS = ("haired", "bearded", "moustached", "mustachioed", "bespectacled
 
 
 def _looks_like_person(toks: list[_Tok], s: int) -> bool:
-    """Whether the describing words before the noun at ``s`` are a person's ("a grey-haired coach")."""
-    return any(t.text.endswith(_PERSON_LOOKS) for t in toks[_phrase_opener(toks, s) + 1 : s])
+    """Whether the describing words before the noun at ``s`` are a person's ("a grey-haired coach"),
+    or it is someone's own ("her coach stands beside it")."""
+    opener = _phrase_opener(toks, s)
+    own = opener >= 0 and toks[opener].text in ("her", "his")
+    return own or any(t.text.endswith(_PERSON_LOOKS) for t in toks[opener + 1 : s])
 
 
 def _acts_as_person(toks: list[_Tok], k: int) -> bool:

@@ -190,6 +190,8 @@ _HAND_PAIRS = {
     # the piece one works small things onto ("stitching beads onto a purse", "glues shells onto a box")
     *((verb, "onto") for verb in ("stitches", "stitching", "stitch", "sews", "sewing", "sew", "glues", "gluing",
                                   "glue", "pins", "pinning", "pin", "threads", "threading", "thread")),
+    # what one sifts or strains through ("sifts grit through a sieve")
+    *((verb, "through") for verb in ("sifts", "sifting", "sift", "strains", "straining", "strain")),
     # what one speaks into or through ("shouts through a megaphone", "shouting into radios")
     *((verb, p) for verb in ("shouts", "shouting", "shout", "speaks", "speaking", "speak", "talks", "talking",
                              "talk", "calls", "calling", "call", "yells", "yelling", "yell", "barks", "barking",
