@@ -1623,3 +1623,9 @@ def test_what_one_types_on_at_a_desk_is_on_the_desk():
 def test_her_coach_is_a_person_with_a_stopwatch_and_a_sieve_one_sifts_through_is_in_hand():
     assert ("stopwatch_1", "on", "coach_1") in rels("A girl balances on the beam while her coach stands beside it with a stopwatch.")
     assert rels("A bearded volunteer sifts grit through a sieve.") == {("sieve_1", "on", "volunteer_1")}
+
+
+def test_what_one_lowers_into_a_thing_is_in_it_and_who_creeps_after_is_behind():
+    found = rels("Two mice lower a sausage into a cart.")
+    assert {("sausage_1", "on", "cart_1"), ("mouse_2", "near", "cart_1")} <= found
+    assert ("hunter_4", "behind", "mammoth_1") in rels("Three mammoths plod through the snow while four hunters creep after them.")

@@ -1259,6 +1259,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                         c.deeds.append((list(self.doers or prev_subject), g))
                         c.deed_end = m.end
                     elif into:
+                        dropped = c.deeds[-1][1]
+                        if not self._living(dropped) and self._small(dropped) and not self._living(g):
+                            self._relate("on", [dropped], g)  # "lowers a sausage into a cart": in the cart
                         c.deeds[-1], c.deed_end = (c.deeds[-1][0], g), m.end
                     elif led:
                         follower, anchor = self._keeps_by(g, c.main[-1])
