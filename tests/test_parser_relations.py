@@ -1629,3 +1629,12 @@ def test_what_one_lowers_into_a_thing_is_in_it_and_who_creeps_after_is_behind():
     found = rels("Two mice lower a sausage into a cart.")
     assert {("sausage_1", "on", "cart_1"), ("mouse_2", "near", "cart_1")} <= found
     assert ("hunter_4", "behind", "mammoth_1") in rels("Three mammoths plod through the snow while four hunters creep after them.")
+
+
+def test_what_stands_between_two_on_one_host_is_on_it_too():
+    scene = parse_scene("A hut clings to a ledge, and on its veranda an old hermit and a visiting monk sit "
+                        "drinking tea, an iron kettle between them.")
+    found = {(r.source, r.relation, r.target) for r in scene.relations}
+    assert {("pot_1", "right of", "hermit_1"), ("pot_1", "left of", "monk_1"), ("pot_1", "on", "house_1")} <= found
+    # ends on nothing in common: the thing between stands where they do
+    assert not any(r.relation == "on" for r in parse_scene("A trash bin between the vending machine and the stall.").relations)

@@ -138,10 +138,28 @@ def _between(reader: _Reader, src: _Group, a: str, b: str, sides: tuple[str, str
     (:func:`_pair_axis`), and near both."""
     sides = sides or _pair_axis(reader, a, b)
     out = []
+    host = _common_host(reader, src, a, b)
     for x in src.ids:
         out += [ParsedRelation(x, sides[0], a), ParsedRelation(x, sides[1], b)]
         out += [ParsedRelation(x, "near", a), ParsedRelation(x, "near", b)]
+        if host is not None:  # "on its veranda a hermit and a monk sit, a kettle between them": on it too
+            out.append(ParsedRelation(x, "on", host, inferred=True))
     return out
+
+
+def _common_host(reader: _Reader, src: _Group, a: str, b: str) -> str | None:
+    """The one thing both ends of a *between* rest on, when the thing between them rests on nothing
+    of its own: where it stands too."""
+    group_of = {i: g.index for g in reader.groups for i in g.ids}
+    on = [(s, t) for kind, s, t, _ in reader.relations if kind == "on"]
+    if any(s == src.index for s, _ in on):
+        return None
+    hosts = [{t for s, t in on if s == group_of.get(end)} for end in (a, b)]
+    common = hosts[0] & hosts[1]
+    if len(common) != 1:
+        return None
+    host = reader.groups[common.pop()]
+    return host.ids[0] if len(host.ids) == 1 else None
 
 
 def _expand(reader: _Reader) -> list[ParsedRelation]:
