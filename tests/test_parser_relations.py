@@ -1559,6 +1559,7 @@ def test_at_a_counted_group_places_by_it():
 def test_a_target_lined_up_after_the_verb_is_the_row_and_what_follows_is_its_place():
     found = rels("A centurion shouts orders at twenty legionaries lined up in front of him, each holding a shield.")
     assert ("legionary_20", "in front of", "centurion_1") in found and ("shield_20", "on", "legionary_20") in found
+    assert ("centurion_1", "face to", "legionary_1") in found  # shouting orders at them, turned to them
 
 
 def test_between_the_rows_is_between_two_rows_front_to_back():
