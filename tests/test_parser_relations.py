@@ -1639,3 +1639,14 @@ def test_what_stands_between_two_on_one_host_is_on_it_too():
     assert {("pot_1", "right of", "hermit_1"), ("pot_1", "left of", "monk_1"), ("pot_1", "on", "house_1")} <= found
     # ends on nothing in common: the thing between stands where they do
     assert not any(r.relation == "on" for r in parse_scene("A trash bin between the vending machine and the stall.").relations)
+
+
+def test_a_part_of_a_thing_of_a_group_named_before_is_one_of_them_not_another():
+    """"The roof of a van" after "five vans": one of the five; "an estate car" after cars is another car."""
+    scene = parse_scene("Five vans are parked in a row. Two small boys watch the track from the roof of a red van.")
+    assert Counter(o.category for o in scene.objects)["truck"] == 5
+    assert {(r.source, r.relation, r.target) for r in scene.relations if r.relation == "on"} == {
+        ("boy_1", "on", "truck_1"), ("boy_2", "on", "truck_1")
+    }
+    cars = parse_scene("Three rows of cars fill the deck. A Labrador watches from the back seat of an estate car.")
+    assert Counter(o.category for o in cars.objects)["car"] == 10

@@ -9,6 +9,7 @@ from dataclasses import dataclass, field, replace
 from scenewright.analysis.parser.contents import _Contents
 from scenewright.analysis.parser.grammar import (
     MAX_COUNT,
+    _BUILDING_PARTS,
     _CEILING_WORDS,
     _CHAIN_KINDS,
     _COPULAS,
@@ -512,8 +513,28 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return found
         if m.alias:
             return -1
+        several = self._one_of_several(m) if not sizes else None
+        if several is not None:  # "the roof of a van" after "five vans": one of them, not a sixth
+            m.group = several
+            self.instance[m.start] = self._member([a.lower() for a in m.adjectives], several)
+            return several
         m.group = self._new_group(m, sizes)
         return m.group
+
+    def _one_of_several(self, m: _Mention) -> int | None:
+        """The group of several things of ``m``'s kind named before, when ``m`` is one of them by a
+        part of it: "a" after a part and "of" ("from the roof of a van", "on the back of a truck")."""
+        j = m.start - len(m.adjectives) - 1
+        if j < 2 or self.toks[j].text not in ("a", "an") or self.toks[j - 1].text != "of":
+            return None
+        if singular(self.toks[j - 2].text) not in (*_BUILDING_PARTS, "back", *load_vocabulary().carriers.get("perches", ())):
+            return None
+        # ("an estate car" is another car: a word of its kind before it, no describing word)
+        if m.modifier or not all(load_vocabulary().is_adjective(a.lower()) for a in m.adjectives):
+            return None
+        name = " ".join(singular(t.text) for t in self.toks[m.start : m.end])
+        return next((g.index for g in reversed(self.groups) if g.category == m.category and g.count > 1
+                     and g.name.lower() == name), None)
 
     def _likeness_size(self, cat: Category, kind: list[str]) -> tuple[float, float, float] | None:
         """The size of a statue of an animal ("a cat statue", "a horse statue"): its animal's,
