@@ -252,6 +252,10 @@ class _Phrase:
 _OVER_VERBS = {"haggle", "argue", "quarrel", "bicker", "squabble", "fight", "bend", "lean", "hunch", "pore", "stoop"}
 #: Machines that carry things as a person has them in hand ("a drone carrying a crate").
 _MACHINE_BEARERS = frozenset({"robot", "drone"})
+#: Words of how a thing is, after it, that the phrase after them goes on about ("a girl asleep on a bench").
+_STATES = frozenset({"asleep", "awake", "alone", "aloft", "afloat", "ablaze", "adrift"})
+#: Participles of going after a thing: the doer is by it, however small it is (", chasing a rubber ball").
+_CHASING = frozenset({"chasing", "stalking", "hunting", "herding"})
 
 
 class _Reader(_Contents, _References, _Kinds, _Hands):
@@ -1354,8 +1358,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         word = self.toks[k].text
         if c.main or c.deeds or not doers or not all(self._living(g) for g in doers):
             return False
-        chased = word in ("chasing", "stalking", "hunting", "herding")  # ", chasing a rubber ball": by it, whatever its size
-        if not self._living(m.group) and max(self.groups[m.group].size) <= _HANDHELD_SIZE and not chased:
+        if not self._living(m.group) and max(self.groups[m.group].size) <= _HANDHELD_SIZE and word not in _CHASING:
             return False  # ", painting a toy sailboat", ", filling crates": worked on in hand or on the spot
         if word in _HAND_VERBS or self._lookout(word) or word in _HANG_VERBS or word in _TURN_VERBS:
             return False
@@ -2473,9 +2476,6 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return self.toks[rel.start].text not in _STOP
         return len(words) == 1 and words[0] not in _STOP and words[0][:1].isalpha()
 
-    #: Words of how a thing is, after it, that the phrase after them goes on about ("a girl asleep on a bench").
-    _STATES = frozenset({"asleep", "awake", "alone", "aloft", "afloat", "ablaze", "adrift"})
-
     @staticmethod
     def _describes(words: list[str], after_verb: bool) -> bool:
         """Whether the words between a target and the next phrase open a description of the target:
@@ -2486,7 +2486,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return False
         if words[0] in _RELATIVES:
             return True
-        return after_verb and (_participle(words[0]) or words[0] in _Reader._STATES)
+        return after_verb and (_participle(words[0]) or words[0] in _STATES)
 
     def _seat_after(self, rel: _Rel, mentions: list[_Mention]) -> bool:
         """A seat right after "from": whatever one does from a seat, one sits on it ("a servant
