@@ -1656,3 +1656,13 @@ def test_a_giant_small_creature_is_a_monster_and_a_huge_big_one_stays_within_bou
     size = {o.name: o.size for o in parse_scene("An old merman rides a giant seahorse. A giant spider lurks. A huge bear.").objects}
     assert max(size["seahorse"]) >= 2.0 and max(size["spider"]) >= 2.0
     assert max(size["bear"]) <= 1.6 * max(parse_scene("A bear.").objects[0].size) + 1e-6
+
+
+def test_presents_and_a_lazy_susan_are_things_and_together_or_at_present_no_thing():
+    """After fresh-36/37's score: "a pile of wrapped presents" were dropped (a present was a time),
+    "each with a lazy susan" drew ten generic things, "tearing open a parcel together" drew a
+    "parcel together"."""
+    assert "present" in {o.name for o in parse_scene("A pile of wrapped presents waits at the foot of the tree.").objects}
+    assert Counter(o.name for o in parse_scene("Ten round tables, each with a lazy susan in the middle.").objects)["lazy susan"] == 10
+    assert {o.name for o in parse_scene("Two bear cubs tear open a parcel together.").objects} == {"bear cub", "parcel"}
+    assert {o.name for o in parse_scene("At present, a dog sleeps.").objects} == {"dog"}

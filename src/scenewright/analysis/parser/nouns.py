@@ -741,7 +741,7 @@ def _part_of_after(toks: list[_Tok], s: int, e: int, later: list, mentions: list
 def _idiom_here(toks: list[_Tok], s: int, e: int) -> bool:
     """A bare singular noun right after "at" ("at anchor", "at sea"), a phrase of manner or state,
     not a thing: no determiner, count or describing word, and the phrase ends there."""
-    if e - s != 1 or s < 2 or toks[s - 1].text != "at" or singular(toks[s].text) != toks[s].text:
+    if e - s != 1 or s < 1 or toks[s - 1].text != "at" or singular(toks[s].text) != toks[s].text:
         return False
     after = toks[e].text if e < len(toks) else "."
     return not after[:1].isalpha() or after in _STOP
