@@ -132,7 +132,9 @@ def _pair_axis(reader: _Reader, a: str, b: str) -> tuple[str, str]:
     return "right of", "left of"
 
 
-def _between(reader: _Reader, src: _Group, a: str, b: str, sides: tuple[str, str] | None = None) -> list[ParsedRelation]:
+def _between(
+    reader: _Reader, src: _Group, a: str, b: str, sides: tuple[str, str] | None = None
+) -> list[ParsedRelation]:
     """"A bin between the machine and the stall": the centre in the gap, as a side of each (right
     of one, left of the other) along ``sides`` or the axis the pair already stands on
     (:func:`_pair_axis`), and near both."""

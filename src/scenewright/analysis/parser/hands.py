@@ -331,12 +331,14 @@ class _Hands:
 
     def _acts_from(self, k: int) -> bool:
         """Whether the "from" at ``k`` says where a doer is: after a verb of selling, a vehicle or a
-        thing with a top right after ("sells fruit from a cart"), or after a verb and what it acts on, when that is named by a pronoun, lives
-        or is too big to hold ("plays it from a narrow bench", "two children feed ducks from a
-        footbridge"; not "pulls a rope from the barrel")."""
+        thing with a top right after ("sells fruit from a cart"); or after a verb and what it acts
+        on, when that is named by a pronoun, lives or is too big to hold ("plays it from a narrow
+        bench", "two children feed ducks from a footbridge"; not "pulls a rope from the barrel")."""
         perch = self._next_mention(k + 1, len(self.toks))
-        if perch is not None and perch.start <= k + 3 and self._verb_before(k, lambda w: w in _WARES_VERBS) and (
-            load_catalogue()[perch.category].support or load_vocabulary().carries(perch.category, perch.phrase, ("vehicles",))
+        sold_from = perch is not None and perch.start <= k + 3 and self._verb_before(k, lambda w: w in _WARES_VERBS)
+        if sold_from and (
+            load_catalogue()[perch.category].support
+            or load_vocabulary().carries(perch.category, perch.phrase, ("vehicles",))
         ):
             return True  # by the cart, the stall or the table one sells from (not "from baskets")
         part_of = k + 3 < len(self.toks) and self.toks[k + 1].text in _DETERMINERS and self.toks[k + 3].text == "of"

@@ -1547,7 +1547,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         inverted = w == "the" and i > 0 and _inverted_subject(toks, i - 1) and (j >= n or not toks[j].text[:1].isalpha())
         # ("snapping at the salmon leaping below them": a creature the text has doing something is there)
         creature = vocabulary.is_creature(word) and not owner and j < n and toks[j].text.endswith("ing")
-        if definite and entry.category != "figure" and not placed and not put and not by and not inverted and not creature:
+        kept = placed or put or by or inverted or creature
+        if definite and entry.category != "figure" and not kept:
             continue  # "the far end", "her turn": after "the" or "her", only a person is read, a
             # subject that opens a clause standing somewhere ("The periscope rises in the middle"),
             # or what a thing is put by ("a horse waits beside the bunkhouse")
@@ -2082,7 +2083,8 @@ def _bare_objects(toks: list[_Tok], covered: set[int]) -> list:
         verb = k - 2 if kind and not _participle(toks[k - 1].text) else k - 1
         if k in covered or k - 1 in covered or verb - 1 not in covered or toks[k].quoted:
             continue
-        if singular(word) == word or not (_verb_of_one(toks, verb) or _verb_of_several(toks, verb)) or word.endswith("wards"):
+        acted_on = _verb_of_one(toks, verb) or _verb_of_several(toks, verb)
+        if singular(word) == word or not acted_on or word.endswith("wards"):
             continue  # ("drives towards": an adverb)
         if not (after in _STOP or not after[:1].isalpha()) or not vocabulary.is_thing_word(word) or _participle(word):
             continue

@@ -531,7 +531,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         j = m.start - len(m.adjectives) - 1
         if j < 2 or self.toks[j].text not in ("a", "an") or self.toks[j - 1].text != "of":
             return None
-        if singular(self.toks[j - 2].text) not in (*_BUILDING_PARTS, "back", *load_vocabulary().carriers.get("perches", ())):
+        parts = (*_BUILDING_PARTS, "back", *load_vocabulary().carriers.get("perches", ()))
+        if singular(self.toks[j - 2].text) not in parts:
             return None
         # ("an estate car" is another car: a word of its kind before it, no describing word)
         if m.modifier or not all(load_vocabulary().is_adjective(a.lower()) for a in m.adjectives):
@@ -1201,7 +1202,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # (what is given comes after whom it is given to: "one offering it a mackerel")
                 thing_at = k if given is None else given[1] - 1
                 c.shared = w in _SHARE_VERBS or (w != "with" and c.each is None and self._one_thing_after(thing_at, ce))
-                typing = any(_verb_stem(t.text, {"type"}) for t in toks[max(0, k - 1) : k + 1])  # ("typing on a laptop")
+                # ("typing on a laptop" at a desk: on the desk, as what is shared at a table)
+                typing = any(_verb_stem(t.text, {"type"}) for t in toks[max(0, k - 1) : k + 1])
                 c.sharing = w in _SHARE_VERBS or typing
                 k = tool_end if tool_end is not None else k + (2 if (w, nxt) in _HOLD_PAIRS else 1)
                 last_event_end = k
@@ -1902,7 +1904,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             p.kind = "near"  # "at the far end of the counter": by the counter, at its end
             return None
         end_of_place = {"behind": "back", "in front of": "front"}.get(kind)
-        if end_of_place and p.target is None and any(t.text in ("back", "rear", "front") for t in toks[rel.start : rel.end]):
+        said_end = any(t.text in ("back", "rear", "front") for t in toks[rel.start : rel.end])
+        if end_of_place and p.target is None and said_end:
             kind = f"anchor {end_of_place}"  # "a counter at the back of the shop": the setting's back, no thing's
         if kind in _FORMATIONS or kind.startswith("anchor ") or (p.target is None and kind in _PLACE_KINDS):
             # "three stalls stand in a row", "a sofa against the wall", "a rug in the middle of the room"
@@ -2525,7 +2528,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         before = self.toks[r.start - 1].text if r.start else "."
         after = self.toks[r.end].text if r.end < len(self.toks) else "."
         # (a verb has its subject before it and no "of" after: "Rows of seats stretch ...")
-        if not before[:1].isalpha() or before in _DETERMINERS or load_vocabulary().is_adjective(before) or after == "of":
+        described = before in _DETERMINERS or load_vocabulary().is_adjective(before)
+        if not before[:1].isalpha() or described or after == "of":
             return False
         start = r.end
         m = next((m for m in mentions if m.start >= start), None)
@@ -2547,7 +2551,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if w == "each" and (k + 1 == len(self.toks) or not self.toks[k + 1].text[:1].isalpha()):
                 return True  # "two desks, with five players at each": at each of them
             # ("at three tables": a count before the noun)
-            if not (w in _DETERMINERS or w in ("each", "every") or w in _NUMBERS or (w[:1].isalpha() and w not in _STOP)):
+            opener = w in _DETERMINERS or w in ("each", "every") or w in _NUMBERS
+            if not (opener or (w[:1].isalpha() and w not in _STOP)):
                 return False
             k += 1
         return False

@@ -392,8 +392,8 @@ def _named(text: str, name: str) -> tuple[int, int] | None:
     for found in re.finditer(r"[\w-]+", text):
         word = found.group()
         if word == name or singular(word) == name:
-            noun = not vocabulary.is_posture_verb(word) or before in _DETERMINERS or bool(before) and vocabulary.is_adjective(before)
-            if noun:
+            described = before in _DETERMINERS or bool(before) and vocabulary.is_adjective(before)
+            if not vocabulary.is_posture_verb(word) or described:
                 return found.span()
         before = word
     return None
