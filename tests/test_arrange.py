@@ -382,3 +382,18 @@ def test_a_stack_on_a_host_wide_enough_for_several_is_a_pile_of_layers_on_it():
     for r in made.relations:
         if r.source in o and r.target in o:
             assert rel.check(r.relation, o[r.source], o[r.target]), r
+
+
+def test_a_bridge_between_two_things_left_and_right_turns_its_length_across_the_gap():
+    scene = parse_scene("A wooden rope bridge crosses between two cliffs.")
+    bridge = next(o for o in initial_objects(scene) if o.category == "bridge")
+    assert bridge.size.y > bridge.size.x and abs(abs(bridge.rotation.z) - 90.0) < 1e-6
+
+
+def test_a_table_with_a_bench_on_either_side_turns_its_long_sides_to_them():
+    """"A pine table with two benches on either side of it": the benches stood at its ends."""
+    def table_yaw(text):
+        return next(o for o in initial_objects(parse_scene(text)) if o.category == "table").rotation.z
+
+    assert abs(abs(table_yaw("A pine table stands in the middle, with two benches on either side of it.")) - 90.0) < 1e-6
+    assert table_yaw("A pine table stands in the middle, with two chairs on either side of it.") == 0.0

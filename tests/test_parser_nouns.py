@@ -1666,3 +1666,64 @@ def test_presents_and_a_lazy_susan_are_things_and_together_or_at_present_no_thin
     assert Counter(o.name for o in parse_scene("Ten round tables, each with a lazy susan in the middle.").objects)["lazy susan"] == 10
     assert {o.name for o in parse_scene("Two bear cubs tear open a parcel together.").objects} == {"bear cub", "parcel"}
     assert {o.name for o in parse_scene("At present, a dog sleeps.").objects} == {"dog"}
+
+
+def test_a_plural_before_a_word_names_no_kind_of_place_and_games_are_no_things():
+    """"Children queue at an ice cream van" opening the text drew the van alone (a "children
+    queue" was the setting); "three guards play dice" drew a die the barrel's relation went to."""
+    assert names("Children queue at an ice cream van.") == {"child", "ice cream van"}
+    assert names("Three guards play dice around an upturned barrel.") == {"guard", "barrel"}
+    assert names("A pair of shears lies on the bench.") == {"shears", "bench"}
+
+
+def test_writing_in_capitals_and_the_work_a_scene_comes_from_are_no_things():
+    assert names("A huge sign spells out ATTACK OF THE IGUANA.") == {"sign"}
+    assert names("A cel-shaded scene from an adventure game: bandits ambush a caravan.") == {"bandit", "caravan"}
+    assert names("A TV stands on the table.") == {"tv", "table"}
+
+
+def test_a_setting_opened_with_where_and_a_fire_in_its_hearth_are_no_things():
+    assert names("A tiny yarn shop where everything is crocheted. A cat sits on the counter.") == {"cat", "counter"}
+    assert names("A fire crackles in the fireplace, and a dog sleeps in front of it.") == {"fireplace", "dog"}
+    # "the fire" after a fireplace is the fireplace again, not a second fire
+    scene = parse_scene("A fire crackles in the fireplace. A bard sits on a stool next to the fire.")
+    assert Counter(o.category for o in scene.objects) == {"fireplace": 1, "figure": 1, "stool": 1}
+
+
+def test_what_a_person_holds_in_the_lap_is_no_clothing_worn_and_a_kind_of_person_keeps_its_build():
+    scene = parse_scene("Two ladies sit on a sofa, each with a half-finished scarf on her lap.")
+    assert Counter(o.name for o in scene.objects)["scarf"] == 2
+    assert names("A boy with a red cap stands by the swing.") == {"boy", "swing"}
+    height = {o.name: o.size[2] for o in parse_scene(
+        "A dwarf smith hammers. A troll guard waits. A puppet master bows. A goblin merchant haggles.").objects}
+    assert height["dwarf smith"] < 1.4 and height["troll guard"] > 2.0 and height["goblin merchant"] < 1.2
+    assert height["puppet master"] > 1.6  # who works puppets is no puppet
+
+
+def test_a_row_is_four_and_rows_of_consoles_are_several_a_row():
+    counts = Counter(o.name for o in parse_scene(
+        "Street lamps line the path. A row of birch trees stands by the gate. "
+        "Three rows of consoles face a screen. Two rows of shelves stand at the back.").objects)
+    assert counts["street lamp"] == 4 and counts["birch tree"] == 4
+    assert counts["console"] == 12 and counts["shelf"] == 2
+
+
+def test_landforms_counted_are_their_size_and_the_rocks_after_cliffs_are_new():
+    scene = parse_scene("A rope bridge crosses between two cliffs. Three goats stand on the rocks to the left of the bridge.")
+    size = {o.name: o.size for o in scene.objects}
+    assert min(size["cliff"]) >= 6.0
+    assert Counter(o.name for o in scene.objects)["rock"] == 3
+    assert names("The rock pools below the cliffs.").isdisjoint({"cliff"})  # uncounted, a landform sets the scene
+
+
+def test_a_thing_read_before_is_there_again_after_the():
+    """"Six teleport pads ... between the pads and the ticket desk": the pads, not nothing."""
+    scene = parse_scene("Six teleport pads glow in a row. Between the pads and the ticket desk, an android waits.")
+    found = {(r.source, r.relation, r.target) for r in scene.relations}
+    assert {("robot_1", "right of", "teleport_pad_1"), ("robot_1", "left of", "desk_1")} <= found
+    assert Counter(o.name for o in scene.objects)["teleport pad"] == 6
+
+
+def test_a_neon_sign_is_a_board_that_hangs():
+    sign = next(o for o in parse_scene("A neon sign hangs above the bar.").objects if o.name == "neon sign")
+    assert sign.category == "sign" and sign.rests == "hanging" and sign.size[2] < sign.size[0]

@@ -1649,4 +1649,40 @@ def test_a_part_of_a_thing_of_a_group_named_before_is_one_of_them_not_another():
         ("boy_1", "on", "truck_1"), ("boy_2", "on", "truck_1")
     }
     cars = parse_scene("Three rows of cars fill the deck. A Labrador watches from the back seat of an estate car.")
-    assert Counter(o.category for o in cars.objects)["car"] == 10
+    assert Counter(o.category for o in cars.objects)["car"] == 13  # four a row, and the estate car
+
+
+def test_a_participle_after_the_target_of_a_plural_verb_describes_the_target():
+    """"Children queue at an ice cream van parked beside the marquee": the van is beside it, not
+    the children ("queue" is their verb, though no verb list has it)."""
+    found = rels("A marquee stands on the green. Children queue at an ice cream van parked beside the marquee.")
+    assert ("food_truck_1", "side of", "tent_1") in found
+    assert not any(s.startswith("child") and t == "tent_1" for s, _, t in found)
+
+
+def test_a_living_thing_of_an_owner_is_no_part_of_it():
+    found = rels("Three wagons stand in a line, and a log lies in front of the lead wagon's two horses.")
+    assert {("log_1", "in front of", "horse_1"), ("log_1", "in front of", "horse_2")} <= found
+
+
+def test_small_things_where_a_host_is_lie_on_it_and_a_way_up_is_no_destination():
+    found = rels("A boy carries a bucket of tar to a long workbench, where a pair of shears lies beside a ball of twine.")
+    assert {("boy_1", "near", "lab_bench_1"), ("shears_1", "on", "lab_bench_1")} <= found
+    found = rels("A bartender polishes a glass behind the long bar, where three stools stand in a row.")
+    assert ("stool_1", "near", "bar_1") in found  # stools are no small things laid on it
+    assert not any(s == "ladder_1" for s, _, _ in rels("A periscope rises by a ladder that leads up to a painted hatch."))
+
+
+def test_what_a_rack_is_hung_with_is_on_it_and_trolleys_pushed_are_no_food():
+    found = rels("A wooden drying rack stands by the wall and is hung with rows of fresh candles.")
+    assert ("candle_1", "on", "shop_shelf_1") in found
+    names = Counter(o.name for o in parse_scene("Two waitresses push steaming trolleys between the tables.").objects)
+    assert names["trolley"] == 3
+    assert "fish" not in {o.name for o in parse_scene("A woman grills fish.").objects}
+
+
+def test_what_a_crane_lifts_hangs_on_it():
+    assert ("granite_block_1", "on", "crane_1") in rels("A wooden crane swings a granite block.")
+    found = rels("Three wrecked freighters lie in the yard, and a gantry crane stands between two of them, lifting an engine.")
+    assert ("engine_1", "on", "crane_1") in found
+    assert ("bat_1", "on", "boy_1") not in rels("A boy swings a bat.")  # a person is no hoist

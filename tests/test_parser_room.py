@@ -313,3 +313,12 @@ def test_a_thing_named_stand_takes_no_wall_phrase_from_the_verb_stand():
         "A shop. Three grandfather clocks stand against the left wall, and a parrot perches on a wooden stand."
     ))}
     assert got == {(f"grandfather_clock_{k}", "against wall", "wall_3") for k in (1, 2, 3)}
+
+
+def test_a_thing_hung_beside_the_door_is_on_its_wall_and_one_standing_there_is_not():
+    """"A brass ship's bell hangs beside the door" stood on the dresser, the nearest thing."""
+    def placed(text):
+        return {(r.source, r.relation) for r in wall_phrases(parse_scene(text))}
+
+    assert placed("A kitchen. A brass bell hangs beside the door.") == {("bell_1", "on wall")}
+    assert placed("A kitchen. A coat rack stands beside the door, and a dog sleeps by the door.") == set()

@@ -726,3 +726,14 @@ def test_people_dress_in_more_than_one_colour():
     shirts = {_figure_model("person", (0.55, 0.3, 1.75), seed).tints["clothes"] for seed in range(12)}
     assert len(shirts) >= 3
     assert "clothes" not in _figure_model("knight", (0.55, 0.3, 1.75)).tints  # armour keeps its metal
+
+
+def test_a_sign_wider_than_tall_is_a_board_without_posts():
+    """A neon sign over a bar is a glowing board; a signpost stands on its posts."""
+    def roles(size):
+        return set(build_model("sign", size, "realistic", seed=1, name="neon sign").geometry)
+
+    assert "dark_metal" not in roles((1.0, 0.08, 0.5)) and "concrete" not in roles((1.0, 0.08, 0.5))
+    assert "dark_metal" in roles((0.6, 0.1, 2.2))
+    board = build_model("sign", (1.0, 0.08, 0.5), "realistic", seed=1, name="neon sign")
+    assert np.allclose(board.extents, (1.0, 0.5, 0.08), atol=0.02)  # glTF: x, up, depth

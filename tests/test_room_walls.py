@@ -125,3 +125,24 @@ def test_a_flat_thing_above_another_goes_on_the_wall_over_it_not_under_the_ceili
     got = {str(c) for c in room_constraints(objects, said, 3.0)}
     assert {"screen_1 on wall room", "board_1 on wall room", "locker_1 against wall room"} <= got
     assert "lantern_1 on ceiling ceiling" in got and "screen_1 on ceiling ceiling" not in got
+
+
+def test_a_flat_thing_above_a_counter_someone_stands_behind_hangs_from_the_ceiling():
+    """"A robot chef works behind the counter ... neon signs hang above the counter": the counter
+    stands off the wall for its chef, so the signs hang over it from the ceiling (they pulled it
+    against a side wall, the stools and the chef at its ends)."""
+    sign = SceneObject(id="sign_1", name="neon sign", category="sign", size=Vec3(x=1.0, y=0.08, z=0.5))
+    objects = [sign, _o("counter_1", "counter", 0.92), _o("robot_1", "robot", 1.7)]
+    said = [Constraint(relation="above", source="sign_1", target="counter_1"),
+            Constraint(relation="behind", source="robot_1", target="counter_1")]
+    got = {str(c) for c in room_constraints(objects, said, 3.0)}
+    assert "sign_1 on ceiling ceiling" in got
+    assert not any(c.startswith("counter_1 against wall") or c.startswith("sign_1 on wall") for c in got)
+    # with nobody behind it the sign goes on the wall and the counter to that wall, as before
+    got = {str(c) for c in room_constraints(objects, said[:1], 3.0)}
+    assert {"sign_1 on wall room", "counter_1 against wall room"} <= got
+    # the text hangs it on the wall: it stays there, only near the counter its waiter stands behind
+    stated = [*said, Constraint(relation="on wall", source="sign_1", target="room")]
+    got = {str(c) for c in room_constraints(objects, stated, 3.0)}
+    assert {"sign_1 on wall room", "sign_1 near counter_1"} <= got
+    assert not any(c.startswith("counter_1 against wall") for c in got)

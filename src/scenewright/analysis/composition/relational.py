@@ -36,6 +36,8 @@ INVERSE = {"left of": "right of", "right of": "left of", "in front of": "behind"
            "side of": "right of", "near": "right of"}  # fmt: skip
 FAR = 9.0
 ABOVE = 2.05
+#: m, the least width of a seat that makes a table turn its long side to it (a bench, a sofa).
+LONG_SEAT = 1.2
 
 #: Places an object the relations leave unplaced next to what is already there.
 FreeSpot = Callable[[ParsedObject, dict[str, Footprint]], Footprint]
@@ -70,6 +72,21 @@ def facing(obj: ParsedObject, relations: list[ParsedRelation], anchored: ParsedR
     return None
 
 
+def turn_yaw(obj: ParsedObject, outgoing: list[ParsedRelation], incoming: list[ParsedRelation],
+             by_id: dict[str, ParsedObject]) -> float:
+    """How a thing starts turned: a bridge between two things, one left and one right of it,
+    turns its long side (y at yaw 0) from one to the other; a table with a long seat on either
+    side ("two benches on either side of the table") turns its long sides to them; anything else
+    starts unturned."""
+    sides = {r.relation for r in outgoing}
+    if roles.kind(obj.category) in roles.SPANS and {"left of", "right of"} <= sides and obj.size[1] > obj.size[0]:
+        return 90.0
+    seats = [(r.relation, by_id[r.source]) for r in incoming if r.source in by_id]
+    seated = {relation for relation, o in seats if roles.kind(o.category) in roles.SEATS and o.size[0] >= LONG_SEAT}
+    table = roles.kind(obj.category) in roles.TABLES | roles.DESKS
+    return 90.0 if table and {"left of", "right of"} <= seated and obj.size[0] > obj.size[1] else 0.0
+
+
 def place_related(
     objects: list[ParsedObject], relations: list[ParsedRelation], free_spot: FreeSpot
 ) -> dict[str, Footprint]:
@@ -89,7 +106,10 @@ def place_related(
     placed: dict[str, Footprint] = {}
     side_use: Counter[tuple[str, str]] = Counter()
     main = main_object(objects, relations)
-    placed[main.id] = Footprint(0.0, 0.0, main.size[2] / 2, 0.0, main.size)
+    def yaw(obj: ParsedObject) -> float:
+        return turn_yaw(obj, outgoing[obj.id], incoming[obj.id], by_id)
+
+    placed[main.id] = Footprint(0.0, 0.0, main.size[2] / 2, yaw(main), main.size)
 
     def beside_source(obj: ParsedObject) -> bool:
         """Place ``obj`` from a relation a placed object has to it (S left of obj: obj right
@@ -103,7 +123,7 @@ def place_related(
     def beside(obj: ParsedObject, t: Footprint, target: str, rel: str, turn: bool) -> Footprint:
         """``obj`` on the ``rel`` side of ``t``, the n-th there, pushed clear."""
         (dx, dy), face_yaw = SIDES[rel]
-        probe = Footprint(0, 0, 0, face_yaw if turn else 0.0, lent.get(obj.id, obj.size))
+        probe = Footprint(0, 0, 0, face_yaw if turn else yaw(obj), lent.get(obj.id, obj.size))
         n = side_use[(target, rel)]
         side_use[(target, rel)] += 1
         along = (probe.d if dx else probe.w) + GAP

@@ -37,6 +37,8 @@ WORKPLACES = DESKS | TABLES | BARS | frozenset({
     "vending_machine",
 })  # fmt: skip
 BEDS = frozenset({"bed", "crib"})
+#: What spans the gap between two things, its long side from one to the other ("a rope bridge between two cliffs").
+SPANS = frozenset({"bridge"})
 NIGHTSTANDS = frozenset({"nightstand"})
 #: What stands at the foot of a bed.
 BED_FOOT = frozenset({"treasure_chest", "ottoman", "bench"})

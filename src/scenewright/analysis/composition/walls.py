@@ -38,6 +38,7 @@ def room_constraints(objects: Sequence[SceneObject], constraints: Sequence[Const
     ceiling over it instead."""
     kinds = {o.id: roles.kind(o.category) if o.category else None for o in objects}
     constraints = _carried_not_mounted(constraints)
+    backed = _backed(constraints)
     mounted = _mounted(objects, constraints)
     reach = _Reach(objects, constraints, mounted)
     if height is not None:
@@ -49,10 +50,12 @@ def room_constraints(objects: Sequence[SceneObject], constraints: Sequence[Const
         sides.setdefault(c.source, {}).setdefault(c.relation, set()).add(c.target)
     out: list[Constraint] = []
     at_wall: set[str] = set()  # what a thing on the wall hangs above: it stands at that wall
-    backed = {c.target for c in constraints if c.relation == "behind"}  # someone stands behind it
     for c in constraints:
         if c.source in mounted and c.relation == "above":
-            if height is None or not reach.fits(c.source, c.target, height):
+            # (over a thing someone stands behind, off the wall, a thing on the wall is only near it:
+            # "a sign hangs on the wall above the counter" with a waiter behind the counter)
+            off_wall = mounted[c.source][0] == "on wall" and reach.ground(c.target) in backed
+            if height is None or not reach.fits(c.source, c.target, height) or off_wall:
                 c = Constraint(relation="near", source=c.source, target=c.target)
             elif mounted[c.source][0] == "on wall":
                 at_wall.add(reach.ground(c.target))
@@ -101,14 +104,22 @@ def ceiling_for(objects: Sequence[SceneObject], constraints: Sequence[Constraint
     return max(height, math.ceil(need * 20 - 1e-6) / 20)  # to 5 cm
 
 
+def _backed(constraints: Sequence[Constraint]) -> set[str]:
+    """What someone stands behind (a counter, "a baker waits behind it"): it stands off the wall."""
+    return {c.target for c in constraints if c.relation == "behind"}
+
+
 def _mounted(objects: Sequence[SceneObject], constraints: Sequence[Constraint]) -> dict[str, tuple[str, str]]:
     """Id → (relation, target) of each thing hung on a wall or from the ceiling: by its category,
     a flat thing above another on the wall over it ("a status screen above each pod", "a
     whiteboard above the bench"), or because the text itself hangs it there ("a lantern hangs
-    from the ceiling")."""
+    from the ceiling"). Over a thing someone stands behind (a bar counter), which stands off the
+    wall, a flat thing hangs from the ceiling ("neon signs hang above the counter")."""
     above = {c.source for c in constraints if c.relation == "above"}
-    mounted = {o.id: ("on wall", ROOM_TARGET) for o in objects
-               if hangs_by_kind(o) or (o.id in above and _flat(o))}
+    backed = _backed(constraints)
+    over_backed = {c.source for c in constraints if c.relation == "above" and c.target in backed}
+    hung = {o.id for o in objects if hangs_by_kind(o) or (o.id in above and _flat(o))}
+    mounted = {i: ("on ceiling", CEILING_TARGET) if i in over_backed else ("on wall", ROOM_TARGET) for i in hung}
     mounted |= {o.id: ("on ceiling", CEILING_TARGET) for o in objects if o.category in CEILING_THINGS}
     return mounted | {c.source: (c.relation, c.target) for c in constraints if c.relation in ("on wall", "on ceiling")}
 

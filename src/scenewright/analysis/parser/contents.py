@@ -74,8 +74,9 @@ class _Contents:
         head = m.phrase.split()[-1].lower()
         if m.counted or m.definite:
             return False
-        if m.start > 0 and self.toks[m.start - 1].text in _COOK_VERBS:
-            return True  # "a woman grills fish": the food cooked
+        before = self.toks[m.start - 1].text if m.start > 0 else ""
+        if before in _COOK_VERBS and before not in load_vocabulary().adjectives:
+            return True  # "a woman grills fish": the food cooked (not "push steaming trolleys")
         if singular(head) == head:
             return False
         k = m.start - 1  # back over describing words and a list of wares before ("pies, cakes and jams")

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 
 from scenewright.core.catalogue import load_catalogue, match_phrase, phrase_index, singular
-from scenewright.analysis.parser.grammar import _BUILDING_PARTS, _LIVING
+from scenewright.analysis.parser.grammar import _BUILDING_PARTS, _LIVING, _THRESHOLDS
 from scenewright.analysis.parser.phrases import _phrase_table
 from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _Tok
 from scenewright.analysis.parser.vocabulary import GENERIC, Entry, load_vocabulary
@@ -27,6 +27,7 @@ from scenewright.analysis.parser.words import (
     _UNITS,
     _VAGUE,
     _FINITE,
+    _GAMES,
     _HAND_VERBS,
     _HANG_VERBS,
     _HOLD,
@@ -157,8 +158,8 @@ def _verb_ends_subject(toks: list[_Tok], i: int, end: int) -> bool:
     # (past describing words, and the words hyphened into one: "a three-tier cake stands")
     while j >= 0 and i - j <= 4 and (toks[j].text[:1].isalpha() and toks[j].text not in _STOP or toks[j + 1].joined):
         j -= 1
-    if j >= 0 and j < i - 1 and toks[j].text in _SINGULAR_DETERMINERS:
-        return True
+    if j >= 0 and toks[j].text in _SINGULAR_DETERMINERS:
+        return True  # ("a TV stands on the table")
     if end - i != 1 or i == 0:
         return False
     before = toks[i - 1].text
@@ -327,6 +328,12 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a lighthouse keeper's cottage": the kind of keeper, no lighthouse
         if _owner_of_setting(toks, s, e, cat):
             continue  # "a kitchen in the cottage of the three bears": whose place it is, not who is there
+        if _source_of_scene(toks, s):
+            continue  # "a cel-shaded scene from an adventure game": where the picture comes from
+        if e - s == 1 and toks[s].text in _GAMES and s > 0 and toks[s - 1].text in ("play", "plays", "playing"):
+            continue  # "three guards play dice around a barrel": a game, not its pieces
+        if _fire_in_hearth(toks, s, e):
+            continue  # "a fire crackles in the fireplace": the fireplace's own fire
         # (a word nobody listed that the guess makes a person by the verb after it is worn too: "a grower
         # in a hairnet kneels")
         unlisted = entry is not None and (entry.category == GENERIC or vocabulary.match(tuple(words)) is None)
@@ -401,8 +408,10 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "a sheep shearing shed", "a horse riding school": what the next thing is for
         if _owner_of_named_part(toks, s, e):
             continue  # "a crawler with a crane arm", "a hat of peacock feathers": whose part, no crane
+        # ("Children queue at a van": a plural names no kind of place, the word after it is its verb)
         if e < n and toks[e].text[:1].isalpha() and toks[e].text not in _STOP and not toks[e].joined and (
-            not several and not _is_verb(toks[e].text) and not _participle(toks[e].text) and _match_at(toks, e) is None
+            singular(words[-1]) == words[-1] and not several
+            and not _is_verb(toks[e].text) and not _participle(toks[e].text) and _match_at(toks, e) is None
             and toks[e].text not in vocabulary.adjectives and _unknown_opening_place(toks, e, e + 1)
         ):
             continue  # "An otter sanctuary by a river.": the kind of the place nobody listed the opening names
@@ -816,6 +825,35 @@ def _opening_place(toks: list[_Tok], s: int) -> str | None:
         if part in places or part in _PLACE_PARTS:
             return part if _part_of_vessel(toks, j - width, j) else None
     return None
+
+
+#: What a description may say it is a view of, before "from" and the work it comes from.
+_SCENE_VIEWS = {"scene", "still", "shot", "screenshot", "level", "frame", "moment", "panel", "page"}
+
+
+def _source_of_scene(toks: list[_Tok], s: int) -> bool:
+    """The noun at ``s`` names the work a scene comes from ("a scene from an adventure game", "a
+    still from a silent film"): no thing of the scene."""
+    j = s - 1
+    while j >= 0 and (toks[j].text in ("a", "an", "the") or toks[j].text[:1].isalpha() and toks[j].text not in _STOP):
+        j -= 1
+    return j >= 1 and toks[j].text == "from" and toks[j - 1].text in _SCENE_VIEWS
+
+
+#: What burns a fire inside it, so that the fire is its own, no thing beside it.
+_HEARTHS = {"fireplace", "hearth", "stove", "furnace", "oven", "grate", "brazier", "forge", "kiln", "fire pit", "firepit"}
+
+
+def _fire_in_hearth(toks: list[_Tok], s: int, e: int) -> bool:
+    """The fire at ``s`` burns in a hearth the next words name ("a fire crackles in the fireplace",
+    "a log fire roaring in the hearth")."""
+    if toks[e - 1].text not in ("fire", "fires", "flames", "blaze"):
+        return False
+    k = next((j for j in range(e, min(e + 3, len(toks))) if toks[j].text in ("in", "inside", "within")), None)
+    if k is None:
+        return False
+    words = [t.text for t in toks[k + 1 : k + 5]]
+    return any(w in _HEARTHS or f"{w} {v}" in _HEARTHS for w, v in zip(words, [*words[1:], ""]))
 
 
 def _picture_of_scene(toks: list[_Tok], s: int, e: int, category: str) -> bool:
@@ -1240,6 +1278,8 @@ def _opening_setting(toks: list[_Tok], s: int, e: int) -> bool:
         return False  # "the captain's cabin of a sailing ship": whose it is decides (_opening_place)
     k = e
     while k < len(toks) and toks[k].text not in (".", "!", "?", ";", ":", "with"):
+        if toks[k].text == "where":
+            return True  # "A tiny yarn shop where everything is crocheted": what goes on in it
         # ("at milking time", "in the Alps": no verbs)
         if _verb_word(toks[k].text) and not toks[k].text.endswith("ing") and not toks[k].orig[:1].isupper():
             return False
@@ -1521,7 +1561,9 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         # "a dozen moulds of fresh curd": counted things of a stuff are the things (not "two sides of the hut")
         filled = _NUMBERS.get(w, 0) > 1 and one != word and j + 1 < n and toks[j + 1].text not in _DETERMINERS
         filled = filled and word not in vocabulary.parts and word not in _QUANTITY
-        if not (vocabulary.is_thing_word(word) or held or counted_place or stock or compound or loose) or (
+        # ("six teleport pads glow ... between the pads and the desk": the pads read before, again)
+        again = w == "the" and any(singular(toks[h].text) == one for h, *_ in out) and not _named_before(toks, head)
+        if not (vocabulary.is_thing_word(word) or held or counted_place or stock or compound or loose or again) or (
             word in _QUANTITY and not counted_place and not compound and not members
         ) or (j < n and toks[j].text == "of" and not filled):
             continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"
@@ -1547,7 +1589,7 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         inverted = w == "the" and i > 0 and _inverted_subject(toks, i - 1) and (j >= n or not toks[j].text[:1].isalpha())
         # ("snapping at the salmon leaping below them": a creature the text has doing something is there)
         creature = vocabulary.is_creature(word) and not owner and j < n and toks[j].text.endswith("ing")
-        kept = placed or put or by or inverted or creature
+        kept = placed or put or by or inverted or creature or again
         if definite and entry.category != "figure" and not kept:
             continue  # "the far end", "her turn": after "the" or "her", only a person is read, a
             # subject that opens a clause standing somewhere ("The periscope rises in the middle"),
@@ -1889,8 +1931,12 @@ _OUTSIDE_KINDS = _BY_KINDS | {"above", "on top"}
 
 def _outside_of(toks: list[_Tok], i: int) -> bool:
     """The noun phrase opening at ``i`` names what a thing stands outside of ("beside [the tavern]",
-    "above [the glass office]"), or a part of it seen from outside ("on the roof of [the inn]")."""
-    return _placed_by(toks, i, _OUTSIDE_KINDS) or _outside_part_of(toks, i)
+    "above [the glass office]"), or a part of it seen from outside ("on the roof of [the inn]"),
+    or a door of it a thing stands outside of ("in front of the doors of [the cinema]")."""
+    if _placed_by(toks, i, _OUTSIDE_KINDS) or _outside_part_of(toks, i):
+        return True
+    door = i >= 3 and toks[i - 1].text == "of" and singular(toks[i - 2].text) in _THRESHOLDS
+    return door and toks[i - 3].text in _DETERMINERS and _placed_by(toks, i - 3, _OUTSIDE_KINDS)
 
 
 def _buildings(toks: list[_Tok], covered: set[int]) -> list:
@@ -2140,6 +2186,10 @@ _LAID = {"hung", "draped", "folded", "spread", "laid", "piled", "heaped", "strew
 _TOPPED = {"topped", "crowned", "hung", "draped", "piled", "stacked", "loaded", "laden", "heaped", "strung"}
 
 
+#: Where a person holds a piece of clothing they are not wearing.
+_LAP_WORDS = {"lap", "knee", "knees", "hand", "hands", "arm", "arms"}
+
+
 def _laid_out(toks: list[_Tok], head: int, j: int) -> bool:
     """The clothing word at ``head`` is the subject of a placing verb ("leather coats hang on a
     rail", "a cloak lies on the bench") or is put somewhere ("a shawl draped over the chair"): a
@@ -2155,6 +2205,10 @@ def _laid_out(toks: list[_Tok], head: int, j: int) -> bool:
     if k > 0 and toks[k].text == "with" and toks[k - 1].text in _TOPPED:
         return True  # "three hat stands, each topped with a felt hat": put on the stand, not worn
     clause = k > 0 and toks[k].text == "and" and toks[k - 1].text == ","  # (", and clothes are piled on a chair")
+    # ("each with a half-finished scarf on her lap": in her lap or hands, not on her)
+    held = j + 2 < len(toks) and toks[j].text in ("on", "in", "across") and toks[j + 1].text in _OWNERS
+    if held and toks[j + 2].text in _LAP_WORDS:
+        return True
     if k >= 0 and toks[k].text in ("with", "in", "wearing", "without", "and", "or") and not clause:
         return False  # "a boy with a red cap stands by the swing": the boy's verb, his cap
     after = toks[j].text
@@ -2262,6 +2316,8 @@ def _guess(toks: list[_Tok], head: int, before: list[_Tok]) -> Entry:
     verb after a "with" thing is its owner's ("a mechanic with a wheel gun kneels")."""
     vocabulary = load_vocabulary()
     word = toks[head].text
+    if singular(word) in vocabulary.landforms:
+        return vocabulary.landforms[singular(word)]  # "between two cliffs": a landform of its size
     entry = vocabulary.guess_by_form(word)
     # what WordNet says the word names, for when the text tells nothing else ("a musher", "a sampan");
     # no person for a thing read or held ("reads a comic")
@@ -2845,9 +2901,9 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             counted = q in ("pair", "couple", "dozen")
             k = j - 2
             if k >= 0 and toks[k].text in _NUMBERS:  # "two pairs of", "three stacks of"
-                width, depth, _ = load_catalogue()[m.category].size
-                long_unit = (width >= 1.0 and depth <= 0.6) or load_catalogue()[m.category].shape == "flower_bed"
-                # a row of tulips is a bed; each of "five pairs" is a pair, of "three rows" a row
+                # a row of tulips is a bed, a row of shelves or benches one long unit (not a row of consoles);
+                # each of "five pairs" is a pair, of "three rows" a row
+                long_unit = load_catalogue()[m.category].shape in ("bookshelf", "flower_bed", "bench")
                 per = 1 if q in ("row", "rows", "line", "lines") and long_unit else _QUANTITY.get(singular(q), count)
                 # each of "two bundles of salt" is one lot of it
                 per = 1 if heaped or pair or stuff else per
@@ -2899,6 +2955,9 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         count, counted = total, True
     if count is None and plural and singular(toks[m.end - 1].text) in load_vocabulary().crowd_words:
         count = _QUANTITY["crowd"]  # "spectators gather behind the rope": a crowd, not a few
+    lining = m.end + 1 < len(toks) and toks[m.end].text == "line" and toks[m.end + 1].text in ("the", "both", "either")
+    if count is None and plural and lining:
+        count = _QUANTITY["row"]  # "street lamps line the path": a row of them
     if count is None:
         count = UNCOUNTED if plural else 1
     count = count if exact else min(count, CROWD)

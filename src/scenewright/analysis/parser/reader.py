@@ -100,6 +100,7 @@ from scenewright.analysis.parser.words import (
     _QUANTITY,
     _VAGUE,
     _WARES_VERBS,
+    _WORKS_ITS_KIND,
     _is_verb,
     _verb_stem,
 )
@@ -252,6 +253,10 @@ class _Phrase:
 _OVER_VERBS = {"haggle", "argue", "quarrel", "bicker", "squabble", "fight", "bend", "lean", "hunch", "pore", "stoop"}
 #: Machines that carry things as a person has them in hand ("a drone carrying a crate").
 _MACHINE_BEARERS = frozenset({"robot", "drone"})
+#: Machines that lift what they act on, and the verbs of it: the load hangs on them ("a crane swings a block").
+_HOISTS = frozenset({"crane", "hoist", "derrick", "winch", "gantry", "arm"})
+_HOIST_VERBS = frozenset({"lift", "lifts", "lifting", "hoist", "hoists", "hoisting", "swing", "swings", "swinging",
+                          "lower", "lowers", "lowering", "raise", "raises", "raising", "dangle", "dangles", "dangling"})  # fmt: skip
 #: Words of how a thing is, after it, that the phrase after them goes on about ("a girl asleep on a bench").
 _STATES = frozenset({"asleep", "awake", "alone", "aloft", "afloat", "ablaze", "adrift"})
 #: Participles of going after a thing: the doer is by it, however small it is (", chasing a rubber ball").
@@ -386,6 +391,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         description = " ".join([*describing, name, *m.post]).strip()
         bounds = "person" if cat.shape == "figure" else "creature" if self._lives(m.category) else "thing"
         base = m.guess.size if m.guess is not None else self._likeness_size(cat, kind) or cat.size
+        base = self._kin_size(cat, kind, head) or base
         base = stretched(scaled(base, describing, bounds), describing)
         likeness_of = {*kind, *describing} & vocabulary.replica_words
         if likeness_of and (cat.shape != "figure" or likeness_of - {"model"}):
@@ -463,7 +469,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             head = vocabulary.singular(last[:-2] if last.endswith("'s") else last)  # ("the calf's back": the calf)
             # a camel is not "the pig", nor "the cookhouse" the bunkhouse: in a family, or between
             # two guessed words, one thing only by the same head noun
-            # (nor is "the ridge" the boulder named before: a landform is one by its own name)
+            # (nor is "the ridge" the boulder named before, nor "the rocks" the cliffs: a landform
+            # is one by its own name)
             family = self.catalogue[m.category].family or head in vocabulary.landforms
             # (nor are "the ducks" the one heron named before: several of a name the one does not
             # have are new; "the swings" are the swing set's)
@@ -474,7 +481,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             same = [
                 g for g in reversed(self.groups)
                 if g.category == m.category and (not own_name or head in map(singular, g.name.split())) and (
-                    not (family or m.guess is not None and g.guessed)
+                    not (family or m.guess is not None and g.guessed or singular(g.name.split()[-1]) in vocabulary.landforms)
                     or singular(g.name.split()[-1]) == head
                 ) and not (several and g.count == 1 and head not in map(singular, g.name.split()))
             ]  # fmt: skip
@@ -806,7 +813,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         gap = [t.text for t in self.toks[last.end : cs - 1]] if last is not None else []
         people = all(self._living(g) for g in subjects)
         place = last.group if last is not None and (people or all(w == "," for w in gap)) else None
-        if place is None or place in subjects:
+        if place is None or place in subjects or not people and self._laid_on(subjects, place, since):
             return
         if people and self._platform(place, subjects[0]):
             # "a little wooden jetty, where a boy feeds the ducks": on the platform, whatever he does there
@@ -823,6 +830,19 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if loose:
                 self._relate("on", loose, place)
                 self._relate("near", subjects, place)
+
+    def _laid_on(self, subjects: list[int], place: int, since: int) -> bool:
+        """"A long workbench, where a pair of shears lies beside a ball of twine": small things a
+        where-clause names lie on the place when it has a top, and so do the small things they lie
+        by; whether any did."""
+        if not self.catalogue[self.groups[place].category].support:
+            return False
+        if any(r[0] in ("on", "above") and r[1] in subjects for r in self.relations[since:]):
+            return False
+        by = [r[2] for r in self.relations[since:] if r[1] in subjects and r[0] in _GROUND_KINDS]
+        small = [g for g in (*subjects, *by) if self.groups[g].rests == "surface"]
+        self._relate("on", small, place)
+        return bool(small)
 
     def _on_wall_after(self, end: int) -> bool:
         """"... on the wall", "mounted on the back wall", "hangs on a wall" right after a noun."""
@@ -1148,7 +1168,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # ("has fallen asleep", "have gathered": a tense, nothing held)
             owns = w in ("has", "have") and not (_participle(nxt) or nxt in ("been", "gone", "come", "grown"))
             # ("three grey bears sit": a noun the reader found, not the verb "bears")
-            if w == "with" or (w in _HOLD and k not in self.by_start) or (w, nxt) in _HOLD_PAIRS or owns or hand:
+            # ("a gantry crane stands between them, lifting a rusty engine": on its hook; "swings a
+            # trunk over them": where the phrase after it puts it)
+            hoisted = w in _HOIST_VERBS and k not in self.by_start and bool(holder) and self._hoist(holder[-1])
+            hoisted = hoisted and not any(j in self.rel_at for j in range(k + 1, ce))
+            if w == "with" or (w in _HOLD and k not in self.by_start) or (w, nxt) in _HOLD_PAIRS or owns or hand or hoisted:
                 if w in _HOLD and w.endswith("ing") and c.head is not None and c.wsub:
                     # "with a small table beside them holding a teapot": the with-thing holds it (what
                     # came with the head before it stays the head's: "a dwarf with an axe and a wizard holding a staff")
@@ -1197,7 +1221,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     c.head = [c.deeds[-1][1]]
                 # "with his putter": a possessive after "with" says the person has it in hand
                 hand = hand or (w == "with" and mine and all(self._person_at(h) for h in c.head))
-                c.hold, c.hand = w in _HOLD or (w, nxt) in _HOLD_PAIRS or hand or bool(filled), hand
+                c.hold, c.hand = w in _HOLD or (w, nxt) in _HOLD_PAIRS or hand or bool(filled) or hoisted, hand
                 # ("two men haul a trunk": one thing a verb of several has in hand is theirs together)
                 # (what is given comes after whom it is given to: "one offering it a mackerel")
                 thing_at = k if given is None else given[1] - 1
@@ -1310,7 +1334,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 last_event_end = m.end
                 continue
             c.verb_seen = c.verb_seen or k in self.rel_at or _is_verb(w)
-            c.finite = c.finite or _is_verb(w)
+            c.finite = c.finite or _is_verb(w) or self._finite_at(k)  # ("children queue at a van")
             if k in self.rel_at:
                 k = self._relation(c, self.rel_at[k], ce, prev_subject, starts_with_rel, last_event_end)
                 last_event_end = phrase_end = k
@@ -1516,6 +1540,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                         if not c.shared:
                             self.in_hand.append((g, h))
                         self.carried.add((g, h))
+
+    def _hoist(self, g: int) -> bool:
+        """Whether ``g`` is a machine that lifts loads (:data:`_HOISTS`, by its name's last word)."""
+        return not self._living(g) and singular(self.groups[g].name.split()[-1].lower()) in _HOISTS
 
     def _relation(self, c: _Clause, rel: _Rel, ce: int, prev_subject, starts_with_rel, last_event_end) -> int:
         """One relation phrase, in steps: read the phrase and its target, find what it places, set
@@ -2491,6 +2519,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return True
         return after_verb and (_participle(words[0]) or words[0] in _STATES)
 
+    @staticmethod
+    def _kin_size(cat: Category, kind: list[str], head: str) -> tuple[float, float, float] | None:
+        """A person named with a kind of person of their own build is that build: "a dwarf smith"
+        is a dwarf's height, "a troll guard" a troll's (not "a puppet master", who works them)."""
+        if cat.shape != "figure" or len(kind) != 1 or head in _WORKS_ITS_KIND:
+            return None
+        kin = load_vocabulary().match((kind[0],))
+        return kin.size if kin is not None and load_catalogue()[kin.category].shape == "figure" else None
+
     def _seat_after(self, rel: _Rel, mentions: list[_Mention]) -> bool:
         """A seat right after "from": whatever one does from a seat, one sits on it ("a servant
         plays the organ from a narrow bench"), unless a small thing taken from it comes right
@@ -2505,8 +2542,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         before it in the clause; not an infinitive ("stops to drink"), a receiver ("gives it to her")
         or the end of a span ("from the gate to the barn")."""
         k = end + 1 if end < len(self.toks) and self.toks[end].text in _DETERMINERS else end
+        while k < len(self.toks) and k not in starts and self.toks[k].text in load_vocabulary().adjectives:
+            k += 1  # "carries a bucket of tar to a long workbench"
         span = any(t.text == "from" for t in self.toks[max(0, end - 7) : end - 1])
-        return k in starts and not span and self._verb_before(end - 1, lambda w: w in _CARRY_VERBS)
+        way = end >= 2 and self.toks[end - 2].text in ("up", "down")  # "a ladder that leads up to a hatch": a way
+        return k in starts and not span and not way and self._verb_before(end - 1, lambda w: w in _CARRY_VERBS)
 
     def _from_to(self, start: int, starts: set[int]) -> bool:
         """"From it to a refinery", "from the gate to the barn", "from it into a tank": a thing, then

@@ -88,7 +88,10 @@ class _References:
                     self._part = singular(toks[m.end - 1].text)
                     return owner, m.end  # "pumpkins on its counter": the stall's own counter is the stall
                 possessor = self._possessor(pos, j)
-                if possessor is not None and m.group < 0 and not any(g.category == m.category for g in self.groups):
+                # (a living thing is no part of its owner: "in front of the lead wagon's two horses")
+                if possessor is not None and m.group < 0 and not self._lives(m.category) and not any(
+                    g.category == m.category for g in self.groups
+                ):
                     self._part = singular(toks[m.end - 1].text)
                     return [possessor], m.end  # "either side of the warehouse's gate": the warehouse
                 g = self._resolve(m, self.size_of.get(m.start, []))

@@ -344,10 +344,10 @@ def hangs_by_kind(o) -> bool:
     words = f"{o.name} {getattr(o, 'description', '')} {getattr(o, 'visual_description', '')}"
     return o.category in WALL_THINGS and not standing_form(words)
 
-#: Words for a room's wall (a ship's bulkhead is its wall); "window" only for a thing hung there.
-_WALL_WORDS = r"(wall|corner|bulkhead|window)"
+#: Words for a room's wall (a ship's bulkhead is its wall); "window" and "door" only for a thing hung there.
+_WALL_WORDS = r"(wall|corner|bulkhead|window|door)"
 #: (a verb that spreads things over a wall counts as its preposition: "clocks cover the walls")
-_WALL_PHRASE = re.compile(r"\b(against|along|on|by|to|in|at|onto|from|covers?|lines?|fills?|crowds?|adorns?|decorates?)\s+"
+_WALL_PHRASE = re.compile(r"\b(against|along|on|by|beside|to|in|at|onto|from|covers?|lines?|fills?|crowds?|adorns?|decorates?)\s+"
                           r"(?:the\s+|a\s+|one\s+)?(?:(back|rear|far|left|right|front)(?:[- ]hand)?\s+)?" + _WALL_WORDS + r"s?\b")
 #: Verbs (and participles) that fix a thing to a wall or the ceiling.
 _FIXING = r"(?:hang|hangs|hanging|hung|mounted|fixed|pinned|nailed|fastened|bolted|screwed|hooked|attached|affixed|clamped|tacked|taped|glued|stuck|suspended)"
@@ -477,8 +477,8 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
             # end with a microphone in his hand, and a screen hangs on the wall" hangs the screen)
             if o.anchor not in ("wall", "corner") and not wall_thing and _names_between(between, names, name):
                 break
-            if what == "window" and not _MOUNTED.search(between):
-                break  # a thing hung in the window is on its wall; one standing there is not
+            if what in ("window", "door") and not _MOUNTED.search(between):
+                break  # a thing hung in the window or by the door is on its wall; one standing there is not
             target = _wall_of(side)
             if what == "corner":
                 relation = "in corner"

@@ -301,7 +301,8 @@ _GROUND_MATERIALS = [
     ("stone", ("stone floor", "flagstone", "flagstones", "paved")),
     ("dirt", ("dirt", "mud", "muddy", "soil")),
     ("grass", ("grass", "grassy", "lawn", "turf", "outfield", "cricket", "croquet", "bowling green", "playing field",
-               "football pitch", "rugby pitch")),  # (games played on grass: the ground of the village too)
+               "football pitch", "rugby pitch", "village green", "on a green", "on the green")),
+    # (games played on grass, and a village's green: the ground of the village too)
 ]
 #: Words for places, and the ground each has: the setting's own word decides (the first one the
 #: description names, its opening sentence first), so "a savannah enclosure at a city zoo" is
@@ -332,7 +333,7 @@ _GROUND_PLACES = [
               "trail", "planet", "asteroid", "regolith", "rocky", "crater", "martian", "mars", "wasteland", "savannah", "savanna",
               "construction site", "building site", "quarry", "enclosure", "ranch", "arena")),
     ("grass", ("meadow", "park", "garden", "field", "backyard", "yard", "forest", "zoo", "airfield", "clearing",
-               "glade", "wedding", "picnic", "golf")),
+               "glade", "wedding", "picnic", "golf", "fete")),
 ]
 
 

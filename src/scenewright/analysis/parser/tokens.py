@@ -69,7 +69,23 @@ def _tokenise(text: str) -> list[_Tok]:
             toks[-1].text[:1].isalpha() and toks[-1].text not in _AFTER_ABOARD
         ):  # "six tourists on deck", "with a crew on board": aboard, no board nor deck of their own
             toks[-3:-1] = [_Tok("aboard", f"{toks[-3].orig} {toks[-2].orig}", toks[-3].joined, toks[-3].quoted)]
+    _quote_capitals(toks)
     return toks
+
+
+def _quote_capitals(toks: list[_Tok]) -> None:
+    """Two or more words in capitals in a row are writing, as if quoted ("a sign spells out
+    ATTACK OF THE IGUANA": no iguana)."""
+    k = 0
+    while k < len(toks):
+        j = k
+        while j < len(toks) and toks[j].orig.isalpha() and toks[j].orig.isupper() and len(toks[j].orig) > 1 or (
+            j > k and toks[j].orig in ("A", "I")
+        ):
+            j += 1
+        for t in toks[k:j] if j - k >= 2 else ():
+            t.quoted = True
+        k = max(j, k + 1)
 
 
 #: Words that may follow "on board" or "on deck" meaning aboard the vessel named before ("on deck

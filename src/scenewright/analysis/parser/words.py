@@ -23,7 +23,7 @@ _APPROXIMATE = {"about", "around", "roughly", "nearly", "almost", "approximately
 _VAGUE = {"few": 3, "several": 3, "some": 3, "various": 3, "many": 5, "numerous": 5, "multiple": 3, "both": 2}
 #: Nouns that count or arrange what follows "of" ("a row of lamps", "stacks of crates").
 _QUANTITY = {
-    "pair": 2, "pairs": 4, "couple": 2, "row": 3, "rows": 6, "line": 3, "set": 3, "group": 3, "cluster": 3,
+    "pair": 2, "pairs": 4, "couple": 2, "row": 4, "rows": 6, "line": 4, "set": 3, "group": 3, "cluster": 3,
     "stack": 3, "stacks": 4, "pile": 3, "piles": 4, "heap": 3, "heaps": 4, "bunch": 3, "bunches": 4,
     "bundle": 3, "bundles": 4, "lane": 3, "lanes": 6, "queue": 4, "handful": 3, "collection": 3, "teams": 10,
     "coils": 3, "coil": 1, "ring": 4, "circle": 4, "lot": 5, "lots": 5, "plenty": 5, "dozens": 12, "hundreds": 20,
@@ -116,6 +116,12 @@ _FINITE = {"is", "are", "was", "were", "has", "have", "had", "stand", "sit", "li
 _ADVERBS = {"just", "right", "directly", "all", "both", "neatly", "slightly", "also", "then", "only", "far", "well"}
 _HOLD = {"holds", "hold", "holding", "carries", "carry", "carrying", "supports", "support", "supporting",
          "bears", "bearing", "displays", "displaying"}  # fmt: skip
+#: Games named by their pieces: what one plays ("three guards play dice"), no thing of the scene.
+_GAMES = {"dice", "cards", "dominoes", "marbles", "darts", "chess", "checkers", "draughts", "mahjong", "backgammon",
+          "skittles", "jacks"}  # fmt: skip
+#: People named with the kind they hunt, tame or work, not the kind they are ("a puppet master", "a troll hunter").
+_WORKS_ITS_KIND = {"master", "hunter", "slayer", "tamer", "keeper", "catcher", "handler", "trainer", "killer",
+                   "charmer", "whisperer", "rider", "wrangler", "herder"}  # fmt: skip
 #: Verbs whose object stays in hand wherever they are done: held against a stone or a wheel
 #: ("sharpen their spears on a grindstone"), or played, read, eaten there ("plays a lute on the
 #: steps of the town hall": the bard is there, the lute in hand).
@@ -128,7 +134,7 @@ _KEPT_IN_HAND = {"sharpen", "sharpens", "sharpening", "hone", "hones", "honing",
 _HOLD_PAIRS = {("loaded", "with"), ("laden", "with"), ("topped", "with"), ("set", "with"), ("laid", "with"), ("decorated", "with"),
                ("piled", "with"), ("stacked", "with"), ("heaped", "with"), ("covered", "in"),
                ("covered", "with"), ("packed", "with"), ("lined", "with"), ("stocked", "with"),
-               ("crammed", "with")}  # fmt: skip
+               ("crammed", "with"), ("hung", "with")}  # fmt: skip
 #: Verbs whose object a person has in hand ("waves a flag"): the thing is carried by its holder, as
 #: with "holds".
 _HAND_VERBS = {"waves", "waving", "wields", "wielding", "brandishes", "brandishing", "clutches", "clutching",

@@ -313,9 +313,12 @@ def sign(m: Model) -> None:
         _tombstone(m)
         return
     m.main = "paint"
+    glowing = m.has("neon", "holographic", "hologram", "led", "illuminated", "lit")
+    if m.sz <= m.sx:
+        _board_sign(m, glowing)
+        return
     board_z = 0.55 * m.sz
     post = m.thick(0.05, 0.12 * m.sx)
-    glowing = m.has("neon", "holographic", "hologram", "led", "illuminated", "lit")
     m.box("crystal" if glowing else "canvas_alt", (-m.sx / 2, -0.3 * m.sy, board_z), (m.sx / 2, 0.2 * m.sy, m.sz))
     m.box("paint", (-m.sx / 2 + 0.04 * m.sx, -0.3 * m.sy - 0.005, board_z + 0.6 * (m.sz - board_z)),
           (m.sx / 2 - 0.04 * m.sx, -0.3 * m.sy, board_z + 0.8 * (m.sz - board_z)), rounded=0.0)
@@ -325,6 +328,14 @@ def sign(m: Model) -> None:
         m.box("dark_metal", (x - post / 2, 0.2 * m.sy, 0), (x + post / 2, 0.2 * m.sy + post, m.sz - 0.02))
     m.box("concrete", (-m.sx / 2, -m.sy / 2, 0), (-0.2 * m.sx, m.sy / 2, 0.03), rounded=0.0)
     m.box("concrete", (0.2 * m.sx, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, 0.03), rounded=0.0)
+
+
+def _board_sign(m: Model, glowing: bool) -> None:
+    """A sign wider than it is tall hangs on a wall or sits on a roof: the board with its lettering,
+    no posts (a neon sign over a bar counter)."""
+    m.box("crystal" if glowing else "canvas_alt", (-m.sx / 2, -m.sy / 2, 0), (m.sx / 2, m.sy / 2, m.sz))
+    m.box("paint", (-0.4 * m.sx, -m.sy / 2 - 0.005, 0.55 * m.sz), (0.4 * m.sx, -m.sy / 2, 0.8 * m.sz), rounded=0.0)
+    m.box("accent", (-0.4 * m.sx, -m.sy / 2 - 0.005, 0.2 * m.sz), (0.2 * m.sx, -m.sy / 2, 0.4 * m.sz), rounded=0.0)
 
 
 def _ladder(m: Model) -> None:
