@@ -1680,6 +1680,7 @@ def test_writing_in_capitals_and_the_work_a_scene_comes_from_are_no_things():
     assert names("A huge sign spells out ATTACK OF THE IGUANA.") == {"sign"}
     assert names("A cel-shaded scene from an adventure game: bandits ambush a caravan.") == {"bandit", "caravan"}
     assert names("A TV stands on the table.") == {"tv", "table"}
+    assert names("A huge sign reads OPEN LATE A") == {"sign"}  # capitals to the very end, no full stop
 
 
 def test_a_setting_opened_with_where_and_a_fire_in_its_hearth_are_no_things():

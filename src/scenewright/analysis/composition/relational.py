@@ -106,6 +106,7 @@ def place_related(
     placed: dict[str, Footprint] = {}
     side_use: Counter[tuple[str, str]] = Counter()
     main = main_object(objects, relations)
+
     def yaw(obj: ParsedObject) -> float:
         return turn_yaw(obj, outgoing[obj.id], incoming[obj.id], by_id)
 

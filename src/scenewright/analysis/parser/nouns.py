@@ -841,7 +841,8 @@ def _source_of_scene(toks: list[_Tok], s: int) -> bool:
 
 
 #: What burns a fire inside it, so that the fire is its own, no thing beside it.
-_HEARTHS = {"fireplace", "hearth", "stove", "furnace", "oven", "grate", "brazier", "forge", "kiln", "fire pit", "firepit"}
+_HEARTHS = {"fireplace", "hearth", "stove", "furnace", "oven", "grate", "brazier", "forge", "kiln", "fire pit",
+            "firepit"}  # fmt: skip
 
 
 def _fire_in_hearth(toks: list[_Tok], s: int, e: int) -> bool:

@@ -256,7 +256,8 @@ _MACHINE_BEARERS = frozenset({"robot", "drone"})
 #: Machines that lift what they act on, and the verbs of it: the load hangs on them ("a crane swings a block").
 _HOISTS = frozenset({"crane", "hoist", "derrick", "winch", "gantry", "arm"})
 _HOIST_VERBS = frozenset({"lift", "lifts", "lifting", "hoist", "hoists", "hoisting", "swing", "swings", "swinging",
-                          "lower", "lowers", "lowering", "raise", "raises", "raising", "dangle", "dangles", "dangling"})  # fmt: skip
+                          "lower", "lowers", "lowering", "raise", "raises", "raising", "dangle", "dangles",
+                          "dangling"})  # fmt: skip
 #: Words of how a thing is, after it, that the phrase after them goes on about ("a girl asleep on a bench").
 _STATES = frozenset({"asleep", "awake", "alone", "aloft", "afloat", "ablaze", "adrift"})
 #: Participles of going after a thing: the doer is by it, however small it is (", chasing a rubber ball").
@@ -481,7 +482,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             same = [
                 g for g in reversed(self.groups)
                 if g.category == m.category and (not own_name or head in map(singular, g.name.split())) and (
-                    not (family or m.guess is not None and g.guessed or singular(g.name.split()[-1]) in vocabulary.landforms)
+                    not (family or m.guess is not None and g.guessed or self._landform(g))
                     or singular(g.name.split()[-1]) == head
                 ) and not (several and g.count == 1 and head not in map(singular, g.name.split()))
             ]  # fmt: skip
@@ -1172,7 +1173,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # trunk over them": where the phrase after it puts it)
             hoisted = w in _HOIST_VERBS and k not in self.by_start and bool(holder) and self._hoist(holder[-1])
             hoisted = hoisted and not any(j in self.rel_at for j in range(k + 1, ce))
-            if w == "with" or (w in _HOLD and k not in self.by_start) or (w, nxt) in _HOLD_PAIRS or owns or hand or hoisted:
+            held_by_verb = (w in _HOLD and k not in self.by_start) or (w, nxt) in _HOLD_PAIRS or hoisted
+            if w == "with" or held_by_verb or owns or hand:
                 if w in _HOLD and w.endswith("ing") and c.head is not None and c.wsub:
                     # "with a small table beside them holding a teapot": the with-thing holds it (what
                     # came with the head before it stays the head's: "a dwarf with an axe and a wizard holding a staff")
@@ -2518,6 +2520,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if words[0] in _RELATIVES:
             return True
         return after_verb and (_participle(words[0]) or words[0] in _STATES)
+
+    @staticmethod
+    def _landform(g: _Group) -> bool:
+        """Whether ``g`` is a landform named by its own word ("two cliffs"): no rocks said later are it."""
+        return singular(g.name.split()[-1].lower()) in load_vocabulary().landforms
 
     @staticmethod
     def _kin_size(cat: Category, kind: list[str], head: str) -> tuple[float, float, float] | None:

@@ -347,7 +347,8 @@ def hangs_by_kind(o) -> bool:
 #: Words for a room's wall (a ship's bulkhead is its wall); "window" and "door" only for a thing hung there.
 _WALL_WORDS = r"(wall|corner|bulkhead|window|door)"
 #: (a verb that spreads things over a wall counts as its preposition: "clocks cover the walls")
-_WALL_PHRASE = re.compile(r"\b(against|along|on|by|beside|to|in|at|onto|from|covers?|lines?|fills?|crowds?|adorns?|decorates?)\s+"
+_WALL_PHRASE = re.compile(r"\b(against|along|on|by|beside|to|in|at|onto|from|covers?|lines?|fills?|crowds?|adorns?|"
+                          r"decorates?)\s+"
                           r"(?:the\s+|a\s+|one\s+)?(?:(back|rear|far|left|right|front)(?:[- ]hand)?\s+)?" + _WALL_WORDS + r"s?\b")
 #: Verbs (and participles) that fix a thing to a wall or the ceiling.
 _FIXING = r"(?:hang|hangs|hanging|hung|mounted|fixed|pinned|nailed|fastened|bolted|screwed|hooked|attached|affixed|clamped|tacked|taped|glued|stuck|suspended)"

@@ -79,13 +79,16 @@ def _quote_capitals(toks: list[_Tok]) -> None:
     k = 0
     while k < len(toks):
         j = k
-        while j < len(toks) and toks[j].orig.isalpha() and toks[j].orig.isupper() and len(toks[j].orig) > 1 or (
-            j > k and toks[j].orig in ("A", "I")
-        ):
+        while j < len(toks) and _capitals(toks[j].orig, j == k):
             j += 1
         for t in toks[k:j] if j - k >= 2 else ():
             t.quoted = True
         k = max(j, k + 1)
+
+
+def _capitals(word: str, first: bool) -> bool:
+    """A word in capitals; a one-letter one ("A", "I") only inside a run, never opening it ("A TV stands")."""
+    return word.isalpha() and word.isupper() and (len(word) > 1 or not first and word in ("A", "I"))
 
 
 #: Words that may follow "on board" or "on deck" meaning aboard the vessel named before ("on deck
