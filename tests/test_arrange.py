@@ -397,3 +397,35 @@ def test_a_table_with_a_bench_on_either_side_turns_its_long_sides_to_them():
 
     assert abs(abs(table_yaw("A pine table stands in the middle, with two benches on either side of it.")) - 90.0) < 1e-6
     assert table_yaw("A pine table stands in the middle, with two chairs on either side of it.") == 0.0
+
+
+def test_nothing_is_packed_out_of_sight_behind_a_barn():
+    """A claymation farmyard: the piglets and their trough stood behind the 6 m barn, where the
+    viewer (at −y) could not see them; and a farmer right of the barn stood by its middle."""
+    o = _by_id(initial_objects(parse_scene(
+        "A red barn stands behind a muddy pond. A farmer leans on a wooden fence to the right of the barn. "
+        "Two piglets sleep in the mud next to a feeding trough.")))
+    barn = o["barn_1"]
+    for i in ("piglet_1", "piglet_2", "feeding_trough_1"):
+        behind = o[i].position.y > barn.position.y + barn.size.y / 2 - 0.01
+        across = abs(o[i].position.x - barn.position.x) < barn.size.x / 2
+        assert not (behind and across), i
+    assert o["farmer_1"].position.y < barn.position.y  # by the barn's front corner
+
+
+def test_what_stands_between_rows_keeps_the_rows_and_stands_in_their_aisle():
+    """"Four grow tables stand in two rows. A robot rolls between the rows": the rows broke up
+    around the robot joined to two tables."""
+    o = _by_id(initial_objects(parse_scene(
+        "A hydroponics bay: four long grow tables stand in two rows. A maintenance robot rolls between the rows.")))
+    ys = sorted({round(o[f"table_{k}"].position.y, 3) for k in range(1, 5)})
+    assert len(ys) == 2  # two rows
+    robot = o["robot_1"]
+    assert ys[0] < robot.position.y < ys[1]
+    assert rel.check("behind", robot, o["table_1"]) and rel.check("in front of", robot, o["table_3"])
+
+
+def test_the_only_thing_above_a_long_table_hangs_over_its_middle():
+    o = _by_id(initial_objects(parse_scene("A bay: a long grow table stands under a bright lamp.")))
+    lamp, table = o["pendant_lamp_1"], o["table_1"]
+    assert abs(lamp.position.x - table.position.x) < 1e-6 and abs(lamp.position.y - table.position.y) < 1e-6

@@ -108,3 +108,17 @@ def test_a_boat_the_text_sets_nowhere_moors_at_the_pier_before_the_swimmers_take
 def test_diving_birds_are_in_the_water():
     text = "Four boats drift on the river, and the cormorants dive around the boats. A heron stands on the bank."
     assert floats("cormorant", "bird", text) and not floats("heron", "bird", text)
+
+
+def test_a_pier_with_a_dry_thing_beside_it_still_reaches_out_and_the_thing_waits_on_the_shore():
+    """"A parrot perches on a barrel beside the jetty": the barrel held the jetty (and its boat)
+    on the sand, far from the water."""
+    text = ("A pirate cove: a small wooden jetty runs out into the water, and a rowing boat is tied to the end of it. "
+            "A parrot perches on a barrel beside the jetty.")
+    composition = compose(parse_scene(text))
+    by_id = {o.id: o for o in composition.objects}
+    pier, barrel, boat = by_id["pier_1"], by_id["barrel_1"], by_id["boat_1"]
+    assert pier.rotation.z in (90.0, -90.0)  # its length runs out over the water
+    assert pier.position.y - pier.size.x / 2 < composition.shore < pier.position.y + pier.size.x / 2
+    assert boat.position.y - boat.size.y / 2 > composition.shore
+    assert barrel.position.y + barrel.size.y / 2 < composition.shore

@@ -4,6 +4,7 @@ from scenewright.analysis.arrange import initial_objects
 from scenewright.core.catalogue import load_catalogue
 from scenewright.backends.offline_vlm import OfflineVLM, relax_constraints
 from scenewright.analysis.parser import parse_scene
+from scenewright.analysis.parser.room import build_room, read_room
 from scenewright.backends import VisionLanguageModel, create_backend
 from scenewright.core.plan import EditPlan
 from scenewright.errors import BackendError, InputError
@@ -242,11 +243,15 @@ def test_a_support_only_inferred_gives_way_to_a_side_the_text_states():
 
 def test_where_the_reader_guesses_a_wall_thing_hangs_it_is_near_that_thing_not_above_it():
     vlm = OfflineVLM()
-    text = "A dining room with a long table in the middle and a large painting."
+    text = "A dining room with a long table and a large painting."
     assert any(r.relation == "above" and r.inferred for r in vlm.composition(text).relations)
     objects = vlm.describe_objects(text, "realistic", None).value
     written = {str(c) for c in vlm.write_constraints(text, objects, None).value}
     assert written == {"picture_frame_1 near table_1"}
+    # a table the text puts in the middle of the room has no wall for the painting to hang on above it
+    centred = "A dining room with a long table in the middle and a large painting."
+    objects = vlm.describe_objects(centred, "realistic", None).value
+    assert not vlm.write_constraints(centred, objects, None).value
     stated = "A dining room with a long table. A large painting hangs above the table."
     objects = vlm.describe_objects(stated, "realistic", None).value
     assert "picture_frame_1 above table_1" in {str(c) for c in vlm.write_constraints(stated, objects, None).value}
@@ -295,3 +300,14 @@ def test_a_thing_hung_above_another_that_cannot_hang_there_still_hangs_from_the_
     report = LayoutReport(unplaced=[UnplacedObject(id="pan", failed=constraints[:2], reason="no room over it")])
     assert [c.key() for c in relax_constraints(constraints, report)] == [
         ("on ceiling", "pan", "ceiling"), ("near", "cook", "hob")]
+
+
+def test_a_guess_of_what_a_picture_hangs_over_keeps_to_the_wall_the_text_hangs_it_on():
+    """"Three oil paintings hang on the right wall": not over a cabinet the text stands along the back wall."""
+    vlm = OfflineVLM()
+    text = "An antique shop: two glass display cabinets stand along the back wall, and three oil paintings hang on the right wall."
+    objects = vlm.describe_objects(text, "realistic", None).value
+    room = build_room(read_room(text), objects)
+    written = {str(c) for c in vlm.write_constraints(text, objects, None, room).value}
+    assert not any(c.startswith("picture_frame") and "display_case" in c for c in written)
+    assert "picture_frame_1 on wall wall_1" in written

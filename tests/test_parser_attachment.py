@@ -443,3 +443,18 @@ def test_each_after_a_with_part_is_each_of_what_it_comes_with():
                  "with a crow perched on each.")
     assert {("crow_1", "on", "tombstone_1"), ("crow_2", "on", "tombstone_2"), ("crow_3", "on", "tombstone_3")} <= found
     assert not any(s.startswith("crow") and t.startswith("ghost") for s, _, t in found)
+
+
+def test_a_verb_after_what_one_wears_is_the_verb_not_a_kind_of_the_next_noun():
+    """"A man in a straw hat pushes barrels": "in" ends with the hat; the man was put on a barrel."""
+    assert rels("A man in a straw hat pushes barrels.") == {("man_1", "near", "barrel_1")}
+
+
+def test_swinging_from_a_post_hangs_from_it():
+    assert rels("A lantern swings from a post beside the road.") == {("lantern_1", "on", "post_1")}
+
+
+def test_them_after_a_with_names_the_people_not_the_things_in_their_hands():
+    """"Two monks blow horns, with a drummer on either side of them": the drummers flank the monks."""
+    found = rels("Two monks blow long copper horns in front of the temple, with a drummer sitting on either side of them.")
+    assert {("drummer_1", "left of", "monk_1"), ("drummer_2", "right of", "monk_1")} <= found

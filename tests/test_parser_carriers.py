@@ -469,3 +469,46 @@ def test_what_is_hitched_to_a_load_pulls_it_and_a_hitched_load_trails():
 def test_several_who_peek_out_of_a_thing_are_in_it():
     found = rels("Three baby wyverns peek out of a wicker basket at the foot of the table.")
     assert {("wyvern_1", "on", "basket_1"), ("basket_1", "in front of", "table_1")} <= found
+
+
+@pytest.mark.parametrize(
+    ("text", "rider", "carrier"),
+    [
+        ("Four knights ride on horses across the field.", "knight", "horse"),
+        ("Four swimmers bob on rubber rings.", "swimmer", "rubber_ring"),
+    ],
+)
+def test_riders_on_an_uncounted_plural_get_one_carrier_each(text, rider, carrier):
+    """A horse, a swim ring, a bicycle carries one: "four knights ride on horses" was two knights
+    on one of three horses."""
+    found = rels(text)
+    assert {(f"{rider}_{k}", "on", f"{carrier}_{k}") for k in range(1, 5)} <= found
+    assert not any(t == f"{carrier}_5" for _, _, t in found)
+
+
+def test_a_person_watching_from_a_thing_nobody_stands_on_is_at_it():
+    assert rels("The captain watches from a console.") == {("captain_1", "near", "control_panel_1")}
+    assert ("guard_1", "on", "tower_1") in rels("A guard watches from the tower.")
+    assert ("sniper_1", "on", "barn_1") in rels("A sniper watches from the roof of the barn.")
+    assert ("boy_1", "on", "father_1") in rels("A small boy watches from his father's shoulders.")
+
+
+def test_a_thing_up_in_a_tree_is_on_it_and_a_house_grown_inside_one_is_not():
+    found = rels("Two wooden platforms sit high up in tall pines on either side of a clearing.")
+    assert {("platform_1", "on", "pine_tree_1"), ("platform_2", "on", "pine_tree_2")} <= found
+    assert not any(r == "on" for _, r, _ in rels("A healing house is grown inside a living tree."))
+
+
+def test_eating_from_a_hay_bale_is_beside_it_and_drinking_from_its_rim_on_it():
+    assert rels("A cow eats from a hay bale.") == {("horse_1", "near", "hay_bale_1")}
+    assert ("child_1", "on", "bridge_1") in rels("Two children feed ducks from a footbridge.")
+
+
+def test_a_rider_named_after_a_buildings_door_rides_the_horse_not_the_building():
+    found = rels("Three ghosts drift out of an old barn, and a headless horseman waits at its door on a black horse.")
+    assert ("horseman_1", "on", "horse_1") in found and not any(s == "barn_1" for s, _, _ in found)
+
+
+def test_a_bird_perches_on_what_it_watches_from_even_a_clock_on_the_wall():
+    assert ("crow_1", "on", "weathervane_1") in rels("A crow watches them from the weathervane on the barn roof.")
+    assert ("robin_1", "on", "wall_clock_1") in rels("A robin perches on top of the clock on the wall.")

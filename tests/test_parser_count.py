@@ -256,3 +256,13 @@ def test_one_at_each_one_of_a_group_and_a_seat_named_once_is_a_seat_each():
     mission = parse_scene("Three consoles face a screen. A flight controller sits at each one on a swivel chair.")
     kinds = Counter(o.category for o in mission.objects)
     assert kinds["figure"] == 3 and kinds["office_chair"] == 3
+
+
+def test_stacked_in_a_pyramid_is_six_and_a_count_wins():
+    assert counts("Oak barrels are stacked in a pyramid against the back wall.")["barrel"] == 6
+    assert counts("Three crates are stacked into a tower by the door.")["crate"] == 3
+
+
+def test_living_things_on_every_one_of_a_group_are_one_each_and_things_a_few():
+    assert counts("Ten trampolines stand in two rows, and children bounce on every one of them.")["child"] == 10
+    assert counts("Four tables stand in the hall, and vases stand on each of them.")["vase"] == 12

@@ -714,3 +714,15 @@ def test_who_waves_a_thing_on_either_side_of_someone_stands_there_with_it_in_han
     # (each of several's own: "three women, each with a basket at her feet" keep their baskets by them)
     found = rels("Three women sit at spinning wheels, each with a basket of wool at her feet.")
     assert ("basket_1", "in front of", "woman_1") in found, found
+
+
+def test_clothing_being_knitted_is_in_hand_not_worn():
+    parsed = parse_scene("A grandmother sits in a rocking chair knitting a scarf.")
+    assert ("scarf_1", "on", "grandmother_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert Counter(o.name for o in parse_scene("Five spiders sit around a table, each knitting a scarf.").objects)["scarf"] == 5
+
+
+def test_a_small_harp_a_bard_plays_and_a_prayer_wheel_one_spins_are_in_hand():
+    assert ("harp_1", "on", "bard_1") in rels("A bard plays a small harp.")
+    assert ("prayer_wheel_1", "on", "woman_1") in rels("An old woman spins a prayer wheel.")
+    assert ("woman_1", "near", "spinning_wheel_1") in rels("A woman spins wool at a spinning wheel.")

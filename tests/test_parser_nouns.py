@@ -1728,3 +1728,52 @@ def test_a_thing_read_before_is_there_again_after_the():
 def test_a_neon_sign_is_a_board_that_hangs():
     sign = next(o for o in parse_scene("A neon sign hangs above the bar.").objects if o.name == "neon sign")
     assert sign.category == "sign" and sign.rests == "hanging" and sign.size[2] < sign.size[0]
+
+
+@pytest.mark.parametrize(
+    ("text", "present", "absent"),
+    [
+        # a verb of seeing or letting takes its object's bare verb: no "cow eat"
+        ("A farmer leans on a fence, watching a cow eat from a hay bale.", {"cow", "hay bale"}, {"cow eat"}),
+        # an animal's noun before a word nobody listed names what kind of food it is
+        ("The desk has a computer and a bowl of dog treats on it.", {"bowl"}, {"dog"}),
+        ("A flock of sheep grazes behind the cottage.", {"sheep"}, set()),
+        # a plural that names a kind of the noun after it
+        ("Two customs officers search the van.", {"customs officer"}, set()),
+        # an unlisted noun after a listed one, ended by a participle with its phrase
+        ("A girl swings a stick at a donkey pinata dangling from the tree.", {"donkey pinata"}, {"donkey"}),
+        # a bare verb between a count's describing word and the noun is part of its name
+        ("A bay: four long grow tables stand in two rows.", {"grow table"}, set()),
+    ],
+)
+def test_nouns_that_are_not_what_their_words_first_look_like(text, present, absent):
+    found = names(text)
+    assert present <= found and not absent & found
+
+
+def test_a_definite_noun_read_before_is_the_kind_of_a_known_noun_after_it():
+    """"Four grey aliens ... The alien captain watches": the captain, not the aliens again; "the
+    fence rail" (a rail nobody listed) stays the fence."""
+    parsed = parse_scene("Four grey aliens stand around the table. The alien captain watches from a console.")
+    assert {r.source for r in parsed.relations if r.target == "control_panel_1"} == {"alien_captain_1"}
+    rail = parse_scene("A fence runs along the yard. The owner leans on the fence rail.")
+    assert ("owner_1", "side of", "fence_1") in {(r.source, r.relation, r.target) for r in rail.relations}
+
+
+def test_a_thing_that_raises_a_pistol_is_a_person_holding_it():
+    parsed = parse_scene("A starter raises a pistol.")
+    assert [o.category for o in parsed.objects] == ["figure", "tool"]
+    assert [(r.source, r.relation, r.target) for r in parsed.relations] == [("pistol_1", "on", "starter_1")]
+
+
+def test_a_plural_looking_verb_after_an_apposition_is_the_subjects_verb():
+    parsed = parse_scene("Their host, a plump tarantula in a lace cap, rocks in a wicker armchair.")
+    assert [o.name for o in parsed.objects] == ["host tarantula", "armchair"]
+
+
+def test_lamps_something_stands_under_hang_overhead_one_each():
+    parsed = parse_scene("A bay: four long grow tables stand in two rows under bright lamps.")
+    assert [o.category for o in parsed.objects].count("pendant_lamp") == 4
+    assert {o.category for o in parse_scene("A study: a book lies under the lamp on the desk.").objects} >= {"table_lamp"}
+    clamped = parse_scene("A skull lies on a workbench under a magnifying lamp clamped to the bench.")
+    assert "pendant_lamp" not in {o.category for o in clamped.objects}

@@ -151,3 +151,11 @@ def test_a_lamp_beside_a_seat_with_no_table_of_its_own_stands_on_the_floor():
     # with a nightstand there, the lamp is a table lamp on it
     bedroom = parse_scene("A bedroom. A lamp stands beside the bed, and a nightstand is by the door.")
     assert next(o for o in bedroom.objects if o.name == "lamp").category == "table_lamp"
+
+
+def test_what_the_text_puts_in_the_middle_stays_there():
+    """"A rocking horse and a gramophone stand in the middle of the floor": the gramophone went
+    onto a cabinet by the wall, and the paintings on the right wall hung "above" the horse."""
+    parsed = parse_scene("A shop: two glass display cabinets stand along the back wall. A rocking horse and a gramophone "
+                         "stand in the middle of the floor, and three oil paintings hang on the right wall.")
+    assert not any(r.source == "radio_1" or r.target == "rocking_horse_1" for r in parsed.relations)

@@ -450,7 +450,8 @@ VARIANTS = [
     ("generic", "signal fire thing", "flame"), ("house", "log cabin", "wood"), ("house", "fishing hut", "wood"),
     ("fireplace", "wood stove fireplace", "glass"), ("stove", "pot-bellied stove", "flame"), ("crystal", "planet hologram", "light"),
     ("house", "red barn", "canvas_alt"), ("structure", "mast", "canvas_alt"), ("truck", "ice cream van", "flower"),
-    ("crystal", "dragon hologram", "light"),
+    ("crystal", "dragon hologram", "light"), ("container", "water trough", "water"), ("container", "feeding trough", "straw"),
+    ("container", "cat carrier", "metal"),
 ]
 
 
@@ -737,3 +738,15 @@ def test_a_sign_wider_than_tall_is_a_board_without_posts():
     assert "dark_metal" in roles((0.6, 0.1, 2.2))
     board = build_model("sign", (1.0, 0.08, 0.5), "realistic", seed=1, name="neon sign")
     assert np.allclose(board.extents, (1.0, 0.5, 0.08), atol=0.02)  # glTF: x, up, depth
+
+
+def test_a_low_swim_ring_lies_flat_and_a_life_ring_stands_up():
+    """A swim ring on the water is a flat torus; a life ring on a rail stands on its edge."""
+    flat = load(build_glb("generic", (1.0, 1.0, 0.25), "realistic", 1, name="inflatable ring"))
+    upright = load(build_glb("generic", (0.7, 0.1, 0.7), "realistic", 1, name="life ring"))
+    assert_fills(build_glb("generic", (1.0, 1.0, 0.25), "realistic", 1, name="inflatable ring"), (1.0, 1.0, 0.25))
+    ring = next(iter(flat.geometry.values()))
+    # a flat ring leaves its middle empty seen from above (glTF is y-up): no vertex near the upright axis
+    assert np.min(np.hypot(ring.vertices[:, 0], ring.vertices[:, 2])) > 0.2
+    hoop = next(iter(upright.geometry.values()))
+    assert np.min(np.hypot(hoop.vertices[:, 0], hoop.vertices[:, 2])) < 0.05  # seen from above it crosses the axis

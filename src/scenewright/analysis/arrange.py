@@ -69,10 +69,12 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
     relations += formations.stack_relations(parsed.objects, relations)
     relations += formations.row_relations(parsed.objects, relations)
     layout = Layout(parsed.objects, relations + groups.facing_focal(parsed.objects, relations))
-    _place_related(layout)
+    aisles = formations.aisles(parsed.objects, relations)
+    ties = water.pier_ties(parsed.objects, relations, parsed.text) if parsed.water else set()
+    _place_related(layout, {(s, t) for s, pair in aisles.items() for t in pair} | ties)
     for rule in GROUP_RULES:
         rule(layout)
-    formations.arrange(layout)
+    formations.arrange(layout, aisles)
     storage, vehicles, natural, core, front = [], [], [], [], []
     walled = {id(u): g for u in layout.top_units() if (g := anchors.anchored(layout, u)) is not None}
     # a group the text puts against a wall goes there, whatever of it is also "in the middle"
@@ -96,13 +98,13 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
         else:
             core.append(unit)
     packing.pack(layout, core, centred=sum(id(u) in centred for u in core),
-                 backed={id(u) for u in core if id(u) in walled})
+                 backed={id(u) for u in core if id(u) in walled}, open_air=not parsed.indoor)
     edges.along_edges(layout, storage, back_taken=any(id(u) in walled for u in core))
     edges.in_front(layout, front)
     outdoor.park(layout, vehicles)
     outdoor.scatter(layout, natural, random.Random(seed))
     unline(layout, layout.relations_hold)
-    shore = water.by_water(layout, parsed.text) if parsed.water else None
+    shore = water.by_water(layout, parsed.text, ties) if parsed.water else None
     if not centred:
         dy = _centre(layout)
         shore = shore + dy if shore is not None else None
@@ -160,8 +162,8 @@ def share_supports(parsed: ParsedScene) -> list[ParsedRelation]:
     return out
 
 
-def _components(layout: Layout) -> list[list[str]]:
-    """Groups of objects connected by relations, in text order."""
+def _components(layout: Layout, apart: set[tuple[str, str]]) -> list[list[str]]:
+    """Groups of objects connected by relations (but those between ``apart`` pairs), in text order."""
     parent = {o.id: o.id for o in layout.objects}
 
     def find(x: str) -> str:
@@ -171,7 +173,7 @@ def _components(layout: Layout) -> list[list[str]]:
         return x
 
     for r in layout.relations:
-        if r.source in parent and r.target in parent:
+        if r.source in parent and r.target in parent and (r.source, r.target) not in apart:
             parent[find(r.source)] = find(r.target)
     members: dict[str, list[str]] = defaultdict(list)
     for o in layout.objects:
@@ -179,9 +181,10 @@ def _components(layout: Layout) -> list[list[str]]:
     return list(members.values())
 
 
-def _place_related(layout: Layout) -> None:
-    """Each related group placed by its relations in its own frame: one unit each."""
-    for ids in _components(layout):
+def _place_related(layout: Layout, apart: set[tuple[str, str]]) -> None:
+    """Each related group placed by its relations in its own frame: one unit each; a thing
+    related only to ``apart`` pairs' targets is a group of its own (it goes between rows later)."""
+    for ids in _components(layout, apart):
         chosen = set(ids)
         objects = [layout.by_id[i] for i in ids]
         relations = [r for r in layout.relations if r.source in chosen and r.target in chosen]

@@ -117,12 +117,16 @@ class OfflineVLM:
         # ... and to a wall or a ceiling the text hangs it on ("hammers hang on the wall").
         walls = wall_phrases(parsed) if room is not None else []
         hung = {r.source for r in walls if r.relation in ("on wall", "on ceiling")}
+        wall_of = {r.source: r.target for r in walls if r.target != "room"}
         category = {o.id: o.category for o in parsed.objects}
         kinds_above = {(category.get(r.source), category.get(r.target)) for r in relations
                        if r.relation == "above" and not r.inferred}
         for r in relations:
             if r.relation == "on" and r.inferred and ((r.source, r.target) in beside or r.source in hung):
                 continue
+            elsewhere = r.source in wall_of and wall_of[r.source] != wall_of.get(r.target)
+            if r.relation == "above" and r.inferred and elsewhere:
+                continue  # "paintings hang on the right wall": over nothing the back wall holds
             relation = r.relation
             if (relation == "above" and r.inferred and category.get(r.source) in WALL_THINGS
                     and (category.get(r.source), category.get(r.target)) not in kinds_above):

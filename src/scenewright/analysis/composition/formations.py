@@ -83,12 +83,36 @@ def row_relations(objects: list[ParsedObject], relations: list[ParsedRelation]) 
     return out
 
 
-def slots(count: int, lines: int, width: float, depth: float) -> list[tuple[float, float]]:
+#: Relation pairs by which the parser sets a thing between two others.
+_BETWEEN_PAIRS = (("right of", "left of"), ("behind", "in front of"))
+
+
+def aisles(objects: list[ParsedObject], relations: list[ParsedRelation]) -> dict[str, tuple[str, str]]:
+    """Things the text sets between two members of one group in rows ("a robot rolls between the
+    rows"), each to the two it stands between: they stand in the aisle the rows leave, so they go
+    there once the rows are set out, instead of joining two members into a unit beforehand."""
+    group = {o.id: o.group for o in objects if o.formation in ("row", "rows")}
+    sides: dict[str, dict[str, str]] = defaultdict(dict)
+    for r in relations:
+        if r.target in group and r.source not in group:
+            sides[r.source][r.relation] = r.target
+    out = {}
+    for source, by in sides.items():
+        for first, second in _BETWEEN_PAIRS:
+            a, b = by.get(first), by.get(second)
+            if a and b and a != b and group[a] == group[b]:
+                out[source] = (a, b)
+    return out
+
+
+def slots(count: int, lines: int, width: float, depth: float,
+          gaps: tuple[float, float] = (GAP, ROW_GAP)) -> list[tuple[float, float]]:
     """Centres of ``count`` places ``width`` × ``depth`` in ``lines`` rows, the first row nearest
-    the front (−y), each row centred on x = 0 and the block centred on y = 0."""
+    the front (−y), each row centred on x = 0 and the block centred on y = 0; ``gaps`` between
+    places along a row and between rows."""
     lines = max(1, min(lines, count))
     per = math.ceil(count / lines)
-    pitch_x, pitch_y = width + GAP, depth + ROW_GAP
+    pitch_x, pitch_y = width + gaps[0], depth + gaps[1]
     out = []
     for k in range(count):
         row, col = divmod(k, per)
@@ -104,14 +128,15 @@ def ring(count: int, width: float, depth: float) -> list[tuple[float, float]]:
     return [(radius * math.cos(a), radius * math.sin(a)) for a in turns]
 
 
-def arrange(layout: Layout) -> None:
-    """Rows and rings of every group the text puts in one (stacks are relations already)."""
+def arrange(layout: Layout, between: dict[str, tuple[str, str]] | None = None) -> None:
+    """Rows and rings of every group the text puts in one (stacks are relations already), and
+    what stands ``between`` two members of one (:func:`aisles`) in the aisle between them."""
     for objs in members(layout.objects).values():
         if objs[0].formation in ("row", "rows", "circle"):
-            _arrange_group(layout, objs)
+            _arrange_group(layout, objs, between or {})
 
 
-def _arrange_group(layout: Layout, objs: list[ParsedObject]) -> None:
+def _arrange_group(layout: Layout, objs: list[ParsedObject], between: dict[str, tuple[str, str]]) -> None:
     ids = [o.id for o in objs]
     units = [layout.unit_of[i] for i in ids]
     if not all(layout.on_ground(i) for i in ids):
@@ -119,8 +144,11 @@ def _arrange_group(layout: Layout, objs: list[ParsedObject]) -> None:
     target = _common_target(layout.relations, ids)
     distinct = len({id(u) for u in units}) == len(ids)
     own_units = distinct and all(u.root == i and not u.merged for u, i in zip(units, ids))
+    inside = {s: pair for s, pair in between.items() if pair[0] in ids}
     if own_units:
-        _set_out_units(layout, objs, units)
+        _set_out_units(layout, objs, units, inside)
+        for source, (a, b) in inside.items():
+            _into_aisle(layout, source, a, b)
     elif len({id(u) for u in units}) == 1 and all(layout.with_load(i) == [i] for i in ids):
         _set_out_in_unit(layout, objs, target)
 
@@ -185,10 +213,17 @@ def _set_out_in_unit(layout: Layout, objs: list[ParsedObject], target: str | Non
             layout.placed[i].turn(yaw)
 
 
-def _set_out_units(layout: Layout, objs: list[ParsedObject], units: list[Unit]) -> None:
+def _set_out_units(layout: Layout, objs: list[ParsedObject], units: list[Unit],
+                   between: dict[str, tuple[str, str]]) -> None:
     """Members that are each their own unit (with whatever rests on them or was joined to them):
-    set out in the formation round the first one's place, then joined into one unit."""
+    set out in the formation round the first one's place, then joined into one unit. Rows with
+    something ``between`` their members leave it an aisle wide enough."""
     boxes = [layout.box(u) for u in units]
+    gaps = [GAP, ROW_GAP]
+    for source in between:
+        x0, y0, x1, y1 = layout.box(layout.unit_of[source])
+        wide = max(x1 - x0, y1 - y0) + 2 * GAP
+        gaps = [max(gaps[0], wide), max(gaps[1], wide)]
     width = max(b[2] - b[0] for b in boxes)
     depth = max(b[3] - b[1] for b in boxes)
     formation = objs[0].formation
@@ -199,7 +234,7 @@ def _set_out_units(layout: Layout, objs: list[ParsedObject], units: list[Unit]) 
         edges = [sum(widths[:k]) + GAP * k for k in range(len(widths))]
         local = [(x + w / 2, 0.0) for x, w in zip(edges, widths)]
     else:
-        local = slots(len(units), _lines(objs[0]), width, depth)
+        local = slots(len(units), _lines(objs[0]), width, depth, (gaps[0], gaps[1]))
     first = layout.placed[units[0].root]
     ox, oy = first.x - local[0][0], first.y - local[0][1]
     for unit, box, (lx, ly) in zip(units, boxes, local):
@@ -216,3 +251,14 @@ def _set_out_units(layout: Layout, objs: list[ParsedObject], units: list[Unit]) 
         for i in unit.ids:
             layout.unit_of[i] = host
     host.turnable = False
+
+
+def _into_aisle(layout: Layout, source: str, a: str, b: str) -> None:
+    """The unit of ``source`` moved to stand midway between ``a`` and ``b`` and joined to their
+    formation, when it clears it there."""
+    unit, host = layout.unit_of[source], layout.unit_of[a]
+    if unit is host or layout.unit_of[b] is not host:
+        return
+    pa, pb, s, root = layout.placed[a], layout.placed[b], layout.placed[source], layout.placed[unit.root]
+    x, y = (pa.x + pb.x) / 2 + root.x - s.x, (pa.y + pb.y) / 2 + root.y - s.y
+    layout.attach(unit, host, x, y, root.yaw, (pb.x - pa.x, pb.y - pa.y))

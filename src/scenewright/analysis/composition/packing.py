@@ -21,17 +21,23 @@ from scenewright.analysis.composition.units import Layout, Unit
 AISLE = 0.9
 #: Extra cost of a spot in front (toward the viewer) of what is already placed.
 FRONT_COST = 0.35
+#: Extra cost of a spot right behind something taller by :data:`HIDE_MARGIN` (m) or more, where
+#: the viewer cannot see it (piglets set out behind the barn).
+HIDDEN_COST = 1.0
+HIDE_MARGIN = 1.5
 
 Box = tuple[float, float, float, float]
 
 
 def best_spot(size: tuple[float, float], boxes: list[Box], gap: float = AISLE,
-              back: float | None = None, about_origin: bool = False) -> tuple[float, float]:
+              back: float | None = None, about_origin: bool = False,
+              heights: tuple[float, list[float]] | None = None) -> tuple[float, float]:
     """The centre for a ``size`` (w, d) box beside ``boxes`` that keeps their union compact and
     square, sides and back before the front, and never reaching past ``back`` (y) when given;
     (0, 0) when there is nothing yet. ``about_origin``: compact as seen from the origin (the
     union's extent mirrored about it), for a layout whose middle must stay where it is (a
-    table the text puts in the middle of the room, which is built centred on it)."""
+    table the text puts in the middle of the room, which is built centred on it). ``heights``
+    (the box's own top, the tops of ``boxes``): a spot hidden behind a much taller box costs more."""
     if not boxes:
         return 0.0, 0.0
     w, d = size
@@ -63,6 +69,12 @@ def best_spot(size: tuple[float, float], boxes: list[Box], gap: float = AISLE,
     front = c[:, 1] < (arr[:, 1].min() + arr[:, 3].max()) / 2 - 1e-6
     behind_all = lo[:, 1] >= arr[:, 1].min() - 1e-6
     cost = area * (1.0 + FRONT_COST * (front & ~behind_all)) + 1e-3 * np.hypot(c[:, 0], c[:, 1])
+    if heights is not None:
+        own, tops = heights
+        taller = np.array(tops, dtype=float)[None, :] > own + HIDE_MARGIN
+        across = (lo[:, None, 0] < arr[None, :, 2]) & (hi[:, None, 0] > arr[None, :, 0])
+        behind = arr[None, :, 3] <= lo[:, None, 1] + 1e-6
+        cost *= 1.0 + HIDDEN_COST * (taller & across & behind).any(axis=1)
     cost[hit] = np.inf
     if back is not None:
         cost[hi[:, 1] > back + 1e-6] = np.inf
@@ -92,11 +104,14 @@ def _grid(layout: Layout, units: list[Unit]) -> None:
         layout.move(unit, x - (b[0] + b[2]) / 2, y - (b[1] + b[3]) / 2)
 
 
-def pack(layout: Layout, units: list[Unit], centred: int = 0, backed: frozenset[int] | set[int] = frozenset()) -> None:
+def pack(layout: Layout, units: list[Unit], centred: int = 0, backed: frozenset[int] | set[int] = frozenset(),
+         open_air: bool = False) -> None:
     """Set ``units`` out compactly around the origin (what is already placed stays); the first
     ``centred`` units (those the text puts in the middle) go down first, at the centre; then the
     units (by ``id``) ``backed`` against a wall ("a sofa at the back of the room"), and nothing
-    goes down behind those: the room fit moves them back to their wall as they are."""
+    goes down behind those: the room fit moves them back to their wall as they are. In the
+    ``open_air`` nothing goes out of sight behind a barn or a tower if there is room elsewhere
+    (in a room the tall things stand along the walls)."""
     centre = {id(u) for u in units[:centred]}
     by_group: dict[tuple[str, str], list[Unit]] = defaultdict(list)
     blocks: list[list[Unit]] = []
@@ -121,17 +136,21 @@ def pack(layout: Layout, units: list[Unit], centred: int = 0, backed: frozenset[
         return (not middle, not walled, -count, -(x1 - x0) * (y1 - y0), min(order[id(u)] for u in block))
 
     down: list[Box] = []
+    tops: list[float] = []
     back: float | None = None
     for block in sorted(blocks, key=weight):
         x0, y0, x1, y1 = _union(layout, block)
         walled = any(id(u) in backed for u in block)
+        top = max(layout.placed[i].z + layout.placed[i].h / 2 for u in block for i in u.ids)
         # the first stays in its own frame (its main object at the origin)
-        x, y = (best_spot((x1 - x0, y1 - y0), down, back=None if walled else back, about_origin=bool(centre))
+        x, y = (best_spot((x1 - x0, y1 - y0), down, back=None if walled else back, about_origin=bool(centre),
+                          heights=(top, tops) if open_air else None)
                 if down else ((x0 + x1) / 2, (y0 + y1) / 2))
         for u in block:
             layout.move(u, x - (x0 + x1) / 2, y - (y0 + y1) / 2)
             layout.settled.append(u)
         down.append(_union(layout, block))
+        tops.append(top)
         if walled:
             back = max(back if back is not None else -np.inf, down[-1][3])
 

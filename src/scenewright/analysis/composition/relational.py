@@ -18,6 +18,7 @@ from dataclasses import replace
 
 from scenewright.analysis.composition import roles
 from scenewright.analysis.composition.footprint import GAP, Footprint, clear, fits_across, push
+from scenewright.analysis.composition.packing import HIDE_MARGIN
 from scenewright.analysis.parser import ParsedObject, ParsedRelation
 from scenewright.geometry import front_direction, yaw_towards
 from scenewright.layout import relations as rel
@@ -35,6 +36,9 @@ SEAT_NEAR_SIDES = ("in front of", "behind", "left of", "right of")
 INVERSE = {"left of": "right of", "right of": "left of", "in front of": "behind", "behind": "in front of",
            "side of": "right of", "near": "right of"}  # fmt: skip
 FAR = 9.0
+#: m, the depth past which a tall thing's side is mostly out of the viewer's sight: what stands
+#: beside it stands by its front corner.
+FRONT_CORNER_DEPTH = 3.0
 ABOVE = 2.05
 #: m, the least width of a seat that makes a table turn its long side to it (a bench, a sofa).
 LONG_SEAT = 1.2
@@ -105,6 +109,7 @@ def place_related(
     lent = _lend_sides(outgoing, relations, flat, by_id)
     placed: dict[str, Footprint] = {}
     side_use: Counter[tuple[str, str]] = Counter()
+    loads = Counter((r.target, r.relation) for r in relations if r.relation in ("on", "above"))
     main = main_object(objects, relations)
 
     def yaw(obj: ParsedObject) -> float:
@@ -133,6 +138,8 @@ def place_related(
             by_id[target].category
         ) in roles.BEDS:
             offset = (t.d - probe.d) / 2  # beside the bed's head, not its middle
+        elif n == 0 and dx and t.d > FRONT_CORNER_DEPTH and t.h > obj.size[2] + HIDE_MARGIN:
+            offset = -(t.d - probe.d) / 2  # by a barn's front corner, not hidden behind its middle
         x = t.x + dx * ((t.w + probe.w) / 2 + GAP) + (0.0 if dx else offset)
         y = t.y + dy * ((t.d + probe.d) / 2 + GAP) + (offset if dx else 0.0)
         p = Footprint(x, y, obj.size[2] / 2, probe.yaw, obj.size)
@@ -165,7 +172,7 @@ def place_related(
         if rel in ("on", "above"):
             n = side_use[(anchored.target, rel)]
             side_use[(anchored.target, rel)] += 1
-            dx, dy = _spread_on(n, t, obj.size)
+            dx, dy = _spread_on(n, t, obj.size, loads[(anchored.target, rel)])
             z = t.z + t.h / 2 + obj.size[2] / 2 + (ABOVE if rel == "above" else 0.0)
             placed[obj.id] = Footprint(dx, dy, z, t.yaw, obj.size)
             return
@@ -299,11 +306,12 @@ def _lay_under(obj: ParsedObject, relations: list[ParsedRelation], flat: set[str
             return
 
 
-def _spread_on(n: int, t: Footprint, size: tuple[float, float, float]) -> tuple[float, float]:
-    """Centre of the n-th thing put on one support: a grid over its top (:func:`fits_across`),
-    the first of one thing alone or of many small ones in the middle."""
+def _spread_on(n: int, t: Footprint, size: tuple[float, float, float], total: int) -> tuple[float, float]:
+    """Centre of the n-th of ``total`` things put on one support: a grid over its top
+    (:func:`fits_across`), the first of one thing alone (the only one there, or too big for more
+    than one, or one of many small ones) in the middle."""
     cols, rows = fits_across(t.w, size[0]), fits_across(t.d, size[1])
-    if n == 0 and not 1 < cols * rows <= 4:
+    if n == 0 and (total <= 1 or not 1 < cols * rows <= 4):
         return t.x, t.y
     slots = [(c, r) for r in range(rows) for c in range(cols)]
     c, r = slots[n % len(slots)]

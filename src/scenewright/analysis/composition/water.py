@@ -15,8 +15,10 @@ from __future__ import annotations
 import math
 import re
 
+from scenewright.analysis.composition import roles
 from scenewright.analysis.composition.footprint import GAP, Footprint, bbox
 from scenewright.analysis.composition.units import Layout, Unit
+from scenewright.analysis.parser import ParsedObject, ParsedRelation
 from scenewright.layout import relations as rel
 
 #: Categories of things that float whenever the scene has water.
@@ -71,9 +73,24 @@ def vessel(name: str, category: str | None) -> bool:
     return category in FLOATING or bool(words and words[-1] in VESSELS)
 
 
-def by_water(layout: Layout, text: str) -> float:
-    """Set the floating units out on the water beyond the land and the piers across the shore;
-    the shore line's y. Called once the land is arranged."""
+def pier_ties(objects: list[ParsedObject], relations: list[ParsedRelation], text: str) -> set[tuple[str, str]]:
+    """Relations that tie a dry thing on the ground to a pier ("a barrel beside the jetty"), as
+    (source, target): left out when the units are made, so the pier reaches out into the water
+    with its boats while the thing waits on the shore by its land end (:func:`by_water`)."""
+    piers = {o.id for o in objects if roles.kind(o.category) in REACHING}
+    afloat = {o.id for o in objects if floats(o.name, o.category, text)}
+    raised = {r.source for r in relations if r.relation in ("on", "above")}
+    return {
+        (r.source, r.target) for r in relations
+        for pier, other in ((r.target, r.source), (r.source, r.target))
+        if pier in piers and other not in piers | afloat | raised and r.relation not in ("on", "above")
+    }  # fmt: skip
+
+
+def by_water(layout: Layout, text: str, ties: set[tuple[str, str]] = frozenset()) -> float:
+    """Set the floating units out on the water beyond the land and the piers across the shore,
+    and the land units ``ties`` bind to a pier by its land end; the shore line's y. Called once
+    the land is arranged."""
     afloat = {o.id for o in layout.objects if floats(o.name, o.category, text)}
     reaching = {o.id for o in layout.objects if layout.kind(o.id) in REACHING}
     water, astride, land = [], [], []
@@ -106,7 +123,25 @@ def by_water(layout: Layout, text: str) -> float:
         _slide_clear(layout, unit, placed)
         landings += [layout.placed[i] for i in piers]
         placed += layout.ground_prints(unit.ids)
+    for unit in land:
+        pier = next((b if a in unit.ids else a for a, b in ties if a in unit.ids or b in unit.ids), None)
+        if pier is not None and layout.unit_of[pier] is not unit:
+            _by_land_end(layout, unit, layout.placed[pier], shore, placed)
     return shore
+
+
+def _by_land_end(layout: Layout, unit: Unit, pier: Footprint, shore: float, placed: list[Footprint]) -> None:
+    """A land unit moved beside the land end of a pier reaching out from ``shore``, on the
+    shore side, where it stays clear of what is already there."""
+    x0, y0, x1, y1 = layout.box(unit)
+    others = [p for u in layout.top_units() if u is not unit for p in layout.ground_prints(u.ids)]
+    for side in (1.0, -1.0):
+        dx = pier.x + side * (pier.w / 2 + GAP + (x1 - x0) / 2) - (x0 + x1) / 2
+        dy = shore - SHORE_GAP / 2 - y1
+        layout.move(unit, dx, dy)
+        if layout.is_clear(unit, others, GAP):
+            return
+        layout.move(unit, -dx, -dy)
 
 
 def _float_back(layout: Layout, unit: Unit, afloat: set[str], reaching: set[str]) -> None:

@@ -150,8 +150,10 @@ def _verb_ends_subject(toks: list[_Tok], i: int, end: int) -> bool:
     last = toks[end - 1].text
     transitive = end < len(toks) and toks[end].text in _OBJECT_OPENERS  # "... poles his boat"
     verb_next = transitive or end < len(toks) and toks[end].text in _PARTICLES
-    if end - i == 1 and last != singular(last) and verb_next and toks[i - 1].text == "," and _closes_apposition(toks, i - 1):
-        return True  # "The captain, a parrot with one eye, perches on the wheel"
+    placing = verb_next or end < len(toks) and toks[end].text in ("in", "inside", "near", "beneath")
+    closes = toks[i - 1].text == "," and _closes_apposition(toks, i - 1)
+    if end - i == 1 and last != singular(last) and placing and closes:
+        return True  # "The captain, a parrot with one eye, perches on the wheel", "Their host, ..., rocks in a chair"
     if last == singular(last) or not (singular(last) in _FINITE or transitive) or _counted_plural(toks, i):
         return False
     j = i - 1
@@ -310,7 +312,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             if singular(last) != last and _plural_is_verb(toks, s, nxt):  # "a knight guards the gate": a verb
                 raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])
                 nxt = None
-        if nxt and nxt[0] == e and nxt[1] - nxt[0] == 1 and _no_noun_after(toks, e, words[-1]):
+        if nxt and nxt[0] == e and nxt[1] - nxt[0] == 1 and (_no_noun_after(toks, e, words[-1]) or (
+            _perceived(toks, s) and _plural_form_verb(toks[e].text, toks[e + 1].text if e + 1 < n else ".")
+        )):  # ("watching a cow eat from a bale": after a verb of seeing or letting, its bare verb)
             raw[k + 1] = (nxt[0], nxt[0], nxt[2], nxt[3])
             nxt = None
         if nxt and nxt[0] == e and singular(head) == head:
@@ -322,6 +326,12 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             e = nxt[1]
         if s == e:
             continue
+        if not (nxt and nxt[0] == e) and _living_category(cat) and _names_contents_kind(toks, s, e):
+            # "a bowl of dog treats", "a bag of cat food": treats of a kind (food is no thing), no dog
+            if toks[e].text in vocabulary.not_things:
+                continue
+            entry = _guess(toks, e, toks[s:e])
+            e, cat, words = e + 1, entry.category, [t.text for t in toks[s : e + 1]]
         if _role_after_as(toks, s, cat):
             continue  # "four logs around it as seats", "a crate used as a table": a use, not a thing
         if e < n and toks[e].text.endswith("'s") and toks[e].text[:-2].isalpha() and not toks[s].text.endswith("'s"):
@@ -381,6 +391,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         verb_before = verb_before or (
             before is not None and before.text[:1].isalpha() and before.text not in _STOP and not toks[s].joined
             and singular(before.text) != before.text and plural and not verb_of_noun
+            and before.text not in _PLURAL_KINDS
         )  # fmt: skip
         if entry is not None and (verb_before or (k > 0 and raw[k - 1][1] == s and not kind)):
             continue  # "two robots stand guard", "fox statues guard the path": a verb here
@@ -1520,7 +1531,7 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
                 # a "home recording studio"
             head = j
             j += 1
-            if plural and (singular(x) != x or x in _PEOPLE_GROUPS):
+            if plural and (singular(x) != x or x in _PEOPLE_GROUPS) and x not in _PLURAL_KINDS:
                 break  # "three zorbs glow", "two ground crew hold": the plural noun ends the phrase
         known = head is not None and any(
             k in covered and k not in looks and not (k == head - 1 and k in describers) for k in range(i + 1, head + 1)
@@ -1695,6 +1706,32 @@ def _bare_plural_verb(toks: list[_Tok], s: int, e: int) -> bool:
     return toks[s - 1].text == "," and after[:1].isalpha() and after not in _STOP and not toks[e].joined and (
         two not in (",", "and", "or")
     )
+
+
+def _names_contents_kind(toks: list[_Tok], s: int, e: int) -> bool:
+    """Right after "of", an animal's noun before a word that is neither listed nor a verb names
+    the kind of the contents ("a bowl of dog treats"), no thing of its own ("a flock of sheep
+    graze": a verb; "a bowl of dog biscuits": the biscuits are the thing)."""
+    if s < 2 or toks[s - 1].text != "of" or e >= len(toks) or toks[e].joined:
+        return False
+    if singular(toks[s - 2].text) in COLLECTIVES:
+        return False  # ("a flock of sheep grazes": the sheep)
+    word, after = toks[e].text, toks[e + 1].text if e + 1 < len(toks) else "."
+    last, vocabulary = toks[e - 1].text, load_vocabulary()
+    verb = word in vocabulary.person_verbs | vocabulary.animal_verbs | _HANG_VERBS or vocabulary.is_posture_verb(word)
+    noun = word[:1].isalpha() and word not in _STOP and singular(last) == last
+    return noun and not verb and not _plural_form_verb(word, after)
+
+
+#: Verbs whose object does a thing next, named by a bare verb ("watches a dog chase a ball").
+_PERCEIVING = {"watch", "watches", "watching", "watched", "see", "sees", "seeing", "hear", "hears", "hearing",
+               "let", "lets", "letting", "help", "helps", "helping"}  # fmt: skip
+
+
+def _perceived(toks: list[_Tok], s: int) -> bool:
+    """The noun phrase at ``s`` is the object of a verb of seeing or letting ("watching a cow")."""
+    j = _phrase_opener(toks, s)
+    return j > 0 and toks[j].text in _DETERMINERS and toks[j - 1].text in _PERCEIVING
 
 
 def _plural_form_verb(word: str, after: str) -> bool:
@@ -2269,7 +2306,10 @@ def _unknown_heads(toks: list[_Tok], raw: list, covered: set[int]) -> list:
         if not vocabulary.is_thing_word(word) or vocabulary.is_adjective(word) or word in _QUANTITY:
             continue
         after = toks[k + 1].text if k + 1 < len(toks) else "."
-        if k + 1 not in covered and after[:1].isalpha() and after not in _STOP and not _is_verb(after):
+        two = toks[k + 2].text if k + 2 < len(toks) else "."
+        # ("a donkey pinata dangling from the tree": a participle with its phrase ends it)
+        acting = _participle(after) and (two in _STOP or not two[:1].isalpha())
+        if k + 1 not in covered and after[:1].isalpha() and after not in _STOP and not _is_verb(after) and not acting:
             continue  # a longer phrase than two nouns: left to the other rules
         entry = _guess(toks, k, toks[max(s - 3, 0) : k])
         if toks[k].orig[:1].isupper() and load_catalogue()[category].shape == "figure":
@@ -2301,7 +2341,12 @@ def _joint_verb(toks: list[_Tok], k: int, category: str) -> bool:
     takes = takes or not after[:1].isalpha() and any(word + ending in verbs for ending in ("s", "es"))
     if not word[:1].isalpha() or word in _STOP or singular(word) != word or not takes:
         return False
-    return category in _LIVING or load_catalogue()[category].shape in _LIVING
+    return _living_category(category)
+
+
+def _living_category(category: str | None) -> bool:
+    """A category of people or animals (``None``: no thing at all)."""
+    return category is not None and (category in _LIVING or load_catalogue()[category].shape in _LIVING)
 
 
 def _joint_verb_at(toks: list[_Tok], k: int) -> bool:
@@ -2577,10 +2622,12 @@ def _goes_on_doing(toks: list[_Tok], head: int) -> bool:
 
 
 def _does_what_people_do(toks: list[_Tok], k: int) -> bool:
-    """A person verb animals do not share follows the subject ending at ``k`` ("a marshal waves")."""
+    """A person verb animals do not share follows the subject ending at ``k`` ("a marshal waves"),
+    or a verb of having a thing in hand ("a starter raises a pistol")."""
     found = _verb_after(toks, k)
     vocabulary = load_vocabulary()
-    return found is not None and found[0] in vocabulary.person_verbs and found[0] not in vocabulary.animal_verbs
+    person = found is not None and found[0] in vocabulary.person_verbs | _HAND_VERBS
+    return person and found[0] not in vocabulary.animal_verbs
 
 
 def _after_preposition(toks: list[_Tok], head: int) -> bool:
@@ -2632,11 +2679,21 @@ _HOLDING_PARTS = {"hand", "hands", "arms", "grip", "fist", "lap", "paw", "paws",
 
 
 def _held(toks: list[_Tok], head: int) -> bool:
-    """Clothing held, not worn: "his hat in his hands", "a scarf in her lap"."""
+    """Clothing held, not worn: "his hat in his hands", "a scarf in her lap", or made there
+    ("each knitting a striped scarf")."""
     if toks[head].text not in load_vocabulary().clothing:
         return False
     words = [t.text for t in toks[head + 1 : head + 4]]
-    return len(words) == 3 and words[0] == "in" and words[1] in _DEFINITE and words[2] in _HOLDING_PARTS
+    if len(words) == 3 and words[0] == "in" and words[1] in _DEFINITE and words[2] in _HOLDING_PARTS:
+        return True
+    j = _phrase_opener(toks, head)
+    return j > 0 and toks[j].text in _DETERMINERS and toks[j - 1].text in _MAKING_VERBS
+
+
+#: Verbs of making a piece of clothing by hand: what they make is in hand, not worn.
+_MAKING_VERBS = {"knit", "knits", "knitting", "sew", "sews", "sewing", "mend", "mends", "mending", "darn",
+                 "darns", "darning", "stitch", "stitches", "stitching", "embroider", "embroiders", "embroidering",
+                 "crochet", "crochets", "crocheting", "weave", "weaves", "weaving"}  # fmt: skip
 
 
 def _participle(word: str) -> bool:
@@ -2650,6 +2707,7 @@ def _alias_mentions(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention
     heads: dict[str, str] = {}
     compounds: dict[str, str] = {}  # "campfire" answers to "the fire"
     taken = {k for m in mentions for k in range(m.start, m.end)}
+    starts = {m.start: m for m in mentions}
     extra: list[_Mention] = []
     ordered = sorted(mentions, key=lambda m: m.start)
     nxt = 0
@@ -2671,8 +2729,11 @@ def _alias_mentions(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention
             )
             if compound is not None:
                 heads[word] = compound
-        if i in taken or not t.text[0].isalpha() or word not in heads:
-            continue
+        after = starts.get(i + 1)
+        if i in taken or not t.text[0].isalpha() or word not in heads or (
+            after is not None and (after.guess is None or _living_category(after.category))
+        ):  # ("the alien captain" after "grey aliens", "the corral gate": the kind of the next
+            continue  # thing; not "the fence rail", a rail nobody listed: the fence's)
         j = i - 1
         while j >= 0 and i - j <= 3 and toks[j].text not in _DEFINITE and toks[j].text not in _STOP:
             j -= 1
@@ -2822,6 +2883,8 @@ def _bare(toks: list[_Tok], s: int) -> bool:
     return j < 0 or toks[j].text not in _DETERMINERS and toks[j].text not in _NUMBERS and toks[j].text not in _VAGUE
 
 
+#: Words in the plural that name a kind of the noun after them ("two customs officers", "a sports car").
+_PLURAL_KINDS = {"customs", "sports", "goods", "savings", "news"}
 #: Nouns whose plural is written as the singular: several when no determiner or count comes before.
 _SAME_PLURALS = {"sheep", "deer", "reindeer", "moose", "bison", "elk", "fish", "salmon", "trout", "swine", "cattle"}
 #: Place nouns that qualify the next noun after a determiner ("the middle bench", "the end stall").
@@ -2830,9 +2893,12 @@ _POSITION_WORDS = {"middle", "centre", "center", "corner", "end", "front", "back
 
 def _position_adjective(toks: list[_Tok], j: int) -> bool:
     """"the middle bench", "the two middle racks", "the middle one": a place noun between a
-    determiner (or a count) and a noun works as an adjective."""
-    before = toks[j - 1].text if j > 0 else ""
-    return toks[j].text in _POSITION_WORDS and (before in _DETERMINERS or before in _NUMBERS) and (
+    determiner (or a count) and a noun works as an adjective; so does a bare verb after a
+    describing word as well ("four long grow tables": no verb follows a count's adjective)."""
+    w, before = toks[j].text, toks[j - 1].text if j > 0 else ""
+    verb = w in _FINITE and w not in ("is", "are", "was", "were", "has", "have", "had")
+    opened = before in _DETERMINERS or before in _NUMBERS or (verb and load_vocabulary().is_adjective(before))
+    return (w in _POSITION_WORDS or verb) and opened and (
         j + 1 < len(toks) and toks[j + 1].text[:1].isalpha() and (toks[j + 1].text not in _STOP or toks[j + 1].text == "one")
     )
 

@@ -75,6 +75,7 @@ from scenewright.analysis.parser.vocabulary import GENERIC, load_vocabulary, rep
 from scenewright.analysis.parser.words import (
     _ADVERBS,
     _CARRY_VERBS,
+    _CONSUMING,
     _DETERMINERS,
     _FILL_VERBS,
     _FINITE,
@@ -351,12 +352,25 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             k += 1
         return [t.text for t in self.toks[start:k]]
 
+    def _under_word(self, start: int) -> bool:
+        """Whether "under" (or "beneath") comes right before the noun phrase at ``start``."""
+        j = start - 1
+        while j >= 0 and (self.toks[j].text in _DETERMINERS or load_vocabulary().is_adjective(self.toks[j].text)):
+            j -= 1
+        return j >= 0 and self.toks[j].text in ("under", "beneath", "underneath")
+
     def _new_group(self, m: _Mention, sizes: list[tuple[str, float]]) -> int:
         adjectives = {a.lower() for a in m.adjectives}
         if m.category == "table" and adjectives & {"round", "circular"}:
             m.category = "round_table"
         if adjectives & {"potted", "pot"} and self.catalogue[m.category].shape in _PLANT_SHAPES:
             m.category, m.guess = "potted_plant", None  # "a potted palm" is a house plant, not a 6 m tree
+        if (m.category == "table_lamp" and m.phrase.lower() in ("lamp", "lamps") and self._under_word(m.start)
+                and not (m.end < len(self.toks) and (self.toks[m.end].text in ("on", "upon", "atop")
+                                                      or self.toks[m.end].text.endswith("ed")))):
+            # "grow tables stand under bright lamps": lamps overhead (not "the lamp on the desk", "a
+            # lamp clamped to the bench")
+            m.category = "pendant_lamp"
         cat: Category = self.catalogue[m.category]
         name = m.phrase.lower()
         vocabulary = load_vocabulary()
@@ -1676,6 +1690,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if chained and isinstance(target, list) and target and c.last_target:
             # "a lamp on the table next to a teapot": what stands by a small thing is its peer, not the table
             chained = not self._small(target[0]) or self._small(c.last_target[0])
+            # "a horseman waits at its door on a black horse": he rides it, not the barn
+            ridden = kind in ("on", "on top") and self._carrier(target[0], ("mounts",)) and self._living(target[0])
+            chained = chained and not (ridden and not any(self._living(g) for g in c.last_target))
         lined_up = kind in _FORMATIONS and c.target_after_verb and _participle(toks[rel.start].text)
         if lined_up and c.last_target and c.last_target_end == rel.start:
             # "shouts at twenty legionaries lined up in front of him": they stand in the row, and in front of him
@@ -1837,6 +1854,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         deed = c.deeds and c.deed_end in (last_event_end, rel.start)
         if kind == "on" and toks[rel.start].text == "from" and deed:
             srcs = list(c.deeds[-1][0])  # "two squirrels scold the workers from the top of a lamp post"
+        lookout = any(t.text == "from" for t in toks[rel.start : rel.end]) and p.part is None
+        lookout = lookout and p.body is None and isinstance(target, list) and bool(target)
+        lookout = lookout and not self._living(target[0])
+        if kind == "on" and lookout and srcs and all(self._person_at(g) for g in srcs) and not self._carrier(target[0]):
+            kind = "near"  # "the captain watches from a console": at it (from a tower, a rock: up on it)
         if kind in ("on", "in") and srcs and all(self._person_at(g) for g in srcs) and (
             kind == "on" and self._pair_before(rel.start) or self._works_on(rel.start, target, inside=kind == "in")
         ):  # "a girl writes on the blackboard", "a chef slices bread on a board", "rinses rice in a
@@ -1952,6 +1974,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     uncounted = g not in self.numbered and self.groups[g].count == UNCOUNTED
                     if kind == "rows" and lines and lines > 1 and uncounted:
                         self.groups[g].count = lines * UNCOUNTED  # "cars are parked in two long rows": a few a row
+                    heap = next((t.text for t in toks[rel.start : rel.end] if t.text in ("pyramid", "tower")), None)
+                    if kind == "stack" and heap and uncounted:
+                        self.groups[g].count = _QUANTITY[heap]  # "barrels are stacked in a pyramid": six of them
                 elif place:
                     self.anchors.setdefault(g, place.removeprefix("anchor "))
             seated = bool(srcs) and all(self._living(g) for g in srcs)
@@ -2111,10 +2136,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         owner = owner or (c.head is not None and kind in _GROUND_KINDS and all(
             self._living(h) and not self._person_at(h) for h in c.head
         ) and not any(self._living(g) for g in srcs))
-        if c.head is not None and not owner and all(self._living(h) and self.groups[h].category == "figure" or (
-            self._living(h) and self.catalogue[self.groups[h].category].shape != "figure"
-        ) for h in c.head):  # fmt: skip
-            # "a man on the bench, with his terrier asleep under it": "it" is no person
+        if c.head is not None and not owner and target != "them" and all(
+            self._living(h) and self.groups[h].category == "figure"
+            or (self._living(h) and self.catalogue[self.groups[h].category].shape != "figure") for h in c.head
+        ):  # fmt: skip
+            # "a man on the bench, with his terrier asleep under it": "it" is no person ("two monks blow
+            # horns, with a drummer on either side of them": "them" are)
             # ("each camel has a bucket in front of it": the camel, as "each" made it the owner)
             targets = self._pronoun(target, c, srcs, prefer, kind, others=c.head)
         below = [r[2] for r in self.relations if c.head and r[1] in c.head and r[0] == "above"]
@@ -2297,6 +2324,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self.one_each[targets[0]] = srcs[0]  # "busts stand on pedestals (at each corner)": one each
         elif tm is not None and kind == "in" and len(srcs) == 1 and self._planted(srcs[0]) and self._uncounted_new(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "four fig trees in planters": one each
+        elif tm is not None and kind == "under" and len(srcs) == 1 and self._uncounted_new(tm) and (
+            self.groups[targets[0]].category == "pendant_lamp"
+        ):
+            # "four tables under bright lamps": one over each
+            self.groups[targets[0]].count = self.groups[srcs[0]].count
         elif tm is not None and kind == "hanging from" and len(srcs) == 1 and self._hooks_each(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "a dozen lanterns hang from posts": one each
         sitter = self._seat_owner(c, srcs, tm) if tm is not None else None
@@ -2364,7 +2396,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         cover = m.group >= 0 and self.catalogue[self.groups[m.group].category].shape == "rug"
         # ("sit around the fire on logs": any low lifeless thing sat on is a seat)
         low = m.group >= 0 and not self._living(m.group) and self.groups[m.group].size[2] <= _MAKESHIFT_HEIGHT
-        sat = low and m.group not in self.formations and self._verb_before(m.start, self._posture)
+        # ("bob on inflatable rings", "ride on horses", "race on bicycles": one carries one)
+        one_rider = m.group >= 0 and max(self.groups[m.group].size[:2]) <= _MAKESHIFT_LENGTH and (
+            low or self._carrier(m.group, ("mounts", "vehicles"))
+        )
+        sat = (low and self._verb_before(m.start, self._posture) or one_rider) and m.group not in self.formations
         # ("rows of seats ... Twenty children lie back in the seats": the seats named before, uncounted)
         # (a count "rows of" seats got is the rows' guess; not benches: "sit on the benches along the walls")
         guessed = m.group >= 0 and (m.group not in self.numbered or m.group in self.formations)
@@ -2614,9 +2650,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         return None
 
     def _per_each(self, srcs: list[int], target: int, unit: int = 1) -> None:
-        """As many of each source as it says, for every one (every ``unit``: a pair) of the target group."""
+        """As many of each source as it says, for every one (every ``unit``: a pair) of the target
+        group; one for every one when it says no number of living things ("children bounce on
+        every one of them"; "cartons fill every shelf" are a few a shelf)."""
         for src in srcs:
             if (src, target) not in self.pair_each:
+                if src not in self.numbered and self.groups[src].count == UNCOUNTED and self._living(src):
+                    self.groups[src].count = 1
                 self.groups[src].count *= max(1, self.groups[target].count // unit)
                 self.pair_each.add((src, target))
 
@@ -2764,6 +2804,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "on"  # "a pilot strapped into its seat", "in the cockpit of the glider": on what has it
             if self.catalogue[src.category].shape in _PLANT_SHAPES and self.groups[t].category == "planter":
                 return "on"  # "orange trees grow in terracotta planters": each stands in its own
+            # (in its branches, or small beside it: not "a healing house grown inside a living tree")
+            up = self._part is not None or max(src.size) < self.groups[t].size[2] / 2
+            if not self._living(s) and self._carrier(t, ("perches",)) and target.shape in _PLANT_SHAPES and up:
+                return "on"  # "a platform sits high up in a tall pine", "a kite caught in the oak": up in its crown
             holds = target.shape in _SEATS or target.support or self._carrier(t, _VESSEL_KINDS)
             # ("three salamanders bask in a brazier": a small creature is on what it is in)
             holds = holds or self._living(s) and not self._living(t) and max(src.size) < max(self.groups[t].size)
@@ -2778,12 +2822,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # carries nobody stands by it ("watches them from the gate"), as one who runs across it;
             # one drinks, eats or pours from a thing by it ("a cat drinks from a puddle", "stegosaurs
             # drink from a trough")
-            taken = kind == "from" and not self._carrier(t, ("perches",)) and not self._perch_part and self._verb_before(
-                self._target_start, lambda w: (w, "from") in _HAND_PAIRS
-            )  # (not a perch: "two children feed ducks from a footbridge" are on it)
+            perch = self._carrier(t, ("perches",)) or self._perch_part
+            taken = kind == "from" and self._verb_before(
+                self._target_start,
+                lambda w: (w, "from") in _HAND_PAIRS and (not perch or w in _CONSUMING and not self._perch_part),
+            )  # (not a perch: "two children feed ducks from a footbridge" are on it, as "drink from its rim")
             # ("a vendor sells fruit from a cart": by what one sells from, a cart or a stall)
             taken = taken or kind == "from" and self._verb_before(self._target_start, lambda w: w in _WARES_VERBS)
-            if self._living(s) and (self._carrier(t) or self._perch_part) and not taken:
+            bird = self.catalogue[src.category].shape == "bird"  # ("a crow watches from the weathervane")
+            if self._living(s) and (self._carrier(t) or self._perch_part or bird) and not taken:
                 return "on"
             if kind == "from" and self._part in _ROOF_PARTS:
                 return "on"  # "a dish points at the sky from the roof of the hut": fixed up there

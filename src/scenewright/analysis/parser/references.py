@@ -142,6 +142,9 @@ class _References:
             if w in ("a", "an", "the") and j > pos and not (after_determiner or hyphened) and toks[j - 1].text != "of":
                 break
             modifier = w not in _STOP and w[0].isalnum() and j + 1 in self.by_start
+            # ("a man in a straw hat pushes barrels": after a noun, a verb's form is its verb)
+            noun_before = j > pos and not after_determiner and not load_vocabulary().is_adjective(toks[j - 1].text)
+            modifier = modifier and not (noun_before and _is_verb(w) and not hyphened)
             # "on the back of a horse": a part "of" something, though "back" alone ends a phrase
             # ("on every side of": a phrase of its own, one a side)
             # ("sits on the edge of the bed": an edge or an end any thing has, the thing's; "the top of
@@ -433,7 +436,7 @@ class _References:
 
         # what someone has in hand goes where they go: nothing stands by "it" ("a man holds a rope, and a
         # dog barks at the swans gliding alongside it": the boat)
-        in_hand = {g for g, _ in self.carried} if kind in _GROUND_KINDS else set()
+        in_hand = {g for g, _ in self.carried} if kind in (*_GROUND_KINDS, "flank", "around") else set()
         # nor is anything set "on it" but on a tray ("the chief reads a logbook at his desk; a radio
         # crackles on it": the desk)
         if kind in ("on", "on top"):

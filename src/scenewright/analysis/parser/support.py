@@ -76,9 +76,12 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
         if obj.id in placed_vertically or obj.id in stacked:
             continue
         if rests == "surface" and obj.id not in ridden:
+            # "a rocking horse and a gramophone stand in the middle of the floor": where the text
+            # puts it, not on a cabinet by the wall
+            anchored = [o for o in supports if o.anchor == obj.anchor] if obj.anchor else supports
             prefs = _SUPPORT_PREFERENCE.get(obj.category, ())
             fitting = [
-                s for s in supports
+                s for s in anchored
                 if s.id != obj.id and s.id not in partners.get(obj.id, ())
                 and s.size[0] >= obj.size[0] * 0.9 and s.size[1] >= obj.size[1] * 0.9
                 and usual_host(s.category, obj.category)
@@ -103,6 +106,7 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
             hosts = [
                 o for o in objects
                 if o.id != obj.id and (o.rests or catalogue[o.category].rests) == "ground" and 0.3 < o.size[2] < 2.5
+                and o.anchor != "centre"  # a picture hangs on a wall, over nothing in the middle of the room
             ]  # fmt: skip
             if hosts:
                 # the nearest mention, the one before on a tie ("a dresser with a mirror")
@@ -285,6 +289,8 @@ def can_hold(host: ParsedObject, thing: ParsedObject, catalogue) -> bool:
     host at least a stool's size; otherwise the thing must be about the host's size or smaller."""
     if host.category in _NO_TOP:
         return False  # what a knight holds is beside him, not on him
+    if catalogue[thing.category].shape == "bird" and thing.size[0] <= host.size[0]:
+        return True  # "a robin perches on top of the clock on the wall": a bird perches on what it fits on
     if (host.rests or catalogue[host.category].rests) == "hanging":
         # a hung container holds what fits in it (a parrot in a birdcage); other hung things nothing
         inside = load_vocabulary().carries(host.category, host.name, ("containers",))

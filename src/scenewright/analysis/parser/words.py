@@ -140,7 +140,7 @@ _HOLD_PAIRS = {("loaded", "with"), ("laden", "with"), ("topped", "with"), ("set"
 _HAND_VERBS = {"waves", "waving", "wields", "wielding", "brandishes", "brandishing", "clutches", "clutching",
                "grips", "gripping", "clasps", "clasping", "swings", "swinging", "twirls", "twirling", "raises",
                "raising", "juggle", "juggles", "juggling", "wave", "wield", "brandish", "clutch", "clasp", "twirl",
-               "raise"}  # fmt: skip
+               "raise", "spins", "spinning", "spin"}  # fmt: skip
 #: Verbs of taking a thing up in one's arms, by their stem (:func:`_verb_stem`): what they take is
 #: in arms whenever a person can carry it ("lifts a crate", "two men haul a trunk", "hugs a
 #: pillow"), where other verbs have in hand only a hand-sized thing ("examines a crate": by it).
@@ -172,14 +172,16 @@ _GIVE_VERBS = {"hands", "handing", "hand", "gives", "giving", "give", "passes", 
 #: Use verbs whose one thing several people have between them ("two girls share a bento box"): no
 #: thing for each.
 _SHARE_VERBS = {"share", "shares", "sharing"}
+#: Eating and drinking: what one does it "from" is by one or in hand, never under one ("a cow eats
+#: from a hay bale").
+_CONSUMING = {"sips", "sipping", "sip", "drinks", "drinking", "drink", "tastes", "tasting", "taste", "eats",
+              "eating", "eat"}  # fmt: skip
 #: A verb, then (after what it takes, if anything) a preposition whose thing a person has in hand:
 #: "sips from a glass", "sipping coffee from a paper cup", "counting coins out of a pouch",
 #: "sketching on a clipboard", "peering through a loupe", "watching the ships through a spyglass",
 #: "stitching beads onto a purse".
 _HAND_PAIRS = {
-    ("sips", "from"), ("sipping", "from"), ("sip", "from"), ("drinks", "from"), ("drinking", "from"),
-    ("drink", "from"), ("tastes", "from"), ("tasting", "from"), ("taste", "from"), ("eats", "from"),
-    ("eating", "from"), ("eat", "from"), ("counts", "out"), ("counting", "out"), ("count", "out"),
+    *((verb, "from") for verb in _CONSUMING), ("counts", "out"), ("counting", "out"), ("count", "out"),
     ("peers", "through"), ("peering", "through"), ("looks", "through"), ("looking", "through"),
     ("squints", "through"), ("squinting", "through"), ("watches", "through"), ("watching", "through"),
     ("watch", "through"), ("sketches", "on"), ("sketching", "on"), ("sketch", "on"), ("writes", "on"),

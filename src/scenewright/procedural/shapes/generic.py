@@ -43,7 +43,12 @@ def _curtain(m: Model) -> None:
 
 
 def _lifebuoy(m: Model) -> None:
+    """Upright as it hangs on a rail; lying flat when it is low (a swim ring on the water)."""
     m.main = "paint"
+    if m.sz < 0.5 * min(m.sx, m.sy):
+        r = min(m.sx, m.sy) / 2
+        m.torus("paint", (0, 0, m.sz / 2), r - m.sz / 2, m.sz / 2)
+        return
     r = min(m.sx, m.sz) / 2
     m.torus("paint", (0, 0, r), 0.75 * r, 0.25 * r, axis="y")
 
@@ -166,7 +171,8 @@ def generic(m: Model) -> None:
         (("guitar", "violin", "cello"), _guitar),
         (("cushion", "pillow", "pouf"), _cushion),
         (("curtain", "drape"), _curtain),
-        (("lifebuoy", "life ring", "tyre", "tire"), _lifebuoy),
+        (("lifebuoy", "life ring", "swim ring", "swimming ring", "rubber ring", "inflatable ring", "tyre", "tire"),
+         _lifebuoy),
         (("pumpkin", "gourd", "squash", "melon", "watermelon"), _pumpkin),
         (("ball", "bowling ball", "football", "beach ball", "basketball", "soccer ball", "cannonball", "cannon ball",
           "snowball", "medicine ball"), _ball),

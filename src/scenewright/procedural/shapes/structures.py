@@ -554,6 +554,37 @@ def _box(m: Model) -> None:
     m.box("fur_dark", (-W, -0.01 * D, 0.997 * H), (W, 0.01 * D, 1.001 * H), rounded=0.0)
 
 
+def _pet_carrier(m: Model) -> None:
+    """A pet carrier: a rounded plastic shell with a wire grille door at the front and a handle on top."""
+    m.main = "plastic"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.box("plastic", (-W, -D, 0), (W, D, 0.88 * H), rounded=0.15 * min(m.sx, m.sz))
+    bar = 0.015 * min(m.sx, m.sz) + 0.003
+    for k in range(1, 6):
+        x = -0.7 * W + k * 1.4 * W / 6
+        m.beam("metal", (x, -1.01 * D, 0.15 * H), (x, -1.01 * D, 0.75 * H), bar)
+    for z in (0.15 * H, 0.75 * H):  # (a little further out than the bars, so no face is shared)
+        m.beam("metal", (-0.7 * W, -1.01 * D - bar, z), (0.7 * W, -1.01 * D - bar, z), bar)
+    m.torus("dark_plastic", (0, 0, 0.88 * H), 0.35 * W, 0.06 * W, axis="y", arc=np.pi, fraction=0.5)
+
+
+def _trough(m: Model) -> None:
+    """A long open trough of planks on splayed legs, water (or feed) inside."""
+    m.main = "wood"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    wall, floor = 0.08 * min(m.sx, m.sy), 0.35 * H
+    for y in (-D, D - wall):  # the long sides, then the ends and the bottom between them
+        m.box("wood", (-W, y, floor), (W, y + wall, H), rounded=0.0)
+    for x in (-W, W - wall):
+        m.box("wood", (x, -D + wall, floor), (x + wall, D - wall, H), rounded=0.0)
+    m.box("wood", (-W + wall, -D + wall, floor), (W - wall, D - wall, floor + wall), rounded=0.0)
+    inside = "straw" if m.named("feeding trough", "feed trough", "hay trough") else "water"
+    m.box(inside, (-W + wall, -D + wall, floor + wall), (W - wall, D - wall, 0.8 * H), rounded=0.0)
+    for x in (-0.8 * W, 0.8 * W):
+        for y in (-0.7 * D, 0.7 * D):
+            m.post("dark_wood", x, y, 0.0, floor, 0.06 * min(m.sx, m.sy) + 0.01)
+
+
 def _trunk(m: Model) -> None:
     """A travel trunk: a box with leather straps, brass corners, a lock and side handles."""
     m.main = "dark_wood"
@@ -723,6 +754,8 @@ def container(m: Model) -> None:
         (("spool", "reel", "bobbin", "cable drum"), _spool),
         (("hatbox", "hat box"), _hatbox),
         (("nest", "nests"), _nest),
+        (("trough", "manger"), _trough),
+        (("pet carrier", "cat carrier", "dog carrier", "carrier"), _pet_carrier),
         (("dollhouse", "dolls house", "doll house", "doll's house"), house),  # a little house with its roof
     )
     build = m.first_named(variants)
