@@ -182,8 +182,9 @@ def _components(layout: Layout, apart: set[tuple[str, str]]) -> list[list[str]]:
 
 
 def _place_related(layout: Layout, apart: set[tuple[str, str]]) -> None:
-    """Each related group placed by its relations in its own frame: one unit each; a thing
-    related only to ``apart`` pairs' targets is a group of its own (it goes between rows later)."""
+    """Each related group placed by its relations in its own frame: one unit each; the relations
+    between ``apart`` pairs join nothing (what stands between two rows, or by a pier's land end,
+    goes there later)."""
     for ids in _components(layout, apart):
         chosen = set(ids)
         objects = [layout.by_id[i] for i in ids]

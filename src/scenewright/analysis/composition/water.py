@@ -126,11 +126,11 @@ def by_water(layout: Layout, text: str, ties: set[tuple[str, str]] = frozenset()
     for unit in land:
         pier = next((b if a in unit.ids else a for a, b in ties if a in unit.ids or b in unit.ids), None)
         if pier is not None and layout.unit_of[pier] is not unit:
-            _by_land_end(layout, unit, layout.placed[pier], shore, placed)
+            _by_land_end(layout, unit, layout.placed[pier], shore)
     return shore
 
 
-def _by_land_end(layout: Layout, unit: Unit, pier: Footprint, shore: float, placed: list[Footprint]) -> None:
+def _by_land_end(layout: Layout, unit: Unit, pier: Footprint, shore: float) -> None:
     """A land unit moved beside the land end of a pier reaching out from ``shore``, on the
     shore side, where it stays clear of what is already there."""
     x0, y0, x1, y1 = layout.box(unit)
