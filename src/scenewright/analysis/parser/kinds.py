@@ -8,14 +8,13 @@ from scenewright.analysis.parser.grammar import (
     _CARRY_VOLUME,
     _HAND_VOLUME,
     _HANDHELD_SIZE,
-    _LIVING,
     _PLATFORM_AREA,
     _PLATFORM_HEIGHT,
     _RIDDEN,
     _THIN,
     _TOOL_SIZE,
 )
-from scenewright.analysis.parser.nouns import _Mention, _is_plural
+from scenewright.analysis.parser.nouns import _Mention, _is_plural, _living_category
 from scenewright.analysis.parser.vocabulary import GENERIC, load_vocabulary
 from scenewright.analysis.parser.words import _HANG_VERBS
 
@@ -38,7 +37,7 @@ class _Kinds:
         return self.groups[g].category == "figure"
 
     def _lives(self, category: str) -> bool:
-        return category in _LIVING or self.catalogue[category].shape in _LIVING
+        return _living_category(category)
 
     def _carrier(self, g: int, kinds: tuple[str, ...] | None = None, by_family: bool = True) -> bool:
         """Something a person or an animal sits, stands or rides on, or is carried in (``carriers``
