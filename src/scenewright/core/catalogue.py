@@ -46,7 +46,7 @@ POSTED = "on a post"
 _WORD = re.compile(r"[^\W_]+(?:['’][^\W\d_]+)?")  # letters of any script: "café" is one word
 #: Plurals that the suffix rules below would get wrong.
 _IRREGULAR = {"cacti": "cactus", "mice": "mouse", "geese": "goose", "people": "person", "children": "child",
-              "pegasi": "pegasus", "fungi": "fungus", "octopi": "octopus",
+              "pegasi": "pegasus", "fungi": "fungus", "octopi": "octopus", "larvae": "larva", "pupae": "pupa",
               "taxis": "taxi", "buses": "bus", "octopuses": "octopus", "walruses": "walrus", "cactuses": "cactus",
               "thermoses": "thermos", "canvases": "canvas", "lenses": "lens", "atlases": "atlas",
               "canvas": "canvas", "atlas": "atlas", "oxen": "ox", "axes": "axe", "pickaxes": "pickaxe",
@@ -63,7 +63,9 @@ _F_PLURALS = {"knives": "knife", "wives": "wife", "lives": "life", "leaves": "le
 #: Nouns in -ie, whose plural the -ies → -y rule would get wrong ("pixies" are no "pixy").
 _IE_NOUNS = {"pixie", "zombie", "cookie", "movie", "hippie", "brownie", "magpie", "smoothie", "selfie", "genie",
              "rookie", "hoodie", "birdie", "beanie", "auntie", "collie", "goalie", "budgie", "pie", "tie", "lie",
-             "bootie", "walkie", "talkie", "techie", "yuppie", "sweetie", "boogie", "calorie", "prairie", "lassie"}  # fmt: skip
+             "bootie", "walkie", "talkie", "techie", "yuppie", "sweetie", "boogie", "calorie", "prairie", "lassie",
+             "rotisserie", "kelpie", "yorkie", "onesie", "sortie", "eyrie", "newbie", "freebie", "menagerie",
+             "lingerie", "coterie", "reverie", "camaraderie", "gendarmerie", "patisserie", "brasserie"}  # fmt: skip
 #: Singular nouns in -men; other words in -men are plurals of -man ("women", "fishermen").
 _SINGULAR_MEN = {"specimen", "omen", "abdomen", "stamen", "regimen", "hymen", "semen", "lumen", "amen", "acumen",
                  "albumen", "bitumen", "germen", "yemen"}  # fmt: skip

@@ -48,11 +48,11 @@ PART_NOUNS: dict[str, tuple[str, ...]] = {
     "cushion": ("cushion",), "seat": ("cushion",), "pillow": ("cushion",), "upholstery": ("fabric", "cushion"),
     "shade": ("shade",), "lampshade": ("shade",), "leaves": ("leaf", "pine_leaf"), "leaf": ("leaf", "pine_leaf"),
     "foliage": ("leaf", "pine_leaf"), "needles": ("pine_leaf",), "trunk": ("bark",), "roof": ("roof",),
-    "awning": ("canvas",), "canopy": ("canvas", "leaf"), "frame": ("wood", "dark_wood", "metal", "dark_metal"),
+    "awning": ("canvas",), "canopy": ("canvas", "leaf", "blossom"), "frame": ("wood", "dark_wood", "metal", "dark_metal"),
     "legs": ("wood", "dark_wood", "metal", "dark_metal", "chrome"), "base": ("dark_plastic", "metal", "dark_metal"),
     "handle": ("metal", "brass", "chrome"), "knobs": ("brass", "metal"), "pot": ("ceramic",),
-    "screen": ("screen",), "flowers": ("flower",), "petals": ("flower",), "sheets": ("fabric",),
-    "blanket": ("fabric",), "duvet": ("fabric",), "bedding": ("fabric",), "headboard": ("wood",),
+    "screen": ("screen",), "flowers": ("flower",), "petals": ("flower", "blossom"), "blossoms": ("blossom",),
+    "sheets": ("fabric",), "blanket": ("fabric",), "duvet": ("fabric",), "bedding": ("fabric",), "headboard": ("wood",),
     "wheels": ("rubber",), "tyres": ("rubber",), "tires": ("rubber",), "windows": ("glass",), "walls": ("wall",),
     "stripes": ("canvas",), "sail": ("canvas_alt",), "cabin": ("wall",), "top": ("marble",), "countertop": ("marble",),
     "door": ("dark_wood",), "front door": ("dark_wood",),
@@ -90,7 +90,7 @@ _UPHOLSTERED = {"fabric", "leather"}
 
 #: Roles of living or elemental things: "an oak tree" names a species, not a wood finish,
 #: so material words never apply to them (colour words still do: "a red maple").
-_NATURAL = {"leaf", "pine_leaf", "bark", "flower", "flower_alt", "fur", "water", "flame", "light", "soil"}
+_NATURAL = {"leaf", "pine_leaf", "blossom", "bark", "flower", "flower_alt", "fur", "water", "flame", "light", "soil"}
 
 
 def described_surfaces(

@@ -15,7 +15,7 @@ from scenewright.analysis.parser.grammar import (
     _POLE_BORNE,
     _VESSEL_KINDS,
 )
-from scenewright.analysis.parser.nouns import _Mention, _is_plural
+from scenewright.analysis.parser.nouns import _LAID, _STANDING, _Mention, _is_plural
 from scenewright.analysis.parser.phrases import _phrase_table
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import (
@@ -86,6 +86,8 @@ class _Contents:
             k -= 1
         if k < 0 or self.toks[k].text not in _WARES_VERBS:
             return False
+        if m.end < len(self.toks) and self.toks[m.end].text in _LAID | _STANDING:
+            return False  # "sells pumpkins stacked in crates": stock the text puts somewhere is laid out
         hawker = seller is not None and seller.end in (k, k - 1) and self.catalogue[seller.category].shape == "figure"
         return not (hawker and load_vocabulary().carried_by_hand(m.category, m.phrase))
 

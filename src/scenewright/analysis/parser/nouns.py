@@ -496,12 +496,15 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             not _joint_verb(toks, e, cat)
         ):  # ("a dog and a cat play": the verb of both)
             continue  # "a stone path", "a glass roof": an adjective here
+        after = singular(toks[e + 1].text) if e + 1 < n else "."
+        if not alive and follow.endswith("ing") and (after in _ACTIVITIES or vocabulary.names_place(after)):
+            continue  # "a cake decorating class", "a bread baking stall": what the activity is about
         projector = cat in _SHOWS_PROJECTION or load_catalogue()[cat].support
         if s > 0 and toks[s - 1].text in _PROJECTED and not projector:
             cat, entry = "hologram", None  # "holographic koi" are light, not fish: place and size them as one
         animal = vocabulary.animal_senses.get(singular(words[-1])) if len(words) == 1 else None
-        if animal is not None and (_verb_after(toks, e) or ("",))[0] in vocabulary.animal_only_verbs:
-            cat, entry = animal.category, animal  # "two cranes wade in the reeds": the birds
+        if animal is not None and ((_verb_after(toks, e) or ("",))[0] in vocabulary.animal_only_verbs or _haunt(toks, e)):
+            cat, entry = animal.category, animal  # "two cranes wade in the reeds", "stands in the shallows": birds
         person = vocabulary.person_senses.get(singular(words[-1])) if len(words) == 1 else None
         if person is not None and (_as_person(toks, e) or _looks_like_person(toks, s)):
             cat, entry = person.category, person  # "fans in fancy dress line the barriers": people
@@ -1217,10 +1220,10 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
         # from outside, a building of the scene (_buildings)
     if _opening_setting(toks, s, e):
         return True
+    if _inner_part_of(toks, j) and (not building or j >= 3 and toks[j - 3].text in _INSIDE):
+        return True  # ("a rug lies in the middle of the hut": in it; "at the back of the barn" may be behind it)
     if building:
         return False
-    if _inner_part_of(toks, j):
-        return True
     listing = any(t.text in _PLACE_OPENERS for t in toks[:j])  # "a garden with a pond by the greenhouse"
     if j >= 0 and toks[j].text in _SETTING_PREPOSITIONS and _verbless_opening(toks, j) and not listing:
         return True  # "A mining outpost on a grey asteroid", "a tea terrace clinging to a mountainside"
@@ -1575,7 +1578,9 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         filled = filled and word not in vocabulary.parts and word not in _QUANTITY
         # ("six teleport pads glow ... between the pads and the desk": the pads read before, again)
         again = w == "the" and any(singular(toks[h].text) == one for h, *_ in out) and not _named_before(toks, head)
-        if not (vocabulary.is_thing_word(word) or held or counted_place or stock or compound or loose or again) or (
+        # "paper moons and stars hang from the ceiling", "a cardboard moon": a made likeness of a sky thing
+        crafted = one in _SKY_THINGS and (toks[head - 1].text in _CRAFT_WORDS or w in _CRAFT_WORDS)
+        if not (vocabulary.is_thing_word(word) or held or counted_place or stock or compound or loose or again or crafted) or (
             word in _QUANTITY and not counted_place and not compound and not members
         ) or (j < n and toks[j].text == "of" and not filled):
             continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"
@@ -2045,7 +2050,8 @@ def _loose_parts(toks: list[_Tok], covered: set[int]) -> list:
         # its own subject, with a verb of its number: not "a mushroom with a tiny door stands" (whose
         # door it is), nor "a sieve on a wooden frame stand" (the verb of a plural subject before)
         whose = j > 0 and toks[j - 1].text in ("with", "of", "has", "have", "having")
-        verb = (after in _PLACING_VERBS or after in ("is", "are")) and after.endswith("s") == (opener in ("a", "an"))
+        placing = after in _PLACING_VERBS or f"{after}s" in _PLACING_VERBS or after in ("is", "are")  # ("chains lie")
+        verb = placing and after.endswith("s") == (opener in ("a", "an"))
         counted = opener in ("a", "an") or opener in _NUMBERS
         # (a bare plural that opens a sentence too: "Chains hang from the ceiling")
         bare = (j < 0 or opener in (".", "!", "?", ";")) and vocabulary.singular(t.text) != t.text
@@ -2407,6 +2413,16 @@ _VEHICLE_VERBS = {"parked", "idles", "idling", "reverses", "reversing", "honks",
 
 #: Verbs that only carry the verb after them ("a picker is working").
 _AUXILIARIES = {"is", "are", "was", "were", "has", "have", "been", "be", "busily", "quietly", "still"}
+
+
+def _haunt(toks: list[_Tok], k: int) -> bool:
+    """Whether the clause from ``k`` stands its subject where only an animal goes ("a crane stands
+    in the shallows"; not what it does there: "a crane lifts a crate by the pond")."""
+    clause = [t.text for t in itertools.takewhile(lambda t: t.text[:1].isalpha(), toks[k : k + 6])]
+    haunts = load_vocabulary().animal_haunts
+    return bool(clause) and bool(_PLACING_VERBS & {clause[0], f"{clause[0]}s"}) and any(
+        " ".join(clause[j : j + n]) in haunts for j in range(len(clause)) for n in (1, 2)
+    )
 
 
 def _verb_after(toks: list[_Tok], k: int) -> tuple[str, int] | None:
@@ -2886,7 +2902,14 @@ def _bare(toks: list[_Tok], s: int) -> bool:
 #: Words in the plural that name a kind of the noun after them ("two customs officers", "a sports car").
 _PLURAL_KINDS = {"customs", "sports", "goods", "savings", "news"}
 #: Nouns whose plural is written as the singular: several when no determiner or count comes before.
-_SAME_PLURALS = {"sheep", "deer", "reindeer", "moose", "bison", "elk", "fish", "salmon", "trout", "swine", "cattle"}
+_SAME_PLURALS = {"sheep", "deer", "reindeer", "moose", "bison", "elk", "fish", "salmon", "trout", "swine", "cattle", "koi",
+                 "carp", "cod", "tuna", "mackerel"}  # fmt: skip
+#: Nouns of an activity a thing's noun and a verb's -ing form may name ("a cake decorating class").
+_ACTIVITIES = {"class", "lesson", "session", "club", "course", "demonstration", "contest", "competition", "workshop"}
+#: Things of the sky, and the words that make one a thing people made ("paper moons", "a tin star").
+_SKY_THINGS = {"moon", "star", "sun", "cloud", "rainbow", "planet", "comet"}
+_CRAFT_WORDS = {"paper", "cardboard", "wooden", "tin", "plastic", "felt", "foil", "papier-mâché", "origami",
+                "inflatable", "neon", "giant", "painted", "cutout", "cut-out", "crocheted", "knitted"}  # fmt: skip
 #: Place nouns that qualify the next noun after a determiner ("the middle bench", "the end stall").
 _POSITION_WORDS = {"middle", "centre", "center", "corner", "end", "front", "back", "top", "bottom", "side"}
 

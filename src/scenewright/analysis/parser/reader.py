@@ -530,6 +530,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                      if g.category in kinds or self.catalogue[g.category].shape in kinds),
                     None,
                 )  # fmt: skip
+            toks = self.toks
+            partitive = several and m.start >= 3 and [t.text for t in toks[m.start - 2 : m.start]] == ["of", "the"]
+            if found is None and partitive and toks[m.start - 3].text in _NUMBERS and self._lives(m.category):
+                # "a foal lies between two of the mares" after "five white unicorns": some of the herd named before
+                shape = self.catalogue[m.category].shape
+                found = next((g.index for g in reversed(self.groups)
+                              if g.count > 1 and self.catalogue[g.category].shape == shape), None)  # fmt: skip
             if found is not None:
                 m.group = found
                 if m.counted and _is_plural(self.toks, m) and self.groups[found].count < m.count:
@@ -674,8 +681,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     if srcs:
                         worked = self._worked_there(c, srcs, before)
                         for kind, targets, each, members in c.fronted:
-                            if each:  # "beside every table stand two chairs"
-                                self._per_each(srcs[:1], targets[0])
+                            if each:  # "beside every table stand two chairs" ("a cake on a stand": a stand each)
+                                carried = [*srcs[:1], *self._beneath(kind, srcs[:1], before)]
+                                self._per_each(list(dict.fromkeys(carried)), targets[0])
                             for t in targets:
                                 for one in members:
                                     self._relate(kind, self._beneath(kind, srcs, before), t, instance=one)
@@ -1610,6 +1618,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if pair is not None:
             group, ordinals, end = pair
             several = [group] if group is not None else self._one_of(c, c.main, prev_subject)
+            if ordinals is None and several:  # "between the middle two" of four: the second and third
+                half = (self.groups[several[0]].count - 2) // 2
+                ordinals = (max(0, half), max(0, half) + 1)
             target, self._target_start = several or None, -1
         body, part = self._body_part, self._part  # "on her knees": by the person, as the part says
         self._perch_part = part in load_vocabulary().carriers.get("perches", ())
@@ -1723,8 +1734,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             each = target == "each one" or (
                 isinstance(target, list) and getattr(self.by_start.get(self._target_start), "each", False)
             )
-            if each and c.last_srcs and all(t in self.history for t in c.last_target):
-                srcs = list(c.last_srcs)  # "a register on the counter in front of each of them": one each, not the counter
+            if each and all(t in self.history for t in c.last_target):
+                # "a register on the counter in front of each of them": one each, not the counter (fronted,
+                # "on the bench in front of every student is a cake": the subject to come)
+                srcs = list(c.last_srcs)
+            elif kind == "between" and c.last_kind in ("on", "on top") and c.last_srcs and (
+                all(t in self.history for t in c.last_target)
+            ):
+                srcs = list(c.last_srcs)  # "a spool on the table between them": the host named before keeps its place
         elif self._seen_doing(c, rel, between, last_event_end):
             srcs = list(c.last_target)  # "watching a swarm of bats circle the chandelier": the bats circle it
         elif c.last_target and c.last_target_end == last_event_end and self._describes(between, c.target_after_verb):
@@ -1945,7 +1962,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._close_with(c)
             c.head, c.wsub, c.expect_new = None, [], True
             return end
-        if kind == "no relation" or (kind == "stack" and end < ce and toks[end].text == "with"):
+        # "pumpkins stacked in crates": put into several holders, so spread over them, not one stack
+        into = end + 1 < ce and toks[end].text in ("in", "into") and end + 1 in self.by_start
+        into = into and _is_plural(toks, self.by_start[end + 1])
+        if kind == "no relation" or (kind == "stack" and end < ce and (toks[end].text == "with" or into)):
             if toward and isinstance(p.target, list):  # named all the same: "..., and a truck waits under it"
                 c.groups.extend(g for g in p.target if g not in c.groups)
             return end  # "a shelf stacked with books": contents, no stack
@@ -2329,6 +2349,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         ):
             # "four tables under bright lamps": one over each
             self.groups[targets[0]].count = self.groups[srcs[0]].count
+        elif tm is not None and toks[rel.start].text == "over" and len(srcs) == 1 and self._person_at(srcs[0]) and (
+            self._uncounted_new(tm) and self._handheld(targets[0])
+        ):
+            self.groups[targets[0]].count = self.groups[srcs[0]].count  # "two hackers hunch over laptops": one each
         elif tm is not None and kind == "hanging from" and len(srcs) == 1 and self._hooks_each(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "a dozen lanterns hang from posts": one each
         sitter = self._seat_owner(c, srcs, tm) if tm is not None else None

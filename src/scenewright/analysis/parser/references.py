@@ -19,7 +19,14 @@ from scenewright.analysis.parser.grammar import (
     _ROOFED_VEHICLES,
     _SIDE_WORDS,
 )
-from scenewright.analysis.parser.nouns import COLLECTIVES, _HOLDING_PARTS, _PLACING_VERBS, _is_plural, _position_adjective
+from scenewright.analysis.parser.nouns import (
+    COLLECTIVES,
+    _HOLDING_PARTS,
+    _PLACING_VERBS,
+    _STANDING,
+    _is_plural,
+    _position_adjective,
+)
 from scenewright.analysis.parser.support import usual_host
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import (
@@ -323,7 +330,8 @@ class _References:
                 self._part = head
                 return owners[:1], m.end
         owners = load_vocabulary().part_owners.get(head, ())
-        if owners and (m.end >= ce or toks[m.end].text != "of"):
+        # ("climb the ladders propped against its hull": ladders of their own, set against it)
+        if owners and (m.end >= ce or toks[m.end].text != "of" and toks[m.end].text not in _STANDING):
             # "a tractor drives past, a woman at the wheel": the part of a thing this sentence names
             stop = max((k for k in range(m.start) if toks[k].text in (".", "!", "?")), default=-1)
             here = [n.group for k, n in sorted(self.by_start.items()) if stop < k < m.start and n.group >= 0]
@@ -617,14 +625,16 @@ class _References:
         owner = next((g.index for g in reversed(self.groups) if singular(g.name.split()[-1]) == head), None)
         return None if owner is None else (f"{toks[k + 1].text} of", [owner], k + 2)
 
-    def _ordinal_pair(self, pos: int, ce: int) -> tuple[int | None, tuple[int, int], int] | None:
+    def _ordinal_pair(self, pos: int, ce: int) -> tuple[int | None, tuple[int, int] | None, int] | None:
         """"(between) the first and second ramp", "the first and the last car", "the last two
-        carts": the group the noun names back, the two ordinals, and where the noun ends; no group
-        when no noun follows ("between the second and the third", "between the first two": of the
-        row named before)."""
+        carts", "the middle two": the group the noun names back, the two ordinals (``None`` for the
+        middle two, which the group's count gives), and where the noun ends; no group when no noun
+        follows ("between the second and the third", "between the first two": of the row named before)."""
         toks = self.toks
         k = pos + (pos < ce and toks[pos].text == "the")
-        if k + 1 < ce and (toks[k].text in ORDINALS or toks[k].text == "last") and toks[k + 1].text == "two":
+        if k + 1 < ce and toks[k].text == "middle" and toks[k + 1].text == "two":
+            j, ordinals = k + 1, None
+        elif k + 1 < ce and (toks[k].text in ORDINALS or toks[k].text == "last") and toks[k + 1].text == "two":
             first = _ORDINALS[toks[k].text]
             j, ordinals = k + 1, ((first, first + 1) if first >= 0 else (first - 1, first))
         else:

@@ -144,6 +144,8 @@ def _beside(objects: list[ParsedObject], relations: list[ParsedRelation], catalo
     pairs += [(b, a) for a, b in pairs]
     out: dict[str, str | None] = {}
     grounded = {o.id for o in objects if rests(o) == "ground" and o.id not in host and o.id not in raised}
+    # ("two hackers hunch over laptops at the counter": by the counter, so on it, whoever stands by them)
+    furnished = {thing.id for thing, partner in pairs if thing.category in _SUPPORT_PREFERENCE and furniture(partner)}
     changed = True
     while changed:  # a thing set on the ground by one may ground the next ("a basket at its foot")
         changed = False
@@ -156,7 +158,7 @@ def _beside(objects: list[ParsedObject], relations: list[ParsedRelation], catalo
                                                  or shared.category in _SUPPORT_PREFERENCE.get(thing.category, ())):
                     continue
                 out[thing.id] = shared.id
-            elif partner.id in grounded and not (thing.category in _SUPPORT_PREFERENCE and furniture(partner)):
+            elif partner.id in grounded and thing.id not in furnished:
                 out[thing.id] = None
                 grounded.add(thing.id)
             else:

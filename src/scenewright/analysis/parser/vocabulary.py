@@ -100,6 +100,7 @@ class Vocabulary:
     #: its verb is one only animals do ("two cranes wade in the reeds": birds, not machines).
     animal_senses: dict[str, Entry] = field(default_factory=dict)
     animal_only_verbs: frozenset[str] = frozenset()
+    animal_haunts: frozenset[str] = frozenset()
     #: A word the catalogue files as a thing that also names a person, read as the person when the
     #: text has it act, dress or carry as people do ("fans in fancy dress"; "a fan whirrs" is the machine).
     person_senses: dict[str, Entry] = field(default_factory=dict)
@@ -349,7 +350,7 @@ def _senses(table: dict) -> dict[str, Entry]:
     """A table of other senses (word -> [category, width, depth, height]) as entries on the ground."""
     return {
         k: Entry(v[0], (float(v[1]), float(v[2]), float(v[3])), "ground")
-        for k, v in table.items() if k not in ("about", "verbs")
+        for k, v in table.items() if k not in ("about", "verbs", "haunts")
     }  # fmt: skip
 
 
@@ -397,6 +398,7 @@ def _validate(raw: dict) -> Vocabulary:
         part_owners={k: frozenset(v) for k, v in raw.get("part_owners", {}).items() if k != "about"},
         animal_senses=_senses(raw.get("animal_senses", {})),
         animal_only_verbs=frozenset(raw.get("animal_senses", {}).get("verbs", ())),
+        animal_haunts=frozenset(raw.get("animal_senses", {}).get("haunts", ())),
         person_senses=_senses(raw.get("person_senses", {})),
         setting_senses={
             k: (v["as"], frozenset(v["in"])) for k, v in raw.get("setting_senses", {}).items() if k != "about"

@@ -26,7 +26,7 @@ _QUANTITY = {
     "pair": 2, "pairs": 4, "couple": 2, "row": 4, "rows": 6, "line": 4, "set": 3, "group": 3, "cluster": 3,
     "stack": 3, "stacks": 4, "pile": 3, "piles": 4, "heap": 3, "heaps": 4, "bunch": 3, "bunches": 4,
     "bundle": 3, "bundles": 4, "lane": 3, "lanes": 6, "queue": 4, "handful": 3, "collection": 3, "teams": 10,
-    "coils": 3, "coil": 1, "ring": 4, "circle": 4, "lot": 5, "lots": 5, "plenty": 5, "dozens": 12, "hundreds": 20,
+    "coils": 3, "coil": 1, "ring": 4, "circle": 4, "lot": 5, "lots": 5, "plenty": 5, "dozens": 24, "hundreds": 30,
     "series": 3, "trio": 3, "clusters": 5, "grove": 4, "patch": 1, "flock": 6, "herd": 6, "flocks": 12,
     "herds": 12, "string": 1, "school": 8, "shoal": 8, "swarm": 10, "pod": 4, "pack": 5, "pride": 5, "troop": 6,
     "litter": 4, "gaggle": 6, "colony": 10, "fleet": 5, "convoy": 4, "crew": 4, "team": 5, "squad": 5, "gang": 4,

@@ -11,7 +11,8 @@ from scenewright.procedural.shapes.families import family_of
 
 
 def tree(m: Model) -> None:
-    m.main = "leaf"
+    # a flowering tree is known by its blossom ("a cherry tree" in spring)
+    m.main = "blossom" if m.named("cherry", "blossom", "sakura", "almond", "magnolia") else "leaf"
     trunk_top = m.vary(0.35, 0.45) * m.sz
     r = m.thick(0.06 * min(m.sx, m.sy), 0.12 * min(m.sx, m.sy))
     m.lathe("bark", [(1.6 * r, 0), (r, 0.1 * m.sz), (0.8 * r, trunk_top + 0.15 * m.sz)])
@@ -26,13 +27,13 @@ def tree(m: Model) -> None:
         m.beam("wood", (0.15 * m.sx, -0.45 * m.sy, 0), (0.15 * m.sx, -0.42 * m.sy, floor), 0.04 * m.sx, 0.02 * m.sy)
     canopy_h = m.sz - trunk_top
     blobs = int(m.rng.integers(4, 7))
-    m.ball("leaf", (0, 0, trunk_top + 0.55 * canopy_h), (0.33 * m.sx, 0.33 * m.sy, 0.4 * canopy_h))
+    m.ball(m.main, (0, 0, trunk_top + 0.55 * canopy_h), (0.33 * m.sx, 0.33 * m.sy, 0.4 * canopy_h))
     for k in range(blobs):
         a = 2 * np.pi * k / blobs + m.vary(-0.3, 0.3)
         d = m.vary(0.22, 0.3)
         s = m.vary(0.18, 0.24)
         z = trunk_top + m.vary(0.3, 0.65) * canopy_h
-        m.ball("leaf", (np.cos(a) * d * m.sx, np.sin(a) * d * m.sy, z), (s * m.sx, s * m.sy, s * 1.2 * canopy_h), fraction=0.7)
+        m.ball(m.main, (np.cos(a) * d * m.sx, np.sin(a) * d * m.sy, z), (s * m.sx, s * m.sy, s * 1.2 * canopy_h), fraction=0.7)
 
 
 def pine_tree(m: Model) -> None:
@@ -371,6 +372,9 @@ def fence(m: Model) -> None:
 
 
 def arch(m: Model) -> None:
+    if m.named("bridge", "footbridge"):
+        _bridge(m)
+        return
     if m.has("torii", "shrine", "japanese"):
         _torii(m)
         return
@@ -386,6 +390,35 @@ def arch(m: Model) -> None:
     ring = P.transform(ring, P.affine(np.diag([1.0, 1.0, m.sy / pillar]), (0, 0, 0)))
     m.add("stone", P.transform(ring, P.affine(np.array([[1, 0, 0], [0, 0, 1], [0, 1, 0]], float), (0, 0, spring))))
     m.box("stone", (-0.06 * m.sx, -m.sy / 2 - 0.01, m.sz - pillar * 0.6), (0.06 * m.sx, m.sy / 2 + 0.01, m.sz))
+
+
+def _bridge(m: Model) -> None:
+    """A footbridge one walks along its depth: a deck that rises from ground at both ends to its
+    crown (higher when it is "arched" or "humped"), a railing of posts and a handrail each side
+    (a parapet on a stone one),
+    so what stands on it stands on the deck and what passes under it passes under the crown."""
+    m.main = "stone" if m.has("stone", "brick") else "wood"
+    rail = min(0.9, 0.45 * m.sz)
+    thick = max(0.06, 0.08 * m.sz)
+    crown = m.sz - rail if m.has("arched", "humped", "humpback", "curved", "moon") else 0.5 * (m.sz - rail)
+    half, width = m.sy / 2, m.sx
+    ys = np.linspace(-half, half, 9)
+    tops = thick + (crown - thick) * (1 - (ys / half) ** 2)
+    for y0, y1, z0, z1 in zip(ys, ys[1:], tops, tops[1:]):
+        m.extrude(m.main, [(y0, z0 - thick), (y1, z1 - thick), (y1, z1), (y0, z0)], "x", -width / 2, width / 2)
+    r = m.thick(0.02 * width, 0.035 * width)
+    if m.main == "stone":  # a parapet wall each side
+        wall = 0.6 * rail
+        for y0, y1, z0, z1 in zip(ys, ys[1:], tops, tops[1:]):
+            for x0 in (-width / 2, width / 2 - 2 * r):
+                m.extrude(m.main, [(y0, z0), (y1, z1), (y1, z1 + wall), (y0, z0 + wall)], "x", x0, x0 + 2 * r)
+        return
+    for side in (-1, 1):
+        x = side * (width / 2 - r)
+        for y, z in zip(ys, tops):
+            m.post(m.main, x, y, z, z + rail, r)
+        for y0, y1, z0, z1 in zip(ys, ys[1:], tops, tops[1:]):
+            m.cylinder(m.main, (x, y0, z0 + rail), (x, y1, z1 + rail), 1.2 * r, fraction=0.4)
 
 
 def _torii(m: Model) -> None:

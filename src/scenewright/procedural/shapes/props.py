@@ -92,6 +92,10 @@ def rug(m: Model) -> None:
     if m.named("pond", "pool", "puddle", "rink"):
         _water(m)
         return
+    pelt = m.first_named(_PELTS)
+    if pelt is not None:
+        _pelt(m, pelt)
+        return
     m.main = "fabric"
     border = 0.06 * min(m.sx, m.sy)
     if m.has("round", "circular", "oval"):
@@ -104,6 +108,24 @@ def rug(m: Model) -> None:
     m.box("fabric", (-m.sx / 2 + border, -m.sy / 2 + border, 0), (m.sx / 2 - border, m.sy / 2 - border, 0.85 * m.sz),
           rounded=0.0)
     m.box("accent", (-m.sx / 4, -m.sy / 4, 0), (m.sx / 4, m.sy / 4, m.sz), rounded=0.0)
+
+
+#: Rugs that are an animal's skin, by the word that names them, and the fur's role.
+_PELTS = ((("bearskin", "bear skin", "bear-skin"), "fur"), (("sheepskin", "fleece"), "wool"),
+          (("tiger skin", "tigerskin"), "fur_orange"), (("cowhide", "cow hide", "hide", "pelt"), "fur_light"))
+
+
+def _pelt(m: Model, fur: str) -> None:
+    """A skin laid flat, head to the front: an oval body, a round head, four legs spread and a tail
+    (each part a little lower than the body, so no two tops share a plane)."""
+    m.main = fur
+    m.lathe(fur, [(0.5, 0), (0.5, m.sz)], centre=(0, 0.04 * m.sy, 0), scale=(0.5 * m.sx, 0.66 * m.sy))
+    m.lathe(fur, [(0.5, 0), (0.5, 0.95 * m.sz)], centre=(0, -0.37 * m.sy, 0), scale=(0.24 * m.sx, 0.24 * m.sy))
+    for side in (-1, 1):
+        for y in (-0.2 * m.sy, 0.24 * m.sy):
+            x0, x1 = sorted((side * 0.15 * m.sx, side * 0.42 * m.sx))
+            m.box(fur, (x0, y - 0.1 * m.sy, 0), (x1, y + 0.1 * m.sy, 0.9 * m.sz), rounded=0.0)
+    m.box(fur, (-0.03 * m.sx, 0.3 * m.sy, 0), (0.03 * m.sx, m.sy / 2, 0.9 * m.sz), rounded=0.0)
 
 
 def _screen_panel(m: Model, z0: float, z1: float, depth: float) -> None:
