@@ -1777,3 +1777,56 @@ def test_lamps_something_stands_under_hang_overhead_one_each():
     assert {o.category for o in parse_scene("A study: a book lies under the lamp on the desk.").objects} >= {"table_lamp"}
     clamped = parse_scene("A skull lies on a workbench under a magnifying lamp clamped to the bench.")
     assert "pendant_lamp" not in {o.category for o in clamped.objects}
+
+
+@pytest.mark.parametrize(
+    "text, present, absent",
+    [
+        # what a stall sells, put somewhere by the text, is laid out; sold and no more said, it is not
+        ("A stall sells pumpkins stacked in crates.", {"pumpkin", "crate"}, set()),
+        ("A stall sells pies.", set(), {"pie"}),
+        # irregular and -ie plurals, small creatures
+        ("Dozens of larvae lie on a moss carpet.", {"larva"}, set()),
+        ("Two vertical rotisseries turn slowly.", {"rotisserie"}, {"rotissery"}),
+        ("An old skald plays a lyre.", {"skald", "lyre"}, set()),
+        # a thing's noun before an activity's -ing word names what the activity is about
+        ("A cake decorating class in a bright kitchen.", set(), {"cake"}),
+        # events and times are no things
+        ("The costume store beneath an opera house, the night before a premiere.", set(), {"premiere"}),
+        ("A charcoal sketch of a hydra hunt in a misty swamp.", set(), {"hydra hunt"}),
+        # a likeness of a thing of the sky, made of something, is a thing
+        ("A parade float carries a cardboard moon.", {"cardboard moon"}, set()),
+        ("The moon rises over the tent.", set(), {"moon"}),
+    ],
+)
+def test_words_whose_sense_the_sentence_decides(text, present, absent):
+    found = {singular(n) for n in names(text)} | names(text)
+    assert present <= found and not absent & found, found
+
+
+def test_a_crane_is_a_bird_where_only_a_bird_stands():
+    assert [o.category for o in parse_scene("A crane stands in the shallows.").objects] == ["bird"]
+    assert [o.category for o in parse_scene("A crane stands on one leg among the reeds.").objects][0] == "bird"
+    assert parse_scene("A crane lifts a crate by the pond.").objects[0].category == "crane"
+
+
+def test_fish_and_counts_in_words():
+    assert objects("Koi swim under the bridge.")[("fish", "koi")] == 3
+    assert objects("Dozens of owls roost on the beams.")[("bird", "owls")] + objects(
+        "Dozens of owls roost on the beams."
+    )[("bird", "owl")] == 24
+
+
+def test_moths_with_a_participle_are_things_around_what_they_circle():
+    parsed = parse_scene("Strip lights flicker overhead, with moths fluttering around them.")
+    assert Counter(o.name for o in parsed.objects)["moth"] == 3
+
+
+def test_a_kitchen_a_thing_faces_is_its_stove_not_a_house():
+    parsed = parse_scene("A ramen bar: a long counter with six stools faces a steaming kitchen where a cook stirs a pot.")
+    assert {o.name: o.category for o in parsed.objects}["kitchen"] == "stove"
+
+
+def test_a_hut_one_is_in_the_middle_of_is_the_setting():
+    assert names("A rug lies in the middle of the hut.") == {"rug"}
+    assert "hut" in names("A hut stands by the lake, and a rug lies in front of the hut.")

@@ -1686,3 +1686,54 @@ def test_what_a_crane_lifts_hangs_on_it():
     found = rels("Three wrecked freighters lie in the yard, and a gantry crane stands between two of them, lifting an engine.")
     assert ("engine_1", "on", "crane_1") in found
     assert ("bat_1", "on", "boy_1") not in rels("A boy swings a bat.")  # a person is no hoist
+
+
+def test_between_the_middle_two_of_a_row():
+    found = rels("Four columns stand in a row, and a statue stands between the middle two.")
+    assert {("statue_1", "right of", "pillar_2"), ("statue_1", "left of", "pillar_3")} <= found
+
+
+def test_some_of_a_herd_named_by_another_word_are_of_that_herd():
+    parsed = parse_scene("Five white unicorns graze in a paddock, and a foal lies between two of the mares.")
+    assert Counter(o.category for o in parsed.objects)["animal"] == 5
+    assert {("foal_1", "near", "unicorn_1"), ("foal_1", "near", "unicorn_2")} <= rels(parsed.text)
+
+
+def test_a_thing_on_a_host_named_before_is_what_stands_between():
+    text = "Two rabbits fold paper at a round table, with a spool of thread on the table between them."
+    found = rels(text)
+    assert ("spool_1", "on", "round_table_1") in found
+    assert {("spool_1", "near", "rabbit_1"), ("spool_1", "near", "rabbit_2")} <= found
+    # a host named here for the first time is what stands between
+    assert ("table_1", "near", "bed_2") in rels("A lamp stands on a table between the beds.")
+
+
+def test_parts_put_somewhere_on_their_own_are_things():
+    found = rels("A tanker lies on the sand, and workers climb the ladders propped against its hull.")
+    assert ("ladder_1", "side of", "tanker_1") in found
+    chains = parse_scene("A truck waits. Rusty chains lie in heaps between the truck and the tanker.")
+    assert Counter(o.name for o in chains.objects)["chain"] == 3
+
+
+def test_what_several_people_hunch_over_is_one_each_on_the_counter_they_are_at():
+    parsed = parse_scene("Two hackers hunch over laptops at the counter.")
+    assert Counter(o.category for o in parsed.objects)["laptop"] == 2
+    assert {("laptop_1", "on", "counter_1"), ("laptop_2", "on", "counter_1")} <= rels(parsed.text, inferred=True)
+
+
+def test_what_a_thing_nobody_places_rests_on_is_placed_instead():
+    found = rels("Tagliatelle dries on wooden racks on either side of the table.")
+    assert {("shop_shelf_1", "left of", "table_1"), ("shop_shelf_2", "right of", "table_1")} <= found
+
+
+def test_one_who_acts_from_a_seat_sits_on_it():
+    assert ("attendant_1", "on", "chair_1") in rels("An attendant blows a whistle from a tall lifeguard chair.")
+    assert ("girl_1", "on", "chair_1") not in rels("A girl takes a cup from the chair.")
+
+
+def test_a_fronted_host_before_every_one_of_a_group_gives_each_their_own():
+    text = "Six students stand at a long workbench, and on the bench in front of every student is a cake on a cake stand."
+    parsed = parse_scene(text)
+    count = Counter(o.name for o in parsed.objects)
+    assert count["workbench"] == 1 and count["cake stand"] == 6 and count["cake"] == 6
+    assert ("cake_stand_6", "in front of", "student_6") in rels(text)

@@ -263,6 +263,7 @@ def test_a_wall_thing_named_in_a_standing_form_stands_against_the_wall():
     ("A quiet tearoom. Two ladies sit at a small table.", True),
     ("A research station in Antarctica. Three red huts stand in a row on the snow, and a snowcat waits.", False),
     ("Mushrooms grow around a fallen log.", False),
+    ("A medieval blacksmith's forge: horseshoes hang from hooks on the wall.", True),
 ])
 def test_a_room_a_compound_names_is_inside_and_several_buildings_stand_outside(text, indoor):
     assert parse_scene(text).indoor is indoor

@@ -750,3 +750,26 @@ def test_a_low_swim_ring_lies_flat_and_a_life_ring_stands_up():
     assert np.min(np.hypot(ring.vertices[:, 0], ring.vertices[:, 2])) > 0.2
     hoop = next(iter(upright.geometry.values()))
     assert np.min(np.hypot(hoop.vertices[:, 0], hoop.vertices[:, 2])) < 0.05  # seen from above it crosses the axis
+
+
+def test_a_footbridge_is_a_deck_rising_to_its_crown_with_rails():
+    """A bridge is walked along its depth: its deck is low at both ends and high in the middle,
+    and nothing closes the way under its crown (the old arch drew a tunnel)."""
+    size = (2.0, 5.0, 1.5)
+    assert_fills(build_glb("arch", size, "realistic", 1, name="arched bridge"), size)
+    model = build_model("arch", size, "realistic", 1, "red arched bridge", name="arched bridge")
+    points = np.vstack([g.vertices for g in scene_frame(model).values()])
+    ends = points[np.abs(points[:, 1]) > 0.45 * size[1]]
+    middle = points[np.abs(points[:, 1]) < 0.05 * size[1]]
+    assert ends[:, 2].min() < 0.05 and middle[:, 2].min() > 0.3  # the deck springs from the ground, open below its crown
+    stone = build_model("arch", size, "realistic", 1, "stone bridge", name="stone bridge")
+    assert set(stone.geometry) == {"stone"}
+
+
+def test_a_flowering_tree_is_known_by_its_blossom_and_a_skin_rug_by_its_fur():
+    cherry = build_model("tree", (4.0, 4.0, 6.0), "realistic", 1, name="cherry tree")
+    assert "blossom" in cherry.geometry and "leaf" not in cherry.geometry
+    assert "leaf" in build_model("tree", (4.0, 4.0, 6.0), "realistic", 1, name="oak tree").geometry
+    pelt = build_model("rug", (2.4, 1.7, 0.02), "realistic", 1, name="bearskin rug")
+    assert set(pelt.geometry) == {"fur"}
+    assert_fills(build_glb("rug", (2.4, 1.7, 0.02), "realistic", 1, name="sheepskin rug"), (2.4, 1.7, 0.02))

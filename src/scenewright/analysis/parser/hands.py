@@ -24,6 +24,7 @@ from scenewright.analysis.parser.words import (
     _HOLD,
     _LEAD_VERBS,
     _LEAVING_VERBS,
+    _TAKING_VERBS,
     _NOT_IN_HAND,
     _NUMBERS,
     _ORDINALS,
@@ -356,7 +357,10 @@ class _Hands:
                 return True
             m = self.by_start.get(j)
             if m is not None:
-                return self._lives(m.category) or self._hand_object(j, k) is None
+                # ("blows a whistle from a lifeguard chair": where one sits; not "takes a cup from the chair")
+                seat = perch is not None and load_vocabulary().carries(perch.category, perch.phrase, ("seats",))
+                seat = seat and not self._verb_before(k, lambda w: _verb_stem(w, _TAKING_VERBS))
+                return self._lives(m.category) or self._hand_object(j, k) is None or seat
             if self._finite_at(j) or self._participle_at(j):
                 # the verb, acting on nothing named: what one does up there ("a fiddler plays from the
                 # back of a hay cart"), not where one leaves ("climbs from the cab")

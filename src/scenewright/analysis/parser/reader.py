@@ -2254,8 +2254,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return end
         if not c.first and not c.unknown_subject:
             p.srcs = list(prev_subject)
-        elif kind == "from" and isinstance(target, list) and targets:
-            # "steam rises from a food cart next to the stall": steam is no thing, the cart is placed
+        elif (kind == "from" or kind == "on" and not self._verb_before(p.rel.start, self._posture)) and (
+            isinstance(target, list) and targets
+        ):  # (one nobody listed who sits on a stool is someone: "the master of the mint sits on a stool")
+            # "steam rises from a food cart next to the stall", "tagliatelle dries on racks on either side
+            # of the table": steam and pasta are no things, the cart and the racks are placed
             c.main = c.main_groups = list(targets)
             c.last_target, c.last_target_end, c.last_kind = list(targets), end, kind
             return end

@@ -7,6 +7,7 @@ from __future__ import annotations
 from collections import Counter
 from dataclasses import replace
 
+from scenewright.analysis.parser.grammar import _PLATFORM_AREA
 from scenewright.analysis.parser.model import ParsedObject, ParsedRelation
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import _PLANT_SHAPES
@@ -112,7 +113,48 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
                 # the nearest mention, the one before on a tie ("a dresser with a mirror")
                 best = min(hosts, key=lambda o: (abs(o.group - obj.group), o.group > obj.group, -o.size[0] * o.size[1]))
                 extra.append(ParsedRelation(obj.id, "above", best.id, inferred=True))
-    return extra
+    return extra + _on_shared_floor(objects, relations, catalogue)
+
+
+#: m², the most ground a thing may cover to share a floor with what it stands by (a person, a
+#: lamb, a microphone stand; not a cart or a tree).
+_SHARED_FOOTPRINT = 1.0
+
+
+def _on_shared_floor(objects: list[ParsedObject], relations: list[ParsedRelation], catalogue) -> list[ParsedRelation]:
+    """What the text sets by, before or behind a thing standing on a stage, a pier or a raft
+    stands on that floor too ("On the stage, a manger ...; three lambs kneel around the manger,
+    and a donkey stands behind it": on the stage): people, animals and things a person's size,
+    no vehicle, nothing put anywhere else. A chain of them shares it ("a singer at a microphone
+    in front of the band")."""
+    by_id = {o.id: o for o in objects}
+    vocabulary = load_vocabulary()
+    placed = {r.source for r in relations if r.relation in ("on", "above")}
+    floor_of = {r.source: r.target for r in relations if r.relation == "on"}
+    pairs = [(by_id[r.source], by_id[r.target]) for r in relations if r.relation in _HORIZONTAL and not r.inferred]
+    pairs += [(b, a) for a, b in pairs]
+
+    def shares(thing: ParsedObject, floor: ParsedObject) -> bool:
+        if (thing.rests or catalogue[thing.category].rests) != "ground" or thing.anchor is not None:
+            return False
+        small = catalogue[thing.category].shape in LIVING_SHAPES or thing.size[0] * thing.size[1] <= _SHARED_FOOTPRINT
+        wide = floor.size[0] * floor.size[1] >= _PLATFORM_AREA * thing.size[0] * thing.size[1]
+        deck = vocabulary.carries(floor.category, floor.name, ("perches",)) and floor.size[2] <= _PLATFORM_TOP
+        vehicle = vocabulary.carries(thing.category, thing.name, ("vehicles",))
+        return small and wide and deck and not vehicle and can_hold(floor, thing, catalogue)
+
+    out: dict[str, str] = {}
+    changed = True
+    while changed:  # ("a singer at a microphone in front of the band": the microphone first, then the singer)
+        changed = False
+        for thing, partner in pairs:
+            floor = floor_of.get(partner.id) or out.get(partner.id)
+            if thing.id in placed or thing.id in out or floor is None or floor == thing.id:
+                continue
+            if shares(thing, by_id[floor]):
+                out[thing.id] = floor
+                changed = True
+    return [ParsedRelation(thing, "on", floor, inferred=True) for thing, floor in out.items()]
 
 
 #: Relations that put one thing on a side of another: it cannot be on it as well.

@@ -163,6 +163,8 @@ _LEAVING_VERBS = {"climb", "step", "fall", "emerge", "run", "walk", "come", "ret
                   "slide", "tumble", "stumble", "descend", "dismount", "alight", "rise", "drift", "fly", "swing",
                   "stream", "pour", "spill", "hang", "dangle", "leak", "drip", "float"}  # fmt: skip
 #: beside the van", "children chase a dog around the well") is the doer's place, the other keeps by them.
+#: Verbs whose "from" names where a thing is taken from ("takes a cup from the chair"), not where the doer is.
+_TAKING_VERBS = {"take", "pull", "lift", "grab", "pick", "fetch", "remove", "snatch", "steal", "draw", "collect"}
 _LEAD_VERBS = {"walk", "walks", "walking", "lead", "leads", "leading", "guide", "guides", "guiding",
                "chase", "chases", "chasing"}  # fmt: skip
 #: Verbs of giving ("a robot hands one of them a toolbox"): the giver has the thing in hand and
