@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from scenewright.analysis.arrange import compose
-from scenewright.analysis.composition.posture import posed_size, posture_in, posture_of
+from scenewright.analysis.composition.posture import pose, posed_size, posture_in, posture_of
 from scenewright.analysis.parser import parse_scene
 from scenewright.procedural.builder import Model
 from scenewright.procedural.shapes import SHAPES
@@ -115,3 +115,10 @@ def test_one_who_kneels_kneels_on_whatever_carries_them():
     assert posture_of(parsed, woman) == "kneeling"
     w, d, h = posed_size((0.5, 0.3, 1.75), "kneeling")
     assert h < 1.75 and d > 0.3  # lower than standing, the shins back along the floor
+
+
+def test_a_long_flat_thing_leant_against_a_wall_stands_on_its_end():
+    parsed = parse_scene("A ski lodge: a pair of skis leans against the wall, and a mattress lies on the floor.")
+    sizes = {o.name: o.size for o in pose(parsed)}
+    assert sizes["pair of skis"] == (0.2, 0.1, 1.8)  # its length now its height
+    assert sizes["mattress"][2] < 0.3  # lying where it lies

@@ -771,5 +771,5 @@ def test_a_flowering_tree_is_known_by_its_blossom_and_a_skin_rug_by_its_fur():
     assert "blossom" in cherry.geometry and "leaf" not in cherry.geometry
     assert "leaf" in build_model("tree", (4.0, 4.0, 6.0), "realistic", 1, name="oak tree").geometry
     pelt = build_model("rug", (2.4, 1.7, 0.02), "realistic", 1, name="bearskin rug")
-    assert set(pelt.geometry) == {"fur"}
+    assert set(pelt.geometry) == {"fur_dark"}
     assert_fills(build_glb("rug", (2.4, 1.7, 0.02), "realistic", 1, name="sheepskin rug"), (2.4, 1.7, 0.02))

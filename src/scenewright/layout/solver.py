@@ -534,6 +534,10 @@ class _Search:
             yaw_choices = (obj.yaw,)
         else:
             yaw_choices = item.yaws[:1] if density == "probe" else item.yaws
+            if resting and self.posed[primary[1]]:
+                # what rests on a thing turns with it first: a sitter faces where the chair faces
+                host = float(self.yaw[primary[1]])
+                yaw_choices = (host, *(y for y in yaw_choices if abs((y - host + 180.0) % 360.0 - 180.0) > 1e-6))
         xy_parts, yaw_parts, cost_parts = [], [], []
         if wall is not None and not resting:
             relation, target = wall[0].relation, wall[1]

@@ -1,4 +1,5 @@
-"""How a person rests: standing, kneeling, sitting or lying, from what the text says of them.
+"""How a person rests: standing, kneeling, sitting or lying, from what the text says of them
+(and a long flat thing leant against something: on its end).
 
 The reader records no posture, so it is read here from two things the parse does hold: the
 host a person is put ``on`` (a seat or a cushion → sitting; a bed, a rug, a blanket → lying)
@@ -16,6 +17,7 @@ from dataclasses import replace
 from scenewright.analysis.composition import roles
 from scenewright.analysis.parser import ParsedObject, ParsedScene
 from scenewright.analysis.parser.vocabulary import load_vocabulary
+from scenewright.core.catalogue import load_catalogue
 
 #: Kneeling first: one who kneels on a cushion or a mat kneels there (the reader counts the
 #: verbs of kneeling among those of sitting, for what carries them).
@@ -139,12 +141,36 @@ def posed_size(size: tuple[float, float, float], posture: str | None, stool: boo
     return size
 
 
+#: Words that stand a long flat thing on its end against something ("skis lean against the wall").
+_LEANING = ("lean", "leans", "leaning", "propped")
+#: m, the most a thing lying flat rises; and its least length to stand on end when it leans.
+_FLAT_RISE, _LEANING_LENGTH = 0.25, 1.0
+
+
+def stood_on_end(parsed: ParsedScene, obj: ParsedObject) -> tuple[float, float, float] | None:
+    """The upright box of a long thing the catalogue sizes lying flat (skis, a mattress) when its
+    clause leans or props it against something, its long side up; ``None`` for anything else.
+    Only a plainly drawn thing: a generator that draws a sword or an oar draws it lying."""
+    w, d, h = obj.size
+    long = max(w, d)
+    if load_catalogue()[obj.category].shape != "generic" or h > _FLAT_RISE or long < max(_LEANING_LENGTH, 4 * h):
+        return None
+    if not _mentions(_clause_of(parsed, obj), _LEANING):
+        return None
+    return (w, h, d) if d >= w else (d, h, w)
+
+
 def pose(parsed: ParsedScene) -> list[ParsedObject]:
     """The parse's objects with every person put in the posture the text gives them: the
     pose's box, and the pose word added to the description when it does not say it (with the
-    stool they sit on when the text names no seat)."""
+    stool they sit on when the text names no seat); a long flat thing leant against something
+    stands on its end."""
     posed = []
     for obj in parsed.objects:
+        upright = stood_on_end(parsed, obj)
+        if upright is not None:
+            posed.append(replace(obj, size=upright))
+            continue
         posture = posture_of(parsed, obj)
         if posture is None:
             posed.append(obj)

@@ -111,7 +111,7 @@ def rug(m: Model) -> None:
 
 
 #: Rugs that are an animal's skin, by the word that names them, and the fur's role.
-_PELTS = ((("bearskin", "bear skin", "bear-skin"), "fur"), (("sheepskin", "fleece"), "wool"),
+_PELTS = ((("bearskin", "bear skin", "bear-skin"), "fur_dark"), (("sheepskin", "fleece"), "wool"),
           (("tiger skin", "tigerskin"), "fur_orange"), (("cowhide", "cow hide", "hide", "pelt"), "fur_light"))
 
 
