@@ -296,7 +296,14 @@ def test_style(text, style):
         ("A bakery drawn in soft pastels, a baker at the oven.", "pastel"),
         ("A market square in the style of old engravings.", "engraving"),  # a plural medium
         ("A farm drawn in bright crayons, three pigs by the gate.", "crayon"),
-        ("An orchard, cut from layered paper, with a ladder against a tree.", "realistic"),  # "cut from": no frame
+        ("An orchard, cut from layered paper, with a ladder against a tree.", "paper cut"),  # what it is made from
+        ("A nativity play in a village hall, knitted from wool.", "textile"),
+        ("A workshop where everything is folded from crisp origami paper.", "papercraft"),
+        ("A crossroads on a moor, drawn entirely as black paper silhouettes.", "paper cut in black"),  # an adverb between
+        ("A sewer pumping station styled like a PS1 survival horror game.", "low-poly"),
+        ("A gouache painting of a glen.", "painting"),
+        ("A wrestling night printed as a two-colour silkscreen poster in hot pink and teal.", "poster in pink and teal"),
+        ("A village grocery made like a painted wooden toy set.", "diorama"),
         ("A pier painted like a pointillist canvas.", "impressionist"),
         ("A fishing village, as a Japanese woodblock print.", "ukiyo-e"),
         ("A black-and-white photograph of a railway yard with two engines.", "film noir"),

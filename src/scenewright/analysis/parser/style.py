@@ -17,16 +17,18 @@ GROUND_KINDS = (
 )  # fmt: skip
 
 
-#: A verb of making before "as", "like", "in" or "into", "in the style of", or a clause opening "as" or
-#: "like": the words after it, up to "of" or the clause's end, say what the picture is ("drawn as a Soviet
-#: constructivist poster", "painted like an impressionist canvas", "rendered in cross-stitch", "in the
-#: style of a pulp magazine cover", "A fishing village, as a woodblock print."). Verbs that also build or
+#: A verb of making (an adverb may come between) before "as", "like", "in", "into" or "from" ("knitted from
+#: wool", "drawn entirely as"), "in the style of", or a clause opening "as" or "like": the words after it,
+#: up to "of" or the clause's end, say what the picture is ("drawn as a Soviet constructivist poster",
+#: "painted like an impressionist canvas", "rendered in cross-stitch", "in the style of a pulp magazine
+#: cover", "A fishing village, as a woodblock print."). Verbs that also build or
 #: film things say it only before "as" or "like" ("built as a tiny diorama", "shot as a tilt-shift photo").
 _MADE_AS = re.compile(
     r"\b(?:(?P<verb>drawn|rendered|painted|printed|done|made|sketched|woven|stitched|embroidered|etched|engraved|"
     r"carved|cut|shown|depicted|illustrated|imagined|pictured|styled|crafted|modelled|modeled|sculpted|knitted|"
-    r"felted|dyed|glazed|inlaid)\s+(?:as|like|in|into)|(?P<builds>built|shot|photographed|filmed|captured|cast|"
-    r"moulded|molded)\s+(?:as|like)|(?P<style_of>in\s+the\s+(?:style|manner)\s+of)|[,:;(]\s*(?:as|like))\s+"
+    r"felted|dyed|glazed|inlaid|folded)\s+(?:\w+ly\s+)?(?:as|like|in|into|from)|"
+    r"(?P<builds>built|shot|photographed|filmed|captured|cast|moulded|molded)\s+(?:as|like)|"
+    r"(?P<style_of>in\s+the\s+(?:style|manner)\s+of)|[,:;(]\s*(?:as|like))\s+"
     r"(?:(?:an?|the)\s+)?(?P<manner>(?:style|manner)\s+of\s+(?:(?:an?|the)\s+)?)?(?P<phrase>[^.,:;!?()]*)"
 )
 #: "as a ..." with no verb before it: the picture only when its phrase names a look ("A lavender farm as a
@@ -116,8 +118,10 @@ def _media(text: str) -> list[_Medium]:
         words, length = _noun_phrase(clause[at:])
         if _names_a_look(words):
             found.append(_Medium(words, (at, at + length)))
-    return [f for f in found
-            if f.words and _length(f.words) <= _MEDIUM_WORDS and (f.whole or not _says_colours(f.words))]
+    # (a phrase of colours alone is no medium, "walls painted in pastel colours"; one that names a look
+    # with its colours is: "printed as a two-colour silkscreen poster in hot pink and teal")
+    return [f for f in found if f.words and _length(f.words) <= _MEDIUM_WORDS
+            and (f.whole or not _says_colours(f.words) or _names_a_look(_without_colours(f.words)))]
 
 
 def _length(words: list[str]) -> int:
