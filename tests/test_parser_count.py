@@ -266,3 +266,12 @@ def test_stacked_in_a_pyramid_is_six_and_a_count_wins():
 def test_living_things_on_every_one_of_a_group_are_one_each_and_things_a_few():
     assert counts("Ten trampolines stand in two rows, and children bounce on every one of them.")["child"] == 10
     assert counts("Four tables stand in the hall, and vases stand on each of them.")["vase"] == 12
+
+
+def test_several_stacks_stand_as_that_many_columns():
+    from scenewright.analysis.composition.formations import stack_relations
+
+    parsed = parse_scene("Three stacks of metal crates stand along the left wall.")
+    assert len(parsed.objects) == 9 and {o.formation_lines for o in parsed.objects} == {3}
+    columns = [r for r in stack_relations(parsed.objects, parsed.relations) if r.relation == "side of"]
+    assert len(columns) == 2  # three columns of three, each foot beside the one before

@@ -1830,3 +1830,15 @@ def test_a_kitchen_a_thing_faces_is_its_stove_not_a_house():
 def test_a_hut_one_is_in_the_middle_of_is_the_setting():
     assert names("A rug lies in the middle of the hut.") == {"rug"}
     assert "hut" in names("A hut stands by the lake, and a rug lies in front of the hut.")
+
+
+def test_a_vessel_a_room_of_the_opening_is_on_is_the_setting():
+    assert names("A sci-fi cargo bay on a space freighter: three crates stand along the left wall.") == {"crate"}
+    assert names("A cosy cabin aboard a fishing boat: a bunk stands by the wall.") == {"bunk"}
+    assert "pirate ship" in names("A pirate ship at sea: a parrot sits on the mast.")
+
+
+def test_a_building_with_parts_of_its_own_after_the_setting_is_a_thing_of_it():
+    parsed = parse_scene("A rainy street corner at night: a café with red awnings has four small tables on the pavement.")
+    assert {o.name: o.category for o in parsed.objects}["café"] == "house"
+    assert "café" not in names("A café with four tables and a counter.")

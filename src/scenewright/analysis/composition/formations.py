@@ -61,6 +61,8 @@ def stack_relations(objects: list[ParsedObject], relations: list[ParsedRelation]
             ]
             continue
         high = max(1, int(STACK_REACH / max(height, 1e-3)))
+        if objs[0].formation_lines:  # "three stacks of crates": as many columns as it says
+            high = min(high, -(-len(objs) // objs[0].formation_lines))
         out += [
             ParsedRelation(objs[i].id, "on", objs[i - 1].id, inferred=True)
             if i % high

@@ -1200,6 +1200,8 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     vocabulary = load_vocabulary()
     head = singular(toks[e - 1].text)
     named = vocabulary.names_place(head) or (e >= 2 and f"{toks[e - 2].text} {head}" in vocabulary.places)
+    if _aboard(toks, s, e):
+        return True
     building = not named and _enterable(toks, s, e)
     if not (named or building):
         return False
@@ -1412,6 +1414,29 @@ def _enterable(toks: list[_Tok], s: int, e: int) -> bool:
     # (towers, lighthouses and windmills have rooms too, when the opening only names where the scene
     # is: "A laboratory in a castle tower." is inside it, "a bell hangs in the clock tower" is not)
     return category.shape == "house" or category.shape in ("tower", "windmill") and _verbless_opening(toks, s)
+
+
+#: The vessels a room of the scene may be aboard, and rooms only a vessel has.
+_VESSELS = frozenset({"spaceship", "boat"})
+_VESSEL_ROOMS = frozenset({"cabin", "galley", "hold", "deck", "cockpit", "berth", "wardroom", "cabins"})
+
+
+def _aboard(toks: list[_Tok], s: int, e: int) -> bool:
+    """A vessel an opening with no verb puts its place on or in: "A sci-fi cargo bay on a space
+    freighter:" is aboard the freighter, no thing in its own hold ("A pirate ship at sea." is the ship)."""
+    aboard = ("on", "aboard", "of", "in", "inside")
+    j = s - 1
+    while j >= 0 and toks[j].text not in aboard and (
+        toks[j].text in _DETERMINERS or toks[j].text[:1].isalpha() and toks[j].text not in _STOP
+    ):
+        j -= 1
+    if j < 1 or toks[j].text not in aboard or not _verbless_opening(toks, j):
+        return False
+    vocabulary = load_vocabulary()
+    entry = vocabulary.match(tuple(t.text for t in toks[s:e])) or vocabulary.match((singular(toks[e - 1].text),))
+    category = entry.category if entry is not None else match_phrase(tuple(t.text for t in toks[s:e]))
+    room = any(vocabulary.names_place(singular(t.text)) or t.text in _VESSEL_ROOMS for t in toks[:j])
+    return category in _VESSELS and room
 
 
 def _verb_word(word: str) -> bool:
@@ -2004,8 +2029,10 @@ def _buildings(toks: list[_Tok], covered: set[int]) -> list:
             ):
                 j -= 1  # back over describing words ("the little waiting room", "a false-front saloon")
             # "a saloon stands on the left": a building a clause opens with, standing somewhere
-            stands = j >= 0 and toks[j].text in ("a", "an") and after in _BUILDING_STANDS and (
-                j == 0 or toks[j - 1].text in (".", "!", "?", ";", ",", "and")
+            # ("a street corner: a café with red awnings has four tables": after the setting, one with parts of its own)
+            standing = after in _BUILDING_STANDS or after == "with" and j > 0
+            stands = j >= 0 and toks[j].text in ("a", "an") and standing and (
+                j == 0 or toks[j - 1].text in (".", "!", "?", ";", ",", "and", ":")
             )
             seen = j >= 0 and toks[j].text in _DETERMINERS and _outside_of(toks, j) and not _verbless_opening(toks, j)
             # "Across from the stage is a long bar": the subject a fronted place phrase puts after its verb

@@ -469,6 +469,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.formations.setdefault(g.index, formation)
         if formation == "rows" and count:
             self.lines.setdefault(g.index, count)
+        several = self.toks[j - 1].text.endswith("s")  # ("three stacks of crates": three columns; "stacks of": two)
+        if formation == "stack" and several:
+            self.lines.setdefault(g.index, count or 2)
 
     def _resolve(self, m: _Mention, sizes: list[tuple[str, float]]) -> int:
         """A definite mention of something already present refers to it (by category, else by

@@ -238,6 +238,9 @@ def bench(m: Model) -> None:
 
 
 def bed(m: Model) -> None:
+    if m.named("bunk"):
+        _bunk_bed(m)
+        return
     m.main = "fabric"
     frame_top = 0.3 * m.sz
     head_t = 0.06 * m.sy
@@ -257,6 +260,33 @@ def bed(m: Model) -> None:
         x0 = -m.sx / 2 + 0.1 + i * pw
         m.box("cushion", (x0 + 0.03, m.sy / 2 - head_t - 0.28 * m.sy, mattress_top),
               (x0 + pw - 0.03, m.sy / 2 - head_t - 0.03, mattress_top + 0.1 * m.sz))
+
+
+def _bunk_bed(m: Model) -> None:
+    """Two beds one above the other on four corner posts, a guard rail along the top bunk and a
+    ladder up its side at the foot."""
+    m.main = "wood"
+    post = m.thick(0.03, 0.05)
+    for x in (-m.sx / 2 + post, m.sx / 2 - post):
+        for y in (-m.sy / 2 + post, m.sy / 2 - post):
+            m.box("wood", (x - post, y - post, 0), (x + post, y + post, m.sz), rounded=0.0)
+    inner = (-m.sx / 2 + 2 * post, -m.sy / 2 + 2 * post)
+    for deck in (0.18 * m.sz, 0.6 * m.sz):
+        m.box("wood", (inner[0], inner[1], deck), (-inner[0], -inner[1], deck + 0.05 * m.sz), rounded=0.0)
+        m.box("canvas_alt", (inner[0] + 0.02, inner[1] + 0.02, deck + 0.05 * m.sz),
+              (-inner[0] - 0.02, -inner[1] - 0.02, deck + 0.11 * m.sz))
+        m.box("cushion", (inner[0] + 0.08, m.sy / 2 - 0.35 * m.sy, deck + 0.11 * m.sz),
+              (-inner[0] - 0.08, -inner[1] - 0.05, deck + 0.15 * m.sz))
+    rail = 0.85 * m.sz
+    m.box("wood", (-m.sx / 2 + 0.2 * post, -m.sy / 2 + 2 * post, rail), (-m.sx / 2 + 1.6 * post, m.sy / 2 - 2 * post,
+                                                                          rail + 0.04 * m.sz), rounded=0.0)
+    ladder_x = m.sx / 2 + 0.2 * post
+    for y in (-0.42 * m.sy, -0.25 * m.sy):
+        m.box("wood", (ladder_x - post, y - 0.6 * post, 0), (ladder_x, y + 0.6 * post, 0.75 * m.sz), rounded=0.0)
+    for k in range(1, 5):
+        z = 0.15 * k * m.sz
+        m.box("wood", (ladder_x - 0.8 * post, -0.42 * m.sy, z), (ladder_x - 0.2 * post, -0.25 * m.sy, z + 0.025 * m.sz),
+              rounded=0.0)
 
 
 def _books_row(m: Model, x0: float, x1: float, y0: float, y1: float, z: float, height: float) -> None:
