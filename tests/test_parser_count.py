@@ -273,5 +273,6 @@ def test_several_stacks_stand_as_that_many_columns():
 
     parsed = parse_scene("Three stacks of metal crates stand along the left wall.")
     assert len(parsed.objects) == 9 and {o.formation_lines for o in parsed.objects} == {3}
-    columns = [r for r in stack_relations(parsed.objects, parsed.relations) if r.relation == "side of"]
-    assert len(columns) == 2  # three columns of three, each foot beside the one before
+    stacked = {(r.source, r.target) for r in stack_relations(parsed.objects, parsed.relations) if r.relation == "on"}
+    assert stacked == {("crate_4", "crate_1"), ("crate_5", "crate_2"), ("crate_6", "crate_3"), ("crate_7", "crate_4"),
+                       ("crate_8", "crate_5"), ("crate_9", "crate_6")}  # three columns of three on the first three

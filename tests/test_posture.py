@@ -122,3 +122,8 @@ def test_a_long_flat_thing_leant_against_a_wall_stands_on_its_end():
     sizes = {o.name: o.size for o in pose(parsed)}
     assert sizes["pair of skis"] == (0.2, 0.1, 1.8)  # its length now its height
     assert sizes["mattress"][2] < 0.3  # lying where it lies
+
+
+def test_one_who_rides_on_nothing_named_stands():
+    sizes = {o.name: o.size for o in pose(parse_scene("A cyclist rides past the newsstand. A knight rides a horse."))}
+    assert sizes["cyclist"][2] > 1.5 and sizes["knight"][2] < 1.2

@@ -42,7 +42,8 @@ def members(objects: list[ParsedObject]) -> dict[int, list[ParsedObject]]:
 
 def stack_relations(objects: list[ParsedObject], relations: list[ParsedRelation]) -> list[ParsedRelation]:
     """"Three crates stacked": each member on the one below it, in columns no higher than
-    :data:`STACK_REACH`, each column's foot beside the one before. A stack on a host wide enough
+    :data:`STACK_REACH`, each column's foot beside the one before; "three stacks of crates" stand
+    as three columns, each foot where the text puts it. A stack on a host wide enough
     for several ("six crates stacked on a pallet") is a pile of layers: the first layer on the
     host, as many as its top takes, and each member above on the one under it."""
     size = {o.id: o.size for o in objects}
@@ -60,9 +61,11 @@ def stack_relations(objects: list[ParsedObject], relations: list[ParsedRelation]
                 for i in range(1, len(objs))
             ]
             continue
+        columns = objs[0].formation_lines
+        if columns:  # "three stacks of crates": the first few are the feet, each one after on the one a column back
+            out += [ParsedRelation(objs[i].id, "on", objs[i - columns].id, inferred=True) for i in range(columns, len(objs))]
+            continue
         high = max(1, int(STACK_REACH / max(height, 1e-3)))
-        if objs[0].formation_lines:  # "three stacks of crates": as many columns as it says
-            high = min(high, -(-len(objs) // objs[0].formation_lines))
         out += [
             ParsedRelation(objs[i].id, "on", objs[i - 1].id, inferred=True)
             if i % high

@@ -112,7 +112,8 @@ def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
     if any(vocabulary.carries(h, h, ("vehicles", "mounts")) for h in hosts):
         # riders sit ("a soldier on horseback", "children in the bus") unless they stand on it
         return None if _mentions(clause, vocabulary.postures["standing"]) else posture_in(clause) or "sitting"
-    found = posture_in(clause)
+    # one who rides past on nothing the text names stands ("a cyclist rides past the newsstand")
+    found = posture_in(clause if hosts else re.sub(r"\brid(?:es|ing)\b", "", clause))
     if found:
         return found
     if _mentions(clause, ("asleep", "sleeps", "sleeping", "naps", "napping")):

@@ -169,7 +169,9 @@ def _expand(reader: _Reader) -> list[ParsedRelation]:
     only rest on the one below, which the composition writes from the ``stack`` formation (one
     thing said once, not relations the text states between its members)."""
     out = _expand_relations(reader)
-    upper = {i for g, f in reader.formations.items() if f == "stack" for i in reader.groups[g].ids[1:]}
+    # ("three stacks of crates": the first three are the feet of three stacks)
+    feet = {g: reader.lines.get(g, 1) for g, f in reader.formations.items() if f == "stack"}
+    upper = {i for g, n in feet.items() for i in reader.groups[g].ids[n:]}
     return [r for r in out if r.source not in upper]
 
 
