@@ -1737,3 +1737,14 @@ def test_a_fronted_host_before_every_one_of_a_group_gives_each_their_own():
     count = Counter(o.name for o in parsed.objects)
     assert count["workbench"] == 1 and count["cake stand"] == 6 and count["cake"] == 6
     assert ("cake_stand_6", "in front of", "student_6") in rels(text)
+
+
+def test_people_at_things_one_works_at_alone_have_one_each():
+    parsed = parse_scene("Eight students stand at easels around the platform. Two men eat at tables.")
+    count = Counter(o.category for o in parsed.objects)
+    assert count["easel"] == 8 and count["table"] == 3  # tables may be shared
+
+
+def test_an_animal_noun_before_a_part_names_the_parts_kind():
+    parsed = parse_scene("Two cargo loaders on caterpillar tracks wait on a bench. A caterpillar crawls on a leaf.")
+    assert Counter(o.name for o in parsed.objects)["caterpillar"] == 1

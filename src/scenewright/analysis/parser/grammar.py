@@ -128,6 +128,8 @@ _HAND_VOLUME = 0.06
 _CARRY_VOLUME = 0.25
 #: The longest side (m) of a tool a person works with in hand ("a long paddle", "a telescope").
 _TOOL_SIZE = 1.6
+#: What one person works at alone: people "at easels" have one each ("at tables" may share them).
+_ONE_AT_A_TIME = frozenset({"easel", "lectern", "school_desk", "desk", "monitor"})
 #: Depth (m) at most of a board or a frame that hangs or leans rather than stands.
 _THIN = 0.12
 #: Words that open a relative clause about the noun before them.

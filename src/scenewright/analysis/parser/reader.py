@@ -30,6 +30,7 @@ from scenewright.analysis.parser.grammar import (
     _MAKESHIFT_HEIGHT,
     _MAKESHIFT_LENGTH,
     _NARROW_TOP,
+    _ONE_AT_A_TIME,
     _OWN_SIDES,
     _PERSONAL,
     _PERSON_POSSESSIVES,
@@ -2359,6 +2360,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._uncounted_new(tm) and self._handheld(targets[0])
         ):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "two hackers hunch over laptops": one each
+        elif tm is not None and kind == "at" and len(srcs) == 1 and self._person_at(srcs[0]) and (
+            self._uncounted_new(tm) and self.groups[targets[0]].category in _ONE_AT_A_TIME
+        ):
+            self.groups[targets[0]].count = self.groups[srcs[0]].count  # "eight students stand at easels": one each
         elif tm is not None and kind == "hanging from" and len(srcs) == 1 and self._hooks_each(tm):
             self.groups[targets[0]].count = self.groups[srcs[0]].count  # "a dozen lanterns hang from posts": one each
         sitter = self._seat_owner(c, srcs, tm) if tm is not None else None
