@@ -159,3 +159,16 @@ def test_what_the_text_puts_in_the_middle_stays_there():
     parsed = parse_scene("A shop: two glass display cabinets stand along the back wall. A rocking horse and a gramophone "
                          "stand in the middle of the floor, and three oil paintings hang on the right wall.")
     assert not any(r.source == "radio_1" or r.target == "rocking_horse_1" for r in parsed.relations)
+
+
+def test_what_stands_by_a_thing_on_a_stage_shares_the_stage_unless_it_also_stands_by_the_floor():
+    def on(text):
+        return {(r.source, r.target) for r in parse_scene(text).relations if r.relation == "on"}
+
+    band = on("A ballroom. A jazz band plays on a low stage. A singer stands at a microphone in front of the band.")
+    assert {("microphone_1", "stage_1"), ("singer_1", "stage_1")} <= band
+    hall = on("A village hall. A piano stands on the stage. A cake stall waits by the door. Between the piano and the "
+              "cake stall, a terrier sniffs.")
+    assert ("dog_1", "stage_1") not in hall
+    farm = on("Robots wade through the terraces. A farmer sits on a bamboo platform, steering the robots.")
+    assert not {s for s, t in farm if s.startswith("robot")}

@@ -125,14 +125,16 @@ def _on_shared_floor(objects: list[ParsedObject], relations: list[ParsedRelation
     """What the text sets by, before or behind a thing standing on a stage, a pier or a raft
     stands on that floor too ("On the stage, a manger ...; three lambs kneel around the manger,
     and a donkey stands behind it": on the stage): people, animals and things a person's size,
-    no vehicle, nothing put anywhere else. A chain of them shares it ("a singer at a microphone
-    in front of the band")."""
+    no vehicle, nothing put anywhere else, nothing also set by a thing on another floor or on
+    the ground. A chain of them shares it ("a singer at a microphone in front of the band")."""
     by_id = {o.id: o for o in objects}
     vocabulary = load_vocabulary()
     placed = {r.source for r in relations if r.relation in ("on", "above")}
     floor_of = {r.source: r.target for r in relations if r.relation == "on"}
-    pairs = [(by_id[r.source], by_id[r.target]) for r in relations if r.relation in _HORIZONTAL and not r.inferred]
-    pairs += [(b, a) for a, b in pairs]
+    partners: dict[str, set[str]] = {}  # what the text sets each thing by (it, not they, is placed)
+    for r in relations:
+        if r.relation in _HORIZONTAL and not r.inferred:
+            partners.setdefault(r.source, set()).add(r.target)
 
     def shares(thing: ParsedObject, floor: ParsedObject) -> bool:
         if (thing.rests or catalogue[thing.category].rests) != "ground" or thing.anchor is not None:
@@ -147,12 +149,14 @@ def _on_shared_floor(objects: list[ParsedObject], relations: list[ParsedRelation
     changed = True
     while changed:  # ("a singer at a microphone in front of the band": the microphone first, then the singer)
         changed = False
-        for thing, partner in pairs:
-            floor = floor_of.get(partner.id) or out.get(partner.id)
-            if thing.id in placed or thing.id in out or floor is None or floor == thing.id:
+        for thing, by in partners.items():
+            # one floor under all it stands by ("between the piano on the stage and the stall": on neither)
+            floors = {floor_of.get(p) or out.get(p) for p in by}
+            floor = floors.pop() if len(floors) == 1 else None
+            if thing in placed or thing in out or floor is None or floor == thing:
                 continue
-            if shares(thing, by_id[floor]):
-                out[thing.id] = floor
+            if shares(by_id[thing], by_id[floor]):
+                out[thing] = floor
                 changed = True
     return [ParsedRelation(thing, "on", floor, inferred=True) for thing, floor in out.items()]
 
