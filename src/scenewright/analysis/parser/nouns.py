@@ -496,8 +496,11 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             not _joint_verb(toks, e, cat)
         ):  # ("a dog and a cat play": the verb of both)
             continue  # "a stone path", "a glass roof": an adjective here
-        if alive and len(words) == 1 and follow in vocabulary.parts and follow not in vocabulary.body_parts:
-            continue  # "cargo loaders on caterpillar tracks", "a dog leash": the part's kind, no animal
+        # "cargo loaders on caterpillar tracks wait": the parts' kind, no animal ("a cat curls up" has a verb)
+        verb_after = e + 1 < n and toks[e + 1].text in _STOP
+        parts_kind = follow in vocabulary.parts and singular(follow) != follow and not verb_after
+        if shape in ("animal", "bird") and len(words) == 1 and parts_kind:
+            continue
         after = singular(toks[e + 1].text) if e + 1 < n else "."
         if not alive and follow.endswith("ing") and (after in _ACTIVITIES or vocabulary.names_place(after)):
             continue  # "a cake decorating class", "a bread baking stall": what the activity is about
