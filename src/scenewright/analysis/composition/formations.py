@@ -63,7 +63,9 @@ def stack_relations(objects: list[ParsedObject], relations: list[ParsedRelation]
             continue
         columns = objs[0].formation_lines
         if columns:  # "three stacks of crates": the first few are the feet, each one after on the one a column back
-            out += [ParsedRelation(objs[i].id, "on", objs[i - columns].id, inferred=True) for i in range(columns, len(objs))]
+            out += [
+                ParsedRelation(objs[i].id, "on", objs[i - columns].id, inferred=True) for i in range(columns, len(objs))
+            ]
             continue
         high = max(1, int(STACK_REACH / max(height, 1e-3)))
         out += [

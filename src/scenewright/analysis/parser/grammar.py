@@ -11,8 +11,9 @@ from scenewright.analysis.parser.words import _OWNER_PRONOUNS
 #: Phrases that place a group in a formation rather than by a target.
 _FORMATIONS = ("row", "rows", "stack", "circle")
 #: Quantity nouns that set their things out in a formation ("a row of stalls", "two rows of chairs").
-_FORMATION_NOUNS = {"row": "row", "line": "row", "rows": "rows", "lines": "rows", "stack": "stack", "pile": "stack", "heap": "stack",
-                    "stacks": "stack", "piles": "stack", "heaps": "stack", "ring": "circle", "circle": "circle"}  # fmt: skip
+_FORMATION_NOUNS = {"row": "row", "line": "row", "rows": "rows", "lines": "rows", "stack": "stack", "pile": "stack",
+                    "heap": "stack", "stacks": "stack", "piles": "stack", "heaps": "stack", "ring": "circle",
+                    "circle": "circle"}  # fmt: skip
 #: Phrase kinds that, with no object after them, name a part of the room ("along the back wall").
 _PLACE_KINDS = {"centre of": "anchor centre", "along": None, "leaning on": None, "foot of": None, "at": None,
                 "end of": None, "covering": None}  # fmt: skip

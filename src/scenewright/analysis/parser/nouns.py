@@ -508,7 +508,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         if s > 0 and toks[s - 1].text in _PROJECTED and not projector:
             cat, entry = "hologram", None  # "holographic koi" are light, not fish: place and size them as one
         animal = vocabulary.animal_senses.get(singular(words[-1])) if len(words) == 1 else None
-        if animal is not None and ((_verb_after(toks, e) or ("",))[0] in vocabulary.animal_only_verbs or _haunt(toks, e)):
+        animal_verb = (_verb_after(toks, e) or ("",))[0] in vocabulary.animal_only_verbs
+        if animal is not None and (animal_verb or _haunt(toks, e)):
             cat, entry = animal.category, animal  # "two cranes wade in the reeds", "stands in the shallows": birds
         person = vocabulary.person_senses.get(singular(words[-1])) if len(words) == 1 else None
         if person is not None and (_as_person(toks, e) or _looks_like_person(toks, s)):
@@ -1610,7 +1611,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         again = w == "the" and any(singular(toks[h].text) == one for h, *_ in out) and not _named_before(toks, head)
         # "paper moons and stars hang from the ceiling", "a cardboard moon": a made likeness of a sky thing
         crafted = one in _SKY_THINGS and (toks[head - 1].text in _CRAFT_WORDS or w in _CRAFT_WORDS)
-        if not (vocabulary.is_thing_word(word) or held or counted_place or stock or compound or loose or again or crafted) or (
+        named = vocabulary.is_thing_word(word) or held or counted_place or stock or compound or loose or again
+        if not (named or crafted) or (
             word in _QUANTITY and not counted_place and not compound and not members
         ) or (j < n and toks[j].text == "of" and not filled):
             continue  # "a sunny afternoon", "a pair of", "a sense of calm", "a boy in a red cap"
@@ -2034,7 +2036,7 @@ def _buildings(toks: list[_Tok], covered: set[int]) -> list:
             ):
                 j -= 1  # back over describing words ("the little waiting room", "a false-front saloon")
             # "a saloon stands on the left": a building a clause opens with, standing somewhere
-            # ("a street corner: a café with red awnings has four tables": after the setting, one with parts of its own)
+            # ("a street corner: a café with red awnings has four tables": after the setting, one with parts)
             standing = after in _BUILDING_STANDS or after == "with" and j > 0
             stands = j >= 0 and toks[j].text in ("a", "an") and standing and (
                 j == 0 or toks[j - 1].text in (".", "!", "?", ";", ",", "and", ":")
@@ -2934,8 +2936,8 @@ def _bare(toks: list[_Tok], s: int) -> bool:
 #: Words in the plural that name a kind of the noun after them ("two customs officers", "a sports car").
 _PLURAL_KINDS = {"customs", "sports", "goods", "savings", "news"}
 #: Nouns whose plural is written as the singular: several when no determiner or count comes before.
-_SAME_PLURALS = {"sheep", "deer", "reindeer", "moose", "bison", "elk", "fish", "salmon", "trout", "swine", "cattle", "koi",
-                 "carp", "cod", "tuna", "mackerel"}  # fmt: skip
+_SAME_PLURALS = {"sheep", "deer", "reindeer", "moose", "bison", "elk", "fish", "salmon", "trout", "swine", "cattle",
+                 "koi", "carp", "cod", "tuna", "mackerel"}  # fmt: skip
 #: Nouns of an activity a thing's noun and a verb's -ing form may name ("a cake decorating class").
 _ACTIVITIES = {"class", "lesson", "session", "club", "course", "demonstration", "contest", "competition", "workshop"}
 #: Things of the sky, and the words that make one a thing people made ("paper moons", "a tin star").

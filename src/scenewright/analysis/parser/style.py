@@ -488,7 +488,8 @@ def _is_indoor(categories: list[str], text: str, catalogue, places: list[str] = 
     votes += 2 * (bool(_ROOM_WORD.search(setting)) + bool(_ROOM_WORD.search(opening)))  # "a playroom", "a tearoom"
     for word in ("kitchen", "bedroom", "bathroom", "office", "classroom", "lab", "apartment", "studio", "café",
                  "cafe", "shop", "store", "boutique", "gallery", "hall", "interior", "indoors", "smithy", "forge",
-                 "workshop", "cave", "cavern", _ROOM_BAY, "terminal", "departure lounge", "airport gate", "boarding gate"):
+                 "workshop", "cave", "cavern", _ROOM_BAY, "terminal", "departure lounge", "airport gate",
+                 "boarding gate"):
         votes += 2 * (bool(re.search(rf"\b{word}\b", setting)) + bool(re.search(rf"\b{word}\b", opening)))
     for word in ("street", "park", "garden", "square", "market", "beach", "forest", "yard", "outdoor", "harbour",
                  "harbor", "village", "desert", "planet", "courtyard", "playground", "campsite", "field"):

@@ -33,7 +33,8 @@ def tree(m: Model) -> None:
         d = m.vary(0.22, 0.3)
         s = m.vary(0.18, 0.24)
         z = trunk_top + m.vary(0.3, 0.65) * canopy_h
-        m.ball(m.main, (np.cos(a) * d * m.sx, np.sin(a) * d * m.sy, z), (s * m.sx, s * m.sy, s * 1.2 * canopy_h), fraction=0.7)
+        centre = (np.cos(a) * d * m.sx, np.sin(a) * d * m.sy, z)
+        m.ball(m.main, centre, (s * m.sx, s * m.sy, s * 1.2 * canopy_h), fraction=0.7)
 
 
 def pine_tree(m: Model) -> None:
