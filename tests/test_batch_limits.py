@@ -231,4 +231,7 @@ def test_on_ray_the_limits_are_shared_too(openai_server, tmp_path):
         assert record.totals()["done"] == 4, [o.reason for o in record.outcomes.values()]
         assert mesh_server.peak == 1 and len(mesh_server.submitted) == 4 * 3
     assert counter.total == 4 * 8 and counter.peak <= K
-    assert _most_in_any_window(counter.arrivals) <= 11  # 0.1 s apart: 10 a second, 11 with a late one
+    # 0.1 s apart: 20 in any two seconds, 22 when a loaded machine lets two late ones arrive together (a
+    # one-second window saw 12 under the parallel suite, as the test above once did); unlimited, the four
+    # tasks' 32 requests would all arrive in the first second or two
+    assert _most_in_any_window(counter.arrivals, seconds=2.0) <= 22
