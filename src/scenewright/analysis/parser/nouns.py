@@ -1627,7 +1627,7 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         opening = i == 0 or not toks[i - 1].text[:1].isalpha()
         placed = w == "the" and j < n and (opening and toks[j].text in _PLACING_VERBS or toks[j].text in _STANDING)
         # "...; his leather glove lies on it": a thing of his that a clause opens with, put somewhere
-        placing = j < n and (toks[j].text in _PLACING_VERBS or f"{toks[j].text}s" in _PLACING_VERBS)
+        placing = j < n and _placing(toks[j].text)
         put = owner and opening and placing and j + 1 < n and toks[j + 1].text in _STOP
         # ("near", "by" and "past" the landmarks and the fittings of a place too: "near the airlock";
         # what hangs "above" one is no place either: "a hook above the loading pit")
@@ -2084,7 +2084,7 @@ def _loose_parts(toks: list[_Tok], covered: set[int]) -> list:
         # its own subject, with a verb of its number: not "a mushroom with a tiny door stands" (whose
         # door it is), nor "a sieve on a wooden frame stand" (the verb of a plural subject before)
         whose = j > 0 and toks[j - 1].text in ("with", "of", "has", "have", "having")
-        placing = after in _PLACING_VERBS or f"{after}s" in _PLACING_VERBS or after in ("is", "are")  # ("chains lie")
+        placing = _placing(after) or after in ("is", "are")  # ("chains lie")
         verb = placing and after.endswith("s") == (opener in ("a", "an"))
         counted = opener in ("a", "an") or opener in _NUMBERS
         # (a bare plural that opens a sentence too: "Chains hang from the ceiling")
@@ -2292,7 +2292,7 @@ def _laid_out(toks: list[_Tok], head: int, j: int) -> bool:
     after = toks[j].text
     if after in ("is", "are", "was", "were") and j + 1 < len(toks):
         after = toks[j + 1].text
-    return after in _LAID or after in _PLACING_VERBS or after + "s" in _PLACING_VERBS
+    return after in _LAID or _placing(after)
 
 
 def _opens_phrase(toks: list[_Tok], k: int) -> bool:
@@ -2314,11 +2314,16 @@ _PLACING_VERBS = _HANG_VERBS | {"stands", "sits", "lies", "rises", "rests", "lea
 _WHOLE_PARTS = {"hull", "chassis", "fuselage", "frame", "carcass"}
 
 
+def _placing(word: str) -> bool:
+    """A verb that puts its subject somewhere, in either number ("lies", "lean")."""
+    return word in _PLACING_VERBS or f"{word}s" in _PLACING_VERBS
+
+
 def _placed_verb(toks: list[_Tok], k: int) -> bool:
     """A verb at ``k`` that puts its subject somewhere, in either number ("lies", "lean", "are piled")."""
     word = toks[k].text
     laid = k + 1 < len(toks) and (toks[k + 1].text in _LAID or toks[k + 1].text in _STANDING)
-    return word in _PLACING_VERBS or f"{word}s" in _PLACING_VERBS or (word in ("are", "is") and laid)
+    return _placing(word) or (word in ("are", "is") and laid)
 
 
 def _unknown_heads(toks: list[_Tok], raw: list, covered: set[int]) -> list:
@@ -2454,7 +2459,7 @@ def _haunt(toks: list[_Tok], k: int) -> bool:
     in the shallows"; not what it does there: "a crane lifts a crate by the pond")."""
     clause = [t.text for t in itertools.takewhile(lambda t: t.text[:1].isalpha(), toks[k : k + 6])]
     haunts = load_vocabulary().animal_haunts
-    return bool(clause) and bool(_PLACING_VERBS & {clause[0], f"{clause[0]}s"}) and any(
+    return bool(clause) and _placing(clause[0]) and any(
         " ".join(clause[j : j + n]) in haunts for j in range(len(clause)) for n in (1, 2)
     )
 
