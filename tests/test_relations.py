@@ -276,3 +276,31 @@ def test_above_offers_its_lowest_level_whatever_the_initial_height(initial, half
     assert min(heights) == pytest.approx(lowest) and heights[0] == pytest.approx(max(initial, lowest))
     for z in heights:
         assert check("above", box("s", size=(0.2, 0.2, 2 * half), z=float(z)), T)
+
+
+@settings(max_examples=40, deadline=None)
+@given(yaw=st.floats(-180, 180), name=st.sampled_from(["trawler", "rowing boat", "yacht"]), seed=st.integers(0, 1000))
+def test_what_is_put_on_a_boat_stands_on_its_deck_clear_of_the_cabin(yaw, name, seed):
+    """A boat's top for ``on`` is its deck (a motor boat's before its cabin, an open boat's floor):
+    the check, the solver's candidates and their height agree, wherever the boat is turned."""
+    from scenewright.core.vessels import deck_area, deck_share
+    from scenewright.layout.relations import rest_area, rest_share, source_heights
+
+    boat = box("b", 1.0, -2.0, size=(4.0, 13.0, 5.0), yaw=yaw).model_copy(update={"category": "boat", "name": name})
+    words = f"{name} boat"
+    assert rest_share(boat) == deck_share(words, (4.0, 13.0, 5.0))
+    assert tuple(rest_area(boat)) == deck_area(words, (4.0, 13.0, 5.0))
+    target = Boxes.of(boat)
+    half = np.array([0.25, 0.15, 0.9])
+    pts = propose("on", half, target, np.array([1.0, -2.0]), np.random.default_rng(seed))
+    (z,) = source_heights("on", 0.9, target, 0.0)
+    assert z == pytest.approx(rest_share(boat) * 5.0 + 0.9)
+    ok = holds("on", Boxes.at(np.column_stack([pts, np.full(len(pts), z)]), half, np.zeros(len(pts))), target)
+    assert ok.all()
+    a = np.radians(yaw)
+    local = (pts - [1.0, -2.0]) @ np.array([[np.cos(a), -np.sin(a)], [np.sin(a), np.cos(a)]])
+    x0, y0, x1, y1 = deck_area(words, (4.0, 13.0, 5.0))
+    assert np.all((local[:, 0] >= x0 * 2.0 - 1e-6) & (local[:, 0] <= x1 * 2.0 + 1e-6))
+    assert np.all((local[:, 1] >= y0 * 6.5 - 1e-6) & (local[:, 1] <= y1 * 6.5 + 1e-6))
+    at_centre = box("p", 1.0, -2.0, size=(0.5, 0.3, 1.8), z=z)
+    assert check("on", at_centre, boat) == (y0 <= 0.0 <= y1)  # a trawler's middle is its cabin

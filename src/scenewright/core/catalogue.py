@@ -124,6 +124,11 @@ def words(text: str) -> list[str]:
     return _WORD.findall(text.lower().replace("’", "'"))
 
 
+def mentions(text: str, words) -> bool:
+    """Whether ``text`` uses one of ``words`` whole, or its plural ("canoes")."""
+    return any(re.search(rf"\b{re.escape(w)}(?:e?s)?\b", text) for w in words)
+
+
 def singular(word: str) -> str:
     """The singular of an English plural noun, by the common suffix rules."""
     if word in _IRREGULAR:

@@ -58,6 +58,7 @@ import numpy as np
 
 from scenewright.core.catalogue import load_catalogue
 from scenewright.core.relations import ABOVE, BUFFER, FACE_DEGREES, FAR, NEAR, ON_GAP
+from scenewright.core.vessels import deck_area, deck_share
 from scenewright.geometry import front_direction, rotation_matrix, world_box
 from scenewright.scene import RELATION_TYPES, ROOM_RELATIONS, ROOM_TARGET, Room, SceneObject, Vec3, room_target
 
@@ -82,10 +83,28 @@ FRONT_NORMAL, FRONT_PENALTY = 0.7, 4.0
 def rest_share(obj: SceneObject) -> float:
     """Share of ``obj``'s height where a thing put on it rests: 1 (its top) unless its catalogue
     category says lower (``rest_height``: a seat under its backrest, a mattress under its headboard;
-    ``rest_inside``: a cage's floor; the procedural mesh has its surface there)."""
+    ``rest_inside``: a cage's floor) or it is a boat (its deck, by its words); the procedural mesh
+    has its surface there."""
     category = load_catalogue().get(obj.category) if obj.category else None
+    if category is not None and category.shape == "boat":
+        return deck_share(_boat_words(obj), obj.size.tuple())
     share = category.rest_for(obj.name) if category is not None else None
     return share or 1.0
+
+
+def rest_area(obj: SceneObject) -> np.ndarray | None:
+    """The part of ``obj``'s footprint things put on it stand on, as shares (x0, y0, x1, y1) of
+    its half extents in its own frame, when that is not all of it: a boat's open deck, clear of
+    its cabin and off the point of its bow (:func:`scenewright.core.vessels.deck_area`)."""
+    category = load_catalogue().get(obj.category) if obj.category else None
+    if category is None or category.shape != "boat":
+        return None
+    return np.array(deck_area(_boat_words(obj), obj.size.tuple()), dtype=float)
+
+
+def _boat_words(obj: SceneObject) -> str:
+    """A boat's words as its procedural mesh reads them: name, category, description."""
+    return f"{obj.name} {obj.category} {obj.visual_description}".lower().replace("_", " ")
 
 
 @dataclass(frozen=True)
@@ -94,13 +113,15 @@ class Boxes:
     footprints: half extents (..., 2) of the plan rectangle in the object's yaw frame. Without
     ``foot`` the footprint is the world box's own (an axis-aligned shape). ``rest`` (shape (...)
     or scalar, :func:`rest_share`) is the share of each box's height where things put on it rest;
-    None is the top."""
+    None is the top. ``area`` (shape (..., 4), :func:`rest_area`) is the part of the footprint
+    they stand on; None is all of it."""
 
     lo: np.ndarray
     hi: np.ndarray
     yaw: np.ndarray
     foot: np.ndarray | None = None
     rest: np.ndarray | float | None = None
+    area: np.ndarray | None = None
 
     @property
     def centre(self) -> np.ndarray:
@@ -114,21 +135,24 @@ class Boxes:
         return self.lo[..., 2] + np.asarray(self.rest) * (self.hi[..., 2] - self.lo[..., 2])
 
     @classmethod
-    def at(cls, centre: np.ndarray, half: np.ndarray, yaw, foot: np.ndarray | None = None, rest=None) -> Boxes:
+    def at(cls, centre: np.ndarray, half: np.ndarray, yaw, foot: np.ndarray | None = None, rest=None, area=None) -> Boxes:
         centre = np.asarray(centre, dtype=float)
-        return cls(centre - half, centre + half, np.asarray(yaw, dtype=float), foot, rest)
+        return cls(centre - half, centre + half, np.asarray(yaw, dtype=float), foot, rest, area)
 
     @classmethod
     def of(cls, obj: SceneObject) -> Boxes:
         lo, hi = world_box(obj)
-        return cls(lo, hi, np.asarray(obj.yaw, dtype=float), footprint_half(obj.size, obj.rotation), rest_share(obj))
+        return cls(
+            lo, hi, np.asarray(obj.yaw, dtype=float), footprint_half(obj.size, obj.rotation), rest_share(obj), rest_area(obj)
+        )
 
     def __getitem__(self, k) -> Boxes:
         """The boxes selected by an index or mask over the leading axis."""
         shape = self.lo.shape[:-1]
         return Boxes(self.lo[k], self.hi[k], np.broadcast_to(self.yaw, shape)[k],
                      None if self.foot is None else np.broadcast_to(self.foot, shape + (2,))[k],
-                     None if self.rest is None else np.broadcast_to(self.rest, shape)[k])
+                     None if self.rest is None else np.broadcast_to(self.rest, shape)[k],
+                     None if self.area is None else np.broadcast_to(self.area, shape + (4,))[k])
 
 
 def half_extents(size: Vec3, rotation: Vec3, yaws=None) -> np.ndarray:
@@ -222,9 +246,19 @@ def _footprint_overlap(a: Boxes, b: Boxes) -> np.ndarray:
     return _separation(*_rectangle(a), *_rectangle(b)) < -EPS
 
 
+def _rest_rectangle(b: Boxes) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The part of a footprint things put on it stand on (its ``area``), as :func:`_rectangle`."""
+    centre, half, axes = _rectangle(b)
+    if b.area is None:
+        return centre, half, axes
+    area = np.broadcast_to(b.area, centre.shape[:-1] + (4,))
+    lo, hi = area[..., :2] * half, area[..., 2:] * half
+    return centre + np.einsum("...i,...ij->...j", (lo + hi) / 2.0, axes), (hi - lo) / 2.0, axes
+
+
 def _centre_off(a: Boxes, b: Boxes) -> np.ndarray:
-    """How far ``a``'s centre lies outside ``b``'s footprint in plan (0 over it)."""
-    return _to_rectangle(a.centre[..., None, :2], *_rectangle(b))[..., 0]
+    """How far ``a``'s centre lies outside the part of ``b``'s footprint things stand on (0 over it)."""
+    return _to_rectangle(a.centre[..., None, :2], *_rest_rectangle(b))[..., 0]
 
 
 def _footprint_miss(a: Boxes, b: Boxes) -> np.ndarray:
@@ -411,7 +445,11 @@ def propose(
         # Over a turned target, work in its own frame, where its footprint is a rectangle.
         origin, _, axes = _rectangle(target)
         turned = np.abs(axes @ np.array([[half[0], 0.0], [0.0, half[1]]])).sum(-1)  # source box in that frame
-        local = Boxes.at(np.zeros(3), np.append(target.foot, 0.0), 0.0)
+        if relation == "on" and target.area is not None:  # (only the part things stand on)
+            lo, hi = target.area[:2] * target.foot, target.area[2:] * target.foot
+            local = Boxes.at(np.append((lo + hi) / 2.0, 0.0), np.append((hi - lo) / 2.0, 0.0), 0.0)
+        else:
+            local = Boxes.at(np.zeros(3), np.append(target.foot, 0.0), 0.0)
         regions = _region(relation, turned, local)
     else:
         regions = _region(relation, half, target)

@@ -64,6 +64,7 @@ from scenewright.layout.relations import (
     RoomTarget,
     footprint_half,
     half_extents,
+    rest_area,
     rest_share,
     rotated_half,
     tilt_matrix,
@@ -249,6 +250,7 @@ class _Item:
     half_z: float
     foot: np.ndarray  # footprint half extents in its own yaw frame
     rest: float  # share of its height where things put on it rest (relations.rest_share)
+    area: np.ndarray | None  # the part of its footprint they stand on (relations.rest_area)
     own: list[tuple[Constraint, int]]  # this object is the source; (constraint, target)
     reverse: list[tuple[Constraint, int]]  # a fixed object is the source; (constraint, source)
     yaws: tuple[float, ...]  # yaws it may take when no facing decides
@@ -334,7 +336,7 @@ class _Search:
             self.items[i] = _Item(
                 i, o, np.array(o.size.tuple()) / 2, tilt_matrix(o.rotation),
                 float(half_extents(o.size, o.rotation)[2]), footprint_half(o.size, o.rotation), rest_share(o),
-                own[i], reverse[i], yaws, walls[i],
+                rest_area(o), own[i], reverse[i], yaws, walls[i],
             )
         #: Objects with a constraint on each object, for forward checking and re-checks.
         self.dependents: dict[int, list[int]] = {i: [] for i in range(n)}
@@ -426,10 +428,11 @@ class _Search:
         return any(t in self.missed for _, t in item.own)
 
     def box(self, i: int) -> Boxes:
-        return Boxes(self.lo[i], self.hi[i], self.yaw[i], self.items[i].foot, self.items[i].rest)
+        item = self.items[i]
+        return Boxes(self.lo[i], self.hi[i], self.yaw[i], item.foot, item.rest, item.area)
 
     def boxes_of(self, item: _Item, centres: np.ndarray, yaws: np.ndarray) -> Boxes:
-        return Boxes.at(centres, rotated_half(item.half, item.tilt, yaws), yaws, item.foot, item.rest)
+        return Boxes.at(centres, rotated_half(item.half, item.tilt, yaws), yaws, item.foot, item.rest, item.area)
 
     # --- candidates ----------------------------------------------------------------------
 

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from scenewright.core.catalogue import mentions
 from scenewright.geometry import SCENE_TO_GLTF
 from scenewright.gltf import GltfWriter, srgb_to_linear
 from scenewright.procedural import parts as P
@@ -112,11 +113,11 @@ class Model:
 
     def has(self, *words: str) -> bool:
         """Whether the name or description uses one of the words (an attribute: round, claw-foot)."""
-        return _mentions(self.text, words)
+        return mentions(self.text, words)
 
     def named(self, *words: str) -> bool:
         """Whether the object *is* one of these (its name or category), not merely described with it."""
-        return _mentions(self.name, words)
+        return mentions(self.name, words)
 
     def first_named(self, variants):
         """The build of the variant whose word comes first in the name, or ``None``: a name is
@@ -237,10 +238,6 @@ class Model:
         sides = (((-x, -y, 0), (x, -y + t, h)), ((-x, y - t, 0), (x, y, h)),
                  ((-x, -y, 0), (-x + t, y, h)), ((x - t, -y, 0), (x, y, h)))
         return P.merge([P.box(lo, hi) for lo, hi in sides])
-
-
-def _mentions(text: str, words) -> bool:
-    return any(re.search(rf"\b{re.escape(w)}(?:e?s)?\b", text) for w in words)
 
 
 def gltf_material(name: str, s: Surface) -> dict:

@@ -18,6 +18,7 @@ from scenewright.analysis.composition import roles
 from scenewright.analysis.parser import ParsedObject, ParsedScene
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.core.catalogue import load_catalogue
+from scenewright.core.vessels import is_open
 
 #: Kneeling first: one who kneels on a cushion or a mat kneels there (the reader counts the
 #: verbs of kneeling among those of sitting, for what carries them).
@@ -81,6 +82,17 @@ def _clause_of(parsed: ParsedScene, obj: ParsedObject) -> str:
     return ""
 
 
+def _hosts(parsed: ParsedScene, obj: ParsedObject) -> list[ParsedObject]:
+    """What the parse puts ``obj`` on."""
+    by_id = {o.id: o for o in parsed.objects}
+    return [by_id[r.target] for r in parsed.relations if r.source == obj.id and r.relation == "on" and r.target in by_id]
+
+
+def _words(obj: ParsedObject) -> str:
+    """An object's name, category and description, lower case, as its procedural mesh reads them."""
+    return f"{obj.name} {obj.category} {obj.description}".lower().replace("_", " ")
+
+
 def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
     """Kneeling, sitting, lying or ``None`` for a person of the parse; ``None`` for anything else.
 
@@ -96,8 +108,7 @@ def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
     clause = _clause_of(parsed, obj)
     if "kneeling" in (posture_in(clause), posture_in(obj.description)):
         return "kneeling"  # on whatever carries them ("kneels on a tatami mat")
-    by_id = {o.id: o for o in parsed.objects}
-    hosts = [by_id[r.target].category for r in parsed.relations if r.source == obj.id and r.relation == "on" and r.target in by_id]
+    hosts = [o.category for o in _hosts(parsed, obj)]
     if hosts and all(h in FLOOR_COVERS for h in hosts):
         if _mentions(clause, load_vocabulary().postures["standing"]):
             return None
@@ -109,8 +120,10 @@ def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
     if any(h in SITTING_HOSTS for h in hosts):
         return "sitting"
     vocabulary = load_vocabulary()
-    if any(vocabulary.carries(h, h, ("vehicles", "mounts")) for h in hosts):
-        # riders sit ("a soldier on horseback", "children in the bus") unless they stand on it
+    decked = [o for o in _hosts(parsed, obj) if load_catalogue()[o.category].shape == "boat" and not is_open(_words(o))]
+    if any(vocabulary.carries(h, h, ("vehicles", "mounts")) for h in hosts) and not decked:
+        # riders sit ("a soldier on horseback", "children in the bus") unless they stand on it;
+        # on a boat with a deck they stand ("fishermen unload crates from a trawler")
         return None if _mentions(clause, vocabulary.postures["standing"]) else posture_in(clause) or "sitting"
     # one who rides past on nothing the text names stands ("a cyclist rides past the newsstand")
     found = posture_in(clause if hosts else re.sub(r"\brid(?:es|ing)\b", "", clause))

@@ -74,16 +74,21 @@ def vessel(name: str, category: str | None) -> bool:
 
 
 def pier_ties(objects: list[ParsedObject], relations: list[ParsedRelation], text: str) -> set[tuple[str, str]]:
-    """Relations that tie a dry thing on the ground to a pier ("a barrel beside the jetty"), as
+    """Relations that tie a dry thing on the ground to a pier ("a barrel beside the jetty") or to
+    a boat moored at one ("fishermen unload crates from a trawler moored at the pier"), as
     (source, target): left out when the units are made, so the pier reaches out into the water
     with its boats while the thing waits on the shore by its land end (:func:`by_water`)."""
     piers = {o.id for o in objects if roles.kind(o.category) in REACHING}
     afloat = {o.id for o in objects if floats(o.name, o.category, text)}
     raised = {r.source for r in relations if r.relation in ("on", "above")}
+    moored = {
+        boat for r in relations if r.relation not in ("on", "above")
+        for boat, pier in ((r.source, r.target), (r.target, r.source)) if boat in afloat and pier in piers
+    }  # fmt: skip
     return {
         (r.source, r.target) for r in relations
         for pier, other in ((r.target, r.source), (r.source, r.target))
-        if pier in piers and other not in piers | afloat | raised and r.relation not in ("on", "above")
+        if pier in piers | moored and other not in piers | afloat | raised and r.relation not in ("on", "above")
     }  # fmt: skip
 
 

@@ -11,6 +11,7 @@ from scenewright.analysis.parser.grammar import (
     _LOADS,
     _LOAD_HOSTS,
     _LOAD_SIZE,
+    _SHELF_LOAD_SIZE,
     _MOUNTS,
     _POLE_BORNE,
     _VESSEL_KINDS,
@@ -134,7 +135,8 @@ class _Contents:
         marker = (self.toks[j - 1].text, w)
         host = self.catalogue[prev.category]
         vehicle = load_vocabulary().carries(prev.category, prev.phrase, ("vehicles",))  # ("a trailer stacked with hay bales")
-        if marker in _LOADS and (host.shape in _LOAD_HOSTS or host.support or vehicle) and max(self._size(m)) >= _LOAD_SIZE:
+        least = _SHELF_LOAD_SIZE if host.shape in ("bookshelf", "shop_shelf") else _LOAD_SIZE
+        if marker in _LOADS and (host.shape in _LOAD_HOSTS or host.support or vehicle) and max(self._size(m)) >= least:
             return False  # "a luggage cart piled with suitcases": they stand on the cart
         if marker in _PICTURE_MARKERS and j - prev.end <= 2:
             return True

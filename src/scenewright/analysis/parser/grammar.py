@@ -58,15 +58,18 @@ _DRIVING_PARTS = ("wheel", "helm", "tiller")
 _OWNER_PARTS = ("side", "sides", "front", "back", "top", "end", "edge", "base", "foot")
 #: "Piled with" or "covered in" on a cart, a stall, a shelf or anything with a top is a load of things
 #: standing on it when they are this big or bigger ("a cart piled with suitcases", "a desk covered in
-#: monitors", "a stall piled with crates of apples", "shelves packed with sacks"); smaller ones
+#: monitors", "a table covered with glass flasks", "a workbench covered in clay tools"); smaller ones
 #: ("piled with apples", "covered in crumbs") stay its contents, and so does what a thing is "filled
-#: with" ("shelves filled with boxes and bottles": its stock).
+#: with" ("shelves filled with boxes and bottles": its stock). Shelves draw their own stock, so only
+#: things of the larger size stand on them as objects ("shelves packed with sacks", not "a bookshelf
+#: packed with paperbacks").
 _LOADS = {("piled", "with"), ("stacked", "with"), ("heaped", "with"), ("covered", "in"), ("covered", "with"),
           ("packed", "with"), ("laden", "with"), ("loaded", "with"), ("lined", "with"), ("stocked", "with"),
           ("crammed", "with")}  # fmt: skip
 _LOAD_HOSTS = ("cart", "truck", "table", "round_table", "desk", "counter", "bookshelf", "shop_shelf", "market_stall",
                "boat")  # fmt: skip
-_LOAD_SIZE = 0.3
+_LOAD_SIZE = 0.15
+_SHELF_LOAD_SIZE = 0.3
 #: Things that show what follows their "of", even a definite one ("a statue of the king").
 _DEPICTIONS = ("statue", "hologram", "picture_frame", "sign", "billboard", "panel")
 #: Flat holders whose "of" things stand on them as objects ("a tray of bottles", "a pallet of tires").

@@ -288,6 +288,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         if entry is not None and e - s == 1 and nxt and nxt[0] == e and words[0] in vocabulary.adjectives:
             raw[k] = (s, s, cat, entry)  # "a baby elephant": a describing word before a noun ("a sleeping
             continue  # baby" ends its phrase: a baby)
+        if e - s == 1 and singular(words[0]) != words[0] and s > 1 and _worn(toks, s - 1, s):
+            raw[k] = (s, s, cat, entry)  # "a baker in a white apron slides loaves": the verb of who wears it
+            continue
         # the head of "suits of armour" is "suits": plural, so "two suits of armour guard the door" has a verb
         head = words[words.index("of") - 1] if "of" in words[1:] else words[-1] if words else ""
         # a singular noun before another names its kind ("glass table", "dragon statue"); a plural
@@ -383,7 +386,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         # helicopter"), unless it is a plural the verb of the noun before acts on ("a girl holds
         # balloons", "a clown juggles balls")
         plural = e - s == 1 and singular(words[-1]) != words[-1]
-        verb_of_noun = k > 0 and raw[k - 1][1] == s - 1 and _verb_of_one(toks, s - 1)
+        # (a word the reader already read as a verb has an empty span: "a baker slides loaves")
+        verb_of_noun = k > 0 and raw[k - 1][1] == s - 1 and (raw[k - 1][0] == s - 1 or _verb_of_one(toks, s - 1))
         verb_before = s > 0 and _is_verb(toks[s - 1].text) and not _opens_phrase(toks, s - 1) and not (plural and verb_of_noun)
         # "a robot with six arms ladles stew": a plural names no kind of the next word, so a plural
         # right after one is a verb
@@ -408,6 +412,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         follow = toks[e].text if e < n else ""
         if e < n and toks[e].joined and (toks[e].text in _LIKENESS or toks[e].text.endswith(("ing", "ed"))):
             continue  # "a mushroom-shaped lamp", "a goldfish-scooping stall", "glass-domed huts": a look or a use
+        if follow in ("style", "styled"):
+            continue  # "a tower room in oil-painting style": a look, no painting
         # "three sheep graze": after a count, a compound would end in a plural ("three fish tanks")
         verb_after = _counted_plural(toks, s) and e < n and not toks[e].joined and singular(follow) == follow
         verb_after = verb_after or several
@@ -1009,6 +1015,8 @@ def _worn_by(toks: list[_Tok], s: int, e: int, mentions: list[_Mention]) -> bool
         j -= 1
     if j < 1 or toks[j].text not in ("a", "an") or toks[j - 1].text != "in":
         return False
+    if any(_worn(toks, x, x + 1) for x in range(j + 1, s)):
+        return False  # "a baker in a white apron slides loaves": the apron is worn, the loaves are slid
     if not mentions or mentions[-1].end != j - 1:
         return False
     return _person_mention(mentions[-1]) or _does_what_people_do(toks, e)
@@ -3184,10 +3192,12 @@ _MADE_OF = {("made", "of"), ("made", "from"), ("built", "of"), ("built", "from")
 _MAX_LOOK_WORDS = 4
 
 
-def _post_description(toks: list[_Tok], end: int, starts: set[int]) -> tuple[list[str], int]:
+def _post_description(toks: list[_Tok], end: int, nouns: set[int], relations: set[int]) -> tuple[list[str], int]:
     """The look a participle gives the noun ending at ``end`` ("glowing pink", "covered in green
-    velvet") and where it ends: the descriptive words up to a verb, a relation phrase or another
-    noun phrase, so the mesh generator reads colours and materials written after the noun too."""
+    velvet") and where it ends: the descriptive words up to a verb, a relation phrase (starting
+    at one of ``relations``) or another noun phrase (at one of ``nouns``), so the mesh generator
+    reads colours and materials written after the noun too."""
+    starts = nouns | relations
     if end >= len(toks) or toks[end].text not in _LOOK_PARTICIPLES or end in starts:
         return [], end
     k = end + 1
@@ -3204,8 +3214,8 @@ def _post_description(toks: list[_Tok], end: int, starts: set[int]) -> tuple[lis
     joins = ("and", "or")
     while k - first < _MAX_LOOK_WORDS and (describes(k) or (k < len(toks) and toks[k].text in joins and describes(k + 1))):
         k += 1
-    if k == first:
-        return [], end  # "a table covered in books": contents, no look
+    if k == first or (k in nouns and not made_of):
+        return [], end  # "a table covered in books", "covered with glass flasks": things on it, no look
     words = _written(toks[end:k])
     words[0] = _FINITE_LOOKS.get(words[0], words[0])
     return words, k

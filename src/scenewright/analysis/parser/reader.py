@@ -96,6 +96,7 @@ from scenewright.analysis.parser.words import (
     _PLANT_SHAPES,
     _SHARE_VERBS,
     _STATE_PARTICIPLES,
+    _TAKING_VERBS,
     _STOP,
     _TURN_VERBS,
     _USE_VERBS,
@@ -226,6 +227,8 @@ class _Clause:
     deeds: list[tuple[list[int], int]] = field(default_factory=list)
     #: Where the last thing acted on ends: a phrase right after it places it ("stirs a pot on the stove").
     deed_end: int = -1
+    #: Thing acted on → which of its several members the text picks ("haggles at the middle stall").
+    deed_members: dict[int, int] = field(default_factory=dict)
 
 
 @dataclass
@@ -262,6 +265,13 @@ _HOIST_VERBS = frozenset({"lift", "lifts", "lifting", "hoist", "hoists", "hoisti
                           "dangling"})  # fmt: skip
 #: Words of how a thing is, after it, that the phrase after them goes on about ("a girl asleep on a bench").
 _STATES = frozenset({"asleep", "awake", "alone", "aloft", "afloat", "ablaze", "adrift"})
+#: Verbs of flying, and words after which a flyer comes down on something.
+_FLIGHT = frozenset({"fly", "flies", "flying", "flew", "circle", "circles", "circling", "soar", "soars", "soaring",
+                     "swoop", "swoops", "swooping", "glide", "glides", "gliding", "wheel", "wheels", "wheeling",
+                     "flutter", "flutters", "fluttering", "flit", "flits", "flitting", "hover", "hovers", "hovering"})
+_LANDING = frozenset({"to", "into", "onto", "down", "land", "lands", "landing", "perch", "perches", "perched"})
+#: Beasts with wings the catalogue draws as four-legged animals.
+_WINGED_BEASTS = frozenset({"dragon", "dragons", "wyvern", "wyverns", "griffin", "griffins", "gryphon", "pegasus"})
 #: Participles of going after a thing: the doer is by it, however small it is (", chasing a rubber ball").
 _CHASING = frozenset({"chasing", "stalking", "hunting", "herding"})
 
@@ -716,6 +726,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                             self._relate(kind, listed, t)
                     c.rels = last_rels
                 self._where(cs, c, before)
+                self._take_wing(c, cs, ce, before)
                 last_rels = c.rels or last_rels
                 # ("The coxswain, radio in hand, waits ...": what is in the subject's hand is no subject)
                 held = {thing for thing, holder in [*self.in_hand, *self.carried] if holder in prev_subject}
@@ -815,6 +826,20 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             uncounted = g not in self.numbered and self.groups[g].count == UNCOUNTED
             if g not in self.numbered and self.groups[h].count > 1 and (self._handheld(g) or uncounted):
                 self.groups[g].count = self.groups[h].count
+
+    def _take_wing(self, c: _Clause, cs: int, ce: int, since: int) -> None:
+        """Birds and winged beasts the clause has flying ("gulls circle overhead", "a dragon soars
+        over the valley") are in the air: hung, so the arranger keeps them up there, unless the
+        clause puts them on something ("flies to its perch": it lands)."""
+        words = [t.text for t in self.toks[cs:ce]]
+        if not any(w in _FLIGHT for w in words) or any(w in _LANDING for w in words):
+            return
+        for g in c.main_groups:
+            group = self.groups[g]
+            winged = group.category == "bird" or any(w in _WINGED_BEASTS for w in group.name.lower().split())
+            on = any(r[0] == "on" and r[1] == g for r in self.relations[since:])
+            if winged and not on:
+                group.rests = "hanging"
 
     def _where(self, cs: int, c: _Clause, since: int) -> None:
         """"... next to the ticket booth, where an attendant waits": what a where-clause names and
@@ -916,9 +941,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
     def _read_looks(self, mentions: list[_Mention]) -> None:
         """Each noun's look written after it; a catalogue noun inside a "made of" look is its
         material, not an object ("a table made of glass" holds no drinking glass)."""
-        starts = {m.start for m in mentions} | set(self.rel_at)
+        nouns = {m.start for m in mentions}
         for m in mentions:
-            m.post, end = _post_description(self.toks, m.end, starts)
+            m.post, end = _post_description(self.toks, m.end, nouns, set(self.rel_at))
             if not m.post and self.catalogue[m.category].shape == "figure":
                 m.post = worn_description(self.toks, m.end)
             for other in mentions:
@@ -1309,8 +1334,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                         start = next((j for j in range(last_event_end, m.start) if toks[j].text not in _DETERMINERS), m.start)
                         start = max((mm.end for mm in self.by_start.values() if start <= mm.start < m.start), default=start)
                         if closed and self._object_of_verb(c, start, m.start) and self._living(c.main[-1]):
-                            c.deeds.append((list(c.main), g))
-                            c.deed_end = m.end
+                            self._deed(c, list(c.main), g, m)
                         last_event_end = m.end
                         continue
                     c.wsub = [g] if (c.expect_new or closed) else [*c.wsub, g]
@@ -1335,8 +1359,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     )
                     acting = participle is not None and self._participle_deed(participle, m, prev_subject, c)
                     if acting:  # "a medic kneels between them, checking a stretcher": the medic by it
-                        c.deeds.append((list(self.doers or prev_subject), g))
-                        c.deed_end = m.end
+                        self._deed(c, list(self.doers or prev_subject), g, m)
                     elif into:
                         dropped = c.deeds[-1][1]
                         if not self._living(dropped) and self._small(dropped) and not self._living(g):
@@ -1346,8 +1369,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                         follower, anchor = self._keeps_by(g, c.main[-1])
                         c.deeds.append(([follower], anchor))
                     elif verb_object and self._living(c.main[-1]) and not c.expect_new and not flown:
-                        c.deeds.append((list(c.main), g))
-                        c.deed_end = m.end
+                        self._deed(c, list(c.main), g, m)
                         if m.each:  # "a weaver minds every loom": one at each
                             self._per_each(list(c.main), g)
                     small_object = verb_object and self._living(c.main[-1]) and self._small(g) and not c.expect_new
@@ -1389,19 +1411,28 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             named.append(start)
         return len(named) >= 2 or not any(_is_verb(t.text) for t in self.toks[start:ce])
 
+    def _deed(self, c: _Clause, doers: list[int], g: int, m: _Mention) -> None:
+        """Record that ``doers`` act on the thing ``m`` names, and which of its members ("haggles
+        at the middle stall")."""
+        c.deeds.append((doers, g))
+        c.deed_end = m.end
+        if m.start in self.instance:
+            c.deed_members[g] = self.instance[m.start]
+
     def _do_deeds(self, c: _Clause) -> None:
         """"A porter pushes a cart", "two engineers check the console": whoever acts on a thing
         too big to hold stands by it, unless the clause already relates the two; one who acts on
         a small thing stands by what it is on ("stirs a pot on the stove": by the stove), or by it
         when it lives ("a vet checks the smallest pup")."""
         for doers, thing in c.deeds:
+            member = c.deed_members.get(thing)
             if self._small(thing) and not self._living(thing):
                 hosts = [r[2] for r in self.relations if r[0] == "on" and r[1] == thing and r[2] not in doers]
                 if not hosts:
                     continue
-                thing = hosts[-1]
+                thing, member = hosts[-1], None
             free = [d for d in doers if not any({r[1], r[2]} == {d, thing} for r in self.relations)]
-            self._relate("near", free, thing)
+            self._relate("near", free, thing, instance=member)
 
     def _participle_deed(self, k: int, m: _Mention, prev_subject: list[int], c: _Clause) -> bool:
         """Whether ``m`` is what the participle at ``k`` that opens a clause acts on, for the
@@ -2864,6 +2895,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             )  # (not a perch: "two children feed ducks from a footbridge" are on it, as "drink from its rim")
             # ("a vendor sells fruit from a cart": by what one sells from, a cart or a stall)
             taken = taken or kind == "from" and self._verb_before(self._target_start, lambda w: w in _WARES_VERBS)
+            # ("fishermen unload crates from a trawler": they stand by what they take things from)
+            taken = taken or kind == "from" and self._verb_before(self._target_start, lambda w: _verb_stem(w, _TAKING_VERBS))
             bird = self.catalogue[src.category].shape == "bird"  # ("a crow watches from the weathervane")
             if self._living(s) and (self._carrier(t) or self._perch_part or bird) and not taken:
                 return "on"
@@ -2877,8 +2910,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return "above"
             return "near" if target.shape in _PLANT_SHAPES else "on"
         if kind == "end of":  # "a cushion at the end of the counter": on it; "a chest at the end of the bed": at its foot
-            if src.rests == "surface" and target.support:
-                return "on"
+            if src.rests == "surface" and target.support or self._platform(t, s):
+                return "on"  # ("a lighthouse at the end of the pier": on the pier)
             return "in front of" if target.shape == "bed" else "near"  # "a barrow at the end of the patch"
         if kind == "along" and src.rests == "surface" and (target.support or target.shape in _LOAD_HOSTS):
             return "on"  # "bottles along the bar": on it, as at its end or centre

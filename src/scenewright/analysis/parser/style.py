@@ -385,13 +385,14 @@ def detect_ground(text: str, indoor: bool) -> str:
     return "wood floor" if indoor else "grass"
 
 
-#: Words that set a scene by open water: the water lies beyond the land the scene stands on. A pond
+#: Words that set a scene by open water: the water lies beyond the land the scene stands on (a pier
+#: or a jetty reaches out into it, a boat is moored on it). A pond
 #: or a pool is a thing of the scene (it has a size and a place), not its setting; so is a stream a
 #: bridge crosses, too narrow to be the water the scene lies by.
 _WATER_PLACES = ("river", "riverside", "riverbank", "lake", "lakeside", "lakeshore", "sea", "seaside", "seafront",
                  "ocean", "harbour", "harbor", "harbourside", "bay", "canal", "towpath", "lagoon", "cove", "shore",
                  "shoreline", "beach", "coast", "quay", "quayside", "wharf", "waterfront", "marina", "fjord",
-                 "estuary", "tideline")
+                 "estuary", "tideline", "pier", "jetty", "moored")
 #: A bank of a river, not a bank of money: "on the far bank", "along the banks", "the river bank" (a
 #: robber runs from the bank, a guard stands on the bank's steps).
 _BANK = re.compile(r"\b(?:on|along) the (?:\w+ )?banks?\b(?!\s+(?:steps|vault|counter|building|doors?|roof)\b)|"

@@ -164,7 +164,7 @@ _LEAVING_VERBS = {"climb", "step", "fall", "emerge", "run", "walk", "come", "ret
                   "stream", "pour", "spill", "hang", "dangle", "leak", "drip", "float"}  # fmt: skip
 #: beside the van", "children chase a dog around the well") is the doer's place, the other keeps by them.
 #: Verbs whose "from" names where a thing is taken from ("takes a cup from the chair"), not where the doer is.
-_TAKING_VERBS = {"take", "pull", "lift", "grab", "pick", "fetch", "remove", "snatch", "steal", "draw", "collect"}
+_TAKING_VERBS = {"take", "pull", "lift", "grab", "pick", "fetch", "remove", "snatch", "steal", "draw", "collect", "unload", "offload"}
 _LEAD_VERBS = {"walk", "walks", "walking", "lead", "leads", "leading", "guide", "guides", "guiding",
                "chase", "chases", "chasing"}  # fmt: skip
 #: Verbs of giving ("a robot hands one of them a toolbox"): the giver has the thing in hand and
@@ -236,7 +236,7 @@ _PUT_OR_WORKED = {
     # placing
     "put", "place", "set", "lay", "stack", "arrange", "hang", "mount", "plant", "drop", "leave", "lean",
     "prop", "pile", "load", "unload", "fill", "empty", "spread", "scatter", "tip", "dump", "lower", "store",
-    "stock", "display", "pack", "unpack", "stuff",
+    "stock", "display", "pack", "unpack", "stuff", "slide", "shove", "slip", "tuck", "insert", "slot",
     # work in place
     "stir", "chop", "cut", "slice", "dice", "knead", "hammer", "weld", "forge", "fry", "grill", "roast",
     "shape", "sculpt", "mould", "mold", "glaze", "bake", "cook", "boil", "wash", "scrub", "sweep", "mop", "water", "repair", "fix", "assemble", "build",

@@ -7,6 +7,7 @@ import re
 import numpy as np
 
 from scenewright.core.colours import COLOURS
+from scenewright.core.vessels import PLANKS, PLANT_HULL, floor_share, has_sail, hull_share, is_open
 from scenewright.procedural import parts as P
 from scenewright.procedural.builder import Model
 from scenewright.procedural.shapes.frames import ring
@@ -199,28 +200,19 @@ def bicycle(m: Model) -> None:
     m.cylinder("dark_metal", crank + (-0.04, 0, 0), crank + (0.04, 0, 0), 0.08, fraction=0.6)
 
 
-#: Words of boats that carry a sail, and of those whose sail is square-rigged.
-_SAILS = ("sail", "sailing", "yacht", "longship", "viking", "galleon", "schooner", "clipper", "dhow", "junk", "frigate",
-          "pirate", "sloop", "ketch", "caravel")
+#: Words of boats whose sail is square-rigged.
 _SQUARE_RIG = ("longship", "viking", "galleon", "junk", "square", "caravel")
-#: Words of boats open to the sky, rowed, paddled or poled: a gunwale and thwarts, no cabin.
-_OPEN = ("rowing", "rowboat", "row boat", "canoe", "kayak", "dinghy", "punt", "gondola", "longship", "viking", "raft",
-         "skiff", "coracle", "lifeboat", "fishing boat", "whaler")
-#: Words of what boats are made of by hand from plants (a reed boat, a dugout, a bark canoe): such a
-#: boat is open, and its hull shows that stuff instead of paint.
-_PLANT_HULL = ("reed", "papyrus", "rush", "bamboo", "bark", "dugout", "log", "wicker", "birch")
 
 
 def boat(m: Model) -> None:
     """A hull tapering to a bow at the front; by its words an open boat (gunwale and thwarts:
     rowing boat, canoe, longship), a sailing boat (mast and sail, square-rigged for a longship
     or a galleon) or, else, a motor boat with a cabin."""
-    plant = m.has(*_PLANT_HULL)
-    m.main = "straw" if plant else "paint"
-    open_ = plant or m.has(*_OPEN)
-    sail = m.has(*_SAILS) or m.sz > 1.5 * m.sx
-    hull_h = (0.3 if sail or open_ else 0.55) * m.sz
-    top = 0.7 * hull_h if open_ else hull_h  # an open boat's floor lies below its gunwale
+    size = (m.sx, m.sy, m.sz)
+    m.main = "straw" if m.has(*PLANT_HULL) else "paint"
+    open_, sail = is_open(m.text), has_sail(m.text, size)
+    hull_h = hull_share(m.text, size) * m.sz
+    top = floor_share(m.text, size) * m.sz  # an open boat's floor lies below its gunwale
     L = m.sy / 2
     deck = [(0, -L), (0.3 * m.sx, -0.55 * L), (0.5 * m.sx, -0.05 * L), (0.47 * m.sx, L), (-0.47 * m.sx, L),
             (-0.5 * m.sx, -0.05 * L), (-0.3 * m.sx, -0.55 * L)]
@@ -229,7 +221,7 @@ def boat(m: Model) -> None:
     hull.vertices[bottom, 0] *= 0.3
     hull.vertices[bottom, 1] = hull.vertices[bottom, 1] * 0.85 + 0.05 * L
     m.add(m.main, P.flatten(hull))
-    planks = P.prism([(x * 0.94, y * 0.96) for x, y in deck], 0.02 * m.sz + 0.01)
+    planks = P.prism([(x * 0.94, y * 0.96) for x, y in deck], PLANKS * m.sz + 0.01)
     m.add("wood", P.flatten(P.transform(planks, P.affine(np.eye(3), (0, 0, top - 0.01)))))
     if open_:
         rail = hull_h - top
