@@ -122,3 +122,24 @@ def test_a_pier_with_a_dry_thing_beside_it_still_reaches_out_and_the_thing_waits
     assert pier.position.y - pier.size.x / 2 < composition.shore < pier.position.y + pier.size.x / 2
     assert boat.position.y - boat.size.y / 2 > composition.shore
     assert barrel.position.y + barrel.size.y / 2 < composition.shore
+
+
+def test_a_pier_or_a_mooring_sets_the_scene_by_water():
+    assert parse_scene("Three fishermen stand on a trawler moored at the pier.").water
+    assert parse_scene("A cat dozes at the end of a jetty.").water
+    assert not parse_scene("A shuttle is docked in the hangar.").water
+
+
+def test_who_works_a_moored_boat_from_land_waits_by_the_pier_while_the_boat_floats():
+    """People who unload crates from a trawler moored at a pier stand on the shore by the pier's
+    land end, with their crates; the trawler floats alongside the pier (before, the near ties made
+    one unit of them all, and the trawler was left on land among the market stalls)."""
+    text = ("A harbour fish market: fishermen unload crates of fish from a small trawler moored at the pier, "
+            "and three stalls stand in a row along the quay.")
+    composition = compose(parse_scene(text))
+    by_id = {o.id: o for o in composition.objects}
+    trawler = by_id["trawler_1"]
+    assert trawler.position.y - trawler.size.y / 2 > composition.shore
+    for o in composition.objects:
+        if o.name in ("fisherman", "crate", "stall"):
+            assert o.position.y < composition.shore, o.id

@@ -1842,3 +1842,22 @@ def test_a_building_with_parts_of_its_own_after_the_setting_is_a_thing_of_it():
     parsed = parse_scene("A rainy street corner at night: a café with red awnings has four small tables on the pavement.")
     assert {o.name: o.category for o in parsed.objects}["café"] == "house"
     assert "café" not in names("A café with four tables and a counter.")
+
+
+def test_a_plural_after_what_someone_wears_is_their_verb():
+    parsed = parse_scene("A baker in a white apron slides loaves into a brick oven.")
+    assert Counter(o.name for o in parsed.objects) == Counter({"loaf": 3, "baker": 1, "oven": 1})
+    assert ("baker_1", "near", "stove_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert objects("A baker slides loaves into a brick oven.")[("thing", "loaf")] == 3  # (after a verb read as one)
+
+
+def test_a_look_in_a_style_names_no_thing():
+    assert names("A tower room in oil-painting style: a long oak table with a lamp.") == {"oak table", "lamp"}
+
+
+def test_flying_birds_are_in_the_air():
+    parsed = parse_scene("A harbour at noon: gulls circle overhead, and a hawk soars over the field.")
+    rests = {o.name: o.rests for o in parsed.objects}
+    assert rests["gull"] == "hanging" and rests["hawk"] == "hanging"
+    assert objects("A harbour at noon: gulls circle overhead.")[("bird", "gull")] == 3
+    assert {o.rests for o in parse_scene("Children circle the maypole.").objects} == {"ground"}

@@ -1748,3 +1748,32 @@ def test_people_at_things_one_works_at_alone_have_one_each():
 def test_an_animal_noun_before_a_part_names_the_parts_kind():
     parsed = parse_scene("Two cargo loaders on caterpillar tracks wait on a bench. A caterpillar crawls on a leaf.")
     assert Counter(o.name for o in parsed.objects)["caterpillar"] == 1
+
+
+def test_what_one_does_to_the_middle_of_a_row_is_done_to_that_member():
+    text = "Three stalls with striped awnings stand in a row. A woman with an umbrella haggles at the middle stall."
+    assert ("woman_1", "near", "market_stall_2") in rels(text)
+    assert ("woman_1", "near", "table_2") in rels("Three tables stand in a row. A woman sits at the middle table.")
+
+
+def test_the_end_of_a_pier_is_on_it():
+    assert ("crate_1", "on", "pier_1") in rels("A crate sits at the end of the pier.")
+    found = rels("A stack of lobster pots sits at the end of the pier.")
+    assert ("lobster_pot_1", "on", "pier_1") in found
+    assert Counter(o.name for o in parse_scene("A stack of lobster pots sits at the end of the pier.").objects)[
+        "lobster pot"] == 3
+
+
+def test_who_unloads_things_from_a_boat_stands_by_it():
+    found = rels("Fishermen unload crates of fish from a small trawler moored at the pier.")
+    assert ("fisherman_1", "near", "trawler_1") in found and ("fisherman_1", "on", "trawler_1") not in found
+
+
+def test_a_load_of_small_things_on_a_table_stands_on_it():
+    parsed = parse_scene("A long oak table covered with glass flasks and a brass astrolabe stands in the centre.")
+    assert {(r.source, r.relation, r.target) for r in parsed.relations} >= {
+        ("flask_1", "on", "table_1"), ("astrolabe_1", "on", "table_1")}
+    assert {o.id: o.description for o in parsed.objects}["table_1"] == "long oak table"  # (no "covered with glass")
+    # shelves draw their own stock: small things they are packed with stay theirs
+    assert [o.name for o in parse_scene("A tall bookshelf packed with paperbacks stands by the sofa.").objects] == [
+        "bookshelf", "sofa"]
