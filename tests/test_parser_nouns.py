@@ -1861,3 +1861,10 @@ def test_flying_birds_are_in_the_air():
     assert rests["gull"] == "hanging" and rests["hawk"] == "hanging"
     assert objects("A harbour at noon: gulls circle overhead.")[("bird", "gull")] == 3
     assert {o.rests for o in parse_scene("Children circle the maypole.").objects} == {"ground"}
+
+
+def test_sci_fi_habitats_are_domes_and_a_mining_drill_is_a_rig():
+    parsed = parse_scene("Two domed habitats sit side by side, and a mining drill towers over a pile of glowing ore.")
+    by_name = {o.name: o for o in parsed.objects}
+    assert by_name["domed habitat"].size[2] < 5.0 and by_name["mining drill"].size[2] > 4.0
+    assert ("mining_drill_1", "near", "ore_1") in {(r.source, r.relation, r.target) for r in parsed.relations}

@@ -1777,3 +1777,17 @@ def test_a_load_of_small_things_on_a_table_stands_on_it():
     # shelves draw their own stock: small things they are packed with stay theirs
     assert [o.name for o in parse_scene("A tall bookshelf packed with paperbacks stands by the sofa.").objects] == [
         "bookshelf", "sofa"]
+
+
+def test_what_a_thing_hangs_from_is_part_of_it():
+    parsed = parse_scene("A lantern hangs from a chain above the anvil. A sign hangs from a rope, and a chain hangs from the ceiling.")
+    assert Counter(o.name for o in parsed.objects) == Counter({"lantern": 1, "anvil": 1, "sign": 1, "chain": 1})
+    assert ("lantern_1", "above", "anvil_1") in rels("A lantern hangs from a chain above the anvil.")
+    assert "hook" in {o.name for o in parse_scene("A helmet hangs from a hook by the airlock.").objects}
+
+
+def test_a_games_table_is_floor_furniture():
+    found = rels("A games room with a pool table, a ping-pong table and a cabbage on a stool.")
+    assert ("cabbage_1", "on", "stool_1") in found and ("ping_pong_table_1", "on", "stool_1") not in found
+    sizes = {o.id: o.size for o in parse_scene("A games room with a pool table, a ping-pong table and a cabbage on a stool.").objects}
+    assert sizes["ping_pong_table_1"][0] > 2.5  # no model of one

@@ -773,3 +773,14 @@ def test_a_flowering_tree_is_known_by_its_blossom_and_a_skin_rug_by_its_fur():
     pelt = build_model("rug", (2.4, 1.7, 0.02), "realistic", 1, name="bearskin rug")
     assert set(pelt.geometry) == {"fur_dark"}
     assert_fills(build_glb("rug", (2.4, 1.7, 0.02), "realistic", 1, name="sheepskin rug"), (2.4, 1.7, 0.02))
+
+
+def test_a_cabbage_is_a_green_head_of_leaves_and_a_climbing_frame_has_its_deck_at_its_rest_height():
+    from scenewright.core.catalogue import load_catalogue
+    from scenewright.procedural.meshes import build_model
+
+    cabbage = build_model("generic", (0.2, 0.2, 0.18), "realistic", 0, "", "cabbage thing")
+    assert set(cabbage.geometry) == {"leaf"}
+    frame = build_model("structure", (3.0, 2.0, 2.2), "realistic", 0, "", "jungle gym climbing_frame")
+    deck = frame.geometry["wood"].bounds  # glTF: y up
+    assert deck[1][1] == pytest.approx(load_catalogue()["climbing_frame"].rest_height * 2.2, abs=1e-3)

@@ -8,12 +8,13 @@ from scenewright.analysis.parser.grammar import (
     _DEPICTIONS,
     _ENCLOSURES,
     _FLAT_HOLDERS,
-    _LOADS,
+    _HANGERS,
     _LOAD_HOSTS,
     _LOAD_SIZE,
-    _SHELF_LOAD_SIZE,
+    _LOADS,
     _MOUNTS,
     _POLE_BORNE,
+    _SHELF_LOAD_SIZE,
     _VESSEL_KINDS,
 )
 from scenewright.analysis.parser.nouns import _LAID, _STANDING, _Mention, _is_plural
@@ -24,6 +25,7 @@ from scenewright.analysis.parser.words import (
     _CONTENT_MARKERS,
     _COOK_VERBS,
     _DETERMINERS,
+    _HANG_VERBS,
     _HOLD,
     _NUMBERS,
     _PICTURE_MARKERS,
@@ -176,6 +178,9 @@ class _Contents:
         if w == "on" and j - prev.end <= 2 and singular(m.phrase.split()[-1].lower()) in _MOUNTS and borne:
             return True  # "a windsock on a tall pole", "a flag flutters on a pole": the pole is its part
             # (not "a dish stands on a tall pole")
+        hung = j >= 1 and self.toks[j - 1].text in _HANG_VERBS and not m.definite
+        if w == "from" and hung and j - prev.end <= 2 and singular(m.phrase.split()[-1].lower()) in _HANGERS:
+            return True  # "a lantern hangs from a chain above the anvil": the chain is the lantern's
         plant = self.catalogue[prev.category].shape in ("potted_plant", "bush", "flower_bed")
         if w == "with" and prev.end == j and prev.category == "vase" and not m.counted:
             # "a vase with roses in it": its flowers, as "a vase of roses" (not three flower beds)

@@ -103,6 +103,8 @@ _RIDDEN = ("seats", "vehicles", "mounts", "perches")
 #: ``_POLE_BORNE`` (a flag, a lantern, a sign, a flat board such as a windsock or a banner); a mast is
 #: a structure of its own, and so is the pole a dish or a camera stands on.
 _MOUNTS = ("pole", "stick", "stake", "spike")
+#: What a thing hangs by, part of it when it "hangs from" one ("a lantern hangs from a chain above the anvil").
+_HANGERS = ("chain", "rope", "cord", "string", "wire", "cable", "thread", "ribbon", "strap")
 _POLE_BORNE = ("flagpole", "lantern", "sign", "billboard", "menu_board", "torch", "panel")
 #: Verbs that join a subject to what it is, not to a thing it acts on.
 _COPULAS = ("is", "are", "was", "were", "be", "has", "have", "had", "seems", "looks")

@@ -233,7 +233,7 @@ LIVING_SHAPES = ("figure", "animal", "bird")
 #: Furniture that stands on the floor, never on another piece ("a sofa on the desk" is beside it).
 _FLOOR_FURNITURE = {"sofa", "armchair", "bed", "wardrobe", "bookshelf", "office_chair", "piano", "fridge",
                     "stove", "counter", "desk", "table", "round_table", "coffee_table", "bathtub", "treadmill",
-                    "dresser", "tv_stand", "school_desk", "dining_table"}  # fmt: skip
+                    "dresser", "tv_stand", "school_desk", "dining_table", "pool_table", "ping_pong_table"}  # fmt: skip
 
 
 #: A floor-standing thing the text puts on a table-like host is its tabletop kind: at most this

@@ -101,7 +101,7 @@ def building(m: Model) -> None:
     variants = (
         (("castle", "fort", "fortress", "citadel", "keep", "stronghold"), _castle),
         (("church", "chapel", "cathedral", "kirk", "basilica"), _church),
-        (("dome", "domed", "igloo"), _dome),
+        (("dome", "domed", "igloo", "habitat"), _dome),
         (("pagoda",), _pagoda),
     )
     for words, build in variants:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from scenewright.core.colours import COLOURS
 from scenewright.procedural.builder import Model
 from scenewright.procedural.shapes.machines import machine, tank
 from scenewright.procedural.shapes.structures import structure
@@ -28,9 +29,46 @@ def _picnic_table(m: Model) -> None:
         m.box("wood", (x - 0.35 * leg, -0.96 * D, seat - t - 0.06 * H), (x + 0.35 * leg, 0.96 * D, seat - t))
 
 
+def _games_table(m: Model) -> None:
+    """A pool table (green cloth in a wooden rail, a pocket at each corner and side) or a
+    ping-pong table (a blue-green top with white lines and a net across, on metal legs)."""
+    pool = m.named("pool", "billiard", "billiards", "snooker")
+    m.main = "canvas"
+    m.tints["canvas"] = COLOURS["green"] if pool else COLOURS["teal"]
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    t = m.thick(0.05, 0.2 * H)
+    rail = 0.06 * min(m.sx, m.sy) if pool else 0.0
+    m.box("canvas", (-W + rail, -D + rail, H - t), (W - rail, D - rail, H - 0.01), rounded=0.0)
+    leg = m.thick(0.06 if pool else 0.04)
+    m.legs("dark_wood" if pool else "metal", 0.08 * min(m.sx, m.sy), 0, H - t, leg, square=pool)
+    if pool:
+        for side in (-1, 1):  # the rails, long and short, the short ones a hair thinner
+            m.box("dark_wood", (-W, side * D - (side > 0) * rail, H - t - 0.04), (W, side * D + (side < 0) * rail, H),
+                  rounded=0.0)
+            m.box("dark_wood", (side * W - (side > 0) * rail, -D + rail, H - t - 0.04),
+                  (side * W + (side < 0) * rail, D - rail, H - 0.002), rounded=0.0)
+        for x in (-W + rail, 0.0, W - rail):
+            for y in (-D + rail, D - rail):
+                m.cylinder("dark_plastic", (x, y, H - t + 0.003), (x, y, H - 0.005), 0.6 * rail, fraction=0.4)
+        return
+    # white lines a hair inside the top's edges; crossing, each a hair thicker than the last, so
+    # no two share a face
+    line, w, d = 0.02, W - 0.003, D - 0.003
+    m.box("paper", (-line / 2, -d, H - 0.0100), (line / 2, d, H - 0.006), rounded=0.0)  # the centre line
+    for side in (-1, 1):
+        m.box("paper", (side * w - (side > 0) * line, -d, H - 0.0105), (side * w + (side < 0) * line, d, H - 0.007),
+              rounded=0.0)
+        m.box("paper", (-w + line, side * d - (side > 0) * line, H - 0.0110), (w - line, side * d + (side < 0) * line, H - 0.008),
+              rounded=0.0)
+    m.box("dark_plastic", (-0.005, -D - 0.05, H - 0.006), (0.005, D + 0.05, H + 0.15), rounded=0.0)  # the net
+
+
 def table(m: Model) -> None:
     if m.named("picnic"):
         _picnic_table(m)
+        return
+    if m.named("pool", "billiard", "billiards", "snooker", "ping pong", "ping-pong", "table tennis"):
+        _games_table(m)
         return
     t = m.thick(0.04, 0.2 * m.sz)
     leg = m.thick(0.03)

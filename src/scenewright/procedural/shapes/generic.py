@@ -1,4 +1,4 @@
-"""The fallback shape: soft things, instruments, pumpkins, balls, ramps, goals, chimneys,
+"""The fallback shape: soft things, instruments, pumpkins, cabbages, balls, ramps, goals, chimneys,
 rails, orreries and party balloons (things with no family),
 the family a name calls (animals, craft, figures...), and a lump under a dust sheet for a
 name with no hint at all."""
@@ -64,6 +64,17 @@ def _pumpkin(m: Model) -> None:
     m.ball("flower_alt", (0, 0, 0.45 * H), (0.7 * W, 0.7 * D, 0.47 * H), fraction=0.6)
     m.cylinder("bark", (0, 0, 0.85 * H), (0.05 * W, 0.02 * D, H), 0.08 * W, 0.06 * W, fraction=0.4)
     m.leaf("leaf", (0.05 * W, 0, 0.9 * H), (0.45 * W, 0.2 * D, 0.88 * H), 0.12 * W, 0.02 * H)
+
+
+def _cabbage(m: Model) -> None:
+    """A cabbage (or a lettuce, a head of kale): a round head cupped in its outer leaves."""
+    m.main = "leaf"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    m.ball("leaf", (0, 0, 0.5 * H), (0.62 * W, 0.62 * D, 0.48 * H), fraction=0.6)
+    for k in range(7):
+        a = 2 * np.pi * k / 7
+        c, s = np.cos(a), np.sin(a)
+        m.leaf("leaf", (0.25 * W * c, 0.25 * D * s, 0.12 * H), (0.9 * W * c, 0.9 * D * s, 0.7 * H), 0.55 * W, 0.04 * H)
 
 
 def _ball(m: Model) -> None:
@@ -160,7 +171,7 @@ def _balloon(m: Model) -> None:
 
 
 def generic(m: Model) -> None:
-    """Soft things, instruments, pumpkins, balls, eggs, ramps, goals, chimneys, rails, orreries and
+    """Soft things, instruments, pumpkins, cabbages, balls, eggs, ramps, goals, chimneys, rails, orreries and
     party balloons by name; a fire (a driftwood fire, a cooking fire: "fire" heads the name) as a
     campfire; else the family the name calls (a horse the catalogue files here is an animal);
     only a name with no hint at all gets the draped lump."""
@@ -174,6 +185,7 @@ def generic(m: Model) -> None:
         (("lifebuoy", "life ring", "swim ring", "swimming ring", "rubber ring", "inflatable ring", "tyre", "tire"),
          _lifebuoy),
         (("pumpkin", "gourd", "squash", "melon", "watermelon"), _pumpkin),
+        (("cabbage", "lettuce", "kale"), _cabbage),
         (("ball", "bowling ball", "football", "beach ball", "basketball", "soccer ball", "cannonball", "cannon ball",
           "snowball", "medicine ball"), _ball),
         (("ramp", "skate ramp"), structures._ramp),

@@ -176,6 +176,28 @@ def _scaffold(m: Model) -> None:
         m.beam("metal", (xs[i], -D + tube, 0.05 * H), (xs[i + 1], -D + tube, H - tube), 0.8 * tube)
 
 
+def _climbing_frame(m: Model) -> None:
+    """A playground climbing frame: a lattice of painted bars, two bays by one, rungs up its
+    sides and a plank deck at half height (the catalogue's ``rest_height``: children put on it
+    stand there), monkey bars along its top."""
+    m.main = "paint"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    bar = 0.02 + 0.005 * max(m.sx, m.sy)
+    xs, ys = np.linspace(-W + bar, W - bar, 3), (-D + bar, D - bar)
+    for x in xs:
+        for y in ys:
+            m.post("paint", x, y, 0.0, H, bar, fraction=0.3)
+    deck = 0.5 * H
+    m.box("wood", (xs[0], ys[0] + bar, deck - 0.04), (xs[1], ys[1] - bar, deck), rounded=0.0)  # (between the rungs' ends)
+    for k, y in enumerate(ys):  # the top rails (a hair apart in thickness, so they never share faces)
+        m.cylinder("accent", (xs[0], y, H - bar), (xs[-1], y, H - bar), 0.8 * bar * (1 + 0.05 * k), fraction=0.3)
+    for x in np.linspace(xs[0], xs[-1], 7)[1:-1]:  # monkey bars across
+        m.cylinder("metal", (x, ys[0], H - bar), (x, ys[1], H - bar), 0.6 * bar, fraction=0.3)
+    for z in np.arange(0.25, 1.0, 0.25) * H:  # rungs up both ends
+        for x in (xs[0], xs[-1]):
+            m.cylinder("accent", (x, ys[0], z), (x, ys[1], z), 0.7 * bar, fraction=0.3)
+
+
 def _mast(m: Model) -> None:
     """A ship's mast: a tall wooden pole with two yards across it, a sail bent to each, and a
     crow's nest near the top."""
@@ -343,10 +365,11 @@ def _ramp(m: Model) -> None:
         m.box("wood", (-W + deck + run, -D, 0), (W - deck - run, D, 0.01 * H), rounded=0.0)
 
 def structure(m: Model) -> None:
-    """A large open structure; its name picks it: dome, ferris wheel, windmill, crane, carousel,
+    """A large open structure; its name picks it: dome, climbing frame, ferris wheel, windmill, crane, carousel,
     platform, stage, scaffold, launch pad, grandstand, siege engine, skate ramp; else a truss gantry."""
     variants = (
         (("dome", "igloo", "geodesic dome", "habitat dome", "dome habitat"), _dome),
+        (("climbing frame", "jungle gym", "monkey bars", "play structure"), _climbing_frame),
         (("windsock", "wind sock", "wind cone"), _windsock),
         (("satellite dish", "radar dish", "radar", "dish", "radio telescope"), _dish),
         (("ferris wheel", "big wheel", "observation wheel", "wheel"), _ferris_wheel),
