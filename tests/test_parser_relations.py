@@ -1791,3 +1791,9 @@ def test_a_games_table_is_floor_furniture():
     assert ("cabbage_1", "on", "stool_1") in found and ("ping_pong_table_1", "on", "stool_1") not in found
     sizes = {o.id: o.size for o in parse_scene("A games room with a pool table, a ping-pong table and a cabbage on a stool.").objects}
     assert sizes["ping_pong_table_1"][0] > 2.5  # no model of one
+
+
+def test_who_sits_along_a_jetty_sits_on_it():
+    found = rels("Six frogs in straw hats sit along a wooden jetty, each with a fishing rod.")
+    assert {(f"frog_{k}", "on", "pier_1") for k in range(1, 7)} <= found
+    assert ("bottle_1", "on", "counter_1") in rels("Bottles stand along the counter.")

@@ -41,3 +41,11 @@ def test_open_boats_by_their_words():
     assert not is_open("trawler boat") and not is_open("yacht")
     # (a rowing boat is drawn to its gunwale and stretched to its height: its floor is high in its box)
     assert deck_share("yacht", (3, 10, 9)) < deck_share("trawler", (4, 13, 5)) < deck_share("rowing boat", (1.5, 4.5, 1.2))
+
+
+def test_a_tour_boat_carries_its_people_on_an_open_deck():
+    from scenewright.analysis.parser import parse_scene
+
+    boats = [o for o in parse_scene("Two small tour boats wait by the pier.").objects if o.name == "tour boat"]
+    assert len(boats) == 2 and boats[0].size[1] > 5.0  # room for a crowd, small as they are
+    assert is_open("tour boat boat") and deck_area("tour boat", boats[0].size)[3] > 0.5

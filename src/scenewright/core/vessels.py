@@ -9,9 +9,11 @@ from scenewright.core.catalogue import mentions
 #: Words of boats that carry a sail.
 SAILS = ("sail", "sailing", "yacht", "longship", "viking", "galleon", "schooner", "clipper", "dhow", "junk", "frigate",
          "pirate", "sloop", "ketch", "caravel")  # fmt: skip
-#: Words of boats open to the sky, rowed, paddled or poled: a gunwale and thwarts, no cabin.
+#: Words of boats open to the sky, rowed, paddled or poled, or carrying people on an open deck
+#: (a tour boat, a water taxi): a gunwale and thwarts, no cabin.
 OPEN = ("rowing", "rowboat", "row boat", "canoe", "kayak", "dinghy", "punt", "gondola", "longship", "viking", "raft",
-        "skiff", "coracle", "lifeboat", "fishing boat", "whaler")  # fmt: skip
+        "skiff", "coracle", "lifeboat", "fishing boat", "whaler", "tour boat", "passenger boat",
+        "excursion boat", "sightseeing boat", "pleasure boat", "water taxi")  # fmt: skip
 #: Words of what boats are made of by hand from plants (a reed boat, a dugout, a bark canoe): such a
 #: boat is open, and its hull shows that stuff instead of paint.
 PLANT_HULL = ("reed", "papyrus", "rush", "bamboo", "bark", "dugout", "log", "wicker", "birch")

@@ -2915,6 +2915,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return "in front of" if target.shape == "bed" else "near"  # "a barrow at the end of the patch"
         if kind == "along" and src.rests == "surface" and (target.support or target.shape in _LOAD_HOSTS):
             return "on"  # "bottles along the bar": on it, as at its end or centre
+        if kind == "along" and self._living(s) and self._platform(t, s):
+            return "on"  # "six frogs sit along a wooden jetty": on it, as at its end
         if kind == "covering":
             # "jars crowd every shelf", "crates cover a long table", "lasts lining a shelf": on what
             # has a top for them; "trees line the drive" stand beside it; people crowding a carrier
