@@ -1797,3 +1797,23 @@ def test_who_sits_along_a_jetty_sits_on_it():
     found = rels("Six frogs in straw hats sit along a wooden jetty, each with a fishing rod.")
     assert {(f"frog_{k}", "on", "pier_1") for k in range(1, 7)} <= found
     assert ("bottle_1", "on", "counter_1") in rels("Bottles stand along the counter.")
+
+
+def test_two_sets_of_bleachers_are_two_and_the_bleachers_are_both():
+    text = "Parents cheer from two sets of metal bleachers, and a hot dog cart stands between the bleachers."
+    found = rels(text)
+    assert {("cart_1", "near", "bleachers_1"), ("cart_1", "near", "bleachers_2")} <= found
+    assert ("dog_1", "in front of", "bleachers_2") in rels("Fans sit on two sets of bleachers. A dog sits at the foot of them.")
+
+
+def test_a_pitcher_on_the_mound_and_a_raven_on_the_scarecrow():
+    found = rels("The pitcher, a skinny boy in a red cap, winds up on the mound. A raven perches on the scarecrow.")
+    assert {("pitcher_1", "on", "mound_1"), ("raven_1", "on", "scarecrow_1")} <= found
+    assert [o.category for o in parse_scene("A pitcher of lemonade sits on the table.").objects] == ["bottle", "table"]
+    assert [o.category for o in parse_scene("The pitcher throws the ball.").objects][0] == "figure"
+
+
+def test_watching_the_work_from_a_tree_names_no_work():
+    parsed = parse_scene("Three alien monkeys watch the work from the nearest tree.")
+    assert "work" not in {o.name for o in parsed.objects}
+    assert ("alien_monkey_1", "on", "tree_1") in {(r.source, r.relation, r.target) for r in parsed.relations}

@@ -3025,7 +3025,7 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             rests = m.guess.rests if m.guess is not None else load_catalogue()[m.category].rests
             small = rests == "surface" and max(size) < 1.0
             # "a pair of shears", "a set of brass scales": one thing that is named in the plural
-            pair = q in ("pair", "pairs", "set") and toks[m.end - 1].text in load_vocabulary().pair_nouns
+            pair = q in ("pair", "pairs", "set", "sets") and toks[m.end - 1].text in load_vocabulary().pair_nouns
             # "a stack of plates", "a pile of parchment", "a line of bunting": one heap of small
             # things, one lot of stuff (no count noun); "a flock of sheep" are sheep
             shape = load_catalogue()[m.category].shape

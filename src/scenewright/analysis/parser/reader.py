@@ -555,7 +555,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 m.group = found
                 if m.counted and _is_plural(self.toks, m) and self.groups[found].count < m.count:
                     self.groups[found].count = m.count  # "the two nearest benches" after "a bench": two at least
-                if not _is_plural(self.toks, m) and self.groups[found].count > 1 and not m.each:
+                # ("the bleachers" after "two sets of bleachers": all of them, a plural named as one)
+                pair = self.toks[m.end - 1].text in load_vocabulary().pair_nouns and m.definite
+                if not _is_plural(self.toks, m) and self.groups[found].count > 1 and not m.each and not pair:
                     self.instance[m.start] = self._member([a.lower() for a in m.adjectives], found)
                 return found
         if m.alias:

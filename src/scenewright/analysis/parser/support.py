@@ -335,10 +335,10 @@ def can_hold(host: ParsedObject, thing: ParsedObject, catalogue) -> bool:
     """Whether ``thing`` can rest on ``host``: hosts that hang hold nothing but what fits in a
     hung container; a flat host holds anything; a person or an animal sits or stands on any
     host at least a stool's size; otherwise the thing must be about the host's size or smaller."""
+    if catalogue[thing.category].shape == "bird" and thing.size[0] <= host.size[0]:
+        return True  # "a robin perches on top of the clock on the wall", "a raven perches on the scarecrow"
     if host.category in _NO_TOP:
         return False  # what a knight holds is beside him, not on him
-    if catalogue[thing.category].shape == "bird" and thing.size[0] <= host.size[0]:
-        return True  # "a robin perches on top of the clock on the wall": a bird perches on what it fits on
     if (host.rests or catalogue[host.category].rests) == "hanging":
         # a hung container holds what fits in it (a parrot in a birdcage); other hung things nothing
         inside = load_vocabulary().carries(host.category, host.name, ("containers",))
