@@ -1868,3 +1868,12 @@ def test_sci_fi_habitats_are_domes_and_a_mining_drill_is_a_rig():
     by_name = {o.name: o for o in parsed.objects}
     assert by_name["domed habitat"].size[2] < 5.0 and by_name["mining drill"].size[2] > 4.0
     assert ("mining_drill_1", "near", "ore_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
+
+
+def test_string_lights_are_one_string_strung_where_the_text_says():
+    parsed = parse_scene("Fairy lights are strung between two poles above a small bistro table.")
+    assert Counter(o.category for o in parsed.objects)["string_lights"] == 1
+    assert {("string_lights_1", "near", "pole_1"), ("string_lights_1", "near", "pole_2")} <= {
+        (r.source, r.relation, r.target) for r in parsed.relations}
+    assert objects("Warm pendant lights hang above the tables.")[("pendant_lamp", "light")] == 3
+    assert objects("Bunting hangs above the stage.")[("string_lights", "bunting")] == 1

@@ -36,7 +36,7 @@ from scenewright.settings import Settings
 VOCABULARY = """table round_table coffee_table desk chair armchair office_chair stool sofa bench bed
 bookshelf cabinet fireplace wardrobe nightstand counter table_lamp floor_lamp pendant_lamp rug tv monitor laptop
 potted_plant vase bathtub toilet sink stove fridge piano clock mirror picture_frame trash_can crate barrel
-books bottle cup bowl tree pine_tree palm_tree bush flower_bed rock fountain statue lamp_post sign fence
+books bottle cup bowl garland tree pine_tree palm_tree bush flower_bed rock fountain statue lamp_post sign fence
 arch bollard hydrant car truck bus bicycle boat building house kiosk market_stall tent umbrella swing slide
 treadmill whiteboard robot crystal tower well cart pillar generic
 animal bird figure machine tank structure panel container tool vehicle""".split()
@@ -784,3 +784,14 @@ def test_a_cabbage_is_a_green_head_of_leaves_and_a_climbing_frame_has_its_deck_a
     frame = build_model("structure", (3.0, 2.0, 2.2), "realistic", 0, "", "jungle gym climbing_frame")
     deck = frame.geometry["wood"].bounds  # glTF: y up
     assert deck[1][1] == pytest.approx(load_catalogue()["climbing_frame"].rest_height * 2.2, abs=1e-3)
+
+
+def test_a_string_of_lights_sags_across_its_width_and_bunting_carries_flags():
+    from scenewright.procedural.meshes import build_model
+
+    lights = build_model("garland", (5.0, 0.1, 0.6), "realistic", 0, "", "fairy lights string_lights")
+    assert {"light", "dark_plastic"} <= set(lights.geometry)
+    bounds = lights.geometry["dark_plastic"].bounds  # glTF: x across, y up
+    assert bounds[1][0] - bounds[0][0] == pytest.approx(5.0, abs=0.05) and bounds[0][1] < 0.3 < bounds[1][1]
+    bunting = build_model("garland", (5.0, 0.1, 0.6), "realistic", 0, "", "bunting string_lights")
+    assert "light" not in bunting.geometry and {"canvas", "accent"} <= set(bunting.geometry)

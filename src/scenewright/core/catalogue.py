@@ -28,7 +28,7 @@ SHAPE_NAMES = (
     "sofa", "bench", "bed", "bookshelf", "cabinet", "fireplace", "wardrobe", "nightstand", "counter",
     "table_lamp", "floor_lamp", "pendant_lamp", "rug", "tv", "monitor", "laptop", "potted_plant",
     "vase", "bathtub", "toilet", "sink", "stove", "fridge", "piano", "clock", "mirror",
-    "picture_frame", "trash_can", "crate", "barrel", "books", "bottle", "cup", "bowl", "tree",
+    "picture_frame", "trash_can", "crate", "barrel", "books", "bottle", "cup", "bowl", "garland", "tree",
     "pine_tree", "palm_tree", "bush", "flower_bed", "rock", "fountain", "statue", "lamp_post",
     "sign", "fence", "arch", "bollard", "hydrant", "car", "truck", "bus", "bicycle", "boat",
     "building", "house", "kiosk", "market_stall", "tent", "umbrella", "swing", "slide",

@@ -3098,8 +3098,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
     if count is None:
         count = UNCOUNTED if plural else 1
     count = count if exact else min(count, CROWD)
-    if m.category == "books" and not counted:
-        count = 1
+    if m.category in ("books", "string_lights") and not counted:
+        count = 1  # ("books on the shelf", "fairy lights strung over the bar": one lot of them)
     if plural and count == 1 and counted and not m.each and toks[max(m.start - 1, 0)].text not in ("a", "an"):
         count = 2
     if not counted and not plural and any(a.lower() in _ORDINALS for a in adjectives):

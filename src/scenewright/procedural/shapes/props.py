@@ -577,8 +577,32 @@ def bowl(m: Model) -> None:
             m.ball("flower" if k % 2 else "flower_alt", (np.cos(a) * 0.2 * m.sx, np.sin(a) * 0.2 * m.sy, h * 0.6), (s, s, s))
 
 
+def garland(m: Model) -> None:
+    """A string of lights, or of bunting flags, strung across the box's width: a cord sagging from
+    its two ends at the top to its middle, with lit bulbs or little triangular flags hanging from it."""
+    W, H = m.sx / 2, m.sz
+    flags = m.named("bunting", "flag", "flags", "pennant", "pennants")
+    m.main = "canvas" if flags else "light"
+    n = int(np.clip(round(m.sx / 0.3), 6, 40))
+    xs = np.linspace(-W, W, n + 1)
+    drop = 0.55 * H if flags else 0.75 * H  # the flags hang below the cord's lowest point
+
+    def cord(x: float) -> float:
+        return H - 0.01 - drop * (1.0 - (x / W) ** 2)
+
+    for k, (a, b) in enumerate(zip(xs[:-1], xs[1:])):  # (each a hair thicker, so no two share a cap)
+        m.cylinder("dark_plastic", (a, 0.0, cord(a)), (b, 0.0, cord(b)), 0.006 * (1 + 0.01 * k), fraction=0.2)
+    for k, x in enumerate((xs[:-1] + xs[1:]) / 2):
+        z = cord(x)
+        if flags:
+            half = 0.4 * (xs[1] - xs[0])
+            m.extrude("canvas" if k % 2 else "accent", [(x - half, z), (x + half, z), (x, z - 0.4 * H)], "y", -0.003, 0.003)
+        else:
+            m.ball("light", (x, 0.0, z - 0.04), (0.025, 0.025, 0.035), fraction=0.3)
+
+
 SHAPES = {
-    "table_lamp": table_lamp, "floor_lamp": floor_lamp, "pendant_lamp": pendant_lamp, "rug": rug, "tv": tv,
+    "garland": garland, "table_lamp": table_lamp, "floor_lamp": floor_lamp, "pendant_lamp": pendant_lamp, "rug": rug, "tv": tv,
     "monitor": monitor, "laptop": laptop, "vase": vase, "potted_plant": potted_plant, "clock": clock,
     "mirror": mirror, "picture_frame": picture_frame, "trash_can": trash_can, "crate": crate, "barrel": barrel,
     "books": books, "bottle": bottle, "cup": cup, "bowl": bowl,
