@@ -1877,3 +1877,9 @@ def test_string_lights_are_one_string_strung_where_the_text_says():
         (r.source, r.relation, r.target) for r in parsed.relations}
     assert objects("Warm pendant lights hang above the tables.")[("pendant_lamp", "light")] == 3
     assert objects("Bunting hangs above the stage.")[("string_lights", "bunting")] == 1
+
+
+def test_an_orangery_behind_someone_is_a_glasshouse_and_her_verb_no_thing():
+    parsed = parse_scene("A lady sits on a bench. Behind her rises a glass orangery, and gardeners prune the roses.")
+    assert "greenhouse" in {o.category for o in parsed.objects} and "rise" not in {o.name for o in parsed.objects}
+    assert ("greenhouse_1", "behind", "lady_1") in {(r.source, r.relation, r.target) for r in parsed.relations}

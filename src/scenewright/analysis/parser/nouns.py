@@ -95,7 +95,8 @@ def _max_phrase_len() -> int:
 _VENUES = {"room", "hall", "shop", "store", "garden", "yard", "market", "park", "studio", "gallery", "lab",
            "area", "aisle", "section", "station", "court", "museum", "cafe", "café", "bar", "square",
            "street", "farm", "factory", "workshop", "showroom", "district", "festival", "fair", "lot",
-           "lounge", "parlour", "parlor", "emporium", "boutique", "depot", "dealership", "nursery"}  # fmt: skip
+           "lounge", "parlour", "parlor", "emporium", "boutique", "depot", "dealership", "nursery", "expo",
+           "convention", "meetup", "sale"}  # fmt: skip
 #: Nouns that often qualify the next word ("a stone path", "a pine forest", "a canvas awning").
 _MODIFIER_NOUNS = {"glass", "stone", "rock", "crystal", "box", "plant", "flower", "book", "rope", "candle",
                    "cat", "dog", "fruit", "bird", "horse", "tree", "sign", "toy", "table", "cactus", "mushroom",
@@ -1510,6 +1511,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         ) or _shares_article(toks, i, covered)  # ("a family of colonists": the colonists, nobody listed)
         if not counter or w == "one" and i + 1 < n and toks[i + 1].text in ("of", "another", "other"):
             continue
+        if owner and i + 1 < n and _verb_with_object(toks, i + 1):
+            continue  # "behind her rises a glass orangery": her own, then the verb of what comes after
         rough = i + 2 < n and toks[i + 1].text in _APPROXIMATE and _elided_at(toks, i + 2) is not None
         if _elided_at(toks, i) is not None or (i + 1 < n and _elided_at(toks, i + 1) is not None) or rough:
             continue  # "a third waits": more of a group named before (:func:`_elided_members`)
