@@ -1511,7 +1511,7 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         ) or _shares_article(toks, i, covered)  # ("a family of colonists": the colonists, nobody listed)
         if not counter or w == "one" and i + 1 < n and toks[i + 1].text in ("of", "another", "other"):
             continue
-        if owner and i + 1 < n and _verb_with_object(toks, i + 1):
+        if owner and i + 2 < n and _is_verb(toks[i + 1].text) and toks[i + 2].text in ("a", "an"):
             continue  # "behind her rises a glass orangery": her own, then the verb of what comes after
         rough = i + 2 < n and toks[i + 1].text in _APPROXIMATE and _elided_at(toks, i + 2) is not None
         if _elided_at(toks, i) is not None or (i + 1 < n and _elided_at(toks, i + 1) is not None) or rough:
