@@ -1883,3 +1883,17 @@ def test_an_orangery_behind_someone_is_a_glasshouse_and_her_verb_no_thing():
     parsed = parse_scene("A lady sits on a bench. Behind her rises a glass orangery, and gardeners prune the roses.")
     assert "greenhouse" in {o.category for o in parsed.objects} and "rise" not in {o.name for o in parsed.objects}
     assert ("greenhouse_1", "behind", "lady_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
+
+
+def test_what_an_animal_rests_in_or_on_with_its_is_a_thing_but_its_body_is_not():
+    assert ("husky_1", "on", "doghouse_1") in {
+        (r.source, r.relation, r.target) for r in parse_scene("A husky watches from its kennel.").relations}
+    assert names("A cat naps on its blanket.") == {"cat", "blanket"}
+    assert names("A vet listens to its chest with a stethoscope. A dragon lies on the table.") >= {"vet", "dragon"}
+    assert "chest" not in names("A dragon lies on the table; a vet listens to its chest with a stethoscope.")
+
+
+def test_weather_and_a_scan_name_no_things():
+    assert names("A polar research station in a blizzard: two orange huts stand side by side.") == {"hut"}
+    assert "scan" not in names("A doctor studies a scan at a glowing console.")
+    assert "soldering station" in names("A cluttered garage: a soldering station smokes next to a pile of circuit boards.")

@@ -91,6 +91,10 @@ class _References:
                 own_support = pos >= 2 and toks[pos - 1].text in ("on", "upon") and toks[pos - 2].text in _PLACING_VERBS
                 # ("a horse looks out of its stable": one's own shelter, a thing of its own)
                 own_support = own_support or [t.text for t in toks[max(0, pos - 2) : pos]] == ["out", "of"]
+                # ("a husky sleeps in its kennel", "a cat naps on its blanket": what one rests in or on, a thing)
+                own_support = own_support or load_vocabulary().carries(m.category, m.phrase.lower(), ("seats",)) or (
+                    m.category in ("doghouse", "basket") or self.catalogue[m.category].shape in ("rug", "bed")
+                )
                 if owner and m.group < 0 and not own_support and not any(g.category == m.category for g in self.groups):
                     self._part = singular(toks[m.end - 1].text)
                     return owner, m.end  # "pumpkins on its counter": the stall's own counter is the stall
