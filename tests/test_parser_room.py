@@ -323,3 +323,13 @@ def test_a_thing_hung_beside_the_door_is_on_its_wall_and_one_standing_there_is_n
 
     assert placed("A kitchen. A brass bell hangs beside the door.") == {("bell_1", "on wall")}
     assert placed("A kitchen. A coat rack stands beside the door, and a dog sleeps by the door.") == set()
+
+
+def test_a_standing_board_fixed_to_a_wall_hangs_flat():
+    from scenewright.analysis.parser.room import WALL_SHEET_DEPTH, wall_units
+
+    parsed = parse_scene("A bakery: a counter stands by the window, and a chalkboard menu hangs on the wall behind it.")
+    board = next(o for o in wall_units(parsed) if o.category == "menu_board")
+    assert board.size[1] == WALL_SHEET_DEPTH and board.size[0] > board.size[2] and board.rests == "hanging"
+    standing = next(o for o in parse_scene("A chalkboard menu stands by the door of the cafe.").objects)
+    assert standing.size[1] > WALL_SHEET_DEPTH  # an A-frame on the pavement keeps its legs

@@ -515,11 +515,14 @@ WALL_UNIT_DEPTH = 0.3
 
 #: m, the depth of a thing nobody listed that the text fixes to a wall ("a calendar hangs on the wall").
 WALL_SHEET_DEPTH = 0.05
+#: Boards that stand on legs by themselves and hang flat, wider than tall, when fixed to a wall.
+WALL_BOARDS = {"menu_board", "sign"}
 
 
 def wall_units(parsed: ParsedScene) -> list:
     """``parsed``'s objects, each storage unit the text fixes to a wall (:func:`wall_phrases`) the
-    size of a wall unit (:data:`WALL_UNIT_HEIGHTS`), and each thing nobody listed that is fixed
+    size of a wall unit (:data:`WALL_UNIT_HEIGHTS`), each standing board a flat one (:data:`WALL_BOARDS`),
+    and each thing nobody listed that is fixed
     there flat against it: a board if nothing says its shape ("a diploma hangs on the wall"),
     stood up if it was guessed lying flat ("a map pinned to the wall"; a tool hangs as it is); the
     rest as they are."""
@@ -530,6 +533,8 @@ def wall_units(parsed: ParsedScene) -> list:
         width, depth, tall = o.size
         if o.id in mounted and height is not None and tall > height:
             o = replace(o, size=(width, min(depth, WALL_UNIT_DEPTH), height))
+        elif o.id in mounted and o.category in WALL_BOARDS:  # ("a chalkboard menu hangs on the wall": no A-frame)
+            o = replace(o, size=(min(max(width, tall), 1.2), WALL_SHEET_DEPTH, min(width, tall)), rests="hanging")
         elif o.id in mounted and o.guessed and o.category == "thing":
             o = replace(o, category="panel", size=(width, WALL_SHEET_DEPTH, tall), rests="hanging")
         elif o.id in mounted and o.guessed and o.category != "tool" and tall < min(width, depth):
