@@ -154,17 +154,19 @@ _CARRY_VERBS = {f"{stem}{end}" for stem in ("carr", "hurr") for end in ("y", "ie
                                 "return", "trundle", "steer", "tow") for end in ("", "s", "es", "ing", "ed")
 } | {"takes", "take", "taking", "drives", "drive", "driving", "runs", "run", "running", "goes", "go", "going",
      "dragging", "brought", "led", "took", "drove", "went", "ran"}  # fmt: skip
-#: Verbs of going with a living thing one leads or chases: where the doer goes ("walks a dachshund
-#: Verbs of leaving a place: "from" after one names where one was ("climbs from the cab", "steps
-#: from the bus"), not where one is.
 #: Participles that say how a lifeless thing is set down, besides the regular "-ed" ones.
 _STATE_PARTICIPLES = {"laid", "slung", "hung", "set", "resting", "lying", "standing", "hanging", "leaning", "balanced"}
+#: Verbs of leaving a place: "from" after one names where one was ("climbs from the cab", "steps
+#: from the bus"), not where one is.
 _LEAVING_VERBS = {"climb", "step", "fall", "emerge", "run", "walk", "come", "return", "escape", "flee", "hop",
                   "slide", "tumble", "stumble", "descend", "dismount", "alight", "rise", "drift", "fly", "swing",
                   "stream", "pour", "spill", "hang", "dangle", "leak", "drip", "float"}  # fmt: skip
+#: Verbs whose "from" names where a thing is taken from ("takes a cup from the chair", "unloads crates
+#: from a trawler"), not where the doer is.
+_TAKING_VERBS = {"take", "pull", "lift", "grab", "pick", "fetch", "remove", "snatch", "steal", "draw", "collect",
+                 "unload", "offload"}  # fmt: skip
+#: Verbs of going with a living thing one leads or chases: where the doer goes ("walks a dachshund
 #: beside the van", "children chase a dog around the well") is the doer's place, the other keeps by them.
-#: Verbs whose "from" names where a thing is taken from ("takes a cup from the chair"), not where the doer is.
-_TAKING_VERBS = {"take", "pull", "lift", "grab", "pick", "fetch", "remove", "snatch", "steal", "draw", "collect", "unload", "offload"}
 _LEAD_VERBS = {"walk", "walks", "walking", "lead", "leads", "leading", "guide", "guides", "guiding",
                "chase", "chases", "chasing"}  # fmt: skip
 #: Verbs of giving ("a robot hands one of them a toolbox"): the giver has the thing in hand and
