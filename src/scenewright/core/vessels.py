@@ -28,6 +28,12 @@ _CABIN_DECK = (-0.5, -0.55, 0.5, -0.2)
 _OPEN_DECK = (-0.4, -0.45, 0.4, 0.85)
 
 
+def boat_text(name: str, category: str | None, description: str) -> str:
+    """A boat's words as its procedural mesh reads them (name, category, description, lower case):
+    what the functions below take as ``text``."""
+    return f"{name} {category or ''} {description}".lower().replace("_", " ")
+
+
 def has_sail(text: str, size) -> bool:
     """A boat with a mast: by its words, or by its size (taller than half again its width)."""
     return mentions(text, SAILS) or float(size[2]) > 1.5 * float(size[0])

@@ -58,7 +58,7 @@ import numpy as np
 
 from scenewright.core.catalogue import load_catalogue
 from scenewright.core.relations import ABOVE, BUFFER, FACE_DEGREES, FAR, NEAR, ON_GAP
-from scenewright.core.vessels import deck_area, deck_share
+from scenewright.core.vessels import boat_text, deck_area, deck_share
 from scenewright.geometry import front_direction, rotation_matrix, world_box
 from scenewright.scene import RELATION_TYPES, ROOM_RELATIONS, ROOM_TARGET, Room, SceneObject, Vec3, room_target
 
@@ -87,7 +87,7 @@ def rest_share(obj: SceneObject) -> float:
     has its surface there."""
     category = load_catalogue().get(obj.category) if obj.category else None
     if category is not None and category.shape == "boat":
-        return deck_share(_boat_words(obj), obj.size.tuple())
+        return deck_share(boat_text(obj.name, obj.category, obj.visual_description), obj.size.tuple())
     share = category.rest_for(obj.name) if category is not None else None
     return share or 1.0
 
@@ -99,12 +99,8 @@ def rest_area(obj: SceneObject) -> np.ndarray | None:
     category = load_catalogue().get(obj.category) if obj.category else None
     if category is None or category.shape != "boat":
         return None
-    return np.array(deck_area(_boat_words(obj), obj.size.tuple()), dtype=float)
-
-
-def _boat_words(obj: SceneObject) -> str:
-    """A boat's words as its procedural mesh reads them: name, category, description."""
-    return f"{obj.name} {obj.category} {obj.visual_description}".lower().replace("_", " ")
+    text = boat_text(obj.name, obj.category, obj.visual_description)
+    return np.array(deck_area(text, obj.size.tuple()), dtype=float)
 
 
 @dataclass(frozen=True)
@@ -135,16 +131,17 @@ class Boxes:
         return self.lo[..., 2] + np.asarray(self.rest) * (self.hi[..., 2] - self.lo[..., 2])
 
     @classmethod
-    def at(cls, centre: np.ndarray, half: np.ndarray, yaw, foot: np.ndarray | None = None, rest=None, area=None) -> Boxes:
+    def at(
+        cls, centre: np.ndarray, half: np.ndarray, yaw, foot: np.ndarray | None = None, rest=None, area=None
+    ) -> Boxes:
         centre = np.asarray(centre, dtype=float)
         return cls(centre - half, centre + half, np.asarray(yaw, dtype=float), foot, rest, area)
 
     @classmethod
     def of(cls, obj: SceneObject) -> Boxes:
         lo, hi = world_box(obj)
-        return cls(
-            lo, hi, np.asarray(obj.yaw, dtype=float), footprint_half(obj.size, obj.rotation), rest_share(obj), rest_area(obj)
-        )
+        foot = footprint_half(obj.size, obj.rotation)
+        return cls(lo, hi, np.asarray(obj.yaw, dtype=float), foot, rest_share(obj), rest_area(obj))
 
     def __getitem__(self, k) -> Boxes:
         """The boxes selected by an index or mask over the leading axis."""

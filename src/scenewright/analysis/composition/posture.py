@@ -18,7 +18,7 @@ from scenewright.analysis.composition import roles
 from scenewright.analysis.parser import ParsedObject, ParsedScene
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.core.catalogue import load_catalogue
-from scenewright.core.vessels import is_open
+from scenewright.core.vessels import boat_text, is_open
 
 #: Kneeling first: one who kneels on a cushion or a mat kneels there (the reader counts the
 #: verbs of kneeling among those of sitting, for what carries them).
@@ -85,12 +85,8 @@ def _clause_of(parsed: ParsedScene, obj: ParsedObject) -> str:
 def _hosts(parsed: ParsedScene, obj: ParsedObject) -> list[ParsedObject]:
     """What the parse puts ``obj`` on."""
     by_id = {o.id: o for o in parsed.objects}
-    return [by_id[r.target] for r in parsed.relations if r.source == obj.id and r.relation == "on" and r.target in by_id]
-
-
-def _words(obj: ParsedObject) -> str:
-    """An object's name, category and description, lower case, as its procedural mesh reads them."""
-    return f"{obj.name} {obj.category} {obj.description}".lower().replace("_", " ")
+    return [by_id[r.target] for r in parsed.relations
+            if r.source == obj.id and r.relation == "on" and r.target in by_id]  # fmt: skip
 
 
 def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
@@ -120,7 +116,10 @@ def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
     if any(h in SITTING_HOSTS for h in hosts):
         return "sitting"
     vocabulary = load_vocabulary()
-    decked = [o for o in _hosts(parsed, obj) if load_catalogue()[o.category].shape == "boat" and not is_open(_words(o))]
+    decked = [
+        o for o in _hosts(parsed, obj)
+        if load_catalogue()[o.category].shape == "boat" and not is_open(boat_text(o.name, o.category, o.description))
+    ]  # fmt: skip
     if any(vocabulary.carries(h, h, ("vehicles", "mounts")) for h in hosts) and not decked:
         # riders sit ("a soldier on horseback", "children in the bus") unless they stand on it;
         # on a boat with a deck they stand ("fishermen unload crates from a trawler")

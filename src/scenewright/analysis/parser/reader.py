@@ -2898,7 +2898,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # ("a vendor sells fruit from a cart": by what one sells from, a cart or a stall)
             taken = taken or kind == "from" and self._verb_before(self._target_start, lambda w: w in _WARES_VERBS)
             # ("fishermen unload crates from a trawler": they stand by what they take things from)
-            taken = taken or kind == "from" and self._verb_before(self._target_start, lambda w: _verb_stem(w, _TAKING_VERBS))
+            taken = taken or kind == "from" and self._verb_before(
+                self._target_start, lambda w: _verb_stem(w, _TAKING_VERBS)
+            )
             bird = self.catalogue[src.category].shape == "bird"  # ("a crow watches from the weathervane")
             if self._living(s) and (self._carrier(t) or self._perch_part or bird) and not taken:
                 return "on"
