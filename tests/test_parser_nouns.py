@@ -1897,3 +1897,10 @@ def test_weather_and_a_scan_name_no_things():
     assert names("A polar research station in a blizzard: two orange huts stand side by side.") == {"hut"}
     assert "scan" not in names("A doctor studies a scan at a glowing console.")
     assert "soldering station" in names("A cluttered garage: a soldering station smokes next to a pile of circuit boards.")
+
+
+def test_a_drip_stand_is_a_thing_and_its_stand_no_verb():
+    parsed = parse_scene("Six recliners stand in two rows, each with a drip stand beside it and a donor lying back in it.")
+    assert Counter(o.name for o in parsed.objects) == Counter({"recliner": 6, "drip stand": 6, "donor": 6})
+    found = {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert {("drip_stand_1", "side of", "armchair_1"), ("donor_6", "on", "armchair_6")} <= found
