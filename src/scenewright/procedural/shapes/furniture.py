@@ -29,10 +29,15 @@ def _picnic_table(m: Model) -> None:
         m.box("wood", (x - 0.35 * leg, -0.96 * D, seat - t - 0.06 * H), (x + 0.35 * leg, 0.96 * D, seat - t))
 
 
+#: Words of the tables games are played on: a pool table's and a ping-pong table's.
+_POOL = ("pool", "billiard", "billiards", "snooker")
+_PING_PONG = ("ping pong", "ping-pong", "table tennis")
+
+
 def _games_table(m: Model) -> None:
     """A pool table (green cloth in a wooden rail, a pocket at each corner and side) or a
     ping-pong table (a blue-green top with white lines and a net across, on metal legs)."""
-    pool = m.named("pool", "billiard", "billiards", "snooker")
+    pool = m.named(*_POOL)
     m.main = "canvas"
     m.tints["canvas"] = COLOURS["green"] if pool else COLOURS["teal"]
     W, D, H = m.sx / 2, m.sy / 2, m.sz
@@ -58,8 +63,8 @@ def _games_table(m: Model) -> None:
     for side in (-1, 1):
         m.box("paper", (side * w - (side > 0) * line, -d, H - 0.0105), (side * w + (side < 0) * line, d, H - 0.007),
               rounded=0.0)
-        m.box("paper", (-w + line, side * d - (side > 0) * line, H - 0.0110), (w - line, side * d + (side < 0) * line, H - 0.008),
-              rounded=0.0)
+        m.box("paper", (-w + line, side * d - (side > 0) * line, H - 0.0110),
+              (w - line, side * d + (side < 0) * line, H - 0.008), rounded=0.0)
     m.box("dark_plastic", (-0.005, -D - 0.05, H - 0.006), (0.005, D + 0.05, H + 0.15), rounded=0.0)  # the net
 
 
@@ -67,7 +72,7 @@ def table(m: Model) -> None:
     if m.named("picnic"):
         _picnic_table(m)
         return
-    if m.named("pool", "billiard", "billiards", "snooker", "ping pong", "ping-pong", "table tennis"):
+    if m.named(*_POOL, *_PING_PONG):
         _games_table(m)
         return
     t = m.thick(0.04, 0.2 * m.sz)

@@ -596,14 +596,15 @@ def garland(m: Model) -> None:
         z = cord(x)
         if flags:
             half = 0.4 * (xs[1] - xs[0])
-            m.extrude("canvas" if k % 2 else "accent", [(x - half, z), (x + half, z), (x, z - 0.4 * H)], "y", -0.003, 0.003)
+            flag = [(x - half, z), (x + half, z), (x, z - 0.4 * H)]
+            m.extrude("canvas" if k % 2 else "accent", flag, "y", -0.003, 0.003)
         else:
             m.ball("light", (x, 0.0, z - 0.04), (0.025, 0.025, 0.035), fraction=0.3)
 
 
 SHAPES = {
-    "garland": garland, "table_lamp": table_lamp, "floor_lamp": floor_lamp, "pendant_lamp": pendant_lamp, "rug": rug, "tv": tv,
-    "monitor": monitor, "laptop": laptop, "vase": vase, "potted_plant": potted_plant, "clock": clock,
+    "garland": garland, "table_lamp": table_lamp, "floor_lamp": floor_lamp, "pendant_lamp": pendant_lamp, "rug": rug,
+    "tv": tv, "monitor": monitor, "laptop": laptop, "vase": vase, "potted_plant": potted_plant, "clock": clock,
     "mirror": mirror, "picture_frame": picture_frame, "trash_can": trash_can, "crate": crate, "barrel": barrel,
     "books": books, "bottle": bottle, "cup": cup, "bowl": bowl,
 }

@@ -9,6 +9,7 @@ import math
 
 import numpy as np
 
+from scenewright.core.catalogue import load_catalogue
 from scenewright.procedural.builder import Model
 from scenewright.procedural.shapes.buildings import _crane, _dish, _dome, _windmill, house
 from scenewright.procedural.shapes.props import _basket, _chest, _creel
@@ -187,8 +188,8 @@ def _climbing_frame(m: Model) -> None:
     for x in xs:
         for y in ys:
             m.post("paint", x, y, 0.0, H, bar, fraction=0.3)
-    deck = 0.5 * H
-    m.box("wood", (xs[0], ys[0] + bar, deck - 0.04), (xs[1], ys[1] - bar, deck), rounded=0.0)  # (between the rungs' ends)
+    deck = load_catalogue()["climbing_frame"].rest_height * H  # (between the rungs' ends)
+    m.box("wood", (xs[0], ys[0] + bar, deck - 0.04), (xs[1], ys[1] - bar, deck), rounded=0.0)
     for k, y in enumerate(ys):  # the top rails (a hair apart in thickness, so they never share faces)
         m.cylinder("accent", (xs[0], y, H - bar), (xs[-1], y, H - bar), 0.8 * bar * (1 + 0.05 * k), fraction=0.3)
     for x in np.linspace(xs[0], xs[-1], 7)[1:-1]:  # monkey bars across
@@ -365,8 +366,9 @@ def _ramp(m: Model) -> None:
         m.box("wood", (-W + deck + run, -D, 0), (W - deck - run, D, 0.01 * H), rounded=0.0)
 
 def structure(m: Model) -> None:
-    """A large open structure; its name picks it: dome, climbing frame, ferris wheel, windmill, crane, carousel,
-    platform, stage, scaffold, launch pad, grandstand, siege engine, skate ramp; else a truss gantry."""
+    """A large open structure; its name picks it: dome, climbing frame, ferris wheel, windmill, crane,
+    carousel, platform, stage, scaffold, launch pad, grandstand, siege engine, skate ramp; else a truss
+    gantry."""
     variants = (
         (("dome", "igloo", "geodesic dome", "habitat dome", "dome habitat"), _dome),
         (("climbing frame", "jungle gym", "monkey bars", "play structure"), _climbing_frame),
