@@ -42,6 +42,9 @@ FRONT_CORNER_DEPTH = 3.0
 ABOVE = 2.05
 #: m, the least width of a seat that makes a table turn its long side to it (a bench, a sofa).
 LONG_SEAT = 1.2
+#: How many things facing one target make a ring, and the least footprint (m²) of a member placed
+#: after the target's other neighbours (a tent, a market stall; not a chair or a person).
+RING, RING_WIDE = 3, 2.0
 
 #: Places an object the relations leave unplaced next to what is already there.
 FreeSpot = Callable[[ParsedObject, dict[str, Footprint]], Footprint]
@@ -200,7 +203,12 @@ def place_related(
         placed[obj.id] = beside(obj, t, anchored.target, rel, turn)
         _lay_under(obj, outgoing[obj.id], flat, placed, by_id)
 
-    for obj in objects:
+    # a wide ring waits for the rest: benches on either side of a campfire hug it, and the tents
+    # around it stand beyond them (chairs around a table, a crowd facing a stage keep their turn)
+    facers = Counter(r.target for r in relations if r.relation == "face to")
+    ring = {r.source for r in relations if r.relation == "face to" and facers[r.target] >= RING
+            and by_id[r.source].size[0] * by_id[r.source].size[1] > RING_WIDE}  # fmt: skip
+    for obj in sorted(objects, key=lambda o: o.id in ring):
         place(obj)
     resting = {frozenset((r.source, r.target)) for r in relations if r.relation in ("on", "above")}
     for obj in objects:  # turn what faces something toward it, now that both stand

@@ -76,6 +76,9 @@ _DEPICTIONS = ("statue", "hologram", "picture_frame", "sign", "billboard", "pane
 _FLAT_HOLDERS = ("plate", "pallet")
 #: Shapes that hold what they hold inside, out of the layout ("a greenhouse holds tomato plants").
 _ENCLOSURES = ("house", "building", "tent", "kiosk")
+#: What has the parts of a building (a roof, a door, a porch): enclosures, and stalls under their roof
+#: (a stall's only when the sentence names it: "the roof" of a hall is no stall's).
+_ROOFED = (*_ENCLOSURES, "market_stall")
 #: m, an enclosure lower than this is an animal's hutch or kennel, no building one goes into.
 _HUTCH_HEIGHT = 1.5
 #: m, a thing whose top is narrower than this (a post, a pole) holds only what hangs from it.

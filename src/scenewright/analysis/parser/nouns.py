@@ -1261,7 +1261,9 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     settled = settled or kept
     if opening and later and not later_before(later, toks, e) and settled:
         return True
-    if e < len(toks) and toks[e].text in _PLACE_OPENERS:
+    # (mid-sentence, a place with things is one of the scene's: "..., and a tea house with a lantern
+    # hanging from its eaves stands behind the pond")
+    if e < len(toks) and toks[e].text in _PLACE_OPENERS and (j < 0 or toks[j].text not in ("and", ",")):
         starts = {r[0] for r in later}
         k = e + 1
         while k < len(toks) and toks[k].text not in (".", "!", "?", ";"):

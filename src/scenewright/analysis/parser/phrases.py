@@ -42,7 +42,7 @@ _SINGLE_TARGET = {
     "side of": ("side of",), "near": ("near",), "far": ("far",), "on": ("on",), "above": ("above",),
     "over": ("above",), "face to": ("face to",), "opposite": ("in front of", "face to"), "between": ("near",),
     "foot of": ("in front of",), "head of": ("behind",), "hanging from": ("above",), "leaning on": ("side of",),
-    "along": ("near",), "talking to": ("near",), "hitched": ("behind",),
+    "along": ("near",), "talking to": ("near",), "hitched": ("behind",), "crossing": ("on",),
 }  # fmt: skip
 
 

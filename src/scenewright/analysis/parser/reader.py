@@ -155,6 +155,12 @@ def _each_lead(toks: list[_Tok], k: int, ce: int) -> int:
     return j - 1
 
 
+#: Phrase kinds whose target is left unsaid: the thing just named ("on either side", "at one end").
+_ELLIPTIC = ("flank elliptic", "above elliptic", "end of elliptic")
+#: m, a palm grown in a pot ("a tall potted palm stands on either side of the desk").
+_POTTED_PALM = (1.0, 1.0, 2.2)
+
+
 @dataclass
 class _Clause:
     """What one clause has built so far."""
@@ -374,8 +380,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         adjectives = {a.lower() for a in m.adjectives}
         if m.category == "table" and adjectives & {"round", "circular"}:
             m.category = "round_table"
-        if adjectives & {"potted", "pot"} and self.catalogue[m.category].shape in _PLANT_SHAPES:
-            m.category, m.guess = "potted_plant", None  # "a potted palm" is a house plant, not a 6 m tree
+        potted = bool(adjectives & {"potted", "pot"}) and self.catalogue[m.category].shape in _PLANT_SHAPES
+        if potted and m.category != "palm_tree":
+            m.category, m.guess = "potted_plant", None  # "a potted olive tree" is a house plant, not a 6 m tree
         if (m.category == "table_lamp" and m.phrase.lower() in ("lamp", "lamps") and self._under_word(m.start)
                 and not (m.end < len(self.toks) and (self.toks[m.end].text in ("on", "upon", "atop")
                                                       or self.toks[m.end].text.endswith("ed")))):
@@ -418,6 +425,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         bounds = "person" if cat.shape == "figure" else "creature" if self._lives(m.category) else "thing"
         base = m.guess.size if m.guess is not None else self._likeness_size(cat, kind) or cat.size
         base = self._kin_size(cat, kind, head) or base
+        base = _POTTED_PALM if potted and m.category == "palm_tree" else base  # (a palm still, in its pot)
         base = stretched(scaled(base, describing, bounds), describing)
         likeness_of = {*kind, *describing} & vocabulary.replica_words
         if likeness_of and (cat.shape != "figure" or likeness_of - {"model"}):
@@ -1610,6 +1618,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         """One relation phrase, in steps: read the phrase and its target, find what it places, set
         out a formation or an anchor, resolve the target, then relate (or hand the phrase to the
         clause's subject when it comes first). Returns where the reading goes on."""
+        last = max((m.end for m in self.by_start.values() if m.end <= rel.start), default=0)
+        if rel.kind == "end of elliptic" and any(t.text == "with" for t in self.toks[last : rel.start]):
+            return rel.end  # "a table with folded fabric piled at one end": stuff, no thing of the scene
         p = self._read_phrase(c, rel, ce, prev_subject)
         if (stop := self._sources(c, p, prev_subject, last_event_end)) is not None:
             return stop
@@ -2016,6 +2027,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         said_end = any(t.text in ("back", "rear", "front") for t in toks[rel.start : rel.end])
         if end_of_place and p.target is None and said_end:
             kind = f"anchor {end_of_place}"  # "a counter at the back of the shop": the setting's back, no thing's
+        # (what the with-part's owners sit around or at)
+        tables = [r[2] for r in self.relations
+                  if r[1] in (c.head or ()) and self.catalogue[self.groups[r[2]].category].support]
+        if kind == "anchor centre" and toks[rel.end - 1].text != "of" and srcs and srcs == c.wsub and tables and (
+            not any(self._living(g) for g in srcs)
+        ):  # "four students sit around a table, with a plate of biscuits in the middle": the table's middle
+            self._relate("on", srcs, tables[-1])
+            c.wsub_related.update(srcs)
+            return end
         if kind in _FORMATIONS or kind.startswith("anchor ") or (p.target is None and kind in _PLACE_KINDS):
             # "three stalls stand in a row", "a sofa against the wall", "a rug in the middle of the room"
             place = _PLACE_KINDS.get(kind) or self._anchor_after(rel.end, ce) if not kind.startswith("anchor ") else kind
@@ -2096,7 +2116,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # "a bench sits beneath a willow on the right": a side of the scene, which the
             # willow is on, not a side of the willow ("to the right" after it stays the willow's)
             targets = []
-        elif target is None and (kind in ("left", "right", "flank elliptic", "above elliptic") or rel.elliptic):
+        elif target is None and (kind in ("left", "right", *_ELLIPTIC) or rel.elliptic):
             # "a bed with a nightstand on either side": a with-thing's side is its head's ("films the
             # tents from high above": above them)
             owner = list(c.head) if c.head is not None and srcs == c.wsub else []
@@ -2312,6 +2332,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # (counted on "each" side: that many a side, "two players stand on each side of the net")
             apiece = any(t.text == "each" for t in toks[rel.start : rel.end])
             self._one_a_side(srcs, apiece=apiece)  # also beside what is no object: "on each side of the elevator"
+        postures = load_vocabulary().postures
+        seated = self._verb_before(rel.start, lambda w: w in postures["sitting"] or w in postures["lying"])
+        if kind == "end of elliptic":
+            kind = "end of"  # "a long bench ...; a lady sits at one end": of the thing just named
+        if kind == "end of" and seated and targets and all(self._carrier(t, ("seats",)) for t in targets):
+            kind = "on"  # "an old man sits at one end of the bench": on it, at that end
         hang = kind == "hanging from" or self._hung_before(rel.start)
         hang = hang or any(t.text in _HANG_VERBS for t in toks[rel.start : rel.end])  # "hangs over the bar"
         if hang and kind in ("above", "over", "hanging from") and self._from_ceiling(rel.start):
@@ -2357,6 +2383,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             c.produced = True
             return end
         instance = self.instance.get(self._target_start) if isinstance(target, list) else None
+        one_of = [t.text for t in toks[rel.end : rel.end + 2]] == ["one", "of"]
+        if instance is None and one_of and len(targets) == 1 and self.groups[targets[0]].count > 1:
+            # "a dog lies at the foot of one of them": of the first, not of them all
+            instance = 0
         if target == "that one" and self.groups[targets[0]].count > 1:  # "in front of the middle one"
             named = [t.text for t in toks[rel.end : end] if t.text not in _DETERMINERS and t.text not in ("one", "on")]
             instance = self._member(named, targets[0])
@@ -2831,6 +2861,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if not hang and self._living(s) and self._carrier(t, ("perches",)) and low and not bent:
                 return "on"
             return "above" if hang or src.rests in ("hanging", "surface") else "near"
+        if kind == "crossing":
+            # "a bridge crosses the pond", "a fox crosses the bridge": on what is low enough to cross
+            # (a pronoun that missed the stream and found the hill beside it crosses nothing)
+            low = self.groups[t].size[2] < _LOW_HOST or self._carrier(t, ("perches",)) and not self._tall_perch(t)
+            return "on" if low and not self._living(t) else "no relation"
         walled = any(m.group == s for k, m in self.by_start.items() if k in self.on_wall)
         if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not (hang or walled or self._mountable(s)):
             return "near"  # a tree "above" a pond cannot float: read it as near (a rack on the wall can hang)

@@ -16,6 +16,7 @@ from scenewright.analysis.parser.grammar import (
     _OWNER_PARTS,
     _PERSON_POSSESSIVES,
     _PLATFORM_HEIGHT,
+    _ROOFED,
     _ROOFED_VEHICLES,
     _SIDE_WORDS,
 )
@@ -389,7 +390,7 @@ class _References:
         shapes = [self.catalogue[g.category].shape for g in self.groups]
         latest = range(len(self.groups) - 1, -1, -1)
         buildings = [
-            *(g for g in latest if g in here and shapes[g] in (*_ENCLOSURES, *_ROOFED_VEHICLES)),
+            *(g for g in latest if g in here and shapes[g] in (*_ROOFED, *_ROOFED_VEHICLES)),
             *(g for g in latest if shapes[g] in _ENCLOSURES),
             *(g for g in latest if shapes[g] in _ROOFED_VEHICLES),
         ]

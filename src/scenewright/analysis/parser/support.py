@@ -108,6 +108,7 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
                 o for o in objects
                 if o.id != obj.id and (o.rests or catalogue[o.category].rests) == "ground" and 0.3 < o.size[2] < 2.5
                 and o.anchor != "centre"  # a picture hangs on a wall, over nothing in the middle of the room
+                and catalogue[o.category].shape not in LIVING_SHAPES  # (over furniture, not over someone's head)
             ]  # fmt: skip
             if hosts:
                 # the nearest mention, the one before on a tie ("a dresser with a mirror")

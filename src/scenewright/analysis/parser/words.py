@@ -250,7 +250,7 @@ _PUT_OR_WORKED = {
 _FROM_AFAR = {
     "watch", "see", "eye", "admire", "observe", "chase", "follow", "kick", "throw", "face", "guard",
     "approach", "pursue", "film", "photograph", "sell", "serve", "hunt", "stalk", "sniff",
-    "ignore", "greet", "wait", "guide", "lead", "walk", "ride", "drive", "steer", "board", "climb", "cross",
+    "ignore", "feed", "greet", "wait", "guide", "lead", "walk", "ride", "drive", "steer", "board", "climb", "cross",
     "enter", "circle", "block",
 }  # fmt: skip
 #: Verbs of aiming, by their stem: what they take is a tool or a weapon in the doer's hand, however

@@ -59,6 +59,11 @@ def palm_tree(m: Model) -> None:
     r = m.thick(0.05 * min(m.sx, m.sy) + 0.05, 0.08 * min(m.sx, m.sy))
     steps = 8
     prev = np.array([0.0, 0.0, 0.0])
+    if m.has("potted"):  # a house palm: its trunk rises from a pot
+        pot_r, pot_h = 0.22 * min(m.sx, m.sy), 0.2 * m.sz
+        m.lathe("ceramic", [(0.75 * pot_r, 0), (pot_r, 0.92 * pot_h), (1.05 * pot_r, pot_h)])
+        m.lathe("soil", [(0.95 * pot_r, pot_h - 0.02), (0.95 * pot_r, pot_h + 0.005)])
+        prev[2] = pot_h
     for i in range(1, steps + 1):
         t = i / steps
         cur = np.array([lean * t * t, 0.0, top * t])
