@@ -429,3 +429,15 @@ def test_the_only_thing_above_a_long_table_hangs_over_its_middle():
     o = _by_id(initial_objects(parse_scene("A bay: a long grow table stands under a bright lamp.")))
     lamp, table = o["pendant_lamp_1"], o["table_1"]
     assert abs(lamp.position.x - table.position.x) < 1e-6 and abs(lamp.position.y - table.position.y) < 1e-6
+
+
+def test_a_ring_of_wide_things_stands_beyond_the_targets_other_neighbours():
+    sides = ("left of", "right of", "in front of", "behind")
+    ring = [(f"tent_{k + 1}", side, "campfire_1", False) for k, side in enumerate(sides)]
+    ring += [(f"tent_{k + 1}", "face to", "campfire_1", False) for k in range(4)]
+    benches = [("bench_1", "left of", "campfire_1", False), ("bench_2", "right of", "campfire_1", False)]
+    objects = _by_id(initial_objects(_scene(*["tent"] * 4, "campfire", "bench", "bench", relations=ring + benches)))
+    fire = objects["campfire_1"]
+    for bench, tent in (("bench_1", "tent_1"), ("bench_2", "tent_2")):
+        assert _gap(objects[bench], fire) < _gap(objects[tent], fire)  # the bench hugs the fire, the tent is beyond
+    assert not any(_plan_overlap(objects[a], objects[b]) for a in objects for b in objects if a < b)

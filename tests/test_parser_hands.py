@@ -726,3 +726,8 @@ def test_a_small_harp_a_bard_plays_and_a_prayer_wheel_one_spins_are_in_hand():
     assert ("harp_1", "on", "bard_1") in rels("A bard plays a small harp.")
     assert ("prayer_wheel_1", "on", "woman_1") in rels("An old woman spins a prayer wheel.")
     assert ("woman_1", "near", "spinning_wheel_1") in rels("A woman spins wool at a spinning wheel.")
+
+
+def test_what_one_feeds_is_not_in_hand():
+    found = {(r.source, r.relation, r.target) for r in parse_scene("An old man sits on a bench, feeding the koi.").relations}
+    assert ("fish_1", "on", "man_1") not in found

@@ -1817,3 +1817,34 @@ def test_watching_the_work_from_a_tree_names_no_work():
     parsed = parse_scene("Three alien monkeys watch the work from the nearest tree.")
     assert "work" not in {o.name for o in parsed.objects}
     assert ("alien_monkey_1", "on", "tree_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
+
+
+def test_what_crosses_a_low_thing_is_on_it():
+    assert ("bridge_1", "on", "pond_1") in rels("A koi pond lies in the garden, and a red arched bridge crosses it.")
+    assert ("fox_1", "on", "bridge_1") in rels("A stone bridge spans the pond. A fox crosses the bridge.")
+    # "it" that missed the stream (no thing) and found the hill: a bridge crosses no hill
+    found = rels("At the foot of the hill, four cottages huddle by a stream, and a stone bridge crosses it.")
+    assert not any(s.startswith("bridge") and t.startswith("hill") for s, _, t in found)
+
+
+def test_one_of_them_is_one_member():
+    assert rels("Two hikers sit on a bench, and a dog lies at the foot of one of them.") >= {
+        ("dog_1", "in front of", "hiker_1")
+    }
+    assert ("dog_1", "in front of", "hiker_2") not in rels("Two hikers sit on a bench, and a dog lies at the foot of one of them.")
+
+
+def test_the_middle_of_the_table_they_sit_around_and_one_end_of_a_seat():
+    found = rels("Four students sit around a folding table, with a plate of biscuits in the middle.")
+    assert ("plate_1", "on", "table_1") in found and not any(s == "plate_1" and t.startswith("student") for s, _, t in found)
+    assert ("man_1", "on", "bench_1") in rels("A long bench stands by the wall, and an old man sits at one end of it.")
+    assert ("lady_1", "on", "bench_1") in rels("A long bench stands by the wall; a lady sits at one end with a poodle.")
+    assert ("man_1", "near", "bench_1") in rels("A man stands at the end of the bench.")
+    # stuff piled at one end is no thing: the with-part goes on to what is on the table
+    assert ("shears_1", "on", "table_1") in rels("A long table with folded fabric piled at one end and a pair of shears on it.")
+
+
+def test_a_stall_named_in_the_sentence_has_a_roof():
+    assert ("neon_sign_1", "on", "market_stall_1") in rels("A drone hovers above the stall, and a neon sign glows on its roof.")
+    # "the roof" of a hall is no stall's, named sentences before
+    assert not any(t.startswith("market_stall") for _, _, t in rels("A stall sells bread. Bats flap around under the roof."))

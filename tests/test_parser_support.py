@@ -172,3 +172,11 @@ def test_what_stands_by_a_thing_on_a_stage_shares_the_stage_unless_it_also_stand
     assert ("dog_1", "stage_1") not in hall
     farm = on("Robots wade through the terraces. A farmer sits on a bamboo platform, steering the robots.")
     assert not {s for s, t in farm if s.startswith("robot")}
+
+
+def test_fish_nobody_places_swim_in_the_pond_and_hanging_things_hang_over_no_one():
+    found = _supports("A koi pond lies under a cherry tree. An old man sits on a bench, feeding the koi.")
+    assert ("fish_1", "pond_1") in found and ("fish_1", "man_1") not in found
+    above = {(r.source, r.target) for r in parse_scene("A ramen stall. Two customers wait. A neon sign glows.").relations
+             if r.relation == "above"}  # fmt: skip
+    assert not any(t.startswith("customer") for _, t in above)

@@ -2336,6 +2336,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         seated = self._verb_before(rel.start, lambda w: w in postures["sitting"] or w in postures["lying"])
         if kind == "end of elliptic":
             kind = "end of"  # "a long bench ...; a lady sits at one end": of the thing just named
+        seated = seated and bool(srcs) and all(self._living(g) for g in srcs)
         if kind == "end of" and seated and targets and all(self._carrier(t, ("seats",)) for t in targets):
             kind = "on"  # "an old man sits at one end of the bench": on it, at that end
         hang = kind == "hanging from" or self._hung_before(rel.start)

@@ -45,6 +45,10 @@ _GENERAL_HOSTS = frozenset({
 })  # fmt: skip
 
 
+#: What fish swim in when the text puts them nowhere.
+_FISH_WATERS = ("pond", "aquarium", "fountain")
+
+
 def usual_host(host: str, thing: str) -> bool:
     """Whether a thing of category ``thing`` is usually set on a ``host``: a general host, or one
     its preferences name (a candle on a fireplace; an inkwell on a desk, not on a fireplace)."""
@@ -72,9 +76,15 @@ def _infer_support(objects: list[ParsedObject], relations: list[ParsedRelation],
     for o in objects:
         first_of.setdefault(o.group, o.id)
     stacked = {o.id for o in objects if o.formation == "stack" and first_of[o.group] != o.id}
+    waters = [o for o in objects if o.category in _FISH_WATERS]
     for obj in objects:
         rests = obj.rests or catalogue[obj.category].rests
         if obj.id in placed_vertically or obj.id in stacked:
+            continue
+        if obj.category == "fish" and waters:
+            # "an old man feeds the koi": in the pond (the nearest mention), never on the grass
+            water = min(waters, key=lambda o: (abs(o.group - obj.group), o.group > obj.group))
+            extra.append(ParsedRelation(obj.id, "on", water.id, inferred=True))
             continue
         if rests == "surface" and obj.id not in ridden:
             # "a rocking horse and a gramophone stand in the middle of the floor": where the text

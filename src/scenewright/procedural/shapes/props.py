@@ -8,7 +8,41 @@ from scenewright.procedural.builder import Model
 from scenewright.procedural.shapes.machines import _cauldron
 
 
+def _lantern(m: Model) -> None:
+    """A lantern, not a lamp with a shade: a paper globe on its cord, a stone garden lantern (a
+    post under a lit box and a roof), or a glass and metal lantern with a ring to carry it by."""
+    r, H = min(m.sx, m.sy) / 2, m.sz
+    if m.has("paper", "chinese", "silk", "rice paper"):
+        m.main = "paper"
+        m.ball("paper", (0, 0, 0.5 * H), (r, r, 0.42 * H))
+        m.ball("light", (0, 0, 0.5 * H), (0.45 * r, 0.45 * r, 0.25 * H), fraction=0.5)
+        for z0, z1 in ((0.0, 0.12 * H), (0.88 * H, H)):
+            m.lathe("lacquer", [(0.45 * r, z0), (0.45 * r, z1)], fraction=0.6)
+        return
+    if m.has("stone", "granite", "garden", "toro"):
+        m.main = "stone"
+        m.box("stone", (-r, -r, 0), (r, r, 0.08 * H))
+        m.post("stone", 0, 0, 0.08 * H, 0.5 * H, 0.35 * r, fraction=0.6)
+        m.box("stone", (-0.8 * r, -0.8 * r, 0.5 * H), (0.8 * r, 0.8 * r, 0.56 * H))
+        m.box("light", (-0.5 * r, -0.5 * r, 0.56 * H), (0.5 * r, 0.5 * r, 0.76 * H))
+        m.lathe("stone", [(r, 0.76 * H), (0.15 * r, 0.95 * H)], fraction=0.5)
+        m.ball("stone", (0, 0, 0.96 * H), (0.15 * r, 0.15 * r, 0.05 * H), fraction=0.4)
+        return
+    m.main = "dark_metal"
+    m.lathe("dark_metal", [(0.9 * r, 0), (0.9 * r, 0.1 * H), (0.7 * r, 0.12 * H)], fraction=0.6)
+    m.lathe("glass", [(0.65 * r, 0.12 * H), (0.75 * r, 0.45 * H), (0.65 * r, 0.72 * H)], fraction=0.6)
+    m.ball("flame", (0, 0, 0.38 * H), (0.18 * r, 0.18 * r, 0.12 * H), fraction=0.4)
+    for k in range(4):  # the frame's posts
+        a = np.pi / 4 + k * np.pi / 2
+        m.post("dark_metal", 0.72 * r * np.cos(a), 0.72 * r * np.sin(a), 0.1 * H, 0.74 * H, m.thick(0.006, 0.06 * r), 0.3)
+    m.lathe("dark_metal", [(0.85 * r, 0.72 * H), (0.2 * r, 0.86 * H)], fraction=0.6)
+    m.torus("dark_metal", (0, 0, 0.92 * H), 0.3 * r, m.thick(0.005, 0.05 * r), axis="x", fraction=0.4)
+
+
 def table_lamp(m: Model) -> None:
+    if m.named("lantern", "lanterns", "hurricane lamp", "oil lamp"):
+        _lantern(m)
+        return
     m.main = "ceramic"
     r = min(m.sx, m.sy) / 2
     shade_h = 0.42 * m.sz
