@@ -1904,3 +1904,19 @@ def test_a_drip_stand_is_a_thing_and_its_stand_no_verb():
     assert Counter(o.name for o in parsed.objects) == Counter({"recliner": 6, "drip stand": 6, "donor": 6})
     found = {(r.source, r.relation, r.target) for r in parsed.relations}
     assert {("drip_stand_1", "side of", "armchair_1"), ("donor_6", "on", "armchair_6")} <= found
+
+
+def test_plurals_nobody_counted_are_things_when_wordnet_plainly_names_them():
+    def counts(text: str) -> Counter:
+        return Counter(singular(o.name.split()[-1].lower()) for o in parse_scene(text).objects)
+
+    found = counts("Five skydivers drift down under bright parachutes overhead. Two instructors fold parachutes on a tarp.")
+    assert found["parachute"] >= 2
+    assert counts("The pool is crowded with sunbathers.")["sunbather"] >= 2
+    # worn, a cover or a fitting, a stuff something is made of: no things
+    for text, word in (("Students in jumpsuits wait by the hut.", "jumpsuit"),
+                       ("Four tables with white tablecloths stand in the room.", "tablecloth"),
+                       ("A radio operator with headphones on sits at a table.", "headphone"),
+                       ("A chandelier made of cogs and gears hangs from the ceiling.", "gear"),
+                       ("A wooden box stands on stilts.", "stilt")):  # fmt: skip
+        assert word not in counts(text), text

@@ -1493,6 +1493,33 @@ def _hyphened_head_after(toks: list[_Tok], j: int, covered: set[int]) -> bool:
     return False
 
 
+#: Words after which a plural nobody counted is a thing of the scene ("drift under bright
+#: parachutes", "a pool crowded with sunbathers", "reels and brushes"), as after a verb.
+#: (Not "on": "a box on stilts", "saddles hang on pegs" name what holds it up.)
+_BARE_OPENERS = {"with", "under", "and", "among", "amid", "beside", "between"}
+
+
+def _bare_plural_after(toks: list[_Tok], i: int, covered: set[int]) -> bool:
+    """After ``i`` (an opener or a verb), up to two describing words and a plural that
+    :meth:`Vocabulary.bare_thing` takes for things, which nothing else read and no noun follows."""
+    w = toks[i].text
+    vocabulary = load_vocabulary()
+    # (a word right after a noun that describes nothing is its verb: "two instructors fold parachutes")
+    verb = _is_verb(w) or i - 1 in covered and w.isalpha() and not vocabulary.is_adjective(w)
+    if not (w in _BARE_OPENERS or verb and w not in _STOP):
+        return False
+    if w == "and" and (i - 1 not in covered or any(t.text == "of" for t in toks[max(0, i - 3) : i])):
+        return False  # ("film cans and reels"; not "a chandelier made of cogs and gears")
+    k = i + 1
+    while k < len(toks) and k - i <= 2 and k not in covered and vocabulary.is_adjective(toks[k].text):
+        k += 1
+    after = toks[k + 1].text if k + 1 < len(toks) else "."
+    last = after in _STOP or not after[:1].isalpha() or after in _FINITE or after in _PLACE_ADVERBS
+    if w == "with" and after == "on":
+        return False  # "a radio operator with headphones on": worn
+    return k < len(toks) and k not in covered and last and vocabulary.bare_thing(toks[k].text)
+
+
 def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None]]) -> list:
     """Noun phrases whose head neither the catalogue nor the vocabulary knows ("a zorbulator",
     "three glimmerwings"): counted phrases only, and only heads that can name a thing; after
@@ -1510,7 +1537,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         definite = owner or w == "the"  # only for a person ("the old watchmaker sits ...")
         counter = definite or w in ("a", "an", "another") or w in _NUMBERS or w in _VAGUE or w.isdigit() or (
             w == "of" and i > 0 and (toks[i - 1].text in _QUANTITY or singular(toks[i - 1].text) in _PEOPLE_GROUPS)
-        ) or _shares_article(toks, i, covered)  # ("a family of colonists": the colonists, nobody listed)
+        ) or _shares_article(toks, i, covered) or _bare_plural_after(toks, i, covered)
+        # ("a family of colonists": the colonists, nobody listed; "fold parachutes on a tarp")
         if not counter or w == "one" and i + 1 < n and toks[i + 1].text in ("of", "another", "other"):
             continue
         if owner and i + 2 < n and _is_verb(toks[i + 1].text) and toks[i + 2].text in ("a", "an"):

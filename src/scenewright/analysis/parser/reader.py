@@ -1988,6 +1988,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         """Phrases that place by no target: no relation ("toward the rack"), a formation ("in a
         row", "stacked"), a part of the room ("against the wall", "in the middle of the room")."""
         toks, rel, kind, srcs, end, ce = self.toks, p.rel, p.kind, p.srcs, p.end, p.ce
+        if kind == "stack" and rel.end < ce and toks[rel.end].text == "of" and isinstance(p.target, list) and p.target:
+            p.kind = "in" if toks[rel.start].text == "in" else "on"  # "two aliens wait in a stack of cages": in them
+            return None
         toward = toks[rel.start].text.startswith(("toward", "heading"))
         # a load trails its puller, a led animal its leader and what one carries its carrier: none of
         # them is what goes there ("two rescuers carry a stretcher towards the helicopter": they face it)

@@ -38,6 +38,12 @@ _BUILDING_KINDS = frozenset({"building", "place of business", "establishment", "
                              "farm building", "place of worship", "mercantile establishment"})  # fmt: skip
 #: Letters a word keeps before an ending for the ending to tell its family ("gator" is no machine).
 _MIN_STEM = 3
+#: WordNet's kinds of sense a bare plural must name to be things of the scene, and the kinds of
+#: made thing one wears (a bare plural of those is clothing: "students in jumpsuits") or that are
+#: a part or a cover of another ("tables with white tablecloths", "a box on stilts").
+_BARE_SENSES = ("noun.artifact", "noun.animal", "noun.person")
+_NOT_BARE_KINDS = frozenset({"clothing", "garment", "footwear", "headdress", "attire", "protective garment",
+                         "linen", "piece of cloth", "fabric", "fastener", "structural member"})  # (and fittings, covers)
 #: Letters the listed noun that ends a closed compound must have to name it ("racehorse" is a horse;
 #: a "carpet" is no pet, a "pheasant" no ant).
 _MIN_HEAD = 4
@@ -207,6 +213,18 @@ class Vocabulary:
         # an ending makes an adjective only after a stem of its own ("tallest", not "nest" or "chest")
         endings = ("ly", "ous", "ful", "ish", "less", "able", "ible", "ive", "ed", "est")
         return not any(w.endswith(e) and len(w) - len(e) >= _MIN_STEM for e in endings)
+
+    def bare_thing(self, word: str) -> bool:
+        """Whether a plural nobody counted or listed names things of the scene ("drift under bright
+        parachutes", "a pool crowded with sunbathers"): WordNet's sense of it is plainly a made
+        thing, an animal or a person, and nothing one wears ("in jumpsuits") or a part of a thing."""
+        w = word.lower()
+        one = singular(w)
+        if one == w or one in self.clothing or w in self.clothing or w in self.parts or not self.is_thing_word(w):
+            return False
+        if wordnet.kind_of_sense(one) not in _BARE_SENSES:
+            return False
+        return not any(kind in _NOT_BARE_KINDS for kind in wordnet.kinds(one))
 
     def names_place(self, word: str) -> bool:
         """Whether ``word`` (singular) is a place word: listed as one, or a word nobody listed that
