@@ -2771,7 +2771,7 @@ def _in_hand(toks: list[_Tok], owner: int) -> bool:
 
 
 #: Body parts that hold what is named right before "in his/her/their ...".
-_HOLDING_PARTS = {"hand", "hands", "arms", "grip", "fist", "lap", "paw", "paws", "claw", "claws"}
+_HOLDING_PARTS = {"hand", "hands", "arm", "arms", "grip", "fist", "lap", "paw", "paws", "claw", "claws"}
 
 
 def _held(toks: list[_Tok], head: int) -> bool:
@@ -2830,6 +2830,8 @@ def _alias_mentions(toks: list[_Tok], mentions: list[_Mention]) -> list[_Mention
             after is not None and (after.guess is None or _living_category(after.category))
         ):  # ("the alien captain" after "grey aliens", "the corral gate": the kind of the next
             continue  # thing; not "the fence rail", a rail nobody listed: the fence's)
+        if i - 1 in taken and (singular(t.text) in _FINITE or load_vocabulary().is_posture_verb(t.text)):
+            continue  # "the singer stands" after "a bandstand": her verb, no stand
         j = i - 1
         while j >= 0 and i - j <= 3 and toks[j].text not in _DEFINITE and toks[j].text not in _STOP:
             j -= 1

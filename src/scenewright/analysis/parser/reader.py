@@ -1938,9 +1938,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             srcs = [g for g in c.subjects if self._living(g)] or srcs
         if kind == "face to" and rel.kind == "at":  # "a guard aims a crossbow at them": the guard faces them
             srcs = [g for g in c.subjects if self._living(g)] or srcs
-        seats = isinstance(target, list) and all(self.catalogue[self.groups[t].category].shape in _SEATS for t in target)
+        seats = isinstance(target, list) and all(
+            self.catalogue[self.groups[t].category].shape in _SEATS or self._carrier(t, ("perches", "vehicles", "seats"))
+            for t in target
+        )
         if kind == "covering" and toks[rel.start].text.startswith("fill") and any(self._living(g) for g in srcs) and not seats:
-            kind = "near"  # "a girl fills a jug at the pump": by what she fills, not in it (seats they fill, they sit on)
+            kind = "near"  # "a girl fills a jug at the pump": by what she fills, not in it (seats they fill, they sit
+            # on, and a bandstand or a boat they fill they stand in: "a brass band fills the bandstand")
         p.kind, p.srcs = kind, srcs
         return None
 

@@ -238,8 +238,8 @@ _PLATFORM_TOP = 1.5
 #: a statue overhangs its plinth, a bird its bollard.
 _AREA_SLACK, _SIDE_SLACK = 2.0, 1.6
 #: People and animals sit, stand and perch on things smaller than themselves (a man on a stool,
-#: a lynx on a mound, a dog on a low stool): any host whose top is a stool's or wider.
-_PERCH_SIDE = 0.35
+#: a lynx on a mound, a dog on a low stool, a tourist on a suitcase): any host a stool's size or wider.
+_PERCH_SIDE = 0.3
 LIVING_SHAPES = ("figure", "animal", "bird")
 #: Furniture that stands on the floor, never on another piece ("a sofa on the desk" is beside it).
 _FLOOR_FURNITURE = {"sofa", "armchair", "bed", "wardrobe", "bookshelf", "office_chair", "piano", "fridge",
