@@ -1848,3 +1848,12 @@ def test_a_stall_named_in_the_sentence_has_a_roof():
     assert ("neon_sign_1", "on", "market_stall_1") in rels("A drone hovers above the stall, and a neon sign glows on its roof.")
     # "the roof" of a hall is no stall's, named sentences before
     assert not any(t.startswith("market_stall") for _, _, t in rels("A stall sells bread. Bats flap around under the roof."))
+
+
+def test_seats_a_person_sits_on_and_places_a_band_fills():
+    assert ("tourist_1", "on", "backpack_1") in rels("Two tourists sit on their suitcases.")
+    assert ("helmet_1", "on", "student_1") in rels("Three students wait, each with a helmet under one arm.")
+    found = rels("Eight players fill the bandstand, and the conductor stands on a box in front of it.")
+    assert ("player_1", "on", "gazebo_1") in found and ("conductor_1", "on", "crate_1") in found
+    assert not any(s.startswith("gazebo") and r == "on" for s, r, _ in found)  # "the conductor stands": no stand
+    assert ("girl_1", "near", "bucket_1") in rels("A girl fills a bucket at the pump.")
