@@ -1920,3 +1920,10 @@ def test_plurals_nobody_counted_are_things_when_wordnet_plainly_names_them():
                        ("A chandelier made of cogs and gears hangs from the ceiling.", "gear"),
                        ("A wooden box stands on stilts.", "stilt")):  # fmt: skip
         assert word not in counts(text), text
+
+
+def test_a_place_word_a_relation_puts_something_beside_is_its_building_not_a_person():
+    scene = parse_scene("Three big rigs are parked beside a wooden diner, and a neon sign glows on the diner's roof.")
+    diner = next(o for o in scene.objects if o.name.endswith("diner"))
+    assert diner.category == "house" and diner.size[2] > 3.0
+    assert next(o for o in parse_scene("Two diners sit at the counter.").objects).category == "figure"

@@ -461,6 +461,13 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         ):  # "an abandoned factory floor with a conveyor belt"
             places.append(" ".join(words))
             continue
+        j = s
+        while j > 0 and (toks[j - 1].text in _DETERMINERS or vocabulary.is_adjective(toks[j - 1].text)):
+            j -= 1
+        if cat in _LIVING and singular(words[-1]) in vocabulary.places and _placed_by(toks, j):
+            # "three rigs are parked beside a wooden diner": the building, not one who dines
+            building = vocabulary.building(tuple(words))
+            cat, entry = (building.category, building) if building is not None else (cat, entry)
         if " ".join(words) in places and s > 0 and toks[s - 1].text in _DEFINITE:
             building = vocabulary.building(tuple(words)) if _placed_by(toks, s - 1) else None
             if building is None:
