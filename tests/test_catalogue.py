@@ -123,7 +123,8 @@ def test_every_phrase_names_one_category():
 @pytest.mark.parametrize(
     "plural, single",
     [("chairs", "chair"), ("benches", "bench"), ("shelves", "shelf"), ("berries", "berry"), ("glass", "glass"),
-     ("bus", "bus"), ("boxes", "box"), ("cacti", "cactus"), ("pegasi", "pegasus"), ("tv", "tv")],
+     ("bus", "bus"), ("boxes", "box"), ("cacti", "cactus"), ("pegasi", "pegasus"), ("tv", "tv"),
+     ("volcanoes", "volcano"), ("potatoes", "potato"), ("canoes", "canoe"), ("horseshoes", "horseshoe")],
 )  # fmt: skip
 def test_singular(plural, single):
     assert singular(plural) == single

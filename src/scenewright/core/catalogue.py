@@ -129,6 +129,11 @@ def mentions(text: str, words) -> bool:
     return any(re.search(rf"\b{re.escape(w)}(?:e?s)?\b", text) for w in words)
 
 
+#: Nouns whose singular itself ends in "oe" (their plural only adds "s"; "horseshoes" ends in a shoe).
+_OE_NOUNS = frozenset(f"{n}s" for n in ("shoe", "canoe", "toe", "tiptoe", "hoe", "oboe", "floe", "sloe", "foe", "roe",
+                                         "doe", "aloe", "throe", "felloe"))
+
+
 def singular(word: str) -> str:
     """The singular of an English plural noun, by the common suffix rules."""
     if word in _IRREGULAR:
@@ -148,6 +153,8 @@ def singular(word: str) -> str:
         return word[:-3] + "f" if word.endswith("lves") else word[:-1]  # shelves, wolves; but hives, olives
     if word.endswith(("ches", "shes", "xes", "sses", "zes")):
         return word[:-2]
+    if word.endswith("oes") and word not in _OE_NOUNS and not word.endswith("shoes"):
+        return word[:-2]  # volcanoes, potatoes, heroes (but shoes, canoes, oboes)
     return word[:-1]
 
 
