@@ -276,3 +276,11 @@ def test_several_stacks_stand_as_that_many_columns():
     stacked = {(r.source, r.target) for r in stack_relations(parsed.objects, parsed.relations) if r.relation == "on"}
     assert stacked == {("crate_4", "crate_1"), ("crate_5", "crate_2"), ("crate_6", "crate_3"), ("crate_7", "crate_4"),
                        ("crate_8", "crate_5"), ("crate_9", "crate_6")}  # three columns of three on the first three
+
+
+def test_a_plural_the_opening_names_without_a_count_is_the_group_counted_later():
+    text = "A fishing contest among frogs, painted in soft gouache. Six frogs in straw hats sit along a wooden jetty."
+    assert sum(o.category == "animal" and o.name.endswith("frog") for o in parse_scene(text).objects) == 6
+    # a later sentence's plural is no opening: the rows after it are more of them
+    shelves = "A cave cut into a hillside. Tall shelves line both walls. Between the two rows of shelves, a trolley waits."
+    assert sum(o.category == "bookshelf" for o in parse_scene(shelves).objects) > 2

@@ -64,6 +64,7 @@ from scenewright.analysis.parser.nouns import (
     _participle,
     _post_description,
     _read_count,
+    _verbless_opening,
     worn_description,
 )
 from scenewright.analysis.parser.phrases import _Rel, _find_relations, _phrase_table
@@ -2986,10 +2987,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
 
 def _refer_forward(toks: list[_Tok], mentions: list[_Mention]) -> None:
     """"Holding up a book for the children to see. Nine children sit on a rug": a definite plural
-    nothing before names is the counted group the text introduces later, which then refers back
-    to it (its count is theirs), rather than three more."""
+    nothing before names (or an uncounted one in the opening's words) is the counted group the
+    text introduces later, which then refers back to it (its count is theirs), rather than three more."""
     for m in mentions:
-        if not (m.definite and not m.counted and _is_plural(toks, m)):
+        # (or a plural of the opening that names no count: "A fishing contest among frogs. Six frogs sit ...")
+        opening = _verbless_opening(toks, m.start) and not any(t.text in (".", "!", "?", ":") for t in toks[: m.start])
+        if not ((m.definite or opening) and not m.counted and _is_plural(toks, m)):
             continue
         head = singular(m.phrase.split()[-1].lower())
         same = [o for o in mentions if o.category == m.category and singular(o.phrase.split()[-1].lower()) == head]
