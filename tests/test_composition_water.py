@@ -143,3 +143,11 @@ def test_who_works_a_moored_boat_from_land_waits_by_the_pier_while_the_boat_floa
     for o in composition.objects:
         if o.name in ("fisherman", "crate", "stall"):
             assert o.position.y < composition.shore, o.id
+
+
+def test_an_icy_shore_still_lies_by_open_water_and_floes_and_lurkers_are_in_it():
+    assert detect_water("A penguin colony on an icy shore at the edge of the sea.", False)
+    assert not detect_water("Skaters on a frozen lake by the shore.", False)
+    text = "A leopard seal lurks in the water near the floe. A heron stands on a rock by the water."
+    assert floats("ice floe", "rock", text) and floats("leopard seal", "animal", text)
+    assert not floats("heron", "bird", text)

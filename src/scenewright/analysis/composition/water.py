@@ -28,6 +28,8 @@ VESSELS = frozenset({
     "ferry", "barge", "sampan", "narrowboat", "longship", "seaplane", "punt", "gondola", "trawler", "tugboat",
     "houseboat", "catamaran", "canoe", "kayak", "raft", "yacht", "ship", "steamer", "pontoon", "dinghy",
 })  # fmt: skip
+#: Head words of things that drift on the water like a boat, whatever their category ("an ice floe").
+ADRIFT = frozenset({"floe", "iceberg"})
 #: Categories that reach from the shore into the water.
 REACHING = frozenset({"pier"})
 #: Not up in the air: "a balloon floats above the quay" is no swimmer.
@@ -36,6 +38,8 @@ _AIRBORNE = r"(?!\s+(?:above|over|overhead|high|up|through the air|in the (?:air
 _IN_WATER = (rf"(?:swim(?:s|ming)?|swam|paddl(?:e|es|ed|ing)|wad(?:e|es|ed|ing)|bath(?:e|es|ed|ing)|bob(?:s|bed|bing)?|"
              rf"div(?:e|es|ed|ing)|dove|"
              rf"(?:float|drift|glid)(?:e|es|s|ed|ing)?){_AIRBORNE}")
+#: Words that put any thing in the water whatever it does there ("a leopard seal lurks in the water").
+_IN_THE_WATER = r"in the (?:water|sea|river|lake|shallows|waves)"
 #: Words that put a boat ashore: "pulled up on the shingle", "lies upside down", "a wrecked dinghy".
 _ASHORE = r"(?:pulled up|dragged|hauled|beached|stranded|wrecked|upturned|overturned|upside down|lies|lie|lying)"
 #: Relations that moor a floating thing along a pier's side.
@@ -60,11 +64,13 @@ def _said(name: str, text: str, verbs: str) -> bool:
 
 def floats(name: str, category: str | None, text: str) -> bool:
     """Whether the thing named ``name`` floats in the scene ``text`` describes: a boat or buoy
-    (by category or a vessel's head word) unless the text puts it ashore, or any thing the text
-    says swims, paddles, wades, floats, drifts, glides or bathes."""
+    (by category or a vessel's head word) unless the text puts it ashore, an ice floe, or any
+    thing the text says swims, paddles, wades, floats, drifts, glides or bathes, or is in the water."""
     if vessel(name, category):
         return not _said(name, text, _ASHORE)
-    return bool(name.strip()) and _said(name, text, _IN_WATER)
+    if not name.strip():
+        return False
+    return name.lower().split()[-1] in ADRIFT or _said(name, text, _IN_WATER) or _said(name, text, _IN_THE_WATER)
 
 
 def vessel(name: str, category: str | None) -> bool:

@@ -393,6 +393,9 @@ _WATER_PLACES = ("river", "riverside", "riverbank", "lake", "lakeside", "lakesho
                  "ocean", "harbour", "harbor", "harbourside", "bay", "canal", "towpath", "lagoon", "cove", "shore",
                  "shoreline", "beach", "coast", "quay", "quayside", "wharf", "waterfront", "marina", "fjord",
                  "estuary", "tideline", "pier", "jetty", "moored")
+#: The water itself among those words (the rest are land by it, which may be icy or dry itself).
+_WATERS = frozenset({"river", "lake", "sea", "ocean", "harbour", "harbor", "bay", "canal", "lagoon", "cove", "fjord",
+                     "estuary"})
 #: A bank of a river, not a bank of money: "on the far bank", "along the banks", "the river bank" (a
 #: robber runs from the bank, a guard stands on the bank's steps).
 _BANK = re.compile(r"\b(?:on|along) the (?:\w+ )?banks?\b(?!\s+(?:steps|vault|counter|building|doors?|roof)\b)|"
@@ -413,8 +416,9 @@ def detect_water(text: str, indoor: bool) -> bool:
         return False
     low = " ".join(re.findall(r"[a-zé']+", without_media(text).lower()))
     named = list(re.finditer(r"\b(?:" + "|".join(_WATER_PLACES) + r")\b", low))
+    # (what is frozen is the water: "an icy shore at the edge of the sea" lies by open water)
     if any(_NOT_OPEN_BEFORE.search(low[max(0, m.start() - 20) : m.start()]) or _NOT_OPEN_AFTER.search(low[m.end() :])
-           for m in named):
+           for m in named if m.group(0) in _WATERS):
         return False
     return bool(named) or bool(_BANK.search(low))
 
