@@ -1094,6 +1094,19 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         while k < ce and toks[k].text in ("and", "or", "but", "then", "also", "so", "there", "is", "are"):
             k += 1
         one_a_side = k + 1 < ce and toks[k].text == "one" and k + 1 in self.rel_at
+        # (not "..., one of them rocking a baby"; nor "one of them has turned its head": no place of its own)
+        placed = k + 3 < ce and not toks[k + 3].text.endswith("ing") and any(
+            j in self.rel_at and self.rel_at[j].kind not in ("face to", "no relation") for j in range(k + 3, ce)
+        )
+        if [t.text for t in toks[k + 1 : k + 3]] == ["of", "them"] and len(prev_subject) == 1 and placed:
+            # "ten penguins huddle on the ice, and three of them dive from a floe": those three, a
+            # group of their own split off the ten (the rest stay where the ten were put)
+            g, n = prev_subject[0], 1 if toks[k].text == "one" else _NUMBERS.get(toks[k].text, 0)
+            if n and self.groups[g].count > n:
+                prev_subject = [self._copy_group(g)]
+                self.groups[g].count -= n
+                self.groups[prev_subject[0]].count = n
+                self.numbered.add(prev_subject[0])
         if [t.text for t in toks[k : k + 3]] == ["one", "of", "them"]:
             c.one_of = list(prev_subject)
         if one_a_side and self.rel_at[k + 1].kind.startswith("flank"):
