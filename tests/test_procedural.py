@@ -807,3 +807,9 @@ def test_lanterns_are_lanterns_and_a_potted_palm_has_its_pot():
     potted = build_model("palm_tree", (1.0, 1.0, 2.2), "realistic", seed=1, description="tall potted palm", name="palm")
     assert "ceramic" in potted.geometry
     assert "ceramic" not in build_model("palm_tree", (4.0, 4.0, 6.0), "realistic", seed=1, name="palm").geometry
+
+
+def test_a_seal_is_no_leopard():
+    seal = build_model("animal", (0.5, 1.6, 0.5), "realistic", seed=1, name="leopard seal")
+    leopard = build_model("animal", (0.5, 1.6, 0.9), "realistic", seed=1, name="leopard")
+    assert "hide" in seal.geometry and "fur_light" not in seal.geometry and "fur_light" in leopard.geometry

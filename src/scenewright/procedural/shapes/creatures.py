@@ -88,6 +88,9 @@ def animal(m: Model) -> None:
     if m.named("fish", "koi", "goldfish", "carp", "shark", "dolphin", "whale"):
         fish(m)
         return
+    if m.named("seal", "sea lion", "walrus", "manatee", "dugong"):
+        _pinniped(m)
+        return
     kind, b = build_of(m)
     m.main = b.coat
     coat = b.coat
@@ -715,6 +718,27 @@ def _mannequin(m: Model) -> None:
 
 
 SHAPES = {"animal": animal, "bird": bird, "figure": figure}
+
+
+def _pinniped(m: Model) -> None:
+    """A seal (a sea lion, a walrus) lying with its head up, toward −Y: a long tapering body on
+    the ground, flippers at the front and a pair spread flat behind; a walrus has its tusks."""
+    m.main = "hide"
+    body_z = 0.32 * m.sz
+    m.ball("hide", (0, 0.08 * m.sy, body_z), (0.45 * m.sx, 0.4 * m.sy, body_z))
+    m.ball("hide", (0, -0.3 * m.sy, 0.5 * m.sz), (0.32 * m.sx, 0.16 * m.sy, 0.3 * m.sz), fraction=0.7)
+    head = np.array([0.0, -0.4 * m.sy, 0.78 * m.sz])
+    m.ball("hide", head, (0.24 * m.sx, 0.1 * m.sy, 0.2 * m.sz), fraction=0.6)
+    for s in (-1, 1):
+        m.ball("lacquer", head + (s * 0.12 * m.sx, -0.08 * m.sy, 0.06 * m.sz), (0.04 * m.sx, 0.02 * m.sy, 0.04 * m.sz),
+               fraction=0.3)
+        m.leaf("hide", (s * 0.3 * m.sx, -0.22 * m.sy, 0.2 * m.sz), (s * 0.5 * m.sx, -0.3 * m.sy, 0.02 * m.sz),
+               0.12 * m.sx, 0.03 * m.sz)
+        m.leaf("hide", (s * 0.05 * m.sx, 0.4 * m.sy, 0.1 * m.sz), (s * 0.3 * m.sx, m.sy / 2, 0.02 * m.sz),
+               0.15 * m.sx, 0.03 * m.sz)
+        if m.named("walrus"):
+            m.cylinder("horn", head + (s * 0.08 * m.sx, -0.09 * m.sy, -0.08 * m.sz),
+                       head + (s * 0.08 * m.sx, -0.1 * m.sy, -0.6 * m.sz), 0.02 * m.sx, 0.01 * m.sx, fraction=0.3)
 
 
 def fish(m: Model) -> None:
