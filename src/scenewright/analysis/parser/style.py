@@ -497,6 +497,8 @@ def _is_indoor(categories: list[str], text: str, catalogue, places: list[str] = 
                  "boarding gate"):
         votes += 2 * (bool(re.search(rf"\b{word}\b", setting)) + bool(re.search(rf"\b{word}\b", opening)))
     for word in ("street", "park", "garden", "square", "market", "beach", "forest", "yard", "outdoor", "harbour",
-                 "harbor", "village", "desert", "planet", "courtyard", "playground", "campsite", "field"):
+                 "harbor", "village", "desert", "planet", "courtyard", "playground", "campsite", "field", "alley",
+                 "alleyway", "roadside", "meadow", "orchard", "hillside", "riverbank", "shore", "seashore", "lakeshore",
+                 "dunes"):
         votes -= 2 * (bool(re.search(rf"\b{word}\b", setting)) + bool(re.search(rf"\b{word}\b", opening)))
     return votes > 0
