@@ -1698,7 +1698,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # ("hens around her feet" stay around her; "a surfboard under his arm", "an axe across his
         # knees", "a bag over her shoulder", "a snake around his neck" are carried)
         carried = ("on", "on top", "in", "under", "over", "around", "no relation", "on a carrier")
-        if (body in ("near", "side of", "in front of") and kind != "around") or (body == "on" and kind in carried):
+        # ("a parasol above her head" is above her)
+        if (body in ("near", "side of", "in front of") and kind not in ("around", "above")) or (body == "on" and kind in carried):
             kind = body
         elif body == "on" and kind == "at":  # "a shelf at his back": behind him, not carried
             kind, body = "behind" if any(t.text == "back" for t in toks[rel.end : end]) else "near", None
@@ -1851,6 +1852,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             in_hand = in_hand or company
             # "holding a lantern above her head": it stays in hand (above anything else it is above that)
             lifted = holding and kind in ("above", "over") and (body is not None or target in _PERSONAL)
+            whose = toks[rel.end].text if rel.end < len(toks) else ""
+            if lifted and whose in _PERSON_POSSESSIVES:
+                # "two footmen ..., holding a parasol above her head": over the queen, not their own heads
+                owner = self._person(c, list(c.head or []), _PERSON_POSSESSIVES[whose])
+                lifted = not owner or bool(set(owner) & set(c.head or []))
             in_hand = in_hand or lifted
             # the with-part named stuff that is no object of its own ("with geraniums"; not "with a
             # great bible", one thing the catalogue does not know), and no verb of the head's ("a man
@@ -2889,7 +2895,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             low = self.groups[t].size[2] < _LOW_HOST or self._carrier(t, ("perches",)) and not self._tall_perch(t)
             return "on" if low and not self._living(t) else "no relation"
         walled = any(m.group == s for k, m in self.by_start.items() if k in self.on_wall)
-        if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not (hang or walled or self._mountable(s)):
+        # ("a parasol above her head": held up over someone)
+        held_up = self._person_at(t) and load_vocabulary().carried_by_hand(src.category, src.name)
+        if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not (
+            hang or walled or self._mountable(s) or held_up
+        ):
             return "near"  # a tree "above" a pond cannot float: read it as near (a rack on the wall can hang)
         if kind == "leaning on" and self._person_at(s) and target.shape == "tool" and max(self.groups[t].size) <= _TOOL_SIZE:
             self.carried.add((t, s))
