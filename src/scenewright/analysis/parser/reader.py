@@ -1855,7 +1855,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             whose = toks[rel.end].text if rel.end < len(toks) else ""
             if lifted and whose in _PERSON_POSSESSIVES:
                 # "two footmen ..., holding a parasol above her head": over the queen, not their own heads
-                owner = self._person(c, list(c.head or []), _PERSON_POSSESSIVES[whose])
+                owner = self._person(c, list(c.wsub), _PERSON_POSSESSIVES[whose])
                 lifted = not owner or bool(set(owner) & set(c.head or []))
             in_hand = in_hand or lifted
             # the with-part named stuff that is no object of its own ("with geraniums"; not "with a
