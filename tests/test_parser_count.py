@@ -282,16 +282,18 @@ def test_a_plural_the_opening_names_without_a_count_is_the_group_counted_later()
     text = "A fishing contest among frogs, painted in soft gouache. Six frogs in straw hats sit along a wooden jetty."
     assert sum(o.category == "animal" and o.name.endswith("frog") for o in parse_scene(text).objects) == 6
     # a later sentence's plural is no opening: the rows after it are more of them
-    shelves = "A cave cut into a hillside. Tall shelves line both walls. Between the two rows of shelves, a trolley waits."
+    shelves = ("A cave cut into a hillside. Tall shelves line both walls. Between the two rows of shelves, a "
+               "trolley waits.")
     assert sum(o.category == "bookshelf" for o in parse_scene(shelves).objects) > 2
 
 
 def test_some_of_them_placed_apart_are_split_from_the_rest():
-    found = {(r.source, r.relation, r.target) for r in parse_scene("Ten penguins huddle on the ice, and three of them dive from a floe.").relations}
-    on_floe = {s for s, r, t in found if r == "on" and t.startswith("floe")}
-    assert len(on_floe) == 3
-    found = {(r.source, r.relation, r.target) for r in parse_scene("Five boys play football, and one of them sits on a bench.").relations}
-    assert len({s for s, r, t in found if r == "on" and t.startswith("bench")}) == 1
+    def on(text: str, host: str) -> set[str]:
+        return {r.source for r in parse_scene(text).relations if r.relation == "on" and r.target.startswith(host)}
+
+    assert len(on("Ten penguins huddle on the ice, and three of them dive from a floe.", "floe")) == 3
+    assert len(on("Five boys play football, and one of them sits on a bench.", "bench")) == 1
     # one of a flanking pair who only turns its head keeps its side
     text = "Two scarecrows stand on either side of the farm gate, and one of them has turned its head to watch."
-    assert {r.relation for r in parse_scene(text).relations if r.source.startswith("scarecrow")} >= {"left of", "right of"}
+    sides = {r.relation for r in parse_scene(text).relations if r.source.startswith("scarecrow")}
+    assert sides >= {"left of", "right of"}

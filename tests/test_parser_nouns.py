@@ -1910,8 +1910,8 @@ def test_plurals_nobody_counted_are_things_when_wordnet_plainly_names_them():
     def counts(text: str) -> Counter:
         return Counter(singular(o.name.split()[-1].lower()) for o in parse_scene(text).objects)
 
-    found = counts("Five skydivers drift down under bright parachutes overhead. Two instructors fold parachutes on a tarp.")
-    assert found["parachute"] >= 2
+    text = "Five skydivers drift down under bright parachutes overhead. Two instructors fold parachutes on a tarp."
+    assert counts(text)["parachute"] >= 2
     assert counts("The pool is crowded with sunbathers.")["sunbather"] >= 2
     # worn, a cover or a fitting, a stuff something is made of: no things
     for text, word in (("Students in jumpsuits wait by the hut.", "jumpsuit"),

@@ -177,6 +177,5 @@ def test_what_stands_by_a_thing_on_a_stage_shares_the_stage_unless_it_also_stand
 def test_fish_nobody_places_swim_in_the_pond_and_hanging_things_hang_over_no_one():
     found = _supports("A koi pond lies under a cherry tree. An old man sits on a bench, feeding the koi.")
     assert ("fish_1", "pond_1") in found and ("fish_1", "man_1") not in found
-    above = {(r.source, r.target) for r in parse_scene("A ramen stall. Two customers wait. A neon sign glows.").relations
-             if r.relation == "above"}  # fmt: skip
-    assert not any(t.startswith("customer") for _, t in above)
+    scene = parse_scene("A ramen stall. Two customers wait. A neon sign glows.")
+    assert not any(r.relation == "above" and r.target.startswith("customer") for r in scene.relations)

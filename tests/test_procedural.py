@@ -800,8 +800,8 @@ def test_a_string_of_lights_sags_across_its_width_and_bunting_carries_flags():
 def test_lanterns_are_lanterns_and_a_potted_palm_has_its_pot():
     lamp = build_model("table_lamp", (0.3, 0.3, 0.5), "realistic", seed=1, name="table lamp")
     oil = build_model("table_lamp", (0.25, 0.25, 0.4), "realistic", seed=1, name="lantern")
-    stone = build_model("table_lamp", (0.5, 0.5, 1.3), "realistic", seed=1, description="stone lantern", name="stone lantern")
-    paper = build_model("table_lamp", (0.4, 0.4, 0.5), "realistic", seed=1, description="paper lantern", name="paper lantern")
+    stone = build_model("table_lamp", (0.5, 0.5, 1.3), "realistic", seed=1, description="stone", name="stone lantern")
+    paper = build_model("table_lamp", (0.4, 0.4, 0.5), "realistic", seed=1, description="paper", name="paper lantern")
     assert "shade" in lamp.geometry and not {"shade"} & ({*oil.geometry} | {*stone.geometry} | {*paper.geometry})
     assert "glass" in oil.geometry and "stone" in stone.geometry and "paper" in paper.geometry
     potted = build_model("palm_tree", (1.0, 1.0, 2.2), "realistic", seed=1, description="tall potted palm", name="palm")

@@ -1699,7 +1699,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # knees", "a bag over her shoulder", "a snake around his neck" are carried)
         carried = ("on", "on top", "in", "under", "over", "around", "no relation", "on a carrier")
         # ("a parasol above her head" is above her)
-        if (body in ("near", "side of", "in front of") and kind not in ("around", "above")) or (body == "on" and kind in carried):
+        beside = body in ("near", "side of", "in front of") and kind not in ("around", "above")
+        if beside or (body == "on" and kind in carried):
             kind = body
         elif body == "on" and kind == "at":  # "a shelf at his back": behind him, not carried
             kind, body = "behind" if any(t.text == "back" for t in toks[rel.end : end]) else "near", None
@@ -1959,7 +1960,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if kind == "face to" and rel.kind == "at":  # "a guard aims a crossbow at them": the guard faces them
             srcs = [g for g in c.subjects if self._living(g)] or srcs
         seats = isinstance(target, list) and all(
-            self.catalogue[self.groups[t].category].shape in _SEATS or self._carrier(t, ("perches", "vehicles", "seats"))
+            self.catalogue[self.groups[t].category].shape in _SEATS
+            or self._carrier(t, ("perches", "vehicles", "seats"))
             for t in target
         )
         if kind == "covering" and toks[rel.start].text.startswith("fill") and any(self._living(g) for g in srcs) and not seats:

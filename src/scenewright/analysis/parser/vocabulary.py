@@ -43,7 +43,7 @@ _MIN_STEM = 3
 #: a part or a cover of another ("tables with white tablecloths", "a box on stilts").
 _BARE_SENSES = ("noun.artifact", "noun.animal", "noun.person")
 _NOT_BARE_KINDS = frozenset({"clothing", "garment", "footwear", "headdress", "attire", "protective garment",
-                         "linen", "piece of cloth", "fabric", "fastener", "structural member"})  # (and fittings, covers)
+                             "linen", "piece of cloth", "fabric", "fastener", "structural member"})
 #: Letters the listed noun that ends a closed compound must have to name it ("racehorse" is a horse;
 #: a "carpet" is no pet, a "pheasant" no ant).
 _MIN_HEAD = 4

@@ -34,7 +34,8 @@ def _lantern(m: Model) -> None:
     m.ball("flame", (0, 0, 0.38 * H), (0.18 * r, 0.18 * r, 0.12 * H), fraction=0.4)
     for k in range(4):  # the frame's posts
         a = np.pi / 4 + k * np.pi / 2
-        m.post("dark_metal", 0.72 * r * np.cos(a), 0.72 * r * np.sin(a), 0.1 * H, 0.74 * H, m.thick(0.006, 0.06 * r), 0.3)
+        x, y = 0.72 * r * np.cos(a), 0.72 * r * np.sin(a)
+        m.post("dark_metal", x, y, 0.1 * H, 0.74 * H, m.thick(0.006, 0.06 * r), 0.3)
     m.lathe("dark_metal", [(0.85 * r, 0.72 * H), (0.2 * r, 0.86 * H)], fraction=0.6)
     m.torus("dark_metal", (0, 0, 0.92 * H), 0.3 * r, m.thick(0.005, 0.05 * r), axis="x", fraction=0.4)
 
