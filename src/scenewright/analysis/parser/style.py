@@ -396,6 +396,8 @@ _WATER_PLACES = ("river", "riverside", "riverbank", "lake", "lakeside", "lakesho
 #: The water itself among those words (the rest are land by it, which may be icy or dry itself).
 _WATERS = frozenset({"river", "lake", "sea", "ocean", "harbour", "harbor", "bay", "canal", "lagoon", "cove", "fjord",
                      "estuary"})
+#: Words that set the scene under the water: its floor is the ground, and nothing lies by a shore.
+_UNDERWATER = re.compile(r"\b(?:sea ?floor|seabed|ocean floor|underwater|under the (?:sea|water|waves))\b")
 #: A bank of a river, not a bank of money: "on the far bank", "along the banks", "the river bank" (a
 #: robber runs from the bank, a guard stands on the bank's steps).
 _BANK = re.compile(r"\b(?:on|along) the (?:\w+ )?banks?\b(?!\s+(?:steps|vault|counter|building|doors?|roof)\b)|"
@@ -408,13 +410,15 @@ _NOT_OPEN_AFTER = re.compile(r"^\s*(?:ice|bed)\b")
 
 def detect_water(text: str, indoor: bool) -> bool:
     """Whether the scene lies by open water: an outdoor text whose words name a river, a lake,
-    the sea, a harbour, a shore or a bank (:data:`_WATER_PLACES`). A water named frozen or dry
-    anywhere makes the whole text's water so ("a frozen lake ... pine trees line the far
-    shore"). A room has no water, whatever its windows look out on ("a captain's cabin ... sea
-    charts")."""
+    the sea, a harbour, a shore or a bank (:data:`_WATER_PLACES`), and not the sea floor. A water
+    named frozen or dry anywhere makes the whole text's water so ("a frozen lake ... pine trees
+    line the far shore"). A room has no water, whatever its windows look out on ("a captain's
+    cabin ... sea charts")."""
     if indoor:
         return False
     low = " ".join(re.findall(r"[a-zé']+", without_media(text).lower()))
+    if _UNDERWATER.search(low):
+        return False  # "the ruins of a sunken city on the sea floor": under the water, no shore to lie by
     named = list(re.finditer(r"\b(?:" + "|".join(_WATER_PLACES) + r")\b", low))
     # (what is frozen is the water: "an icy shore at the edge of the sea" lies by open water)
     if any(_NOT_OPEN_BEFORE.search(low[max(0, m.start() - 20) : m.start()]) or _NOT_OPEN_AFTER.search(low[m.end() :])
