@@ -154,6 +154,6 @@ def test_an_icy_shore_still_lies_by_open_water_and_floes_and_lurkers_are_in_it()
 
 
 def test_a_scene_on_the_sea_floor_lies_under_the_water_not_by_it():
-    assert not detect_water("The ruins of a sunken city on the sea floor. Two divers swim past a row of columns.", False)
+    assert not detect_water("The ruins of a sunken city on the sea floor. Two divers swim past its columns.", False)
     assert not detect_water("An underwater kelp farm on the floor of a cold northern bay.", False)
     assert detect_water("A harbour at dawn, with fishing boats at the quay.", False)

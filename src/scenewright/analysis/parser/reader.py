@@ -2361,12 +2361,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # (counted on "each" side: that many a side, "two players stand on each side of the net")
             apiece = any(t.text == "each" for t in toks[rel.start : rel.end])
             self._one_a_side(srcs, apiece=apiece)  # also beside what is no object: "on each side of the elevator"
-        postures = load_vocabulary().postures
-        seated = self._verb_before(rel.start, lambda w: w in postures["sitting"] or w in postures["lying"])
         if kind == "end of elliptic":
             kind = "end of"  # "a long bench ...; a lady sits at one end": of the thing just named
-        seated = seated and bool(srcs) and all(self._living(g) for g in srcs)
-        if kind == "end of" and seated and targets and all(self._carrier(t, ("seats",)) for t in targets):
+        seats = kind == "end of" and bool(srcs and targets) and all(self._carrier(t, ("seats",)) for t in targets)
+        if seats and all(self._living(g) for g in srcs) and self._verb_before(
+            rel.start, lambda w: w in load_vocabulary().postures["sitting"] or w in load_vocabulary().postures["lying"]
+        ):
             kind = "on"  # "an old man sits at one end of the bench": on it, at that end
         hang = kind == "hanging from" or self._hung_before(rel.start)
         hang = hang or any(t.text in _HANG_VERBS for t in toks[rel.start : rel.end])  # "hangs over the bar"

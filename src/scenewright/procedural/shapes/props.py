@@ -9,8 +9,8 @@ from scenewright.procedural.shapes.machines import _cauldron
 
 
 def _lantern(m: Model) -> None:
-    """A lantern, not a lamp with a shade: a paper globe on its cord, a stone garden lantern (a
-    post under a lit box and a roof), or a glass and metal lantern with a ring to carry it by."""
+    """A lantern, not a lamp with a shade: a paper globe between its lacquered caps, a stone garden
+    lantern (a post under a lit box and a roof), or a glass and metal lantern with a ring to carry it by."""
     r, H = min(m.sx, m.sy) / 2, m.sz
     if m.has("paper", "chinese", "silk", "rice paper"):
         m.main = "paper"
