@@ -243,14 +243,20 @@ def _footprint_overlap(a: Boxes, b: Boxes) -> np.ndarray:
     return _separation(*_rectangle(a), *_rectangle(b)) < -EPS
 
 
+def _area_span(area: np.ndarray, half: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The middle and half extents, in the footprint's own frame, of the ``area`` (shares of the
+    half extents ``half``) that things put on it stand on."""
+    lo, hi = area[..., :2] * half, area[..., 2:] * half
+    return (lo + hi) / 2.0, (hi - lo) / 2.0
+
+
 def _rest_rectangle(b: Boxes) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The part of a footprint things put on it stand on (its ``area``), as :func:`_rectangle`."""
     centre, half, axes = _rectangle(b)
     if b.area is None:
         return centre, half, axes
-    area = np.broadcast_to(b.area, centre.shape[:-1] + (4,))
-    lo, hi = area[..., :2] * half, area[..., 2:] * half
-    return centre + np.einsum("...i,...ij->...j", (lo + hi) / 2.0, axes), (hi - lo) / 2.0, axes
+    middle, span = _area_span(np.broadcast_to(b.area, centre.shape[:-1] + (4,)), half)
+    return centre + np.einsum("...i,...ij->...j", middle, axes), span, axes
 
 
 def _centre_off(a: Boxes, b: Boxes) -> np.ndarray:
@@ -443,8 +449,8 @@ def propose(
         origin, _, axes = _rectangle(target)
         turned = np.abs(axes @ np.array([[half[0], 0.0], [0.0, half[1]]])).sum(-1)  # source box in that frame
         if relation == "on" and target.area is not None:  # (only the part things stand on)
-            lo, hi = target.area[:2] * target.foot, target.area[2:] * target.foot
-            local = Boxes.at(np.append((lo + hi) / 2.0, 0.0), np.append((hi - lo) / 2.0, 0.0), 0.0)
+            middle, span = _area_span(target.area, target.foot)
+            local = Boxes.at(np.append(middle, 0.0), np.append(span, 0.0), 0.0)
         else:
             local = Boxes.at(np.zeros(3), np.append(target.foot, 0.0), 0.0)
         regions = _region(relation, turned, local)
