@@ -361,6 +361,13 @@ def test_a_row_stays_a_row_by_relations_between_its_members():
     assert all(rel.check("right of", o[f"truck_{k + 1}"], o[f"truck_{k}"]) for k in range(1, 5))
 
 
+def test_a_row_beside_a_thing_stands_on_one_side_of_it():
+    made = compose(parse_scene("A desert camp. Three camels kneel in a row beside a striped tent."))
+    o = _by_id(made.objects)
+    sides = {rel.check("right of", o[f"camel_{k}"], o["tent_1"]) for k in (1, 2, 3)}
+    assert sides == {True}, sides  # not one left of it and two right
+
+
 def test_a_row_facing_a_thing_is_left_to_its_group():
     parsed = parse_scene("A small hall. Five chairs stand in a row facing the tv.")
     assert [o.formation for o in parsed.objects if o.category == "chair"] == ["row"] * 5

@@ -31,6 +31,15 @@ def rels(text: str) -> set[tuple[str, str, str]]:
         ("A race official with a flag sits on a snowmobile.", "flagpole_1", "race_official_1"),  # the subject's verb after
         ("A goat stands by the fence. A girl offers it a carrot.", "carrot_1", "girl_1"),
         ("Soigneurs stand in front of the cars, each holding a bag.", "backpack_1", "soigneur_1"),  # not the cars'
+        ("Two wrestlers grapple in a pit, watched by a trainer with a rod.", "rod_1", "trainer_1"),  # the doer's
+        ("Six photographers crouch at the foot of the catwalk, cameras raised.", "camera_1", "photographer_1"),
+        ("Three knights face the dragon, each carrying a spear and a polished shield.", "shield_1", "knight_1"),
+        ("Two peasants with pitchforks shout at the foot of the tree.", "pitchfork_1", "peasant_1"),  # a verb, no noun
+        ("A pirate digs beside the chest with a shovel.", "shovel_1", "pirate_1"),  # work done with it, not on the chest
+        ("A boy throws a snowball at the snowman.", "snowball_1", "boy_1"),
+        ("Two scientists kneel by the truck, one of them holding a radiation meter.", "radiation_meter_1", "scientist_1"),
+        # (the apposition's participle is the one it renames)
+        ("Four skaters glide around their coach, a woman in a red parka holding a stopwatch.", "stopwatch_1", "coach_1"),
     ],
 )
 def test_what_one_uses_is_in_hand(text, thing, holder):
@@ -739,3 +748,34 @@ def test_a_parasol_held_above_someone_elses_head_is_above_them():
     assert ("umbrella_1", "above", "queen_1") in found
     own = parse_scene("A girl walks in the rain, holding an umbrella above her head.").relations
     assert ("umbrella_1", "on", "girl_1") in {(r.source, r.relation, r.target) for r in own}
+
+
+def test_one_of_two_holders_has_its_own_thing_once():
+    parsed = parse_scene("Two researchers stand by the gate, one with binoculars and the other with a clipboard.")
+    assert Counter(o.name for o in parsed.objects)["clipboard"] == 1
+    found = rels("Two researchers stand by the gate, one with binoculars and the other with a clipboard.")
+    assert {("binoculars_1", "on", "researcher_1"), ("clipboard_1", "on", "researcher_2")} <= found
+
+
+def test_whom_a_thing_is_held_out_to_is_not_held():
+    found = rels("A student holds out a letter to the owl.")
+    assert ("letter_1", "on", "student_1") in found and ("owl_1", "on", "student_1") not in found
+    assert ("student_1", "near", "owl_1") in found
+
+
+def test_a_machine_one_works_stands_where_it_is_and_one_is_by_it():
+    found = rels("The mother pedals an old treadle sewing machine by the window.")
+    assert ("mother_1", "near", "treadle_sewing_machine_1") in found
+    assert not any(r == "on" for _, r, _ in found)
+
+
+def test_what_a_verb_does_to_it_there_puts_it_there():
+    found = rels("A vet kneels beside a chick, weighing it on a scale.")
+    assert ("chick_1", "on", "scale_1") in found and ("vet_1", "on", "scale_1") not in found
+    assert ("goat_1", "near", "rope_coil_1") in rels("A goat chews on a coil of rope.")  # what it eats, not its perch
+
+
+def test_a_dog_on_a_lead_keeps_by_its_owner_with_no_lead_drawn():
+    parsed = parse_scene("Five owners wait by the rope fence, each with a dog on a lead.")
+    assert "lead" not in {o.name for o in parsed.objects}
+    assert ("dog_1", "near", "owner_1") in {(r.source, r.relation, r.target) for r in parsed.relations}

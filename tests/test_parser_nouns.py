@@ -443,6 +443,11 @@ def test_a_crowd_filling_a_stand_is_its_look_but_people_in_a_boat_are_there():
         ("A goblin market hall at night. A cauldron bubbles by a stall.", "goblin"),  # noun + noun + place
         ("A lamp hangs from a hook overhead above the table.", "overhead"),  # an adverb of place
         ("Two brass-handled drawers and a tin-roofed shed.", "brass"),  # noun-participle: a look
+        ("A wooden well stands a few meters in front of the cabin door.", "meter"),  # a distance
+        ("Two researchers in red parkas count them from the ridge.", "count"),  # the plural's verb
+        ("Four skaters glide around their coach, a woman in a red parka.", "woman"),  # the coach, renamed
+        ("A cottage with smoke rising from its chimney stands by the lane.", "chimney"),  # the cottage's own
+        ("A black range stands in the chimney breast with a pie cooling on it.", "breast"),
     ],
 )
 def test_words_that_name_no_thing_here(text, absent):
@@ -1324,7 +1329,7 @@ def test_an_adverb_between_a_subject_and_its_verb_names_no_kind():
 def test_the_inverted_subject_after_a_fronted_place_phrase_is_a_thing():
     """"Above the sleigh flies the Firebird": a thing nobody listed, named with "the" after its verb."""
     parsed = parse_scene("Above the sleigh flies the Firebird.")
-    assert ("firebird_1", "above", "sled_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
+    assert ("firebird_1", "above", "sleigh_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
 
 
 def test_a_word_before_a_count_or_an_article_is_a_verb_not_a_compound():
@@ -1927,3 +1932,22 @@ def test_a_place_word_a_relation_puts_something_beside_is_its_building_not_a_per
     diner = next(o for o in scene.objects if o.name.endswith("diner"))
     assert diner.category == "house" and diner.size[2] > 3.0
     assert next(o for o in parse_scene("Two diners sit at the counter.").objects).category == "figure"
+
+
+@pytest.mark.parametrize(
+    "text, present",
+    [
+        ("A stork nests on top of the chimney.", "chimney"),  # a rooftop's chimney, no house named
+        ("Two guards stand on either side of the stairway.", "stairway"),
+        ("A fern in a pot sits at the foot of the spiral staircase.", "spiral staircase"),
+        ("On a small stage, the governor cuts a ribbon.", "governor"),  # a person who cuts
+        ("A mother films the bout from the bleachers, a toddler asleep in a pushchair beside her.", "toddler"),
+    ],
+)
+def test_things_a_relation_places_or_a_verb_has_act_are_there(text, present):
+    assert present in names(text), names(text)
+
+
+def test_a_thing_renamed_as_a_person_is_that_person_in_a_place_phrase_too():
+    got = objects("Four skaters glide in a circle around their coach, a woman in a red parka.")
+    assert got[("figure", "coach")] == 1 and not any(n == "woman" for _, n in got)

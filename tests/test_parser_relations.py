@@ -1859,3 +1859,23 @@ def test_seats_a_person_sits_on_and_places_a_band_fills():
     assert ("player_1", "on", "gazebo_1") in found and ("conductor_1", "on", "crate_1") in found
     assert not any(s.startswith("gazebo") and r == "on" for s, r, _ in found)  # "the conductor stands": no stand
     assert ("girl_1", "near", "bucket_1") in rels("A girl fills a bucket at the pump.")
+
+
+def test_an_animal_in_reeds_or_bushes_stands_among_them():
+    assert ("heron_1", "near", "reeds_1") in rels("A heron stands in the reeds beside the jetty.")
+    assert ("fox_1", "near", "bush_1") in rels("A fox hides in the bushes.")
+
+
+def test_along_the_roof_of_a_thing_is_on_it():
+    assert ("cat_1", "on", "boxcar_1") in rels("A black cat slinks along the roof of the last boxcar.")
+
+
+def test_one_of_them_on_something_is_one_of_the_doers_not_what_they_work_on():
+    found = rels("Two engineers are still bolting together a wind turbine, one of them standing on a ladder.")
+    assert ("engineer_2", "on", "ladder_1") in found
+    assert not any(s.startswith("windmill") and r == "on" for s, r, _ in found)
+
+
+def test_what_swims_where_a_where_clause_points_is_on_the_pond():
+    found = rels("A statue stands by the lily pond, where a white swan glides.")
+    assert ("swan_1", "on", "pond_1") in found

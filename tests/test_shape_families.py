@@ -172,6 +172,15 @@ def test_seats_of_a_grandstand_rise_to_the_back():
     assert back[:, 2].max() > front[:, 2].max() + 0.5
 
 
+def test_a_stairway_s_steps_rise_to_the_back_and_a_spiral_one_winds_round_its_post():
+    flight = points("structure", (1.4, 3.2, 2.8), "stone stairway", roles=("stone",))
+    front, back = flight[flight[:, 1] < -0.8], flight[flight[:, 1] > 0.8]
+    assert back[:, 2].max() > front[:, 2].max() + 1.0
+    spiral = points("structure", (2.0, 2.0, 3.2), "spiral staircase", roles=("stone",))
+    quarters = {(bool(x > 0), bool(y > 0)) for x, y, _ in spiral[spiral[:, 2] > 0.5]}
+    assert len(quarters) == 4  # steps all round, not a straight flight
+
+
 def test_a_thin_panel_is_a_sheet_without_feet_standing_or_lying():
     """A calendar on a wall or a map on a table: its printed face starts near the edge it rests
     on (feet would hold it off the wall or the table); a free-standing board stands on feet."""

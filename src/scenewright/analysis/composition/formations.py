@@ -85,8 +85,13 @@ def row_relations(objects: list[ParsedObject], relations: list[ParsedRelation]) 
     held = {r.source for r in relations if r.relation in ("face to", "on", "above")}
     out: list[ParsedRelation] = []
     for objs in members(objects).values():
-        if objs[0].formation == "row" and not held & {o.id for o in objs}:
+        ids = {o.id for o in objs}
+        if objs[0].formation == "row" and not held & ids:
             out += [ParsedRelation(objs[i].id, "right of", objs[i - 1].id, inferred=True) for i in range(1, len(objs))]
+            # "three camels kneel in a row beside a tent": the row on one side of it, not split round it
+            beside = {r.source: r.target for r in relations if r.relation == "side of" and r.source in ids}
+            if len(set(beside.values())) == 1 and beside.keys() == ids:
+                out.append(ParsedRelation(objs[0].id, "right of", next(iter(beside.values())), inferred=True))
     return out
 
 

@@ -195,10 +195,22 @@ class _Hands:
             return next((m.group for m in self.by_start.values() if m.end == k - 1 and m.group >= 0), None)
         who = k > 0 and self.toks[k - 1].text == "who" and w in _DEED_VERBS
         end = k - 1 if who else k
+        end = self._dressed_end(end)
+        end = self.renamed_end.get(end, end)  # ("their coach, a woman holding a stopwatch": the coach's)
         if not (who or w.endswith("ing") and w in _DEED_VERBS) or end not in self.ends:
             return None
         named = next((m.group for m in self.by_start.values() if m.end == end and m.group >= 0), None)
         return named if named is not None and self._person_at(named) else None
+
+    def _dressed_end(self, end: int) -> int:
+        """Where the person ends whom the clothes before ``end`` dress ("a woman in a red parka
+        holding a stopwatch": the woman), else ``end``."""
+        j = end - 1
+        while j > 0 and end - j <= 5 and self.toks[j].text not in ("in", "wearing") and j not in self.named_at:
+            if not self.toks[j].text[:1].isalpha():
+                return end
+            j -= 1
+        return j if self.toks[j].text in ("in", "wearing") and j < end - 1 and (j in self.ends or j in self.renamed_end) else end
 
     def _keeps_by(self, g: int, h: int) -> tuple[int, int]:
         """(who stands near whom) for two living things that go together, ``g`` named with or led
@@ -287,9 +299,11 @@ class _Hands:
     def _placed_after(self, end: int, ce: int) -> bool:
         """A relation phrase right after a thing, or after one word that describes it ("a bible
         open on a lectern", "an urn beside each bench")."""
-        # ("an official with a flag sits on a snowmobile": the subject's verb, the official sits there)
+        # ("an official with a flag sits on a snowmobile", "two peasants with pitchforks shout at the
+        # foot of the tree": the subject's verb, the official sits there)
         word = self.toks[end].text if end < ce else ""
-        return end in self.rel_at or (end + 1 < ce and word.isalpha() and not _is_verb(word) and end + 1 in self.rel_at)
+        verb = _is_verb(word) or self._finite_at(end)
+        return end in self.rel_at or (end + 1 < ce and word.isalpha() and not verb and end + 1 in self.rel_at)
 
     def _after_verb(self, k: int, over: tuple[str, ...] = (), worn: bool = False) -> bool:
         """Whether the word at ``k`` comes right after a verb, or after a verb and what it acts on
@@ -479,6 +493,9 @@ class _Hands:
         if thing:
             c.deeds.append((doers, thing[0]))
             c.deed_end = k + 1
+            if w == "it" and k + 1 in self.rel_at and self.rel_at[k + 1].kind in ("on", "in"):
+                c.main = [thing[0]]  # "weighing it on a scale": what the phrase places is the verb's thing, as
+                # after a noun ("weighs the chick on a scale")
 
     def _given_to(
         self, c: _Clause, k: int, ce: int, giver: list[int], prev_subject: list[int]

@@ -103,6 +103,8 @@ class _Kinds:
         # (a noun nobody listed has no size of its own to tell: "reads a comic")
         if used and category != GENERIC and _volume(size) > _HAND_VOLUME:
             return False
+        if used and self.catalogue[category].shape == "machine":
+            return False  # "pedals a sewing machine", "works a blender": where it stands
         return rests == "surface" or max(size) <= _HANDHELD_SIZE
 
     def _small(self, *groups: int) -> bool:

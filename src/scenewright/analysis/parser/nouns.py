@@ -67,6 +67,8 @@ class _Mention:
     members: list[_Mention] = field(default_factory=list)
     #: The role an apposition gives it, the first word of its name ("the bride, a white fox": the bride fox).
     role: str | None = None
+    #: The one this apposition names again ("their coach, a woman in a red parka": the coach).
+    renames: _Mention | None = None
 
 
 @dataclass
@@ -370,9 +372,12 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "two children are building a snowman": a verb, not a building
         if _adverb_here(toks, s, e):
             continue  # "the shrine stands well behind the gate": an adverb, not a well
-        if _idiom_here(toks, s, e) or _shape_of_group(toks, s, e):
+        if _idiom_here(toks, s, e) or _shape_of_group(toks, s, e) or _distance_here(toks, s, e) or (
+            _plural_verb_here(toks, s, e)
+        ):
             continue  # "a brig lies at anchor", "a guard stands on duty": no anchor there; "blocks
-            # stacked into a tower": how they are set out, no tower
+            # stacked into a tower": how they are set out, no tower; "a few meters in front": how far;
+            # "researchers in parkas count them": a verb
         if _owned_part(toks, s, e, mentions) or _part_of_after(toks, s, e, raw[k + 1 :], mentions) or (
             _inside_of_vehicle(toks, s, e, mentions)
         ):
@@ -746,13 +751,24 @@ def _adverb_here(toks: list[_Tok], s: int, e: int) -> bool:
 
 def _owned_part(toks: list[_Tok], s: int, e: int, mentions: list[_Mention]) -> bool:
     """A part word after "its"/"their" (``part_owners``: "its screens", "its counter", "the
-    truck's ... its cab") when a thing named before has such a part: that thing's part, which the
-    relation reading maps to its owner, not a thing of its own."""
-    if e - s != 1 or s == 0 or toks[s - 1].text not in ("its", "their"):
+    truck's ... its cab") when a thing named before has such a part, or in the "with" part of
+    such a thing ("a log cabin with a stone chimney"): that thing's part, which the relation
+    reading maps to its owner, not a thing of its own."""
+    if e - s != 1 or s == 0:
         return False
     owners = load_vocabulary().part_owners.get(singular(toks[s].text))
     catalogue = load_catalogue()
-    return bool(owners) and any(m.category in owners or catalogue[m.category].shape in owners for m in mentions)
+    if not owners:
+        return False
+    if toks[s - 1].text in ("its", "their"):
+        return any(m.category in owners or catalogue[m.category].shape in owners for m in mentions)
+    j = s - 1
+    while j > 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+        j -= 1  # back over its describing words ("a smoking chimney")
+    if toks[j].text not in ("a", "an") or j == 0 or toks[j - 1].text != "with" or not mentions:
+        return False
+    owner = mentions[-1]
+    return owner.end == j - 1 and (owner.category in owners or catalogue[owner.category].shape in owners)
 
 
 #: Side words before a part that say which one it is ("the back seat of the car").
@@ -788,6 +804,24 @@ def _idiom_here(toks: list[_Tok], s: int, e: int) -> bool:
         return False
     after = toks[e].text if e < len(toks) else "."
     return not after[:1].isalpha() or after in _STOP
+
+
+def _plural_verb_here(toks: list[_Tok], s: int, e: int) -> bool:
+    """A singular word right after a plural and right before a pronoun it acts on ("two
+    researchers in red parkas count them"): the plural's verb, no count."""
+    if e - s != 1 or s < 1 or e >= len(toks) or toks[e].text not in ("them", "it", "him", "her", "their", "its"):
+        return False
+    before, word = toks[s - 1].text, toks[s].text
+    return before[:1].isalpha() and before not in _STOP and singular(before) != before and singular(word) == word
+
+
+def _distance_here(toks: list[_Tok], s: int, e: int) -> bool:
+    """A unit of length right after a count ("a few meters in front of", "ten metres away"): a
+    distance, no meter."""
+    if e - s != 1 or s < 1 or toks[s].text not in _UNITS:
+        return False
+    count = toks[s - 1].text
+    return count in _NUMBERS or count in _VAGUE or count.isdigit() or count in ("couple", "dozen")
 
 
 #: Relation phrase kinds that set a group out in a shape ("in a circle", "stacked into a tower").
@@ -1788,6 +1822,8 @@ def _bare_plural_verb(toks: list[_Tok], s: int, e: int) -> bool:
     two = toks[e + 1].text if e + 1 < len(toks) else "."
     if _plural_form_verb(after, two):
         return False  # "Beyond them, spectators crowd a grandstand", "..., musicians play for a princess"
+    if _participle(after) and not after.endswith("ing") and not two[:1].isalpha():
+        return False  # "..., cameras raised.": things held as a participle says
     return toks[s - 1].text == "," and after[:1].isalpha() and after not in _STOP and not toks[e].joined and (
         two not in (",", "and", "or")
     )
@@ -2908,15 +2944,17 @@ def _mark_appositions(toks: list[_Tok], mentions: list[_Mention]) -> None:
                 for x in kinds:
                     x.content = True
         elif later and _person_mention(later[0]) and not _person_mention(m) and not _is_plural(toks, m) and (
-            m.end - m.start == 1 and m.start > 0 and toks[m.start - 1].text == "the"
-            and not _after_preposition(toks, m.start) and _renames(toks, m.end, later[0].start)
+            m.end - m.start == 1 and m.start > 0 and toks[m.start - 1].text in ("the", *_POSSESSIVES)
+            and not _fronted_subject(toks, m, later[0]) and _renames(toks, m.end, later[0].start)
+            and (not _after_preposition(toks, m.start) or load_vocabulary().person_first(toks[m.start].text))
         ):  # fmt: skip  (not "Across from the press, a customer waits": a fronted place phrase)
-            # "the coach, a red-faced man": a word the catalogue files as a thing, renamed as a person,
-            # names that person's role
+            # "the coach, a red-faced man", "around their coach, a woman in a parka": a word the
+            # catalogue files as a thing, renamed as a person, names that person's role (no thing
+            # after a preposition that never names one: "films it from the bleachers, a toddler asleep")
             m.category, m.guess = "figure", load_vocabulary().guess_agent(toks[m.start].text, False, human=True)
-            later[0].content = True
+            later[0].content, later[0].renames = True, m
         elif _person_mention(m) and later and _person_mention(later[0]) and _renames(toks, m.end, later[0].start) and (
-            not _after_preposition(toks, m.start) and not _listed_on(toks, later[0].end)
+            not _fronted_subject(toks, m, later[0]) and not _listed_on(toks, later[0].end)
         ):  # (not "At the foot of a scarecrow, a guard sits": a fronted place phrase)
             # the role is the name ("the keeper, an old woman", "the owner, a bearded man"); a word
             # that only says whose ("its owner, a girl in goggles") gives way to the person
@@ -2925,11 +2963,29 @@ def _mark_appositions(toks: list[_Tok], mentions: list[_Mention]) -> None:
             while j > 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
                 j -= 1  # "its new owner"
             relational = relational and j >= 0 and toks[j].text in _POSSESSIVES
-            (m if relational else later[0]).content = True
+            if relational:
+                m.content = True
+            else:
+                later[0].content, later[0].renames = True, m
         elif _person_mention(m) and later and load_catalogue()[later[0].category].shape in ("animal", "bird", "robot") and (
             _renames(toks, m.end, later[0].start) and not _after_preposition(toks, m.start)
         ):  # "their boss, a gorilla in a bowler hat": the role is played by a creature, drawn as one
             m.content, later[0].role = True, m.phrase
+
+
+def _fronted_subject(toks: list[_Tok], m: _Mention, later: _Mention) -> bool:
+    """``later``, after the comma that closes ``m``, is the subject of a clause that a place
+    phrase ending in ``m`` opens ("At the foot of a scarecrow, a guard sits"), not a second name
+    for ``m`` ("they skate around their coach, a woman in a red parka holding a stopwatch."): it
+    has a verb of its own before the next comma."""
+    if not _after_preposition(toks, m.start):
+        return False
+    k = later.end
+    while k < len(toks) and toks[k].text[:1].isalnum():
+        if _is_verb(toks[k].text):
+            return True
+        k += 1
+    return k >= len(toks) or toks[k].text not in (".", "!", "?", ";", ",")
 
 
 def _listed_on(toks: list[_Tok], k: int) -> bool:
@@ -3118,8 +3174,10 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
         if adjectives and (w in load_vocabulary().clothing or singular(w) in load_vocabulary().clothing):
             adjectives = []  # "fishermen in red caps cast nets": what they wear ends there, the word
             break  # after it is their verb, no kind of net
-        if w.endswith("ing") and j > 0 and toks[j - 1].text in (",", ";", ":"):
-            break  # ", eating sandwiches from a basket": the participle of the one before, no kind of sandwich
+        one = j > 1 and toks[j - 1].text in ("one", "other", "another") and toks[j - 2].text in (",", "and", "the")
+        if w.endswith("ing") and j > 0 and (toks[j - 1].text in (",", ";", ":") or one):
+            break  # ", eating sandwiches from a basket", "..., one holding binoculars": the participle of
+            # the one before, no kind of sandwich
         bare = singular(toks[m.end - 1].text) != toks[m.end - 1].text
         if j == prev_end and bare and _verb_of_one(toks, j):
             break  # "a girl holds (red) balloons": the verb of the one before, no kind of balloon

@@ -125,6 +125,8 @@ _LIKENESS_SCALE = 1.3
 
 #: Parts on top of a thing: what does something "from the roof of" it is fixed there.
 _ROOF_PARTS = {"roof", "rooftop", "top"}
+#: Verbs of being on the water, by their stem ("a swan glides", "a boat bobs").
+_AFLOAT_VERBS = {"swim", "glide", "float", "paddle", "bob", "drift", "dabble"}
 
 
 def _every_side(toks: list[_Tok], k: int, ce: int) -> int:
@@ -216,6 +218,9 @@ class _Clause:
     #: The several that a clause opening "one of them" picks its doer from ("colonists sit in the
     #: pews, one of them rocking a baby in her arms": "her" is one of them).
     one_of: list[int] = field(default_factory=list)
+    #: Which of two holders a with-part belongs to: "one" or "other" ("two researchers, one with
+    #: binoculars and the other with a clipboard"), so what it names comes once, not once each.
+    single: str | None = None
     #: Single subjects named together that "each" goes over ("a dwarf and an elf, each with a
     #: tankard"): a with-thing of its own for every one.
     each_of: list[int] = field(default_factory=list)
@@ -675,6 +680,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         self.by_start = {m.start: m for m in mentions if not m.content}
         self.content_at = {k for m in mentions if m.content for k in range(m.start, m.end)}
         self.ends = {m.end for m in mentions if not m.content}
+        #: Where an apposition ends, the end of the one it names again ("their coach, a woman").
+        self.renamed_end = {m.end: m.renames.end for m in mentions if m.renames is not None}
         #: Words of a noun phrase, its describing words too ("a sleeping dog").
         self.named_at = {k for m in mentions for k in range(m.start - len(m.adjectives), m.end)}
         self.rel_at.update((r.start, r) for r in found if r.kind == "from" and self._acts_from(r.start))
@@ -738,6 +745,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     c.rels = last_rels
                 self._where(cs, c, before)
                 self._take_wing(c, cs, ce, before)
+                self._held_raised(c, cs, ce, prev_subject)
                 last_rels = c.rels or last_rels
                 # ("The coxswain, radio in hand, waits ...": what is in the subject's hand is no subject)
                 held = {thing for thing, holder in [*self.in_hand, *self.carried] if holder in prev_subject}
@@ -838,6 +846,21 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if g not in self.numbered and self.groups[h].count > 1 and (self._handheld(g) or uncounted):
                 self.groups[g].count = self.groups[h].count
 
+    def _held_raised(self, c: _Clause, cs: int, ce: int, holders: list[int]) -> None:
+        """A clause of a bare thing and a participle alone after people ("six photographers crouch
+        at the foot of the catwalk, cameras raised", "..., swords drawn"): what they hold, one each."""
+        words = [t.text for t in self.toks[cs:ce]]
+        m = self.by_start.get(cs)
+        if len(c.groups) != 1 or m is None or m.end != ce - 1 or m.definite or not holders:
+            return
+        if not (_participle(words[-1]) and not words[-1].endswith("ing")) or not all(self._person_at(h) for h in holders):
+            return
+        g = c.groups[0]
+        if self._handheld(g) and not any(r[1] == g for r in self.relations):
+            self._relate("on", [g], holders[0])
+            self.in_hand.append((g, holders[0]))
+            self.carried.add((g, holders[0]))
+
     def _take_wing(self, c: _Clause, cs: int, ce: int, since: int) -> None:
         """Birds and winged beasts the clause has flying ("gulls circle overhead", "a dragon soars
         over the valley") are in the air: hung, so the arranger keeps them up there, unless the
@@ -878,7 +901,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         place = last.group if last is not None and (people or all(w == "," for w in gap)) else None
         if place is None or place in subjects or not people and self._laid_on(subjects, place, since):
             return
-        if people and self._platform(place, subjects[0]):
+        # ("the lily pond, where a white swan glides": on the water)
+        afloat = self.groups[place].category == "pond" and any(
+            _verb_stem(t.text, _AFLOAT_VERBS) for t in self.toks[cs : min(verb + 1, len(self.toks))]
+        )
+        if afloat and not placed:
+            self._relate("on", subjects, place)
+        elif people and self._platform(place, subjects[0]):
             # "a little wooden jetty, where a boy feeds the ducks": on the platform, whatever he does there
             if not any(kind in ("on", "above") for kind in placed):
                 self._relate("on", subjects, place)
@@ -1094,14 +1123,18 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         while k < ce and toks[k].text in ("and", "or", "but", "then", "also", "so", "there", "is", "are"):
             k += 1
         one_a_side = k + 1 < ce and toks[k].text == "one" and k + 1 in self.rel_at
-        # (not "..., one of them rocking a baby"; nor "one of them has turned its head": no place of its own)
-        placed = k + 3 < ce and not toks[k + 3].text.endswith("ing") and any(
+        # (not "..., one of them rocking a baby"; nor "one of them has turned its head": no place of its
+        # own; but "one of them standing on a ladder" is up there)
+        doing = k + 3 < ce and toks[k + 3].text.endswith("ing") and not self._posture(toks[k + 3].text)
+        placed = k + 3 < ce and not doing and any(
             j in self.rel_at and self.rel_at[j].kind not in ("face to", "no relation") for j in range(k + 3, ce)
         )
-        if [t.text for t in toks[k + 1 : k + 3]] == ["of", "them"] and len(prev_subject) == 1 and placed:
+        # (of the several the clause before named: "two engineers bolt a wind turbine together, one of them ...")
+        several = [g for g in dict.fromkeys([*prev_subject, *self.doers]) if self.groups[g].count > 1]
+        if [t.text for t in toks[k + 1 : k + 3]] == ["of", "them"] and len(several) == 1 and placed:
             # "ten penguins huddle on the ice, and three of them dive from a floe": those three, a
             # group of their own split off the ten (the rest stay where the ten were put)
-            g, n = prev_subject[0], 1 if toks[k].text == "one" else _NUMBERS.get(toks[k].text, 0)
+            g, n = several[0], 1 if toks[k].text == "one" else _NUMBERS.get(toks[k].text, 0)
             if n and self.groups[g].count > n:
                 prev_subject = [self._copy_group(g)]
                 self.groups[g].count -= n
@@ -1275,9 +1308,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 tool = self._hand_object(k + 1, ce, tool=True) if w == "with" else None
                 # ("with an inkwell and three quills on it": the phrase after the list places them all)
                 listed = self._list_end(tool.end, ce) if tool is not None else k
+                # (nor at a table, "sits at a table with a teapot", unless the clause's verb is work
+                # done with it: "two pirates dig beside the chest with shovels")
                 armed = tool is not None and not self._placed_by_pronoun(listed, ce) and all(
                     self._person_at(h) for h in c.head
-                ) and not any(self.catalogue[self.groups[t].category].support for t in c.last_target)
+                ) and (
+                    not any(self.catalogue[self.groups[t].category].support for t in c.last_target)
+                    or self._verb_before(k, self._work_verb)
+                )
                 # ("walks behind them with a broom": what a person works with is in hand, unless a
                 # phrase of its own places it: "with a bible open on a lectern")
                 if armed and (after_target or not self._placed_after(listed, ce)):
@@ -1287,11 +1325,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 ):  # "a baker stands behind the counter with a tray on it", "between a drum and a shelf with
                     # cups on it", "sits at a desk covered in monitors": the target's
                     c.head = list(c.last_target[-1:] if between else c.last_target)
+                if after_target and armed and self._by_agent(k) and all(self._person_at(t) for t in c.last_target):
+                    c.head = list(c.last_target)  # "watched by a trainer with a rod": the trainer's rod
                 # "two boys lead a donkey laden with sacks": the load is the noun's right before it
                 laden = [m.group for m in self.by_start.values() if m.end == k and m.group is not None]
                 if (w, nxt) in _HOLD_PAIRS and laden and laden[0] in c.groups:
                     c.head = laden[:1]
                 c.wsub, c.expect_new = [], False
+                before = [t.text for t in toks[max(0, k - 2) : k]]
+                c.single = "one" if before[-1:] == ["one"] else "other" if before in (["the", "other"], ["and", "another"]) else None
                 # "pickers fill baskets with apples": what the verb fills takes what it is filled with
                 filled = w == "with" and c.deeds and c.deed_end == k and _verb_stem(self._acting_verb(k) or "", _FILL_VERBS)
                 if filled:
@@ -1331,7 +1373,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 if m.start in self.aboard:
                     pass  # "a bus full of children waits": the bus waits
                 elif c.head is not None:
-                    gap = [t.text for t in toks[last_event_end : m.start]]
+                    # (up to its describing words: "carries a spear and a polished shield")
+                    gap = [t.text for t in toks[last_event_end : m.start - len(m.adjectives)]]
                     # (a list of things in hand goes on over "and a" or ", a": "holds a cup and a spoon",
                     # "with a sword, a shield and a helmet"; what a thing is made of or holds is no verb
                     # and ends no list: "holds a ball of red thread and a torch")
@@ -1349,8 +1392,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     # ("one holding a lamp, the other a rope": the second holder's thing, its verb left out)
                     other = [w for w in gap if w != ","][:2] in (["the", "other"], ["another", "a"], ["another", "an"])
                     stop = any(w in _STOP and w not in ("and", "or") for w in listed_gap)
-                    if c.hand and c.wsub and not other and stop and not listed:
+                    # ("holds out a letter to the owl": whom it is held out to is no more in hand)
+                    receiver = c.hold and not c.hand and any(w in ("to", "for") for w in gap) and "," not in gap
+                    receiver = receiver and self._living(g)
+                    if (c.hand and stop or receiver) and c.wsub and not other and not listed:
                         # "waves a flag from a gantry": what is in hand is the noun right after
+                        if receiver:
+                            self._relate("near", list(c.head), g)
                         self._close_with(c)
                         c.head, c.wsub, c.hand, c.hold = None, [], False, False
                         c.main_groups.append(g)
@@ -1362,8 +1410,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                         last_event_end = m.end
                         continue
                     c.wsub = [g] if (c.expect_new or closed) else [*c.wsub, g]
-                    if other:
+                    if other or c.single == "other":
                         c.others.add(g)
+                    if c.single is not None:
+                        self.numbered.add(g)  # ("one with binoculars": one pair, not one each)
                 else:
                     c.main_groups.append(g)
                     # "an astronaut plants a flag next to it": the verb's object takes what follows,
@@ -1450,7 +1500,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         when it lives ("a vet checks the smallest pup")."""
         for doers, thing in c.deeds:
             member = c.deed_members.get(thing)
-            if self._small(thing) and not self._living(thing):
+            # ("pedals a sewing machine": a machine is worked where it stands, by it)
+            worked = self.catalogue[self.groups[thing].category].shape == "machine"
+            if self._small(thing) and not self._living(thing) and not worked:
                 hosts = [r[2] for r in self.relations if r[0] == "on" and r[1] == thing and r[2] not in doers]
                 if not hosts:
                     continue
@@ -1503,6 +1555,23 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
     def _posture(word: str) -> bool:
         """A verb of sitting, lying or standing ("slouches", "perched", "stands")."""
         return load_vocabulary().is_posture_verb(word)
+
+    def _by_agent(self, k: int) -> bool:
+        """The noun phrase ending at ``k`` is the doer of a passive ("watched by a trainer",
+        "followed by two pages"): "by" after a past participle opens it."""
+        j = k - 1
+        while j > 0 and k - j <= 6 and self.toks[j].text != "by":
+            if not self.toks[j].text[:1].isalpha():
+                return False
+            j -= 1
+        return self.toks[j].text == "by" and j > 0 and _participle(self.toks[j - 1].text) and not self.toks[j - 1].text.endswith("ing")
+
+    @staticmethod
+    def _work_verb(word: str) -> bool:
+        """A verb of something people do with their hands, no posture ("digs", "two pirates dig")."""
+        vocabulary = load_vocabulary()
+        forms = (word, f"{word}s", f"{word}es") if word.isalpha() else ()
+        return any(f in vocabulary.person_verbs for f in forms) and not vocabulary.is_posture_verb(word)
 
     @staticmethod
     def _lookout(word: str) -> bool:
@@ -1882,8 +1951,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             described = described and not any(self._living(g) for g in c.wsub)
             if c.wsub and (described or not closed and not c.expect_new and not in_hand and not company):
                 srcs = list(c.wsub)
-                if kind in ("on", "above", "over", "on top", "under"):
-                    c.wsub_related.update(srcs)
+                if kind in ("on", "above", "over", "on top", "under") and target is not None:
+                    c.wsub_related.update(srcs)  # (not "a dog on a lead": no thing to be on)
             elif not c.wsub and contents and kind == "in" and isinstance(target, list) and target:
                 # "a chalet with geraniums in every window box": what holds the head's contents is
                 # on the head
@@ -2384,8 +2453,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     self.groups[g].rests = "ground"
         if not srcs or not targets:
             if target is None and c.last_target and c.last_target_end == rel.start:
-                # "fill two shelves on the wall behind her": the shelves are behind her
+                # "fill two shelves on the wall behind her": the shelves are behind her ("a woman in a
+                # red parka holding a stopwatch": up to the participle, which is hers)
                 while end < p.ce and end not in self.rel_at and end not in self.by_start and toks[end].text not in (",", "and"):
+                    if toks[end].text.endswith("ing") and end + 1 < p.ce and toks[end + 1].text in _DETERMINERS:
+                        break
                     end += 1
                 c.last_target_end = end
             return end
@@ -2945,6 +3017,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             up = self._part is not None or max(src.size) < self.groups[t].size[2] / 2
             if not self._living(s) and self._carrier(t, ("perches",)) and target.shape in _PLANT_SHAPES and up:
                 return "on"  # "a platform sits high up in a tall pine", "a kite caught in the oak": up in its crown
+            if self._living(s) and (target.shape == "bush" or target.shape == "flower_bed" and not self._person_at(s)):
+                return "near"  # "a heron stands in the reeds", "a boy hides in the bushes": among them
+                # (one stands in a bed of flowers: "a scarecrow stands in the last patch")
             holds = target.shape in _SEATS or target.support or self._carrier(t, _VESSEL_KINDS)
             # ("three salamanders bask in a brazier": a small creature is on what it is in)
             holds = holds or self._living(s) and not self._living(t) and max(src.size) < max(self.groups[t].size)
@@ -2988,8 +3063,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return "in front of" if target.shape == "bed" else "near"  # "a barrow at the end of the patch"
         if kind == "along" and src.rests == "surface" and (target.support or target.shape in _LOAD_HOSTS):
             return "on"  # "bottles along the bar": on it, as at its end or centre
-        if kind == "along" and self._living(s) and self._platform(t, s):
-            return "on"  # "six frogs sit along a wooden jetty": on it, as at its end
+        if kind == "along" and self._living(s) and (self._platform(t, s) or self._part in _ROOF_PARTS):
+            return "on"  # "six frogs sit along a wooden jetty", "a cat slinks along the roof of the boxcar": on it
         if kind == "covering":
             # "jars crowd every shelf", "crates cover a long table", "lasts lining a shelf": on what
             # has a top for them; "trees line the drive" stand beside it; people crowding a carrier

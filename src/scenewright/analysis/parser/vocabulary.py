@@ -337,6 +337,13 @@ class Vocabulary:
         return self._family("animal") if sense == "noun.animal" else None
 
     @staticmethod
+    def person_first(word: str) -> bool:
+        """Whether ``word`` names a person before anything else it can see ("a coach", "a pilot";
+        not "the bleachers", "a chair"), as written if WordNet knows that form."""
+        word = word.lower()
+        return wordnet.kind_of_sense(word if wordnet.senses(word) else singular(word)) == "noun.person"
+
+    @staticmethod
     def is_creature(word: str) -> bool:
         """Whether WordNet knows ``word`` as an animal first ("a heron", "two cormorants")."""
         return wordnet.kind_of_sense(singular(word.lower())) == "noun.animal"

@@ -140,7 +140,8 @@ _HOLD_PAIRS = {("loaded", "with"), ("laden", "with"), ("topped", "with"), ("set"
 _HAND_VERBS = {"waves", "waving", "wields", "wielding", "brandishes", "brandishing", "clutches", "clutching",
                "grips", "gripping", "clasps", "clasping", "swings", "swinging", "twirls", "twirling", "raises",
                "raising", "juggle", "juggles", "juggling", "wave", "wield", "brandish", "clutch", "clasp", "twirl",
-               "raise", "spins", "spinning", "spin"}  # fmt: skip
+               "raise", "spins", "spinning", "spin", "throws", "throwing", "throw", "tosses", "tossing", "toss",
+               "hurls", "hurling", "hurl", "flings", "flinging", "fling", "lobs", "lobbing", "lob"}  # fmt: skip
 #: Verbs of taking a thing up in one's arms, by their stem (:func:`_verb_stem`): what they take is
 #: in arms whenever a person can carry it ("lifts a crate", "two men haul a trunk", "hugs a
 #: pillow"), where other verbs have in hand only a hand-sized thing ("examines a crate": by it).
@@ -256,7 +257,7 @@ _FROM_AFAR = {
 #: Verbs of aiming, by their stem: what they take is a tool or a weapon in the doer's hand, however
 #: long ("aims a pitchfork at them", "points a torch at the door"), and the doer faces what it is
 #: aimed at.
-_AIM_VERBS = {"aim", "point", "level", "train"}
+_AIM_VERBS = {"aim", "point", "level", "train", "throw", "toss", "hurl", "fling", "lob"}
 #: Verbs of writing things down, by their stem: what they take is what is written about, not in
 #: hand, and the sheet or device they are done "on" is ("recording every sack on a scroll", "noting
 #: each crate on a clipboard").

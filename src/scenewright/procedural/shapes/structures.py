@@ -365,10 +365,34 @@ def _ramp(m: Model) -> None:
     if both:
         m.box("wood", (-W + deck + run, -D, 0), (W - deck - run, D, 0.01 * H), rounded=0.0)
 
+def _stairs(m: Model) -> None:
+    """A flight of stone steps rising to the back between two side walls; a spiral staircase's
+    steps fan round a central post instead, a rail on posts at their outer ends."""
+    m.main = "stone"
+    W, D, H = m.sx / 2, m.sy / 2, m.sz
+    if m.named("spiral staircase", "spiral stairs", "spiral stair"):
+        r = min(W, D)
+        steps = max(8, min(24, int(H / 0.2)))
+        m.post("dark_metal", 0, 0, 0, H, 0.08 * r + 0.03, fraction=0.5)
+        for k in range(steps):
+            a, z = 1.6 * np.pi * k / steps, H * (k + 1) / steps
+            end = (r * np.cos(a), r * np.sin(a))
+            m.beam("stone", (0, 0, z - 0.04 * H), (*end, z - 0.04 * H), 0.45 * r * np.pi / steps * 2.5, 0.04 * H)
+            m.post("dark_metal", *end, z, z + 0.9, 0.015, fraction=0.4)
+        return
+    steps = max(4, min(20, int(H / 0.18)))
+    side = min(0.12 * W, 0.25)
+    for k in range(steps):  # one slab a step, front to back
+        y0, z = -D + 2 * D * k / steps, H * (k + 1) / steps
+        m.box("stone", (-W + side, y0, 0), (W - side, y0 + 2 * D / steps, z), rounded=0.0)
+    for x0, x1 in ((-W, -W + side), (W - side, W)):  # the side walls, a slope along the steps' edge
+        m.extrude("concrete", [(-D, 0), (D, 0), (D, H), (-D, 0.15 * H)], "x", x0, x1)
+
+
 def structure(m: Model) -> None:
     """A large open structure; its name picks it: dome, climbing frame, ferris wheel, windmill, crane,
-    carousel, platform, stage, scaffold, launch pad, grandstand, siege engine, skate ramp; else a truss
-    gantry."""
+    carousel, platform, stage, scaffold, launch pad, grandstand, siege engine, skate ramp, staircase;
+    else a truss gantry."""
     variants = (
         (("dome", "igloo", "geodesic dome", "habitat dome", "dome habitat"), _dome),
         (("climbing frame", "jungle gym", "monkey bars", "play structure"), _climbing_frame),
@@ -386,6 +410,7 @@ def structure(m: Model) -> None:
         (("grandstand", "bleachers", "stands", "tribune", "spectator stand", "viewing stand", "royal box"), _grandstand),
         (("trebuchet", "catapult", "ballista", "mangonel", "onager", "siege engine"), _trebuchet),
         (("half pipe", "halfpipe", "half-pipe", "quarter pipe", "skate ramp", "ramp"), _ramp),
+        (("staircase", "stairway", "stairs", "spiral staircase", "flight of steps"), _stairs),
     )
     for words, build in variants:
         if m.named(*words):
