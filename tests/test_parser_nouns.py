@@ -1951,3 +1951,7 @@ def test_things_a_relation_places_or_a_verb_has_act_are_there(text, present):
 def test_a_thing_renamed_as_a_person_is_that_person_in_a_place_phrase_too():
     got = objects("Four skaters glide in a circle around their coach, a woman in a red parka.")
     assert got[("figure", "coach")] == 1 and not any(n == "woman" for _, n in got)
+
+
+def test_a_counted_plural_before_a_place_word_is_its_subject_not_the_place_s_kind():
+    assert objects("Two friends lounge in the tub.")[("figure", "friend")] == 2  # no "friends lounge"

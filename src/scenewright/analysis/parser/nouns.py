@@ -446,8 +446,9 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         # ("a cat lounges on the sofa": after "a", a plural place word is the verb of the thing)
         article = _phrase_opener(toks, s)
         plural_verb = singular(follow) != follow and article >= 0 and toks[article].text in _SINGULAR_DETERMINERS
+        # ("two friends lounge in the tub": a counted plural names no kind of lounge either)
         if placed_kind and (follow in _VENUES or follow in vocabulary.places or follow_two in vocabulary.places) or (
-            follow and singular(follow) in _VENUES and len(words) == 1 and not plural_verb
+            follow and singular(follow) in _VENUES and len(words) == 1 and not plural_verb and not _counted_plural(toks, s)
         ) or _names_place_after(toks, e):
             continue  # "a throne hall", "a farmhouse kitchen", "a rocket launch site": the place, not the thing
         if _place_name(toks, s):
