@@ -37,6 +37,7 @@ def rels(text: str) -> set[tuple[str, str, str]]:
         ("Two peasants with pitchforks shout at the foot of the tree.", "pitchfork_1", "peasant_1"),  # a verb, no noun
         ("A pirate digs beside the chest with a shovel.", "shovel_1", "pirate_1"),  # work done with it, not on the chest
         ("A boy throws a snowball at the snowman.", "snowball_1", "boy_1"),
+        ("A merchant stands in front of the tent holding a brass lantern.", "lantern_1", "merchant_1"),  # no content
         ("Two scientists kneel by the truck, one of them holding a radiation meter.", "radiation_meter_1", "scientist_1"),
         # (the apposition's participle is the one it renames)
         ("Four skaters glide around their coach, a woman in a red parka holding a stopwatch.", "stopwatch_1", "coach_1"),

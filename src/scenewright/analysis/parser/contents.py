@@ -17,7 +17,7 @@ from scenewright.analysis.parser.grammar import (
     _SHELF_LOAD_SIZE,
     _VESSEL_KINDS,
 )
-from scenewright.analysis.parser.nouns import _LAID, _STANDING, _Mention, _is_plural
+from scenewright.analysis.parser.nouns import _LAID, _STANDING, _Mention, _after_preposition, _is_plural
 from scenewright.analysis.parser.phrases import _phrase_table
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import (
@@ -128,9 +128,13 @@ class _Contents:
 
     def _held_inside(self, m: _Mention, prev: _Mention) -> bool:
         """"A greenhouse holds tomato plants": what a building or a tent holds is inside it, its
-        contents rather than things of the layout."""
+        contents rather than things of the layout; not what the clause's subject holds after a
+        place phrase ("a merchant stands in front of the tent holding a brass lantern")."""
         gap = [t.text for t in self.toks[prev.end : m.start]]
-        return bool(gap) and gap[0] in _HOLD and len(gap) <= 4 and self.catalogue[prev.category].shape in _ENCLOSURES
+        subjects = bool(gap) and gap[0].endswith("ing") and _after_preposition(self.toks, prev.end - 1)
+        return bool(gap) and gap[0] in _HOLD and len(gap) <= 4 and self.catalogue[prev.category].shape in _ENCLOSURES and (
+            not subjects
+        )
 
     def _is_content(self, m: _Mention, prev: _Mention, j: int) -> bool:
         w = self.toks[j].text
