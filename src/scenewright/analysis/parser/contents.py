@@ -131,10 +131,9 @@ class _Contents:
         contents rather than things of the layout; not what the clause's subject holds after a
         place phrase ("a merchant stands in front of the tent holding a brass lantern")."""
         gap = [t.text for t in self.toks[prev.end : m.start]]
-        subjects = bool(gap) and gap[0].endswith("ing") and _after_preposition(self.toks, prev.end - 1)
-        return bool(gap) and gap[0] in _HOLD and len(gap) <= 4 and self.catalogue[prev.category].shape in _ENCLOSURES and (
-            not subjects
-        )
+        if not gap or gap[0] not in _HOLD or len(gap) > 4 or self.catalogue[prev.category].shape not in _ENCLOSURES:
+            return False
+        return not (gap[0].endswith("ing") and _after_preposition(self.toks, prev.end - 1))
 
     def _is_content(self, m: _Mention, prev: _Mention, j: int) -> bool:
         w = self.toks[j].text

@@ -210,7 +210,8 @@ class _Hands:
             if not self.toks[j].text[:1].isalpha():
                 return end
             j -= 1
-        return j if self.toks[j].text in ("in", "wearing") and j < end - 1 and (j in self.ends or j in self.renamed_end) else end
+        dressed = self.toks[j].text in ("in", "wearing") and j < end - 1
+        return j if dressed and (j in self.ends or j in self.renamed_end) else end
 
     def _keeps_by(self, g: int, h: int) -> tuple[int, int]:
         """(who stands near whom) for two living things that go together, ``g`` named with or led

@@ -373,7 +373,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         if _adverb_here(toks, s, e):
             continue  # "the shrine stands well behind the gate": an adverb, not a well
         if _idiom_here(toks, s, e) or _shape_of_group(toks, s, e) or _distance_here(toks, s, e) or (
-            _plural_verb_here(toks, s, e)
+            _verb_before_pronoun(toks, s, e)
         ):
             continue  # "a brig lies at anchor", "a guard stands on duty": no anchor there; "blocks
             # stacked into a tower": how they are set out, no tower; "a few meters in front": how far;
@@ -448,7 +448,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         plural_verb = singular(follow) != follow and article >= 0 and toks[article].text in _SINGULAR_DETERMINERS
         # ("two friends lounge in the tub": a counted plural names no kind of lounge either)
         if placed_kind and (follow in _VENUES or follow in vocabulary.places or follow_two in vocabulary.places) or (
-            follow and singular(follow) in _VENUES and len(words) == 1 and not plural_verb and not _counted_plural(toks, s)
+            follow and singular(follow) in _VENUES and len(words) == 1
+            and not plural_verb and not _counted_plural(toks, s)
         ) or _names_place_after(toks, e):
             continue  # "a throne hall", "a farmhouse kitchen", "a rocket launch site": the place, not the thing
         if _place_name(toks, s):
@@ -807,7 +808,7 @@ def _idiom_here(toks: list[_Tok], s: int, e: int) -> bool:
     return not after[:1].isalpha() or after in _STOP
 
 
-def _plural_verb_here(toks: list[_Tok], s: int, e: int) -> bool:
+def _verb_before_pronoun(toks: list[_Tok], s: int, e: int) -> bool:
     """A singular word right after a plural and right before a pronoun it acts on ("two
     researchers in red parkas count them"): the plural's verb, no count."""
     if e - s != 1 or s < 1 or e >= len(toks) or toks[e].text not in ("them", "it", "him", "her", "their", "its"):
@@ -2602,8 +2603,7 @@ def _acts_as_person(toks: list[_Tok], k: int) -> bool:
         return False
     verb, skipped = found
     vocabulary = load_vocabulary()
-    person_verbs = vocabulary.person_verbs
-    if verb in person_verbs or (f"{verb}s" in person_verbs or f"{verb}es" in person_verbs) and verb.isalpha():
+    if vocabulary.is_person_verb(verb):
         return True  # ("three shearers work": the plural's verb, listed by its -s form)
     after = k + skipped + 1
     clause = next((p for p in range(after, min(after + 8, len(toks))) if not toks[p].text[:1].isalnum()), min(after + 8, len(toks)))

@@ -853,7 +853,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         m = self.by_start.get(cs)
         if len(c.groups) != 1 or m is None or m.end != ce - 1 or m.definite or not holders:
             return
-        if not (_participle(words[-1]) and not words[-1].endswith("ing")) or not all(self._person_at(h) for h in holders):
+        raised = _participle(words[-1]) and not words[-1].endswith("ing")
+        if not raised or not all(self._person_at(h) for h in holders):
             return
         g = c.groups[0]
         if self._handheld(g) and not any(r[1] == g for r in self.relations):
@@ -1333,7 +1334,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     c.head = laden[:1]
                 c.wsub, c.expect_new = [], False
                 before = [t.text for t in toks[max(0, k - 2) : k]]
-                c.single = "one" if before[-1:] == ["one"] else "other" if before in (["the", "other"], ["and", "another"]) else None
+                other_one = before in (["the", "other"], ["and", "another"])
+                c.single = "one" if before[-1:] == ["one"] else "other" if other_one else None
                 # "pickers fill baskets with apples": what the verb fills takes what it is filled with
                 filled = w == "with" and c.deeds and c.deed_end == k and _verb_stem(self._acting_verb(k) or "", _FILL_VERBS)
                 if filled:
@@ -1564,14 +1566,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if not self.toks[j].text[:1].isalpha():
                 return False
             j -= 1
-        return self.toks[j].text == "by" and j > 0 and _participle(self.toks[j - 1].text) and not self.toks[j - 1].text.endswith("ing")
+        verb = self.toks[j - 1].text if j > 0 else ""
+        return self.toks[j].text == "by" and _participle(verb) and not verb.endswith("ing")
 
     @staticmethod
     def _work_verb(word: str) -> bool:
         """A verb of something people do with their hands, no posture ("digs", "two pirates dig")."""
         vocabulary = load_vocabulary()
-        forms = (word, f"{word}s", f"{word}es") if word.isalpha() else ()
-        return any(f in vocabulary.person_verbs for f in forms) and not vocabulary.is_posture_verb(word)
+        return vocabulary.is_person_verb(word) and not vocabulary.is_posture_verb(word)
 
     @staticmethod
     def _lookout(word: str) -> bool:

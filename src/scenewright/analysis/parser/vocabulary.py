@@ -164,6 +164,12 @@ class Vocabulary:
         head = singular(name.lower().split()[-1]) if name.strip() else ""
         return category in self.carried_in_hand or head in self.carried_in_hand
 
+    def is_person_verb(self, word: str) -> bool:
+        """Whether ``word`` is a verb only people do, as listed or as the plural subject's form of a
+        listed "-s" form ("a picker works", "two pirates dig")."""
+        forms = (word, f"{word}s", f"{word}es") if word.isalpha() else (word,)
+        return any(f in self.person_verbs for f in forms)
+
     def is_posture_verb(self, word: str) -> bool:
         """A verb of sitting, lying or standing ("dozes", "perched", "stands")."""
         return any(word in verbs for verbs in self.postures.values())

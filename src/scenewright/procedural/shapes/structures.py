@@ -365,6 +365,7 @@ def _ramp(m: Model) -> None:
     if both:
         m.box("wood", (-W + deck + run, -D, 0), (W - deck - run, D, 0.01 * H), rounded=0.0)
 
+
 def _stairs(m: Model) -> None:
     """A flight of stone steps rising to the back between two side walls; a spiral staircase's
     steps fan round a central post instead, a rail on posts at their outer ends."""
@@ -374,11 +375,13 @@ def _stairs(m: Model) -> None:
         r = min(W, D)
         steps = max(8, min(24, int(H / 0.2)))
         m.post("dark_metal", 0, 0, 0, H, 0.08 * r + 0.03, fraction=0.5)
+        width = 0.6 * 1.6 * np.pi * r / steps  # most of the arc a step turns through, at its outer end
         for k in range(steps):
             a, z = 1.6 * np.pi * k / steps, H * (k + 1) / steps
             end = (r * np.cos(a), r * np.sin(a))
-            m.beam("stone", (0, 0, z - 0.04 * H), (*end, z - 0.04 * H), 0.45 * r * np.pi / steps * 2.5, 0.04 * H)
-            m.post("dark_metal", *end, z, z + 0.9, 0.015, fraction=0.4)
+            m.beam("stone", (0, 0, z - 0.04 * H), (*end, z - 0.04 * H), width, 0.04 * H)
+            if z + 0.3 < H:  # the rail's posts, within the box
+                m.post("dark_metal", *end, z, min(z + 0.9, H), 0.015, fraction=0.4)
         return
     steps = max(4, min(20, int(H / 0.18)))
     side = min(0.12 * W, 0.25)
