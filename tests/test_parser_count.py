@@ -297,3 +297,11 @@ def test_some_of_them_placed_apart_are_split_from_the_rest():
     text = "Two scarecrows stand on either side of the farm gate, and one of them has turned its head to watch."
     sides = {r.relation for r in parse_scene(text).relations if r.source.startswith("scarecrow")}
     assert sides >= {"left of", "right of"}
+
+
+def test_a_phrase_s_target_is_its_own_not_the_one_an_earlier_each_named():
+    """"... with a monitor on every desk. A supervisor paces between the rows": the rows are no
+    "every desk", so the supervisor is one, not one per desk."""
+    got = counts("Eight imps sit at two rows of desks, with a glowing monitor on every desk. "
+                 "A horned supervisor paces between the rows.")
+    assert got["supervisor"] == 1 and got["monitor"] == 8, got

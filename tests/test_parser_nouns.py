@@ -1955,3 +1955,9 @@ def test_a_thing_renamed_as_a_person_is_that_person_in_a_place_phrase_too():
 
 def test_a_counted_plural_before_a_place_word_is_its_subject_not_the_place_s_kind():
     assert objects("Two friends lounge in the tub.")[("figure", "friend")] == 2  # no "friends lounge"
+
+
+def test_a_thing_renamed_as_a_thing_between_commas_is_one_thing():
+    text = "The reactor, a huge glowing sphere, hangs from the ceiling, and four coolant tanks stand around it."
+    assert "sphere" not in names(text) and "reactor" in names(text)
+    assert "table" in names("The table, a long oak slab, stands by the wall.")

@@ -2972,6 +2972,18 @@ def _mark_appositions(toks: list[_Tok], mentions: list[_Mention]) -> None:
             _renames(toks, m.end, later[0].start) and not _after_preposition(toks, m.start)
         ):  # "their boss, a gorilla in a bowler hat": the role is played by a creature, drawn as one
             m.content, later[0].role = True, m.phrase
+        elif later and not _person_mention(m) and not _person_mention(later[0]) and _renames(toks, m.end, later[0].start) and (
+            _subject_renamed(toks, later[0].end)
+        ):  # "The reactor, a huge glowing sphere, hangs from the ceiling": one thing, the reactor
+            later[0].content, later[0].renames = True, m
+
+
+def _subject_renamed(toks: list[_Tok], k: int) -> bool:
+    """The phrase ending at ``k`` renames a sentence's definite subject between commas, its verb
+    right after the second ("The reactor, a huge glowing sphere, hangs ...")."""
+    while k < len(toks) and toks[k].text[:1].isalpha() and not _is_verb(toks[k].text):
+        k += 1  # past what it is made of or has ("a dome of glass", "a cart with one wheel")
+    return k + 1 < len(toks) and toks[k].text == "," and _closes_apposition(toks, k) and _is_verb(toks[k + 1].text)
 
 
 def _fronted_subject(toks: list[_Tok], m: _Mention, later: _Mention) -> bool:

@@ -55,6 +55,7 @@ class _References:
         toks = self.toks
         self._body_part = self._part = None
         self._parts_each = 0
+        self._target_start = -1  # (no noun phrase of an earlier target: "on every desk" is not "between the rows")
         body = self._body_part_at(pos, ce, self.by_start)
         if body is not None:
             return body
