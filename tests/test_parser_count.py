@@ -305,3 +305,9 @@ def test_a_phrase_s_target_is_its_own_not_the_one_an_earlier_each_named():
     got = counts("Eight imps sit at two rows of desks, with a glowing monitor on every desk. "
                  "A horned supervisor paces between the rows.")
     assert got["supervisor"] == 1 and got["monitor"] == 8, got
+
+
+def test_each_at_its_own_thing_is_one_apiece_and_a_thing_of_its_own():
+    got = counts("Ten young pandas kneel in two rows, each at its own low table with a brush on it.")
+    assert got["table"] == 10 and got["brush"] == 10, got  # (the table was read as a part of a panda)
+    assert counts("Four students sit in a row, each at his own desk.")["desk"] == 4
