@@ -2972,8 +2972,8 @@ def _mark_appositions(toks: list[_Tok], mentions: list[_Mention]) -> None:
             _renames(toks, m.end, later[0].start) and not _after_preposition(toks, m.start)
         ):  # "their boss, a gorilla in a bowler hat": the role is played by a creature, drawn as one
             m.content, later[0].role = True, m.phrase
-        elif later and not _person_mention(m) and not _person_mention(later[0]) and _renames(toks, m.end, later[0].start) and (
-            _subject_renamed(toks, later[0].end)
+        elif later and not _person_mention(m) and not _person_mention(later[0]) and (
+            _renames(toks, m.end, later[0].start) and _subject_renamed(toks, later[0].end)
         ):  # "The reactor, a huge glowing sphere, hangs from the ceiling": one thing, the reactor
             later[0].content, later[0].renames = True, m
 
