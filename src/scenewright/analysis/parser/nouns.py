@@ -70,6 +70,11 @@ class _Mention:
     #: The one this apposition names again ("their coach, a woman in a red parka": the coach).
     renames: _Mention | None = None
 
+    @property
+    def own(self) -> bool:
+        """Said to be someone's own ("its own low table"): a thing of its own, no part of the owner."""
+        return "own" in (a.lower() for a in self.adjectives)
+
 
 @dataclass
 class _Group:

@@ -2495,16 +2495,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             named = [t.text for t in toks[rel.end : end] if t.text not in _DETERMINERS and t.text not in ("one", "on")]
             instance = self._member(named, targets[0])
         tm = self.by_start.get(self._target_start) if isinstance(target, list) else None
-        # ("each in a leather seat", "each at its own low table": one apiece)
-        own = tm is not None and "own" in (a.lower() for a in tm.adjectives) and self.groups[targets[0]].count == 1
-        if c.each_own is not None and tm is not None and (not tm.definite or own) and not tm.each:
+        # (a target named anew, or said to be its own: "each in a leather seat", "each at its own low table")
+        fresh = tm is not None and (not tm.definite or tm.own and self.groups[targets[0]].count == 1)
+        if c.each_own is not None and fresh and not tm.each:
             srcs = [c.each_own]
             for t in targets:
                 self._per_each([t], c.each_own)
             c.each_own = None
         if tm is not None and tm.each:  # "a candle on every table": one per table
             self._per_each([s for s in srcs if s in c.groups], targets[0])
-        elif tm is not None and c.each is not None and c.each in srcs and (not tm.definite or own) and tm.count <= 1:
+        elif fresh and c.each is not None and c.each in srcs and tm.count <= 1:
             self._per_each(targets, c.each)  # "each in a leather seat": one seat apiece
         elif tm is not None and kind == "on" and self._bare(tm) and len(srcs) == 1 and self._living(srcs[0]):
             self._per_each(targets, srcs[0])  # "two soldiers on horseback": a horse each

@@ -98,7 +98,7 @@ class _References:
                     m.category in ("doghouse", "basket") or self.catalogue[m.category].shape in ("rug", "bed")
                 )
                 # ("each at its own low table": a thing of its own, no part of it)
-                own_support = own_support or "own" in (a.lower() for a in m.adjectives)
+                own_support = own_support or m.own
                 if owner and m.group < 0 and not own_support and not any(g.category == m.category for g in self.groups):
                     self._part = singular(toks[m.end - 1].text)
                     return owner, m.end  # "pumpkins on its counter": the stall's own counter is the stall
