@@ -19,14 +19,15 @@ from scenewright.layout import relations as rel
 
 
 def _scene(*categories: str, relations=(), indoor=True) -> ParsedScene:
-    """A parse of the given categories, numbered per category, with catalogue sizes."""
+    """A parse of the given categories, numbered per category, with catalogue sizes; the things of
+    one category are named together, one phrase ("two desks")."""
     catalogue = load_catalogue()
     count: dict[str, int] = {}
     objects = []
-    for k, c in enumerate(categories):
+    for c in categories:
         count[c] = count.get(c, 0) + 1
         label = c.replace("_", " ")
-        objects.append(ParsedObject(f"{c}_{count[c]}", c, label, label, catalogue[c].size, k))
+        objects.append(ParsedObject(f"{c}_{count[c]}", c, label, label, catalogue[c].size, categories.index(c)))
     rels = [ParsedRelation(s, r, t, inferred) for s, r, t, inferred in relations]
     return ParsedScene(" ".join(categories), objects, rels, "realistic", "wood", indoor)
 
@@ -448,3 +449,47 @@ def test_a_ring_of_wide_things_stands_beyond_the_targets_other_neighbours():
     for bench, tent in (("bench_1", "tent_1"), ("bench_2", "tent_2")):
         assert _gap(objects[bench], fire) < _gap(objects[tent], fire)  # the bench hugs the fire, the tent is beyond
     assert not any(_plan_overlap(objects[a], objects[b]) for a in objects for b in objects if a < b)
+
+
+def test_an_inferred_support_stays_among_the_things_named_together():
+    """"Twelve desks ... a globe sits on the corner of her desk" (the teacher's): the globe was
+    handed to the first school desk, one of another phrase."""
+    parsed = parse_scene("Six desks face the teacher's desk. A globe sits on her desk.")
+    hosts = {r.source: r.target for r in share_supports(parsed)}
+    assert hosts["globe_1"] == "desk_7"
+
+
+def test_rows_facing_a_thing_take_along_what_stands_by_each_member():
+    """"Twelve desks in three rows of four, each with a chair behind it, facing the teacher's desk":
+    the rows fell apart into one fanned line, the chairs left where the desks had been."""
+    made = compose(parse_scene("A classroom. Twelve desks stand in three rows of four, each with a chair behind it, "
+                               "facing the teacher's desk at the front."))
+    o = _by_id(made.objects)
+    desks = [o[f"desk_{k}"] for k in range(1, 13)]
+    assert len({round(d.position.y, 2) for d in desks}) == 3
+    assert all(_faces(d, o["desk_13"]) for d in desks)
+    assert all(rel.check("behind", o[f"chair_{k}"], o[f"desk_{k}"]) for k in range(1, 13))
+    standing = [v for v in o.values() if v.size.z >= 0.1]
+    assert not any(_plan_overlap(a, b) for i, a in enumerate(standing) for b in standing[i + 1 :])
+
+
+def test_a_row_along_a_fence_stands_in_front_of_it_and_the_fence_runs_its_length():
+    """"Four camper vans are parked in a row along the fence": the first van stood apart by a
+    3 m fence, the others in a row beyond it."""
+    made = compose(parse_scene("A festival car park. Four camper vans are parked in a row along the fence, "
+                               "and a girl sits on the roof of the last van."))
+    o = _by_id(made.objects)
+    vans, fence = [o[f"truck_{k}"] for k in range(1, 5)], o["fence_1"]
+    assert len({round(v.position.y, 2) for v in vans}) == 1 and all(v.position.y < fence.position.y for v in vans)
+    assert fence.size.x >= sum(v.size.x for v in vans)
+    assert all(rel.check("near", v, fence) for v in vans) and rel.check("on", o["girl_1"], vans[-1])
+
+
+def test_a_thing_with_a_ring_round_it_keeps_room_for_the_ring_from_what_it_stands_by():
+    """"Two tents, with a campfire in front of them surrounded by four logs": the campfire hugged
+    the tents and the log behind it went round behind the tents, metres away."""
+    made = compose(parse_scene("Two tents stand side by side, with a campfire in front of them surrounded by four logs."))
+    o = _by_id(made.objects)
+    fire = o["campfire_1"]
+    assert all(_gap(o[f"log_{k}"], fire) < 1.0 for k in range(1, 5))
+    assert all(rel.check("in front of", fire, o[t]) for t in ("tent_1", "tent_2"))

@@ -33,3 +33,7 @@ def test_a_look_word_names_no_colour_of_its_own():
 def test_materials_draw_in_the_colour_the_palette_reads():
     assert all(surface.color == MATERIAL_COLOURS[name] for name, surface in MATERIALS.items())
     assert palette("ochre")[0][1] == COLOURS["ochre"]
+
+
+def test_mud_is_a_colour_water_takes():
+    assert named_colours("three pigs in a mud pool") and named_colours("a muddy stream")

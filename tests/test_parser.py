@@ -43,7 +43,7 @@ def triples(text: str, inferred: bool = False) -> set[tuple[str, str, str]]:
         ("Four chairs stand in the room.", {"chair": 4}),
         ("A pair of armchairs and a sofa.", {"armchair": 2, "sofa": 1}),
         ("Two oak trees and one bench.", {"tree": 2, "bench": 1}),
-        ("Several barrels sit on the dock.", {"barrel": 3}),
+        ("Several barrels sit on the dock.", {"barrel": 3, "pier": 1}),  # (a dock things stand on is a pier)
         ("Lamp posts line the street.", {"lamp_post": 4}),  # a row of them
         ("A dozen crates.", {"crate": 12}),
         ("Many bollards.", {"bollard": 5}),
@@ -264,6 +264,14 @@ def test_hanging_things_hang_above_something():
         ("A watercolor meadow with two cows.", "watercolour"),
         ("A crypt in a gothic style, with a coffin.", "gothic"),
         ("A gothic chapel with six pews.", "realistic"),  # a word for buildings too: the look only before "style"
+        # a made or painted look the opening names its setting in
+        ("A knitted garden tea party, with every creature made of wool.", "textile"),
+        ("An isometric war room deep inside a concrete bunker.", "diorama"),
+        ("Pointillist dots of yellow and violet: a sunflower field.", "impressionist"),
+        ("A knitted scarf lies on the bench.", "realistic"),  # a thing of the scene
+        ("A textile mill with four looms.", "realistic"),
+        ("A Japanese castle courtyard built from plastic toy bricks.", "voxel"),
+        ("A log-cabin parlour made entirely of beadwork.", "textile"),
     ],
 )
 def test_style(text, style):
@@ -728,7 +736,7 @@ def test_a_side_wall_is_no_relation_target():
 
 
 def test_low_wide_buildings_are_not_office_blocks():
-    parsed = parse_scene("A warehouse, a factory and a hangar stand by the dock.")
+    parsed = parse_scene("A warehouse, a factory and a hangar stand by the river.")
     assert {o.category for o in parsed.objects} == {"warehouse"}
     width, depth, height = parsed.objects[0].size
     assert height < width and height < depth and height < load_catalogue()["building"].size[2]
@@ -923,3 +931,8 @@ def test_a_building_with_things_named_mid_sentence_is_a_thing_of_the_scene():
     assert ("house", "behind", "pond") in triples(text)
     # the opening's place with things stays the setting
     assert "house" not in counts("A tea house with a low table and two cushions.")
+
+
+def test_a_with_part_that_ends_the_text_parses():
+    """Found by the word-salad property test: "with lamp" read past the text's end."""
+    assert [o.category for o in parse_scene("with lamp").objects] == ["table_lamp"]

@@ -311,3 +311,13 @@ def test_each_at_its_own_thing_is_one_apiece_and_a_thing_of_its_own():
     got = counts("Ten young pandas kneel in two rows, each at its own low table with a brush on it.")
     assert got["table"] == 10 and got["brush"] == 10, got  # (the table was read as a part of a panda)
     assert counts("Four students sit in a row, each at his own desk.")["desk"] == 4
+
+
+def test_groups_of_a_count_multiply_it():
+    def count(text: str, category: str) -> int:
+        return sum(o.category == category for o in parse_scene(text).objects)
+
+    assert count("Two teams of five players crouch behind low wooden barricades.", "figure") == 10
+    assert count("Three rows of four chairs face the stage.", "chair") == 12
+    assert count("Two groups of three children play in the sand.", "figure") == 6
+    assert count("A team of four firefighters sprays water on the barn.", "figure") == 4

@@ -1879,3 +1879,118 @@ def test_one_of_them_on_something_is_one_of_the_doers_not_what_they_work_on():
 def test_what_swims_where_a_where_clause_points_is_on_the_pond():
     found = rels("A statue stands by the lily pond, where a white swan glides.")
     assert ("swan_1", "on", "pond_1") in found
+
+
+def test_a_passive_right_after_the_with_things_place_is_the_with_things():
+    found = rels("Two tents stand side by side, with a campfire in front of them surrounded by four logs.")
+    assert {("log_1", "left of", "campfire_1"), ("log_4", "behind", "campfire_1")} <= found
+    assert not any(s.startswith("log") and t.startswith("tent") for s, _, t in found)
+    # after a comma the passive goes back to the head
+    found = rels("A fountain stands in the square, with a statue in front of it, surrounded by benches.")
+    assert ("bench_1", "face to", "fountain_1") in found and ("statue_1", "in front of", "fountain_1") in found
+
+
+def test_facing_each_other_across_a_thing_puts_it_between_them():
+    found = rels("A fireplace stands against the wall. Two armchairs face each other across a round rug in front of it.")
+    assert {("rug_1", "behind", "armchair_1"), ("rug_1", "in front of", "armchair_2")} <= found
+    assert ("rug_1", "in front of", "fireplace_1") in found
+    found = rels("A sofa and an armchair face each other across a coffee table.")
+    assert {("coffee_table_1", "near", "sofa_1"), ("coffee_table_1", "near", "armchair_1")} <= found
+
+
+def test_someones_own_one_is_no_member_of_a_group_of_that_kind():
+    found = rels("Twelve desks stand in three rows of four, facing the teacher's desk at the front. "
+                 "A blackboard hangs on the wall behind the teacher's desk.")
+    assert ("desk_1", "face to", "desk_13") in found and ("whiteboard_1", "behind", "desk_13") in found
+    anchors = {o.id: o.anchor for o in parse_scene("Six desks face the teacher's desk at the front.").objects}
+    assert anchors["desk_7"] == "front" and anchors["desk_1"] is None
+    # one of a group named by whose they are stays one of them
+    objects = parse_scene("Two team benches stand by the pitch. A cooler sits beside the home team's bench.").objects
+    assert sum(o.category == "bench" for o in objects) == 2
+
+
+def test_a_winged_beast_circling_above_a_thing_is_up_in_the_air():
+    assert ("dragon_1", "above", "tower_1") in rels("A dragon circles above the tower.")
+    assert ("dragon_1", "near", "tower_1") in rels("A dragon sleeps above the tower.")
+
+
+def test_a_dock_one_walks_out_on_and_a_pool_one_stands_round_are_things():
+    assert ("man_1", "on", "pier_1") in rels("A man fishes from the end of a wooden dock.")
+    names = [o.name for o in parse_scene("Cranes unload ships at the docks.").objects]
+    assert "dock" not in names and "docks" not in names
+    found = rels("Palm trees surround a small pool. A camel drinks at the edge of the pool.")
+    assert ("palm_tree_1", "face to", "pond_1") in found and ("camel_1", "near", "pond_1") in found
+
+
+def test_the_chimney_of_a_house_named_before_is_its_part():
+    names = [o.name for o in parse_scene("A cabin stands in the snow. Smoke rises from the chimney.").objects]
+    assert names == ["cabin"]
+
+
+def test_a_camping_stove_is_a_small_thing_on_the_counter():
+    parsed = parse_scene("A young man fries eggs on a camping stove on the counter.")
+    stove = next(o for o in parsed.objects if o.category == "stove")
+    assert max(stove.size) < 0.5 and (stove.id, "on", "counter_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
+
+
+def test_what_one_carries_over_a_bridge_stays_in_hand_and_the_carrier_is_on_it():
+    found = rels("A miller carries a sack over the bridge.")
+    assert {("miller_1", "on", "bridge_1"), ("sack_1", "on", "miller_1")} <= found
+    assert ("lantern_1", "above", "table_1") in rels("A woman holds a lantern over the table.")
+
+
+def test_a_likeness_gazing_from_a_pedestal_stands_on_it():
+    assert ("founder_bust_1", "on", "pedestal_1") in rels("A bust of the founder gazes down from a tall pedestal.")
+    assert ("bust_1", "on", "pedestal_1") in rels("A marble bust in sunglasses watches them from a plinth.")
+    assert rels("Steam rises from a food cart.") == set()
+
+
+def test_at_one_of_them_is_at_one_of_the_group():
+    found = rels("Four round tables stand in a row along the window, and a poet and a painter argue at one of them.")
+    assert {("poet_1", "near", "round_table_1"), ("painter_1", "near", "round_table_1")} <= found
+
+
+def test_a_participle_after_someone_one_talks_to_is_theirs():
+    found = rels("The warden, a cheerful woman with a mug of coffee, chats to a cyclist leaning on the ping-pong table.")
+    assert ("cyclist_1", "side of", "ping_pong_table_1") in found
+    assert not any(s == "warden_1" and t == "ping_pong_table_1" for s, _, t in found)
+
+
+def test_clothing_lined_up_somewhere_is_a_thing_of_the_scene():
+    found = rels("A fireplace stands in the corner. Wet boots are lined up around the fireplace.")
+    assert ("boot_1", "face to", "fireplace_1") in found
+
+
+def test_an_ice_cream_in_hand_is_a_thing():
+    assert ("ice_cream_1", "on", "boy_1") in rels("A boy holds a dripping ice cream.")
+
+
+def test_on_the_shoulder_of_one_of_them_is_on_one_of_the_people():
+    found = rels("Behind the judges, five students sit on benches, and a tiny purple dragon perches on the shoulder "
+                 "of one of them.")
+    assert ("dragon_1", "on", "student_1") in found
+    found = rels("A rusty hover truck is parked beside the barn, and a robot loads crates onto the back of it.")
+    assert not any(s.startswith("crate") and t == "robot_1" for s, _, t in found)
+
+
+def test_cartons_of_ice_cream_are_cartons():
+    assert ("carton_1", "on", "bookshelf_1") in rels("Cartons of ice cream sit on the shelf.")
+
+
+def test_things_nobody_counted_on_both_sides_of_several_are_a_pair_for_each():
+    found = rels("A school cafeteria. Long tables run the length of the room with benches on both sides.")
+    assert {("bench_5", "left of", "table_3"), ("bench_6", "right of", "table_3")} <= found
+
+
+def test_a_row_of_boats_after_a_fronted_place_is_boats_and_handlebars_are_the_bicycles():
+    found = rels("Along the canal, a row of narrowboats is moored nose to tail, each with a flowerpot on its roof.")
+    assert ("planter_1", "on", "narrowboat_1") in found
+    found = rels("A bicycle leans against the lamp post, and a basket of bread hangs from its handlebars.")
+    assert ("basket_1", "on", "bicycle_1") in found
+
+
+def test_one_and_the_other_are_one_each_of_the_several_named_before():
+    parsed = parse_scene("Two dogs play on the lawn; one chases a ball, the other sleeps under a tree.")
+    assert [o.category for o in parsed.objects].count("dog") == 2
+    assert not any(o.name == "chase" for o in parsed.objects)
+    assert ("dog_2", "near", "tree_1") in {(r.source, r.relation, r.target) for r in parsed.relations}

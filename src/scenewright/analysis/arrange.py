@@ -143,17 +143,19 @@ def initial_objects(parsed: ParsedScene, seed: int = 0) -> list[SceneObject]:
 
 def share_supports(parsed: ParsedScene) -> list[ParsedRelation]:
     """The parse's relations, with inferred supports shared among instances: monitors the
-    parser put on "the" desk go one to each desk (each category of thing in turn)."""
+    parser put on "the" desk go one to each desk (each category of thing in turn), among the
+    desks named together (a globe on the teacher's desk stays there)."""
     category = {o.id: o.category for o in parsed.objects}
-    instances: dict[str, list[str]] = defaultdict(list)
+    group = {o.id: o.group for o in parsed.objects}
+    instances: dict[int, list[str]] = defaultdict(list)
     for o in parsed.objects:
-        instances[o.category].append(o.id)
-    count: dict[tuple[str, str], int] = defaultdict(int)
+        instances[o.group].append(o.id)
+    count: dict[tuple[str, int], int] = defaultdict(int)
     out = []
     for r in parsed.relations:
-        hosts = instances[category[r.target]]
+        hosts = instances[group[r.target]]
         if r.inferred and r.relation == "on" and len(hosts) > 1:
-            key = (category[r.source], category[r.target])
+            key = (category[r.source], group[r.target])
             target = hosts[count[key] % len(hosts)]
             count[key] += 1
             if target != r.source:

@@ -17,9 +17,11 @@ from __future__ import annotations
 import math
 from collections import defaultdict
 
-from scenewright.analysis.composition.footprint import GAP, fits_across
+from scenewright.analysis.composition.footprint import GAP, Footprint, bbox, fits_across
 from scenewright.analysis.composition.units import Layout, Unit
 from scenewright.analysis.parser import ParsedObject, ParsedRelation
+from scenewright.core.catalogue import load_catalogue
+from scenewright.core.relations import BUFFER
 from scenewright.geometry import front_direction, yaw_towards
 
 #: Room between the rows of a formation: a seat's legroom, a walkway between stalls.
@@ -27,6 +29,8 @@ ROW_GAP = 0.6
 #: The highest a stack is piled (m): what one can reach the top of. Taller ones stand in columns
 #: side by side ("a dozen barrels stacked against the wall" is a pile, not a tower to the rafters).
 STACK_REACH = 2.0
+#: Shapes drawn as a line a row can stand along ("parked in a row along the fence").
+LINES = frozenset({"fence"})
 #: The smallest ring: four stools "in a circle" still leave a middle to sit round.
 RING_RADIUS = 1.0
 
@@ -157,12 +161,53 @@ def _arrange_group(layout: Layout, objs: list[ParsedObject], between: dict[str, 
     distinct = len({id(u) for u in units}) == len(ids)
     own_units = distinct and all(u.root == i and not u.merged for u, i in zip(units, ids))
     inside = {s: pair for s, pair in between.items() if pair[0] in ids}
-    if own_units:
+    if (line := _line_along(layout, ids)) is not None:
+        _set_out_along(layout, objs, line)
+    elif own_units:
         _set_out_units(layout, objs, units, inside)
         for source, (a, b) in inside.items():
             _into_aisle(layout, source, a, b)
     elif len({id(u) for u in units}) == 1 and all(layout.with_load(i) == [i] for i in ids):
         _set_out_in_unit(layout, objs, target)
+
+
+def _line_along(layout: Layout, ids: list[str]) -> str | None:
+    """The fence (or another thing drawn as one) every member of a row stands by, if one:
+    "four vans parked in a row along the fence"."""
+    if layout.by_id[ids[0]].formation != "row":
+        return None
+    near = [{r.target for r in layout.relations if r.source == i and r.relation in ("near", "in front of")} for i in ids]
+    common = set.intersection(*near)
+    return next((t for t in common if load_catalogue()[layout.by_id[t].category].shape in LINES), None)
+
+
+def _set_out_along(layout: Layout, objs: list[ParsedObject], line: str) -> None:
+    """Members side by side along the front of ``line`` (lengthened to them: ``hosts.lengthen``),
+    each with what rests on it, when every relation touching them still holds there."""
+    fence = layout.placed[line]
+    fx, fy = (float(v) for v in front_direction(fence.yaw))
+    ax, ay = -fy, fx  # along the fence, left to right as seen from its front
+    loads = {o.id: layout.with_load(o.id) for o in objs}
+    moved = [i for o in objs for i in loads[o.id]]
+    before = {i: (layout.placed[i].x, layout.placed[i].y) for i in moved}
+    widths = [layout.placed[o.id].w for o in objs]
+    offset = -(sum(widths) + GAP * (len(objs) - 1)) / 2
+    for o, w in zip(objs, widths):
+        p = layout.placed[o.id]
+        out = fence.d / 2 + GAP + p.d / 2
+        x, y = fence.x + ax * (offset + w / 2) + fx * out, fence.y + ay * (offset + w / 2) + fy * out
+        for i in loads[o.id]:
+            layout.placed[i].x += x - p.x if i != o.id else 0.0
+            layout.placed[i].y += y - p.y if i != o.id else 0.0
+        p.x, p.y = x, y
+        offset += w + GAP
+    unit = layout.unit_of[objs[0].id]
+    standing = [i for i in moved if layout.placed[i].h >= 0.1]
+    others = [layout.placed[i] for i in unit.ids if i not in moved and layout.placed[i].h >= 0.1]
+    clear = not any(layout.placed[a].overlaps(q) for a in standing for q in others)
+    if not (clear and layout.relations_hold(set(moved))):
+        for i, (x, y) in before.items():
+            layout.placed[i].x, layout.placed[i].y = x, y
 
 
 def _common_target(relations: list[ParsedRelation], ids: list[str]) -> str | None:
@@ -172,13 +217,11 @@ def _common_target(relations: list[ParsedRelation], ids: list[str]) -> str | Non
     return next(iter(faced)) if len(faced) == 1 and facing == set(ids) else None
 
 
-def _place_slots(objs: list[ParsedObject], turned: bool) -> list[tuple[float, float]]:
-    """Formation places for members; each turned on its own (toward a target) takes room for
-    any turn."""
-    width = max(o.size[0] for o in objs)
-    depth = max(o.size[1] for o in objs)
+def _place_slots(objs: list[ParsedObject], turned: bool, width: float, depth: float) -> list[tuple[float, float]]:
+    """Formation places ``width`` × ``depth`` for members; each turned on its own (toward a
+    target) takes room for any turn."""
     if turned:
-        width = depth = max(math.hypot(o.size[0], o.size[1]) for o in objs)
+        width = depth = math.hypot(width, depth)
     if objs[0].formation == "circle":
         return ring(len(objs), width, depth)
     return slots(len(objs), _lines(objs[0]), width, depth)
@@ -192,37 +235,81 @@ def _lines(obj: ParsedObject) -> int:
 def _set_out_in_unit(layout: Layout, objs: list[ParsedObject], target: str | None) -> None:
     """Members that share one unit (they face one target): the formation in front of it, turned to it."""
     ids = [o.id for o in objs]
-    before = {i: (layout.placed[i].x, layout.placed[i].y, layout.placed[i].yaw) for i in ids}
+    followers = {i: _followers(layout, i, ids, target) for i in ids}
+    moved = [*ids, *(f for i in ids for f in followers[i])]
+    before = {i: (layout.placed[i].x, layout.placed[i].y, layout.placed[i].yaw) for i in moved}
     cx = sum(layout.placed[i].x for i in ids) / len(ids)
     cy = sum(layout.placed[i].y for i in ids) / len(ids)
-    local = _place_slots(objs, turned=target is not None or objs[0].formation == "circle")
+    # a member takes room for what goes with it ("each with a chair behind it")
+    boxes = [bbox(layout.placed[k] for k in (i, *followers[i]) if layout.placed[k].h >= 0.1) for i in ids]
+    width, depth = max(b[2] - b[0] for b in boxes), max(b[3] - b[1] for b in boxes)
+    local = _place_slots(objs, target is not None or objs[0].formation == "circle", width, depth)
     fx, fy = 0.0, -1.0  # the way the formation's first row looks: toward the viewer
     if target is not None and objs[0].formation != "circle":
         t = layout.placed[target]
         # in front of the target, where it looks (an arch, a stage, a screen face the audience)
         fx, fy = (-float(v) for v in front_direction(t.yaw))
-        depth = max(y for _, y in local) - min(y for _, y in local) + max(o.size[1] for o in objs)
-        reach = (max(t.w, t.d) + depth) / 2 + GAP + 0.6
+        span = max(y for _, y in local) - min(y for _, y in local) + depth
+        reach = (max(t.w, t.d) + span) / 2 + GAP + 0.6
         cx, cy = t.x - fx * reach, t.y - fy * reach
     rx, ry = -fy, fx
     for o, (lx, ly) in zip(objs, local):
         p = layout.placed[o.id]
         # local −y (the first row) goes toward the target, local x along the rows
-        p.x, p.y = cx + lx * rx - ly * fx, cy + lx * ry - ly * fy
+        x, y = cx + lx * rx - ly * fx, cy + lx * ry - ly * fy
+        for f in followers[o.id]:  # (the relations the text states are in the scene's frame: a move keeps them)
+            layout.placed[f].x += x - p.x
+            layout.placed[f].y += y - p.y
+        p.x, p.y = x, y
         if objs[0].formation == "circle":
             p.turn(round(yaw_towards((p.x, p.y), (cx, cy)), 3))
         elif target is not None:
             t = layout.placed[target]
             p.turn(round(yaw_towards((p.x, p.y), (t.x, t.y)), 3))
+        for f in followers[o.id]:
+            way = next((_AWAY[r.relation] for r in layout.relations if (r.source, r.target) == (f, o.id) and r.relation in _AWAY),
+                       (layout.placed[f].x - p.x, layout.placed[f].y - p.y))
+            _step_clear(layout.placed[f], p, way)
     unit = layout.unit_of[ids[0]]
-    others = [layout.placed[i] for i in unit.ids if i not in ids and layout.placed[i].h >= 0.1]
-    clear = all(not layout.placed[a].overlaps(q) for a in ids for q in others) and all(
-        not layout.placed[a].overlaps(layout.placed[b]) for k, a in enumerate(ids) for b in ids[k + 1 :]
+    standing = [i for i in moved if layout.placed[i].h >= 0.1]
+    others = [layout.placed[i] for i in unit.ids if i not in moved and layout.placed[i].h >= 0.1]
+    clear = all(not layout.placed[a].overlaps(q) for a in standing for q in others) and all(
+        not layout.placed[a].overlaps(layout.placed[b]) for k, a in enumerate(standing) for b in standing[k + 1 :]
     )
-    if not (clear and layout.relations_hold(set(ids))):
+    if not (clear and layout.relations_hold(set(moved))):
         for i, (x, y, yaw) in before.items():
             layout.placed[i].x, layout.placed[i].y = x, y
             layout.placed[i].turn(yaw)
+
+
+#: The way a thing stands from what the text relates it to, in the scene's frame.
+_AWAY = {"behind": (0.0, 1.0), "in front of": (0.0, -1.0), "left of": (-1.0, 0.0), "right of": (1.0, 0.0)}
+
+
+def _step_clear(thing: Footprint, member: Footprint, way: tuple[float, float], step: float = 0.05,
+                reach: float = 2.0) -> None:
+    """Step ``thing`` along ``way`` until a member turned in place no longer overlaps it (a chair
+    behind a desk turned to the teacher stays behind it), at most ``reach``."""
+    dx, dy = way
+    norm = math.hypot(dx, dy)
+    if norm == 0:
+        return
+    for _ in range(int(reach / step)):
+        if not thing.overlaps(member, margin=BUFFER + 0.02):  # (the relations' own buffer)
+            return
+        thing.x, thing.y = thing.x + dx / norm * step, thing.y + dy / norm * step
+
+
+def _followers(layout: Layout, member: str, ids: list[str], target: str | None) -> list[str]:
+    """What the text relates to ``member`` alone, with what rests on it: it goes where the member
+    goes ("twelve desks in rows, each with a chair behind it": each chair with its desk)."""
+    out: list[str] = []
+    for r in layout.relations:
+        if r.target != member or r.source in ids or r.source == target or r.source in out:
+            continue
+        if {x.target for x in layout.relations if x.source == r.source} == {member}:
+            out += [i for i in layout.with_load(r.source) if i not in out]
+    return out
 
 
 def _set_out_units(layout: Layout, objs: list[ParsedObject], units: list[Unit],

@@ -31,6 +31,7 @@ from collections import defaultdict
 from dataclasses import replace
 
 from scenewright.analysis.parser import ParsedObject, ParsedScene
+from scenewright.analysis.composition import formations
 from scenewright.analysis.composition.mounts import LIVING
 from scenewright.analysis.composition.roles import SEATS
 from scenewright.analysis.parser.vocabulary import GENERIC, load_vocabulary
@@ -44,6 +45,8 @@ GAP = 0.05
 SEAT_GAP = 0.2
 #: No host is lengthened past this many metres (a banquet table, a shop counter).
 LONGEST = 7.0
+#: No fence is lengthened past this many metres (a car park's side).
+LONGEST_LINE = 30.0
 #: Procedural shapes that come in any size and grow as a whole (a boulder for three goats).
 GROWN = frozenset({"rock"})
 #: Top area a grown host gives its load, as a multiple of the load's own footprints.
@@ -102,6 +105,7 @@ def lengthen(parsed: ParsedScene) -> list[ParsedObject]:
     by_id = {o.id: o for o in parsed.objects}
     loads: dict[str, list[ParsedObject]] = defaultdict(list)
     seated: dict[str, list[ParsedObject]] = defaultdict(list)
+    lined: dict[str, list[ParsedObject]] = defaultdict(list)
     for r in parsed.relations:
         if r.source not in by_id or r.target not in by_id:
             continue
@@ -109,10 +113,17 @@ def lengthen(parsed: ParsedScene) -> list[ParsedObject]:
             loads[r.target].append(by_id[r.source])
         elif r.relation == "in front of" and by_id[r.source].category in SEATS:
             seated[r.target].append(by_id[r.source])
+        elif r.relation in ("near", "in front of") and by_id[r.source].formation == "row":
+            lined[r.target].append(by_id[r.source])
     out = []
     for o in parsed.objects:
         entry = catalogue.get(o.category)
         on, seats = loads.get(o.id, []), seated.get(o.id, [])
+        if entry is not None and entry.shape in formations.LINES and len(lined.get(o.id, [])) > 1:
+            # "four vans parked in a row along the fence": the fence runs the row's length
+            row = lined[o.id]
+            need = sum(s.size[0] for s in row) + formations.GAP * (len(row) + 1)
+            o = replace(o, size=(max(o.size[0], min(need, LONGEST_LINE)), *o.size[1:]))
         stretchable = o.guessed or (entry is not None and entry.shape in STRETCHABLE)
         if stretchable and (len(on) > 1 or len(seats) > 1):
             need = sum(s.size[0] + SEAT_GAP for s in seats)

@@ -118,6 +118,9 @@ def place_related(
     def yaw(obj: ParsedObject) -> float:
         return turn_yaw(obj, outgoing[obj.id], incoming[obj.id], by_id)
 
+    # what a ring of things faces keeps room round it for them
+    room = {t: max(max(by_id[f].size[:2]) for f in fs) + GAP for t, fs in faced_by.items() if len(fs) >= RING}
+
     placed[main.id] = Footprint(0.0, 0.0, main.size[2] / 2, yaw(main), main.size)
 
     def beside_source(obj: ParsedObject) -> bool:
@@ -125,12 +128,14 @@ def place_related(
         of S), when its own relations cannot place it; False if there is none."""
         for r in incoming[obj.id]:
             if r.source in placed and r.relation in INVERSE:
-                placed[obj.id] = beside(obj, placed[r.source], r.source, INVERSE[r.relation], False)
+                placed[obj.id] = beside(obj, placed[r.source], r.source, INVERSE[r.relation], False, room.get(r.source, 0.0))
                 return True
         return False
 
-    def beside(obj: ParsedObject, t: Footprint, target: str, rel: str, turn: bool) -> Footprint:
-        """``obj`` on the ``rel`` side of ``t``, the n-th there, pushed clear."""
+    def beside(obj: ParsedObject, t: Footprint, target: str, rel: str, turn: bool, ring_room: float) -> Footprint:
+        """``obj`` on the ``rel`` side of ``t``, the n-th there, pushed clear, ``ring_room`` further
+        off when one of the two has a ring of things round it the relation puts this one outside
+        of (a campfire in front of the tents keeps room for its ring of logs)."""
         (dx, dy), face_yaw = SIDES[rel]
         probe = Footprint(0, 0, 0, face_yaw if turn else yaw(obj), lent.get(obj.id, obj.size))
         n = side_use[(target, rel)]
@@ -143,8 +148,9 @@ def place_related(
             offset = (t.d - probe.d) / 2  # beside the bed's head, not its middle
         elif n == 0 and dx and t.d > FRONT_CORNER_DEPTH and t.h > obj.size[2] + HIDE_MARGIN:
             offset = -(t.d - probe.d) / 2  # by a barn's front corner, not hidden behind its middle
-        x = t.x + dx * ((t.w + probe.w) / 2 + GAP) + (0.0 if dx else offset)
-        y = t.y + dy * ((t.d + probe.d) / 2 + GAP) + (offset if dx else 0.0)
+        gap = GAP + ring_room
+        x = t.x + dx * ((t.w + probe.w) / 2 + gap) + (0.0 if dx else offset)
+        y = t.y + dy * ((t.d + probe.d) / 2 + gap) + (offset if dx else 0.0)
         p = Footprint(x, y, obj.size[2] / 2, probe.yaw, obj.size)
         return push(_slide(p, t, (dx, dy), list(placed.values())), (dx, dy), list(placed.values()))
 
@@ -200,7 +206,7 @@ def place_related(
         turn = facing(obj, outgoing[obj.id], anchored) == anchored.target or (
             seat_at_table and anchored.relation == "near"
         )
-        placed[obj.id] = beside(obj, t, anchored.target, rel, turn)
+        placed[obj.id] = beside(obj, t, anchored.target, rel, turn, room.get(obj.id, 0.0))
         _lay_under(obj, outgoing[obj.id], flat, placed, by_id)
 
     # a wide ring waits for the rest: benches on either side of a campfire hug it, and the tents

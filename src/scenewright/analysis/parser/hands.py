@@ -303,7 +303,7 @@ class _Hands:
         # ("an official with a flag sits on a snowmobile", "two peasants with pitchforks shout at the
         # foot of the tree": the subject's verb, the official sits there)
         word = self.toks[end].text if end < ce else ""
-        verb = _is_verb(word) or self._finite_at(end)
+        verb = _is_verb(word) or (end < ce and self._finite_at(end))  # ("with lamp": nothing after it)
         return end in self.rel_at or (end + 1 < ce and word.isalpha() and not verb and end + 1 in self.rel_at)
 
     def _after_verb(self, k: int, over: tuple[str, ...] = (), worn: bool = False) -> bool:

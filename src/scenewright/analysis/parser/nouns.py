@@ -418,6 +418,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "the saloon doors swing behind him": what no-things do, not a swing
         if e - s == 1 and [t.text for t in toks[max(0, s - 3) : s]] == ["of", "them", ","]:
             continue  # "its passengers, a dozen of them, crowd along the parapet": the verb after the count
+        if e - s == 1 and _one_doing(toks, s):
+            continue  # "two dogs play; one chases a ball, the other sleeps": one of them, and its verb
         if entry is None and k > 0 and raw[k - 1][1] == s and _plural_subject_before(toks, raw[k - 1], e):
             continue  # "two kids fish from the pier", "the children swing on the gate": a verb here
         follow = toks[e].text if e < n else ""
@@ -576,6 +578,21 @@ def _parts_of_each(toks: list[_Tok], mentions: list[_Mention]) -> None:
         )), None)  # fmt: skip
         if owner is not None:
             m.category, m.guess, m.alias = owner.category, owner.guess, True
+
+
+def _one_doing(toks: list[_Tok], s: int) -> bool:
+    """The word at ``s`` is the verb of a clause opened by "one" or "the other" standing for one of the
+    several named before ("one chases a ball", "the other sleeps under a tree"): a "-s" form right
+    after it, with what it acts on or where it goes next."""
+    if s < 2 or toks[s - 1].text not in ("one", "other") or not toks[s].text.endswith("s"):
+        return False
+    opener = toks[s - 2].text if toks[s - 1].text == "one" else (toks[s - 3].text if s > 2 else "")
+    if toks[s - 1].text == "other" and toks[s - 2].text != "the":
+        return False
+    after = toks[s + 1].text if s + 1 < len(toks) else ""
+    return opener in (".", ";", ",", "and", "while", "but") and (
+        after in _STOP or after in _PREPOSITIONS or not after[:1].isalpha()
+    )
 
 
 def _elided_at(toks: list[_Tok], i: int) -> int | None:
@@ -756,6 +773,10 @@ def _adverb_here(toks: list[_Tok], s: int, e: int) -> bool:
     return before not in _DETERMINERS and before not in _NUMBERS and not load_vocabulary().is_adjective(before)
 
 
+#: Shapes of the buildings whose parts "the chimney", "the porch" name once one of them is named.
+_HOUSES = ("house", "building")
+
+
 def _owned_part(toks: list[_Tok], s: int, e: int, mentions: list[_Mention]) -> bool:
     """A part word after "its"/"their" (``part_owners``: "its screens", "its counter", "the
     truck's ... its cab") when a thing named before has such a part, or in the "with" part of
@@ -769,6 +790,11 @@ def _owned_part(toks: list[_Tok], s: int, e: int, mentions: list[_Mention]) -> b
         return False
     if toks[s - 1].text in ("its", "their"):
         return any(m.category in owners or catalogue[m.category].shape in owners for m in mentions)
+    head = singular(toks[s].text)
+    if toks[s - 1].text == "the" and not any(singular(toks[m.end - 1].text) == head for m in mentions):
+        # "a cabin ... smoke rises from the chimney": the part of a building named before that has one
+        return any(catalogue[m.category].shape in _HOUSES and (m.category in owners or catalogue[m.category].shape in owners)
+                   for m in mentions)
     j = s - 1
     while j > 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
         j -= 1  # back over its describing words ("a smoking chimney")
@@ -1273,6 +1299,14 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
         toks[j].text in _DETERMINERS or (toks[j].text not in _STOP and toks[j].text[:1].isalpha())
     ):
         j -= 1
+    platform = match_phrase((head,)) in _PLATFORMS
+    if platform and toks[e - 1].text != head and not (s > 0 and toks[s - 1].text in _NUMBERS):
+        return True  # "ships unload at the docks": the harbour (one dock is a pier of the scene; "two pools" are)
+    opener = s
+    while opener > 0 and (toks[opener - 1].text in _DETERMINERS or vocabulary.is_adjective(toks[opener - 1].text)):
+        opener -= 1
+    if platform and _placed_by(toks, opener, _OUTSIDE_KINDS | {"around"}):
+        return False  # "palm trees surround a small pool": the pool is theirs to stand round
     if j >= 0 and toks[j].text in _INSIDE:
         # (in water one is in a thing of the scene: "two hippos wallow in a mud pool", not its setting)
         water = match_phrase((head,)) == "pond" and toks[j + 1].text in ("a", "an") and not _verbless_opening(toks, j)
@@ -1285,7 +1319,7 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
         # from outside, a building of the scene (_buildings)
     if _opening_setting(toks, s, e):
         return True
-    if _inner_part_of(toks, j) and (not building or j >= 3 and toks[j - 3].text in _INSIDE):
+    if _inner_part_of(toks, j) and not platform and (not building or j >= 3 and toks[j - 3].text in _INSIDE):
         return True  # ("a rug lies in the middle of the hut": in it; "at the back of the barn" may be behind it)
     if building:
         return False
@@ -1323,6 +1357,9 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     return False
 
 
+#: Places one walks out onto or stands round, things of the scene as well ("fishes from the end of a
+#: wooden dock", "a camel drinks at the edge of the pool", "palm trees surround a small pool").
+_PLATFORMS = {"pier", "pond"}
 #: Parts of a place the scene can stand in ("on the top floor of a warehouse", "at the back of the shop").
 _INNER_PARTS = {"floor", "top", "edge", "roof", "corner", "end", "back", "middle", "centre", "center", "rear",
                 "interior", "inside"}  # fmt: skip
@@ -1497,6 +1534,8 @@ def _aboard(toks: list[_Tok], s: int, e: int) -> bool:
         j -= 1
     if j < 1 or toks[j].text not in aboard or not _verbless_opening(toks, j):
         return False
+    if toks[j].text == "of" and toks[j - 1].text in _QUANTITY:
+        return False  # "Along the canal, a row of narrowboats is moored": the boats, counted out
     vocabulary = load_vocabulary()
     entry = vocabulary.match(tuple(t.text for t in toks[s:e])) or vocabulary.match((singular(toks[e - 1].text),))
     category = entry.category if entry is not None else match_phrase(tuple(t.text for t in toks[s:e]))
@@ -2348,7 +2387,8 @@ def _heap_of_stuff(toks: list[_Tok], i: int, covered: set[int]) -> tuple[int, bo
 
 
 #: Participles of clothing put down or hung up, not worn ("a coat draped over the chair").
-_LAID = {"hung", "draped", "folded", "spread", "laid", "piled", "heaped", "strewn", "thrown", "slung", "pegged"}
+_LAID = {"hung", "draped", "folded", "spread", "laid", "piled", "heaped", "strewn", "thrown", "slung", "pegged", "lined",
+         "arranged", "stacked", "scattered", "left", "drying"}  # fmt: skip
 
 
 #: Participles before "with" that put the with-thing on its holder ("a stand topped with a hat").
@@ -3111,6 +3151,9 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
                 count += _NUMBERS[toks[j - 1].text]  # "twenty-five"
             if w == "dozen" and j > 0 and toks[j - 1].text in _NUMBERS:
                 count *= _NUMBERS[toks[j - 1].text]  # "two dozen candles"
+            units = [x.text for x in toks[max(0, j - 3) : j]]
+            if len(units) == 3 and units[2] == "of" and units[1] in _QUANTITY and units[0] in _NUMBERS and units[1] != units[0]:
+                count *= _NUMBERS[units[0]]  # "two teams of five players", "three rows of four chairs": ten, twelve
             # "above one bench", "between every two benches", "the two nearest benches": of those
             # already there, if any
             m.definite = w == "one" or (j > 0 and toks[j - 1].text in ("every", "each", *_DEFINITE))

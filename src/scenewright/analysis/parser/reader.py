@@ -60,6 +60,7 @@ from scenewright.analysis.parser.nouns import (
     _is_plural,
     _mark_appositions,
     _mark_members,
+    _one_doing,
     _opens_phrase,
     _participle,
     _post_description,
@@ -532,9 +533,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             found = next((g.index for g in same if g.count > 1 or not several), same[0].index if same else None)
             # "the teacher's desk" is not one of the school desks, nor "the teacher's bench" a lab table
             owned = any(t.text.endswith("'s") for t in self.toks[max(0, m.start - 1) : m.end - 1])
-            if owned and found is not None and singular(self.groups[found].name.split()[-1]) != head:
+            owner = next((t.text for t in self.toks[max(0, m.start - 1) : m.end - 1] if t.text.endswith("'s")), "")
+            # ("twelve desks face the teacher's desk": one of its own, not one of the twelve; "the home team's
+            # bench" is one of two team benches)
+            apart = not several and found is not None and self.groups[found].count > 1
+            apart = apart and owner[:-2] not in self.groups[found].description.lower().split()
+            if owned and found is not None and (singular(self.groups[found].name.split()[-1]) != head or apart):
                 # "the captain's chair" again, after two crew seats: the captain's chair named before
-                owner = next(t.text for t in self.toks[max(0, m.start - 1) : m.end - 1] if t.text.endswith("'s"))
                 found = next(
                     (g.index for g in reversed(self.groups)
                      if g.category == m.category and singular(g.name.split()[-1]) == head
@@ -870,11 +875,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if not any(w in _FLIGHT for w in words) or any(w in _LANDING for w in words):
             return
         for g in c.main_groups:
-            group = self.groups[g]
-            winged = group.category == "bird" or any(w in _WINGED_BEASTS for w in group.name.lower().split())
             on = any(r[0] == "on" and r[1] == g for r in self.relations[since:])
-            if winged and not on:
-                group.rests = "hanging"
+            if self._winged(g) and not on:
+                self.groups[g].rests = "hanging"
+
+    def _winged(self, g: int) -> bool:
+        group = self.groups[g]
+        return group.category == "bird" or any(w in _WINGED_BEASTS for w in group.name.lower().split())
 
     def _where(self, cs: int, c: _Clause, since: int) -> None:
         """"... next to the ticket booth, where an attendant waits": what a where-clause names and
@@ -1132,15 +1139,26 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         )
         # (of the several the clause before named: "two engineers bolt a wind turbine together, one of them ...")
         several = [g for g in dict.fromkeys([*prev_subject, *self.doers]) if self.groups[g].count > 1]
-        if [t.text for t in toks[k + 1 : k + 3]] == ["of", "them"] and len(several) == 1 and placed:
+        # ("two dogs play; one chases a ball, the other sleeps under a tree": one of them each)
+        lone = (toks[k].text == "one" and _one_doing(toks, k + 1)) or (
+            [t.text for t in toks[k : k + 2]] == ["the", "other"] and _one_doing(toks, k + 2)
+        )
+        placed = placed or lone and any(
+            j in self.rel_at and self.rel_at[j].kind not in ("face to", "no relation") for j in range(k + 2, ce)
+        )
+        if lone:  # (the several named last, of the sentence before too)
+            several = next(([g] for g in reversed(self.history) if self.groups[g].count > 1 and self._living(g)), [])
+        if ([t.text for t in toks[k + 1 : k + 3]] == ["of", "them"] or lone) and len(several) == 1 and placed:
             # "ten penguins huddle on the ice, and three of them dive from a floe": those three, a
             # group of their own split off the ten (the rest stay where the ten were put)
-            g, n = several[0], 1 if toks[k].text == "one" else _NUMBERS.get(toks[k].text, 0)
+            g, n = several[0], 1 if toks[k].text == "one" or lone else _NUMBERS.get(toks[k].text, 0)
             if n and self.groups[g].count > n:
                 prev_subject = [self._copy_group(g)]
                 self.groups[g].count -= n
                 self.groups[prev_subject[0]].count = n
                 self.numbered.add(prev_subject[0])
+                if lone:
+                    c.main = list(prev_subject)  # (no noun names it: the one split off is the subject)
         if [t.text for t in toks[k : k + 3]] == ["one", "of", "them"]:
             c.one_of = list(prev_subject)
         if one_a_side and self.rel_at[k + 1].kind.startswith("flank"):
@@ -1758,9 +1776,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         body, part = self._body_part, self._part  # "on her knees": by the person, as the part says
         self._perch_part = part in load_vocabulary().carriers.get("perches", ())
         parts_each = self._parts_each
-        mutual = [t.text for t in toks[max(0, rel.start - 2) : rel.start]] in (["each", "other"], ["one", "another"])
-        if kind == "on a carrier" and mutual:
-            kind = "no relation"  # "two men face each other across the bench": the bench is between them
+        if kind == "on a carrier" and self._mutual(rel.start):
+            kind = "no relation"  # "two men face each other across the bench": the bench is between them (_place)
         if kind == "face to" and self._across_from(rel.start, end):
             kind = "opposite"  # "a sofa faces the piano from across the room", "Across the street, a kiosk faces the shelter"
         verb = self._acting_verb(rel.start) if kind == "at" else None
@@ -1910,9 +1927,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # but "three women, each with a basket at her feet": each one's own)
             other = target in ("him", "her") and bool(c.head) and all(self.groups[h].count > 1 for h in c.head)
             other = other and not self._said_before(rel.start, lambda k: toks[k].text in ("each", "every"))
-            in_hand = holding and (target not in _PERSONAL or other) and kind in (
+            # ("carries a sack over the bridge": the carrier crosses it, the sack in hand)
+            crossed = kind == "over" and isinstance(target, list) and bool(target) and self._carrier(target[0], ("perches",))
+            crossed = crossed and self.groups[target[0]].size[2] <= _PLATFORM_HEIGHT
+            in_hand = holding and (target not in _PERSONAL or other) and (kind in (
                 *_GROUND_KINDS, *_HOLDER_KINDS, "face to", "foot of", "flank"
-            )
+            ) or crossed)
             # ("senators sit on benches, with an amphora beside each bench": by their own seat, not in hand)
             seats = {r[2] for r in self.relations if r[0] == "on" and r[1] in c.head}
             if in_hand and c.wsub and isinstance(target, list) and any(t in seats for t in target):
@@ -1951,6 +1971,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             told = [toks[k].text for k in range(last_event_end, rel.start)]
             described = 0 < len(told) <= 2 and _participle(told[0]) and told[0] not in _HOLD and "," not in told
             described = described and not any(self._living(g) for g in c.wsub)
+            # "with a campfire in front of them surrounded by four logs": a passive right after the with-thing's
+            # place on the ground is the with-thing's ("with a vase on it, surrounded by chairs": the head's)
+            described = described or kind in _REVERSED and rel.start == last_event_end and toks[rel.start - 1].text != "," and (
+                c.last_kind in _GROUND_KINDS and c.last_srcs == c.wsub
+            )
             if c.wsub and (described or not closed and not c.expect_new and not in_hand and not company):
                 srcs = list(c.wsub)
                 if kind in ("on", "above", "over", "on top", "under") and target is not None:
@@ -2008,6 +2033,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 srcs = [acted] if acted is not None else list(c.last_target)
         if before >= 0 and before not in c.main and self._set_down_as(rel.start, before):
             srcs = [before]  # "sits under a lamp clamped to the bench", "with a gouge, a lamp clamped to its edge"
+        elif before >= 0 and toks[rel.start].text.endswith("ing") and self._living(before) and before not in (
+            *c.subjects, *(c.head or ()), *c.wsub
+        ):  # "chats to a cyclist leaning on the ping-pong table": the cyclist leans on it
+            srcs = [before]
         deed = c.deeds and c.deed_end in (last_event_end, rel.start)
         if kind == "on" and toks[rel.start].text == "from" and deed:
             srcs = list(c.deeds[-1][0])  # "two squirrels scold the workers from the top of a lamp post"
@@ -2110,6 +2139,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._close_with(c)
             c.head, c.wsub, c.expect_new = None, [], True
             return end
+        pair = sum(self.groups[s].count for s in srcs) == 2
+        if kind == "no relation" and pair and self._mutual(rel.start) and isinstance(p.target, list) and len(p.target) == 1:
+            for s in srcs:  # "two armchairs face each other across a rug": the rug lies between them
+                self._relate("between", p.target, s)
+            c.last_target, c.last_target_end, c.last_kind = list(p.target), end, "near"  # (a place after it is its)
+            return end
         # "pumpkins stacked in crates": put into several holders, so spread over them, not one stack
         into = end + 1 < ce and toks[end].text in ("in", "into") and end + 1 in self.by_start
         into = into and _is_plural(toks, self.by_start[end + 1])
@@ -2136,6 +2171,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             self._relate("on", srcs, tables[-1])
             c.wsub_related.update(srcs)
             return end
+        faced = c.last_kind == "face to" and c.last_target_end == rel.start and bool(c.last_target)
+        if kind.startswith("anchor ") and faced:
+            srcs = list(c.last_target)  # "desks face the teacher's desk at the front": the teacher's desk is there
         if kind in _FORMATIONS or kind.startswith("anchor ") or (p.target is None and kind in _PLACE_KINDS):
             # "three stalls stand in a row", "a sofa against the wall", "a rug in the middle of the room"
             place = _PLACE_KINDS.get(kind) or self._anchor_after(rel.end, ce) if not kind.startswith("anchor ") else kind
@@ -2321,6 +2359,11 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # horns, with a drummer on either side of them": "them" are)
             # ("each camel has a bucket in front of it": the camel, as "each" made it the owner)
             targets = self._pronoun(target, c, srcs, prefer, kind, others=c.head)
+        if p.body is not None and targets and not all(self._living(t) for t in targets):
+            # "perches on the shoulder of one of them": of the people named, not their benches
+            named = [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)]
+            living = [g for g in named if g not in srcs and self._living(g) and (self.groups[g].count > 1) == (target == "them")]
+            targets = living[:1] or targets
         below = [r[2] for r in self.relations if c.head and r[1] in c.head and r[0] == "above"]
         if below and all(self.groups[h].rests == "hanging" for h in c.head) and not any(
             self.groups[g].rests == "hanging" for g in srcs
@@ -2352,7 +2395,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if target == "it":  # ("two goats graze at its feet": one thing's, not theirs)
             candidates = [g for g in candidates if self.groups[g].count == 1]
         targets = self._part_owner(part, targets, candidates, srcs)
-        if c.head is None and target in ("it", "them") and part is None and kind in ("in", "on", "from"):
+        if c.head is None and target in ("it", "them") and part is None and p.body is None and kind in ("in", "on", "from"):
             targets = self._seat(c, srcs, prefer, rel.start, target == "them", kind == "in") or targets
         return self._peer(kind, srcs, targets, c)
 
@@ -2421,6 +2464,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return end
         return None
 
+    def _mutual(self, start: int) -> bool:
+        """Whether "each other" or "one another" comes right before ``start``."""
+        return [t.text for t in self.toks[max(0, start - 2) : start]] in (["each", "other"], ["one", "another"])
+
     def _place(self, c: _Clause, p: _Phrase) -> int:
         """Relate the sources to the targets, one per member where "each" / "every" says so, and
         keep what the clause's next phrase chains on."""
@@ -2431,7 +2478,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if kind in ("flank", "flank elliptic") and not toks[rel.start].text.startswith("flank") and not one_each:
             # (counted on "each" side: that many a side, "two players stand on each side of the net")
             apiece = any(t.text == "each" for t in toks[rel.start : rel.end])
-            self._one_a_side(srcs, apiece=apiece)  # also beside what is no object: "on each side of the elevator"
+            # ("long tables ... with benches on both sides": a pair for every table)
+            owners = self.groups[c.head[0]].count if c.head and isinstance(targets, list) and targets == c.head else 1
+            self._one_a_side(srcs, apiece=apiece, owners=owners)  # also beside no object: "on each side of the elevator"
         if kind == "end of elliptic":
             kind = "end of"  # "a long bench ...; a lady sits at one end": of the thing just named
         seats = kind == "end of" and bool(srcs and targets) and all(self._carrier(t, ("seats",)) for t in targets)
@@ -2835,6 +2884,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return True  # "queuing at its window": by its owner
             if w == "one" and (k > start + 1 or k > start and self.toks[start].text in ("each", "every")):
                 return True  # "playing at the nearest one", "sits at each one": one of a group
+            if w == "one" and k + 1 < len(self.toks) and self.toks[k + 1].text == "of":
+                return True  # "argue at one of them": one of a group named before
             if w == "each" and (k + 1 == len(self.toks) or not self.toks[k + 1].text[:1].isalpha()):
                 return True  # "two desks, with five players at each": at each of them
             # ("at three tables": a count before the noun)
@@ -2864,16 +2915,18 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 self.groups[src].count *= max(1, self.groups[target].count // unit)
                 self.pair_each.add((src, target))
 
-    def _one_a_side(self, srcs: list[int], sides: int = 2, row: bool = False, apiece: bool = False) -> None:
+    def _one_a_side(self, srcs: list[int], sides: int = 2, row: bool = False, apiece: bool = False,
+                    owners: int = 1) -> None:
         """"A lamp post on each side of the door": one thing named for both sides means two; so do
         things the text does not count ("trunks sit on either side of the table"); on every side of
         a thing, four; things that run along every side make a row on each ("arches run along
         every side": as many a side as an uncounted plural names); several counted ``apiece`` ("two
-        players on each side of the net") are that many on every side."""
+        players on each side of the net") are that many on every side; things nobody counted by
+        each of several ``owners`` are a pair for each ("tables with benches on both sides")."""
         for s in srcs:
             uncounted = s not in self.numbered and self.groups[s].count == UNCOUNTED
             if (self.groups[s].count == 1 or uncounted) and s not in self.history:
-                self.groups[s].count = sides * (UNCOUNTED if row and uncounted else 1)
+                self.groups[s].count = sides * (UNCOUNTED if row and uncounted else owners if uncounted else 1)
             elif apiece and s in self.numbered and self.groups[s].count > 1 and s not in self.history:
                 self.groups[s].count *= sides
 
@@ -2975,8 +3028,10 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         walled = any(m.group == s for k, m in self.by_start.items() if k in self.on_wall)
         # ("a parasol above her head": held up over someone)
         held_up = self._person_at(t) and load_vocabulary().carried_by_hand(src.category, src.name)
+        # ("a dragon circles above the tower": up in the air, as the clause's flying makes it afterwards)
+        flying = self._winged(s) and self._verb_before(self._target_start, lambda w: w in _FLIGHT)
         if kind == "above" and src.rests == "ground" and src.size[2] > 1.5 and not (
-            hang or walled or self._mountable(s) or held_up
+            hang or walled or self._mountable(s) or held_up or flying
         ):
             return "near"  # a tree "above" a pond cannot float: read it as near (a rack on the wall can hang)
         if kind == "leaning on" and self._person_at(s) and target.shape == "tool" and max(self.groups[t].size) <= _TOOL_SIZE:
@@ -3050,7 +3105,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 self._target_start, lambda w: _verb_stem(w, _TAKING_VERBS)
             )
             bird = self.catalogue[src.category].shape == "bird"  # ("a crow watches from the weathervane")
-            if self._living(s) and (self._carrier(t) or self._perch_part or bird) and not taken:
+            # (a likeness watches as the living do: "a marble bust watches them from a plinth")
+            watcher = self._living(s) or self.catalogue[src.category].shape == "statue"
+            if watcher and (self._carrier(t) or self._perch_part or bird) and not taken:
                 return "on"
             if kind == "from" and self._part in _ROOF_PARTS:
                 return "on"  # "a dish points at the sky from the roof of the hut": fixed up there

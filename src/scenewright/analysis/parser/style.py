@@ -6,6 +6,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.core.colours import COLOUR_RE, palette_re
 from scenewright.core.styles import load_looks, made_looks, media_heads, media_parts, named_colours, normalise
 from scenewright.scene import DEFAULT_STYLE, MAX_STYLE_CHARS
@@ -22,12 +23,14 @@ GROUND_KINDS = (
 #: up to "of" or the clause's end, say what the picture is ("drawn as a Soviet constructivist poster",
 #: "painted like an impressionist canvas", "rendered in cross-stitch", "in the style of a pulp magazine
 #: cover", "A fishing village, as a woodblock print."). Verbs that also build or
-#: film things say it only before "as" or "like" ("built as a tiny diorama", "shot as a tilt-shift photo").
+#: film things say it only before "as" or "like" ("built as a tiny diorama", "shot as a tilt-shift photo"), or
+#: "built" the material it is built from ("built from plastic toy bricks").
 _MADE_AS = re.compile(
     r"\b(?:(?P<verb>drawn|rendered|painted|printed|done|made|sketched|woven|stitched|embroidered|etched|engraved|"
     r"carved|cut|shown|depicted|illustrated|imagined|pictured|styled|crafted|modelled|modeled|sculpted|knitted|"
-    r"felted|dyed|glazed|inlaid|folded)\s+(?:\w+ly\s+)?(?:as|like|in|into|from)|"
+    r"felted|dyed|glazed|inlaid|folded)\s+(?:\w+ly\s+)?(?:as|like|in|into|from|of)|"
     r"(?P<builds>built|shot|photographed|filmed|captured|cast|moulded|molded)\s+(?:as|like)|"
+    r"(?P<built_from>built)\s+(?:\w+ly\s+)?(?:from|of|out\s+of)|"
     r"(?P<style_of>in\s+the\s+(?:style|manner)\s+of)|[,:;(]\s*(?:as|like))\s+"
     r"(?:(?:an?|the)\s+)?(?P<manner>(?:style|manner)\s+of\s+(?:(?:an?|the)\s+)?)?(?P<phrase>[^.,:;!?()]*)"
 )
@@ -95,7 +98,7 @@ def _media(text: str) -> list[_Medium]:
         words, end = _noun_phrase(m["phrase"])
         opens = re.search(r"(?:^|[,.:;!?(])\s*$", low[: m.start()]) is not None  # a clause of its own
         style_of = bool(m["style_of"] or m["manner"])
-        verb = normalise(m["verb"] or m["builds"] or "") or None
+        verb = normalise(m["verb"] or m["builds"] or m["built_from"] or "") or None
         span = (m.start("phrase"), m.start("phrase") + max(end, _medium_end(m["phrase"])))
         found.append(_Medium(words, span, verb, not verb or style_of or opens, style_of))
     for m in _AS.finditer(low):
@@ -112,6 +115,9 @@ def _media(text: str) -> list[_Medium]:
     told = any(w in _ARTICLES and before not in ("of", "from", "and") for before, w in zip(opening, opening[1:]))
     if opening and not told and (opening[-1] in media_heads() or _names_a_look(opening)) and not _PLACED.search(clause):
         found.append(_Medium(opening, (0, len(clause.split(" of ")[0]))))
+    look = _opening_look(opening)
+    if look and not _PLACED.search(clause):
+        found.append(_Medium(look, (start, start + len(" ".join(look)))))
     after = re.match(r"\s*in\s+(?:(?:an?|the)\s+)?", clause[start + end :])
     if opening and after:
         at = start + end + after.end()
@@ -122,6 +128,31 @@ def _media(text: str) -> list[_Medium]:
     # with its colours is: "printed as a two-colour silkscreen poster in hot pink and teal")
     return [f for f in found if f.words and _length(f.words) <= _MEDIUM_WORDS
             and (f.whole or not _says_colours(f.words) or _names_a_look(_without_colours(f.words)))]
+
+
+#: Nouns an opening names a whole scene or picture by, besides place words ("An origami calligraphy class",
+#: "Pointillist dots of yellow and violet").
+_SCENE_NOUNS = {"scene", "class", "lesson", "seascape", "landscape", "cityscape", "world", "diorama", "tableau", "centre",
+                "center", "show", "match", "game", "dots", "strokes", "brushstrokes"}
+
+
+#: Looks' words besides made ("-ed") and painted ("-ist") ones that an opening names its whole setting in.
+_OPENING_LOOKS = {"isometric", "origami", "dollhouse"}
+
+
+def _opening_look(opening: list[str]) -> list[str]:
+    """The look's word a text opens with when it describes the setting it names ("A knitted garden tea
+    party", "An isometric war room", "A needle-felted lantern shop"; not "A knitted scarf lies on the
+    bench" nor "A stained-glass window glows": things of the scene), else nothing."""
+    places = load_vocabulary().places
+    for look in load_looks().values():
+        for w in look.styled:
+            n = len(w.split())
+            # (a made or painted look, not a kind of building or trade: "a gothic chapel", "a textile mill")
+            made = w.endswith(("ed", "ist")) or w in _OPENING_LOOKS
+            if made and opening[:n] == w.split() and any(x in places or x in _SCENE_NOUNS for x in opening[n : n + 3]):
+                return opening[:n]
+    return []
 
 
 def _length(words: list[str]) -> int:

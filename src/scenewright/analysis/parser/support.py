@@ -360,7 +360,7 @@ def can_hold(host: ParsedObject, thing: ParsedObject, catalogue) -> bool:
         return True
     if host.category == "planter" and catalogue[thing.category].shape in _PLANT_SHAPES:
         return True  # a tree grows out of its planter, its crown far wider than the pot
-    if thing.category in _FLOOR_FURNITURE:
+    if thing.category in _FLOOR_FURNITURE and thing.rests != "surface":  # (a camping stove is the tabletop kind)
         # a stage or a pier is a floor to what stands on it ("a low round stage holds a grand piano")
         floor = load_vocabulary().carries(host.category, host.name, ("perches",)) and host.size[2] <= _PLATFORM_TOP
         return floor and thing.size[0] * thing.size[1] <= host.size[0] * host.size[1]

@@ -23,7 +23,8 @@ _APPROXIMATE = {"about", "around", "roughly", "nearly", "almost", "approximately
 _VAGUE = {"few": 3, "several": 3, "some": 3, "various": 3, "many": 5, "numerous": 5, "multiple": 3, "both": 2}
 #: Nouns that count or arrange what follows "of" ("a row of lamps", "stacks of crates").
 _QUANTITY = {
-    "pair": 2, "pairs": 4, "couple": 2, "row": 4, "rows": 6, "line": 4, "set": 3, "sets": 6, "group": 3, "cluster": 3,
+    "pair": 2, "pairs": 4, "couple": 2, "row": 4, "rows": 6, "line": 4, "set": 3, "sets": 6, "group": 3,
+    "groups": 6, "cluster": 3,
     "stack": 3, "stacks": 4, "pile": 3, "piles": 4, "heap": 3, "heaps": 4, "bunch": 3, "bunches": 4,
     "bundle": 3, "bundles": 4, "lane": 3, "lanes": 6, "queue": 4, "handful": 3, "collection": 3, "teams": 10,
     "coils": 3, "coil": 1, "ring": 4, "circle": 4, "lot": 5, "lots": 5, "plenty": 5, "dozens": 24, "hundreds": 30,
