@@ -176,8 +176,8 @@ def _line_along(layout: Layout, ids: list[str]) -> str | None:
     "four vans parked in a row along the fence"."""
     if layout.by_id[ids[0]].formation != "row":
         return None
-    near = [{r.target for r in layout.relations if r.source == i and r.relation in ("near", "in front of")} for i in ids]
-    common = set.intersection(*near)
+    by = [{r.target for r in layout.relations if r.source == i and r.relation in ("near", "in front of")} for i in ids]
+    common = set.intersection(*by)
     return next((t for t in common if load_catalogue()[layout.by_id[t].category].shape in LINES), None)
 
 
@@ -196,9 +196,9 @@ def _set_out_along(layout: Layout, objs: list[ParsedObject], line: str) -> None:
         p = layout.placed[o.id]
         out = fence.d / 2 + GAP + p.d / 2
         x, y = fence.x + ax * (offset + w / 2) + fx * out, fence.y + ay * (offset + w / 2) + fy * out
-        for i in loads[o.id]:
-            layout.placed[i].x += x - p.x if i != o.id else 0.0
-            layout.placed[i].y += y - p.y if i != o.id else 0.0
+        for i in loads[o.id][1:]:  # (what rests on it; the first is the member itself)
+            layout.placed[i].x += x - p.x
+            layout.placed[i].y += y - p.y
         p.x, p.y = x, y
         offset += w + GAP
     unit = layout.unit_of[objs[0].id]
@@ -267,9 +267,9 @@ def _set_out_in_unit(layout: Layout, objs: list[ParsedObject], target: str | Non
             t = layout.placed[target]
             p.turn(round(yaw_towards((p.x, p.y), (t.x, t.y)), 3))
         for f in followers[o.id]:
-            way = next((_AWAY[r.relation] for r in layout.relations if (r.source, r.target) == (f, o.id) and r.relation in _AWAY),
-                       (layout.placed[f].x - p.x, layout.placed[f].y - p.y))
-            _step_clear(layout.placed[f], p, way)
+            stated = (_AWAY[r.relation] for r in layout.relations
+                      if (r.source, r.target) == (f, o.id) and r.relation in _AWAY)
+            _step_clear(layout.placed[f], p, next(stated, (layout.placed[f].x - p.x, layout.placed[f].y - p.y)))
     unit = layout.unit_of[ids[0]]
     standing = [i for i in moved if layout.placed[i].h >= 0.1]
     others = [layout.placed[i] for i in unit.ids if i not in moved and layout.placed[i].h >= 0.1]

@@ -128,7 +128,8 @@ def place_related(
         of S), when its own relations cannot place it; False if there is none."""
         for r in incoming[obj.id]:
             if r.source in placed and r.relation in INVERSE:
-                placed[obj.id] = beside(obj, placed[r.source], r.source, INVERSE[r.relation], False, room.get(r.source, 0.0))
+                side = INVERSE[r.relation]
+                placed[obj.id] = beside(obj, placed[r.source], r.source, side, False, room.get(r.source, 0.0))
                 return True
         return False
 

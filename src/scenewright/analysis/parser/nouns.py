@@ -793,8 +793,8 @@ def _owned_part(toks: list[_Tok], s: int, e: int, mentions: list[_Mention]) -> b
     head = singular(toks[s].text)
     if toks[s - 1].text == "the" and not any(singular(toks[m.end - 1].text) == head for m in mentions):
         # "a cabin ... smoke rises from the chimney": the part of a building named before that has one
-        return any(catalogue[m.category].shape in _HOUSES and (m.category in owners or catalogue[m.category].shape in owners)
-                   for m in mentions)
+        houses = [m for m in mentions if catalogue[m.category].shape in _HOUSES]
+        return any(m.category in owners or catalogue[m.category].shape in owners for m in houses)
     j = s - 1
     while j > 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
         j -= 1  # back over its describing words ("a smoking chimney")
@@ -2387,8 +2387,8 @@ def _heap_of_stuff(toks: list[_Tok], i: int, covered: set[int]) -> tuple[int, bo
 
 
 #: Participles of clothing put down or hung up, not worn ("a coat draped over the chair").
-_LAID = {"hung", "draped", "folded", "spread", "laid", "piled", "heaped", "strewn", "thrown", "slung", "pegged", "lined",
-         "arranged", "stacked", "scattered", "left", "drying"}  # fmt: skip
+_LAID = {"hung", "draped", "folded", "spread", "laid", "piled", "heaped", "strewn", "thrown", "slung", "pegged",
+         "lined", "arranged", "stacked", "scattered", "left", "drying"}  # fmt: skip
 
 
 #: Participles before "with" that put the with-thing on its holder ("a stand topped with a hat").
@@ -3152,7 +3152,8 @@ def _read_count(toks: list[_Tok], m: _Mention, prev_end: int) -> None:
             if w == "dozen" and j > 0 and toks[j - 1].text in _NUMBERS:
                 count *= _NUMBERS[toks[j - 1].text]  # "two dozen candles"
             units = [x.text for x in toks[max(0, j - 3) : j]]
-            if len(units) == 3 and units[2] == "of" and units[1] in _QUANTITY and units[0] in _NUMBERS and units[1] != units[0]:
+            grouped = len(units) == 3 and units[2] == "of" and units[1] in _QUANTITY and units[0] in _NUMBERS
+            if grouped and units[1] != units[0]:
                 count *= _NUMBERS[units[0]]  # "two teams of five players", "three rows of four chairs": ten, twelve
             # "above one bench", "between every two benches", "the two nearest benches": of those
             # already there, if any

@@ -1928,7 +1928,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             other = target in ("him", "her") and bool(c.head) and all(self.groups[h].count > 1 for h in c.head)
             other = other and not self._said_before(rel.start, lambda k: toks[k].text in ("each", "every"))
             # ("carries a sack over the bridge": the carrier crosses it, the sack in hand)
-            crossed = kind == "over" and isinstance(target, list) and bool(target) and self._carrier(target[0], ("perches",))
+            crossed = kind == "over" and isinstance(target, list) and bool(target)
+            crossed = crossed and self._carrier(target[0], ("perches",))
             crossed = crossed and self.groups[target[0]].size[2] <= _PLATFORM_HEIGHT
             in_hand = holding and (target not in _PERSONAL or other) and (kind in (
                 *_GROUND_KINDS, *_HOLDER_KINDS, "face to", "foot of", "flank"
@@ -1973,9 +1974,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             described = described and not any(self._living(g) for g in c.wsub)
             # "with a campfire in front of them surrounded by four logs": a passive right after the with-thing's
             # place on the ground is the with-thing's ("with a vase on it, surrounded by chairs": the head's)
-            described = described or kind in _REVERSED and rel.start == last_event_end and toks[rel.start - 1].text != "," and (
-                c.last_kind in _GROUND_KINDS and c.last_srcs == c.wsub
-            )
+            passive = kind in _REVERSED and rel.start == last_event_end and toks[rel.start - 1].text != ","
+            described = described or passive and c.last_kind in _GROUND_KINDS and c.last_srcs == c.wsub
             if c.wsub and (described or not closed and not c.expect_new and not in_hand and not company):
                 srcs = list(c.wsub)
                 if kind in ("on", "above", "over", "on top", "under") and target is not None:
@@ -2140,7 +2140,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             c.head, c.wsub, c.expect_new = None, [], True
             return end
         pair = sum(self.groups[s].count for s in srcs) == 2
-        if kind == "no relation" and pair and self._mutual(rel.start) and isinstance(p.target, list) and len(p.target) == 1:
+        across = pair and isinstance(p.target, list) and len(p.target) == 1
+        if kind == "no relation" and across and self._mutual(rel.start):
             for s in srcs:  # "two armchairs face each other across a rug": the rug lies between them
                 self._relate("between", p.target, s)
             c.last_target, c.last_target_end, c.last_kind = list(p.target), end, "near"  # (a place after it is its)
@@ -2362,8 +2363,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if p.body is not None and targets and not all(self._living(t) for t in targets):
             # "perches on the shoulder of one of them": of the people named, not their benches
             named = [*c.last_target, *reversed(c.groups), *prev_subject, *reversed(self.history)]
-            living = [g for g in named if g not in srcs and self._living(g) and (self.groups[g].count > 1) == (target == "them")]
-            targets = living[:1] or targets
+            living = [g for g in named if g not in srcs and self._living(g)]
+            targets = [g for g in living if (self.groups[g].count > 1) == (target == "them")][:1] or targets
         below = [r[2] for r in self.relations if c.head and r[1] in c.head and r[0] == "above"]
         if below and all(self.groups[h].rests == "hanging" for h in c.head) and not any(
             self.groups[g].rests == "hanging" for g in srcs
@@ -2395,7 +2396,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if target == "it":  # ("two goats graze at its feet": one thing's, not theirs)
             candidates = [g for g in candidates if self.groups[g].count == 1]
         targets = self._part_owner(part, targets, candidates, srcs)
-        if c.head is None and target in ("it", "them") and part is None and p.body is None and kind in ("in", "on", "from"):
+        placing = kind in ("in", "on", "from") and part is None and p.body is None
+        if c.head is None and target in ("it", "them") and placing:
             targets = self._seat(c, srcs, prefer, rel.start, target == "them", kind == "in") or targets
         return self._peer(kind, srcs, targets, c)
 
@@ -2480,7 +2482,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             apiece = any(t.text == "each" for t in toks[rel.start : rel.end])
             # ("long tables ... with benches on both sides": a pair for every table)
             owners = self.groups[c.head[0]].count if c.head and isinstance(targets, list) and targets == c.head else 1
-            self._one_a_side(srcs, apiece=apiece, owners=owners)  # also beside no object: "on each side of the elevator"
+            self._one_a_side(srcs, apiece=apiece, owners=owners)  # also by no object: "on each side of the elevator"
         if kind == "end of elliptic":
             kind = "end of"  # "a long bench ...; a lady sits at one end": of the thing just named
         seats = kind == "end of" and bool(srcs and targets) and all(self._carrier(t, ("seats",)) for t in targets)

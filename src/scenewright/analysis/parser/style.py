@@ -132,8 +132,8 @@ def _media(text: str) -> list[_Medium]:
 
 #: Nouns an opening names a whole scene or picture by, besides place words ("An origami calligraphy class",
 #: "Pointillist dots of yellow and violet").
-_SCENE_NOUNS = {"scene", "class", "lesson", "seascape", "landscape", "cityscape", "world", "diorama", "tableau", "centre",
-                "center", "show", "match", "game", "dots", "strokes", "brushstrokes"}
+_SCENE_NOUNS = {"scene", "class", "lesson", "seascape", "landscape", "cityscape", "world", "diorama", "tableau",
+                "centre", "center", "show", "match", "game", "dots", "strokes", "brushstrokes"}  # fmt: skip
 
 
 #: Looks' words besides made ("-ed") and painted ("-ist") ones that an opening names its whole setting in.
