@@ -584,7 +584,7 @@ def _one_doing(toks: list[_Tok], s: int) -> bool:
     """The word at ``s`` is the verb of a clause opened by "one" or "the other" standing for one of the
     several named before ("one chases a ball", "the other sleeps under a tree"): a "-s" form right
     after it, with what it acts on or where it goes next."""
-    if s < 2 or toks[s - 1].text not in ("one", "other") or not toks[s].text.endswith("s"):
+    if s < 2 or s >= len(toks) or toks[s - 1].text not in ("one", "other") or not toks[s].text.endswith("s"):
         return False
     opener = toks[s - 2].text if toks[s - 1].text == "one" else (toks[s - 3].text if s > 2 else "")
     if toks[s - 1].text == "other" and toks[s - 2].text != "the":

@@ -1140,8 +1140,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # (of the several the clause before named: "two engineers bolt a wind turbine together, one of them ...")
         several = [g for g in dict.fromkeys([*prev_subject, *self.doers]) if self.groups[g].count > 1]
         # ("two dogs play; one chases a ball, the other sleeps under a tree": one of them each)
-        lone = (toks[k].text == "one" and _one_doing(toks, k + 1)) or (
-            [t.text for t in toks[k : k + 2]] == ["the", "other"] and _one_doing(toks, k + 2)
+        lone = k < ce and (
+            toks[k].text == "one" and _one_doing(toks, k + 1)
+            or [t.text for t in toks[k : k + 2]] == ["the", "other"] and _one_doing(toks, k + 2)
         )
         placed = placed or lone and any(
             j in self.rel_at and self.rel_at[j].kind not in ("face to", "no relation") for j in range(k + 2, ce)
