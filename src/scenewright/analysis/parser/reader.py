@@ -880,6 +880,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 self.groups[g].rests = "hanging"
 
     def _winged(self, g: int) -> bool:
+        """A bird, or a beast the catalogue draws four-legged that has wings (a dragon, a griffin)."""
         group = self.groups[g]
         return group.category == "bird" or any(w in _WINGED_BEASTS for w in group.name.lower().split())
 
