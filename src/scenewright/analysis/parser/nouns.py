@@ -475,9 +475,7 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         ):  # "an abandoned factory floor with a conveyor belt"
             places.append(" ".join(words))
             continue
-        j = s
-        while j > 0 and (toks[j - 1].text in _DETERMINERS or vocabulary.is_adjective(toks[j - 1].text)):
-            j -= 1
+        j = _described_from(toks, s)
         if cat in _LIVING and singular(words[-1]) in vocabulary.places and _placed_by(toks, j):
             # "three rigs are parked beside a wooden diner": the building, not one who dines
             building = vocabulary.building(tuple(words))
@@ -1302,10 +1300,7 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     platform = match_phrase((head,)) in _PLATFORMS
     if platform and toks[e - 1].text != head and not (s > 0 and toks[s - 1].text in _NUMBERS):
         return True  # "ships unload at the docks": the harbour (one dock is a pier of the scene; "two pools" are)
-    opener = s
-    while opener > 0 and (toks[opener - 1].text in _DETERMINERS or vocabulary.is_adjective(toks[opener - 1].text)):
-        opener -= 1
-    if platform and _placed_by(toks, opener, _OUTSIDE_KINDS | {"around"}):
+    if platform and _placed_by(toks, _described_from(toks, s), _OUTSIDE_KINDS | {"around"}):
         return False  # "palm trees surround a small pool": the pool is theirs to stand round
     if j >= 0 and toks[j].text in _INSIDE:
         # (in water one is in a thing of the scene: "two hippos wallow in a mud pool", not its setting)
@@ -2692,6 +2687,14 @@ def _dressed(toks: list[_Tok], k: int) -> bool:
         if not t.text[:1].isalpha() or t.text in _STOP and t.text not in _DETERMINERS:
             return False
     return False
+
+
+def _described_from(toks: list[_Tok], s: int) -> int:
+    """Where the words before ``s`` that only open or describe its noun begin ("[a wooden] diner",
+    "[a small] pool"): what a relation phrase right before places."""
+    while s > 0 and (toks[s - 1].text in _DETERMINERS or load_vocabulary().is_adjective(toks[s - 1].text)):
+        s -= 1
+    return s
 
 
 def _phrase_opener(toks: list[_Tok], head: int) -> int:

@@ -131,9 +131,9 @@ class _References:
                 w == "her" and j + 1 in self.by_start
             ):  # "beside her dog": a possessive, the dog is the target
                 # ("on the shoulder of one of them": a body part's, as "on their shoulders")
-                one_of = [t.text for t in toks[max(pos, j - 2) : j]] == ["one", "of"]
-                self._body_part = next((load_vocabulary().body_parts[t.text] for t in toks[pos:j]
-                                        if t.text in load_vocabulary().body_parts and one_of), None)
+                parts = load_vocabulary().body_parts
+                if [t.text for t in toks[max(pos, j - 2) : j]] == ["one", "of"]:
+                    self._body_part = next((parts[t.text] for t in toks[pos:j] if t.text in parts), None)
                 return w, j + 1
             if w in ("each", "one") and j + 1 < ce and toks[j + 1].text in ("other", "another"):
                 return "each other", j + 2
