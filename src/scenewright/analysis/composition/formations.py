@@ -189,7 +189,7 @@ def _set_out_along(layout: Layout, objs: list[ParsedObject], line: str) -> None:
     ax, ay = -fy, fx  # along the fence, left to right as seen from its front
     loads = {o.id: layout.with_load(o.id) for o in objs}
     moved = [i for o in objs for i in loads[o.id]]
-    before = {i: (layout.placed[i].x, layout.placed[i].y) for i in moved}
+    before = _poses(layout, moved)
     widths = [layout.placed[o.id].w for o in objs]
     offset = -(sum(widths) + GAP * (len(objs) - 1)) / 2
     for o, w in zip(objs, widths):
@@ -201,13 +201,7 @@ def _set_out_along(layout: Layout, objs: list[ParsedObject], line: str) -> None:
             layout.placed[i].y += y - p.y
         p.x, p.y = x, y
         offset += w + GAP
-    unit = layout.unit_of[objs[0].id]
-    standing = [i for i in moved if layout.placed[i].h >= 0.1]
-    others = [layout.placed[i] for i in unit.ids if i not in moved and layout.placed[i].h >= 0.1]
-    clear = not any(layout.placed[a].overlaps(q) for a in standing for q in others)
-    if not (clear and layout.relations_hold(set(moved))):
-        for i, (x, y) in before.items():
-            layout.placed[i].x, layout.placed[i].y = x, y
+    _keep_if_clear(layout, layout.unit_of[objs[0].id], before)
 
 
 def _common_target(relations: list[ParsedRelation], ids: list[str]) -> str | None:
@@ -237,7 +231,7 @@ def _set_out_in_unit(layout: Layout, objs: list[ParsedObject], target: str | Non
     ids = [o.id for o in objs]
     followers = {i: _followers(layout, i, ids, target) for i in ids}
     moved = [*ids, *(f for i in ids for f in followers[i])]
-    before = {i: (layout.placed[i].x, layout.placed[i].y, layout.placed[i].yaw) for i in moved}
+    before = _poses(layout, moved)
     cx = sum(layout.placed[i].x for i in ids) / len(ids)
     cy = sum(layout.placed[i].y for i in ids) / len(ids)
     # a member takes room for what goes with it ("each with a chair behind it")
@@ -270,13 +264,22 @@ def _set_out_in_unit(layout: Layout, objs: list[ParsedObject], target: str | Non
             stated = (_AWAY[r.relation] for r in layout.relations
                       if (r.source, r.target) == (f, o.id) and r.relation in _AWAY)
             _step_clear(layout.placed[f], p, next(stated, (layout.placed[f].x - p.x, layout.placed[f].y - p.y)))
-    unit = layout.unit_of[ids[0]]
-    standing = [i for i in moved if layout.placed[i].h >= 0.1]
-    others = [layout.placed[i] for i in unit.ids if i not in moved and layout.placed[i].h >= 0.1]
+    _keep_if_clear(layout, layout.unit_of[ids[0]], before)
+
+
+def _poses(layout: Layout, ids: list[str]) -> dict[str, tuple[float, float, float]]:
+    return {i: (layout.placed[i].x, layout.placed[i].y, layout.placed[i].yaw) for i in ids}
+
+
+def _keep_if_clear(layout: Layout, unit: Unit, before: dict[str, tuple[float, float, float]]) -> None:
+    """Keep the new poses of the things ``before`` holds the old ones of only where none of them
+    overlaps another or the rest of ``unit``, and every relation touching them holds; else put them back."""
+    standing = [i for i in before if layout.placed[i].h >= 0.1]
+    others = [layout.placed[i] for i in unit.ids if i not in before and layout.placed[i].h >= 0.1]
     clear = all(not layout.placed[a].overlaps(q) for a in standing for q in others) and all(
         not layout.placed[a].overlaps(layout.placed[b]) for k, a in enumerate(standing) for b in standing[k + 1 :]
     )
-    if not (clear and layout.relations_hold(set(moved))):
+    if not (clear and layout.relations_hold(set(before))):
         for i, (x, y, yaw) in before.items():
             layout.placed[i].x, layout.placed[i].y = x, y
             layout.placed[i].turn(yaw)
