@@ -35,3 +35,19 @@ def test_a_seat_keeps_its_own_placing():
     rels = [ParsedRelation("clerk_1", "on", "stool_1"), ParsedRelation("clerk_1", "left of", "desk_1")]
     placed = place_related([desk, clerk, stool], rels, far_away)
     assert (placed["stool_1"].x, placed["stool_1"].y) == (40.0, 40.0)
+
+
+def test_a_long_seat_takes_the_side_all_its_sitters_share():
+    """"Eight children sit on benches on both sides of the table": each bench goes to its sitters'
+    side of the table, which turns its long sides to them (the children were on benches metres off)."""
+    table = obj("table_1", "table", (1.8, 0.9, 0.8))
+    kids = [obj(f"child_{i}", "figure", (0.4, 0.3, 0.7)) for i in range(1, 5)]
+    benches = [obj("bench_1", "bench", (1.6, 0.6, 0.8)), obj("bench_2", "bench", (1.6, 0.6, 0.8))]
+    rels = []
+    for i, kid in enumerate(kids):
+        rels += [ParsedRelation(kid.id, "on", f"bench_{i % 2 + 1}"),
+                 ParsedRelation(kid.id, ("left of", "right of")[i % 2], "table_1")]
+    placed = place_related([table, *kids, *benches], rels, far_away)
+    t, left, right = placed["table_1"], placed["bench_1"], placed["bench_2"]
+    assert t.yaw % 180 == 90  # its long sides face the benches
+    assert left.x < t.x < right.x and abs(left.y - t.y) < 1.0 and abs(right.y - t.y) < 1.0

@@ -359,6 +359,14 @@ def test_style(text, style):
         ("A plate of spaghetti and two forks.", "realistic"),
         ("A textile mill with four looms.", "realistic"),  # a look's name that names things too
         ("A fox den done as a woven textile in rust and cream.", "textile in rust and cream"),
+        # looks named by what the picture is made as
+        ("A halfling kitchen painted as a paint-by-numbers kit.", "poster"),
+        ("A tearoom painted in the style of matryoshka nesting dolls.", "ceramic"),
+        ("A mail rocket launch drawn as a vintage postage stamp.", "engraving"),
+        ("A roguelike inn drawn in ASCII art.", "pixel art"),
+        ("A walled kitchen garden drawn as a botanical illustration.", "watercolour"),
+        ("A teddy bears' picnic modelled in fondant, like a cake topper.", "claymation"),
+        ("A baker ices a fondant cake beside a matryoshka doll.", "realistic"),  # (things, not the picture)
     ],
 )
 def test_style_of_a_picture_from_its_medium(text, style):

@@ -321,3 +321,52 @@ def test_groups_of_a_count_multiply_it():
     assert count("Three rows of four chairs face the stage.", "chair") == 12
     assert count("Two groups of three children play in the sand.", "figure") == 6
     assert count("A team of four firefighters sprays water on the barn.", "figure") == 4
+
+
+def test_sitters_on_uncounted_benches_share_them():
+    """A bench seats as many side by side as its length holds; a stool or a ring carries one."""
+    got = counts("Eight children sit on benches on both sides of the table.")
+    assert got["child"] == 8 and got["bench"] == 2, got
+    assert counts("Four astronauts sit on stools.")["stool"] == 4
+    assert counts("A dozen swimmers bob on inflatable rings in the pool.")["ring"] == 12
+
+
+def test_a_stack_said_once_for_each_thing_is_a_stack_each():
+    got = parse_scene("Two cannons stand on the deck, each with a stack of cannonballs beside it.")
+    feet = {r.target for r in got.relations if r.source.startswith("cannonball") and r.relation == "side of"}
+    assert feet == {"cannon_1", "cannon_2"}
+
+
+def test_one_doing_something_to_each_one_is_one_at_each():
+    got = counts("Six hydraulic presses stand in two rows of three, and a worker in ear defenders tends each one.")
+    assert got["worker"] == 6 and got["press"] == 6 and got["defenders"] == 0, got
+
+
+def test_a_people_group_of_a_kind_counts_its_people():
+    got = counts("A pipe band of six pipers and two drummers marches past.")
+    assert got["piper"] == 6 and got["drummer"] == 2 and got["band"] == 0, got
+    assert counts("A family of four shelters under the awning.")["shelter"] == 0  # (their verb)
+
+
+def test_a_host_named_in_a_fronted_phrase_before_each_is_not_one_each():
+    got = parse_scene("Three bears sit on a blanket. On the blanket in front of each bear is a little plate.")
+    assert Counter(o.category for o in got.objects)["picnic_blanket"] == 1
+    rel = {(r.source, r.relation, r.target) for r in got.relations}
+    assert {("plate_1", "in front of", "bear_1"), ("plate_3", "in front of", "bear_3")} <= rel
+
+
+@pytest.mark.parametrize("text", [
+    "On either side of the gate stands a stone lion.",
+    "On either side of the temple door stands a stone lion, and a monk sweeps the steps between them.",
+])
+def test_a_fronted_either_side_gives_one_a_side(text):
+    got = parse_scene(text)
+    assert counts(text)["lion"] == 2
+    if "monk" in text:
+        rel = {(r.source, r.relation, r.target) for r in got.relations}
+        assert {("monk_1", "right of", "stone_lion_1"), ("monk_1", "left of", "stone_lion_2")} <= rel
+
+
+def test_swords_crossed_are_no_ground_to_stand_on():
+    assert not any(r.relation == "on" and r.target.startswith("sword")
+                   for r in parse_scene("Two knights cross swords on the drawbridge.").relations)

@@ -780,3 +780,30 @@ def test_a_dog_on_a_lead_keeps_by_its_owner_with_no_lead_drawn():
     parsed = parse_scene("Five owners wait by the rope fence, each with a dog on a lead.")
     assert "lead" not in {o.name for o in parsed.objects}
     assert ("dog_1", "near", "owner_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
+
+
+def test_a_toy_animal_is_held_as_a_thing_not_stood_by_as_an_animal():
+    for text in ("A girl kneels on a gym mat, hugging a toy penguin.", "A girl hugs a toy penguin."):
+        rel = {(r.source, r.relation, r.target) for r in parse_scene(text).relations}
+        assert ("toy_penguin_1", "on", "girl_1") in rel, text
+    walk = {(r.source, r.relation, r.target) for r in parse_scene("A man walks his dog.").relations}
+    assert ("dog_1", "near", "man_1") in walk  # (a live one keeps by him)
+
+
+def test_a_tool_after_work_on_a_thing_is_the_workers():
+    rel = {(r.source, r.relation, r.target) for r in parse_scene(
+        "Grandmother stands at the stove, stirring a pot on it with a long spoon.").relations}
+    assert {("spoon_1", "on", "grandmother_1"), ("pot_1", "on", "stove_1")} <= rel
+    desk = {(r.source, r.relation, r.target) for r in parse_scene("A clerk sits at a desk with a lamp.").relations}
+    assert ("table_lamp_1", "on", "desk_1") in desk  # (no work done with it: the desk's)
+
+
+def test_a_plural_persons_verb_after_a_place_is_no_kind_of_it():
+    names = {o.name for o in parse_scene("Four tourists on a sandbar laugh and hold up their phones.").objects}
+    assert not any("laugh" in n for n in names)
+
+
+def test_what_one_feeds_an_animal_is_in_hand():
+    rel = {(r.source, r.relation, r.target) for r in parse_scene(
+        "A donkey stands in front of the cart while a little girl feeds it a carrot.").relations}
+    assert {("carrot_1", "on", "girl_1"), ("girl_1", "near", "horse_1")} <= rel

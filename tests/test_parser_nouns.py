@@ -1961,3 +1961,61 @@ def test_a_thing_renamed_as_a_thing_between_commas_is_one_thing():
     text = "The reactor, a huge glowing sphere, hangs from the ceiling, and four coolant tanks stand around it."
     assert "sphere" not in names(text) and "reactor" in names(text)
     assert "table" in names("The table, a long oak slab, stands by the wall.")
+
+
+def test_a_participle_after_a_noun_puts_it_somewhere_no_kind_of_set():
+    """"An anvil set on a tree stump": "set" is the anvil's participle (the anvil was lost as the
+    kind of a "set"); a stump is stump-sized, not a two-metre log."""
+    got = parse_scene("A blacksmith hammers a sword on an anvil set on a tree stump.")
+    by = {o.name: o for o in got.objects}
+    assert "anvil" in by and "tree stump" in by
+    assert ("anvil_1", "on", by["tree stump"].id) in {(r.source, r.relation, r.target) for r in got.relations}
+    assert max(by["tree stump"].size[:2]) < 1.0
+    assert "drum set" in names("A drummer plays a drum set on the stage.")  # (still a thing of its own)
+
+
+@pytest.mark.parametrize("text, word, many", [
+    ("A long table with a big cake in the middle and cupcakes around it.", "cupcake", 3),
+    ("A tray holds a teapot and muffins.", "muffin", 3),
+    ("Bottles and cupcakes litter the floor.", "cupcake", 3),  # (the verb of both follows)
+    ("A mother holds a sleeping baby and argues with a supervisor.", "argue", 0),
+    ("A green dog has slipped its lead and runs across the floor.", "run", 0),
+    ("A teacher stands by the whiteboard and points at a map.", "point", 0),  # (her second verb)
+    ("A chandelier made of cogs and gears hangs from the ceiling.", "gear", 0),
+])
+def test_a_bare_plural_joined_to_a_named_thing_is_more_things(text, word, many):
+    assert sum(singular(o.name.split()[-1]) == word for o in parse_scene(text).objects) == many
+
+
+def test_things_with_a_table_in_its_middle_and_around_that_stand_on_it():
+    got = parse_scene("A table with a cake in the middle and cupcakes around it.")
+    rel = {(r.source.rsplit("_", 1)[0], r.relation, r.target) for r in got.relations}
+    assert ("cake", "on", "table_1") in rel and ("cupcake", "on", "table_1") in rel
+    assert ("cupcake", "left of", "cake_1") in rel  # around the cake, not round the table on the grass
+
+
+def test_a_wall_that_runs_along_ground_is_a_thing_of_its_own():
+    """Outdoors, "a stone wall runs along the field" is a long low wall (it was lost as the room's)."""
+    (wall,) = parse_scene("A stone wall runs along the field.").objects
+    assert wall.category == "fence" and wall.size[0] > 2 * wall.size[2]
+
+
+def test_a_smiths_forge_that_opens_the_text_is_the_setting():
+    got = parse_scene("A pixel-art blacksmith's forge. A blacksmith hammers a sword on an anvil beside the furnace.")
+    assert got.indoor and "forge" not in {o.name for o in got.objects}
+    assert "forge" in names("The blacksmith's forge glows in the corner of the workshop.")
+
+
+def test_bedding_on_a_bed_is_a_thing_on_it():
+    rel = {(r.source, r.relation, r.target) for r in parse_scene(
+        "A brass bed stands under the skylight, with a patchwork quilt on it.").relations}
+    assert ("patchwork_quilt_1", "on", "bed_1") in rel
+    # (a look made like one is none: "stitched together like a patchwork quilt")
+    assert not parse_scene("A village pancake race, stitched together like a patchwork quilt from scraps.").objects
+
+
+def test_someone_whose_body_part_is_worked_on_is_there():
+    got = parse_scene("A barber trims a man's beard.")
+    assert {o.name for o in got.objects} == {"barber", "man"}
+    assert ("barber_1", "near", "man_1") in {(r.source, r.relation, r.target) for r in got.relations}
+    assert "dog" not in names("A dog's bowl sits by the door.")  # (a thing's owner is no part's)

@@ -1994,3 +1994,64 @@ def test_one_and_the_other_are_one_each_of_the_several_named_before():
     assert [o.category for o in parsed.objects].count("dog") == 2
     assert not any(o.name == "chase" for o in parsed.objects)
     assert ("dog_2", "near", "tree_1") in {(r.source, r.relation, r.target) for r in parsed.relations}
+
+
+def test_contents_of_a_with_thing_are_no_verb_that_ends_the_with_part():
+    """"each with a lace cloth and a bowl of sugar cubes on it": "cubes" is the bowl's contents, so
+    both stand on the table (the cloth was left on the floor); "stands" after "a box of tools" is a verb."""
+    got = parse_scene("Four round tables fill the room, each with a lace cloth and a bowl of sugar cubes on it.")
+    on = {(r.source, r.target) for r in got.relations if r.relation == "on"}
+    assert ("lace_cloth_1", "round_table_1") in on and ("bowl_4", "round_table_4") in on
+    cart = {(r.source, r.relation) for r in parse_scene("A cart with a box of tools stands by the gate.").relations}
+    assert ("cart_1", "near") in cart
+
+
+def test_a_seat_that_seats_people_has_them_on_it():
+    on = {(r.source, r.target) for r in parse_scene("A long bench seats four monks.").relations if r.relation == "on"}
+    assert {("monk_1", "bench_1"), ("monk_4", "bench_1")} <= on
+
+
+def test_from_a_place_to_the_left_of_another_is_on_it_not_between_them():
+    got = parse_scene("Three officials in top hats watch from a platform to the left of the tower.")
+    rel = {(r.source, r.relation, r.target) for r in got.relations}
+    assert {("official_1", "on", "platform_1"), ("platform_1", "left of", "tower_1")} <= rel
+    assert ("official_1", "left of", "tower_1") not in rel  # (not between the platform and the tower)
+    ore = {(r.source, r.relation, r.target) for r in parse_scene("A conveyor belt carries ore from the silo to a "
+                                                                  "refinery.").relations}
+    assert {("conveyor_belt_1", "right of", "silo_1"), ("conveyor_belt_1", "left of", "refinery_1")} <= ore  # (a span)
+
+
+def test_players_on_a_rug_are_on_it_and_a_grindstone_is_worked_standing_by():
+    rel = {(r.source, r.relation, r.target) for r in parse_scene("Two musicians play lutes on a rug.").relations}
+    assert ("musician_1", "on", "rug_1") in rel
+    stone = {(r.source, r.relation) for r in parse_scene("A smith sharpens a sword on a grindstone.").relations}
+    assert ("smith_1", "near") in stone and ("smith_1", "on") not in stone
+
+
+@pytest.mark.parametrize("text, lost", [
+    ("Three couches stand around a bronze table in a horseshoe.", "horseshoe"),
+    ("A guest in a toga reclines on one elbow.", "elbow"),
+    ("A knight kneels on one knee before the queen.", "knee"),
+])
+def test_a_shape_or_a_pose_is_no_thing(text, lost):
+    assert not any(lost in o.name for o in parse_scene(text).objects)
+
+
+def test_a_fronted_list_ending_in_a_box_of_something_shares_its_place():
+    on = {(r.source, r.target) for r in parse_scene(
+        "On the workbench lie a hammer, a chisel and a box of nails.").relations if r.relation == "on"}
+    assert {("hammer_1", "lab_bench_1"), ("chisel_1", "lab_bench_1"), ("crate_1", "lab_bench_1")} <= on
+
+
+def test_a_body_part_with_its_belongs_to_what_has_one():
+    rel = {(r.source, r.relation, r.target) for r in parse_scene(
+        "A scarecrow guards the vegetable patch, and two crows sit on its outstretched arms.").relations}
+    assert ("crow_1", "on", "scarecrow_1") in rel and ("crow_1", "on", "flower_bed_1") not in rel
+
+
+def test_what_a_setting_holds_keeps_its_own_place():
+    """A setting has no hands: "a museum gallery displays a skeleton on a plinth" has the skeleton on
+    the plinth (the phrase was read as held and dropped)."""
+    rel = {(r.source, r.relation, r.target) for r in parse_scene(
+        "A museum gallery displays a dinosaur skeleton on a plinth.").relations}
+    assert ("dinosaur_skeleton_1", "on", "pedestal_1") in rel

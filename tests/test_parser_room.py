@@ -333,3 +333,17 @@ def test_a_standing_board_fixed_to_a_wall_hangs_flat():
     assert board.size[1] == WALL_SHEET_DEPTH and board.size[0] > board.size[2] and board.rests == "hanging"
     standing = next(o for o in parse_scene("A chalkboard menu stands by the door of the cafe.").objects)
     assert standing.size[1] > WALL_SHEET_DEPTH  # an A-frame on the pavement keeps its legs
+
+
+def test_a_plural_right_after_a_named_thing_is_its_verb_not_the_things_on_the_wall():
+    """"A blacksmith hammers a sword ... Tongs and hammers hang on the wall": the first "hammers"
+    is the smith's verb, so the hammers are found where they hang (they lay on the floor)."""
+    parsed = parse_scene("A forge. A blacksmith hammers a sword on an anvil. Tongs and hammers hang on the wall.")
+    on_wall = {r.source for r in wall_phrases(parsed) if r.relation == "on wall"}
+    assert {"tongs_1", "hammer_1"} <= on_wall
+
+
+def test_things_hung_from_the_beams_or_rafters_hang_from_the_ceiling_with_their_fellows():
+    parsed = parse_scene("A halfling kitchen. Onions and a ham hang from the low beams.")
+    hung = {r.source for r in wall_phrases(parsed) if r.relation == "on ceiling"}
+    assert {"onion_1", "onion_3", "ham_1"} <= hung

@@ -179,3 +179,10 @@ def test_fish_nobody_places_swim_in_the_pond_and_hanging_things_hang_over_no_one
     assert ("fish_1", "pond_1") in found and ("fish_1", "man_1") not in found
     scene = parse_scene("A ramen stall. Two customers wait. A neon sign glows.")
     assert not any(r.relation == "above" and r.target.startswith("customer") for r in scene.relations)
+
+
+def test_no_one_stands_on_a_log_for_standing_by_what_is_on_it():
+    """A log or a stump is no floor ("a man stands by an anvil placed on a tree stump": by it, on
+    the ground), though a stage is."""
+    on = {(r.source, r.relation) for r in parse_scene("A man stands by an anvil placed on a tree stump.").relations}
+    assert ("anvil_1", "on") in on and ("man_1", "on") not in on

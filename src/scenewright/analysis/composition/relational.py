@@ -80,15 +80,15 @@ def facing(obj: ParsedObject, relations: list[ParsedRelation], anchored: ParsedR
 
 
 def turn_yaw(obj: ParsedObject, outgoing: list[ParsedRelation], incoming: list[ParsedRelation],
-             by_id: dict[str, ParsedObject]) -> float:
+             by_id: dict[str, ParsedObject], seat_of: dict[str, ParsedObject]) -> float:
     """How a thing starts turned: a bridge between two things, one left and one right of it,
     turns its long side (y at yaw 0) from one to the other; a table with a long seat on either
-    side ("two benches on either side of the table") turns its long sides to them; anything else
-    starts unturned."""
+    side ("two benches on either side of the table", or people on them: "children sit on benches
+    on both sides of the table") turns its long sides to them; anything else starts unturned."""
     sides = {r.relation for r in outgoing}
     if roles.kind(obj.category) in roles.SPANS and {"left of", "right of"} <= sides and obj.size[1] > obj.size[0]:
         return 90.0
-    seats = [(r.relation, by_id[r.source]) for r in incoming if r.source in by_id]
+    seats = [(r.relation, seat_of.get(r.source, by_id[r.source])) for r in incoming if r.source in by_id]
     seated = {relation for relation, o in seats if roles.kind(o.category) in roles.SEATS and o.size[0] >= LONG_SEAT}
     table = roles.kind(obj.category) in roles.TABLES | roles.DESKS
     return 90.0 if table and {"left of", "right of"} <= seated and obj.size[0] > obj.size[1] else 0.0
@@ -115,8 +115,11 @@ def place_related(
     loads = Counter((r.target, r.relation) for r in relations if r.relation in ("on", "above"))
     main = main_object(objects, relations)
 
+    seat_of = {r.source: by_id[r.target] for r in relations
+               if r.relation == "on" and r.target in by_id and roles.kind(by_id[r.target].category) in roles.SEATS}
+
     def yaw(obj: ParsedObject) -> float:
-        return turn_yaw(obj, outgoing[obj.id], incoming[obj.id], by_id)
+        return turn_yaw(obj, outgoing[obj.id], incoming[obj.id], by_id, seat_of)
 
     # what a ring of things faces keeps room round it for them
     room = {t: max(max(by_id[f].size[:2]) for f in fs) + GAP for t, fs in faced_by.items() if len(fs) >= RING}
@@ -244,10 +247,15 @@ def _lend_sides(
             riders[r.target].append(r.source)
     for host, on in riders.items():
         # (a seat is left out: its sitter's relations already reach it, and lending them only
-        # spreads the seats wider: "four astronauts sit on stools around a table")
-        if len(on) != 1 or anchor(outgoing[host], flat) is not None or roles.kind(by_id[host].category) in roles.SEATS:
+        # spreads the seats wider: "four astronauts sit on stools around a table"; a long seat
+        # takes what all its sitters share: "children sit on benches on both sides of the table")
+        seat = roles.kind(by_id[host].category) in roles.SEATS
+        bench = seat and len(on) > 1 and by_id[host].size[0] >= LONG_SEAT
+        if len(on) != 1 and not bench or anchor(outgoing[host], flat) is not None or seat and not bench:
             continue
-        sides = [replace(r, source=host) for r in outgoing[on[0]] if r.relation in _LENT and r.target != host]
+        shared = set.intersection(*({(r.relation, r.target) for r in outgoing[o]} for o in on))
+        sides = [replace(r, source=host) for r in outgoing[on[0]]
+                 if r.relation in _LENT and r.target != host and (r.relation, r.target) in shared]
         if sides:
             outgoing[host].extend(sides)
             wide, size = by_id[on[0]].size, by_id[host].size

@@ -8,10 +8,10 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from scenewright.analysis.parser.grammar import _COPULAS, _PERSON_POSSESSIVES, _RIDDEN
+from scenewright.analysis.parser.grammar import _COPULAS, _HANDHELD_SIZE, _PERSON_POSSESSIVES, _RIDDEN
 from scenewright.analysis.parser.nouns import _Mention, _is_plural
 from scenewright.analysis.parser.phrases import _Rel
-from scenewright.analysis.parser.vocabulary import load_vocabulary
+from scenewright.analysis.parser.vocabulary import load_vocabulary, replica
 from scenewright.analysis.parser.words import (
     _AIM_VERBS,
     _BEAR_VERBS,
@@ -244,6 +244,9 @@ class _Hands:
         else:
             record = m.guess if m.guess is not None else self.catalogue[m.category]
             size, rests = record.size, record.rests
+        words = {t.text for t in self.toks[m.start - len(m.adjectives) : m.end]}
+        if self._lives(m.category) and words & load_vocabulary().replica_words:
+            return m if max(replica(size)) <= _HANDHELD_SIZE else None  # "hugs a toy penguin": a toy
         return m if self._holdable(m.category, m.phrase, size, rests, tool, used) else None
 
     def _used_object(self, k: int, ce: int) -> _Mention | None:
@@ -480,8 +483,8 @@ class _Hands:
         owner = part and (w == "its" or w in _PERSON_POSSESSIVES and toks[k + 1].text in load_vocabulary().body_parts)
         if not (w in ("it", "them") or one or owner):
             return
-        if not self._after_verb(k, over=("into", "onto", *_ORDINALS, "front", "back")):
-            return
+        if not self._after_verb(k, over=("into", "onto", *_ORDINALS, "front", "back"), worn=True):
+            return  # (also after what the doer wears: "a worker in ear defenders tends each one")
         if one:
             thing = self._one_of(c, doers, prev_subject)
         elif owner and w != "its":
@@ -494,6 +497,8 @@ class _Hands:
         if thing:
             c.deeds.append((doers, thing[0]))
             c.deed_end = k + 1
+            if one and toks[k - 1].text in ("each", "every") and self.groups[thing[0]].count > 1:
+                self._per_each(doers, thing[0])  # "a worker in ear defenders tends each one": one at each
             if w == "it" and k + 1 in self.rel_at and self.rel_at[k + 1].kind in ("on", "in"):
                 c.main = [thing[0]]  # "weighing it on a scale": what the phrase places is the verb's thing, as
                 # after a noun ("weighs the chick on a scale")

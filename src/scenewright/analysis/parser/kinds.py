@@ -29,8 +29,9 @@ _STEADYING = {"steady", "still", "upright", "firm", "straight"}
 
 class _Kinds:
     def _living(self, g: int) -> bool:
-        """A person or an animal (catalogue dogs and horses too, guessed figures and animals)."""
-        return self._lives(self.groups[g].category)
+        """A person or an animal (catalogue dogs and horses too, guessed figures and animals), no
+        toy or model of one."""
+        return self._lives(self.groups[g].category) and not self.groups[g].likeness
 
     def _human(self, g: int) -> bool:
         """A person, whom "it" never names (an animal, a scarecrow or a mannequin it can)."""
@@ -68,6 +69,8 @@ class _Kinds:
         """A thing a person carries with them: no living thing, and one that stands on tables or
         is small enough to hold ("a pickaxe", "a clipboard"), not "a man with a ladder"."""
         group = self.groups[g]
+        if group.likeness:  # ("hugging a toy penguin": held, as small as a thing in hand)
+            return max(group.size) <= _HANDHELD_SIZE
         return self._holdable(group.category, group.name, group.size, group.rests)
 
     def _steadied(self, g: int) -> bool:

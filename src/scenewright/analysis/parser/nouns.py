@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 
 from scenewright.core.catalogue import load_catalogue, match_phrase, phrase_index, singular
+from scenewright.analysis.parser import wordnet
 from scenewright.analysis.parser.grammar import _BUILDING_PARTS, _LIVING, _THRESHOLDS
 from scenewright.analysis.parser.phrases import _phrase_table
 from scenewright.analysis.parser.tokens import _CLAUSE_WORDS, _Tok
@@ -91,6 +92,9 @@ class _Group:
     guessed: bool = False
     #: The text states its size ("a 3 m tall statue"): no rule resizes it.
     sized: bool = False
+    #: A toy or a model of its kind ("a toy penguin"): drawn as one, but no living thing (it is held,
+    #: carried, set on shelves).
+    likeness: bool = False
 
 
 @lru_cache(maxsize=1)
@@ -267,14 +271,18 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             if longer is not None:
                 i = longer
                 continue
-        of = found is not None and found[0] - i == 1 and found[0] + 1 < n and toks[found[0]].text == "of"
+        # (a people group may have a kind: "a pipe band of six pipers")
+        group = found is not None and singular(toks[found[0] - 1].text) in _PEOPLE_GROUPS
+        of = found is not None and (found[0] - i == 1 or group) and found[0] + 1 < n and toks[found[0]].text == "of"
         # ("a family of four" is the family; "a quartet of four fiddlers" are the fiddlers)
-        members = singular(toks[i].text) in _PEOPLE_GROUPS and (
+        after = toks[found[0] + 2].text if of and found[0] + 2 < n else ""  # ("of six pipers": people nobody listed)
+        members = group and (
             toks[found[0] + 1].text not in _NUMBERS or _match_at(toks, found[0] + 2) is not None
+            or singular(after) != after and wordnet.kind_of_sense(singular(after)) == "noun.person"
         ) if of else False
         counts = of and toks[found[0] + 1].text not in _DETERMINERS  # ("the tower of the castle" is a tower)
         if counts and (toks[i].text in _QUANTITY and singular(toks[i].text) not in _PEOPLE_GROUPS or members):
-            i += 1  # "a crowd of fans", "a couple of crates", "a choir of monks": a count, not the crowd
+            i = found[0]  # "a crowd of fans", "a couple of crates", "a choir of monks": a count, not the crowd
             continue  # ("a family of four" is the family)
         if found:
             raw.append((i, *found))
@@ -1039,9 +1047,11 @@ def _worn(toks: list[_Tok], s: int, e: int) -> bool:
     """Clothing the catalogue also names as a thing ("armour") is worn after "in" or
     "wearing": "a knight in battered armour"; "a suit of armour stands by the door" is a thing."""
     clothing = load_vocabulary().clothing
-    if singular(toks[e - 1].text) not in clothing and toks[e - 1].text not in clothing:
+    last = toks[e - 1].text
+    pair = f"{toks[s - 1].text} {last}" if s > 0 else ""  # ("a worker in ear defenders": no defenders)
+    if singular(last) not in clothing and last not in clothing and pair not in clothing:
         return False
-    j = s - 1
+    j = s - 2 if pair in clothing else s - 1
     while j >= 0 and s - j <= 4 and toks[j].text[:1].isalpha() and toks[j].text not in _WEARING and (
         toks[j].text in _DETERMINERS or toks[j].text not in _STOP
     ):
@@ -1098,7 +1108,8 @@ def _worn_by(toks: list[_Tok], s: int, e: int, mentions: list[_Mention]) -> bool
 #: Participles before "like" that make what follows a look ("shaped like a fish", "painted like a comic").
 _LIKENESS_VERBS = {"shaped", "painted", "styled", "drawn", "carved", "made", "built", "designed", "dressed",
                    "disguised", "decorated", "looks", "look", "looking", "rendered", "moulded", "molded",
-                   "sculpted"}  # fmt: skip
+                   "sculpted", "stitched", "sewn", "knitted", "woven", "together", "pieced", "assembled",
+                   "cut", "folded", "glazed", "printed"}  # fmt: skip
 #: Nouns before "of" that make what follows a look ("in the style of an etching", "in the shape of a heart").
 _LIKENESS_NOUNS = {"style", "shape", "form", "manner", "likeness", "fashion", "spirit", "size"}
 #: Words of size a comparison ends on before "as"/"than" ("as big as a horse", "no bigger than a cat").
@@ -1256,6 +1267,9 @@ def _names_kind(toks: list[_Tok], e: int) -> bool:
         return False  # "a church organ still stands there": an adverb, no "organ still"
     if _opens_a_phrase_after(toks, e):
         return False  # "beside the table work two nurses": a verb before its subject or object
+    participle = w in _IRREGULAR_PARTICIPLES and e + 1 < len(toks) and toks[e + 1].text in _PUT_PREPOSITIONS
+    if not t.joined and participle:
+        return False  # "an anvil set on a stump": its participle (a set is no thing, "a chess set" aside)
     if t.joined or (w in load_vocabulary().not_things and singular(w) == w and w not in _FINITE):
         return True  # "camel-hair tents", "a bear face"
     if w in _IRREGULAR_PARTICIPLES:
@@ -1372,6 +1386,10 @@ def _inner_part_of(toks: list[_Tok], j: int) -> bool:
 #: Prepositions that tie the opening's place to a wider one ("a base on a rocky shoulder").
 _SETTING_PREPOSITIONS = {"on", "at", "of", "to", "near", "by", "below", "beneath", "under", "above", "beside",
                          "overlooking", "outside", "atop", "upon", "behind", "beyond", "along", "across"}  # fmt: skip
+#: Prepositions after a participle that put its noun somewhere ("an anvil set on a stump").
+_PUT_PREPOSITIONS = _SETTING_PREPOSITIONS - {"of", "to"} | {
+    "in", "into", "onto", "against", "between", "around", "inside"
+}
 
 
 def _verbless_opening(toks: list[_Tok], k: int) -> bool:
@@ -1630,7 +1648,11 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
             continue  # "a third waits": more of a group named before (:func:`_elided_members`)
         if i + 1 < n and toks[i + 1].joined and w not in ("a", "an", "another", "the", *_OWNERS):
             continue  # "a six-wheeled rover": a number hyphened to a word describes, counts nothing
-        if w in _NUMBERS and i > 1 and toks[i - 1].text == "of" and toks[i - 2].text in _PEOPLE_GROUPS:
+        people_of = i + 1 < n and singular(toks[i + 1].text) != toks[i + 1].text and (
+            wordnet.kind_of_sense(singular(toks[i + 1].text)) == "noun.person"
+        )  # ("a pipe band of six pipers": the people it is of)
+        counted = w in _NUMBERS and i > 1 and toks[i - 1].text == "of" and toks[i - 2].text in _PEOPLE_GROUPS
+        if counted and not people_of:
             continue  # "a family of four shelters under the awning": how many, then the verb
         if (w in _NUMBERS or w.isdigit()) and i + 1 < n and toks[i + 1].text in _UNITS:
             continue  # "ten paces apart", "five yards from the gate": a distance, no things
@@ -1695,6 +1717,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         )
         if head is None or known or toks[head].quoted:
             continue
+        if w == "one" and toks[head].text in vocabulary.body_parts:
+            continue  # "reclines on one elbow", "kneels on one knee": how one rests, no thing
         # a counted plural before a singular known word is its subject ("two stokers shovel coal")
         subject = plural and singular(toks[head].text) != toks[head].text and j < n
         subject = subject and singular(toks[j].text) == toks[j].text
@@ -1725,7 +1749,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         # "two planks lean against the wall", "a tall bouldering wall rises along one side": a part
         # (or a wall) its clause puts somewhere is a thing of its own (not "its planks", "the hull")
         part = word in vocabulary.parts or word == "wall"
-        loose = w not in ("the", *_OWNERS) and part and j < n and _placed_verb(toks, j)
+        bounds = word == "wall" and j < n and toks[j].text in _BOUNDING_VERBS  # "a stone wall runs along the field"
+        loose = w not in ("the", *_OWNERS) and part and j < n and (_placed_verb(toks, j) or bounds)
         loose = loose and (i == 0 or toks[i - 1].text in (".", "!", "?", ";", ",", "and"))  # (its clause's subject)
         # "a dozen moulds of fresh curd": counted things of a stuff are the things (not "two sides of the hut")
         filled = _NUMBERS.get(w, 0) > 1 and one != word and j + 1 < n and toks[j + 1].text not in _DETERMINERS
@@ -1742,6 +1767,8 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         entry = vocabulary.family("figure") if members else _guess(toks, head, toks[max(i - 1, 0) : head])
         if entry.category == GENERIC and any(vocabulary.is_creature(toks[k].text) for k in looks if toks[head].joined):
             entry = vocabulary.family("figure")  # "a polar bear taste-tester": a creature in a role, as "a penguin chef"
+        if bounds:
+            entry = _FREE_WALL
         if entry.category == GENERIC and singular(word) in vocabulary.clothing:
             entry = Entry(GENERIC, vocabulary.clothing_size, "surface")  # "a felt hat" on a stand: its own size
         living = entry.category == "figure" or vocabulary.is_creature(word)
@@ -1769,6 +1796,7 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         out.append((head, head + 1, entry.category, entry))
         covered.add(head)
     out += _bare_subjects(toks, covered) + _bare_objects(toks, covered) + _landforms(toks, covered)
+    out += _joined_plurals(toks, covered)
     out += _crowds(toks, raw, covered)
     out += _owners_of_parts(toks, covered)
     out += _loose_parts(toks, covered) + _buildings(toks, covered)
@@ -1945,6 +1973,9 @@ def _plural_verb(toks: list[_Tok], j: int) -> bool:
     verbs = vocabulary.person_verbs | vocabulary.animal_verbs | _HANG_VERBS
     # a person verb, or any word that goes somewhere ("two knights in armour creep up the slope")
     verb = any(toks[j].text + ending in verbs for ending in ("s", "es")) or after in _MOTION_PARTICLES
+    # ("four tourists on a sandbar laugh and hold up their phones": a person's verb ends its clause)
+    acts = any(toks[j].text + ending in vocabulary.person_verbs for ending in ("s", "es"))
+    takes = takes or after in ("and", ",", ".") and acts
     if not takes or singular(toks[j].text) != toks[j].text:
         return False
     k = j - 1  # back over the phrase to its preposition: the subject stands before it
@@ -2000,7 +2031,8 @@ def _owners_of_parts(toks: list[_Tok], covered: set[int]) -> list:
     out: list = []
     for k in range(1, len(toks) - 1):
         w = toks[k].text
-        if k in covered or not w.endswith("'s") or toks[k - 1].text not in _DEFINITE:
+        indefinite = toks[k - 1].text in ("a", "an")  # ("a barber trims a man's beard": a man of his own)
+        if k in covered or not w.endswith("'s") or toks[k - 1].text not in _DEFINITE and not indefinite:
             continue
         j = k + 1
         while j < len(toks) - 1 and vocabulary.is_adjective(toks[j].text):
@@ -2015,7 +2047,7 @@ def _owners_of_parts(toks: list[_Tok], covered: set[int]) -> list:
                 out.append((k, k + 1, known or entry.category, entry))  # "a groom brushes the horse's mane"
                 covered.add(k)
             continue
-        if part not in _BUILDING_PARTS and part not in vocabulary.part_owners:
+        if indefinite or part not in _BUILDING_PARTS and part not in vocabulary.part_owners:
             continue
         if base not in vocabulary.places and any(singular(toks[i].text) == base for i in covered if i < k):
             continue  # "the hut's roof" after "a site hut": the part places by the hut named before (a
@@ -2343,6 +2375,63 @@ def _bare_objects(toks: list[_Tok], covered: set[int]) -> list:
     return out
 
 
+def thing_plural(word: str) -> bool:
+    """A plural WordNet knows as the name of things rather than as a verb ("cubes", "cupcakes";
+    not "runs", "argues", "stands")."""
+    one = singular(word)
+    return one != word and bool(wordnet.names_a_thing(one)) and not wordnet.rather_verb(one)
+
+
+def _listed_after(toks: list[_Tok], k: int, covered: set[int]) -> bool:
+    """Whether the phrase ending at ``k`` lies in a list a "with" or a verb of holding opens, no
+    verb of the clause's subject between ("a table with a cake in the middle and ...", "a tray
+    holds a teapot and ..."; not "a teacher stands by the whiteboard and ...")."""
+    vocabulary = load_vocabulary()
+    j = k
+    while j >= 0 and toks[j].text[:1].isalpha():
+        w = toks[j].text
+        if w == "with" or w in _HOLD:
+            return True
+        if j not in covered and (w in _FINITE or _placing(w) or w in vocabulary.person_verbs):
+            return False
+        j -= 1
+    return False
+
+
+def _joined_plurals(toks: list[_Tok], covered: set[int]) -> list:
+    """A bare plural nobody listed joined by "and" to a named thing, ending the phrase: more of
+    the things named together ("a big cake in the middle and cupcakes around it"), not what a
+    thing is made of or holds ("made of cogs and gears")."""
+    vocabulary = load_vocabulary()
+    out: list = []
+    for k in range(2, len(toks)):
+        word, after = toks[k].text, toks[k + 1].text if k + 1 < len(toks) else "."
+        # (after a thing, or after the place a thing is put in: "a cake in the middle and")
+        named = k - 2 in covered or toks[k - 2].text in vocabulary.not_things and any(
+            j in covered for j in range(max(0, k - 7), k - 2)
+        )
+        if k in covered or toks[k - 1].text != "and" or not named or toks[k].quoted:
+            continue
+        if any(t.text in ("of", "from") for t in toks[max(0, k - 4) : k - 1]):
+            continue  # "a chandelier made of cogs and gears": what it is made of
+        one = singular(word)
+        # (the phrase ends, or the verb of both comes: "bottles and cans litter the floor")
+        both = after[:1].isalpha() and after not in _STOP and _plural_verb(toks, k + 1)
+        ends = after in _STOP or not after[:1].isalpha() or both
+        if not ends or not vocabulary.is_thing_word(word):
+            continue
+        if not thing_plural(word):
+            continue  # "holds a baby and argues with him", "slips its lead and runs off": a verb
+        if not both and not _listed_after(toks, k - 2, covered):
+            continue  # "stands by the whiteboard and points at a map": the subject's second verb
+        if one in vocabulary.clothing or word in vocabulary.parts or _participle(word):
+            continue
+        entry = _guess(toks, k, toks[k - 1 : k])
+        out.append((k, k + 1, entry.category, entry))
+        covered.add(k)
+    return out
+
+
 def _stuff_word(toks: list[_Tok], k: int, covered: set[int]) -> bool:
     """The word at ``k`` names stuff, no thing ("wool", "gold", "sand"): what a unit or a heap
     of it is made of, so the unit, or the heap named by the stuff, is the thing."""
@@ -2436,6 +2525,11 @@ def _opens_phrase(toks: list[_Tok], k: int) -> bool:
 _PLACING_VERBS = _HANG_VERBS | {"stands", "sits", "lies", "rises", "rests", "leans", "waits", "towers", "looms"}
 
 
+#: A wall that stands on open ground ("a stone wall runs along the field"): long and low, drawn as a fence.
+_FREE_WALL = Entry("fence", (4.0, 0.5, 1.2), "ground")
+#: Verbs of a wall that stands on its own, bounding ground ("a dry-stone wall runs along the lane").
+_BOUNDING_VERBS = {"runs", "run", "stretches", "stretch", "encloses", "enclose", "surrounds", "surround", "borders",
+                   "border", "separates", "separate", "divides", "divide", "circles", "winds", "snakes"}  # fmt: skip
 #: Parts that, put somewhere on their own, stand for their whole thing ("an airship hull hangs from chains").
 _WHOLE_PARTS = {"hull", "chassis", "fuselage", "frame", "carcass"}
 

@@ -66,6 +66,7 @@ from scenewright.analysis.parser.nouns import (
     _post_description,
     _read_count,
     _verbless_opening,
+    thing_plural,
     worn_description,
 )
 from scenewright.analysis.parser.phrases import _Rel, _find_relations, _phrase_table
@@ -117,6 +118,8 @@ _APIECE = {"separate", "individual"}
 
 #: m, a seat narrower than this holds one sitter ("two rows of chairs": a chair each, not of benches).
 _ONE_SEAT_WIDTH = 1.0
+#: m, a seat this long seats as many side by side as fit (a bench, a sofa, a pew).
+_BENCH_LENGTH = 1.2
 
 #: How many sides "every side" / "all sides" names: a square's.
 _ALL_SIDES = 4
@@ -435,7 +438,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         base = _POTTED_PALM if potted and m.category == "palm_tree" else base  # (a palm still, in its pot)
         base = stretched(scaled(base, describing, bounds), describing)
         likeness_of = {*kind, *describing} & vocabulary.replica_words
-        if likeness_of and (cat.shape != "figure" or likeness_of - {"model"}):
+        copied = bool(likeness_of) and (cat.shape != "figure" or bool(likeness_of - {"model"}))
+        if copied:
             base = replica(base)  # "a toy spaceship", "a model lighthouse", "toy soldiers" (not "a fashion model")
         size = _apply_sizes(base, sizes) if sizes else base
         rests = m.guess.rests if m.guess is not None else cat.rests
@@ -451,6 +455,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         g = _Group(len(self.groups), m.category, count, name, description, size, rests=rests)
         g.guessed = m.guess is not None
         g.sized = bool(sizes)
+        g.likeness = copied
         self.groups.append(g)
         default = UNCOUNTED if _is_plural(self.toks, m) else 1  # what an uncounted phrase gets
         j = m.start - 1
@@ -718,12 +723,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     if srcs:
                         worked = self._worked_there(c, srcs, before)
                         for kind, targets, each, members in c.fronted:
-                            if each:  # "beside every table stand two chairs" ("a cake on a stand": a stand each)
-                                carried = [*srcs[:1], *self._beneath(kind, srcs[:1], before)]
+                            if kind == "flank":  # "On either side of the gate stands a stone lion": one a side
+                                self._one_a_side(srcs)
+                            if each:  # "beside every table stand two chairs" ("a cake on a stand": a stand each;
+                                # "on the blanket in front of each bear is a plate": one blanket still)
+                                carried = [*srcs[:1], *self._beneath(kind, srcs[:1], before, targets_all)]
                                 self._per_each(list(dict.fromkeys(carried)), targets[0])
                             for t in targets:
                                 for one in members:
-                                    self._relate(kind, self._beneath(kind, srcs, before), t, instance=one)
+                                    self._relate(kind, self._beneath(kind, srcs, before, targets_all), t, instance=one)
                                 if kind in ("on", "on top"):
                                     self._relate(kind, [g for g in worked if g not in targets_all], t)
                         c.rels = [(kind, targets) for kind, targets, _, _ in c.fronted]
@@ -958,13 +966,17 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return False
         return False
 
-    def _beneath(self, kind: str, subjects: list[int], since: int) -> list[int]:
+    def _beneath(
+        self, kind: str, subjects: list[int], since: int, landmarks: set[int] | frozenset[int] = frozenset()
+    ) -> list[int]:
         """What a fronted phrase of the ground ("Behind the chair, ...") places: each subject,
         or what the subject floats above or stands on in its own clause ("a hologram floats
         above a round table": the table is behind the chair). A person stays what it places: "Behind
         it, a sergeant on a swivel chair types" puts the sergeant behind, the chair comes along.
         A fronted host carries what its subject sits or stands on ("On the desk, a kettle steams on
-        a camping stove": the stove is on the desk; "On the counter, a cat sleeps in a basket")."""
+        a camping stove": the stove is on the desk; "On the counter, a cat sleeps in a basket").
+        A host among the fronted ``landmarks`` stays put ("On the blanket in front of each bear is a
+        plate": the plate is in front of the bear, the blanket under them all)."""
         if kind in ("on", "on top"):
             host = {r[1]: r[2] for r in self.relations[since:] if r[0] == "on" and r[2] not in subjects}
             return list(dict.fromkeys(host.get(g, g) for g in subjects))
@@ -972,7 +984,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return subjects
         under = {
             r[1]: r[2] for r in self.relations[since:]
-            if r[0] in ("on", "above") and r[2] not in subjects and not self._living(r[1])
+            if r[0] in ("on", "above") and r[2] not in subjects and not self._living(r[1]) and r[2] not in landmarks
         }  # fmt: skip
         return list(dict.fromkeys(under.get(g, g) for g in subjects))
 
@@ -1105,11 +1117,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         if any(k in self.rel_at for k in range(cs, ce)):
             return False
         mentions = [m for k, m in self.by_start.items() if cs <= k < ce]
-        if not mentions or max(m.end for m in mentions) != ce:
+        end = max((m.end for m in mentions), default=ce + 1)
+        contents = range(end, ce) if end < ce and self.toks[end].text == "of" and all(
+            t.text[:1].isalpha() and t.text not in _STOP for t in self.toks[end + 1 : ce]
+        ) else range(0)  # ("a hammer, a chisel and a box of nails": what the last one holds)
+        if not mentions or end != ce and not contents:
             return False
         if not strict:
             return True
-        allowed: set[int] = set()
+        allowed: set[int] = set(contents)
         for m in mentions:
             allowed.update(range(m.start - len(m.adjectives) - 2, m.end))
         for k in range(cs, ce):
@@ -1327,6 +1343,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 c.company = fellow and w == "with" and self._after_verb(k, worn=True)
                 # ("a guard stands at the gate with a spear": nothing stands on a gate, the spear is his)
                 tool = self._hand_object(k + 1, ce, tool=True) if w == "with" else None
+                # ("stirring a pot on it with a long spoon": the spoon is the stirrer's, not the pot's)
+                workers = [g for g in (self.doers or prev_subject) if self._person_at(g)]
+                if tool is not None and workers and c.head and not any(self._living(h) for h in c.head) and (
+                    self._verb_before(k, self._work_verb) and not c.wsub
+                ):
+                    c.head = workers
                 # ("with an inkwell and three quills on it": the phrase after the list places them all)
                 listed = self._list_end(tool.end, ce) if tool is not None else k
                 # (nor at a table, "sits at a table with a teapot", unless the clause's verb is work
@@ -1380,7 +1402,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 if g < 0:
                     continue
                 if c.each is not None and (c.head is not None or c.each_deed) and not m.definite and g != c.each:
-                    self.groups[g].count = max(1, m.count) * max(1, self.groups[c.each].count // c.each_unit)
+                    every = max(1, self.groups[c.each].count // c.each_unit)
+                    self.groups[g].count = max(1, m.count) * every
+                    self._stacks_apiece(g, every)
                     self.pair_each.add((g, c.each))
                 # (not what a participle acts on: "noting every crate on a clipboard")
                 words = range(m.start - 1, max(m.start - 6, -1), -1)
@@ -1914,6 +1938,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 for k in range(last_event_end, rel.start + 1)  # "with parrots inside hangs from": its own verb
                 if k not in self.content_at and toks[k - 1].text not in ("of", "in")  # "a farmer in dungarees"
                 and toks[k - 1].text not in _DETERMINERS
+                and not (toks[k - 2].text == "of" and thing_plural(toks[k].text))  # "a bowl of sugar cubes on it"
                 # (after a plural it is a verb: "a stall piled with crates of apples stands by the gate")
                 and (
                     k - 1 not in self.content_at or toks[k].text in _FINITE or singular(toks[k - 1].text) != toks[k - 1].text
@@ -1922,7 +1947,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # "a dad with his putter beside the windmill": what is in hand goes where its holder is
             # ("reads a book on the bench", "sharpen their spears on a grindstone": the readers and sharpeners)
             # (what a person holds or carries is in hand as well: "a waiter carries a tray between the tables")
-            holding = c.hand or c.hold and all(self._living(h) for h in c.head)
+            # (a setting holds nothing in hand: "a museum gallery displays a skeleton on a plinth")
+            holding = c.hand or c.hold and bool(c.head) and all(self._living(h) for h in c.head)
             # (the holder faces what is aimed at: "aims a pitchfork at them"; "eats a pie at the foot of the
             # tower": the eater is there)
             # ("two servants wave fans on either side of him": "him" is not the two, so someone else;
@@ -1995,6 +2021,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 # one works on a grindstone or an anvil standing at it; what is worked there lies on it
                 # (one who sits or stands on it is on it: "a musician with a flute sits on a carpet")
                 worked_on = in_hand and kind == "on" and isinstance(target, list) and not self._carrier(target[0], _RIDDEN)
+                # ("two musicians play lutes on a rug": a thing as low as a rug is stood or sat on)
+                worked_on = worked_on and self.groups[target[0]].size[2] > FLAT_HOST
                 worked_on = worked_on and not self._verb_before(rel.start, self._posture)
                 if worked_on and not self._verb_before(rel.start, lambda w: w in _KEPT_IN_HAND):
                     self._set_down(c, target[0])
@@ -2168,11 +2196,14 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         # (what the with-part's owners sit around or at)
         tables = [r[2] for r in self.relations
                   if r[1] in (c.head or ()) and self.catalogue[self.groups[r[2]].category].support]
+        # ("a long table with a big cake in the middle": the head's own middle)
+        tables += [h for h in (c.head or ()) if not self._living(h) and self.catalogue[self.groups[h].category].support]
         if kind == "anchor centre" and toks[rel.end - 1].text != "of" and srcs and srcs == c.wsub and tables and (
             not any(self._living(g) for g in srcs)
         ):  # "four students sit around a table, with a plate of biscuits in the middle": the table's middle
             self._relate("on", srcs, tables[-1])
             c.wsub_related.update(srcs)
+            c.wsub_before = list(srcs)  # ("... and cupcakes around it": around the cake)
             return end
         faced = c.last_kind == "face to" and c.last_target_end == rel.start and bool(c.last_target)
         if kind.startswith("anchor ") and faced:
@@ -2272,7 +2303,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             onto, end2 = self._target_at(end + 1, ce)
             if isinstance(onto, list) and onto:  # "unloads crates from the boat onto a handcart": on the handcart
                 kind, target, targets, end = "on", onto, onto, end2
-        if kind == "from" and end < ce and toks[end].text in span and isinstance(targets, list) and targets:
+        if kind == "from" and end < ce and toks[end].text in span and isinstance(targets, list) and targets and (
+            not self._side_to(end)
+        ):
             kind = "between"  # "a conveyor carries ore from it to a refinery": between the two
         if kind == "between" and isinstance(targets, list) and targets and target != "them":
             # (between "them" is between the pair already: "with a table between them and a rug under it")
@@ -2456,6 +2489,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if isinstance(target, list):  # "On a mound behind the giraffes, ...": the mound is behind them
                 c.last_target, c.last_target_end, c.last_kind = targets, end, kind
             return end
+        if starts_with_rel and c.opens and not c.produced and kind == "flank" and not targets:
+            c.fronted.append((kind, [], False, (None,)))  # "On either side of the temple door stands a lion": two
+            return end
         if not c.first and not c.unknown_subject:
             p.srcs = list(prev_subject)
         elif (kind == "from" or kind == "on" and not self._verb_before(p.rel.start, self._posture)) and (
@@ -2566,9 +2602,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         elif tm is not None and kind in ("on", "in") and len(srcs) == 1 and self._living(srcs[0]) and (
             self._seats_each(tm) or self._seat_apiece(srcs[0], tm)
         ):
-            # "four astronauts sit on stools": one each (seats named before keep any more they had)
+            # "four astronauts sit on stools": one each (seats named before keep any more they had);
+            # "eight children sit on benches": as many to a bench as its length seats
+            seat, sitter = self.groups[targets[0]].size[0], self.groups[srcs[0]].size[0]
+            bench = seat >= _BENCH_LENGTH and self._carrier(targets[0], ("seats",)) and sitter > 0
+            per = max(1, int(seat / sitter)) if bench else 1
             seats = self.groups[targets[0]].count if tm.definite else 0
-            self.groups[targets[0]].count = max(self.groups[srcs[0]].count, seats)
+            self.groups[targets[0]].count = max(-(-self.groups[srcs[0]].count // per), seats)
         elif tm is not None and kind == "on" and len(srcs) == 1 and self._stands_each(srcs[0], tm):
             self.one_each[targets[0]] = srcs[0]  # "busts stand on pedestals (at each corner)": one each
         elif tm is not None and kind == "in" and len(srcs) == 1 and self._planted(srcs[0]) and self._uncounted_new(tm):
@@ -2859,7 +2899,15 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             k += 1
         return k < len(self.toks) and self.toks[k].text in span and k > start and self._names_thing(start, starts) and (
             self._names_thing(k + 1, starts)
-        )
+        ) and not self._side_to(k)
+
+    def _side_to(self, k: int) -> bool:
+        """The "to" at ``k`` opens a side ("from a platform to the left of the tower": the platform
+        is left of it), no end of a span."""
+        after = [t.text for t in self.toks[k + 1 : k + 3]]
+        return self.toks[k].text == "to" and (after[:1] in (["left"], ["right"], ["one"]) or after in (
+            ["the", "left"], ["the", "right"], ["the", "side"], ["either", "side"], ["each", "side"]
+        ))
 
     def _drives(self, r: _Rel, mentions: list[_Mention]) -> bool:
         """A vehicle follows a driving verb ("drives a quad bike", "steers the barge"): the driver
@@ -2916,8 +2964,16 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             if (src, target) not in self.pair_each:
                 if src not in self.numbered and self.groups[src].count == UNCOUNTED and self._living(src):
                     self.groups[src].count = 1
-                self.groups[src].count *= max(1, self.groups[target].count // unit)
+                every = max(1, self.groups[target].count // unit)
+                self.groups[src].count *= every
+                self._stacks_apiece(src, every)
                 self.pair_each.add((src, target))
+
+    def _stacks_apiece(self, g: int, every: int) -> None:
+        """A stack said once for each of ``every`` things is that many stacks ("two cannons, each
+        with a stack of cannonballs beside it"), not one stack of all their balls."""
+        if self.formations.get(g) == "stack":
+            self.lines[g] = self.lines.get(g, 1) * every
 
     def _one_a_side(self, srcs: list[int], sides: int = 2, row: bool = False, apiece: bool = False,
                     owners: int = 1) -> None:
@@ -3028,7 +3084,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # "a bridge crosses the pond", "a fox crosses the bridge": on what is low enough to cross
             # (a pronoun that missed the stream and found the hill beside it crosses nothing)
             low = self.groups[t].size[2] < _LOW_HOST or self._carrier(t, ("perches",)) and not self._tall_perch(t)
-            return "on" if low and not self._living(t) else "no relation"
+            # ("two knights cross swords": what is held is crossed in hand, no ground to cross)
+            return "on" if low and not self._living(t) and not self._handheld(t) else "no relation"
         walled = any(m.group == s for k, m in self.by_start.items() if k in self.on_wall)
         # ("a parasol above her head": held up over someone)
         held_up = self._person_at(t) and load_vocabulary().carried_by_hand(src.category, src.name)

@@ -357,7 +357,7 @@ _FIXING = r"(?:hang|hangs|hanging|hung|mounted|fixed|pinned|nailed|fastened|bolt
 _CEILING_PHRASE = re.compile(
     # (or from something in it: "hams hang from hooks in the ceiling beams")
     r"\b(?:(?:" + _FIXING + r"|dangles?|dangling|swings?)\s+(?:[\w-]+\s+){0,4}?(?:from|to)\s+(?:[\w-]+\s+(?:in|on)\s+)?|on\s+)"
-    r"the\s+(?:[\w-]+\s+){0,2}?ceiling\b"
+    r"the\s+(?:[\w-]+\s+){0,2}?(?:ceiling|beams|rafters)\b"  # ("onions hang from the low beams")
     # what hangs from something "overhead" that is no thing of the scene hangs from the room's top
     # ("sandbags hang from the fly gallery overhead"; a named rack overhead carries its pans)
     r"|\b(?:" + _FIXING + r"|dangles?|dangling|swings?)\s+from\s+the\s+(?:[\w-]+\s+){1,3}?overhead\b"
@@ -376,7 +376,7 @@ _WALL_WORDS_BEFORE = re.compile(
 )
 #: The leading list of a thing's fellow subjects ("saws and chisels hang on the wall"): names
 #: there do not come between the thing and its wall phrase.
-_FELLOWS = re.compile(r"(?:\s*(?:,|and|or)\s+(?:[\w-]+\s+){0,2}?[\w-]+)+")
+_FELLOWS = re.compile(r"(?:\s*(?:,|and|or)\s+(?:(?:a|an|the|some)\s+)?(?:[\w-]+\s+){0,2}?[\w-]+)+")
 
 
 def _names_between(text: str, names: set[str], own: str) -> bool:
@@ -384,15 +384,16 @@ def _names_between(text: str, names: set[str], own: str) -> bool:
     return any(_named(text, other) is not None for other in names if other != own)
 
 
-def _named(text: str, name: str) -> tuple[int, int] | None:
+def _named(text: str, name: str, nouns: frozenset[str] = frozenset()) -> tuple[int, int] | None:
     """Where ``text`` first names ``name``, singular or plural ("shelves" names a shelf); a name
     that is also a verb of standing names the thing only after a determiner or a describing word
-    ("a wooden stand", not "three clocks stand against the wall")."""
+    ("a wooden stand", not "three clocks stand against the wall"), and a plural right after one
+    of the ``nouns`` is that one's verb ("a blacksmith hammers a sword", no hammers)."""
     vocabulary = load_vocabulary()
     before = ""
     for found in re.finditer(r"[\w-]+", text):
         word = found.group()
-        if word == name or singular(word) == name:
+        if word == name or singular(word) == name and before not in nouns:
             described = before in _DETERMINERS or bool(before) and vocabulary.is_adjective(before)
             if not vocabulary.is_posture_verb(word) or described:
                 return found.span()
@@ -427,7 +428,7 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
     back of the room, with nothing behind it, stands against the back wall."""
     low = " ".join(parsed.text.lower().split())
     sentences = [(m.start(), m.end()) for m in re.finditer(r"[^.;!?]+", low)]
-    names = {_head(o) for o in parsed.objects}
+    names = frozenset(_head(o) for o in parsed.objects)
     backed = {r.target for r in parsed.relations if r.relation == "behind"}
     out = []
     for o in parsed.objects:
@@ -440,7 +441,7 @@ def wall_phrases(parsed: ParsedScene) -> list[ParsedRelation]:
         whole = [(s, e) for s, e in sentences if full is not None and full.search(low[s:e])]
         for s, e in whole or sentences:
             sentence = low[s:e]
-            found = _named_whole(sentence, name, full) if whole else _named(sentence, name)
+            found = _named_whole(sentence, name, full) if whole else _named(sentence, name, names)
             if found is None:
                 continue
             if _WALL_WORDS_BEFORE.search(sentence[: found[0]]):

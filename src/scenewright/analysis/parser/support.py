@@ -152,6 +152,7 @@ def _on_shared_floor(objects: list[ParsedObject], relations: list[ParsedRelation
             return False
         small = catalogue[thing.category].shape in LIVING_SHAPES or thing.size[0] * thing.size[1] <= _SHARED_FOOTPRINT
         wide = floor.size[0] * floor.size[1] >= _PLATFORM_AREA * thing.size[0] * thing.size[1]
+        wide = wide and min(floor.size[:2]) >= _FLOOR_SIDE  # (a log or a barrel is no floor to stand by things on)
         deck = vocabulary.carries(floor.category, floor.name, ("perches",)) and floor.size[2] <= _PLATFORM_TOP
         vehicle = vocabulary.carries(thing.category, thing.name, ("vehicles",))
         return small and wide and deck and not vehicle and can_hold(floor, thing, catalogue)
@@ -232,6 +233,8 @@ _NO_TOP = {"figure", "bird", "mannequin", "scarecrow"}
 _UNKNOWN = "thing"
 #: A host this low is ground-like (a rug, a pond, a pallet, a blanket): anything may stand on it.
 FLAT_HOST = 0.3
+#: m, the least width of a floor a thing shares with what it stands by (a stage, a raft; no log).
+_FLOOR_SIDE = 1.0
 #: m, the highest top of a thing one stands on that is a floor to furniture (a stage, a pier).
 _PLATFORM_TOP = 1.5
 #: How much larger than its host a thing may be and still rest on it (footprint, longest side):

@@ -111,19 +111,31 @@ def _synset(offset: int) -> Sense | None:
 def _entry(word: str) -> tuple[tuple[Sense, ...], int]:
     """The common-noun senses of ``word``, most frequent first, and how many of its senses were
     seen tagged in WordNet's corpus (those come first)."""
+    tagged, offsets = _index(word, "noun")
+    found = (_synset(o) for o in offsets)
+    return tuple(s for s in found if s is not None and any(w.lower() == w for w in s.words)), tagged
+
+
+def _index(word: str, pos: str) -> tuple[int, list[int]]:
+    """How many of ``word``'s senses as a ``pos`` ("noun", "verb") WordNet's corpus saw tagged, and
+    the offsets of all of them; nothing for a word it does not know as one."""
     folder = _folder()
     lemma = word.strip().lower().replace(" ", "_")
     if folder is None or not lemma:
-        return (), 0
-    line = _search(folder / "index.noun", _lemma, lemma.encode("ascii", "replace"))
+        return 0, []
+    line = _search(folder / f"index.{pos}", _lemma, lemma.encode("ascii", "replace"))
     if line is None:
-        return (), 0
+        return 0, []
     fields = line.decode("ascii").split()
     pointer_count = int(fields[3])
-    tagged = int(fields[4 + pointer_count + 1])
-    offsets = [int(x) for x in fields[4 + pointer_count + 2 :]]
-    found = (_synset(o) for o in offsets)
-    return tuple(s for s in found if s is not None and any(w.lower() == w for w in s.words)), tagged
+    return int(fields[4 + pointer_count + 1]), [int(x) for x in fields[4 + pointer_count + 2 :]]
+
+
+def rather_verb(word: str) -> bool:
+    """Whether ``word`` (a lemma) is known as a verb and its corpus met it tagged as one in more
+    senses than as a noun ("run", "argue"; not "cupcake", "plate", "hammer")."""
+    verb, offsets = _index(word, "verb")
+    return bool(offsets) and verb > _index(word, "noun")[0]
 
 
 def senses(word: str) -> tuple[Sense, ...]:

@@ -116,7 +116,7 @@ _FINITE = {"is", "are", "was", "were", "has", "have", "had", "stand", "sit", "li
            "lean", "wait", "glow", "run", "line", "rise", "stay", "remain", "tower", "loom", "float", "hover"}  # fmt: skip
 _ADVERBS = {"just", "right", "directly", "all", "both", "neatly", "slightly", "also", "then", "only", "far", "well"}
 _HOLD = {"holds", "hold", "holding", "carries", "carry", "carrying", "supports", "support", "supporting",
-         "bears", "bearing", "displays", "displaying"}  # fmt: skip
+         "bears", "bearing", "displays", "displaying", "seats", "seating"}  # fmt: skip
 #: Games named by their pieces: what one plays ("three guards play dice"), no thing of the scene.
 _GAMES = {"dice", "cards", "dominoes", "marbles", "darts", "chess", "checkers", "draughts", "mahjong", "backgammon",
           "skittles", "jacks"}  # fmt: skip
@@ -174,7 +174,7 @@ _LEAD_VERBS = {"walk", "walks", "walking", "lead", "leads", "leading", "guide", 
 #: Verbs of giving ("a robot hands one of them a toolbox"): the giver has the thing in hand and
 #: stands by whom it is given to.
 _GIVE_VERBS = {"hands", "handing", "hand", "gives", "giving", "give", "passes", "passing", "pass", "offers",
-               "offering", "offer"}  # fmt: skip
+               "offering", "offer", "feeds", "feeding", "feed"}  # fmt: skip
 #: Use verbs whose one thing several people have between them ("two girls share a bento box"): no
 #: thing for each.
 _SHARE_VERBS = {"share", "shares", "sharing"}
