@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from scenewright.analysis.parser.grammar import _COPULAS, _HANDHELD_SIZE, _PERSON_POSSESSIVES, _RIDDEN
+from scenewright.analysis.parser.grammar import _COPULAS, _PERSON_POSSESSIVES, _RIDDEN
 from scenewright.analysis.parser.nouns import _Mention, _is_plural
 from scenewright.analysis.parser.phrases import _Rel
 from scenewright.analysis.parser.vocabulary import load_vocabulary, replica
@@ -245,9 +245,9 @@ class _Hands:
             record = m.guess if m.guess is not None else self.catalogue[m.category]
             size, rests = record.size, record.rests
         words = {t.text for t in self.toks[m.start - len(m.adjectives) : m.end]}
-        if self._lives(m.category) and words & load_vocabulary().replica_words:
-            return m if max(replica(size)) <= _HANDHELD_SIZE else None  # "hugs a toy penguin": a toy
-        return m if self._holdable(m.category, m.phrase, size, rests, tool, used) else None
+        toy = self._lives(m.category) and bool(words & load_vocabulary().replica_words)  # ("hugs a toy penguin")
+        size = replica(size) if toy else size
+        return m if self._holdable(m.category, m.phrase, size, rests, tool, used, toy) else None
 
     def _used_object(self, k: int, ce: int) -> _Mention | None:
         """What the verb at ``k`` has in hand, named right after it: a thing a person can carry

@@ -69,9 +69,7 @@ class _Kinds:
         """A thing a person carries with them: no living thing, and one that stands on tables or
         is small enough to hold ("a pickaxe", "a clipboard"), not "a man with a ladder"."""
         group = self.groups[g]
-        if group.likeness:  # ("hugging a toy penguin": held, as small as a thing in hand)
-            return max(group.size) <= _HANDHELD_SIZE
-        return self._holdable(group.category, group.name, group.size, group.rests)
+        return self._holdable(group.category, group.name, group.size, group.rests, toy=group.likeness)
 
     def _steadied(self, g: int) -> bool:
         """A word right after the thing says it is held where it stands ("holds the ladder steady"),
@@ -89,14 +87,17 @@ class _Kinds:
         return self._handheld(g) or tool or _volume(group.size) <= _CARRY_VOLUME or self.groups[h].count > 1
 
     def _holdable(
-        self, category: str, name: str, size, rests: str, tool: bool = False, used: bool = False
+        self, category: str, name: str, size, rests: str, tool: bool = False, used: bool = False, toy: bool = False
     ) -> bool:
         """What :meth:`_handheld` says of a thing of this category, name, size and rest; with
         ``tool``, what a person works with in hand ("stirs it with a long paddle", "peers through
         a telescope"): up to ``_TOOL_SIZE`` long, and nothing one sits or rides on ("rows with a
         canoe" is no paddle); with ``used``, what a person has in hand while doing something with
         it: a hand-sized thing, no bigger than ``_HAND_VOLUME`` ("inspects a lantern"; "inspects a
-        crate" is done by the crate), or one of unknown size ("reads a comic")."""
+        crate" is done by the crate), or one of unknown size ("reads a comic"). A ``toy`` or model of a
+        living thing of this ``size`` is held when it is as small as a thing in hand ("hugs a toy penguin")."""
+        if toy:
+            return max(size) <= _HANDHELD_SIZE
         if self._lives(category):
             return False
         if load_vocabulary().carried_by_hand(category, name):
