@@ -493,3 +493,13 @@ def test_a_thing_with_a_ring_round_it_keeps_room_for_the_ring_from_what_it_stand
     fire = o["campfire_1"]
     assert all(_gap(o[f"log_{k}"], fire) < 1.0 for k in range(1, 5))
     assert all(rel.check("in front of", fire, o[t]) for t in ("tent_1", "tent_2"))
+
+
+def test_a_big_building_tied_to_nothing_stands_behind_the_groups():
+    """A ski village: the 8 m chalet the text puts by nothing stood among the groups (beside them,
+    or in front); set out like tall storage, it closes the back."""
+    o = _by_id(initial_objects(parse_scene(
+        "A snowy village. A wooden chalet stands at the foot of the slope. Three skiers chat beside a sled. "
+        "Two children build a snowman near a bench. A man chops logs beside a shed, and a woman waits by a lamp post.")))
+    chalet = o.pop("chalet_1")
+    assert all(x.position.y < chalet.position.y for x in o.values())

@@ -370,3 +370,8 @@ def test_a_fronted_either_side_gives_one_a_side(text):
 def test_swords_crossed_are_no_ground_to_stand_on():
     assert not any(r.relation == "on" and r.target.startswith("sword")
                    for r in parse_scene("Two knights cross swords on the drawbridge.").relations)
+
+
+def test_teams_counted_by_members_are_no_things_of_the_verb():
+    """"Two teams of three play under the hoop": six "play" things were read after the count."""
+    assert {o.name for o in parse_scene("A park. Two teams of three play under the hoop.").objects} == {"team", "hoop"}

@@ -2019,3 +2019,100 @@ def test_someone_whose_body_part_is_worked_on_is_there():
     assert {o.name for o in got.objects} == {"barber", "man"}
     assert ("barber_1", "near", "man_1") in {(r.source, r.relation, r.target) for r in got.relations}
     assert "dog" not in names("A dog's bowl sits by the door.")  # (a thing's owner is no part's)
+
+
+def test_a_landform_that_rises_somewhere_is_a_thing_at_the_back():
+    """"A large dune rises behind the camp" was lost as a place word; behind the setting is its back."""
+    (dune,) = [o for o in parse_scene("A desert camp. Three camels rest by a tent, and a large dune rises behind the camp.").objects
+               if o.category == "rock"]
+    assert dune.name == "large dune" and dune.anchor == "back"
+    assert "hill" not in names("A village where a hill rises over the roofs.")  # (the opening's own view)
+
+
+def test_a_place_word_with_parts_that_stands_somewhere_is_a_thing():
+    """"A wooden castle with two towers stands on a rug": the castle (its towers are its parts), not the setting."""
+    got = parse_scene("A playroom. A wooden castle with two towers stands on a rug, and a toy dragon perches on the left tower.")
+    assert Counter(o.category for o in got.objects) == Counter({"building": 1, "rug": 1, "animal": 1})
+    rel = {(r.source, r.relation, r.target) for r in got.relations}
+    assert {("castle_1", "on", "rug_1"), ("toy_dragon_1", "on", "castle_1")} <= rel
+    assert "church" in names("A village. A church with a tall tower stands on the green.")
+    # (a kind of tower is a building of its own: "the control tower" of an airfield, "its back seat" a part)
+    assert "control tower" in names("A plane stands by the hangar between the hangar and the control tower.")
+
+
+def test_a_building_stated_on_a_rug_is_a_toy():
+    castle, rug = parse_scene("A playroom. A wooden castle stands on a rug.").objects
+    assert max(castle.size[:2]) <= min(rug.size[:2])
+
+
+def test_a_role_after_as_its_is_no_one_new():
+    assert names("A playroom. A teddy bear sits beside the catapult as its commander.") == {"teddy bear", "catapult"}
+
+
+def test_a_rack_named_by_what_it_holds():
+    assert objects("A lab. A rack of test tubes sits on the bench.")[("flask", "tubes")] == 1
+    got = parse_scene("A ski shop. Racks of skis line the left wall.")
+    assert {"skis", "shop_shelf"} <= {o.category for o in got.objects}
+
+
+def test_a_participle_after_a_noun_names_no_kind_of_what_it_acts_on():
+    assert "lettuce" in names("An allotment. His wife kneels beside a raised bed planting lettuces.")
+
+
+def test_a_film_set_is_a_setting_and_a_soundstage_is_indoors():
+    got = parse_scene("A film set on a soundstage. A director sits in a folding chair behind the camera.")
+    assert got.indoor and "film" not in {o.name for o in got.objects}
+
+
+def test_a_thing_the_size_of_another_takes_its_size():
+    (sphinx,) = parse_scene("An oasis. A stone sphinx the size of a house crouches across the only road.").objects
+    assert sphinx.category == "statue" and max(sphinx.size) >= 6
+    (dog,) = parse_scene("A yard. A dog the size of a pony sleeps on the grass.").objects
+    assert max(dog.size) > 1.5
+
+
+@pytest.mark.parametrize("text, category, word", [
+    ("A reading nook. A stack of comics leans against the wall.", "books", "comics"),
+    ("A kitchen. A pair of sea boots stands by the stove.", "tool", "boot"),
+    ("A garage. A red tool cabinet stands against the wall.", "cabinet", "cabinet"),
+])
+def test_words_of_this_round_name_their_things(text, category, word):
+    assert objects(text)[(category, word)] >= 1
+
+
+def test_a_hyphened_participle_makes_a_look_not_a_thing():
+    assert names("A candle-lit wine cellar. A sommelier stands by a table.") == {"sommelier", "table"}
+
+
+def test_the_owner_of_a_wounded_part_is_there():
+    got = parse_scene("A mountain hut. A rescuer bandages a climber's ankle on a cot.")
+    assert {o.name for o in got.objects} == {"rescuer", "climber", "cot"}
+    assert ("climber_1", "on", "crib_1") in {(r.source, r.relation, r.target) for r in got.relations}
+
+
+def test_a_train_carriage_is_an_indoor_setting():
+    got = parse_scene("A crowded tube carriage. Commuters stand by the doors, and a busker plays an accordion.")
+    assert got.indoor and "carriage" not in {o.name for o in got.objects}
+
+
+def test_a_coral_tower_is_coral_not_a_building():
+    assert objects("A reef. A school of fish swirls around a pink coral tower.")[("bush", "tower")] == 1
+
+
+def test_two_joined_by_and_without_an_article_share_the_verb():
+    assert names("A campsite. A father and daughter toast marshmallows over a campfire.") == {"father", "daughter", "campfire"}
+
+
+def test_a_body_part_after_his_is_no_thing():
+    assert "palm" not in names("A library. A wizard floats above a desk, a glowing orb hovering over his palm.")
+
+
+def test_what_is_recited_is_no_thing():
+    assert names("A longhouse. A skald recites a saga by the central hearth.") == {"skald", "hearth"}
+
+
+def test_a_building_the_opening_names_and_the_text_goes_inside_is_the_setting():
+    got = parse_scene("A farrier's shoeing barn on a wet morning. A grey cob horse stands in the middle of the barn.")
+    assert got.places == ["barn"] and {o.category for o in got.objects} == {"horse"}
+    # (seen from outside it is a building of the scene)
+    assert "barn" in names("A red barn on a wet morning. Two cows graze beside the barn.")

@@ -2055,3 +2055,56 @@ def test_what_a_setting_holds_keeps_its_own_place():
     rel = {(r.source, r.relation, r.target) for r in parse_scene(
         "A museum gallery displays a dinosaur skeleton on a plinth.").relations}
     assert ("dinosaur_skeleton_1", "on", "pedestal_1") in rel
+
+
+def test_a_with_things_chain_is_theirs_not_the_heads():
+    """"with two rugs at his feet and a brass teapot on a tray in front of him": the tray is in front of him."""
+    got = rels("A tent. A merchant sits beside his tent, with two rugs at his feet and a brass teapot on a tray in front of him.")
+    assert {("plate_1", "in front of", "merchant_1"), ("pot_1", "on", "plate_1")} <= got
+
+
+def test_a_with_thing_beside_it_covered_in_things_holds_them():
+    got = rels("A garage. A tool chest stands against the back wall, with a workbench beside it covered in spanners.")
+    assert ("spanner_1", "on", "lab_bench_1") in got and ("spanner_1", "on", "treasure_chest_1") not in got
+
+
+def test_the_left_one_of_a_noun_is_that_noun():
+    assert ("toy_dragon_1", "on", "tower_1") in rels("A playroom. Two towers stand on a rug, and a toy dragon perches on the left tower.")
+
+
+def test_a_phrase_chains_past_what_its_target_holds():
+    got = rels("A surgery. A nurse stands by a tray of instruments on a trolley.")
+    assert ("plate_1", "on", "shopping_cart_1") in got and ("nurse_1", "on", "shopping_cart_1") not in got
+
+
+def test_a_wall_or_fence_that_runs_along_the_back_is_at_the_back():
+    (fence,) = parse_scene("A garden. A bamboo fence runs along the back of the garden.").objects
+    assert fence.anchor == "back"
+
+
+def test_at_the_edge_of_a_table_is_on_it():
+    assert ("cup_1", "on", "lab_bench_1") in rels("A workshop. A cup of cold tea sits at the edge of the workbench.")
+    assert ("horse_1", "on", "pond_1") not in rels("A forest. A deer grazes at the edge of the pond.")
+
+
+def test_one_who_watches_from_a_blanket_is_on_it():
+    assert ("family_1", "on", "picnic_blanket_1") in rels("A field. A family watches from a picnic blanket near the fence.")
+
+
+def test_a_corner_seat_is_a_seat_not_the_rooms_corner():
+    assert ("man_1", "on", "chair_1") in rels("A train. An old man dozes in a corner seat with a newspaper on his lap.")
+
+
+def test_people_over_a_campfire_are_by_it():
+    got = rels("A campsite. A father and daughter toast marshmallows over a campfire.")
+    assert {("father_1", "near", "campfire_1"), ("daughter_1", "near", "campfire_1")} <= got
+
+
+def test_one_asleep_under_a_blanket_in_a_bed_is_on_the_bed():
+    got = rels("A ward. Four beds stand in a row, each with a patient asleep under a white blanket.")
+    assert ("patient_1", "on", "bed_1") in got and not any(r[0] == "patient_1" and r[2] == "picnic_blanket_1" for r in got)
+
+
+def test_posing_on_a_chaise_longue_is_on_a_sofa():
+    assert ("noblewoman_1", "on", "chaise_longue_1") in rels("A studio. A noblewoman poses on a velvet chaise longue.")
+

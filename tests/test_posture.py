@@ -132,3 +132,10 @@ def test_a_long_flat_thing_leant_against_a_wall_stands_on_its_end():
 def test_one_who_rides_on_nothing_named_stands():
     sizes = {o.name: o.size for o in pose(parse_scene("A cyclist rides past the newsstand. A knight rides a horse."))}
     assert sizes["cyclist"][2] > 1.5 and sizes["knight"][2] < 1.2
+
+
+def test_a_toy_figure_stands_as_it_was_made():
+    """Six toy knights guarding a toy castle on a rug lay flat on it, as people on a rug may."""
+    parsed = parse_scene("A playroom. Six toy knights wait on the rug in front of a wooden castle.")
+    knights = [o for o in parsed.objects if o.name == "toy knight"]
+    assert knights and all(posture_of(parsed, o) is None for o in knights)

@@ -89,7 +89,9 @@ def compose(parsed: ParsedScene, seed: int = 0) -> Composition:
             p = layout.placed[centre]  # the member the text puts in the middle stands there
             layout.move(unit, -p.x, -p.y)
             core.insert(0, unit)
-        elif unit.turnable and not unit.partners and (kind in roles.EDGE_STORAGE or anchor in edges.ANCHORED):
+        elif unit.turnable and not unit.partners and (
+            kind in roles.EDGE_STORAGE or anchor in edges.ANCHORED or edges.backdrop(layout, unit)
+        ):
             storage.append(unit)
         elif unit.turnable and not unit.partners and kind in roles.VEHICLES:
             vehicles.append(unit)

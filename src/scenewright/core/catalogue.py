@@ -230,8 +230,8 @@ def match_phrase(tokens: tuple[str, ...]) -> str | None:
         return index[single]
     if len(tokens) >= 3 and tokens[1] == "of":  # "suits of armour", "chests of drawers"
         found = index.get((singular(tokens[0]), *tokens[1:]))
-        if found is None and len(tokens) == 3:  # "a rack of dumbbells" is a dumbbell rack
-            found = index.get((singular(tokens[2]), singular(tokens[0])))
+        if found is None and len(tokens) <= 4:  # "a rack of dumbbells" is a dumbbell rack ("of test tubes" too)
+            found = index.get((*tokens[2:-1], singular(tokens[-1]), singular(tokens[0])))
         return found
     return None
 

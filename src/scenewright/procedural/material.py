@@ -91,7 +91,8 @@ _UPHOLSTERED = {"fabric", "leather"}
 
 #: Roles of living or elemental things: "an oak tree" names a species, not a wood finish,
 #: so material words never apply to them (colour words still do: "a red maple").
-_NATURAL = {"leaf", "pine_leaf", "blossom", "bark", "flower", "flower_alt", "fur", "water", "flame", "light", "soil"}
+_NATURAL = {"leaf", "pine_leaf", "blossom", "bark", "flower", "flower_alt", "fur", "water", "flame", "light", "soil",
+            "sand"}  # fmt: skip
 
 
 def described_surfaces(

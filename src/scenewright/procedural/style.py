@@ -65,6 +65,7 @@ ROLES: dict[str, Surface] = {
     "flower": Surface((0.85, 0.25, 0.35), 0.0, 0.7),
     "blossom": Surface((0.95, 0.62, 0.76), 0.0, 0.8),
     "soil": Surface((0.28, 0.2, 0.14), 0.0, 1.0),
+    "sand": Surface((0.86, 0.72, 0.48), 0.0, 1.0),
     "water": Surface((0.25, 0.5, 0.65), 0.0, 0.05, alpha=0.75),
     "paper": Surface((0.92, 0.9, 0.84), 0.0, 0.9),
     "canvas": Surface((0.85, 0.2, 0.18), 0.0, 0.9),

@@ -26,6 +26,19 @@ EDGES = {"back": (0.0, (0.0, 1.0)), "left": (90.0, (-1.0, 0.0)), "right": (-90.0
 ANCHORED = frozenset({"wall", "corner", "back"})
 
 
+#: How tall, or how wide a ground, a building or a landform tied to nothing is to stand at the
+#: edges as a backdrop (an 8 m chalet among the skiers hides them; a 2 m shed does not).
+BACKDROP_HEIGHT = 4.0
+BACKDROP_AREA = 40.0
+
+
+def backdrop(layout: Layout, unit: Unit) -> bool:
+    """Whether the unit is a big building or landform (``roles.BACKDROPS``) that goes to the
+    edges with the tall storage, behind the groups the text relates, not packed in front of them."""
+    w, d, h = layout.by_id[unit.root].size
+    return layout.kind(unit.root) in roles.BACKDROPS and (h >= BACKDROP_HEIGHT or w * d >= BACKDROP_AREA)
+
+
 def share(count: int, back_free: bool = True) -> list[str]:
     """Which edge each of ``count`` storage pieces goes to, in order; when a bed's head takes
     the back, the sides come first."""

@@ -99,8 +99,8 @@ def posture_of(parsed: ParsedScene, obj: ParsedObject) -> str | None:
     alone is lying unless the host is a seat ("dozes in the armchair" sits). On a vehicle or a
     ridden animal a person sits unless the sentence has them stand ("standing on its bonnet").
     """
-    if obj.category not in _FIGURES:
-        return None
+    if obj.category not in _FIGURES or set(obj.name.lower().split()) & load_vocabulary().replica_words:
+        return None  # (a toy knight stands as it was made, on the rug or anywhere)
     clause = _clause_of(parsed, obj)
     if "kneeling" in (posture_in(clause), posture_in(obj.description)):
         return "kneeling"  # on whatever carries them ("kneels on a tatami mat")

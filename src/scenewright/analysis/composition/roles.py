@@ -50,6 +50,10 @@ EDGE_STORAGE = frozenset({
     "whiteboard", "water_cooler", "display_case", "vending_machine", "counter", "shower",
     "washing_machine", "dishwasher", "stove", "sink", "curtain", "easel", "fireplace", "tv_stand",
 })  # fmt: skip
+#: Buildings and landforms that, big and tied to nothing, stand behind the scene's groups, not among them.
+BACKDROPS = frozenset({
+    "house", "building", "warehouse", "barn", "greenhouse", "lighthouse", "windmill", "tower", "rock",
+})  # fmt: skip
 RUGS = frozenset({"rug"})
 FLOOR_LAMPS = frozenset({"floor_lamp", "torch", "coat_rack"})
 #: Grown or found things, scattered with Poisson-disc spacing.

@@ -159,7 +159,10 @@ class _Contents:
             return not alive
         if self._listed_content(m.start):
             return not alive  # "crates overflow with apples, pumpkins and carrots"
-        flat = prev.category in _FLAT_HOLDERS or vehicle
+        # ("racks of skis", "shelves of dusty jars": what the shelves hold stands on them)
+        shelved = host.shape in ("bookshelf", "shop_shelf") and max(self._size(m)) >= _SHELF_LOAD_SIZE
+        shelved = shelved and not self._lives(m.category)  # ("a rack of resistance bands": no band of people)
+        flat = prev.category in _FLAT_HOLDERS or vehicle or shelved
         if w == "of" and prev.end == j and flat and not m.definite:
             self.held_of.append((m.start, prev.start))  # "a tray of medicine bottles", "a trolley of books": on it
             self.aboard.add(m.start)

@@ -363,6 +363,8 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
             continue  # "three guards play dice around a barrel": a game, not its pieces
         if _fire_in_hearth(toks, s, e):
             continue  # "a fire crackles in the fireplace": the fireplace's own fire
+        if e - s == 1 and s > 0 and toks[s - 1].text in ("his", "her", "their") and words[0] in vocabulary.body_parts:
+            continue  # "an orb hovering over his palm": a part of him, no palm tree
         # (a word nobody listed that the guess makes a person by the verb after it is worn too: "a grower
         # in a hairnet kneels")
         unlisted = entry is not None and (entry.category == GENERIC or vocabulary.match(tuple(words)) is None)
@@ -431,8 +433,10 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         if entry is None and k > 0 and raw[k - 1][1] == s and _plural_subject_before(toks, raw[k - 1], e):
             continue  # "two kids fish from the pier", "the children swing on the gate": a verb here
         follow = toks[e].text if e < n else ""
-        if e < n and toks[e].joined and (toks[e].text in _LIKENESS or toks[e].text.endswith(("ing", "ed"))):
-            continue  # "a mushroom-shaped lamp", "a goldfish-scooping stall", "glass-domed huts": a look or a use
+        participle = toks[e].text.endswith(("ing", "ed")) or toks[e].text in _IRREGULAR_PARTICIPLES if e < n else False
+        if e < n and toks[e].joined and (toks[e].text in _LIKENESS or participle):
+            continue  # "a mushroom-shaped lamp", "a goldfish-scooping stall", "glass-domed huts", "a candle-lit
+            # cellar": a look or a use
         if follow in ("style", "styled"):
             continue  # "a tower room in oil-painting style": a look, no painting
         # "three sheep graze": after a count, a compound would end in a plural ("three fish tanks")
@@ -462,7 +466,10 @@ def _find_mentions(toks: list[_Tok]) -> tuple[list[_Mention], list[str]]:
         article = _phrase_opener(toks, s)
         plural_verb = singular(follow) != follow and article >= 0 and toks[article].text in _SINGULAR_DETERMINERS
         # ("two friends lounge in the tub": a counted plural names no kind of lounge either)
-        if placed_kind and (follow in _VENUES or follow in vocabulary.places or follow_two in vocabulary.places) or (
+        # ("a film set on a soundstage": the two words name the place)
+        named = follow in _VENUES or follow in vocabulary.places or follow_two in vocabulary.places
+        named = named or f"{words[-1]} {follow}" in vocabulary.places and singular(words[-1]) not in vocabulary.places
+        if placed_kind and named or (
             follow and singular(follow) in _VENUES and len(words) == 1
             and not plural_verb and not _counted_plural(toks, s)
         ) or _names_place_after(toks, e):
@@ -786,28 +793,36 @@ _HOUSES = ("house", "building")
 def _owned_part(toks: list[_Tok], s: int, e: int, mentions: list[_Mention]) -> bool:
     """A part word after "its"/"their" (``part_owners``: "its screens", "its counter", "the
     truck's ... its cab") when a thing named before has such a part, or in the "with" part of
-    such a thing ("a log cabin with a stone chimney"): that thing's part, which the relation
-    reading maps to its owner, not a thing of its own."""
+    such a thing ("a log cabin with a stone chimney", "a castle with two towers"): that thing's
+    part, which the relation reading maps to its owner, not a thing of its own."""
     if e - s != 1 or s == 0:
         return False
     owners = load_vocabulary().part_owners.get(singular(toks[s].text))
     catalogue = load_catalogue()
+    head = singular(toks[s].text)
     if not owners:
         return False
     if toks[s - 1].text in ("its", "their"):
         return any(m.category in owners or catalogue[m.category].shape in owners for m in mentions)
-    head = singular(toks[s].text)
-    if toks[s - 1].text == "the" and not any(singular(toks[m.end - 1].text) == head for m in mentions):
+    article = s - 1 - (s > 1 and toks[s - 1].text in _PART_SIDES)  # ("the left tower")
+    if toks[article].text == "the" and not any(singular(toks[m.end - 1].text) == head for m in mentions):
         # "a cabin ... smoke rises from the chimney": the part of a building named before that has one
         houses = [m for m in mentions if catalogue[m.category].shape in _HOUSES]
         return any(m.category in owners or catalogue[m.category].shape in owners for m in houses)
-    j = s - 1
-    while j > 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
-        j -= 1  # back over its describing words ("a smoking chimney")
-    if toks[j].text not in ("a", "an") or j == 0 or toks[j - 1].text != "with" or not mentions:
+    j = _with_article(toks, s)
+    if not j or not mentions:
         return False
     owner = mentions[-1]
     return owner.end == j - 1 and (owner.category in owners or catalogue[owner.category].shape in owners)
+
+
+def _with_article(toks: list[_Tok], s: int) -> int:
+    """Where the article or count of a with-part's noun at ``s`` stands ("with a smoking chimney",
+    "with two towers", "with four wheels"), else 0."""
+    j = s - 1
+    while j > 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+        j -= 1  # back over its describing words ("a smoking chimney")
+    return j if j > 0 and toks[j].text in ("a", "an", *_NUMBERS) and toks[j - 1].text == "with" else 0
 
 
 #: Side words before a part that say which one it is ("the back seat of the car").
@@ -993,7 +1008,7 @@ def _role_after_as(toks: list[_Tok], s: int, category: str) -> bool:
     "as well as a lamp" or "such as a lamp"."""
     j = s - 1
     while j >= 0 and s - j <= 3 and toks[j].text not in ("as", "to", "by") and toks[j].text[:1].isalpha() and (
-        toks[j].text in ("a", "an", "the", "her", "his", "their") or toks[j].text not in _STOP
+        toks[j].text in ("a", "an", "the", "her", "his", "their", "its") or toks[j].text not in _STOP
     ):
         j -= 1
     owner = category == GENERIC or load_catalogue()[category].shape in ("figure", "animal")
@@ -1356,13 +1371,16 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     # hanging from its eaves stands behind the pond")
     if e < len(toks) and toks[e].text in _PLACE_OPENERS and (j < 0 or toks[j].text not in ("and", ",")):
         starts = {r[0] for r in later}
+        named = {i for r in later for i in range(r[0], r[1])}
+        holds = False
         k = e + 1
         while k < len(toks) and toks[k].text not in (".", "!", "?", ";"):
-            if k in starts:
-                return True  # the with-part names a thing: the place holds the scene
-            if _verb_word(toks[k].text):
-                break
+            holds = holds or k in starts  # the with-part names a thing: the place holds the scene ...
+            if _verb_word(toks[k].text) and k not in named:
+                # (... unless it stands somewhere itself: "A castle with two towers stands on a rug.")
+                return holds and toks[k].text not in _PLACING_VERBS
             k += 1
+        return holds
     return False
 
 
@@ -1406,6 +1424,8 @@ def _opening_setting(toks: list[_Tok], s: int, e: int) -> bool:
     pond", "a barn with a tractor beside it" name a thing of it)."""
     if not _verbless_opening(toks, s) or any(t.text in (",", ":", ";", "with", "and") for t in toks[:s]):
         return False
+    if any(t.text in (".", "!", "?") for t in toks[:s]) and _opening_place_word(toks) is not None:
+        return False  # "A playroom. A wooden castle with two towers stands on a rug.": the setting was named
     if e < len(toks) and toks[e].text == "of":
         return False  # "the captain's cabin of a sailing ship": whose it is decides (_opening_place)
     k = e
@@ -1426,9 +1446,19 @@ def _opening_setting(toks: list[_Tok], s: int, e: int) -> bool:
         head = singular(toks[e - 1].text)
         later = toks[k + 1 :]
         listed = any(t.text in ("and", ",") for t in toks[e:k])  # ("A garden shed and a mower.": things)
-        again = any(singular(t.text.removesuffix("'s")) == head for t in later)
+        # (from inside it is the setting still: "a horse stands in the middle of the barn")
+        again = any(singular(t.text.removesuffix("'s")) == head and not _seen_inside(toks, i)
+                    for i, t in enumerate(later, start=k + 1))
         return bool(later) and not listed and not again and later[0].text not in ("it", "its")
     return k < len(toks) and toks[k].text == ":"
+
+
+def _seen_inside(toks: list[_Tok], i: int) -> bool:
+    """The building named at ``i`` is seen from inside: "in the barn", "in the middle of the barn"."""
+    j = i - 1
+    while j >= 0 and toks[j].text in _DETERMINERS:
+        j -= 1
+    return j >= 0 and (toks[j].text in _INSIDE or _inner_part_of(toks, j))
 
 
 def _opening_place_word(toks: list[_Tok]) -> str | None:
@@ -1651,7 +1681,7 @@ def _unknown_nouns(toks: list[_Tok], raw: list[tuple[int, int, str, Entry | None
         people_of = i + 1 < n and singular(toks[i + 1].text) != toks[i + 1].text and (
             wordnet.kind_of_sense(singular(toks[i + 1].text)) == "noun.person"
         )  # ("a pipe band of six pipers": the people it is of)
-        counted = w in _NUMBERS and i > 1 and toks[i - 1].text == "of" and toks[i - 2].text in _PEOPLE_GROUPS
+        counted = w in _NUMBERS and i > 1 and toks[i - 1].text == "of" and singular(toks[i - 2].text) in _PEOPLE_GROUPS
         if counted and not people_of:
             continue  # "a family of four shelters under the awning": how many, then the verb
         if (w in _NUMBERS or w.isdigit()) and i + 1 < n and toks[i + 1].text in _UNITS:
@@ -1841,8 +1871,12 @@ def _no_noun_after(toks: list[_Tok], k: int, noun: str) -> bool:
 
 def _opens_a_phrase_after(toks: list[_Tok], k: int) -> bool:
     """The word at ``k`` comes right before a count or an article, as a verb does before its
-    subject or object ("beside the table work two nurses"), never a noun of the phrase before."""
-    return k + 1 < len(toks) and not toks[k].joined and (toks[k + 1].text in _NUMBERS or toks[k + 1].text in ("a", "an", "the"))
+    subject or object ("beside the table work two nurses"), never a noun of the phrase before; not
+    before a measure it is compared by ("a stone sphinx the size of a house")."""
+    measure = [t.text for t in toks[k + 1 : k + 4]] in (["the", w, "of"] for w in ("size", "height", "length", "width"))
+    return k + 1 < len(toks) and not toks[k].joined and not measure and (
+        toks[k + 1].text in _NUMBERS or toks[k + 1].text in ("a", "an", "the")
+    )
 
 
 def _inverted_subject(toks: list[_Tok], k: int) -> bool:
@@ -2091,13 +2125,36 @@ def _by_landform(toks: list[_Tok], k: int) -> bool:
     )
 
 
+#: Verbs of a landform that stands in the scene as its subject: "a large dune rises behind the camp".
+_LANDFORM_VERBS = {"rises", "looms", "towers", "rears", "stands", "slopes", "climbs"}
+
+
+def _risen_landform(toks: list[_Tok], k: int) -> int | None:
+    """The landform at ``k`` opens a clause after the first words, the subject of
+    ``_LANDFORM_VERBS``: a thing of the scene ("A desert camp. A large dune rises behind it"; not "A
+    village where a mountain rises ..."). Where its phrase starts, after the article."""
+    if k + 1 >= len(toks) or toks[k + 1].text not in _LANDFORM_VERBS:
+        return None
+    j = k - 1
+    while j >= 0 and toks[j].text[:1].isalpha() and toks[j].text not in _STOP:
+        j -= 1
+    risen = j > 0 and toks[j].text in ("a", "an") and toks[j - 1].text in (".", ",", ";", "and", "!")
+    return j + 1 if risen else None
+
+
 def _landforms(toks: list[_Tok], covered: set[int]) -> list:
     """A hill, a dune or a cliff sets the scene, but one the text puts a thing on top of or at
-    the foot of is a thing of the scene ("a dragon sleeps on top of a flat-topped hill"); not
-    "at the top of the slope", a part of the place; nor one a thing is by or over (``_by_landform``)."""
+    the foot of is a thing of the scene ("a dragon sleeps on top of a flat-topped hill"), and so is
+    one that rises somewhere (``_risen_landform``); not "at the top of the slope", a part of the
+    place; nor one a thing is by or over (``_by_landform``)."""
     forms = load_vocabulary().landforms
     out: list = []
     for k in range(1, len(toks)):
+        risen = _risen_landform(toks, k) if k not in covered and singular(toks[k].text) in forms else None
+        if risen is not None:
+            out.append((risen, k + 1, forms[singular(toks[k].text)].category, forms[singular(toks[k].text)]))
+            covered.add(k)
+            continue
         if not (k >= 2 and _landform_part(toks, k) or _by_landform(toks, k)):
             continue
         j = k + 1
@@ -2591,12 +2648,16 @@ _STANDING = {"parked", "moored", "propped", "standing", "lying", "resting", "lea
 
 def _joint_verb(toks: list[_Tok], k: int, category: str) -> bool:
     """The bare word at ``k`` follows a one-word living thing joined by "and" to one before it
-    ("a goat and her kid", "the boy and his dog"): the two make a plural subject, so the word,
-    with a preposition or an object after it, is their verb."""
+    ("a goat and her kid", "the boy and his dog", "a father and daughter"): the two make a plural
+    subject, so the word, with a preposition or an object after it, is their verb."""
     s = k - 1
-    if s < 2 or toks[s - 2].text != "and" or toks[s - 1].text not in _DETERMINERS or k + 1 >= len(toks):
+    bare = s >= 1 and toks[s - 1].text == "and"
+    joined = s >= 2 and toks[s - 2].text == "and" and toks[s - 1].text in _DETERMINERS or bare
+    if not joined or k + 1 >= len(toks):
         return False
     word, after = toks[k].text, toks[k + 1].text
+    if bare and not (after in _DETERMINERS or singular(after) != after and after not in _FINITE):
+        return False  # (with no article, only an object says it: "a cat and mouse game is painted")
     # (its object: a preposition, a determiner or a bare plural, "fold towels"; not a verb of
     # one subject, "and a snake charmer plays", "stands")
     vocabulary = load_vocabulary()

@@ -12,10 +12,12 @@ from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
 
+from scenewright.analysis.parser import wordnet
 from scenewright.analysis.parser.sizes import _NUM_WORD
 from scenewright.analysis.parser.tokens import _Tok
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import _DEFINITE, _STOP, _UNITS, _is_verb
+from scenewright.core.catalogue import load_catalogue, match_phrase, singular
 from scenewright.core.relations import FAR, NEAR
 
 
@@ -111,18 +113,24 @@ def _rows_at(toks: list[_Tok], i: int) -> _Rel | None:
 
 
 def _qualifies_noun(toks: list[_Tok], end: int, kind: str) -> bool:
-    """"on the left wall", "on the left bench", "on the left one": the side word is the next noun's adjective, so
-    the phrase is only its preposition (a wall is no object: nothing is left of anything).
+    """"on the left wall", "on the left bench", "on the left one", "in a corner seat": the side word is
+    the next noun's adjective, so the phrase is only its preposition (a wall is no object: nothing
+    is left of anything).
     "A ring of stones", "two circles of chairs": a verb of going around that is also a noun is
     the noun before its "of". "In the front row": the row's adjective."""
     if kind == "around" and end < len(toks) and toks[end].text == "of":
         return True
     if kind.startswith("anchor") and end < len(toks) and toks[end].text in ("row", "rows"):
         return True  # "sits in the front row": a row of seats, not the front of the room
+    if kind == "anchor corner" and end < len(toks) and toks[end - 1].text == "corner" and not toks[end].joined:
+        seat = match_phrase((toks[end].text,))
+        return seat is not None and load_catalogue()[seat].shape in ("chair", "sofa", "bench", "stool", "armchair")
     if kind not in ("left", "right") or end >= len(toks):
         return False
     w = toks[end].text
-    return w in ("one", "ones") or (w[0].isalpha() and w not in _STOP and not _is_verb(w))  # ("on the left one")
+    # ("on the left tower": a singular chiefly a noun; "on the left stands a lamp", "on the left sit two boys": verbs)
+    noun = not _is_verb(w) or singular(w) == w and not wordnet.rather_verb(w)
+    return w in ("one", "ones") or (w[0].isalpha() and w not in _STOP and noun)  # ("on the left one")
 
 
 #: Words that open a noun phrase: a phrase word right after one is a noun's own word ("a border
@@ -158,8 +166,8 @@ def _find_relations(toks: list[_Tok], taken: set[int]) -> list[_Rel]:
         hit = _distance_at(toks, i) or _rows_at(toks, i)
         if hit is None and (hit := _listed_at(toks, i, taken)) is not None and hit.end - hit.start > 1:
             side = _listed_at(toks, hit.end - 1, taken)
-            if side is not None and side.kind in _SIDE_KINDS:
-                hit = side  # "reads to the right of", "waves at her left": the side phrase
+            if side is not None and (side.kind in _SIDE_KINDS or side.kind.startswith("anchor")):
+                hit = side  # "reads to the right of", "waves at her left", "runs along the back": the side phrase
         if hit:
             rels.append(hit)
             i = hit.end

@@ -270,8 +270,11 @@ class _Phrase:
     riders: list[int] = field(default_factory=list)
 
 
+#: What covers a sleeper ("under a blanket"): over them where they lie, no place of its own to be by.
+_COVERS = frozenset({"picnic_blanket", "rug", "towel"})
 #: Verbs after which "over" a thing is by it, bent or quarrelling over it, not up on it.
-_OVER_VERBS = {"haggle", "argue", "quarrel", "bicker", "squabble", "fight", "bend", "lean", "hunch", "pore", "stoop"}
+_OVER_VERBS = {"haggle", "argue", "quarrel", "bicker", "squabble", "fight", "bend", "lean", "hunch", "pore", "stoop",
+               "toast", "roast", "warm", "cook", "huddle", "crouch"}  # fmt: skip
 #: Machines that carry things as a person has them in hand ("a drone carrying a crate").
 _MACHINE_BEARERS = frozenset({"robot", "drone"})
 #: Machines that lift what they act on, and the verbs of it: the load hangs on them ("a crane swings a block").
@@ -422,6 +425,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         gerund = m.guess is not None and last.endswith("ing") and last not in vocabulary.adjectives
         # (inside the phrase, not a participle after the noun before: "statues holding axes")
         gerund = gerund and not self._lives(m.category) and _opens_phrase(self.toks, m.start - 1)
+        # ("a raised bed planting lettuces": right after a noun, its participle)
+        gerund = gerund and not any(o.end == m.start - 1 for o in self.by_start.values())
         if not kind and last and kind_here and (not vocabulary.is_adjective(last) or gerund) and (
             m.guess is not None or last not in vocabulary.not_things or likeness
         ):  # "a street musician", "a golf cart", "a taiko drum": the noun before names its kind
@@ -1023,15 +1028,17 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             return None
         while k < len(self.toks) and self.toks[k].text in _DETERMINERS:
             k += 1
-        j = k
-        while j + 1 < len(self.toks) and self.toks[j + 1].text[:1].isalpha() and self.toks[j + 1].text not in _STOP:
-            j += 1  # ("a dinner plate": the phrase's last word names it)
-        if j >= len(self.toks) or not self.toks[j].text[:1].isalpha():
+        if k >= len(self.toks) or not self.toks[k].text[:1].isalpha():
             return None
-        phrase = tuple(singular(t.text) for t in self.toks[k : j + 1])
-        category = match_phrase(phrase) or match_phrase(phrase[-1:])
+        category = None
+        j = k
+        while j < min(k + 3, len(self.toks)) and self.toks[j].text[:1].isalpha() and self.toks[j].text not in _STOP:
+            phrase = tuple(singular(t.text) for t in self.toks[k : j + 1])
+            # ("a dinner plate": the phrase's last word names it; "a pony sleeps": its verb names nothing)
+            category = match_phrase(phrase) or match_phrase(phrase[-1:]) or category
+            j += 1
         if category is None:
-            guess = load_vocabulary().guess(phrase[-1])
+            guess = load_vocabulary().guess(singular(self.toks[k].text))
             return None if guess.category == GENERIC else max(guess.size[:2])
         return max(self.catalogue[category].size[:2])
 
@@ -1320,7 +1327,9 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             hoisted = hoisted and not any(j in self.rel_at for j in range(k + 1, ce))
             held_by_verb = (w in _HOLD and k not in self.by_start) or (w, nxt) in _HOLD_PAIRS or hoisted
             if w == "with" or held_by_verb or owns or hand:
-                if w in _HOLD and w.endswith("ing") and c.head is not None and c.wsub:
+                # ("with a workbench beside it covered in spanners": the workbench is covered, not what it is by)
+                laden = (w, nxt) in _HOLD_PAIRS and toks[k - 1].text in ("it", "them")
+                if (w in _HOLD and w.endswith("ing") or laden) and c.head is not None and c.wsub:
                     # "with a small table beside them holding a teapot": the with-thing holds it (what
                     # came with the head before it stays the head's: "a dwarf with an axe and a wizard holding a staff")
                     # (", each holding a camera" after "with six tourists aboard": they stay aboard)
@@ -1328,7 +1337,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                     c.wsub = c.wsub if c.each in holder else c.wsub[:-1]
                     self._close_with(c)
                     c.head, c.wsub, c.hold, c.expect_new = holder, [], True, False
-                    k += 1
+                    k += 2 if laden else 1
                     last_event_end = k
                     continue
                 self._close_with(c)  # "holds a horseshoe with tongs": the horseshoe is held before the tongs come
@@ -1882,13 +1891,18 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # "a horseman waits at its door on a black horse": he rides it, not the barn
             ridden = kind in ("on", "on top") and self._carrier(target[0], ("mounts",)) and self._living(target[0])
             chained = chained and not (ridden and not any(self._living(g) for g in c.last_target))
+        tail = c.last_target_end
+        if 0 <= tail < len(toks) - 1 and toks[tail].text == "of" and tail + 1 in self.by_start:
+            tail = self.by_start[tail + 1].end  # "a tray of instruments on a trolley": what it holds, then the chain
         lined_up = kind in _FORMATIONS and c.target_after_verb and _participle(toks[rel.start].text)
         if lined_up and c.last_target and c.last_target_end == rel.start:
             # "shouts at twenty legionaries lined up in front of him": they stand in the row, and in front of him
             srcs = c.main = list(c.last_target)
-        elif chained and c.last_target and c.last_target_end == last_event_end and all(b in _ADVERBS for b in between):
+        elif chained and c.last_target and tail == last_event_end and all(b in _ADVERBS for b in between):
             srcs = list(c.last_target)
             rider = c.main or ([] if c.first else list(prev_subject))
+            if c.wsub and c.last_srcs and all(g in c.wsub for g in c.last_srcs):
+                rider = list(c.last_srcs)  # "with a teapot on a tray in front of him": the with-part's, not his
             on = [r[1] for r in self.relations if r[0] == "on" and r[2] in c.last_target]
             # the living things the last phrase seated there ride it: "a unicorn rests its head in the
             # lap of a nun who sits on a bench beneath a tree" (the nun), "with three judges sitting on
@@ -2006,7 +2020,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             described = described or passive and c.last_kind in _GROUND_KINDS and c.last_srcs == c.wsub
             if c.wsub and (described or not closed and not c.expect_new and not in_hand and not company):
                 srcs = list(c.wsub)
-                if kind in ("on", "above", "over", "on top", "under") and target is not None:
+                covered = kind == "under" and self._covered(srcs, target)  # (in bed under a blanket: on the bed)
+                if kind in ("on", "above", "over", "on top", "under") and target is not None and not covered:
                     c.wsub_related.update(srcs)  # (not "a dog on a lead": no thing to be on)
             elif not c.wsub and contents and kind == "in" and isinstance(target, list) and target:
                 # "a chalet with geraniums in every window box": what holds the head's contents is
@@ -2073,6 +2088,7 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         lookout = any(t.text == "from" for t in toks[rel.start : rel.end]) and p.part is None
         lookout = lookout and p.body is None and isinstance(target, list) and bool(target)
         lookout = lookout and not self._living(target[0])
+        lookout = lookout and self.groups[target[0]].size[2] > FLAT_HOST  # ("from a picnic blanket": on it)
         if kind == "on" and lookout and srcs and all(self._person_at(g) for g in srcs) and not self._carrier(target[0]):
             kind = "near"  # "the captain watches from a console": at it (from a tower, a rock: up on it)
         if kind in ("on", "in") and srcs and all(self._person_at(g) for g in srcs) and (
@@ -2099,6 +2115,12 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             # on, and a bandstand or a boat they fill they stand in: "a brass band fills the bandstand")
         p.kind, p.srcs = kind, srcs
         return None
+
+    def _covered(self, srcs: list[int], targets) -> bool:
+        """Whether living things are "under" a cover (``_COVERS``): lying under it where they are."""
+        return isinstance(targets, list) and bool(targets) and bool(srcs) and all(
+            isinstance(t, int) and self.groups[t].category in _COVERS for t in targets
+        ) and all(self._living(g) for g in srcs)
 
     def _set_down(self, c: _Clause, host: int) -> None:
         """"A smith strikes a horseshoe on the anvil", "a clerk stamps a letter on the counter": the
@@ -2208,6 +2230,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
         faced = c.last_kind == "face to" and c.last_target_end == rel.start and bool(c.last_target)
         if kind.startswith("anchor ") and faced:
             srcs = list(c.last_target)  # "desks face the teacher's desk at the front": the teacher's desk is there
+        if p.target is None and kind in ("behind", "in front of") and self._setting_after(rel.end, ce):
+            kind = "anchor back" if kind == "behind" else "anchor front"  # "a dune rises behind the camp": at the back
         if kind in _FORMATIONS or kind.startswith("anchor ") or (p.target is None and kind in _PLACE_KINDS):
             # "three stalls stand in a row", "a sofa against the wall", "a rug in the middle of the room"
             place = _PLACE_KINDS.get(kind) or self._anchor_after(rel.end, ce) if not kind.startswith("anchor ") else kind
@@ -2538,6 +2562,8 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
             for g in srcs:  # "an airship floats above the floor": up in the air, over what stands below
                 if not self._living(g):
                     self.groups[g].rests = "hanging"
+        if kind == "under" and self._covered(srcs, targets):
+            return end  # "a patient asleep under a white blanket": covered where they lie, no place by it
         if kind == "on" and target is None and self._on_floor(rel.end):
             for g in srcs:  # "a helmet sits on the floor beneath each peg": on no table or desk
                 if self.groups[g].rests == "surface" and not self._living(g):
@@ -2946,6 +2972,13 @@ class _Reader(_Contents, _References, _Kinds, _Hands):
                 return False
             k += 1
         return False
+
+    def _setting_after(self, start: int, ce: int) -> bool:
+        """The words from ``start`` name the setting ("behind the camp" in "A desert camp"), no thing."""
+        words = [t.text for t in self.toks[start : min(ce, start + 4)]]
+        while words and (words[0] in _DETERMINERS or load_vocabulary().is_adjective(words[0])):
+            words = words[1:]
+        return bool(words) and any(singular(words[0]) == place.split()[-1] for place in self.places)
 
     def _anchor_after(self, start: int, ce: int) -> str | None:
         """The part of the room a phrase with no object names ("along the back wall" → wall)."""

@@ -32,6 +32,7 @@ from scenewright.analysis.parser.support import usual_host
 from scenewright.analysis.parser.vocabulary import load_vocabulary
 from scenewright.analysis.parser.words import (
     ORDINALS,
+    _DEFINITE,
     _DETERMINERS,
     _NUMBERS,
     _ORDINALS,
@@ -39,7 +40,7 @@ from scenewright.analysis.parser.words import (
     _STOP,
     _is_verb,
 )
-from scenewright.core.catalogue import singular
+from scenewright.core.catalogue import match_phrase, singular
 
 if TYPE_CHECKING:
     from scenewright.analysis.parser.reader import _Clause
@@ -342,8 +343,12 @@ class _References:
                 self._part = head
                 return owners[:1], m.end
         owners = load_vocabulary().part_owners.get(head, ())
-        # ("climb the ladders propped against its hull": ladders of their own, set against it)
-        if owners and (m.end >= ce or toks[m.end].text != "of" and toks[m.end].text not in _STANDING):
+        # ("climb the ladders propped against its hull": ladders of their own, set against it; "the
+        # control tower": a kind of its own)
+        before, words = toks[m.start - 1].text, tuple(t.text for t in toks[m.start : m.end])
+        kind = before[:1].isalpha() and before not in (*_DEFINITE, *_SIDE_WORDS) and not load_vocabulary().is_adjective(before)
+        kind = kind or len(words) > 1 and bool(match_phrase(words) or load_vocabulary().match(words))  # "the clock tower"
+        if owners and not (m.modifier or kind) and (m.end >= ce or toks[m.end].text != "of" and toks[m.end].text not in _STANDING):
             # "a tractor drives past, a woman at the wheel": the part of a thing this sentence names
             stop = max((k for k in range(m.start) if toks[k].text in (".", "!", "?")), default=-1)
             here = [n.group for k, n in sorted(self.by_start.items()) if stop < k < m.start and n.group >= 0]

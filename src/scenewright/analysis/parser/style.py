@@ -462,7 +462,7 @@ def detect_water(text: str, indoor: bool) -> bool:
 _ROOM_BAY = (r"(?:repair|loading|troop|medical|med|maintenance|launch|shuttle|service|storage|bomb|drone|mech|"
              r"vehicle|assembly|cargo|docking|hangar|sick|engine|weapons|equipment|landing|hydroponics?) bay")
 #: Places whose setting is a building: a scene "in a hangar" is an interior.
-_INDOOR_PLACES = {"hangar", "warehouse", "factory", "garage", "workshop", "library", "museum", "tavern", "inn", "pub",
+_INDOOR_PLACES = {"soundstage", "carriage", "hangar", "warehouse", "factory", "garage", "workshop", "library", "museum", "tavern", "inn", "pub",
                   "attic", "basement", "cellar", "loft", "lobby", "hallway", "corridor", "chamber", "church",
                   "cathedral", "chapel", "temple", "dungeon", "cell", "crypt", "bunker", "vault", "gym", "spa", "bakery",
                   "salon", "theatre", "theater", "cinema", "ballroom", "lounge", "pantry", "diner", "restaurant",

@@ -229,6 +229,10 @@ _SEAT_SHAPES = ("chair", "armchair", "sofa", "bench", "stool", "office_chair", "
 
 #: Hosts with no top to put things on: people and birds (a horse or a camel can carry a load).
 _NO_TOP = {"figure", "bird", "mannequin", "scarecrow"}
+#: Floor coverings: a building or a vehicle stated on one is a toy (``fit_on_hosts``), this share of its width.
+_COVERINGS = {"rug", "yoga_mat", "picnic_blanket"}
+_BUILT_SHAPES = {"house", "building", "tower", "arch", "car", "truck", "bus", "boat", "tank", "vehicle"}
+_TOY_SHARE = 0.6
 #: The category of a thing nobody listed: its size is a guess, not knowledge.
 _UNKNOWN = "thing"
 #: A host this low is ground-like (a rug, a pond, a pallet, a blanket): anything may stand on it.
@@ -302,6 +306,11 @@ def fit_on_hosts(
             # "a huge copper cauldron on an open fire": a host nobody listed is as wide as what is on it
             need = max(max(thing.size[:2]) / max(host.size[:2]), (thing.size[0] * thing.size[1] / (host.size[0] * host.size[1])) ** 0.5)
             widen[host.group] = max(widen.get(host.group, 1.0), need)
+            continue
+        if host.category in _COVERINGS and catalogue[thing.category].shape in _BUILT_SHAPES and (
+            max(thing.size[:2]) > min(host.size[:2])
+        ):  # "a wooden castle stands on a rug", "a fire engine on the rug": no castle fits on a rug, a toy one does
+            scale[thing.id] = min(scale.get(thing.id, 1.0), _TOY_SHARE * min(host.size[:2]) / max(thing.size[:2]))
             continue
         # a thing nobody listed is as small as its host needs; so is a listed lifeless one the text
         # puts on a standing host ("a marble statue on the bookshelf", "a spaceship on the desk": a

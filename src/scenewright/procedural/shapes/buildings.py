@@ -133,12 +133,13 @@ def _castle(m: Model) -> None:
     corner, a tall keep behind and a gate in the front wall: a castle seen from anywhere."""
     m.main = "stone"
     r = min(0.13 * min(m.sx, m.sy), 0.22 * m.sz)
-    wall_h, t = 0.45 * m.sz, max(0.4, 0.03 * min(m.sx, m.sy))
+    side = min(m.sx, m.sy)  # (walls and battlements no thicker than a tenth of it: a toy castle keeps its shape)
+    wall_h, t = 0.45 * m.sz, min(max(0.4, 0.03 * side), 0.1 * side)
     x0, x1, y0, y1 = -m.sx / 2 + r, m.sx / 2 - r, -m.sy / 2 + r, m.sy / 2 - r
     for lo, hi in (((x0, y0 - t / 2), (x1, y0 + t / 2)), ((x0, y1 - t / 2), (x1, y1 + t / 2)),
                    ((x0 - t / 2, y0), (x0 + t / 2, y1)), ((x1 - t / 2, y0), (x1 + t / 2, y1))):
         m.box("stone", (*lo, 0), (*hi, wall_h), rounded=0.0)
-    merlon = max(0.5, t)  # battlements along the front and back walls
+    merlon = min(max(0.5, t), 0.1 * side)  # battlements along the front and back walls
     for y in (y0, y1):
         n = max(2, int((x1 - x0) / (2 * merlon)))
         for k in range(n):

@@ -192,9 +192,19 @@ def _mound(m: Model) -> None:
             m.lathe("soil", [(0.1, 0.2 * H), (0.05, top * H), (0.0, (top + 0.05) * H)], centre=(x, y, 0), scale=(m.sx, m.sy))
 
 
+def _mound_of_land(m: Model) -> None:
+    """A dune, a hill or a knoll: a smooth low mound, sand for a dune, turf for the rest (a boulder
+    the size of a hill reads as a grey rock)."""
+    role = "sand" if m.named("dune", "dunes", "sandbank", "sand dune") else "leaf"
+    m.main = role
+    m.lathe(role, [(0.5, 0.0), (0.44, 0.18 * m.sz), (0.3, 0.62 * m.sz), (0.14, 0.92 * m.sz), (0.0, m.sz)],
+            scale=(m.sx, m.sy))
+
+
 def rock(m: Model) -> None:
-    """A boulder; by its name a campfire, a rocky outcrop, a termite mound or anthill."""
+    """A boulder; by its name a campfire, a rocky outcrop, a termite mound or anthill, a dune or a hill."""
     variants = (
+        (("dune", "dunes", "sand dune", "hill", "hillock", "knoll"), _mound_of_land),
         (("campfire", "bonfire", "fire pit"), _campfire),
         (("kopje", "koppie", "outcrop", "tor", "rock formation"), _outcrop),
         (("termite mound", "termite hill", "anthill", "ant hill", "mound"), _mound),
