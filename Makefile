@@ -65,7 +65,7 @@ bench: install chromium
 	$(BIN)/scenewright bench edits --json | tee bench-results/edits.json
 	$(BIN)/scenewright bench parse --json | tee bench-results/parse.json
 	$(BIN)/scenewright bench constructions --json > bench-results/constructions.json
-	for b in 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29 30 31 32 33 34 35 36 37 38 39 40 41 42 43 44 45 46 47 48 49 50 51 52 53; do $(BIN)/scenewright bench pipeline --prompts benchmarks/prompts-fresh-$$b --json > bench-results/fresh-$$b.json; done
+	for b in 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29 30 31 32 33 34 35 36 37 38 39 40 41 42 43 44 45 46 47 48 49 50 51 52 53 54 55; do $(BIN)/scenewright bench pipeline --prompts benchmarks/prompts-fresh-$$b --json > bench-results/fresh-$$b.json; done
 	$(BIN)/scenewright bench batch --json | tee bench-results/batch.json
 	$(BIN)/scenewright bench studio --json | tee bench-results/studio.json
 	$(BIN)/scenewright bench physics --json | tee bench-results/physics.json
