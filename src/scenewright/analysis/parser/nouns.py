@@ -1371,12 +1371,12 @@ def _is_place(toks: list[_Tok], s: int, e: int, later: list) -> bool:
     # hanging from its eaves stands behind the pond")
     if e < len(toks) and toks[e].text in _PLACE_OPENERS and (j < 0 or toks[j].text not in ("and", ",")):
         starts = {r[0] for r in later}
-        named = {i for r in later for i in range(r[0], r[1])}
+        spans = {i for r in later for i in range(r[0], r[1])}
         holds = False
         k = e + 1
         while k < len(toks) and toks[k].text not in (".", "!", "?", ";"):
             holds = holds or k in starts  # the with-part names a thing: the place holds the scene ...
-            if _verb_word(toks[k].text) and k not in named:
+            if _verb_word(toks[k].text) and k not in spans:
                 # (... unless it stands somewhere itself: "A castle with two towers stands on a rug.")
                 return holds and toks[k].text not in _PLACING_VERBS
             k += 1
@@ -2150,9 +2150,10 @@ def _landforms(toks: list[_Tok], covered: set[int]) -> list:
     forms = load_vocabulary().landforms
     out: list = []
     for k in range(1, len(toks)):
-        risen = _risen_landform(toks, k) if k not in covered and singular(toks[k].text) in forms else None
+        form = forms.get(singular(toks[k].text)) if k not in covered else None
+        risen = _risen_landform(toks, k) if form is not None else None
         if risen is not None:
-            out.append((risen, k + 1, forms[singular(toks[k].text)].category, forms[singular(toks[k].text)]))
+            out.append((risen, k + 1, form.category, form))
             covered.add(k)
             continue
         if not (k >= 2 and _landform_part(toks, k) or _by_landform(toks, k)):
